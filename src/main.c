@@ -1,0 +1,232 @@
+/*
+** src/main.c -- the pipetrace command: options, then parse -> plan -> run -> write
+** See LICENSE for copyright and license.
+**
+** Exit status: 0 success, 1 usage error, 2 bad input or output error.  Only
+** this file prints diagnostics or decides the exit status.
+*/
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "builtin.h"
+#include "outfile.h"
+#include "pipeline.h"
+#include "scene.h"
+#include "trace.h"
+
+#define PT_VERSION "0.1.0"
+
+#define EXIT_USAGE 1
+#define EXIT_INPUT 2
+
+static const char usage[] =
+"usage: pipetrace [SCENE] [options]\n"
+"Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
+"through the classic teaching pipeline and trace every vertex at every stage:\n"
+"  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
+"\n"
+"  --image FILE      write the rendered framebuffer as binary PPM (P6)\n"
+"  --trace FILE      write the trace to FILE ('-': standard output)\n"
+"  --format F        trace format: text (default), jsonl, csv\n"
+"  --vertex N        trace only vertex N (1-based) of each model\n"
+"  --model NAME      trace only the model NAME\n"
+"  --stage NAME      trace only this stage (repeatable): model, camera, image,\n"
+"                    pixel, viewport, framebuffer, index, or raster (pixels)\n"
+"  --all-stages      trace identity stages too (they are left out by default)\n"
+"  --precision N     digits after the point in the text format (0-17, default 6)\n"
+"  --help            show this help\n"
+"  --version         show the version\n"
+"\n"
+"With neither --image nor --trace the text trace goes to standard output.\n"
+"Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
+"Docs: docs/README.md, docs/scene-format.md, docs/trace-format.md\n";
+
+/* ===== options ===== */
+
+typedef struct cli {
+    const char *scene;           /* NULL: the built-in scene */
+    const char *image;           /* --image, or NULL */
+    const char *trace;           /* --trace, or NULL */
+    pt_format fmt;
+    int precision;
+    int raster_chosen;           /* --stage raster given */
+    pt_options opt;
+} cli;
+
+static int usage_error(const char *fmt, const char *arg)
+{
+    fputs("pipetrace: ", stderr);
+    fprintf(stderr, fmt, arg);
+    fputs("\nTry 'pipetrace --help'.\n", stderr);
+    return EXIT_USAGE;
+}
+
+/* A whole number in [lo, hi] from s, or -1. */
+static long long parse_count(const char *s, long long lo, long long hi)
+{
+    char *end;
+    long long v;
+
+    if (*s < '0' || *s > '9') return -1;
+    errno = 0;
+    v = strtoll(s, &end, 10);
+    if (errno || *end || v < lo || v > hi) return -1;
+    return v;
+}
+
+/* Fill *c from argv.  Returns -1 to go on, else the exit status. */
+static int parse_args(cli *c, int argc, char **argv)
+{
+    int k, staged = 0;
+
+    memset(c, 0, sizeof *c);
+    pt_options_default(&c->opt);
+    c->precision = 6;
+    for (k = 1; k < argc; k++) {
+        const char *a = argv[k];
+        const char *val = k + 1 < argc ? argv[k + 1] : NULL;
+        int takes = !strcmp(a, "--image") || !strcmp(a, "--trace") ||
+                    !strcmp(a, "--format") || !strcmp(a, "--vertex") ||
+                    !strcmp(a, "--model") || !strcmp(a, "--stage") ||
+                    !strcmp(a, "--precision");
+
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
+        if (!strcmp(a, "--version")) { puts("pipetrace " PT_VERSION); return 0; }
+        if (takes && !val) return usage_error("option '%s' needs a value", a);
+        if (takes) k++;
+        if (!strcmp(a, "--image")) c->image = val;
+        else if (!strcmp(a, "--trace")) c->trace = val;
+        else if (!strcmp(a, "--model")) c->opt.model = val;
+        else if (!strcmp(a, "--format")) {
+            if (!strcmp(val, "text")) c->fmt = PT_FORMAT_TEXT;
+            else if (!strcmp(val, "jsonl")) c->fmt = PT_FORMAT_JSONL;
+            else if (!strcmp(val, "csv")) c->fmt = PT_FORMAT_CSV;
+            else return usage_error("unknown format '%s' (text, jsonl, csv)", val);
+        } else if (!strcmp(a, "--vertex")) {
+            long long v = parse_count(val, 1, 4294967295LL);
+            if (v < 0) return usage_error("--vertex takes a vertex number >= 1, not '%s'", val);
+            c->opt.vertex = (uint64_t)v;
+        } else if (!strcmp(a, "--precision")) {
+            long long p = parse_count(val, 0, 17);
+            if (p < 0) return usage_error("--precision takes 0 to 17, not '%s'", val);
+            c->precision = (int)p;
+        } else if (!strcmp(a, "--stage")) {
+            int st = pt_stage_by_name(val);
+            if (!staged) { c->opt.stage_mask = 0; staged = 1; }
+            if (!strcmp(val, "raster")) c->raster_chosen = 1;
+            else if (st < 0) return usage_error("unknown stage '%s'", val);
+            else c->opt.stage_mask |= 1u << st;
+        } else if (!strcmp(a, "--all-stages")) c->opt.all_stages = 1;
+        else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option '%s'", a);
+        else if (c->scene) return usage_error("more than one scene given ('%s')", a);
+        else c->scene = a;
+    }
+    if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
+    if (!c->image && !c->trace) c->trace = "-";
+    /* --vertex without --image: only that vertex's journey is computed */
+    c->opt.rasterize = c->image != NULL || (c->opt.trace_raster && !c->opt.vertex);
+    return -1;
+}
+
+/* ===== checks that need the scene ===== */
+
+static int check_filters(const cli *c, const pt_scene *s)
+{
+    size_t k;
+    int found = c->opt.model == NULL;
+    uint64_t most = 0;
+
+    for (k = 0; k < s->nmodels; k++) {
+        if (c->opt.model && strcmp(c->opt.model, s->models[k].name) == 0) found = 1;
+        if (!c->opt.model || strcmp(c->opt.model, s->models[k].name) == 0)
+            if (s->models[k].nv > most) most = s->models[k].nv;
+    }
+    if (!found) {
+        fprintf(stderr, "pipetrace: %s has no model '%s'\n", s->path, c->opt.model);
+        return EXIT_INPUT;
+    }
+    if (c->opt.vertex > most) {
+        fprintf(stderr, "pipetrace: %s: no model%s%s has a vertex %llu\n", s->path,
+                c->opt.model ? " " : "", c->opt.model ? c->opt.model : "",
+                (unsigned long long)c->opt.vertex);
+        return EXIT_INPUT;
+    }
+    return 0;
+}
+
+/* ===== main ===== */
+
+int main(int argc, char **argv)
+{
+    cli c;
+    pt_scene s;
+    pt_plan plan;
+    pt_fb fb = {0, 0, NULL};
+    pt_summary sum;
+    pt_listener l;
+    pt_trace *tr = NULL;
+    pt_outfile tout = {NULL, NULL, NULL}, iout = {NULL, NULL, NULL};
+    char err[PT_ERRLEN];
+    int rc;
+
+    rc = parse_args(&c, argc, argv);
+    if (rc >= 0) return rc;
+
+    rc = c.scene ? pt_scene_load(&s, c.scene, err, sizeof err)
+                 : pt_scene_parse(&s, "<builtin>", pt_builtin_scene,
+                                  strlen(pt_builtin_scene), err, sizeof err);
+    if (rc != 0) { fprintf(stderr, "%s\n", err); return EXIT_INPUT; }
+    rc = check_filters(&c, &s);
+    if (rc) { pt_scene_free(&s); return rc; }
+    if (pt_plan_make(&plan, &s, &c.opt) != 0) {
+        fputs("pipetrace: out of memory\n", stderr);
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+
+    memset(&l, 0, sizeof l);
+    rc = 0;
+    if (c.trace) {
+        tr = malloc(sizeof *tr);
+        if (!tr) { snprintf(err, sizeof err, "pipetrace: out of memory"); rc = 1; }
+        else if (pt_outfile_open(&tout, c.trace, err, sizeof err) != 0) rc = 1;
+        else {
+            pt_trace_init(tr, tout.f, c.fmt, c.precision);
+            pt_trace_listener(tr, &l);
+        }
+    }
+    if (!rc && c.image && pt_fb_init(&fb, s.fb_w, s.fb_h, s.background) != 0) {
+        snprintf(err, sizeof err, "pipetrace: out of memory");
+        rc = 1;
+    }
+    if (!rc && pt_run(&s, &plan, &c.opt, &l, c.image ? &fb : NULL, &sum) != 0) {
+        snprintf(err, sizeof err, "pipetrace: out of memory");
+        rc = 1;
+    }
+    if (!rc && tr && pt_trace_finish(tr) != 0) {
+        snprintf(err, sizeof err, "cannot write the trace to '%s'", c.trace);
+        rc = 1;
+    }
+    if (!rc && c.image) {
+        if (pt_outfile_open(&iout, c.image, err, sizeof err) != 0) rc = 1;
+        else if (pt_fb_write_ppm(&fb, iout.f) != 0) {
+            snprintf(err, sizeof err, "cannot write '%s'", c.image);
+            rc = 1;
+        } else if (pt_outfile_commit(&iout, err, sizeof err) != 0) rc = 1;
+    }
+    if (!rc && c.trace && pt_outfile_commit(&tout, err, sizeof err) != 0) rc = 1;
+    if (rc) {
+        fprintf(stderr, "%s%s\n", strncmp(err, "pipetrace:", 10) ? "pipetrace: " : "", err);
+        pt_outfile_abort(&iout);
+        pt_outfile_abort(&tout);
+    }
+    if (!rc && c.opt.vertex && !c.image && sum.vertices_traced == 0)
+        fprintf(stderr, "pipetrace: note: vertex %llu is used by no segment, so it "
+                "is not transformed\n", (unsigned long long)c.opt.vertex);
+    free(tr);
+    pt_fb_free(&fb);
+    pt_plan_free(&plan);
+    pt_scene_free(&s);
+    return rc ? EXIT_INPUT : 0;
+}

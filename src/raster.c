@@ -1,0 +1,156 @@
+/*
+** src/raster.c -- draw one line segment of the pixel plane into a viewport
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include "raster.h"
+#include "../stages/s4_pixel2viewport.h"
+
+/* ===== exact fast-forward of y += m ===== */
+
+/*
+** Inside one binade [2^(e-1), 2^e) every double is a multiple of u = 2^(e-53).
+** While the exact sum y + m stays inside the binade, fl(y + m) = y + d where d is
+** m rounded to a multiple of u.  d is the same for every y, except when m is an
+** odd multiple of u/2 (a tie): round-to-even then leaves y/u even after a step,
+** and from there on d is the same every step.  So: take two real steps (the
+** second inside one binade, which settles the parity), measure d with a third
+** sum, and jump j steps at once: y + j*d is exact (a multiple of u inside the
+** binade, j*d/u < 2^53).  The jump stops short of the binade's edge by a margin
+** of 4|m| + 4|d|; the edge is crossed by real steps and it all starts over.
+** tests/test_raster.c checks this against the plain loop, ties included.
+*/
+double pt_raster_advance(double y, double m, uint64_t k)
+{
+    while (k > 0) {
+        double y1, y2, d, lo, room;
+        int e1, e2;
+        uint64_t jump;
+
+        if (k < 3) { y += m; k--; continue; }
+        y1 = y + m;                                 /* two real steps */
+        y2 = y1 + m;
+        k -= 2;
+        y = y2;
+        if (!isfinite(y2) || y1 == 0.0 || y2 == 0.0) continue;
+        frexp(y1, &e1);
+        frexp(y2, &e2);                             /* |y2| in [2^(e2-1), 2^e2) */
+        if (e1 != e2 || (y1 > 0) != (y2 > 0)) continue;
+        lo = ldexp(1.0, e2 - 1);
+        if (lo < 0x1p-1000) continue;               /* near zero: just step */
+        d = (y2 + m) - y2;                          /* the constant increment */
+        if (d == 0.0) return y2;                    /* m too small: y stays put */
+        if ((y2 > 0) == (d > 0)) room = 2 * lo - fabs(y2);   /* moving outward */
+        else room = fabs(y2) - lo;                           /* moving inward */
+        room -= 4 * fabs(m) + 4 * fabs(d);
+        if (room <= 0) continue;
+        jump = (uint64_t)fmin(room / fabs(d), 0x1p62);
+        if (jump > k) jump = k;
+        y = y2 + (double)jump * d;                  /* exact, see above */
+        k -= jump;
+    }
+    return y;
+}
+
+/* ===== the DDA ===== */
+
+/* One step's pixel in viewport coordinates.  transposed: u is the stepped y. */
+static pt_pix step_pixel(int64_t s, double acc, int transposed, int h)
+{
+    pt_pix p;
+    int64_t r;
+
+    if (!pt_pix_round(acc, &r))                     /* drift past the limit */
+        r = acc > 0 ? (int64_t)PT_PIX_LIMIT : -(int64_t)PT_PIX_LIMIT;
+    if (transposed) { p.x = r - 1; p.y = h - s; }   /* (round(x) - 1, h - y) */
+    else            { p.x = s - 1; p.y = h - r; }   /* (x - 1, h - round(y)) */
+    p.ok = 1;
+    return p;
+}
+
+/* A run of clipped steps being gathered, reported when it ends. */
+typedef struct clip_run {
+    uint64_t count;
+    pt_pix first, last;
+} clip_run;
+
+static void run_add(clip_run *run, uint64_t n, pt_pix first, pt_pix last)
+{
+    if (run->count == 0) run->first = first;
+    run->count += n;
+    run->last = last;
+}
+
+static void run_flush(clip_run *run, const pt_raster_out *out)
+{
+    if (run->count) out->clip(out->ud, run->count, run->first, run->last);
+    run->count = 0;
+}
+
+int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, const pt_raster_out *out)
+{
+    int64_t ix0, iy0, ix1, iy1, s, s0, s1, band_lo, band_hi;
+    double x0, y0, x1, y1, m, acc;
+    int transposed;
+    clip_run run = {0, {0, 0, 0}, {0, 0, 0}};
+    pt_pix p;
+
+    if (!pt_pix_round(p0.x, &ix0) || !pt_pix_round(p0.y, &iy0) ||
+        !pt_pix_round(p1.x, &ix1) || !pt_pix_round(p1.y, &iy1))
+        return PT_RASTER_SKIPPED;
+    x0 = (double)ix0; y0 = (double)iy0;             /* the rounded endpoints */
+    x1 = (double)ix1; y1 = (double)iy1;
+
+    if (x0 == x1 && y0 == y1) {                     /* degenerate: one pixel */
+        p = step_pixel(ix0, y0, 0, h);
+        if (pt_vp_inside(p.x, p.y, w, h)) out->pixel(out->ud, p.x, p.y);
+        else out->clip(out->ud, 1, p, p);
+        return PT_RASTER_DEGENERATE;
+    }
+    transposed = fabs(y1 - y0) > fabs(x1 - x0);     /* |slope| > 1: step in y */
+    if (transposed) {
+        double t;
+        t = x0; x0 = y0; y0 = t;
+        t = x1; x1 = y1; y1 = t;
+    }
+    if (x1 < x0) {                                  /* step toward increasing s */
+        double t;
+        t = x0; x0 = x1; x1 = t;
+        t = y0; y0 = y1; y1 = t;
+    }
+    m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
+    s0 = (int64_t)x0;
+    s1 = (int64_t)x1;
+    band_lo = 1;                                    /* steps that can be inside: */
+    band_hi = transposed ? h : w;                   /* 1 <= s <= w (or h) */
+
+    acc = y0;
+    s = s0;
+    if (s < band_lo) {                              /* before the band: skip */
+        int64_t last = s1 < band_lo - 1 ? s1 : band_lo - 1;
+        uint64_t n = (uint64_t)(last - s) + 1;
+        double acc_last = pt_raster_advance(acc, m, n - 1);
+        run_add(&run, n, step_pixel(s, acc, transposed, h),
+                step_pixel(last, acc_last, transposed, h));
+        acc = acc_last + m;
+        s = last + 1;
+    }
+    for (; s <= s1 && s <= band_hi; s++) {          /* inside the band: step */
+        p = step_pixel(s, acc, transposed, h);
+        if (pt_vp_inside(p.x, p.y, w, h)) {
+            run_flush(&run, out);
+            out->pixel(out->ud, p.x, p.y);
+        } else {
+            run_add(&run, 1, p, p);
+        }
+        acc += m;                                   /* y += m */
+    }
+    if (s <= s1) {                                  /* after the band: skip */
+        uint64_t n = (uint64_t)(s1 - s) + 1;
+        double acc_last = pt_raster_advance(acc, m, n - 1);
+        run_add(&run, n, step_pixel(s, acc, transposed, h),
+                step_pixel(s1, acc_last, transposed, h));
+    }
+    run_flush(&run, out);
+    return PT_RASTER_DRAWN;
+}

@@ -1,0 +1,26 @@
+/*
+** stages/s2_camera2image.c -- camera coordinates -> image plane (projection)
+** See LICENSE for copyright and license.
+*/
+#include "s2_camera2image.h"
+
+pt_vec3 pt_camera2image(pt_vec3 c, int perspective, const pt_sink *sink)
+{
+    pt_vec3 ip;
+    pt_vrec r = {0};
+
+    if (perspective) {
+        ip.x = c.x / -c.z;                  /* x_ip = x_c / -z_c */
+        ip.y = c.y / -c.z;                  /* y_ip = y_c / -z_c */
+        ip.z = -1.0;                        /* z_ip = -1 */
+        if (c.z > 0) r.flags |= PT_REC_BEHIND;
+    } else {
+        ip.x = c.x;                         /* x_ip = x_c */
+        ip.y = c.y;                         /* y_ip = y_c */
+        ip.z = 0.0;                         /* z_ip = 0 */
+    }
+    r.stage = PT_STAGE_IMAGE;
+    r.x = ip.x; r.y = ip.y; r.z = ip.z;
+    pt_emit(sink, &r);
+    return ip;
+}

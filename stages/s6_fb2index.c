@@ -1,0 +1,21 @@
+/*
+** stages/s6_fb2index.c -- framebuffer pixel -> pixel-array index
+** See LICENSE for copyright and license.
+*/
+#include <assert.h>
+#include "s6_fb2index.h"
+
+int64_t pt_fb2index(pt_pix fb, int W, int H, const pt_sink *sink)
+{
+    int64_t idx = -1;
+    pt_vrec r = {0};
+
+    assert(W > 0 && H > 0);
+    if (fb.ok && fb.x >= 0 && fb.x < W && fb.y >= 0 && fb.y < H)
+        idx = fb.y * (int64_t)W + fb.x;     /* idx = y_fb * W + x_fb */
+    r.stage = PT_STAGE_INDEX;
+    if (idx < 0) r.flags |= PT_REC_NULL;
+    r.i = idx;
+    pt_emit(sink, &r);
+    return idx;
+}

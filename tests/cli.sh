@@ -1,0 +1,124 @@
+#!/bin/sh
+# tests/cli.sh -- the command line: exit codes, messages, outputs, formats
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/cli.sh PIPETRACE.  Run from the repository root.
+exe=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+
+check() {   # check DESCRIPTION COMMAND...: the command must succeed
+    d=$1; shift
+    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
+    else failed=$((failed + 1)); echo "FAIL $d"; fi
+}
+
+run() {     # run ARGS...: sets $out, $err, $rc
+    "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
+}
+
+# ---- exit codes and messages
+run --help
+check "cli-1.1 --help exits 0 and shows usage" test "$rc" = 0 -a -n "$(echo "$out" | grep 'usage: pipetrace')"
+run --version
+check "cli-1.2 --version" test "$rc" = 0 -a "${out%% *}" = pipetrace
+run --frobnicate
+check "cli-1.3 unknown option: exit 1" test "$rc" = 1
+check "cli-1.4 ... with a message on stderr" grep -q "unknown option '--frobnicate'" "$tmp/err"
+run --format xml
+check "cli-1.5 unknown format: exit 1" test "$rc" = 1
+run --vertex 0
+check "cli-1.6 --vertex 0: exit 1" test "$rc" = 1
+run a.scene b.scene
+check "cli-1.7 two scenes: exit 1" test "$rc" = 1
+run --trace
+check "cli-1.8 missing option value: exit 1" test "$rc" = 1
+printf 'framebuffer 10 10\nmodel m\nv 1 2\n' > "$tmp/bad.scene"
+run "$tmp/bad.scene"
+check "cli-2.1 bad scene: exit 2" test "$rc" = 2
+check "cli-2.2 ... FILE:LINE:COL: error: message" grep -q "^$tmp/bad.scene:3:[0-9]*: error: " "$tmp/err"
+check "cli-2.3 ... and nothing on stdout" test -z "$out"
+run "$tmp/missing.scene"
+check "cli-2.4 missing scene file: exit 2" test "$rc" = 2
+run docs/examples/triangle.scene --model nosuch
+check "cli-2.5 --model of no model: exit 2" test "$rc" = 2
+run docs/examples/triangle.scene --vertex 99
+check "cli-2.6 --vertex past every model: exit 2" test "$rc" = 2
+
+# ---- outputs appear whole or not at all
+echo "keep me" > "$tmp/old.ppm"
+run "$tmp/bad.scene" --image "$tmp/old.ppm" --trace "$tmp/new.trace"
+check "cli-3.1 bad input leaves an existing output untouched" grep -q "keep me" "$tmp/old.ppm"
+check "cli-3.2 ... and creates no new output" test ! -e "$tmp/new.trace"
+check "cli-3.3 ... and no temporary files" test "$(ls "$tmp" | grep -c XXX)" = 0 -a "$(ls "$tmp" | wc -l)" -le 4
+run docs/examples/triangle.scene --trace "$tmp/nodir/x.trace"
+check "cli-3.4 unwritable trace path: exit 2" test "$rc" = 2
+run docs/examples/triangle.scene --image "$tmp/t.ppm"
+check "cli-3.5 --image alone writes the image and no trace" test "$rc" = 0 -a -z "$out" -a -s "$tmp/t.ppm"
+check "cli-3.6 PPM header P6 20 10 255" test "$(head -c 13 "$tmp/t.ppm" | tr '\n' ' ')" = "P6 20 10 255 "
+check "cli-3.7 PPM size is header + 3*20*10" test "$(wc -c < "$tmp/t.ppm")" = $((13 + 600))
+ls "$tmp" > "$tmp/listing"
+check "cli-3.8 no temporary file left after success" test "$(grep -c '\.ppm\.' "$tmp/listing")" = 0
+
+# ---- trace destinations and formats
+run docs/examples/triangle.scene
+cp "$tmp/out" "$tmp/default.txt"
+run docs/examples/triangle.scene --trace -
+check "cli-4.1 default output is the text trace on stdout" cmp -s "$tmp/out" "$tmp/default.txt"
+run docs/examples/triangle.scene --trace "$tmp/t.trace"
+check "cli-4.2 --trace FILE holds the same text" cmp -s "$tmp/t.trace" "$tmp/default.txt"
+run docs/examples/cube.scene --format jsonl
+check "cli-4.3 jsonl: first record is the header" test "$(echo "$out" | head -1 | cut -c1-28)" = '{"type":"header","version":1'
+check "cli-4.4 jsonl: last record is the summary" test "$(echo "$out" | tail -1 | cut -c1-18)" = '{"type":"summary",'
+if command -v python3 >/dev/null 2>&1; then
+    check "cli-4.5 jsonl: every line is a JSON object" python3 -c '
+import json, sys
+for line in open(sys.argv[1]):
+    assert isinstance(json.loads(line), dict)' "$tmp/out"
+fi
+n_vertex=$(grep -c '"type":"vertex"' "$tmp/out")
+run docs/examples/cube.scene --format csv
+check "cli-4.6 csv: one row per vertex record, plus a header row" test "$(echo "$out" | wc -l)" = $((n_vertex + 1))
+check "cli-4.7 csv header" test "$(echo "$out" | head -1)" = "model,v,stage,x,y,z,inside,behind,i"
+run docs/examples/triangle.scene --format jsonl
+check "cli-4.8 exact values in jsonl: x_pp of vertex 1" grep -q '"v":1,"stage":"pixel","x":5.497501249375313,"y":2.9987506246876565' "$tmp/out"
+run docs/examples/triangle.scene --precision 2
+check "cli-4.9 --precision 2 shows 2 decimals" grep -q 'x_pp = *5.50  y_pp = *3.00$' "$tmp/out"
+
+# ---- leaving out what a scene does not need
+run docs/examples/triangle.scene --format jsonl
+check "cli-5.1 viewport at 0,0: framebuffer stage left out" test "$(grep -c '"type":"vertex".*"stage":"framebuffer"' "$tmp/out")" = 0
+check "cli-5.2 ... and the header says why" grep -q '"left_out":\[{"stage":"framebuffer","why":"identity: viewport at 0,0"}\]' "$tmp/out"
+run docs/examples/triangle.scene --format jsonl --all-stages
+check "cli-5.3 --all-stages puts it back" test "$(grep -c '"stage":"framebuffer"' "$tmp/out")" = 3
+run docs/examples/ortho.scene --format jsonl --model far
+check "cli-5.4 --model traces one model's vertices" test "$(grep '"type":"vertex"' "$tmp/out" | grep -vc '"model":"far"')" = 0
+check "cli-5.5 unused vertices are not traced" test "$(grep -c '"model":"far","v":2,' "$tmp/out")" = 0
+run docs/examples/cube.scene --format jsonl --vertex 3
+check "cli-5.6 --vertex 3: one journey" test "$(grep '"type":"vertex"' "$tmp/out" | grep -vc '"v":3,')" = 0
+check "cli-5.7 --vertex without --image: no raster records" test "$(grep -c '"type":"pixel"' "$tmp/out")" = 0
+run docs/examples/cube.scene --format jsonl --stage pixel --stage index
+check "cli-5.8 --stage keeps only the stages named" test "$(grep '"type":"vertex"' "$tmp/out" | grep -Evc '"stage":"(pixel|index)"')" = 0
+run docs/examples/behind.scene --format jsonl
+check "cli-5.9 a vertex behind the camera is flagged" grep -q '"v":2,"stage":"image",.*"behind":true' "$tmp/out"
+run docs/examples/behind.scene
+check "cli-5.10 ... in the text trace too" grep -q 'behind the camera' "$tmp/out"
+
+# ---- the same output every time, whatever the locale
+run docs/examples/two-models.scene --format jsonl
+cp "$tmp/out" "$tmp/a"
+LC_ALL=de_DE.UTF-8 LANG=de_DE.UTF-8 "$exe" docs/examples/two-models.scene --format jsonl > "$tmp/b" 2>/dev/null
+check "cli-6.1 byte-identical across runs and locales" cmp -s "$tmp/a" "$tmp/b"
+
+# ---- the built-in scene and plain OBJ files
+run --image "$tmp/b.ppm" --trace -
+check "cli-7.1 built-in scene renders" test "$rc" = 0 -a -s "$tmp/b.ppm"
+check "cli-7.2 its viewport is not the whole framebuffer" grep -q 'viewport     320 x 240 at (x_ul, y_ul) = (40, 30)' "$tmp/out"
+run docs/examples/tetra.obj --format jsonl
+check "cli-7.3 a plain .obj is wrapped and placed; the header says where" grep -q '"obj_translate":\[' "$tmp/out"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

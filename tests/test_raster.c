@@ -1,0 +1,224 @@
+/*
+** tests/test_raster.c -- the DDA: pictures, symmetry, clipping, fast-forward
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testhelp.h"
+#include "raster.h"
+#include "s4_pixel2viewport.h"
+
+/* ===== a collecting raster sink ===== */
+
+#define MAXW 64
+typedef struct canvas {
+    int w, h;
+    char cell[MAXW * MAXW];      /* '*' lit, '.' not */
+    uint64_t pixels, clipped, runs;
+    pt_pix first_clip, last_clip;
+} canvas;
+
+static void c_pixel(void *ud, int64_t x, int64_t y)
+{
+    canvas *c = ud;
+    c->cell[y * c->w + x] = '*';
+    c->pixels++;
+}
+
+static void c_clip(void *ud, uint64_t n, pt_pix first, pt_pix last)
+{
+    canvas *c = ud;
+    if (c->runs == 0) c->first_clip = first;
+    c->last_clip = last;
+    c->clipped += n;
+    c->runs++;
+}
+
+static void clear(canvas *c, int w, int h)
+{
+    memset(c, 0, sizeof *c);
+    c->w = w; c->h = h;
+    memset(c->cell, '.', sizeof c->cell);
+}
+
+static int draw(canvas *c, double x0, double y0, double x1, double y1)
+{
+    pt_raster_out out = {c_pixel, c_clip, NULL};
+    out.ud = c;
+    return pt_raster_segment((pt_vec2){x0, y0}, (pt_vec2){x1, y1}, c->w, c->h, &out);
+}
+
+/* Compare the canvas with rows of '*' and '.', top row first. */
+static int looks_like(const canvas *c, const char *rows)
+{
+    int x, y;
+    for (y = 0; y < c->h; y++) {
+        for (x = 0; x < c->w; x++)
+            if (*rows++ != c->cell[y * c->w + x]) return 0;
+        if (*rows++ != '\n') return 0;
+    }
+    return *rows == '\0';
+}
+
+/* ===== pictures ===== */
+
+static void test_pictures(void)
+{
+    canvas c;
+
+    /* An "F" in a 6x5 viewport; logical pixel (m, n) is cell (m-1, 5-n). */
+    clear(&c, 6, 5);
+    draw(&c, 2, 1, 2, 5);                   /* the stem */
+    draw(&c, 2, 5, 5, 5);                   /* the top bar */
+    draw(&c, 2, 3, 4, 3);                   /* the middle bar */
+    PT_CHECK("raster-1.1 an F in a 6x5 viewport",
+             looks_like(&c, ".****.\n"
+                            ".*....\n"
+                            ".***..\n"
+                            ".*....\n"
+                            ".*....\n"));
+    clear(&c, 6, 5);
+    draw(&c, 1.2, 1.4, 6.3, 3.6);           /* rounds to (1,1)-(6,4): slope 3/5 */
+    PT_CHECK("raster-1.2 shallow line: y += 0.6 each step, rounded",
+             looks_like(&c, "......\n"
+                            ".....*\n"
+                            "...**.\n"
+                            ".**...\n"
+                            "*.....\n"));
+    clear(&c, 6, 5);
+    draw(&c, 2, 1, 4, 5);                   /* steep: x += 0.5 per row, ties up */
+    PT_CHECK("raster-1.3 steep line steps y, x ties at k+0.5 round up",
+             looks_like(&c, "...*..\n"
+                            "...*..\n"
+                            "..*...\n"
+                            "..*...\n"
+                            ".*....\n"));
+    PT_CHECK("raster-1.4 steep line lights one pixel per row", c.pixels == 5);
+    clear(&c, 6, 5);
+    PT_CHECK("raster-1.5 a segment that rounds to one point is one pixel",
+             draw(&c, 3.4, 2.6, 2.6, 3.4) == PT_RASTER_DEGENERATE && c.pixels == 1 &&
+             c.cell[2 * 6 + 2] == '*');
+    clear(&c, 6, 5);
+    PT_CHECK("raster-1.6 a degenerate segment outside is one clipped step",
+             draw(&c, 9, 9, 9.2, 9.1) == PT_RASTER_DEGENERATE && c.pixels == 0 &&
+             c.clipped == 1 && c.runs == 1);
+}
+
+/* ===== symmetry and clipping ===== */
+
+static double rnd(double lo, double hi)
+{
+    return lo + (hi - lo) * (rand() / (RAND_MAX + 1.0));
+}
+
+static void test_symmetry(void)
+{
+    canvas a, b;
+    int k, same = 1, counted = 1;
+
+    srand(7);
+    for (k = 0; k < 2000; k++) {
+        double x0 = rnd(-20, 60), y0 = rnd(-20, 60), x1 = rnd(-20, 60), y1 = rnd(-20, 60);
+        clear(&a, 40, 30);
+        clear(&b, 40, 30);
+        draw(&a, x0, y0, x1, y1);
+        draw(&b, x1, y1, x0, y0);
+        if (memcmp(a.cell, b.cell, sizeof a.cell) != 0) same = 0;
+        {
+            double dx = fabs(pt_java_round(x1) - pt_java_round(x0));
+            double dy = fabs(pt_java_round(y1) - pt_java_round(y0));
+            if (a.pixels + a.clipped != (uint64_t)(dx > dy ? dx : dy) + 1) counted = 0;
+        }
+    }
+    PT_CHECK("raster-2.1 (a,b) and (b,a) light the same pixels (2000 random)", same);
+    PT_CHECK("raster-2.2 pixels + clipped steps = max(|dx|,|dy|) + 1", counted);
+
+    clear(&a, 10, 10);
+    draw(&a, -4, 5, 14, 5);                 /* x = -4..14, inside for x = 1..10 */
+    PT_CHECK("raster-2.3 horizontal line through: 10 pixels, 9 clipped in 2 runs",
+             a.pixels == 10 && a.clipped == 9 && a.runs == 2);
+    PT_CHECK("raster-2.4 clip runs report viewport coordinates",
+             a.first_clip.x == -5 && a.first_clip.y == 5 && a.last_clip.x == 13);
+    clear(&a, 10, 10);
+    PT_CHECK("raster-2.5 a non-finite endpoint is skipped, nothing reported",
+             draw(&a, NAN, 1, 3, 3) == PT_RASTER_SKIPPED && a.pixels == 0 && a.runs == 0);
+    PT_CHECK("raster-2.6 an endpoint at 1e300 is skipped",
+             draw(&a, 1, 1, 1e300, 3) == PT_RASTER_SKIPPED);
+}
+
+/* ===== exact fast-forward ===== */
+
+static double naive_advance(double y, double m, uint64_t k)
+{
+    while (k--) y += m;
+    return y;
+}
+
+static void test_advance(void)
+{
+    static const double ms[] = {0.6, -0.6, 1.0 / 3, -2.0 / 7, 0.5, 1.5, 1e-9, 3e-17,
+                                0.999999999, -1.0, 0.0, 0.1, 2.5, -0.75};
+    static const double ys[] = {0, 1, -1, 0.5, 1234.5, -99.25, 4503599627370496.0,
+                                9007199254740992.0, -9007199254740990.0, 1e15, 3.3};
+    size_t i, j;
+    int ok = 1;
+
+    for (i = 0; i < sizeof ms / sizeof ms[0]; i++)
+        for (j = 0; j < sizeof ys / sizeof ys[0]; j++) {
+            uint64_t k;
+            for (k = 0; k < 300000; k = k * 3 + 1) {
+                double a = pt_raster_advance(ys[j], ms[i], k), b = naive_advance(ys[j], ms[i], k);
+                if (a != b) {
+                    if (ok) printf("  advance(%.17g, %.17g, %llu): %.17g != %.17g\n",
+                                   ys[j], ms[i], (unsigned long long)k, a, b);
+                    ok = 0;
+                }
+            }
+        }
+    PT_CHECK("raster-3.1 fast-forward equals k additions, ties and binade edges included", ok);
+
+    ok = 1;
+    srand(11);
+    for (i = 0; i < 300; i++) {
+        double y = rnd(-1e6, 1e6), m = rnd(-3, 3);
+        uint64_t k = (uint64_t)rnd(0, 200000);
+        if (i % 3 == 0) m = ldexp(floor(rnd(-64, 64)) + 0.5, -(int)rnd(0, 40));
+        if (pt_raster_advance(y, m, k) != naive_advance(y, m, k)) ok = 0;
+    }
+    PT_CHECK("raster-3.2 fast-forward equals k additions (300 random, some ties)", ok);
+}
+
+/* A long segment drawn both ways: the rasterizer (which skips) and a plain
+** step-by-step loop written here from the rule in raster.h. */
+static void test_long_segment(void)
+{
+    canvas a, b;
+    double x0 = -3000000.3, y0 = -1110009.25, x1 = 7000000.2, y1 = 2590010.75;
+    double rx0 = pt_java_round(x0), ry0 = pt_java_round(y0);
+    double rx1 = pt_java_round(x1), ry1 = pt_java_round(y1);
+    double m = (ry1 - ry0) / (rx1 - rx0), y = ry0;
+    int64_t x;
+
+    clear(&a, 50, 40);
+    draw(&a, x0, y0, x1, y1);
+    clear(&b, 50, 40);
+    for (x = (int64_t)rx0; x <= (int64_t)rx1; x++, y += m) {
+        int64_t x_vp = x - 1, y_vp = 40 - (int64_t)pt_java_round(y);
+        if (x_vp >= 0 && x_vp < 50 && y_vp >= 0 && y_vp < 40) c_pixel(&b, x_vp, y_vp);
+        else b.clipped++;
+    }
+    PT_CHECK("raster-4.1 10^7-step segment: same pixels as the plain loop",
+             memcmp(a.cell, b.cell, sizeof a.cell) == 0 && a.pixels == b.pixels);
+    PT_CHECK("raster-4.2 10^7-step segment: same clipped count", a.clipped == b.clipped);
+    PT_CHECK("raster-4.3 the segment does cross the viewport", a.pixels > 0);
+}
+
+int main(void)
+{
+    test_pictures();
+    test_symmetry();
+    test_advance();
+    test_long_segment();
+    return pt_test_report();
+}

@@ -1,0 +1,147 @@
+/*
+** tests/test_stages.c -- each stage's formula on hand-computed values
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include <string.h>
+#include "testhelp.h"
+#include "s1_model2camera.h"
+#include "s2_camera2image.h"
+#include "s3_image2pixel.h"
+#include "s4_pixel2viewport.h"
+#include "s5_viewport2fb.h"
+#include "s6_fb2index.h"
+
+/* A sink that keeps the last record. */
+static pt_vrec last;
+static int nrec;
+static void keep(void *ud, const pt_vrec *r) { (void)ud; last = *r; nrec++; }
+static const pt_sink sink = {keep, NULL};
+
+static void test_s1(void)
+{
+    pt_vec3 c = pt_model2camera((pt_vec3){-1, -1, 0}, (pt_vec3){0, 0, -2}, &sink);
+    PT_CHECK("s1-1.1 (-1,-1,0) + (0,0,-2) = (-1,-1,-2)", c.x == -1 && c.y == -1 && c.z == -2);
+    PT_CHECK("s1-1.2 record is the camera stage", last.stage == PT_STAGE_CAMERA && last.z == -2);
+    c = pt_model2camera((pt_vec3){-0.0, 0.25, 1e300}, (pt_vec3){0, 0, 0}, NULL);
+    PT_CHECK("s1-1.3 -0.0 + 0.0 = +0.0, as the formula gives", c.x == 0 && !signbit(c.x));
+    PT_CHECK("s1-1.4 no rounding of exact sums", c.y == 0.25 && c.z == 1e300);
+    c = pt_model2camera((pt_vec3){0.1, 0, 0}, (pt_vec3){0.2, 0, 0}, NULL);
+    PT_CHECK("s1-1.5 0.1 + 0.2 is the double sum 0.30000000000000004", c.x == 0.30000000000000004);
+}
+
+static void test_s2(void)
+{
+    pt_vec3 ip = pt_camera2image((pt_vec3){-1, -1, -2}, 1, &sink);
+    PT_CHECK("s2-1.1 perspective (-1,-1,-2) -> (-0.5,-0.5,-1)",
+             ip.x == -0.5 && ip.y == -0.5 && ip.z == -1);
+    PT_CHECK("s2-1.2 in front: not behind", !(last.flags & PT_REC_BEHIND));
+    ip = pt_camera2image((pt_vec3){1, 2, 4}, 1, &sink);
+    PT_CHECK("s2-1.3 behind the camera is mirrored: (1,2,4) -> (-0.25,-0.5)",
+             ip.x == -0.25 && ip.y == -0.5);
+    PT_CHECK("s2-1.4 behind flag set for z_c > 0", last.flags & PT_REC_BEHIND);
+    ip = pt_camera2image((pt_vec3){0.3, -0.7, 5}, 0, &sink);
+    PT_CHECK("s2-2.1 orthographic keeps x, y and sets z = 0",
+             ip.x == 0.3 && ip.y == -0.7 && ip.z == 0 && !(last.flags & PT_REC_BEHIND));
+    ip = pt_camera2image((pt_vec3){1, -1, 0}, 1, NULL);
+    PT_CHECK("s2-3.1 z_c = 0 gives infinities, as the formula does: 1 / -0.0 = -inf",
+             isinf(ip.x) && ip.x < 0 && isinf(ip.y) && ip.y > 0);
+    ip = pt_camera2image((pt_vec3){0, 1, -3}, 1, NULL);
+    PT_CHECK("s2-3.2 x_ip = 0 / 3 = +0",
+             ip.x == 0 && !signbit(ip.x));
+}
+
+static void test_s3(void)
+{
+    pt_vec2 pp = pt_image2pixel((pt_vec3){-0.5, -0.5, -1}, 20, 10, &sink);
+    PT_CHECK("s3-1.1 x_pp = 0.5 + 20/2.001 * 0.5 = 5.497501249375313", pp.x == 5.497501249375313);
+    PT_CHECK("s3-1.2 y_pp = 0.5 + 10/2.001 * 0.5 = 2.9987506246876565", pp.y == 2.9987506246876565);
+    pp = pt_image2pixel((pt_vec3){-1, -1, -1}, 640, 480, NULL);
+    PT_CHECK("s3-1.3 corner (-1,-1) -> (0.5,0.5)", pp.x == 0.5 && pp.y == 0.5);
+    pp = pt_image2pixel((pt_vec3){1, 1, -1}, 640, 480, NULL);
+    PT_CHECK("s3-1.4 corner (1,1) stays below w+0.5 and rounds to w",
+             pp.x < 640.5 && pt_java_round(pp.x) == 640 && pt_java_round(pp.y) == 480);
+    PT_CHECK("s3-1.5 record is the pixel stage", last.stage == PT_STAGE_PIXEL);
+}
+
+static void test_round(void)
+{
+    PT_CHECK("s4-1.1 round(0.49999999999999994) = 0 (floor(x+0.5) gives 1)",
+             pt_java_round(0.49999999999999994) == 0);
+    PT_CHECK("s4-1.2 round(0.5) = 1", pt_java_round(0.5) == 1);
+    PT_CHECK("s4-1.3 round(-0.5) = 0 (ties up; C round() gives -1)",
+             pt_java_round(-0.5) == 0 && !signbit(pt_java_round(-0.5) + 0.0));
+    PT_CHECK("s4-1.4 round(-2.5) = -2", pt_java_round(-2.5) == -2);
+    PT_CHECK("s4-1.5 round(2.5) = 3", pt_java_round(2.5) == 3);
+    PT_CHECK("s4-1.6 round(-0.49999999999999994) = 0", pt_java_round(-0.49999999999999994) == 0);
+    PT_CHECK("s4-1.7 round(-0.5000000000000001) = -1", pt_java_round(-0.5000000000000001) == -1);
+    PT_CHECK("s4-1.8 round(4503599627370495.5) = 4503599627370496",
+             pt_java_round(4503599627370495.5) == 4503599627370496.0);
+    PT_CHECK("s4-1.9 round(-4503599627370495.5) = -4503599627370495",
+             pt_java_round(-4503599627370495.5) == -4503599627370495.0);
+    PT_CHECK("s4-1.10 round(2^53 + 2) stays", pt_java_round(9007199254740994.0) == 9007199254740994.0);
+    PT_CHECK("s4-1.11 round(NaN) = 0 as in Java", pt_java_round(NAN) == 0);
+    PT_CHECK("s4-1.12 round(142.50000000000003) = 143", pt_java_round(142.50000000000003) == 143);
+    PT_CHECK("s4-1.13 round(114.49999999999997) = 114", pt_java_round(114.49999999999997) == 114);
+}
+
+static void test_s4(void)
+{
+    int64_t r;
+    pt_pix vp = pt_pixel2viewport((pt_vec2){5.497501249375313, 2.9987506246876565}, 20, 10, &sink);
+    PT_CHECK("s4-2.1 (5.4975, 2.9988) in 20x10 -> (4, 7)", vp.ok && vp.x == 4 && vp.y == 7);
+    PT_CHECK("s4-2.2 inside", (last.flags & PT_REC_INSIDE) && last.ix == 4 && last.iy == 7);
+    vp = pt_pixel2viewport((pt_vec2){0.5, 10.5}, 20, 10, &sink);
+    PT_CHECK("s4-2.3 (0.5, 10.5): round up to (1, 11) -> (0, -1), outside",
+             vp.x == 0 && vp.y == -1 && !(last.flags & PT_REC_INSIDE));
+    vp = pt_pixel2viewport((pt_vec2){INFINITY, 3}, 20, 10, &sink);
+    PT_CHECK("s4-2.4 infinite x_pp has no pixel", !vp.ok && (last.flags & PT_REC_NULL));
+    vp = pt_pixel2viewport((pt_vec2){3, 1e300}, 20, 10, &sink);
+    PT_CHECK("s4-2.5 1e300 has no pixel (no overflow)", !vp.ok);
+    PT_CHECK("s4-2.6 2^62 - 512 rounds, 2^62 does not",
+             pt_pix_round(4611686018427387392.0, &r) && r == 4611686018427387392LL &&
+             !pt_pix_round(PT_PIX_LIMIT, &r) && !pt_pix_round(-PT_PIX_LIMIT, &r));
+}
+
+static void test_s5_s6(void)
+{
+    pt_pix vp = {58, 73, 1}, fb;
+    int64_t idx;
+
+    fb = pt_viewport2fb(vp, 40, 30, &sink);
+    PT_CHECK("s5-1.1 (58,73) + (40,30) = (98,103)", fb.ok && fb.x == 98 && fb.y == 103);
+    idx = pt_fb2index(fb, 300, 200, &sink);
+    PT_CHECK("s6-1.1 103*300 + 98 = 30998", idx == 30998 && last.i == 30998);
+    fb = pt_viewport2fb((pt_pix){-6, 18, 1}, 5, 5, NULL);
+    idx = pt_fb2index(fb, 50, 40, &sink);
+    PT_CHECK("s6-1.2 (-1, 23) is outside: no index", idx == -1 && (last.flags & PT_REC_NULL));
+    idx = pt_fb2index((pt_pix){50, 0, 1}, 50, 40, NULL);
+    PT_CHECK("s6-1.3 x = W is outside (would alias the next row)", idx == -1);
+    idx = pt_fb2index((pt_pix){16383, 16383, 1}, 16384, 16384, NULL);
+    PT_CHECK("s6-1.4 last pixel of 16384x16384 is 268435455", idx == 268435455);
+    fb = pt_viewport2fb((pt_pix){0, 0, 0}, 5, 5, &sink);
+    PT_CHECK("s5-1.2 no viewport pixel, no framebuffer pixel", !fb.ok && (last.flags & PT_REC_NULL));
+}
+
+static void test_table(void)
+{
+    PT_CHECK("stage-1.1 names map to ids", pt_stage_by_name("viewport") == PT_STAGE_VIEWPORT &&
+             pt_stage_by_name("index") == PT_STAGE_INDEX && pt_stage_by_name("nope") == -1);
+    PT_CHECK("stage-1.2 every stage has a formula",
+             strlen(pt_stage_infos[PT_STAGE_PIXEL].formula) > 10);
+    nrec = 0;
+    pt_model2camera((pt_vec3){1, 2, 3}, (pt_vec3){0, 0, 0}, NULL);
+    PT_CHECK("stage-1.3 a NULL sink reports nothing", nrec == 0);
+}
+
+int main(void)
+{
+    test_s1();
+    test_s2();
+    test_s3();
+    test_round();
+    test_s4();
+    test_s5_s6();
+    test_table();
+    return pt_test_report();
+}
