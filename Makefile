@@ -40,11 +40,11 @@ $B/%.o: stages/%.c stages/*.h | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
 $B/%.o: src/%.c src/*.h stages/*.h | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
-$B/builtin.o: $B/builtin.c
-	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/builtin.o: $B/builtin.c src/builtin.h
+	$(CC) $(ALLCFLAGS) -Isrc -c -o $@ $<
 # The built-in scene is docs/examples/builtin.scene, embedded as a C string.
 $B/builtin.c: docs/examples/builtin.scene | $B
-	awk 'BEGIN { print "#include \"../src/builtin.h\""; print "const char pt_builtin_scene[] =" } \
+	awk 'BEGIN { print "#include \"builtin.h\""; print "const char pt_builtin_scene[] =" } \
 	     { gsub(/\\/, "\\\\"); gsub(/"/, "\\\""); print "    \"" $$0 "\\n\"" } \
 	     END { print "    \"\";" }' $< > $@
 $B/test_%: tests/test_%.c tests/testhelp.h $B/libpipetrace.a

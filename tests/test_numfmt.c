@@ -53,8 +53,8 @@ int main(void)
     PT_CHECK("num-1.8 5.497501249375313 (a pixel-plane value)",
              spells(5.497501249375313, "5.497501249375313"));
     PT_CHECK("num-1.9 2^-1022", spells(2.2250738585072014e-308, "2.2250738585072014e-308"));
-    PT_CHECK("num-1.10 non-finite", spells(NAN, "nan") && spells(INFINITY, "inf") &&
-             spells(-INFINITY, "-inf"));
+    PT_CHECK("num-1.10 non-finite", spells((double)NAN, "nan") && spells((double)INFINITY, "inf") &&
+             spells(-(double)INFINITY, "-inf"));
     for (k = 0; k < 30000; k++) {           /* xorshift: every kind of double */
         double x;
         state ^= state << 13; state ^= state >> 7; state ^= state << 17;
@@ -75,7 +75,7 @@ int main(void)
     PT_CHECK("num-3.2 fixed, 0 digits rounds half to even", strcmp(b, "-0") == 0);
     pt_fmt_fixed(b, 1e300, 3);
     PT_CHECK("num-3.3 huge values switch to exponent form", strcmp(b, "1.000e+300") == 0);
-    pt_fmt_fixed(b, -INFINITY, 3);
+    pt_fmt_fixed(b, -(double)INFINITY, 3);
     PT_CHECK("num-3.4 fixed non-finite", strcmp(b, "-inf") == 0);
     return pt_test_report();
 }

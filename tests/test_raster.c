@@ -142,7 +142,7 @@ static void test_symmetry(void)
              a.first_clip.x == -5 && a.first_clip.y == 5 && a.last_clip.x == 13);
     clear(&a, 10, 10);
     PT_CHECK("raster-2.5 a non-finite endpoint is skipped, nothing reported",
-             draw(&a, NAN, 1, 3, 3) == PT_RASTER_SKIPPED && a.pixels == 0 && a.runs == 0);
+             draw(&a, (double)NAN, 1, 3, 3) == PT_RASTER_SKIPPED && a.pixels == 0 && a.runs == 0);
     PT_CHECK("raster-2.6 an endpoint at 1e300 is skipped",
              draw(&a, 1, 1, 1e300, 3) == PT_RASTER_SKIPPED);
 }
