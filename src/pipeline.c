@@ -186,6 +186,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
         pt_raster_out out = {on_pixel, on_clip, NULL};
         raster_ctx rc;
 
+        sum->rasterized = 1;
         rc.s = s; rc.fb = fb; rc.sum = sum;
         out.ud = &rc;
         for (k = 0; k < s->nmodels; k++) {

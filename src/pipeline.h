@@ -69,6 +69,7 @@ typedef struct pt_summary {
     uint64_t clipped;            /* steps clipped (outside the viewport) */
     uint64_t clip_runs;          /* clip records */
     uint64_t behind;             /* traced vertices behind a perspective camera */
+    int rasterized;              /* 1: the segments were drawn */
 } pt_summary;
 
 /* Who hears what the pipeline does.  Any callback may be NULL. */

@@ -423,7 +423,7 @@ static void on_summary(void *ud, const pt_summary *sum)
         for (k = 0; k < sizeof vals / sizeof vals[0]; k++) {
             puts_(t, ",\""); puts_(t, names[k]); puts_(t, "\":"); put_u64(t, vals[k]);
         }
-        puts_(t, "}\n");
+        puts_(t, sum->rasterized ? ",\"rasterized\":true}\n" : ",\"rasterized\":false}\n");
         return;
     }
     puts_(t, "\nsummary");
@@ -431,7 +431,7 @@ static void on_summary(void *ud, const pt_summary *sum)
         puts_(t, k % 4 == 0 ? "\n  " : "  ");
         puts_(t, names[k]); put(t, " ", 1); put_u64(t, vals[k]);
     }
-    put(t, "\n", 1);
+    puts_(t, sum->rasterized ? "\n  rasterized yes\n" : "\n  rasterized no (--vertex without --image)\n");
 }
 
 /* ===== public ===== */

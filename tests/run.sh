@@ -35,5 +35,6 @@ one scene      "$B/test_scene"
 one reference  "$B/test_reference" "$ref"
 one golden     sh tests/golden.sh "$B/pipetrace"
 one cli        sh tests/cli.sh "$B/pipetrace"
+one docs       sh tests/docs.sh "$B/pipetrace"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
