@@ -26,7 +26,7 @@ STAGES_O = $B/pt_stage.o $B/s1_model2camera.o $B/s2_camera2image.o \
 SRC_O    = $B/scene.o $B/pipeline.o $B/raster.o $B/fb.o $B/numfmt.o \
            $B/trace.o $B/outfile.o $B/builtin.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
-           $B/test_reference
+           $B/test_reference $B/test_fuzz
 
 all: $B/pipetrace
 
