@@ -2,6 +2,7 @@
 ** src/pipeline.c -- plan the stages, run every vertex through them, rasterize
 ** See LICENSE for copyright and license.
 */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "pipeline.h"
@@ -80,6 +81,22 @@ void pt_plan_free(pt_plan *p)
 
 /* ===== run the stages ===== */
 
+/* A sink in front of the listener's: counts warnings, forwards when traced. */
+typedef struct counting_sink {
+    pt_summary *sum;
+    const pt_sink *next;         /* NULL: the stage is not traced */
+} counting_sink;
+
+static void count_record(void *ud, const pt_vrec *r)
+{
+    counting_sink *cs = ud;
+    int k;
+
+    for (k = 0; k < PT_NWARN; k++)
+        if (r->warn & (1u << k)) cs->sum->warnings[k]++;
+    if (cs->next) cs->next->vertex(cs->next->ud, r);
+}
+
 /* The journey of one vertex; returns its pixel-plane point for the rasterizer.
 ** sinks[st] is the listener's sink when stage st is traced, else NULL. */
 static pt_vec2 journey(const pt_scene *s, const pt_model *m, pt_vec3 v_m,
@@ -95,7 +112,8 @@ static pt_vec2 journey(const pt_scene *s, const pt_model *m, pt_vec3 v_m,
     pt_emit(sinks[PT_STAGE_MODEL], &r);
     c = pt_model2camera(v_m, m->translate, sinks[PT_STAGE_CAMERA]);
     *z_c = c.z;
-    ip = pt_camera2image(c, s->perspective, sinks[PT_STAGE_IMAGE]);
+    ip = pt_camera2image(c, fmax(fabs(v_m.z), fabs(m->translate.z)), s->perspective,
+                         sinks[PT_STAGE_IMAGE]);
     pp = pt_image2pixel(ip, s->vp_w, s->vp_h, sinks[PT_STAGE_PIXEL]);
     vp = pt_pixel2viewport(pp, s->vp_w, s->vp_h, sinks[PT_STAGE_VIEWPORT]);
     fb = pt_viewport2fb(vp, s->vp_x, s->vp_y, sinks[PT_STAGE_FRAMEBUFFER]);
@@ -137,6 +155,20 @@ static void on_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
     if (rc->l && rc->l->clip) rc->l->clip(rc->l->ud, rc->m, rc->seg, count, first, last);
 }
 
+/* Say which endpoint of a skipped segment has no pixel, and why. */
+static void skip_report(const pt_listener *l, const pt_model *m, uint64_t seg,
+                        pt_vec2 a, pt_vec2 b)
+{
+    const pt_segment *sg = &m->seg[seg - 1];
+    int a_bad = !(fabs(a.x) < PT_PIX_LIMIT && fabs(a.y) < PT_PIX_LIMIT);
+    pt_vec2 p = a_bad ? a : b;
+    const char *why = isfinite(p.x) && isfinite(p.y)
+        ? "endpoint beyond 2^62 in the pixel plane: no integer pixel"
+        : "endpoint not finite in the pixel plane";
+
+    l->skip(l->ud, m, seg, (a_bad ? sg->a : sg->b) + 1, why);
+}
+
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
            const pt_listener *l, pt_fb *fb, pt_summary *sum)
 {
@@ -153,27 +185,36 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     for (k = 0; k < s->nmodels; k++) {      /* run the stages */
         const pt_model *m = &s->models[k];
         const pt_model_plan *mp = &p->models[k];
-        const pt_sink *sinks[PT_NSTAGES];
+        counting_sink counters[2];          /* [1]: forward to the listener */
+        pt_sink sink_of[2];
+        const pt_sink *sinks[PT_NSTAGES], *quiet[PT_NSTAGES];
         int st;
 
         sum->vertices += m->nv;
         sum->segments += m->nseg;
         sum->vertices_unused += m->nv - mp->nused;
-        for (st = 0; st < PT_NSTAGES; st++)
-            sinks[st] = mp->why[st] == PT_WHY_TRACED && l->sink.vertex ? &l->sink : NULL;
+        counters[0].sum = counters[1].sum = sum;
+        counters[0].next = NULL;
+        counters[1].next = l->sink.vertex ? &l->sink : NULL;
+        sink_of[0].vertex = sink_of[1].vertex = count_record;
+        sink_of[0].ud = &counters[0];
+        sink_of[1].ud = &counters[1];
+        for (st = 0; st < PT_NSTAGES; st++) {
+            sinks[st] = &sink_of[mp->why[st] == PT_WHY_TRACED];
+            quiet[st] = &sink_of[0];
+        }
         if (o->rasterize) {
             pp[k] = malloc((m->nv ? m->nv : 1) * sizeof **pp);
             if (!pp[k]) { status = -1; goto done; }
         }
         for (j = 0; j < m->nv; j++) {
-            static const pt_sink *const none[PT_NSTAGES];
             int traced = mp->selected && (!o->vertex || o->vertex == j + 1);
             double z_c;
             pt_vec2 pt;
 
             if (!mp->used[j] || (!traced && !o->rasterize)) continue;
             if (traced && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
-            pt = journey(s, m, m->v[j], traced ? sinks : none, &z_c);
+            pt = journey(s, m, m->v[j], traced ? sinks : quiet, &z_c);
             if (traced) {
                 sum->vertices_traced++;
                 if (s->perspective && z_c > 0) sum->behind++;
@@ -204,8 +245,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
                 if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
                 if (r == PT_RASTER_SKIPPED) {
                     sum->segments_skipped++;
-                    if (report && l->skip)
-                        l->skip(l->ud, m, j + 1, "an endpoint has no pixel");
+                    if (report && l->skip) skip_report(l, m, j + 1, a, b);
                 }
             }
         }

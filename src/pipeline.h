@@ -69,6 +69,7 @@ typedef struct pt_summary {
     uint64_t clipped;            /* steps clipped (outside the viewport) */
     uint64_t clip_runs;          /* clip records */
     uint64_t behind;             /* traced vertices behind a perspective camera */
+    uint64_t warnings[PT_NWARN]; /* records raised with warning k (traced or not) */
     int rasterized;              /* 1: the segments were drawn */
 } pt_summary;
 
@@ -81,7 +82,8 @@ typedef struct pt_listener {
                   int64_t x_fb, int64_t y_fb, int64_t idx);
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
                  pt_pix first, pt_pix last);
-    void (*skip)(void *ud, const pt_model *m, uint64_t seg, const char *why);
+    void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */
+                 uint64_t v, const char *why);      /* v: the endpoint at fault */
     void (*summary)(void *ud, const pt_summary *sum);
     void *ud;
 } pt_listener;

@@ -221,7 +221,7 @@ static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
 
     if (t->fmt == PT_FORMAT_JSONL) header_json(t, s, p);
     else if (t->fmt == PT_FORMAT_TEXT) header_text(t, s, p);
-    else puts_(t, "model,v,stage,x,y,z,inside,behind,i\n");
+    else puts_(t, "model,v,stage,x,y,z,inside,behind,i,warning\n");
 }
 
 /* ===== vertex records ===== */
@@ -243,6 +243,40 @@ static const char *const coord_names[PT_NSTAGES][3] = {
 
 static int has_z(pt_stage st) { return st <= PT_STAGE_IMAGE; }
 static int is_real(pt_stage st) { return st <= PT_STAGE_PIXEL; }
+
+/* Text: "  ! cancellation (9 digits lost)". */
+static void put_warnings_text(pt_trace *t, const pt_vrec *r)
+{
+    int k;
+
+    puts_(t, "  !");
+    for (k = 0; k < PT_NWARN; k++) {
+        if (!(r->warn & (1u << k))) continue;
+        put(t, " ", 1);
+        puts_(t, pt_warn_names[k]);
+        if ((1u << k) & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) {
+            puts_(t, " ("); put_i64(t, r->digits_lost); puts_(t, " digits lost)");
+        }
+    }
+}
+
+/* JSON: ,"warning":["cancellation"],"digits_lost":9 */
+static void put_warnings_json(pt_trace *t, const pt_vrec *r)
+{
+    int k, first = 1;
+
+    puts_(t, ",\"warning\":[");
+    for (k = 0; k < PT_NWARN; k++) {
+        if (!(r->warn & (1u << k))) continue;
+        if (!first) put(t, ",", 1);
+        first = 0;
+        put(t, "\"", 1); puts_(t, pt_warn_names[k]); put(t, "\"", 1);
+    }
+    put(t, "]", 1);
+    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) {
+        puts_(t, ",\"digits_lost\":"); put_i64(t, r->digits_lost);
+    }
+}
 
 static void vertex_text(pt_trace *t, const pt_vrec *r)
 {
@@ -272,6 +306,7 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
     if (r->flags & PT_REC_BEHIND) puts_(t, "  behind the camera");
     if (r->stage == PT_STAGE_VIEWPORT)
         puts_(t, r->flags & PT_REC_INSIDE ? "  inside" : "  outside");
+    if (r->warn) put_warnings_text(t, r);
     put(t, "\n", 1);
 }
 
@@ -297,10 +332,12 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         puts_(t, ",\"behind\":true");
     if (r->stage == PT_STAGE_VIEWPORT)
         puts_(t, r->flags & PT_REC_INSIDE ? ",\"inside\":true" : ",\"inside\":false");
+    if (r->warn) put_warnings_json(t, r);
     puts_(t, "}\n");
 }
 
-/* CSV: model,v,stage,x,y,z,inside,behind,i; empty where a field does not apply. */
+/* CSV: model,v,stage,x,y,z,inside,behind,i,warning; empty where a field does not
+** apply; warning names joined by '|'. */
 static void vertex_csv(pt_trace *t, const pt_vrec *r)
 {
     puts_(t, t->model->name); put(t, ",", 1); put_u64(t, t->v); put(t, ",", 1);
@@ -319,6 +356,16 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     if (r->stage == PT_STAGE_IMAGE) puts_(t, r->flags & PT_REC_BEHIND ? "1" : "0");
     put(t, ",", 1);
     if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) put_i64(t, r->i);
+    put(t, ",", 1);
+    {
+        int k, first = 1;
+        for (k = 0; k < PT_NWARN; k++) {
+            if (!(r->warn & (1u << k))) continue;
+            if (!first) put(t, "|", 1);
+            first = 0;
+            puts_(t, pt_warn_names[k]);
+        }
+    }
     put(t, "\n", 1);
 }
 
@@ -386,17 +433,20 @@ static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
     }
 }
 
-static void on_skip(void *ud, const pt_model *m, uint64_t seg, const char *why)
+static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
+                    const char *why)
 {
     pt_trace *t = ud;
 
     if (t->fmt == PT_FORMAT_JSONL) {
         puts_(t, "{\"type\":\"skip\",\"model\":"); put_json_str(t, m->name);
         puts_(t, ",\"segment\":"); put_u64(t, seg);
+        puts_(t, ",\"v\":"); put_u64(t, v);
         puts_(t, ",\"why\":"); put_json_str(t, why); puts_(t, "}\n");
     } else if (t->fmt == PT_FORMAT_TEXT) {
         put_who(t, m->name, "s", seg);
-        puts_(t, "skipped      "); puts_(t, why); put(t, "\n", 1);
+        puts_(t, "skipped      v"); put_u64(t, v); puts_(t, ": ");
+        puts_(t, why); put(t, "\n", 1);
     }
 }
 
@@ -423,13 +473,24 @@ static void on_summary(void *ud, const pt_summary *sum)
         for (k = 0; k < sizeof vals / sizeof vals[0]; k++) {
             puts_(t, ",\""); puts_(t, names[k]); puts_(t, "\":"); put_u64(t, vals[k]);
         }
-        puts_(t, sum->rasterized ? ",\"rasterized\":true}\n" : ",\"rasterized\":false}\n");
+        puts_(t, ",\"warnings\":{");
+        for (k = 0; k < PT_NWARN; k++) {
+            if (k) put(t, ",", 1);
+            put(t, "\"", 1); puts_(t, pt_warn_names[k]); puts_(t, "\":");
+            put_u64(t, sum->warnings[k]);
+        }
+        puts_(t, sum->rasterized ? "},\"rasterized\":true}\n" : "},\"rasterized\":false}\n");
         return;
     }
     puts_(t, "\nsummary");
     for (k = 0; k < sizeof vals / sizeof vals[0]; k++) {
         puts_(t, k % 4 == 0 ? "\n  " : "  ");
         puts_(t, names[k]); put(t, " ", 1); put_u64(t, vals[k]);
+    }
+    puts_(t, "\n  warnings");
+    for (k = 0; k < PT_NWARN; k++) {
+        put(t, " ", 1); puts_(t, pt_warn_names[k]); put(t, " ", 1);
+        put_u64(t, sum->warnings[k]);
     }
     puts_(t, sum->rasterized ? "\n  rasterized yes\n" : "\n  rasterized no (--vertex without --image)\n");
 }

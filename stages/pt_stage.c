@@ -2,6 +2,7 @@
 ** stages/pt_stage.c -- the table of stages: names, spaces, formulas
 ** See LICENSE for copyright and license.
 */
+#include <math.h>
 #include <string.h>
 #include "pt_stage.h"
 
@@ -29,4 +30,31 @@ int pt_stage_by_name(const char *s)
     for (k = 0; k < PT_NSTAGES; k++)
         if (strcmp(s, pt_stage_infos[k].name) == 0) return k;
     return -1;
+}
+
+const char *const pt_warn_names[PT_NWARN] = {
+    "nonfinite", "cancellation", "ill_conditioned", "out_of_range", "outside_pixel_array",
+};
+
+int pt_bits_lost(double scale, double x)
+{
+    int lost;
+
+    if (x == 0 || !isfinite(x) || !isfinite(scale) || fabs(x) >= fabs(scale)) return 0;
+    lost = ilogb(scale) - ilogb(x);         /* exact: binary exponents */
+    return lost > 53 ? 53 : lost;
+}
+
+int pt_bits_to_digits(int bits)
+{
+    return (int)((long)bits * 30103L / 100000L);    /* log10(2) = 0.30103 */
+}
+
+unsigned pt_warn_nonfinite(const double *v, int n)
+{
+    int k;
+
+    for (k = 0; k < n; k++)
+        if (!isfinite(v[k])) return PT_WARN_NONFINITE;
+    return 0;
 }

@@ -45,6 +45,17 @@ typedef enum pt_stage {
 #define PT_REC_INSIDE  0x02u   /* viewport: 0 <= x_vp < w and 0 <= y_vp < h */
 #define PT_REC_NULL    0x04u   /* viewport, framebuffer, index: no value */
 
+/* Warnings a stage raises about the numbers it produced (docs/stability.md). */
+#define PT_WARN_NONFINITE   0x01u  /* a result is infinite or not a number */
+#define PT_WARN_CANCEL      0x02u  /* camera: x_m + x_t cancelled most digits */
+#define PT_WARN_ILLCOND     0x04u  /* image: z_c lost most digits; the quotient too */
+#define PT_WARN_RANGE       0x08u  /* viewport: no integer pixel (|x_pp| >= 2^62) */
+#define PT_WARN_OUTSIDE     0x10u  /* index: the pixel is outside the pixel array */
+#define PT_NWARN            5      /* number of warning kinds */
+
+/* More than half of a double's 53 bits lost is worth a warning. */
+#define PT_BITS_LOST_WARN   26
+
 /* One vertex at one stage.  Which fields hold values depends on the stage:
 ** model, camera, image use x y z; pixel uses x y; viewport and framebuffer use
 ** ix iy; index uses i.  PT_REC_NULL marks an integer result that does not exist
@@ -52,6 +63,8 @@ typedef enum pt_stage {
 typedef struct pt_vrec {
     pt_stage stage;            /* which stage produced it */
     unsigned flags;            /* PT_REC_* */
+    unsigned warn;             /* PT_WARN_* */
+    int digits_lost;           /* with CANCEL or ILLCOND: decimal digits lost */
     double x, y, z;            /* real-valued stages */
     int64_t ix, iy;            /* viewport, framebuffer */
     int64_t i;                 /* index */
@@ -83,5 +96,21 @@ extern const pt_stage_info pt_stage_infos[PT_NSTAGES];
 
 /* The pt_stage whose name is s, or -1. This function can't fail. */
 int pt_stage_by_name(const char *s);
+
+/* Name of warning bit k (0 <= k < PT_NWARN): "nonfinite", "cancellation", ... */
+extern const char *const pt_warn_names[PT_NWARN];
+
+/* Bits of precision lost when a value x was computed from operands whose
+** magnitudes are at most scale: the rounding error of the operands is about
+** ulp(scale), so only ilogb(scale) - ilogb(x) fewer bits of x are real.  0 when
+** x is 0, not finite, or no smaller than scale.  This function can't fail. */
+int pt_bits_lost(double scale, double x);
+
+/* Decimal digits in `bits` bits, rounded down: bits * log10(2), computed in
+** integers so every platform gives the same answer.  This function can't fail. */
+int pt_bits_to_digits(int bits);
+
+/* PT_WARN_NONFINITE when any of the n values is not finite, else 0. */
+unsigned pt_warn_nonfinite(const double *v, int n);
 
 #endif

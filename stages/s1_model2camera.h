@@ -16,6 +16,8 @@
 **
 ** Note: x_m + 0.0 is x_m except that -0.0 becomes +0.0; the stage always adds, so
 ** a zero translation still gives exactly what the formula gives.
+** Warnings: nonfinite (overflow), cancellation (x_m and x_t nearly opposite:
+** more than 26 of the 53 bits of x_c are only the operands' rounding error).
 */
 #ifndef PT_S1_MODEL2CAMERA_H
 #define PT_S1_MODEL2CAMERA_H

@@ -17,6 +17,7 @@
 **  (-1,-1) +-------+ (1,-1)        (0.5,0.5) +-----------+ (w+.5,0.5)
 **
 ** Logical pixels are the points with integer coordinates.  docs/stages.md#s3.
+** Warning: nonfinite (an infinite x_ip, or overflow for |x_ip| near 1e308).
 */
 #ifndef PT_S3_IMAGE2PIXEL_H
 #define PT_S3_IMAGE2PIXEL_H

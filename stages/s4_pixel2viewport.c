@@ -52,7 +52,7 @@ pt_pix pt_pixel2viewport(pt_vec2 pp, int w, int h, const pt_sink *sink)
         vp.ok = 1;
     }
     r.stage = PT_STAGE_VIEWPORT;
-    if (!vp.ok) r.flags |= PT_REC_NULL;
+    if (!vp.ok) { r.flags |= PT_REC_NULL; r.warn |= PT_WARN_RANGE; }
     else if (pt_vp_inside(vp.x, vp.y, w, h)) r.flags |= PT_REC_INSIDE;
     r.ix = vp.x; r.iy = vp.y;
     pt_emit(sink, &r);

@@ -18,7 +18,8 @@
 **
 ** Java keeps these numbers in 32-bit ints; pipetrace keeps them in 64 bits and
 ** gives no value (PT_REC_NULL) when |x_pp| or |y_pp| >= PT_PIX_LIMIT or is not a
-** number.  docs/stages.md#s4.
+** number, with the warning out_of_range (Java's Math.round would saturate
+** there and its int cast wrap around).  docs/stages.md#s4.
 */
 #ifndef PT_S4_PIXEL2VIEWPORT_H
 #define PT_S4_PIXEL2VIEWPORT_H

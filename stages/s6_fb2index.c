@@ -15,6 +15,7 @@ int64_t pt_fb2index(pt_pix fb, int W, int H, const pt_sink *sink)
         idx = fb.y * (int64_t)W + fb.x;     /* idx = y_fb * W + x_fb */
     r.stage = PT_STAGE_INDEX;
     if (idx < 0) r.flags |= PT_REC_NULL;
+    if (idx < 0 && fb.ok) r.warn |= PT_WARN_OUTSIDE;
     r.i = idx;
     pt_emit(sink, &r);
     return idx;

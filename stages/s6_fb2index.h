@@ -11,7 +11,8 @@
 **   row y_fb:  idx y_fb*W  ...  y_fb*W + x_fb  ...
 **
 ** A pixel outside the framebuffer has no index (PT_REC_NULL): the formula would
-** name some other pixel, or one past the array's end.  docs/stages.md#s6.
+** name some other pixel, or one past the array's end; the record carries the
+** warning outside_pixel_array.  docs/stages.md#s6.
 */
 #ifndef PT_S6_FB2INDEX_H
 #define PT_S6_FB2INDEX_H

@@ -82,7 +82,7 @@ fi
 n_vertex=$(grep -c '"type":"vertex"' "$tmp/out")
 run docs/examples/cube.scene --format csv
 check "cli-4.6 csv: one row per vertex record, plus a header row" test "$(echo "$out" | wc -l)" = $((n_vertex + 1))
-check "cli-4.7 csv header" test "$(echo "$out" | head -1)" = "model,v,stage,x,y,z,inside,behind,i"
+check "cli-4.7 csv header" test "$(echo "$out" | head -1)" = "model,v,stage,x,y,z,inside,behind,i,warning"
 run docs/examples/triangle.scene --format jsonl
 check "cli-4.8 exact values in jsonl: x_pp of vertex 1" grep -q '"v":1,"stage":"pixel","x":5.497501249375313,"y":2.9987506246876565' "$tmp/out"
 run docs/examples/triangle.scene --precision 2

@@ -32,21 +32,21 @@ static void test_s1(void)
 
 static void test_s2(void)
 {
-    pt_vec3 ip = pt_camera2image((pt_vec3){-1, -1, -2}, 1, &sink);
+    pt_vec3 ip = pt_camera2image((pt_vec3){-1, -1, -2}, 2, 1, &sink);
     PT_CHECK("s2-1.1 perspective (-1,-1,-2) -> (-0.5,-0.5,-1)",
              ip.x == -0.5 && ip.y == -0.5 && ip.z == -1);
     PT_CHECK("s2-1.2 in front: not behind", !(last.flags & PT_REC_BEHIND));
-    ip = pt_camera2image((pt_vec3){1, 2, 4}, 1, &sink);
+    ip = pt_camera2image((pt_vec3){1, 2, 4}, 0, 1, &sink);
     PT_CHECK("s2-1.3 behind the camera is mirrored: (1,2,4) -> (-0.25,-0.5)",
              ip.x == -0.25 && ip.y == -0.5);
     PT_CHECK("s2-1.4 behind flag set for z_c > 0", last.flags & PT_REC_BEHIND);
-    ip = pt_camera2image((pt_vec3){0.3, -0.7, 5}, 0, &sink);
+    ip = pt_camera2image((pt_vec3){0.3, -0.7, 5}, 0, 0, &sink);
     PT_CHECK("s2-2.1 orthographic keeps x, y and sets z = 0",
              ip.x == 0.3 && ip.y == -0.7 && ip.z == 0 && !(last.flags & PT_REC_BEHIND));
-    ip = pt_camera2image((pt_vec3){1, -1, 0}, 1, NULL);
+    ip = pt_camera2image((pt_vec3){1, -1, 0}, 0, 1, NULL);
     PT_CHECK("s2-3.1 z_c = 0 gives infinities, as the formula does: 1 / -0.0 = -inf",
              isinf(ip.x) && ip.x < 0 && isinf(ip.y) && ip.y > 0);
-    ip = pt_camera2image((pt_vec3){0, 1, -3}, 1, NULL);
+    ip = pt_camera2image((pt_vec3){0, 1, -3}, 0, 1, NULL);
     PT_CHECK("s2-3.2 x_ip = 0 / 3 = +0",
              ip.x == 0 && !signbit(ip.x));
 }
@@ -123,6 +123,37 @@ static void test_s5_s6(void)
     PT_CHECK("s5-1.2 no viewport pixel, no framebuffer pixel", !fb.ok && (last.flags & PT_REC_NULL));
 }
 
+static void test_warnings(void)
+{
+    pt_vec3 c;
+
+    c = pt_model2camera((pt_vec3){1000000000.1, 0, 0}, (pt_vec3){-1000000000, 0, -2}, &sink);
+    PT_CHECK("warn-1.1 1e9 + 0.1 - 1e9: cancellation flagged",
+             (last.warn & PT_WARN_CANCEL) && last.digits_lost >= 9 && last.digits_lost <= 10);
+    PT_CHECK("warn-1.2 ... and the value is what the doubles give", c.x == 0.10000002384185791);
+    pt_model2camera((pt_vec3){1.5, -1, 0}, (pt_vec3){-1, 1, -5}, &sink);
+    PT_CHECK("warn-1.3 exact cancellation to 0 and mild loss raise nothing", last.warn == 0);
+    pt_model2camera((pt_vec3){1e308, 0, 0}, (pt_vec3){1e308, 0, 0}, &sink);
+    PT_CHECK("warn-1.4 overflow to inf: nonfinite", last.warn & PT_WARN_NONFINITE);
+    pt_camera2image((pt_vec3){1, 1, -1e-12}, 5, 1, &sink);
+    PT_CHECK("warn-2.1 z_c = 5 - 5.000000000001: ill-conditioned projection",
+             (last.warn & PT_WARN_ILLCOND) && last.digits_lost == 12);
+    pt_camera2image((pt_vec3){1, 1, -1e-12}, 1e-12, 1, &sink);
+    PT_CHECK("warn-2.2 the same z_c given exactly: no warning", last.warn == 0);
+    pt_camera2image((pt_vec3){1, 1, 0}, 0, 1, &sink);
+    PT_CHECK("warn-2.3 z_c = 0: nonfinite", last.warn == PT_WARN_NONFINITE);
+    pt_camera2image((pt_vec3){1, 1, -4.9e-324}, 4.9e-324, 1, &sink);
+    PT_CHECK("warn-2.4 divide by the smallest subnormal: nonfinite", last.warn & PT_WARN_NONFINITE);
+    pt_image2pixel((pt_vec3){1.7e308, 0, -1}, 800, 600, &sink);
+    PT_CHECK("warn-3.1 pixel plane overflow: nonfinite", last.warn & PT_WARN_NONFINITE);
+    pt_pixel2viewport((pt_vec2){1e300, 1}, 8, 8, &sink);
+    PT_CHECK("warn-4.1 x_pp = 1e300: out_of_range", last.warn == PT_WARN_RANGE);
+    pt_fb2index((pt_pix){-1, 0, 1}, 8, 8, &sink);
+    PT_CHECK("warn-6.1 x_fb = -1: outside_pixel_array", last.warn == PT_WARN_OUTSIDE);
+    PT_CHECK("warn-7.1 digits from bits: 26 bits = 7 digits, 53 bits = 15 digits",
+             pt_bits_to_digits(26) == 7 && pt_bits_to_digits(53) == 15);
+}
+
 static void test_table(void)
 {
     PT_CHECK("stage-1.1 names map to ids", pt_stage_by_name("viewport") == PT_STAGE_VIEWPORT &&
@@ -142,6 +173,7 @@ int main(void)
     test_round();
     test_s4();
     test_s5_s6();
+    test_warnings();
     test_table();
     return pt_test_report();
 }
