@@ -36,6 +36,7 @@ one reference  "$B/test_reference" "$ref"
 one fuzz       "$B/test_fuzz"
 one golden     sh tests/golden.sh "$B/pipetrace"
 one cli        sh tests/cli.sh "$B/pipetrace"
+one extreme    sh tests/extreme.sh "$B/pipetrace"
 one docs       sh tests/docs.sh "$B/pipetrace"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
