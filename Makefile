@@ -5,6 +5,7 @@
 #   make run       build and render the built-in scene
 #   make test      build and run every test; last line "N passed, N failed"
 #   make golden    rewrite traces/ from docs/examples/ (on purpose only)
+#   make docs      rewrite the outputs shown in the docs (on purpose only)
 #   make sanitize  run the tests under -fsanitize=address,undefined
 #   make clean
 
@@ -19,18 +20,45 @@ ALLCFLAGS = -std=c11 $(WARN) $(FPFLAGS) $(CFLAGS)
 LDLIBS  = -lm
 B       = build
 
-# The stages, in pipeline order, then the driver.
+# ===== student stages (docs/teaching.md) =====
+# `make STAGE_pixel=FILE.c` builds build-student/pipetrace with FILE.c in place
+# of stages/s3_image2pixel.c; build/ stays the reference.  One variable a stage:
+# STAGE_camera (s1), STAGE_projection (s2), STAGE_pixel (s3), STAGE_viewport (s4),
+# STAGE_framebuffer (s5), STAGE_index (s6).  FILE.c includes its stage's header
+# by name (-Istages); $B/choice remembers the files, so a new choice rebuilds.
+CHOICE  = camera=$(STAGE_camera) projection=$(STAGE_projection) pixel=$(STAGE_pixel) \
+          viewport=$(STAGE_viewport) framebuffer=$(STAGE_framebuffer) index=$(STAGE_index)
+ifneq ($(strip $(STAGE_camera)$(STAGE_projection)$(STAGE_pixel)$(STAGE_viewport)$(STAGE_framebuffer)$(STAGE_index)),)
+B       = build-student
+$(shell mkdir -p $B; echo '$(CHOICE)' | cmp -s - $B/choice || echo '$(CHOICE)' > $B/choice)
+STAGE_CC = $(CC) $(ALLCFLAGS) -Istages -c -o $@ $<
+$B/s1_model2camera.o:   $(or $(STAGE_camera),stages/s1_model2camera.c) stages/*.h $B/choice; $(STAGE_CC)
+$B/s2_camera2image.o:   $(or $(STAGE_projection),stages/s2_camera2image.c) stages/*.h $B/choice; $(STAGE_CC)
+$B/s3_image2pixel.o:    $(or $(STAGE_pixel),stages/s3_image2pixel.c) stages/*.h $B/choice; $(STAGE_CC)
+$B/s4_pixel2viewport.o: $(or $(STAGE_viewport),stages/s4_pixel2viewport.c) stages/*.h $B/choice; $(STAGE_CC)
+$B/s5_viewport2fb.o:    $(or $(STAGE_framebuffer),stages/s5_viewport2fb.c) stages/*.h $B/choice; $(STAGE_CC)
+$B/s6_fb2index.o:       $(or $(STAGE_index),stages/s6_fb2index.c) stages/*.h $B/choice; $(STAGE_CC)
+endif
+# ===== end of student stages =====
+
+# The stages, in pipeline order: the classic camera's, then the matrix
+# camera's own (it shares s5 and s6), then the driver.
 STAGES_O = $B/pt_stage.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/s3_image2pixel.o $B/s4_pixel2viewport.o $B/s5_viewport2fb.o \
-           $B/s6_fb2index.o
-SRC_O    = $B/scene.o $B/pipeline.o $B/raster.o $B/fb.o $B/numfmt.o \
-           $B/trace.o $B/outfile.o $B/builtin.o
+           $B/s6_fb2index.o \
+           $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
+           $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
+           $B/m7_screen2viewport.o
+SRC_O    = $B/scene.o $B/pipeline.o $B/matrix.o $B/clip.o $B/raster.o $B/fb.o $B/numfmt.o \
+           $B/trace.o $B/outfile.o $B/builtin.o $B/explain.o $B/tread.o
+# The subcommands, one file each.
+CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
-           $B/test_reference $B/test_fuzz
+           $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain
 
 all: $B/pipetrace
 
-$B/pipetrace: $B/main.o $B/libpipetrace.a
+$B/pipetrace: $B/main.o $(CMDS_O) $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
 
 $B/libpipetrace.a: $(STAGES_O) $(SRC_O)
@@ -62,10 +90,13 @@ test: $B/pipetrace $(TESTS)
 golden: $B/pipetrace
 	sh tests/golden.sh $B/pipetrace --write
 
+docs: $B/pipetrace
+	python3 tests/docs_write.py $B/pipetrace README.md docs/*.md
+
 sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test
 
 clean:
 	rm -rf build build-san
 
-.PHONY: all run test golden sanitize clean
+.PHONY: all run test golden docs sanitize clean

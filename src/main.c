@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "builtin.h"
+#include "commands.h"
 #include "outfile.h"
 #include "pipeline.h"
 #include "scene.h"
@@ -22,6 +23,10 @@
 
 static const char usage[] =
 "usage: pipetrace [SCENE] [options]\n"
+"       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL]\n"
+"       pipetrace step [SCENE] --vertex N [--model NAME] [--all]\n"
+"       pipetrace why [SCENE] X_FB Y_FB\n"
+"       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
 "through the classic teaching pipeline and trace every vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
@@ -32,8 +37,12 @@ static const char usage[] =
 "  --vertex N        trace only vertex N (1-based) of each model\n"
 "  --model NAME      trace only the model NAME\n"
 "  --stage NAME      trace only this stage (repeatable): model, camera, image,\n"
-"                    pixel, viewport, framebuffer, index, or raster (pixels)\n"
+"                    pixel, viewport, framebuffer, index, or raster (pixels);\n"
+"                    matrix camera: world, view, clip, cvv, ndc, screen too\n"
 "  --all-stages      trace identity stages too (they are left out by default)\n"
+"  --raw-lookat      matrix camera: keep the given up vector as it is (the\n"
+"                    seed's matrix) instead of making it perpendicular\n"
+"  --explain         under each vertex record, its formula with the numbers put in\n"
 "  --precision N     digits after the point in the text format (0-17, default 6)\n"
 "  --help            show this help\n"
 "  --version         show the version\n"
@@ -51,6 +60,7 @@ typedef struct cli {
     pt_format fmt;
     int precision;
     int raster_chosen;           /* --stage raster given */
+    int explain;                 /* --explain */
     pt_options opt;
 } cli;
 
@@ -118,11 +128,15 @@ static int parse_args(cli *c, int argc, char **argv)
             else if (st < 0) return usage_error("unknown stage '%s'", val);
             else c->opt.stage_mask |= 1u << st;
         } else if (!strcmp(a, "--all-stages")) c->opt.all_stages = 1;
+        else if (!strcmp(a, "--raw-lookat")) c->opt.raw_lookat = 1;
+        else if (!strcmp(a, "--explain")) c->explain = 1;
         else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option '%s'", a);
         else if (c->scene) return usage_error("more than one scene given ('%s')", a);
         else c->scene = a;
     }
     if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
+    if (c->explain && c->fmt == PT_FORMAT_CSV)
+        return usage_error("--explain needs --format text or jsonl%s", "");
     if (!c->image && !c->trace) c->trace = "-";
     /* --vertex without --image: only that vertex's journey is computed */
     c->opt.rasterize = c->image != NULL || (c->opt.trace_raster && !c->opt.vertex);
@@ -170,6 +184,10 @@ int main(int argc, char **argv)
     char err[PT_ERRLEN];
     int rc;
 
+    if (argc > 1 && strcmp(argv[1], "diff") == 0) return pt_cmd_diff(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "step") == 0) return pt_cmd_step(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "why") == 0) return pt_cmd_why(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "quiz") == 0) return pt_cmd_quiz(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
 
@@ -194,6 +212,7 @@ int main(int argc, char **argv)
         else {
             pt_trace_init(tr, tout.f, c.fmt, c.precision);
             pt_trace_listener(tr, &l);
+            tr->explain = c.explain;
         }
     }
     if (!rc && c.image && pt_fb_init(&fb, s.fb_w, s.fb_h, s.background) != 0) {

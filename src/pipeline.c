@@ -7,6 +7,8 @@
 #include <string.h>
 #include "pipeline.h"
 #include "raster.h"
+#include "clip.h"
+#include "matrix.h"
 #include "../stages/s1_model2camera.h"
 #include "../stages/s2_camera2image.h"
 #include "../stages/s3_image2pixel.h"
@@ -17,12 +19,17 @@
 void pt_options_default(pt_options *o)
 {
     memset(o, 0, sizeof *o);
-    o->stage_mask = (1u << PT_NSTAGES) - 1;
+    o->stage_mask = (1u << PT_NSTAGES_ALL) - 1;
     o->trace_raster = 1;
     o->rasterize = 1;
 }
 
 /* ===== plan ===== */
+
+static const pt_stage classic_order[] = {
+    PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE, PT_STAGE_PIXEL,
+    PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER, PT_STAGE_INDEX,
+};
 
 /* 1 when adding t changes no value: every component is zero.  (x + 0.0 still
 ** turns -0.0 into +0.0; the stage is computed anyway, only its record goes.) */
@@ -31,17 +38,47 @@ static int is_zero(pt_vec3 t)
     return t.x == 0 && t.y == 0 && t.z == 0;
 }
 
+static int is_identity(const pt_mat4 *a)
+{
+    pt_mat4 id = pt_mat4_identity();
+    int i, j;
+
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            if (a->m[i][j] != id.m[i][j]) return 0;
+    return 1;
+}
+
+/* Why stage st is the identity for model k under plan p, or NULL. */
+static const char *identity_why(const pt_scene *s, const pt_plan *p, size_t k, int st)
+{
+    if (st == PT_STAGE_CAMERA && is_zero(s->models[k].translate))
+        return "identity: translation 0 0 0";
+    if (st == PT_STAGE_WORLD && is_identity(&p->models[k].world))
+        return "identity: world matrix";
+    if (st == PT_STAGE_VIEW && is_identity(&p->view))
+        return "identity: view matrix";
+    if (st == PT_STAGE_FRAMEBUFFER && s->vp_x == 0 && s->vp_y == 0)
+        return "identity: viewport at 0,0";
+    return NULL;
+}
+
 int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
 {
     size_t k, j;
+    int st, i;
 
+    memset(p, 0, sizeof *p);
     p->nmodels = s->nmodels;
     p->models = calloc(s->nmodels ? s->nmodels : 1, sizeof *p->models);
     if (!p->models) return -1;
+    p->order = s->matrix ? pt_matrix_order : classic_order;
+    p->norder = s->matrix ? pt_matrix_norder
+                          : (int)(sizeof classic_order / sizeof classic_order[0]);
+    if (s->matrix) pt_matrix_plan(p, s, o);
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
         pt_model_plan *mp = &p->models[k];
-        int st;
 
         mp->selected = !o->model || strcmp(o->model, m->name) == 0;
         mp->used = calloc(m->nv ? m->nv : 1, 1);
@@ -51,18 +88,18 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
             mp->used[m->seg[j].b] = 1;
         }
         for (j = 0; j < m->nv; j++) mp->nused += mp->used[j];
-        for (st = 0; st < PT_NSTAGES; st++) {
+        for (st = 0; st < PT_NSTAGES_ALL; st++) mp->why[st] = PT_WHY_OTHER_CAMERA;
+        for (i = 0; i < p->norder; i++) {
+            const char *why;
+            st = p->order[i];
+            mp->why[st] = PT_WHY_TRACED;
+            mp->why_text[st] = NULL;
             if (!(o->stage_mask & (1u << st))) {
                 mp->why[st] = PT_WHY_FILTER;
                 mp->why_text[st] = "not chosen by --stage";
-            } else if (o->all_stages) {
-                continue;
-            } else if (st == PT_STAGE_CAMERA && is_zero(m->translate)) {
+            } else if (!o->all_stages && (why = identity_why(s, p, k, st)) != NULL) {
                 mp->why[st] = PT_WHY_IDENTITY;
-                mp->why_text[st] = "identity: translation 0 0 0";
-            } else if (st == PT_STAGE_FRAMEBUFFER && s->vp_x == 0 && s->vp_y == 0) {
-                mp->why[st] = PT_WHY_IDENTITY;
-                mp->why_text[st] = "identity: viewport at 0,0";
+                mp->why_text[st] = why;
             }
         }
     }
@@ -97,10 +134,41 @@ static void count_record(void *ud, const pt_vrec *r)
     if (cs->next) cs->next->vertex(cs->next->ud, r);
 }
 
-/* The journey of one vertex; returns its pixel-plane point for the rasterizer.
-** sinks[st] is the listener's sink when stage st is traced, else NULL. */
-static pt_vec2 journey(const pt_scene *s, const pt_model *m, pt_vec3 v_m,
-                       const pt_sink *const sinks[PT_NSTAGES], double *z_c)
+/* The sinks of one model: traced[st] for a traced vertex, quiet[st] (counts
+** only) for the others. */
+typedef struct model_sinks {
+    counting_sink counters[2];   /* [0]: count only, [1]: count and forward */
+    pt_sink sink_of[2];
+    const pt_sink *traced[PT_NSTAGES_ALL], *quiet[PT_NSTAGES_ALL];
+} model_sinks;
+
+static void sinks_init(model_sinks *ms, const pt_model_plan *mp, const pt_listener *l,
+                       pt_summary *sum)
+{
+    int st;
+
+    ms->counters[0].sum = ms->counters[1].sum = sum;
+    ms->counters[0].next = NULL;
+    ms->counters[1].next = l->sink.vertex ? &l->sink : NULL;
+    ms->sink_of[0].vertex = ms->sink_of[1].vertex = count_record;
+    ms->sink_of[0].ud = &ms->counters[0];
+    ms->sink_of[1].ud = &ms->counters[1];
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {
+        ms->traced[st] = &ms->sink_of[mp->why[st] == PT_WHY_TRACED];
+        ms->quiet[st] = &ms->sink_of[0];
+    }
+}
+
+/* What the rasterizer needs of a vertex. */
+typedef struct vtx {
+    pt_vec2 pp;                  /* pixel-plane point (NaN: none) */
+    pt_vec4 clip;                /* matrix camera: clip coordinates */
+    unsigned code;               /* matrix camera: CVV outcode */
+} vtx;
+
+/* The classic journey of one vertex; returns its pixel-plane point. */
+static pt_vec2 classic_journey(const pt_scene *s, const pt_model *m, pt_vec3 v_m,
+                               const pt_sink *const sinks[PT_NSTAGES_ALL], double *z_c)
 {
     pt_vrec r = {0};
     pt_vec3 c, ip;
@@ -119,6 +187,39 @@ static pt_vec2 journey(const pt_scene *s, const pt_model *m, pt_vec3 v_m,
     fb = pt_viewport2fb(vp, s->vp_x, s->vp_y, sinks[PT_STAGE_FRAMEBUFFER]);
     pt_fb2index(fb, s->fb_w, s->fb_h, sinks[PT_STAGE_INDEX]);
     return pp;
+}
+
+/* Run every vertex of model k that needs it; fill v[] for the rasterizer. */
+static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
+                      const pt_listener *l, size_t k, const model_sinks *ms,
+                      vtx *v, pt_summary *sum)
+{
+    const pt_model *m = &s->models[k];
+    const pt_model_plan *mp = &p->models[k];
+    size_t j;
+
+    for (j = 0; j < m->nv; j++) {
+        int traced = mp->selected && (!o->vertex || o->vertex == j + 1);
+        const pt_sink *const *sinks = traced ? ms->traced : ms->quiet;
+        int behind;
+        vtx x;
+
+        if (!mp->used[j] || (!traced && !o->rasterize)) continue;
+        if (traced && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
+        if (s->matrix) {
+            x.pp = pt_matrix_journey(s, p, k, m->v[j], sinks, &x.clip, &x.code);
+            behind = x.clip.w < 0;
+        } else {
+            double z_c;
+            x.pp = classic_journey(s, m, m->v[j], sinks, &z_c);
+            behind = s->perspective && z_c > 0;
+        }
+        if (traced) {
+            sum->vertices_traced++;
+            sum->behind += behind;
+        }
+        if (o->rasterize) v[j] = x;
+    }
 }
 
 /* ===== rasterize ===== */
@@ -169,58 +270,60 @@ static void skip_report(const pt_listener *l, const pt_model *m, uint64_t seg,
     l->skip(l->ud, m, seg, (a_bad ? sg->a : sg->b) + 1, why);
 }
 
+/* Clip a matrix-camera segment in clip space; the points clipping makes run
+** the rest of the pipeline.  Returns 0 when nothing of it is visible, else 1
+** with *a, *b the pixel-plane points to draw between. */
+static int matrix_segment(const pt_scene *s, const pt_model *m, uint64_t seg,
+                          const vtx *va, const vtx *vb, const pt_listener *l,
+                          const model_sinks *ms, pt_vec2 *a, pt_vec2 *b)
+{
+    const pt_segment *sg = &m->seg[seg - 1];
+    const pt_sink *const *sinks = l ? ms->traced : ms->quiet;
+    double t0, t1;
+    pt_vec4 q0, q1;
+
+    *a = va->pp;
+    *b = vb->pp;
+    if ((va->code | vb->code) == 0) return 1;           /* all inside */
+    if (!pt_clip_segment(va->clip, vb->clip, &t0, &t1, &q0, &q1)) return 0;
+    if (va->code) {                                     /* a new first end */
+        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t0);
+        *a = pt_matrix_tail(s, q0, sinks);
+    }
+    if (vb->code) {                                     /* a new last end */
+        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t1);
+        *b = pt_matrix_tail(s, q1, sinks);
+    }
+    return 1;
+}
+
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
            const pt_listener *l, pt_fb *fb, pt_summary *sum)
 {
     size_t k, j;
-    pt_vec2 **pp;                /* pp[k][v]: pixel-plane point of used vertex v */
+    vtx **vs;                    /* vs[k][v]: what the rasterizer needs of v */
+    model_sinks *ms;             /* ms[k]: model k's sinks */
     int status = 0;
 
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
-    pp = calloc(s->nmodels ? s->nmodels : 1, sizeof *pp);
-    if (!pp) return -1;
+    vs = calloc(s->nmodels ? s->nmodels : 1, sizeof *vs);
+    ms = malloc((s->nmodels ? s->nmodels : 1) * sizeof *ms);
+    if (!vs || !ms) { free(vs); free(ms); return -1; }
     if (l->header) l->header(l->ud, s, p);
 
     for (k = 0; k < s->nmodels; k++) {      /* run the stages */
         const pt_model *m = &s->models[k];
-        const pt_model_plan *mp = &p->models[k];
-        counting_sink counters[2];          /* [1]: forward to the listener */
-        pt_sink sink_of[2];
-        const pt_sink *sinks[PT_NSTAGES], *quiet[PT_NSTAGES];
-        int st;
 
         sum->vertices += m->nv;
         sum->segments += m->nseg;
-        sum->vertices_unused += m->nv - mp->nused;
-        counters[0].sum = counters[1].sum = sum;
-        counters[0].next = NULL;
-        counters[1].next = l->sink.vertex ? &l->sink : NULL;
-        sink_of[0].vertex = sink_of[1].vertex = count_record;
-        sink_of[0].ud = &counters[0];
-        sink_of[1].ud = &counters[1];
-        for (st = 0; st < PT_NSTAGES; st++) {
-            sinks[st] = &sink_of[mp->why[st] == PT_WHY_TRACED];
-            quiet[st] = &sink_of[0];
-        }
+        sum->vertices_unused += m->nv - p->models[k].nused;
+        sinks_init(&ms[k], &p->models[k], l, sum);
         if (o->rasterize) {
-            pp[k] = malloc((m->nv ? m->nv : 1) * sizeof **pp);
-            if (!pp[k]) { status = -1; goto done; }
+            vs[k] = malloc((m->nv ? m->nv : 1) * sizeof **vs);
+            if (!vs[k]) { status = -1; goto done; }
         }
-        for (j = 0; j < m->nv; j++) {
-            int traced = mp->selected && (!o->vertex || o->vertex == j + 1);
-            double z_c;
-            pt_vec2 pt;
-
-            if (!mp->used[j] || (!traced && !o->rasterize)) continue;
-            if (traced && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
-            pt = journey(s, m, m->v[j], traced ? sinks : quiet, &z_c);
-            if (traced) {
-                sum->vertices_traced++;
-                if (s->perspective && z_c > 0) sum->behind++;
-            }
-            if (o->rasterize) pp[k][j] = pt;
-        }
+        run_model(s, p, o, l, k, &ms[k], vs[k], sum);
     }
 
     if (o->rasterize) {                     /* rasterize */
@@ -237,10 +340,17 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
             rc.m = m;
             rc.l = report ? l : NULL;
             for (j = 0; j < m->nseg; j++) {
-                pt_vec2 a = pp[k][m->seg[j].a], b = pp[k][m->seg[j].b];
+                const vtx *va = &vs[k][m->seg[j].a], *vb = &vs[k][m->seg[j].b];
+                pt_vec2 a = va->pp, b = vb->pp;
                 int r;
 
                 rc.seg = j + 1;
+                if (s->matrix && !matrix_segment(s, m, j + 1, va, vb, rc.l, &ms[k], &a, &b)) {
+                    sum->segments_culled++;
+                    if (report && l->skip)
+                        l->skip(l->ud, m, j + 1, 0, "outside the view volume");
+                    continue;
+                }
                 r = pt_raster_segment(a, b, s->vp_w, s->vp_h, &out);
                 if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
                 if (r == PT_RASTER_SKIPPED) {
@@ -252,7 +362,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     }
     if (l->summary) l->summary(l->ud, sum);
 done:
-    for (k = 0; k < s->nmodels; k++) free(pp[k]);
-    free(pp);
+    for (k = 0; k < s->nmodels; k++) free(vs[k]);
+    free(vs);
+    free(ms);
     return status;
 }

@@ -33,19 +33,23 @@ typedef struct pt_options {
     unsigned stage_mask;         /* bit k: trace stage k (--stage); default all */
     int trace_raster;            /* 1: report pixel and clip records */
     int rasterize;               /* 1: draw the segments (image or raster trace) */
+    int raw_lookat;              /* 1: the seed's look-at matrix, up not re-derived */
 } pt_options;
 
 /* Why a stage is left out of a model's trace. */
 typedef enum pt_why {
     PT_WHY_TRACED = 0,           /* not left out */
     PT_WHY_IDENTITY,             /* the stage is the identity for this model */
-    PT_WHY_FILTER                /* --stage chose other stages */
+    PT_WHY_FILTER,               /* --stage chose other stages */
+    PT_WHY_OTHER_CAMERA          /* a stage of the other camera model */
 } pt_why;
 
 /* The plan for one model: which stages it traces and which vertices it needs. */
 typedef struct pt_model_plan {
-    pt_why why[PT_NSTAGES];      /* PT_WHY_TRACED for each stage traced */
-    const char *why_text[PT_NSTAGES];   /* reason in words, or NULL */
+    pt_why why[PT_NSTAGES_ALL];  /* PT_WHY_TRACED for each stage traced */
+    const char *why_text[PT_NSTAGES_ALL];   /* reason in words, or NULL */
+    pt_mat4 world;               /* matrix camera: the model's `world` lines, then
+                                 ** its translate */
     unsigned char *used;         /* used[v]: some segment uses vertex v; owned */
     size_t nused;                /* number of used vertices */
     int selected;                /* 1: passes the --model filter */
@@ -54,6 +58,10 @@ typedef struct pt_model_plan {
 typedef struct pt_plan {
     pt_model_plan *models;       /* one per scene model; owned */
     size_t nmodels;
+    const pt_stage *order;       /* the camera's stages in pipeline order */
+    int norder;                  /* how many */
+    pt_mat4 view, proj;          /* matrix camera: View and Projection */
+    int up_adjusted;             /* matrix camera: up was re-derived (not raw) */
 } pt_plan;
 
 /* Counts for the summary record. */
@@ -65,6 +73,7 @@ typedef struct pt_summary {
     uint64_t segments;           /* segments in the scene */
     uint64_t segments_degenerate;/* both ends round to one pixel */
     uint64_t segments_skipped;   /* an endpoint has no pixel (not finite, huge) */
+    uint64_t segments_culled;    /* matrix camera: wholly outside the view volume */
     uint64_t pixels;             /* pixels written (inside the viewport) */
     uint64_t clipped;            /* steps clipped (outside the viewport) */
     uint64_t clip_runs;          /* clip records */
@@ -78,12 +87,16 @@ typedef struct pt_listener {
     void (*header)(void *ud, const pt_scene *s, const pt_plan *p);
     void (*vertex_begin)(void *ud, const pt_model *m, uint64_t v);  /* 1-based v */
     pt_sink sink;                                   /* the stages' records */
+    void (*clipvertex_begin)(void *ud, const pt_model *m, uint64_t seg,
+                             uint64_t from, uint64_t to, double t);
+                          /* matrix camera: a point made by clipping segment seg
+                          ** (from -> to, 1-based) at t; its records follow */
     void (*pixel)(void *ud, const pt_model *m, uint64_t seg,        /* 1-based seg */
                   int64_t x_fb, int64_t y_fb, int64_t idx);
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
                  pt_pix first, pt_pix last);
     void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */
-                 uint64_t v, const char *why);      /* v: the endpoint at fault */
+                 uint64_t v, const char *why);      /* v: the endpoint at fault, 0: none */
     void (*summary)(void *ud, const pt_summary *sum);
     void *ud;
 } pt_listener;

@@ -67,6 +67,9 @@ typedef struct parser {
     size_t errlen;
     size_t fb_line, bg_line;    /* line of each once-per-scene directive, 0: none yet */
     size_t vp_line, cam_line;
+    size_t proj_line;           /* line of `projection`, 0: none */
+    size_t cam_col;             /* column of the camera's kind, for late checks */
+    size_t proj_col[5];         /* columns of `projection`, fov, aspect, near, far */
     size_t vp_col;              /* column of `viewport`, for the late fit check */
     size_t translate_line;      /* once-per-model directives of the current model */
     size_t color_line;
@@ -476,6 +479,7 @@ static int new_model(parser *ps, const char *name, size_t n, size_t lineno)
     memset(m, 0, sizeof *m);
     m->name = copy;
     m->color[0] = m->color[1] = m->color[2] = 255;
+    m->world = pt_mat4_identity();
     ps->translate_line = ps->color_line = 0;
     return 0;
 }
@@ -696,23 +700,132 @@ static int do_viewport(parser *ps, source *src, const token *dir, cursor *args)
     return 0;
 }
 
-/* camera perspective | camera orthographic */
+/* Numbers a[0..n) into v[]; what names them in messages. */
+static int parse_numbers(parser *ps, const source *src, const token *a, size_t n,
+                         const char *what, double *v)
+{
+    size_t i;
+
+    for (i = 0; i < n; i++)
+        if (parse_number(ps, src, &a[i], what, &v[i]) < 0)
+            return -1;
+    return 0;
+}
+
+/* camera perspective | orthographic | lookat EX EY EZ DX DY DZ UX UY UZ
+** | lookat-target EX EY EZ TX TY TZ UX UY UZ.  A look-at camera is checked
+** once the whole file is read (finish_camera). */
 static int do_camera(parser *ps, source *src, const token *dir, cursor *args)
 {
     char q[QUOTE_BUF];
-    token a;
+    token a[10];
+    double v[9];
+    size_t n;
 
     if (once(ps, src, dir, &ps->cam_line) < 0
-        || take_args(ps, src, dir, args, &a, 1, 1, "word", NULL) < 0)
+        || take_args(ps, src, dir, args, a, 1, 10, "word", &n) < 0)
         return -1;
-    if (tok_is(&a, "perspective"))
-        ps->s->perspective = 1;
-    else if (tok_is(&a, "orthographic"))
-        ps->s->perspective = 0;
-    else
-        return fail(ps, src, a.p,
-                    "unknown camera '%s' (expected perspective or orthographic)",
-                    shown(a.p, a.n, q));
+    ps->cam_col = (size_t)(a[0].p - src->line) + 1;
+    if (tok_is(&a[0], "perspective") || tok_is(&a[0], "orthographic")) {
+        if (n != 1)
+            return fail(ps, src, a[1].p, "expected 1 word after 'camera', found %zu", n);
+        ps->s->perspective = tok_is(&a[0], "perspective");
+        return 0;
+    }
+    if (!tok_is(&a[0], "lookat") && !tok_is(&a[0], "lookat-target"))
+        return fail(ps, src, a[0].p, "unknown camera '%s' (expected perspective, "
+                    "orthographic, lookat or lookat-target)", shown(a[0].p, a[0].n, q));
+    if (n != 10)
+        return fail(ps, src, a[0].p, "expected 9 numbers after 'camera %s' "
+                    "(eye, %s, up), found %zu", shown(a[0].p, a[0].n, q),
+                    tok_is(&a[0], "lookat") ? "direction" : "target", n - 1);
+    if (parse_numbers(ps, src, a + 1, 9, "camera coordinate", v) < 0)
+        return -1;
+    ps->s->matrix = 1;
+    ps->s->eye = (pt_vec3){v[0], v[1], v[2]};
+    ps->s->dir = (pt_vec3){v[3], v[4], v[5]};
+    ps->s->up = (pt_vec3){v[6], v[7], v[8]};
+    if (tok_is(&a[0], "lookat-target")) {   /* direction = target - eye */
+        ps->s->dir.x = v[3] - v[0];
+        ps->s->dir.y = v[4] - v[1];
+        ps->s->dir.z = v[5] - v[2];
+    }
+    return 0;
+}
+
+/* projection perspective FOV_DEGREES ASPECT|auto NEAR FAR */
+static int do_projection(parser *ps, source *src, const token *dir, cursor *args)
+{
+    pt_scene *s = ps->s;
+    char q[QUOTE_BUF];
+    token a[5];
+    size_t n;
+
+    if (once(ps, src, dir, &ps->proj_line) < 0
+        || take_args(ps, src, dir, args, a, 5, 5, "words", NULL) < 0)
+        return -1;
+    ps->proj_col[0] = (size_t)(dir->p - src->line) + 1;
+    for (n = 1; n < 5; n++)
+        ps->proj_col[n] = (size_t)(a[n].p - src->line) + 1;
+    if (!tok_is(&a[0], "perspective"))
+        return fail(ps, src, a[0].p, "unknown projection '%s' (expected perspective)",
+                    shown(a[0].p, a[0].n, q));
+    if (parse_number(ps, src, &a[1], "field of view", &s->fov) < 0)
+        return -1;
+    if (tok_is(&a[2], "auto"))
+        s->aspect = 0;                  /* filled in by finish_camera() */
+    else if (parse_number(ps, src, &a[2], "aspect ratio", &s->aspect) < 0)
+        return -1;
+    else if (!(s->aspect > 0))
+        return fail(ps, src, a[2].p, "aspect ratio must be > 0");
+    if (parse_number(ps, src, &a[3], "near distance", &s->znear) < 0
+        || parse_number(ps, src, &a[4], "far distance", &s->zfar) < 0)
+        return -1;
+    return 0;
+}
+
+/* world translate X Y Z | world scale S | world scale X Y Z
+** | world rotate x|y|z DEGREES: appended to the model's world matrix. */
+static int do_world(parser *ps, source *src, const token *dir, cursor *args)
+{
+    pt_model *m = cur_model(ps);
+    char q[QUOTE_BUF];
+    token a[4];
+    double v[3];
+    size_t n;
+    pt_mat4 t;
+    int axis;
+
+    if (take_args(ps, src, dir, args, a, 2, 4, "words", &n) < 0)
+        return -1;
+    if (tok_is(&a[0], "translate") || tok_is(&a[0], "scale")) {
+        int scale = tok_is(&a[0], "scale");
+        if (n != 4 && !(scale && n == 2))
+            return fail(ps, src, a[0].p, "expected %s after 'world %s', found %zu",
+                        scale ? "1 or 3 numbers" : "3 numbers",
+                        shown(a[0].p, a[0].n, q), n - 1);
+        if (parse_numbers(ps, src, a + 1, n - 1, "world number", v) < 0)
+            return -1;
+        if (n == 2) v[1] = v[2] = v[0];
+        t = scale ? pt_mat4_scale(v[0], v[1], v[2]) : pt_mat4_translate(v[0], v[1], v[2]);
+    } else if (tok_is(&a[0], "rotate")) {
+        const char *axes = "xyz", *at;
+        if (n != 3)
+            return fail(ps, src, a[0].p, "expected an axis and an angle after "
+                        "'world rotate', found %zu words", n - 1);
+        at = a[1].n == 1 ? strchr(axes, a[1].p[0]) : NULL;
+        if (at == NULL || *at == '\0')
+            return fail(ps, src, a[1].p, "unknown axis '%s' (expected x, y or z)",
+                        shown(a[1].p, a[1].n, q));
+        if (parse_number(ps, src, &a[2], "angle", &v[0]) < 0)
+            return -1;
+        axis = (int)(at - axes);
+        t = pt_mat4_rotate(axis, v[0]);
+    } else {
+        return fail(ps, src, a[0].p, "unknown world transformation '%s' "
+                    "(expected translate, scale or rotate)", shown(a[0].p, a[0].n, q));
+    }
+    m->world = pt_mat4_mul(&m->world, &t);  /* row vectors: earlier lines act first */
     return 0;
 }
 
@@ -970,6 +1083,8 @@ static const struct directive {
     { "background",  do_background,  0 },
     { "viewport",    do_viewport,    0 },
     { "camera",      do_camera,      0 },
+    { "projection",  do_projection,  0 },
+    { "world",       do_world,       1 },
 };
 
 /* One line of a .scene file. */
@@ -1041,6 +1156,39 @@ static int finish_viewport(parser *ps, const char *name)
     return 0;
 }
 
+/* Check the matrix camera now that the viewport (for `auto`) is known:
+** `camera lookat` and `projection` come together, and both must give a
+** camera that can be built. */
+static int finish_camera(parser *ps, const char *name)
+{
+    pt_scene *s = ps->s;
+    pt_mat4 m;
+    pt_cam_error e;
+    int skewed;
+
+    if (s->matrix && ps->proj_line == 0)
+        return fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
+                       "'camera lookat' needs a 'projection perspective' line");
+    if (!s->matrix && ps->proj_line != 0)
+        return fail_at(ps->err, ps->errlen, name, ps->proj_line, ps->proj_col[0],
+                       "'projection' needs a 'camera lookat' line");
+    if (!s->matrix)
+        return 0;
+    if (s->aspect == 0)
+        s->aspect = (double)s->vp_w / s->vp_h;  /* auto: the viewport's w/h */
+    e = pt_lookat(&m, s->eye, s->dir, s->up, 0, &skewed);
+    if (e != PT_CAM_OK)
+        return fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
+                       "camera: %s", pt_cam_error_text(e));
+    e = pt_perspective(&m, s->fov, s->aspect, s->znear, s->zfar);
+    if (e != PT_CAM_OK)                 /* point at the number at fault */
+        return fail_at(ps->err, ps->errlen, name, ps->proj_line,
+                       ps->proj_col[e == PT_CAM_FOV ? 1 : e == PT_CAM_ASPECT ? 2
+                                    : e == PT_CAM_NEAR ? 3 : 4],
+                       "projection: %s", pt_cam_error_text(e));
+    return 0;
+}
+
 /* Empty *s, then give it its defaults and a copy of name.  Returns 0, or -1
 ** when out of memory (*s stays empty). */
 static int start_scene(pt_scene *s, const char *name)
@@ -1085,6 +1233,8 @@ static int parse_scene(pt_scene *s, const char *name, size_t dirlen,
     r = parse_source(&ps, &src);
     if (r == 0)
         r = finish_viewport(&ps, name);
+    if (r == 0)
+        r = finish_camera(&ps, name);
     free(ps.model_line);
     if (r < 0)
         pt_scene_free(s);

@@ -10,14 +10,15 @@
 **   1 <= fb_w, fb_h <= PT_MAX_SIZE;  the viewport lies inside the framebuffer and
 **   has size >= 1;  every segment's a and b are < the model's nv;  model names are
 **   unique, non-empty, valid UTF-8 with no control characters;  every coordinate
-**   is finite.
+**   is finite;  with matrix set, pt_lookat() and pt_perspective() accept the
+**   camera's parameters.
 */
 #ifndef PT_SCENE_H
 #define PT_SCENE_H
 
 #include <stddef.h>
 #include <stdint.h>
-#include "../stages/pt_stage.h"
+#include "../stages/pt_mat4.h"
 
 #define PT_MAX_SIZE 16384        /* largest framebuffer width or height */
 #define PT_ERRLEN   1024         /* room for one error message */
@@ -34,6 +35,8 @@ typedef struct pt_model {
     size_t nv, cap_v;            /* count and capacity of v */
     pt_segment *seg;             /* segments in file order, owned */
     size_t nseg, cap_seg;        /* count and capacity of seg */
+    pt_mat4 world;               /* product of the `world` lines, identity if none;
+                                 ** the matrix camera appends `translate` */
 } pt_model;
 
 typedef struct pt_scene {
@@ -42,6 +45,11 @@ typedef struct pt_scene {
     unsigned char background[3]; /* default 0 0 0 */
     int vp_x, vp_y, vp_w, vp_h;  /* viewport upper-left corner and size */
     int perspective;             /* 1: camera perspective (default), 0: orthographic */
+    int matrix;                  /* 1: the matrix camera (camera lookat + projection) */
+    pt_vec3 eye, dir, up;        /* matrix camera: position, direction, up vector */
+    double fov;                  /* vertical field of view, degrees, in (0, 180) */
+    double aspect;               /* aspect ratio w/h > 0 (`auto`: viewport w/h) */
+    double znear, zfar;          /* 0 < znear < zfar */
     int from_obj;                /* 1: a plain .obj wrapped in a default scene */
     pt_vec3 obj_translate;       /* with from_obj: the translation chosen */
     pt_model *models;            /* in file order, owned */

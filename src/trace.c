@@ -8,6 +8,7 @@
 #include <string.h>
 #include "trace.h"
 #include "numfmt.h"
+#include "../stages/m4_clip2cvv.h"
 
 /* ===== the output block ===== */
 
@@ -106,13 +107,89 @@ static void put_who(pt_trace *t, const char *name, const char *kind, uint64_t n)
 
 static const char *camera_name(const pt_scene *s)
 {
-    return s->perspective ? "perspective" : "orthographic";
+    return s->matrix ? "lookat" : s->perspective ? "perspective" : "orthographic";
+}
+
+static void put_vec3_json(pt_trace *t, pt_vec3 v)
+{
+    put(t, "[", 1); put_json_num(t, v.x); put(t, ",", 1); put_json_num(t, v.y);
+    put(t, ",", 1); put_json_num(t, v.z); put(t, "]", 1);
+}
+
+static void put_vec3_text(pt_trace *t, pt_vec3 v)
+{
+    put(t, "(", 1); put_short(t, v.x); puts_(t, ", "); put_short(t, v.y);
+    puts_(t, ", "); put_short(t, v.z); put(t, ")", 1);
+}
+
+/* A matrix as four rows: [[m00,m01,m02,m03],...]. */
+static void put_mat_json(pt_trace *t, const pt_mat4 *m)
+{
+    int i, j;
+
+    put(t, "[", 1);
+    for (i = 0; i < 4; i++) {
+        puts_(t, i ? ",[" : "[");
+        for (j = 0; j < 4; j++) {
+            if (j) put(t, ",", 1);
+            put_json_num(t, m->m[i][j]);
+        }
+        put(t, "]", 1);
+    }
+    put(t, "]", 1);
+}
+
+/* A matrix as "[m00 m01 m02 m03] [m10 ...] ...". */
+static void put_mat_text(pt_trace *t, const pt_mat4 *m)
+{
+    int i, j;
+
+    for (i = 0; i < 4; i++) {
+        puts_(t, i ? " [" : "[");
+        for (j = 0; j < 4; j++) {
+            if (j) put(t, " ", 1);
+            put_short(t, m->m[i][j]);
+        }
+        put(t, "]", 1);
+    }
+}
+
+/* The matrix camera's parameters and matrices, JSON. */
+static void camera_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
+{
+    puts_(t, ",\"lookat\":{\"eye\":"); put_vec3_json(t, s->eye);
+    puts_(t, ",\"direction\":"); put_vec3_json(t, s->dir);
+    puts_(t, ",\"up\":"); put_vec3_json(t, s->up);
+    puts_(t, ",\"up_adjusted\":"); puts_(t, p->up_adjusted ? "true" : "false");
+    puts_(t, "},\"projection\":{\"fov\":"); put_json_num(t, s->fov);
+    puts_(t, ",\"aspect\":"); put_json_num(t, s->aspect);
+    puts_(t, ",\"near\":"); put_json_num(t, s->znear);
+    puts_(t, ",\"far\":"); put_json_num(t, s->zfar);
+    puts_(t, "},\"view\":"); put_mat_json(t, &p->view);
+    puts_(t, ",\"projection_matrix\":"); put_mat_json(t, &p->proj);
+}
+
+/* The same as text lines. */
+static void camera_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
+{
+    puts_(t, " eye "); put_vec3_text(t, s->eye);
+    puts_(t, " direction "); put_vec3_text(t, s->dir);
+    puts_(t, " up "); put_vec3_text(t, s->up);
+    if (p->up_adjusted)
+        puts_(t, "\n  warning    up is not perpendicular to direction: re-derived"
+                 " (--raw-lookat keeps it)");
+    puts_(t, "\nprojection   perspective fov "); put_short(t, s->fov);
+    puts_(t, " aspect "); put_short(t, s->aspect);
+    puts_(t, " near "); put_short(t, s->znear);
+    puts_(t, " far "); put_short(t, s->zfar);
+    puts_(t, "\nview         "); put_mat_text(t, &p->view);
+    puts_(t, "\nprojection   "); put_mat_text(t, &p->proj);
 }
 
 static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
 {
     size_t k;
-    int st;
+    int st, i;
 
     puts_(t, "{\"type\":\"header\",\"version\":1,\"scene\":");
     put_json_str(t, s->path);
@@ -126,6 +203,7 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
     puts_(t, ",\"w\":"); put_i64(t, s->vp_w);
     puts_(t, ",\"h\":"); put_i64(t, s->vp_h);
     puts_(t, "},\"camera\":\""); puts_(t, camera_name(s)); put(t, "\"", 1);
+    if (s->matrix) camera_json(t, s, p);
     if (s->from_obj) {
         puts_(t, ",\"obj_translate\":["); put_json_num(t, s->obj_translate.x);
         put(t, ",", 1); put_json_num(t, s->obj_translate.y);
@@ -150,8 +228,10 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
         put(t, ",", 1); put_i64(t, m->color[2]);
         puts_(t, "],\"traced\":");
         puts_(t, mp->selected ? "true" : "false");
+        if (s->matrix) { puts_(t, ",\"world\":"); put_mat_json(t, &mp->world); }
         puts_(t, ",\"stages\":[");
-        for (st = 0; st < PT_NSTAGES; st++) {
+        for (i = 0; i < p->norder; i++) {
+            st = p->order[i];
             if (mp->why[st] != PT_WHY_TRACED) continue;
             if (!first) put(t, ",", 1);
             first = 0;
@@ -159,7 +239,8 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
         }
         puts_(t, "],\"left_out\":[");
         first = 1;
-        for (st = 0; st < PT_NSTAGES; st++) {
+        for (i = 0; i < p->norder; i++) {
+            st = p->order[i];
             if (mp->why[st] == PT_WHY_TRACED) continue;
             if (!first) put(t, ",", 1);
             first = 0;
@@ -174,7 +255,7 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
 static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
 {
     size_t k;
-    int st;
+    int st, i;
 
     puts_(t, "# pipetrace trace, format version 1\nscene        ");
     puts_(t, s->path);
@@ -185,6 +266,7 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     puts_(t, "\nviewport     "); put_i64(t, s->vp_w); puts_(t, " x "); put_i64(t, s->vp_h);
     puts_(t, " at (x_ul, y_ul) = ("); put_i64(t, s->vp_x); puts_(t, ", ");
     put_i64(t, s->vp_y); puts_(t, ")\ncamera       "); puts_(t, camera_name(s));
+    if (s->matrix) camera_text(t, s, p);
     if (s->from_obj) {
         puts_(t, "\nobj placed   translate "); put_short(t, s->obj_translate.x);
         put(t, " ", 1); put_short(t, s->obj_translate.y);
@@ -206,7 +288,11 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
         put(t, " ", 1); put_i64(t, m->color[2]);
         if (!mp->selected) puts_(t, ", not traced (--model)");
         put(t, "\n", 1);
-        for (st = 0; st < PT_NSTAGES; st++) {
+        if (s->matrix) {
+            puts_(t, "  world      "); put_mat_text(t, &mp->world); put(t, "\n", 1);
+        }
+        for (i = 0; i < p->norder; i++) {
+            st = p->order[i];
             if (mp->why[st] == PT_WHY_TRACED) continue;
             puts_(t, "  left out   "); puts_(t, pt_stage_infos[st].name);
             puts_(t, ": "); puts_(t, mp->why_text[st]); put(t, "\n", 1);
@@ -219,6 +305,7 @@ static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
 {
     pt_trace *t = ud;
 
+    t->scene = s;
     if (t->fmt == PT_FORMAT_JSONL) header_json(t, s, p);
     else if (t->fmt == PT_FORMAT_TEXT) header_text(t, s, p);
     else puts_(t, "model,v,stage,x,y,z,inside,behind,i,warning\n");
@@ -226,23 +313,80 @@ static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
 
 /* ===== vertex records ===== */
 
+static void on_clipvertex_begin(void *ud, const pt_model *m, uint64_t seg,
+                               uint64_t from, uint64_t to, double tc)
+{
+    pt_trace *t = ud;
+
+    t->model = m;
+    t->clipv = 1;
+    t->seg = seg;
+    t->from = from;
+    t->to = to;
+    t->t_clip = tc;
+    t->explain_lost = 1;                    /* the step-through covers vertices */
+}
+
 static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)
 {
     pt_trace *t = ud;
+
+    t->clipv = 0;
     t->model = m;
     t->v = v;
+    t->explain_lost = 0;
+    if (t->explain && t->scene) {   /* every stage, even those left out */
+        pt_stage_params par;
+        pt_stage_params_of(&par, t->scene, m);
+        pt_journey_compute(&t->journey, &par, m->v[v - 1]);
+    }
 }
 
-/* Names of a stage's coordinates in the text format. */
-static const char *const coord_names[PT_NSTAGES][3] = {
-    {"x_m  = ", "y_m  = ", "z_m  = "}, {"x_c  = ", "y_c  = ", "z_c  = "},
-    {"x_ip = ", "y_ip = ", "z_ip = "}, {"x_pp = ", "y_pp = ", ""},
-    {"x_vp = ", "y_vp = ", ""},        {"x_fb = ", "y_fb = ", ""},
-    {"idx  = ", "", ""},
+/* Names of a stage's coordinates in the text format, in pt_stage order. */
+static const char *const coord_names[PT_NSTAGES_ALL][4] = {
+    {"x_m  = ", "y_m  = ", "z_m  = ", ""},     {"x_c  = ", "y_c  = ", "z_c  = ", ""},
+    {"x_ip = ", "y_ip = ", "z_ip = ", ""},     {"x_pp = ", "y_pp = ", "", ""},
+    {"x_vp = ", "y_vp = ", "", ""},            {"x_fb = ", "y_fb = ", "", ""},
+    {"idx  = ", "", "", ""},
+    {"x_w  = ", "y_w  = ", "z_w  = ", "w_w = "}, {"x_v  = ", "y_v  = ", "z_v  = ", "w_v = "},
+    {"x_k  = ", "y_k  = ", "z_k  = ", "w_k = "}, {"code = ", "", "", ""},
+    {"x_n  = ", "y_n  = ", "z_n  = ", ""},     {"x_s  = ", "y_s  = ", "z_s  = ", ""},
 };
 
-static int has_z(pt_stage st) { return st <= PT_STAGE_IMAGE; }
-static int is_real(pt_stage st) { return st <= PT_STAGE_PIXEL; }
+/* How many real coordinates a stage's record holds (0: integer stages). */
+static int real_dims(pt_stage st)
+{
+    switch (st) {
+    case PT_STAGE_MODEL: case PT_STAGE_CAMERA: case PT_STAGE_IMAGE:
+    case PT_STAGE_NDC: case PT_STAGE_SCREEN:
+        return 3;
+    case PT_STAGE_PIXEL:
+        return 2;
+    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
+        return 4;
+    default:
+        return 0;
+    }
+}
+
+/* --explain: r's formula with this vertex's numbers, from the journey computed
+** at vertex_begin, so a stage left out still feeds the next one its real value.
+** Text: an indented line; JSON: an "explain" field.  Once a record differs from
+** the journey (a camera with other stages), the vertex gets no more of them. */
+static void put_explain(pt_trace *t, const pt_vrec *r)
+{
+    char b[PT_EXPLAINLEN];
+    size_t n;
+
+    if (!t->scene || !pt_journey_matches(&t->journey, r)) t->explain_lost = 1;
+    if (t->explain_lost) return;
+    n = pt_explain_stage(b, sizeof b, &t->journey, r->stage, "; ");
+    if (n >= sizeof b) n = sizeof b - 1;
+    if (t->fmt == PT_FORMAT_JSONL) { puts_(t, ",\"explain\":"); put_json_str(t, b); return; }
+    put_col(t, "", 0, 14);
+    put(t, b, n);
+    put(t, "\n", 1);
+}
 
 /* Text: "  ! cancellation (9 digits lost)". */
 static void put_warnings_text(pt_trace *t, const pt_vrec *r)
@@ -278,23 +422,40 @@ static void put_warnings_json(pt_trace *t, const pt_vrec *r)
     }
 }
 
+/* Text: the names of the planes in an outcode, "  (left near)". */
+static void put_planes_text(pt_trace *t, unsigned code)
+{
+    int k, first = 1;
+
+    if (!code) { puts_(t, "  (inside the view volume)"); return; }
+    puts_(t, "  (outside:");
+    for (k = 0; k < PT_CVV_NPLANES; k++)
+        if (code & (1u << k)) { put(t, " ", 1); puts_(t, pt_cvv_names[k]); first = 0; }
+    (void)first;
+    put(t, ")", 1);
+}
+
 static void vertex_text(pt_trace *t, const pt_vrec *r)
 {
     const char *const *cn = coord_names[r->stage];
     char b[16];
 
-    put_who(t, t->model->name, "v", t->v);
+    if (t->clipv) put_who(t, t->model->name, "s", t->seg);
+    else put_who(t, t->model->name, "v", t->v);
     snprintf(b, sizeof b, "%-13s", pt_stage_infos[r->stage].name);
     put(t, b, 13);
-    if (r->stage == PT_STAGE_INDEX) {
+    if (r->stage == PT_STAGE_CVV) {
+        puts_(t, cn[0]); put_i64(t, r->code); put_planes_text(t, r->code);
+    } else if (r->stage == PT_STAGE_INDEX) {
         puts_(t, cn[0]);
         if (r->flags & PT_REC_NULL) put_col(t, "none", 4, 12);
         else put_int_col(t, r->i);
-    } else if (is_real(r->stage)) {
-        puts_(t, cn[0]); put_fixed_col(t, r->x, t->precision);
-        puts_(t, "  "); puts_(t, cn[1]); put_fixed_col(t, r->y, t->precision);
-        if (has_z(r->stage)) {
-            puts_(t, "  "); puts_(t, cn[2]); put_fixed_col(t, r->z, t->precision);
+    } else if (real_dims(r->stage)) {
+        const double v[4] = {r->x, r->y, r->z, r->w};
+        int k;
+        for (k = 0; k < real_dims(r->stage); k++) {
+            if (k) puts_(t, "  ");
+            puts_(t, cn[k]); put_fixed_col(t, v[k], t->precision);
         }
     } else if (r->flags & PT_REC_NULL) {
         puts_(t, cn[0]); put_col(t, "none", 4, 12);
@@ -306,22 +467,47 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
     if (r->flags & PT_REC_BEHIND) puts_(t, "  behind the camera");
     if (r->stage == PT_STAGE_VIEWPORT)
         puts_(t, r->flags & PT_REC_INSIDE ? "  inside" : "  outside");
+    if (t->clipv && r->stage == PT_STAGE_NDC) {
+        puts_(t, "  (clipped v"); put_u64(t, t->from); puts_(t, "-v"); put_u64(t, t->to);
+        puts_(t, " at t = "); put_short(t, t->t_clip); put(t, ")", 1);
+    }
     if (r->warn) put_warnings_text(t, r);
     put(t, "\n", 1);
+    if (t->explain) put_explain(t, r);
 }
 
 static void vertex_json(pt_trace *t, const pt_vrec *r)
 {
-    puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
-    puts_(t, ",\"v\":"); put_u64(t, t->v);
+    if (t->clipv) {
+        puts_(t, "{\"type\":\"clipvertex\",\"model\":"); put_json_str(t, t->model->name);
+        puts_(t, ",\"segment\":"); put_u64(t, t->seg);
+        puts_(t, ",\"from\":"); put_u64(t, t->from);
+        puts_(t, ",\"to\":"); put_u64(t, t->to);
+        puts_(t, ",\"t\":"); put_json_num(t, t->t_clip);
+    } else {
+        puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
+        puts_(t, ",\"v\":"); put_u64(t, t->v);
+    }
     puts_(t, ",\"stage\":\""); puts_(t, pt_stage_infos[r->stage].name); put(t, "\"", 1);
-    if (r->stage == PT_STAGE_INDEX) {
+    if (r->stage == PT_STAGE_CVV) {
+        int k, first = 1;
+        puts_(t, ",\"code\":"); put_i64(t, r->code);
+        puts_(t, ",\"planes\":[");
+        for (k = 0; k < PT_CVV_NPLANES; k++) {
+            if (!(r->code & (1u << k))) continue;
+            if (!first) put(t, ",", 1);
+            first = 0;
+            put(t, "\"", 1); puts_(t, pt_cvv_names[k]); put(t, "\"", 1);
+        }
+        put(t, "]", 1);
+    } else if (r->stage == PT_STAGE_INDEX) {
         puts_(t, ",\"i\":");
         if (r->flags & PT_REC_NULL) puts_(t, "null"); else put_i64(t, r->i);
-    } else if (is_real(r->stage)) {
-        puts_(t, ",\"x\":"); put_json_num(t, r->x);
-        puts_(t, ",\"y\":"); put_json_num(t, r->y);
-        if (has_z(r->stage)) { puts_(t, ",\"z\":"); put_json_num(t, r->z); }
+    } else if (real_dims(r->stage)) {
+        const double v[4] = {r->x, r->y, r->z, r->w};
+        static const char *const keys[4] = {",\"x\":", ",\"y\":", ",\"z\":", ",\"w\":"};
+        int k;
+        for (k = 0; k < real_dims(r->stage); k++) { puts_(t, keys[k]); put_json_num(t, v[k]); }
     } else if (r->flags & PT_REC_NULL) {
         puts_(t, ",\"x\":null,\"y\":null");
     } else {
@@ -333,6 +519,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
     if (r->stage == PT_STAGE_VIEWPORT)
         puts_(t, r->flags & PT_REC_INSIDE ? ",\"inside\":true" : ",\"inside\":false");
     if (r->warn) put_warnings_json(t, r);
+    if (t->explain) put_explain(t, r);
     puts_(t, "}\n");
 }
 
@@ -340,11 +527,13 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
 ** apply; warning names joined by '|'. */
 static void vertex_csv(pt_trace *t, const pt_vrec *r)
 {
+    if (t->clipv || real_dims(r->stage) == 4 || r->stage == PT_STAGE_CVV)
+        return;                             /* see docs/trace-format.md */
     puts_(t, t->model->name); put(t, ",", 1); put_u64(t, t->v); put(t, ",", 1);
     puts_(t, pt_stage_infos[r->stage].name); put(t, ",", 1);
-    if (is_real(r->stage)) {
+    if (real_dims(r->stage)) {
         put_short(t, r->x); put(t, ",", 1); put_short(t, r->y); put(t, ",", 1);
-        if (has_z(r->stage)) put_short(t, r->z);
+        if (real_dims(r->stage) == 3) put_short(t, r->z);
     } else if (r->stage != PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) {
         put_i64(t, r->ix); put(t, ",", 1); put_i64(t, r->iy); put(t, ",", 1);
     } else {
@@ -441,11 +630,12 @@ static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
     if (t->fmt == PT_FORMAT_JSONL) {
         puts_(t, "{\"type\":\"skip\",\"model\":"); put_json_str(t, m->name);
         puts_(t, ",\"segment\":"); put_u64(t, seg);
-        puts_(t, ",\"v\":"); put_u64(t, v);
+        if (v) { puts_(t, ",\"v\":"); put_u64(t, v); }
         puts_(t, ",\"why\":"); put_json_str(t, why); puts_(t, "}\n");
     } else if (t->fmt == PT_FORMAT_TEXT) {
         put_who(t, m->name, "s", seg);
-        puts_(t, "skipped      v"); put_u64(t, v); puts_(t, ": ");
+        puts_(t, "skipped      ");
+        if (v) { put(t, "v", 1); put_u64(t, v); puts_(t, ": "); }
         puts_(t, why); put(t, "\n", 1);
     }
 }
@@ -457,13 +647,13 @@ static void on_summary(void *ud, const pt_summary *sum)
     pt_trace *t = ud;
     static const char *const names[] = {
         "models", "vertices", "vertices_unused", "vertices_traced", "segments",
-        "segments_degenerate", "segments_skipped", "pixels", "clipped",
-        "clip_runs", "behind",
+        "segments_degenerate", "segments_skipped", "segments_culled", "pixels",
+        "clipped", "clip_runs", "behind",
     };
     const uint64_t vals[] = {
         sum->models, sum->vertices, sum->vertices_unused, sum->vertices_traced,
         sum->segments, sum->segments_degenerate, sum->segments_skipped,
-        sum->pixels, sum->clipped, sum->clip_runs, sum->behind,
+        sum->segments_culled, sum->pixels, sum->clipped, sum->clip_runs, sum->behind,
     };
     size_t k;
 
@@ -504,6 +694,9 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->precision = precision;
     t->model = NULL;
     t->v = 0;
+    t->explain = 0;
+    t->explain_lost = 0;
+    t->scene = NULL;
     t->failed = 0;
     t->len = 0;
 }
@@ -513,6 +706,7 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
     l->header = on_header;
     l->vertex_begin = on_vertex_begin;
     l->sink.vertex = on_vertex;
+    l->clipvertex_begin = on_clipvertex_begin;
     l->sink.ud = t;
     l->pixel = on_pixel;
     l->clip = on_clip;

@@ -28,6 +28,7 @@
 
 #include <stdio.h>
 #include "pipeline.h"
+#include "explain.h"
 
 #define PT_TRACE_VERSION 1
 
@@ -39,6 +40,15 @@ typedef struct pt_trace {
     int precision;               /* text: digits after the point, 0..17 */
     const pt_model *model;       /* model of the vertex being traced */
     uint64_t v;                  /* its 1-based number */
+    int clipv;                   /* 1: records of a point made by clipping: */
+    uint64_t seg, from, to;      /*   segment seg, from -> to (1-based) */
+    double t_clip;               /*   at parameter t */
+    int explain;                 /* 1: each vertex record gets its formula with
+                                 ** the numbers put in (--explain); set after init */
+    const pt_scene *scene;       /* the scene, from the header (for explain) */
+    pt_journey journey;          /* with explain: the vertex's whole journey */
+    int explain_lost;            /* a record the journey does not reproduce came:
+                                 ** no more explanations for this vertex */
     int failed;                  /* 1 after a write error */
     size_t len;                  /* bytes waiting in buf */
     char buf[1 << 16];           /* output block */

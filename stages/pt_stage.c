@@ -6,28 +6,60 @@
 #include <string.h>
 #include "pt_stage.h"
 
-const pt_stage_info pt_stage_infos[PT_NSTAGES] = {
+const pt_stage_info pt_stage_infos[PT_NSTAGES_ALL] = {
     { "model",       "scene",       "model",
-      "(x_m, y_m, z_m) as given by the scene" },
+      "(x_m, y_m, z_m) as given by the scene",
+      "the vertex as the scene gives it, in its model's own coordinates" },
     { "camera",      "model",       "camera",
-      "x_c = x_m + x_t, y_c = y_m + y_t, z_c = z_m + z_t" },
+      "x_c = x_m + x_t, y_c = y_m + y_t, z_c = z_m + z_t",
+      "move the model in front of the camera: add its translation" },
     { "image",       "camera",      "image plane",
-      "x_ip = x_c / -z_c, y_ip = y_c / -z_c, z_ip = -1 (orthographic: x_ip = x_c, y_ip = y_c, z_ip = 0)" },
+      "x_ip = x_c / -z_c, y_ip = y_c / -z_c, z_ip = -1 (orthographic: x_ip = x_c, y_ip = y_c, z_ip = 0)",
+      "project onto the image plane z = -1: divide by the distance -z_c (similar triangles)" },
     { "pixel",       "image plane", "pixel plane",
-      "x_pp = 0.5 + w/2.001 * (x_ip + 1), y_pp = 0.5 + h/2.001 * (y_ip + 1)" },
+      "x_pp = 0.5 + w/2.001 * (x_ip + 1), y_pp = 0.5 + h/2.001 * (y_ip + 1)",
+      "stretch the view rectangle [-1, 1] x [-1, 1] over the viewport's logical pixels" },
     { "viewport",    "pixel plane", "viewport",
-      "x_vp = round(x_pp) - 1, y_vp = h - round(y_pp)" },
+      "x_vp = round(x_pp) - 1, y_vp = h - round(y_pp)",
+      "round to the nearest logical pixel, then count from 0 and from the top row down" },
     { "framebuffer", "viewport",    "framebuffer",
-      "x_fb = x_ul + x_vp, y_fb = y_ul + y_vp" },
+      "x_fb = x_ul + x_vp, y_fb = y_ul + y_vp",
+      "shift by the viewport's upper-left corner (x_ul, y_ul) in the framebuffer" },
     { "index",       "framebuffer", "pixel array",
-      "idx = y_fb * W + x_fb" },
+      "idx = y_fb * W + x_fb",
+      "number the framebuffer's pixels row by row, top row first" },
+    /* the matrix camera's own stages (docs/cameras.md) */
+    { "world",       "model",       "world",
+      "(x_w y_w z_w w_w) = (x_m y_m z_m 1) * World",
+      "place the model in the world: multiply by its world matrix" },
+    { "view",        "world",       "view",
+      "(x_v y_v z_v w_v) = (x_w y_w z_w w_w) * View",
+      "look from the camera: move the eye to the origin, turn its axes onto x, y, z" },
+    { "clip",        "view",        "clip space",
+      "x_k = x_v*cot(fov/2)/aspect, y_k = y_v*cot(fov/2), z_k = z_v*f/(f-n) - f*n/(f-n), w_k = z_v",
+      "scale the view frustum to the box -w <= x, y <= w, 0 <= z <= w" },
+    { "cvv",         "clip space",  "outcode",
+      "0x01 z<0, 0x02 z>w, 0x04 x<-w, 0x08 x>w, 0x10 y<-w, 0x20 y>w",
+      "test the point against the six planes of the canonical view volume" },
+    { "ndc",         "clip space",  "normalised device coordinates",
+      "x_n = x_k / w_k, y_n = y_k / w_k, z_n = z_k / w_k",
+      "the homogeneous divide: the perspective happens here" },
+    { "screen",      "ndc",         "screen",
+      "x_s = (x_n + 1) * w * 0.5, y_s = (1 - y_n) * h * 0.5, z_s = z_n",
+      "stretch [-1, 1] x [-1, 1] over the viewport, y pointing down" },
+};
+
+const pt_stage_info pt_matrix_viewport_info = {
+    "viewport", "screen", "viewport",
+    "x_vp = floor(x_s), y_vp = floor(y_s)",
+    "the pixel whose square contains the point (centres at k + 0.5)",
 };
 
 int pt_stage_by_name(const char *s)
 {
     int k;
 
-    for (k = 0; k < PT_NSTAGES; k++)
+    for (k = 0; k < PT_NSTAGES_ALL; k++)
         if (strcmp(s, pt_stage_infos[k].name) == 0) return k;
     return -1;
 }

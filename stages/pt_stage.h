@@ -37,7 +37,14 @@ typedef enum pt_stage {
     PT_STAGE_VIEWPORT,
     PT_STAGE_FRAMEBUFFER,
     PT_STAGE_INDEX,
-    PT_NSTAGES
+    PT_NSTAGES,                  /* the classic camera's stages end here */
+    PT_STAGE_WORLD = PT_NSTAGES, /* the matrix camera's own stages: */
+    PT_STAGE_VIEW,               /*   model -> world -> view -> clip -> cvv */
+    PT_STAGE_CLIP,               /*   -> ndc -> screen, then viewport, */
+    PT_STAGE_CVV,                /*   framebuffer and index as above */
+    PT_STAGE_NDC,
+    PT_STAGE_SCREEN,
+    PT_NSTAGES_ALL
 } pt_stage;
 
 /* Flags of a pt_vrec. */
@@ -66,6 +73,8 @@ typedef struct pt_vrec {
     unsigned warn;             /* PT_WARN_* */
     int digits_lost;           /* with CANCEL or ILLCOND: decimal digits lost */
     double x, y, z;            /* real-valued stages */
+    double w;                  /* world, view, clip: the homogeneous w */
+    unsigned code;             /* cvv: the outcode, PT_CVV_* bits */
     int64_t ix, iy;            /* viewport, framebuffer */
     int64_t i;                 /* index */
 } pt_vrec;
@@ -89,10 +98,14 @@ typedef struct pt_stage_info {
     const char *from;          /* space it reads: "model" */
     const char *to;            /* space it writes: "camera" */
     const char *formula;       /* the formula as the trace and docs print it */
+    const char *what;          /* what it does, in one sentence (pipetrace step) */
 } pt_stage_info;
 
-/* The table of the seven stages, indexed by pt_stage. */
-extern const pt_stage_info pt_stage_infos[PT_NSTAGES];
+/* The table of all stages, indexed by pt_stage.  The viewport entry is the
+** classic camera's; the matrix camera's viewport stage is described by
+** pt_matrix_viewport_info. */
+extern const pt_stage_info pt_stage_infos[PT_NSTAGES_ALL];
+extern const pt_stage_info pt_matrix_viewport_info;
 
 /* The pt_stage whose name is s, or -1. This function can't fail. */
 int pt_stage_by_name(const char *s);

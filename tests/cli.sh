@@ -120,5 +120,37 @@ check "cli-7.2 its viewport is not the whole framebuffer" grep -q 'viewport     
 run docs/examples/tetra.obj --format jsonl
 check "cli-7.3 a plain .obj is wrapped and placed; the header says where" grep -q '"obj_translate":\[' "$tmp/out"
 
+# ---- the matrix camera
+mcam() {    # mcam NAME CAMERA-LINE PROJECTION-LINE EXPECTED-MESSAGE-PART
+    printf '%s\n%s\nmodel m\nv 0 0 5\nv 1 0 5\nl 1 2\n' "$2" "$3" > "$tmp/m.scene"
+    run "$tmp/m.scene"
+    check "$1" test "$rc" = 2 -a -n "$(echo "$err" | grep -F -- "$4")"
+}
+mcam "cli-8.1 zero direction is named" "camera lookat 0 0 0 0 0 0 0 1 0" "projection perspective 60 1 1 10" ":1:8: error: camera: direction has length 0"
+mcam "cli-8.2 up parallel to direction is named" "camera lookat 0 0 0 0 0 1 0 0 -3" "projection perspective 60 1 1 10" ":1:8: error: camera: up is parallel to direction"
+mcam "cli-8.3 fov >= 180 points at the fov" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 180 1 1 10" ":2:24: error: projection: field of view"
+mcam "cli-8.4 fov <= 0" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 0 1 1 10" ":2:24: error: projection: field of view"
+mcam "cli-8.5 near <= 0 points at near" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 60 1 0 10" ":2:29: error: projection: near must be > 0"
+mcam "cli-8.6 near >= far points at far" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 60 1 10 10" ":2:32: error: projection: near must be < far"
+mcam "cli-8.7 aspect <= 0" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 60 -2 1 10" ":2:27: error: aspect ratio must be > 0"
+mcam "cli-8.8 lookat without projection" "camera lookat 0 0 0 0 0 1 0 1 0" "" "needs a 'projection perspective' line"
+run docs/examples/lookat-near.scene --format jsonl
+check "cli-8.9 near-plane crossing: the clipped point is traced with its t" grep -q '"type":"clipvertex","model":"stick","segment":1,"from":1,"to":2,"t":0.375,"stage":"ndc","x":0.375,"y":0.25,"z":0}' "$tmp/out"
+check "cli-8.10 a vertex behind the eye stops at the cvv" grep -q '"v":2,"stage":"cvv","code":61,"planes":\["near","left","right","bottom","top"\]}' "$tmp/out"
+check "cli-8.11 ... and is never divided" test "$(grep -c '"v":2,"stage":"ndc"' "$tmp/out")" = 0
+check "cli-8.12 the header holds the matrices" grep -q '"projection_matrix":\[\[0.75,0,0,0\],\[0,1,0,0\],\[0,0,1.0101010101010102,1\],\[0,0,-1.0101010101010102,0\]\]' "$tmp/out"
+printf 'framebuffer 10 10\ncamera lookat 0 0 0 0 0 1 0 1 0\nprojection perspective 90 1 1 10\nmodel m\nv -5 0 2\nv -9 0 3\nl 1 2\n' > "$tmp/cull.scene"
+run "$tmp/cull.scene" --format jsonl
+check "cli-8.13 a segment wholly outside is culled" grep -q '{"type":"skip","model":"m","segment":1,"why":"outside the view volume"}' "$tmp/out"
+check "cli-8.14 ... and counted" grep -q '"segments_culled":1' "$tmp/out"
+run docs/examples/lookat-world.scene --format jsonl
+cp "$tmp/out" "$tmp/adjusted"
+check "cli-8.15 a skewed up vector is re-derived, and the header says so" grep -q '"up_adjusted":true' "$tmp/out"
+run docs/examples/lookat-world.scene --format jsonl --raw-lookat
+check "cli-8.16 --raw-lookat keeps the seed's matrix: other view values" test "$rc" = 0 -a -n "$(grep '"up_adjusted":false' "$tmp/out")" && ! cmp -s "$tmp/out" "$tmp/adjusted"
+check "cli-8.17 --raw-lookat: columns u = (0, .7071, .7071) and d = (0, 0, 1) are not orthogonal" grep -q '"view":\[\[1,0,0,0\],\[0,0.7071067811865475,0,0\],\[0,0.7071067811865475,1,0\]' "$tmp/out"
+run docs/examples/lookat-cube.scene --format jsonl --stage cvv --stage screen
+check "cli-8.18 --stage takes the matrix camera's stages" test "$(grep '"type":"vertex"' "$tmp/out" | grep -Evc '"stage":"(cvv|screen)"')" = 0 -a "$(grep -c '"type":"vertex"' "$tmp/out")" = 16
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,1599 @@
+/*
+** src/cmd_diff.c -- pipetrace diff: compare two traces or two images, name the mistake
+** See LICENSE for copyright and license.
+**
+** Two traces of one scene are compared vertex by vertex.  Records are matched
+** by (model, vertex, stage): one hash table keyed by (model, v) holds, for each
+** side and stage, the index of that record.  Only the FIRST stage where a
+** vertex differs is explained, since every later stage computes from it: its
+** differences are consequences, and are only counted.
+**
+** A mistake is named only when it is proven for this vertex: the diverging
+** stage is recomputed from EXPECTED's value of the stage before, with the
+** mistake, and must reproduce ACTUAL's value (within the tolerance; when
+** EXPECTED is a text trace, over every input within half a unit of its last
+** printed digit).  The formulas, right and wrong, are written out here rather
+** than taken from stages/: a student build replaces a stage's .c file, and the
+** diff must still know the reference.  Stage 5 has no known mistake listed.
+**
+** When every vertex agrees and the lit pixels differ, the rasterizer's
+** rounding is checked the same way: each differing segment's DDA is run again
+** from its rounded endpoints (its first and last steps in EXPECTED), first with
+** Java's rounding, which must give EXPECTED's pixels, then with the mistake,
+** which must give ACTUAL's.
+*/
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "commands.h"
+#include "numfmt.h"
+#include "outfile.h"
+#include "raster.h"
+#include "scene.h"
+#include "tread.h"
+#include "../stages/s4_pixel2viewport.h"
+
+#define EXIT_SAME   0
+#define EXIT_DIFFER 1
+#define EXIT_USAGE  1
+#define EXIT_INPUT  2
+
+#define NONE UINT32_MAX          /* no record */
+
+static const char diff_usage[] =
+"usage: pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N]\n"
+"       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE] [--show N]\n"
+"Compare two traces (JSON Lines or text, in any mix) vertex by vertex: for\n"
+"each vertex the first stage where they differ, both values, and the known\n"
+"mistake that reproduces ACTUAL from EXPECTED's previous stage, if one does;\n"
+"then the lit pixels.  Or compare two P6 images pixel by pixel.\n"
+"\n"
+"  --tol ABS         doubles agree when |a - b| <= max(ABS, REL * max(|a|, |b|))\n"
+"  --rel REL         (defaults 0 and 1e-9; integers must be equal); a text trace\n"
+"                    adds half a unit in its last printed digit\n"
+"  --show N          list at most N vertices and N pixels (default 10)\n"
+"  --image-out FILE  images: write FILE (PPM) with the differing pixels red and\n"
+"                    the others EXPECTED's, dimmed to gray\n"
+"\n"
+"Exit status: 0 same, 1 different (or a usage error), 2 unreadable input.\n"
+"Docs: docs/teaching.md\n";
+
+typedef struct dopts {
+    const char *path[2];         /* EXPECTED, ACTUAL */
+    double tol, rel;             /* tolerance for doubles */
+    const char *image_out;       /* --image-out, or NULL */
+    size_t show;                 /* vertices and pixels listed */
+} dopts;
+
+static const char *const side_name[2] = {"EXPECTED", "ACTUAL"};
+
+/* ===== options ===== */
+
+static int usage_error(const char *fmt, const char *arg)
+{
+    fputs("pipetrace: diff: ", stderr);
+    fprintf(stderr, fmt, arg);
+    fputs("\nTry 'pipetrace diff --help'.\n", stderr);
+    return EXIT_USAGE;
+}
+
+/* A finite number >= 0 from s, or -1. */
+static double parse_nonneg(const char *s)
+{
+    char *end;
+    double x;
+
+    if (!*s || *s == '-' || *s == '+' || *s == ' ') return -1;
+    errno = 0;
+    x = strtod(s, &end);
+    if (errno || *end || !isfinite(x) || x < 0) return -1;
+    return x;
+}
+
+/* Fill *o from argv.  Returns -1 to go on, else the exit status. */
+static int parse_args(dopts *o, int argc, char **argv)
+{
+    int k, npath = 0;
+
+    memset(o, 0, sizeof *o);
+    o->rel = 1e-9;
+    o->show = 10;
+    for (k = 1; k < argc; k++) {
+        const char *a = argv[k];
+        const char *val = k + 1 < argc ? argv[k + 1] : NULL;
+        int takes = !strcmp(a, "--tol") || !strcmp(a, "--rel") ||
+                    !strcmp(a, "--image-out") || !strcmp(a, "--show");
+
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(diff_usage, stdout); return 0; }
+        if (takes && !val) return usage_error("option '%s' needs a value", a);
+        if (takes) k++;
+        if (!strcmp(a, "--tol") || !strcmp(a, "--rel")) {
+            double x = parse_nonneg(val);
+            if (x < 0) return usage_error("%s takes a number >= 0", a);
+            if (a[2] == 't') o->tol = x; else o->rel = x;
+        } else if (!strcmp(a, "--show")) {
+            double x = parse_nonneg(val);
+            if (x < 0 || x != floor(x) || x > 1e9) return usage_error("--show takes a count, not '%s'", val);
+            o->show = (size_t)x;
+        } else if (!strcmp(a, "--image-out")) {
+            o->image_out = val;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            return usage_error("unknown option '%s'", a);
+        } else if (npath == 2) {
+            return usage_error("more than two files given ('%s')", a);
+        } else {
+            o->path[npath++] = a;
+        }
+    }
+    if (npath < 2) return usage_error("%s", "needs two files: EXPECTED and ACTUAL");
+    return -1;
+}
+
+/* ===== printing ===== */
+
+/* A double as the shortest decimal that reads back to it. */
+static const char *num(double x, char buf[PT_NUMLEN])
+{
+    pt_fmt_shortest(buf, x);
+    return buf;
+}
+
+/* Print text as one paragraph wrapped at 78 columns, each line after `lead`. */
+static void para(const char *lead, const char *text)
+{
+    size_t col = 0, lead_n = strlen(lead);
+    const char *p = text;
+
+    while (*p) {
+        const char *w = p;
+        size_t n;
+        while (*p && *p != ' ') p++;
+        n = (size_t)(p - w);
+        if (col && col + 1 + n > 78) { putchar('\n'); col = 0; }
+        if (!col) { fputs(lead, stdout); col = lead_n; }
+        else { putchar(' '); col++; }
+        fwrite(w, 1, n, stdout);
+        col += n;
+        while (*p == ' ') p++;
+    }
+    if (col) putchar('\n');
+}
+
+/* A growing string for paragraphs. */
+typedef struct sbuf {
+    char b[2048];
+    size_t n;
+} sbuf;
+
+#if defined(__GNUC__)
+#define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
+#else
+#define PRINTF_LIKE(f, a)
+#endif
+
+/* Append to s what printf would print; text past its room is dropped. */
+static void sb_add(sbuf *s, const char *fmt, ...) PRINTF_LIKE(2, 3);
+static void sb_add(sbuf *s, const char *fmt, ...)
+{
+    va_list ap;
+    int k;
+
+    if (s->n >= sizeof s->b - 1) return;
+    va_start(ap, fmt);
+    k = vsnprintf(s->b + s->n, sizeof s->b - s->n, fmt, ap);
+    va_end(ap);
+    if (k > 0) s->n += (size_t)k;
+    if (s->n > sizeof s->b - 1) s->n = sizeof s->b - 1;
+}
+
+/* ===== images ===== */
+
+/* The color of (x, y) in img, or NULL outside it. */
+static const unsigned char *rgb_at(const pt_ppm *img, int x, int y)
+{
+    if (x >= img->w || y >= img->h) return NULL;
+    return img->rgb + 3 * ((size_t)y * (size_t)img->w + (size_t)x);
+}
+
+static void print_rgb(const unsigned char *c)
+{
+    if (c) printf("%3d %3d %3d", c[0], c[1], c[2]);
+    else printf("(outside)  ");
+}
+
+/* Write the highlight: differing pixels red, the others a's, dimmed to gray. */
+static int write_highlight(const char *path, const pt_ppm *a, const pt_ppm *b, int w, int h)
+{
+    pt_outfile out = {NULL, NULL, NULL};
+    char err[PT_ERRLEN];
+    unsigned char *row = malloc(3 * (size_t)w);
+    int x, y;
+
+    if (!row) { fputs("pipetrace: out of memory\n", stderr); return -1; }
+    if (pt_outfile_open(&out, path, err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace: %s\n", err);
+        free(row);
+        return -1;
+    }
+    fprintf(out.f, "P6\n%d %d\n255\n", w, h);
+    for (y = 0; y < h; y++) {
+        for (x = 0; x < w; x++) {
+            const unsigned char *ca = rgb_at(a, x, y), *cb = rgb_at(b, x, y);
+            unsigned char *p = row + 3 * (size_t)x;
+            if (!ca || !cb || memcmp(ca, cb, 3) != 0) { p[0] = 255; p[1] = 0; p[2] = 0; }
+            else {                          /* luma / 3: the picture stays readable */
+                int g = (299 * ca[0] + 587 * ca[1] + 114 * ca[2]) / 3000;
+                p[0] = p[1] = p[2] = (unsigned char)g;
+            }
+        }
+        if (fwrite(row, 1, 3 * (size_t)w, out.f) != 3 * (size_t)w) break;
+    }
+    free(row);
+    if (y < h || ferror(out.f)) {
+        fprintf(stderr, "pipetrace: cannot write '%s'\n", path);
+        pt_outfile_abort(&out);
+        return -1;
+    }
+    if (pt_outfile_commit(&out, err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+static int image_diff(const dopts *o, const pt_ppm img[2])
+{
+    const pt_ppm *a = &img[0], *b = &img[1];
+    int w = a->w > b->w ? a->w : b->w, h = a->h > b->h ? a->h : b->h;
+    int x, y, x0 = w, y0 = h, x1 = -1, y1 = -1, k;
+    size_t ndiff = 0, shown = 0;
+    int differ = a->w != b->w || a->h != b->h || a->maxval != b->maxval;
+
+    for (k = 0; k < 2; k++)
+        printf("%-9s %s  (P6, %d x %d, maxval %d)\n", side_name[k], o->path[k],
+               img[k].w, img[k].h, img[k].maxval);
+    if (a->w != b->w || a->h != b->h)
+        printf("The sizes differ; pixels inside one image only count as different.\n");
+    if (a->maxval != b->maxval)
+        printf("The maxvals differ; the color bytes are compared as they are.\n");
+    for (y = 0; y < h; y++) {
+        for (x = 0; x < w; x++) {
+            const unsigned char *ca = rgb_at(a, x, y), *cb = rgb_at(b, x, y);
+            if (ca && cb && memcmp(ca, cb, 3) == 0) continue;
+            if (ndiff++ == 0) printf("\n");
+            if (x < x0) x0 = x;
+            if (x > x1) x1 = x;
+            if (y < y0) y0 = y;
+            if (y > y1) y1 = y;
+            if (shown < o->show) {
+                printf("  (%d, %d)  expected ", x, y);
+                print_rgb(ca);
+                printf("  actual ");
+                print_rgb(cb);
+                printf("\n");
+                shown++;
+            }
+        }
+    }
+    if (ndiff > shown) printf("  ... and %zu more\n", ndiff - shown);
+    printf("\n");
+    if (ndiff)
+        printf("%zu of %zu pixels differ, all within the box (x, y) = (%d, %d) .. (%d, %d).\n",
+               ndiff, (size_t)w * (size_t)h, x0, y0, x1, y1);
+    else
+        printf("The images are the same: %d x %d pixels.\n", w, h);
+    if (o->image_out) {
+        if (write_highlight(o->image_out, a, b, w, h) != 0) return EXIT_INPUT;
+        printf("Highlight written to %s: differing pixels red, the others EXPECTED's in "
+               "dimmed gray.\n", o->image_out);
+    }
+    return ndiff || differ ? EXIT_DIFFER : EXIT_SAME;
+}
+
+/* ===== the vertex table ===== */
+
+/* One vertex of either trace: where each side's record of each stage is. */
+typedef struct vent {
+    uint64_t v;                  /* 1-based vertex number */
+    uint32_t model;              /* name id */
+    uint32_t rec[2][PT_NSTAGES]; /* record index into side's vx[], or NONE */
+} vent;
+
+/* Open addressing over entries in order of first sight (EXPECTED's first). */
+typedef struct vtab {
+    vent *e;                     /* entries; owned */
+    size_t n, cap;
+    uint32_t *slot;              /* entry index + 1, or 0; owned */
+    size_t nslot;                /* power of two > 2 n */
+} vtab;
+
+static size_t vhash(uint32_t model, uint64_t v)
+{
+    uint64_t h = v * 0x9E3779B97F4A7C15u ^ ((uint64_t)model * 0xC2B2AE3D27D4EB4Fu);
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9u;
+    h ^= h >> 32;
+    return (size_t)h;
+}
+
+static int vt_rehash(vtab *t, size_t nslot)
+{
+    uint32_t *slot = calloc(nslot, sizeof *slot);
+    size_t k;
+
+    if (!slot) return -1;
+    for (k = 0; k < t->n; k++) {
+        size_t s = vhash(t->e[k].model, t->e[k].v) & (nslot - 1);
+        while (slot[s]) s = (s + 1) & (nslot - 1);
+        slot[s] = (uint32_t)k + 1;
+    }
+    free(t->slot);
+    t->slot = slot;
+    t->nslot = nslot;
+    return 0;
+}
+
+/* The entry of (model, v), added when new; NULL when out of memory. */
+static vent *vt_get(vtab *t, uint32_t model, uint64_t v)
+{
+    size_t s;
+    vent *e;
+    int side, st;
+
+    if (2 * (t->n + 1) >= t->nslot && vt_rehash(t, t->nslot ? 2 * t->nslot : 1024) != 0)
+        return NULL;
+    s = vhash(model, v) & (t->nslot - 1);
+    for (; t->slot[s]; s = (s + 1) & (t->nslot - 1)) {
+        e = &t->e[t->slot[s] - 1];
+        if (e->model == model && e->v == v) return e;
+    }
+    if (t->n == t->cap) {
+        size_t cap = t->cap ? 2 * t->cap : 1024;
+        vent *ne = cap < UINT32_MAX ? realloc(t->e, cap * sizeof *ne) : NULL;
+        if (!ne) return NULL;
+        t->e = ne;
+        t->cap = cap;
+    }
+    e = &t->e[t->n];
+    e->v = v;
+    e->model = model;
+    for (side = 0; side < 2; side++)
+        for (st = 0; st < PT_NSTAGES; st++) e->rec[side][st] = NONE;
+    t->slot[s] = (uint32_t)++t->n;
+    return e;
+}
+
+/* ===== the comparison ===== */
+
+/* Everything one trace diff needs. */
+typedef struct dctx {
+    const dopts *o;
+    pt_names nm;                 /* model names of both traces */
+    pt_tread t[2];               /* EXPECTED, ACTUAL */
+    vtab vt;
+    double (*tr)[3];             /* tr[model id]: translation from EXPECTED's header */
+    unsigned char *has_tr;       /* has_tr[model id]: 1 when tr is known */
+    /* counts */
+    size_t agree, differ, only[2];
+    size_t first_at[PT_NSTAGES]; /* vertices that first differ at each stage */
+    size_t stage_only[2][PT_NSTAGES];   /* records without a partner */
+    size_t shown;                /* vertices listed */
+    size_t *mk_hits;             /* per mistake: vertices it reproduces */
+    size_t unexplained[PT_NSTAGES];     /* first differences no mistake reproduces */
+} dctx;
+
+/* Slack of the number x read from side s: for a text trace, half a unit in
+** its last printed digit ("%.Nf"; "%.Ne" from 1e15 up), plus strtod's half ulp.
+** For JSON Lines 0: its numbers are the doubles themselves. */
+static double slack(const dctx *c, int s, double x)
+{
+    int prec = c->t[s].prec;
+    double half, ax = fabs(x);
+
+    if (prec < 0 || !isfinite(x)) return 0.0;
+    half = 0.5 * pow(10.0, -prec);
+    if (ax >= 1e15) half = 0.5 * pow(10.0, floor(log10(ax)) - prec);
+    return half * (1 + 1e-9) + ax * 0x1p-52;
+}
+
+/* 1 when a (EXPECTED) and b (ACTUAL) agree.  Non-finite values agree only with
+** themselves (nan with nan). */
+static int same_real(const dctx *c, double a, double b)
+{
+    double allow;
+
+    if (isnan(a) || isnan(b)) return isnan(a) && isnan(b);
+    if (isinf(a) || isinf(b)) return a == b;
+    allow = fmax(c->o->tol, c->o->rel * fmax(fabs(a), fabs(b)));
+    return fabs(b - a) <= allow + slack(c, 0, a) + slack(c, 1, b);
+}
+
+static int is_real(int st) { return st <= PT_STAGE_PIXEL; }
+
+/* Number of values of stage st: 3, 2 or 1. */
+static int ncoord(int st)
+{
+    return st <= PT_STAGE_IMAGE ? 3 : st == PT_STAGE_INDEX ? 1 : 2;
+}
+
+/* Names of each stage's values, as the text trace writes them. */
+static const char *const coord_name[PT_NSTAGES][3] = {
+    {"x_m", "y_m", "z_m"}, {"x_c", "y_c", "z_c"}, {"x_ip", "y_ip", "z_ip"},
+    {"x_pp", "y_pp", ""}, {"x_vp", "y_vp", ""}, {"x_fb", "y_fb", ""}, {"idx", "", ""},
+};
+
+#define D_NULL 0x08u             /* stage_diff: one side has no value */
+#define D_FLAG 0x10u             /* stage_diff: inside or behind differs */
+
+/* Which parts of stage st differ between a and b: bit k for value k, D_NULL,
+** D_FLAG.  0 when they agree. */
+static unsigned stage_diff(const dctx *c, int st, const pt_tvrec *a, const pt_tvrec *b)
+{
+    unsigned m = 0;
+    int k;
+
+    if (is_real(st)) {
+        for (k = 0; k < ncoord(st); k++)
+            if (!same_real(c, a->u.d[k], b->u.d[k])) m |= 1u << k;
+    } else if ((a->flags ^ b->flags) & PT_REC_NULL) {
+        m |= D_NULL;
+    } else if (!(a->flags & PT_REC_NULL)) {
+        for (k = 0; k < ncoord(st); k++)
+            if (a->u.n[k] != b->u.n[k]) m |= 1u << k;
+    }
+    if ((a->flags ^ b->flags) & (PT_REC_INSIDE | PT_REC_BEHIND)) m |= D_FLAG;
+    return m;
+}
+
+/* Print the differing parts of stage st. */
+static void print_stage_diff(int st, const pt_tvrec *a, const pt_tvrec *b, unsigned m)
+{
+    char b1[PT_NUMLEN], b2[PT_NUMLEN], b3[PT_NUMLEN];
+    int k;
+
+    for (k = 0; k < ncoord(st); k++) {
+        if (!(m & (D_NULL | 1u << k))) continue;
+        printf("    %-5s expected ", coord_name[st][k]);
+        if (is_real(st)) {
+            printf("%s, actual %s", num(a->u.d[k], b1), num(b->u.d[k], b2));
+            if (isfinite(a->u.d[k]) && isfinite(b->u.d[k]))
+                printf(", difference %s", num(b->u.d[k] - a->u.d[k], b3));
+        } else if (a->flags & PT_REC_NULL) {
+            printf("none, actual %" PRId64, b->u.n[k]);
+        } else if (b->flags & PT_REC_NULL) {
+            printf("%" PRId64 ", actual none", a->u.n[k]);
+        } else {
+            printf("%" PRId64 ", actual %" PRId64 ", difference %+" PRId64,
+                   a->u.n[k], b->u.n[k], b->u.n[k] - a->u.n[k]);
+        }
+        printf("\n");
+    }
+    if ((a->flags ^ b->flags) & PT_REC_INSIDE)
+        printf("    inside the viewport: expected %s, actual %s\n",
+               a->flags & PT_REC_INSIDE ? "yes" : "no", b->flags & PT_REC_INSIDE ? "yes" : "no");
+    if ((a->flags ^ b->flags) & PT_REC_BEHIND)
+        printf("    behind the camera: expected %s, actual %s\n",
+               a->flags & PT_REC_BEHIND ? "yes" : "no", b->flags & PT_REC_BEHIND ? "yes" : "no");
+}
+
+/* ===== known mistakes ===== */
+
+/* One stage's values, for recomputing. */
+typedef struct sval {
+    int null;                    /* an integer stage without value */
+    double d[3];                 /* real stages */
+    int64_t n[2];                /* integer stages */
+} sval;
+
+/* What the formulas need from EXPECTED's header, for one vertex. */
+typedef struct hctx {
+    int w, h;                    /* viewport size */
+    int W, H;                    /* framebuffer size */
+    int x_ul, y_ul;              /* viewport corner */
+    int perspective;             /* 1: perspective camera */
+    int has_t;                   /* 1: t is known */
+    double t[3];                 /* the vertex's model's translation */
+} hctx;
+
+typedef double (*rnd_fn)(double);
+
+/* Java's Math.round, as stages/s4_pixel2viewport.c computes it: floor(x), plus
+** one when x - floor(x) >= 0.5 (exact for every double). */
+static double java_round(double x)
+{
+    double r;
+
+    if (isnan(x)) return 0.0;
+    if (isinf(x)) return x;
+    r = floor(x);
+    if (x - r >= 0.5) r += 1.0;
+    return r;
+}
+
+static double c_round(double x) { return round(x); }            /* ties away from 0 */
+static double floor_half(double x) { return floor(x + 0.5); }   /* the sum rounds */
+
+/* Round x with rnd to an integer pixel coordinate, as pt_pix_round() does:
+** 1, or 0 when there is none (not finite, |x| >= 2^62). */
+static int pix_round(rnd_fn rnd, double x, int64_t *out)
+{
+    double r = rnd(x);
+
+    if (!isfinite(x) || !isfinite(r) || fabs(r) >= PT_PIX_LIMIT) { *out = 0; return 0; }
+    *out = (int64_t)r;
+    return 1;
+}
+
+/* The viewport stage with rounding rnd, x_vp = round(x_pp) + dx and y_vp =
+** sy * round(y_pp) + oy (the right formula: dx = -1, sy = -1, oy = h). */
+static void viewport_with(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy,
+                          const sval *in, sval *out)
+{
+    int64_t rx, ry;
+
+    out->null = !(pix_round(rnd, in->d[0], &rx) && pix_round(rnd, in->d[1], &ry));
+    out->n[0] = out->null ? 0 : rx + dx;
+    out->n[1] = out->null ? 0 : sy * ry + oy;
+}
+
+/* The index stage with idx = y * mul_y + x * mul_x, null outside W x H. */
+static void index_with(const hctx *h, int64_t mul_x, int64_t mul_y, const sval *in, sval *out)
+{
+    int64_t x = in->n[0], y = in->n[1];
+
+    out->null = in->null || x < 0 || x >= h->W || y < 0 || y >= h->H;
+    out->n[0] = out->null ? 0 : y * mul_y + x * mul_x;
+}
+
+static void mk_subtract(const hctx *h, const sval *in, sval *out)
+{
+    int k;
+    for (k = 0; k < 3; k++) out->d[k] = in->d[k] - h->t[k];
+}
+
+static void mk_divz(const hctx *h, const sval *in, sval *out)
+{
+    (void)h;
+    out->d[0] = in->d[0] / in->d[2];
+    out->d[1] = in->d[1] / in->d[2];
+    out->d[2] = -1.0;
+}
+
+static void mk_two(const hctx *h, const sval *in, sval *out)
+{
+    out->d[0] = 0.5 + h->w / 2.0 * (in->d[0] + 1);
+    out->d[1] = 0.5 + h->h / 2.0 * (in->d[1] + 1);
+}
+
+static void mk_two_int(const hctx *h, const sval *in, sval *out)
+{
+    out->d[0] = 0.5 + (double)(h->w / 2) * (in->d[0] + 1);
+    out->d[1] = 0.5 + (double)(h->h / 2) * (in->d[1] + 1);
+}
+
+static void mk_swap_wh(const hctx *h, const sval *in, sval *out)
+{
+    out->d[0] = 0.5 + h->h / 2.001 * (in->d[0] + 1);
+    out->d[1] = 0.5 + h->w / 2.001 * (in->d[1] + 1);
+}
+
+static void mk_cround(const hctx *h, const sval *in, sval *out)
+{
+    viewport_with(c_round, -1, -1, h->h, in, out);
+}
+
+static void mk_floor(const hctx *h, const sval *in, sval *out)
+{
+    viewport_with(floor_half, -1, -1, h->h, in, out);
+}
+
+static void mk_noflip1(const hctx *h, const sval *in, sval *out)
+{
+    (void)h;
+    viewport_with(java_round, -1, 1, -1, in, out);
+}
+
+static void mk_noflip0(const hctx *h, const sval *in, sval *out)
+{
+    (void)h;
+    viewport_with(java_round, -1, 1, 0, in, out);
+}
+
+static void mk_nominus1(const hctx *h, const sval *in, sval *out)
+{
+    viewport_with(java_round, 0, -1, h->h, in, out);
+}
+
+static void mk_xh(const hctx *h, const sval *in, sval *out)
+{
+    index_with(h, h->H, 1, in, out);
+}
+
+static void mk_vpw(const hctx *h, const sval *in, sval *out)
+{
+    index_with(h, 1, h->w, in, out);
+}
+
+/* A known mistake: made in `stage`, its formula written out in apply. */
+typedef struct mistake {
+    int stage;                   /* pt_stage it is made in */
+    const char *name;            /* what was done, a few words */
+    const char *how;             /* the wrong formula, and why it goes wrong */
+    void (*apply)(const hctx *h, const sval *in, sval *out);
+} mistake;
+
+static const mistake mistakes[] = {
+    {PT_STAGE_CAMERA, "translation subtracted",
+     "x_c = x_m - x_t (likewise y, z) instead of x_m + x_t", mk_subtract},
+    {PT_STAGE_IMAGE, "projection divides by z_c instead of -z_c",
+     "x_ip = x_c / z_c: the image comes out mirrored, x and y negated", mk_divz},
+    {PT_STAGE_PIXEL, "2 instead of 2.001",
+     "x_pp = 0.5 + w/2 * (x_ip + 1): x_ip = 1 lands on w + 0.5, between two pixels",
+     mk_two},
+    {PT_STAGE_PIXEL, "2 instead of 2.001",
+     "x_pp = 0.5 + w/2 * (x_ip + 1) with w/2 in integer arithmetic: half of an odd "
+     "size is lost", mk_two_int},
+    {PT_STAGE_PIXEL, "w and h swapped",
+     "x_pp = 0.5 + h/2.001 * (x_ip + 1), y_pp = 0.5 + w/2.001 * (y_ip + 1)", mk_swap_wh},
+    {PT_STAGE_VIEWPORT, "C round() instead of Java's Math.round",
+     "round() and lround() take ties away from zero: round(-2.5) = -3, "
+     "Math.round(-2.5) = -2", mk_cround},
+    {PT_STAGE_VIEWPORT, "floor(x + 0.5) instead of Java's Math.round",
+     "0.49999999999999994 + 0.5 rounds up to 1.0, so floor gives 1 where "
+     "Math.round gives 0", mk_floor},
+    {PT_STAGE_VIEWPORT, "missing y flip",
+     "y_vp = round(y_pp) - 1 instead of h - round(y_pp): the image comes out upside down",
+     mk_noflip1},
+    {PT_STAGE_VIEWPORT, "missing y flip",
+     "y_vp = round(y_pp) instead of h - round(y_pp): the image comes out upside down",
+     mk_noflip0},
+    {PT_STAGE_VIEWPORT, "missing -1 in x_vp",
+     "x_vp = round(x_pp) instead of round(x_pp) - 1: one pixel too far right",
+     mk_nominus1},
+    {PT_STAGE_INDEX, "index x * H + y",
+     "idx = x_fb * H + y_fb (column by column) instead of y_fb * W + x_fb", mk_xh},
+    {PT_STAGE_INDEX, "viewport width instead of framebuffer width",
+     "idx = y_fb * w + x_fb with the viewport's w instead of the framebuffer's W", mk_vpw},
+};
+
+#define NMISTAKES (sizeof mistakes / sizeof mistakes[0])
+
+/* The mistakes of the rasterizer's rounding (pt_pix_round() in s4). */
+static const struct {
+    const char *name;            /* as in mistakes[] */
+    const char *how;
+    rnd_fn rnd;
+} raster_mistakes[] = {
+    {"floor(x + 0.5) instead of Java's Math.round",
+     "the DDA's running y can be 0.49999999999999994, which floor(y + 0.5) takes "
+     "to 1 and Math.round to 0", floor_half},
+    {"C round() instead of Java's Math.round",
+     "round() takes ties away from zero", c_round},
+};
+
+#define NRASTER (sizeof raster_mistakes / sizeof raster_mistakes[0])
+
+/* Range of one recomputed value over the inputs tried. */
+typedef struct vrange {
+    int any_finite, nan, pinf, ninf;    /* kinds of double seen */
+    double lo, hi;               /* finite doubles */
+    int any_null, any_value;     /* integer stages */
+    int64_t ilo, ihi;
+} vrange;
+
+static void range_add(vrange *r, int real, const sval *o, int k)
+{
+    if (real) {
+        double x = o->d[k];
+        if (isnan(x)) r->nan = 1;
+        else if (isinf(x)) { if (x > 0) r->pinf = 1; else r->ninf = 1; }
+        else if (!r->any_finite++) r->lo = r->hi = x;
+        else { r->lo = fmin(r->lo, x); r->hi = fmax(r->hi, x); }
+    } else if (o->null) {
+        r->any_null = 1;
+    } else {
+        int64_t x = o->n[k];
+        if (!r->any_value++) r->ilo = r->ihi = x;
+        else { if (x < r->ilo) r->ilo = x; if (x > r->ihi) r->ihi = x; }
+    }
+}
+
+/* 1 when mistake mk, applied to in (each real input anywhere within
+** in_slack[k] of its value), reproduces ACTUAL's record act of stage st;
+** *at_in gets the result for in itself, to show. */
+static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sval *in,
+                      const double in_slack[3], int in_real, int st,
+                      const pt_tvrec *act, sval *at_in)
+{
+    vrange r[3];
+    int vary[3], nvary = 0, npts = 1, p, k, real = is_real(st);
+
+    memset(r, 0, sizeof r);
+    for (k = 0; k < 3; k++)
+        if (in_real && k < 3 && in_slack[k] > 0) { vary[nvary++] = k; npts *= 3; }
+    for (p = 0; p < npts; p++) {            /* every corner and mid-point of the box */
+        sval x = *in, out;
+        int q = p, j;
+        for (j = 0; j < nvary; j++, q /= 3)
+            x.d[vary[j]] += (q % 3 - 1) * in_slack[vary[j]];
+        memset(&out, 0, sizeof out);
+        mk->apply(h, &x, &out);
+        if (p == (npts - 1) / 2) *at_in = out;   /* all offsets 0: the middle */
+        for (k = 0; k < ncoord(st); k++) range_add(&r[k], real, &out, k);
+    }
+    for (k = 0; k < ncoord(st); k++) {
+        if (real) {
+            double a = act->u.d[k], allow;
+            if (isnan(a)) { if (!r[k].nan) return 0; continue; }
+            if (isinf(a)) { if (!(a > 0 ? r[k].pinf : r[k].ninf)) return 0; continue; }
+            if (!r[k].any_finite) return 0;
+            allow = fmax(c->o->tol, c->o->rel * fmax(fabs(a), fmax(fabs(r[k].lo), fabs(r[k].hi))));
+            allow += slack(c, 1, a);
+            if (a < r[k].lo - allow || a > r[k].hi + allow) return 0;
+        } else if (act->flags & PT_REC_NULL) {
+            if (!r[k].any_null) return 0;
+        } else if (!r[k].any_value || act->u.n[k] < r[k].ilo || act->u.n[k] > r[k].ihi) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Fill *h from EXPECTED's header for a vertex of model `model`; 0 when there is
+** no header. */
+static int hctx_of(const dctx *c, uint32_t model, hctx *h)
+{
+    const pt_thdr *hd = &c->t[0].hdr;
+
+    if (!hd->have || hd->vp_w < 1 || hd->vp_h < 1) return 0;
+    h->w = hd->vp_w; h->h = hd->vp_h;
+    h->W = hd->fb_w; h->H = hd->fb_h;
+    h->x_ul = hd->vp_x; h->y_ul = hd->vp_y;
+    h->perspective = hd->perspective;
+    h->has_t = model < c->nm.n && c->has_tr[model];
+    if (h->has_t) memcpy(h->t, c->tr[model], sizeof h->t);
+    return 1;
+}
+
+/* EXPECTED's value of the stage before st for vertex e, into *in with the slack
+** of each real value; *from gets the stage it came from.  A stage left out as
+** the identity is replaced by the one before it (camera = model when the
+** translation is 0 0 0; framebuffer = viewport when the viewport is at 0,0).
+** Returns 0 when there is no such record. */
+static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
+                      sval *in, double in_slack[3], int *from)
+{
+    int p = st - 1, k;
+    uint32_t i;
+    const pt_tvrec *r;
+
+    if (p < 0) return 0;
+    i = e->rec[0][p];
+    if (i == NONE && p == PT_STAGE_CAMERA && h->has_t &&
+        h->t[0] == 0 && h->t[1] == 0 && h->t[2] == 0)
+        i = e->rec[0][p = PT_STAGE_MODEL];
+    if (i == NONE && p == PT_STAGE_FRAMEBUFFER && h->x_ul == 0 && h->y_ul == 0)
+        i = e->rec[0][p = PT_STAGE_VIEWPORT];
+    if (i == NONE) return 0;
+    r = &c->t[0].vx[i];
+    memset(in, 0, sizeof *in);
+    in_slack[0] = in_slack[1] = in_slack[2] = 0;
+    if (is_real(p)) {
+        for (k = 0; k < ncoord(p); k++) {
+            in->d[k] = r->u.d[k];
+            in_slack[k] = slack(c, 0, r->u.d[k]);
+        }
+    } else {
+        in->null = (r->flags & PT_REC_NULL) != 0;
+        for (k = 0; k < ncoord(p); k++) in->n[k] = r->u.n[k];
+    }
+    *from = p;
+    return 1;
+}
+
+/* Print the values of stage st in *v: "x_pp = 1.5, y_pp = 2". */
+static void print_sval(int st, const sval *v)
+{
+    char b[PT_NUMLEN];
+    int k;
+
+    for (k = 0; k < ncoord(st); k++) {
+        printf("%s%s = ", k ? ", " : "", coord_name[st][k]);
+        if (is_real(st)) printf("%s", num(v->d[k], b));
+        else if (v->null) printf("none");
+        else printf("%" PRId64, v->n[k]);
+    }
+}
+
+/* Find the mistakes that reproduce the first difference of e at stage st,
+** count them, and print them when `print`. */
+static void explain(dctx *c, const vent *e, int st, int print)
+{
+    hctx h;
+    sval in, out;
+    double in_slack[3];
+    int from, found = 0;
+    size_t k;
+    const pt_tvrec *act = &c->t[1].vx[e->rec[1][st]];
+    const char *last = NULL;
+
+    memset(&h, 0, sizeof h);
+    if (!hctx_of(c, e->model, &h) || !prev_value(c, e, st, &h, &in, in_slack, &from)) {
+        c->unexplained[st]++;
+        if (print) printf("    (no known mistake checked: EXPECTED has no %s record to "
+                          "recompute from)\n", st ? pt_stage_infos[st - 1].name : "previous");
+        return;
+    }
+    for (k = 0; k < NMISTAKES; k++) {
+        const mistake *mk = &mistakes[k];
+        if (mk->stage != st) continue;
+        if (st == PT_STAGE_CAMERA && !h.has_t) continue;
+        if (st == PT_STAGE_IMAGE && !h.perspective) continue;
+        if (mk->apply == mk_two_int && h.w % 2 == 0 && h.h % 2 == 0) continue;
+        if (!reproduces(c, mk, &h, &in, in_slack, is_real(from), st, act, &out)) continue;
+        if (last && !strcmp(last, mk->name)) continue;   /* a second form of the same */
+        last = mk->name;
+        found++;
+        c->mk_hits[k]++;
+        if (!print) continue;
+        printf("    likely mistake: %s\n", mk->name);
+        printf("      %s\n", mk->how);
+        printf("      check: %s recomputed with it from EXPECTED's %s (", pt_stage_infos[st].name,
+               pt_stage_infos[from].name);
+        print_sval(from, &in);
+        printf(") gives ");
+        print_sval(st, &out);
+        printf(", as in ACTUAL%s\n", c->t[0].prec >= 0 ? " (within the printed digits)" : "");
+    }
+    if (!found) {
+        c->unexplained[st]++;
+        if (print) printf("    no known mistake reproduces this from EXPECTED's %s record\n",
+                          pt_stage_infos[from].name);
+    }
+}
+
+/* Compare one vertex present on both sides. */
+static void compare_vertex(dctx *c, const vent *e)
+{
+    int st, first = -1, nlater = 0;
+    unsigned m = 0, later = 0;
+    const pt_tvrec *a = NULL, *b = NULL;
+    int print;
+
+    for (st = 0; st < PT_NSTAGES; st++) {
+        uint32_t i = e->rec[0][st], j = e->rec[1][st];
+        unsigned d;
+        if (i == NONE || j == NONE) {
+            if (i != NONE) c->stage_only[0][st]++;
+            if (j != NONE) c->stage_only[1][st]++;
+            continue;
+        }
+        d = stage_diff(c, st, &c->t[0].vx[i], &c->t[1].vx[j]);
+        if (!d) continue;
+        if (first < 0) {
+            first = st;
+            m = d;
+            a = &c->t[0].vx[i];
+            b = &c->t[1].vx[j];
+        } else {
+            later |= 1u << st;
+            nlater++;
+        }
+    }
+    if (first < 0) { c->agree++; return; }
+    c->differ++;
+    c->first_at[first]++;
+    print = c->shown < c->o->show;
+    if (print) {
+        c->shown++;
+        printf("%s v%" PRIu64 ": first differs at %s", pt_names_get(&c->nm, e->model), e->v,
+               pt_stage_infos[first].name);
+        if (nlater) {
+            printf("; %d later stage%s differ%s too (", nlater, nlater > 1 ? "s" : "",
+                   nlater > 1 ? "" : "s");
+            for (st = first + 1; st < PT_NSTAGES; st++)
+                if (later & 1u << st)
+                    printf("%s%s", pt_stage_infos[st].name, (later >> (st + 1)) ? ", " : ")");
+        }
+        printf("\n");
+        print_stage_diff(first, a, b, m);
+    }
+    explain(c, e, first, print);
+}
+
+/* ===== pixels ===== */
+
+/* A pixel record's place, for sorting by position. */
+typedef struct pkey {
+    int64_t y, x, i;             /* sort keys */
+    size_t k;                    /* index into px[] */
+} pkey;
+
+static int pkey_cmp(const void *pa, const void *pb)
+{
+    const pkey *a = pa, *b = pb;
+
+    if (a->y != b->y) return a->y < b->y ? -1 : 1;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->i != b->i) return a->i < b->i ? -1 : 1;
+    return a->k < b->k ? -1 : a->k > b->k;
+}
+
+/* A raster record (pixel or clip) in its segment, for sorting by segment. */
+typedef struct skey {
+    uint64_t seg;                /* 1-based segment */
+    uint32_t model;              /* name id */
+    int clip;                    /* 1: cl[k], 0: px[k] */
+    size_t order;                /* place in the file: 2 npix (clip), 2 k + 1 (pixel) */
+    size_t k;                    /* index */
+} skey;
+
+/* Order of the segments of a and b: model id, then segment number. */
+static int seg_cmp(const skey *a, const skey *b)
+{
+    if (a->model != b->model) return a->model < b->model ? -1 : 1;
+    if (a->seg != b->seg) return a->seg < b->seg ? -1 : 1;
+    return 0;
+}
+
+static int skey_cmp(const void *pa, const void *pb)
+{
+    const skey *a = pa, *b = pb;
+    int c = seg_cmp(a, b);
+
+    if (c) return c;
+    return a->order < b->order ? -1 : a->order > b->order;
+}
+
+/* The pixel records of side s sorted by position, duplicates dropped. */
+static pkey *sorted_pixels(const pt_tread *t, size_t *n)
+{
+    pkey *p = malloc((t->npx ? t->npx : 1) * sizeof *p);
+    size_t k, m = 0;
+
+    if (!p) return NULL;
+    for (k = 0; k < t->npx; k++) {
+        p[k].y = t->px[k].y; p[k].x = t->px[k].x; p[k].i = t->px[k].i; p[k].k = k;
+    }
+    qsort(p, t->npx, sizeof *p, pkey_cmp);
+    for (k = 0; k < t->npx; k++)
+        if (!m || p[k].x != p[m - 1].x || p[k].y != p[m - 1].y || p[k].i != p[m - 1].i)
+            p[m++] = p[k];
+    *n = m;
+    return p;
+}
+
+/* The raster records of t sorted by segment, in step order within each. */
+static skey *sorted_steps(const pt_tread *t, size_t *n)
+{
+    size_t k, m = 0;
+    skey *s = malloc((t->npx + t->ncl ? t->npx + t->ncl : 1) * sizeof *s);
+
+    if (!s) return NULL;
+    for (k = 0; k < t->npx; k++, m++) {
+        s[m].seg = t->px[k].seg; s[m].model = t->px[k].model;
+        s[m].clip = 0; s[m].order = 2 * k + 1; s[m].k = k;
+    }
+    for (k = 0; k < t->ncl; k++, m++) {
+        s[m].seg = t->cl[k].seg; s[m].model = t->cl[k].model;
+        s[m].clip = 1; s[m].order = 2 * t->cl[k].npix; s[m].k = k;
+    }
+    qsort(s, m, sizeof *s, skey_cmp);
+    *n = m;
+    return s;
+}
+
+/* The pixels of one segment in viewport coordinates, step order. */
+typedef struct plist {
+    int64_t (*p)[2];             /* owned */
+    size_t n, cap;
+} plist;
+
+static int plist_add(plist *l, int64_t x, int64_t y)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 64;
+        int64_t (*np)[2] = realloc(l->p, cap * sizeof *np);
+        if (!np) return -1;
+        l->p = np;
+        l->cap = cap;
+    }
+    l->p[l->n][0] = x;
+    l->p[l->n][1] = y;
+    l->n++;
+    return 0;
+}
+
+/* One DDA step's pixel, as step_pixel() in raster.c, rounding with rnd. */
+static void step_pixel(rnd_fn rnd, int64_t s, double acc, int transposed, int h,
+                       int64_t *x, int64_t *y)
+{
+    int64_t r;
+
+    if (!pix_round(rnd, acc, &r))
+        r = acc > 0 ? (int64_t)PT_PIX_LIMIT : -(int64_t)PT_PIX_LIMIT;
+    if (transposed) { *x = r - 1; *y = h - s; }
+    else            { *x = s - 1; *y = h - r; }
+}
+
+static int inside(int64_t x, int64_t y, int w, int h)
+{
+    return x >= 0 && x < w && y >= 0 && y < h;
+}
+
+/* Run raster.c's DDA again, rounding its running coordinate with rnd, for the
+** segment whose rounded endpoints are (X0, Y0) and (X1, Y1) (logical pixels),
+** in a w x h viewport; the pixels it writes go to *out in step order.  The same
+** steps as pt_raster_segment(), clipped runs skipped by pt_raster_advance(). */
+static int replay(int64_t X0, int64_t Y0, int64_t X1, int64_t Y1, int w, int h,
+                  rnd_fn rnd, plist *out)
+{
+    double x0 = (double)X0, y0 = (double)Y0, x1 = (double)X1, y1 = (double)Y1, m, acc, t;
+    int64_t s, s0, s1, band_hi, px, py;
+    int transposed;
+
+    out->n = 0;
+    if (X0 == X1 && Y0 == Y1) {             /* degenerate: one pixel */
+        step_pixel(rnd, X0, y0, 0, h, &px, &py);
+        return inside(px, py, w, h) ? plist_add(out, px, py) : 0;
+    }
+    transposed = fabs(y1 - y0) > fabs(x1 - x0);
+    if (transposed) { t = x0; x0 = y0; y0 = t; t = x1; x1 = y1; y1 = t; }
+    if (x1 < x0) { t = x0; x0 = x1; x1 = t; t = y0; y0 = y1; y1 = t; }
+    m = (y1 - y0) / (x1 - x0);
+    s0 = (int64_t)x0;
+    s1 = (int64_t)x1;
+    band_hi = transposed ? h : w;
+    acc = y0;
+    s = s0;
+    if (s < 1) {                            /* before the band */
+        int64_t last = s1 < 0 ? s1 : 0;
+        acc = pt_raster_advance(acc, m, (uint64_t)(last - s)) + m;
+        s = last + 1;
+    }
+    for (; s <= s1 && s <= band_hi; s++) {
+        step_pixel(rnd, s, acc, transposed, h, &px, &py);
+        if (inside(px, py, w, h) && plist_add(out, px, py) != 0) return -1;
+        acc += m;
+    }
+    return 0;
+}
+
+static int plist_eq(const plist *a, const plist *b)
+{
+    return a->n == b->n && (a->n == 0 || memcmp(a->p, b->p, a->n * sizeof *a->p) == 0);
+}
+
+/* What the raster check found. */
+typedef struct rstat {
+    size_t segs_differ;          /* segments whose pixels differ */
+    size_t hits[NRASTER];        /* ... that each rounding mistake reproduces */
+    int first_set;               /* 1: first_* below are set */
+    uint32_t first_model;        /* the first differing segment */
+    uint64_t first_seg;
+    int64_t ends[4];             /* its rounded endpoints X0 Y0 X1 Y1 */
+    int ends_ok;                 /* 1: ends verified by replaying EXPECTED */
+} rstat;
+
+/* Segment by segment: which differ, and which rounding mistake of the
+** rasterizer reproduces ACTUAL's pixels from EXPECTED's endpoints. */
+static int check_raster(dctx *c, rstat *rs)
+{
+    const pt_thdr *hd = &c->t[0].hdr;
+    size_t n[2], k[2] = {0, 0}, j;
+    skey *s[2];
+    plist pl[2] = {{NULL, 0, 0}, {NULL, 0, 0}}, re = {NULL, 0, 0};
+    int side, rc = 0;
+
+    memset(rs, 0, sizeof *rs);
+    s[0] = sorted_steps(&c->t[0], &n[0]);
+    s[1] = sorted_steps(&c->t[1], &n[1]);
+    if (!s[0] || !s[1]) rc = -1;
+    while (rc == 0 && (k[0] < n[0] || k[1] < n[1])) {
+        uint32_t model;
+        uint64_t seg;
+        size_t beg[2], end[2];
+        int64_t ends[4];
+        int have_ends = 0, ok = 0;
+
+        /* the next segment of either list: the smaller (model, seg) */
+        side = k[1] >= n[1] ? 0 : k[0] >= n[0] ? 1 : seg_cmp(&s[0][k[0]], &s[1][k[1]]) <= 0 ? 0 : 1;
+        model = s[side][k[side]].model;
+        seg = s[side][k[side]].seg;
+        for (side = 0; side < 2; side++) {
+            beg[side] = k[side];
+            pl[side].n = 0;
+            while (k[side] < n[side] && s[side][k[side]].model == model &&
+                   s[side][k[side]].seg == seg) {
+                const skey *q = &s[side][k[side]++];
+                if (!q->clip) {
+                    const pt_tpix *p = &c->t[side].px[q->k];
+                    if (plist_add(&pl[side], p->x - hd->vp_x, p->y - hd->vp_y) != 0) rc = -1;
+                }
+            }
+            end[side] = k[side];
+        }
+        if (rc != 0 || plist_eq(&pl[0], &pl[1])) continue;
+        /* rounded endpoints: EXPECTED's first and last steps, as logical pixels */
+        if (end[0] > beg[0]) {
+            const skey *f = &s[0][beg[0]], *l = &s[0][end[0] - 1];
+            int64_t fx, fy, lx, ly;
+            if (f->clip) { fx = c->t[0].cl[f->k].first[0]; fy = c->t[0].cl[f->k].first[1]; }
+            else { fx = c->t[0].px[f->k].x - hd->vp_x; fy = c->t[0].px[f->k].y - hd->vp_y; }
+            if (l->clip) { lx = c->t[0].cl[l->k].last[0]; ly = c->t[0].cl[l->k].last[1]; }
+            else { lx = c->t[0].px[l->k].x - hd->vp_x; ly = c->t[0].px[l->k].y - hd->vp_y; }
+            ends[0] = fx + 1; ends[1] = hd->vp_h - fy;
+            ends[2] = lx + 1; ends[3] = hd->vp_h - ly;
+            have_ends = 1;
+            if (replay(ends[0], ends[1], ends[2], ends[3], hd->vp_w, hd->vp_h, java_round, &re))
+                rc = -1;
+            ok = rc == 0 && plist_eq(&re, &pl[0]);
+        }
+        if (!rs->first_set) {
+            rs->first_set = 1;
+            rs->first_model = model;
+            rs->first_seg = seg;
+            if (have_ends) memcpy(rs->ends, ends, sizeof ends);
+            rs->ends_ok = ok;
+        }
+        rs->segs_differ++;
+        for (j = 0; ok && rc == 0 && j < NRASTER; j++) {
+            if (replay(ends[0], ends[1], ends[2], ends[3], hd->vp_w, hd->vp_h,
+                       raster_mistakes[j].rnd, &re)) rc = -1;
+            else if (plist_eq(&re, &pl[1])) rs->hits[j]++;
+        }
+    }
+    free(s[0]);
+    free(s[1]);
+    free(pl[0].p);
+    free(pl[1].p);
+    free(re.p);
+    return rc;
+}
+
+/* Compare the sets of lit pixels; print missing and extra ones.  *nmiss and
+** *nextra get the counts. */
+static int compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t *nlit)
+{
+    pkey *p[2];
+    size_t n[2], a = 0, b = 0, shown[2] = {0, 0};
+    int pass;
+
+    *nmiss = *nextra = 0;
+    p[0] = sorted_pixels(&c->t[0], &n[0]);
+    p[1] = sorted_pixels(&c->t[1], &n[1]);
+    if (!p[0] || !p[1]) { free(p[0]); free(p[1]); return -1; }
+    nlit[0] = n[0];
+    nlit[1] = n[1];
+    for (pass = 0; pass < 2; pass++) {      /* count, then list */
+        a = b = 0;
+        while (a < n[0] || b < n[1]) {
+            int cmp = a >= n[0] ? 1 : b >= n[1] ? -1 : 0;
+            int side;
+            const pkey *q;
+            if (!cmp) {
+                pkey x = p[0][a], y = p[1][b];
+                x.k = y.k = 0;
+                cmp = pkey_cmp(&x, &y);
+            }
+            if (!cmp) { a++; b++; continue; }
+            side = cmp < 0 ? 0 : 1;
+            q = side ? &p[1][b++] : &p[0][a++];
+            if (pass == 0) { if (side) ++*nextra; else ++*nmiss; continue; }
+            if (shown[side] < c->o->show) {
+                const pt_tpix *x = &c->t[side].px[q->k];
+                if (!shown[side]) printf("  %s: %zu pixel%s\n", side ? "extra in ACTUAL" :
+                                         "missing in ACTUAL", side ? *nextra : *nmiss,
+                                         (side ? *nextra : *nmiss) > 1 ? "s" : "");
+                printf("    (x_fb, y_fb) = (%" PRId64 ", %" PRId64 "), idx %" PRId64
+                       "   %s s%" PRIu64 "\n", x->x, x->y, x->i,
+                       pt_names_get(&c->nm, x->model), x->seg);
+                shown[side]++;
+                if (shown[side] == c->o->show && (side ? *nextra : *nmiss) > c->o->show)
+                    printf("    ... and %zu more\n", (side ? *nextra : *nmiss) - c->o->show);
+            }
+        }
+        if (pass == 0 && !*nmiss && !*nextra) break;
+    }
+    free(p[0]);
+    free(p[1]);
+    return 0;
+}
+
+/* ===== headers ===== */
+
+/* Print how the headers differ; returns 1 when they do. */
+static int compare_headers(const dctx *c)
+{
+    const pt_thdr *a = &c->t[0].hdr, *b = &c->t[1].hdr;
+    int differ = 0;
+    size_t k;
+
+    if (!a->have || !b->have) return 0;
+    if (a->fb_w != b->fb_w || a->fb_h != b->fb_h) {
+        printf("header: framebuffer %d x %d in EXPECTED, %d x %d in ACTUAL\n",
+               a->fb_w, a->fb_h, b->fb_w, b->fb_h);
+        differ = 1;
+    }
+    if (a->vp_x != b->vp_x || a->vp_y != b->vp_y || a->vp_w != b->vp_w || a->vp_h != b->vp_h) {
+        printf("header: viewport %d x %d at (%d, %d) in EXPECTED, %d x %d at (%d, %d) in ACTUAL\n",
+               a->vp_w, a->vp_h, a->vp_x, a->vp_y, b->vp_w, b->vp_h, b->vp_x, b->vp_y);
+        differ = 1;
+    }
+    if (a->perspective != b->perspective) {
+        printf("header: camera %s in EXPECTED, %s in ACTUAL\n",
+               a->perspective ? "perspective" : "orthographic",
+               b->perspective ? "perspective" : "orthographic");
+        differ = 1;
+    }
+    for (k = 0; k < a->nmodels || k < b->nmodels; k++) {
+        const pt_tmodel *ma = k < a->nmodels ? &a->models[k] : NULL;
+        const pt_tmodel *mb = k < b->nmodels ? &b->models[k] : NULL;
+        if (!ma || !mb || ma->name != mb->name) {
+            printf("header: model %zu is %s in EXPECTED, %s in ACTUAL\n", k + 1,
+                   ma ? pt_names_get(&c->nm, ma->name) : "missing",
+                   mb ? pt_names_get(&c->nm, mb->name) : "missing");
+            differ = 1;
+        } else if (!same_real(c, ma->t[0], mb->t[0]) || !same_real(c, ma->t[1], mb->t[1]) ||
+                   !same_real(c, ma->t[2], mb->t[2])) {
+            char b1[PT_NUMLEN], b2[PT_NUMLEN], b3[PT_NUMLEN];
+            printf("header: model %s is translated by %s %s %s in EXPECTED", pt_names_get(&c->nm,
+                   ma->name), num(ma->t[0], b1), num(ma->t[1], b2), num(ma->t[2], b3));
+            printf(", by %s %s %s in ACTUAL\n", num(mb->t[0], b1), num(mb->t[1], b2),
+                   num(mb->t[2], b3));
+            differ = 1;
+        }
+    }
+    if (differ) printf("The headers differ: these may be traces of different scenes.\n\n");
+    return differ;
+}
+
+/* ===== the trace diff ===== */
+
+static const char *format_name(const pt_tread *t)
+{
+    return t->kind == PT_TK_JSONL ? "JSON Lines" : "text";
+}
+
+static void print_intro(const dctx *c)
+{
+    char b1[PT_NUMLEN], b2[PT_NUMLEN];
+    int s;
+
+    for (s = 0; s < 2; s++) {
+        const pt_tread *t = &c->t[s];
+        printf("%-9s %s  (%s", side_name[s], c->o->path[s], format_name(t));
+        if (t->prec >= 0) printf(", %d decimals", t->prec);
+        printf(": %zu vertex, %zu pixel records)\n", t->nvx, t->npx);
+    }
+    printf("Integers must be equal; doubles a, b agree when |a - b| <= max(%s, %s * max(|a|, |b|))",
+           num(c->o->tol, b1), num(c->o->rel, b2));
+    if (c->t[0].prec >= 0 || c->t[1].prec >= 0) {
+        printf(",\nplus half a unit in the last printed digit of a text trace (");
+        for (s = 0; s < 2; s++) {
+            if (c->t[s].prec < 0) continue;
+            printf("%s%s: %s", s && c->t[0].prec >= 0 ? ", " : "", side_name[s],
+                   num(0.5 * pow(10.0, -c->t[s].prec), b1));
+        }
+        printf(")");
+    }
+    printf(".\n\n");
+}
+
+/* Fill the vertex table from both sides.  Returns 0, 2 on a duplicate record
+** (message printed), -1 when out of memory. */
+static int fill_table(dctx *c)
+{
+    int s;
+    size_t k;
+
+    for (s = 0; s < 2; s++) {
+        for (k = 0; k < c->t[s].nvx; k++) {
+            const pt_tvrec *r = &c->t[s].vx[k];
+            vent *e;
+            if (k >= NONE) return -1;
+            if (!(e = vt_get(&c->vt, r->model, r->v))) return -1;
+            if (e->rec[s][r->stage] != NONE) {
+                fprintf(stderr, "%s:%" PRIu32 ":1: error: a second %s record for %s v%" PRIu64
+                        " (the first is on line %" PRIu32 ")\n", c->o->path[s], r->line,
+                        pt_stage_infos[r->stage].name, pt_names_get(&c->nm, r->model), r->v,
+                        c->t[s].vx[e->rec[s][r->stage]].line);
+                return EXIT_INPUT;
+            }
+            e->rec[s][r->stage] = (uint32_t)k;
+        }
+    }
+    return 0;
+}
+
+/* EXPECTED's translations by model id. */
+static int fill_translations(dctx *c)
+{
+    const pt_thdr *hd = &c->t[0].hdr;
+    size_t k, n = c->nm.n ? c->nm.n : 1;
+
+    c->tr = calloc(n, sizeof *c->tr);
+    c->has_tr = calloc(n, 1);
+    if (!c->tr || !c->has_tr) return -1;
+    for (k = 0; k < hd->nmodels; k++) {
+        memcpy(c->tr[hd->models[k].name], hd->models[k].t, sizeof *c->tr);
+        c->has_tr[hd->models[k].name] = 1;
+    }
+    return 0;
+}
+
+/* The side-only vertices: count them and list a few. */
+static void report_one_sided(dctx *c)
+{
+    int s, st;
+    size_t k;
+
+    for (s = 0; s < 2; s++) {
+        size_t listed = 0;
+        for (k = 0; k < c->vt.n; k++) {
+            const vent *e = &c->vt.e[k];
+            int here = 0, there = 0;
+            for (st = 0; st < PT_NSTAGES; st++) {
+                here |= e->rec[s][st] != NONE;
+                there |= e->rec[!s][st] != NONE;
+            }
+            if (!here || there) continue;
+            if (c->only[s]++ == 0) printf("only in %s:", side_name[s]);
+            if (listed < c->o->show) {
+                printf("%s %s v%" PRIu64, listed ? "," : "", pt_names_get(&c->nm, e->model), e->v);
+                listed++;
+            }
+        }
+        if (c->only[s] > listed) printf(", ... (%zu in all)", c->only[s]);
+        if (c->only[s]) printf("\n\n");
+    }
+}
+
+/* A note on stages only one trace holds: they are not compared. */
+static void report_stage_only(const dctx *c)
+{
+    int s, st, any = 0;
+
+    for (s = 0; s < 2; s++)
+        for (st = 0; st < PT_NSTAGES; st++) {
+            if (!c->stage_only[s][st]) continue;
+            printf("%s %s records are only in %s (%zu)", any ? ";" : "Not compared:",
+                   pt_stage_infos[st].name, side_name[s], c->stage_only[s][st]);
+            any = 1;
+        }
+    if (any) printf(".\n\n");
+}
+
+/* The summary paragraph; returns the exit status. */
+static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
+                     const size_t nlit[2], int pixels_compared, const rstat *rs)
+{
+    sbuf s;
+    size_t total = c->agree + c->differ, k;
+    int st, top = -1, differ;
+
+    memset(&s, 0, sizeof s);
+    differ = hdr_differ || c->differ || c->only[0] || c->only[1] || nmiss || nextra;
+    if (!differ) {
+        sb_add(&s, "The traces agree: %zu of %zu vertices at every stage both hold", total, total);
+        if (pixels_compared) sb_add(&s, ", and the same %zu lit pixels.", nlit[0]);
+        else sb_add(&s, ".");
+        para("", s.b);
+        return EXIT_SAME;
+    }
+    sb_add(&s, "%zu of %zu vertices agree", c->agree, total);
+    if (c->differ) sb_add(&s, ", %zu differ", c->differ);
+    if (c->only[0]) sb_add(&s, ", %zu are only in EXPECTED", c->only[0]);
+    if (c->only[1]) sb_add(&s, ", %zu only in ACTUAL", c->only[1]);
+    sb_add(&s, ".");
+    for (st = 0; st < PT_NSTAGES; st++)
+        if (c->first_at[st] && (top < 0 || c->first_at[st] > c->first_at[top])) top = st;
+    if (top >= 0) {
+        size_t best = NMISTAKES;
+        sb_add(&s, " The stage that goes wrong first most often is %s (%zu of %zu)",
+               pt_stage_infos[top].name, c->first_at[top], c->differ);
+        for (st = 0; st < PT_NSTAGES; st++)
+            if (st != top && c->first_at[st])
+                sb_add(&s, "; %s first for %zu", pt_stage_infos[st].name, c->first_at[st]);
+        sb_add(&s, ".");
+        for (k = 0; k < NMISTAKES; k++)
+            if (mistakes[k].stage == top && c->mk_hits[k] &&
+                (best == NMISTAKES || c->mk_hits[k] > c->mk_hits[best])) best = k;
+        if (best < NMISTAKES) {
+            size_t hits = 0;
+            for (k = 0; k < NMISTAKES; k++)
+                if (!strcmp(mistakes[k].name, mistakes[best].name)) hits += c->mk_hits[k];
+            sb_add(&s, " Likely mistake there: %s, which reproduces ACTUAL for %zu of those %zu "
+                   "vertices.", mistakes[best].name, hits, c->first_at[top]);
+        } else {
+            sb_add(&s, " No known mistake reproduces ACTUAL there.");
+        }
+    }
+    if (hdr_differ) sb_add(&s, " The headers differ.");
+    if (pixels_compared && (nmiss || nextra)) {
+        sb_add(&s, " Lit pixels: %zu in EXPECTED, %zu in ACTUAL; %zu missing, %zu extra",
+               nlit[0], nlit[1], nmiss, nextra);
+        if (c->differ || c->only[0] || c->only[1]) sb_add(&s, " (consequences of the above).");
+        else if (rs->segs_differ) {
+            size_t best = NRASTER;
+            sb_add(&s, ": every vertex agrees, so the rasterizer differs, in %zu segment%s.",
+                   rs->segs_differ, rs->segs_differ > 1 ? "s" : "");
+            for (k = 0; k < NRASTER; k++)
+                if (rs->hits[k] && (best == NRASTER || rs->hits[k] > rs->hits[best])) best = k;
+            if (best < NRASTER)
+                sb_add(&s, " Likely mistake: %s in the rasterizer's rounding (pt_pix_round in "
+                       "s4), which reproduces ACTUAL's pixels for %zu of those %zu segments.",
+                       raster_mistakes[best].name, rs->hits[best], rs->segs_differ);
+            else
+                sb_add(&s, " No known mistake of its rounding reproduces them.");
+        } else {
+            sb_add(&s, ".");
+        }
+    } else if (pixels_compared) {
+        sb_add(&s, " Both light the same %zu pixels.", nlit[0]);
+    }
+    para("", s.b);
+    return EXIT_DIFFER;
+}
+
+/* Print the raster check's details for the first differing segment. */
+static void report_raster(const dctx *c, const rstat *rs)
+{
+    size_t k;
+
+    if (!rs->first_set) return;
+    printf("  every vertex agrees, so the rasterizer differs: %zu segment%s light%s other "
+           "pixels, the first %s s%" PRIu64 "\n", rs->segs_differ, rs->segs_differ > 1 ? "s" : "",
+           rs->segs_differ > 1 ? "" : "s", pt_names_get(&c->nm, rs->first_model), rs->first_seg);
+    if (!rs->ends_ok) {
+        printf("  (its endpoints cannot be read off EXPECTED's steps, so no mistake was "
+               "checked)\n");
+        return;
+    }
+    for (k = 0; k < NRASTER; k++) {
+        if (!rs->hits[k]) continue;
+        printf("  likely mistake: %s in the rasterizer's rounding\n", raster_mistakes[k].name);
+        printf("    %s\n", raster_mistakes[k].how);
+        printf("    check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
+               ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round "
+               "and ACTUAL's with it (%zu of %zu segments)\n", rs->ends[0], rs->ends[1],
+               rs->ends[2], rs->ends[3], rs->hits[k], rs->segs_differ);
+    }
+}
+
+static int trace_diff(dctx *c)
+{
+    size_t k, nmiss = 0, nextra = 0, nlit[2] = {0, 0};
+    int rc, hdr_differ, pixels_compared;
+    rstat rs;
+
+    memset(&rs, 0, sizeof rs);
+    rc = fill_table(c);
+    if (rc) return rc;
+    if (fill_translations(c) != 0) return -1;
+    c->mk_hits = calloc(NMISTAKES, sizeof *c->mk_hits);
+    if (!c->mk_hits) return -1;
+
+    print_intro(c);
+    hdr_differ = compare_headers(c);
+    for (k = 0; k < c->vt.n; k++) {
+        const vent *e = &c->vt.e[k];
+        int st, both[2] = {0, 0};
+        for (st = 0; st < PT_NSTAGES; st++) {
+            both[0] |= e->rec[0][st] != NONE;
+            both[1] |= e->rec[1][st] != NONE;
+        }
+        if (both[0] && both[1]) compare_vertex(c, e);
+    }
+    if (c->differ > c->shown) printf("... and %zu more vertices differ\n", c->differ - c->shown);
+    if (c->differ) printf("\n");
+    report_one_sided(c);
+    report_stage_only(c);
+
+    /* pixels: compared when both traces were rasterized with raster records */
+    pixels_compared = (c->t[0].npx || c->t[0].ncl) && (c->t[1].npx || c->t[1].ncl);
+    if (pixels_compared) {
+        if (compare_pixels(c, &nmiss, &nextra, nlit) != 0) return -1;
+        if ((nmiss || nextra) && !c->differ && !c->only[0] && !c->only[1] && c->t[0].hdr.have) {
+            if (check_raster(c, &rs) != 0) return -1;
+            report_raster(c, &rs);
+        }
+        if (nmiss || nextra) printf("\n");
+    } else if (c->t[0].npx + c->t[0].ncl + c->t[1].npx + c->t[1].ncl) {
+        printf("Not compared: lit pixels (only %s has raster records).\n\n",
+               c->t[0].npx + c->t[0].ncl ? "EXPECTED" : "ACTUAL");
+    }
+    return summarize(c, hdr_differ, nmiss, nextra, nlit, pixels_compared, &rs);
+}
+
+/* ===== the command ===== */
+
+int pt_cmd_diff(int argc, char **argv)
+{
+    dopts o;
+    char *buf[2] = {NULL, NULL};
+    size_t len[2];
+    pt_tkind kind[2];
+    char err[PT_ERRLEN];
+    dctx *c = NULL;
+    int rc, s;
+
+    rc = parse_args(&o, argc, argv);
+    if (rc >= 0) return rc;
+    for (s = 0; s < 2; s++) {
+        if (pt_tread_file(o.path[s], &buf[s], &len[s], err, sizeof err) != 0) {
+            fprintf(stderr, "%s\n", err);
+            free(buf[0]);
+            return EXIT_INPUT;
+        }
+        kind[s] = pt_tread_kind(buf[s], len[s]);
+    }
+    if ((kind[0] == PT_TK_PPM) != (kind[1] == PT_TK_PPM)) {
+        rc = usage_error("%s", "cannot compare an image with a trace");
+        goto done;
+    }
+    for (s = 0; s < 2; s++) {
+        if (kind[s] == PT_TK_CSV) {
+            fprintf(stderr, "%s:1:1: error: a CSV trace has no header and no raster records; "
+                    "write it with --format jsonl\n", o.path[s]);
+            rc = EXIT_INPUT;
+            goto done;
+        }
+    }
+    if (kind[0] == PT_TK_PPM) {
+        pt_ppm img[2];
+        for (s = 0; s < 2; s++) {
+            if (pt_ppm_parse(&img[s], o.path[s], buf[s], len[s], err, sizeof err) != 0) {
+                fprintf(stderr, "%s\n", err);
+                rc = EXIT_INPUT;
+                goto done;
+            }
+        }
+        rc = image_diff(&o, img);
+        goto done;
+    }
+    if (o.image_out) {
+        rc = usage_error("%s", "--image-out needs two PPM images");
+        goto done;
+    }
+    c = calloc(1, sizeof *c);
+    if (!c) { rc = -1; goto done; }
+    c->o = &o;
+    for (s = 0; s < 2; s++) {
+        if (pt_tread_parse(&c->t[s], o.path[s], buf[s], len[s], &c->nm, err, sizeof err) != 0) {
+            fprintf(stderr, "%s\n", err);
+            rc = EXIT_INPUT;
+            goto done;
+        }
+        free(buf[s]);                       /* the records hold all that is needed */
+        buf[s] = NULL;
+    }
+    rc = trace_diff(c);
+done:
+    if (rc < 0) {
+        fputs("pipetrace: out of memory\n", stderr);
+        rc = EXIT_INPUT;
+    }
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fputs("pipetrace: cannot write to standard output\n", stderr);
+        rc = EXIT_INPUT;
+    }
+    if (c) {
+        pt_tread_free(&c->t[0]);
+        pt_tread_free(&c->t[1]);
+        pt_names_free(&c->nm);
+        free(c->vt.e);
+        free(c->vt.slot);
+        free(c->tr);
+        free(c->has_tr);
+        free(c->mk_hits);
+        free(c);
+    }
+    free(buf[0]);
+    free(buf[1]);
+    return rc;
+}

@@ -1,0 +1,166 @@
+/*
+** stages/pt_mat4.c -- 4x4 matrices on homogeneous row vectors, and the camera's
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include <string.h>
+#include "pt_mat4.h"
+
+static const double PI = 3.14159265358979323846;
+
+pt_mat4 pt_mat4_identity(void)
+{
+    pt_mat4 r;
+    int i, j;
+
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) r.m[i][j] = i == j ? 1.0 : 0.0;
+    return r;
+}
+
+pt_mat4 pt_mat4_mul(const pt_mat4 *a, const pt_mat4 *b)
+{
+    pt_mat4 r;
+    int i, j;
+
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)             /* (a*b)_ij = sum_k a_ik b_kj */
+            r.m[i][j] = a->m[i][0] * b->m[0][j] + a->m[i][1] * b->m[1][j]
+                      + a->m[i][2] * b->m[2][j] + a->m[i][3] * b->m[3][j];
+    return r;
+}
+
+pt_vec4 pt_vec4_mul(pt_vec4 v, const pt_mat4 *m)
+{
+    pt_vec4 r;
+
+    r.x = v.x * m->m[0][0] + v.y * m->m[1][0] + v.z * m->m[2][0] + v.w * m->m[3][0];
+    r.y = v.x * m->m[0][1] + v.y * m->m[1][1] + v.z * m->m[2][1] + v.w * m->m[3][1];
+    r.z = v.x * m->m[0][2] + v.y * m->m[1][2] + v.z * m->m[2][2] + v.w * m->m[3][2];
+    r.w = v.x * m->m[0][3] + v.y * m->m[1][3] + v.z * m->m[2][3] + v.w * m->m[3][3];
+    return r;
+}
+
+pt_mat4 pt_mat4_translate(double x, double y, double z)
+{
+    pt_mat4 r = pt_mat4_identity();
+
+    r.m[3][0] = x; r.m[3][1] = y; r.m[3][2] = z;
+    return r;
+}
+
+pt_mat4 pt_mat4_scale(double x, double y, double z)
+{
+    pt_mat4 r = pt_mat4_identity();
+
+    r.m[0][0] = x; r.m[1][1] = y; r.m[2][2] = z;
+    return r;
+}
+
+/* sin and cos of an angle in degrees; exact at multiples of 90 degrees, where
+** sin(pi/180 * 90) would give 1 but cos 6.1e-17 instead of 0. */
+static void sincos_deg(double deg, double *s, double *c)
+{
+    double a = fmod(deg, 360.0);            /* exact */
+
+    if (a < 0) a += 360.0;
+    if (a == 0)        { *s = 0;  *c = 1;  return; }
+    if (a == 90)       { *s = 1;  *c = 0;  return; }
+    if (a == 180)      { *s = 0;  *c = -1; return; }
+    if (a == 270)      { *s = -1; *c = 0;  return; }
+    *s = sin(a * (PI / 180));
+    *c = cos(a * (PI / 180));
+}
+
+pt_mat4 pt_mat4_rotate(int axis, double degrees)
+{
+    pt_mat4 r = pt_mat4_identity();
+    int i = (axis + 1) % 3, j = (axis + 2) % 3;  /* the plane turned: i to j */
+    double s, c;
+
+    sincos_deg(degrees, &s, &c);
+    r.m[i][i] = c;  r.m[i][j] = s;          /* row vectors: e_i -> c e_i + s e_j */
+    r.m[j][i] = -s; r.m[j][j] = c;
+    return r;
+}
+
+const char *pt_cam_error_text(pt_cam_error e)
+{
+    switch (e) {
+    case PT_CAM_OK:          return "no error";
+    case PT_CAM_DIR_ZERO:    return "direction has length 0";
+    case PT_CAM_UP_ZERO:     return "up has length 0";
+    case PT_CAM_UP_PARALLEL: return "up is parallel to direction";
+    case PT_CAM_FOV:         return "field of view must lie strictly between 0 and 180 degrees";
+    case PT_CAM_ASPECT:      return "aspect ratio must be > 0";
+    case PT_CAM_NEAR:        return "near must be > 0";
+    case PT_CAM_FAR:         return "near must be < far";
+    }
+    return "unknown camera error";
+}
+
+static double dot(pt_vec3 a, pt_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+static pt_vec3 cross(pt_vec3 a, pt_vec3 b)
+{
+    pt_vec3 r;
+    r.x = a.y * b.z - a.z * b.y;
+    r.y = a.z * b.x - a.x * b.z;
+    r.z = a.x * b.y - a.y * b.x;
+    return r;
+}
+
+/* v / |v|, or 0 when |v| is 0 or not finite. */
+static int normalize(pt_vec3 *v)
+{
+    double len = sqrt(dot(*v, *v));         /* sqrt is correctly rounded */
+
+    if (!(len > 0) || !isfinite(len)) return 0;
+    v->x = v->x / len; v->y = v->y / len; v->z = v->z / len;
+    return 1;
+}
+
+pt_cam_error pt_lookat(pt_mat4 *view, pt_vec3 eye, pt_vec3 dir, pt_vec3 up,
+                       int raw, int *skewed)
+{
+    pt_vec3 d = dir, u = up, h;
+    pt_mat4 r = pt_mat4_identity();
+
+    if (!normalize(&d)) return PT_CAM_DIR_ZERO;
+    if (!normalize(&u)) return PT_CAM_UP_ZERO;
+    h = cross(u, d);                        /* horizontal = up x direction */
+    if (!normalize(&h) || sqrt(dot(cross(u, d), cross(u, d))) < 1e-12)
+        return PT_CAM_UP_PARALLEL;
+    *skewed = fabs(dot(u, d)) > 1e-12;
+    if (!raw) u = cross(d, h);              /* re-derived: exactly perpendicular */
+    r.m[0][0] = h.x; r.m[1][0] = h.y; r.m[2][0] = h.z;
+    r.m[0][1] = u.x; r.m[1][1] = u.y; r.m[2][1] = u.z;
+    r.m[0][2] = d.x; r.m[1][2] = d.y; r.m[2][2] = d.z;
+    r.m[3][0] = -dot(eye, h);               /* move the eye to the origin */
+    r.m[3][1] = -dot(eye, u);
+    r.m[3][2] = -dot(eye, d);
+    *view = r;
+    return PT_CAM_OK;
+}
+
+pt_cam_error pt_perspective(pt_mat4 *proj, double fov_deg, double aspect,
+                            double n, double f)
+{
+    pt_mat4 r;
+    double s, c, cot;
+
+    if (!(fov_deg > 0 && fov_deg < 180)) return PT_CAM_FOV;
+    if (!(aspect > 0) || !isfinite(aspect)) return PT_CAM_ASPECT;
+    if (!(n > 0)) return PT_CAM_NEAR;
+    if (!(n < f) || !isfinite(f)) return PT_CAM_FAR;
+    sincos_deg(fov_deg / 2, &s, &c);
+    cot = fov_deg == 90 ? 1.0 : c / s;      /* cot(fov/2); exact at 90 degrees */
+    memset(&r, 0, sizeof r);
+    r.m[0][0] = cot / aspect;               /* x' = x * cot(fov/2) / aspect */
+    r.m[1][1] = cot;                        /* y' = y * cot(fov/2) */
+    r.m[2][2] = f / (f - n);                /* z' = z * f/(f-n) ... */
+    r.m[3][2] = f * n / (n - f);            /*      - f*n/(f-n) */
+    r.m[2][3] = 1.0;                        /* w' = z */
+    *proj = r;
+    return PT_CAM_OK;
+}

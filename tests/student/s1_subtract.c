@@ -1,0 +1,42 @@
+/*
+** tests/student/s1_subtract.c -- s1 with a deliberate mistake: the translation subtracted
+** See LICENSE for copyright and license.
+**
+** A copy of stages/s1_model2camera.c with one mistake, marked MISTAKE below, for
+** tests/diff.sh and docs/teaching.md.  x_c = x_m - x_t moves
+** the model the wrong way: behind the camera when z_t < 0.
+** Build: make STAGE_camera=tests/student/s1_subtract.c
+*/
+#include <math.h>
+#include "s1_model2camera.h"
+
+/* Bits of c = m + t lost to cancellation: the larger operand's rounding error
+** (from reading decimal input) is what is left when the sum is much smaller. */
+static int sum_bits_lost(double m, double t, double c)
+{
+    return pt_bits_lost(fmax(fabs(m), fabs(t)), c);
+}
+
+pt_vec3 pt_model2camera(pt_vec3 m, pt_vec3 t, const pt_sink *sink)
+{
+    pt_vec3 c;
+    pt_vrec r = {0};
+    double v[3];
+    int lost;
+
+    c.x = m.x - t.x;                        /* MISTAKE: x_c = x_m - x_t */
+    c.y = m.y - t.y;                        /* MISTAKE: y_c = y_m - y_t */
+    c.z = m.z - t.z;                        /* MISTAKE: z_c = z_m - z_t */
+    r.stage = PT_STAGE_CAMERA;
+    r.x = v[0] = c.x; r.y = v[1] = c.y; r.z = v[2] = c.z;
+    r.warn = pt_warn_nonfinite(v, 3);
+    lost = sum_bits_lost(m.x, t.x, c.x);
+    lost = (int)fmax(lost, sum_bits_lost(m.y, t.y, c.y));
+    lost = (int)fmax(lost, sum_bits_lost(m.z, t.z, c.z));
+    if (lost > PT_BITS_LOST_WARN) {
+        r.warn |= PT_WARN_CANCEL;
+        r.digits_lost = pt_bits_to_digits(lost);
+    }
+    pt_emit(sink, &r);
+    return c;
+}

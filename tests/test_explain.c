@@ -1,0 +1,145 @@
+/*
+** tests/test_explain.c -- journeys and the formulas with their numbers put in
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include <string.h>
+#include "testhelp.h"
+#include "explain.h"
+
+/* The triangle of docs/examples/triangle.scene: 20 x 10, translate 0 0 -2. */
+static const pt_stage_params tri = {{0, 0, -2}, 1, 20, 10, 0, 0, 20, 10};
+
+static char b[PT_EXPLAINLEN];
+
+static const char *stage_text(const pt_journey *j, pt_stage st)
+{
+    pt_explain_stage(b, sizeof b, j, st, " | ");
+    return b;
+}
+
+static const char *next_text(const pt_journey *j, pt_stage st)
+{
+    pt_explain_next(b, sizeof b, j, st);
+    return b;
+}
+
+static void test_triangle(void)
+{
+    pt_journey j;
+
+    pt_journey_compute(&j, &tri, (pt_vec3){-1, -1, 0});
+    PT_CHECK("ex-1.1 model", !strcmp(stage_text(&j, PT_STAGE_MODEL), "x_m = -1 | y_m = -1 | z_m = 0"));
+    PT_CHECK("ex-1.2 camera: negative addend in parentheses",
+             !strcmp(stage_text(&j, PT_STAGE_CAMERA),
+                     "x_c = x_m + x_t = -1 + 0 = -1 | y_c = y_m + y_t = -1 + 0 = -1 | "
+                     "z_c = z_m + z_t = 0 + (-2) = -2"));
+    PT_CHECK("ex-1.3 image: -z_c spelled -(-2)",
+             !strcmp(stage_text(&j, PT_STAGE_IMAGE),
+                     "x_ip = x_c / -z_c = -1 / -(-2) = -0.5 | y_ip = y_c / -z_c = -1 / -(-2) = -0.5 | "
+                     "z_ip = -1 (the image plane)"));
+    PT_CHECK("ex-1.4 pixel: shortest round-trip numbers",
+             !strcmp(stage_text(&j, PT_STAGE_PIXEL),
+                     "x_pp = 0.5 + w/2.001 * (x_ip + 1) = 0.5 + 20/2.001 * (-0.5 + 1) = 5.497501249375313 | "
+                     "y_pp = 0.5 + h/2.001 * (y_ip + 1) = 0.5 + 10/2.001 * (-0.5 + 1) = 2.9987506246876565"));
+    PT_CHECK("ex-1.5 viewport",
+             !strcmp(stage_text(&j, PT_STAGE_VIEWPORT),
+                     "x_vp = round(x_pp) - 1 = round(5.497501249375313) - 1 = 5 - 1 = 4 | "
+                     "y_vp = h - round(y_pp) = 10 - round(2.9987506246876565) = 10 - 3 = 7"));
+    PT_CHECK("ex-1.6 framebuffer",
+             !strcmp(stage_text(&j, PT_STAGE_FRAMEBUFFER),
+                     "x_fb = x_ul + x_vp = 0 + 4 = 4 | y_fb = y_ul + y_vp = 0 + 7 = 7"));
+    PT_CHECK("ex-1.7 index", !strcmp(stage_text(&j, PT_STAGE_INDEX),
+                                     "idx = y_fb * W + x_fb = 7 * 20 + 4 = 144"));
+    pt_explain_values(b, sizeof b, &j, PT_STAGE_PIXEL);
+    PT_CHECK("ex-1.8 values", !strcmp(b, "(x_pp, y_pp) = (5.497501249375313, 2.9987506246876565)"));
+    pt_explain_values(b, sizeof b, &j, PT_STAGE_INDEX);
+    PT_CHECK("ex-1.9 index value", !strcmp(b, "idx = 144"));
+    PT_CHECK("ex-1.10 next after viewport: inside",
+             !strncmp(next_text(&j, PT_STAGE_VIEWPORT), "inside the viewport", 19));
+    PT_CHECK("ex-1.11 next after camera: in front",
+             !strncmp(next_text(&j, PT_STAGE_CAMERA), "in front of the camera (z_c < 0)", 32));
+}
+
+static void test_outside(void)
+{
+    /* docs/examples/clip.scene, vertex 1: orthographic, 8 x 4 at (2, 2) in 12 x 8 */
+    static const pt_stage_params clip = {{0, 0, 0}, 0, 8, 4, 2, 2, 12, 8};
+    pt_journey j;
+
+    pt_journey_compute(&j, &clip, (pt_vec3){-2, 0, 0});
+    PT_CHECK("ex-2.1 orthographic image",
+             !strcmp(stage_text(&j, PT_STAGE_IMAGE),
+                     "x_ip = x_c = -2 | y_ip = y_c = 0 | z_ip = 0 (orthographic)"));
+    PT_CHECK("ex-2.2 framebuffer: negative x_vp in parentheses",
+             !strncmp(stage_text(&j, PT_STAGE_FRAMEBUFFER), "x_fb = x_ul + x_vp = 2 + (-4) = -2", 34));
+    PT_CHECK("ex-2.3 index outside the framebuffer",
+             !strcmp(stage_text(&j, PT_STAGE_INDEX), "idx = y_fb * W + x_fb: none, (x_fb, y_fb) = "
+                     "(-2, 4) lies outside the 12 x 8 framebuffer"));
+    PT_CHECK("ex-2.4 next after viewport: clipped",
+             !strncmp(next_text(&j, PT_STAGE_VIEWPORT), "outside the viewport: its pixel is clipped", 42));
+    PT_CHECK("ex-2.5 next after index: no index",
+             !strncmp(next_text(&j, PT_STAGE_INDEX), "outside the framebuffer: no index", 33));
+    PT_CHECK("ex-2.6 next after image: outside the view rectangle",
+             strstr(next_text(&j, PT_STAGE_IMAGE), "outside the view rectangle") != NULL);
+    pt_explain_values(b, sizeof b, &j, PT_STAGE_INDEX);
+    PT_CHECK("ex-2.7 index value none", !strcmp(b, "idx = none"));
+}
+
+static void test_odd(void)
+{
+    pt_journey j;
+    size_t n;
+
+    pt_journey_compute(&j, &tri, (pt_vec3){1, 2, 4});          /* z_c = 2 > 0 */
+    PT_CHECK("ex-3.1 behind: flagged and explained",
+             !strncmp(next_text(&j, PT_STAGE_IMAGE), "behind the camera (z_c > 0): projected mirrored", 47));
+    pt_journey_compute(&j, &tri, (pt_vec3){1, 1, 2});          /* z_c = 0 */
+    PT_CHECK("ex-3.2 z_c = 0: division by zero", strstr(next_text(&j, PT_STAGE_CAMERA), "divides by zero") != NULL);
+    PT_CHECK("ex-3.3 ... so no integer pixel",
+             strstr(stage_text(&j, PT_STAGE_VIEWPORT), ") - 1: none, it is not finite") != NULL);
+    PT_CHECK("ex-3.4 ... and no framebuffer pixel",
+             strstr(stage_text(&j, PT_STAGE_FRAMEBUFFER), "x_fb = x_ul + x_vp: none") != NULL);
+    pt_journey_compute(&j, &tri, (pt_vec3){1e300, 0, 0});       /* x_pp ~ 1e301 */
+    PT_CHECK("ex-3.5 beyond 2^62", strstr(stage_text(&j, PT_STAGE_VIEWPORT), "beyond 2^62") != NULL);
+    PT_CHECK("ex-3.6 ... y still computed but unused",
+             strstr(b, "but the pixel has no value: x_pp has none") != NULL);
+
+    pt_journey_compute(&j, &tri, (pt_vec3){-1, -1, 0});
+    n = pt_explain_stage(b, 10, &j, PT_STAGE_PIXEL, "; ");
+    PT_CHECK("ex-4.1 cut short: full length returned, NUL-terminated",
+             n > 100 && strlen(b) == 9 && !strncmp(b, "x_pp = 0.", 9));
+    PT_CHECK("ex-4.2 stage past the classic ones: empty",
+             pt_explain_stage(b, sizeof b, &j, PT_NSTAGES, "; ") == 0 && b[0] == '\0');
+    PT_CHECK("ex-4.3 coordinate names", !strcmp(pt_coord_name(PT_STAGE_IMAGE, 2), "z_ip") &&
+             pt_coord_count(PT_STAGE_INDEX) == 1 && !strcmp(pt_coord_name(PT_STAGE_INDEX, 1), ""));
+}
+
+/* The journey is the pipeline's: pt_run's records match, bit for bit. */
+static void test_agrees(void)
+{
+    static const char *const scenes[] = {
+        "docs/examples/triangle.scene", "docs/examples/clip.scene",
+        "docs/examples/behind.scene", "docs/examples/two-models.scene",
+        "docs/examples/cube.scene", "docs/examples/ortho.scene",
+    };
+    size_t k;
+
+    for (k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
+        pt_scene s;
+        char err[PT_ERRLEN];
+        int ok = pt_scene_load(&s, scenes[k], err, sizeof err) == 0;
+
+        PT_CHECK(scenes[k], ok && pt_journey_agrees(&s) == 1);
+        if (ok) pt_scene_free(&s);
+    }
+}
+
+int main(void)
+{
+    test_triangle();
+    test_outside();
+    test_odd();
+    test_agrees();
+    return pt_test_report();
+}
