@@ -244,7 +244,7 @@ static void journey_f(const pt_scene *s, const pt_model *m, pt_vec3 v,
     float x_c, y_c, z_c, x_ip, y_ip, x_pp, y_pp;
     float k = choices & PT_ACC_TWO ? 2.0f : 2.001f;
     float w = (float)s->vp_w, h = (float)s->vp_h;
-    int64_t rx, ry;
+    int64_t rx = 0, ry = 0;
     int ok;
 
     x_c = x_m + to_float(m->translate.x);           /* x_c = x_m + x_t */
@@ -274,7 +274,7 @@ static void journey_d(const pt_scene *s, const pt_model *m, pt_vec3 v,
 {
     double x_c, y_c, z_c, x_ip, y_ip, x_pp, y_pp;
     double k = choices & PT_ACC_TWO ? 2.0 : 2.001;
-    int64_t rx, ry;
+    int64_t rx = 0, ry = 0;
     int ok;
 
     x_c = v.x + m->translate.x;                     /* x_c = x_m + x_t */
@@ -302,7 +302,7 @@ static void journey_dd(const pt_scene *s, const pt_model *m, pt_vec3 v,
 {
     const pt_dd one = {1.0, 0.0}, half = {0.5, 0.0};
     pt_dd x_c, y_c, z_c, x_ip, y_ip, x_pp, y_pp, w_k, h_k;
-    int64_t rx, ry;
+    int64_t rx = 0, ry = 0;
     int ok;
 
     j->m[0] = dd_plain(v.x); j->m[1] = dd_plain(v.y); j->m[2] = dd_plain(v.z);
@@ -387,8 +387,8 @@ static void dda_dot(const dda_out *o, int64_t ix, int64_t iy)
     if (pt_vp_inside(ix - 1, o->h - iy, o->w, o->h)) o->pixel(o->ud, ix - 1, o->h - iy);
 }
 
-/* Fill ln from the integer ends (already transposed and ordered); set the
-** band of steps that can be inside: [max(s0, 1), min(s1, w or h)]. */
+/* Fill ln from the integer ends e = (x0, y0, x1, y1), already transposed and
+** ordered; set the band of steps that can be inside: [max(s0, 1), min(s1, w or h)]. */
 static void dda_setup(dda_line *ln, int transposed, const int64_t e[4],
                       const dda_out *o, int64_t *first, int64_t *last)
 {
@@ -396,27 +396,33 @@ static void dda_setup(dda_line *ln, int transposed, const int64_t e[4],
 
     ln->transposed = transposed;
     ln->s0 = e[0]; ln->y0 = e[1];
-    ln->ds = e[2] - e[0]; ln->dy = e[3] - e[1];
+    ln->ds = e[2] - e[0]; ln->dy = e[3] - e[1];     /* |e| < 2^62: no overflow */
     *first = e[0] < 1 ? 1 : e[0];
     *last = e[2] < band ? e[2] : band;
 }
 
-/* Exchange the two ends (ordered), or x and y (transposed), of e[4] = x0 y0 x1 y1. */
-static void ends_swap(int64_t e[4], int transpose)
+static void swap64(int64_t *a, int64_t *b)
 {
-    int a = transpose ? 0 : 0, b = transpose ? 1 : 2;
-    int64_t t;
+    int64_t t = *a;
 
-    t = e[a]; e[a] = e[b]; e[b] = t;
-    a = transpose ? 2 : 1; b = transpose ? 3 : 3;
-    t = e[a]; e[a] = e[b]; e[b] = t;
+    *a = *b;
+    *b = t;
+}
+
+/* Step along y (swap x and y of both ends) when transposed, then order the
+** ends so that s increases.  The ends are integers, so comparing them is
+** exact in any arithmetic; only the transposition test is the arithmetic's. */
+static void dda_order(int64_t e[4], int transposed)
+{
+    if (transposed) { swap64(&e[0], &e[1]); swap64(&e[2], &e[3]); }
+    if (e[2] < e[0]) { swap64(&e[0], &e[2]); swap64(&e[1], &e[3]); }
 }
 
 static int raster_f(float px0, float py0, float px1, float py1, int recompute,
                     const dda_out *o)
 {
     int64_t e[4], s, first, last, r;
-    float x0, y0, x1, y1, m, acc, t;
+    float x0, y0, x1, y1, m, acc;
     dda_line ln;
     int tr;
 
@@ -424,24 +430,27 @@ static int raster_f(float px0, float py0, float px1, float py1, int recompute,
         !pix_round_f(px1, &e[2]) || !pix_round_f(py1, &e[3]))
         return -1;
     x0 = (float)e[0]; y0 = (float)e[1];             /* the rounded endpoints */
-    x1 = (float)e[2]; y1 = (float)e[3];
+    x1 = (float)e[2]; y1 = (float)e[3];             /* (exact: they were floats) */
     if (x0 == x1 && y0 == y1) { dda_dot(o, e[0], e[1]); return 0; }
     tr = fabsf(y1 - y0) > fabsf(x1 - x0);           /* |slope| > 1: step in y */
-    if (tr) { t = x0; x0 = y0; y0 = t; t = x1; x1 = y1; y1 = t; ends_swap(e, 1); }
-    if (x1 < x0) { t = x0; x0 = x1; x1 = t; t = y0; y0 = y1; y1 = t; ends_swap(e, 0); }
+    dda_order(e, tr);
+    x0 = (float)e[0]; y0 = (float)e[1];
+    x1 = (float)e[2]; y1 = (float)e[3];
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
     dda_setup(&ln, tr, e, o, &first, &last);
     if (first > last) return 0;
     if (recompute) {
         for (s = first; s <= last; s++) {
             float y = y0 + m * ((float)s - x0);     /* y = y0 + m*(x - x0) */
-            dda_step(o, &ln, s, pix_round_f(y, &r), r, (double)y);
+            int ok = pix_round_f(y, &r);
+            dda_step(o, &ln, s, ok, r, (double)y);
         }
         return 0;
     }
     acc = advance_f(y0, m, (uint64_t)(first - e[0]));
     for (s = first; s <= last; s++) {
-        dda_step(o, &ln, s, pix_round_f(acc, &r), r, (double)acc);
+        int ok = pix_round_f(acc, &r);
+        dda_step(o, &ln, s, ok, r, (double)acc);
         acc += m;                                   /* y += m */
     }
     return 0;
@@ -451,7 +460,7 @@ static int raster_d(double px0, double py0, double px1, double py1, int recomput
                     const dda_out *o)
 {
     int64_t e[4], s, first, last, r;
-    double x0, y0, x1, y1, m, acc, t;
+    double x0, y0, x1, y1, m, acc;
     dda_line ln;
     int tr;
 
@@ -459,28 +468,27 @@ static int raster_d(double px0, double py0, double px1, double py1, int recomput
         !pt_pix_round(px1, &e[2]) || !pt_pix_round(py1, &e[3]))
         return -1;
     x0 = (double)e[0]; y0 = (double)e[1];           /* the rounded endpoints */
-    x1 = (double)e[2]; y1 = (double)e[3];
+    x1 = (double)e[2]; y1 = (double)e[3];           /* (exact: they were doubles) */
     if (x0 == x1 && y0 == y1) { dda_dot(o, e[0], e[1]); return 0; }
     tr = fabs(y1 - y0) > fabs(x1 - x0);             /* |slope| > 1: step in y */
-    if (tr) { t = x0; x0 = y0; y0 = t; t = x1; x1 = y1; y1 = t; ends_swap(e, 1); }
-    if (x1 < x0) { t = x0; x0 = x1; x1 = t; t = y0; y0 = y1; y1 = t; ends_swap(e, 0); }
+    dda_order(e, tr);
+    x0 = (double)e[0]; y0 = (double)e[1];
+    x1 = (double)e[2]; y1 = (double)e[3];
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
     dda_setup(&ln, tr, e, o, &first, &last);
-    if ((int64_t)x0 != e[0]) {                      /* beyond 2^53: as raster.c */
-        first = (int64_t)x0 < 1 ? 1 : (int64_t)x0;
-        last = (int64_t)x1 < (tr ? o->h : o->w) ? (int64_t)x1 : (tr ? o->h : o->w);
-    }
     if (first > last) return 0;
     if (recompute) {
         for (s = first; s <= last; s++) {
             double y = y0 + m * ((double)s - x0);   /* y = y0 + m*(x - x0) */
-            dda_step(o, &ln, s, pt_pix_round(y, &r), r, y);
+            int ok = pt_pix_round(y, &r);
+            dda_step(o, &ln, s, ok, r, y);
         }
         return 0;
     }
-    acc = pt_raster_advance(y0, m, (uint64_t)(first - (int64_t)x0));
+    acc = pt_raster_advance(y0, m, (uint64_t)(first - e[0]));
     for (s = first; s <= last; s++) {
-        dda_step(o, &ln, s, pt_pix_round(acc, &r), r, acc);
+        int ok = pt_pix_round(acc, &r);
+        dda_step(o, &ln, s, ok, r, acc);
         acc += m;                                   /* y += m */
     }
     return 0;
@@ -499,12 +507,12 @@ static int raster_dd(pt_dd px0, pt_dd py0, pt_dd px1, pt_dd py1, const dda_out *
         return -1;
     if (e[0] == e[2] && e[1] == e[3]) { dda_dot(o, e[0], e[1]); return 0; }
     tr = i64_abs(e[3] - e[1]) > i64_abs(e[2] - e[0]);  /* |slope| > 1: step in y */
-    if (tr) ends_swap(e, 1);
-    if (e[2] < e[0]) ends_swap(e, 0);
+    dda_order(e, tr);
     dda_setup(&ln, tr, e, o, &first, &last);
     for (s = first; s <= last; s++) {
         pt_dd y = line_y(&ln, s);                   /* y = y0 + (s - s0) * dy/dx */
-        dda_step(o, &ln, s, pt_dd_pix_round(y, &r), r, y.hi);
+        int ok = pt_dd_pix_round(y, &r);
+        dda_step(o, &ln, s, ok, r, y.hi);
     }
     return 0;
 }
@@ -516,8 +524,8 @@ static int raster_one(pt_arith a, unsigned choices, const pt_dd p0[2],
 
     switch (a) {
     case PT_ARITH_FLOAT:
-        return raster_f((float)p0[0].hi, (float)p0[1].hi, (float)p1[0].hi,
-                        (float)p1[1].hi, re, o);
+        return raster_f(to_float(p0[0].hi), to_float(p0[1].hi), to_float(p1[0].hi),
+                        to_float(p1[1].hi), re, o);
     case PT_ARITH_DOUBLE:
         return raster_d(p0[0].hi, p0[1].hi, p1[0].hi, p1[1].hi, re, o);
     default:
@@ -535,10 +543,6 @@ int pt_acc_raster_segment(pt_arith a, unsigned choices, pt_dd x0, pt_dd y0,
 
     o.pixel = pixel; o.step = NULL; o.ud = ud; o.w = w; o.h = h;
     p0[0] = x0; p0[1] = y0; p1[0] = x1; p1[1] = y1;
-    if (a == PT_ARITH_FLOAT) {                      /* the float DDA reads floats */
-        p0[0].hi = (double)to_float(x0.hi); p0[1].hi = (double)to_float(y0.hi);
-        p1[0].hi = (double)to_float(x1.hi); p1[1].hi = (double)to_float(y1.hi);
-    }
     return raster_one(a, a == PT_ARITH_DD ? 0 : choices, p0, p1, &o);
 }
 
@@ -589,13 +593,13 @@ static void collect_pixel(void *ud, int64_t x_vp, int64_t y_vp)
     c->n++;
 }
 
-static void err_add(pt_acc_err *e, double v, double ref);
+static double err_add(pt_acc_err *e, double v, double ref);
 
 static void collect_step(void *ud, const dda_line *ln, int64_t s, double y)
 {
     collect *c = ud;
 
-    err_add(c->line, y, line_y(ln, s).hi);
+    (void)err_add(c->line, y, line_y(ln, s).hi);
 }
 
 static int by_idx_then_seq(const void *pa, const void *pb)
@@ -691,14 +695,14 @@ double pt_acc_vertex_pass(pt_acc_run *r)
 }
 
 /* The timed rasterizer's pixel sink: a count and a checksum. */
-typedef struct tally { uint64_t n; int64_t sum; } tally;
+typedef struct tally { uint64_t n, sum; } tally;
 
 static void tally_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
     tally *t = ud;
 
     t->n++;
-    t->sum += x_vp ^ y_vp;
+    t->sum += (uint64_t)(x_vp ^ y_vp);
 }
 
 double pt_acc_raster_pass(const pt_acc_run *r, uint64_t *pixels)
@@ -727,8 +731,9 @@ static double ulp_of(double r)
     return ldexp(1.0, ilogb(r) - 52);
 }
 
-/* Count |v - ref|: 0 for the same non-finite value, infinite for another. */
-static void err_add(pt_acc_err *e, double v, double ref)
+/* Count and return |v - ref|: 0 for the same non-finite value, infinite for
+** another. */
+static double err_add(pt_acc_err *e, double v, double ref)
 {
     double d, u;
 
@@ -740,19 +745,16 @@ static void err_add(pt_acc_err *e, double v, double ref)
     e->sum_abs += d;
     if (d > e->max_abs) e->max_abs = d;
     if (u > e->max_ulp) e->max_ulp = u;
+    return d;
 }
 
 /* Real coordinates: returns 1 when any differs from the reference double. */
 static int real_err(pt_acc_err *e, const pt_dd *v, const pt_dd *ref, int n)
 {
     int k, differ = 0;
-    double before;
 
-    for (k = 0; k < n; k++) {
-        before = e->sum_abs;
-        err_add(e, v[k].hi, ref[k].hi);
-        if (e->sum_abs != before || (isnan(v[k].hi) != isnan(ref[k].hi))) differ = 1;
-    }
+    for (k = 0; k < n; k++)
+        if (err_add(e, v[k].hi, ref[k].hi) != 0.0) differ = 1;
     return differ;
 }
 

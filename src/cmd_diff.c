@@ -795,17 +795,17 @@ static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
     return 1;
 }
 
-/* Print the values of stage st in *v: "x_pp = 1.5, y_pp = 2". */
-static void print_sval(int st, const sval *v)
+/* Append the values of stage st in *v to sb: "x_pp = 1.5, y_pp = 2". */
+static void sval_str(sbuf *sb, int st, const sval *v)
 {
     char b[PT_NUMLEN];
     int k;
 
     for (k = 0; k < ncoord(st); k++) {
-        printf("%s%s = ", k ? ", " : "", coord_name[st][k]);
-        if (is_real(st)) printf("%s", num(v->d[k], b));
-        else if (v->null) printf("none");
-        else printf("%" PRId64, v->n[k]);
+        sb_add(sb, "%s%s = ", k ? ", " : "", coord_name[st][k]);
+        if (is_real(st)) sb_add(sb, "%s", num(v->d[k], b));
+        else if (v->null) sb_add(sb, "none");
+        else sb_add(sb, "%" PRId64, v->n[k]);
     }
 }
 
@@ -820,6 +820,7 @@ static void explain(dctx *c, const vent *e, int st, int print)
     size_t k;
     const pt_tvrec *act = &c->t[1].vx[e->rec[1][st]];
     const char *last = NULL;
+    sbuf sb;
 
     memset(&h, 0, sizeof h);
     if (!hctx_of(c, e->model, &h) || !prev_value(c, e, st, &h, &in, in_slack, &from)) {
@@ -841,13 +842,16 @@ static void explain(dctx *c, const vent *e, int st, int print)
         c->mk_hits[k]++;
         if (!print) continue;
         printf("    likely mistake: %s\n", mk->name);
-        printf("      %s\n", mk->how);
-        printf("      check: %s recomputed with it from EXPECTED's %s (", pt_stage_infos[st].name,
-               pt_stage_infos[from].name);
-        print_sval(from, &in);
-        printf(") gives ");
-        print_sval(st, &out);
-        printf(", as in ACTUAL%s\n", c->t[0].prec >= 0 ? " (within the printed digits)" : "");
+        para("      ", mk->how);
+        memset(&sb, 0, sizeof sb);
+        sb_add(&sb, "check: the %s stage recomputed with it from EXPECTED's %s record (",
+               pt_stage_infos[st].name, pt_stage_infos[from].name);
+        sval_str(&sb, from, &in);
+        sb_add(&sb, ") gives ");
+        sval_str(&sb, st, &out);
+        sb_add(&sb, ", as ACTUAL has%s.", c->t[0].prec >= 0 || c->t[1].prec >= 0 ?
+               " (within the printed digits)" : "");
+        para("      ", sb.b);
     }
     if (!found) {
         c->unexplained[st]++;
@@ -1155,25 +1159,29 @@ static int check_raster(dctx *c, rstat *rs)
     return rc;
 }
 
-/* Compare the sets of lit pixels; print missing and extra ones.  *nmiss and
-** *nextra get the counts. */
-static int compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t *nlit)
+/* Compare the sets of lit pixels: count the missing and extra ones into
+** *nmiss and *nextra, and list a few of each.  nlit[s]: distinct pixels of
+** side s. */
+static int compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2])
 {
     pkey *p[2];
-    size_t n[2], a = 0, b = 0, shown[2] = {0, 0};
+    size_t n[2], count[2] = {0, 0};
     int pass;
 
-    *nmiss = *nextra = 0;
     p[0] = sorted_pixels(&c->t[0], &n[0]);
     p[1] = sorted_pixels(&c->t[1], &n[1]);
     if (!p[0] || !p[1]) { free(p[0]); free(p[1]); return -1; }
     nlit[0] = n[0];
     nlit[1] = n[1];
-    for (pass = 0; pass < 2; pass++) {      /* count, then list */
-        a = b = 0;
-        while (a < n[0] || b < n[1]) {
-            int cmp = a >= n[0] ? 1 : b >= n[1] ? -1 : 0;
-            int side;
+    /* pass 0 counts; pass 1 lists the missing, pass 2 the extra ones */
+    for (pass = 0; pass < 3; pass++) {
+        size_t a = 0, b = 0, shown = 0;
+        int want = pass - 1;                /* the side listed: 0 missing, 1 extra */
+        if (pass && !count[want]) continue;
+        if (pass == 1) printf("Lit pixels: %zu in EXPECTED, %zu in ACTUAL.\n", n[0], n[1]);
+        if (pass) printf("  %s in ACTUAL: %zu\n", want ? "extra" : "missing", count[want]);
+        while ((a < n[0] || b < n[1]) && (pass == 0 || shown < c->o->show)) {
+            int side, cmp = a >= n[0] ? 1 : b >= n[1] ? -1 : 0;
             const pkey *q;
             if (!cmp) {
                 pkey x = p[0][a], y = p[1][b];
@@ -1183,22 +1191,19 @@ static int compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t *nlit)
             if (!cmp) { a++; b++; continue; }
             side = cmp < 0 ? 0 : 1;
             q = side ? &p[1][b++] : &p[0][a++];
-            if (pass == 0) { if (side) ++*nextra; else ++*nmiss; continue; }
-            if (shown[side] < c->o->show) {
+            if (pass == 0) { count[side]++; continue; }
+            if (side == want) {
                 const pt_tpix *x = &c->t[side].px[q->k];
-                if (!shown[side]) printf("  %s: %zu pixel%s\n", side ? "extra in ACTUAL" :
-                                         "missing in ACTUAL", side ? *nextra : *nmiss,
-                                         (side ? *nextra : *nmiss) > 1 ? "s" : "");
                 printf("    (x_fb, y_fb) = (%" PRId64 ", %" PRId64 "), idx %" PRId64
-                       "   %s s%" PRIu64 "\n", x->x, x->y, x->i,
+                       ", from %s s%" PRIu64 "\n", x->x, x->y, x->i,
                        pt_names_get(&c->nm, x->model), x->seg);
-                shown[side]++;
-                if (shown[side] == c->o->show && (side ? *nextra : *nmiss) > c->o->show)
-                    printf("    ... and %zu more\n", (side ? *nextra : *nmiss) - c->o->show);
+                shown++;
             }
         }
-        if (pass == 0 && !*nmiss && !*nextra) break;
+        if (pass && count[want] > shown) printf("    ... and %zu more\n", count[want] - shown);
     }
+    *nmiss = count[0];
+    *nextra = count[1];
     free(p[0]);
     free(p[1]);
     return 0;
@@ -1262,6 +1267,7 @@ static const char *format_name(const pt_tread *t)
 static void print_intro(const dctx *c)
 {
     char b1[PT_NUMLEN], b2[PT_NUMLEN];
+    sbuf sb;
     int s;
 
     for (s = 0; s < 2; s++) {
@@ -1270,18 +1276,21 @@ static void print_intro(const dctx *c)
         if (t->prec >= 0) printf(", %d decimals", t->prec);
         printf(": %zu vertex, %zu pixel records)\n", t->nvx, t->npx);
     }
-    printf("Integers must be equal; doubles a, b agree when |a - b| <= max(%s, %s * max(|a|, |b|))",
-           num(c->o->tol, b1), num(c->o->rel, b2));
+    memset(&sb, 0, sizeof sb);
+    sb_add(&sb, "Integers must be equal; doubles a, b agree when |a - b| <= max(%s, %s * "
+           "max(|a|, |b|))", num(c->o->tol, b1), num(c->o->rel, b2));
     if (c->t[0].prec >= 0 || c->t[1].prec >= 0) {
-        printf(",\nplus half a unit in the last printed digit of a text trace (");
+        sb_add(&sb, ", plus half a unit in the last printed digit of a text trace (");
         for (s = 0; s < 2; s++) {
             if (c->t[s].prec < 0) continue;
-            printf("%s%s: %s", s && c->t[0].prec >= 0 ? ", " : "", side_name[s],
+            sb_add(&sb, "%s%s: %s", s && c->t[0].prec >= 0 ? ", " : "", side_name[s],
                    num(0.5 * pow(10.0, -c->t[s].prec), b1));
         }
-        printf(")");
+        sb_add(&sb, ")");
     }
-    printf(".\n\n");
+    sb_add(&sb, ".");
+    para("", sb.b);
+    printf("\n");
 }
 
 /* Fill the vertex table from both sides.  Returns 0, 2 on a duplicate record

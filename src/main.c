@@ -24,7 +24,7 @@
 static const char usage[] =
 "usage: pipetrace [SCENE] [options]\n"
 "       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL]\n"
-"       pipetrace step [SCENE] --vertex N [--model NAME] [--all]\n"
+"       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all]\n"
 "       pipetrace why [SCENE] X_FB Y_FB\n"
 "       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"

@@ -29,6 +29,8 @@ static const char *const pieces[] = {
     "\xef\xbb\xbf", "\t", "model", "model x", "v 1 2 3", "l 1 -1", "f 1/2/3 2//1 3",
     "viewport 0 0 1 1", "framebuffer 1 1", "camera orthographic", "obj", "/", "\0",
     "16385", "-2147483648", "4294967297", "v 1e300 -1e300 0\nl -1 -2", "l 1 2",
+    "camera lookat 0 0 0 0 0 1 0 1 0\nprojection perspective 90 auto 1 9",
+    "world rotate y 30", "world scale 0", "projection", "lookat", "auto",
 };
 
 /* One random edit of buf[0..*len): insert, delete or replace a few bytes. */
@@ -86,6 +88,7 @@ int main(void)
     static const char *const files[] = {
         "docs/examples/triangle.scene", "docs/examples/two-models.scene",
         "docs/examples/clip.scene", "docs/examples/behind.scene",
+        "docs/examples/lookat-near.scene", "docs/examples/lookat-world.scene",
     };
     static char base[8192], buf[16384];
     size_t f;

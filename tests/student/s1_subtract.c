@@ -1,5 +1,5 @@
 /*
-** tests/student/s1_subtract.c -- s1 with a deliberate mistake: the translation subtracted
+** tests/student/s1_subtract.c -- s1, one mistake: the translation subtracted
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s1_model2camera.c with one mistake, marked MISTAKE below, for

@@ -1,5 +1,5 @@
 /*
-** tests/student/s2_divz.c -- s2 with a deliberate mistake: division by z_c instead of -z_c
+** tests/student/s2_divz.c -- s2, one mistake: divides by z_c, not -z_c
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s2_camera2image.c with one mistake, marked MISTAKE below, for

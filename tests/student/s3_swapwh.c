@@ -1,5 +1,5 @@
 /*
-** tests/student/s3_swapwh.c -- s3 with a deliberate mistake: w and h swapped
+** tests/student/s3_swapwh.c -- s3, one mistake: w and h swapped
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s3_image2pixel.c with one mistake, marked MISTAKE below, for

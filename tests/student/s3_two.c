@@ -1,5 +1,5 @@
 /*
-** tests/student/s3_two.c -- s3 with a deliberate mistake: 2 instead of 2.001
+** tests/student/s3_two.c -- s3, one mistake: 2 instead of 2.001
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s3_image2pixel.c with one mistake, marked MISTAKE below, for

@@ -1,5 +1,5 @@
 /*
-** tests/student/s4_cround.c -- s4 with a deliberate mistake: C round() instead of Java's Math.round
+** tests/student/s4_cround.c -- s4, one mistake: C's round() for Math.round
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s4_pixel2viewport.c with one mistake, marked MISTAKE below, for
@@ -11,21 +11,10 @@
 #include <math.h>
 #include "s4_pixel2viewport.h"
 
-/*
-** Why x - floor(x) is exact.  For x >= 1, floor(x) <= x < 2 floor(x), so the
-** difference is exact (Sterbenz).  For 0 <= x < 1, floor(x) = 0.  For -1 < x < 0,
-** floor(x) = -1: if x <= -0.5 then 1 + x is exact (Sterbenz again); if x > -0.5
-** the true difference exceeds 0.5 and rounding cannot take it below 0.5, so the
-** comparison is still right.  For x <= -1 the difference is a multiple of ulp(x)
-** smaller than 1, which fits in 53 bits.  For |x| >= 2^52, x is an integer.
-*/
 double pt_java_round(double x)
 {
-    double r;
-
     if (isnan(x)) return 0.0;               /* Java: Math.round(NaN) = 0 */
     if (isinf(x)) return x;
-    (void)r;
     return round(x);                        /* MISTAKE: ties away from zero */
 }
 

@@ -1,5 +1,5 @@
 /*
-** tests/student/s4_noflip.c -- s4 with a deliberate mistake: the y flip missing
+** tests/student/s4_noflip.c -- s4, one mistake: no y flip
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s4_pixel2viewport.c with one mistake, marked MISTAKE below, for

@@ -1,5 +1,5 @@
 /*
-** tests/student/s4_nominus1.c -- s4 with a deliberate mistake: the -1 in x_vp missing
+** tests/student/s4_nominus1.c -- s4, one mistake: no -1 in x_vp
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s4_pixel2viewport.c with one mistake, marked MISTAKE below, for

@@ -1,5 +1,5 @@
 /*
-** tests/student/s6_vpw.c -- s6 with a deliberate mistake: the viewport width instead of W
+** tests/student/s6_vpw.c -- s6, one mistake: the viewport's width for W
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s6_fb2index.c with one mistake, marked MISTAKE below, for

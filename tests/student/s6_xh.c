@@ -1,5 +1,5 @@
 /*
-** tests/student/s6_xh.c -- s6 with a deliberate mistake: x * H + y instead of y * W + x
+** tests/student/s6_xh.c -- s6, one mistake: x * H + y for y * W + x
 ** See LICENSE for copyright and license.
 **
 ** A copy of stages/s6_fb2index.c with one mistake, marked MISTAKE below, for
