@@ -45,16 +45,17 @@ endif
 # camera's own (it shares s5 and s6), then the driver.
 STAGES_O = $B/pt_stage.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/s3_image2pixel.o $B/s4_pixel2viewport.o $B/s5_viewport2fb.o \
-           $B/s6_fb2index.o \
+           $B/s6_fb2index.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
            $B/m7_screen2viewport.o
 SRC_O    = $B/scene.o $B/pipeline.o $B/matrix.o $B/clip.o $B/raster.o $B/fb.o $B/numfmt.o \
-           $B/trace.o $B/outfile.o $B/builtin.o $B/explain.o $B/tread.o
+           $B/trace.o $B/outfile.o $B/builtin.o $B/explain.o $B/tread.o $B/accuracy.o
 # The subcommands, one file each.
-CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o
+CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
-           $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain
+           $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
+           $B/test_accuracy
 
 all: $B/pipetrace
 

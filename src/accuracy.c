@@ -143,7 +143,7 @@ int pt_dd_pix_round(pt_dd x, int64_t *out)
     int64_t n;
 
     *out = 0;
-    if (!isfinite(x.hi) || fabs(x.hi) >= PT_PIX_LIMIT) return 0;
+    if (!isfinite(x.hi) || fabs(x.hi) > PT_PIX_LIMIT) return 0;   /* n then too */
     if (fabs(x.hi) >= 0x1p52) {
         n = (int64_t)x.hi + (int64_t)pt_java_round(x.lo);
         if (n >= (int64_t)PT_PIX_LIMIT || n <= -(int64_t)PT_PIX_LIMIT) return 0;
@@ -185,6 +185,7 @@ static int pix_round_f(float x, int64_t *out)
 ** holds word for word with 24 bits for 53. */
 static float advance_f(float y, float m, uint64_t k)
 {
+    if (m == 0.0f) return k ? y + m : y;            /* y + 0 is y (or +0 for -0) */
     while (k > 0) {
         float y1, y2, d, lo, room;
         int e1, e2;
@@ -485,7 +486,8 @@ static int raster_d(double px0, double py0, double px1, double py1, int recomput
         }
         return 0;
     }
-    acc = pt_raster_advance(y0, m, (uint64_t)(first - e[0]));
+    acc = m == 0.0 ? y0                             /* (pt_raster_advance() steps */
+        : pt_raster_advance(y0, m, (uint64_t)(first - e[0]));  /* y = 0, m = 0 one by one) */
     for (s = first; s <= last; s++) {
         int ok = pt_pix_round(acc, &r);
         dda_step(o, &ln, s, ok, r, acc);
@@ -772,13 +774,15 @@ static int pix_err(pt_acc_err *e, pt_pix v, pt_pix ref)
     return 1;
 }
 
-/* Pixels whose final color differs between two images (sorted by idx). */
-static uint64_t image_diff(const pt_acc_run *a, const pt_acc_run *b)
+/* Pixels whose final color differs between two images (sorted by idx); in
+** *either, the pixels lit in either image. */
+static uint64_t image_diff(const pt_acc_run *a, const pt_acc_run *b, uint64_t *either)
 {
     size_t i = 0, k = 0;
     uint64_t n = 0;
 
-    while (i < a->nimg || k < b->nimg) {
+    *either = 0;
+    for (; i < a->nimg || k < b->nimg; (*either)++) {
         if (k == b->nimg || (i < a->nimg && a->img[i].idx < b->img[k].idx)) { n++; i++; }
         else if (i == a->nimg || b->img[k].idx < a->img[i].idx) { n++; k++; }
         else { n += a->img[i].rgb != b->img[k].rgb; i++; k++; }
@@ -819,6 +823,5 @@ void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_
         }
     e[PT_ACC_RASTER] = r->line;
     e[PT_ACC_RASTER].real = 1;
-    e[PT_ACC_RASTER].differ = image_diff(ref, r);
-    e[PT_ACC_RASTER].of = ref->nimg;
+    e[PT_ACC_RASTER].differ = image_diff(ref, r, &e[PT_ACC_RASTER].of);
 }

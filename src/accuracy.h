@@ -110,7 +110,7 @@ typedef struct pt_acc_err {
     uint64_t n;                  /* values compared (0: no error to show) */
     int real;                    /* 1: real values (max_ulp means something) */
     uint64_t differ;             /* vertices (raster: pixels) unlike the reference */
-    uint64_t of;                 /* used vertices (raster: reference image pixels) */
+    uint64_t of;                 /* used vertices (raster: pixels lit in either image) */
     uint64_t left, entered;      /* viewport: inside -> outside, outside -> inside */
 } pt_acc_err;
 

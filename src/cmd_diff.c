@@ -400,16 +400,22 @@ static double slack(const dctx *c, int s, double x)
     return half * (1 + 1e-9) + ax * 0x1p-52;
 }
 
-/* 1 when a (EXPECTED) and b (ACTUAL) agree.  Non-finite values agree only with
-** themselves (nan with nan). */
-static int same_real(const dctx *c, double a, double b)
+/* 1 when x and y agree within the tolerance plus `extra`.  Non-finite values
+** agree only with themselves (nan with nan). */
+static int near(const dctx *c, double x, double y, double extra)
 {
     double allow;
 
-    if (isnan(a) || isnan(b)) return isnan(a) && isnan(b);
-    if (isinf(a) || isinf(b)) return a == b;
-    allow = fmax(c->o->tol, c->o->rel * fmax(fabs(a), fabs(b)));
-    return fabs(b - a) <= allow + slack(c, 0, a) + slack(c, 1, b);
+    if (isnan(x) || isnan(y)) return isnan(x) && isnan(y);
+    if (isinf(x) || isinf(y)) return x == y;
+    allow = fmax(c->o->tol, c->o->rel * fmax(fabs(x), fabs(y)));
+    return fabs(y - x) <= allow + extra;
+}
+
+/* 1 when a (EXPECTED) and b (ACTUAL) agree. */
+static int same_real(const dctx *c, double a, double b)
+{
+    return near(c, a, b, slack(c, 0, a) + slack(c, 1, b));
 }
 
 static int is_real(int st) { return st <= PT_STAGE_PIXEL; }
@@ -618,6 +624,44 @@ static void mk_vpw(const hctx *h, const sval *in, sval *out)
     index_with(h, 1, h->w, in, out);
 }
 
+/* The right formula of stage st, as stages/ computes it. */
+static void correct(int st, const hctx *h, const sval *in, sval *out)
+{
+    int k;
+
+    switch (st) {
+    case PT_STAGE_CAMERA:
+        for (k = 0; k < 3; k++) out->d[k] = in->d[k] + h->t[k];
+        break;
+    case PT_STAGE_IMAGE:
+        if (h->perspective) {
+            out->d[0] = in->d[0] / -in->d[2];
+            out->d[1] = in->d[1] / -in->d[2];
+            out->d[2] = -1.0;
+        } else {
+            out->d[0] = in->d[0];
+            out->d[1] = in->d[1];
+            out->d[2] = 0.0;
+        }
+        break;
+    case PT_STAGE_PIXEL:
+        out->d[0] = 0.5 + h->w / 2.001 * (in->d[0] + 1);
+        out->d[1] = 0.5 + h->h / 2.001 * (in->d[1] + 1);
+        break;
+    case PT_STAGE_VIEWPORT:
+        viewport_with(java_round, -1, -1, h->h, in, out);
+        break;
+    case PT_STAGE_FRAMEBUFFER:
+        out->null = in->null;
+        out->n[0] = in->null ? 0 : h->x_ul + in->n[0];
+        out->n[1] = in->null ? 0 : h->y_ul + in->n[1];
+        break;
+    default:
+        index_with(h, 1, h->W, in, out);
+        break;
+    }
+}
+
 /* A known mistake: made in `stage`, its formula written out in apply. */
 typedef struct mistake {
     int stage;                   /* pt_stage it is made in */
@@ -669,10 +713,12 @@ static const struct {
     rnd_fn rnd;
 } raster_mistakes[] = {
     {"floor(x + 0.5) instead of Java's Math.round",
-     "the DDA's running y can be 0.49999999999999994, which floor(y + 0.5) takes "
-     "to 1 and Math.round to 0", floor_half},
+     "in the rasterizer's rounding (pt_pix_round in s4): the DDA's running y can "
+     "be 0.49999999999999994, which floor(y + 0.5) takes to 1 and Math.round to 0",
+     floor_half},
     {"C round() instead of Java's Math.round",
-     "round() takes ties away from zero", c_round},
+     "in the rasterizer's rounding (pt_pix_round in s4): round() takes ties away "
+     "from zero", c_round},
 };
 
 #define NRASTER (sizeof raster_mistakes / sizeof raster_mistakes[0])
@@ -702,31 +748,34 @@ static void range_add(vrange *r, int real, const sval *o, int k)
     }
 }
 
-/* 1 when mistake mk, applied to in (each real input anywhere within
-** in_slack[k] of its value), reproduces ACTUAL's record act of stage st;
-** *at_in gets the result for in itself, to show. */
-static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sval *in,
-                      const double in_slack[3], int in_real, int st,
-                      const pt_tvrec *act, sval *at_in)
+/* Where to try an input x known to within +-s: x itself, both ends, and each
+** tie k + 0.5 in between with its neighbouring doubles, where roundings change
+** their minds (floor(x + 0.5) at 0.49999999999999994).  Returns the count. */
+static int samples(double x, double s, double out[16])
 {
-    vrange r[3];
-    int vary[3], nvary = 0, npts = 1, p, k, real = is_real(st);
+    double t;
+    int n = 0;
 
-    memset(r, 0, sizeof r);
-    for (k = 0; k < 3; k++)
-        if (in_real && k < 3 && in_slack[k] > 0) { vary[nvary++] = k; npts *= 3; }
-    for (p = 0; p < npts; p++) {            /* every corner and mid-point of the box */
-        sval x = *in, out;
-        int q = p, j;
-        for (j = 0; j < nvary; j++, q /= 3)
-            x.d[vary[j]] += (q % 3 - 1) * in_slack[vary[j]];
-        memset(&out, 0, sizeof out);
-        mk->apply(h, &x, &out);
-        if (p == (npts - 1) / 2) *at_in = out;   /* all offsets 0: the middle */
-        for (k = 0; k < ncoord(st); k++) range_add(&r[k], real, &out, k);
+    out[n++] = x;
+    if (!(s > 0) || !isfinite(x)) return n;
+    out[n++] = x - s;
+    out[n++] = x + s;
+    for (t = floor(x - s) + 0.5; t <= x + s && n + 3 <= 16; t += 1) {
+        if (t < x - s) continue;
+        out[n++] = t;
+        out[n++] = nextafter(t, -HUGE_VAL);
+        out[n++] = nextafter(t, HUGE_VAL);
     }
+    return n;
+}
+
+/* 1 when the ranges r[] of the mistake's results hold ACTUAL's record act. */
+static int in_ranges(const dctx *c, const vrange r[3], int st, const pt_tvrec *act)
+{
+    int k;
+
     for (k = 0; k < ncoord(st); k++) {
-        if (real) {
+        if (is_real(st)) {
             double a = act->u.d[k], allow;
             if (isnan(a)) { if (!r[k].nan) return 0; continue; }
             if (isinf(a)) { if (!(a > 0 ? r[k].pinf : r[k].ninf)) return 0; continue; }
@@ -741,6 +790,63 @@ static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sva
         }
     }
     return 1;
+}
+
+/* 1 when mistake mk reproduces ACTUAL's record act of stage st from the input
+** in: EXPECTED's previous stage; *at_in gets the mistake's result for in, to
+** show.  When in came from a text trace, each real input may be anywhere
+** within in_slack[k] of its value, and the mistake's results over that box
+** must hold act:
+**   - a real-valued stage: the box's corners and mid-points bound them (each
+**     formula is monotone in each input, the sign of z_c aside);
+**   - the viewport stage, whose x and y each depend on x_pp or y_pp alone:
+**     the samples() of each, keeping only inputs that the right formula takes
+**     to EXPECTED's own record exp (a tie printed "-2.500000" stays a tie).
+** An integer input (framebuffer -> index) is exact. */
+static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sval *in,
+                      const double in_slack[3], int in_real, int st,
+                      const pt_tvrec *exp, const pt_tvrec *act, sval *at_in)
+{
+    vrange r[3];
+    sval x, out, right;
+    int k, p;
+
+    memset(r, 0, sizeof r);
+    memset(at_in, 0, sizeof *at_in);
+    mk->apply(h, in, at_in);
+    if (!in_real) {
+        for (k = 0; k < ncoord(st); k++) range_add(&r[k], is_real(st), at_in, k);
+    } else if (is_real(st)) {
+        int vary[3], nvary = 0, npts = 1;
+        for (k = 0; k < 3; k++)
+            if (in_slack[k] > 0) { vary[nvary++] = k; npts *= 3; }
+        for (p = 0; p < npts; p++) {        /* offsets -1, 0, +1 of each input */
+            int q = p, j;
+            x = *in;
+            for (j = 0; j < nvary; j++, q /= 3)
+                x.d[vary[j]] += (q % 3 - 1) * in_slack[vary[j]];
+            memset(&out, 0, sizeof out);
+            mk->apply(h, &x, &out);
+            for (k = 0; k < ncoord(st); k++) range_add(&r[k], 1, &out, k);
+        }
+    } else {
+        for (k = 0; k < ncoord(st); k++) {
+            double v[16];
+            int n = samples(in->d[k], in_slack[k], v);
+            for (p = 0; p < n; p++) {
+                x = *in;
+                x.d[k] = v[p];
+                memset(&right, 0, sizeof right);
+                correct(st, h, &x, &right);
+                if (right.null != ((exp->flags & PT_REC_NULL) != 0) ||
+                    (!right.null && right.n[k] != exp->u.n[k])) continue;
+                memset(&out, 0, sizeof out);
+                mk->apply(h, &x, &out);
+                range_add(&r[k], 0, &out, k);
+            }
+        }
+    }
+    return in_ranges(c, r, st, act);
 }
 
 /* Fill *h from EXPECTED's header for a vertex of model `model`; 0 when there is
@@ -818,6 +924,7 @@ static void explain(dctx *c, const vent *e, int st, int print)
     double in_slack[3];
     int from, found = 0;
     size_t k;
+    const pt_tvrec *exp = &c->t[0].vx[e->rec[0][st]];
     const pt_tvrec *act = &c->t[1].vx[e->rec[1][st]];
     const char *last = NULL;
     sbuf sb;
@@ -835,7 +942,7 @@ static void explain(dctx *c, const vent *e, int st, int print)
         if (st == PT_STAGE_CAMERA && !h.has_t) continue;
         if (st == PT_STAGE_IMAGE && !h.perspective) continue;
         if (mk->apply == mk_two_int && h.w % 2 == 0 && h.h % 2 == 0) continue;
-        if (!reproduces(c, mk, &h, &in, in_slack, is_real(from), st, act, &out)) continue;
+        if (!reproduces(c, mk, &h, &in, in_slack, is_real(from), st, exp, act, &out)) continue;
         if (last && !strcmp(last, mk->name)) continue;   /* a second form of the same */
         last = mk->name;
         found++;
@@ -863,7 +970,7 @@ static void explain(dctx *c, const vent *e, int st, int print)
 /* Compare one vertex present on both sides. */
 static void compare_vertex(dctx *c, const vent *e)
 {
-    int st, first = -1, nlater = 0;
+    int st, first = -1;
     unsigned m = 0, later = 0;
     const pt_tvrec *a = NULL, *b = NULL;
     int print;
@@ -885,7 +992,6 @@ static void compare_vertex(dctx *c, const vent *e)
             b = &c->t[1].vx[j];
         } else {
             later |= 1u << st;
-            nlater++;
         }
     }
     if (first < 0) { c->agree++; return; }
@@ -894,15 +1000,12 @@ static void compare_vertex(dctx *c, const vent *e)
     print = c->shown < c->o->show;
     if (print) {
         c->shown++;
-        printf("%s v%" PRIu64 ": first differs at %s", pt_names_get(&c->nm, e->model), e->v,
+        printf("%s v%" PRIu64 ": differs first at %s", pt_names_get(&c->nm, e->model), e->v,
                pt_stage_infos[first].name);
-        if (nlater) {
-            printf("; %d later stage%s differ%s too (", nlater, nlater > 1 ? "s" : "",
-                   nlater > 1 ? "" : "s");
-            for (st = first + 1; st < PT_NSTAGES; st++)
-                if (later & 1u << st)
-                    printf("%s%s", pt_stage_infos[st].name, (later >> (st + 1)) ? ", " : ")");
-        }
+        for (st = first + 1; st < PT_NSTAGES; st++)
+            if (later & 1u << st)
+                printf("%s%s", st == first + 1 || !(later & ((1u << st) - 1)) ?
+                       ", later at " : ", ", pt_stage_infos[st].name);
         printf("\n");
         print_stage_diff(first, a, b, m);
     }
@@ -1177,8 +1280,9 @@ static int compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2]
     for (pass = 0; pass < 3; pass++) {
         size_t a = 0, b = 0, shown = 0;
         int want = pass - 1;                /* the side listed: 0 missing, 1 extra */
+        if (pass == 1 && (count[0] || count[1]))
+            printf("Lit pixels: %zu in EXPECTED, %zu in ACTUAL.\n", n[0], n[1]);
         if (pass && !count[want]) continue;
-        if (pass == 1) printf("Lit pixels: %zu in EXPECTED, %zu in ACTUAL.\n", n[0], n[1]);
         if (pass) printf("  %s in ACTUAL: %zu\n", want ? "extra" : "missing", count[want]);
         while ((a < n[0] || b < n[1]) && (pass == 0 || shown < c->o->show)) {
             int side, cmp = a >= n[0] ? 1 : b >= n[1] ? -1 : 0;
@@ -1277,19 +1381,18 @@ static void print_intro(const dctx *c)
         printf(": %zu vertex, %zu pixel records)\n", t->nvx, t->npx);
     }
     memset(&sb, 0, sizeof sb);
-    sb_add(&sb, "Integers must be equal; doubles a, b agree when |a - b| <= max(%s, %s * "
-           "max(|a|, |b|))", num(c->o->tol, b1), num(c->o->rel, b2));
+    printf("Integers must be equal; doubles a and b agree when\n"
+           "  |a - b| <= max(%s, %s * max(|a|, |b|))\n", num(c->o->tol, b1), num(c->o->rel, b2));
     if (c->t[0].prec >= 0 || c->t[1].prec >= 0) {
-        sb_add(&sb, ", plus half a unit in the last printed digit of a text trace (");
+        sb_add(&sb, "plus half a unit in the last printed digit of a text trace (");
         for (s = 0; s < 2; s++) {
             if (c->t[s].prec < 0) continue;
             sb_add(&sb, "%s%s: %s", s && c->t[0].prec >= 0 ? ", " : "", side_name[s],
                    num(0.5 * pow(10.0, -c->t[s].prec), b1));
         }
-        sb_add(&sb, ")");
+        sb_add(&sb, "): the text format prints only --precision decimals.");
+        para("", sb.b);
     }
-    sb_add(&sb, ".");
-    para("", sb.b);
     printf("\n");
 }
 
@@ -1394,8 +1497,9 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         para("", s.b);
         return EXIT_SAME;
     }
-    sb_add(&s, "%zu of %zu vertices agree", c->agree, total);
-    if (c->differ) sb_add(&s, ", %zu differ", c->differ);
+    if (total) sb_add(&s, "%zu of %zu vertices agree", c->agree, total);
+    else sb_add(&s, "No vertex is in both traces");
+    if (c->differ) sb_add(&s, ", %zu differ%s", c->differ, c->differ > 1 ? "" : "s");
     if (c->only[0]) sb_add(&s, ", %zu are only in EXPECTED", c->only[0]);
     if (c->only[1]) sb_add(&s, ", %zu only in ACTUAL", c->only[1]);
     sb_add(&s, ".");
@@ -1416,29 +1520,38 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
             size_t hits = 0;
             for (k = 0; k < NMISTAKES; k++)
                 if (!strcmp(mistakes[k].name, mistakes[best].name)) hits += c->mk_hits[k];
-            sb_add(&s, " Likely mistake there: %s, which reproduces ACTUAL for %zu of those %zu "
-                   "vertices.", mistakes[best].name, hits, c->first_at[top]);
+            sb_add(&s, " Likely mistake there: %s, which reproduces ACTUAL", mistakes[best].name);
+            if (hits < c->first_at[top])
+                sb_add(&s, " for %zu of those %zu vertices.", hits, c->first_at[top]);
+            else if (hits > 2) sb_add(&s, " for all %zu.", hits);
+            else if (hits == 2) sb_add(&s, " for both.");
+            else sb_add(&s, ".");
         } else {
             sb_add(&s, " No known mistake reproduces ACTUAL there.");
         }
     }
     if (hdr_differ) sb_add(&s, " The headers differ.");
     if (pixels_compared && (nmiss || nextra)) {
-        sb_add(&s, " Lit pixels: %zu in EXPECTED, %zu in ACTUAL; %zu missing, %zu extra",
+        int vertices_differ = c->differ || c->only[0] || c->only[1];
+        sb_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
+               "%zu extra)", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
                nlit[0], nlit[1], nmiss, nextra);
-        if (c->differ || c->only[0] || c->only[1]) sb_add(&s, " (consequences of the above).");
+        if (vertices_differ) sb_add(&s, ", as a consequence.");
         else if (rs->segs_differ) {
             size_t best = NRASTER;
-            sb_add(&s, ": every vertex agrees, so the rasterizer differs, in %zu segment%s.",
+            sb_add(&s, ", so the rasterizer differs, in %zu segment%s.",
                    rs->segs_differ, rs->segs_differ > 1 ? "s" : "");
             for (k = 0; k < NRASTER; k++)
                 if (rs->hits[k] && (best == NRASTER || rs->hits[k] > rs->hits[best])) best = k;
-            if (best < NRASTER)
+            if (best < NRASTER) {
                 sb_add(&s, " Likely mistake: %s in the rasterizer's rounding (pt_pix_round in "
-                       "s4), which reproduces ACTUAL's pixels for %zu of those %zu segments.",
-                       raster_mistakes[best].name, rs->hits[best], rs->segs_differ);
-            else
+                       "s4), which reproduces ACTUAL's pixels", raster_mistakes[best].name);
+                if (rs->hits[best] < rs->segs_differ)
+                    sb_add(&s, " for %zu of those segments.", rs->hits[best]);
+                else sb_add(&s, ".");
+            } else {
                 sb_add(&s, " No known mistake of its rounding reproduces them.");
+            }
         } else {
             sb_add(&s, ".");
         }
@@ -1452,25 +1565,34 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
 /* Print the raster check's details for the first differing segment. */
 static void report_raster(const dctx *c, const rstat *rs)
 {
+    sbuf sb;
     size_t k;
 
     if (!rs->first_set) return;
-    printf("  every vertex agrees, so the rasterizer differs: %zu segment%s light%s other "
-           "pixels, the first %s s%" PRIu64 "\n", rs->segs_differ, rs->segs_differ > 1 ? "s" : "",
-           rs->segs_differ > 1 ? "" : "s", pt_names_get(&c->nm, rs->first_model), rs->first_seg);
-    if (!rs->ends_ok) {
-        printf("  (its endpoints cannot be read off EXPECTED's steps, so no mistake was "
-               "checked)\n");
-        return;
-    }
-    for (k = 0; k < NRASTER; k++) {
+    memset(&sb, 0, sizeof sb);
+    if (rs->segs_differ == 1)
+        sb_add(&sb, "Every vertex agrees, so the rasterizer differs: segment %s s%" PRIu64
+               " lights other pixels.", pt_names_get(&c->nm, rs->first_model), rs->first_seg);
+    else
+        sb_add(&sb, "Every vertex agrees, so the rasterizer differs: %zu segments light other "
+               "pixels, the first %s s%" PRIu64 ".", rs->segs_differ,
+               pt_names_get(&c->nm, rs->first_model), rs->first_seg);
+    if (!rs->ends_ok)
+        sb_add(&sb, " Its endpoints cannot be read off EXPECTED's steps, so no mistake was "
+               "checked.");
+    para("  ", sb.b);
+    for (k = 0; rs->ends_ok && k < NRASTER; k++) {
         if (!rs->hits[k]) continue;
-        printf("  likely mistake: %s in the rasterizer's rounding\n", raster_mistakes[k].name);
-        printf("    %s\n", raster_mistakes[k].how);
-        printf("    check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
-               ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round "
-               "and ACTUAL's with it (%zu of %zu segments)\n", rs->ends[0], rs->ends[1],
-               rs->ends[2], rs->ends[3], rs->hits[k], rs->segs_differ);
+        printf("  likely mistake: %s\n", raster_mistakes[k].name);
+        para("    ", raster_mistakes[k].how);
+        memset(&sb, 0, sizeof sb);
+        sb_add(&sb, "check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
+               ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round and "
+               "ACTUAL's with it", rs->ends[0], rs->ends[1], rs->ends[2], rs->ends[3]);
+        if (rs->segs_differ > 1)
+            sb_add(&sb, "; so it does for %zu of the %zu segments", rs->hits[k], rs->segs_differ);
+        sb_add(&sb, ".");
+        para("    ", sb.b);
     }
 }
 

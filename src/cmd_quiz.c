@@ -120,12 +120,19 @@ static int close_enough(double a, double b)
 }
 
 /* 1 when the n answers are stage st's values in j. */
+/* 1 for the stages whose values are integers: they must be exact. */
+static int int_stage(pt_stage st)
+{
+    return st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER ||
+           st == PT_STAGE_INDEX || st == PT_STAGE_CVV;
+}
+
 static int check(const pt_journey *j, pt_stage st, const double *v, const int *none, int n)
 {
     const pt_vrec *r = &j->rec[st];
     int k, want = pt_coord_count(st);
 
-    if (st >= PT_STAGE_VIEWPORT && (r->flags & PT_REC_NULL)) {
+    if (int_stage(st) && (r->flags & PT_REC_NULL)) {
         for (k = 0; k < n; k++)
             if (!none[k]) return 0;
         return n >= 1 && n <= want;
@@ -133,10 +140,11 @@ static int check(const pt_journey *j, pt_stage st, const double *v, const int *n
     if (n != want) return 0;
     for (k = 0; k < n; k++) {
         double e = st == PT_STAGE_INDEX ? (double)r->i
-                 : st >= PT_STAGE_VIEWPORT ? (double)(k ? r->iy : r->ix)
-                 : k == 0 ? r->x : k == 1 ? r->y : r->z;
+                 : st == PT_STAGE_CVV ? (double)r->code
+                 : int_stage(st) ? (double)(k ? r->iy : r->ix)
+                 : k == 0 ? r->x : k == 1 ? r->y : k == 2 ? r->z : r->w;
         if (none[k]) return 0;
-        if (st >= PT_STAGE_VIEWPORT ? v[k] != e : !close_enough(v[k], e)) return 0;
+        if (int_stage(st) ? v[k] != e : !close_enough(v[k], e)) return 0;
     }
     return 1;
 }
@@ -144,13 +152,14 @@ static int check(const pt_journey *j, pt_stage st, const double *v, const int *n
 /* Ask the seven questions; returns the number right, *asked how many were. */
 static int ask(const pt_journey *j, int *asked)
 {
-    int st, k, right = 0, echo = !isatty(STDIN_FILENO);
+    int i, k, right = 0, echo = !isatty(STDIN_FILENO);
     char line[1024], b[PT_EXPLAINLEN];
 
     *asked = 0;
-    for (st = 0; st < PT_NSTAGES; st++) {
-        double v[3];
-        int none[3], n, ok, want;
+    for (i = 0; i < j->norder; i++) {
+        pt_stage st = j->order[i];
+        double v[4];
+        int none[4], n, ok, want;
 
         printf("\n%s:", pt_stage_infos[st].name);
         for (k = 0; k < pt_coord_count((pt_stage)st); k++)
@@ -159,7 +168,7 @@ static int ask(const pt_journey *j, int *asked)
         fflush(stdout);
         if (read_line(line, sizeof line, echo) != 0) { putchar('\n'); return right; }
         ++*asked;
-        n = parse_answer(line, v, none, 3);
+        n = parse_answer(line, v, none, 4);
         ok = n >= 0 && check(j, (pt_stage)st, v, none, n);
         pt_explain_values(b, sizeof b, j, (pt_stage)st);
         if (ok) {
@@ -173,7 +182,7 @@ static int ask(const pt_journey *j, int *asked)
         else if (n != want && !(j->rec[st].flags & PT_REC_NULL))
             printf("  wrong: expected %d number%s, found %d\n", want, want > 1 ? "s" : "", n);
         else printf("  wrong\n");
-        printf("  %s\n", st == PT_STAGE_MODEL ? "the scene gives:" : pt_stage_infos[st].formula);
+        printf("  %s\n", st == PT_STAGE_MODEL ? "the scene gives:" : pt_journey_info(j, st)->formula);
         pt_explain_stage(b, sizeof b, j, (pt_stage)st, "\n    ");
         printf("    %s\n", b);
         pt_explain_values(b, sizeof b, j, (pt_stage)st);
@@ -203,7 +212,6 @@ int pt_cmd_quiz(int argc, char **argv)
     unsigned long long v = 0, seed = 0;
     int k, rc, seeded = 0, picked = 0, right, asked;
     const pt_model *m = NULL;
-    pt_stage_params par;
     pt_journey j;
     pt_scene s;
     char err[PT_ERRLEN];
@@ -238,8 +246,7 @@ int pt_cmd_quiz(int argc, char **argv)
     rc = pt_journey_agrees(&s);
     if (rc != 1) {
         fprintf(stderr, "pipetrace quiz: %s: %s\n", s.path, rc < 0 ? "out of memory"
-                : "this scene's camera takes other stages than model -> camera -> image "
-                  "-> pixel -> viewport -> framebuffer -> index, the only ones quiz knows");
+                : "the quiz does not agree with the pipeline on this scene");
         pt_scene_free(&s);
         return EXIT_INPUT;
     }
@@ -285,13 +292,17 @@ int pt_cmd_quiz(int argc, char **argv)
         picked = 1;
     }
 
-    pt_stage_params_of(&par, &s, m);
-    pt_journey_compute(&j, &par, m->v[v - 1]);
+    if (pt_journey_of(&j, &s, m, v, 0) != 0) {
+        fputs("pipetrace quiz: out of memory\n", stderr);
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
     printf("pipetrace quiz: vertex %llu of model %s in %s", v, m->name, s.path);
     if (picked) printf(" (picked with --seed %llu)", seed);
     putchar('\n');
     printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n",
-           s.perspective ? "perspective" : "orthographic", s.vp_w, s.vp_h, s.vp_x, s.vp_y,
+           s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
+           s.vp_w, s.vp_h, s.vp_x, s.vp_y,
            s.fb_w, s.fb_h);
     {
         char t[PT_EXPLAINLEN];
@@ -305,9 +316,9 @@ int pt_cmd_quiz(int argc, char **argv)
            "coordinates and the index must be exact; write none for a value that does\n"
            "not exist.\n");
     right = ask(&j, &asked);
-    if (asked == PT_NSTAGES) printf("\nscore: %d/%d\n", right, PT_NSTAGES);
+    if (asked == j.norder) printf("\nscore: %d/%d\n", right, j.norder);
     else printf("\nscore: %d/%d (input ended after %d of %d stages)\n", right, asked,
-                asked, PT_NSTAGES);
+                asked, j.norder);
     pt_scene_free(&s);
     fflush(stdout);
     return 0;

@@ -9,75 +9,100 @@
 #include <math.h>
 #include <string.h>
 #include "explain.h"
+#include "matrix.h"
+#include "../stages/m4_clip2cvv.h"
 #include "numfmt.h"
 #include "pipeline.h"
-#include "../stages/s1_model2camera.h"
-#include "../stages/s2_camera2image.h"
-#include "../stages/s3_image2pixel.h"
 #include "../stages/s4_pixel2viewport.h"
-#include "../stages/s5_viewport2fb.h"
-#include "../stages/s6_fb2index.h"
 
 /* ===== the journey ===== */
 
 /* The same calls, in the same order, as journey() in pipeline.c; the test
 ** tests/test_explain.c checks that both give the same records. */
 
-void pt_stage_params_of(pt_stage_params *par, const pt_scene *s, const pt_model *m)
-{
-    par->translate = m->translate;
-    par->perspective = s->perspective;
-    par->w = s->vp_w;
-    par->h = s->vp_h;
-    par->x_ul = s->vp_x;
-    par->y_ul = s->vp_y;
-    par->W = s->fb_w;
-    par->H = s->fb_h;
-}
+static const pt_stage classic_order[PT_NSTAGES] = {
+    PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE, PT_STAGE_PIXEL,
+    PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER, PT_STAGE_INDEX,
+};
 
 /* The sink that files each record under its stage. */
 static void keep(void *ud, const pt_vrec *r)
 {
     pt_journey *j = ud;
-    if ((int)r->stage < PT_NSTAGES) j->rec[r->stage] = *r;
+    if ((int)r->stage < PT_NSTAGES_ALL) j->rec[r->stage] = *r;
 }
 
 void pt_journey_compute(pt_journey *j, const pt_stage_params *par, pt_vec3 v_m)
 {
     pt_sink sink;
-    pt_vec3 c, ip;
-    pt_vec2 pp;
-    pt_pix vp, fb;
+    const pt_sink *sinks[PT_NSTAGES_ALL];
+    double z_c;
+    int st;
 
     memset(j, 0, sizeof *j);
     j->par = *par;
+    j->order = classic_order;
+    j->norder = PT_NSTAGES;
     sink.vertex = keep;
     sink.ud = j;
-    j->rec[PT_STAGE_MODEL].stage = PT_STAGE_MODEL;
-    j->rec[PT_STAGE_MODEL].x = v_m.x;
-    j->rec[PT_STAGE_MODEL].y = v_m.y;
-    j->rec[PT_STAGE_MODEL].z = v_m.z;
-    c = pt_model2camera(v_m, par->translate, &sink);
-    ip = pt_camera2image(c, fmax(fabs(v_m.z), fabs(par->translate.z)),  /* as pipeline.c */
-                         par->perspective, &sink);
-    pp = pt_image2pixel(ip, par->w, par->h, &sink);
-    vp = pt_pixel2viewport(pp, par->w, par->h, &sink);
-    fb = pt_viewport2fb(vp, par->x_ul, par->y_ul, &sink);
-    pt_fb2index(fb, par->W, par->H, &sink);
+    for (st = 0; st < PT_NSTAGES_ALL; st++) sinks[st] = &sink;
+    pt_classic_journey(par, v_m, sinks, &z_c);
+}
+
+const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st)
+{
+    if (j->matrix && st == PT_STAGE_VIEWPORT) return &pt_matrix_viewport_info;
+    return &pt_stage_infos[st];
+}
+
+int pt_journey_of(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
+                  int raw_lookat)
+{
+    pt_stage_params par;
+    pt_options o;
+    pt_plan p;
+    pt_sink sink;
+    const pt_sink *sinks[PT_NSTAGES_ALL];
+    pt_vec4 clip;
+    unsigned code;
+    int st;
+
+    pt_stage_params_of(&par, s, m);
+    if (!s->matrix) {
+        pt_journey_compute(j, &par, m->v[v - 1]);
+        return 0;
+    }
+    memset(j, 0, sizeof *j);
+    j->par = par;
+    j->matrix = 1;
+    pt_options_default(&o);
+    o.raw_lookat = raw_lookat;
+    if (pt_plan_make(&p, s, &o) != 0) return -1;
+    j->world = p.models[m - s->models].world;
+    j->view = p.view;
+    j->proj = p.proj;
+    sink.vertex = keep;
+    sink.ud = j;
+    for (st = 0; st < PT_NSTAGES_ALL; st++) sinks[st] = &sink;
+    pt_matrix_journey(s, &p, (size_t)(m - s->models), m->v[v - 1], sinks, &clip, &code);
+    j->order = pt_matrix_order;
+    j->norder = code ? 5 : pt_matrix_norder;    /* outside: it stops at the cvv */
+    pt_plan_free(&p);
+    return 0;
 }
 
 /* 1 when a and b hold the same numbers (bit for bit) and flags. */
 static int same_rec(const pt_vrec *a, const pt_vrec *b)
 {
-    return a->stage == b->stage && a->flags == b->flags &&
+    return a->stage == b->stage && a->flags == b->flags && a->code == b->code &&
            memcmp(&a->x, &b->x, sizeof a->x) == 0 && memcmp(&a->y, &b->y, sizeof a->y) == 0 &&
-           memcmp(&a->z, &b->z, sizeof a->z) == 0 &&
+           memcmp(&a->z, &b->z, sizeof a->z) == 0 && memcmp(&a->w, &b->w, sizeof a->w) == 0 &&
            a->ix == b->ix && a->iy == b->iy && a->i == b->i;
 }
 
 int pt_journey_matches(const pt_journey *j, const pt_vrec *r)
 {
-    return (int)r->stage < PT_NSTAGES && same_rec(&j->rec[r->stage], r);
+    return (int)r->stage < PT_NSTAGES_ALL && same_rec(&j->rec[r->stage], r);
 }
 
 /* The check of pt_journey_agrees(): a listener comparing each record with
@@ -91,10 +116,8 @@ typedef struct agree {
 static void agree_begin(void *ud, const pt_model *m, uint64_t v)
 {
     agree *ag = ud;
-    pt_stage_params par;
 
-    pt_stage_params_of(&par, ag->s, m);
-    pt_journey_compute(&ag->j, &par, m->v[v - 1]);
+    if (pt_journey_of(&ag->j, ag->s, m, v, 0) != 0) ag->differs = 1;
 }
 
 static void agree_rec(void *ud, const pt_vrec *r)
@@ -140,20 +163,28 @@ int pt_vertex_used(const pt_model *m, uint64_t v)
 
 /* ===== coordinate names ===== */
 
-static const char *const coord_names[PT_NSTAGES][3] = {
-    {"x_m", "y_m", "z_m"}, {"x_c", "y_c", "z_c"}, {"x_ip", "y_ip", "z_ip"},
-    {"x_pp", "y_pp", NULL}, {"x_vp", "y_vp", NULL}, {"x_fb", "y_fb", NULL},
-    {"idx", NULL, NULL},
+static const char *const coord_names[PT_NSTAGES_ALL][4] = {
+    {"x_m", "y_m", "z_m", NULL}, {"x_c", "y_c", "z_c", NULL}, {"x_ip", "y_ip", "z_ip", NULL},
+    {"x_pp", "y_pp", NULL, NULL}, {"x_vp", "y_vp", NULL, NULL}, {"x_fb", "y_fb", NULL, NULL},
+    {"idx", NULL, NULL, NULL},
+    {"x_w", "y_w", "z_w", "w_w"}, {"x_v", "y_v", "z_v", "w_v"}, {"x_k", "y_k", "z_k", "w_k"},
+    {"code", NULL, NULL, NULL}, {"x_n", "y_n", "z_n", NULL}, {"x_s", "y_s", "z_s", NULL},
 };
 
 int pt_coord_count(pt_stage st)
 {
-    return st <= PT_STAGE_IMAGE ? 3 : st == PT_STAGE_INDEX ? 1 : 2;
+    switch (st) {
+    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP: return 4;
+    case PT_STAGE_MODEL: case PT_STAGE_CAMERA: case PT_STAGE_IMAGE:
+    case PT_STAGE_NDC: case PT_STAGE_SCREEN: return 3;
+    case PT_STAGE_INDEX: case PT_STAGE_CVV: return 1;
+    default: return 2;
+    }
 }
 
 const char *pt_coord_name(pt_stage st, int k)
 {
-    if ((int)st >= PT_NSTAGES || k < 0 || k >= pt_coord_count(st)) return "";
+    if ((int)st >= PT_NSTAGES_ALL || k < 0 || k >= pt_coord_count(st)) return "";
     return coord_names[st][k];
 }
 
@@ -219,7 +250,17 @@ static void add_lhs(text *t, pt_stage st, int k)
 /* Component k of a real-valued record. */
 static double comp(const pt_vrec *r, int k)
 {
-    return k == 0 ? r->x : k == 1 ? r->y : r->z;
+    return k == 0 ? r->x : k == 1 ? r->y : k == 2 ? r->z : r->w;
+}
+
+/* The stage before st in j's journey (st itself for the first). */
+static pt_stage prev_stage(const pt_journey *j, pt_stage st)
+{
+    int i;
+
+    for (i = 1; i < j->norder; i++)
+        if (j->order[i] == st) return j->order[i - 1];
+    return st;
 }
 
 static double tcomp(pt_vec3 v, int k)
@@ -265,11 +306,86 @@ static void explain_viewport(text *t, const pt_journey *j, int k)
     }
 }
 
+/* x' = x*m0k + y*m1k + z*m2k + w*m3k with the numbers, for the matrix stages. */
+static void explain_product(text *t, const pt_journey *j, pt_stage st, int k)
+{
+    const pt_vrec *prev = &j->rec[prev_stage(j, st)];
+    const pt_mat4 *m = st == PT_STAGE_WORLD ? &j->world : st == PT_STAGE_VIEW ? &j->view
+                                             : &j->proj;
+    const char *mname = st == PT_STAGE_WORLD ? "World" : st == PT_STAGE_VIEW ? "View"
+                                              : "Projection";
+    double in[4];
+    int r;
+
+    in[0] = prev->x; in[1] = prev->y; in[2] = prev->z;
+    in[3] = prev->stage == PT_STAGE_MODEL ? 1.0 : prev->w;   /* a point: w = 1 */
+    add_lhs(t, st, k);
+    add(t, "column "); add_int(t, k, 0); add(t, " of "); add(t, mname); add(t, ": ");
+    for (r = 0; r < 4; r++) {
+        if (r) add(t, " + ");
+        add_num(t, in[r], r > 0); add(t, "*"); add_num(t, m->m[r][k], 1);
+    }
+    add(t, " = ");
+    add_num(t, comp(&j->rec[st], k), 0);
+}
+
+static void explain_matrix_stage(text *t, const pt_journey *j, pt_stage st, int k)
+{
+    const pt_vrec *prev = &j->rec[prev_stage(j, st)];
+    const pt_vrec *cur = &j->rec[st];
+    int b, first = 1;
+
+    switch (st) {
+    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
+        explain_product(t, j, st, k);
+        break;
+    case PT_STAGE_CVV:                                      /* the outcode */
+        add(t, "code = ");
+        add_int(t, cur->code, 0);
+        if (!cur->code) { add(t, ": 0 <= z <= w, -w <= x <= w, -w <= y <= w"); break; }
+        add(t, ": outside");
+        for (b = 0; b < PT_CVV_NPLANES; b++) {
+            if (!(cur->code & (1u << b))) continue;
+            add(t, first ? " " : ", ");
+            first = 0;
+            add(t, pt_cvv_names[b]);
+        }
+        add(t, " (w_k = "); add_num(t, cur->w, 0); add(t, ")");
+        break;
+    case PT_STAGE_NDC:                                      /* x_n = x_k / w_k */
+        add_lhs(t, st, k);
+        add(t, k == 0 ? "x_k / w_k = " : k == 1 ? "y_k / w_k = " : "z_k / w_k = ");
+        add_num(t, comp(prev, k), 0); add(t, " / "); add_num(t, prev->w, 1);
+        add(t, " = "); add_num(t, comp(cur, k), 0);
+        break;
+    case PT_STAGE_SCREEN:
+        add_lhs(t, st, k);
+        if (k == 2) { add(t, "z_n = "); add_num(t, cur->z, 0); break; }
+        add(t, k == 0 ? "(x_n + 1) * w * 0.5 = (" : "(1 - y_n) * h * 0.5 = (1 - ");
+        add_num(t, comp(prev, k), k == 1);
+        add(t, k == 0 ? " + 1) * " : ") * ");
+        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, " * 0.5 = ");
+        add_num(t, comp(cur, k), 0);
+        break;
+    default:                                                /* viewport: floor */
+        add_lhs(t, st, k);
+        add(t, k == 0 ? "floor(x_s) = floor(" : "floor(y_s) = floor(");
+        add_num(t, comp(prev, k), 0); add(t, ")");
+        if (cur->flags & PT_REC_NULL) { add(t, ": none, "); add(t, no_pixel_why(comp(prev, k))); break; }
+        add(t, " = "); add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+        break;
+    }
+}
+
 static void explain_coord(text *t, const pt_journey *j, pt_stage st, int k)
 {
-    const pt_vrec *prev = st > PT_STAGE_MODEL ? &j->rec[st - 1] : NULL;
+    const pt_vrec *prev = st > PT_STAGE_MODEL ? &j->rec[prev_stage(j, st)] : NULL;
     const pt_vrec *cur = &j->rec[st];
 
+    if (st >= PT_NSTAGES || (j->matrix && st == PT_STAGE_VIEWPORT)) {
+        explain_matrix_stage(t, j, st, k);
+        return;
+    }
     switch (st) {
     case PT_STAGE_MODEL:                                    /* as given */
         add_lhs(t, st, k);
@@ -348,7 +464,7 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
     int k;
 
     text_init(&t, buf, len);
-    if ((int)st >= PT_NSTAGES) return 0;
+    if ((int)st >= PT_NSTAGES_ALL) return 0;
     for (k = 0; k < pt_coord_count(st); k++) {
         if (k) add(&t, sep);
         explain_coord(&t, j, st, k);
@@ -365,7 +481,8 @@ size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st
     int k, n = pt_coord_count(st);
 
     text_init(&t, buf, len);
-    if ((int)st >= PT_NSTAGES) return 0;
+    if ((int)st >= PT_NSTAGES_ALL) return 0;
+    if (st == PT_STAGE_CVV) { add(&t, "code = "); add_int(&t, r->code, 0); return t.len; }
     if (n == 1) add(&t, "idx = ");
     else {
         add(&t, "(");
@@ -377,7 +494,7 @@ size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st
     }
     if (r->flags & PT_REC_NULL) add(&t, "none");
     else if (st == PT_STAGE_INDEX) add_int(&t, r->i, 0);
-    else if (st >= PT_STAGE_VIEWPORT) add_pair(&t, r->ix, r->iy);
+    else if (st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER) add_pair(&t, r->ix, r->iy);
     else {
         add(&t, "(");
         for (k = 0; k < n; k++) {
@@ -474,10 +591,12 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
     text t;
 
     text_init(&t, buf, len);
-    if ((int)st >= PT_NSTAGES) return 0;
+    if ((int)st >= PT_NSTAGES_ALL) return 0;
     switch (st) {
     case PT_STAGE_MODEL:
-        if (tr.x == 0 && tr.y == 0 && tr.z == 0)
+        if (j->matrix)
+            add(&t, "the world stage multiplies (x_m, y_m, z_m, 1) by the model's world matrix");
+        else if (tr.x == 0 && tr.y == 0 && tr.z == 0)
             add(&t, "the translation is (0, 0, 0): the camera stage changes nothing");
         else {
             add(&t, "the camera stage adds the model's translation (x_t, y_t, z_t) = (");
@@ -498,6 +617,38 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
                     "there but writes nothing)");
         break;
     case PT_STAGE_FRAMEBUFFER: next_framebuffer(&t, j); break;
+    case PT_STAGE_WORLD:
+        add(&t, "the view stage moves the eye to the origin and turns the camera's axes onto x, y, z");
+        break;
+    case PT_STAGE_VIEW:
+        if (r->z > 0) {
+            add(&t, "in front of the eye (z_v > 0): the clip stage sets w_k = z_v = ");
+            add_num(&t, r->z, 0);
+        } else
+            add(&t, "not in front of the eye (z_v <= 0): w_k will be <= 0, "
+                    "outside the near plane");
+        break;
+    case PT_STAGE_CLIP:
+        add(&t, "the cvv stage compares x_k, y_k, z_k with w_k = ");
+        add_num(&t, r->w, 0);
+        add(&t, ", before any division");
+        break;
+    case PT_STAGE_CVV:
+        if (r->code == 0)
+            add(&t, "inside the view volume: the ndc stage divides by w_k");
+        else
+            add(&t, "outside the view volume: this vertex is not divided (for w_k <= 0 that "
+                    "would flip it into view); its segments are clipped at the planes in clip "
+                    "space, and the points that makes go on from there");
+        break;
+    case PT_STAGE_NDC:
+        add(&t, fabs(r->x) <= 1 && fabs(r->y) <= 1 && r->z >= 0 && r->z <= 1
+                ? "inside the cube [-1, 1] x [-1, 1] x [0, 1]: the screen stage stretches it over the viewport"
+                : "on the cube's border (rounding): the screen stage stretches it over the viewport");
+        break;
+    case PT_STAGE_SCREEN:
+        add(&t, "the viewport stage takes the pixel whose square contains (x_s, y_s): floor of each");
+        break;
     default:
         if (r->flags & PT_REC_NULL)
             add(&t, "outside the framebuffer: no index, nothing is stored for this point");

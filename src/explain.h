@@ -28,32 +28,35 @@
 #define PT_EXPLAIN_H
 
 #include <stddef.h>
-#include "scene.h"
+#include "pipeline.h"          /* pt_stage_params_of() */
 
 #define PT_EXPLAINLEN 1024       /* room for any text written here */
-
-/* The numbers of the scene that the formulas use, for one model. */
-typedef struct pt_stage_params {
-    pt_vec3 translate;           /* (x_t, y_t, z_t): the model's translation */
-    int perspective;             /* 1: perspective camera, 0: orthographic */
-    int w, h;                    /* the viewport's size in pixels */
-    int x_ul, y_ul;              /* its upper-left corner in the framebuffer */
-    int W, H;                    /* the framebuffer's size */
-} pt_stage_params;
 
 /* One vertex's full journey.  rec[st] is the record stage st reports (model:
 ** the vertex itself), whether or not a trace would leave the stage out. */
 typedef struct pt_journey {
     pt_stage_params par;         /* the numbers used */
-    pt_vrec rec[PT_NSTAGES];     /* each stage's values, in pipeline order */
+    pt_vrec rec[PT_NSTAGES_ALL]; /* each stage's values, indexed by pt_stage */
+    const pt_stage *order;       /* the stages this journey went through, */
+    int norder;                  /*   in pipeline order, and how many */
+    int matrix;                  /* 1: the matrix camera's journey */
+    pt_mat4 world, view, proj;   /* matrix camera: World, View, Projection */
 } pt_journey;
 
-/* Fill *par from scene s and its model m.  This function can't fail. */
-void pt_stage_params_of(pt_stage_params *par, const pt_scene *s, const pt_model *m);
-
-/* Run v_m (model coordinates) through all six stages with par.  Requires
-** par->w, h, W, H >= 1.  This function can't fail. */
+/* Run v_m (model coordinates) through the classic camera's six stages with
+** par.  Requires par->w, h, W, H >= 1.  This function can't fail. */
 void pt_journey_compute(pt_journey *j, const pt_stage_params *par, pt_vec3 v_m);
+
+/* The journey of 1-based vertex v of model m in scene s, through whichever
+** camera s has, exactly as pt_run() computes it (raw_lookat as its option).
+** Under the matrix camera a vertex outside the view volume stops at the cvv
+** stage.  Returns 0, or -1 when out of memory. */
+int pt_journey_of(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
+                  int raw_lookat);
+
+/* The name, spaces and formula of stage st as j's camera has it (the matrix
+** camera's viewport stage floors instead of rounding).  Can't fail. */
+const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st);
 
 /* 1 when r is the record of its stage in j, number for number.  This function
 ** can't fail. */

@@ -23,10 +23,12 @@
 
 static const char usage[] =
 "usage: pipetrace [SCENE] [options]\n"
-"       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL]\n"
+"       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N]\n"
+"       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE]\n"
 "       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all]\n"
 "       pipetrace why [SCENE] X_FB Y_FB\n"
 "       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
+"       pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
 "through the classic teaching pipeline and trace every vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
@@ -188,6 +190,7 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "step") == 0) return pt_cmd_step(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "why") == 0) return pt_cmd_why(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "quiz") == 0) return pt_cmd_quiz(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "accuracy") == 0) return pt_cmd_accuracy(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
 
@@ -213,6 +216,7 @@ int main(int argc, char **argv)
             pt_trace_init(tr, tout.f, c.fmt, c.precision);
             pt_trace_listener(tr, &l);
             tr->explain = c.explain;
+            tr->raw_lookat = c.opt.raw_lookat;
         }
     }
     if (!rc && c.image && pt_fb_init(&fb, s.fb_w, s.fb_h, s.background) != 0) {

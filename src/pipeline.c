@@ -9,12 +9,21 @@
 #include "raster.h"
 #include "clip.h"
 #include "matrix.h"
-#include "../stages/s1_model2camera.h"
-#include "../stages/s2_camera2image.h"
-#include "../stages/s3_image2pixel.h"
 #include "../stages/s4_pixel2viewport.h"
 #include "../stages/s5_viewport2fb.h"
 #include "../stages/s6_fb2index.h"
+
+void pt_stage_params_of(pt_stage_params *par, const pt_scene *s, const pt_model *m)
+{
+    par->translate = m->translate;
+    par->perspective = s->perspective;
+    par->w = s->vp_w;
+    par->h = s->vp_h;
+    par->x_ul = s->vp_x;
+    par->y_ul = s->vp_y;
+    par->W = s->fb_w;
+    par->H = s->fb_h;
+}
 
 void pt_options_default(pt_options *o)
 {
@@ -166,29 +175,6 @@ typedef struct vtx {
     unsigned code;               /* matrix camera: CVV outcode */
 } vtx;
 
-/* The classic journey of one vertex; returns its pixel-plane point. */
-static pt_vec2 classic_journey(const pt_scene *s, const pt_model *m, pt_vec3 v_m,
-                               const pt_sink *const sinks[PT_NSTAGES_ALL], double *z_c)
-{
-    pt_vrec r = {0};
-    pt_vec3 c, ip;
-    pt_vec2 pp;
-    pt_pix vp, fb;
-
-    r.stage = PT_STAGE_MODEL;
-    r.x = v_m.x; r.y = v_m.y; r.z = v_m.z;
-    pt_emit(sinks[PT_STAGE_MODEL], &r);
-    c = pt_model2camera(v_m, m->translate, sinks[PT_STAGE_CAMERA]);
-    *z_c = c.z;
-    ip = pt_camera2image(c, fmax(fabs(v_m.z), fabs(m->translate.z)), s->perspective,
-                         sinks[PT_STAGE_IMAGE]);
-    pp = pt_image2pixel(ip, s->vp_w, s->vp_h, sinks[PT_STAGE_PIXEL]);
-    vp = pt_pixel2viewport(pp, s->vp_w, s->vp_h, sinks[PT_STAGE_VIEWPORT]);
-    fb = pt_viewport2fb(vp, s->vp_x, s->vp_y, sinks[PT_STAGE_FRAMEBUFFER]);
-    pt_fb2index(fb, s->fb_w, s->fb_h, sinks[PT_STAGE_INDEX]);
-    return pp;
-}
-
 /* Run every vertex of model k that needs it; fill v[] for the rasterizer. */
 static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
                       const pt_listener *l, size_t k, const model_sinks *ms,
@@ -196,8 +182,10 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
 {
     const pt_model *m = &s->models[k];
     const pt_model_plan *mp = &p->models[k];
+    pt_stage_params par;
     size_t j;
 
+    pt_stage_params_of(&par, s, m);
     for (j = 0; j < m->nv; j++) {
         int traced = mp->selected && (!o->vertex || o->vertex == j + 1);
         const pt_sink *const *sinks = traced ? ms->traced : ms->quiet;
@@ -211,7 +199,7 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
             behind = x.clip.w < 0;
         } else {
             double z_c;
-            x.pp = classic_journey(s, m, m->v[j], sinks, &z_c);
+            x.pp = pt_classic_journey(&par, m->v[j], sinks, &z_c);
             behind = s->perspective && z_c > 0;
         }
         if (traced) {

@@ -24,6 +24,7 @@
 #include <stddef.h>
 #include "scene.h"
 #include "fb.h"
+#include "../stages/pt_classic.h"
 
 /* What to compute and what to report. */
 typedef struct pt_options {
@@ -100,6 +101,10 @@ typedef struct pt_listener {
     void (*summary)(void *ud, const pt_summary *sum);
     void *ud;
 } pt_listener;
+
+/* Fill *par with the numbers of scene s that the classic stages use for its
+** model m.  This function can't fail. */
+void pt_stage_params_of(pt_stage_params *par, const pt_scene *s, const pt_model *m);
 
 /* Defaults: everything traced, identity stages left out, raster traced. */
 void pt_options_default(pt_options *o);

@@ -335,11 +335,9 @@ static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)
     t->model = m;
     t->v = v;
     t->explain_lost = 0;
-    if (t->explain && t->scene) {   /* every stage, even those left out */
-        pt_stage_params par;
-        pt_stage_params_of(&par, t->scene, m);
-        pt_journey_compute(&t->journey, &par, m->v[v - 1]);
-    }
+    if (t->explain && t->scene &&   /* every stage, even those left out */
+        pt_journey_of(&t->journey, t->scene, m, v, t->raw_lookat) != 0)
+        t->explain_lost = 1;
 }
 
 /* Names of a stage's coordinates in the text format, in pt_stage order. */
@@ -696,6 +694,7 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->v = 0;
     t->explain = 0;
     t->explain_lost = 0;
+    t->raw_lookat = 0;
     t->scene = NULL;
     t->failed = 0;
     t->len = 0;

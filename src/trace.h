@@ -40,6 +40,7 @@ typedef struct pt_trace {
     int precision;               /* text: digits after the point, 0..17 */
     const pt_model *model;       /* model of the vertex being traced */
     uint64_t v;                  /* its 1-based number */
+    int raw_lookat;              /* --explain: the journey's --raw-lookat */
     int clipv;                   /* 1: records of a point made by clipping: */
     uint64_t seg, from, to;      /*   segment seg, from -> to (1-based) */
     double t_clip;               /*   at parameter t */

@@ -172,5 +172,25 @@ cp "$tmp/out" "$tmp/plain"
 run $tri --explain
 check "teach-6.10 without the explain lines, the trace is unchanged" test "$(grep -v '^              [a-z]' "$tmp/out")" = "$(cat "$tmp/plain")"
 
+
+# ---- the matrix camera in step, quiz and --explain; --compare-cameras
+run step docs/examples/lookat-near.scene --vertex 1 --all
+check "teach-8.1 step under the matrix camera: ten stages" test "$(grep -c '^stage [0-9]* of 10: ' "$tmp/out")" = 10
+check "teach-8.2 ... the divide, substituted" has "  here     x_n = x_k / w_k = 0.375 / 4 = 0.09375"
+run step docs/examples/lookat-near.scene --vertex 2 --all
+check "teach-8.3 a vertex behind the eye stops at the cvv" test "$(grep -c '^stage [0-9]* of 5: ' "$tmp/out")" = 5
+check "teach-8.4 ... and says so" has "(the journey ends at the cvv: the vertex is outside the view volume)"
+feed '0.5 0.25 4\n0.5 0.25 4 1\n0.5 0.25 4 1\n0.375 0.25 3.0303030303 4\n0\n0.09375 0.0625 0.7575757576\n21.875 14.0625 0.7575757576\n21 14\n21 14\n581\n' quiz docs/examples/lookat-near.scene --vertex 1
+check "teach-8.5 quiz under the matrix camera: all ten right" has "score: 10/10"
+run docs/examples/lookat-near.scene --vertex 1 --explain
+check "teach-8.6 --explain under the matrix camera" has "              x_vp = floor(x_s) = floor(21.875) = 21; y_vp = floor(y_s) = floor(14.0625) = 14"
+run step docs/examples/compare-classic.scene --vertex 1 --compare-cameras
+check "teach-8.7 --compare-cameras: exit 0" test "$rc" = 0
+check "teach-8.8 ... the image point and the NDC point agree bit for bit" has "(x_ip, y_ip) and (x_n, y_n) are equal, bit for bit: both cameras put the vertex at the same point of the view rectangle"
+check "teach-8.9 ... both columns" grep -q '^projected  *image     (x_ip, y_ip, z_ip) = (0.5, -0.5, -1)  *| clip      (x_k, y_k, z_k, w_k) = (1, -1, ' "$tmp/out"
+check "teach-8.10 ... the pixels differ by the rounding conventions" has "the pixels differ: the classic camera rounds x_pp = 0.5 + w/2.001 * (x_ip + 1)"
+run step docs/examples/lookat-world.scene --vertex 1 --compare-cameras
+check "teach-8.11 --compare-cameras on a matrix scene" test "$rc" = 0 -a -n "$(grep 'matrix camera:  this scene' "$tmp/out")"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -109,8 +109,8 @@ static void test_odd(void)
     n = pt_explain_stage(b, 10, &j, PT_STAGE_PIXEL, "; ");
     PT_CHECK("ex-4.1 cut short: full length returned, NUL-terminated",
              n > 100 && strlen(b) == 9 && !strncmp(b, "x_pp = 0.", 9));
-    PT_CHECK("ex-4.2 stage past the classic ones: empty",
-             pt_explain_stage(b, sizeof b, &j, PT_NSTAGES, "; ") == 0 && b[0] == '\0');
+    PT_CHECK("ex-4.2 a stage past the last one: empty",
+             pt_explain_stage(b, sizeof b, &j, PT_NSTAGES_ALL, "; ") == 0 && b[0] == '\0');
     PT_CHECK("ex-4.3 coordinate names", !strcmp(pt_coord_name(PT_STAGE_IMAGE, 2), "z_ip") &&
              pt_coord_count(PT_STAGE_INDEX) == 1 && !strcmp(pt_coord_name(PT_STAGE_INDEX, 1), ""));
 }
@@ -122,6 +122,8 @@ static void test_agrees(void)
         "docs/examples/triangle.scene", "docs/examples/clip.scene",
         "docs/examples/behind.scene", "docs/examples/two-models.scene",
         "docs/examples/cube.scene", "docs/examples/ortho.scene",
+        "docs/examples/lookat-cube.scene", "docs/examples/lookat-near.scene",
+        "docs/examples/lookat-world.scene",
     };
     size_t k;
 
@@ -135,11 +137,48 @@ static void test_agrees(void)
     }
 }
 
+/* The matrix camera's journey: its stages, its formulas, where it stops. */
+static void test_matrix(void)
+{
+    pt_scene s;
+    pt_journey j;
+    char err[PT_ERRLEN];
+    int ok = pt_scene_load(&s, "docs/examples/lookat-near.scene", err, sizeof err) == 0;
+
+    PT_CHECK("ex-5.0 lookat-near loads", ok);
+    if (!ok) return;
+    PT_CHECK("ex-5.1 vertex 1 (inside) goes through all 10 stages",
+             pt_journey_of(&j, &s, &s.models[0], 1, 0) == 0 && j.matrix && j.norder == 10);
+    pt_explain_stage(b, sizeof b, &j, PT_STAGE_NDC, "; ");
+    PT_CHECK("ex-5.2 ndc: the divide with its numbers",
+             !strcmp(b, "x_n = x_k / w_k = 0.375 / 4 = 0.09375; y_n = y_k / w_k = 0.25 / 4 = 0.0625; "
+                        "z_n = z_k / w_k = 3.0303030303030303 / 4 = 0.7575757575757576"));
+    pt_explain_stage(b, sizeof b, &j, PT_STAGE_SCREEN, "; ");
+    PT_CHECK("ex-5.3 screen: (x_n + 1) * w * 0.5",
+             !strncmp(b, "x_s = (x_n + 1) * w * 0.5 = (0.09375 + 1) * 40 * 0.5 = 21.875; "
+                         "y_s = (1 - y_n) * h * 0.5 = (1 - 0.0625) * 30 * 0.5 = 14.0625", 120));
+    pt_explain_stage(b, sizeof b, &j, PT_STAGE_VIEWPORT, "; ");
+    PT_CHECK("ex-5.4 viewport floors under the matrix camera",
+             !strcmp(b, "x_vp = floor(x_s) = floor(21.875) = 21; y_vp = floor(y_s) = floor(14.0625) = 14"));
+    PT_CHECK("ex-5.5 the matrix viewport formula", !strcmp(pt_journey_info(&j, PT_STAGE_VIEWPORT)->formula,
+             "x_vp = floor(x_s), y_vp = floor(y_s)"));
+    PT_CHECK("ex-5.6 vertex 2 (behind the eye) stops at the cvv",
+             pt_journey_of(&j, &s, &s.models[0], 2, 0) == 0 && j.norder == 5 &&
+             j.order[4] == PT_STAGE_CVV);
+    pt_explain_stage(b, sizeof b, &j, PT_STAGE_CVV, "; ");
+    PT_CHECK("ex-5.7 cvv names the planes", !strcmp(b, "code = 61: outside near, left, right, bottom, top (w_k = -4)"));
+    pt_explain_stage(b, sizeof b, &j, PT_STAGE_CLIP, "; ");
+    PT_CHECK("ex-5.8 clip: a row vector times Projection, term by term",
+             !strncmp(b, "x_k = column 0 of Projection: 0.5*0.75 + 0.25*0 + (-4)*0 + 1*0 = 0.375", 70));
+    pt_scene_free(&s);
+}
+
 int main(void)
 {
     test_triangle();
     test_outside();
     test_odd();
     test_agrees();
+    test_matrix();
     return pt_test_report();
 }

@@ -1,0 +1,113 @@
+/*
+** src/sbuf.c -- a growing text buffer, with XML and JSON escaping
+** See LICENSE for copyright and license.
+*/
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "sbuf.h"
+
+void pt_sbuf_init(pt_sbuf *sb)
+{
+    sb->s = NULL;
+    sb->len = sb->cap = 0;
+    sb->failed = 0;
+}
+
+void pt_sbuf_free(pt_sbuf *sb)
+{
+    free(sb->s);
+    pt_sbuf_init(sb);
+}
+
+/* Make room for n more bytes and the NUL.  Returns 0, or -1 (failed set). */
+static int grow(pt_sbuf *sb, size_t n)
+{
+    size_t want, cap;
+    char *p;
+
+    if (sb->failed) return -1;
+    if (n >= (size_t)-1 / 2 - sb->len) { sb->failed = 1; return -1; }
+    want = sb->len + n + 1;
+    if (want <= sb->cap) return 0;
+    cap = sb->cap ? sb->cap : 256;
+    while (cap < want) cap *= 2;
+    p = realloc(sb->s, cap);
+    if (!p) { sb->failed = 1; return -1; }
+    sb->s = p;
+    sb->cap = cap;
+    return 0;
+}
+
+void pt_sbuf_addn(pt_sbuf *sb, const char *t, size_t n)
+{
+    if (grow(sb, n) != 0) return;
+    memcpy(sb->s + sb->len, t, n);
+    sb->len += n;
+    sb->s[sb->len] = '\0';
+}
+
+void pt_sbuf_add(pt_sbuf *sb, const char *t)
+{
+    pt_sbuf_addn(sb, t, strlen(t));
+}
+
+void pt_sbuf_addf(pt_sbuf *sb, const char *fmt, ...)
+{
+    va_list ap;
+    char small[256];
+    int n;
+
+    va_start(ap, fmt);
+    n = vsnprintf(small, sizeof small, fmt, ap);
+    va_end(ap);
+    if (n < 0) { sb->failed = 1; return; }
+    if ((size_t)n < sizeof small) { pt_sbuf_addn(sb, small, (size_t)n); return; }
+    if (grow(sb, (size_t)n) != 0) return;
+    va_start(ap, fmt);
+    vsnprintf(sb->s + sb->len, (size_t)n + 1, fmt, ap);
+    va_end(ap);
+    sb->len += (size_t)n;
+}
+
+void pt_sbuf_add_xml(pt_sbuf *sb, const char *t)
+{
+    const unsigned char *p = (const unsigned char *)t;
+
+    for (; *p; p++) {
+        switch (*p) {
+        case '&':  pt_sbuf_add(sb, "&amp;"); break;
+        case '<':  pt_sbuf_add(sb, "&lt;"); break;
+        case '>':  pt_sbuf_add(sb, "&gt;"); break;
+        case '"':  pt_sbuf_add(sb, "&quot;"); break;
+        case '\'': pt_sbuf_add(sb, "&apos;"); break;
+        default:
+            if (*p < 0x20 && *p != '\t' && *p != '\n') pt_sbuf_add(sb, "\xef\xbf\xbd");
+            else pt_sbuf_addn(sb, (const char *)p, 1);
+        }
+    }
+}
+
+void pt_sbuf_add_json(pt_sbuf *sb, const char *t)
+{
+    const unsigned char *p = (const unsigned char *)t;
+
+    pt_sbuf_add(sb, "\"");
+    for (; *p; p++) {
+        switch (*p) {
+        case '"':  pt_sbuf_add(sb, "\\\""); break;
+        case '\\': pt_sbuf_add(sb, "\\\\"); break;
+        case '\n': pt_sbuf_add(sb, "\\n"); break;
+        case '\t': pt_sbuf_add(sb, "\\t"); break;
+        case '<':                /* "</script" or "<!--" would end the element */
+            if (p[1] == '/' || p[1] == '!') pt_sbuf_add(sb, "\\u003c");
+            else pt_sbuf_add(sb, "<");
+            break;
+        default:
+            if (*p < 0x20) pt_sbuf_addf(sb, "\\u%04x", (unsigned)*p);
+            else pt_sbuf_addn(sb, (const char *)p, 1);
+        }
+    }
+    pt_sbuf_add(sb, "\"");
+}

@@ -1,0 +1,205 @@
+#!/bin/sh
+# tests/diff.sh -- pipetrace diff: every known mistake, built as a student stage, is named
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/diff.sh PIPETRACE.  Run from the repository root.  Builds
+# pipetrace once more in a temporary directory with each file of tests/student/
+# in place of its stage (make STAGE_x=FILE, the Makefile's student block),
+# renders a scene of tests/data/diff/ that exposes the mistake, and checks that
+# `PIPETRACE diff REFERENCE STUDENT` exits 1 and names that mistake and no
+# other.  Then: agreeing traces, text against JSON Lines, bad input, images.
+exe=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+data=tests/data/diff
+passed=0
+failed=0
+
+check() {   # check DESCRIPTION COMMAND...: the command must succeed
+    d=$1; shift
+    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
+    else failed=$((failed + 1)); echo "FAIL $d"; fi
+}
+
+# student VAR FILE: build $tmp/sb/pipetrace with FILE as stage VAR.  MAKEFLAGS
+# is cleared so that a `make test` around this script passes nothing down.
+student() {
+    MAKEFLAGS= MFLAGS= MAKELEVEL= make -s -j2 B="$tmp/sb" "STAGE_$1=$2" \
+        "$tmp/sb/pipetrace" >"$tmp/make.log" 2>&1
+}
+
+# mistake ID SCENE FORMAT NAME: diff the reference's trace of SCENE (in FORMAT)
+# against the student build's (JSON Lines); the output must name NAME only.
+mistake() {
+    id=$1 scene=$2 fmt=$3 name=$4
+    "$exe" "$scene" --format "$fmt" --trace "$tmp/want.$fmt"
+    "$tmp/sb/pipetrace" "$scene" --format jsonl --trace "$tmp/got.jsonl"
+    "$exe" diff "$tmp/want.$fmt" "$tmp/got.jsonl" >"$tmp/out" 2>&1; rc=$?
+    check "$id exit 1" test "$rc" = 1
+    check "$id names '$name'" grep -qF "likely mistake: $name" "$tmp/out"
+    check "$id ... and no other mistake" \
+        test "$(grep 'likely mistake' "$tmp/out" | grep -cvF "$name")" = 0
+    awk 'BEGIN { RS = "" } { p = $0 } END { print p }' "$tmp/out" | tr '\n' ' ' >"$tmp/summary"
+    check "$id ... in the summary too" grep -qF "Likely mistake${5- there}: $name" "$tmp/summary"
+    [ "$failed" -gt "$failed_before" ] && sed 's/^/  /' "$tmp/out" | head -30
+    failed_before=$failed
+}
+failed_before=0
+
+# ---- one student stage per known mistake
+if ! student camera tests/student/s1_subtract.c; then
+    failed=$((failed + 1)); echo "FAIL diff-0 student build"; sed 's/^/  /' "$tmp/make.log" | head -20
+    echo "$passed passed, $failed failed"; exit 1
+fi
+check "diff-0.1 the student build goes to its own directory" test -x "$tmp/sb/pipetrace"
+mistake diff-1.1 $data/offset.scene jsonl "translation subtracted"
+student projection tests/student/s2_divz.c
+mistake diff-1.2 $data/offset.scene jsonl "projection divides by z_c instead of -z_c"
+student pixel tests/student/s3_two.c
+mistake diff-1.3 $data/offset.scene jsonl "2 instead of 2.001"
+student pixel tests/student/s3_swapwh.c
+mistake diff-1.4 $data/offset.scene jsonl "w and h swapped"
+student viewport tests/student/s4_cround.c
+mistake diff-1.5 $data/ties.scene jsonl "C round() instead of Java's Math.round"
+# a text EXPECTED prints -2.500000: still a tie, so floor(x + 0.5) is not named
+mistake diff-1.6 $data/ties.scene text "C round() instead of Java's Math.round"
+student viewport tests/student/s4_floor.c
+mistake diff-1.7 $data/floor.scene jsonl "floor(x + 0.5) instead of Java's Math.round" ""
+student viewport tests/student/s4_noflip.c
+mistake diff-1.8 $data/offset.scene jsonl "missing y flip"
+student viewport tests/student/s4_nominus1.c
+mistake diff-1.9 $data/offset.scene jsonl "missing -1 in x_vp"
+mistake diff-1.10 $data/offset.scene text "missing -1 in x_vp"
+student index tests/student/s6_xh.c
+mistake diff-1.11 $data/offset.scene jsonl "index x * H + y"
+# the viewport at 0,0: no framebuffer records, the viewport's stand in
+mistake diff-1.12 $data/ties.scene jsonl "index x * H + y"
+student index tests/student/s6_vpw.c
+mistake diff-1.13 $data/offset.scene jsonl "viewport width instead of framebuffer width"
+
+# floor(x + 0.5) in a vertex record needs y_pp = 0.49999999999999994, which s3
+# cannot produce (0.5 + w/2.001 * (y_ip + 1) is 0.5 or at least 2^-53 away):
+# a hand-made pair of traces
+"$exe" diff $data/floor-vertex-expected.jsonl $data/floor-vertex-actual.jsonl >"$tmp/out" 2>&1
+check "diff-1.14 floor(x + 0.5) in a vertex record: exit 1" test $? = 1
+check "diff-1.15 ... named" grep -qF "likely mistake: floor(x + 0.5)" "$tmp/out"
+check "diff-1.16 ... alone" test "$(grep -c 'likely mistake' "$tmp/out")" = 1
+
+# the worked example of docs/teaching.md shows these two prepared traces
+"$exe" $data/ties.scene --format jsonl --trace "$tmp/ties.jsonl"
+student viewport tests/student/s4_cround.c
+"$tmp/sb/pipetrace" $data/ties.scene --format jsonl --trace "$tmp/ties-cround.jsonl"
+check "diff-1.17 $data/ties.jsonl is today's reference trace (else: make, then $exe $data/ties.scene --format jsonl --trace $data/ties.jsonl)" \
+    cmp "$tmp/ties.jsonl" $data/ties.jsonl
+check "diff-1.18 $data/ties-cround.jsonl is today's student trace (else: make STAGE_viewport=tests/student/s4_cround.c, then build-student/pipetrace ...)" \
+    cmp "$tmp/ties-cround.jsonl" $data/ties-cround.jsonl
+
+# ---- agreeing traces: exit 0
+for s in offset ties floor; do
+    "$exe" $data/$s.scene --format jsonl --trace "$tmp/$s.jsonl"
+    "$exe" $data/$s.scene --trace "$tmp/$s.txt"
+    "$exe" $data/$s.scene --all-stages --precision 3 --trace "$tmp/$s-all.txt"
+done
+"$exe" docs/examples/cube.scene --format jsonl --trace "$tmp/cube.jsonl"
+"$exe" docs/examples/cube.scene --trace "$tmp/cube.txt"
+"$exe" diff "$tmp/offset.jsonl" "$tmp/offset.jsonl" >"$tmp/out" 2>&1
+check "diff-2.1 a trace against itself: exit 0" test $? = 0
+check "diff-2.2 ... says they agree" grep -q "^The traces agree: 4 of 4 vertices" "$tmp/out"
+for s in offset ties floor cube; do
+    "$exe" diff "$tmp/$s.txt" "$tmp/$s.jsonl" >/dev/null 2>&1
+    check "diff-2.3 $s: text against JSON Lines: exit 0" test $? = 0
+    "$exe" diff "$tmp/$s.jsonl" "$tmp/$s.txt" >/dev/null 2>&1
+    check "diff-2.4 $s: JSON Lines against text: exit 0" test $? = 0
+done
+"$exe" diff "$tmp/offset-all.txt" "$tmp/offset.jsonl" >"$tmp/out" 2>&1
+check "diff-2.5 --all-stages --precision 3 against the default: exit 0" test $? = 0
+"$exe" diff "$tmp/ties-all.txt" "$tmp/ties.jsonl" >"$tmp/out" 2>&1
+check "diff-2.6 stages in one trace only are not compared, and said so" \
+    grep -q "^Not compared: camera records are only in EXPECTED (3)" "$tmp/out"
+"$exe" diff "$tmp/cube.txt" "$tmp/cube.jsonl" --rel 0 >/dev/null 2>&1
+check "diff-2.7 --rel 0: text still agrees within its printed digits" test $? = 0
+
+# ---- differences without a known mistake
+"$exe" docs/examples/two-models.scene --format jsonl --trace "$tmp/two.jsonl"
+"$exe" docs/examples/two-models.scene --format jsonl --model square --trace "$tmp/square.jsonl"
+"$exe" diff "$tmp/two.jsonl" "$tmp/square.jsonl" >"$tmp/out" 2>&1
+check "diff-3.1 a vertex in one trace only: exit 1" test $? = 1
+check "diff-3.2 ... listed" grep -q "^only in EXPECTED: arrow v1, arrow v2" "$tmp/out"
+sed 's/"x":1.25,/"x":1.2500001,/' "$tmp/offset.jsonl" > "$tmp/nudged.jsonl"
+"$exe" diff "$tmp/offset.jsonl" "$tmp/nudged.jsonl" >"$tmp/out" 2>&1
+check "diff-3.3 x_c off by 1e-7: exit 1" test $? = 1
+check "diff-3.4 ... first differs at camera" grep -q "^box v2: differs first at camera" "$tmp/out"
+check "diff-3.5 ... no mistake reproduces it" grep -q "no known mistake reproduces this" "$tmp/out"
+"$exe" diff "$tmp/offset.jsonl" "$tmp/nudged.jsonl" --tol 1e-6 >/dev/null 2>&1
+check "diff-3.6 ... within --tol 1e-6: exit 0" test $? = 0
+"$exe" diff "$tmp/offset.jsonl" "$tmp/nudged.jsonl" --rel 1e-6 >/dev/null 2>&1
+check "diff-3.7 ... within --rel 1e-6: exit 0" test $? = 0
+
+# ---- lit pixels against an independent count (sort and comm)
+student pixel tests/student/s3_two.c
+"$tmp/sb/pipetrace" $data/offset.scene --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/offset.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1
+for f in offset got; do
+    grep '"type":"pixel"' "$tmp/$f.jsonl" | sed 's/.*"x":\([-0-9]*\),"y":\([-0-9]*\),"i":\([-0-9]*\).*/\1 \2 \3/' |
+        sort -u > "$tmp/$f.px"
+done
+miss=$(comm -23 "$tmp/offset.px" "$tmp/got.px" | wc -l | tr -d ' ')
+extra=$(comm -13 "$tmp/offset.px" "$tmp/got.px" | wc -l | tr -d ' ')
+check "diff-4.1 missing pixels counted ($miss)" grep -q "^  missing in ACTUAL: $miss\$" "$tmp/out"
+check "diff-4.2 extra pixels counted ($extra)" grep -q "^  extra in ACTUAL: $extra\$" "$tmp/out"
+
+# ---- unreadable input: exit 2, FILE:LINE:COL: error:
+head -2 "$tmp/offset.jsonl" > "$tmp/bad.jsonl"
+echo '{"type":"vertex","model":"box","v":1,"stage":"pixel","x":1.5,"y":}' >> "$tmp/bad.jsonl"
+"$exe" diff "$tmp/offset.jsonl" "$tmp/bad.jsonl" >"$tmp/out" 2>"$tmp/err"
+check "diff-5.1 a malformed JSON line: exit 2" test $? = 2
+check "diff-5.2 ... FILE:LINE:COL: error:" grep -q "^$tmp/bad.jsonl:3:66: error: " "$tmp/err"
+sed '9s/x_c  =/x_c  = oops/' "$tmp/offset.txt" > "$tmp/bad.txt"
+"$exe" diff "$tmp/bad.txt" "$tmp/offset.jsonl" >"$tmp/out" 2>"$tmp/err"
+check "diff-5.3 a malformed text line: exit 2" test $? = 2
+check "diff-5.4 ... FILE:LINE:COL: error:" grep -q "^$tmp/bad.txt:9:[0-9]*: error: " "$tmp/err"
+"$exe" diff "$tmp/offset.jsonl" "$tmp/nosuch.jsonl" >/dev/null 2>"$tmp/err"
+check "diff-5.5 a missing file: exit 2" test $? = 2
+cat "$tmp/offset.jsonl" "$tmp/offset.jsonl" > "$tmp/twice.jsonl"
+"$exe" diff "$tmp/offset.jsonl" "$tmp/twice.jsonl" >/dev/null 2>"$tmp/err"
+check "diff-5.6 a record twice: exit 2" test $? = 2
+"$exe" docs/examples/cube.scene --format csv --trace "$tmp/cube.csv"
+"$exe" diff "$tmp/cube.csv" "$tmp/cube.jsonl" >/dev/null 2>"$tmp/err"
+check "diff-5.7 CSV is refused: exit 2" test $? = 2
+"$exe" diff "$tmp/offset.jsonl" >/dev/null 2>&1
+check "diff-5.8 one file: usage error, exit 1" test $? = 1
+"$exe" diff "$tmp/offset.jsonl" "$tmp/offset.jsonl" --image-out "$tmp/x.ppm" >/dev/null 2>&1
+check "diff-5.9 --image-out with traces: usage error, exit 1" test $? = 1
+"$exe" diff --help >"$tmp/out" 2>&1
+check "diff-5.10 --help" grep -q "^usage: pipetrace diff" "$tmp/out"
+
+# ---- images: a 4 x 2 black image and one with 3 pixels changed
+printf 'P6\n4 2\n255\n' > "$tmp/a.ppm"
+printf '\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0' >> "$tmp/a.ppm"
+printf 'P6\n4 2\n255\n' > "$tmp/b.ppm"
+printf '\0\0\0\377\377\377\0\0\0\0\0\0\0\0\0\0\0\0\0\0\1\0\0\0' >> "$tmp/b.ppm"
+printf '\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0' > "$tmp/zero"
+check "diff-6.0 the test images are 35 bytes" test "$(wc -c < "$tmp/b.ppm")" = 35
+"$exe" diff "$tmp/a.ppm" "$tmp/a.ppm" >/dev/null 2>&1
+check "diff-6.1 an image against itself: exit 0" test $? = 0
+"$exe" diff "$tmp/a.ppm" "$tmp/b.ppm" --image-out "$tmp/hl.ppm" >"$tmp/out" 2>&1
+check "diff-6.2 two pixels differ: exit 1" test $? = 1
+check "diff-6.3 ... counted, with their box" \
+    grep -q "^2 of 8 pixels differ, all within the box (x, y) = (1, 0) .. (2, 1)\.\$" "$tmp/out"
+check "diff-6.4 ... listed with both colors" grep -q "^  (1, 0)  expected   0   0   0  actual 255 255 255\$" "$tmp/out"
+check "diff-6.5 the highlight is a 4 x 2 PPM" test "$(head -c 11 "$tmp/hl.ppm" | tr '\n' ' ')" = "P6 4 2 255 "
+check "diff-6.6 ... differing pixels red, the rest dimmed" \
+    test "$(od -An -tu1 -j11 "$tmp/hl.ppm" | tr -s ' \n' '  ')" = " 0 0 0 255 0 0 0 0 0 0 0 0 0 0 0 0 0 0 255 0 0 0 0 0 "
+printf 'P6\n5 2\n255\n' > "$tmp/c.ppm"
+cat "$tmp/zero" "$tmp/zero" | head -c 30 >> "$tmp/c.ppm"
+"$exe" diff "$tmp/a.ppm" "$tmp/c.ppm" >"$tmp/out" 2>&1
+check "diff-6.7 different sizes: exit 1" test $? = 1
+check "diff-6.8 ... the extra column counts as different" grep -q "^2 of 10 pixels differ" "$tmp/out"
+head -c 20 "$tmp/a.ppm" > "$tmp/short.ppm"
+"$exe" diff "$tmp/a.ppm" "$tmp/short.ppm" >/dev/null 2>"$tmp/err"
+check "diff-6.9 a cut-short image: exit 2" test $? = 2
+"$exe" diff "$tmp/a.ppm" "$tmp/offset.jsonl" >/dev/null 2>&1
+check "diff-6.10 an image against a trace: exit 1" test $? = 1
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,459 @@
+/*
+** tests/test_accuracy.c -- the three arithmetics of src/accuracy.c
+** See LICENSE for copyright and license.
+**
+** Usage: test_accuracy [REFERENCE_DIR], from the repository root.  Checks:
+** the double-double operations and Java rounding of a double-double; that the
+** double journey is the stages' journey, value for value, for every vertex of
+** every scene in REFERENCE_DIR (default tests/reference), tests/extreme and
+** docs/examples; that the double DDA lights exactly src/raster.c's pixels;
+** that the float DDA (with its fast-forward) lights the plain float loop's;
+** that the reference DDA lights the exact line's, ties included; and what
+** pt_acc_compare() reports on scenes whose answer is known.
+*/
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testhelp.h"
+#include "accuracy.h"
+#include "pipeline.h"
+#include "raster.h"
+
+/* ===== double-double ===== */
+
+static pt_dd dd(double hi, double lo)
+{
+    pt_dd r;
+    r.hi = hi;
+    r.lo = lo;
+    return r;
+}
+
+static int64_t round_dd(double hi, double lo)
+{
+    int64_t r;
+    return pt_dd_pix_round(dd(hi, lo), &r) ? r : -999999;
+}
+
+static void test_dd(void)
+{
+    pt_dd third = pt_dd_div(pt_dd_from(1.0), pt_dd_from(3.0));
+    pt_dd k = pt_dd_div(pt_dd_from(2001.0), pt_dd_from(1000.0));
+    pt_dd d = pt_dd_add(k, pt_dd_neg(pt_dd_2001));
+    pt_dd one = pt_dd_mul(third, pt_dd_from(3.0));
+    pt_dd s = pt_dd_add(pt_dd_from(1.0), pt_dd_from(1e-30));
+    double r;
+    int64_t big = 4611686018427387903LL, v;
+
+    PT_CHECK("acc-1.1 1 + 1e-30 keeps both parts", s.hi == 1.0 && s.lo == 1e-30);
+    r = fma(-3.0, third.lo, fma(-3.0, third.hi, 1.0));
+    PT_CHECK("acc-1.2 1/3 within 2^-104", fabs(r) < 0x1p-104);
+    PT_CHECK("acc-1.3 (1/3) * 3 = 1 within 2^-104",
+             fabs(pt_dd_add(one, pt_dd_from(-1.0)).hi) < 0x1p-104);
+    PT_CHECK("acc-1.4 2001/1000 computed = the constant, within 2^-104",
+             fabs(d.hi) < 0x1p-104 * 2.001);
+    PT_CHECK("acc-1.5 the constant's hi is the double 2.001", pt_dd_2001.hi == 2.001);
+    r = fma(-1000.0, pt_dd_2001.lo, fma(-1000.0, pt_dd_2001.hi, 2001.0));
+    PT_CHECK("acc-1.6 the constant is within 2^-110 of 2001/1000", fabs(r / 2001.0) < 0x1p-110);
+    s = pt_dd_from_i64(big);
+    PT_CHECK("acc-1.7 2^62 - 1 held exactly",
+             (int64_t)s.hi - big + (int64_t)s.lo == 0 && s.hi == 0x1p62 && s.lo == -1.0);
+    s = pt_dd_from_i64(-big);
+    PT_CHECK("acc-1.8 -(2^62 - 1) held exactly", s.hi == -0x1p62 && s.lo == 1.0);
+    PT_CHECK("acc-1.9 -0 + -0 = -0, as in double",
+             signbit(pt_dd_add(pt_dd_from(-0.0), pt_dd_from(-0.0)).hi) != 0);
+    PT_CHECK("acc-1.10 -0 + 0 = +0, as in double",
+             signbit(pt_dd_add(pt_dd_from(-0.0), pt_dd_from(0.0)).hi) == 0);
+    PT_CHECK("acc-1.11 1 / -0 = -inf",
+             pt_dd_div(pt_dd_from(1.0), pt_dd_neg(pt_dd_from(0.0))).hi == -(double)INFINITY);
+    PT_CHECK("acc-1.12 0 / 0 = NaN", isnan(pt_dd_div(pt_dd_from(0.0), pt_dd_from(0.0)).hi));
+    PT_CHECK("acc-1.13 1e308 + 1e308 = inf, lo 0",
+             isinf(pt_dd_add(pt_dd_from(1e308), pt_dd_from(1e308)).hi));
+
+    PT_CHECK("acc-2.1 round 2.5 = 3 (tie up)", round_dd(2.5, 0.0) == 3);
+    PT_CHECK("acc-2.2 round 2.5 - 1e-30 = 2", round_dd(2.5, -1e-30) == 2);
+    PT_CHECK("acc-2.3 round -2.5 = -2 (tie up)", round_dd(-2.5, 0.0) == -2);
+    PT_CHECK("acc-2.4 round -2.5 - 1e-30 = -3", round_dd(-2.5, -1e-30) == -3);
+    PT_CHECK("acc-2.5 round -2.5 + 1e-30 = -2", round_dd(-2.5, 1e-30) == -2);
+    PT_CHECK("acc-2.6 round 0.49999999999999994 = 0", round_dd(0.49999999999999994, 0.0) == 0);
+    PT_CHECK("acc-2.7 round 2^53 + 0.5 = 2^53 + 1", round_dd(0x1p53, 0.5) == (1LL << 53) + 1);
+    PT_CHECK("acc-2.8 round 2^53 - 0.5 = 2^53", round_dd(0x1p53, -0.5) == (1LL << 53));
+    PT_CHECK("acc-2.9 round 2^53 - 0.75 = 2^53 - 1", round_dd(0x1p53, -0.75) == (1LL << 53) - 1);
+    PT_CHECK("acc-2.10 round 7 - 1e-20 = 7", round_dd(7.0, -1e-20) == 7);
+    PT_CHECK("acc-2.11 no pixel at 2^62", !pt_dd_pix_round(dd(0x1p62, 0.0), &v));
+    PT_CHECK("acc-2.12 no pixel for NaN", !pt_dd_pix_round(dd((double)NAN, 0.0), &v));
+    PT_CHECK("acc-2.13 round 2^62 - 1 exists", round_dd(0x1p62, -1.0) == big);
+}
+
+/* ===== scenes ===== */
+
+/* Every record of one run of the stages, indexed by vertex and stage. */
+typedef struct got {
+    const pt_scene *s;
+    size_t *base, cur;
+    pt_vrec *rec;
+    unsigned char *have;
+} got;
+
+static void on_begin(void *ud, const pt_model *m, uint64_t v)
+{
+    got *g = ud;
+    g->cur = g->base[m - g->s->models] + (size_t)(v - 1);
+}
+
+static void on_vertex(void *ud, const pt_vrec *r)
+{
+    got *g = ud;
+
+    if (r->stage >= PT_NSTAGES) return;
+    g->rec[g->cur * PT_NSTAGES + r->stage] = *r;
+    g->have[g->cur * PT_NSTAGES + r->stage] = 1;
+}
+
+static int same(double a, double b)             /* bit for bit, -0 is not 0 */
+{
+    return a == b ? signbit(a) == signbit(b) : (isnan(a) && isnan(b));
+}
+
+/* Pixels of one segment, as x_vp, y_vp pairs. */
+typedef struct pixels { int64_t xy[2 * 40000]; size_t n; int over; } pixels;
+
+static void px_add(void *ud, int64_t x, int64_t y)
+{
+    pixels *p = ud;
+
+    if (p->n >= 40000) { p->over = 1; return; }
+    p->xy[2 * p->n] = x;
+    p->xy[2 * p->n + 1] = y;
+    p->n++;
+}
+
+static void px_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
+{
+    (void)ud; (void)count; (void)first; (void)last;
+}
+
+static int same_pixels(const pixels *a, const pixels *b)
+{
+    return !a->over && !b->over && a->n == b->n &&
+           memcmp(a->xy, b->xy, 2 * a->n * sizeof a->xy[0]) == 0;
+}
+
+static pixels pa, pb;                           /* big: not on the stack */
+
+/* The double DDA against pt_raster_segment().  Returns 1 when they agree. */
+static int dda_agrees(pt_vec2 p0, pt_vec2 p1, int w, int h)
+{
+    pt_raster_out out = {px_add, px_clip, &pa};
+
+    pa.n = pb.n = 0;
+    pa.over = pb.over = 0;
+    pt_raster_segment(p0, p1, w, h, &out);
+    pt_acc_raster_segment(PT_ARITH_DOUBLE, 0, pt_dd_from(p0.x), pt_dd_from(p0.y),
+                          pt_dd_from(p1.x), pt_dd_from(p1.y), w, h, px_add, &pb);
+    return same_pixels(&pa, &pb);
+}
+
+/* One scene: the double journey of every used vertex against the stages'
+** records, and every segment's double DDA against src/raster.c. */
+static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
+                        size_t *bad_vertices, size_t *bad_segments)
+{
+    char err[PT_ERRLEN];
+    pt_scene s;
+    pt_options o;
+    pt_plan p;
+    pt_listener l;
+    pt_summary sum;
+    got g;
+    size_t k, v, q, nv = 0;
+
+    if (pt_scene_load(&s, path, err, sizeof err) != 0) return;
+    if (s.matrix) { pt_scene_free(&s); return; }
+    pt_options_default(&o);
+    o.all_stages = 1;
+    o.trace_raster = 0;
+    o.rasterize = 0;
+    if (pt_plan_make(&p, &s, &o) != 0) { pt_scene_free(&s); return; }
+    memset(&g, 0, sizeof g);
+    g.s = &s;
+    g.base = calloc(s.nmodels + 1, sizeof *g.base);
+    for (k = 0; k < s.nmodels; k++) { g.base[k] = nv; nv += s.models[k].nv; }
+    g.rec = calloc(nv * PT_NSTAGES + 1, sizeof *g.rec);
+    g.have = calloc(nv * PT_NSTAGES + 1, 1);
+    memset(&l, 0, sizeof l);
+    l.vertex_begin = on_begin;
+    l.sink.vertex = on_vertex;
+    l.sink.ud = &g;
+    l.ud = &g;
+    pt_run(&s, &p, &o, &l, NULL, &sum);
+
+    for (k = 0; k < s.nmodels; k++) {
+        const pt_model *m = &s.models[k];
+
+        for (v = 0; v < m->nv; v++) {
+            const pt_vrec *r = &g.rec[(g.base[k] + v) * PT_NSTAGES];
+            const unsigned char *have = &g.have[(g.base[k] + v) * PT_NSTAGES];
+            pt_acc_journey j;
+            int ok;
+
+            if (!have[PT_STAGE_INDEX]) continue;    /* not used: not transformed */
+            pt_acc_journey_of(PT_ARITH_DOUBLE, 0, &s, m, m->v[v], &j);
+            ok = same(j.c[0].hi, r[PT_STAGE_CAMERA].x) && same(j.c[1].hi, r[PT_STAGE_CAMERA].y)
+              && same(j.c[2].hi, r[PT_STAGE_CAMERA].z)
+              && same(j.ip[0].hi, r[PT_STAGE_IMAGE].x) && same(j.ip[1].hi, r[PT_STAGE_IMAGE].y)
+              && same(j.pp[0].hi, r[PT_STAGE_PIXEL].x) && same(j.pp[1].hi, r[PT_STAGE_PIXEL].y)
+              && j.vp.ok == !(r[PT_STAGE_VIEWPORT].flags & PT_REC_NULL)
+              && (!j.vp.ok || (j.vp.x == r[PT_STAGE_VIEWPORT].ix
+                               && j.vp.y == r[PT_STAGE_VIEWPORT].iy))
+              && j.fb.ok == !(r[PT_STAGE_FRAMEBUFFER].flags & PT_REC_NULL)
+              && (!j.fb.ok || (j.fb.x == r[PT_STAGE_FRAMEBUFFER].ix
+                               && j.fb.y == r[PT_STAGE_FRAMEBUFFER].iy))
+              && (j.idx < 0) == !!(r[PT_STAGE_INDEX].flags & PT_REC_NULL)
+              && (j.idx < 0 || j.idx == r[PT_STAGE_INDEX].i);
+            (*nvertices)++;
+            if (!ok) { (*bad_vertices)++; printf("  %s: model %s vertex %zu differs\n", path, m->name, v + 1); }
+        }
+        for (q = 0; q < m->nseg; q++) {
+            const pt_vrec *a = &g.rec[(g.base[k] + m->seg[q].a) * PT_NSTAGES + PT_STAGE_PIXEL];
+            const pt_vrec *b = &g.rec[(g.base[k] + m->seg[q].b) * PT_NSTAGES + PT_STAGE_PIXEL];
+            pt_vec2 p0 = {a->x, a->y}, p1 = {b->x, b->y};
+
+            (*nsegments)++;
+            if (!dda_agrees(p0, p1, s.vp_w, s.vp_h)) {
+                (*bad_segments)++;
+                printf("  %s: model %s segment %zu: pixels differ\n", path, m->name, q + 1);
+            }
+        }
+    }
+    free(g.base); free(g.rec); free(g.have);
+    pt_plan_free(&p);
+    pt_scene_free(&s);
+}
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static void check_dir(const char *dir, size_t *nscenes, size_t *nv, size_t *ns,
+                      size_t *bv, size_t *bs)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char *names[4096], path[4096];
+    size_t n = 0, k;
+
+    while (d && (e = readdir(d)) != NULL && n < 4096) {
+        size_t len = strlen(e->d_name);
+        if (len > 6 && strcmp(e->d_name + len - 6, ".scene") == 0) {
+            names[n] = malloc(len + 1);
+            memcpy(names[n], e->d_name, len + 1);
+            n++;
+        }
+    }
+    if (d) closedir(d);
+    qsort(names, n, sizeof names[0], by_name);
+    for (k = 0; k < n; k++) {
+        snprintf(path, sizeof path, "%s/%s", dir, names[k]);
+        check_scene(path, nv, ns, bv, bs);
+        free(names[k]);
+    }
+    *nscenes += n;
+}
+
+/* ===== the DDAs on random segments ===== */
+
+static uint64_t rng = 0x9e3779b97f4a7c15ULL;
+
+static double uniform(double lo, double hi)     /* xorshift64*, reproducible */
+{
+    rng ^= rng >> 12; rng ^= rng << 25; rng ^= rng >> 27;
+    return lo + (hi - lo) * (double)((rng * 2685821657736338717ULL) >> 11) * 0x1p-53;
+}
+
+static float jround_f(float x)                  /* Java's Math.round, in float */
+{
+    float r = floorf(x);
+    return x - r >= 0.5f ? r + 1.0f : r;
+}
+
+/* The plain float DDA: every step, y += m in float, no fast-forward. */
+static void plain_float_dda(float px0, float py0, float px1, float py1, int w, int h,
+                            pixels *out)
+{
+    float x0 = jround_f(px0), y0 = jround_f(py0), x1 = jround_f(px1), y1 = jround_f(py1);
+    float m, acc, t;
+    int tr;
+    int64_t s;
+
+    if (x0 == x1 && y0 == y1) {
+        int64_t xv = (int64_t)x0 - 1, yv = h - (int64_t)y0;
+        if (xv >= 0 && xv < w && yv >= 0 && yv < h) px_add(out, xv, yv);
+        return;
+    }
+    tr = fabsf(y1 - y0) > fabsf(x1 - x0);
+    if (tr) { t = x0; x0 = y0; y0 = t; t = x1; x1 = y1; y1 = t; }
+    if (x1 < x0) { t = x0; x0 = x1; x1 = t; t = y0; y0 = y1; y1 = t; }
+    m = (y1 - y0) / (x1 - x0);
+    acc = y0;
+    for (s = (int64_t)x0; s <= (int64_t)x1; s++) {
+        int64_t r = (int64_t)jround_f(acc);
+        int64_t xv = tr ? r - 1 : s - 1, yv = tr ? h - s : h - r;
+
+        if (xv >= 0 && xv < w && yv >= 0 && yv < h) px_add(out, xv, yv);
+        acc += m;
+    }
+}
+
+/* The exact DDA in integers: at step s, y = y0 + (s - s0) * dy / ds exactly,
+** rounded the Java way: floor((2 * num + den) / (2 * den)). */
+static void exact_dda(int64_t x0, int64_t y0, int64_t x1, int64_t y1, int w, int h,
+                      pixels *out)
+{
+    int64_t s, t;
+    int tr;
+
+    if (x0 == x1 && y0 == y1) {
+        if (x0 - 1 >= 0 && x0 - 1 < w && h - y0 >= 0 && h - y0 < h) px_add(out, x0 - 1, h - y0);
+        return;
+    }
+    tr = llabs(y1 - y0) > llabs(x1 - x0);
+    if (tr) { t = x0; x0 = y0; y0 = t; t = x1; x1 = y1; y1 = t; }
+    if (x1 < x0) { t = x0; x0 = x1; x1 = t; t = y0; y0 = y1; y1 = t; }
+    for (s = x0; s <= x1; s++) {
+        int64_t num = y0 * (x1 - x0) + (s - x0) * (y1 - y0), den = x1 - x0;
+        int64_t a = 2 * num + den, b = 2 * den;
+        int64_t r = a >= 0 ? a / b : -((-a + b - 1) / b);      /* floor(a / b) */
+        int64_t xv = tr ? r - 1 : s - 1, yv = tr ? h - s : h - r;
+
+        if (xv >= 0 && xv < w && yv >= 0 && yv < h) px_add(out, xv, yv);
+    }
+}
+
+static void test_random_ddas(void)
+{
+    int k, bad_d = 0, bad_f = 0, bad_x = 0, w = 37, h = 23;
+
+    for (k = 0; k < 3000; k++) {                    /* double: src/raster.c */
+        double far = k % 3 == 0 ? 1e7 : k % 3 == 1 ? 1e4 : 100;
+        pt_vec2 p0 = {uniform(-far, w + 1), uniform(-10, h + 10)};
+        pt_vec2 p1 = {uniform(-5, w + far), uniform(-h, 2 * h)};
+        if (k % 2) { double t = p0.x; p0.x = p0.y; p0.y = t; t = p1.x; p1.x = p1.y; p1.y = t; }
+        if (!dda_agrees(p0, p1, w, h)) bad_d++;
+    }
+    PT_CHECK("acc-4.1 the double DDA lights src/raster.c's pixels (3000 random segments)",
+             bad_d == 0);
+
+    for (k = 0; k < 600; k++) {                     /* float: the plain loop */
+        float far = k % 2 ? 1e5f : 50.0f;
+        float x0 = (float)uniform(-(double)far, w + 1), y0 = (float)uniform(-10, h + 10);
+        float x1 = (float)uniform(-5, w + (double)far), y1 = (float)uniform(-h, 2 * h);
+
+        if (k % 4 == 3) { float t = x0; x0 = y0; y0 = t; t = x1; x1 = y1; y1 = t; }
+        pa.n = pb.n = 0; pa.over = pb.over = 0;
+        plain_float_dda(x0, y0, x1, y1, w, h, &pa);
+        pt_acc_raster_segment(PT_ARITH_FLOAT, 0, pt_dd_from((double)x0), pt_dd_from((double)y0),
+                              pt_dd_from((double)x1), pt_dd_from((double)y1), w, h, px_add, &pb);
+        if (!same_pixels(&pa, &pb)) bad_f++;
+    }
+    PT_CHECK("acc-4.2 the float DDA, fast-forward included, lights the plain float "
+             "loop's pixels (600 random segments, up to 1e5 steps)", bad_f == 0);
+
+    for (k = 0; k < 3000; k++) {                    /* reference: the exact line */
+        int64_t x0 = (int64_t)uniform(-60, 60), y0 = (int64_t)uniform(-40, 60);
+        int64_t x1 = (int64_t)uniform(-60, 100), y1 = (int64_t)uniform(-40, 60);
+
+        pa.n = pb.n = 0; pa.over = pb.over = 0;
+        exact_dda(x0, y0, x1, y1, w, h, &pa);
+        pt_acc_raster_segment(PT_ARITH_DD, 0, pt_dd_from((double)x0), pt_dd_from((double)y0),
+                              pt_dd_from((double)x1), pt_dd_from((double)y1), w, h, px_add, &pb);
+        if (!same_pixels(&pa, &pb)) bad_x++;
+    }
+    PT_CHECK("acc-4.3 the reference DDA lights the exact line's pixels, ties "
+             "included (3000 random integer segments)", bad_x == 0);
+
+    pa.n = pb.n = 0;
+    pt_acc_raster_segment(PT_ARITH_DD, 0, pt_dd_from(1), pt_dd_from(1), pt_dd_from(7),
+                          pt_dd_from(2), 10, 10, px_add, &pa);
+    PT_CHECK("acc-4.4 (1,1)-(7,2): at x = 4, y = 1.5 exactly rounds up to 2",
+             pa.n == 7 && pa.xy[6] == 3 && pa.xy[7] == 8);
+}
+
+/* ===== what pt_acc_compare() reports ===== */
+
+static int load(pt_scene *s, const char *path)
+{
+    char err[PT_ERRLEN];
+    int rc = pt_scene_load(s, path, err, sizeof err);
+
+    if (rc != 0) printf("  %s\n", err);
+    return rc == 0;
+}
+
+static void test_compare(void)
+{
+    pt_scene s;
+    pt_acc_run ref, f, d, two;
+    pt_acc_err e[PT_ACC_NROWS], ed[PT_ACC_NROWS];
+    int row, zero = 1;
+
+    PT_CHECK("acc-5.0 loads tests/extreme/cancel-translate.scene",
+             load(&s, "tests/extreme/cancel-translate.scene"));
+    pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
+    pt_acc_run_make(&f, &s, PT_ARITH_FLOAT, 0);
+    pt_acc_run_make(&d, &s, PT_ARITH_DOUBLE, 0);
+    pt_acc_compare(&ref, &f, e);
+    pt_acc_compare(&ref, &d, ed);
+    PT_CHECK("acc-5.1 cancel-translate: float's model stage has an error (1000000000.1 "
+             "is not a float)", e[PT_ACC_MODEL].max_abs > 0 && e[PT_ACC_MODEL].differ == 1);
+    PT_CHECK("acc-5.2 ... and its camera x_c is off by about 0.1 (cancellation)",
+             e[PT_ACC_CAMERA].max_abs > 0.05 && e[PT_ACC_CAMERA].max_abs < 0.2);
+    PT_CHECK("acc-5.3 double: x_c = x_m + x_t is exactly rounded, so no error",
+             ed[PT_ACC_CAMERA].max_abs == 0 && ed[PT_ACC_CAMERA].differ == 0);
+    PT_CHECK("acc-5.4 reference: 2 used vertices", e[PT_ACC_MODEL].of == 2);
+    pt_acc_run_free(&ref); pt_acc_run_free(&f); pt_acc_run_free(&d);
+    pt_scene_free(&s);
+
+    PT_CHECK("acc-5.5 loads tests/extreme/corner-plus-one.scene",
+             load(&s, "tests/extreme/corner-plus-one.scene"));
+    pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
+    pt_acc_run_make(&d, &s, PT_ARITH_DOUBLE, 0);
+    pt_acc_run_make(&two, &s, PT_ARITH_DOUBLE, PT_ACC_TWO);
+    pt_acc_compare(&ref, &d, ed);
+    pt_acc_compare(&ref, &two, e);
+    PT_CHECK("acc-5.6 corner-plus-one: with 2.001 the corner x_ip = 1 stays inside",
+             ed[PT_ACC_VIEWPORT].left == 0 && ed[PT_ACC_VIEWPORT].differ == 0);
+    PT_CHECK("acc-5.7 ... with 2.0 it leaves the viewport", e[PT_ACC_VIEWPORT].left == 1);
+    pt_acc_compare(&ref, &ref, e);
+    for (row = 0; row < PT_ACC_NROWS; row++)
+        zero &= e[row].max_abs == 0 && e[row].differ == 0;
+    PT_CHECK("acc-5.8 the reference against itself: no error anywhere", zero);
+    pt_acc_run_free(&ref); pt_acc_run_free(&d); pt_acc_run_free(&two);
+    pt_scene_free(&s);
+}
+
+int main(int argc, char **argv)
+{
+    const char *dirs[3];
+    size_t k, nscenes = 0, nv = 0, ns = 0, bv = 0, bs = 0;
+    char descr[200];
+
+    dirs[0] = argc > 1 ? argv[1] : "tests/reference";
+    dirs[1] = "tests/extreme";
+    dirs[2] = "docs/examples";
+    test_dd();
+    for (k = 0; k < 3; k++) check_dir(dirs[k], &nscenes, &nv, &ns, &bv, &bs);
+    snprintf(descr, sizeof descr, "acc-3.1 the double journey is the stages' for all "
+             "%zu vertices of %zu scenes", nv, nscenes);
+    PT_CHECK(descr, bv == 0 && nv > 100);
+    snprintf(descr, sizeof descr, "acc-3.2 the double DDA lights src/raster.c's pixels "
+             "for all %zu segments", ns);
+    PT_CHECK(descr, bs == 0 && ns > 100);
+    test_random_ddas();
+    test_compare();
+    return pt_test_report();
+}
