@@ -16,6 +16,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "numfmt.h"
@@ -25,6 +26,21 @@ static size_t nonfinite(char *buf, double x)
     const char *s = isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
     strcpy(buf, s);
     return strlen(s);
+}
+
+/* x is an integer with |x| < 1e15: write it digit by digit ("-0" for -0.0). */
+static size_t int_digits(char *buf, double x)
+{
+    char b[24], *o = b + sizeof b;
+    uint64_t u = (uint64_t)fabs(x);
+    size_t n;
+
+    do { *--o = (char)('0' + u % 10); u /= 10; } while (u);
+    if (signbit(x)) *--o = '-';
+    n = (size_t)(b + sizeof b - o);
+    memcpy(buf, o, n);
+    buf[n] = '\0';
+    return n;
 }
 
 static int reads_back(const char *buf, double x)
@@ -99,6 +115,8 @@ size_t pt_fmt_shortest(char *buf, double x)
     int prec;
 
     if (!isfinite(x)) return nonfinite(buf, x);
+    if (fabs(x) < 1e15 && x == (double)(int64_t)x)  /* an integer: its digits, */
+        return int_digits(buf, x);                  /* as %.15g writes them */
     if (x != 0 && fabs(x) < DBL_MIN) {      /* subnormal: search from 1 digit */
         for (prec = 1; prec < 17; prec++) {
             snprintf(buf, PT_NUMLEN, "%.*g", prec, x);
