@@ -6,7 +6,9 @@
 #   make test      build and run every test; last line "N passed, N failed"
 #   make golden    rewrite traces/ from docs/examples/ (on purpose only)
 #   make docs      rewrite the outputs shown in the docs (on purpose only)
+#   make screenshots  rewrite docs/journey-* (needs chromium; on purpose only)
 #   make sanitize  run the tests under -fsanitize=address,undefined
+#   make bench     time parsing, stages, rasterizer and trace output
 #   make clean
 
 CC      ?= cc
@@ -50,12 +52,14 @@ STAGES_O = $B/pt_stage.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
            $B/m7_screen2viewport.o
 SRC_O    = $B/scene.o $B/pipeline.o $B/matrix.o $B/clip.o $B/raster.o $B/fb.o $B/numfmt.o \
-           $B/trace.o $B/outfile.o $B/builtin.o $B/explain.o $B/tread.o $B/accuracy.o
+           $B/trace.o $B/outfile.o $B/builtin.o $B/explain.o $B/tread.o $B/accuracy.o \
+           $B/png.o $B/sbuf.o $B/journey.o $B/journey_html.o
 # The subcommands, one file each.
-CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o
+CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o \
+           $B/cmd_journey.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
-           $B/test_accuracy
+           $B/test_accuracy $B/test_png
 
 all: $B/pipetrace
 
@@ -76,6 +80,8 @@ $B/builtin.c: docs/examples/builtin.scene | $B
 	awk 'BEGIN { print "#include \"builtin.h\""; print "const char pt_builtin_scene[] =" } \
 	     { gsub(/\\/, "\\\\"); gsub(/"/, "\\\""); print "    \"" $$0 "\\n\"" } \
 	     END { print "    \"\";" }' $< > $@
+$B/bench: tests/bench.c $B/libpipetrace.a
+	$(CC) $(ALLCFLAGS) -Isrc -Istages -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B/test_%: tests/test_%.c tests/testhelp.h $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -Isrc -Istages -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B:
@@ -92,7 +98,16 @@ golden: $B/pipetrace
 	sh tests/golden.sh $B/pipetrace --write
 
 docs: $B/pipetrace
-	python3 tests/docs_write.py $B/pipetrace README.md docs/*.md
+	python3 tests/docs_write.py $B/pipetrace README.md docs/*.md docs/exercises/*.md
+
+screenshots: $B/pipetrace
+	$B/pipetrace journey --vertex 1 --svg docs/journey-builtin.svg
+	sh tests/journey_browser.sh $B/pipetrace $B/journey-shots
+	cp $B/journey-shots/journey-builtin.png docs/journey-builtin.png
+	cp $B/journey-shots/journey-page-stage4.png docs/journey-page.png
+
+bench: $B/bench
+	$B/bench
 
 sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test
@@ -100,4 +115,4 @@ sanitize:
 clean:
 	rm -rf build build-san
 
-.PHONY: all run test golden docs sanitize clean
+.PHONY: all run test golden docs screenshots bench sanitize clean

@@ -306,20 +306,23 @@ static void print_choices(const study *st)
 
 /* ===== the plot ===== */
 
-/* Plot area and canvas, in SVG user units. */
+/* Canvas and plot area, in SVG user units. */
 #define SVG_W   800
 #define SVG_H   520
 #define PLOT_L  80
-#define PLOT_R  580
+#define PLOT_R  560
 #define PLOT_T  60
-#define PLOT_B  460
+#define PLOT_B  450
+#define MAXPTS  48
 
+/* One point: the stages (bits of rows) of one run that share a time and an
+** error. */
 typedef struct point {
-    double t, err;               /* ns, error (0 and inf allowed) */
+    double t, err;               /* ns, max abs error (0 and inf allowed) */
     int series;                  /* 0 float, 1 double, 2 double-double */
-    int hollow;                  /* an algorithm choice, not the arithmetic as written */
-    char label[96];
-    double px, py, ly;           /* position; label's y after spreading */
+    const char *choice;          /* an algorithm choice ("2.0: "), or NULL */
+    unsigned rows;               /* bit k: row k */
+    double px, py, ly;           /* the point; its label's baseline */
 } point;
 
 static const char *const series_color[3] = { "#d95f02", "#1b61b8", "#1b9e77" };
@@ -337,81 +340,146 @@ static void xml_text(FILE *f, const char *s)
         }
 }
 
-/* Add a point, or the stage's name to a point already there. */
-static int add_point(point *p, int n, int series, int hollow, double t, double err,
-                     const char *label)
+/* Add row's point, or add row to the same run's point with the same values. */
+static int add_point(point *p, int n, int series, const char *choice, double t,
+                     double err, int row)
 {
     int k;
 
-    if (isnan(t) || isnan(err)) return n;
+    if (isnan(t) || isnan(err) || n == MAXPTS) return n;
     for (k = 0; k < n; k++)
-        if (p[k].series == series && p[k].hollow == hollow && p[k].t == t && p[k].err == err) {
-            size_t len = strlen(p[k].label);
-            snprintf(p[k].label + len, sizeof p[k].label - len, ", %s", label);
+        if (p[k].series == series && p[k].choice == choice && p[k].t == t && p[k].err == err) {
+            p[k].rows |= 1u << row;
             return n;
         }
     memset(&p[n], 0, sizeof p[n]);
-    p[n].t = t; p[n].err = err; p[n].series = series; p[n].hollow = hollow;
-    snprintf(p[n].label, sizeof p[n].label, "%s", label);
+    p[n].t = t; p[n].err = err; p[n].series = series; p[n].choice = choice;
+    p[n].rows = 1u << row;
     return n + 1;
 }
 
-static int by_label_y(const void *a, const void *b)
+/* The label of a point: its stages, three or more in a row as "first..last". */
+static void point_label(char *b, size_t n, const point *p)
 {
-    const point *x = *(const point *const *)a, *y = *(const point *const *)b;
-    if (x->py != y->py) return x->py < y->py ? -1 : 1;
-    return strcmp(x->label, y->label);
-}
+    size_t len = 0;
+    int r = 0, end;
 
-/* Spread the labels of one side (float's on the left, the others' on the
-** right) so that no two are closer than 12 units. */
-static void spread_labels(point *p, int n, int left)
-{
-    point *side[64];
-    int k, m = 0;
-
-    for (k = 0; k < n; k++)
-        if ((p[k].series == 0) == left) side[m++] = &p[k];
-    qsort(side, (size_t)m, sizeof *side, by_label_y);
-    for (k = 0; k < m; k++) {
-        side[k]->ly = side[k]->py + 4;
-        if (k && side[k]->ly < side[k - 1]->ly + 12) side[k]->ly = side[k - 1]->ly + 12;
+    b[0] = '\0';
+    if (p->choice) len += (size_t)snprintf(b, n, "%s", p->choice);
+    while (r < PT_ACC_NROWS && len < n) {
+        if (!(p->rows & (1u << r))) { r++; continue; }
+        for (end = r; end + 1 < PT_ACC_NROWS && (p->rows & (1u << (end + 1))); end++) {}
+        if (end - r >= 2)
+            len += (size_t)snprintf(b + len, n - len, "%s%s..%s", len && !p->choice ? ", " : "",
+                                    pt_acc_row_names[r], pt_acc_row_names[end]);
+        else
+            for (; r <= end && len < n; r++)
+                len += (size_t)snprintf(b + len, n - len, "%s%s",
+                                        len && !(p->choice && len == strlen(p->choice))
+                                        ? ", " : "", pt_acc_row_names[r]);
+        r = end + 1;
     }
 }
 
-static double log_pos(double v, double lo, double hi, double a, double b)
+static int by_y(const void *a, const void *b)
 {
-    return a + (b - a) * (log10(v) - lo) / (hi - lo);
+    const point *x = *(const point *const *)a, *y = *(const point *const *)b;
+
+    if (x->py != y->py) return x->py < y->py ? -1 : 1;
+    return x->rows < y->rows ? -1 : x->rows > y->rows;
 }
 
-/* Write the plot: every stage's max abs error against its time, log-log. */
+/* Spread the labels of one series at least 12 units apart, top to bottom
+** (not those of errors of 0: they go under the line of zeros). */
+static void spread_labels(point *p, int n, int series)
+{
+    point *col[MAXPTS];
+    int k, m = 0;
+
+    for (k = 0; k < n; k++)
+        if (p[k].series == series && p[k].err != 0) col[m++] = &p[k];
+    qsort(col, (size_t)m, sizeof *col, by_y);
+    for (k = 0; k < m; k++) {
+        col[k]->ly = col[k]->py + 4;
+        if (k && col[k]->ly < col[k - 1]->ly + 12) col[k]->ly = col[k - 1]->ly + 12;
+    }
+}
+
+/* Labels of errors of 0: centered under their points, below the line, each
+** in the first row where it overlaps no label before it (widths estimated
+** at 5.6 units a character). */
+static void place_zero_labels(point *p, int n)
+{
+    double lo[MAXPTS], hi[MAXPTS];
+    int row[MAXPTS], k, j, r, m = 0;
+    char b[160];
+
+    for (k = 0; k < n; k++) {
+        if (p[k].err != 0) continue;
+        point_label(b, sizeof b, &p[k]);
+        lo[m] = p[k].px - 2.8 * (double)strlen(b) - 4;
+        hi[m] = p[k].px + 2.8 * (double)strlen(b) + 4;
+        for (r = 0;; r++) {
+            for (j = 0; j < m; j++)
+                if (row[j] == r && lo[m] < hi[j] && lo[j] < hi[m]) break;
+            if (j == m) break;
+        }
+        row[m++] = r;
+        p[k].ly = p[k].py + 16 + 12 * r;
+    }
+}
+
+/* Position of decade exponent e on an axis from lo to hi drawn from a to b. */
+static double axis_pos(double e, double lo, double hi, double a, double b)
+{
+    return a + (b - a) * (e - lo) / (hi - lo);
+}
+
+/* Write the plot: every stage's max abs error against its run's time, log-log. */
 static void write_svg(FILE *f, const study *st)
 {
     static const int arith_runs[3] = { RUN_FLOAT, RUN_DOUBLE, RUN_DD };
-    point p[64];
-    int n = 0, k, row, e, zeros = 0, infs = 0;
+    static const char *const notes[] = {
+        "An error of 0 lies on the dashed",
+        "line marked 0, which stands for",
+        NULL,                                       /* "1e-17; the reference's ..." */
+        "are 0 by definition.",
+        "",                                         /* infs: where inf lies */
+        "Units of error: model..pixel",
+        "in their coordinates; viewport",
+        "and framebuffer in pixels; index",
+        "in array places; raster: the",
+        "DDA's y against the exact line,",
+        "in pixels.  Time: ns per vertex",
+        "(stages), ns per pixel (raster)."
+    };
+    point p[MAXPTS];
+    static const int tick_steps[] = { 1, 2, 5, 10, 20, 50, 100 };
+    int n = 0, k, row, step, zeros = 0, infs = 0;
     double tmin = HUGE_VAL, tmax = 0, emin = HUGE_VAL, emax = 0;
-    double x_lo, x_hi, y_lo, y_hi, floor_e, ceil_e;
-    char label[64];
+    double x0, x1, y0, y1, bottom, top;
+    char b[160];
 
     for (k = 0; k < 3; k++)                         /* the arithmetics as written */
         for (row = 0; row < PT_ACC_NROWS; row++) {
-            const pt_acc_err *er = &st->err[arith_runs[k]][row];
+            const pt_acc_err *e = &st->err[arith_runs[k]][row];
             const timing *t = &st->t[arith_runs[k]];
-            double err = arith_runs[k] == RUN_DD ? 0.0 : er->n ? er->max_abs : (double)NAN;
 
-            n = add_point(p, n, k, 0, row == PT_ACC_RASTER ? t->pixel : t->vertex, err,
-                          pt_acc_row_names[row]);
+            n = add_point(p, n, k, NULL, row == PT_ACC_RASTER ? t->pixel : t->vertex,
+                          arith_runs[k] == RUN_DD ? 0.0 : e->n ? e->max_abs : (double)NAN, row);
         }
-    n = add_point(p, n, 1, 1, st->t[RUN_TWO].vertex,
+    n = add_point(p, n, 1, "2.0: ", st->t[RUN_TWO].vertex,               /* the choices */
+                  st->err[RUN_TWO][PT_ACC_PIXEL].n ? st->err[RUN_TWO][PT_ACC_PIXEL].max_abs
+                                                   : (double)NAN, PT_ACC_PIXEL);
+    n = add_point(p, n, 1, "2.0: ", st->t[RUN_TWO].vertex,
                   st->err[RUN_TWO][PT_ACC_VIEWPORT].n ? st->err[RUN_TWO][PT_ACC_VIEWPORT].max_abs
-                                                      : (double)NAN, "viewport with 2.0");
-    n = add_point(p, n, 0, 1, st->t[RUN_FLOAT_RE].pixel,
-                  st->err[RUN_FLOAT_RE][PT_ACC_RASTER].max_abs, "raster, recompute y");
-    n = add_point(p, n, 1, 1, st->t[RUN_DOUBLE_RE].pixel,
-                  st->err[RUN_DOUBLE_RE][PT_ACC_RASTER].max_abs, "raster, recompute y");
+                                                      : (double)NAN, PT_ACC_VIEWPORT);
+    n = add_point(p, n, 0, "recompute y: ", st->t[RUN_FLOAT_RE].pixel,
+                  st->err[RUN_FLOAT_RE][PT_ACC_RASTER].max_abs, PT_ACC_RASTER);
+    n = add_point(p, n, 1, "recompute y: ", st->t[RUN_DOUBLE_RE].pixel,
+                  st->err[RUN_DOUBLE_RE][PT_ACC_RASTER].max_abs, PT_ACC_RASTER);
 
-    for (k = 0; k < n; k++) {                       /* the axes' ranges */
+    for (k = 0; k < n; k++) {                       /* the axes: whole decades */
         if (p[k].t < tmin) tmin = p[k].t;
         if (p[k].t > tmax) tmax = p[k].t;
         if (p[k].err == 0) zeros = 1;
@@ -421,27 +489,27 @@ static void write_svg(FILE *f, const study *st)
             if (p[k].err > emax) emax = p[k].err;
         }
     }
-    if (n == 0) { tmin = 1; tmax = 10; }
+    if (tmax == 0) { tmin = 1; tmax = 10; }
     if (emax == 0) { emin = 1e-16; emax = 1; }
-    x_lo = floor(log10(tmin));
-    x_hi = ceil(log10(tmax));
-    if (x_hi <= x_lo) x_hi = x_lo + 1;
-    y_lo = floor(log10(emin)) - (zeros ? 2 : 0);   /* room for the line of zeros */
-    y_hi = ceil(log10(emax)) + (infs ? 1 : 0);
-    if (y_hi <= y_lo) y_hi = y_lo + 1;
-    floor_e = pow(10.0, y_lo);
-    ceil_e = pow(10.0, y_hi);
+    x0 = floor(log10(tmin));
+    x1 = ceil(log10(tmax));
+    if (x1 <= x0) x1 = x0 + 1;
+    y0 = floor(log10(emin));
+    y1 = ceil(log10(emax));
+    if (y1 <= y0) y1 = y0 + 1;
+    bottom = zeros ? y0 - 3 : y0;                   /* the 0 line at y0 - 1 */
+    top = infs ? y1 + 1.5 : y1;                     /* the inf line at y1 + 1 */
     for (k = 0; k < n; k++) {
-        double err = p[k].err == 0 ? floor_e : isinf(p[k].err) ? ceil_e : p[k].err;
+        double e = p[k].err == 0 ? y0 - 1 : isinf(p[k].err) ? y1 + 1 : log10(p[k].err);
 
-        p[k].px = log_pos(p[k].t, x_lo, x_hi, PLOT_L, PLOT_R);
-        p[k].py = log_pos(err, y_lo, y_hi, PLOT_B, PLOT_T);
+        p[k].px = axis_pos(log10(p[k].t), x0, x1, PLOT_L, PLOT_R);
+        p[k].py = axis_pos(e, bottom, top, PLOT_B, PLOT_T);
     }
-    spread_labels(p, n, 1);
-    spread_labels(p, n, 0);
+    for (k = 0; k < 3; k++) spread_labels(p, n, k);
+    place_zero_labels(p, n);
 
-    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-    fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
                "viewBox=\"0 0 %d %d\" font-family=\"sans-serif\" font-size=\"11\">\n",
             SVG_W, SVG_H, SVG_W, SVG_H);
     fprintf(f, "<title>pipetrace accuracy: ");
@@ -449,78 +517,70 @@ static void write_svg(FILE *f, const study *st)
     fprintf(f, "</title>\n<rect width=\"%d\" height=\"%d\" fill=\"white\"/>\n", SVG_W, SVG_H);
     fprintf(f, "<text x=\"%d\" y=\"24\" font-size=\"14\">Error against run time: ", PLOT_L);
     xml_text(f, st->s->path);
-    fprintf(f, "</text>\n");
-    fprintf(f, "<text x=\"%d\" y=\"42\" fill=\"#555\">max abs error of each stage against "
-               "the double-double reference; one point per stage</text>\n", PLOT_L);
+    fprintf(f, "</text>\n<text x=\"%d\" y=\"42\" fill=\"#555\">max abs error of each stage "
+               "against the double-double reference, one point per stage</text>\n", PLOT_L);
 
-    for (e = (int)x_lo; e <= (int)x_hi; e++) {     /* grid and ticks */
-        double x = log_pos(pow(10.0, e), x_lo, x_hi, PLOT_L, PLOT_R);
-        fprintf(f, "<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"#ddd\"/>\n",
-                x, PLOT_T, x, PLOT_B);
-        fprintf(f, "<text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">1e%d</text>\n",
-                x, PLOT_B + 16, e);
+    for (k = (int)x0; k <= (int)x1; k++) {          /* grid, ticks, axes */
+        double x = axis_pos(k, x0, x1, PLOT_L, PLOT_R);
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"#ddd\"/>\n"
+                   "<text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">1e%d</text>\n",
+                x, PLOT_T, x, PLOT_B, x, PLOT_B + 16, k);
     }
-    for (e = (int)y_lo; e <= (int)y_hi; e++) {
-        double y = log_pos(pow(10.0, e), y_lo, y_hi, PLOT_B, PLOT_T);
-        int step = y_hi - y_lo > 24 ? 2 : 1;
-
-        fprintf(f, "<line x1=\"%d\" y1=\"%.1f\" x2=\"%d\" y2=\"%.1f\" stroke=\"#ddd\"/>\n",
-                PLOT_L, y, PLOT_R, y);
-        if ((e - (int)y_lo) % step == 0 || e == (int)y_hi)
-            fprintf(f, "<text x=\"%d\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n",
-                    PLOT_L - 6, y + 4, zeros && e == (int)y_lo ? "0"
-                    : infs && e == (int)y_hi ? "inf" : (snprintf(label, sizeof label,
-                                                                 "1e%d", e), label));
+    for (step = 0; step < 6 && (y1 - y0) / tick_steps[step] > 20; step++) {}
+    step = tick_steps[step];
+    for (k = (int)y0; k <= (int)y1; k++) {          /* every decade, at most ~20 */
+        double y = axis_pos(k, bottom, top, PLOT_B, PLOT_T);
+        if (k % step) continue;
+        fprintf(f, "<line x1=\"%d\" y1=\"%.1f\" x2=\"%d\" y2=\"%.1f\" stroke=\"#ddd\"/>\n"
+                   "<text x=\"%d\" y=\"%.1f\" text-anchor=\"end\">1e%d</text>\n",
+                PLOT_L, y, PLOT_R, y, PLOT_L - 6, y + 4, k);
     }
-    if (zeros)
-        fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"#999\" "
-                   "stroke-dasharray=\"4 3\"/>\n", PLOT_L, PLOT_B, PLOT_R, PLOT_B);
-    if (infs)
-        fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"#999\" "
-                   "stroke-dasharray=\"4 3\"/>\n", PLOT_L, PLOT_T, PLOT_R, PLOT_T);
+    for (k = 0; k < 2; k++) {                       /* the lines of 0 and of inf */
+        double y;
+        if (!(k ? infs : zeros)) continue;
+        y = axis_pos(k ? y1 + 1 : y0 - 1, bottom, top, PLOT_B, PLOT_T);
+        fprintf(f, "<line x1=\"%d\" y1=\"%.1f\" x2=\"%d\" y2=\"%.1f\" stroke=\"#888\" "
+                   "stroke-dasharray=\"5 4\"/>\n<text x=\"%d\" y=\"%.1f\" "
+                   "text-anchor=\"end\">%s</text>\n",
+                PLOT_L, y, PLOT_R, y, PLOT_L - 6, y + 4, k ? "inf" : "0");
+    }
     fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" "
                "stroke=\"#333\"/>\n", PLOT_L, PLOT_T, PLOT_R - PLOT_L, PLOT_B - PLOT_T);
-    fprintf(f, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">run time, ns per vertex "
+    fprintf(f, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">run time: ns per vertex "
                "(stages) or per pixel (raster), log scale</text>\n",
             (PLOT_L + PLOT_R) / 2, PLOT_B + 36);
     fprintf(f, "<text transform=\"translate(%d %d) rotate(-90)\" text-anchor=\"middle\">"
-               "max abs error, log scale</text>\n", PLOT_L - 52, (PLOT_T + PLOT_B) / 2);
+               "max abs error, log scale</text>\n", PLOT_L - 50, (PLOT_T + PLOT_B) / 2);
 
-    for (k = 0; k < n; k++) {                       /* the points and their labels */
+    for (k = 0; k < n; k++) {                       /* points and labels */
         const char *c = series_color[p[k].series];
-        int left = p[k].series == 0;
+        int left = p[k].series != 1;                /* double's labels go right */
 
         fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\" stroke=\"%s\" "
-                   "stroke-width=\"1.5\"/>\n", p[k].px, p[k].py, p[k].hollow ? "white" : c, c);
+                   "stroke-width=\"1.5\"/>\n", p[k].px, p[k].py, p[k].choice ? "white" : c, c);
+        point_label(b, sizeof b, &p[k]);
         fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"%s\" text-anchor=\"%s\" "
-                   "font-size=\"10\">", p[k].px + (left ? -7 : 7), p[k].ly, c,
-                left ? "end" : "start");
-        xml_text(f, p[k].label);
+                   "font-size=\"10\">", p[k].err == 0 ? p[k].px : p[k].px + (left ? -7 : 7),
+                p[k].ly, c, p[k].err == 0 ? "middle" : left ? "end" : "start");
+        xml_text(f, b);
         fprintf(f, "</text>\n");
     }
 
-    fprintf(f, "<g transform=\"translate(%d %d)\">\n", PLOT_R + 20, PLOT_T + 10);
-    for (k = 0; k < 3; k++) {                       /* the legend */
-        fprintf(f, "<circle cx=\"6\" cy=\"%d\" r=\"4\" fill=\"%s\"/>\n", k * 18,
-                series_color[k]);
-        fprintf(f, "<text x=\"16\" y=\"%d\">%s (%d bits)</text>\n", k * 18 + 4,
-                pt_arith_names[k], pt_arith_bits[k]);
-    }
+    fprintf(f, "<g transform=\"translate(%d %d)\">\n", PLOT_R + 20, PLOT_T + 6);
+    for (k = 0; k < 3; k++)                         /* the legend */
+        fprintf(f, "<circle cx=\"6\" cy=\"%d\" r=\"4\" fill=\"%s\"/>\n"
+                   "<text x=\"16\" y=\"%d\">%s, %d bits%s</text>\n", k * 18,
+                series_color[k], k * 18 + 4, pt_arith_names[k], pt_arith_bits[k],
+                k == 2 ? " (reference)" : "");
     fprintf(f, "<circle cx=\"6\" cy=\"54\" r=\"4\" fill=\"white\" stroke=\"#333\" "
                "stroke-width=\"1.5\"/>\n<text x=\"16\" y=\"58\">an algorithm choice</text>\n");
-    fprintf(f, "<text x=\"0\" y=\"86\" fill=\"#555\">An error of 0 is drawn on</text>\n"
-               "<text x=\"0\" y=\"100\" fill=\"#555\">the bottom line, marked 0%s</text>\n"
-               "<text x=\"0\" y=\"114\" fill=\"#555\">(the reference's are 0 by</text>\n"
-               "<text x=\"0\" y=\"128\" fill=\"#555\">definition); inf on the top</text>\n"
-               "<text x=\"0\" y=\"142\" fill=\"#555\">line, marked inf.</text>\n",
-            zeros ? ":" : ".");
-    if (zeros) fprintf(f, "<text x=\"0\" y=\"156\" fill=\"#555\">it stands for 1e%d.</text>\n",
-                       (int)y_lo);
-    fprintf(f, "<text x=\"0\" y=\"180\" fill=\"#555\">Units: model..pixel</text>\n"
-               "<text x=\"0\" y=\"194\" fill=\"#555\">coordinates; viewport and</text>\n"
-               "<text x=\"0\" y=\"208\" fill=\"#555\">framebuffer pixels; index</text>\n"
-               "<text x=\"0\" y=\"222\" fill=\"#555\">array places; raster the</text>\n"
-               "<text x=\"0\" y=\"236\" fill=\"#555\">DDA's y, in pixels.</text>\n");
+    for (k = 0; k < (int)(sizeof notes / sizeof notes[0]); k++) {
+        fprintf(f, "<text x=\"0\" y=\"%d\" fill=\"#555\">", 86 + 14 * k);
+        if (!notes[k]) fprintf(f, "1e%d; the reference's errors", (int)y0 - 1);
+        else if (!notes[k][0] && infs) fprintf(f, "inf lies on the top dashed line.");
+        else xml_text(f, notes[k]);
+        fprintf(f, "</text>\n");
+    }
     fprintf(f, "</g>\n</svg>\n");
 }
 

@@ -300,7 +300,7 @@ static int image_diff(const dopts *o, const pt_ppm img[2])
 typedef struct vent {
     uint64_t v;                  /* 1-based vertex number */
     uint32_t model;              /* name id */
-    uint32_t rec[2][PT_NSTAGES]; /* record index into side's vx[], or NONE */
+    uint32_t rec[2][PT_NSTAGES_ALL];   /* index into side's vx[], or NONE */
 } vent;
 
 /* Open addressing over entries in order of first sight (EXPECTED's first). */
@@ -362,7 +362,7 @@ static vent *vt_get(vtab *t, uint32_t model, uint64_t v)
     e->v = v;
     e->model = model;
     for (side = 0; side < 2; side++)
-        for (st = 0; st < PT_NSTAGES; st++) e->rec[side][st] = NONE;
+        for (st = 0; st < PT_NSTAGES_ALL; st++) e->rec[side][st] = NONE;
     t->slot[s] = (uint32_t)++t->n;
     return e;
 }
@@ -379,11 +379,11 @@ typedef struct dctx {
     unsigned char *has_tr;       /* has_tr[model id]: 1 when tr is known */
     /* counts */
     size_t agree, differ, only[2];
-    size_t first_at[PT_NSTAGES]; /* vertices that first differ at each stage */
-    size_t stage_only[2][PT_NSTAGES];   /* records without a partner */
+    size_t first_at[PT_NSTAGES_ALL];    /* vertices that first differ at each stage */
+    size_t stage_only[2][PT_NSTAGES_ALL];   /* records without a partner */
     size_t shown;                /* vertices listed */
     size_t *mk_hits;             /* per mistake: vertices it reproduces */
-    size_t unexplained[PT_NSTAGES];     /* first differences no mistake reproduces */
+    size_t unexplained[PT_NSTAGES_ALL]; /* first differences no mistake reproduces */
 } dctx;
 
 /* Slack of the number x read from side s: for a text trace, half a unit in
@@ -418,19 +418,26 @@ static int same_real(const dctx *c, double a, double b)
     return near(c, a, b, slack(c, 0, a) + slack(c, 1, b));
 }
 
-static int is_real(int st) { return st <= PT_STAGE_PIXEL; }
+/* 1 when stage st holds doubles, 0 when integers. */
+static int is_real(int st) { return pt_tshapes[st].nreal > 0; }
 
-/* Number of values of stage st: 3, 2 or 1. */
-static int ncoord(int st)
+/* Number of values of stage st: 1 to 4. */
+static int ncoord(int st) { return pt_tshapes[st].nreal + pt_tshapes[st].nint; }
+
+/* Name of value k of stage st, as the text trace writes it: "x_pp". */
+static const char *coord_name(int st, int k) { return pt_tshapes[st].label[k]; }
+
+/* "box v3", or for a point where the matrix camera clipped a segment
+** "box s2 (clipped end 1)", into buf. */
+static const char *who(const dctx *c, uint32_t model, uint64_t v, char *buf, size_t len)
 {
-    return st <= PT_STAGE_IMAGE ? 3 : st == PT_STAGE_INDEX ? 1 : 2;
+    if (v & PT_TCLIPV)
+        snprintf(buf, len, "%s s%" PRIu64 " (clipped end %d)", pt_names_get(&c->nm, model),
+                 (v & ~PT_TCLIPV) >> 1, (int)(v & 1) + 1);
+    else
+        snprintf(buf, len, "%s v%" PRIu64, pt_names_get(&c->nm, model), v);
+    return buf;
 }
-
-/* Names of each stage's values, as the text trace writes them. */
-static const char *const coord_name[PT_NSTAGES][3] = {
-    {"x_m", "y_m", "z_m"}, {"x_c", "y_c", "z_c"}, {"x_ip", "y_ip", "z_ip"},
-    {"x_pp", "y_pp", ""}, {"x_vp", "y_vp", ""}, {"x_fb", "y_fb", ""}, {"idx", "", ""},
-};
 
 #define D_NULL 0x08u             /* stage_diff: one side has no value */
 #define D_FLAG 0x10u             /* stage_diff: inside or behind differs */
@@ -463,7 +470,7 @@ static void print_stage_diff(int st, const pt_tvrec *a, const pt_tvrec *b, unsig
 
     for (k = 0; k < ncoord(st); k++) {
         if (!(m & (D_NULL | 1u << k))) continue;
-        printf("    %-5s expected ", coord_name[st][k]);
+        printf("    %-5s expected ", coord_name(st, k));
         if (is_real(st)) {
             printf("%s, actual %s", num(a->u.d[k], b1), num(b->u.d[k], b2));
             if (isfinite(a->u.d[k]) && isfinite(b->u.d[k]))
@@ -855,7 +862,7 @@ static int hctx_of(const dctx *c, uint32_t model, hctx *h)
 {
     const pt_thdr *hd = &c->t[0].hdr;
 
-    if (!hd->have || hd->vp_w < 1 || hd->vp_h < 1) return 0;
+    if (!hd->have || hd->perspective < 0 || hd->vp_w < 1 || hd->vp_h < 1) return 0;
     h->w = hd->vp_w; h->h = hd->vp_h;
     h->W = hd->fb_w; h->H = hd->fb_h;
     h->x_ul = hd->vp_x; h->y_ul = hd->vp_y;
@@ -908,7 +915,7 @@ static void sval_str(sbuf *sb, int st, const sval *v)
     int k;
 
     for (k = 0; k < ncoord(st); k++) {
-        sb_add(sb, "%s%s = ", k ? ", " : "", coord_name[st][k]);
+        sb_add(sb, "%s%s = ", k ? ", " : "", coord_name(st, k));
         if (is_real(st)) sb_add(sb, "%s", num(v->d[k], b));
         else if (v->null) sb_add(sb, "none");
         else sb_add(sb, "%" PRId64, v->n[k]);
@@ -930,10 +937,16 @@ static void explain(dctx *c, const vent *e, int st, int print)
     sbuf sb;
 
     memset(&h, 0, sizeof h);
-    if (!hctx_of(c, e->model, &h) || !prev_value(c, e, st, &h, &in, in_slack, &from)) {
+    if (!hctx_of(c, e->model, &h)) {
+        c->unexplained[st]++;
+        if (print) printf("    (no known mistake checked: %s)\n", c->t[0].hdr.have ?
+                          "those known are the classic camera's" : "EXPECTED has no header");
+        return;
+    }
+    if (st == PT_STAGE_MODEL || !prev_value(c, e, st, &h, &in, in_slack, &from)) {
         c->unexplained[st]++;
         if (print) printf("    (no known mistake checked: EXPECTED has no %s record to "
-                          "recompute from)\n", st ? pt_stage_infos[st - 1].name : "previous");
+                          "recompute from)\n", st ? pt_stage_infos[st - 1].name : "earlier");
         return;
     }
     for (k = 0; k < NMISTAKES; k++) {
@@ -967,17 +980,20 @@ static void explain(dctx *c, const vent *e, int st, int print)
     }
 }
 
-/* Compare one vertex present on both sides. */
+/* Compare one vertex present on both sides, stage by stage in pipeline order. */
 static void compare_vertex(dctx *c, const vent *e)
 {
-    int st, first = -1;
+    int k, st, first = -1, nlater = 0;
     unsigned m = 0, later = 0;
     const pt_tvrec *a = NULL, *b = NULL;
-    int print;
+    char name[128];
 
-    for (st = 0; st < PT_NSTAGES; st++) {
-        uint32_t i = e->rec[0][st], j = e->rec[1][st];
+    for (k = 0; k < PT_NSTAGES_ALL; k++) {
+        uint32_t i, j;
         unsigned d;
+        st = pt_torder[k];
+        i = e->rec[0][st];
+        j = e->rec[1][st];
         if (i == NONE || j == NONE) {
             if (i != NONE) c->stage_only[0][st]++;
             if (j != NONE) c->stage_only[1][st]++;
@@ -997,19 +1013,16 @@ static void compare_vertex(dctx *c, const vent *e)
     if (first < 0) { c->agree++; return; }
     c->differ++;
     c->first_at[first]++;
-    print = c->shown < c->o->show;
-    if (print) {
-        c->shown++;
-        printf("%s v%" PRIu64 ": differs first at %s", pt_names_get(&c->nm, e->model), e->v,
-               pt_stage_infos[first].name);
-        for (st = first + 1; st < PT_NSTAGES; st++)
-            if (later & 1u << st)
-                printf("%s%s", st == first + 1 || !(later & ((1u << st) - 1)) ?
-                       ", later at " : ", ", pt_stage_infos[st].name);
-        printf("\n");
-        print_stage_diff(first, a, b, m);
-    }
-    explain(c, e, first, print);
+    if (c->shown >= c->o->show) { explain(c, e, first, 0); return; }
+    c->shown++;
+    printf("%s: differs first at %s", who(c, e->model, e->v, name, sizeof name),
+           pt_stage_infos[first].name);
+    for (k = 0; k < PT_NSTAGES_ALL; k++)
+        if (later & 1u << pt_torder[k])
+            printf("%s%s", nlater++ ? ", " : ", later at ", pt_stage_infos[pt_torder[k]].name);
+    printf("\n");
+    print_stage_diff(first, a, b, m);
+    explain(c, e, first, 1);
 }
 
 /* ===== pixels ===== */
@@ -1334,9 +1347,9 @@ static int compare_headers(const dctx *c)
         differ = 1;
     }
     if (a->perspective != b->perspective) {
-        printf("header: camera %s in EXPECTED, %s in ACTUAL\n",
-               a->perspective ? "perspective" : "orthographic",
-               b->perspective ? "perspective" : "orthographic");
+        static const char *const cam[3] = {"lookat", "orthographic", "perspective"};
+        printf("header: camera %s in EXPECTED, %s in ACTUAL\n", cam[a->perspective + 1],
+               cam[b->perspective + 1]);
         differ = 1;
     }
     for (k = 0; k < a->nmodels || k < b->nmodels; k++) {
@@ -1410,9 +1423,10 @@ static int fill_table(dctx *c)
             if (k >= NONE) return -1;
             if (!(e = vt_get(&c->vt, r->model, r->v))) return -1;
             if (e->rec[s][r->stage] != NONE) {
-                fprintf(stderr, "%s:%" PRIu32 ":1: error: a second %s record for %s v%" PRIu64
-                        " (the first is on line %" PRIu32 ")\n", c->o->path[s], r->line,
-                        pt_stage_infos[r->stage].name, pt_names_get(&c->nm, r->model), r->v,
+                char name[128];
+                fprintf(stderr, "%s:%" PRIu32 ":1: error: a second %s record for %s (the "
+                        "first is on line %" PRIu32 ")\n", c->o->path[s], r->line,
+                        pt_stage_infos[r->stage].name, who(c, r->model, r->v, name, sizeof name),
                         c->t[s].vx[e->rec[s][r->stage]].line);
                 return EXIT_INPUT;
             }
@@ -1449,14 +1463,15 @@ static void report_one_sided(dctx *c)
         for (k = 0; k < c->vt.n; k++) {
             const vent *e = &c->vt.e[k];
             int here = 0, there = 0;
-            for (st = 0; st < PT_NSTAGES; st++) {
+            for (st = 0; st < PT_NSTAGES_ALL; st++) {
                 here |= e->rec[s][st] != NONE;
                 there |= e->rec[!s][st] != NONE;
             }
             if (!here || there) continue;
             if (c->only[s]++ == 0) printf("only in %s:", side_name[s]);
             if (listed < c->o->show) {
-                printf("%s %s v%" PRIu64, listed ? "," : "", pt_names_get(&c->nm, e->model), e->v);
+                char name[128];
+                printf("%s %s", listed ? "," : "", who(c, e->model, e->v, name, sizeof name));
                 listed++;
             }
         }
@@ -1471,7 +1486,7 @@ static void report_stage_only(const dctx *c)
     int s, st, any = 0;
 
     for (s = 0; s < 2; s++)
-        for (st = 0; st < PT_NSTAGES; st++) {
+        for (st = 0; st < PT_NSTAGES_ALL; st++) {
             if (!c->stage_only[s][st]) continue;
             printf("%s %s records are only in %s (%zu)", any ? ";" : "Not compared:",
                    pt_stage_infos[st].name, side_name[s], c->stage_only[s][st]);
@@ -1503,13 +1518,13 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
     if (c->only[0]) sb_add(&s, ", %zu are only in EXPECTED", c->only[0]);
     if (c->only[1]) sb_add(&s, ", %zu only in ACTUAL", c->only[1]);
     sb_add(&s, ".");
-    for (st = 0; st < PT_NSTAGES; st++)
+    for (st = 0; st < PT_NSTAGES_ALL; st++)
         if (c->first_at[st] && (top < 0 || c->first_at[st] > c->first_at[top])) top = st;
     if (top >= 0) {
         size_t best = NMISTAKES;
         sb_add(&s, " The stage that goes wrong first most often is %s (%zu of %zu)",
                pt_stage_infos[top].name, c->first_at[top], c->differ);
-        for (st = 0; st < PT_NSTAGES; st++)
+        for (st = 0; st < PT_NSTAGES_ALL; st++)
             if (st != top && c->first_at[st])
                 sb_add(&s, "; %s first for %zu", pt_stage_infos[st].name, c->first_at[st]);
         sb_add(&s, ".");
@@ -1526,6 +1541,8 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
             else if (hits > 2) sb_add(&s, " for all %zu.", hits);
             else if (hits == 2) sb_add(&s, " for both.");
             else sb_add(&s, ".");
+        } else if (c->t[0].hdr.perspective < 0) {
+            sb_add(&s, " The known mistakes are the classic camera's: none was checked.");
         } else {
             sb_add(&s, " No known mistake reproduces ACTUAL there.");
         }
@@ -1614,7 +1631,7 @@ static int trace_diff(dctx *c)
     for (k = 0; k < c->vt.n; k++) {
         const vent *e = &c->vt.e[k];
         int st, both[2] = {0, 0};
-        for (st = 0; st < PT_NSTAGES; st++) {
+        for (st = 0; st < PT_NSTAGES_ALL; st++) {
             both[0] |= e->rec[0][st] != NONE;
             both[1] |= e->rec[1][st] != NONE;
         }

@@ -14,5 +14,6 @@ int pt_cmd_step(int argc, char **argv);   /* one vertex, one stage at a time */
 int pt_cmd_why(int argc, char **argv);    /* which segments lit a pixel, or why not */
 int pt_cmd_quiz(int argc, char **argv);   /* ask a vertex's values stage by stage */
 int pt_cmd_accuracy(int argc, char **argv);  /* error against run time, per arithmetic */
+int pt_cmd_journey(int argc, char **argv);   /* draw one vertex's journey: SVG, HTML */
 
 #endif

@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "outfile.h"
 #include "pipeline.h"
+#include "png.h"
 #include "scene.h"
 #include "trace.h"
 
@@ -29,11 +30,13 @@ static const char usage[] =
 "       pipetrace why [SCENE] X_FB Y_FB\n"
 "       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
 "       pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
+"       pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
 "through the classic teaching pipeline and trace every vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
 "\n"
-"  --image FILE      write the rendered framebuffer as binary PPM (P6)\n"
+"  --image FILE      write the rendered framebuffer: PNG when FILE ends in\n"
+"                    .png (any case), else binary PPM (P6)\n"
 "  --trace FILE      write the trace to FILE ('-': standard output)\n"
 "  --format F        trace format: text (default), jsonl, csv\n"
 "  --vertex N        trace only vertex N (1-based) of each model\n"
@@ -141,7 +144,7 @@ static int parse_args(cli *c, int argc, char **argv)
         return usage_error("--explain needs --format text or jsonl%s", "");
     if (!c->image && !c->trace) c->trace = "-";
     /* --vertex without --image: only that vertex's journey is computed */
-    c->opt.rasterize = c->image != NULL || (c->opt.trace_raster && !c->opt.vertex);
+    c->opt.rasterize = c->image != NULL || !c->opt.vertex;
     return -1;
 }
 
@@ -191,6 +194,7 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "why") == 0) return pt_cmd_why(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "quiz") == 0) return pt_cmd_quiz(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "accuracy") == 0) return pt_cmd_accuracy(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "journey") == 0) return pt_cmd_journey(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
 
@@ -233,7 +237,8 @@ int main(int argc, char **argv)
     }
     if (!rc && c.image) {
         if (pt_outfile_open(&iout, c.image, err, sizeof err) != 0) rc = 1;
-        else if (pt_fb_write_ppm(&fb, iout.f) != 0) {
+        else if ((pt_path_is_png(c.image) ? pt_fb_write_png(&fb, iout.f)
+                                          : pt_fb_write_ppm(&fb, iout.f)) != 0) {
             snprintf(err, sizeof err, "cannot write '%s'", c.image);
             rc = 1;
         } else if (pt_outfile_commit(&iout, err, sizeof err) != 0) rc = 1;

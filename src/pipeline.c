@@ -323,7 +323,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
         out.ud = &rc;
         for (k = 0; k < s->nmodels; k++) {
             const pt_model *m = &s->models[k];
-            int report = o->trace_raster && p->models[k].selected && !o->vertex;
+            int traced = p->models[k].selected && !o->vertex;  /* its clip vertices */
+            int report = o->trace_raster && traced;             /* its raster records */
 
             rc.m = m;
             rc.l = report ? l : NULL;
@@ -333,7 +334,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
                 int r;
 
                 rc.seg = j + 1;
-                if (s->matrix && !matrix_segment(s, m, j + 1, va, vb, rc.l, &ms[k], &a, &b)) {
+                if (s->matrix && !matrix_segment(s, m, j + 1, va, vb, traced ? l : NULL,
+                                                 &ms[k], &a, &b)) {
                     sum->segments_culled++;
                     if (report && l->skip)
                         l->skip(l->ud, m, j + 1, 0, "outside the view volume");

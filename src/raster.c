@@ -2,6 +2,7 @@
 ** src/raster.c -- draw one line segment of the pixel plane into a viewport
 ** See LICENSE for copyright and license.
 */
+#include <float.h>
 #include <math.h>
 #include "raster.h"
 #include "../stages/s4_pixel2viewport.h"
@@ -22,8 +23,9 @@
 */
 double pt_raster_advance(double y, double m, uint64_t k)
 {
+    if (m == 0.0) return k ? y + m : y;     /* y + 0 turns -0 into +0, once */
     while (k > 0) {
-        double y1, y2, d, lo, room;
+        double y1, y2, d, lo, hi, room;
         int e1, e2;
         uint64_t jump;
 
@@ -33,15 +35,21 @@ double pt_raster_advance(double y, double m, uint64_t k)
         k -= 2;
         y = y2;
         if (!isfinite(y2) || y1 == 0.0 || y2 == 0.0) continue;
-        frexp(y1, &e1);
-        frexp(y2, &e2);                             /* |y2| in [2^(e2-1), 2^e2) */
-        if (e1 != e2 || (y1 > 0) != (y2 > 0)) continue;
-        lo = ldexp(1.0, e2 - 1);
-        if (lo < 0x1p-1000) continue;               /* near zero: just step */
+        if ((y1 > 0) != (y2 > 0)) continue;         /* crossing zero */
+        if (fabs(y1) < DBL_MIN && fabs(y2) < DBL_MIN) {
+            lo = 0;                                 /* the subnormals: one grid, */
+            hi = DBL_MIN;                           /* spacing 2^-1074 */
+        } else {
+            frexp(y1, &e1);
+            frexp(y2, &e2);                         /* |y2| in [2^(e2-1), 2^e2) */
+            if (e1 != e2 || fabs(y1) < DBL_MIN) continue;
+            lo = ldexp(1.0, e2 - 1);
+            hi = 2 * lo;
+        }
         d = (y2 + m) - y2;                          /* the constant increment */
         if (d == 0.0) return y2;                    /* m too small: y stays put */
-        if ((y2 > 0) == (d > 0)) room = 2 * lo - fabs(y2);   /* moving outward */
-        else room = fabs(y2) - lo;                           /* moving inward */
+        if ((y2 > 0) == (d > 0)) room = hi - fabs(y2);   /* moving outward */
+        else room = fabs(y2) - lo;                       /* moving inward */
         room -= 4 * fabs(m) + 4 * fabs(d);
         if (room <= 0) continue;
         jump = (uint64_t)fmin(room / fabs(d), 0x1p62);

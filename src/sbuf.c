@@ -71,11 +71,44 @@ void pt_sbuf_addf(pt_sbuf *sb, const char *fmt, ...)
     sb->len += (size_t)n;
 }
 
+/* Length of the well-formed UTF-8 sequence at p (RFC 3629: no overlong
+** forms, no surrogates, at most U+10FFFF), or 0 when it is not one. */
+static int utf8_len(const unsigned char *p)
+{
+    int n, k;
+    unsigned long c;
+
+    if (*p < 0x80) return 1;
+    if (*p >= 0xc2 && *p <= 0xdf) { n = 2; c = *p & 0x1fu; }
+    else if (*p >= 0xe0 && *p <= 0xef) { n = 3; c = *p & 0x0fu; }
+    else if (*p >= 0xf0 && *p <= 0xf4) { n = 4; c = *p & 0x07u; }
+    else return 0;
+    for (k = 1; k < n; k++) {
+        if ((p[k] & 0xc0u) != 0x80u) return 0;
+        c = (c << 6) | (p[k] & 0x3fu);
+    }
+    if ((n == 3 && (c < 0x800 || (c >= 0xd800 && c <= 0xdfff))) ||
+        (n == 4 && (c < 0x10000 || c > 0x10ffff))) return 0;
+    return n;
+}
+
+#define REPLACEMENT "\xef\xbf\xbd"    /* U+FFFD in UTF-8 */
+
+/* Append the UTF-8 character at *pp (or U+FFFD for a bad byte); advance. */
+static void add_utf8(pt_sbuf *sb, const unsigned char **pp)
+{
+    int n = utf8_len(*pp);
+
+    if (n == 0) { pt_sbuf_add(sb, REPLACEMENT); *pp += 1; return; }
+    pt_sbuf_addn(sb, (const char *)*pp, (size_t)n);
+    *pp += n;
+}
+
 void pt_sbuf_add_xml(pt_sbuf *sb, const char *t)
 {
     const unsigned char *p = (const unsigned char *)t;
 
-    for (; *p; p++) {
+    while (*p) {
         switch (*p) {
         case '&':  pt_sbuf_add(sb, "&amp;"); break;
         case '<':  pt_sbuf_add(sb, "&lt;"); break;
@@ -83,9 +116,10 @@ void pt_sbuf_add_xml(pt_sbuf *sb, const char *t)
         case '"':  pt_sbuf_add(sb, "&quot;"); break;
         case '\'': pt_sbuf_add(sb, "&apos;"); break;
         default:
-            if (*p < 0x20 && *p != '\t' && *p != '\n') pt_sbuf_add(sb, "\xef\xbf\xbd");
-            else pt_sbuf_addn(sb, (const char *)p, 1);
+            if (*p < 0x20 && *p != '\t' && *p != '\n') pt_sbuf_add(sb, REPLACEMENT);
+            else { add_utf8(sb, &p); continue; }
         }
+        p++;
     }
 }
 
@@ -94,7 +128,7 @@ void pt_sbuf_add_json(pt_sbuf *sb, const char *t)
     const unsigned char *p = (const unsigned char *)t;
 
     pt_sbuf_add(sb, "\"");
-    for (; *p; p++) {
+    while (*p) {
         switch (*p) {
         case '"':  pt_sbuf_add(sb, "\\\""); break;
         case '\\': pt_sbuf_add(sb, "\\\\"); break;
@@ -106,8 +140,9 @@ void pt_sbuf_add_json(pt_sbuf *sb, const char *t)
             break;
         default:
             if (*p < 0x20) pt_sbuf_addf(sb, "\\u%04x", (unsigned)*p);
-            else pt_sbuf_addn(sb, (const char *)p, 1);
+            else { add_utf8(sb, &p); continue; }
         }
+        p++;
     }
     pt_sbuf_add(sb, "\"");
 }

@@ -38,13 +38,15 @@ void pt_sbuf_addf(pt_sbuf *sb, const char *fmt, ...)
     ;
 
 /* Append t as XML character data or attribute value: & < > " ' become
-** entities; UTF-8 passes through unchanged, other control characters than
-** tab and newline become U+FFFD (XML 1.0 forbids them). */
+** entities; well-formed UTF-8 passes through unchanged; a byte that is not
+** part of one, and control characters other than tab and newline (XML 1.0
+** forbids them), become U+FFFD. */
 void pt_sbuf_add_xml(pt_sbuf *sb, const char *t);
 
 /* Append t as a JSON string, quotes included.  Besides " \ and control
 ** characters, a '<' before '/' or '!' is written \u003c, so the string can sit
-** inside an HTML <script> element ("</script" or "<!--" would end it). */
+** inside an HTML <script> element ("</script" or "<!--" would end it).  Bad
+** UTF-8 becomes U+FFFD, as in pt_sbuf_add_xml(). */
 void pt_sbuf_add_json(pt_sbuf *sb, const char *t);
 
 #endif

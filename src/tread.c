@@ -103,6 +103,53 @@ void pt_names_free(pt_names *nm)
     memset(nm, 0, sizeof *nm);
 }
 
+/* ===== stages ===== */
+
+_Static_assert(PT_NSTAGES_ALL == 13, "pt_tshapes and pt_torder list 13 stages");
+
+const pt_tshape pt_tshapes[PT_NSTAGES_ALL] = {        /* in pt_stage order */
+    {3, 0, {"x_m", "y_m", "z_m", NULL}, {"x", "y", "z", NULL}},        /* model */
+    {3, 0, {"x_c", "y_c", "z_c", NULL}, {"x", "y", "z", NULL}},        /* camera */
+    {3, 0, {"x_ip", "y_ip", "z_ip", NULL}, {"x", "y", "z", NULL}},     /* image */
+    {2, 0, {"x_pp", "y_pp", NULL, NULL}, {"x", "y", NULL, NULL}},      /* pixel */
+    {0, 2, {"x_vp", "y_vp", NULL, NULL}, {"x", "y", NULL, NULL}},      /* viewport */
+    {0, 2, {"x_fb", "y_fb", NULL, NULL}, {"x", "y", NULL, NULL}},      /* framebuffer */
+    {0, 1, {"idx", NULL, NULL, NULL}, {"i", NULL, NULL, NULL}},        /* index */
+    {4, 0, {"x_w", "y_w", "z_w", "w_w"}, {"x", "y", "z", "w"}},        /* world */
+    {4, 0, {"x_v", "y_v", "z_v", "w_v"}, {"x", "y", "z", "w"}},        /* view */
+    {4, 0, {"x_k", "y_k", "z_k", "w_k"}, {"x", "y", "z", "w"}},        /* clip */
+    {0, 1, {"code", NULL, NULL, NULL}, {"code", NULL, NULL, NULL}},    /* cvv */
+    {3, 0, {"x_n", "y_n", "z_n", NULL}, {"x", "y", "z", NULL}},        /* ndc */
+    {3, 0, {"x_s", "y_s", "z_s", NULL}, {"x", "y", "z", NULL}},        /* screen */
+};
+
+const unsigned char pt_torder[PT_NSTAGES_ALL] = {
+    PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE, PT_STAGE_PIXEL,  /* classic */
+    PT_STAGE_WORLD, PT_STAGE_VIEW, PT_STAGE_CLIP, PT_STAGE_CVV,       /* matrix */
+    PT_STAGE_NDC, PT_STAGE_SCREEN,
+    PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER, PT_STAGE_INDEX,          /* both */
+};
+
+/* The place of stage st in pt_torder. */
+static int order_pos(int st)
+{
+    int k;
+
+    for (k = 0; k < PT_NSTAGES_ALL; k++) if (pt_torder[k] == st) return k;
+    return 0;
+}
+
+/* The pt_stage named p[0..n), or -1. */
+static int stage_named(const char *p, size_t n)
+{
+    int k;
+
+    for (k = 0; k < PT_NSTAGES_ALL; k++)
+        if (strlen(pt_stage_infos[k].name) == n && memcmp(p, pt_stage_infos[k].name, n) == 0)
+            return k;
+    return -1;
+}
+
 /* ===== files ===== */
 
 int pt_tread_file(const char *path, char **buf, size_t *len, char *err, size_t errlen)
@@ -171,6 +218,10 @@ typedef struct rd {
     pt_tread *t;                 /* records go here */
     char *sbuf;                  /* a decoded JSON string; owned */
     size_t scap;                 /* room in sbuf */
+    int cv_have;                 /* 1: a clip-vertex record was read: */
+    uint32_t cv_model;           /*   its model, */
+    uint64_t cv_seg;             /*   segment, */
+    int cv_pos, cv_end;          /*   stage's place in pt_torder, and end */
 } rd;
 
 /* Write "FILE:LINE:COL: error: ..." for the byte `at` of the current line.
@@ -228,6 +279,26 @@ static pt_tvrec *new_vrec(rd *r)
     memset(v, 0, sizeof *v);
     v->line = line32(r);
     return v;
+}
+
+/* The vertex number of a clip vertex of segment seg at stage st: the records
+** of its first end, then of its second, each in stage order, so a stage that
+** does not come after the previous one starts the second end. */
+static int clipv_number(rd *r, uint32_t model, uint64_t seg, int st, const char *at,
+                        uint64_t *v)
+{
+    int pos = order_pos(st);
+
+    if (seg >= (UINT64_C(1) << 62)) return fail(r, at, "segment number out of range");
+    if (!r->cv_have || r->cv_model != model || r->cv_seg != seg) r->cv_end = 0;
+    else if (pos <= r->cv_pos) r->cv_end++;
+    if (r->cv_end > 1) return fail(r, at, "a third clipped end of one segment");
+    r->cv_have = 1;
+    r->cv_model = model;
+    r->cv_seg = seg;
+    r->cv_pos = pos;
+    *v = PT_TCLIPV | seg << 1 | (uint64_t)r->cv_end;
+    return 0;
 }
 
 /* ===== numbers ===== */
@@ -415,26 +486,41 @@ static const char *j_value(rd *r, const char *p, const char *e, jval *v, int dep
     return p + n;
 }
 
-/* Parse the object v (already checked) into up to J_MAXFIELDS fields. */
-static int j_fields(rd *r, const jval *v, jfield *f, int *nf)
+/* The object starting at the '{' p, checked in full in one pass; its first
+** J_MAXFIELDS top-level fields go into f (later ones are checked only).
+** Returns the byte after its '}', or NULL after reporting the error. */
+static const char *j_object(rd *r, const char *p, const char *e, jfield *f, int *nf)
 {
-    const char *s = j_ws(v->p + 1, v->e), *e = v->e;
-    jval key;
+    const char *s = j_ws(p + 1, e);
 
     *nf = 0;
-    while (s < e && *s == '"') {
-        jfield tmp;
-        if (!(s = j_string(r, s, e, &key))) return -1;
+    if (s < e && *s == '}') return s + 1;
+    for (;;) {
+        jval key, val;
+        if (s >= e || *s != '"') { fail(r, s, "expected a key in quotes"); return NULL; }
+        if (!(s = j_string(r, s, e, &key))) return NULL;
         s = j_ws(s, e);
-        s = j_ws(s + 1, e);                 /* the ':' */
-        if (!(s = j_value(r, s, e, &tmp.v, 1))) return -1;
-        tmp.k = key.p;
-        tmp.kn = (size_t)(key.e - key.p);
-        if (*nf < J_MAXFIELDS) f[(*nf)++] = tmp;
+        if (s >= e || *s != ':') { fail(r, s, "expected ':' after the key"); return NULL; }
+        s = j_ws(s + 1, e);
+        if (!(s = j_value(r, s, e, &val, 2))) return NULL;
+        if (*nf < J_MAXFIELDS) {
+            f[*nf].k = key.p;
+            f[*nf].kn = (size_t)(key.e - key.p);
+            f[*nf].v = val;
+            ++*nf;
+        }
         s = j_ws(s, e);
-        if (s < e && *s == ',') s = j_ws(s + 1, e);
+        if (s < e && *s == ',') { s = j_ws(s + 1, e); continue; }
+        if (s < e && *s == '}') return s + 1;
+        fail(r, s, "expected ',' or '}'");
+        return NULL;
     }
-    return 0;
+}
+
+/* The fields of the object v (already checked). */
+static int j_fields(rd *r, const jval *v, jfield *f, int *nf)
+{
+    return j_object(r, v->p, v->e, f, nf) ? 0 : -1;
 }
 
 /* The field named key, or NULL. */
@@ -574,42 +660,41 @@ static int jmodel(rd *r, const jfield *f, int nf, const char *what, uint32_t *id
     return 0;
 }
 
-static int j_vertex(rd *r, const jfield *f, int nf)
+/* A vertex record, or with clipv a clip-vertex record (the matrix camera's
+** clipped end of a segment: "segment" instead of "v"). */
+static int j_vertex(rd *r, const jfield *f, int nf, int clipv)
 {
-    static const char *const keys[3] = {"x", "y", "z"};
-    const jval *v;
+    const char *what = clipv ? "clipvertex" : "vertex";
+    const pt_tshape *sh;
+    const jval *v, *sv;
     pt_tvrec *rec;
-    int st, k, ncoord;
+    int st, k, isnull = 0, nul;
     uint32_t model;
     uint64_t vnum;
 
-    if (jmodel(r, f, nf, "vertex", &model) != 0) return -1;
-    if (!(v = need(r, f, nf, "v", "vertex")) || jcount(r, v, 1, &vnum) != 0) return -1;
-    if (!(v = need(r, f, nf, "stage", "vertex"))) return -1;
-    st = -1;
-    for (k = 0; v->kind == J_STR && k < PT_NSTAGES; k++)
-        if (is(v->p, (size_t)(v->e - v->p), pt_stage_infos[k].name)) st = k;
-    if (st < 0) return fail(r, v->p, "unknown stage");
+    if (jmodel(r, f, nf, what, &model) != 0) return -1;
+    if (!(v = need(r, f, nf, clipv ? "segment" : "v", what)) || jcount(r, v, 1, &vnum) != 0)
+        return -1;
+    if (!(sv = need(r, f, nf, "stage", what))) return -1;
+    st = sv->kind == J_STR ? stage_named(sv->p, (size_t)(sv->e - sv->p)) : -1;
+    if (st < 0) return fail(r, sv->p, "unknown stage");
+    if (clipv && clipv_number(r, model, vnum, st, sv->p, &vnum) != 0) return -1;
     if (!(rec = new_vrec(r))) return -1;
     rec->model = model;
     rec->v = vnum;
     rec->stage = (unsigned char)st;
-    if (st <= PT_STAGE_PIXEL) {
-        ncoord = st == PT_STAGE_PIXEL ? 2 : 3;
-        for (k = 0; k < ncoord; k++) {
-            if (!(v = need(r, f, nf, keys[k], "vertex"))) return -1;
-            if (jnum(r, v, &rec->u.d[k]) != 0) return -1;
-        }
-    } else {
-        int isnull = 0, nul2 = 0;
-        ncoord = st == PT_STAGE_INDEX ? 1 : 2;
-        for (k = 0; k < ncoord; k++) {
-            if (!(v = need(r, f, nf, st == PT_STAGE_INDEX ? "i" : keys[k], "vertex"))) return -1;
-            if (jint(r, v, &rec->u.n[k], 1, k ? &nul2 : &isnull) != 0) return -1;
-            if (k && nul2 != isnull) return fail(r, v->p, "one coordinate null, the other not");
-        }
-        if (isnull) rec->flags |= PT_REC_NULL;
+    sh = &pt_tshapes[st];
+    for (k = 0; k < sh->nreal; k++) {
+        if (!(v = need(r, f, nf, sh->key[k], what))) return -1;
+        if (jnum(r, v, &rec->u.d[k]) != 0) return -1;
     }
+    for (k = 0; k < sh->nint; k++) {
+        if (!(v = need(r, f, nf, sh->key[k], what))) return -1;
+        if (jint(r, v, &rec->u.n[k], st != PT_STAGE_CVV, &nul) != 0) return -1;
+        if (k && nul != isnull) return fail(r, v->p, "one coordinate null, the other not");
+        isnull = nul;
+    }
+    if (isnull) rec->flags |= PT_REC_NULL;
     if (st == PT_STAGE_IMAGE && (v = j_get(f, nf, "behind")) != NULL) {
         if (v->kind != J_TRUE && v->kind != J_FALSE) return fail(r, v->p, "expected true or false");
         if (v->kind == J_TRUE) rec->flags |= PT_REC_BEHIND;
@@ -712,7 +797,8 @@ static int j_header(rd *r, const jfield *f, int nf)
     if (!(v = need(r, f, nf, "camera", "header"))) return -1;
     if (v->kind == J_STR && is(v->p, (size_t)(v->e - v->p), "perspective")) h->perspective = 1;
     else if (v->kind == J_STR && is(v->p, (size_t)(v->e - v->p), "orthographic")) h->perspective = 0;
-    else return fail(r, v->p, "expected \"perspective\" or \"orthographic\"");
+    else if (v->kind == J_STR && is(v->p, (size_t)(v->e - v->p), "lookat")) h->perspective = -1;
+    else return fail(r, v->p, "expected \"perspective\", \"orthographic\" or \"lookat\"");
     if (!(v = need(r, f, nf, "models", "header"))) return -1;
     if (v->kind != J_ARR) return fail(r, v->p, "expected a list of models");
     while (j_item(r, v, &pos, &item)) {
@@ -741,7 +827,6 @@ static int j_header(rd *r, const jfield *f, int nf)
 static int json_line(rd *r)
 {
     jfield f[J_MAXFIELDS];
-    jval obj;
     const jval *type;
     const char *s = j_ws(r->line, r->eol), *end;
     int nf;
@@ -749,14 +834,14 @@ static int json_line(rd *r)
 
     if (s == r->eol) return 0;              /* a blank line */
     if (*s != '{') return fail(r, s, "expected a JSON object");
-    if (!(end = j_nested(r, s, r->eol, &obj, 1))) return -1;
+    if (!(end = j_object(r, s, r->eol, f, &nf))) return -1;
     end = j_ws(end, r->eol);
     if (end != r->eol) return fail(r, end, "text after the object");
-    if (j_fields(r, &obj, f, &nf) != 0) return -1;
     if (!(type = need(r, f, nf, "type", "a"))) return -1;
     if (type->kind != J_STR) return fail(r, type->p, "expected the record type in quotes");
     n = (size_t)(type->e - type->p);
-    if (is(type->p, n, "vertex")) return j_vertex(r, f, nf);
+    if (is(type->p, n, "vertex")) return j_vertex(r, f, nf, 0);
+    if (is(type->p, n, "clipvertex")) return j_vertex(r, f, nf, 1);
     if (is(type->p, n, "pixel")) return j_pixel(r, f, nf);
     if (is(type->p, n, "clip")) return j_clip(r, f, nf);
     if (is(type->p, n, "header")) return j_header(r, f, nf);
@@ -836,40 +921,37 @@ static int text_count(rd *r, const char *w, size_t n, uint64_t lo, uint64_t *x)
     return 0;
 }
 
-/* Labels of each stage's values in the text format. */
-static const char *const text_labels[PT_NSTAGES][3] = {
-    {"x_m", "y_m", "z_m"}, {"x_c", "y_c", "z_c"}, {"x_ip", "y_ip", "z_ip"},
-    {"x_pp", "y_pp", NULL}, {"x_vp", "y_vp", NULL}, {"x_fb", "y_fb", NULL},
-    {"idx", NULL, NULL},
-};
-
-/* "NAME vN  STAGE  x_.. = X  y_.. = Y ...": c is past "vN". */
-static int t_vertex(rd *r, cur *c, uint32_t model, uint64_t vnum, const char *sw, size_t sn)
+/* "NAME vN  STAGE  x_.. = X  y_.. = Y ...", or for a clip vertex "NAME sN
+** STAGE ...": c is past the "vN" or "sN" word, sw[0..sn) the stage word. */
+static int t_vertex(rd *r, cur *c, uint32_t model, uint64_t vnum, int clipv,
+                    const char *sw, size_t sn)
 {
+    const pt_tshape *sh;
     pt_tvrec *rec;
     const char *w;
     size_t n;
-    int st = -1, k, isnull = 0, nul;
+    int st = stage_named(sw, sn), k, isnull = 0, nul;
 
-    for (k = 0; k < PT_NSTAGES; k++) if (is(sw, sn, pt_stage_infos[k].name)) st = k;
     if (st < 0) return fail(r, sw, "unknown stage '%.*s'", (int)(sn > 40 ? 40 : sn), sw);
+    if (clipv && clipv_number(r, model, vnum, st, sw, &vnum) != 0) return -1;
     if (!(rec = new_vrec(r))) return -1;
     rec->model = model;
     rec->v = vnum;
     rec->stage = (unsigned char)st;
-    for (k = 0; k < 3 && text_labels[st][k]; k++) {
-        if (expect(r, c, text_labels[st][k]) || expect(r, c, "=")) return -1;
-        if (st <= PT_STAGE_PIXEL) {
+    sh = &pt_tshapes[st];
+    for (k = 0; k < sh->nreal + sh->nint; k++) {
+        if (expect(r, c, sh->label[k]) || expect(r, c, "=")) return -1;
+        if (sh->nreal) {
             if (text_real(r, c, &rec->u.d[k]) != 0) return -1;
         } else {
-            if (text_int(r, c, &rec->u.n[k], 1, &nul) != 0) return -1;
+            if (text_int(r, c, &rec->u.n[k], st != PT_STAGE_CVV, &nul) != 0) return -1;
             if (k && nul != isnull) return fail(r, c->p, "one coordinate none, the other not");
             isnull = nul;
         }
     }
     if (isnull) rec->flags |= PT_REC_NULL;
-    while (word(c, &w, &n)) {               /* flags, then warnings after '!' */
-        if (is(w, n, "!")) break;
+    while (word(c, &w, &n)) {               /* flags; then notes and warnings */
+        if (is(w, n, "!") || w[0] == '(') break;
         if (st == PT_STAGE_IMAGE && is(w, n, "behind")) {
             if (expect(r, c, "the") || expect(r, c, "camera")) return -1;
             rec->flags |= PT_REC_BEHIND;
@@ -960,10 +1042,11 @@ static int text_record(rd *r)
     if (text_count(r, id + 1, ni - 1, 1, &num) != 0) return -1;
     if (!word(&c, &kind, &nk)) return fail(r, kind, "expected a stage or record kind");
     if (pt_names_intern(r->nm, name, nn, &model) != 0) return oom(r);
-    if (id[0] == 'v') return t_vertex(r, &c, model, num, kind, nk);
+    if (id[0] == 'v') return t_vertex(r, &c, model, num, 0, kind, nk);
     if (is(kind, nk, "pixel")) return t_pixel(r, &c, model, num);
     if (is(kind, nk, "clipped")) return t_clip(r, &c, model, num);
     if (is(kind, nk, "skipped")) return 0;
+    if (stage_named(kind, nk) >= 0) return t_vertex(r, &c, model, num, 1, kind, nk);
     return fail(r, kind, "unknown record '%.*s'", (int)(nk > 40 ? 40 : nk), kind);
 }
 
@@ -1003,7 +1086,8 @@ static int text_header_line(rd *r)
     size_t n;
 
     word(&c, &w, &n);
-    if (starts(r, "scene ") || starts(r, "obj placed ") || starts(r, "  left out ")) return 0;
+    if (starts(r, "scene ") || starts(r, "obj placed ") || starts(r, "  ") ||
+        starts(r, "projection ") || starts(r, "view ")) return 0;  /* nothing diff needs */
     if (is(w, n, "framebuffer")) return t_size(r, &c, &h->fb_w, &h->fb_h);
     if (is(w, n, "viewport")) {
         const char *s;
@@ -1028,7 +1112,8 @@ static int text_header_line(rd *r)
         if (!word(&c, &w, &n)) return fail(r, w, "expected the camera");
         if (is(w, n, "perspective")) h->perspective = 1;
         else if (is(w, n, "orthographic")) h->perspective = 0;
-        else return fail(r, w, "expected 'perspective' or 'orthographic'");
+        else if (is(w, n, "lookat")) h->perspective = -1;
+        else return fail(r, w, "expected 'perspective', 'orthographic' or 'lookat'");
         return 0;
     }
     if (is(w, n, "model")) {

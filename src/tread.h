@@ -54,19 +54,39 @@ void pt_names_free(pt_names *nm);
 
 /* ===== records ===== */
 
-/* One vertex record: a vertex at one stage.  Which of d[] and n[] hold values
-** depends on the stage, as in pt_vrec: model, camera, image use d[0..2]; pixel
-** d[0..1]; viewport and framebuffer n[0..1]; index n[0].  PT_REC_NULL marks an
-** integer stage without value ("null" in JSON, "none" in text). */
+/* How each stage's record is laid out: nreal doubles (model .. pixel, and the
+** matrix camera's world .. screen) or nint integers (viewport, framebuffer,
+** index, cvv), named label[] in the text format and key[] in JSON Lines. */
+typedef struct pt_tshape {
+    int nreal;                   /* doubles in d[]; 0 for an integer stage */
+    int nint;                    /* integers in n[] */
+    const char *label[4];        /* "x_m", "y_m", ... */
+    const char *key[4];          /* "x", "y", ... */
+} pt_tshape;
+
+extern const pt_tshape pt_tshapes[PT_NSTAGES_ALL];
+
+/* The stages of both cameras in one pipeline order.  A vertex has the stages
+** of one camera, so its records come in this order. */
+extern const unsigned char pt_torder[PT_NSTAGES_ALL];
+
+/* Vertex numbers with this bit stand for the points where the matrix camera
+** clips a segment: v = PT_TCLIPV | (segment << 1) | end, end 0 or 1 in the
+** order the trace gives them. */
+#define PT_TCLIPV (UINT64_C(1) << 63)
+
+/* One vertex record: a vertex at one stage, laid out as pt_tshapes[stage]
+** says.  PT_REC_NULL marks an integer stage without value ("null" in JSON,
+** "none" in text). */
 typedef struct pt_tvrec {
-    uint64_t v;                  /* 1-based vertex number */
+    uint64_t v;                  /* 1-based vertex number, or a PT_TCLIPV one */
     uint32_t model;              /* name id */
     uint32_t line;               /* line of the file, at most UINT32_MAX */
     unsigned char stage;         /* pt_stage */
     unsigned char flags;         /* PT_REC_NULL, PT_REC_INSIDE, PT_REC_BEHIND */
     union {
-        double d[3];             /* real-valued stages */
-        int64_t n[3];            /* integer stages */
+        double d[4];             /* real-valued stages */
+        int64_t n[4];            /* integer stages */
     } u;
 } pt_tvrec;
 
@@ -98,7 +118,8 @@ typedef struct pt_thdr {
     int have;                    /* 1: the trace has a header */
     int fb_w, fb_h;              /* framebuffer size W x H */
     int vp_x, vp_y, vp_w, vp_h;  /* viewport corner (x_ul, y_ul), size w x h */
-    int perspective;             /* 1: perspective camera, 0: orthographic */
+    int perspective;             /* 1: perspective, 0: orthographic (the classic
+                                 ** camera), -1: the matrix camera (lookat) */
     pt_tmodel *models;           /* in file order; owned */
     size_t nmodels, cap;         /* count and room */
 } pt_thdr;

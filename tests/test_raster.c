@@ -187,6 +187,28 @@ static void test_advance(void)
         if (pt_raster_advance(y, m, k) != naive_advance(y, m, k)) ok = 0;
     }
     PT_CHECK("raster-3.2 fast-forward equals k additions (300 random, some ties)", ok);
+
+    /* 2026-11-22: m = 0 at y = 0 (a vertical line along the viewport's edge)
+    ** stepped one at a time: 10^13 steps hung (found with a scene like
+    ** tests/extreme/edge-line-1e13.scene). */
+    PT_CHECK("raster-3.3 m = 0: 10^15 steps at once; -0 becomes +0",
+             pt_raster_advance(0.0, 0.0, 1000000000000000ULL) == 0 &&
+             !signbit(pt_raster_advance(-0.0, 0.0, 5)) && signbit(pt_raster_advance(-0.0, 0.0, 0)));
+    PT_CHECK("raster-3.4 subnormal steps from 0 jump too (10^12 steps of 1e-310 would overflow into normals)",
+             pt_raster_advance(0.0, 4.9e-324, 1000000000000ULL) == 1000000000000.0 * 4.9e-324);
+    ok = 1;
+    {
+        static const double tiny[] = {4.9e-324, 1e-310, -3e-315, 2.2250738585072014e-308, 1e-300};
+        size_t a;
+        for (a = 0; a < sizeof tiny / sizeof tiny[0]; a++) {
+            uint64_t kk;
+            for (kk = 0; kk < 200000; kk = kk * 3 + 1)
+                if (pt_raster_advance(0.0, tiny[a], kk) != naive_advance(0.0, tiny[a], kk) ||
+                    pt_raster_advance(-1e-305, tiny[a], kk) != naive_advance(-1e-305, tiny[a], kk))
+                    ok = 0;
+        }
+    }
+    PT_CHECK("raster-3.5 near zero and among subnormals: equals k additions", ok);
 }
 
 /* A long segment drawn both ways: the rasterizer (which skips) and a plain

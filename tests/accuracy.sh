@@ -1,0 +1,132 @@
+#!/bin/sh
+# tests/accuracy.sh -- pipetrace accuracy: tables, known answers, the plot, exit codes
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/accuracy.sh PIPETRACE.  Run from the repository root.  Also
+# runs test_accuracy (the unit test of src/accuracy.c) from PIPETRACE's
+# directory and adds its counts.  Everything but one plot runs with --no-time.
+exe=$1
+dir=$(dirname "$exe")
+ref=tests/reference
+[ -d ../shared/reference ] && ref=../shared/reference
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+
+check() {   # check DESCRIPTION COMMAND...: the command must succeed
+    d=$1; shift
+    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
+    else failed=$((failed + 1)); echo "FAIL $d"; fi
+}
+
+run() {     # run ARGS...: sets $out, $rc; stdout in tmp/out, stderr in tmp/err
+    "$exe" accuracy "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    out=$(cat "$tmp/out")
+}
+
+field() {   # field ROW_PREFIX N: the Nth word of the first line starting with ROW_PREFIX
+    grep "^$1" "$tmp/out" | head -1 | awk -v n="$2" '{ print $n }'
+}
+
+# ---- the unit test of src/accuracy.c
+if [ -x "$dir/test_accuracy" ]; then
+    "$dir/test_accuracy" "$ref" > "$tmp/unit" 2>&1
+    grep '^FAIL' "$tmp/unit"
+    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/unit" | tail -1)
+    if [ -n "$last" ]; then
+        passed=$((passed + ${last%% passed*})); f=${last#*, }; failed=$((failed + ${f%% failed*}))
+    else
+        failed=$((failed + 1)); echo "FAIL test_accuracy crashed or printed no count"
+    fi
+else
+    failed=$((failed + 1)); echo "FAIL $dir/test_accuracy is not built"
+fi
+
+# ---- every example scene: the whole table, the same bytes every run
+for scene in docs/examples/*.scene; do
+    grep -q '^camera lookat' "$scene" && continue    # the matrix camera: not covered
+    name=${scene##*/}
+    run "$scene" --no-time
+    cp "$tmp/out" "$tmp/first"
+    check "acc-sh-1.1 $name: exit 0" test "$rc" = 0
+    check "acc-sh-1.2 $name: every stage, float and double" \
+        test "$(grep -cE '^(model|camera|image|pixel|viewport|framebuffer|index|raster) +(float|double) ' "$tmp/out")" = 16
+    check "acc-sh-1.3 $name: the three arithmetics" \
+        test "$(grep -cE '^(float +24|double +53|double-double +106) ' "$tmp/out")" = 3
+    check "acc-sh-1.4 $name: the reference's precision" grep -q 'double-double, 106 significant bits' "$tmp/out"
+    check "acc-sh-1.5 $name: no time columns with --no-time" test "$(grep -c 'ns/' "$tmp/out")" = 0
+    check "acc-sh-1.6 $name: double's model and camera stages are exact" \
+        test "$(field 'model        double' 3)$(field 'camera       double' 3)" = 00
+    run "$scene" --no-time
+    check "acc-sh-1.7 $name: the same output on a second run" cmp -s "$tmp/out" "$tmp/first"
+done
+run --no-time
+check "acc-sh-1.8 the built-in scene by default" grep -q '^pipetrace accuracy: <builtin>$' "$tmp/out"
+
+# ---- known answers
+run tests/extreme/cancel-translate.scene --no-time
+check "acc-sh-2.1 cancel-translate: float's camera stage has an error" \
+    test "$(field 'camera       float' 3)" != 0
+check "acc-sh-2.2 ... double's has none (one exactly rounded addition)" \
+    test "$(field 'camera       double' 3)" = 0
+run tests/extreme/corner-plus-one.scene --no-time
+check "acc-sh-2.3 corner-plus-one: with 2.001 no vertex leaves the viewport" \
+    test "$(field '2.001 ' 4)" = 0
+check "acc-sh-2.4 ... with 2.0 the corner x_ip = 1 does" test "$(field '2.0 ' 4)" = 1
+run tests/data/drift.scene --no-time
+check "acc-sh-2.5 drift: double's y += m is a pixel or more off the exact line" \
+    awk -v e="$(field 'double      y += m' 5)" 'BEGIN { exit !(e + 0 >= 1) }'
+check "acc-sh-2.6 ... and lights other pixels than the reference" \
+    test "$(field 'double      y += m' 7 | cut -d/ -f1)" -gt 0
+check "acc-sh-2.7 ... recomputing y = y0 + m*(x - x0) lights the reference's" \
+    test "$(field 'double      recompute' 5 | cut -d/ -f1)" = 0
+
+# ---- timing and the plot (the only timed run: one repeat)
+run docs/examples/cube.scene --repeat 1 --svg "$tmp/plot.svg"
+check "acc-sh-3.1 --svg: exit 0" test "$rc" = 0
+check "acc-sh-3.2 timed: ns/vertex and ns/pixel columns" grep -q 'ns/vertex  ns/pixel' "$tmp/out"
+check "acc-sh-3.3 the plot is written" test -s "$tmp/plot.svg"
+if command -v xmllint >/dev/null 2>&1; then
+    check "acc-sh-3.4 the plot is well-formed XML (xmllint)" xmllint --noout "$tmp/plot.svg"
+elif command -v python3 >/dev/null 2>&1; then
+    check "acc-sh-3.4 the plot is well-formed XML (python3)" python3 -c '
+import sys, xml.etree.ElementTree as ET
+assert ET.parse(sys.argv[1]).getroot().tag == "{http://www.w3.org/2000/svg}svg"' "$tmp/plot.svg"
+fi
+check "acc-sh-3.5 the plot is self-contained (no links)" test "$(grep -c 'href' "$tmp/plot.svg")" = 0
+check "acc-sh-3.6 ... one circle per point, 8 stages x 3 arithmetics at most + choices" \
+    test "$(grep -c '<circle' "$tmp/plot.svg")" -ge 8
+check "acc-sh-3.7 ... says where errors of 0 are drawn" grep -q 'An error of 0 lies on' "$tmp/plot.svg"
+
+# ---- exit codes
+printf 'framebuffer 10 10\nmodel m\nv 1 2\n' > "$tmp/bad.scene"
+run "$tmp/bad.scene" --no-time
+check "acc-sh-4.1 bad scene: exit 2" test "$rc" = 2
+check "acc-sh-4.2 ... with FILE:LINE:COL: error:" grep -q "^$tmp/bad.scene:3:[0-9]*: error: " "$tmp/err"
+run "$tmp/missing.scene"
+check "acc-sh-4.3 missing scene: exit 2" test "$rc" = 2
+run --frobnicate
+check "acc-sh-4.4 unknown option: exit 1" test "$rc" = 1
+run --repeat 0
+check "acc-sh-4.5 --repeat 0: exit 1" test "$rc" = 1
+run --repeat
+check "acc-sh-4.6 --repeat without a value: exit 1" test "$rc" = 1
+run --no-time --svg "$tmp/x.svg"
+check "acc-sh-4.7 --svg with --no-time: exit 1" test "$rc" = 1 -a ! -e "$tmp/x.svg"
+run a.scene b.scene
+check "acc-sh-4.8 two scenes: exit 1" test "$rc" = 1
+run --help
+check "acc-sh-4.9 --help: exit 0, usage" test "$rc" = 0 -a -n "$(grep 'usage: pipetrace accuracy' "$tmp/out")"
+run docs/examples/triangle.scene --repeat 1 --svg "$tmp/nodir/plot.svg"
+check "acc-sh-4.10 unwritable --svg path: exit 2" test "$rc" = 2
+for scene in docs/examples/*.scene; do
+    grep -q '^camera lookat' "$scene" || continue
+    run "$scene" --no-time
+    check "acc-sh-4.11 ${scene##*/} (matrix camera): exit 2 with a reason" \
+        test "$rc" = 2 -a -n "$(grep 'matrix camera' "$tmp/err")"
+    break
+done
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

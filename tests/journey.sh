@@ -1,0 +1,126 @@
+#!/bin/sh
+# tests/journey.sh -- pipetrace journey (SVG, HTML) and --image FILE.png
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/journey.sh PIPETRACE.  Run from the repository root.  The
+# SVG must be well-formed XML with one panel per stage whose labels equal the
+# JSONL trace; the HTML page self-contained with the trace's numbers; the PNG
+# must decode to the PPM's pixels.  The checks that parse need python3
+# (standard library only); without it they are skipped and say so.
+exe=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+
+check() {   # check DESCRIPTION COMMAND...: the command must succeed
+    d=$1; shift
+    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
+    else failed=$((failed + 1)); echo "FAIL $d"; fi
+}
+
+run() {     # run ARGS...: sets $out, $err, $rc
+    "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
+}
+
+py() {      # py MODE ARGS...: tests/journey_check.py, its counts added to ours
+    if [ -z "$have_py" ]; then return; fi
+    python3 tests/journey_check.py "$@" > "$tmp/py" 2>&1
+    grep -E '^(FAIL|  )' "$tmp/py" | head -20
+    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
+    if [ -z "$last" ]; then
+        tail -5 "$tmp/py"; echo "FAIL journey_check.py $1 crashed"; failed=$((failed + 1)); return
+    fi
+    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
+    passed=$((passed + p)); failed=$((failed + f))
+}
+have_py=
+command -v python3 >/dev/null 2>&1 && have_py=1
+[ -z "$have_py" ] && echo "note: python3 not found: the parsing checks are skipped" >&2
+
+# ---- exit codes
+run journey
+check "jny-1.1 no --vertex: exit 1" test "$rc" = 1
+check "jny-1.2 ... says so" grep -q -- "--vertex N is required" "$tmp/err"
+run journey --vertex 1
+check "jny-1.3 no --svg or --html: exit 1" test "$rc" = 1
+run journey --vertex 0 --svg "$tmp/x.svg"
+check "jny-1.4 --vertex 0: exit 1" test "$rc" = 1
+run journey --vertex 1 --frob --svg "$tmp/x.svg"
+check "jny-1.5 unknown option: exit 1" test "$rc" = 1
+run journey --help
+check "jny-1.6 --help: exit 0" test "$rc" = 0 -a -n "$(echo "$out" | grep 'usage: pipetrace journey')"
+printf 'framebuffer 10 10\nmodel m\nv 1 2\n' > "$tmp/bad.scene"
+echo keep > "$tmp/keep.svg"
+run journey "$tmp/bad.scene" --vertex 1 --svg "$tmp/keep.svg" --html "$tmp/new.html"
+check "jny-1.7 bad scene: exit 2" test "$rc" = 2
+check "jny-1.8 ... FILE:LINE:COL message" grep -q "^$tmp/bad.scene:3:[0-9]*: error: " "$tmp/err"
+check "jny-1.9 ... the old file kept, no new file" test "$(cat "$tmp/keep.svg")" = keep -a ! -e "$tmp/new.html"
+run journey docs/examples/triangle.scene --vertex 4 --svg "$tmp/x.svg"
+check "jny-1.10 vertex out of range: exit 2" test "$rc" = 2 -a ! -e "$tmp/x.svg"
+run journey docs/examples/triangle.scene --vertex 1 --model nosuch --svg "$tmp/x.svg"
+check "jny-1.11 no such model: exit 2" test "$rc" = 2
+run journey docs/examples/compare-matrix.scene --vertex 1 --svg "$tmp/x.svg"
+check "jny-1.12 matrix camera: exit 2" test "$rc" = 2 -a ! -e "$tmp/x.svg"
+check "jny-1.13 ... with a message" grep -q "matrix camera" "$tmp/err"
+run journey docs/examples/triangle.scene --vertex 1 --svg "$tmp/nodir/x.svg"
+check "jny-1.14 unwritable path: exit 2" test "$rc" = 2
+check "jny-1.15 no temporary file left" test "$(ls "$tmp" | grep -c '\.svg\.\|\.html\.')" = 0
+
+# ---- the SVG
+run journey --vertex 1 --svg "$tmp/b1.svg"
+check "jny-2.1 built-in scene, vertex 1: exit 0, nothing on stdout" test "$rc" = 0 -a -z "$out"
+check "jny-2.2 the same SVG as docs/journey-builtin.svg (make screenshots)" \
+    cmp -s "$tmp/b1.svg" docs/journey-builtin.svg
+"$exe" journey --vertex 1 --svg - > "$tmp/b1-stdout.svg"
+check "jny-2.3 --svg - writes the same to stdout" cmp -s "$tmp/b1.svg" "$tmp/b1-stdout.svg"
+"$exe" journey --vertex 1 --svg "$tmp/b1-again.svg"
+check "jny-2.4 byte-identical on a second run" cmp -s "$tmp/b1.svg" "$tmp/b1-again.svg"
+if command -v xmllint >/dev/null 2>&1; then
+    check "jny-2.5 xmllint: well-formed" xmllint --noout "$tmp/b1.svg"
+fi
+py svg "$exe" "$tmp/b1.svg" cube 1
+# vertices off the view rectangle, behind the camera, outside the framebuffer,
+# not finite, huge, unused; an orthographic camera
+printf 'framebuffer 20 10\nmodel m\nv 1 0.5 0\nv 0 0 -2\nl 1 2\n' > "$tmp/z0.scene"
+printf 'framebuffer 20 10\ncamera orthographic\nmodel m\nv 1e17 0 0\nv 1e18 0 0\nv 0 0 0\nl 3 1\nl 3 2\n' \
+    > "$tmp/big.scene"
+for c in "docs/examples/behind.scene stick 2" "docs/examples/clip.scene m 1" \
+         "docs/examples/clip.scene m 2" "docs/examples/ortho.scene far 3" \
+         "$tmp/z0.scene m 1" "$tmp/big.scene m 2" "$tmp/big.scene m 1" \
+         "docs/examples/two-models.scene arrow 2" "docs/examples/builtin.scene floor 3"; do
+    set -- $c
+    "$exe" journey "$1" --model "$2" --vertex "$3" --svg "$tmp/e.svg" 2>"$tmp/err"
+    check "jny-2.6 $c: exit 0" test $? = 0
+    py svg "$exe" "$tmp/e.svg" "$2" "$3" "$1"
+done
+# names that need escaping, and UTF-8
+printf "framebuffer 30 20\nmodel a<b&c'>\303\251\nv 0 0 -2\nv 1 1 -3\nl 1 2\n" > "$tmp/name.scene"
+"$exe" journey "$tmp/name.scene" --vertex 1 --svg "$tmp/n.svg" --html "$tmp/n.html"
+check "jny-2.7 a model name with < & ' > and UTF-8: exit 0" test $? = 0
+check "jny-2.8 ... escaped in the SVG" grep -q 'a&lt;b&amp;c&apos;&gt;' "$tmp/n.svg"
+py svg "$exe" "$tmp/n.svg" "$(printf "a<b&c'>\303\251")" 1 "$tmp/name.scene"
+py html "$exe" "$tmp/n.html" "$tmp/name.scene"
+
+# ---- the HTML page
+run journey --vertex 1 --html "$tmp/b1.html"
+check "jny-3.1 --html: exit 0" test "$rc" = 0 -a -s "$tmp/b1.html"
+check "jny-3.2 starts as HTML5" test "$(head -c 15 "$tmp/b1.html")" = "<!DOCTYPE html>"
+py html "$exe" "$tmp/b1.html"
+"$exe" journey docs/examples/clip.scene --vertex 1 --html "$tmp/c.html"
+py html "$exe" "$tmp/c.html" docs/examples/clip.scene
+
+# ---- PNG beside PPM
+for s in "" docs/examples/triangle.scene docs/examples/clip.scene; do
+    "$exe" $s --image "$tmp/i.ppm" && "$exe" $s --image "$tmp/i.png"
+    check "jny-4.1 --image .png and .ppm ${s:-builtin}: exit 0" test $? = 0
+    check "jny-4.2 ... the PNG starts with the PNG signature" \
+        test "$(head -c 4 "$tmp/i.png" | tail -c 3)" = PNG
+    py png "$tmp/i.png" "$tmp/i.ppm"
+done
+"$exe" docs/examples/triangle.scene --image "$tmp/upper.PNG"
+check "jny-4.3 .PNG in capitals is PNG too" test "$(head -c 4 "$tmp/upper.PNG" | tail -c 3)" = PNG
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

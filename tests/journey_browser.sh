@@ -1,0 +1,92 @@
+#!/bin/sh
+# tests/journey_browser.sh -- the journey page in headless Chromium
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/journey_browser.sh PIPETRACE [SHOTDIR].  Run from the
+# repository root.  Loads pages written by `pipetrace journey --html` from
+# disk in headless Chromium (no network, no driver: the page runs its own
+# self-test when opened with #selftest, and --dump-dom shows the result):
+#   - #selftest clicks Prev and Next through every stage of every vertex of
+#     the scene; each stage's #coords must equal the JSONL trace;
+#   - #v=N&m=MODEL&stage=K opens a chosen vertex and stage;
+#   - screenshots of the SVG and of each stage of the page go to SHOTDIR
+#     (default: journey-shots beside PIPETRACE); `make screenshots` copies two
+#     of them into docs/.
+# Without chromium (Debian package `chromium`) it skips: "0 passed, 0 failed".
+exe=$1
+shots=${2:-$(dirname "$exe")/journey-shots}
+browser=
+for b in chromium chromium-browser google-chrome; do
+    if command -v "$b" >/dev/null 2>&1; then browser=$b; break; fi
+done
+if [ -z "$browser" ] || ! command -v python3 >/dev/null 2>&1; then
+    echo "  skipped: chromium (or python3) not installed"
+    echo "0 passed, 0 failed"
+    exit 0
+fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$shots"
+passed=0
+failed=0
+
+check() {   # check DESCRIPTION COMMAND...: the command must succeed
+    d=$1; shift
+    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
+    else failed=$((failed + 1)); echo "FAIL $d"; fi
+}
+
+py() {      # py MODE ARGS...: tests/journey_check.py, its counts added to ours
+    python3 tests/journey_check.py "$@" > "$tmp/py" 2>&1
+    grep -E '^(FAIL|  )' "$tmp/py" | head -20
+    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
+    if [ -z "$last" ]; then
+        tail -5 "$tmp/py"; echo "FAIL journey_check.py $1 crashed"; failed=$((failed + 1)); return
+    fi
+    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
+    passed=$((passed + p)); failed=$((failed + f))
+}
+
+chrome() {  # chrome ARGS... URL: one headless run, its own profile, no network
+    prof=$(mktemp -d "$tmp/profile.XXXXXX")
+    timeout 60 "$browser" --headless --no-sandbox --disable-gpu --disable-quic \
+        --no-first-run --disable-background-networking --disable-component-update \
+        --disable-sync --disable-extensions --hide-scrollbars --user-data-dir="$prof" \
+        --virtual-time-budget=3000 "$@" 2>>"$tmp/chrome.log"
+}
+
+url() { printf 'file://%s%s' "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" "$2"; }
+
+# ---- every stage of every vertex, by clicking
+for s in "" docs/examples/clip.scene docs/examples/behind.scene docs/examples/ortho.scene; do
+    "$exe" journey $s --vertex 1 --html "$tmp/p.html"
+    chrome --dump-dom "$(url "$tmp/p.html" '#selftest')" > "$tmp/dom.html"
+    check "web-1 ${s:-builtin}: the page loads" test -s "$tmp/dom.html"
+    py selftest "$exe" "$tmp/dom.html" $s
+done
+printf 'framebuffer 20 10\nmodel m\nv 1 0.5 0\nv 0 0 -2\nl 1 2\n' > "$tmp/z0.scene"
+"$exe" journey "$tmp/z0.scene" --vertex 1 --html "$tmp/z.html"
+chrome --dump-dom "$(url "$tmp/z.html" '#selftest')" > "$tmp/dom.html"
+py selftest "$exe" "$tmp/dom.html" "$tmp/z0.scene"
+
+# ---- a vertex and stage chosen by the URL
+"$exe" journey --vertex 1 --html "$tmp/b.html" --svg "$tmp/b.svg"
+chrome --dump-dom "$(url "$tmp/b.html" '#v=5&m=pyramid&stage=4')" > "$tmp/dom.html"
+py dom "$exe" "$tmp/dom.html" pyramid 5 pixel
+chrome --dump-dom "$(url "$tmp/b.html" '#v=2&stage=index')" > "$tmp/dom.html"
+py dom "$exe" "$tmp/dom.html" cube 2 index
+
+# ---- screenshots: the SVG, and the page at each stage of vertex 1
+rm -f "$shots"/journey-*.png
+chrome --window-size=1680,772 --screenshot="$shots/journey-builtin.png" "$(url "$tmp/b.svg")" >/dev/null
+check "web-2 screenshot of the SVG" test -s "$shots/journey-builtin.png"
+py color "$shots/journey-builtin.png" d62728
+for k in 1 2 3 4 5 6 7; do
+    chrome --window-size=1200,860 --screenshot="$shots/journey-page-stage$k.png" \
+        "$(url "$tmp/b.html" "#v=1&stage=$k")" >/dev/null
+    check "web-3 screenshot of the page at stage $k" test -s "$shots/journey-page-stage$k.png"
+done
+py color "$shots/journey-page-stage4.png" d62728
+echo "screenshots in $shots" >&2
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

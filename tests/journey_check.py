@@ -1,0 +1,300 @@
+#!/usr/bin/env python3
+# tests/journey_check.py -- checks of pipetrace journey's SVG, HTML and PNG output
+# See LICENSE for copyright and license.
+#
+# Python's standard library only.  Each mode prints "FAIL ..." lines and, last,
+# "N passed, N failed"; exit status 1 when anything failed.
+#
+#   svg EXE FILE MODEL V [SCENE]     well-formed XML, scalable root, seven panels
+#                                    in pipeline order, each panel's coordinates
+#                                    label equal to the JSONL trace's values
+#   html EXE FILE [SCENE]            self-contained page (no network, no other
+#                                    file), the ids the page promises, every
+#                                    listed vertex's coordinates equal to the
+#                                    trace, every panel fragment well-formed
+#   selftest EXE DOM [SCENE]         the page's #selftest output (chromium
+#                                    --dump-dom): "ok ...", every vertex of the
+#                                    trace, every stage, values equal to the trace
+#   dom EXE DOM MODEL V STAGE [SCENE]  #stage and #coords of a dumped page
+#   png FILE.png FILE.ppm            the PNG decodes (CRC of every chunk, zlib's
+#                                    Adler-32) to the PPM's pixels
+#   color FILE.png RRGGBB            the PNG holds a pixel of that color
+import html
+import json
+import re
+import struct
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+import zlib
+
+STAGES = ["model", "camera", "image", "pixel", "viewport", "framebuffer", "index"]
+passed = 0
+failed = 0
+
+
+def check(descr, cond, detail=""):
+    global passed, failed
+    if cond:
+        passed += 1
+    else:
+        failed += 1
+        print("FAIL %s%s" % (descr, (": " + detail) if detail else ""))
+
+
+def report():
+    print("%d passed, %d failed" % (passed, failed))
+    sys.exit(1 if failed else 0)
+
+
+def trace(exe, scene):
+    """{(model, v, stage): [raw JSON value tokens]} of every traced record."""
+    args = [exe] + ([scene] if scene else []) + ["--format", "jsonl", "--all-stages"]
+    out = subprocess.run(args, stdout=subprocess.PIPE, check=True).stdout.decode("utf-8")
+    recs = {}
+    for line in out.splitlines():
+        if not line.startswith('{"type":"vertex"'):
+            continue
+        obj = json.loads(line)
+        keys = ["i"] if obj["stage"] == "index" else \
+            ["x", "y", "z"] if obj["stage"] in ("model", "camera", "image") else ["x", "y"]
+        toks = []
+        for k in keys:        # the value exactly as written in the line
+            m = re.search(r'"%s":("[^"]*"|[^,}]*)' % k, line)
+            toks.append(m.group(1))
+        recs[(obj["model"], obj["v"], obj["stage"])] = toks
+    return recs
+
+
+def parse_coords(text):
+    """'(x_c, y_c, z_c) = (-2.5, -0.75, -6)' -> ['-2.5', '-0.75', '-6'];
+    'idx = 66133' -> ['66133']; '... = none' -> ['none'] * n."""
+    lhs, _, rhs = text.partition(" = ")
+    n = 1 if lhs == "idx" else lhs.count(",") + 1
+    if rhs == "none":
+        return ["none"] * n
+    return [t.strip() for t in rhs.strip("()").split(",")]
+
+
+def as_trace(tok):
+    """A JSONL token as the page and the SVG spell it."""
+    if tok == "null":
+        return "none"
+    return tok.strip('"')          # "inf", "-inf", "nan"
+
+
+def same(text, toks):
+    return parse_coords(text) == [as_trace(t) for t in toks]
+
+
+def svg_mode(exe, path, model, v, scene):
+    recs = trace(exe, scene)
+    try:
+        root = ET.parse(path).getroot()
+    except ET.ParseError as e:
+        check("svg-1 well-formed XML", False, str(e))
+        return
+    check("svg-1 well-formed XML", True)
+    ns = "{http://www.w3.org/2000/svg}"
+    check("svg-2 root is svg", root.tag == ns + "svg", root.tag)
+    vb = root.get("viewBox", "").split()
+    check("svg-3 viewBox with 4 numbers", len(vb) == 4 and float(vb[2]) > 0 and float(vb[3]) > 0)
+    check("svg-4 scales: width 100%, no fixed height", root.get("width") == "100%" and
+          root.get("height") is None)
+    panels = [g for g in root.iter(ns + "g") if g.get("class") == "panel"]
+    check("svg-5 one panel per stage, in pipeline order",
+          [g.get("data-stage") for g in panels] == STAGES, str([g.get("data-stage") for g in panels]))
+    for g in panels:
+        st = g.get("data-stage")
+        labels = [t for t in g.iter(ns + "text") if t.get("class") == "coords"]
+        check("svg-6 %s: one coordinates label" % st, len(labels) == 1)
+        if not labels:
+            continue
+        text = "".join(labels[0].itertext())
+        key = (model, int(v), st)
+        if key in recs:
+            check("svg-7 %s: label %r equals the trace %r" % (st, text, recs[key]),
+                  same(text, recs[key]))
+        notes = [t for t in g.iter(ns + "text") if t.get("class") == "note"]
+        check("svg-8 %s: a note" % st, len(notes) == 1)
+    for el in root.iter():           # every coordinate attribute is a plain number
+        for a in ("x", "y", "x1", "y1", "x2", "y2", "cx", "cy", "r", "width", "height"):
+            val = el.get(a)
+            if val is not None and el is not root:
+                if not re.fullmatch(r"-?\d+(\.\d+)?", val):
+                    check("svg-9 attribute %s=%r is a plain number" % (a, val), False)
+                    return
+    check("svg-9 every coordinate attribute is a plain number", True)
+
+
+def page_data(text):
+    m = re.search(r'<script type="application/json" id="data">\n(.*?)\n</script>', text, re.S)
+    return json.loads(m.group(1)) if m else None
+
+
+def html_mode(exe, path, scene):
+    text = open(path, encoding="utf-8").read()
+    recs = trace(exe, scene)
+    lower = text.lower()
+    urls = [u for u in re.findall(r"https?://[^\s\"'<>]*", text)
+            if u != "http://www.w3.org/2000/svg"]
+    check("html-1 no URL but the SVG namespace", not urls, str(urls[:3]))
+    check("html-2 no external file (src=, href=, <link, @import, url()",
+          not re.search(r"\bsrc\s*=|\bhref\s*=|<link|@import|url\(", lower))
+    for i in ("prev", "next", "vertex", "stage", "coords", "formula"):
+        check("html-3 has id=%s" % i, ('id="%s"' % i) in text)
+    data = page_data(text)
+    check("html-4 the data blob is JSON", data is not None)
+    if data is None:
+        return
+    check("html-5 seven stages", [s["name"] for s in data["stages"]] == STAGES)
+    used = sorted({(m, v) for (m, v, _) in recs})
+    listed = [(data["models"][x["m"]]["name"], x["v"]) for x in data["vertices"] if x["used"]]
+    if not data["capped"]:
+        check("html-6 every used vertex is listed, in scene order", listed == used or
+              sorted(listed) == used, "%d listed, %d used" % (len(listed), len(used)))
+    bad = 0
+    for x in data["vertices"]:
+        name = data["models"][x["m"]]["name"]
+        for k, st in enumerate(STAGES):
+            key = (name, x["v"], st)
+            if key in recs and not same(x["coords"][k], recs[key]):
+                bad += 1
+                if bad < 5:
+                    print("  %s v%d %s: %r vs %r" % (name, x["v"], st, x["coords"][k], recs[key]))
+    check("html-7 every listed vertex's coordinates equal the trace", bad == 0)
+    ok = True
+    for mo in data["models"]:
+        for k, bg in enumerate(mo["bg"]):
+            for x in data["vertices"][:20]:
+                if data["models"][x["m"]] is not mo:
+                    continue
+                try:
+                    ET.fromstring('<svg xmlns="http://www.w3.org/2000/svg">' + bg + x["fg"][k] +
+                                  "</svg>")
+                except ET.ParseError as e:
+                    ok = False
+                    print("  %s %s: %s" % (mo["name"], STAGES[k], e))
+                    break
+    check("html-8 every panel fragment is well-formed", ok)
+
+
+def selftest_mode(exe, dom, scene):
+    text = open(dom, encoding="utf-8", errors="replace").read()
+    recs = trace(exe, scene)
+    m = re.search(r'<pre id="selftest">(.*?)</pre>', text, re.S)
+    check("page-1 the self-test ran (<pre id=selftest>)", m is not None)
+    if not m:
+        return
+    lines = html.unescape(m.group(1)).strip("\n").split("\n")
+    check("page-2 the self-test says ok", lines[0].startswith("ok "), lines[0][:300])
+    seen = set()
+    for ln in lines[1:]:
+        model, v, st, coords = ln.split("\t")
+        key = (model, int(v), st)
+        seen.add(key)
+        if key in recs:
+            check("page-3 %s v%s %s: shown %r, trace %r" % (model, v, st, coords, recs[key]),
+                  same(coords, recs[key]))
+    check("page-4 the clicks reached every record of the trace", set(recs) <= seen,
+          "%d of %d" % (len(set(recs) & seen), len(recs)))
+
+
+def dom_mode(exe, dom, model, v, stage, scene):
+    text = open(dom, encoding="utf-8", errors="replace").read()
+    recs = trace(exe, scene)
+
+    def by_id(i):
+        m = re.search(r'id="%s"[^>]*>(.*?)</' % i, text, re.S)
+        return html.unescape(m.group(1)) if m else None
+    check("dom-1 #stage is %s" % stage, by_id("stage") == stage, repr(by_id("stage")))
+    c = by_id("coords")
+    key = (model, int(v), stage)
+    check("dom-2 #coords %r equals the trace" % c, c is not None and key in recs and
+          same(c, recs[key]), repr(recs.get(key)))
+    check("dom-3 #formula is not empty", bool(by_id("formula")))
+
+
+def png_read(path):
+    """(w, h, color type, rows of bytes) after checking every chunk's CRC."""
+    data = open(path, "rb").read()
+    check("png-1 %s: signature" % path, data[:8] == b"\x89PNG\r\n\x1a\n")
+    pos, idat, ihdr, crc_ok, ended = 8, b"", None, True, False
+    while pos + 12 <= len(data):
+        n, = struct.unpack(">I", data[pos:pos + 4])
+        typ, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        crc, = struct.unpack(">I", data[pos + 8 + n:pos + 12 + n])
+        crc_ok &= crc == zlib.crc32(typ + body) & 0xffffffff
+        if typ == b"IHDR":
+            ihdr = struct.unpack(">IIBBBBB", body)
+        elif typ == b"IDAT":
+            idat += body
+        elif typ == b"IEND":
+            ended = pos + 12 == len(data)
+        pos += 12 + n
+    check("png-2 %s: every chunk's CRC-32" % path, crc_ok)
+    check("png-3 %s: IHDR first, IEND last" % path, ihdr is not None and ended)
+    raw = zlib.decompress(idat)           # checks the zlib header and Adler-32
+    w, h, depth, ctype, _, _, interlace = ihdr
+    bpp = {2: 3, 6: 4}[ctype]
+    check("png-4 %s: 8 bits, not interlaced" % path, depth == 8 and interlace == 0)
+    stride, rows, prev = w * bpp, [], bytearray(w * bpp)
+    for y in range(h):
+        f = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):           # undo the row filter (PNG spec 9.2)
+            a = line[i - bpp] if i >= bpp else 0
+            b = prev[i]
+            c = prev[i - bpp] if i >= bpp else 0
+            if f == 1:
+                line[i] = (line[i] + a) & 255
+            elif f == 2:
+                line[i] = (line[i] + b) & 255
+            elif f == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(line))
+        prev = line
+    return w, h, ctype, rows
+
+
+def png_mode(png, ppm):
+    w, h, ctype, rows = png_read(png)
+    data = open(ppm, "rb").read()
+    m = re.match(rb"P6\n(\d+) (\d+)\n255\n", data)
+    pw, ph = int(m.group(1)), int(m.group(2))
+    check("png-5 same size as the PPM", (w, h) == (pw, ph), "%dx%d vs %dx%d" % (w, h, pw, ph))
+    check("png-6 RGB", ctype == 2)
+    check("png-7 same pixels as the PPM", b"".join(rows) == data[m.end():])
+
+
+def color_mode(png, color):
+    w, h, ctype, rows = png_read(png)
+    want = bytes.fromhex(color)
+    bpp = 3 if ctype == 2 else 4
+    found = any(bytes(r[i:i + 3]) == want for r in rows for i in range(0, w * bpp, bpp))
+    check("png-8 %s holds the color #%s" % (png, color), found)
+
+
+def main():
+    mode, a = sys.argv[1], sys.argv[2:]
+    scene = None
+    if mode == "svg":
+        svg_mode(a[0], a[1], a[2], a[3], a[4] if len(a) > 4 else None)
+    elif mode == "html":
+        html_mode(a[0], a[1], a[2] if len(a) > 2 else None)
+    elif mode == "selftest":
+        selftest_mode(a[0], a[1], a[2] if len(a) > 2 else None)
+    elif mode == "dom":
+        dom_mode(a[0], a[1], a[2], a[3], a[4], a[5] if len(a) > 5 else scene)
+    elif mode == "png":
+        png_mode(a[0], a[1])
+    elif mode == "color":
+        color_mode(a[0], a[1])
+    report()
+
+
+main()
