@@ -52,7 +52,7 @@ STAGES_O = $B/pt_stage.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
            $B/m7_screen2viewport.o
 SRC_O    = $B/scene.o $B/pipeline.o $B/matrix.o $B/clip.o $B/raster.o $B/fb.o $B/numfmt.o \
-           $B/trace.o $B/outfile.o $B/builtin.o $B/explain.o $B/tread.o $B/accuracy.o \
+           $B/trace.o $B/outfile.o $B/builtin.o $B/cli.o $B/explain.o $B/tread.o $B/accuracy.o \
            $B/png.o $B/sbuf.o $B/journey.o $B/journey_html.o
 # The subcommands, one file each.
 CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o \

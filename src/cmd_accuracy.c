@@ -26,7 +26,7 @@
 #include <string.h>
 #include <time.h>
 #include "accuracy.h"
-#include "builtin.h"
+#include "cli.h"
 #include "commands.h"
 #include "outfile.h"
 #include "scene.h"
@@ -619,10 +619,7 @@ int pt_cmd_accuracy(int argc, char **argv)
     }
     if (svg && no_time) return usage_error("--svg plots run time: drop --no-time", "");
 
-    rc = path ? pt_scene_load(&s, path, err, sizeof err)
-              : pt_scene_parse(&s, "<builtin>", pt_builtin_scene,
-                               strlen(pt_builtin_scene), err, sizeof err);
-    if (rc != 0) { fprintf(stderr, "%s\n", err); return EXIT_INPUT; }
+    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
     if (s.matrix) {
         fprintf(stderr, "pipetrace accuracy: %s: the matrix camera is not covered; accuracy "
                 "follows model -> camera -> image -> pixel -> viewport -> framebuffer -> "

@@ -15,15 +15,14 @@
 ** repeatable (xorshift64*, below); without it the seed is the time.
 */
 #define _POSIX_C_SOURCE 200809L
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-#include "builtin.h"
 #include "commands.h"
+#include "cli.h"
 #include "explain.h"
 #include "scene.h"
 
@@ -56,17 +55,6 @@ static uint64_t xorshift(uint64_t *st)
     x ^= x >> 27;
     *st = x;
     return x * 0x2545F4914F6CDD1DULL;
-}
-
-/* A whole number in [lo, hi] from s into *v; 0 on success. */
-static int parse_u64(const char *s, unsigned long long lo, unsigned long long hi,
-                     unsigned long long *v)
-{
-    char *end;
-
-    errno = 0;
-    *v = strtoull(s, &end, 10);
-    return (*s < '0' || *s > '9' || *end || errno || *v < lo || *v > hi) ? -1 : 0;
 }
 
 /* Read one line as in cmd_step.c; echo it when standard input is no terminal. */
@@ -214,7 +202,7 @@ int pt_cmd_quiz(int argc, char **argv)
     const pt_model *m = NULL;
     pt_journey j;
     pt_scene s;
-    char err[PT_ERRLEN];
+    uint64_t n;
     size_t mi;
 
     for (k = 1; k < argc; k++) {
@@ -226,11 +214,13 @@ int pt_cmd_quiz(int argc, char **argv)
             if (!val) return usage_error("option needs a value: ", a);
             if (!strcmp(a, "--model")) model = val;
             else if (!strcmp(a, "--vertex")) {
-                if (parse_u64(val, 1, 4294967295ULL, &v))
+                if (pt_cli_count(val, 1, 4294967295u, &n))
                     return usage_error("--vertex takes a vertex number >= 1, not ", val);
+                v = n;
             } else {
-                if (parse_u64(val, 0, 18446744073709551615ULL, &seed))
+                if (pt_cli_count(val, 0, UINT64_MAX, &n))
                     return usage_error("--seed takes a whole number >= 0, not ", val);
+                seed = n;
                 seeded = 1;
             }
         } else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option ", a);
@@ -239,10 +229,7 @@ int pt_cmd_quiz(int argc, char **argv)
     }
     if (v && seeded) return usage_error("--vertex and --seed exclude each other", "");
 
-    rc = path ? pt_scene_load(&s, path, err, sizeof err)
-              : pt_scene_parse(&s, "<builtin>", pt_builtin_scene,
-                               strlen(pt_builtin_scene), err, sizeof err);
-    if (rc != 0) { fprintf(stderr, "%s\n", err); return EXIT_INPUT; }
+    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
     rc = pt_journey_agrees(&s);
     if (rc != 1) {
         fprintf(stderr, "pipetrace quiz: %s: %s\n", s.path, rc < 0 ? "out of memory"

@@ -14,13 +14,12 @@
 ** (the tests drive it through a pipe; input lines are then echoed).
 */
 #define _POSIX_C_SOURCE 200809L
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "builtin.h"
 #include "commands.h"
+#include "cli.h"
 #include "explain.h"
 #include "matrix.h"
 #include "scene.h"
@@ -240,13 +239,11 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
 int pt_cmd_step(int argc, char **argv)
 {
     const char *path = NULL, *model = NULL;
-    unsigned long long v = 1;
+    uint64_t v = 1;
     int k, all = 0, inter = 0, raw = 0, compare = 0, rc;
     const pt_model *m = NULL;
     pt_journey j;
     pt_scene s;
-    char err[PT_ERRLEN];
-    size_t mi;
 
     for (k = 1; k < argc; k++) {
         const char *a = argv[k];
@@ -259,24 +256,15 @@ int pt_cmd_step(int argc, char **argv)
         else if (!strcmp(a, "--vertex") || !strcmp(a, "--model")) {
             if (k + 1 >= argc) return usage_error("option needs a value: ", a);
             if (!strcmp(a, "--model")) model = argv[++k];
-            else {
-                char *end;
-                const char *val = argv[++k];
-                errno = 0;
-                v = strtoull(val, &end, 10);
-                if (val[0] < '0' || val[0] > '9' || *end || errno || v < 1 || v > 4294967295ULL)
-                    return usage_error("--vertex takes a vertex number >= 1, not ", val);
-            }
+            else if (pt_cli_count(argv[++k], 1, 4294967295u, &v) != 0)
+                return usage_error("--vertex takes a vertex number >= 1, not ", argv[k]);
         } else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option ", a);
         else if (path) return usage_error("more than one scene given: ", a);
         else path = a;
     }
     if (all && inter) return usage_error("--all and --interactive exclude each other", "");
 
-    rc = path ? pt_scene_load(&s, path, err, sizeof err)
-              : pt_scene_parse(&s, "<builtin>", pt_builtin_scene,
-                               strlen(pt_builtin_scene), err, sizeof err);
-    if (rc != 0) { fprintf(stderr, "%s\n", err); return EXIT_INPUT; }
+    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
     rc = pt_journey_agrees(&s);
     if (rc != 1) {
         fprintf(stderr, "pipetrace step: %s: %s\n", s.path, rc < 0 ? "out of memory"
@@ -284,14 +272,8 @@ int pt_cmd_step(int argc, char **argv)
         pt_scene_free(&s);
         return EXIT_INPUT;
     }
-    for (mi = 0; mi < s.nmodels && !m; mi++) {
-        const pt_model *c = &s.models[mi];
-        if (model ? !strcmp(model, c->name) : c->nv >= v) m = c;
-    }
-    if (!m || m->nv < v) {
-        if (model && !m) fprintf(stderr, "pipetrace step: %s has no model '%s'\n", s.path, model);
-        else fprintf(stderr, "pipetrace step: %s: no model%s%s has a vertex %llu\n", s.path,
-                     model ? " " : "", model ? model : "", v);
+    m = pt_cli_vertex_model(&s, "step", model, v);
+    if (!m) {
         pt_scene_free(&s);
         return EXIT_INPUT;
     }
@@ -306,13 +288,13 @@ int pt_cmd_step(int argc, char **argv)
         pt_scene_free(&s);
         return EXIT_INPUT;
     }
-    printf("pipetrace step: vertex %llu of model %s in %s\n", v, m->name, s.path);
+    printf("pipetrace step: vertex %llu of model %s in %s\n", (unsigned long long)v, m->name, s.path);
     printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n\n",
            s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
            s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);
     if (!pt_vertex_used(m, v))
         printf("note: no segment uses vertex %llu, so the renderer does not transform it;\n"
-               "      here is the journey it would take.\n\n", v);
+               "      here is the journey it would take.\n\n", (unsigned long long)v);
     if (inter || (!all && isatty(STDIN_FILENO) && isatty(STDOUT_FILENO)))
         interact(&j);
     else

@@ -40,8 +40,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "builtin.h"
 #include "commands.h"
+#include "cli.h"
 #include "explain.h"
 #include "numfmt.h"
 #include "raster.h"
@@ -306,7 +306,6 @@ int pt_cmd_why(int argc, char **argv)
     int npos = 0, k, rc, inside;
     long long X, Y;
     pt_scene s;
-    char err[PT_ERRLEN];
     seg_eval best[NEAREST], e;
     int nbest = 0;
     uint64_t nlit = 0;
@@ -333,15 +332,12 @@ int pt_cmd_why(int argc, char **argv)
         return EXIT_USAGE;
     }
 
-    rc = npos == 3 ? pt_scene_load(&s, pos[0], err, sizeof err)
-                   : pt_scene_parse(&s, "<builtin>", pt_builtin_scene,
-                                    strlen(pt_builtin_scene), err, sizeof err);
-    if (rc != 0) { fprintf(stderr, "%s\n", err); return EXIT_INPUT; }
-    rc = pt_journey_agrees(&s);
+    if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return EXIT_INPUT;
+    rc = s.matrix ? 0 : pt_journey_agrees(&s);
     if (rc != 1) {
         fprintf(stderr, "pipetrace why: %s: %s\n", s.path, rc < 0 ? "out of memory"
-                : "this scene's camera takes other stages than model -> camera -> image "
-                  "-> pixel -> viewport -> framebuffer -> index, the only ones why knows");
+                : "why follows the classic camera (model -> camera -> image -> pixel -> "
+                  "viewport); this scene has the matrix camera: try 'pipetrace step'");
         pt_scene_free(&s);
         return EXIT_INPUT;
     }

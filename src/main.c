@@ -5,11 +5,10 @@
 ** Exit status: 0 success, 1 usage error, 2 bad input or output error.  Only
 ** this file prints diagnostics or decides the exit status.
 */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "builtin.h"
+#include "cli.h"
 #include "commands.h"
 #include "outfile.h"
 #include "pipeline.h"
@@ -77,19 +76,6 @@ static int usage_error(const char *fmt, const char *arg)
     return EXIT_USAGE;
 }
 
-/* A whole number in [lo, hi] from s, or -1. */
-static long long parse_count(const char *s, long long lo, long long hi)
-{
-    char *end;
-    long long v;
-
-    if (*s < '0' || *s > '9') return -1;
-    errno = 0;
-    v = strtoll(s, &end, 10);
-    if (errno || *end || v < lo || v > hi) return -1;
-    return v;
-}
-
 /* Fill *c from argv.  Returns -1 to go on, else the exit status. */
 static int parse_args(cli *c, int argc, char **argv)
 {
@@ -119,12 +105,12 @@ static int parse_args(cli *c, int argc, char **argv)
             else if (!strcmp(val, "csv")) c->fmt = PT_FORMAT_CSV;
             else return usage_error("unknown format '%s' (text, jsonl, csv)", val);
         } else if (!strcmp(a, "--vertex")) {
-            long long v = parse_count(val, 1, 4294967295LL);
-            if (v < 0) return usage_error("--vertex takes a vertex number >= 1, not '%s'", val);
-            c->opt.vertex = (uint64_t)v;
+            if (pt_cli_count(val, 1, 4294967295u, &c->opt.vertex) != 0)
+                return usage_error("--vertex takes a vertex number >= 1, not '%s'", val);
         } else if (!strcmp(a, "--precision")) {
-            long long p = parse_count(val, 0, 17);
-            if (p < 0) return usage_error("--precision takes 0 to 17, not '%s'", val);
+            uint64_t p;
+            if (pt_cli_count(val, 0, 17, &p) != 0)
+                return usage_error("--precision takes 0 to 17, not '%s'", val);
             c->precision = (int)p;
         } else if (!strcmp(a, "--stage")) {
             int st = pt_stage_by_name(val);
@@ -198,10 +184,7 @@ int main(int argc, char **argv)
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
 
-    rc = c.scene ? pt_scene_load(&s, c.scene, err, sizeof err)
-                 : pt_scene_parse(&s, "<builtin>", pt_builtin_scene,
-                                  strlen(pt_builtin_scene), err, sizeof err);
-    if (rc != 0) { fprintf(stderr, "%s\n", err); return EXIT_INPUT; }
+    if (pt_cli_load(&s, c.scene) != 0) return EXIT_INPUT;
     rc = check_filters(&c, &s);
     if (rc) { pt_scene_free(&s); return rc; }
     if (pt_plan_make(&plan, &s, &c.opt) != 0) {
