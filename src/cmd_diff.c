@@ -8,13 +8,15 @@
 ** vertex differs is explained, since every later stage computes from it: its
 ** differences are consequences, and are only counted.
 **
-** A mistake is named only when it is proven for this vertex: the diverging
+** A mistake is named only when it is shown for this vertex: the diverging
 ** stage is recomputed from EXPECTED's value of the stage before, with the
-** mistake, and must reproduce ACTUAL's value (within the tolerance; when
-** EXPECTED is a text trace, over every input within half a unit of its last
-** printed digit).  The formulas, right and wrong, are written out here rather
-** than taken from stages/: a student build replaces a stage's .c file, and the
-** diff must still know the reference.  Stage 5 has no known mistake listed.
+** mistake, and must reproduce ACTUAL's value within the tolerance (from a text
+** trace, for some input within its printed digits; see reproduces()).  The
+** formulas, right and wrong, are written out here rather than taken from
+** stages/: a student build replaces a stage's .c file, and the diff must
+** still know the reference.  Stage 5 has no known mistake listed.  Only the
+** classic camera's mistakes are known; matrix-camera traces are compared
+** without naming any.
 **
 ** When every vertex agrees and the lit pixels differ, the rasterizer's
 ** rounding is checked the same way: each differing segment's DDA is run again
@@ -55,7 +57,8 @@ static const char diff_usage[] =
 "  --tol ABS         doubles agree when |a - b| <= max(ABS, REL * max(|a|, |b|))\n"
 "  --rel REL         (defaults 0 and 1e-9; integers must be equal); a text trace\n"
 "                    adds half a unit in its last printed digit\n"
-"  --show N          list at most N vertices and N pixels (default 10)\n"
+"  --show N          list at most N vertices and N pixels of each kind\n"
+"                    (default 10)\n"
 "  --image-out FILE  images: write FILE (PPM) with the differing pixels red and\n"
 "                    the others EXPECTED's, dimmed to gray\n"
 "\n"
@@ -117,7 +120,8 @@ static int parse_args(dopts *o, int argc, char **argv)
             if (a[2] == 't') o->tol = x; else o->rel = x;
         } else if (!strcmp(a, "--show")) {
             double x = parse_nonneg(val);
-            if (x < 0 || x != floor(x) || x > 1e9) return usage_error("--show takes a count, not '%s'", val);
+            if (x < 0 || x != floor(x) || x > 1e9)
+                return usage_error("--show takes a count, not '%s'", val);
             o->show = (size_t)x;
         } else if (!strcmp(a, "--image-out")) {
             o->image_out = val;
@@ -164,10 +168,10 @@ static void para(const char *lead, const char *text)
 }
 
 /* A growing string for paragraphs. */
-typedef struct sbuf {
+typedef struct pbuf {
     char b[2048];
     size_t n;
-} sbuf;
+} pbuf;
 
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
@@ -176,8 +180,8 @@ typedef struct sbuf {
 #endif
 
 /* Append to s what printf would print; text past its room is dropped. */
-static void sb_add(sbuf *s, const char *fmt, ...) PRINTF_LIKE(2, 3);
-static void sb_add(sbuf *s, const char *fmt, ...)
+static void pb_add(pbuf *s, const char *fmt, ...) PRINTF_LIKE(2, 3);
+static void pb_add(pbuf *s, const char *fmt, ...)
 {
     va_list ap;
     int k;
@@ -383,7 +387,6 @@ typedef struct dctx {
     size_t stage_only[2][PT_NSTAGES_ALL];   /* records without a partner */
     size_t shown;                /* vertices listed */
     size_t *mk_hits;             /* per mistake: vertices it reproduces */
-    size_t unexplained[PT_NSTAGES_ALL]; /* first differences no mistake reproduces */
 } dctx;
 
 /* Slack of the number x read from side s: for a text trace, half a unit in
@@ -439,8 +442,16 @@ static const char *who(const dctx *c, uint32_t model, uint64_t v, char *buf, siz
     return buf;
 }
 
-#define D_NULL 0x08u             /* stage_diff: one side has no value */
-#define D_FLAG 0x10u             /* stage_diff: inside or behind differs */
+/* 1 when |x| < 2^62: sums and differences of two such numbers, or one and a
+** size, cannot overflow.  pipetrace's own integers always are (PT_PIX_LIMIT);
+** a trace from elsewhere may hold anything. */
+static int small(int64_t x)
+{
+    return x > -(INT64_C(1) << 62) && x < (INT64_C(1) << 62);
+}
+
+#define D_NULL 0x20u             /* stage_diff: one side has no value (bits 0-3: values) */
+#define D_FLAG 0x40u             /* stage_diff: inside or behind differs */
 
 /* Which parts of stage st differ between a and b: bit k for value k, D_NULL,
 ** D_FLAG.  0 when they agree. */
@@ -480,8 +491,9 @@ static void print_stage_diff(int st, const pt_tvrec *a, const pt_tvrec *b, unsig
         } else if (b->flags & PT_REC_NULL) {
             printf("%" PRId64 ", actual none", a->u.n[k]);
         } else {
-            printf("%" PRId64 ", actual %" PRId64 ", difference %+" PRId64,
-                   a->u.n[k], b->u.n[k], b->u.n[k] - a->u.n[k]);
+            printf("%" PRId64 ", actual %" PRId64, a->u.n[k], b->u.n[k]);
+            if (small(a->u.n[k]) && small(b->u.n[k]))
+                printf(", difference %+" PRId64, b->u.n[k] - a->u.n[k]);
         }
         printf("\n");
     }
@@ -776,45 +788,45 @@ static int samples(double x, double s, double out[16])
     return n;
 }
 
-/* 1 when the ranges r[] of the mistake's results hold ACTUAL's record act. */
-static int in_ranges(const dctx *c, const vrange r[3], int st, const pt_tvrec *act)
+/* 1 when the ranges r[] of the mistake's results hold ACTUAL's record arec. */
+static int in_ranges(const dctx *c, const vrange r[4], int st, const pt_tvrec *arec)
 {
     int k;
 
     for (k = 0; k < ncoord(st); k++) {
         if (is_real(st)) {
-            double a = act->u.d[k], allow;
+            double a = arec->u.d[k], allow;
             if (isnan(a)) { if (!r[k].nan) return 0; continue; }
             if (isinf(a)) { if (!(a > 0 ? r[k].pinf : r[k].ninf)) return 0; continue; }
             if (!r[k].any_finite) return 0;
             allow = fmax(c->o->tol, c->o->rel * fmax(fabs(a), fmax(fabs(r[k].lo), fabs(r[k].hi))));
             allow += slack(c, 1, a);
             if (a < r[k].lo - allow || a > r[k].hi + allow) return 0;
-        } else if (act->flags & PT_REC_NULL) {
+        } else if (arec->flags & PT_REC_NULL) {
             if (!r[k].any_null) return 0;
-        } else if (!r[k].any_value || act->u.n[k] < r[k].ilo || act->u.n[k] > r[k].ihi) {
+        } else if (!r[k].any_value || arec->u.n[k] < r[k].ilo || arec->u.n[k] > r[k].ihi) {
             return 0;
         }
     }
     return 1;
 }
 
-/* 1 when mistake mk reproduces ACTUAL's record act of stage st from the input
+/* 1 when mistake mk reproduces ACTUAL's record arec of stage st from the input
 ** in: EXPECTED's previous stage; *at_in gets the mistake's result for in, to
 ** show.  When in came from a text trace, each real input may be anywhere
 ** within in_slack[k] of its value, and the mistake's results over that box
-** must hold act:
+** must hold arec:
 **   - a real-valued stage: the box's corners and mid-points bound them (each
 **     formula is monotone in each input, the sign of z_c aside);
 **   - the viewport stage, whose x and y each depend on x_pp or y_pp alone:
 **     the samples() of each, keeping only inputs that the right formula takes
-**     to EXPECTED's own record exp (a tie printed "-2.500000" stays a tie).
+**     to EXPECTED's own record erec (a tie printed "-2.500000" stays a tie).
 ** An integer input (framebuffer -> index) is exact. */
 static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sval *in,
                       const double in_slack[3], int in_real, int st,
-                      const pt_tvrec *exp, const pt_tvrec *act, sval *at_in)
+                      const pt_tvrec *erec, const pt_tvrec *arec, sval *at_in)
 {
-    vrange r[3];
+    vrange r[4];
     sval x, out, right;
     int k, p;
 
@@ -845,15 +857,15 @@ static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sva
                 x.d[k] = v[p];
                 memset(&right, 0, sizeof right);
                 correct(st, h, &x, &right);
-                if (right.null != ((exp->flags & PT_REC_NULL) != 0) ||
-                    (!right.null && right.n[k] != exp->u.n[k])) continue;
+                if (right.null != ((erec->flags & PT_REC_NULL) != 0) ||
+                    (!right.null && right.n[k] != erec->u.n[k])) continue;
                 memset(&out, 0, sizeof out);
                 mk->apply(h, &x, &out);
                 range_add(&r[k], 0, &out, k);
             }
         }
     }
-    return in_ranges(c, r, st, act);
+    return in_ranges(c, r, st, arec);
 }
 
 /* Fill *h from EXPECTED's header for a vertex of model `model`; 0 when there is
@@ -909,16 +921,16 @@ static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
 }
 
 /* Append the values of stage st in *v to sb: "x_pp = 1.5, y_pp = 2". */
-static void sval_str(sbuf *sb, int st, const sval *v)
+static void sval_str(pbuf *sb, int st, const sval *v)
 {
     char b[PT_NUMLEN];
     int k;
 
     for (k = 0; k < ncoord(st); k++) {
-        sb_add(sb, "%s%s = ", k ? ", " : "", coord_name(st, k));
-        if (is_real(st)) sb_add(sb, "%s", num(v->d[k], b));
-        else if (v->null) sb_add(sb, "none");
-        else sb_add(sb, "%" PRId64, v->n[k]);
+        pb_add(sb, "%s%s = ", k ? ", " : "", coord_name(st, k));
+        if (is_real(st)) pb_add(sb, "%s", num(v->d[k], b));
+        else if (v->null) pb_add(sb, "none");
+        else pb_add(sb, "%" PRId64, v->n[k]);
     }
 }
 
@@ -931,22 +943,25 @@ static void explain(dctx *c, const vent *e, int st, int print)
     double in_slack[3];
     int from, found = 0;
     size_t k;
-    const pt_tvrec *exp = &c->t[0].vx[e->rec[0][st]];
-    const pt_tvrec *act = &c->t[1].vx[e->rec[1][st]];
+    const pt_tvrec *erec = &c->t[0].vx[e->rec[0][st]];
+    const pt_tvrec *arec = &c->t[1].vx[e->rec[1][st]];
     const char *last = NULL;
-    sbuf sb;
+    pbuf sb;
 
     memset(&h, 0, sizeof h);
     if (!hctx_of(c, e->model, &h)) {
-        c->unexplained[st]++;
         if (print) printf("    (no known mistake checked: %s)\n", c->t[0].hdr.have ?
                           "those known are the classic camera's" : "EXPECTED has no header");
         return;
     }
-    if (st == PT_STAGE_MODEL || !prev_value(c, e, st, &h, &in, in_slack, &from)) {
-        c->unexplained[st]++;
+    if (st == PT_STAGE_MODEL) {
+        if (print) printf("    (the model stage holds the scene's own numbers: are these "
+                          "traces of one scene?)\n");
+        return;
+    }
+    if (!prev_value(c, e, st, &h, &in, in_slack, &from)) {
         if (print) printf("    (no known mistake checked: EXPECTED has no %s record to "
-                          "recompute from)\n", st ? pt_stage_infos[st - 1].name : "earlier");
+                          "recompute from)\n", pt_stage_infos[st - 1].name);
         return;
     }
     for (k = 0; k < NMISTAKES; k++) {
@@ -955,7 +970,7 @@ static void explain(dctx *c, const vent *e, int st, int print)
         if (st == PT_STAGE_CAMERA && !h.has_t) continue;
         if (st == PT_STAGE_IMAGE && !h.perspective) continue;
         if (mk->apply == mk_two_int && h.w % 2 == 0 && h.h % 2 == 0) continue;
-        if (!reproduces(c, mk, &h, &in, in_slack, is_real(from), st, exp, act, &out)) continue;
+        if (!reproduces(c, mk, &h, &in, in_slack, is_real(from), st, erec, arec, &out)) continue;
         if (last && !strcmp(last, mk->name)) continue;   /* a second form of the same */
         last = mk->name;
         found++;
@@ -964,17 +979,16 @@ static void explain(dctx *c, const vent *e, int st, int print)
         printf("    likely mistake: %s\n", mk->name);
         para("      ", mk->how);
         memset(&sb, 0, sizeof sb);
-        sb_add(&sb, "check: the %s stage recomputed with it from EXPECTED's %s record (",
+        pb_add(&sb, "check: the %s stage recomputed with it from EXPECTED's %s record (",
                pt_stage_infos[st].name, pt_stage_infos[from].name);
         sval_str(&sb, from, &in);
-        sb_add(&sb, ") gives ");
+        pb_add(&sb, ") gives ");
         sval_str(&sb, st, &out);
-        sb_add(&sb, ", as ACTUAL has%s.", c->t[0].prec >= 0 || c->t[1].prec >= 0 ?
+        pb_add(&sb, ", as ACTUAL has%s.", c->t[0].prec >= 0 || c->t[1].prec >= 0 ?
                " (within the printed digits)" : "");
         para("      ", sb.b);
     }
     if (!found) {
-        c->unexplained[st]++;
         if (print) printf("    no known mistake reproduces this from EXPECTED's %s record\n",
                           pt_stage_infos[from].name);
     }
@@ -1069,22 +1083,62 @@ static int skey_cmp(const void *pa, const void *pb)
     return a->order < b->order ? -1 : a->order > b->order;
 }
 
-/* The pixel records of side s sorted by position, duplicates dropped. */
+static size_t pix_hash(int64_t x, int64_t y, int64_t i)
+{
+    uint64_t h = (uint64_t)x * 0x9E3779B97F4A7C15u ^ (uint64_t)y * 0xC2B2AE3D27D4EB4Fu ^
+                 (uint64_t)i * 0x165667B19E3779F9u;
+    h ^= h >> 31;
+    return (size_t)h;
+}
+
+/* The distinct pixels (x, y, i) of t sorted by position, each with its first
+** record's index.  A hash set drops the repeats first (a pixel lit by many
+** segments), so only distinct pixels are sorted: at most the framebuffer's
+** worth however long the trace. */
 static pkey *sorted_pixels(const pt_tread *t, size_t *n)
 {
-    pkey *p = malloc((t->npx ? t->npx : 1) * sizeof *p);
-    size_t k, m = 0;
+    size_t nslot = 1024, m = 0, cap = 256, k, j;
+    uint32_t *slot = calloc(nslot, sizeof *slot);
+    pkey *p = malloc(cap * sizeof *p);
 
-    if (!p) return NULL;
+    if (!slot || !p || t->npx >= UINT32_MAX) goto fail;
     for (k = 0; k < t->npx; k++) {
-        p[k].y = t->px[k].y; p[k].x = t->px[k].x; p[k].i = t->px[k].i; p[k].k = k;
+        const pt_tpix *x = &t->px[k];
+        size_t h = pix_hash(x->x, x->y, x->i) & (nslot - 1);
+        for (; slot[h]; h = (h + 1) & (nslot - 1)) {
+            const pkey *q = &p[slot[h] - 1];
+            if (q->x == x->x && q->y == x->y && q->i == x->i) break;
+        }
+        if (slot[h]) continue;              /* seen */
+        if (m == cap) {
+            pkey *np = realloc(p, 2 * cap * sizeof *np);
+            if (!np) goto fail;
+            p = np;
+            cap *= 2;
+        }
+        p[m].x = x->x; p[m].y = x->y; p[m].i = x->i; p[m].k = k;
+        slot[h] = (uint32_t)++m;
+        if (2 * m >= nslot) {               /* grow and rehash */
+            uint32_t *ns = calloc(2 * nslot, sizeof *ns);
+            if (!ns) goto fail;
+            nslot *= 2;
+            for (j = 0; j < m; j++) {
+                h = pix_hash(p[j].x, p[j].y, p[j].i) & (nslot - 1);
+                while (ns[h]) h = (h + 1) & (nslot - 1);
+                ns[h] = (uint32_t)j + 1;
+            }
+            free(slot);
+            slot = ns;
+        }
     }
-    qsort(p, t->npx, sizeof *p, pkey_cmp);
-    for (k = 0; k < t->npx; k++)
-        if (!m || p[k].x != p[m - 1].x || p[k].y != p[m - 1].y || p[k].i != p[m - 1].i)
-            p[m++] = p[k];
+    free(slot);
+    qsort(p, m, sizeof *p, pkey_cmp);
     *n = m;
     return p;
+fail:
+    free(slot);
+    free(p);
+    return NULL;
 }
 
 /* The raster records of t sorted by segment, in step order within each. */
@@ -1218,7 +1272,7 @@ static int check_raster(dctx *c, rstat *rs)
         uint64_t seg;
         size_t beg[2], end[2];
         int64_t ends[4];
-        int have_ends = 0, ok = 0;
+        int have_ends = 0, ok = 0, sane = 1;    /* sane: every coordinate small() */
 
         /* the next segment of either list: the smaller (model, seg) */
         side = k[1] >= n[1] ? 0 : k[0] >= n[0] ? 1 : seg_cmp(&s[0][k[0]], &s[1][k[1]]) <= 0 ? 0 : 1;
@@ -1232,14 +1286,22 @@ static int check_raster(dctx *c, rstat *rs)
                 const skey *q = &s[side][k[side]++];
                 if (!q->clip) {
                     const pt_tpix *p = &c->t[side].px[q->k];
-                    if (plist_add(&pl[side], p->x - hd->vp_x, p->y - hd->vp_y) != 0) rc = -1;
+                    if (!small(p->x) || !small(p->y)) sane = 0;
+                    else if (plist_add(&pl[side], p->x - hd->vp_x, p->y - hd->vp_y) != 0)
+                        rc = -1;
+                } else if (!small(c->t[side].cl[q->k].first[0]) ||
+                           !small(c->t[side].cl[q->k].first[1]) ||
+                           !small(c->t[side].cl[q->k].last[0]) ||
+                           !small(c->t[side].cl[q->k].last[1])) {
+                    sane = 0;
                 }
             }
             end[side] = k[side];
         }
         if (rc != 0 || plist_eq(&pl[0], &pl[1])) continue;
-        /* rounded endpoints: EXPECTED's first and last steps, as logical pixels */
-        if (end[0] > beg[0]) {
+        /* rounded endpoints: EXPECTED's first and last steps, as logical pixels;
+        ** a viewport beyond PT_MAX_SIZE is no trace of pipetrace's: not replayed */
+        if (end[0] > beg[0] && sane && hd->vp_w <= PT_MAX_SIZE && hd->vp_h <= PT_MAX_SIZE) {
             const skey *f = &s[0][beg[0]], *l = &s[0][end[0] - 1];
             int64_t fx, fy, lx, ly;
             if (f->clip) { fx = c->t[0].cl[f->k].first[0]; fy = c->t[0].cl[f->k].first[1]; }
@@ -1384,7 +1446,7 @@ static const char *format_name(const pt_tread *t)
 static void print_intro(const dctx *c)
 {
     char b1[PT_NUMLEN], b2[PT_NUMLEN];
-    sbuf sb;
+    pbuf sb;
     int s;
 
     for (s = 0; s < 2; s++) {
@@ -1397,13 +1459,13 @@ static void print_intro(const dctx *c)
     printf("Integers must be equal; doubles a and b agree when\n"
            "  |a - b| <= max(%s, %s * max(|a|, |b|))\n", num(c->o->tol, b1), num(c->o->rel, b2));
     if (c->t[0].prec >= 0 || c->t[1].prec >= 0) {
-        sb_add(&sb, "plus half a unit in the last printed digit of a text trace (");
+        pb_add(&sb, "plus half a unit in the last printed digit of a text trace (");
         for (s = 0; s < 2; s++) {
             if (c->t[s].prec < 0) continue;
-            sb_add(&sb, "%s%s: %s", s && c->t[0].prec >= 0 ? ", " : "", side_name[s],
+            pb_add(&sb, "%s%s: %s", s && c->t[0].prec >= 0 ? ", " : "", side_name[s],
                    num(0.5 * pow(10.0, -c->t[s].prec), b1));
         }
-        sb_add(&sb, "): the text format prints only --precision decimals.");
+        pb_add(&sb, "): the text format prints only --precision decimals.");
         para("", sb.b);
     }
     printf("\n");
@@ -1499,35 +1561,35 @@ static void report_stage_only(const dctx *c)
 static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                      const size_t nlit[2], int pixels_compared, const rstat *rs)
 {
-    sbuf s;
+    pbuf s;
     size_t total = c->agree + c->differ, k;
     int st, top = -1, differ;
 
     memset(&s, 0, sizeof s);
     differ = hdr_differ || c->differ || c->only[0] || c->only[1] || nmiss || nextra;
     if (!differ) {
-        sb_add(&s, "The traces agree: %zu of %zu vertices at every stage both hold", total, total);
-        if (pixels_compared) sb_add(&s, ", and the same %zu lit pixels.", nlit[0]);
-        else sb_add(&s, ".");
+        pb_add(&s, "The traces agree: %zu of %zu vertices at every stage both hold", total, total);
+        if (pixels_compared) pb_add(&s, ", and the same %zu lit pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
+        else pb_add(&s, ".");
         para("", s.b);
         return EXIT_SAME;
     }
-    if (total) sb_add(&s, "%zu of %zu vertices agree", c->agree, total);
-    else sb_add(&s, "No vertex is in both traces");
-    if (c->differ) sb_add(&s, ", %zu differ%s", c->differ, c->differ > 1 ? "" : "s");
-    if (c->only[0]) sb_add(&s, ", %zu are only in EXPECTED", c->only[0]);
-    if (c->only[1]) sb_add(&s, ", %zu only in ACTUAL", c->only[1]);
-    sb_add(&s, ".");
+    if (total) pb_add(&s, "%zu of %zu vertices agree", c->agree, total);
+    else pb_add(&s, "No vertex is in both traces");
+    if (c->differ) pb_add(&s, ", %zu differ%s", c->differ, c->differ > 1 ? "" : "s");
+    if (c->only[0]) pb_add(&s, ", %zu are only in EXPECTED", c->only[0]);
+    if (c->only[1]) pb_add(&s, ", %zu only in ACTUAL", c->only[1]);
+    pb_add(&s, ".");
     for (st = 0; st < PT_NSTAGES_ALL; st++)
         if (c->first_at[st] && (top < 0 || c->first_at[st] > c->first_at[top])) top = st;
     if (top >= 0) {
         size_t best = NMISTAKES;
-        sb_add(&s, " The stage that goes wrong first most often is %s (%zu of %zu)",
+        pb_add(&s, " The stage that goes wrong first most often is %s (%zu of %zu)",
                pt_stage_infos[top].name, c->first_at[top], c->differ);
         for (st = 0; st < PT_NSTAGES_ALL; st++)
             if (st != top && c->first_at[st])
-                sb_add(&s, "; %s first for %zu", pt_stage_infos[st].name, c->first_at[st]);
-        sb_add(&s, ".");
+                pb_add(&s, "; %s first for %zu", pt_stage_infos[st].name, c->first_at[st]);
+        pb_add(&s, ".");
         for (k = 0; k < NMISTAKES; k++)
             if (mistakes[k].stage == top && c->mk_hits[k] &&
                 (best == NMISTAKES || c->mk_hits[k] > c->mk_hits[best])) best = k;
@@ -1535,45 +1597,45 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
             size_t hits = 0;
             for (k = 0; k < NMISTAKES; k++)
                 if (!strcmp(mistakes[k].name, mistakes[best].name)) hits += c->mk_hits[k];
-            sb_add(&s, " Likely mistake there: %s, which reproduces ACTUAL", mistakes[best].name);
+            pb_add(&s, " Likely mistake there: %s, which reproduces ACTUAL", mistakes[best].name);
             if (hits < c->first_at[top])
-                sb_add(&s, " for %zu of those %zu vertices.", hits, c->first_at[top]);
-            else if (hits > 2) sb_add(&s, " for all %zu.", hits);
-            else if (hits == 2) sb_add(&s, " for both.");
-            else sb_add(&s, ".");
+                pb_add(&s, " for %zu of those %zu vertices.", hits, c->first_at[top]);
+            else if (hits > 2) pb_add(&s, " for all %zu.", hits);
+            else if (hits == 2) pb_add(&s, " for both.");
+            else pb_add(&s, ".");
         } else if (c->t[0].hdr.perspective < 0) {
-            sb_add(&s, " The known mistakes are the classic camera's: none was checked.");
+            pb_add(&s, " The known mistakes are the classic camera's: none was checked.");
         } else {
-            sb_add(&s, " No known mistake reproduces ACTUAL there.");
+            pb_add(&s, " No known mistake reproduces ACTUAL there.");
         }
     }
-    if (hdr_differ) sb_add(&s, " The headers differ.");
+    if (hdr_differ) pb_add(&s, " The headers differ.");
     if (pixels_compared && (nmiss || nextra)) {
         int vertices_differ = c->differ || c->only[0] || c->only[1];
-        sb_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
+        pb_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
                "%zu extra)", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
                nlit[0], nlit[1], nmiss, nextra);
-        if (vertices_differ) sb_add(&s, ", as a consequence.");
+        if (vertices_differ) pb_add(&s, ", as a consequence.");
         else if (rs->segs_differ) {
             size_t best = NRASTER;
-            sb_add(&s, ", so the rasterizer differs, in %zu segment%s.",
+            pb_add(&s, ", so the rasterizer differs, in %zu segment%s.",
                    rs->segs_differ, rs->segs_differ > 1 ? "s" : "");
             for (k = 0; k < NRASTER; k++)
                 if (rs->hits[k] && (best == NRASTER || rs->hits[k] > rs->hits[best])) best = k;
             if (best < NRASTER) {
-                sb_add(&s, " Likely mistake: %s in the rasterizer's rounding (pt_pix_round in "
+                pb_add(&s, " Likely mistake: %s in the rasterizer's rounding (pt_pix_round in "
                        "s4), which reproduces ACTUAL's pixels", raster_mistakes[best].name);
                 if (rs->hits[best] < rs->segs_differ)
-                    sb_add(&s, " for %zu of those segments.", rs->hits[best]);
-                else sb_add(&s, ".");
+                    pb_add(&s, " for %zu of those segments.", rs->hits[best]);
+                else pb_add(&s, ".");
             } else {
-                sb_add(&s, " No known mistake of its rounding reproduces them.");
+                pb_add(&s, " No known mistake of its rounding reproduces them.");
             }
         } else {
-            sb_add(&s, ".");
+            pb_add(&s, ".");
         }
     } else if (pixels_compared) {
-        sb_add(&s, " Both light the same %zu pixels.", nlit[0]);
+        pb_add(&s, " Both light the same %zu pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
     }
     para("", s.b);
     return EXIT_DIFFER;
@@ -1582,20 +1644,20 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
 /* Print the raster check's details for the first differing segment. */
 static void report_raster(const dctx *c, const rstat *rs)
 {
-    sbuf sb;
+    pbuf sb;
     size_t k;
 
     if (!rs->first_set) return;
     memset(&sb, 0, sizeof sb);
     if (rs->segs_differ == 1)
-        sb_add(&sb, "Every vertex agrees, so the rasterizer differs: segment %s s%" PRIu64
+        pb_add(&sb, "Every vertex agrees, so the rasterizer differs: segment %s s%" PRIu64
                " lights other pixels.", pt_names_get(&c->nm, rs->first_model), rs->first_seg);
     else
-        sb_add(&sb, "Every vertex agrees, so the rasterizer differs: %zu segments light other "
+        pb_add(&sb, "Every vertex agrees, so the rasterizer differs: %zu segments light other "
                "pixels, the first %s s%" PRIu64 ".", rs->segs_differ,
                pt_names_get(&c->nm, rs->first_model), rs->first_seg);
     if (!rs->ends_ok)
-        sb_add(&sb, " Its endpoints cannot be read off EXPECTED's steps, so no mistake was "
+        pb_add(&sb, " Its endpoints cannot be read off EXPECTED's steps, so no mistake was "
                "checked.");
     para("  ", sb.b);
     for (k = 0; rs->ends_ok && k < NRASTER; k++) {
@@ -1603,12 +1665,12 @@ static void report_raster(const dctx *c, const rstat *rs)
         printf("  likely mistake: %s\n", raster_mistakes[k].name);
         para("    ", raster_mistakes[k].how);
         memset(&sb, 0, sizeof sb);
-        sb_add(&sb, "check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
+        pb_add(&sb, "check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
                ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round and "
                "ACTUAL's with it", rs->ends[0], rs->ends[1], rs->ends[2], rs->ends[3]);
         if (rs->segs_differ > 1)
-            sb_add(&sb, "; so it does for %zu of the %zu segments", rs->hits[k], rs->segs_differ);
-        sb_add(&sb, ".");
+            pb_add(&sb, "; so it does for %zu of the %zu segments", rs->hits[k], rs->segs_differ);
+        pb_add(&sb, ".");
         para("    ", sb.b);
     }
 }
@@ -1660,6 +1722,33 @@ static int trace_diff(dctx *c)
 
 /* ===== the command ===== */
 
+/* Read file s of o, and parse it when it is a trace (its buffer is then freed:
+** only one file's text is held at a time).  Returns 0, or the exit status
+** after printing the message. */
+static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
+{
+    char err[PT_ERRLEN];
+
+    if (pt_tread_file(c->o->path[s], buf, len, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return EXIT_INPUT;
+    }
+    *kind = pt_tread_kind(*buf, *len);
+    if (*kind == PT_TK_CSV) {
+        fprintf(stderr, "%s:1:1: error: a CSV trace has no header and no raster records; "
+                "write it with --format jsonl\n", c->o->path[s]);
+        return EXIT_INPUT;
+    }
+    if (*kind == PT_TK_PPM) return 0;
+    if (pt_tread_parse(&c->t[s], c->o->path[s], *buf, *len, &c->nm, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return EXIT_INPUT;
+    }
+    free(*buf);
+    *buf = NULL;
+    return 0;
+}
+
 int pt_cmd_diff(int argc, char **argv)
 {
     dopts o;
@@ -1667,80 +1756,50 @@ int pt_cmd_diff(int argc, char **argv)
     size_t len[2];
     pt_tkind kind[2];
     char err[PT_ERRLEN];
-    dctx *c = NULL;
+    dctx *c;
     int rc, s;
 
     rc = parse_args(&o, argc, argv);
     if (rc >= 0) return rc;
-    for (s = 0; s < 2; s++) {
-        if (pt_tread_file(o.path[s], &buf[s], &len[s], err, sizeof err) != 0) {
-            fprintf(stderr, "%s\n", err);
-            free(buf[0]);
-            return EXIT_INPUT;
-        }
-        kind[s] = pt_tread_kind(buf[s], len[s]);
-    }
+    c = calloc(1, sizeof *c);
+    if (!c) { fputs("pipetrace: out of memory\n", stderr); return EXIT_INPUT; }
+    c->o = &o;
+    for (s = 0; s < 2; s++)
+        if ((rc = load(c, s, &buf[s], &len[s], &kind[s])) != 0) goto done;
     if ((kind[0] == PT_TK_PPM) != (kind[1] == PT_TK_PPM)) {
         rc = usage_error("%s", "cannot compare an image with a trace");
-        goto done;
-    }
-    for (s = 0; s < 2; s++) {
-        if (kind[s] == PT_TK_CSV) {
-            fprintf(stderr, "%s:1:1: error: a CSV trace has no header and no raster records; "
-                    "write it with --format jsonl\n", o.path[s]);
-            rc = EXIT_INPUT;
-            goto done;
-        }
-    }
-    if (kind[0] == PT_TK_PPM) {
+    } else if (kind[0] == PT_TK_PPM) {
         pt_ppm img[2];
-        for (s = 0; s < 2; s++) {
+        for (s = 0; s < 2 && rc == 0; s++) {
             if (pt_ppm_parse(&img[s], o.path[s], buf[s], len[s], err, sizeof err) != 0) {
                 fprintf(stderr, "%s\n", err);
                 rc = EXIT_INPUT;
-                goto done;
             }
         }
-        rc = image_diff(&o, img);
-        goto done;
-    }
-    if (o.image_out) {
+        if (rc == 0) rc = image_diff(&o, img);
+    } else if (o.image_out) {
         rc = usage_error("%s", "--image-out needs two PPM images");
-        goto done;
+    } else {
+        rc = trace_diff(c);
     }
-    c = calloc(1, sizeof *c);
-    if (!c) { rc = -1; goto done; }
-    c->o = &o;
-    for (s = 0; s < 2; s++) {
-        if (pt_tread_parse(&c->t[s], o.path[s], buf[s], len[s], &c->nm, err, sizeof err) != 0) {
-            fprintf(stderr, "%s\n", err);
-            rc = EXIT_INPUT;
-            goto done;
-        }
-        free(buf[s]);                       /* the records hold all that is needed */
-        buf[s] = NULL;
-    }
-    rc = trace_diff(c);
-done:
     if (rc < 0) {
         fputs("pipetrace: out of memory\n", stderr);
         rc = EXIT_INPUT;
     }
+done:
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("pipetrace: cannot write to standard output\n", stderr);
         rc = EXIT_INPUT;
     }
-    if (c) {
-        pt_tread_free(&c->t[0]);
-        pt_tread_free(&c->t[1]);
-        pt_names_free(&c->nm);
-        free(c->vt.e);
-        free(c->vt.slot);
-        free(c->tr);
-        free(c->has_tr);
-        free(c->mk_hits);
-        free(c);
-    }
+    pt_tread_free(&c->t[0]);
+    pt_tread_free(&c->t[1]);
+    pt_names_free(&c->nm);
+    free(c->vt.e);
+    free(c->vt.slot);
+    free(c->tr);
+    free(c->has_tr);
+    free(c->mk_hits);
+    free(c);
     free(buf[0]);
     free(buf[1]);
     return rc;

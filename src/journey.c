@@ -46,7 +46,7 @@
 
 /* ===== numbers and elements ===== */
 
-/* A panel coordinate with one decimal ("-0.0" written as "0.0"). */
+/* A panel coordinate with at most one decimal ("12", "12.5"; never "-0"). */
 static void num(pt_sbuf *sb, double x)
 {
     double r;
@@ -54,7 +54,8 @@ static void num(pt_sbuf *sb, double x)
     if (!(x > -1e7)) x = -1e7;           /* callers clip; this is a last guard */
     if (x > 1e7) x = 1e7;
     r = floor(x * 10.0 + 0.5) / 10.0;
-    pt_sbuf_addf(sb, "%.1f", r == 0 ? 0.0 : r);
+    if (r == floor(r)) pt_sbuf_addf(sb, "%.0f", r == 0 ? 0.0 : r);
+    else pt_sbuf_addf(sb, "%.1f", r);
 }
 
 /* Append ` name="x"` with x a panel coordinate. */
@@ -101,6 +102,37 @@ static void text_at(pt_sbuf *sb, double x, double y, double size, const char *an
     pt_sbuf_add(sb, ">");
     pt_sbuf_add_xml(sb, t);
     pt_sbuf_add(sb, "</text>\n");
+}
+
+/* Many lines or cells as one <path>: open on the first piece, then "M x y"
+** and more commands, closed with its attributes by path_end(). */
+typedef struct pathw {
+    pt_sbuf *sb;
+    int open;                    /* 1: "<path d=\"" written */
+} pathw;
+
+static void path_start(pathw *p, pt_sbuf *sb)
+{
+    p->sb = sb;
+    p->open = 0;
+}
+
+/* Append command c ("M", "L", "h", ...) with n numbers. */
+static void path_cmd(pathw *p, const char *c, int n, double a, double b)
+{
+    if (!p->open) { pt_sbuf_add(p->sb, "<path d=\""); p->open = 1; }
+    pt_sbuf_add(p->sb, c);
+    num(p->sb, a);
+    if (n > 1) { pt_sbuf_add(p->sb, " "); num(p->sb, b); }
+}
+
+static void path_end(pathw *p, const char *attrs)
+{
+    if (!p->open) return;
+    pt_sbuf_add(p->sb, "\" ");
+    pt_sbuf_add(p->sb, attrs);
+    pt_sbuf_add(p->sb, "/>\n");
+    p->open = 0;
 }
 
 /* A label over drawings: a white halo keeps it legible. */
@@ -523,19 +555,18 @@ static void wireframe(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
     size_t k, n = m->nseg < PT_JOURNEY_MAXSEG ? m->nseg : PT_JOURNEY_MAXSEG;
     pt_journey ja, jb;
     double ax, ay, bx, by;
+    pathw pw;
 
-    pt_sbuf_addf(sb, "<g stroke=\"%s\" stroke-width=\"1\">\n", C_FAINT);
+    path_start(&pw, sb);
     for (k = 0; k < n; k++) {
         journey_of(jm, m->seg[k].a, &ja);
         journey_of(jm, m->seg[k].b, &jb);
         if (!stage_xy(&ja, st, &ax, &ay) || !stage_xy(&jb, st, &bx, &by)) continue;
         if (!clip(v, &ax, &ay, &bx, &by)) continue;
-        pt_sbuf_add(sb, "<line");
-        attr(sb, "x1", vx(v, ax)); attr(sb, "y1", vy(v, ay));
-        attr(sb, "x2", vx(v, bx)); attr(sb, "y2", vy(v, by));
-        pt_sbuf_add(sb, "/>\n");
+        path_cmd(&pw, "M", 2, vx(v, ax), vy(v, ay));
+        path_cmd(&pw, "L", 2, vx(v, bx), vy(v, by));
     }
-    pt_sbuf_add(sb, "</g>\n");
+    path_end(&pw, "fill=\"none\" stroke=\"" C_FAINT "\" stroke-width=\"1\"");
 }
 
 /* An arrow-tipped axis of a 3-D panel from the origin to t, labelled. */
@@ -628,25 +659,22 @@ static void grid(pt_sbuf *sb, const pt_jview *v, const double r[4], double off, 
 {
     double xa = fmax(r[0], v->x0), xb = fmin(r[2], v->x1);
     double ya = fmax(r[1], v->y0), yb = fmin(r[3], v->y1), t;
+    pathw pw;
 
     if (v->s < mincell || !(xa < xb && ya < yb)) return;
     if ((xb - xa) + (yb - ya) > 400) return;
-    pt_sbuf_addf(sb, "<g stroke=\"%s\" stroke-width=\"0.7\">\n", C_GRID);
+    path_start(&pw, sb);
     for (t = ceil(xa - off) + off; t <= xb; t += 1)
         if (t > r[0] && t < r[2]) {
-            pt_sbuf_add(sb, "<line");
-            attr(sb, "x1", vx(v, t)); attr(sb, "y1", vy(v, ya));
-            attr(sb, "x2", vx(v, t)); attr(sb, "y2", vy(v, yb));
-            pt_sbuf_add(sb, "/>\n");
+            path_cmd(&pw, "M", 2, vx(v, t), vy(v, ya));
+            path_cmd(&pw, "V", 1, vy(v, yb), 0);
         }
     for (t = ceil(ya - off) + off; t <= yb; t += 1)
         if (t > r[1] && t < r[3]) {
-            pt_sbuf_add(sb, "<line");
-            attr(sb, "x1", vx(v, xa)); attr(sb, "y1", vy(v, t));
-            attr(sb, "x2", vx(v, xb)); attr(sb, "y2", vy(v, t));
-            pt_sbuf_add(sb, "/>\n");
+            path_cmd(&pw, "M", 2, vx(v, xa), vy(v, t));
+            path_cmd(&pw, "H", 1, vx(v, xb), 0);
         }
-    pt_sbuf_add(sb, "</g>\n");
+    path_end(&pw, "fill=\"none\" stroke=\"" C_GRID "\" stroke-width=\"0.7\"");
 }
 
 /* The outline of data rectangle r, clipped, as four lines. */
@@ -685,7 +713,9 @@ static void bg_plane(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
         strcpy(a, "viewport at (x_ul, y_ul) = (");
         fmt_i64(b, sizeof b, p->x_ul); strcat(a, b); strcat(a, ", ");
         fmt_i64(b, sizeof b, p->y_ul); strcat(a, b); strcat(a, ")");
-        if ((p->H - vp[3]) * v->s >= 14 && in_view(v, vp[0], vp[3]))
+        if ((vp[2] - vp[0]) * v->s < 150) {
+            /* no room for the label */
+        } else if ((p->H - vp[3]) * v->s >= 14 && in_view(v, vp[0], vp[3]))
             text_at(sb, vx(v, vp[0]) + 2, vy(v, vp[3]) + 12, 10, "start",
                     "fill=\"" C_EDGE "\"", a, 0);
         else if (in_view(v, vp[0], vp[1]))
@@ -741,7 +771,7 @@ static void bg_index(pt_sbuf *sb, const pt_jmodel *jm)
     fmt_i64(b, sizeof b, p->W); strcat(a, b); strcat(a, " x ");
     fmt_i64(b, sizeof b, p->H); strcat(a, b); strcat(a, " = ");
     fmt_i64(b, sizeof b, n); strcat(a, b); strcat(a, " pixels, one row after another");
-    text_at(sb, STRIP_X, 60, 11, "start", "fill=\"" C_NOTE "\"", a, STRIP_W);
+    text_at(sb, STRIP_X, 57, 11, "start", "fill=\"" C_NOTE "\"", a, STRIP_W);
     rect(sb, STRIP_X, 68, STRIP_W, 18, "#eef0f3", "#9aa1ab", "");
     if (p->H <= 64) {
         int r;
@@ -787,6 +817,7 @@ typedef struct cells {
     const pt_jview *v;
     int64_t dx, dy;              /* viewport -> this view's cells */
     const char *fill;
+    pathw pw;                    /* the cells drawn, as one path */
     unsigned long n;             /* cells drawn */
     int64_t row_lo, row_hi;      /* index strip: rows wanted (fb y) */
     double *xs;                  /* index strip: fb x of each cell found */
@@ -799,10 +830,28 @@ static void cell_px(void *ud, int64_t x, int64_t y)
     cells *c = ud;
     double cx = (double)(x + c->dx), cy = (double)(y + c->dy);
 
+    double xa, xb, ya, yb;
+
     if (c->n >= CELLMAX) return;
-    if (cx + 1 < c->v->x0 || cx > c->v->x1 || cy + 1 < c->v->y0 || cy > c->v->y1) return;
-    vrect(c->sb, c->v, cx, cy, 1, 1, c->fill, "", "", 0);
+    xa = fmax(cx, c->v->x0); xb = fmin(cx + 1, c->v->x1);
+    ya = fmax(cy, c->v->y0); yb = fmin(cy + 1, c->v->y1);
+    if (!(xa < xb && ya < yb)) return;
+    if (!c->pw.open) path_start(&c->pw, c->sb);
+    path_cmd(&c->pw, "M", 2, vx(c->v, xa), vy(c->v, ya));
+    path_cmd(&c->pw, "H", 1, vx(c->v, xb), 0);
+    path_cmd(&c->pw, "V", 1, vy(c->v, yb), 0);
+    path_cmd(&c->pw, "H", 1, vx(c->v, xa), 0);
+    pt_sbuf_add(c->sb, "z");
     c->n++;
+}
+
+/* Close the path of cells drawn by cell_px(). */
+static void cells_end(cells *c)
+{
+    char attrs[64];
+
+    snprintf(attrs, sizeof attrs, "fill=\"%s\"", c->fill);
+    path_end(&c->pw, attrs);
 }
 
 /* Collects the fb pixels of segments that fall in rows row_lo..row_hi. */
@@ -959,6 +1008,7 @@ static void inset(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stag
         cl.sb = sb; cl.v = &v; cl.fill = C_CELL;
         if (st == PT_STAGE_FRAMEBUFFER) { cl.dx = p->x_ul; cl.dy = p->y_ul; }
         raster_segs(jm, k, cell_px, &cl);
+        cells_end(&cl);
         vrect(sb, &v, cx - 0.5, cy - 0.5, 1, 1, C_VTX, "", "", 0);
     } else {
         vrect(sb, &v, cx - 0.5, cy - 0.5, 1, 1, "none", C_VTX, "stroke-width=\"2\"", 0);
@@ -976,9 +1026,14 @@ static void inset(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stag
     } else outline(sb, &v, area, C_EDGE, 1.5);
     if (st == PT_STAGE_PIXEL) {              /* pixel centres, the segments, the point */
         double x, y;
+        pathw pw;
+        path_start(&pw, sb);                 /* zero-length lines, round caps: dots */
         for (x = ceil(v.x0); x <= v.x1; x += 1)
-            for (y = ceil(v.y0); y <= v.y1; y += 1)
-                circle(sb, vx(&v, x), vy(&v, y), 1.2, C_AXIS, "");
+            for (y = ceil(v.y0); y <= v.y1; y += 1) {
+                path_cmd(&pw, "M", 2, vx(&v, x), vy(&v, y));
+                pt_sbuf_add(sb, "h0");
+            }
+        path_end(&pw, "stroke=\"" C_AXIS "\" stroke-width=\"2.4\" stroke-linecap=\"round\"");
         fg_segments(sb, jm, &v, st, k, 1.5);
         if (in_view(&v, r->x, r->y))
             circle(sb, vx(&v, r->x), vy(&v, r->y), 3.5, C_VTX, "stroke=\"#fff\" stroke-width=\"1\"");
@@ -1132,8 +1187,8 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
     sx = STRIP_X + STRIP_W * ((double)y * (double)W) / (double)n;
     rect(sb, sx, 68, fmax(STRIP_W / (double)H, 1.5), 18, C_CELL, "", "");
     ex = STRIP_X + STRIP_W * ((double)i + 0.5) / (double)n;
-    line(sb, ex, 62, ex, 90, C_VTX, 2, "");
-    arrowhead(sb, ex, 52, ex, 66, 8, C_VTX);
+    line(sb, ex, 64, ex, 90, C_VTX, 2, "");
+    arrowhead(sb, ex, 58, ex, 67, 8, C_VTX);
 
     /* the rows around it, laid end to end */
     r0 = y > 0 ? y - 1 : y;
@@ -1235,6 +1290,7 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
             cl.sb = sb; cl.v = v; cl.fill = C_CELL;
             if (st == PT_STAGE_FRAMEBUFFER) { cl.dx = jm->par.x_ul; cl.dy = jm->par.y_ul; }
             raster_segs(jm, k, cell_px, &cl);
+            cells_end(&cl);
         }
         fg_segments(sb, jm, v, st, k, v->s >= 3 ? 1 : 2);
         if (ok) vrect(sb, v, x - 0.5, y - 0.5, 1, 1, C_VTX, "", "", 4);
@@ -1279,7 +1335,7 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
 #define DOC_H    (HEAD + 2 * PT_JOURNEY_PH + 2 * GAP)
 
 /* The eighth cell: what the scene is and what the colors mean. */
-static void legend(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn)
+static void legend(pt_sbuf *sb, const pt_jmodel *jm)
 {
     const pt_stage_params *p = &jm->par;
     double y = 28;
@@ -1299,8 +1355,8 @@ static void legend(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn)
     rect(sb, 15, y + 95, 14, 10, C_AREA, C_EDGE, "");
     text_at(sb, 36, y + 105, 12, "start", "fill=\"" C_TEXT "\"",
             "what reaches the viewport", 0);
-    line(sb, 14, y + 124, 38, y + 124, C_VTX, 2.5, "");
-    arrowhead(sb, 14, y + 124, 30, y + 124, 10, C_VTX);
+    line(sb, 13, y + 124, 22, y + 124, C_VTX, 2.5, "");
+    arrowhead(sb, 13, y + 124, 31, y + 124, 10, C_VTX);
     text_at(sb, 36, y + 128, 12, "start", "fill=\"" C_TEXT "\"",
             "the vertex lies off the panel that way", 0);
     y += 158;
@@ -1319,9 +1375,8 @@ static void legend(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn)
     text_at(sb, 12, y + 34, 11, "start", "fill=\"" C_NOTE "\"", t, 376);
     text_at(sb, 12, y + 51, 11, "start", "fill=\"" C_NOTE "\"",
             "numbers: shortest decimals that read back exactly, as in the trace", 376);
-    snprintf(t, sizeof t, "pipetrace step --vertex %llu shows each formula with its numbers",
-             (unsigned long long)vn);
-    text_at(sb, 12, y + 68, 11, "start", "fill=\"" C_NOTE "\"", t, 376);
+    text_at(sb, 12, y + 68, 11, "start", "fill=\"" C_NOTE "\"",
+            "pipetrace step shows each formula with its numbers put in", 376);
 }
 
 int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t vn)
@@ -1359,7 +1414,7 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
         int px = GAP + col * (PT_JOURNEY_PW + GAP), py = HEAD + row * (PT_JOURNEY_PH + GAP);
         if (st == PT_NSTAGES) {
             pt_sbuf_addf(sb, "<g class=\"legend\" transform=\"translate(%d %d)\">\n", px, py);
-            legend(sb, &jm, vn);
+            legend(sb, &jm);
         } else {
             pt_sbuf_addf(sb, "<g class=\"panel\" data-stage=\"%s\" transform=\"translate(%d %d)\">\n",
                          pt_stage_infos[st].name, px, py);

@@ -44,6 +44,7 @@
 #define PT_JOURNEY_REACH   4.0   /* drawn range: at most this many times the
                                  ** stage's rectangle in each direction */
 #define PT_JOURNEY_MAXSEG  5000  /* faint wireframe: the first this many segments */
+#define PT_JOURNEY_MAXV    2000  /* the HTML page: at most this many vertices */
 
 /* A window of data coordinates mapped onto a box of panel units, same scale on
 ** both axes.  Invariant: x0 < x1, y0 < y1, s > 0, s * (x1 - x0) == bw (and y). */
@@ -91,7 +92,6 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
 ** its formula and numbers, Prev/Next buttons and a choice of vertex; data for
 ** up to PT_JOURNEY_MAXV used vertices of the scene, vertex v of m first shown.
 ** Returns 0, or -1 when out of memory. */
-#define PT_JOURNEY_MAXV 2000
 int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v);
 
 #endif
