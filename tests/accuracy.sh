@@ -6,23 +6,13 @@
 # runs test_accuracy (the unit test of src/accuracy.c) from PIPETRACE's
 # directory and adds its counts.  Everything but one plot runs with --no-time.
 exe=$1
+. tests/testlib.sh
 dir=$(dirname "$exe")
 ref=tests/reference
 [ -d ../shared/reference ] && ref=../shared/reference
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
 
-check() {   # check DESCRIPTION COMMAND...: the command must succeed
-    d=$1; shift
-    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
-    else failed=$((failed + 1)); echo "FAIL $d"; fi
-}
-
-run() {     # run ARGS...: sets $out, $rc; stdout in tmp/out, stderr in tmp/err
-    "$exe" accuracy "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
-    out=$(cat "$tmp/out")
+acc() {     # acc ARGS...: run "$exe accuracy ARGS" (see testlib.sh's run)
+    run accuracy "$@"
 }
 
 field() {   # field ROW_PREFIX N: the Nth word of the first line starting with ROW_PREFIX
@@ -47,7 +37,7 @@ fi
 for scene in docs/examples/*.scene; do
     grep -q '^camera lookat' "$scene" && continue    # the matrix camera: not covered
     name=${scene##*/}
-    run "$scene" --no-time
+    acc "$scene" --no-time
     cp "$tmp/out" "$tmp/first"
     check "acc-sh-1.1 $name: exit 0" test "$rc" = 0
     check "acc-sh-1.2 $name: every stage, float and double" \
@@ -58,23 +48,23 @@ for scene in docs/examples/*.scene; do
     check "acc-sh-1.5 $name: no time columns with --no-time" test "$(grep -c 'ns/' "$tmp/out")" = 0
     check "acc-sh-1.6 $name: double's model and camera stages are exact" \
         test "$(field 'model        double' 3)$(field 'camera       double' 3)" = 00
-    run "$scene" --no-time
+    acc "$scene" --no-time
     check "acc-sh-1.7 $name: the same output on a second run" cmp -s "$tmp/out" "$tmp/first"
 done
-run --no-time
+acc --no-time
 check "acc-sh-1.8 the built-in scene by default" grep -q '^pipetrace accuracy: <builtin>$' "$tmp/out"
 
 # ---- known answers
-run tests/extreme/cancel-translate.scene --no-time
+acc tests/extreme/cancel-translate.scene --no-time
 check "acc-sh-2.1 cancel-translate: float's camera stage has an error" \
     test "$(field 'camera       float' 3)" != 0
 check "acc-sh-2.2 ... double's has none (one exactly rounded addition)" \
     test "$(field 'camera       double' 3)" = 0
-run tests/extreme/corner-plus-one.scene --no-time
+acc tests/extreme/corner-plus-one.scene --no-time
 check "acc-sh-2.3 corner-plus-one: with 2.001 no vertex leaves the viewport" \
     test "$(field '2.001 ' 4)" = 0
 check "acc-sh-2.4 ... with 2.0 the corner x_ip = 1 does" test "$(field '2.0 ' 4)" = 1
-run tests/data/drift.scene --no-time
+acc tests/data/drift.scene --no-time
 check "acc-sh-2.5 drift: double's y += m is a pixel or more off the exact line" \
     awk -v e="$(field 'double      y += m' 5)" 'BEGIN { exit !(e + 0 >= 1) }'
 check "acc-sh-2.6 ... and lights other pixels than the reference" \
@@ -83,7 +73,7 @@ check "acc-sh-2.7 ... recomputing y = y0 + m*(x - x0) lights the reference's" \
     test "$(field 'double      recompute' 5 | cut -d/ -f1)" = 0
 
 # ---- timing and the plot (the only timed run: one repeat)
-run docs/examples/cube.scene --repeat 1 --svg "$tmp/plot.svg"
+acc docs/examples/cube.scene --repeat 1 --svg "$tmp/plot.svg"
 check "acc-sh-3.1 --svg: exit 0" test "$rc" = 0
 check "acc-sh-3.2 timed: ns/vertex and ns/pixel columns" grep -q 'ns/vertex  ns/pixel' "$tmp/out"
 check "acc-sh-3.3 the plot is written" test -s "$tmp/plot.svg"
@@ -101,32 +91,31 @@ check "acc-sh-3.7 ... says where errors of 0 are drawn" grep -q 'An error of 0 l
 
 # ---- exit codes
 printf 'framebuffer 10 10\nmodel m\nv 1 2\n' > "$tmp/bad.scene"
-run "$tmp/bad.scene" --no-time
+acc "$tmp/bad.scene" --no-time
 check "acc-sh-4.1 bad scene: exit 2" test "$rc" = 2
 check "acc-sh-4.2 ... with FILE:LINE:COL: error:" grep -q "^$tmp/bad.scene:3:[0-9]*: error: " "$tmp/err"
-run "$tmp/missing.scene"
+acc "$tmp/missing.scene"
 check "acc-sh-4.3 missing scene: exit 2" test "$rc" = 2
-run --frobnicate
+acc --frobnicate
 check "acc-sh-4.4 unknown option: exit 1" test "$rc" = 1
-run --repeat 0
+acc --repeat 0
 check "acc-sh-4.5 --repeat 0: exit 1" test "$rc" = 1
-run --repeat
+acc --repeat
 check "acc-sh-4.6 --repeat without a value: exit 1" test "$rc" = 1
-run --no-time --svg "$tmp/x.svg"
+acc --no-time --svg "$tmp/x.svg"
 check "acc-sh-4.7 --svg with --no-time: exit 1" test "$rc" = 1 -a ! -e "$tmp/x.svg"
-run a.scene b.scene
+acc a.scene b.scene
 check "acc-sh-4.8 two scenes: exit 1" test "$rc" = 1
-run --help
+acc --help
 check "acc-sh-4.9 --help: exit 0, usage" test "$rc" = 0 -a -n "$(grep 'usage: pipetrace accuracy' "$tmp/out")"
-run docs/examples/triangle.scene --repeat 1 --svg "$tmp/nodir/plot.svg"
+acc docs/examples/triangle.scene --repeat 1 --svg "$tmp/nodir/plot.svg"
 check "acc-sh-4.10 unwritable --svg path: exit 2" test "$rc" = 2
 for scene in docs/examples/*.scene; do
     grep -q '^camera lookat' "$scene" || continue
-    run "$scene" --no-time
+    acc "$scene" --no-time
     check "acc-sh-4.11 ${scene##*/} (matrix camera): exit 2 with a reason" \
         test "$rc" = 2 -a -n "$(grep 'matrix camera' "$tmp/err")"
     break
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+report

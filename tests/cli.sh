@@ -4,21 +4,9 @@
 #
 # Usage: sh tests/cli.sh PIPETRACE.  Run from the repository root.
 exe=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
+. tests/testlib.sh
 
-check() {   # check DESCRIPTION COMMAND...: the command must succeed
-    d=$1; shift
-    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
-    else failed=$((failed + 1)); echo "FAIL $d"; fi
-}
 
-run() {     # run ARGS...: sets $out, $err, $rc
-    "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
-    out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
-}
 
 # ---- exit codes and messages
 run --help
@@ -152,5 +140,4 @@ check "cli-8.17 --raw-lookat: columns u = (0, .7071, .7071) and d = (0, 0, 1) ar
 run docs/examples/lookat-cube.scene --format jsonl --stage cvv --stage screen
 check "cli-8.18 --stage takes the matrix camera's stages" test "$(grep '"type":"vertex"' "$tmp/out" | grep -Evc '"stage":"(cvv|screen)"')" = 0 -a "$(grep -c '"type":"vertex"' "$tmp/out")" = 16
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+report

@@ -9,17 +9,9 @@
 # `PIPETRACE diff REFERENCE STUDENT` exits 1 and names that mistake and no
 # other.  Then: agreeing traces, text against JSON Lines, bad input, images.
 exe=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. tests/testlib.sh
 data=tests/data/diff
-passed=0
-failed=0
 
-check() {   # check DESCRIPTION COMMAND...: the command must succeed
-    d=$1; shift
-    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
-    else failed=$((failed + 1)); echo "FAIL $d"; fi
-}
 
 # student VAR FILE: build $tmp/sb/pipetrace with FILE as stage VAR.  MAKEFLAGS
 # is cleared so that a `make test` around this script passes nothing down.
@@ -209,5 +201,4 @@ check "diff-6.9 a cut-short image: exit 2" test $? = 2
 "$exe" diff "$tmp/a.ppm" "$tmp/offset.jsonl" >/dev/null 2>&1
 check "diff-6.10 an image against a trace: exit 1" test $? = 1
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+report

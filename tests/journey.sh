@@ -8,21 +8,9 @@
 # must decode to the PPM's pixels.  The checks that parse need python3
 # (standard library only); without it they are skipped and say so.
 exe=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
+. tests/testlib.sh
 
-check() {   # check DESCRIPTION COMMAND...: the command must succeed
-    d=$1; shift
-    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
-    else failed=$((failed + 1)); echo "FAIL $d"; fi
-}
 
-run() {     # run ARGS...: sets $out, $err, $rc
-    "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
-    out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
-}
 
 py() {      # py MODE ARGS...: tests/journey_check.py, its counts added to ours
     if [ -z "$have_py" ]; then return; fi
@@ -122,5 +110,4 @@ done
 "$exe" docs/examples/triangle.scene --image "$tmp/upper.PNG"
 check "jny-4.3 .PNG in capitals is PNG too" test "$(head -c 4 "$tmp/upper.PNG" | tail -c 3)" = PNG
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+report

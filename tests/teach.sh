@@ -4,22 +4,10 @@
 #
 # Usage: sh tests/teach.sh PIPETRACE.  Run from the repository root.
 exe=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
+. tests/testlib.sh
 tri=docs/examples/triangle.scene
 
-check() {   # check DESCRIPTION COMMAND...: the command must succeed
-    d=$1; shift
-    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
-    else failed=$((failed + 1)); echo "FAIL $d"; fi
-}
 
-run() {     # run ARGS...: sets $out, $rc (stdin: /dev/null)
-    "$exe" "$@" >"$tmp/out" 2>"$tmp/err" </dev/null; rc=$?
-    out=$(cat "$tmp/out")
-}
 
 feed() {    # feed INPUT ARGS...: like run, with INPUT (backslash escapes) on stdin
     input=$1; shift
@@ -192,5 +180,4 @@ check "teach-8.10 ... the pixels differ by the rounding conventions" has "the pi
 run step docs/examples/lookat-world.scene --vertex 1 --compare-cameras
 check "teach-8.11 --compare-cameras on a matrix scene" test "$rc" = 0 -a -n "$(grep 'matrix camera:  this scene' "$tmp/out")"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+report
