@@ -53,7 +53,7 @@ STAGES_O = $B/pt_stage.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/m7_screen2viewport.o
 SRC_O    = $B/scene.o $B/pipeline.o $B/matrix.o $B/clip.o $B/raster.o $B/fb.o $B/numfmt.o \
            $B/trace.o $B/outfile.o $B/builtin.o $B/cli.o $B/explain.o $B/tread.o $B/accuracy.o \
-           $B/png.o $B/sbuf.o $B/journey.o $B/journey_html.o
+           $B/accuracy_matrix.o $B/png.o $B/sbuf.o $B/journey.o $B/journey_html.o
 # The subcommands, one file each.
 CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o \
            $B/cmd_journey.o

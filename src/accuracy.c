@@ -5,7 +5,9 @@
 ** Three journeys and three DDAs, one per arithmetic, each written out in its
 ** own type so that its run time is that arithmetic's: no generic layer, no
 ** macros.  Each computing line echoes its formula; the double ones are
-** operation for operation the stages' and src/raster.c's.
+** operation for operation the stages' and src/raster.c's.  The matrix
+** camera's journeys and clipping are in src/accuracy_matrix.c; the runs, the
+** DDAs and the errors here serve both cameras.
 */
 #include <float.h>
 #include <math.h>
@@ -19,6 +21,10 @@ const char *const pt_arith_names[PT_NARITH] = { "float", "double", "double-doubl
 const int pt_arith_bits[PT_NARITH] = { 24, 53, PT_DD_BITS };
 const char *const pt_acc_row_names[PT_ACC_NROWS] = {
     "model", "camera", "image", "pixel", "viewport", "framebuffer", "index", "raster"
+};
+const char *const pt_acc_mrow_names[PT_ACC_M_NROWS] = {
+    "model", "world", "view", "clip", "cvv", "ndc", "screen", "viewport", "framebuffer",
+    "index", "raster"
 };
 
 /* ===== double-double ===== */
@@ -131,6 +137,19 @@ pt_dd pt_dd_div(pt_dd a, pt_dd b)
     return pt_dd_add(q, dd_plain(q3));
 }
 
+/* sqrt(a) = q + (a - q*q) / (2q) for q = sqrt(a.hi): one Newton step doubles
+** q's 53 bits; a - q*q is exact up to a.lo's part (two_prod). */
+pt_dd pt_dd_sqrt(pt_dd a)
+{
+    double q;
+    pt_dd r;
+
+    if (!(a.hi > 0) || isinf(a.hi)) return dd_plain(sqrt(a.hi));   /* 0, <0, inf, NaN */
+    q = sqrt(a.hi);
+    r = pt_dd_add(a, pt_dd_neg(two_prod(q, q)));    /* a - q*q */
+    return pt_dd_add(dd_plain(q), dd_plain(r.hi / (2.0 * q)));  /* q + r/(2q) */
+}
+
 /*
 ** Java's rounding of hi + lo.  Below 2^52, hi's neighbours n - 0.5 and n + 0.5
 ** (n = round(hi)) are multiples of hi's ulp, so hi + lo (|lo| <= ulp/2) can be
@@ -164,6 +183,11 @@ static float to_float(double x)
 {
     if (fabs(x) >= 0x1.ffffffp127) return x > 0 ? (float)INFINITY : -(float)INFINITY;
     return (float)x;
+}
+
+float pt_acc_to_float(double x)                /* the same, for src/accuracy_matrix.c */
+{
+    return to_float(x);
 }
 
 /* pt_pix_round() in float: Java's rounding, no value beyond 2^62. */
@@ -548,19 +572,37 @@ int pt_acc_raster_segment(pt_arith a, unsigned choices, pt_dd x0, pt_dd y0,
     return raster_one(a, a == PT_ARITH_DD ? 0 : choices, p0, p1, &o);
 }
 
+/* Matrix camera: clip segment q of model k, then draw what is left between
+** the pixel-plane points of its ends (the vertices' own, or the points
+** clipping made).  The clipping goes to *g. */
+static void raster_mseg(const pt_acc_run *r, size_t k, size_t q, const dda_out *o,
+                        pt_acc_mseg *g)
+{
+    const pt_segment *sg = &r->s->models[k].seg[q];
+    const pt_acc_mjourney *a = &r->mj[k][sg->a], *b = &r->mj[k][sg->b];
+
+    pt_acc_mseg_of(r->cam, a, b, g);
+    if (!g->visible) return;                        /* culled */
+    raster_one(r->arith, r->choices, g->made[0] ? g->end[0].pp : a->t.pp,
+               g->made[1] ? g->end[1].pp : b->t.pp, o);
+}
+
 /* Every segment of every model, in file order; *rgb (when not NULL) is set to
-** each model's color before its segments. */
-static void raster_scene(const pt_acc_run *r, const dda_out *o, uint32_t *rgb)
+** each model's color before its segments.  Matrix camera: each segment's
+** clipping goes to r->seg when keep is set (else nowhere). */
+static void raster_scene(const pt_acc_run *r, const dda_out *o, uint32_t *rgb, int keep)
 {
     size_t k, q;
+    pt_acc_mseg g;
 
     for (k = 0; k < r->s->nmodels; k++) {
         const pt_model *m = &r->s->models[k];
 
         if (rgb) *rgb = (uint32_t)m->color[0] << 16 | (uint32_t)m->color[1] << 8 | m->color[2];
         for (q = 0; q < m->nseg; q++)
-            raster_one(r->arith, r->choices, r->j[k][m->seg[q].a].pp,
-                       r->j[k][m->seg[q].b].pp, o);
+            if (r->cam) raster_mseg(r, k, q, o, keep ? &r->seg[k][q] : &g);
+            else raster_one(r->arith, r->choices, r->j[k][m->seg[q].a].pp,
+                            r->j[k][m->seg[q].b].pp, o);
     }
 }
 
@@ -595,13 +637,11 @@ static void collect_pixel(void *ud, int64_t x_vp, int64_t y_vp)
     c->n++;
 }
 
-static double err_add(pt_acc_err *e, double v, double ref);
-
 static void collect_step(void *ud, const dda_line *ln, int64_t s, double y)
 {
     collect *c = ud;
 
-    (void)err_add(c->line, y, line_y(ln, s).hi);
+    (void)pt_acc_err_add(c->line, y, line_y(ln, s).hi);
 }
 
 static int by_idx_then_seq(const void *pa, const void *pb)
@@ -620,11 +660,46 @@ void pt_acc_run_free(pt_acc_run *r)
         for (k = 0; k < r->s->nmodels; k++) {
             if (r->used) free(r->used[k]);
             if (r->j) free(r->j[k]);
+            if (r->mj) free(r->mj[k]);
+            if (r->seg) free(r->seg[k]);
         }
     free(r->used);
     free(r->j);
+    free(r->mj);
+    free(r->seg);
+    pt_acc_mcam_free(r->cam);
     free(r->img);
     memset(r, 0, sizeof *r);
+}
+
+/* The arrays of the journeys: j[k] (classic camera), or the matrix camera's
+** mj[k], seg[k] and its matrices.  Returns 0, or -1 when out of memory. */
+static int run_alloc(pt_acc_run *r)
+{
+    const pt_scene *s = r->s;
+    size_t k, nm = s->nmodels ? s->nmodels : 1;
+
+    r->used = calloc(nm, sizeof *r->used);
+    if (!r->used) return -1;
+    if (!s->matrix) {
+        r->j = calloc(nm, sizeof *r->j);
+        for (k = 0; r->j && k < s->nmodels; k++)
+            if ((r->j[k] = calloc(s->models[k].nv ? s->models[k].nv : 1, sizeof **r->j)) == NULL)
+                return -1;
+        return r->j ? 0 : -1;
+    }
+    r->cam = pt_acc_mcam_make(s, r->arith);
+    r->mj = calloc(nm, sizeof *r->mj);
+    r->seg = calloc(nm, sizeof *r->seg);
+    if (!r->cam || !r->mj || !r->seg) return -1;
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+
+        r->mj[k] = calloc(m->nv ? m->nv : 1, sizeof **r->mj);
+        r->seg[k] = calloc(m->nseg ? m->nseg : 1, sizeof **r->seg);
+        if (!r->mj[k] || !r->seg[k]) return -1;
+    }
+    return 0;
 }
 
 int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices)
@@ -638,15 +713,12 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     r->arith = a;
     r->choices = a == PT_ARITH_DD ? 0 : choices;
     r->line.real = 1;
-    r->used = calloc(s->nmodels ? s->nmodels : 1, sizeof *r->used);
-    r->j = calloc(s->nmodels ? s->nmodels : 1, sizeof *r->j);
-    if (!r->used || !r->j) { pt_acc_run_free(r); return -1; }
+    if (run_alloc(r) != 0) { pt_acc_run_free(r); return -1; }
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
 
         r->used[k] = calloc(m->nv ? m->nv : 1, 1);
-        r->j[k] = calloc(m->nv ? m->nv : 1, sizeof **r->j);
-        if (!r->used[k] || !r->j[k]) { pt_acc_run_free(r); return -1; }
+        if (!r->used[k]) { pt_acc_run_free(r); return -1; }
         for (q = 0; q < m->nseg; q++) r->used[k][m->seg[q].a] = r->used[k][m->seg[q].b] = 1;
         for (q = 0; q < m->nv; q++) r->nused += r->used[k][q];
     }
@@ -660,8 +732,13 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     o.ud = &c;
     o.w = s->vp_w;
     o.h = s->vp_h;
-    raster_scene(r, &o, &c.rgb);
+    raster_scene(r, &o, &c.rgb, 1);
     if (c.oom) { free(c.px); pt_acc_run_free(r); return -1; }
+    for (k = 0; s->matrix && k < s->nmodels; k++)
+        for (q = 0; q < s->models[k].nseg; q++) {
+            r->made += (uint64_t)(r->seg[k][q].made[0] + r->seg[k][q].made[1]);
+            r->culled += !r->seg[k][q].visible;
+        }
     r->pixels = c.n;
     if (c.n) qsort(c.px, c.n, sizeof *c.px, by_idx_then_seq);
     r->img = malloc((c.n ? c.n : 1) * sizeof *r->img);
@@ -686,11 +763,18 @@ double pt_acc_vertex_pass(pt_acc_run *r)
         const pt_model *m = &r->s->models[k];
 
         for (v = 0; v < m->nv; v++) {
-            pt_acc_journey *j = &r->j[k][v];
-
             if (!r->used[k][v]) continue;
-            pt_acc_journey_of(r->arith, r->choices, r->s, m, m->v[v], j);
-            sum += j->pp[0].hi + (double)j->idx;
+            if (r->cam) {
+                pt_acc_mjourney *j = &r->mj[k][v];
+
+                pt_acc_mjourney_of(r->cam, k, m->v[v], j);
+                sum += j->k[0].hi + (double)j->t.idx;
+            } else {
+                pt_acc_journey *j = &r->j[k][v];
+
+                pt_acc_journey_of(r->arith, r->choices, r->s, m, m->v[v], j);
+                sum += j->pp[0].hi + (double)j->idx;
+            }
         }
     }
     return sum;
@@ -717,7 +801,7 @@ double pt_acc_raster_pass(const pt_acc_run *r, uint64_t *pixels)
     o.ud = &t;
     o.w = r->s->vp_w;
     o.h = r->s->vp_h;
-    raster_scene(r, &o, NULL);
+    raster_scene(r, &o, NULL, 0);
     *pixels = t.n;
     return (double)t.sum;
 }
@@ -735,7 +819,7 @@ static double ulp_of(double r)
 
 /* Count and return |v - ref|: 0 for the same non-finite value, infinite for
 ** another. */
-static double err_add(pt_acc_err *e, double v, double ref)
+double pt_acc_err_add(pt_acc_err *e, double v, double ref)
 {
     double d, u;
 
@@ -751,26 +835,30 @@ static double err_add(pt_acc_err *e, double v, double ref)
 }
 
 /* Real coordinates: returns 1 when any differs from the reference double. */
-static int real_err(pt_acc_err *e, const pt_dd *v, const pt_dd *ref, int n)
+int pt_acc_err_reals(pt_acc_err *e, const pt_dd *v, const pt_dd *ref, int n)
 {
     int k, differ = 0;
 
     for (k = 0; k < n; k++)
-        if (err_add(e, v[k].hi, ref[k].hi) != 0.0) differ = 1;
+        if (pt_acc_err_add(e, v[k].hi, ref[k].hi) != 0.0) differ = 1;
     return differ;
 }
 
 /* A pixel: no pixel on one side only counts as an infinite error. */
-static int pix_err(pt_acc_err *e, pt_pix v, pt_pix ref)
+int pt_acc_err_pix(pt_acc_err *e, pt_pix v, pt_pix ref)
 {
     if (v.ok && ref.ok) {
-        err_add(e, (double)v.x, (double)ref.x);
-        err_add(e, (double)v.y, (double)ref.y);
+        pt_acc_err_add(e, (double)v.x, (double)ref.x);
+        pt_acc_err_add(e, (double)v.y, (double)ref.y);
         return v.x != ref.x || v.y != ref.y;
     }
-    if (v.ok == ref.ok) { err_add(e, 0.0, 0.0); err_add(e, 0.0, 0.0); return 0; }
-    err_add(e, (double)INFINITY, 0.0);
-    err_add(e, (double)INFINITY, 0.0);
+    if (v.ok == ref.ok) {
+        pt_acc_err_add(e, 0.0, 0.0);
+        pt_acc_err_add(e, 0.0, 0.0);
+        return 0;
+    }
+    pt_acc_err_add(e, (double)INFINITY, 0.0);
+    pt_acc_err_add(e, (double)INFINITY, 0.0);
     return 1;
 }
 
@@ -790,13 +878,13 @@ static uint64_t image_diff(const pt_acc_run *a, const pt_acc_run *b, uint64_t *e
     return n;
 }
 
-void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_NROWS])
+/* The classic camera's rows model .. index. */
+static void compare_classic(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_NROWS])
 {
     const pt_scene *s = r->s;
     size_t k, v;
     int row;
 
-    memset(e, 0, PT_ACC_NROWS * sizeof *e);
     for (row = 0; row < PT_ACC_NROWS; row++) {
         e[row].real = row <= PT_ACC_PIXEL || row == PT_ACC_RASTER;
         e[row].of = r->nused;
@@ -807,21 +895,30 @@ void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_
             int in_a, in_b;
 
             if (!r->used[k][v]) continue;
-            e[PT_ACC_MODEL].differ += real_err(&e[PT_ACC_MODEL], a->m, b->m, 3);
-            e[PT_ACC_CAMERA].differ += real_err(&e[PT_ACC_CAMERA], a->c, b->c, 3);
-            e[PT_ACC_IMAGE].differ += real_err(&e[PT_ACC_IMAGE], a->ip, b->ip, 2);
-            e[PT_ACC_PIXEL].differ += real_err(&e[PT_ACC_PIXEL], a->pp, b->pp, 2);
-            e[PT_ACC_VIEWPORT].differ += pix_err(&e[PT_ACC_VIEWPORT], a->vp, b->vp);
-            e[PT_ACC_FRAMEBUFFER].differ += pix_err(&e[PT_ACC_FRAMEBUFFER], a->fb, b->fb);
+            e[PT_ACC_MODEL].differ += pt_acc_err_reals(&e[PT_ACC_MODEL], a->m, b->m, 3);
+            e[PT_ACC_CAMERA].differ += pt_acc_err_reals(&e[PT_ACC_CAMERA], a->c, b->c, 3);
+            e[PT_ACC_IMAGE].differ += pt_acc_err_reals(&e[PT_ACC_IMAGE], a->ip, b->ip, 2);
+            e[PT_ACC_PIXEL].differ += pt_acc_err_reals(&e[PT_ACC_PIXEL], a->pp, b->pp, 2);
+            e[PT_ACC_VIEWPORT].differ += pt_acc_err_pix(&e[PT_ACC_VIEWPORT], a->vp, b->vp);
+            e[PT_ACC_FRAMEBUFFER].differ += pt_acc_err_pix(&e[PT_ACC_FRAMEBUFFER], a->fb, b->fb);
             if (a->idx >= 0 && b->idx >= 0)
-                err_add(&e[PT_ACC_INDEX], (double)a->idx, (double)b->idx);
+                pt_acc_err_add(&e[PT_ACC_INDEX], (double)a->idx, (double)b->idx);
             e[PT_ACC_INDEX].differ += a->idx != b->idx;
             in_a = a->vp.ok && pt_vp_inside(a->vp.x, a->vp.y, s->vp_w, s->vp_h);
             in_b = b->vp.ok && pt_vp_inside(b->vp.x, b->vp.y, s->vp_w, s->vp_h);
             e[PT_ACC_VIEWPORT].left += in_b && !in_a;
             e[PT_ACC_VIEWPORT].entered += in_a && !in_b;
         }
-    e[PT_ACC_RASTER] = r->line;
-    e[PT_ACC_RASTER].real = 1;
-    e[PT_ACC_RASTER].differ = image_diff(ref, r, &e[PT_ACC_RASTER].of);
+}
+
+void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS])
+{
+    int raster = r->s->matrix ? PT_ACC_M_RASTER : PT_ACC_RASTER;
+
+    memset(e, 0, (size_t)(raster + 1) * sizeof *e);
+    if (r->s->matrix) pt_acc_mcompare(ref, r, e);
+    else compare_classic(ref, r, e);
+    e[raster] = r->line;
+    e[raster].real = 1;
+    e[raster].differ = image_diff(ref, r, &e[raster].of);
 }

@@ -10,13 +10,16 @@
 ** bits, headline errors and run time per vertex and per pixel; and two
 ** algorithm choices, 2.001 against 2.0 and the DDA's y += m against
 ** y = y0 + m*(x - x0).  --svg draws the error of every stage against run
-** time, log-log.
+** time, log-log.  Either camera: the rows are the scene's camera's stages
+** (the layout below); the matrix camera has no 2.001, so that choice is only
+** said not to apply.
 **
 ** Timing: a pass computes every used vertex's journey (or rasterizes every
 ** segment).  Passes are batched so that one clock reading spans at least
 ** 10 ms, and batches repeat until both passes together took 0.2 s; that is
 ** one measurement, and the median of --repeat of them is shown.  Without
 ** --no-time the time columns vary from run to run, everything else never.
+** Matrix camera: the raster pass includes the clipping of every segment.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -40,11 +43,12 @@
 
 static const char usage[] =
 "usage: pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
-"Run SCENE's whole pipeline (every stage and the rasterizer) in float, double\n"
-"and double-double (the reference, 106 bits) and print each stage's error\n"
-"against the reference, each arithmetic's run time per vertex and per pixel,\n"
-"and two algorithm choices: 2.001 or 2.0 in the pixel stage, and the DDA's\n"
-"y += m or y = y0 + m*(x - x0).  SCENE defaults to the built-in scene.\n"
+"Run SCENE's whole pipeline (every stage of its camera, classic or matrix, and\n"
+"the rasterizer) in float, double and double-double (the reference, 106 bits)\n"
+"and print each stage's error against the reference, each arithmetic's run\n"
+"time per vertex and per pixel, and two algorithm choices: 2.001 or 2.0 in the\n"
+"pixel stage (classic camera), and the DDA's y += m or y = y0 + m*(x - x0).\n"
+"SCENE defaults to the built-in scene.\n"
 "\n"
 "  --repeat N    time each arithmetic N times (1-100, default 3), show the median\n"
 "  --no-time     leave out the time columns (and do not time): the output is\n"
@@ -73,10 +77,26 @@ static const struct { pt_arith arith; unsigned choices; } run_of[NRUNS] = {
 /* Nanoseconds per vertex and per pixel; NAN: not measured. */
 typedef struct timing { double vertex, pixel; } timing;
 
+/* The rows of one camera's table. */
+typedef struct layout {
+    int nrows;                   /* its stages, then the rasterizer */
+    const char *const *names;    /* "model", ... "raster" */
+    int last_real;               /* the last real stage: pixel, or screen */
+    int viewport, raster;
+} layout;
+
+static const layout classic_rows = {
+    PT_ACC_NROWS, pt_acc_row_names, PT_ACC_PIXEL, PT_ACC_VIEWPORT, PT_ACC_RASTER
+};
+static const layout matrix_rows = {
+    PT_ACC_M_NROWS, pt_acc_mrow_names, PT_ACC_M_SCREEN, PT_ACC_M_VIEWPORT, PT_ACC_M_RASTER
+};
+
 typedef struct study {
     const pt_scene *s;
-    pt_acc_run run[NRUNS];
-    pt_acc_err err[NRUNS][PT_ACC_NROWS];
+    const layout *rows;          /* the scene's camera's */
+    pt_acc_run run[NRUNS];       /* matrix camera: no RUN_TWO (all zero) */
+    pt_acc_err err[NRUNS][PT_ACC_MAXROWS];
     timing t[NRUNS];             /* vertex of RUN_TWO, pixel of the _RE runs */
     int timed;
 } study;
@@ -162,9 +182,13 @@ static void time_all(study *st, int repeat)
     st->t[RUN_DD] = measure(&r[RUN_DD], &r[RUN_DD], repeat);
     st->t[RUN_FLOAT] = measure(&r[RUN_FLOAT], &r[RUN_FLOAT], repeat);
     st->t[RUN_DOUBLE] = measure(&r[RUN_DOUBLE], &r[RUN_DOUBLE], repeat);
-    st->t[RUN_TWO] = measure(&r[RUN_TWO], &r[RUN_DOUBLE_RE], repeat);
-    st->t[RUN_DOUBLE_RE].pixel = st->t[RUN_TWO].pixel;
-    st->t[RUN_TWO].pixel = (double)NAN;
+    if (st->s->matrix)                              /* no 2.001: no RUN_TWO */
+        st->t[RUN_DOUBLE_RE] = measure(NULL, &r[RUN_DOUBLE_RE], repeat);
+    else {
+        st->t[RUN_TWO] = measure(&r[RUN_TWO], &r[RUN_DOUBLE_RE], repeat);
+        st->t[RUN_DOUBLE_RE].pixel = st->t[RUN_TWO].pixel;
+        st->t[RUN_TWO].pixel = (double)NAN;
+    }
     st->t[RUN_FLOAT_RE] = measure(NULL, &r[RUN_FLOAT_RE], repeat);
     st->timed = 1;
 }
@@ -199,6 +223,42 @@ static int dd_bits_of(double a, double b)
     return -(ilogb(fabs(r / a)) + 1);
 }
 
+/* Bits to which the reference's q holds sqrt(a), measured: a - q*q with fma
+** (a - hi*hi exact, then - 2*hi*lo rounded once); |q - sqrt(a)| / sqrt(a) is
+** about |a - q*q| / (2a).  Returns k with that below 2^-k. */
+static int dd_sqrt_bits(pt_dd q, double a)
+{
+    double r = fma(-2.0 * q.hi, q.lo, fma(-q.hi, q.hi, a));
+
+    if (r == 0.0) return 999;
+    return -(ilogb(fabs(r / (2.0 * a))) + 1);
+}
+
+static void print_matrix_header(const study *st)
+{
+    const pt_scene *s = st->s;
+
+    printf("            viewport %d x %d, matrix camera: look-at, perspective fov %.6g,\n"
+           "            aspect %.6g, near %.6g, far %.6g; the reference's clipping made\n"
+           "            %llu points and culled %llu segments\n", s->vp_w, s->vp_h, s->fov,
+           s->aspect, s->znear, s->zfar, (unsigned long long)st->run[RUN_DD].made,
+           (unsigned long long)st->run[RUN_DD].culled);
+    printf("reference   double-double, %d significant bits; measured: 1/3 within 2^-%d,\n"
+           "            sqrt(2) within 2^-%d, cot(30 degrees) within 2^-%d of sqrt(3)\n"
+           "            (relative)\n", PT_DD_BITS, dd_bits_of(1.0, 3.0),
+           dd_sqrt_bits(pt_dd_sqrt(pt_dd_from(2.0)), 2.0),
+           dd_sqrt_bits(pt_dd_cot_deg(30.0), 3.0));
+    printf("matrices    each arithmetic builds View, Projection and World itself: float\n"
+           "            from the scene's numbers rounded to float, double as the\n"
+           "            pipeline does, the reference in double-double (sqrt, division,\n"
+           "            cot(fov/2)); the world lines' product is the parser's double\n"
+           "            matrix, taken as exact by the reference\n");
+    printf("errors      against the reference rounded to double; float rounds the\n"
+           "            scene's numbers to float first, and that is its error too;\n"
+           "            ndc..index: the vertices inside the view volume and the\n"
+           "            points clipping made, in either run; cvv: outcodes that differ\n");
+}
+
 static void print_header(const study *st)
 {
     const pt_scene *s = st->s;
@@ -210,6 +270,7 @@ static void print_header(const study *st)
     printf("scene       %zu models, %llu vertices used, %llu segments, %zu pixels in the "
            "reference image\n", s->nmodels, (unsigned long long)st->run[RUN_DD].nused,
            (unsigned long long)nseg, st->run[RUN_DD].nimg);
+    if (s->matrix) { print_matrix_header(st); return; }
     printf("            viewport %d x %d, %s camera\n", s->vp_w, s->vp_h,
            s->perspective ? "perspective" : "orthographic");
     printf("reference   double-double, %d significant bits; measured: 1/3 within 2^-%d,\n"
@@ -226,28 +287,30 @@ static void print_errors(const study *st)
     int row, k;
 
     printf("\nstage        arithmetic  max abs err  mean abs err    max ulp  differ\n");
-    for (row = 0; row < PT_ACC_NROWS; row++)
+    for (row = 0; row < st->rows->nrows; row++)
         for (k = 0; k < 2; k++) {
             const pt_acc_err *e = &st->err[runs[k]][row];
             double mean = e->n ? e->sum_abs / (double)e->n : (double)NAN;
 
-            printf("%-12s %-10s %12s %13s %10s  %s %s\n", pt_acc_row_names[row],
+            printf("%-12s %-10s %12s %13s %10s  %s %s\n", st->rows->names[row],
                    pt_arith_names[run_of[runs[k]].arith],
                    num(b1, sizeof b1, e->n ? e->max_abs : (double)NAN),
                    num(b2, sizeof b2, mean),
                    num(b3, sizeof b3, e->n && e->real ? e->max_ulp : (double)NAN),
                    ratio(b4, sizeof b4, e->differ, e->of),
-                   row == PT_ACC_RASTER ? "pixels" : "vertices");
+                   row == st->rows->raster ? "pixels" : "vertices");
         }
 }
 
 static void print_arithmetics(const study *st)
 {
     static const int runs[] = { RUN_FLOAT, RUN_DOUBLE, RUN_DD };
+    const layout *L = st->rows;
     char b1[32], b2[48], b3[48], b4[32], b5[32];
     int k;
 
-    printf("\narithmetic     bits  pixel max err  viewport differ  pixels differ%s\n",
+    printf("\narithmetic     bits %14s  viewport differ  pixels differ%s\n",
+           st->s->matrix ? "screen max err" : "pixel max err",
            st->timed ? "  ns/vertex  ns/pixel" : "");
     for (k = 0; k < 3; k++) {
         const pt_acc_err *e = st->err[runs[k]];
@@ -255,10 +318,10 @@ static void print_arithmetics(const study *st)
 
         printf("%-14s %4d %14s %16s %14s", pt_arith_names[run_of[runs[k]].arith],
                pt_arith_bits[run_of[runs[k]].arith],
-               ref ? "reference" : num(b1, sizeof b1, e[PT_ACC_PIXEL].n
-                                       ? e[PT_ACC_PIXEL].max_abs : (double)NAN),
-               ref ? "-" : ratio(b2, sizeof b2, e[PT_ACC_VIEWPORT].differ, e[PT_ACC_VIEWPORT].of),
-               ref ? "-" : ratio(b3, sizeof b3, e[PT_ACC_RASTER].differ, e[PT_ACC_RASTER].of));
+               ref ? "reference" : num(b1, sizeof b1, e[L->last_real].n
+                                       ? e[L->last_real].max_abs : (double)NAN),
+               ref ? "-" : ratio(b2, sizeof b2, e[L->viewport].differ, e[L->viewport].of),
+               ref ? "-" : ratio(b3, sizeof b3, e[L->raster].differ, e[L->raster].of));
         if (st->timed)
             printf(" %10s %9s", num(b4, sizeof b4, st->t[runs[k]].vertex),
                    num(b5, sizeof b5, st->t[runs[k]].pixel));
@@ -266,10 +329,10 @@ static void print_arithmetics(const study *st)
     }
 }
 
-static void print_choices(const study *st)
+/* The classic camera's choice: 2.001 or 2.0 in the pixel stage. */
+static void print_two(const study *st)
 {
     static const int two[] = { RUN_DOUBLE, RUN_TWO };
-    static const int dda[] = { RUN_FLOAT, RUN_FLOAT_RE, RUN_DOUBLE, RUN_DOUBLE_RE };
     char b1[32], b2[48], b3[48], b4[32];
     int k;
 
@@ -287,12 +350,24 @@ static void print_choices(const study *st)
         if (st->timed) printf(" %10s", num(b4, sizeof b4, st->t[two[k]].vertex));
         putchar('\n');
     }
+}
+
+static void print_choices(const study *st)
+{
+    static const int dda[] = { RUN_FLOAT, RUN_FLOAT_RE, RUN_DOUBLE, RUN_DOUBLE_RE };
+    char b1[32], b2[48], b3[48], b4[32];
+    int k;
+
+    if (st->s->matrix)
+        printf("\nchoice: 2.001 or 2.0 does not apply to the matrix camera: its screen stage,\n"
+               "x_s = (x_n + 1) * w * 0.5, has no 2.001\n");
+    else print_two(st);
 
     printf("\nchoice: the DDA's y += m or y = y0 + m*(x - x0), against the exact line\n");
     printf("arithmetic  DDA        max abs err  mean abs err  pixels differ%s\n",
            st->timed ? "  ns/pixel" : "");
     for (k = 0; k < 4; k++) {
-        const pt_acc_err *e = &st->err[dda[k]][PT_ACC_RASTER];
+        const pt_acc_err *e = &st->err[dda[k]][st->rows->raster];
 
         printf("%-11s %-10s %11s %13s %14s", pt_arith_names[run_of[dda[k]].arith],
                k % 2 ? "recompute" : "y += m",
@@ -358,25 +433,26 @@ static int add_point(point *p, int n, int series, const char *choice, double t,
     return n + 1;
 }
 
-/* The label of a point: its stages, three or more in a row as "first..last". */
-static void point_label(char *b, size_t n, const point *p)
+/* The label of a point: its stages (rows of L), three or more in a row as
+** "first..last". */
+static void point_label(char *b, size_t n, const point *p, const layout *L)
 {
     size_t len = 0;
     int r = 0, end;
 
     b[0] = '\0';
     if (p->choice) len += (size_t)snprintf(b, n, "%s", p->choice);
-    while (r < PT_ACC_NROWS && len < n) {
+    while (r < L->nrows && len < n) {
         if (!(p->rows & (1u << r))) { r++; continue; }
-        for (end = r; end + 1 < PT_ACC_NROWS && (p->rows & (1u << (end + 1))); end++) {}
+        for (end = r; end + 1 < L->nrows && (p->rows & (1u << (end + 1))); end++) {}
         if (end - r >= 2)
             len += (size_t)snprintf(b + len, n - len, "%s%s..%s", len && !p->choice ? ", " : "",
-                                    pt_acc_row_names[r], pt_acc_row_names[end]);
+                                    L->names[r], L->names[end]);
         else
             for (; r <= end && len < n; r++)
                 len += (size_t)snprintf(b + len, n - len, "%s%s",
                                         len && !(p->choice && len == strlen(p->choice))
-                                        ? ", " : "", pt_acc_row_names[r]);
+                                        ? ", " : "", L->names[r]);
         r = end + 1;
     }
 }
@@ -408,7 +484,7 @@ static void spread_labels(point *p, int n, int series)
 /* Labels of errors of 0: centered under their points, below the line, each
 ** in the first row where it overlaps no label before it (widths estimated
 ** at 5.6 units a character). */
-static void place_zero_labels(point *p, int n)
+static void place_zero_labels(point *p, int n, const layout *L)
 {
     double lo[MAXPTS], hi[MAXPTS];
     int row[MAXPTS], k, j, r, m = 0;
@@ -416,7 +492,7 @@ static void place_zero_labels(point *p, int n)
 
     for (k = 0; k < n; k++) {
         if (p[k].err != 0) continue;
-        point_label(b, sizeof b, &p[k]);
+        point_label(b, sizeof b, &p[k], L);
         lo[m] = p[k].px - 2.8 * (double)strlen(b) - 4;
         hi[m] = p[k].px + 2.8 * (double)strlen(b) + 4;
         for (r = 0;; r++) {
@@ -439,7 +515,7 @@ static double axis_pos(double e, double lo, double hi, double a, double b)
 static void write_svg(FILE *f, const study *st)
 {
     static const int arith_runs[3] = { RUN_FLOAT, RUN_DOUBLE, RUN_DD };
-    static const char *const notes[] = {
+    static const char *const classic_notes[] = {
         "An error of 0 lies on the dashed",
         "line marked 0, which stands for",
         NULL,                                       /* "1e-17; the reference's ..." */
@@ -453,6 +529,26 @@ static void write_svg(FILE *f, const study *st)
         "in pixels.  Time: ns per vertex",
         "(stages), ns per pixel (raster)."
     };
+    static const char *const matrix_notes[] = {
+        "An error of 0 lies on the dashed",
+        "line marked 0, which stands for",
+        NULL,
+        "are 0 by definition.",
+        "",
+        "Units of error: model..screen",
+        "in their coordinates; viewport",
+        "and framebuffer in pixels; index",
+        "in array places; raster: the",
+        "DDA's y against the exact line,",
+        "in pixels; cvv (outcodes) has",
+        "no point.  Time: ns per vertex",
+        "(stages), ns per pixel (raster",
+        "with clipping)."
+    };
+    const layout *L = st->rows;
+    const char *const *notes = st->s->matrix ? matrix_notes : classic_notes;
+    int nnotes = st->s->matrix ? (int)(sizeof matrix_notes / sizeof matrix_notes[0])
+                               : (int)(sizeof classic_notes / sizeof classic_notes[0]);
     point p[MAXPTS];
     static const int tick_steps[] = { 1, 2, 5, 10, 20, 50, 100 };
     int n = 0, k, row, step, zeros = 0, infs = 0;
@@ -461,23 +557,25 @@ static void write_svg(FILE *f, const study *st)
     char b[160];
 
     for (k = 0; k < 3; k++)                         /* the arithmetics as written */
-        for (row = 0; row < PT_ACC_NROWS; row++) {
+        for (row = 0; row < L->nrows; row++) {
             const pt_acc_err *e = &st->err[arith_runs[k]][row];
             const timing *t = &st->t[arith_runs[k]];
 
-            n = add_point(p, n, k, NULL, row == PT_ACC_RASTER ? t->pixel : t->vertex,
+            n = add_point(p, n, k, NULL, row == L->raster ? t->pixel : t->vertex,
                           arith_runs[k] == RUN_DD ? 0.0 : e->n ? e->max_abs : (double)NAN, row);
         }
-    n = add_point(p, n, 1, "2.0: ", st->t[RUN_TWO].vertex,               /* the choices */
-                  st->err[RUN_TWO][PT_ACC_PIXEL].n ? st->err[RUN_TWO][PT_ACC_PIXEL].max_abs
-                                                   : (double)NAN, PT_ACC_PIXEL);
-    n = add_point(p, n, 1, "2.0: ", st->t[RUN_TWO].vertex,
-                  st->err[RUN_TWO][PT_ACC_VIEWPORT].n ? st->err[RUN_TWO][PT_ACC_VIEWPORT].max_abs
-                                                      : (double)NAN, PT_ACC_VIEWPORT);
-    n = add_point(p, n, 0, "recompute y: ", st->t[RUN_FLOAT_RE].pixel,
-                  st->err[RUN_FLOAT_RE][PT_ACC_RASTER].max_abs, PT_ACC_RASTER);
+    if (!st->s->matrix) {                           /* the choices: 2.001 or 2.0 */
+        n = add_point(p, n, 1, "2.0: ", st->t[RUN_TWO].vertex,
+                      st->err[RUN_TWO][PT_ACC_PIXEL].n ? st->err[RUN_TWO][PT_ACC_PIXEL].max_abs
+                                                       : (double)NAN, PT_ACC_PIXEL);
+        n = add_point(p, n, 1, "2.0: ", st->t[RUN_TWO].vertex,
+                      st->err[RUN_TWO][PT_ACC_VIEWPORT].n
+                      ? st->err[RUN_TWO][PT_ACC_VIEWPORT].max_abs : (double)NAN, PT_ACC_VIEWPORT);
+    }
+    n = add_point(p, n, 0, "recompute y: ", st->t[RUN_FLOAT_RE].pixel,   /* the DDA's */
+                  st->err[RUN_FLOAT_RE][L->raster].max_abs, L->raster);
     n = add_point(p, n, 1, "recompute y: ", st->t[RUN_DOUBLE_RE].pixel,
-                  st->err[RUN_DOUBLE_RE][PT_ACC_RASTER].max_abs, PT_ACC_RASTER);
+                  st->err[RUN_DOUBLE_RE][L->raster].max_abs, L->raster);
 
     for (k = 0; k < n; k++) {                       /* the axes: whole decades */
         if (p[k].t < tmin) tmin = p[k].t;
@@ -506,7 +604,7 @@ static void write_svg(FILE *f, const study *st)
         p[k].py = axis_pos(e, bottom, top, PLOT_B, PLOT_T);
     }
     for (k = 0; k < 3; k++) spread_labels(p, n, k);
-    place_zero_labels(p, n);
+    place_zero_labels(p, n, L);
 
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
@@ -558,7 +656,7 @@ static void write_svg(FILE *f, const study *st)
 
         fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\" stroke=\"%s\" "
                    "stroke-width=\"1.5\"/>\n", p[k].px, p[k].py, p[k].choice ? "white" : c, c);
-        point_label(b, sizeof b, &p[k]);
+        point_label(b, sizeof b, &p[k], L);
         fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"%s\" text-anchor=\"%s\" "
                    "font-size=\"10\">", p[k].err == 0 ? p[k].px : p[k].px + (left ? -7 : 7),
                 p[k].ly, c, p[k].err == 0 ? "middle" : left ? "end" : "start");
@@ -574,7 +672,7 @@ static void write_svg(FILE *f, const study *st)
                 k == 2 ? " (reference)" : "");
     fprintf(f, "<circle cx=\"6\" cy=\"54\" r=\"4\" fill=\"white\" stroke=\"#333\" "
                "stroke-width=\"1.5\"/>\n<text x=\"16\" y=\"58\">an algorithm choice</text>\n");
-    for (k = 0; k < (int)(sizeof notes / sizeof notes[0]); k++) {
+    for (k = 0; k < nnotes; k++) {
         fprintf(f, "<text x=\"0\" y=\"%d\" fill=\"#555\">", 86 + 14 * k);
         if (!notes[k]) fprintf(f, "1e%d; the reference's errors", (int)y0 - 1);
         else if (!notes[k][0] && infs) fprintf(f, "inf lies on the top dashed line.");
@@ -620,18 +718,13 @@ int pt_cmd_accuracy(int argc, char **argv)
     if (svg && no_time) return usage_error("--svg plots run time: drop --no-time", "");
 
     if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
-    if (s.matrix) {
-        fprintf(stderr, "pipetrace accuracy: %s: the matrix camera is not covered; accuracy "
-                "follows model -> camera -> image -> pixel -> viewport -> framebuffer -> "
-                "index\n", s.path);
-        pt_scene_free(&s);
-        return EXIT_INPUT;
-    }
     st = calloc(1, sizeof *st);
     if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return EXIT_INPUT; }
     st->s = &s;
+    st->rows = s.matrix ? &matrix_rows : &classic_rows;
     for (k = 0; k < NRUNS && rc == 0; k++) {
         st->t[k].vertex = st->t[k].pixel = (double)NAN;
+        if (s.matrix && k == RUN_TWO) continue;     /* no 2.001 to replace */
         rc = pt_acc_run_make(&st->run[k], &s, run_of[k].arith, run_of[k].choices);
     }
     if (rc != 0) {
@@ -639,7 +732,8 @@ int pt_cmd_accuracy(int argc, char **argv)
         rc = EXIT_INPUT;
         goto done;
     }
-    for (k = 0; k < NRUNS; k++) pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
+    for (k = 0; k < NRUNS; k++)
+        if (!(s.matrix && k == RUN_TWO)) pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
     if (!no_time) time_all(st, repeat);
 
     print_header(st);

@@ -3,13 +3,15 @@
 ** See LICENSE for copyright and license.
 **
 ** Usage: test_accuracy [REFERENCE_DIR], from the repository root.  Checks:
-** the double-double operations and Java rounding of a double-double; that the
-** double journey is the stages' journey, value for value, for every vertex of
-** every scene in REFERENCE_DIR (default tests/reference), tests/extreme and
-** docs/examples; that the double DDA lights exactly src/raster.c's pixels;
-** that the float DDA (with its fast-forward) lights the plain float loop's;
-** that the reference DDA lights the exact line's, ties included; and what
-** pt_acc_compare() reports on scenes whose answer is known.
+** the double-double operations (sqrt, cot, a matrix product included) and Java
+** rounding of a double-double; that the double journey is the stages' journey,
+** value for value, for every vertex of every scene in REFERENCE_DIR (default
+** tests/reference), tests/extreme and docs/examples; for the matrix camera's
+** scenes the same with its matrices, its clipping and its image; that the
+** double DDA lights exactly src/raster.c's pixels; that the float DDA (with
+** its fast-forward) lights the plain float loop's; that the reference DDA
+** lights the exact line's, ties included; and what pt_acc_compare() reports on
+** scenes whose answer is known.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -21,6 +23,7 @@
 #include "accuracy.h"
 #include "pipeline.h"
 #include "raster.h"
+#include "../stages/m4_clip2cvv.h"
 
 /* ===== double-double ===== */
 
@@ -86,6 +89,74 @@ static void test_dd(void)
     PT_CHECK("acc-2.11 no pixel at 2^62", !pt_dd_pix_round(dd(0x1p62, 0.0), &v));
     PT_CHECK("acc-2.12 no pixel for NaN", !pt_dd_pix_round(dd((double)NAN, 0.0), &v));
     PT_CHECK("acc-2.13 round 2^62 - 1 exists", round_dd(0x1p62, -1.0) == big);
+}
+
+/* |got - want| / |want|, for two close double-doubles. */
+static double dd_rel(pt_dd got, pt_dd want)
+{
+    return fabs((got.hi - want.hi) + (got.lo - want.lo)) / fabs(want.hi);
+}
+
+/* The matrix camera's double-double tools: sqrt, cot, a matrix product. */
+static void test_dd_matrix(void)
+{
+    const double eps = 0x1p-50;
+    pt_dd q = pt_dd_sqrt(pt_dd_from(2.0)), c30 = pt_dd_cot_deg(30.0), c60 = pt_dd_cot_deg(60.0);
+    pt_dd one = pt_dd_from(1.0);
+    pt_dd_mat4 a, b, r;
+    pt_mat4 ad, bd, rd;
+    int i, j, k, exact = 1, dbl = 1;
+    double r2;
+
+    r2 = fma(-2.0 * q.hi, q.lo, fma(-q.hi, q.hi, 2.0));      /* 2 - q^2 */
+    PT_CHECK("acc-1.20 sqrt(2) within 2^-104", fabs(r2 / 4.0) < 0x1p-104);
+    q = pt_dd_sqrt(pt_dd_from(4.0));
+    PT_CHECK("acc-1.21 sqrt(4) = 2 exactly", q.hi == 2.0 && q.lo == 0.0);
+    PT_CHECK("acc-1.22 sqrt(0) = 0, sqrt(-1) = NaN",
+             pt_dd_sqrt(pt_dd_from(0.0)).hi == 0.0 && isnan(pt_dd_sqrt(pt_dd_from(-1.0)).hi));
+    q = pt_dd_sqrt(pt_dd_add(pt_dd_from(1.0), pt_dd_from(0x1p-80)));   /* 1 + 2^-81 - ... */
+    PT_CHECK("acc-1.23 sqrt(1 + 2^-80) = 1 + 2^-81 within 2^-104",
+             dd_rel(q, pt_dd_add(one, pt_dd_from(0x1p-81))) < 0x1p-104);
+    r2 = fma(-2.0 * c30.hi, c30.lo, fma(-c30.hi, c30.hi, 3.0));     /* 3 - cot(30)^2 */
+    PT_CHECK("acc-1.24 cot(30 degrees) = sqrt(3) within 2^-102", fabs(r2 / 6.0) < 0x1p-102);
+    PT_CHECK("acc-1.25 cot(60) * cot(30) = 1 within 2^-102",
+             dd_rel(pt_dd_mul(c60, c30), one) < 0x1p-102);
+    PT_CHECK("acc-1.26 cot(45) = 1 exactly", pt_dd_cot_deg(45.0).hi == 1.0
+             && pt_dd_cot_deg(45.0).lo == 0.0);
+    PT_CHECK("acc-1.27 cot(22.5) = 1 + sqrt(2) within 2^-102",
+             dd_rel(pt_dd_cot_deg(22.5), pt_dd_add(one, pt_dd_sqrt(pt_dd_from(2.0)))) < 0x1p-102);
+    PT_CHECK("acc-1.28 cot(10), cot(0.001), cot(89.999) within 2^-102 of 200-bit values",
+             dd_rel(pt_dd_cot_deg(10.0), dd(0x1.6af648056a136p+2, 0x1.27c9baa1ca563p-52)) < 0x1p-102
+             && dd_rel(pt_dd_cot_deg(0.001), dd(0x1.bf9f8f1b93808p+15, 0x1.52c388a4ac858p-39))
+                < 0x1p-102
+             && dd_rel(pt_dd_cot_deg(89.999), dd(0x1.24d1521218fbbp-16, 0x1.52a34b89b814bp-70))
+                < 0x1p-102);
+
+    /* a_ik = 1 + p_ik eps, b_kj = 1 + q_kj eps, eps = 2^-50: the product's
+    ** entry is 4 + eps sum(p + q) + eps^2 sum(p q), 101 bits, a double-double
+    ** exactly; double keeps 4 + eps sum(p + q) and drops the eps^2 part. */
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) {
+            ad.m[i][j] = 1 + (double)(i + 2 * j + 1) * eps;
+            bd.m[i][j] = 1 + (double)(3 * i - j - 5) * eps;
+            a.m[i][j] = pt_dd_from(ad.m[i][j]);
+            b.m[i][j] = pt_dd_from(bd.m[i][j]);
+        }
+    r = pt_dd_mat4_mul(&a, &b);
+    rd = pt_mat4_mul(&ad, &bd);
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) {
+            double s1 = 0, s2 = 0;
+
+            for (k = 0; k < 4; k++) {
+                s1 += (double)(i + 2 * k + 1) + (double)(3 * k - j - 5);
+                s2 += (double)(i + 2 * k + 1) * (double)(3 * k - j - 5);
+            }
+            exact &= r.m[i][j].hi == 4 + s1 * eps && r.m[i][j].lo == s2 * eps * eps;
+            dbl &= rd.m[i][j] == 4 + s1 * eps;
+        }
+    PT_CHECK("acc-1.29 a double-double matrix product keeps the 2^-100 terms exactly", exact);
+    PT_CHECK("acc-1.30 ... that double's product (pt_mat4_mul) drops", dbl);
 }
 
 /* ===== scenes ===== */
@@ -157,6 +228,242 @@ static int dda_agrees(pt_vec2 p0, pt_vec2 p1, int w, int h)
     return same_pixels(&pa, &pb);
 }
 
+/* ===== the matrix camera against the pipeline ===== */
+
+#define NALL PT_NSTAGES_ALL
+
+/* What the matrix checks found, over all matrix scenes. */
+static struct {
+    size_t scenes, vertices, bad_vertices, points, bad_points, bad_culled;
+    size_t bad_images, bad_matrices, pixels;
+    double ref_matrix_ulps;      /* the reference's matrices against double's */
+} mc;
+
+/* Every record of one matrix-camera run: slot v for vertex v (all models in
+** a row), then two slots per segment for the points clipping makes; and the
+** color + 1 last written to each pixel (0: none). */
+typedef struct mgot {
+    const pt_scene *s;
+    size_t *vbase, *sbase;       /* model k's first vertex slot, first segment */
+    size_t nvslots, cur;         /* vertex slots; the slot records go to */
+    pt_vrec *rec;                /* rec[slot * NALL + stage] */
+    unsigned char *have;
+    double *t;                   /* a clip slot's t */
+    int64_t *px;                 /* px[idx] */
+} mgot;
+
+static void m_begin(void *ud, const pt_model *m, uint64_t v)
+{
+    mgot *g = ud;
+    g->cur = g->vbase[m - g->s->models] + (size_t)(v - 1);
+}
+
+/* End 0 is made when the first end is outside (cvv code not 0) and comes
+** first; otherwise (or the second time) it is end 1. */
+static void m_clipvertex(void *ud, const pt_model *m, uint64_t seg, uint64_t from,
+                         uint64_t to, double t)
+{
+    mgot *g = ud;
+    size_t k = (size_t)(m - g->s->models);
+    size_t slot = g->nvslots + 2 * (g->sbase[k] + (size_t)(seg - 1));
+    const pt_vrec *cvv = &g->rec[(g->vbase[k] + (size_t)(from - 1)) * NALL + PT_STAGE_CVV];
+
+    (void)to;
+    if (cvv->code == 0 || g->have[slot * NALL + PT_STAGE_NDC]) slot++;
+    g->cur = slot;
+    g->t[slot] = t;
+}
+
+static void m_vertex(void *ud, const pt_vrec *r)
+{
+    mgot *g = ud;
+
+    g->rec[g->cur * NALL + r->stage] = *r;
+    g->have[g->cur * NALL + r->stage] = 1;
+}
+
+static void m_pixel(void *ud, const pt_model *m, uint64_t seg, int64_t x_fb, int64_t y_fb,
+                    int64_t idx)
+{
+    mgot *g = ud;
+
+    (void)seg; (void)x_fb; (void)y_fb;
+    g->px[idx] = ((int64_t)m->color[0] << 16 | (int64_t)m->color[1] << 8 | m->color[2]) + 1;
+}
+
+static int same4(const pt_dd *v, const pt_vrec *r)
+{
+    return same(v[0].hi, r->x) && same(v[1].hi, r->y) && same(v[2].hi, r->z) && same(v[3].hi, r->w);
+}
+
+static int same_pix(pt_pix p, const pt_vrec *r)
+{
+    return p.ok == !(r->flags & PT_REC_NULL) && (!p.ok || (p.x == r->ix && p.y == r->iy));
+}
+
+/* A journey from clip coordinates on against the records of one slot. */
+static int same_tail(const pt_acc_mtail *t, const pt_vrec *r, const unsigned char *have)
+{
+    return have[PT_STAGE_NDC] && have[PT_STAGE_SCREEN] && have[PT_STAGE_VIEWPORT]
+        && have[PT_STAGE_FRAMEBUFFER] && have[PT_STAGE_INDEX]
+        && same(t->n[0].hi, r[PT_STAGE_NDC].x) && same(t->n[1].hi, r[PT_STAGE_NDC].y)
+        && same(t->n[2].hi, r[PT_STAGE_NDC].z)
+        && same(t->sc[0].hi, r[PT_STAGE_SCREEN].x) && same(t->sc[1].hi, r[PT_STAGE_SCREEN].y)
+        && same(t->sc[2].hi, r[PT_STAGE_SCREEN].z)
+        && same_pix(t->vp, &r[PT_STAGE_VIEWPORT]) && same_pix(t->fb, &r[PT_STAGE_FRAMEBUFFER])
+        && (t->idx < 0) == !!(r[PT_STAGE_INDEX].flags & PT_REC_NULL)
+        && (t->idx < 0 || t->idx == r[PT_STAGE_INDEX].i);
+}
+
+static int same_mat(const pt_dd_mat4 *a, const pt_mat4 *b)
+{
+    int i, j, ok = 1;
+
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) ok &= same(a->m[i][j].hi, b->m[i][j]);
+    return ok;
+}
+
+/* The largest distance between a's entries rounded to double and b's, in ulps
+** of b's largest entry (an entry exactly 0 in one may be 1e-32 in the other). */
+static double mat_ulps(const pt_dd_mat4 *a, const pt_mat4 *b)
+{
+    double worst = 0, big = 0, u;
+    int i, j;
+
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) {
+            if (fabs(a->m[i][j].hi - b->m[i][j]) > worst) worst = fabs(a->m[i][j].hi - b->m[i][j]);
+            if (fabs(b->m[i][j]) > big) big = fabs(b->m[i][j]);
+        }
+    u = big > 0 ? ldexp(1.0, ilogb(big) - 52) : 0x1p-1074;
+    return worst / u;
+}
+
+/* One matrix scene: the double matrices against the plan's, every used
+** vertex's double journey and every segment's double clipping against the
+** pipeline's records (all stages, every point clipping makes), and the double
+** run's image against the pipeline's pixels. */
+static void check_matrix_scene(const char *path)
+{
+    char err[PT_ERRLEN];
+    pt_scene s;
+    pt_options o;
+    pt_plan p;
+    pt_listener l;
+    pt_summary sum;
+    pt_acc_mcam *cd, *cr;
+    pt_acc_run run;
+    mgot g;
+    size_t k, v, q, nv = 0, ns = 0, culled = 0, lit = 0;
+    int e, bad_image = 0;
+
+    if (pt_scene_load(&s, path, err, sizeof err) != 0) return;
+    pt_options_default(&o);
+    o.all_stages = 1;
+    if (pt_plan_make(&p, &s, &o) != 0) { pt_scene_free(&s); return; }
+    memset(&g, 0, sizeof g);
+    g.s = &s;
+    g.vbase = calloc(s.nmodels + 1, sizeof *g.vbase);
+    g.sbase = calloc(s.nmodels + 1, sizeof *g.sbase);
+    for (k = 0; k < s.nmodels; k++) {
+        g.vbase[k] = nv; nv += s.models[k].nv;
+        g.sbase[k] = ns; ns += s.models[k].nseg;
+    }
+    g.nvslots = nv;
+    g.rec = calloc((nv + 2 * ns) * NALL + 1, sizeof *g.rec);
+    g.have = calloc((nv + 2 * ns) * NALL + 1, 1);
+    g.t = calloc(nv + 2 * ns + 1, sizeof *g.t);
+    g.px = calloc((size_t)s.fb_w * (size_t)s.fb_h, sizeof *g.px);
+    memset(&l, 0, sizeof l);
+    l.vertex_begin = m_begin;
+    l.clipvertex_begin = m_clipvertex;
+    l.pixel = m_pixel;
+    l.sink.vertex = m_vertex;
+    l.sink.ud = &g;
+    l.ud = &g;
+    pt_run(&s, &p, &o, &l, NULL, &sum);
+    cd = pt_acc_mcam_make(&s, PT_ARITH_DOUBLE);
+    cr = pt_acc_mcam_make(&s, PT_ARITH_DD);
+    mc.scenes++;
+
+    for (k = 0; k < s.nmodels; k++) {
+        const pt_model *m = &s.models[k];
+        pt_dd_mat4 wd, vd, pd, wr, vr, pr;
+
+        pt_acc_mcam_matrices(cd, k, &wd, &vd, &pd);
+        pt_acc_mcam_matrices(cr, k, &wr, &vr, &pr);
+        if (!same_mat(&wd, &p.models[k].world) || !same_mat(&vd, &p.view)
+            || !same_mat(&pd, &p.proj)) {
+            mc.bad_matrices++;
+            printf("  %s: model %s: the double matrices are not the plan's\n", path, m->name);
+        }
+        if (mat_ulps(&wr, &p.models[k].world) > mc.ref_matrix_ulps)
+            mc.ref_matrix_ulps = mat_ulps(&wr, &p.models[k].world);
+        if (mat_ulps(&vr, &p.view) > mc.ref_matrix_ulps) mc.ref_matrix_ulps = mat_ulps(&vr, &p.view);
+        if (mat_ulps(&pr, &p.proj) > mc.ref_matrix_ulps) mc.ref_matrix_ulps = mat_ulps(&pr, &p.proj);
+
+        for (v = 0; v < m->nv; v++) {                   /* the vertices */
+            size_t slot = g.vbase[k] + v;
+            const pt_vrec *r = &g.rec[slot * NALL];
+            const unsigned char *have = &g.have[slot * NALL];
+            pt_acc_mjourney j;
+            int ok;
+
+            if (!have[PT_STAGE_CVV]) continue;          /* not used: not transformed */
+            pt_acc_mjourney_of(cd, k, m->v[v], &j);
+            ok = same(j.m[0].hi, r[PT_STAGE_MODEL].x) && same(j.m[1].hi, r[PT_STAGE_MODEL].y)
+              && same(j.m[2].hi, r[PT_STAGE_MODEL].z)
+              && have[PT_STAGE_WORLD] && same4(j.w, &r[PT_STAGE_WORLD])
+              && have[PT_STAGE_VIEW] && same4(j.v, &r[PT_STAGE_VIEW])
+              && have[PT_STAGE_CLIP] && same4(j.k, &r[PT_STAGE_CLIP])
+              && j.code == r[PT_STAGE_CVV].code
+              && (j.code ? !have[PT_STAGE_NDC] : same_tail(&j.t, r, have));
+            mc.vertices++;
+            if (!ok) { mc.bad_vertices++; printf("  %s: model %s vertex %zu differs\n", path, m->name, v + 1); }
+        }
+        for (q = 0; q < m->nseg; q++) {                 /* the points clipping makes */
+            pt_acc_mjourney ja, jb;
+            pt_acc_mseg sg;
+
+            pt_acc_mjourney_of(cd, k, m->v[m->seg[q].a], &ja);
+            pt_acc_mjourney_of(cd, k, m->v[m->seg[q].b], &jb);
+            pt_acc_mseg_of(cd, &ja, &jb, &sg);
+            culled += !sg.visible;
+            for (e = 0; e < 2; e++) {
+                size_t slot = g.nvslots + 2 * (g.sbase[k] + q) + (size_t)e;
+                const unsigned char *have = &g.have[slot * NALL];
+
+                if (!sg.made[e] && !have[PT_STAGE_NDC]) continue;
+                mc.points++;
+                if (!sg.made[e] || !same(sg.t[e].hi, g.t[slot])
+                    || !same_tail(&sg.end[e], &g.rec[slot * NALL], have)) {
+                    mc.bad_points++;
+                    printf("  %s: model %s segment %zu end %d: the clipping differs\n", path,
+                           m->name, q + 1, e);
+                }
+            }
+        }
+    }
+    if (culled != sum.segments_culled) mc.bad_culled++;
+
+    if (pt_acc_run_make(&run, &s, PT_ARITH_DOUBLE, 0) == 0) {   /* the image */
+        for (q = 0; q < run.nimg; q++)
+            bad_image |= g.px[run.img[q].idx] != (int64_t)run.img[q].rgb + 1;
+        for (q = 0; q < (size_t)s.fb_w * (size_t)s.fb_h; q++) lit += g.px[q] != 0;
+        bad_image |= lit != run.nimg;
+        mc.pixels += lit;
+        pt_acc_run_free(&run);
+    } else bad_image = 1;
+    if (bad_image) { mc.bad_images++; printf("  %s: the double image differs\n", path); }
+
+    pt_acc_mcam_free(cd);
+    pt_acc_mcam_free(cr);
+    free(g.vbase); free(g.sbase); free(g.rec); free(g.have); free(g.t); free(g.px);
+    pt_plan_free(&p);
+    pt_scene_free(&s);
+}
+
 /* One scene: the double journey of every used vertex against the stages'
 ** records, and every segment's double DDA against src/raster.c. */
 static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
@@ -172,7 +479,7 @@ static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
     size_t k, v, q, nv = 0;
 
     if (pt_scene_load(&s, path, err, sizeof err) != 0) return;
-    if (s.matrix) { pt_scene_free(&s); return; }
+    if (s.matrix) { pt_scene_free(&s); check_matrix_scene(path); return; }
     pt_options_default(&o);
     o.all_stages = 1;
     o.trace_raster = 0;
@@ -398,7 +705,7 @@ static void test_compare(void)
 {
     pt_scene s;
     pt_acc_run ref, f, d, two;
-    pt_acc_err e[PT_ACC_NROWS], ed[PT_ACC_NROWS];
+    pt_acc_err e[PT_ACC_MAXROWS], ed[PT_ACC_MAXROWS];
     int row, zero = 1;
 
     PT_CHECK("acc-5.0 loads tests/extreme/cancel-translate.scene",
@@ -436,6 +743,81 @@ static void test_compare(void)
     pt_scene_free(&s);
 }
 
+/* The matrix camera: what pt_acc_compare() reports, and the reference's ties. */
+static void test_mcompare(void)
+{
+    static const char target[] =            /* the look-at target is a vertex */
+        "framebuffer 64 48\nviewport 4 4 56 40\n"
+        "camera lookat-target 3 2 -6  0 0 0  0 1 0\n"
+        "projection perspective 60 auto 0.5 50\n"
+        "model m\nv 0 0 0\nv 1 1 1\nl 1 2\n";
+    char err[PT_ERRLEN];
+    pt_scene s;
+    pt_acc_run ref, f, d;
+    pt_acc_err e[PT_ACC_MAXROWS], ed[PT_ACC_MAXROWS];
+    int row, zero = 1;
+
+    PT_CHECK("acc-8.0 loads docs/examples/lookat-near.scene",
+             load(&s, "docs/examples/lookat-near.scene"));
+    pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
+    pt_acc_run_make(&f, &s, PT_ARITH_FLOAT, 0);
+    pt_acc_run_make(&d, &s, PT_ARITH_DOUBLE, 0);
+    PT_CHECK("acc-8.1 lookat-near: the reference clips 2 ends, culls nothing",
+             ref.made == 2 && ref.culled == 0 && d.made == 2 && f.made == 2);
+    pt_acc_compare(&ref, &f, e);
+    pt_acc_compare(&ref, &d, ed);
+    PT_CHECK("acc-8.2 ... float's clip stage errs (1/aspect = 3/4 of a rounded 4/3), "
+             "below 1e-5", e[PT_ACC_M_CLIP].max_abs > 0 && e[PT_ACC_M_CLIP].max_abs < 1e-5);
+    PT_CHECK("acc-8.3 ... double's world..clip within 2 ulps",
+             ed[PT_ACC_M_WORLD].max_ulp <= 2 && ed[PT_ACC_M_VIEW].max_ulp <= 2
+             && ed[PT_ACC_M_CLIP].max_ulp <= 2);
+    PT_CHECK("acc-8.4 ... no outcode differs; ndc..index compare 1 vertex + 2 points",
+             e[PT_ACC_M_CVV].differ == 0 && ed[PT_ACC_M_CVV].differ == 0
+             && e[PT_ACC_M_CVV].of == 3 && ed[PT_ACC_M_VIEWPORT].of == 3
+             && e[PT_ACC_M_CVV].n == 0);
+    PT_CHECK("acc-8.5 ... no pixel differs", e[PT_ACC_M_RASTER].differ == 0
+             && ed[PT_ACC_M_RASTER].differ == 0 && ed[PT_ACC_M_RASTER].of > 20);
+    pt_acc_compare(&ref, &ref, e);
+    for (row = 0; row < PT_ACC_M_NROWS; row++)
+        zero &= e[row].max_abs == 0 && e[row].differ == 0;
+    PT_CHECK("acc-8.6 the reference against itself: no error anywhere", zero);
+    pt_acc_run_free(&ref); pt_acc_run_free(&f); pt_acc_run_free(&d);
+    pt_scene_free(&s);
+
+    PT_CHECK("acc-8.7 loads tests/data/near-tie.scene", load(&s, "tests/data/near-tie.scene"));
+    pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
+    pt_acc_run_make(&f, &s, PT_ARITH_FLOAT, 0);
+    pt_acc_run_make(&d, &s, PT_ARITH_DOUBLE, 0);
+    pt_acc_compare(&ref, &f, e);
+    pt_acc_compare(&ref, &d, ed);
+    PT_CHECK("acc-8.8 near-tie: the reference keeps the vertex on the near plane inside, "
+             "z_k = 0 exactly", ref.mj[0][0].code == 0 && ref.mj[0][0].k[2].hi == 0
+             && ref.mj[0][0].k[2].lo == 0);
+    PT_CHECK("acc-8.9 ... double's z_k < 0 puts it outside: 1 outcode differs, clipping "
+             "makes a point", d.mj[0][0].code == PT_CVV_NEAR && ed[PT_ACC_M_CVV].differ == 1
+             && d.made == 1 && ref.made == 0);
+    PT_CHECK("acc-8.10 ... the vertex's pixel and the new point's exist on one side only: "
+             "inf, 2 of 3 differ", isinf(ed[PT_ACC_M_VIEWPORT].max_abs)
+             && ed[PT_ACC_M_VIEWPORT].differ == 2 && ed[PT_ACC_M_VIEWPORT].of == 3);
+    PT_CHECK("acc-8.11 ... float keeps it inside; no pixel differs",
+             e[PT_ACC_M_CVV].differ == 0 && ed[PT_ACC_M_RASTER].differ == 0);
+    pt_acc_run_free(&ref); pt_acc_run_free(&f); pt_acc_run_free(&d);
+    pt_scene_free(&s);
+
+    PT_CHECK("acc-8.12 parses a scene whose look-at target is a vertex",
+             pt_scene_parse(&s, "target", target, sizeof target - 1, err, sizeof err) == 0);
+    pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
+    pt_acc_run_make(&d, &s, PT_ARITH_DOUBLE, 0);
+    PT_CHECK("acc-8.13 the target's view x and y are 0 in the reference (-eye.u is 0 "
+             "exactly, 1e-32 in double-double)", ref.mj[0][0].v[0].hi == 0
+             && ref.mj[0][0].v[1].hi == 0 && ref.mj[0][0].v[1].lo == 0);
+    PT_CHECK("acc-8.14 ... so it lands on the screen's centre, pixel (28, 20), like double's",
+             ref.mj[0][0].t.vp.x == 28 && ref.mj[0][0].t.vp.y == 20
+             && d.mj[0][0].t.vp.x == 28 && d.mj[0][0].t.vp.y == 20);
+    pt_acc_run_free(&ref); pt_acc_run_free(&d);
+    pt_scene_free(&s);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -446,6 +828,7 @@ int main(int argc, char **argv)
     dirs[1] = "tests/extreme";
     dirs[2] = "docs/examples";
     test_dd();
+    test_dd_matrix();
     for (k = 0; k < 3; k++) check_dir(dirs[k], &nscenes, &nv, &ns, &bv, &bs);
     snprintf(descr, sizeof descr, "acc-3.1 the double journey is the stages' for all "
              "%zu vertices of %zu scenes", nv, nscenes);
@@ -453,7 +836,23 @@ int main(int argc, char **argv)
     snprintf(descr, sizeof descr, "acc-3.2 the double DDA lights src/raster.c's pixels "
              "for all %zu segments", ns);
     PT_CHECK(descr, bs == 0 && ns > 100);
+    snprintf(descr, sizeof descr, "acc-6.1 matrix camera: the double View, Projection and "
+             "World are the plan's, bit for bit (%zu scenes)", mc.scenes);
+    PT_CHECK(descr, mc.bad_matrices == 0 && mc.scenes >= 4);
+    snprintf(descr, sizeof descr, "acc-6.2 matrix camera: the double journey is the "
+             "pipeline's, model to index, for all %zu vertices", mc.vertices);
+    PT_CHECK(descr, mc.bad_vertices == 0 && mc.vertices >= 15);
+    snprintf(descr, sizeof descr, "acc-6.3 matrix camera: the double clipping makes the "
+             "pipeline's %zu points (t, ndc .. index), culls as many segments", mc.points);
+    PT_CHECK(descr, mc.bad_points == 0 && mc.bad_culled == 0 && mc.points >= 2);
+    snprintf(descr, sizeof descr, "acc-6.4 matrix camera: the double image is the "
+             "pipeline's (%zu pixels)", mc.pixels);
+    PT_CHECK(descr, mc.bad_images == 0 && mc.pixels > 50);
+    snprintf(descr, sizeof descr, "acc-6.5 matrix camera: the reference's matrices round to "
+             "within 4 ulps (of the largest entry) of double's (%.3g)", mc.ref_matrix_ulps);
+    PT_CHECK(descr, mc.ref_matrix_ulps <= 4);
     test_random_ddas();
     test_compare();
+    test_mcompare();
     return pt_test_report();
 }
