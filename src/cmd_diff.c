@@ -212,7 +212,7 @@ static void print_rgb(const unsigned char *c)
 /* Write the highlight: differing pixels red, the others a's, dimmed to gray. */
 static int write_highlight(const char *path, const pt_ppm *a, const pt_ppm *b, int w, int h)
 {
-    pt_outfile out = {NULL, NULL, NULL};
+    pt_outfile out = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
     unsigned char *row = malloc(3 * (size_t)w);
     int x, y;

@@ -48,7 +48,7 @@ static int usage_error(const char *msg, const char *arg)
 /* Write the text in sb to path, whole or not at all.  Returns 0 or -1. */
 static int write_file(const char *path, const pt_sbuf *sb)
 {
-    pt_outfile o = {NULL, NULL, NULL};
+    pt_outfile o = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
 
     if (pt_outfile_open(&o, path, err, sizeof err) != 0) {

@@ -171,7 +171,7 @@ int main(int argc, char **argv)
     pt_summary sum;
     pt_listener l;
     pt_trace *tr = NULL;
-    pt_outfile tout = {NULL, NULL, NULL}, iout = {NULL, NULL, NULL};
+    pt_outfile tout = {NULL, NULL, NULL, NULL}, iout = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
     int rc;
 

@@ -10,35 +10,71 @@
 #include <unistd.h>
 #include "outfile.h"
 
+static int fail(pt_outfile *o, char *err, size_t errlen, const char *why)
+{
+    snprintf(err, errlen, "cannot write '%s': %s", o->path, why);
+    pt_outfile_abort(o);
+    return -1;
+}
+
+/* The file to replace by rename: path itself, or the file a link names.
+** NULL with *direct = 1 when something other than a regular file is there
+** (write to it directly); NULL with *direct = 0 when out of memory. */
+static char *replace_target(const char *path, int *direct)
+{
+    struct stat st;
+    char *t;
+
+    *direct = 0;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {     /* FIFO, device, ... */
+        *direct = 1;                        /* (a directory fails at fopen) */
+        return NULL;
+    }
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
+        t = realpath(path, NULL);           /* NULL: a dangling link */
+        if (!t) *direct = 1;
+        return t;
+    }
+    t = malloc(strlen(path) + 1);
+    if (t) strcpy(t, path);
+    return t;
+}
+
 int pt_outfile_open(pt_outfile *o, const char *path, char *err, size_t errlen)
 {
-    size_t n = strlen(path);
+    size_t n;
     mode_t mask;
-    int fd;
+    int fd, direct;
 
     o->path = path;
-    o->tmp = NULL;
+    o->target = o->tmp = NULL;
     o->f = NULL;
     if (strcmp(path, "-") == 0) { o->f = stdout; return 0; }
+    o->target = replace_target(path, &direct);
+    if (direct) {
+        o->f = fopen(path, "wb");
+        return o->f ? 0 : fail(o, err, errlen, strerror(errno));
+    }
+    if (!o->target) return fail(o, err, errlen, "out of memory");
+    n = strlen(o->target);
     o->tmp = malloc(n + 8);
-    if (!o->tmp) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
-    memcpy(o->tmp, path, n);
+    if (!o->tmp) return fail(o, err, errlen, "out of memory");
+    memcpy(o->tmp, o->target, n);
     memcpy(o->tmp + n, ".XXXXXX", 8);
     fd = mkstemp(o->tmp);
     if (fd < 0) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        free(o->tmp); o->tmp = NULL;
-        return -1;
+        int e = errno;
+        free(o->tmp); o->tmp = NULL;        /* nothing to remove */
+        return fail(o, err, errlen, strerror(e));
     }
     mask = umask(0);                        /* mkstemp gives 0600; use the */
     umask(mask);                            /* permissions fopen would */
     (void)fchmod(fd, 0666 & ~mask);
     o->f = fdopen(fd, "wb");
     if (!o->f) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        int e = errno;
         close(fd);
-        pt_outfile_abort(o);
-        return -1;
+        return fail(o, err, errlen, strerror(e));
     }
     return 0;
 }
@@ -47,31 +83,30 @@ int pt_outfile_commit(pt_outfile *o, char *err, size_t errlen)
 {
     int bad;
 
-    if (!o->tmp) {                          /* standard output */
+    if (o->f == stdout) {
         if (fflush(o->f) != 0) {
             snprintf(err, errlen, "cannot write to standard output: %s", strerror(errno));
             return -1;
         }
         return 0;
     }
+    errno = 0;
     bad = ferror(o->f) != 0;
     bad |= fclose(o->f) != 0;
     o->f = NULL;
-    if (bad || rename(o->tmp, o->path) != 0) {
-        snprintf(err, errlen, "cannot write '%s': %s", o->path,
-                 errno ? strerror(errno) : "write error");
-        pt_outfile_abort(o);
-        return -1;
-    }
-    free(o->tmp);
+    if (!bad && o->tmp && rename(o->tmp, o->target) != 0) bad = 1;
+    if (bad) return fail(o, err, errlen, errno ? strerror(errno) : "write error");
+    free(o->tmp);                           /* renamed: nothing to remove */
     o->tmp = NULL;
+    pt_outfile_abort(o);                    /* frees the target's name */
     return 0;
 }
 
 void pt_outfile_abort(pt_outfile *o)
 {
-    if (o->f && o->tmp) fclose(o->f);
+    if (o->f && o->f != stdout) fclose(o->f);
     o->f = NULL;
     if (o->tmp) { remove(o->tmp); free(o->tmp); }
-    o->tmp = NULL;
+    free(o->target);
+    o->tmp = o->target = NULL;
 }

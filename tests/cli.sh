@@ -50,6 +50,18 @@ check "cli-3.6 PPM header P6 20 10 255" test "$(head -c 13 "$tmp/t.ppm" | tr '\n
 check "cli-3.7 PPM size is header + 3*20*10" test "$(wc -c < "$tmp/t.ppm")" = $((13 + 600))
 ls "$tmp" > "$tmp/listing"
 check "cli-3.8 no temporary file left after success" test "$(grep -c '\.ppm\.' "$tmp/listing")" = 0
+mkdir "$tmp/dest"
+mkfifo "$tmp/dest/fifo"
+timeout 10 cat "$tmp/dest/fifo" > "$tmp/dest/from-fifo" &   # (no hang if the FIFO is replaced)
+run docs/examples/triangle.scene --trace "$tmp/dest/fifo"
+wait
+check "cli-3.9 a FIFO as --trace is written to, not replaced" test "$rc" = 0 -a -p "$tmp/dest/fifo"
+check "cli-3.10 ... and the reader gets the whole trace" grep -q "^# pipetrace trace" "$tmp/dest/from-fifo"
+ln -s real.ppm "$tmp/dest/link.ppm"
+run docs/examples/triangle.scene --image "$tmp/dest/link.ppm"
+check "cli-3.11 a symbolic link as --image stays a link" test "$rc" = 0 -a -L "$tmp/dest/link.ppm"
+check "cli-3.12 ... and the file it names is written" test "$(wc -c < "$tmp/dest/real.ppm")" = $((13 + 600))
+check "cli-3.13 ... with no temporary file left" test "$(ls "$tmp/dest" | wc -l)" = 4
 
 # ---- trace destinations and formats
 run docs/examples/triangle.scene
