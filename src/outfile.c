@@ -2,7 +2,7 @@
 ** src/outfile.c -- output files that appear whole or not at all
 ** See LICENSE for copyright and license.
 */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700             /* realpath(), with POSIX.1-2008 */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
