@@ -258,9 +258,27 @@ static void cross_dd(const pt_dd a[3], const pt_dd b[3], pt_dd r[3])
     r[2] = dd_sub(pt_dd_mul(a[0], b[1]), pt_dd_mul(a[1], b[0]));
 }
 
+/* 2^-e, e the exponent of v's largest component (1 for a zero or non-finite
+** v): scaling v by it is exact and keeps its direction, and |v|^2 can then
+** neither overflow nor underflow (stages/pt_mat4.c scales 1e200 likewise). */
+static double unit_scale(double x, double y, double z)
+{
+    double big = fmax(fabs(x), fmax(fabs(y), fabs(z)));
+    int e;
+
+    if (!isfinite(big) || big == 0) return 1;
+    (void)frexp(big, &e);
+    return ldexp(1.0, -e);
+}
+
 static void normalize_dd(pt_dd v[3])
 {
-    pt_dd len = pt_dd_sqrt(dot_dd(v, v));   /* v / |v| */
+    double k = unit_scale(v[0].hi, v[1].hi, v[2].hi);
+    pt_dd len;
+    int i;
+
+    for (i = 0; i < 3; i++) { v[i].hi *= k; v[i].lo *= k; }    /* exact */
+    len = pt_dd_sqrt(dot_dd(v, v));         /* v / |v| */
 
     v[0] = pt_dd_div(v[0], len); v[1] = pt_dd_div(v[1], len); v[2] = pt_dd_div(v[2], len);
 }
@@ -332,11 +350,13 @@ static void camera_bounds_dd(const pt_scene *s, const pt_dd_mat4 *view,
                              const pt_dd_mat4 *proj, pt_mat4 *ve, pt_mat4 *pe)
 {
     double eye = fabs(s->eye.x) + fabs(s->eye.y) + fabs(s->eye.z);
-    double len = sqrt(s->up.x * s->up.x + s->up.y * s->up.y + s->up.z * s->up.z);
+    double k = unit_scale(s->up.x, s->up.y, s->up.z);
+    double ux = s->up.x * k, uy = s->up.y * k, uz = s->up.z * k;        /* exact */
+    double len = sqrt(ux * ux + uy * uy + uz * uz);
     double u[3], d[3], cond, ud = 0;
     int i, j;
 
-    u[0] = s->up.x / len; u[1] = s->up.y / len; u[2] = s->up.z / len;     /* up/|up| */
+    u[0] = ux / len; u[1] = uy / len; u[2] = uz / len;                  /* up/|up| */
     for (i = 0; i < 3; i++) d[i] = view->m[i][2].hi;                      /* d */
     for (i = 0; i < 3; i++) {                                             /* |u x d|^2 */
         double c = u[(i + 1) % 3] * d[(i + 2) % 3] - u[(i + 2) % 3] * d[(i + 1) % 3];

@@ -28,6 +28,7 @@ int pt_matrix_plan(pt_plan *p, const pt_scene *s, const pt_options *o)
 
     pt_lookat(&p->view, s->eye, s->dir, s->up, o->raw_lookat, &skewed);
     pt_perspective(&p->proj, s->fov, s->aspect, s->znear, s->zfar);
+    p->up_skewed = skewed;
     p->up_adjusted = skewed && !o->raw_lookat;
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];

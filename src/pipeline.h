@@ -62,7 +62,9 @@ typedef struct pt_plan {
     const pt_stage *order;       /* the camera's stages in pipeline order */
     int norder;                  /* how many */
     pt_mat4 view, proj;          /* matrix camera: View and Projection */
-    int up_adjusted;             /* matrix camera: up was re-derived (not raw) */
+    int up_skewed;               /* matrix camera: the given up was not
+                                 ** perpendicular to direction */
+    int up_adjusted;             /* ... and was re-derived (not --raw-lookat) */
 } pt_plan;
 
 /* Counts for the summary record. */

@@ -68,6 +68,8 @@ typedef struct parser {
     size_t fb_line, bg_line;    /* line of each once-per-scene directive, 0: none yet */
     size_t vp_line, cam_line;
     size_t proj_line;           /* line of `projection`, 0: none */
+    size_t world_line;          /* line and column of the first `world`, 0: none */
+    size_t world_col;
     size_t cam_col;             /* column of the camera's kind, for late checks */
     size_t proj_col[5];         /* columns of `projection`, fov, aspect, near, far */
     size_t vp_col;              /* column of `viewport`, for the late fit check */
@@ -777,7 +779,7 @@ static int do_projection(parser *ps, source *src, const token *dir, cursor *args
     else if (parse_number(ps, src, &a[2], "aspect ratio", &s->aspect) < 0)
         return -1;
     else if (!(s->aspect > 0))
-        return fail(ps, src, a[2].p, "aspect ratio must be > 0");
+        return fail(ps, src, a[2].p, "projection: aspect ratio must be > 0");
     if (parse_number(ps, src, &a[3], "near distance", &s->znear) < 0
         || parse_number(ps, src, &a[4], "far distance", &s->zfar) < 0)
         return -1;
@@ -826,6 +828,14 @@ static int do_world(parser *ps, source *src, const token *dir, cursor *args)
                     "(expected translate, scale or rotate)", shown(a[0].p, a[0].n, q));
     }
     m->world = pt_mat4_mul(&m->world, &t);  /* row vectors: earlier lines act first */
+    for (n = 0; n < 16; n++)
+        if (!isfinite(m->world.m[n / 4][n % 4]))
+            return fail(ps, src, dir->p, "the world matrix overflows: entry (%zu, %zu) "
+                        "is not finite", n / 4 + 1, n % 4 + 1);
+    if (ps->world_line == 0) {
+        ps->world_line = src->lineno;
+        ps->world_col = (size_t)(dir->p - src->line) + 1;
+    }
     return 0;
 }
 
@@ -1172,6 +1182,10 @@ static int finish_camera(parser *ps, const char *name)
     if (!s->matrix && ps->proj_line != 0)
         return fail_at(ps->err, ps->errlen, name, ps->proj_line, ps->proj_col[0],
                        "'projection' needs a 'camera lookat' line");
+    if (!s->matrix && ps->world_line != 0)
+        return fail_at(ps->err, ps->errlen, name, ps->world_line, ps->world_col,
+                       "'world' needs the matrix camera ('camera lookat'); the "
+                       "classic camera places a model with 'translate'");
     if (!s->matrix)
         return 0;
     if (s->aspect == 0)
@@ -1183,7 +1197,8 @@ static int finish_camera(parser *ps, const char *name)
     e = pt_perspective(&m, s->fov, s->aspect, s->znear, s->zfar);
     if (e != PT_CAM_OK)                 /* point at the number at fault */
         return fail_at(ps->err, ps->errlen, name, ps->proj_line,
-                       ps->proj_col[e == PT_CAM_FOV ? 1 : e == PT_CAM_ASPECT ? 2
+                       ps->proj_col[e == PT_CAM_FOV || e == PT_CAM_FOV_RANGE ? 1
+                                    : e == PT_CAM_ASPECT || e == PT_CAM_ASPECT_RANGE ? 2
                                     : e == PT_CAM_NEAR ? 3 : 4],
                        "projection: %s", pt_cam_error_text(e));
     return 0;

@@ -163,6 +163,7 @@ static void camera_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
     puts_(t, ",\"lookat\":{\"eye\":"); put_vec3_json(t, s->eye);
     puts_(t, ",\"direction\":"); put_vec3_json(t, s->dir);
     puts_(t, ",\"up\":"); put_vec3_json(t, s->up);
+    puts_(t, ",\"up_perpendicular\":"); puts_(t, p->up_skewed ? "false" : "true");
     puts_(t, ",\"up_adjusted\":"); puts_(t, p->up_adjusted ? "true" : "false");
     puts_(t, "},\"projection\":{\"fov\":"); put_json_num(t, s->fov);
     puts_(t, ",\"aspect\":"); put_json_num(t, s->aspect);
@@ -181,6 +182,9 @@ static void camera_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     if (p->up_adjusted)
         puts_(t, "\n  warning    up is not perpendicular to direction: re-derived"
                  " (--raw-lookat keeps it)");
+    else if (p->up_skewed)
+        puts_(t, "\n  warning    up is not perpendicular to direction: kept as given"
+                 " (--raw-lookat), so View is not orthonormal");
     puts_(t, "\nprojection   perspective fov "); put_short(t, s->fov);
     puts_(t, " aspect "); put_short(t, s->aspect);
     puts_(t, " near "); put_short(t, s->znear);

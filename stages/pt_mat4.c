@@ -2,6 +2,7 @@
 ** stages/pt_mat4.c -- 4x4 matrices on homogeneous row vectors, and the camera's
 ** See LICENSE for copyright and license.
 */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 #include "pt_mat4.h"
@@ -95,6 +96,10 @@ const char *pt_cam_error_text(pt_cam_error e)
     case PT_CAM_ASPECT:      return "aspect ratio must be > 0";
     case PT_CAM_NEAR:        return "near must be > 0";
     case PT_CAM_FAR:         return "near must be < far";
+    case PT_CAM_EYE_RANGE:   return "position too far from the origin: the view matrix overflows";
+    case PT_CAM_FOV_RANGE:   return "field of view too close to 0 or 180 degrees: cot(fov/2) is not a finite, nonzero double";
+    case PT_CAM_ASPECT_RANGE: return "aspect ratio too extreme: cot(fov/2)/aspect is not a finite, nonzero double";
+    case PT_CAM_DEPTH_RANGE: return "near and far too extreme: f/(f-n) or f*n/(n-f) is not a finite, nonzero double";
     }
     return "unknown camera error";
 }
@@ -110,12 +115,21 @@ static pt_vec3 cross(pt_vec3 a, pt_vec3 b)
     return r;
 }
 
-/* v / |v|, or 0 when |v| is 0 or not finite. */
+/* v / |v|, or 0 when v is 0 or not finite.  When v.v overflows or falls
+** below DBL_MIN (losing digits), v is first scaled by 2^-e, e the exponent of
+** its largest component: exact, and the direction is the same. */
 static int normalize(pt_vec3 *v)
 {
     double len = sqrt(dot(*v, *v));         /* sqrt is correctly rounded */
+    double big = fmax(fabs(v->x), fmax(fabs(v->y), fabs(v->z)));
+    int e;
 
-    if (!(len > 0) || !isfinite(len)) return 0;
+    if (!isfinite(big) || big == 0) return 0;
+    if (!isfinite(len) || len * len < DBL_MIN) {
+        (void)frexp(big, &e);
+        v->x = ldexp(v->x, -e); v->y = ldexp(v->y, -e); v->z = ldexp(v->z, -e);
+        len = sqrt(dot(*v, *v));            /* now 2^-2 <= v.v < 3 */
+    }
     v->x = v->x / len; v->y = v->y / len; v->z = v->z / len;
     return 1;
 }
@@ -139,9 +153,13 @@ pt_cam_error pt_lookat(pt_mat4 *view, pt_vec3 eye, pt_vec3 dir, pt_vec3 up,
     r.m[3][0] = -dot(eye, h);               /* move the eye to the origin */
     r.m[3][1] = -dot(eye, u);
     r.m[3][2] = -dot(eye, d);
+    if (!isfinite(r.m[3][0]) || !isfinite(r.m[3][1]) || !isfinite(r.m[3][2]))
+        return PT_CAM_EYE_RANGE;
     *view = r;
     return PT_CAM_OK;
 }
+
+static int finite_nonzero(double x) { return isfinite(x) && x != 0; }
 
 pt_cam_error pt_perspective(pt_mat4 *proj, double fov_deg, double aspect,
                             double n, double f)
@@ -161,6 +179,9 @@ pt_cam_error pt_perspective(pt_mat4 *proj, double fov_deg, double aspect,
     r.m[2][2] = f / (f - n);                /* z' = z * f/(f-n) ... */
     r.m[3][2] = f * n / (n - f);            /*      - f*n/(f-n) */
     r.m[2][3] = 1.0;                        /* w' = z */
+    if (!finite_nonzero(r.m[1][1])) return PT_CAM_FOV_RANGE;
+    if (!finite_nonzero(r.m[0][0])) return PT_CAM_ASPECT_RANGE;
+    if (!finite_nonzero(r.m[2][2]) || !finite_nonzero(r.m[3][2])) return PT_CAM_DEPTH_RANGE;
     *proj = r;
     return PT_CAM_OK;
 }

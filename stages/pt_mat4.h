@@ -50,7 +50,11 @@ typedef enum pt_cam_error {
     PT_CAM_FOV,                  /* field of view not in (0, 180) degrees */
     PT_CAM_ASPECT,               /* aspect ratio <= 0 */
     PT_CAM_NEAR,                 /* near <= 0 */
-    PT_CAM_FAR                   /* near >= far */
+    PT_CAM_FAR,                  /* near >= far */
+    PT_CAM_EYE_RANGE,            /* -eye.h, -eye.u or -eye.d overflows */
+    PT_CAM_FOV_RANGE,            /* cot(fov/2) is 0 or overflows */
+    PT_CAM_ASPECT_RANGE,         /* cot(fov/2)/aspect is 0 or overflows */
+    PT_CAM_DEPTH_RANGE           /* f/(f-n) or f*n/(n-f) is 0 or overflows */
 } pt_cam_error;
 
 /* The message for e ("up is parallel to direction").  This function can't fail. */
@@ -62,7 +66,10 @@ const char *pt_cam_error_text(pt_cam_error e);
 **   raw == 0: u is re-derived as d x h, so h, u, d are orthonormal.
 **   columns h, u, d; last row (-eye.h, -eye.u, -eye.d, 1).
 ** *skewed is set to 1 when the given up was not perpendicular to dir (|u.d| >
-** 1e-12).  Returns PT_CAM_OK, or the reason (then *view is untouched). */
+** 1e-12).  A vector whose squared length overflows or underflows (1e200,
+** 1e-200) is first scaled by a power of two, which is exact.  Returns
+** PT_CAM_OK, or the reason (then *view is untouched): never a matrix with an
+** infinite entry. */
 pt_cam_error pt_lookat(pt_mat4 *view, pt_vec3 eye, pt_vec3 dir, pt_vec3 up,
                        int raw, int *skewed);
 
@@ -71,7 +78,8 @@ pt_cam_error pt_lookat(pt_mat4 *view, pt_vec3 eye, pt_vec3 dir, pt_vec3 up,
 **   m00 = cot(fov/2)/aspect, m11 = cot(fov/2), m22 = f/(f-n), m23 = 1,
 **   m32 = f*n/(n-f), all else 0.
 ** It maps z = n to z'/w' = 0 and z = f to 1, with w' = z.  Returns PT_CAM_OK or
-** the reason (then *proj is untouched). */
+** the reason (then *proj is untouched): also when one of the four entries is
+** 0 or not finite (fov 1e-320, aspect 1e300), which would be no camera. */
 pt_cam_error pt_perspective(pt_mat4 *proj, double fov_deg, double aspect,
                             double n, double f);
 

@@ -132,8 +132,25 @@ mcam "cli-8.3 fov >= 180 points at the fov" "camera lookat 0 0 0 0 0 1 0 1 0" "p
 mcam "cli-8.4 fov <= 0" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 0 1 1 10" ":2:24: error: projection: field of view"
 mcam "cli-8.5 near <= 0 points at near" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 60 1 0 10" ":2:29: error: projection: near must be > 0"
 mcam "cli-8.6 near >= far points at far" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 60 1 10 10" ":2:32: error: projection: near must be < far"
-mcam "cli-8.7 aspect <= 0" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 60 -2 1 10" ":2:27: error: aspect ratio must be > 0"
+mcam "cli-8.7 aspect <= 0" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 60 -2 1 10" ":2:27: error: projection: aspect ratio must be > 0"
 mcam "cli-8.8 lookat without projection" "camera lookat 0 0 0 0 0 1 0 1 0" "" "needs a 'projection perspective' line"
+mcam "cli-8.8a fov 1e-320: cot(fov/2) overflows, never a matrix of infinities" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 1e-320 1 1 10" ":2:24: error: projection: field of view too close to 0"
+mcam "cli-8.8b aspect 1e-320 points at the aspect" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 60 1e-320 1 10" ":2:27: error: projection: aspect ratio too extreme"
+mcam "cli-8.8c near 1e300, far 1e308: f*n/(n-f) overflows" "camera lookat 0 0 0 0 0 1 0 1 0" "projection perspective 90 1 1e300 1e308" ":2:35: error: projection: near and far too extreme"
+mcam "cli-8.8d an eye whose -eye.d overflows is named" "camera lookat 1.5e308 0 1.5e308 1 0 1 0 1 0" "projection perspective 60 1 1 10" ":1:8: error: camera: position too far from the origin"
+printf 'camera lookat 0 0 0 1e200 0 1e200 0 1e-310 0\nprojection perspective 60 1 1 10\nmodel m\nv 0 0 5\nv 1 0 5\nl 1 2\n' > "$tmp/m.scene"
+run "$tmp/m.scene" --format jsonl
+check "cli-8.8e a direction of 1e200 and an up of 1e-310 are not 'length 0'" test "$rc" = 0 -a -n "$(grep -F '"view":[[0.7071067811865476,' "$tmp/out")"
+mcam "cli-8.8f a world matrix that overflows is named" "camera lookat 0 0 0 0 0 1 0 1 0
+projection perspective 60 1 1 10
+model w
+world scale 1e200
+world scale 1e200" "" ":5:1: error: the world matrix overflows"
+printf 'framebuffer 10 10\nmodel m\nworld scale 2\nv 0 0 -1\n' > "$tmp/w.scene"
+run "$tmp/w.scene"
+check "cli-8.8g 'world' under the classic camera is an error, not ignored" test "$rc" = 2 -a -n "$(echo "$err" | grep -F ":3:1: error: 'world' needs the matrix camera")"
+run docs/examples/triangle.scene --raw-lookat
+check "cli-8.8h --raw-lookat on a classic scene says it changes nothing" test "$rc" = 0 -a -n "$(echo "$err" | grep -F 'note: --raw-lookat changes nothing')"
 run docs/examples/lookat-near.scene --format jsonl
 check "cli-8.9 near-plane crossing: the clipped point is traced with its t" grep -q '"type":"clipvertex","model":"stick","segment":1,"from":1,"to":2,"t":0.375,"stage":"ndc","x":0.375,"y":0.25,"z":0}' "$tmp/out"
 check "cli-8.10 a vertex behind the eye stops at the cvv" grep -q '"v":2,"stage":"cvv","code":61,"planes":\["near","left","right","bottom","top"\]}' "$tmp/out"
@@ -148,6 +165,7 @@ cp "$tmp/out" "$tmp/adjusted"
 check "cli-8.15 a skewed up vector is re-derived, and the header says so" grep -q '"up_adjusted":true' "$tmp/out"
 run docs/examples/lookat-world.scene --format jsonl --raw-lookat
 check "cli-8.16 --raw-lookat keeps the seed's matrix: other view values" test "$rc" = 0 -a -n "$(grep '"up_adjusted":false' "$tmp/out")" && ! cmp -s "$tmp/out" "$tmp/adjusted"
+check "cli-8.16a ... and the header still says up is not perpendicular" grep -q '"up_perpendicular":false,"up_adjusted":false' "$tmp/out"
 check "cli-8.17 --raw-lookat: columns u = (0, .7071, .7071) and d = (0, 0, 1) are not orthogonal" grep -q '"view":\[\[1,0,0,0\],\[0,0.7071067811865475,0,0\],\[0,0.7071067811865475,1,0\]' "$tmp/out"
 run docs/examples/lookat-cube.scene --format jsonl --stage cvv --stage screen
 check "cli-8.18 --stage takes the matrix camera's stages" test "$(grep '"type":"vertex"' "$tmp/out" | grep -Evc '"stage":"(cvv|screen)"')" = 0 -a "$(grep -c '"type":"vertex"' "$tmp/out")" = 16

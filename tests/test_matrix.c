@@ -83,6 +83,36 @@ static void test_cameras(void)
              pt_perspective(&proj, 0, 1, 1, 2) == PT_CAM_FOV && pt_perspective(&proj, 180, 1, 1, 2) == PT_CAM_FOV &&
              pt_perspective(&proj, 60, 0, 1, 2) == PT_CAM_ASPECT && pt_perspective(&proj, 60, 1, 0, 2) == PT_CAM_NEAR &&
              pt_perspective(&proj, 60, 1, 2, 2) == PT_CAM_FAR);
+    PT_CHECK("cam-2.7 fov 1e-320: cot(fov/2) overflows, refused",
+             pt_perspective(&proj, 1e-320, 1, 0.5, 100) == PT_CAM_FOV_RANGE);
+    PT_CHECK("cam-2.8 aspect 1e-320: cot(fov/2)/aspect overflows, refused",
+             pt_perspective(&proj, 60, 1e-320, 0.5, 100) == PT_CAM_ASPECT_RANGE);
+    PT_CHECK("cam-2.9 near 1e300, far 1e308: f*n/(n-f) overflows, refused",
+             pt_perspective(&proj, 90, 1, 1e300, 1e308) == PT_CAM_DEPTH_RANGE);
+}
+
+/* A direction or up of 1e200 or 1e-200 has a squared length that overflows or
+** underflows; scaled by a power of two first, it gives the same matrix as
+** (1, 0, 1).  An eye so far away that -eye.d overflows is refused. */
+static void test_camera_ranges(void)
+{
+    pt_mat4 ref, big, small;
+    int skewed, same = 1, i, j;
+
+    pt_lookat(&ref, (pt_vec3){1, 2, 3}, (pt_vec3){1, 0, 1}, (pt_vec3){0, 1, 0}, 0, &skewed);
+    PT_CHECK("cam-3.1 direction (1e200, 0, 1e200) is accepted",
+             pt_lookat(&big, (pt_vec3){1, 2, 3}, (pt_vec3){1e200, 0, 1e200}, (pt_vec3){0, 1e200, 0}, 0, &skewed) == PT_CAM_OK);
+    PT_CHECK("cam-3.2 direction (1e-200, 0, 1e-200), up (0, 1e-310, 0) are accepted",
+             pt_lookat(&small, (pt_vec3){1, 2, 3}, (pt_vec3){1e-200, 0, 1e-200}, (pt_vec3){0, 1e-310, 0}, 0, &skewed) == PT_CAM_OK);
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            same &= big.m[i][j] == ref.m[i][j] && fabs(small.m[i][j] - ref.m[i][j]) <= 0x1p-52 * 4;
+    PT_CHECK("cam-3.3 ... and give the matrix of (1, 0, 1) (1e200: bit for bit)", same);
+    PT_CHECK("cam-3.4 an eye at 1e308 along the view direction overflows -eye.d: refused",
+             pt_lookat(&big, (pt_vec3){1.5e308, 0, 1.5e308}, (pt_vec3){1, 0, 1}, (pt_vec3){0, 1, 0}, 0, &skewed) == PT_CAM_EYE_RANGE);
+    PT_CHECK("cam-3.5 every error has its own message",
+             strstr(pt_cam_error_text(PT_CAM_EYE_RANGE), "position") && strstr(pt_cam_error_text(PT_CAM_FOV_RANGE), "field of view") &&
+             strstr(pt_cam_error_text(PT_CAM_ASPECT_RANGE), "aspect") && strstr(pt_cam_error_text(PT_CAM_DEPTH_RANGE), "near and far"));
 }
 
 static void test_stages(void)
@@ -177,6 +207,7 @@ int main(void)
 {
     test_matrices();
     test_cameras();
+    test_camera_ranges();
     test_stages();
     test_roundtrip();
     test_clip();
