@@ -71,9 +71,7 @@ void pt_sbuf_addf(pt_sbuf *sb, const char *fmt, ...)
     sb->len += (size_t)n;
 }
 
-/* Length of the well-formed UTF-8 sequence at p (RFC 3629: no overlong
-** forms, no surrogates, at most U+10FFFF), or 0 when it is not one. */
-static int utf8_len(const unsigned char *p)
+int pt_sbuf_utf8_len(const unsigned char *p)
 {
     int n, k;
     unsigned long c;
@@ -97,7 +95,7 @@ static int utf8_len(const unsigned char *p)
 /* Append the UTF-8 character at *pp (or U+FFFD for a bad byte); advance. */
 static void add_utf8(pt_sbuf *sb, const unsigned char **pp)
 {
-    int n = utf8_len(*pp);
+    int n = pt_sbuf_utf8_len(*pp);
 
     if (n == 0) { pt_sbuf_add(sb, REPLACEMENT); *pp += 1; return; }
     pt_sbuf_addn(sb, (const char *)*pp, (size_t)n);

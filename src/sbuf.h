@@ -37,6 +37,11 @@ void pt_sbuf_addf(pt_sbuf *sb, const char *fmt, ...)
 #endif
     ;
 
+/* Length of the well-formed UTF-8 sequence at p (RFC 3629: no overlong
+** forms, no surrogates, at most U+10FFFF; reads no byte past a NUL), or 0 when
+** it is not one.  This function can't fail. */
+int pt_sbuf_utf8_len(const unsigned char *p);
+
 /* Append t as XML character data or attribute value: & < > " ' become
 ** entities; well-formed UTF-8 passes through unchanged; a byte that is not
 ** part of one, and control characters other than tab and newline (XML 1.0

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "sbuf.h"
 #include "trace.h"
 #include "numfmt.h"
 #include "../stages/m4_clip2cvv.h"
@@ -65,12 +66,16 @@ static void put_short(pt_trace *t, double x)
 /* A string in JSON quotes, escaping what JSON requires. */
 static void put_json_str(pt_trace *t, const char *s)
 {
+    const unsigned char *p = (const unsigned char *)s;
+    int n;
+
     put(t, "\"", 1);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\') { char e[2] = {'\\', (char)c}; put(t, e, 2); }
-        else if (c < 0x20) { char e[8]; put(t, e, (size_t)snprintf(e, sizeof e, "\\u%04x", c)); }
-        else put(t, (const char *)&c, 1);
+    while (*p) {
+        unsigned char c = *p;
+        if (c == '"' || c == '\\') { char e[2] = {'\\', (char)c}; put(t, e, 2); p++; }
+        else if (c < 0x20) { char e[8]; put(t, e, (size_t)snprintf(e, sizeof e, "\\u%04x", c)); p++; }
+        else if ((n = pt_sbuf_utf8_len(p)) == 0) { puts_(t, "\\ufffd"); p++; }  /* a path's bad byte */
+        else { put(t, (const char *)p, (size_t)n); p += n; }
     }
     put(t, "\"", 1);
 }
@@ -308,6 +313,11 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     put(t, "\n", 1);
 }
 
+/* The CSV header rows; see vertex_csv(). */
+static const char csv_classic[] = "model,v,stage,x,y,z,inside,behind,i,warning\n";
+static const char csv_matrix[] =
+    "model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning\n";
+
 static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
 {
     pt_trace *t = ud;
@@ -315,7 +325,7 @@ static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
     t->scene = s;
     if (t->fmt == PT_FORMAT_JSONL) header_json(t, s, p);
     else if (t->fmt == PT_FORMAT_TEXT) header_text(t, s, p);
-    else puts_(t, "model,v,stage,x,y,z,inside,behind,i,warning\n");
+    else puts_(t, s->matrix ? csv_matrix : csv_classic);
 }
 
 /* ===== vertex records ===== */
@@ -528,38 +538,64 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
     puts_(t, "}\n");
 }
 
-/* CSV: model,v,stage,x,y,z,inside,behind,i,warning; empty where a field does not
-** apply; warning names joined by '|'. */
+/* CSV rows, empty where a field does not apply, warning names joined by '|':
+**   classic camera: model,v,stage,x,y,z,inside,behind,i,warning
+**   matrix camera:  model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning
+** (planes joined by '|'; a point clipping made has no v, but its segment and t). */
+
+/* Names whose bits are set in bits, joined by '|'. */
+static void put_names_csv(pt_trace *t, unsigned bits, const char *const *names, int n)
+{
+    int k, first = 1;
+
+    for (k = 0; k < n; k++) {
+        if (!(bits & (1u << k))) continue;
+        if (!first) put(t, "|", 1);
+        first = 0;
+        puts_(t, names[k]);
+    }
+}
+
 static void vertex_csv(pt_trace *t, const pt_vrec *r)
 {
-    if (t->clipv || real_dims(r->stage) == 4 || r->stage == PT_STAGE_CVV)
-        return;                             /* see docs/trace-format.md */
-    puts_(t, t->model->name); put(t, ",", 1); put_u64(t, t->v); put(t, ",", 1);
-    puts_(t, pt_stage_infos[r->stage].name); put(t, ",", 1);
-    if (real_dims(r->stage)) {
-        put_short(t, r->x); put(t, ",", 1); put_short(t, r->y); put(t, ",", 1);
-        if (real_dims(r->stage) == 3) put_short(t, r->z);
-    } else if (r->stage != PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) {
-        put_i64(t, r->ix); put(t, ",", 1); put_i64(t, r->iy); put(t, ",", 1);
-    } else {
-        put(t, ",,", 2);
+    int matrix = t->scene && t->scene->matrix, k, dims = real_dims(r->stage);
+    const double v[4] = {r->x, r->y, r->z, r->w};
+
+    puts_(t, t->model->name); put(t, ",", 1);
+    if (!t->clipv) put_u64(t, t->v);
+    put(t, ",", 1);
+    puts_(t, pt_stage_infos[r->stage].name);
+    for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
+        put(t, ",", 1);
+        if (k < dims) put_short(t, v[k]);
+        else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
+                 && !(r->flags & PT_REC_NULL))
+            put_i64(t, k ? r->iy : r->ix);
     }
     put(t, ",", 1);
+    if (matrix) {                                       /* code,planes */
+        if (r->stage == PT_STAGE_CVV) {
+            put_i64(t, r->code); put(t, ",", 1);
+            put_names_csv(t, r->code, pt_cvv_names, PT_CVV_NPLANES);
+        } else {
+            put(t, ",", 1);
+        }
+        put(t, ",", 1);
+    }
     if (r->stage == PT_STAGE_VIEWPORT) puts_(t, r->flags & PT_REC_INSIDE ? "1" : "0");
     put(t, ",", 1);
-    if (r->stage == PT_STAGE_IMAGE) puts_(t, r->flags & PT_REC_BEHIND ? "1" : "0");
-    put(t, ",", 1);
+    if (!matrix) {                                      /* behind */
+        if (r->stage == PT_STAGE_IMAGE) puts_(t, r->flags & PT_REC_BEHIND ? "1" : "0");
+        put(t, ",", 1);
+    }
     if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) put_i64(t, r->i);
     put(t, ",", 1);
-    {
-        int k, first = 1;
-        for (k = 0; k < PT_NWARN; k++) {
-            if (!(r->warn & (1u << k))) continue;
-            if (!first) put(t, "|", 1);
-            first = 0;
-            puts_(t, pt_warn_names[k]);
-        }
+    if (matrix) {                                       /* segment,t */
+        if (t->clipv) { put_u64(t, t->seg); put(t, ",", 1); put_short(t, t->t_clip); }
+        else put(t, ",", 1);
+        put(t, ",", 1);
     }
+    put_names_csv(t, r->warn, pt_warn_names, PT_NWARN);
     put(t, "\n", 1);
 }
 

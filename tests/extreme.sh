@@ -4,9 +4,10 @@
 #
 # Usage: sh tests/extreme.sh PIPETRACE.  Each tests/extreme/NAME.scene says in
 # "# expect: FRAGMENT" lines what its JSONL trace (every stage traced) must
-# contain, each fragment verbatim on some line.  Every scene must finish with
-# exit 0 well within 10 seconds (a guard against hangs; speed itself is
-# measured by `make bench`).  docs/stability.md explains each case.
+# contain, each fragment verbatim on some line; one of them must be the
+# summary's whole "warnings":{...} object, so an extra warning fails too.
+# Every scene must finish with exit 0 well within 10 seconds (a guard against
+# hangs; speed itself is measured by `make bench`).  docs/stability.md explains each case.
 exe=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -30,6 +31,8 @@ for scene in tests/extreme/*.scene; do
         fi
     done < "$tmp/want"
     [ -s "$tmp/want" ] || { ok=0; echo "FAIL extreme $name: no expect lines"; }
+    grep -q '^"warnings":{' "$tmp/want" ||    # so that no warning comes or goes unseen
+        { ok=0; echo "FAIL extreme $name: no expect line with the summary's \"warnings\""; }
     if [ "$ok" = 1 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
 done
 echo "$passed passed, $failed failed"
