@@ -38,13 +38,13 @@ int pt_matrix_plan(pt_plan *p, const pt_scene *s, const pt_options *o)
     return 0;
 }
 
-pt_vec2 pt_matrix_tail(const pt_scene *s, pt_vec4 clip,
+pt_vec2 pt_matrix_tail(const pt_scene *s, pt_vec4 clip, double w_scale,
                        const pt_sink *const sinks[PT_NSTAGES_ALL])
 {
     pt_vec3 n, sc;
     pt_pix vp, fb;
 
-    n = pt_clip2ndc(clip, sinks[PT_STAGE_NDC]);
+    n = pt_clip2ndc(clip, w_scale, sinks[PT_STAGE_NDC]);
     sc = pt_ndc2screen(n, s->vp_w, s->vp_h, sinks[PT_STAGE_SCREEN]);
     vp = pt_screen2viewport(sc, s->vp_w, s->vp_h, sinks[PT_STAGE_VIEWPORT]);
     fb = pt_viewport2fb(vp, s->vp_x, s->vp_y, sinks[PT_STAGE_FRAMEBUFFER]);
@@ -63,6 +63,8 @@ pt_vec2 pt_matrix_journey(const pt_scene *s, const pt_plan *p, size_t k, pt_vec3
     pt_vrec r = {0};
     pt_vec4 w, v;
     pt_vec2 none = {(double)NAN, (double)NAN};
+    double s_m[4] = {fabs(v_m.x), fabs(v_m.y), fabs(v_m.z), 1}, s_w[4], w_scale;
+    int c;
 
     r.stage = PT_STAGE_MODEL;
     r.x = v_m.x; r.y = v_m.y; r.z = v_m.z;
@@ -72,5 +74,10 @@ pt_vec2 pt_matrix_journey(const pt_scene *s, const pt_plan *p, size_t k, pt_vec3
     *clip = pt_view2clip(v, &p->proj, sinks[PT_STAGE_CLIP]);
     *code = pt_clip2cvv(*clip, sinks[PT_STAGE_CVV]);
     if (*code != 0) return none;            /* outside: its segments are clipped */
-    return pt_matrix_tail(s, *clip, sinks);
+    /* The magnitude w_k comes from: w_k = z_v exactly (Projection's last
+    ** column is (0 0 1 0)), z_v sums the world point's components times View's
+    ** third column, and each of those sums the model's times World's. */
+    for (c = 0; c < 4; c++) s_w[c] = pt_mat4_col_scale(s_m, &p->models[k].world, c);
+    w_scale = pt_mat4_col_scale(s_w, &p->view, 2);
+    return pt_matrix_tail(s, *clip, w_scale, sinks);
 }

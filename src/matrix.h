@@ -31,8 +31,11 @@ pt_vec2 pt_matrix_journey(const pt_scene *s, const pt_plan *p, size_t k, pt_vec3
                           pt_vec4 *clip, unsigned *code);
 
 /* From clip coordinates on: ndc, screen, viewport, framebuffer, index.
-** Returns the pixel-plane point for the rasterizer.  Can't fail. */
-pt_vec2 pt_matrix_tail(const pt_scene *s, pt_vec4 clip,
+** w_scale is the magnitude clip.w was computed from (stages/m5_clip2ndc.h):
+** pt_matrix_journey()'s for a vertex, |w| for a point clipping made (it lies
+** in the view volume, w >= near).  Returns the pixel-plane point for the
+** rasterizer.  Can't fail. */
+pt_vec2 pt_matrix_tail(const pt_scene *s, pt_vec4 clip, double w_scale,
                        const pt_sink *const sinks[PT_NSTAGES_ALL]);
 
 #endif

@@ -16,7 +16,9 @@
 **          | /               (left-handed: x right, y up, z forward)
 **      eye +----- h
 **
-** Built by pt_lookat() (pt_mat4.h).  docs/cameras.md#view.
+** Built by pt_lookat() (pt_mat4.h).  A point close to the eye compared with
+** their distances from the origin cancels most of p - eye: flagged
+** `cancellation`.  docs/cameras.md#view.
 */
 #ifndef PT_M2_WORLD2VIEW_H
 #define PT_M2_WORLD2VIEW_H

@@ -4,11 +4,12 @@
 */
 #include "m5_clip2ndc.h"
 
-pt_vec3 pt_clip2ndc(pt_vec4 k, const pt_sink *sink)
+pt_vec3 pt_clip2ndc(pt_vec4 k, double w_scale, const pt_sink *sink)
 {
     pt_vec3 n;
     pt_vrec r = {0};
     double a[3];
+    int lost = pt_bits_lost(w_scale, k.w);  /* the quotients keep w_k's error */
 
     n.x = k.x / k.w;                        /* x_n = x_k / w_k */
     n.y = k.y / k.w;                        /* y_n = y_k / w_k */
@@ -16,6 +17,10 @@ pt_vec3 pt_clip2ndc(pt_vec4 k, const pt_sink *sink)
     r.stage = PT_STAGE_NDC;
     r.x = a[0] = n.x; r.y = a[1] = n.y; r.z = a[2] = n.z;
     r.warn = pt_warn_nonfinite(a, 3);
+    if (lost > PT_BITS_LOST_WARN) {
+        r.warn |= PT_WARN_ILLCOND;
+        r.digits_lost = pt_bits_to_digits(lost);
+    }
     pt_emit(sink, &r);
     return n;
 }

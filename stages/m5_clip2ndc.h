@@ -8,7 +8,10 @@
 ** This is where the perspective happens: w_k = z_v, so dividing by it shrinks
 ** far points toward the centre.  Inside the CVV the result lies in the cube
 ** [-1,1] x [-1,1] x [0,1].  Points outside the CVV are clipped before they
-** reach this stage (src/clip.c), so w_k > 0 here.  docs/cameras.md#ndc.
+** reach this stage (src/clip.c), so w_k > 0 here.  w_scale is the magnitude
+** w_k was computed from (src/matrix.c); when w_k is far smaller, it lost the
+** digits of the difference, the quotients lost them too, and the record is
+** flagged `ill_conditioned`, as in the classic projection.  docs/cameras.md#ndc.
 */
 #ifndef PT_M5_CLIP2NDC_H
 #define PT_M5_CLIP2NDC_H
@@ -17,6 +20,6 @@
 
 /* Return (x/w, y/w, z/w) and report the ndc record to sink (may be NULL).
 ** This function can't fail (w = 0 gives infinities, flagged nonfinite). */
-pt_vec3 pt_clip2ndc(pt_vec4 k, const pt_sink *sink);
+pt_vec3 pt_clip2ndc(pt_vec4 k, double w_scale, const pt_sink *sink);
 
 #endif

@@ -42,6 +42,29 @@ pt_vec4 pt_vec4_mul(pt_vec4 v, const pt_mat4 *m)
     return r;
 }
 
+double pt_mat4_col_scale(const double s[4], const pt_mat4 *m, int c)
+{
+    double big = 0;
+    int i;
+
+    for (i = 0; i < 4; i++)
+        big = fmax(big, fabs(s[i] * m->m[i][c]));       /* fmax ignores a NaN */
+    return big;
+}
+
+int pt_vec4_mul_bits_lost(pt_vec4 v, const pt_mat4 *m, pt_vec4 r)
+{
+    const double s[4] = {fabs(v.x), fabs(v.y), fabs(v.z), fabs(v.w)};
+    const double c[4] = {r.x, r.y, r.z, r.w};
+    int k, lost = 0, l;
+
+    for (k = 0; k < 4; k++) {
+        l = pt_bits_lost(pt_mat4_col_scale(s, m, k), c[k]);
+        if (l > lost) lost = l;
+    }
+    return lost;
+}
+
 pt_mat4 pt_mat4_translate(double x, double y, double z)
 {
     pt_mat4 r = pt_mat4_identity();

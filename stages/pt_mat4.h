@@ -30,6 +30,17 @@ pt_mat4 pt_mat4_identity(void);
 /* a * b: first a, then b.  This function can't fail. */
 pt_mat4 pt_mat4_mul(const pt_mat4 *a, const pt_mat4 *b);
 
+/* The largest term |s_i * m_ic| (i = 0..3) of column c: when s_i is the
+** magnitude component i of v was computed from, this is the magnitude
+** component c of v * m is computed from -- its rounding error is a few units
+** in the last place of it, whatever cancellation leaves of the sum.  With s = |v|
+** it is the sum's own largest term.  This function can't fail. */
+double pt_mat4_col_scale(const double s[4], const pt_mat4 *m, int c);
+
+/* Bits of r = v * m lost to cancellation, the most over its four components:
+** pt_bits_lost(largest term |v_i * m_ic|, r_c).  This function can't fail. */
+int pt_vec4_mul_bits_lost(pt_vec4 v, const pt_mat4 *m, pt_vec4 r);
+
 /* v * m, each component summed in row order.  This function can't fail. */
 pt_vec4 pt_vec4_mul(pt_vec4 v, const pt_mat4 *m);
 

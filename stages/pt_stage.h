@@ -54,8 +54,10 @@ typedef enum pt_stage {
 
 /* Warnings a stage raises about the numbers it produced (docs/stability.md). */
 #define PT_WARN_NONFINITE   0x01u  /* a result is infinite or not a number */
-#define PT_WARN_CANCEL      0x02u  /* camera: x_m + x_t cancelled most digits */
-#define PT_WARN_ILLCOND     0x04u  /* image: z_c lost most digits; the quotient too */
+#define PT_WARN_CANCEL      0x02u  /* camera (world, view, clip): a sum such as
+                                   ** x_m + x_t cancelled most digits */
+#define PT_WARN_ILLCOND     0x04u  /* image (ndc): the divisor z_c (w_k) lost most
+                                   ** digits; the quotient too */
 #define PT_WARN_RANGE       0x08u  /* viewport: no integer pixel (|x_pp| >= 2^62) */
 #define PT_WARN_OUTSIDE     0x10u  /* index: the pixel is outside the pixel array */
 #define PT_NWARN            5      /* number of warning kinds */

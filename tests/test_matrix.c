@@ -134,7 +134,7 @@ static void test_stages(void)
     PT_CHECK("ms-3.1 clip: w = z_v = 5", k.w == 5 && k.x == 1 && last.stage == PT_STAGE_CLIP);
     code = pt_clip2cvv(k, &sink);
     PT_CHECK("ms-4.1 cvv: inside, code 0", code == 0 && last.code == 0);
-    n = pt_clip2ndc(k, &sink);
+    n = pt_clip2ndc(k, fabs(k.w), &sink);
     PT_CHECK("ms-5.1 ndc: (0.2, 0.2, z)", n.x == 0.2 && n.y == 0.2 && n.z > 0 && n.z < 1);
     s = pt_ndc2screen(n, 10, 10, &sink);
     PT_CHECK("ms-6.1 screen: (6, 4): x right, y down", s.x == 6 && s.y == 4);
@@ -167,7 +167,7 @@ static void test_roundtrip(void)
         pt_vec3 p = {sin(k * 1.1) * 3, cos(k * 0.7) * 2, 4 + 10 * fabs(sin(k * 0.3))}, n, s, back;
         pt_vec4 c = pt_view2clip(pt_world2view(pt_model2world(p, &world, NULL), &view, NULL), &proj, NULL);
         double z_v, x_v, y_v, cot = proj.m[1][1];
-        n = pt_clip2ndc(c, NULL);
+        n = pt_clip2ndc(c, fabs(c.w), NULL);
         s = pt_ndc2screen(n, 300, 200, NULL);
         n.x = s.x / (300 * 0.5) - 1;                 /* un-screen */
         n.y = 1 - s.y / (200 * 0.5);
