@@ -240,6 +240,7 @@ static void on_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
     raster_ctx *rc = ud;
 
     rc->sum->clipped += count;
+    if (rc->sum->clipped < count) rc->sum->clipped_hi++;    /* carried past 2^64 */
     rc->sum->clip_runs++;
     if (rc->l && rc->l->clip) rc->l->clip(rc->l->ud, rc->m, rc->seg, count, first, last);
 }

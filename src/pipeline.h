@@ -78,7 +78,10 @@ typedef struct pt_summary {
     uint64_t segments_skipped;   /* an endpoint has no pixel (not finite, huge) */
     uint64_t segments_culled;    /* matrix camera: wholly outside the view volume */
     uint64_t pixels;             /* pixels written (inside the viewport) */
-    uint64_t clipped;            /* steps clipped (outside the viewport) */
+    uint64_t clipped;            /* steps clipped (outside the viewport), and */
+    uint64_t clipped_hi;         /* its carries: the count is clipped_hi * 2^64 +
+                                 ** clipped (one segment has fewer than 2^64
+                                 ** steps, but several can add up to more) */
     uint64_t clip_runs;          /* clip records */
     uint64_t behind;             /* traced vertices behind a perspective camera */
     uint64_t warnings[PT_NWARN]; /* records raised with warning k (traced or not) */

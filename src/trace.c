@@ -41,6 +41,28 @@ static void put_u64(pt_trace *t, uint64_t x)
     put(t, o, (size_t)(b + sizeof b - o));
 }
 
+/* hi * 2^64 + lo in decimal: long division by 10 on 32-bit limbs. */
+static void put_u128(pt_trace *t, uint64_t hi, uint64_t lo)
+{
+    uint32_t limb[4] = {(uint32_t)(hi >> 32), (uint32_t)hi, (uint32_t)(lo >> 32), (uint32_t)lo};
+    char b[40], *o = b + sizeof b;
+    int k, nonzero;
+
+    if (hi == 0) { put_u64(t, lo); return; }
+    do {
+        uint64_t rem = 0;
+        nonzero = 0;
+        for (k = 0; k < 4; k++) {           /* limb[] /= 10, most significant first */
+            uint64_t cur = (rem << 32) | limb[k];
+            limb[k] = (uint32_t)(cur / 10);
+            rem = cur % 10;
+            nonzero |= limb[k] != 0;
+        }
+        *--o = (char)('0' + rem);
+    } while (nonzero);
+    put(t, o, (size_t)(b + sizeof b - o));
+}
+
 static void put_i64(pt_trace *t, int64_t x)
 {
     if (x < 0) { put(t, "-", 1); put_u64(t, 0u - (uint64_t)x); }
@@ -696,13 +718,15 @@ static void on_summary(void *ud, const pt_summary *sum)
         sum->segments, sum->segments_degenerate, sum->segments_skipped,
         sum->segments_culled, sum->pixels, sum->clipped, sum->clip_runs, sum->behind,
     };
+    const uint64_t hi[] = {0, 0, 0, 0, 0, 0, 0, 0, 0, sum->clipped_hi, 0, 0};  /* 2^64s */
     size_t k;
 
     if (t->fmt == PT_FORMAT_CSV) return;
     if (t->fmt == PT_FORMAT_JSONL) {
         puts_(t, "{\"type\":\"summary\"");
         for (k = 0; k < sizeof vals / sizeof vals[0]; k++) {
-            puts_(t, ",\""); puts_(t, names[k]); puts_(t, "\":"); put_u64(t, vals[k]);
+            puts_(t, ",\""); puts_(t, names[k]); puts_(t, "\":");
+            put_u128(t, hi[k], vals[k]);
         }
         puts_(t, ",\"warnings\":{");
         for (k = 0; k < PT_NWARN; k++) {
@@ -716,7 +740,8 @@ static void on_summary(void *ud, const pt_summary *sum)
     puts_(t, "\nsummary");
     for (k = 0; k < sizeof vals / sizeof vals[0]; k++) {
         puts_(t, k % 4 == 0 ? "\n  " : "  ");
-        puts_(t, names[k]); put(t, " ", 1); put_u64(t, vals[k]);
+        puts_(t, names[k]); put(t, " ", 1);
+        put_u128(t, hi[k], vals[k]);
     }
     puts_(t, "\n  warnings");
     for (k = 0; k < PT_NWARN; k++) {
