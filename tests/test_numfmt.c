@@ -1,7 +1,14 @@
 /*
 ** tests/test_numfmt.c -- shortest round-trip and fixed formatting of doubles
 ** See LICENSE for copyright and license.
+**
+** pt_fmt_shortest() computes its digits exactly (src/numfmt.c).  The oracle
+** below is the printf-and-strtod search it replaced: slow, but its correctness
+** rests only on a correctly rounded printf and strtod.  Every value tested must
+** be spelled byte for byte as the oracle spells it, and read back bit for bit.
+** Random values come from a fixed-seed xorshift, so every run tests the same.
 */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -9,6 +16,130 @@
 #include <string.h>
 #include "testhelp.h"
 #include "numfmt.h"
+
+/* ===== the oracle: pt_fmt_shortest as it was, by printf and strtod ===== */
+
+/* Shortest round-trip without a big algorithm: for a normal double, the 15-digit
+** rounding, trailing zeros removed, is the shortest string when any string of at
+** most 15 digits reads back to x (15 = DBL_DIG: no two such decimals share a
+** double, so the one that reads back to x is the 15-digit rounding of x).  Else
+** 16 digits: the nearest 16-digit decimal, or failing that (x at a binade edge,
+** where the interval is lopsided) its neighbours; else 17, which always works.
+** Subnormals carry fewer digits, so for them every precision from 1 is tried. */
+
+static size_t oracle_nonfinite(char *buf, double x)
+{
+    const char *s = isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
+    strcpy(buf, s);
+    return strlen(s);
+}
+
+/* x is an integer with |x| < 1e15: write it digit by digit ("-0" for -0.0). */
+static size_t oracle_int_digits(char *buf, double x)
+{
+    char b[24], *o = b + sizeof b;
+    uint64_t u = (uint64_t)fabs(x);
+    size_t n;
+
+    do { *--o = (char)('0' + u % 10); u /= 10; } while (u);
+    if (signbit(x)) *--o = '-';
+    n = (size_t)(b + sizeof b - o);
+    memcpy(buf, o, n);
+    buf[n] = '\0';
+    return n;
+}
+
+static int reads_back(const char *buf, double x)
+{
+    return strtod(buf, NULL) == x;
+}
+
+/* Spell sign, digits d[0..n) times 10^(exp10 - n + 1) the way "%.*g" with
+** precision P does: trailing zeros dropped, exponent form when exp10 < -4 or
+** exp10 >= P. */
+static void oracle_g_style(char *buf, int neg, const char *d, int n, int exp10, int P)
+{
+    char *o = buf;
+    int k;
+
+    while (n > 1 && d[n - 1] == '0') n--;
+    if (neg) *o++ = '-';
+    if (exp10 < -4 || exp10 >= P) {
+        *o++ = d[0];
+        if (n > 1) { *o++ = '.'; memcpy(o, d + 1, (size_t)n - 1); o += n - 1; }
+        sprintf(o, "e%c%02d", exp10 < 0 ? '-' : '+', exp10 < 0 ? -exp10 : exp10);
+        return;
+    }
+    if (exp10 < 0) {                        /* 0.000ddd */
+        *o++ = '0'; *o++ = '.';
+        for (k = -1; k > exp10; k--) *o++ = '0';
+        memcpy(o, d, (size_t)n); o += n;
+    } else {                                /* ddd.ddd */
+        for (k = 0; k <= exp10; k++) *o++ = k < n ? d[k] : '0';
+        if (n > exp10 + 1) {
+            *o++ = '.';
+            memcpy(o, d + exp10 + 1, (size_t)(n - exp10 - 1));
+            o += n - exp10 - 1;
+        }
+    }
+    *o = '\0';
+}
+
+/* The two 16-digit decimals next to the nearest one (which did not read back):
+** at a power of two the interval that reads back to x is lopsided, and the
+** second-nearest decimal may lie inside it.  Returns 1 with buf filled. */
+static int oracle_neighbours(char *buf, double x)
+{
+    char e[PT_NUMLEN], d[17], t[PT_NUMLEN];
+    int neg, exp10, step, i;
+
+    snprintf(e, sizeof e, "%.15e", x);      /* [-]d.ddddddddddddddde[+-]XX */
+    neg = e[0] == '-';
+    d[0] = e[neg];
+    memcpy(d + 1, e + neg + 2, 15);
+    d[16] = '\0';
+    exp10 = atoi(e + neg + 18);
+    for (step = -1; step <= 1; step += 2) {
+        char n[17];
+        int ex = exp10;
+        memcpy(n, d, 17);
+        for (i = 15; i >= 0; i--) {         /* n += step in the last digit */
+            int c = n[i] - '0' + step;
+            if (c >= 0 && c <= 9) { n[i] = (char)('0' + c); break; }
+            n[i] = step > 0 ? '0' : '9';
+        }
+        if (i < 0 && step > 0) { memmove(n + 1, n, 15); n[0] = '1'; ex++; }
+        if (n[0] == '0') { memmove(n, n + 1, 15); n[15] = '9'; ex--; }
+        snprintf(t, sizeof t, "%s%c.%.15se%d", neg ? "-" : "", n[0], n + 1, ex);
+        if (reads_back(t, x)) { oracle_g_style(buf, neg, n, 16, ex, 16); return 1; }
+    }
+    return 0;
+}
+
+static size_t oracle_shortest(char *buf, double x)
+{
+    int prec;
+
+    if (!isfinite(x)) return oracle_nonfinite(buf, x);
+    if (fabs(x) < 1e15 && x == (double)(int64_t)x)  /* an integer: its digits, */
+        return oracle_int_digits(buf, x);           /* as %.15g writes them */
+    if (x != 0 && fabs(x) < DBL_MIN) {      /* subnormal: search from 1 digit */
+        for (prec = 1; prec < 17; prec++) {
+            snprintf(buf, PT_NUMLEN, "%.*g", prec, x);
+            if (reads_back(buf, x)) return strlen(buf);
+        }
+    } else {
+        snprintf(buf, PT_NUMLEN, "%.15g", x);
+        if (reads_back(buf, x)) return strlen(buf);
+        snprintf(buf, PT_NUMLEN, "%.16g", x);
+        if (reads_back(buf, x)) return strlen(buf);
+        if (oracle_neighbours(buf, x)) return strlen(buf);
+    }
+    snprintf(buf, PT_NUMLEN, "%.17g", x);
+    return strlen(buf);
+}
+
+/* ===== helpers ===== */
 
 static int spells(double x, const char *want)
 {
@@ -37,11 +168,71 @@ static double from_bits(uint64_t u)
     return x;
 }
 
+static uint64_t rng = 88172645463325252ULL;
+
+static uint64_t next_random(void)           /* xorshift64 (Marsaglia 2003) */
+{
+    rng ^= rng << 13; rng ^= rng >> 7; rng ^= rng << 17;
+    return rng;
+}
+
+/* A group of values compared with the oracle: how many, how many differ. */
+static long group_n, group_bad;
+
+/* x spelled as the oracle spells it, and read back bit for bit. */
+static void agrees(double x)
+{
+    char got[PT_NUMLEN], want[PT_NUMLEN];
+    size_t n = pt_fmt_shortest(got, x);
+    double y = strtod(got, NULL);
+    int ok;
+
+    oracle_shortest(want, x);
+    ok = strcmp(got, want) == 0 && n == strlen(got) &&
+         (isnan(x) || memcmp(&x, &y, sizeof x) == 0);
+    group_n++;
+    if (!ok && group_bad++ < 5)
+        printf("  %a spelled '%s', oracle '%s', reads back %a\n", x, got, want, y);
+}
+
+static void agrees_pm(double x) { agrees(x); agrees(-x); }
+
+/* Ends a group: prints its size, returns 1 when every value agreed. */
+static int group_done(const char *what)
+{
+    int ok = group_bad == 0;
+    printf("%-52s %8ld values, %ld differ\n", what, group_n, group_bad);
+    group_n = group_bad = 0;
+    return ok;
+}
+
+static void agrees_around(double x, int ulps)   /* +-x and neighbours */
+{
+    double lo = x, hi = x;
+    int k;
+
+    agrees_pm(x);
+    for (k = 0; k < ulps; k++) {
+        lo = nextafter(lo, -(double)INFINITY);
+        hi = nextafter(hi, (double)INFINITY);
+        agrees_pm(lo);
+        agrees_pm(hi);
+    }
+}
+
+/* A small decimal: +-d / 10^p with d < 10^4, p < 4 ("12.5", "-0.07"). */
+static double small_decimal(void)
+{
+    static const double scale[4] = { 1, 10, 100, 1000 };
+    uint64_t r = next_random();
+    double d = (double)(r % 10000) / scale[r >> 20 & 3];
+    return r >> 30 & 1 ? -d : d;
+}
+
 int main(void)
 {
     char b[PT_NUMLEN];
-    int k, round_trips = 1, shortest = 1;
-    uint64_t state = 88172645463325252ULL;
+    int k, j, round_trips = 1, shortest = 1;
 
     PT_CHECK("num-1.1 0.1", spells(0.1, "0.1"));
     PT_CHECK("num-1.2 -1", spells(-1, "-1"));
@@ -55,12 +246,19 @@ int main(void)
     PT_CHECK("num-1.9 2^-1022", spells(2.2250738585072014e-308, "2.2250738585072014e-308"));
     PT_CHECK("num-1.10 non-finite", spells((double)NAN, "nan") && spells((double)INFINITY, "inf") &&
              spells(-(double)INFINITY, "-inf"));
-    for (k = 0; k < 30000; k++) {           /* xorshift: every kind of double */
-        double x;
-        state ^= state << 13; state ^= state >> 7; state ^= state << 17;
-        x = from_bits(k % 5 == 0 ? state & 0xfff0000000000000ULL :   /* powers of 2 */
-                      k % 5 == 1 ? state & 0x800fffffffffffffULL :   /* subnormals */
-                      state);
+    PT_CHECK("num-1.11 largest double", spells(DBL_MAX, "1.7976931348623157e+308"));
+    PT_CHECK("num-1.12 1e15 and 1e16 switch to exponent form",
+             spells(1e15, "1e+15") && spells(1e16, "1e+16") && spells(999999999999999, "999999999999999"));
+    PT_CHECK("num-1.13 exponent form below 1e-4",
+             spells(0.0001, "0.0001") && spells(0.00001, "1e-05") && spells(1.5e-5, "1.5e-05"));
+    PT_CHECK("num-1.14 17-digit tie, even digit kept", spells(1234567890123456.25, "1234567890123456.2"));
+    PT_CHECK("num-1.15 exact integers above 2^64", spells(1e20, "1e+20") && spells(1e22, "1e+22") &&
+             spells(123456789012345678e5, "1.2345678901234568e+22"));
+    for (k = 0; k < 30000; k++) {           /* every kind of double */
+        uint64_t r = next_random();
+        double x = from_bits(k % 5 == 0 ? r & 0xfff0000000000000ULL :   /* powers of 2 */
+                             k % 5 == 1 ? r & 0x800fffffffffffffULL :   /* subnormals */
+                             r);
         if (!isfinite(x)) continue;
         pt_fmt_shortest(b, x);
         if (strtod(b, NULL) != x) round_trips = 0;
@@ -68,6 +266,77 @@ int main(void)
     }
     PT_CHECK("num-2.1 30000 doubles read back exactly", round_trips);
     PT_CHECK("num-2.2 ... and are never longer than the shortest %g", shortest);
+
+    /* Every group below: x and -x, spelled as the oracle does, read back. */
+    for (k = -1074; k <= 1023; k++) agrees_around(ldexp(1, k), 2);
+    PT_CHECK("num-4.1 powers of two, 2 ulps either side",
+             group_done("num-4.1 powers of two +- 2 ulps"));
+    for (k = -323; k <= 308; k++) {
+        char s[16];
+        snprintf(s, sizeof s, "1e%d", k);
+        agrees_around(strtod(s, NULL), 2);
+        for (j = 2; j <= 9; j++) agrees_pm(j * strtod(s, NULL));
+    }
+    PT_CHECK("num-4.2 powers of ten, 2 ulps either side, and 2..9 times them",
+             group_done("num-4.2 powers of ten +- 2 ulps, 2..9 times"));
+    for (k = -1074; k <= 1023; k++) {       /* each binade's low end: lopsided */
+        for (j = 0; j < 16; j++) {
+            agrees_pm(ldexp(1 + j * DBL_EPSILON, k));
+            agrees_pm(ldexp(1 - j * DBL_EPSILON / 2, k));
+        }
+    }
+    PT_CHECK("num-4.3 binade edges (lopsided intervals), 16 ulps either side",
+             group_done("num-4.3 binade edges +- 16 ulps"));
+    agrees_around(DBL_TRUE_MIN, 1000);
+    agrees_around(DBL_MIN, 1000);
+    for (k = 1; k <= 20000; k++) agrees(from_bits(next_random() & 0x800fffffffffffffULL));
+    for (k = 1; k <= 1000; k++) agrees_pm(from_bits((uint64_t)k));
+    PT_CHECK("num-4.4 subnormals: smallest, largest, random, few bits",
+             group_done("num-4.4 subnormals"));
+    for (k = -3000; k <= 3000; k++) {
+        agrees_pm(1e15 + k);
+        agrees_pm(1e15 + k / 8.0);
+        agrees_pm(9007199254740992.0 + 2 * k);             /* 2^53 */
+        agrees_pm(9007199254740992.0 + k / 2.0);
+        agrees_pm(1e16 + 2 * k);
+        agrees_pm(1e17 + 16 * k);
+    }
+    agrees_around(1e15, 100);
+    agrees_around(9007199254740992.0, 100);
+    agrees_around(DBL_MAX, 100);
+    agrees_pm(0.0);
+    PT_CHECK("num-4.5 integers near 1e15, 2^53, 1e16, 1e17; the largest doubles; +-0",
+             group_done("num-4.5 near 1e15, 2^53, 1e16, 1e17, DBL_MAX; 0"));
+    /* x = n 2^-k = n 5^k 10^-k, n odd, has exactly digits(n 5^k) significant
+    ** digits, the last a 5: a tie when rounded to one digit fewer. */
+    for (j = 16; j <= 18; j++) {            /* ties at 15, 16, 17 digits */
+        for (k = 1; k <= 25; k++) {
+            double lo = pow(10, j - 1) / pow(5, k), hi = pow(10, j) / pow(5, k);
+            int tries;
+            if (lo > 9007199254740991.0) continue;
+            if (hi > 9007199254740991.0) hi = 9007199254740991.0;
+            for (tries = 0; tries < 400; tries++) {
+                double n = floor(lo + (hi - lo) * (double)(next_random() >> 11) * 0x1p-53);
+                if (fmod(n, 2) == 0) n += 1;
+                if (n >= hi || n < lo) continue;
+                agrees_pm(ldexp(n, -k));
+                agrees_pm(ldexp(n, -k) * 1e-20);           /* not ties: nearby shapes */
+            }
+        }
+    }
+    PT_CHECK("num-4.6 exact decimals that tie at 15, 16, 17 digits",
+             group_done("num-4.6 ties at 15, 16, 17 digits"));
+    for (k = 0; k < 2000000; k++) {
+        double x = from_bits(next_random());
+        agrees(x);
+    }
+    PT_CHECK("num-4.7 random bit patterns", group_done("num-4.7 random bit patterns"));
+    for (k = 0; k < 1000000; k++) {
+        double a = small_decimal(), c = small_decimal(), d = small_decimal();
+        agrees(k % 2 ? a / c * d : a * c + d);
+    }
+    PT_CHECK("num-4.8 typical values: a/b*c, a*b+c of small decimals",
+             group_done("num-4.8 a/b*c, a*b+c of small decimals"));
 
     pt_fmt_fixed(b, 5.497501249375313, 6);
     PT_CHECK("num-3.1 fixed, 6 digits", strcmp(b, "5.497501") == 0);
