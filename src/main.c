@@ -25,7 +25,7 @@ static const char usage[] =
 "usage: pipetrace [SCENE] [options]\n"
 "       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N]\n"
 "       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE]\n"
-"       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all]\n"
+"       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all] [--compare-cameras]\n"
 "       pipetrace why [SCENE] X_FB Y_FB\n"
 "       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
 "       pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
@@ -33,6 +33,8 @@ static const char usage[] =
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
 "through the classic teaching pipeline and trace every vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
+"or, for a scene with 'camera lookat', through the matrix camera:\n"
+"  model -> world -> view -> clip -> cvv -> ndc -> screen -> viewport -> ...\n"
 "\n"
 "  --image FILE      write the rendered framebuffer: PNG when FILE ends in\n"
 "                    .png (any case), else binary PPM (P6)\n"
@@ -53,7 +55,7 @@ static const char usage[] =
 "\n"
 "With neither --image nor --trace the text trace goes to standard output.\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
-"Docs: docs/README.md, docs/scene-format.md, docs/trace-format.md\n";
+"Docs: docs/README.md, docs/scene-format.md, docs/trace-format.md, docs/cameras.md\n";
 
 /* ===== options ===== */
 

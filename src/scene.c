@@ -1116,11 +1116,22 @@ static int scene_line(parser *ps, source *src, cursor *line)
     return fail(ps, src, d.p, "unknown directive '%s'", shown(d.p, d.n, q));
 }
 
-/* One line of an OBJ file: v, l and f count; every other keyword (vt, vn,
-** vp, g, o, s, usemtl, mtllib, even obj) is ignored, as OBJ files hold many
-** statements that pipetrace has no use for. */
+/* The statements of the Wavefront OBJ format (its specification, version
+** 3.0) that pipetrace has no use for: texture and normal vertices, free-form
+** geometry, points, grouping and display attributes.  They are ignored. */
+static const char *const obj_unused[] = {
+    "vt", "vn", "vp", "cstype", "deg", "bmat", "step", "p", "curv", "curv2",
+    "surf", "parm", "trim", "hole", "scrv", "sp", "end", "con", "g", "s", "mg",
+    "o", "bevel", "c_interp", "d_interp", "lod", "usemtl", "mtllib",
+    "shadow_obj", "trace_obj", "ctech", "stech", "maplib", "usemap", "call", "csh",
+};
+
+/* One line of an OBJ file: v, l and f count; the other OBJ statements are
+** ignored; anything else is not OBJ, and an error, as in a scene. */
 static int obj_line(parser *ps, source *src, cursor *line)
 {
+    char q[QUOTE_BUF];
+    size_t i;
     token d;
 
     if (!next_token(line, &d))
@@ -1131,7 +1142,10 @@ static int obj_line(parser *ps, source *src, cursor *line)
         return do_line(ps, src, &d, line);
     if (tok_is(&d, "f"))
         return do_face(ps, src, &d, line);
-    return 0;
+    for (i = 0; i < sizeof obj_unused / sizeof obj_unused[0]; i++)
+        if (tok_is(&d, obj_unused[i]))
+            return 0;
+    return fail(ps, src, d.p, "unknown OBJ statement '%s'", shown(d.p, d.n, q));
 }
 
 /* Parse every line of src.  Returns 0 or -1. */

@@ -385,8 +385,8 @@ static const char *const coord_names[PT_NSTAGES_ALL][4] = {
     {"x_ip = ", "y_ip = ", "z_ip = ", ""},     {"x_pp = ", "y_pp = ", "", ""},
     {"x_vp = ", "y_vp = ", "", ""},            {"x_fb = ", "y_fb = ", "", ""},
     {"idx  = ", "", "", ""},
-    {"x_w  = ", "y_w  = ", "z_w  = ", "w_w = "}, {"x_v  = ", "y_v  = ", "z_v  = ", "w_v = "},
-    {"x_k  = ", "y_k  = ", "z_k  = ", "w_k = "}, {"code = ", "", "", ""},
+    {"x_w  = ", "y_w  = ", "z_w  = ", "w_w  = "}, {"x_v  = ", "y_v  = ", "z_v  = ", "w_v  = "},
+    {"x_k  = ", "y_k  = ", "z_k  = ", "w_k  = "}, {"code = ", "", "", ""},
     {"x_n  = ", "y_n  = ", "z_n  = ", ""},     {"x_s  = ", "y_s  = ", "z_s  = ", ""},
 };
 
@@ -459,16 +459,15 @@ static void put_warnings_json(pt_trace *t, const pt_vrec *r)
     }
 }
 
-/* Text: the names of the planes in an outcode, "  (left near)". */
+/* Text: the rest of "(0b000101: outside near left)", or ": inside ...)". */
 static void put_planes_text(pt_trace *t, unsigned code)
 {
-    int k, first = 1;
+    int k;
 
-    if (!code) { puts_(t, "  (inside the view volume)"); return; }
-    puts_(t, "  (outside:");
+    if (!code) { puts_(t, ": inside the view volume)"); return; }
+    puts_(t, ": outside");
     for (k = 0; k < PT_CVV_NPLANES; k++)
-        if (code & (1u << k)) { put(t, " ", 1); puts_(t, pt_cvv_names[k]); first = 0; }
-    (void)first;
+        if (code & (1u << k)) { put(t, " ", 1); puts_(t, pt_cvv_names[k]); }
     put(t, ")", 1);
 }
 
@@ -481,8 +480,14 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
     else put_who(t, t->model->name, "v", t->v);
     snprintf(b, sizeof b, "%-13s", pt_stage_infos[r->stage].name);
     put(t, b, 13);
-    if (r->stage == PT_STAGE_CVV) {
-        puts_(t, cn[0]); put_i64(t, r->code); put_planes_text(t, r->code);
+    if (r->stage == PT_STAGE_CVV) {             /* "code = 61 = 0b111101" */
+        char bits[PT_CVV_NPLANES + 1];
+        int k;
+        for (k = 0; k < PT_CVV_NPLANES; k++)
+            bits[k] = r->code & (1u << (PT_CVV_NPLANES - 1 - k)) ? '1' : '0';
+        bits[PT_CVV_NPLANES] = '\0';
+        puts_(t, cn[0]); put_i64(t, r->code); puts_(t, "  (0b"); puts_(t, bits);
+        put_planes_text(t, r->code);
     } else if (r->stage == PT_STAGE_INDEX) {
         puts_(t, cn[0]);
         if (r->flags & PT_REC_NULL) put_col(t, "none", 4, 12);

@@ -720,10 +720,18 @@ static void test_files(void)
     remove("/tmp/pt_test_scene_big.scene");
     free(text);
 
-    r = write_file("/tmp/pt_test_scene_bad.obj", "v 0 0 0\nv 1 1 1\nfoo\nf 1 2\n");
+    r = write_file("/tmp/pt_test_scene_bad.obj", "v 0 0 0\nv 1 1 1\nvt 0 0\nf 1 2\n");
     PT_CHECK("scene-5.14 write an obj to /tmp", r == 0);
     bad("scene-5.14 f with 2 indices inside an obj", "model m\nobj /tmp/pt_test_scene_bad.obj\n",
         "/tmp/pt_test_scene_bad.obj:4:1: error:", "expected at least 3 indices");
+    r = write_file("/tmp/pt_test_scene_bad.obj", "v 0 0 0\nv 1 1 1\nfoo 1 2\nl 1 2\n");
+    bad("scene-5.15 a statement that is not OBJ is an error inside an obj",
+        "model m\nobj /tmp/pt_test_scene_bad.obj\n",
+        "/tmp/pt_test_scene_bad.obj:3:1: error:", "unknown OBJ statement 'foo'");
+    r = write_file("/tmp/pt_test_scene_bad.obj", "v 0 0 0\nobj other.obj\n");
+    bad("scene-5.16 ... and so is 'obj': OBJ files do not include others",
+        "model m\nobj /tmp/pt_test_scene_bad.obj\n",
+        "/tmp/pt_test_scene_bad.obj:2:1: error:", "unknown OBJ statement 'obj'");
     remove("/tmp/pt_test_scene_bad.obj");
 }
 
