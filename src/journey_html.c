@@ -19,9 +19,8 @@
 **   #formula          the formula with the numbers put in (pt_explain_stage)
 **   #after            what the next stage will do with the result
 ** The URL fragment chooses what is shown first: #v=N&m=MODEL&stage=K (K is
-** 1..7 or a stage name; m defaults to the model first shown), and #selftest
-** makes the page click through every stage of every vertex and write the
-** outcome into <pre id="selftest">.
+** 1..7 or a stage name; m defaults to the model first shown).
+** tests/journey_clicks.html drives the page through these ids from outside.
 */
 #include <stdlib.h>
 #include <string.h>
@@ -161,46 +160,9 @@ static const char *const script[] = {
 "    }\n"
 "    return q;\n"
 "  }\n",
-"  function selftest() {\n"
-"    var out = [], bad = [], clicks = 0, k, fwd, lab;\n"
-"    for (var o = 0; o < sel.options.length; o++) {\n"
-"      sel.value = sel.options[o].value;\n"
-"      sel.dispatchEvent(new Event('change'));\n"
-"      if (cur !== o) bad.push('choosing vertex ' + o + ' shows ' + cur);\n"
-"      while (!$('prev').disabled && clicks < 1e6) { $('prev').click(); clicks++; }\n"
-"      fwd = [];\n"
-"      for (k = 0; k < n; k++) {\n"
-"        var x = D.vertices[o], c = $('coords').textContent;\n"
-"        if ($('stage').textContent !== D.stages[k].name)\n"
-"          bad.push(vname(x) + ': stage ' + (k + 1) + ' shows ' + $('stage').textContent);\n"
-"        lab = $('panel').querySelector('text.coords');\n"
-"        if (!lab || lab.textContent !== c) bad.push(vname(x) + ' ' + D.stages[k].name +\n"
-"          ': the panel label differs from #coords');\n"
-"        if (!$('formula').textContent) bad.push(vname(x) + ': no formula');\n"
-"        fwd.push(c);\n"
-"        out.push(D.models[x.m].name + '\\t' + x.v + '\\t' + $('stage').textContent + '\\t' + c);\n"
-"        if (k < n - 1) { $('next').click(); clicks++; }\n"
-"      }\n"
-"      if (!$('next').disabled) bad.push('Next is enabled at the last stage');\n"
-"      $('next').click(); clicks++;\n"
-"      if ($('stage').textContent !== D.stages[n - 1].name) bad.push('Next moved past the end');\n"
-"      for (k = n - 1; k > 0; k--) {\n"
-"        $('prev').click(); clicks++;\n"
-"        if ($('coords').textContent !== fwd[k - 1]) bad.push('Prev to stage ' + k + ' differs');\n"
-"      }\n"
-"      if (!$('prev').disabled) bad.push('Prev is enabled at the first stage');\n"
-"    }\n"
-"    var pre = document.createElement('pre');\n"
-"    pre.id = 'selftest';\n"
-"    pre.textContent = (bad.length ? 'FAIL ' + bad.slice(0, 20).join('; ')\n"
-"      : 'ok ' + sel.options.length + ' vertices, ' + n + ' stages, ' + clicks + ' clicks') +\n"
-"      '\\n' + out.join('\\n') + '\\n';\n"
-"    document.body.appendChild(pre);\n"
-"  }\n"
-"  var q = fromHash();\n"
+"  fromHash();\n"
 "  show();\n"
 "  window.addEventListener('hashchange', function () { fromHash(); show(); });\n"
-"  if (q.selftest !== undefined) selftest();\n"
 "})();\n",
     NULL
 };

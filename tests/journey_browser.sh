@@ -4,10 +4,10 @@
 #
 # Usage: sh tests/journey_browser.sh PIPETRACE [SHOTDIR].  Run from the
 # repository root.  Loads pages written by `pipetrace journey --html` from
-# disk in headless Chromium (no network, no driver: the page runs its own
-# self-test when opened with #selftest, and --dump-dom shows the result):
-#   - #selftest clicks Prev and Next through every stage of every vertex of
-#     the scene; each stage's #coords must equal the JSONL trace;
+# disk in headless Chromium (no network, no driver: tests/journey_clicks.html
+# opens the page in a frame and clicks it, and --dump-dom shows the result):
+#   - it clicks Prev and Next through every stage of every vertex of the
+#     scene; each stage's #coords must equal the JSONL trace;
 #   - #v=N&m=MODEL&stage=K opens a chosen vertex and stage;
 #   - screenshots of the SVG and of each stage of the page go to SHOTDIR
 #     (default: journey-shots beside PIPETRACE); `make screenshots` copies two
@@ -57,17 +57,22 @@ chrome() {  # chrome ARGS... URL: one headless run, its own profile, no network
 
 url() { printf 'file://%s%s' "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" "$2"; }
 
+clicks() {  # clicks PAGE.html: tests/journey_clicks.html's DOM after clicking PAGE
+    chrome --allow-file-access-from-files --dump-dom \
+        "$(url tests/journey_clicks.html "?page=$(url "$1")")"
+}
+
 # ---- every stage of every vertex, by clicking
 for s in "" docs/examples/clip.scene docs/examples/behind.scene docs/examples/ortho.scene; do
     "$exe" journey $s --vertex 1 --html "$tmp/p.html"
-    chrome --dump-dom "$(url "$tmp/p.html" '#selftest')" > "$tmp/dom.html"
+    clicks "$tmp/p.html" > "$tmp/dom.html"
     check "web-1 ${s:-builtin}: the page loads" test -s "$tmp/dom.html"
-    py selftest "$exe" "$tmp/dom.html" $s
+    py clicks "$exe" "$tmp/dom.html" $s
 done
 printf 'framebuffer 20 10\nmodel m\nv 1 0.5 0\nv 0 0 -2\nl 1 2\n' > "$tmp/z0.scene"
 "$exe" journey "$tmp/z0.scene" --vertex 1 --html "$tmp/z.html"
-chrome --dump-dom "$(url "$tmp/z.html" '#selftest')" > "$tmp/dom.html"
-py selftest "$exe" "$tmp/dom.html" "$tmp/z0.scene"
+clicks "$tmp/z.html" > "$tmp/dom.html"
+py clicks "$exe" "$tmp/dom.html" "$tmp/z0.scene"
 
 # ---- a vertex and stage chosen by the URL
 "$exe" journey --vertex 1 --html "$tmp/b.html" --svg "$tmp/b.svg"

@@ -12,9 +12,9 @@
 #                                    file), the ids the page promises, every
 #                                    listed vertex's coordinates equal to the
 #                                    trace, every panel fragment well-formed
-#   selftest EXE DOM [SCENE]         the page's #selftest output (chromium
-#                                    --dump-dom): "ok ...", every vertex of the
-#                                    trace, every stage, values equal to the trace
+#   clicks EXE DOM [SCENE]           tests/journey_clicks.html's outcome
+#                                    (chromium --dump-dom): "ok ...", every vertex
+#                                    of the trace, every stage, values equal to it
 #   dom EXE DOM MODEL V STAGE [SCENE]  #stage and #coords of a dumped page
 #   png FILE.png FILE.ppm            the PNG decodes (CRC of every chunk, zlib's
 #                                    Adler-32) to the PPM's pixels
@@ -179,15 +179,15 @@ def html_mode(exe, path, scene):
     check("html-8 every panel fragment is well-formed", ok)
 
 
-def selftest_mode(exe, dom, scene):
+def clicks_mode(exe, dom, scene):
     text = open(dom, encoding="utf-8", errors="replace").read()
     recs = trace(exe, scene)
-    m = re.search(r'<pre id="selftest">(.*?)</pre>', text, re.S)
-    check("page-1 the self-test ran (<pre id=selftest>)", m is not None)
+    m = re.search(r'<pre id="clicks">(.*?)</pre>', text, re.S)
+    check("page-1 the clicks ran (<pre id=clicks>)", m is not None)
     if not m:
         return
     lines = html.unescape(m.group(1)).strip("\n").split("\n")
-    check("page-2 the self-test says ok", lines[0].startswith("ok "), lines[0][:300])
+    check("page-2 the clicks say ok", lines[0].startswith("ok "), lines[0][:300])
     seen = set()
     for ln in lines[1:]:
         model, v, st, coords = ln.split("\t")
@@ -286,8 +286,8 @@ def main():
         svg_mode(a[0], a[1], a[2], a[3], a[4] if len(a) > 4 else None)
     elif mode == "html":
         html_mode(a[0], a[1], a[2] if len(a) > 2 else None)
-    elif mode == "selftest":
-        selftest_mode(a[0], a[1], a[2] if len(a) > 2 else None)
+    elif mode == "clicks":
+        clicks_mode(a[0], a[1], a[2] if len(a) > 2 else None)
     elif mode == "dom":
         dom_mode(a[0], a[1], a[2], a[3], a[4], a[5] if len(a) > 5 else scene)
     elif mode == "png":
