@@ -336,9 +336,10 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
 }
 
 /* The CSV header rows; see vertex_csv(). */
-static const char csv_classic[] = "model,v,stage,x,y,z,inside,behind,i,warning\n";
+static const char csv_classic[] =
+    "model,v,stage,x,y,z,inside,behind,i,warning,digits_lost\n";
 static const char csv_matrix[] =
-    "model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning\n";
+    "model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning,digits_lost\n";
 
 static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
 {
@@ -566,8 +567,9 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
 }
 
 /* CSV rows, empty where a field does not apply, warning names joined by '|':
-**   classic camera: model,v,stage,x,y,z,inside,behind,i,warning
-**   matrix camera:  model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning
+**   classic camera: model,v,stage,x,y,z,inside,behind,i,warning,digits_lost
+**   matrix camera:  model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning,
+**                   digits_lost
 ** (planes joined by '|'; a point clipping made has no v, but its segment and t). */
 
 /* Names whose bits are set in bits, joined by '|'. */
@@ -623,6 +625,8 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
         put(t, ",", 1);
     }
     put_names_csv(t, r->warn, pt_warn_names, PT_NWARN);
+    put(t, ",", 1);
+    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) put_i64(t, r->digits_lost);
     put(t, "\n", 1);
 }
 

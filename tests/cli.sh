@@ -82,15 +82,17 @@ fi
 n_vertex=$(grep -c '"type":"vertex"' "$tmp/out")
 run docs/examples/cube.scene --format csv
 check "cli-4.6 csv: one row per vertex record, plus a header row" test "$(echo "$out" | wc -l)" = $((n_vertex + 1))
-check "cli-4.7 csv header" test "$(echo "$out" | head -1)" = "model,v,stage,x,y,z,inside,behind,i,warning"
+check "cli-4.7 csv header" test "$(echo "$out" | head -1)" = "model,v,stage,x,y,z,inside,behind,i,warning,digits_lost"
 run docs/examples/lookat-near.scene --format jsonl
 n_matrix=$(grep -c '"type":"vertex"\|"type":"clipvertex"' "$tmp/out")
 run docs/examples/lookat-near.scene --format csv
 check "cli-4.7a matrix camera csv: a row per vertex and clipvertex record, every stage" test "$(echo "$out" | wc -l)" = $((n_matrix + 1)) -a "$(echo "$out" | cut -d, -f3 | sort -u | tr '\n' ' ')" = "clip cvv index model ndc screen stage viewport "
-check "cli-4.7b ... its header has w, code, planes, segment and t" test "$(echo "$out" | head -1)" = "model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning"
-check "cli-4.7c ... every row has the header's 14 fields" test "$(echo "$out" | awk -F, '{print NF}' | sort -u)" = 14
-check "cli-4.7d ... the cvv row has its code and planes" grep -qx 'stick,2,cvv,,,,,61,near|left|right|bottom|top,,,,,' "$tmp/out"
-check "cli-4.7e ... a point clipping made has its segment and t, and no v" grep -qx 'stick,,ndc,0.375,0.25,0,,,,,,1,0.375,' "$tmp/out"
+check "cli-4.7b ... its header has w, code, planes, segment and t" test "$(echo "$out" | head -1)" = "model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning,digits_lost"
+check "cli-4.7c ... every row has the header's 15 fields" test "$(echo "$out" | awk -F, '{print NF}' | sort -u)" = 15
+check "cli-4.7d ... the cvv row has its code and planes" grep -qx 'stick,2,cvv,,,,,61,near|left|right|bottom|top,,,,,,' "$tmp/out"
+check "cli-4.7e ... a point clipping made has its segment and t, and no v" grep -qx 'stick,,ndc,0.375,0.25,0,,,,,,1,0.375,,' "$tmp/out"
+run tests/extreme/cancel-translate.scene --format csv
+check "cli-4.7g csv: a warning's digits lost in the last column" grep -q ',cancellation,9$' "$tmp/out"
 cp docs/examples/triangle.scene "$tmp/bad$(printf '\377')name.scene"
 run "$tmp/bad$(printf '\377')name.scene" --format jsonl
 check "cli-4.7f a scene path that is not UTF-8 is written with U+FFFD, so the JSON stays valid" grep -q '"scene":"[^"]*bad\\ufffdname.scene"' "$tmp/out"
