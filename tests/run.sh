@@ -46,5 +46,6 @@ one accuracy   sh tests/accuracy.sh "$B/pipetrace"
 one journey    sh tests/journey.sh "$B/pipetrace"
 one browser    sh tests/journey_browser.sh "$B/pipetrace"
 one docs       sh tests/docs.sh "$B/pipetrace"
+one valgrind   sh tests/valgrind.sh "$B/pipetrace"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
