@@ -27,7 +27,11 @@ B       = build
 # of stages/s3_image2pixel.c; build/ stays the reference.  One variable a stage:
 # STAGE_camera (s1), STAGE_projection (s2), STAGE_pixel (s3), STAGE_viewport (s4),
 # STAGE_framebuffer (s5), STAGE_index (s6).  FILE.c includes its stage's header
-# by name (-Istages); $B/choice remembers the files, so a new choice rebuilds.
+# by name (-Istages); $B/choice remembers the files, so a new choice rebuilds
+# the stage objects (each depends on it), hence the library and the binary.
+# The stage rules below must not become the default goal: `make STAGE_x=F`
+# with no target builds $B/pipetrace.
+.DEFAULT_GOAL := all
 CHOICE  = camera=$(STAGE_camera) projection=$(STAGE_projection) pixel=$(STAGE_pixel) \
           viewport=$(STAGE_viewport) framebuffer=$(STAGE_framebuffer) index=$(STAGE_index)
 ifneq ($(strip $(STAGE_camera)$(STAGE_projection)$(STAGE_pixel)$(STAGE_viewport)$(STAGE_framebuffer)$(STAGE_index)),)
@@ -113,6 +117,6 @@ sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test
 
 clean:
-	rm -rf build build-san
+	rm -rf build build-san build-student
 
 .PHONY: all run test golden docs screenshots bench sanitize clean

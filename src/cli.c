@@ -19,22 +19,41 @@ int pt_cli_load(pt_scene *s, const char *path)
     return PT_EXIT_INPUT;
 }
 
-const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
-                                    const char *name, uint64_t v)
+const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *name)
 {
     size_t k;
 
-    for (k = 0; k < s->nmodels; k++) {
-        const pt_model *m = &s->models[k];
-        if (name ? strcmp(name, m->name) != 0 : m->nv < v) continue;
+    for (k = 0; k < s->nmodels; k++)
+        if (!strcmp(name, s->models[k].name)) return &s->models[k];
+    fprintf(stderr, "pipetrace %s: --model %s: %s has no model '%s' (", cmd, name, s->path,
+            name);
+    for (k = 0; k < s->nmodels; k++)
+        fprintf(stderr, "%s%s", k ? ", " : "its models: ", s->models[k].name);
+    fprintf(stderr, "%s)\n", s->nmodels ? "" : "it has no models");
+    return NULL;
+}
+
+const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
+                                    const char *name, uint64_t v)
+{
+    const pt_model *m;
+    size_t k, most = 0;
+
+    if (name) {
+        if (!(m = pt_cli_model(s, cmd, name))) return NULL;
         if (m->nv >= v) return m;
-        break;                              /* the named model is too small */
+        fprintf(stderr, "pipetrace %s: --vertex %llu: model %s of %s has no vertex %llu "
+                "(it has %zu)\n", cmd, (unsigned long long)v, m->name, s->path,
+                (unsigned long long)v, m->nv);
+        return NULL;
     }
-    if (name && k == s->nmodels)
-        fprintf(stderr, "pipetrace %s: %s has no model '%s'\n", cmd, s->path, name);
-    else
-        fprintf(stderr, "pipetrace %s: %s: no model%s%s has a vertex %llu\n", cmd, s->path,
-                name ? " " : "", name ? name : "", (unsigned long long)v);
+    for (k = 0; k < s->nmodels; k++) {
+        if (s->models[k].nv >= v) return &s->models[k];
+        if (s->models[k].nv > most) most = s->models[k].nv;
+    }
+    fprintf(stderr, "pipetrace %s: --vertex %llu: no model of %s has a vertex %llu "
+            "(the largest has %zu)\n", cmd, (unsigned long long)v, s->path,
+            (unsigned long long)v, most);
     return NULL;
 }
 

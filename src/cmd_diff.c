@@ -18,6 +18,11 @@
 ** classic camera's mistakes are known; matrix-camera traces are compared
 ** without naming any.
 **
+** A stage that one side lacks for a model, though that side's header does not
+** leave it out (identity, --stage) and the other side has it, did not report:
+** a student stage that never called pt_emit().  That is said first, and a
+** later stage's difference is not blamed on the later stage alone.
+**
 ** When every vertex agrees and the lit pixels differ, the rasterizer's
 ** rounding is checked the same way: each differing segment's DDA is run again
 ** from its rounded endpoints (its first and last steps in EXPECTED), first with
@@ -52,14 +57,15 @@ static const char diff_usage[] =
 "Compare two traces (JSON Lines or text, in any mix) vertex by vertex: for\n"
 "each vertex the first stage where they differ, both values, and the known\n"
 "mistake that reproduces ACTUAL from EXPECTED's previous stage, if one does;\n"
-"then the lit pixels.  Or compare two P6 images pixel by pixel.\n"
+"then the lit pixels.  Or compare two images pixel by pixel: binary (P6) or\n"
+"plain (P3) PPM, or PNG as pipetrace writes it (uncompressed).\n"
 "\n"
 "  --tol ABS         doubles agree when |a - b| <= max(ABS, REL * max(|a|, |b|))\n"
 "  --rel REL         (defaults 0 and 1e-9; integers must be equal); a text trace\n"
 "                    adds half a unit in its last printed digit\n"
 "  --show N          list at most N vertices and N pixels of each kind\n"
 "                    (default 10)\n"
-"  --image-out FILE  images: write FILE (PPM) with the differing pixels red and\n"
+"  --image-out FILE  images: write FILE (P6 PPM) with the differing pixels red and\n"
 "                    the others EXPECTED's, dimmed to gray\n"
 "\n"
 "Exit status: 0 same, 1 different (or a usage error), 2 unreadable input.\n"
@@ -258,8 +264,8 @@ static int image_diff(const dopts *o, const pt_ppm img[2])
     int differ = a->w != b->w || a->h != b->h || a->maxval != b->maxval;
 
     for (k = 0; k < 2; k++)
-        printf("%-9s %s  (P6, %d x %d, maxval %d)\n", side_name[k], o->path[k],
-               img[k].w, img[k].h, img[k].maxval);
+        printf("%-9s %s  (%s, %d x %d, maxval %d)\n", side_name[k], o->path[k],
+               img[k].format, img[k].w, img[k].h, img[k].maxval);
     if (a->w != b->w || a->h != b->h)
         printf("The sizes differ; pixels inside one image only count as different.\n");
     if (a->maxval != b->maxval)
@@ -387,6 +393,12 @@ typedef struct dctx {
     size_t stage_only[2][PT_NSTAGES_ALL];   /* records without a partner */
     size_t shown;                /* vertices listed */
     size_t *mk_hits;             /* per mistake: vertices it reproduces */
+    size_t agree_clip, differ_clip;     /* of agree and differ: matrix clip points */
+    unsigned *silent[2];         /* silent[s][model id]: bit st when side s has no
+                                 ** record of stage st for that model though its
+                                 ** header does not leave st out and the other side
+                                 ** has them: the stage did not report; owned */
+    size_t silent_recs[2][PT_NSTAGES_ALL];  /* the other side's records it lacks */
 } dctx;
 
 /* Slack of the number x read from side s: for a text trace, half a unit in
@@ -1008,9 +1020,11 @@ static void compare_vertex(dctx *c, const vent *e)
         st = pt_torder[k];
         i = e->rec[0][st];
         j = e->rec[1][st];
-        if (i == NONE || j == NONE) {
-            if (i != NONE) c->stage_only[0][st]++;
-            if (j != NONE) c->stage_only[1][st]++;
+        if (i == NONE || j == NONE) {       /* a silent stage, or one left out */
+            int lacking = i == NONE ? 0 : 1;    /* the side without it */
+            if (i == NONE && j == NONE) continue;
+            if (c->silent[lacking][e->model] & 1u << st) c->silent_recs[lacking][st]++;
+            else c->stage_only[!lacking][st]++;
             continue;
         }
         d = stage_diff(c, st, &c->t[0].vx[i], &c->t[1].vx[j]);
@@ -1024,8 +1038,13 @@ static void compare_vertex(dctx *c, const vent *e)
             later |= 1u << st;
         }
     }
-    if (first < 0) { c->agree++; return; }
+    if (first < 0) {
+        c->agree++;
+        c->agree_clip += (e->v & PT_TCLIPV) != 0;
+        return;
+    }
     c->differ++;
+    c->differ_clip += (e->v & PT_TCLIPV) != 0;
     c->first_at[first]++;
     if (c->shown >= c->o->show) { explain(c, e, first, 0); return; }
     c->shown++;
@@ -1036,6 +1055,14 @@ static void compare_vertex(dctx *c, const vent *e)
             printf("%s%s", nlater++ ? ", " : ", later at ", pt_stage_infos[pt_torder[k]].name);
     printf("\n");
     print_stage_diff(first, a, b, m);
+    for (k = 0; k < PT_NSTAGES_ALL && pt_torder[k] != first; k++) {
+        int sd;
+        for (sd = 0; sd < 2; sd++)
+            if (c->silent[sd][e->model] & 1u << pt_torder[k])
+                printf("    but %s has no %s record: that stage did not report, and the "
+                       "difference may start there\n", side_name[sd],
+                       pt_stage_infos[pt_torder[k]].name);
+    }
     explain(c, e, first, 1);
 }
 
@@ -1514,6 +1541,80 @@ static int fill_translations(dctx *c)
     return 0;
 }
 
+/* The stage files a student replaces, for the message on a silent stage. */
+static const char *stage_file(const dctx *c, int st)
+{
+    static const char *const file[PT_NSTAGES_ALL] = {
+        "stages/pt_classic.c", "stages/s1_model2camera.c", "stages/s2_camera2image.c",
+        "stages/s3_image2pixel.c", "stages/s4_pixel2viewport.c", "stages/s5_viewport2fb.c",
+        "stages/s6_fb2index.c", "stages/m1_model2world.c", "stages/m2_world2view.c",
+        "stages/m3_view2clip.c", "stages/m4_clip2cvv.c", "stages/m5_clip2ndc.c",
+        "stages/m6_ndc2screen.c",
+    };
+    if (st == PT_STAGE_VIEWPORT && c->t[0].hdr.perspective < 0)
+        return "stages/m7_screen2viewport.c";       /* the matrix camera floors */
+    return file[st];
+}
+
+/* Find the silent stages: for each model, a stage that side s lacks entirely
+** while it has records of other stages of that model, the other side has
+** records of it, and s's header does not leave it out.  A stage left out on
+** purpose (an identity, --stage) is in the header; a student stage that forgot
+** to call pt_emit() is not.  Returns 0, or -1 when out of memory. */
+static int find_silent(dctx *c)
+{
+    size_t n = c->nm.n ? c->nm.n : 1, k, m;
+    unsigned *has[2];
+    int s;
+
+    has[0] = calloc(n, sizeof *has[0]);
+    has[1] = calloc(n, sizeof *has[1]);
+    c->silent[0] = calloc(n, sizeof *c->silent[0]);
+    c->silent[1] = calloc(n, sizeof *c->silent[1]);
+    if (!has[0] || !has[1] || !c->silent[0] || !c->silent[1]) {
+        free(has[0]);
+        free(has[1]);
+        return -1;
+    }
+    for (s = 0; s < 2; s++)
+        for (k = 0; k < c->t[s].nvx; k++)
+            has[s][c->t[s].vx[k].model] |= 1u << c->t[s].vx[k].stage;
+    for (s = 0; s < 2; s++) {
+        const pt_thdr *h = &c->t[s].hdr;
+        for (k = 0; k < h->nmodels; k++) {
+            const pt_tmodel *tm = &h->models[k];
+            m = tm->name;
+            if (!tm->left_known || !has[s][m]) continue;
+            c->silent[s][m] = has[!s][m] & ~has[s][m] & ~tm->left_out;
+        }
+    }
+    free(has[0]);
+    free(has[1]);
+    return 0;
+}
+
+/* A silent stage, said plainly: it explains every later difference. */
+static void report_silent(const dctx *c)
+{
+    int s, st;
+    pbuf sb;
+
+    for (s = 0; s < 2; s++)
+        for (st = 0; st < PT_NSTAGES_ALL; st++) {
+            if (!c->silent_recs[s][st]) continue;
+            memset(&sb, 0, sizeof sb);
+            pb_add(&sb, "%s has no %s records: the stage did not report them. %s's header "
+                   "does not leave the %s stage out, and %s has %zu of them. A stage reports "
+                   "its record through the trace interface, pt_emit(sink, &r), as %s does "
+                   "(docs/teaching.md); its values were not compared, and a difference in a "
+                   "later stage may start there.", side_name[s], pt_stage_infos[st].name,
+                   side_name[s], pt_stage_infos[st].name, side_name[!s],
+                   c->silent_recs[s][st], stage_file(c, st));
+            para("", sb.b);
+            printf("\n");
+        }
+}
+
 /* The side-only vertices: count them and list a few. */
 static void report_one_sided(dctx *c)
 {
@@ -1557,6 +1658,32 @@ static void report_stage_only(const dctx *c)
     if (any) printf(".\n\n");
 }
 
+/* 1 when a stage of either side did not report (find_silent). */
+static int silent_any(const dctx *c)
+{
+    int s, st;
+
+    for (s = 0; s < 2; s++)
+        for (st = 0; st < PT_NSTAGES_ALL; st++)
+            if (c->silent_recs[s][st]) return 1;
+    return 0;
+}
+
+/* "vertices", or with clip points of the matrix camera among them "points
+** (3 vertices, 2 clip points)"; with `parts` the parts that agree: "points
+** (3 of 3 vertices, 0 of 2 clip points)". */
+static void points(pbuf *s, const dctx *c, int parts)
+{
+    size_t nclip = c->agree_clip + c->differ_clip, nv = c->agree + c->differ - nclip;
+
+    if (!nclip) { pb_add(s, "vertices"); return; }
+    if (parts)
+        pb_add(s, "points (%zu of %zu vertices, %zu of %zu clip points)",
+               c->agree - c->agree_clip, nv, c->agree_clip, nclip);
+    else
+        pb_add(s, "points (%zu vertices, %zu clip points)", nv, nclip);
+}
+
 /* The summary paragraph; returns the exit status. */
 static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                      const size_t nlit[2], int pixels_compared, const rstat *rs)
@@ -1566,30 +1693,50 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
     int st, top = -1, differ;
 
     memset(&s, 0, sizeof s);
-    differ = hdr_differ || c->differ || c->only[0] || c->only[1] || nmiss || nextra;
+    differ = hdr_differ || c->differ || c->only[0] || c->only[1] || nmiss || nextra ||
+             silent_any(c);
     if (!differ) {
-        pb_add(&s, "The traces agree: %zu of %zu vertices at every stage both hold", total, total);
+        pb_add(&s, "The traces agree: %zu of %zu ", total, total);
+        points(&s, c, 0);
+        pb_add(&s, " at every stage both hold");
         if (pixels_compared) pb_add(&s, ", and the same %zu lit pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
         else pb_add(&s, ".");
         para("", s.b);
         return EXIT_SAME;
     }
-    if (total) pb_add(&s, "%zu of %zu vertices agree", c->agree, total);
-    else pb_add(&s, "No vertex is in both traces");
+    for (k = 0; k < 2; k++)
+        for (st = 0; st < PT_NSTAGES_ALL; st++)
+            if (c->silent_recs[k][st])
+                pb_add(&s, "%s has no %s records: the stage did not report them. ",
+                       side_name[k], pt_stage_infos[st].name);
+    if (total) {
+        pb_add(&s, "%zu of %zu ", c->agree, total);
+        points(&s, c, 1);
+        pb_add(&s, " agree%s", c->agree == 1 ? "s" : "");
+    } else pb_add(&s, "No vertex is in both traces");
     if (c->differ) pb_add(&s, ", %zu differ%s", c->differ, c->differ > 1 ? "" : "s");
-    if (c->only[0]) pb_add(&s, ", %zu are only in EXPECTED", c->only[0]);
+    if (c->only[0])
+        pb_add(&s, ", %zu %s only in EXPECTED", c->only[0], c->only[0] > 1 ? "are" : "is");
     if (c->only[1]) pb_add(&s, ", %zu only in ACTUAL", c->only[1]);
     pb_add(&s, ".");
     for (st = 0; st < PT_NSTAGES_ALL; st++)
         if (c->first_at[st] && (top < 0 || c->first_at[st] > c->first_at[top])) top = st;
     if (top >= 0) {
         size_t best = NMISTAKES;
+        int quiet = -1;                     /* a silent stage before top */
+        for (k = 0; k < PT_NSTAGES_ALL && pt_torder[k] != top; k++)
+            if (c->silent_recs[0][pt_torder[k]] || c->silent_recs[1][pt_torder[k]])
+                quiet = pt_torder[k];
         pb_add(&s, " The stage that goes wrong first most often is %s (%zu of %zu)",
                pt_stage_infos[top].name, c->first_at[top], c->differ);
         for (st = 0; st < PT_NSTAGES_ALL; st++)
             if (st != top && c->first_at[st])
                 pb_add(&s, "; %s first for %zu", pt_stage_infos[st].name, c->first_at[st]);
         pb_add(&s, ".");
+        if (quiet >= 0)
+            pb_add(&s, " But the %s stage before it did not report, so the mistake may be "
+                   "there, not in the %s stage.", pt_stage_infos[quiet].name,
+                   pt_stage_infos[top].name);
         for (k = 0; k < NMISTAKES; k++)
             if (mistakes[k].stage == top && c->mk_hits[k] &&
                 (best == NMISTAKES || c->mk_hits[k] > c->mk_hits[best])) best = k;
@@ -1611,7 +1758,7 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
     }
     if (hdr_differ) pb_add(&s, " The headers differ.");
     if (pixels_compared && (nmiss || nextra)) {
-        int vertices_differ = c->differ || c->only[0] || c->only[1];
+        int vertices_differ = c->differ || c->only[0] || c->only[1] || silent_any(c);
         pb_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
                "%zu extra)", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
                nlit[0], nlit[1], nmiss, nextra);
@@ -1684,7 +1831,7 @@ static int trace_diff(dctx *c)
     memset(&rs, 0, sizeof rs);
     rc = fill_table(c);
     if (rc) return rc;
-    if (fill_translations(c) != 0) return -1;
+    if (fill_translations(c) != 0 || find_silent(c) != 0) return -1;
     c->mk_hits = calloc(NMISTAKES, sizeof *c->mk_hits);
     if (!c->mk_hits) return -1;
 
@@ -1702,13 +1849,15 @@ static int trace_diff(dctx *c)
     if (c->differ > c->shown) printf("... and %zu more vertices differ\n", c->differ - c->shown);
     if (c->differ) printf("\n");
     report_one_sided(c);
+    report_silent(c);
     report_stage_only(c);
 
     /* pixels: compared when both traces were rasterized with raster records */
     pixels_compared = (c->t[0].npx || c->t[0].ncl) && (c->t[1].npx || c->t[1].ncl);
     if (pixels_compared) {
         if (compare_pixels(c, &nmiss, &nextra, nlit) != 0) return -1;
-        if ((nmiss || nextra) && !c->differ && !c->only[0] && !c->only[1] && c->t[0].hdr.have) {
+        if ((nmiss || nextra) && !c->differ && !c->only[0] && !c->only[1] && !silent_any(c) &&
+            c->t[0].hdr.have) {
             if (check_raster(c, &rs) != 0) return -1;
             report_raster(c, &rs);
         }
@@ -1721,6 +1870,12 @@ static int trace_diff(dctx *c)
 }
 
 /* ===== the command ===== */
+
+/* 1 for the kinds of file that are images. */
+static int is_image(pt_tkind k)
+{
+    return k == PT_TK_PPM || k == PT_TK_P3 || k == PT_TK_PNG;
+}
 
 /* Read file s of o, and parse it when it is a trace (its buffer is then freed:
 ** only one file's text is held at a time).  Returns 0, or the exit status
@@ -1739,7 +1894,7 @@ static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
                 "write it with --format jsonl\n", c->o->path[s]);
         return EXIT_INPUT;
     }
-    if (*kind == PT_TK_PPM) return 0;
+    if (is_image(*kind)) return 0;
     if (pt_tread_parse(&c->t[s], c->o->path[s], *buf, *len, &c->nm, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return EXIT_INPUT;
@@ -1766,19 +1921,22 @@ int pt_cmd_diff(int argc, char **argv)
     c->o = &o;
     for (s = 0; s < 2; s++)
         if ((rc = load(c, s, &buf[s], &len[s], &kind[s])) != 0) goto done;
-    if ((kind[0] == PT_TK_PPM) != (kind[1] == PT_TK_PPM)) {
+    if (is_image(kind[0]) != is_image(kind[1])) {
         rc = usage_error("%s", "cannot compare an image with a trace");
-    } else if (kind[0] == PT_TK_PPM) {
+    } else if (is_image(kind[0])) {
         pt_ppm img[2];
+        memset(img, 0, sizeof img);
         for (s = 0; s < 2 && rc == 0; s++) {
-            if (pt_ppm_parse(&img[s], o.path[s], buf[s], len[s], err, sizeof err) != 0) {
+            if (pt_image_parse(&img[s], o.path[s], buf[s], len[s], err, sizeof err) != 0) {
                 fprintf(stderr, "%s\n", err);
                 rc = EXIT_INPUT;
             }
         }
         if (rc == 0) rc = image_diff(&o, img);
+        pt_image_free(&img[0]);
+        pt_image_free(&img[1]);
     } else if (o.image_out) {
-        rc = usage_error("%s", "--image-out needs two PPM images");
+        rc = usage_error("%s", "--image-out needs two images");
     } else {
         rc = trace_diff(c);
     }
@@ -1799,6 +1957,8 @@ done:
     free(c->tr);
     free(c->has_tr);
     free(c->mk_hits);
+    free(c->silent[0]);
+    free(c->silent[1]);
     free(c);
     free(buf[0]);
     free(buf[1]);

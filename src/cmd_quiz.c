@@ -165,8 +165,9 @@ static int ask(const pt_journey *j, int *asked)
             continue;
         }
         want = pt_coord_count((pt_stage)st);
-        if (n < 0)
-            printf("  wrong: expected %d number%s, or none\n", want, want > 1 ? "s" : "");
+        if (n < 0)                          /* only an integer stage may have none */
+            printf("  wrong: expected %d number%s%s\n", want, want > 1 ? "s" : "",
+                   int_stage(st) && st != PT_STAGE_CVV ? ", or none" : "");
         else if (n != want && !(j->rec[st].flags & PT_REC_NULL))
             printf("  wrong: expected %d number%s, found %d\n", want, want > 1 ? "s" : "", n);
         else printf("  wrong\n");
@@ -237,27 +238,12 @@ int pt_cmd_quiz(int argc, char **argv)
         pt_scene_free(&s);
         return EXIT_INPUT;
     }
-    if (model) {
-        for (mi = 0; mi < s.nmodels && !m; mi++)
-            if (!strcmp(model, s.models[mi].name)) m = &s.models[mi];
-        if (!m) {
-            fprintf(stderr, "pipetrace quiz: %s has no model '%s'\n", s.path, model);
-            pt_scene_free(&s);
-            return EXIT_INPUT;
-        }
-        m = NULL;
+    if (v) m = pt_cli_vertex_model(&s, "quiz", model, v);
+    if ((v && !m) || (!v && model && !pt_cli_model(&s, "quiz", model))) {
+        pt_scene_free(&s);
+        return EXIT_INPUT;
     }
-    if (v) {
-        for (mi = 0; mi < s.nmodels && !m; mi++)
-            if (model ? !strcmp(model, s.models[mi].name) : s.models[mi].nv >= v)
-                m = &s.models[mi];
-        if (!m || m->nv < v) {
-            fprintf(stderr, "pipetrace quiz: %s: no model%s%s has a vertex %llu\n", s.path,
-                    model ? " " : "", model ? model : "", v);
-            pt_scene_free(&s);
-            return EXIT_INPUT;
-        }
-    } else {
+    if (!v) {
         uint64_t total = 0, st;
         size_t q;
 

@@ -299,10 +299,12 @@ static void explain_viewport(text *t, const pt_journey *j, int k)
         v = j->par.h - r;
     }
     add_int(t, v, 0);
-    if (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL) {
-        add(t, ", but the pixel has no value: ");
+    if (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL) {   /* the other one has none */
+        add(t, ", but the viewport pixel has no value: ");
+        add(t, coord_names[PT_STAGE_VIEWPORT][1 - k]);
+        add(t, " has none (");
         add(t, coord_names[PT_STAGE_PIXEL][1 - k]);
-        add(t, " has none");
+        add(t, isfinite(comp(pp, 1 - k)) ? " is beyond 2^62)" : " is not finite)");
     }
 }
 
@@ -474,16 +476,34 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
 
 /* ===== values as a tuple ===== */
 
+/* The numbers of r (stage st) alone: "(-1, -1, -2)", "144", "none". */
+static void add_tuple(text *t, const pt_vrec *r, pt_stage st)
+{
+    int k, n = pt_coord_count(st);
+
+    if (st == PT_STAGE_CVV) add_int(t, r->code, 0);
+    else if (r->flags & PT_REC_NULL) add(t, "none");
+    else if (st == PT_STAGE_INDEX) add_int(t, r->i, 0);
+    else if (st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER) add_pair(t, r->ix, r->iy);
+    else {
+        add(t, "(");
+        for (k = 0; k < n; k++) {
+            if (k) add(t, ", ");
+            add_num(t, comp(r, k), 0);
+        }
+        add(t, ")");
+    }
+}
+
 size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st)
 {
-    const pt_vrec *r = &j->rec[st];
     text t;
     int k, n = pt_coord_count(st);
 
     text_init(&t, buf, len);
     if ((int)st >= PT_NSTAGES_ALL) return 0;
-    if (st == PT_STAGE_CVV) { add(&t, "code = "); add_int(&t, r->code, 0); return t.len; }
-    if (n == 1) add(&t, "idx = ");
+    if (st == PT_STAGE_CVV) add(&t, "code = ");
+    else if (n == 1) add(&t, "idx = ");
     else {
         add(&t, "(");
         for (k = 0; k < n; k++) {
@@ -492,17 +512,16 @@ size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st
         }
         add(&t, ") = ");
     }
-    if (r->flags & PT_REC_NULL) add(&t, "none");
-    else if (st == PT_STAGE_INDEX) add_int(&t, r->i, 0);
-    else if (st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER) add_pair(&t, r->ix, r->iy);
-    else {
-        add(&t, "(");
-        for (k = 0; k < n; k++) {
-            if (k) add(&t, ", ");
-            add_num(&t, comp(r, k), 0);
-        }
-        add(&t, ")");
-    }
+    add_tuple(&t, &j->rec[st], st);
+    return t.len;
+}
+
+size_t pt_explain_tuple(char *buf, size_t len, const pt_journey *j, pt_stage st)
+{
+    text t;
+
+    text_init(&t, buf, len);
+    if ((int)st < PT_NSTAGES_ALL) add_tuple(&t, &j->rec[st], st);
     return t.len;
 }
 

@@ -88,6 +88,10 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
 ** "idx = 144", "(x_vp, y_vp) = none".  Returns the length.  Can't fail. */
 size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st);
 
+/* Stage st's values in j without their names: "(-1, -1, -2)", "144",
+** "none".  Returns the length.  This function can't fail. */
+size_t pt_explain_tuple(char *buf, size_t len, const pt_journey *j, pt_stage st);
+
 /* What the result of stage st means for the stages after it, in one sentence:
 ** "outside the viewport: its pixel is clipped ...", "behind the camera (z_c >
 ** 0): projected mirrored ...".  Returns the length.  This function can't fail. */

@@ -1,5 +1,5 @@
 /*
-** src/tread.c -- read traces (JSON Lines or text) and P6 images back into memory
+** src/tread.c -- read traces (JSON Lines or text) and images back into memory
 ** See LICENSE for copyright and license.
 **
 ** One pass over the buffer, one line at a time, no allocation per line: a
@@ -16,12 +16,16 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tread.h"
+#include "png.h"
 
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
 #else
 #define PRINTF_LIKE(f, a)
 #endif
+
+/* The images pt_image_parse() reads, for messages. */
+#define IMG_FORMATS "binary PPM (P6), plain PPM (P3), or PNG as pipetrace writes it"
 
 /* ===== interned names ===== */
 
@@ -197,7 +201,11 @@ pt_tkind pt_tread_kind(const char *buf, size_t len)
     static const char text[] = "# pipetrace trace";
     static const char csv[] = "model,v,stage,";
 
+    static const char png[] = "\211PNG\r\n\032\n";
+
     if (len >= 2 && buf[0] == 'P' && buf[1] == '6') return PT_TK_PPM;
+    if (len >= 2 && buf[0] == 'P' && buf[1] == '3') return PT_TK_P3;
+    if (len >= sizeof png - 1 && memcmp(buf, png, sizeof png - 1) == 0) return PT_TK_PNG;
     if (len >= 1 && buf[0] == '{') return PT_TK_JSONL;
     if (len >= sizeof text - 1 && memcmp(buf, text, sizeof text - 1) == 0) return PT_TK_TEXT;
     if (len >= sizeof csv - 1 && memcmp(buf, csv, sizeof csv - 1) == 0) return PT_TK_CSV;
@@ -812,7 +820,23 @@ static int j_header(rd *r, const jfield *f, int nf)
         if (j_fields(r, &item, g, &ng) != 0) return -1;
         if (grow(r, (void **)&h->models, h->nmodels, &h->cap, sizeof *h->models)) return -1;
         m = &h->models[h->nmodels++];
+        memset(m, 0, sizeof *m);
         if (jmodel(r, g, ng, "header model", &m->name) != 0) return -1;
+        if ((tr = j_get(g, ng, "left_out")) != NULL) {  /* [{"stage":..,"why":..}, ..] */
+            const char *lpos = NULL;
+            jfield lf[J_MAXFIELDS];
+            int nlf, st;
+            if (tr->kind != J_ARR) return fail(r, tr->p, "expected a list of stages left out");
+            while (j_item(r, tr, &lpos, &x)) {
+                const jval *sv;
+                if (x.kind != J_OBJ || j_fields(r, &x, lf, &nlf) != 0 ||
+                    !(sv = j_get(lf, nlf, "stage")) || sv->kind != J_STR ||
+                    (st = stage_named(sv->p, (size_t)(sv->e - sv->p))) < 0)
+                    return fail(r, x.p, "expected {\"stage\":NAME,\"why\":..}");
+                m->left_out |= 1u << st;
+            }
+            m->left_known = 1;
+        }
         if (!(tr = need(r, g, ng, "translate", "header model"))) return -1;
         if (tr->kind != J_ARR) return fail(r, tr->p, "expected [x,y,z]");
         for (k = 0; k < 3; k++) {
@@ -1086,6 +1110,15 @@ static int text_header_line(rd *r)
     size_t n;
 
     word(&c, &w, &n);
+    if (starts(r, "  left out ")) {         /* "  left out   STAGE: why", of the last model */
+        int st;
+        if (!word(&c, &w, &n) || !word(&c, &w, &n) || n < 2 || w[n - 1] != ':' ||
+            (st = stage_named(w, n - 1)) < 0)
+            return fail(r, w, "expected 'left out   STAGE: why'");
+        if (!h->nmodels) return fail(r, r->line, "'left out' before any 'model' line");
+        h->models[h->nmodels - 1].left_out |= 1u << st;
+        return 0;
+    }
     if (starts(r, "scene ") || starts(r, "obj placed ") || starts(r, "  ") ||
         starts(r, "projection ") || starts(r, "view ")) return 0;  /* nothing diff needs */
     if (is(w, n, "framebuffer")) return t_size(r, &c, &h->fb_w, &h->fb_h);
@@ -1125,6 +1158,8 @@ static int text_header_line(rd *r)
             return fail(r, name, "expected 'NAME:' after 'model'");
         if (grow(r, (void **)&h->models, h->nmodels, &h->cap, sizeof *h->models)) return -1;
         m = &h->models[h->nmodels++];
+        memset(m, 0, sizeof *m);
+        m->left_known = 1;                  /* its "left out" lines follow */
         if (pt_names_intern(r->nm, name, n - 1, &m->name) != 0) return oom(r);
         while (word(&c, &w, &n) && !is(w, n, "translate")) ;
         if (n == 0) return fail(r, w, "expected 'translate X Y Z'");
@@ -1151,7 +1186,7 @@ int pt_tread_parse(pt_tread *t, const char *path, const char *buf, size_t len,
 {
     rd r;
     const char *p = buf, *end = buf + len;
-    enum { HEADER, RECORDS, SUMMARY } state = HEADER;
+    enum { HEADER, RECORDS, SUMMARY, END } state = HEADER;
     int rc = 0;
 
     memset(t, 0, sizeof *t);
@@ -1167,7 +1202,8 @@ int pt_tread_parse(pt_tread *t, const char *path, const char *buf, size_t len,
     r.lineno = 1;
     if (t->kind != PT_TK_JSONL && t->kind != PT_TK_TEXT) {
         r.eol = buf;
-        rc = fail(&r, buf, "not a pipetrace trace in JSON Lines or text");
+        rc = fail(&r, buf, "not a pipetrace trace (JSON Lines or text) nor an image "
+                  "(" IMG_FORMATS ")");
     }
     while (rc == 0 && p < end) {
         const char *nl = memchr(p, '\n', (size_t)(end - p));
@@ -1189,11 +1225,19 @@ int pt_tread_parse(pt_tread *t, const char *path, const char *buf, size_t len,
             rc = text_header_line(&r);
         } else if (starts(&r, "summary") && r.eol - p == 7) {
             state = SUMMARY;
+        } else if (state == SUMMARY && starts(&r, "  rasterized ")) {
+            state = END;                    /* the summary's last line */
         } else if (state == RECORDS && *p != ' ') {
             rc = text_record(&r);
         }                                   /* else: summary lines, --explain lines */
         p = nl ? nl + 1 : end;
         r.lineno++;
+    }
+    if (rc == 0 && t->kind == PT_TK_TEXT && state != END) {  /* a text trace ends with */
+        r.lineno--;                                          /* its summary: cut short */
+        rc = fail(&r, r.eol, "the trace ends %s: it was cut short (a text trace ends "
+                  "with its summary)", state == HEADER ? "inside its header"
+                  : state == RECORDS ? "before its summary" : "inside its summary");
     }
     free(r.sbuf);
     if (rc != 0) {
@@ -1213,6 +1257,23 @@ void pt_tread_free(pt_tread *t)
 }
 
 /* ===== images ===== */
+
+/* Write "FILE:1:1: error: ..." to err; returns -1. */
+static int img_fail(char *err, size_t errlen, const char *path, const char *fmt, ...)
+    PRINTF_LIKE(4, 5);
+static int img_fail(char *err, size_t errlen, const char *path, const char *fmt, ...)
+{
+    va_list ap;
+    int k = snprintf(err, errlen, "%s:1:1: error: ", path);
+    size_t n = k < 0 ? 0 : (size_t)k;
+
+    if (n < errlen) {
+        va_start(ap, fmt);
+        vsnprintf(err + n, errlen - n, fmt, ap);
+        va_end(ap);
+    }
+    return -1;
+}
 
 /* Skip whitespace and '#' comments in a PPM header. */
 static size_t ppm_ws(const char *b, size_t k, size_t len)
@@ -1237,31 +1298,208 @@ static int ppm_num(const char *b, size_t *k, size_t len, int *out)
     return 0;
 }
 
-int pt_ppm_parse(pt_ppm *img, const char *path, const char *buf, size_t len,
-                 char *err, size_t errlen)
+/* "P6 W H MAXVAL" or "P3 ...": the header of either PPM, up to the pixels. */
+static int ppm_header(pt_ppm *img, const char *path, const char *buf, size_t len, size_t *k,
+                      char *err, size_t errlen)
 {
-    size_t k = 2;
+    *k = 2;
+    if (ppm_num(buf, k, len, &img->w) || ppm_num(buf, k, len, &img->h) ||
+        ppm_num(buf, k, len, &img->maxval) || img->w < 1 || img->h < 1 ||
+        img->maxval < 1 || img->maxval > 255 || *k >= len ||
+        (buf[*k] != ' ' && buf[*k] != '\t' && buf[*k] != '\n' && buf[*k] != '\r'))
+        return img_fail(err, errlen, path, "bad %s header: expected '%s W H MAXVAL' with "
+                        "sizes 1..65535 and MAXVAL 1..255", img->format, img->format);
+    ++*k;                                   /* the one whitespace byte */
+    return 0;
+}
 
-    memset(img, 0, sizeof *img);
-    if (len < 2 || buf[0] != 'P' || buf[1] != '6') {
-        snprintf(err, errlen, "%s:1:1: error: not a binary PPM image (P6)", path);
-        return -1;
-    }
-    if (ppm_num(buf, &k, len, &img->w) || ppm_num(buf, &k, len, &img->h) ||
-        ppm_num(buf, &k, len, &img->maxval) || img->w < 1 || img->h < 1 ||
-        img->maxval < 1 || img->maxval > 255 || k >= len ||
-        (buf[k] != ' ' && buf[k] != '\t' && buf[k] != '\n' && buf[k] != '\r')) {
-        snprintf(err, errlen, "%s:1:1: error: bad P6 header: expected 'P6 W H MAXVAL' "
-                 "with sizes 1..65535 and MAXVAL 1..255", path);
-        return -1;
-    }
-    k++;                                    /* the one whitespace byte */
-    if ((len - k) / 3 / (size_t)img->w < (size_t)img->h) {
-        snprintf(err, errlen, "%s:1:1: error: the image is cut short: %d x %d pixels need "
-                 "%zu bytes, the file has %zu", path, img->w, img->h,
-                 3 * (size_t)img->w * (size_t)img->h, len - k);
-        return -1;
-    }
+static int p6_parse(pt_ppm *img, const char *path, const char *buf, size_t len,
+                    char *err, size_t errlen)
+{
+    size_t k;
+
+    if (ppm_header(img, path, buf, len, &k, err, errlen) != 0) return -1;
+    if ((len - k) / 3 / (size_t)img->w < (size_t)img->h)
+        return img_fail(err, errlen, path, "the image is cut short: %d x %d pixels need "
+                        "%zu bytes, the file has %zu", img->w, img->h,
+                        3 * (size_t)img->w * (size_t)img->h, len - k);
     img->rgb = (const unsigned char *)buf + k;
     return 0;
+}
+
+/* Plain PPM: the samples as decimal numbers separated by whitespace. */
+static int p3_parse(pt_ppm *img, const char *path, const char *buf, size_t len,
+                    char *err, size_t errlen)
+{
+    size_t k, i, n;
+    int v;
+
+    if (ppm_header(img, path, buf, len, &k, err, errlen) != 0) return -1;
+    n = 3 * (size_t)img->w * (size_t)img->h;
+    if (!(img->owned = malloc(n))) return img_fail(err, errlen, path, "out of memory");
+    for (i = 0; i < n; i++) {
+        if (ppm_num(buf, &k, len, &v) != 0 || v > img->maxval) {
+            pt_image_free(img);
+            return img_fail(err, errlen, path, "sample %zu of %zu: expected a number "
+                            "0..%d%s", i + 1, n, img->maxval,
+                            ppm_ws(buf, k, len) >= len ? " (the image is cut short)" : "");
+        }
+        img->owned[i] = (unsigned char)v;
+    }
+    img->rgb = img->owned;
+    return 0;
+}
+
+static uint32_t rd32(const unsigned char *p)
+{
+    return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
+}
+
+/* The Paeth predictor of the PNG specification, section 9.4. */
+static int paeth(int a, int b, int c)
+{
+    int p = a + b - c, pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
+
+    return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+}
+
+/* Undo each row's filter in place (raw: h rows of 1 + 3w bytes) into rgb. */
+static int png_unfilter(const unsigned char *raw, unsigned char *rgb, int w, int h)
+{
+    size_t stride = 3 * (size_t)w, x;
+    int y;
+
+    for (y = 0; y < h; y++) {
+        const unsigned char *in = raw + (size_t)y * (stride + 1);
+        unsigned char *out = rgb + (size_t)y * stride;
+        const unsigned char *up = y ? out - stride : NULL;
+        int f = in[0];
+
+        if (f > 4) return -1;
+        for (x = 0; x < stride; x++) {
+            int a = x >= 3 ? out[x - 3] : 0, b = up ? up[x] : 0, c = up && x >= 3 ? up[x - 3] : 0;
+            int pred = f == 1 ? a : f == 2 ? b : f == 3 ? (a + b) / 2 : f == 4 ? paeth(a, b, c) : 0;
+            out[x] = (unsigned char)(in[1 + x] + pred);
+        }
+    }
+    return 0;
+}
+
+/* A PNG as png.h describes what pipetrace writes; stored deflate blocks only
+** (a compressed stream is refused: decoding Huffman codes is not worth its
+** size here), every filter type. */
+static int png_parse(pt_ppm *img, const char *path, const char *buf, size_t len,
+                     char *err, size_t errlen)
+{
+    const unsigned char *b = (const unsigned char *)buf;
+    unsigned char *z = NULL, *raw = NULL;
+    size_t k = 8, nz = 0, nraw = 0, want = 0, zk;
+    int have_ihdr = 0, ended = 0;
+    const char *why = NULL;
+
+    img->maxval = 255;
+    while (!why && !ended) {                /* the chunks; IDAT data gathered in z */
+        uint32_t n;
+        const unsigned char *type, *data;
+
+        if (len - k < 12) { why = "the file is cut short (no IEND chunk)"; break; }
+        n = rd32(b + k);
+        type = b + k + 4;
+        data = b + k + 8;
+        if (n > len - k - 12) { why = "a chunk runs past the end of the file"; break; }
+        if (pt_crc32(pt_crc32(0, type, 4), data, n) != rd32(data + n)) {
+            why = "a chunk's CRC does not match: the file is damaged";
+            break;
+        }
+        if (!memcmp(type, "IHDR", 4)) {
+            if (n != 13) { why = "bad IHDR chunk"; break; }
+            if (rd32(data) < 1 || rd32(data) > 65535 || rd32(data + 4) < 1 ||
+                rd32(data + 4) > 65535) { why = "sizes outside 1..65535"; break; }
+            img->w = (int)rd32(data);
+            img->h = (int)rd32(data + 4);
+            if (data[8] != 8 || data[9] != 2 || data[10] != 0 || data[11] != 0 || data[12] != 0)
+                why = "not 8-bit RGB without interlace, as pipetrace writes it";
+            want = (1 + 3 * (size_t)img->w) * (size_t)img->h;
+            have_ihdr = 1;
+        } else if (!memcmp(type, "IDAT", 4)) {
+            unsigned char *nzb;
+            if (!have_ihdr) { why = "IDAT before IHDR"; break; }
+            if (!(nzb = realloc(z, nz + n + 1))) { why = "out of memory"; break; }
+            z = nzb;
+            memcpy(z + nz, data, n);
+            nz += n;
+        } else if (!memcmp(type, "IEND", 4)) {
+            ended = 1;
+        } else if (!(type[0] & 0x20)) {
+            why = "a critical chunk other than IHDR, IDAT, IEND";
+        }
+        k += 12 + (size_t)n;
+    }
+    if (!why && !have_ihdr) why = "no IHDR chunk";
+    if (!why && want > nz) why = "the image data is cut short";  /* stored: raw <= nz */
+    if (!why && !(raw = malloc(want))) why = "out of memory";
+    /* the zlib stream: CMF FLG, then stored blocks BFINAL|BTYPE, LEN, NLEN, bytes */
+    if (!why && (nz < 2 || (z[0] & 0x0f) != 8 || (z[0] << 8 | z[1]) % 31 != 0 || (z[1] & 0x20)))
+        why = "bad zlib header in IDAT";
+    for (zk = 2; !why; ) {
+        unsigned blen;
+        int final;
+        if (nz - zk < 5) { why = "the image data is cut short"; break; }
+        if ((z[zk] >> 1 & 3) != 0) {
+            why = "its image data is compressed; pipetrace diff reads only the uncompressed "
+                  "PNG that pipetrace writes (convert the image to P6 PPM, e.g. "
+                  "'pngtopnm A.png > A.ppm')";
+            break;
+        }
+        final = z[zk] & 1;
+        blen = (unsigned)z[zk + 1] | (unsigned)z[zk + 2] << 8;
+        if ((blen ^ ((unsigned)z[zk + 3] | (unsigned)z[zk + 4] << 8)) != 0xffffu) {
+            why = "bad stored block in the image data (LEN and NLEN disagree)";
+            break;
+        }
+        zk += 5;
+        if (blen > nz - zk || blen > want - nraw) {
+            why = blen > nz - zk ? "the image data is cut short"
+                                 : "more image data than the size needs";
+            break;
+        }
+        memcpy(raw + nraw, z + zk, blen);
+        nraw += blen;
+        zk += blen;
+        if (final) break;
+    }
+    if (!why && nraw != want) why = "the image data is cut short";
+    if (!why && (nz - zk < 4 || rd32(z + zk) != pt_adler32(1, raw, nraw)))
+        why = "the image data's Adler-32 does not match: the file is damaged";
+    if (!why && !(img->owned = malloc(3 * (size_t)img->w * (size_t)img->h))) why = "out of memory";
+    if (!why && png_unfilter(raw, img->owned, img->w, img->h) != 0) why = "unknown row filter";
+    free(z);
+    free(raw);
+    if (why) {
+        pt_image_free(img);
+        return img_fail(err, errlen, path, "PNG: %s", why);
+    }
+    img->rgb = img->owned;
+    return 0;
+}
+
+int pt_image_parse(pt_ppm *img, const char *path, const char *buf, size_t len,
+                   char *err, size_t errlen)
+{
+    pt_tkind kind = pt_tread_kind(buf, len);
+
+    memset(img, 0, sizeof *img);
+    img->format = kind == PT_TK_PNG ? "PNG" : kind == PT_TK_P3 ? "P3" : "P6";
+    if (kind == PT_TK_PPM) return p6_parse(img, path, buf, len, err, errlen);
+    if (kind == PT_TK_P3) return p3_parse(img, path, buf, len, err, errlen);
+    if (kind == PT_TK_PNG) return png_parse(img, path, buf, len, err, errlen);
+    return img_fail(err, errlen, path, "not an image pipetrace diff reads: "
+                    "%s", IMG_FORMATS);
+}
+
+void pt_image_free(pt_ppm *img)
+{
+    free(img->owned);
+    img->owned = NULL;
+    img->rgb = NULL;
 }

@@ -1,5 +1,5 @@
 /*
-** src/tread.h -- read traces (JSON Lines or text) and P6 images back into memory
+** src/tread.h -- read traces (JSON Lines or text) and images back into memory
 ** See LICENSE for copyright and license.
 **
 ** The reader of what pipetrace writes, for `pipetrace diff`.  A whole file is
@@ -16,7 +16,7 @@
 **   pt_names nm = PT_NAMES_INIT;
 **   char *buf; size_t len;
 **   pt_tread_file(path, &buf, &len, err, sizeof err);    whole file, NUL-terminated
-**   pt_tread_kind(buf, len)                              JSONL, text, CSV or PPM?
+**   pt_tread_kind(buf, len)                              JSONL, text, CSV, image?
 **   pt_tread t;  pt_tread_parse(&t, path, buf, len, &nm, err, sizeof err);
 **   ... t.vx[k], t.px[k], t.cl[k], t.hdr ...
 **   pt_tread_free(&t);  pt_names_free(&nm);  free(buf);
@@ -107,10 +107,15 @@ typedef struct pt_tclip {
     uint32_t model;              /* name id */
 } pt_tclip;
 
-/* A model as the header describes it. */
+/* A model as the header describes it.  With left_known set, a stage whose
+** bit is clear in left_out is one the trace says it reports: a record of it
+** missing for a vertex that has others is a stage that did not report. */
 typedef struct pt_tmodel {
     uint32_t name;               /* name id */
     double t[3];                 /* translation (x_t, y_t, z_t) */
+    unsigned left_out;           /* bit st: the header leaves stage st out */
+    int left_known;              /* 1: the header says which stages it leaves out
+                                 ** (text: always; JSON Lines: "left_out") */
 } pt_tmodel;
 
 /* The header: what the formulas need besides the vertex's own numbers. */
@@ -130,7 +135,9 @@ typedef enum pt_tkind {
     PT_TK_JSONL,                 /* a trace in JSON Lines: starts with '{' */
     PT_TK_TEXT,                  /* a text trace: "# pipetrace trace" */
     PT_TK_CSV,                   /* a CSV trace: "model,v,stage," */
-    PT_TK_PPM                    /* a binary PPM image: "P6" */
+    PT_TK_PPM,                   /* a binary PPM image: "P6" */
+    PT_TK_PNG,                   /* a PNG image: its 8-byte signature */
+    PT_TK_P3                     /* a plain (ASCII) PPM image: "P3" */
 } pt_tkind;
 
 /* A trace read back. */
@@ -165,16 +172,26 @@ void pt_tread_free(pt_tread *t);
 
 /* ===== images ===== */
 
-/* A binary PPM image; rgb points into the buffer it was parsed from. */
+/* An image to compare: a binary PPM (P6), a plain PPM (P3), or a PNG as
+** pipetrace writes it (8-bit RGB, no interlace, stored deflate blocks: png.h).
+** For P6, rgb points into the buffer it was parsed from; P3 and PNG are
+** decoded into `owned`, which pt_image_free() frees. */
 typedef struct pt_ppm {
     int w, h;                    /* size in pixels */
-    int maxval;                  /* 1..255 */
+    int maxval;                  /* 1..255 (PNG: 255) */
     const unsigned char *rgb;    /* 3*w*h bytes, row-major, top row first */
+    unsigned char *owned;        /* the decoded pixels, or NULL; owned */
+    const char *format;          /* "P6", "P3" or "PNG" */
 } pt_ppm;
 
-/* Parse the P6 image in buf[0..len), named path in messages.  Returns 0, or -1
-** with a message in err. */
-int pt_ppm_parse(pt_ppm *img, const char *path, const char *buf, size_t len,
-                 char *err, size_t errlen);
+/* Parse the image in buf[0..len) (buf[len] == '\0'), named path in messages,
+** whichever of the three formats it is.  Returns 0, or -1 with "FILE:1:1:
+** error: ..." in err, naming the formats read when it is none of them; then
+** *img holds nothing to free.  Free a parsed image with pt_image_free(). */
+int pt_image_parse(pt_ppm *img, const char *path, const char *buf, size_t len,
+                   char *err, size_t errlen);
+
+/* Free what *img owns.  This function can't fail. */
+void pt_image_free(pt_ppm *img);
 
 #endif

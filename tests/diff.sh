@@ -7,7 +7,8 @@
 # in place of its stage (make STAGE_x=FILE, the Makefile's student block),
 # renders a scene of tests/data/diff/ that exposes the mistake, and checks that
 # `PIPETRACE diff REFERENCE STUDENT` exits 1 and names that mistake and no
-# other.  Then: agreeing traces, text against JSON Lines, bad input, images.
+# other.  Then: a stage that reports nothing, the documented `make STAGE_x=F`
+# itself, agreeing traces, text against JSON Lines, bad input, images.
 exe=$1
 . tests/testlib.sh
 data=tests/data/diff
@@ -20,7 +21,9 @@ data=tests/data/diff
 # then it compiles everything.
 mkdir -p "$tmp/sb"
 bdir=$(dirname "$exe")
+reuse=
 if [ -f "$bdir/main.o" ] && [ -f "$bdir/builtin.c" ] && ! grep -q __asan_ "$bdir/main.o"; then
+    reuse=1
     cp -p "$bdir"/*.o "$bdir/builtin.c" "$tmp/sb/"
 fi
 student() {
@@ -94,6 +97,69 @@ check "diff-1.17 $data/ties.jsonl is today's reference trace (else: make, then $
 check "diff-1.18 $data/ties-cround.jsonl is today's student trace (else: make STAGE_viewport=tests/student/s4_cround.c, then build-student/pipetrace ...)" \
     cmp "$tmp/ties-cround.jsonl" $data/ties-cround.jsonl
 
+# the stored traces of exercises 3 and 4 (docs/exercises/README.md says how
+# they are made)
+student pixel tests/student/s3_two.c
+"$tmp/sb/pipetrace" docs/exercises/03-pixel.scene --format jsonl --trace "$tmp/ex3.jsonl"
+check "diff-1.19 docs/exercises/03-pixel-two.jsonl is today's student trace (else: make it again as docs/exercises/README.md says)" \
+    cmp "$tmp/ex3.jsonl" docs/exercises/03-pixel-two.jsonl
+student viewport tests/student/s4_cround.c
+"$tmp/sb/pipetrace" docs/exercises/04-rounding.scene --format jsonl --trace "$tmp/ex4.jsonl"
+check "diff-1.20 docs/exercises/04-rounding-cround.jsonl is today's student trace (else: make it again as docs/exercises/README.md says)" \
+    cmp "$tmp/ex4.jsonl" docs/exercises/04-rounding-cround.jsonl
+
+# ---- a student stage that reports nothing: said plainly, the next stage not blamed
+"$exe" $data/offset.scene --format jsonl --trace "$tmp/want.jsonl"
+student projection tests/student/s2_silent.c
+"$tmp/sb/pipetrace" $data/offset.scene --format jsonl --trace "$tmp/got.jsonl"
+"$tmp/sb/pipetrace" $data/offset.scene --trace "$tmp/got.txt"
+"$exe" diff "$tmp/want.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1
+check "diff-8.1 a stage that does not report: exit 1" test $? = 1
+check "diff-8.2 ... said plainly" grep -q "^ACTUAL has no image records: the stage did not report them" "$tmp/out"
+check "diff-8.3 ... with the call it must make" grep -qF "pt_emit(sink, &r)" "$tmp/out"
+check "diff-8.4 ... not as a stage left out on purpose" test "$(grep -c 'Not compared' "$tmp/out")" = 0
+"$exe" diff "$tmp/got.txt" "$tmp/want.jsonl" >"$tmp/out" 2>&1
+check "diff-8.5 ... on either side, in text too" grep -q "^EXPECTED has no image records: the stage did not report them" "$tmp/out"
+sed '/pt_emit(sink, &r);/d' tests/student/s2_divz.c > "$tmp/s2_divz_silent.c"
+student projection "$tmp/s2_divz_silent.c"
+"$tmp/sb/pipetrace" $data/offset.scene --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/want.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1
+check "diff-8.6 silent and wrong: the pixel records differ first ..." grep -q "^box v1: differs first at pixel" "$tmp/out"
+check "diff-8.7 ... but the silent stage is named as the likely place" \
+    grep -q "^    but ACTUAL has no image record: that stage did not report, and the difference may start there" "$tmp/out"
+awk 'BEGIN { RS = "" } { p = $0 } END { print p }' "$tmp/out" | tr '\n' ' ' >"$tmp/summary"
+check "diff-8.8 ... in the summary too" grep -qF "the mistake may be there, not in the pixel stage" "$tmp/summary"
+"$exe" $data/offset.scene --stage pixel --stage viewport --format jsonl --trace "$tmp/some.jsonl"
+"$exe" diff "$tmp/want.jsonl" "$tmp/some.jsonl" >"$tmp/out" 2>&1
+check "diff-8.9 stages left out by --stage are not a silent stage: exit 0" test $? = 0
+check "diff-8.10 ... but not compared" grep -q "^Not compared: model records are only in EXPECTED" "$tmp/out"
+
+# ---- the documented student build, exactly: `make STAGE_projection=FILE`, no
+# target, in a copy of the repository.  It must build build-student/pipetrace
+# with FILE, and another choice must rebuild it.  (2024 audit: the first stage
+# rule was the default goal, so only build-student/s1_model2camera.o was built.)
+repo="$tmp/repo"
+mkdir -p "$repo/docs/examples" "$repo/tests" "$repo/build-student"
+cp -Rp Makefile src stages "$repo/"
+cp -p docs/examples/builtin.scene "$repo/docs/examples/"
+cp -Rp tests/student "$repo/tests/"
+[ -n "$reuse" ] && cp -p "$bdir"/*.o "$bdir/builtin.c" "$repo/build-student/"
+( cd "$repo" && MAKEFLAGS= MFLAGS= MAKELEVEL= make STAGE_projection=tests/student/s2_divz.c ) \
+    >"$tmp/make.log" 2>&1
+check "diff-9.1 make STAGE_projection=FILE, no target: builds build-student/pipetrace" \
+    test -x "$repo/build-student/pipetrace"
+"$repo/build-student/pipetrace" $data/offset.scene --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/want.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1
+check "diff-9.2 ... with FILE in it" grep -qF "likely mistake: projection divides by z_c" "$tmp/out"
+( cd "$repo" && MAKEFLAGS= MFLAGS= MAKELEVEL= make STAGE_pixel=tests/student/s3_two.c ) \
+    >"$tmp/make.log" 2>&1
+"$repo/build-student/pipetrace" $data/offset.scene --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/want.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1
+check "diff-9.3 another choice rebuilds it: the new stage's mistake ..." grep -qF "likely mistake: 2 instead of 2.001" "$tmp/out"
+check "diff-9.4 ... and the replaced stage is the reference again" test "$(grep -c 'likely mistake: projection' "$tmp/out")" = 0
+( cd "$repo" && MAKEFLAGS= MFLAGS= MAKELEVEL= make clean ) >"$tmp/make.log" 2>&1
+check "diff-9.5 make clean removes build-student/" test ! -e "$repo/build-student"
+
 # ---- agreeing traces: exit 0
 for s in offset ties floor; do
     "$exe" $data/$s.scene --format jsonl --trace "$tmp/$s.jsonl"
@@ -125,6 +191,14 @@ check "diff-2.7 --rel 0: text still agrees within its printed digits" test $? = 
 "$exe" diff "$tmp/two.jsonl" "$tmp/square.jsonl" >"$tmp/out" 2>&1
 check "diff-3.1 a vertex in one trace only: exit 1" test $? = 1
 check "diff-3.2 ... listed" grep -q "^only in EXPECTED: arrow v1, arrow v2" "$tmp/out"
+grep -v '"model":"arrow","v":2,' "$tmp/two.jsonl" > "$tmp/less.jsonl"
+"$exe" diff "$tmp/two.jsonl" "$tmp/less.jsonl" >"$tmp/out" 2>&1
+awk 'BEGIN { RS = "" } { p = $0 } END { print p }' "$tmp/out" | tr '\n' ' ' >"$tmp/summary"
+check "diff-3.2.1 one vertex only in EXPECTED: 'is', not 'are'" grep -qF ", 1 is only in EXPECTED." "$tmp/summary"
+"$exe" docs/examples/lookat-near.scene --format jsonl --trace "$tmp/near.jsonl"
+"$exe" diff "$tmp/near.jsonl" "$tmp/near.jsonl" >"$tmp/out" 2>&1
+check "diff-3.2.2 clip points are counted apart from vertices" \
+    grep -q "^The traces agree: 5 of 5 points (3 vertices, 2 clip points) at every stage" "$tmp/out"
 sed 's/"x":1.25,/"x":1.2500001,/' "$tmp/offset.jsonl" > "$tmp/nudged.jsonl"
 "$exe" diff "$tmp/offset.jsonl" "$tmp/nudged.jsonl" >"$tmp/out" 2>&1
 check "diff-3.3 x_c off by 1e-7: exit 1" test $? = 1
@@ -168,6 +242,22 @@ check "diff-5.6 a record twice: exit 2" test $? = 2
 check "diff-5.7 CSV is refused: exit 2" test $? = 2
 "$exe" diff "$tmp/offset.jsonl" >/dev/null 2>&1
 check "diff-5.8 one file: usage error, exit 1" test $? = 1
+# a text trace ends with its summary: cut anywhere before, it is refused
+n=$(wc -l < "$tmp/offset.txt")
+for cut in 4 12 $((n - 1)); do
+    head -n $cut "$tmp/offset.txt" > "$tmp/cut.txt"
+    "$exe" diff "$tmp/cut.txt" "$tmp/offset.jsonl" >/dev/null 2>"$tmp/err"
+    check "diff-5.11 a text trace cut after line $cut: exit 2" test $? = 2
+    check "diff-5.12 ... FILE:LINE:COL: error: ... cut short" \
+        grep -q "^$tmp/cut.txt:$cut:[0-9]*: error: the trace ends .*: it was cut short" "$tmp/err"
+done
+head -c 100 "$tmp/offset.txt" > "$tmp/cut.txt"
+"$exe" diff "$tmp/offset.jsonl" "$tmp/cut.txt" >/dev/null 2>"$tmp/err"
+check "diff-5.13 a text trace cut inside a header line: exit 2" test $? = 2
+printf 'hello\n' > "$tmp/hello.txt"
+"$exe" diff "$tmp/hello.txt" "$tmp/offset.jsonl" >/dev/null 2>"$tmp/err"
+check "diff-5.14 neither trace nor image: exit 2, naming what is read" \
+    grep -qF "not a pipetrace trace (JSON Lines or text) nor an image (binary PPM (P6), plain PPM (P3), or PNG" "$tmp/err"
 "$exe" diff "$tmp/offset.jsonl" "$tmp/offset.jsonl" --image-out "$tmp/x.ppm" >/dev/null 2>&1
 check "diff-5.9 --image-out with traces: usage error, exit 1" test $? = 1
 "$exe" diff --help >"$tmp/out" 2>&1
@@ -200,5 +290,37 @@ head -c 20 "$tmp/a.ppm" > "$tmp/short.ppm"
 check "diff-6.9 a cut-short image: exit 2" test $? = 2
 "$exe" diff "$tmp/a.ppm" "$tmp/offset.jsonl" >/dev/null 2>&1
 check "diff-6.10 an image against a trace: exit 1" test $? = 1
+
+# ---- other images: plain PPM (P3) and PNG
+printf 'P3\n4 2\n255\n0 0 0  255 255 255  0 0 0  0 0 0\n0 0 0 0 0 0 0 0 1 0 0 0\n' > "$tmp/b3.ppm"
+"$exe" diff "$tmp/b.ppm" "$tmp/b3.ppm" >"$tmp/out" 2>&1
+check "diff-6.11 P3 against the same P6: exit 0" test $? = 0
+"$exe" diff "$tmp/a.ppm" "$tmp/b3.ppm" >"$tmp/out" 2>&1
+check "diff-6.12 P3 against another P6: the same two pixels differ" \
+    grep -q "^2 of 8 pixels differ, all within the box (x, y) = (1, 0) .. (2, 1)\.\$" "$tmp/out"
+printf 'P3\n4 2\n255\n0 0 0 1\n' > "$tmp/short3.ppm"
+"$exe" diff "$tmp/a.ppm" "$tmp/short3.ppm" >/dev/null 2>"$tmp/err"
+check "diff-6.13 a cut-short P3: exit 2" test $? = 2
+"$exe" --image "$tmp/bi.png" 2>/dev/null
+"$exe" --image "$tmp/bi.ppm" 2>/dev/null
+"$exe" diff "$tmp/bi.png" "$tmp/bi.ppm" >"$tmp/out" 2>&1
+check "diff-6.14 pipetrace's own PNG against its PPM: exit 0" test $? = 0
+check "diff-6.15 ... read as PNG" grep -q "^EXPECTED .*(PNG, 400 x 300, maxval 255)\$" "$tmp/out"
+"$exe" docs/examples/triangle.scene --image "$tmp/tri.png" 2>/dev/null
+"$exe" diff "$tmp/bi.png" "$tmp/tri.png" >/dev/null 2>&1
+check "diff-6.16 two different PNGs: exit 1" test $? = 1
+# a 2 x 2 PNG with the Sub and Paeth row filters, stored; the same compressed
+printf '\211PNG\r\n\032\n\000\000\000\015IHDR\000\000\000\002\000\000\000\002\010\002\000\000\000\375\324\232\163\000\000\000\031IDAT\170\001\001\016\000\361\377\001\012\024\036\036\036\036\004\074\074\074\036\036\036\012\126\001\252\374\332\162\222\000\000\000\000IEND\256\102\140\202' > "$tmp/f.png"
+printf '\211PNG\r\n\032\n\000\000\000\015IHDR\000\000\000\002\000\000\000\002\010\002\000\000\000\375\324\232\163\000\000\000\023IDAT\170\332\143\344\022\221\003\002\026\033\033\033\040\005\000\012\126\001\252\246\214\223\060\000\000\000\000IEND\256\102\140\202' > "$tmp/z.png"
+printf 'P6\n2 2\n255\n\012\024\036\050\062\074\106\120\132\144\156\170' > "$tmp/f.ppm"
+"$exe" diff "$tmp/f.png" "$tmp/f.ppm" >"$tmp/out" 2>&1
+check "diff-6.17 PNG row filters undone: the same as the PPM" test $? = 0
+"$exe" diff "$tmp/z.png" "$tmp/f.ppm" >/dev/null 2>"$tmp/err"
+check "diff-6.18 a compressed PNG: exit 2 ..." test $? = 2
+check "diff-6.19 ... saying what is read and what to do" \
+    grep -q "^$tmp/z.png:1:1: error: PNG: its image data is compressed; pipetrace diff reads only the uncompressed PNG that pipetrace writes (convert the image to P6 PPM" "$tmp/err"
+head -c 60 "$tmp/bi.png" > "$tmp/cut.png"
+"$exe" diff "$tmp/cut.png" "$tmp/bi.png" >/dev/null 2>"$tmp/err"
+check "diff-6.20 a cut-short PNG: exit 2" test $? = 2
 
 report

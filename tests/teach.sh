@@ -64,8 +64,17 @@ run step --all --interactive
 check "teach-3.2 --all with --interactive: exit 1" test "$rc" = 1
 run step $tri --vertex 9
 check "teach-3.3 no such vertex: exit 2" test "$rc" = 2
+check "teach-3.3.1 ... the message names --vertex" grep -q "^pipetrace step: --vertex 9: no model of $tri has a vertex 9 (the largest has 3)" "$tmp/err"
+run step --vertex 7 --model pyramid
+check "teach-3.3.2 the named model has no such vertex: said so" \
+    test "$rc" = 2 -a -n "$(grep '^pipetrace step: --vertex 7: model pyramid of <builtin> has no vertex 7 (it has 5)' "$tmp/err")"
 run step $tri --model nosuch
 check "teach-3.4 no such model: exit 2" test "$rc" = 2
+check "teach-3.4.1 ... the message names --model" grep -q "^pipetrace step: --model nosuch: $tri has no model 'nosuch' (its models: tri)" "$tmp/err"
+printf 'framebuffer 20 10\nmodel m\ntranslate 0 0 -2\nv 1e300 0 0\nv 0 0 0\nl 1 2\n' > "$tmp/far.scene"
+run step "$tmp/far.scene" --vertex 1 --all
+check "teach-3.6 x_pp beyond 2^62: y_vp computed, and x_vp named as the one without a value" \
+    has "           y_vp = h - round(y_pp) = 10 - round(5.497501249375313) = 10 - 5 = 5, but the viewport pixel has no value: x_vp has none (x_pp is beyond 2^62)"
 printf 'model m\nv 1 2\n' > "$tmp/bad.scene"
 run step "$tmp/bad.scene"
 check "teach-3.5 bad scene: exit 2 with FILE:LINE:COL" test "$rc" = 2 -a -n "$(grep "^$tmp/bad.scene:2:" "$tmp/err")"
@@ -95,12 +104,22 @@ run quiz --seed 7 --vertex 1
 check "teach-4.14 --seed with --vertex: exit 1" test "$rc" = 1
 run quiz $tri --vertex 4
 check "teach-4.15 no such vertex: exit 2" test "$rc" = 2
+check "teach-4.16 ... naming --vertex" grep -q "^pipetrace quiz: --vertex 4: no model of $tri has a vertex 4" "$tmp/err"
+run quiz $tri --model nosuch
+check "teach-4.17 no such model: exit 2, naming --model" test "$rc" = 2 -a -n "$(grep "^pipetrace quiz: --model nosuch: " "$tmp/err")"
+feed 'x\n' quiz $tri --vertex 1
+check "teach-4.18 not numbers at the model stage: no 'or none' (it always has values)" has "  wrong: expected 3 numbers"
+feed '-1 -1 0\n-1 -1 -2\n-0.5 -0.5 -1\n5.5 3\nx\n' quiz $tri --vertex 1
+check "teach-4.19 ... at the viewport stage 'none' is an answer" has "  wrong: expected 2 numbers, or none"
 
 # ---- why
 run why $tri 4 7
 check "teach-5.1 why, lit pixel: exit 0" test "$rc" = 0
 check "teach-5.2 ... both segments through it" test "$(grep -c '^  tri s[13] (v' "$tmp/out")" = 2
-check "teach-5.3 ... their vertices' key values" has "    v1  (x_pp, y_pp) = (5.497501249375313, 2.9987506246876565)  (x_vp, y_vp) = (4, 7)"
+check "teach-5.3 ... each vertex's journey, model to index" has "    v1  model (-1, -1, 0) -> camera (-1, -1, -2) -> image (-0.5, -0.5, -1)"
+check "teach-5.3.1 ... on to the pixel plane and the viewport" has "        -> pixel (5.497501249375313, 2.9987506246876565) -> viewport (4, 7)"
+check "teach-5.3.2 ... and to the index" has "        -> framebuffer (4, 7) -> index 144"
+check "teach-5.3.3 ... both vertices of both segments" test "$(grep -c '^        -> framebuffer' "$tmp/out")" = 4
 check "teach-5.4 ... the color and who set it" has "color 255 255 255: tri s3 is the last segment drawn there"
 run why $tri 10 2
 check "teach-5.5 unlit: endpoints rounded elsewhere" grep -q "^    lost at raster: endpoints rounded elsewhere: .* (x_fb, y_fb) = (9, 2)$" "$tmp/out"
@@ -135,6 +154,34 @@ while [ $y -lt 10 ]; do
 done
 sort -u "$tmp/lit" -o "$tmp/lit"
 check "teach-5.14 lit pixels = the renderer's pixels, all 200" cmp -s "$tmp/lit" "$tmp/drawn"
+run why 400 300
+check "teach-5.15 outside the framebuffer: the message names X_FB Y_FB" \
+    test "$rc" = 2 -a -n "$(grep '^pipetrace why: X_FB Y_FB = 400 300: the pixel lies outside the 400 x 300 framebuffer' "$tmp/err")"
+
+# ---- why: its model left out (--model, as the render command leaves models out)
+# (226, 168) of the built-in scene: the pyramid lights it, the cube does not
+"$exe" --model cube --stage raster | grep -c ' x_fb = *226 *y_fb = *168 ' > "$tmp/n"
+check "teach-5.16 (the render command: --model cube traces no pixel record there)" test "$(cat "$tmp/n")" = 0
+run why --model pyramid 226 168
+check "teach-5.17 why --model pyramid: lit by the pyramid" test "$rc" = 0 -a -n "$(grep '^lit by:' "$tmp/out")"
+run why 226 168 --model cube
+check "teach-5.18 why --model cube: not lit in that trace" grep -q "^not lit in the trace of --model cube: none of its segments writes this pixel" "$tmp/out"
+check "teach-5.19 ... the pyramid's segment: its model left out" \
+    grep -q "^    lost at model: its model left out: --model cube traces the records of model cube only; model pyramid is drawn into the image but not traced" "$tmp/out"
+check "teach-5.20 ... and in the image it lights the pixel" has "    in the image, it lights this pixel"
+check "teach-5.21 ... the cube's own nearest segment is listed too" grep -q "^  cube s[0-9]* (v" "$tmp/out"
+check "teach-5.22 ... the image's color, from the pyramid" grep -q "^color 80 200 255 in the image: pyramid s[0-9]* is the last segment drawn there" "$tmp/out"
+run why --model nope 226 168
+check "teach-5.23 --model with no such model: exit 2, naming the argument" \
+    test "$rc" = 2 -a -n "$(grep "^pipetrace why: --model nope: <builtin> has no model 'nope' (its models: cube, pyramid, floor)" "$tmp/err")"
+printf 'framebuffer 20 10\nmodel dots\ntranslate 0 0 -2\nv 0 0 0\nv 1 1 0\nmodel line\ntranslate 0 0 -2\nv -1 -1 0\nv 1 -1 0\nl 1 2\n' > "$tmp/dots.scene"
+run why "$tmp/dots.scene" 9 5
+check "teach-5.24 a model without segments: left out of the drawing" \
+    grep -q "^models without segments (left out: the renderer draws nothing of a model without segments):" "$tmp/out"
+check "teach-5.25 ... with the vertex of it that lands nearest" \
+    has "  dots: 2 vertices; the nearest, v1, would be 0.70 pixels away, at (x_fb, y_fb) = (9, 5)"
+run why "$tmp/dots.scene" 9 5 --model dots
+check "teach-5.26 --model of a model without segments: said so" has "model dots has no segments: the renderer draws nothing of it (below)"
 
 # ---- --explain on the render command
 run $tri --vertex 1 --explain

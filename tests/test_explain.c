@@ -55,6 +55,10 @@ static void test_triangle(void)
     PT_CHECK("ex-1.8 values", !strcmp(b, "(x_pp, y_pp) = (5.497501249375313, 2.9987506246876565)"));
     pt_explain_values(b, sizeof b, &j, PT_STAGE_INDEX);
     PT_CHECK("ex-1.9 index value", !strcmp(b, "idx = 144"));
+    pt_explain_tuple(b, sizeof b, &j, PT_STAGE_CAMERA);
+    PT_CHECK("ex-1.9.1 the numbers alone, as why's journeys show them", !strcmp(b, "(-1, -1, -2)"));
+    pt_explain_tuple(b, sizeof b, &j, PT_STAGE_INDEX);
+    PT_CHECK("ex-1.9.2 ... an index", !strcmp(b, "144"));
     PT_CHECK("ex-1.10 next after viewport: inside",
              !strncmp(next_text(&j, PT_STAGE_VIEWPORT), "inside the viewport", 19));
     PT_CHECK("ex-1.11 next after camera: in front",
@@ -102,8 +106,18 @@ static void test_odd(void)
              strstr(stage_text(&j, PT_STAGE_FRAMEBUFFER), "x_fb = x_ul + x_vp: none") != NULL);
     pt_journey_compute(&j, &tri, (pt_vec3){1e300, 0, 0});       /* x_pp ~ 1e301 */
     PT_CHECK("ex-3.5 beyond 2^62", strstr(stage_text(&j, PT_STAGE_VIEWPORT), "beyond 2^62") != NULL);
-    PT_CHECK("ex-3.6 ... y still computed but unused",
-             strstr(b, "but the pixel has no value: x_pp has none") != NULL);
+    /* 2024 audit: this named x_pp, which has a value; x_vp is the one without */
+    PT_CHECK("ex-3.6 ... y still computed but unused, and x_vp named as the one without",
+             strstr(b, " = 10 - 5 = 5, but the viewport pixel has no value: x_vp has none "
+                       "(x_pp is beyond 2^62)") != NULL);
+    pt_journey_compute(&j, &tri, (pt_vec3){0, 1e300, 0});       /* y_pp ~ 1e300 */
+    PT_CHECK("ex-3.7 ... and the other way round: y_vp named",
+             strstr(stage_text(&j, PT_STAGE_VIEWPORT), " = 10 - 1 = 9, but the viewport pixel "
+                    "has no value: y_vp has none (y_pp is beyond 2^62)") != NULL);
+    pt_journey_compute(&j, &tri, (pt_vec3){1e308, 0, 0});       /* x_pp overflows */
+    PT_CHECK("ex-3.8 ... x_pp not finite: said so",
+             strstr(stage_text(&j, PT_STAGE_VIEWPORT), "but the viewport pixel has no value: "
+                    "x_vp has none (x_pp is not finite)") != NULL);
 
     pt_journey_compute(&j, &tri, (pt_vec3){-1, -1, 0});
     n = pt_explain_stage(b, 10, &j, PT_STAGE_PIXEL, "; ");
