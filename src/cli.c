@@ -25,8 +25,8 @@ const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *nam
 
     for (k = 0; k < s->nmodels; k++)
         if (!strcmp(name, s->models[k].name)) return &s->models[k];
-    fprintf(stderr, "pipetrace %s: --model %s: %s has no model '%s' (", cmd, name, s->path,
-            name);
+    fprintf(stderr, "pipetrace%s%s: --model %s: %s has no model '%s' (", cmd ? " " : "",
+            cmd ? cmd : "", name, s->path, name);
     for (k = 0; k < s->nmodels; k++)
         fprintf(stderr, "%s%s", k ? ", " : "its models: ", s->models[k].name);
     fprintf(stderr, "%s)\n", s->nmodels ? "" : "it has no models");
@@ -42,8 +42,8 @@ const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
     if (name) {
         if (!(m = pt_cli_model(s, cmd, name))) return NULL;
         if (m->nv >= v) return m;
-        fprintf(stderr, "pipetrace %s: --vertex %llu: model %s of %s has no vertex %llu "
-                "(it has %zu)\n", cmd, (unsigned long long)v, m->name, s->path,
+        fprintf(stderr, "pipetrace%s%s: --vertex %llu: model %s of %s has no vertex %llu "
+                "(it has %zu)\n", cmd ? " " : "", cmd ? cmd : "", (unsigned long long)v, m->name, s->path,
                 (unsigned long long)v, m->nv);
         return NULL;
     }
@@ -51,8 +51,8 @@ const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
         if (s->models[k].nv >= v) return &s->models[k];
         if (s->models[k].nv > most) most = s->models[k].nv;
     }
-    fprintf(stderr, "pipetrace %s: --vertex %llu: no model of %s has a vertex %llu "
-            "(the largest has %zu)\n", cmd, (unsigned long long)v, s->path,
+    fprintf(stderr, "pipetrace%s%s: --vertex %llu: no model of %s has a vertex %llu "
+            "(the largest has %zu)\n", cmd ? " " : "", cmd ? cmd : "", (unsigned long long)v, s->path,
             (unsigned long long)v, most);
     return NULL;
 }

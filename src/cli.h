@@ -19,14 +19,16 @@
 ** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */
 int pt_cli_load(pt_scene *s, const char *path);
 
-/* The model called name.  Prints "pipetrace CMD: --model NAME: ..." with the
-** scene's model names and returns NULL when there is none. */
+/* The model called name.  Prints "pipetrace CMD: --model NAME: ..." (cmd
+** NULL: "pipetrace: --model ...") with the scene's model names and returns NULL
+** when there is none. */
 const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *name);
 
 /* The model whose 1-based vertex v a command follows: the model called name,
 ** or (name NULL) the first model that has a vertex v.  Prints why and returns
 ** NULL when there is none; the message starts with the argument at fault
-** ("--model NAME: ..." or "--vertex N: ...").  cmd names the command. */
+** ("--model NAME: ..." or "--vertex N: ...").  cmd names the command (NULL:
+** the render command, "pipetrace: ..."). */
 const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
                                     const char *name, uint64_t v);
 

@@ -276,6 +276,27 @@ static const char *no_pixel_why(double x)
     return isfinite(x) ? "it is beyond 2^62" : "it is not finite";
 }
 
+int32_t pt_explain_java_int_round(double x)
+{
+    double r = pt_java_round(x);            /* NaN: 0 */
+    uint32_t low;
+
+    if (r >= 9223372036854775808.0) return -1;          /* 2^63 - 1: low bits all 1 */
+    if (r < -9223372036854775808.0) return 0;           /* -2^63: low bits all 0 */
+    low = (uint32_t)(uint64_t)(int64_t)r;   /* exact: |r| <= 2^63, an integer */
+    return low <= INT32_MAX ? (int32_t)low : -(int32_t)(UINT32_MAX - low) - 1;
+}
+
+/* Where Java parts from pipetrace: " (the Java renderer's (int)Math.round(x_pp)
+** gives -1 here)". */
+static void add_java(text *t, double x, int k)
+{
+    add(t, k == 0 ? " (the Java renderer's (int)Math.round(x_pp) gives "
+                  : " (the Java renderer's (int)Math.round(y_pp) gives ");
+    add_int(t, pt_explain_java_int_round(x), 0);
+    add(t, " here)");
+}
+
 static void explain_viewport(text *t, const pt_journey *j, int k)
 {
     const pt_vrec *pp = &j->rec[PT_STAGE_PIXEL];
@@ -290,6 +311,7 @@ static void explain_viewport(text *t, const pt_journey *j, int k)
     if (!pt_pix_round(x, &r)) {
         add(t, ": none, ");
         add(t, no_pixel_why(x));
+        add_java(t, x, k);
         return;
     }
     add(t, " = ");
@@ -299,6 +321,7 @@ static void explain_viewport(text *t, const pt_journey *j, int k)
         v = j->par.h - r;
     }
     add_int(t, v, 0);
+    if (r != (int64_t)pt_explain_java_int_round(x)) add_java(t, x, k);     /* past 32 bits */
     if (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL) {   /* the other one has none */
         add(t, ", but the viewport pixel has no value: ");
         add(t, coord_names[PT_STAGE_VIEWPORT][1 - k]);

@@ -97,4 +97,11 @@ size_t pt_explain_tuple(char *buf, size_t len, const pt_journey *j, pt_stage st)
 ** 0): projected mirrored ...".  Returns the length.  This function can't fail. */
 size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st);
 
+/* What the Java renderer's (int)Math.round(x) holds: Math.round returns a
+** long, 0 for NaN and saturated at -2^63 and 2^63 - 1, and the int cast keeps
+** its low 32 bits (two's complement).  So 1e300 gives -1, -1e300 gives 0, 3e9
+** gives 3e9 - 2^32.  pipetrace never uses it for a pixel; it says what Java
+** would have done where the two part.  This function can't fail. */
+int32_t pt_explain_java_int_round(double x);
+
 #endif

@@ -138,27 +138,13 @@ static int parse_args(cli *c, int argc, char **argv)
 
 /* ===== checks that need the scene ===== */
 
+/* --model must name a model, and --vertex N must exist in it (or, without
+** --model, in some model). */
 static int check_filters(const cli *c, const pt_scene *s)
 {
-    size_t k;
-    int found = c->opt.model == NULL;
-    uint64_t most = 0;
-
-    for (k = 0; k < s->nmodels; k++) {
-        if (c->opt.model && strcmp(c->opt.model, s->models[k].name) == 0) found = 1;
-        if (!c->opt.model || strcmp(c->opt.model, s->models[k].name) == 0)
-            if (s->models[k].nv > most) most = s->models[k].nv;
-    }
-    if (!found) {
-        fprintf(stderr, "pipetrace: %s has no model '%s'\n", s->path, c->opt.model);
+    if (c->opt.model && !pt_cli_model(s, NULL, c->opt.model)) return EXIT_INPUT;
+    if (c->opt.vertex && !pt_cli_vertex_model(s, NULL, c->opt.model, c->opt.vertex))
         return EXIT_INPUT;
-    }
-    if (c->opt.vertex > most) {
-        fprintf(stderr, "pipetrace: %s: no model%s%s has a vertex %llu\n", s->path,
-                c->opt.model ? " " : "", c->opt.model ? c->opt.model : "",
-                (unsigned long long)c->opt.vertex);
-        return EXIT_INPUT;
-    }
     return 0;
 }
 

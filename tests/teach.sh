@@ -227,4 +227,11 @@ check "teach-8.10 ... the pixels differ by the rounding conventions" has "the pi
 run step docs/examples/lookat-world.scene --vertex 1 --compare-cameras
 check "teach-8.11 --compare-cameras on a matrix scene" test "$rc" = 0 -a -n "$(grep 'matrix camera:  this scene' "$tmp/out")"
 
+# ---- where the Java renderer's 32-bit int parts from pipetrace, step says what Java holds
+run step tests/extreme/huge-coordinates.scene --vertex 1 --all
+check "teach-9.1 no pixel for 1e301, and Java's (int)Math.round gives -1" grep -qF -- "round(9.995002498750627e+300) - 1: none, it is beyond 2^62 (the Java renderer's (int)Math.round(x_pp) gives -1 here)" "$tmp/out"
+printf 'framebuffer 20 10\ncamera orthographic\nmodel m\nv 0 0 0\nv 300000000 0 0\nl 1 2\n' > "$tmp/j3.scene"
+run step "$tmp/j3.scene" --vertex 2 --all
+check "teach-9.2 a pixel past 2^31: pipetrace's 64-bit value, and Java's wrapped one" grep -qF -- "= 2998500760 - 1 = 2998500759 (the Java renderer's (int)Math.round(x_pp) gives -1296466536 here)" "$tmp/out"
+
 report

@@ -187,6 +187,23 @@ static void test_matrix(void)
     pt_scene_free(&s);
 }
 
+/* What the Java renderer's (int)Math.round holds, for step's notes. */
+static void test_java(void)
+{
+    /* (int)Math.round(x) as Java 17 prints it: the long saturates, the cast keeps 32 bits */
+    PT_CHECK("explain-9.1 Java's (int)Math.round: 1e300 -> -1, +inf -> -1",
+             pt_explain_java_int_round(1e300) == -1 && pt_explain_java_int_round((double)INFINITY) == -1);
+    PT_CHECK("explain-9.2 ... -1e300 -> 0, -inf -> 0, NaN -> 0",
+             pt_explain_java_int_round(-1e300) == 0 && pt_explain_java_int_round(-(double)INFINITY) == 0
+             && pt_explain_java_int_round((double)NAN) == 0);
+    PT_CHECK("explain-9.3 ... 3e9 -> 3e9 - 2^32 = -1294967296, 2^31 -> -2^31",
+             pt_explain_java_int_round(3e9) == -1294967296 && pt_explain_java_int_round(2147483648.0) == INT32_MIN);
+    PT_CHECK("explain-9.4 ... 2^63 - 1024 -> -1024, -2^63 -> 0, in range as Math.round",
+             pt_explain_java_int_round(9223372036854774784.0) == -1024
+             && pt_explain_java_int_round(-9223372036854775808.0) == 0
+             && pt_explain_java_int_round(-2.5) == -2 && pt_explain_java_int_round(0.49999999999999994) == 0);
+}
+
 int main(void)
 {
     test_triangle();
@@ -194,5 +211,6 @@ int main(void)
     test_odd();
     test_agrees();
     test_matrix();
+    test_java();
     return pt_test_report();
 }
