@@ -8,6 +8,7 @@
 */
 #include <math.h>
 #include <string.h>
+#include "clip.h"
 #include "explain.h"
 #include "matrix.h"
 #include "../stages/m4_clip2cvv.h"
@@ -88,6 +89,43 @@ int pt_journey_of(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t 
     j->order = pt_matrix_order;
     j->norder = code ? 5 : pt_matrix_norder;    /* outside: it stops at the cvv */
     pt_plan_free(&p);
+    return 0;
+}
+
+int pt_journey_of_clip(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t from,
+                       uint64_t to, double t, int raw_lookat)
+{
+    pt_journey a, b;
+    pt_vec4 pa, pb, q0, q1, q;
+    double t0, t1;
+    pt_sink sink;
+    const pt_sink *sinks[PT_NSTAGES_ALL];
+    pt_vrec r = {0};
+    int st;
+
+    if (pt_journey_of(&a, s, m, from, raw_lookat) != 0 ||
+        pt_journey_of(&b, s, m, to, raw_lookat) != 0) return -1;
+    pa = (pt_vec4){a.rec[PT_STAGE_CLIP].x, a.rec[PT_STAGE_CLIP].y,
+                   a.rec[PT_STAGE_CLIP].z, a.rec[PT_STAGE_CLIP].w};
+    pb = (pt_vec4){b.rec[PT_STAGE_CLIP].x, b.rec[PT_STAGE_CLIP].y,
+                   b.rec[PT_STAGE_CLIP].z, b.rec[PT_STAGE_CLIP].w};
+    if (!pt_clip_segment(pa, pb, &t0, &t1, &q0, &q1)) return -1;
+    if (t0 == t) q = q0;
+    else if (t1 == t) q = q1;
+    else return -1;
+    *j = a;                                 /* parameters and matrices */
+    memset(j->rec, 0, sizeof j->rec);
+    r.stage = PT_STAGE_CLIP;                /* the point, where its journey starts */
+    r.x = q.x; r.y = q.y; r.z = q.z; r.w = q.w;
+    j->rec[PT_STAGE_CLIP] = r;
+    r.stage = PT_STAGE_CVV;                 /* inside: on a plane at most */
+    j->rec[PT_STAGE_CVV] = r;
+    sink.vertex = keep;
+    sink.ud = j;
+    for (st = 0; st < PT_NSTAGES_ALL; st++) sinks[st] = &sink;
+    pt_matrix_tail(s, q, fabs(q.w), sinks);
+    j->order = pt_matrix_order;
+    j->norder = pt_matrix_norder;
     return 0;
 }
 

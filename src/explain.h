@@ -54,6 +54,15 @@ void pt_journey_compute(pt_journey *j, const pt_stage_params *par, pt_vec3 v_m);
 int pt_journey_of(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
                   int raw_lookat);
 
+/* The journey of a point the matrix camera's clipping made on the segment from
+** 1-based vertex from to vertex to of model m, at parameter t (as the trace's
+** clipvertex record gives them): both vertices' clip coordinates, clipped as
+** pt_run() clips them (src/clip.c), then ndc .. index from the point.  Its
+** clip and cvv records hold the point itself.  Returns 0, or -1 when out of
+** memory or when no end of the clipped segment lies at t. */
+int pt_journey_of_clip(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t from,
+                       uint64_t to, double t, int raw_lookat);
+
 /* The name, spaces and formula of stage st as j's camera has it (the matrix
 ** camera's viewport stage floors instead of rounding).  Can't fail. */
 const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st);

@@ -364,7 +364,8 @@ static void on_clipvertex_begin(void *ud, const pt_model *m, uint64_t seg,
     t->from = from;
     t->to = to;
     t->t_clip = tc;
-    t->explain_lost = 1;                    /* the step-through covers vertices */
+    t->explain_lost = !(t->explain && t->scene) ||
+        pt_journey_of_clip(&t->journey, t->scene, m, from, to, tc, t->raw_lookat) != 0;
 }
 
 static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)

@@ -200,6 +200,9 @@ import json, sys
 for line in open(sys.argv[1]):
     json.loads(line)' "$tmp/out"
 fi
+run docs/examples/lookat-near.scene --explain --format jsonl
+check "teach-6.8a matrix camera: every vertex and clipvertex record explained" test "$(grep -c '"type":"\(vertex\|clipvertex\)"' "$tmp/out")" = "$(grep -c '"explain":"' "$tmp/out")"
+check "teach-6.8b ... a clip point's divide, from its clip coordinates" grep -q '"type":"clipvertex","model":"stick","segment":1,"from":1,"to":2,"t":0.375,"stage":"ndc",.*"explain":"x_n = x_k / w_k = 0.375 / 1 = 0.375; ' "$tmp/out"
 run $tri --explain --format csv
 check "teach-6.9 --explain with csv: exit 1" test "$rc" = 1
 run $tri
