@@ -30,6 +30,7 @@ static const char usage[] =
 "       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
 "       pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
 "       pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
+"                         [--image FILE]\n"
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
 "through the classic teaching pipeline and trace every vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"

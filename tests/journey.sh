@@ -32,7 +32,7 @@ run journey
 check "jny-1.1 no --vertex: exit 1" test "$rc" = 1
 check "jny-1.2 ... says so" grep -q -- "--vertex N is required" "$tmp/err"
 run journey --vertex 1
-check "jny-1.3 no --svg or --html: exit 1" test "$rc" = 1
+check "jny-1.3 no --svg, --html or --image: exit 1" test "$rc" = 1
 run journey --vertex 0 --svg "$tmp/x.svg"
 check "jny-1.4 --vertex 0: exit 1" test "$rc" = 1
 run journey --vertex 1 --frob --svg "$tmp/x.svg"
@@ -109,5 +109,16 @@ for s in "" docs/examples/triangle.scene docs/examples/clip.scene; do
 done
 "$exe" docs/examples/triangle.scene --image "$tmp/upper.PNG"
 check "jny-4.3 .PNG in capitals is PNG too" test "$(head -c 4 "$tmp/upper.PNG" | tail -c 3)" = PNG
+
+# ---- journey --image: the render with the vertex's pixel ringed
+"$exe" --image "$tmp/r.ppm"
+run journey --vertex 1 --image "$tmp/m.png"
+check "jny-5.1 journey --image: exit 0" test "$rc" = 0 -a -s "$tmp/m.png"
+py marked "$exe" "$tmp/m.png" "$tmp/r.ppm" cube 1
+"$exe" docs/examples/clip.scene --image "$tmp/r2.ppm"
+"$exe" journey docs/examples/clip.scene --vertex 1 --image "$tmp/m2.png"
+py marked "$exe" "$tmp/m2.png" "$tmp/r2.ppm" m 1 docs/examples/clip.scene
+run journey --vertex 1 --svg "$tmp/same" --image "$tmp/same"
+check "jny-5.2 two outputs naming one file: exit 1" test "$rc" = 1
 
 report

@@ -16,6 +16,8 @@
 #                                    (chromium --dump-dom): "ok ...", every vertex
 #                                    of the trace, every stage, values equal to it
 #   dom EXE DOM MODEL V STAGE [SCENE]  #stage and #coords of a dumped page
+#   marked EXE FILE.png FILE.ppm MODEL V [SCENE]  journey --image: the render
+#                                    FILE.ppm with vertex V's pixel ringed in red
 #   png FILE.png FILE.ppm            the PNG decodes (CRC of every chunk, zlib's
 #                                    Adler-32) to the PPM's pixels
 #   color FILE.png RRGGBB            the PNG holds a pixel of that color
@@ -279,6 +281,36 @@ def color_mode(png, color):
     check("png-8 %s holds the color #%s" % (png, color), found)
 
 
+def ppm_read(path):
+    data = open(path, "rb").read()
+    m = re.match(rb"P6\n(\d+) (\d+)\n255\n", data)
+    return int(m.group(1)), int(m.group(2)), data[m.end():]
+
+
+def marked_mode(exe, png, ppm, model, v, scene):
+    """journey --image: the render's pixels, but the vertex's framebuffer pixel
+    and the square 3 pixels around it in red (#d62728), inside the image."""
+    w, h, ctype, rows = png_read(png)
+    pw, ph, plain = ppm_read(ppm)
+    got = b"".join(rows)
+    check("png-9 the marked image has the render's size", (w, h) == (pw, ph))
+    fb = trace(exe, scene).get((model, int(v), "framebuffer"))
+    check("png-10 the trace has the vertex's framebuffer pixel", fb is not None)
+    if fb is None or (w, h) != (pw, ph):
+        return
+    x, y = int(fb[0]), int(fb[1])
+    red, bad = bytes.fromhex("d62728"), []
+    for yy in range(h):
+        for xx in range(w):
+            i = 3 * (yy * w + xx)
+            ring = max(abs(xx - x), abs(yy - y)) == 3 or (xx, yy) == (x, y)
+            want = red if ring else plain[i:i + 3]
+            if got[i:i + 3] != want:
+                bad.append((xx, yy))
+    check("png-11 %s v%s: red at (%d, %d) and on the ring around it, else the render" % (model, v, x, y),
+          not bad, "first differing pixels: %r" % bad[:5])
+
+
 def main():
     mode, a = sys.argv[1], sys.argv[2:]
     scene = None
@@ -294,6 +326,8 @@ def main():
         png_mode(a[0], a[1])
     elif mode == "color":
         color_mode(a[0], a[1])
+    elif mode == "marked":
+        marked_mode(a[0], a[1], a[2], a[3], a[4], a[5] if len(a) > 5 else None)
     report()
 
 
