@@ -707,7 +707,8 @@ static const mistake mistakes[] = {
     {PT_STAGE_IMAGE, "projection divides by z_c instead of -z_c",
      "x_ip = x_c / z_c: the image comes out mirrored, x and y negated", mk_divz},
     {PT_STAGE_PIXEL, "2 instead of 2.001",
-     "x_pp = 0.5 + w/2 * (x_ip + 1): x_ip = 1 lands on w + 0.5, between two pixels",
+     "x_pp = 0.5 + w/2 * (x_ip + 1): every x_pp moves right by w/4002 * (x_ip + 1), "
+     "and the right edge x_ip = 1 lands on w + 0.5, between two pixels",
      mk_two},
     {PT_STAGE_PIXEL, "2 instead of 2.001",
      "x_pp = 0.5 + w/2 * (x_ip + 1) with w/2 in integer arithmetic: half of an odd "

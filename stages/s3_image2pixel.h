@@ -8,7 +8,8 @@
 **   y_pp = 0.5 + h/2.001 * (y_ip + 1)
 ** The line through (-1, 0.5) and (1, w+0.5) is x_pp = 0.5 + w/2 * (x_ip + 1).
 ** The code divides by 2.001 instead of 2 so that x_ip = 1 lands just short of
-** w + 0.5 and still rounds to pixel w (Blinn, "A Trip Down the Graphics
+** w + 0.5 and still rounds to pixel w, for w up to 2001 (beyond, w/2.001 * 2
+** falls a whole pixel short: docs/stages.md) (Blinn, "A Trip Down the Graphics
 ** Pipeline", 1996, p. 142).  The order of operations is the formula's:
 ** (w / 2.001) first, then times (x_ip + 1), then plus 0.5.
 **

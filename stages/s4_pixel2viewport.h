@@ -18,8 +18,8 @@
 **
 ** Java keeps these numbers in 32-bit ints; pipetrace keeps them in 64 bits and
 ** gives no value (PT_REC_NULL) when |x_pp| or |y_pp| >= PT_PIX_LIMIT or is not a
-** number, with the warning out_of_range (Java's Math.round would saturate
-** there and its int cast wrap around).  docs/stages.md#s4.
+** number, with the warning out_of_range (Java's (int) cast wraps from 2^31 on,
+** and Math.round itself saturates from 2^63).  docs/stages.md#s4.
 */
 #ifndef PT_S4_PIXEL2VIEWPORT_H
 #define PT_S4_PIXEL2VIEWPORT_H
@@ -30,8 +30,8 @@
 #define PT_PIX_LIMIT 4611686018427387904.0
 
 /* Java's Math.round(x) as a double: floor(x) plus one when x - floor(x) >= 0.5.
-** Exact: x - floor(x) is computed without rounding error for every finite x (see
-** the .c file).  NaN gives 0, infinities stay infinite.  This function can't fail. */
+** Exact: x - floor(x) is computed without rounding error for every finite x
+** but -0.5 < x < 0, where it rounds yet stays above 0.5 (see the .c file).  NaN gives 0, infinities stay infinite.  This function can't fail. */
 double pt_java_round(double x);
 
 /* Round pixel-plane coordinate x to an integer in *out.  Returns 1, or 0 (and
