@@ -28,6 +28,8 @@
 ** digits (it is then x's 15-digit rounding: no two 15-digit decimals read back
 ** to one double, DBL_DIG = 15) and P = its 16 or 17 digits otherwise.
 ** Subnormals always take the exponent form, so P does not matter for them.
+**
+** Fixed decimals ("%.*f") are exact integer arithmetic too: see fixed().
 */
 #include <assert.h>
 #include <math.h>
@@ -362,10 +364,88 @@ size_t pt_fmt_shortest(char *buf, double x)
     return g_style(buf, signbit(x) != 0, d, e);
 }
 
+/* ===== fixed decimals ===== */
+
+static const uint64_t pow10_tab[18] = {         /* 10^0 .. 10^17 */
+    UINT64_C(1), UINT64_C(10), UINT64_C(100), UINT64_C(1000), UINT64_C(10000),
+    UINT64_C(100000), UINT64_C(1000000), UINT64_C(10000000), UINT64_C(100000000),
+    UINT64_C(1000000000), UINT64_C(10000000000), UINT64_C(100000000000),
+    UINT64_C(1000000000000), UINT64_C(10000000000000), UINT64_C(100000000000000),
+    UINT64_C(1000000000000000), UINT64_C(10000000000000000),
+    UINT64_C(100000000000000000),
+};
+
+/* hi * 2^64 + lo shifted right by s, 0 <= s < 128; only the low 64 bits. */
+static uint64_t shr_128(uint64_t hi, uint64_t lo, int s)
+{
+    if (s == 0) return lo;
+    if (s < 64) return hi << (64 - s) | lo >> s;
+    return hi >> (s - 64);
+}
+
+/* Whether (hi * 2^64 + lo) mod 2^s is not 0, 0 <= s < 128. */
+static int low_bits(uint64_t hi, uint64_t lo, int s)
+{
+    if (s < 64) return (lo & ((UINT64_C(1) << s) - 1)) != 0;
+    return lo != 0 || (hi & ((UINT64_C(1) << (s - 64)) - 1)) != 0;
+}
+
+/* "%.*f" for finite |x| < 1e15, 0 <= prec <= 17, exactly as glibc's printf
+** rounds it in the default rounding mode, which pipetrace never changes: to
+** nearest, ties to even (0.125 -> "0.12", 2.5 -> "2"; tests/test_numfmt.c
+** compares the two byte for byte).  |x| = c / 2^s (integer c < 2^53), s > 0,
+** splits into
+**     ip = floor(|x|) = c >> s  (< 1e15)   and   f / 2^s,  f = c mod 2^s,
+** and the digits after the point are
+**     fp = round(f 10^prec / 2^s),   f 10^prec < 2^53 2^57 = 2^110,
+** the product in two uint64 (C11 has no 128-bit integer).  When s > 110 that
+** is below 2^(s-1), half the divisor: fp = 0, no tie.  fp = 10^prec carries
+** into ip.  A tie goes to the even last digit: fp's when prec > 0 (10^prec is
+** even), else ip's.  The sign is signbit's: -0.0 and small negatives give
+** "-0.000", as printf does.  s <= 0: |x| = c 2^-s is an integer. */
+static size_t fixed(char *buf, double x, int prec)
+{
+    uint64_t bits, c, ip, fp = 0, u;
+    int be, s, k;
+    char *o, *end;
+
+    memcpy(&bits, &x, sizeof bits);
+    be = (int)(bits >> 52 & 0x7ff);
+    c = bits & ((UINT64_C(1) << 52) - 1);
+    if (be == 0) s = 1074;                          /* subnormal: |x| = c 2^-1074 */
+    else { s = 1075 - be; c |= UINT64_C(1) << 52; } /* |x| = c 2^-s, c >= 2^52 */
+    if (s <= 0) ip = c << -s;                       /* an integer: |x| < 2^50 */
+    else {
+        uint64_t f, hi, lo;
+        int up = 0;
+
+        ip = s < 64 ? c >> s : 0;                   /* s >= 53: c < 2^s */
+        f = s < 64 ? c & ((UINT64_C(1) << s) - 1) : c;
+        hi = mul_64x64(f, pow10_tab[prec], &lo);    /* hi:lo = f 10^prec */
+        if (s <= 110) {
+            fp = shr_128(hi, lo, s);                /* floor(f 10^prec / 2^s) */
+            if (shr_128(hi, lo, s - 1) & 1)         /* the half bit: round up if */
+                up = low_bits(hi, lo, s - 1) ||     /* above half, or a tie and */
+                     ((prec ? fp : ip) & 1);        /* the last digit is odd */
+        }
+        fp += (uint64_t)up;
+        if (fp == pow10_tab[prec]) { fp = 0; ip++; }
+    }
+    end = buf + (signbit(x) != 0) + 1 + (prec ? 1 + prec : 0);  /* [-]ip[.fp] */
+    for (u = ip; u >= 10; u /= 10) end++;           /* ip's digits but one */
+    *end = '\0';
+    o = end;                                        /* written backwards */
+    for (k = 0; k < prec; k++) { *--o = (char)('0' + fp % 10); fp /= 10; }
+    if (prec) *--o = '.';
+    do { *--o = (char)('0' + ip % 10); ip /= 10; } while (ip);
+    if (o > buf) *--o = '-';
+    return (size_t)(end - buf);
+}
+
 size_t pt_fmt_fixed(char *buf, double x, int prec)
 {
     assert(prec >= 0 && prec <= 17);
     if (!isfinite(x)) return nonfinite(buf, x);
     if (fabs(x) >= 1e15) return (size_t)snprintf(buf, PT_NUMLEN, "%.*e", prec, x);
-    return (size_t)snprintf(buf, PT_NUMLEN, "%.*f", prec, x);
+    return fixed(buf, x, prec);
 }

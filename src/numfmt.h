@@ -15,7 +15,8 @@
 size_t pt_fmt_shortest(char *buf, double x);
 
 /* Write x with prec digits after the point ("%.*f"), or in "%.*e" form when
-** |x| >= 1e15; non-finite as above.  0 <= prec <= 17.  Returns the length. */
+** |x| >= 1e15; non-finite as above.  0 <= prec <= 17.  Returns the length.
+** Can't fail. */
 size_t pt_fmt_fixed(char *buf, double x, int prec);
 
 #endif

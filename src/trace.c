@@ -110,27 +110,90 @@ static void put_col(pt_trace *t, const char *s, size_t n, size_t width)
     put(t, s, n);
 }
 
+/* Text: room for n bytes (n <= 128) at the end of the block, for the column
+** writers below: they write there and move t->len past what they wrote. */
+static char *room(pt_trace *t, size_t n)
+{
+    if (t->len + n > sizeof t->buf) flush(t);
+    return t->buf + t->len;
+}
+
+/* Text: s right-aligned in width columns at o (n + padding bytes); returns
+** the end.  What put_col() puts, without a put per piece. */
+static char *col_at(char *o, const char *s, size_t n, size_t width)
+{
+    for (; width > n; width--) *o++ = ' ';
+    memcpy(o, s, n);
+    return o + n;
+}
+
+/* Text: x as "%12.*f" (pt_fmt_fixed: "%.*e" from 1e15 on), right-aligned. */
 static void put_fixed_col(pt_trace *t, double x, int prec)
 {
-    char b[PT_NUMLEN];
-    put_col(t, b, pt_fmt_fixed(b, x, prec), 12);
+    char b[PT_NUMLEN], *o;
+    size_t n = pt_fmt_fixed(b, x, prec);
+
+    o = room(t, PT_NUMLEN + 12);
+    t->len = (size_t)(col_at(o, b, n, 12) - t->buf);
+}
+
+/* Text: x's decimal digits, written backwards to end at end; returns their
+** start.  "%" PRIu64 by hand (snprintf costs more than the rest of a record). */
+static char *digits_to(char *end, uint64_t x)
+{
+    do { *--end = (char)('0' + x % 10); x /= 10; } while (x);
+    return end;
+}
+
+/* Text: "%*" PRId64 at o (at most 20 bytes plus padding); returns the end. */
+static char *int_at(char *o, int64_t x, size_t width)
+{
+    char b[24], *end = b + sizeof b, *d;
+
+    d = digits_to(end, x < 0 ? 0u - (uint64_t)x : (uint64_t)x);
+    if (x < 0) *--d = '-';
+    return col_at(o, d, (size_t)(end - d), width);
+}
+
+static char *str_at(char *o, const char *s)         /* s at o; returns the end */
+{
+    size_t n = strlen(s);
+    memcpy(o, s, n);
+    return o + n;
 }
 
 static void put_int_col(pt_trace *t, int64_t x)
 {
-    char b[24];
-    put_col(t, b, (size_t)snprintf(b, sizeof b, "%" PRId64, x), 12);
+    t->len = (size_t)(int_at(room(t, 32), x, 12) - t->buf);
 }
 
-/* Text: "name v12", padded so that the stage names line up. */
-static void put_who(pt_trace *t, const char *name, const char *kind, uint64_t n)
+/* Text: "name v12", padded so that the stage names line up: to 14 columns, or
+** by one space when longer. */
+static void put_who(pt_trace *t, const char *name, char kind, uint64_t n)
 {
-    char b[32];
-    size_t len = strlen(name) + 1 + (size_t)snprintf(b, sizeof b, "%s%" PRIu64, kind, n);
-    puts_(t, name);
-    put(t, " ", 1);
-    puts_(t, b);
-    put_col(t, "", 0, len < 14 ? 14 - len : 1);
+    char b[24], *end = b + sizeof b, *d = digits_to(end, n), *o;
+    size_t nlen = strlen(name), len = nlen + 2 + (size_t)(end - d);
+    size_t pad = len < 14 ? 14 - len : 1;
+
+    *--d = kind;
+    *--d = ' ';
+    put(t, name, nlen);
+    o = room(t, 40);                                /* 2 + 20 + 13 bytes */
+    memcpy(o, d, (size_t)(end - d));
+    memset(o + (end - d), ' ', pad);
+    t->len += (size_t)(end - d) + pad;
+}
+
+/* Text: a stage name left-aligned in 13 columns ("%-13s", cut to 13). */
+static void put_stage_col(pt_trace *t, const char *name)
+{
+    size_t n = strlen(name);
+    char *o = room(t, 13);
+
+    if (n > 13) n = 13;
+    memcpy(o, name, n);
+    memset(o + n, ' ', 13 - n);
+    t->len += 13;
 }
 
 /* ===== header ===== */
@@ -476,12 +539,10 @@ static void put_planes_text(pt_trace *t, unsigned code)
 static void vertex_text(pt_trace *t, const pt_vrec *r)
 {
     const char *const *cn = coord_names[r->stage];
-    char b[16];
 
-    if (t->clipv) put_who(t, t->model->name, "s", t->seg);
-    else put_who(t, t->model->name, "v", t->v);
-    snprintf(b, sizeof b, "%-13s", pt_stage_infos[r->stage].name);
-    put(t, b, 13);
+    if (t->clipv) put_who(t, t->model->name, 's', t->seg);
+    else put_who(t, t->model->name, 'v', t->v);
+    put_stage_col(t, pt_stage_infos[r->stage].name);
     if (r->stage == PT_STAGE_CVV) {             /* "code = 61 = 0b111101" */
         char bits[PT_CVV_NPLANES + 1];
         int k;
@@ -655,11 +716,14 @@ static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
         puts_(t, ",\"i\":"); put_i64(t, idx);
         puts_(t, "}\n");
     } else if (t->fmt == PT_FORMAT_TEXT) {
-        put_who(t, m->name, "s", seg);
-        puts_(t, "pixel        x_fb = "); put_int_col(t, x_fb);
-        puts_(t, "  y_fb = "); put_int_col(t, y_fb);
-        puts_(t, "  idx = "); put_i64(t, idx);
-        put(t, "\n", 1);
+        char *o;
+        put_who(t, m->name, 's', seg);
+        o = room(t, 100);                   /* 20 + 20 + 9 + 20 + 8 + 20 + 1 bytes */
+        o = int_at(str_at(o, "pixel        x_fb = "), x_fb, 12);
+        o = int_at(str_at(o, "  y_fb = "), y_fb, 12);
+        o = int_at(str_at(o, "  idx = "), idx, 0);
+        *o++ = '\n';
+        t->len = (size_t)(o - t->buf);
     }
 }
 
@@ -686,7 +750,7 @@ static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
         puts_(t, ",\"last\":"); put_pair_json(t, last);
         puts_(t, "}\n");
     } else if (t->fmt == PT_FORMAT_TEXT) {
-        put_who(t, m->name, "s", seg);
+        put_who(t, m->name, 's', seg);
         puts_(t, "clipped      "); put_u64(t, count);
         puts_(t, count == 1 ? " step at (x_vp, y_vp) = " : " steps, (x_vp, y_vp) from ");
         put_pair_text(t, first);
@@ -706,7 +770,7 @@ static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
         if (v) { puts_(t, ",\"v\":"); put_u64(t, v); }
         puts_(t, ",\"why\":"); put_json_str(t, why); puts_(t, "}\n");
     } else if (t->fmt == PT_FORMAT_TEXT) {
-        put_who(t, m->name, "s", seg);
+        put_who(t, m->name, 's', seg);
         puts_(t, "skipped      ");
         if (v) { put(t, "v", 1); put_u64(t, v); puts_(t, ": "); }
         puts_(t, why); put(t, "\n", 1);

@@ -6,7 +6,10 @@
 ** below is the printf-and-strtod search it replaced: slow, but its correctness
 ** rests only on a correctly rounded printf and strtod.  Every value tested must
 ** be spelled byte for byte as the oracle spells it, and read back bit for bit.
-** Random values come from a fixed-seed xorshift, so every run tests the same.
+** pt_fmt_fixed() likewise: its oracle is the snprintf("%.*f") it replaced, and
+** every value below is compared at every precision 0..17.  Random values come
+** from a fixed-seed xorshift, so every run tests the same.  `test_numfmt N`
+** runs N times as many random values for pt_fmt_fixed (a longer, one-off check).
 */
 #include <float.h>
 #include <math.h>
@@ -139,6 +142,15 @@ static size_t oracle_shortest(char *buf, double x)
     return strlen(buf);
 }
 
+/* ===== the oracle for pt_fmt_fixed: printf itself ===== */
+
+static size_t oracle_fixed(char *buf, double x, int prec)
+{
+    if (!isfinite(x)) return oracle_nonfinite(buf, x);
+    if (fabs(x) >= 1e15) return (size_t)snprintf(buf, PT_NUMLEN, "%.*e", prec, x);
+    return (size_t)snprintf(buf, PT_NUMLEN, "%.*f", prec, x);
+}
+
 /* ===== helpers ===== */
 
 static int spells(double x, const char *want)
@@ -220,6 +232,30 @@ static void agrees_around(double x, int ulps)   /* +-x and neighbours */
     }
 }
 
+/* x spelled as the oracle spells it at every precision 0..17: one value. */
+static void fixed_agrees(double x)
+{
+    char got[PT_NUMLEN], want[PT_NUMLEN];
+    int prec, bad = 0;
+
+    for (prec = 0; prec <= 17; prec++) {
+        size_t n = pt_fmt_fixed(got, x, prec);
+        oracle_fixed(want, x, prec);
+        if (strcmp(got, want) == 0 && n == strlen(got)) continue;
+        if (!bad++ && group_bad < 5)
+            printf("  %a at %d spelled '%s', oracle '%s'\n", x, prec, got, want);
+    }
+    group_n++;
+    group_bad += bad != 0;
+}
+
+static void fixed_agrees_pm(double x) { fixed_agrees(x); fixed_agrees(-x); }
+
+static double random_sign(double x) { return next_random() & 1 ? -x : x; }
+
+/* A uniform random double in [0, 1). */
+static double random_unit(void) { return (double)(next_random() >> 11) * 0x1p-53; }
+
 /* A small decimal: +-d / 10^p with d < 10^4, p < 4 ("12.5", "-0.07"). */
 static double small_decimal(void)
 {
@@ -229,10 +265,11 @@ static double small_decimal(void)
     return r >> 30 & 1 ? -d : d;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
     char b[PT_NUMLEN];
     int k, j, round_trips = 1, shortest = 1;
+    long scale = argc > 1 ? atol(argv[1]) : 1, i;  /* pt_fmt_fixed: random values times scale */
 
     PT_CHECK("num-1.1 0.1", spells(0.1, "0.1"));
     PT_CHECK("num-1.2 -1", spells(-1, "-1"));
@@ -346,5 +383,75 @@ int main(void)
     PT_CHECK("num-3.3 huge values switch to exponent form", strcmp(b, "1.000e+300") == 0);
     pt_fmt_fixed(b, -(double)INFINITY, 3);
     PT_CHECK("num-3.4 fixed non-finite", strcmp(b, "-inf") == 0);
+    pt_fmt_fixed(b, 0.125, 2);
+    PT_CHECK("num-3.5 fixed, a tie goes to the even digit: 0.125 -> 0.12", strcmp(b, "0.12") == 0);
+    pt_fmt_fixed(b, 2.5, 0);
+    PT_CHECK("num-3.6 fixed, 2.5 -> 2, 1.5 -> 2",
+             strcmp(b, "2") == 0 && pt_fmt_fixed(b, 1.5, 0) == 1 && strcmp(b, "2") == 0);
+    pt_fmt_fixed(b, -1e-10, 6);
+    PT_CHECK("num-3.7 fixed, a negative that rounds to 0 keeps its sign",
+             strcmp(b, "-0.000000") == 0);
+    pt_fmt_fixed(b, 999999999999999.5, 0);
+    PT_CHECK("num-3.8 fixed, the carry past 15 digits", strcmp(b, "1000000000000000") == 0);
+
+    /* Every group below: each value at every precision 0..17, as printf spells it. */
+    fixed_agrees_pm(0.0);
+    for (k = 1; k <= 18; k++)               /* odd j / 2^k ties at precision k - 1 */
+        for (j = 1; j < 256; j += 2) fixed_agrees_pm(ldexp(j, -k));
+    for (k = 0; k <= 17; k++) {             /* d.dd..d5 with k + 1 decimals: a tie at k */
+        for (i = 0; i < 500 * scale; i++) {     /* odd m / 2^(k+1), m of 1..53 bits */
+            uint64_t m = next_random(), bits = 1 + next_random() % 53;
+            double x = ldexp((double)((m >> (64 - bits)) | 1), -(k + 1));
+            if (fabs(x) >= 1e15) continue;
+            fixed_agrees(random_sign(x));
+            fixed_agrees(random_sign(nextafter(x, 0)));      /* just below, just above */
+            fixed_agrees(random_sign(nextafter(x, 1e300)));
+        }
+    }
+    PT_CHECK("num-5.1 exact ties j/2^k (0.5, 1.5, 2.5, 0.125, 0.375, ...), +-1 ulp",
+             group_done("num-5.1 ties j/2^k, +-1 ulp"));
+    for (i = 0; i < 90000 * scale; i++) {   /* bit patterns, 1e-20 <= |x| < 1e15 */
+        uint64_t r = next_random(), e = 956 + r % 117;   /* 2^-67 .. 2^49 */
+        double x = from_bits((r & 0x800fffffffffffffULL) | e << 52);
+        if (fabs(x) < 1e15) fixed_agrees(x);
+    }
+    PT_CHECK("num-5.2 random bit patterns, 1e-20 <= |x| < 1e15",
+             group_done("num-5.2 random bit patterns 1e-20..1e15"));
+    for (i = 0; i < 90000 * scale; i++) {   /* d / 10^p: 1..17 digits, p = 0..20 */
+        static const double p10[21] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9,
+            1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20};
+        uint64_t r = next_random();
+        double d = floor(random_unit() * p10[1 + r % 17]), x = d / p10[(r >> 8) % 21];
+        if (x < 1e15) fixed_agrees(random_sign(x));
+    }
+    PT_CHECK("num-5.3 decimals d / 10^p (d of 1..17 digits, p <= 20)",
+             group_done("num-5.3 decimals d / 10^p"));
+    for (i = 0; i < 45000 * scale; i++) {   /* uniform in [0, 10^k), k = -20..15 */
+        double u = random_unit(), x = u * pow(10, (double)(next_random() % 36) - 20);
+        fixed_agrees(random_sign(x));
+    }
+    PT_CHECK("num-5.4 uniform in [0, 10^k), k = -20..15",
+             group_done("num-5.4 uniform in [0, 10^k)"));
+    {
+        double lo = 1e15, hi = 0x1p-20;
+        for (k = 0; k < 2000; k++) {        /* below 1e15; above 2^-20 ~ 1e-6 */
+            lo = nextafter(lo, 0);
+            fixed_agrees_pm(lo);
+            fixed_agrees_pm(hi);
+            hi = nextafter(hi, 1);
+        }
+    }
+    for (k = 0; k < 2000; k++) fixed_agrees_pm(1e15 - 1 - k / 8.0);
+    for (k = 1; k <= 1000; k++) fixed_agrees_pm(from_bits((uint64_t)k));     /* tiniest */
+    for (i = 0; i < 2000 * scale; i++)
+        fixed_agrees(from_bits(next_random() & 0x800fffffffffffffULL));      /* subnormals */
+    for (k = -1074; k < 50; k++) fixed_agrees_pm(ldexp(1, k));               /* 2^k */
+    fixed_agrees_pm(DBL_MIN);
+    fixed_agrees_pm(1e15);                  /* exponent form from here */
+    fixed_agrees_pm(DBL_MAX);
+    fixed_agrees_pm((double)INFINITY);
+    fixed_agrees((double)NAN);
+    PT_CHECK("num-5.5 just below 1e15, above 2^-20, subnormals, 2^k, 1e15 up, non-finite",
+             group_done("num-5.5 edges: 1e15, 0, subnormals, 2^k"));
     return pt_test_report();
 }
