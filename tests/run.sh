@@ -4,48 +4,66 @@
 #
 # Usage: sh tests/run.sh BUILD_DIR.  Each test prints "N passed, N failed" as its
 # last line; this script prints the sum as its own last line and exits 1 when
-# anything failed (or a test crashed without printing its count).
+# anything failed (or a test crashed without printing its count).  The groups
+# run in two lanes at once (CI has two cores), the slowest ones split between
+# them; their reports are printed afterwards in the order listed below.
 B=${1:-build}
 ref=tests/reference
 [ -d ../shared/reference ] && ref=../shared/reference
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
 passed=0
 failed=0
 
-one() {     # one NAME COMMAND...: run, show failures, add the counts
-    name=$1; shift
-    out=$("$@" 2>&1); rc=$?
-    last=$(printf '%s\n' "$out" | grep -E '^[0-9]+ passed, [0-9]+ failed$' | tail -1)
+# NAME LANE COMMAND...: the groups, in report order
+groups="stages      1 $B/test_stages
+numfmt      2 $B/test_numfmt
+raster      1 $B/test_raster
+matrix      1 $B/test_matrix
+scene       1 $B/test_scene
+reference   1 $B/test_reference $ref
+fuzz        1 $B/test_fuzz
+explain     1 $B/test_explain
+png         1 $B/test_png
+golden      1 sh tests/golden.sh $B/pipetrace
+cli         1 sh tests/cli.sh $B/pipetrace
+diff        1 sh tests/diff.sh $B/pipetrace
+extreme     1 sh tests/extreme.sh $B/pipetrace
+teach       1 sh tests/teach.sh $B/pipetrace
+accuracy    1 sh tests/accuracy.sh $B/pipetrace
+journey     1 sh tests/journey.sh $B/pipetrace
+browser     2 sh tests/journey_browser.sh $B/pipetrace
+docs        1 sh tests/docs.sh $B/pipetrace
+valgrind    1 sh tests/valgrind.sh $B/pipetrace"
+
+lane() {    # lane N: run lane N's groups one after another, each into $out/NAME
+    printf '%s\n' "$groups" | while read -r name l cmd; do
+        [ "$l" = "$1" ] || continue
+        $cmd > "$out/$name" 2>&1
+        echo $? > "$out/$name.rc"
+    done
+}
+
+report() {  # report NAME: show failures, add the counts
+    name=$1
+    rc=$(cat "$out/$name.rc" 2>/dev/null || echo 1)
+    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$out/$name" | tail -1)
     if [ -z "$last" ]; then
-        printf '%s\n' "$out" | tail -20
+        tail -20 "$out/$name"
         echo "$name: crashed or printed no count (exit $rc)"
         failed=$((failed + 1))
         return
     fi
     p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
     [ "$rc" -ne 0 ] && [ "$f" -eq 0 ] && f=1
-    printf '%s\n' "$out" | grep -E '^(FAIL|  )' | head -40
+    grep -E '^(FAIL|  )' "$out/$name" | head -40
     printf '%-16s %s\n' "$name" "$last"
     passed=$((passed + p)); failed=$((failed + f))
 }
 
-one stages     "$B/test_stages"
-one numfmt     "$B/test_numfmt"
-one raster     "$B/test_raster"
-one matrix     "$B/test_matrix"
-one scene      "$B/test_scene"
-one reference  "$B/test_reference" "$ref"
-one fuzz       "$B/test_fuzz"
-one explain    "$B/test_explain"
-one png        "$B/test_png"
-one golden     sh tests/golden.sh "$B/pipetrace"
-one cli        sh tests/cli.sh "$B/pipetrace"
-one diff       sh tests/diff.sh "$B/pipetrace"
-one extreme    sh tests/extreme.sh "$B/pipetrace"
-one teach      sh tests/teach.sh "$B/pipetrace"
-one accuracy   sh tests/accuracy.sh "$B/pipetrace"
-one journey    sh tests/journey.sh "$B/pipetrace"
-one browser    sh tests/journey_browser.sh "$B/pipetrace"
-one docs       sh tests/docs.sh "$B/pipetrace"
-one valgrind   sh tests/valgrind.sh "$B/pipetrace"
+lane 1 &
+lane 2
+wait
+for name in $(printf '%s\n' "$groups" | cut -d' ' -f1); do report "$name"; done
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
