@@ -8,7 +8,6 @@
 */
 #include <math.h>
 #include <string.h>
-#include "clip.h"
 #include "explain.h"
 #include "matrix.h"
 #include "../stages/m4_clip2cvv.h"
@@ -59,74 +58,74 @@ const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st)
 int pt_journey_of(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
                   int raw_lookat)
 {
-    pt_stage_params par;
     pt_options o;
     pt_plan p;
-    pt_sink sink;
-    const pt_sink *sinks[PT_NSTAGES_ALL];
-    pt_vec4 clip;
-    unsigned code;
-    int st;
 
-    pt_stage_params_of(&par, s, m);
     if (!s->matrix) {
-        pt_journey_compute(j, &par, m->v[v - 1]);
+        pt_journey_of_plan(j, s, NULL, m, v);
         return 0;
     }
-    memset(j, 0, sizeof *j);
-    j->par = par;
-    j->matrix = 1;
     pt_options_default(&o);
     o.raw_lookat = raw_lookat;
     if (pt_plan_make(&p, s, &o) != 0) return -1;
-    j->world = p.models[m - s->models].world;
-    j->view = p.view;
-    j->proj = p.proj;
-    sink.vertex = keep;
-    sink.ud = j;
-    for (st = 0; st < PT_NSTAGES_ALL; st++) sinks[st] = &sink;
-    pt_matrix_journey(s, &p, (size_t)(m - s->models), m->v[v - 1], sinks, &clip, &code);
-    j->order = pt_matrix_order;
-    j->norder = code ? 5 : pt_matrix_norder;    /* outside: it stops at the cvv */
+    pt_journey_of_plan(j, s, &p, m, v);
     pt_plan_free(&p);
     return 0;
 }
 
-int pt_journey_of_clip(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t from,
-                       uint64_t to, double t, int raw_lookat)
+/* Start a matrix-camera journey of model m under plan p: its numbers and
+** matrices, no records yet; sinks[] all keep() into j. */
+static void matrix_start(pt_journey *j, const pt_scene *s, const pt_plan *p, const pt_model *m,
+                         pt_sink *sink, const pt_sink *sinks[PT_NSTAGES_ALL])
 {
-    pt_journey a, b;
-    pt_vec4 pa, pb, q0, q1, q;
-    double t0, t1;
+    int st;
+
+    memset(j, 0, sizeof *j);
+    pt_stage_params_of(&j->par, s, m);
+    j->matrix = 1;
+    j->world = p->models[m - s->models].world;
+    j->view = p->view;
+    j->proj = p->proj;
+    j->order = pt_matrix_order;
+    j->norder = pt_matrix_norder;
+    sink->vertex = keep;
+    sink->ud = j;
+    for (st = 0; st < PT_NSTAGES_ALL; st++) sinks[st] = sink;
+}
+
+void pt_journey_of_plan(pt_journey *j, const pt_scene *s, const pt_plan *p,
+                        const pt_model *m, uint64_t v)
+{
+    pt_stage_params par;
+    pt_sink sink;
+    const pt_sink *sinks[PT_NSTAGES_ALL];
+    pt_vec4 clip;
+    unsigned code;
+
+    if (!s->matrix) {
+        pt_stage_params_of(&par, s, m);
+        pt_journey_compute(j, &par, m->v[v - 1]);
+        return;
+    }
+    matrix_start(j, s, p, m, &sink, sinks);
+    pt_matrix_journey(s, p, (size_t)(m - s->models), m->v[v - 1], sinks, &clip, &code);
+    if (code) j->norder = 5;                /* outside: it stops at the cvv */
+}
+
+void pt_journey_of_clip(pt_journey *j, const pt_scene *s, const pt_plan *p,
+                        const pt_model *m, pt_vec4 q)
+{
     pt_sink sink;
     const pt_sink *sinks[PT_NSTAGES_ALL];
     pt_vrec r = {0};
-    int st;
 
-    if (pt_journey_of(&a, s, m, from, raw_lookat) != 0 ||
-        pt_journey_of(&b, s, m, to, raw_lookat) != 0) return -1;
-    pa = (pt_vec4){a.rec[PT_STAGE_CLIP].x, a.rec[PT_STAGE_CLIP].y,
-                   a.rec[PT_STAGE_CLIP].z, a.rec[PT_STAGE_CLIP].w};
-    pb = (pt_vec4){b.rec[PT_STAGE_CLIP].x, b.rec[PT_STAGE_CLIP].y,
-                   b.rec[PT_STAGE_CLIP].z, b.rec[PT_STAGE_CLIP].w};
-    if (!pt_clip_segment(pa, pb, &t0, &t1, &q0, &q1)) return -1;
-    if (t0 == t) q = q0;
-    else if (t1 == t) q = q1;
-    else return -1;
-    *j = a;                                 /* parameters and matrices */
-    memset(j->rec, 0, sizeof j->rec);
+    matrix_start(j, s, p, m, &sink, sinks);
     r.stage = PT_STAGE_CLIP;                /* the point, where its journey starts */
     r.x = q.x; r.y = q.y; r.z = q.z; r.w = q.w;
     j->rec[PT_STAGE_CLIP] = r;
     r.stage = PT_STAGE_CVV;                 /* inside: on a plane at most */
     j->rec[PT_STAGE_CVV] = r;
-    sink.vertex = keep;
-    sink.ud = j;
-    for (st = 0; st < PT_NSTAGES_ALL; st++) sinks[st] = &sink;
     pt_matrix_tail(s, q, fabs(q.w), sinks);
-    j->order = pt_matrix_order;
-    j->norder = pt_matrix_norder;
-    return 0;
 }
 
 /* 1 when a and b hold the same numbers (bit for bit) and flags. */

@@ -54,14 +54,18 @@ void pt_journey_compute(pt_journey *j, const pt_stage_params *par, pt_vec3 v_m);
 int pt_journey_of(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
                   int raw_lookat);
 
-/* The journey of a point the matrix camera's clipping made on the segment from
-** 1-based vertex from to vertex to of model m, at parameter t (as the trace's
-** clipvertex record gives them): both vertices' clip coordinates, clipped as
-** pt_run() clips them (src/clip.c), then ndc .. index from the point.  Its
-** clip and cvv records hold the point itself.  Returns 0, or -1 when out of
-** memory or when no end of the clipped segment lies at t. */
-int pt_journey_of_clip(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t from,
-                       uint64_t to, double t, int raw_lookat);
+/* The same under plan p, the one pt_run() got (p may be NULL for the classic
+** camera): no plan is built, so a caller with many vertices pays for one plan,
+** not one per vertex.  This function can't fail. */
+void pt_journey_of_plan(pt_journey *j, const pt_scene *s, const pt_plan *p,
+                        const pt_model *m, uint64_t v);
+
+/* The journey of a point the matrix camera's clipping made on a segment of
+** model m, from its clip coordinates q (the listener's clipvertex_begin gets
+** them): ndc .. index, as pt_run() computes them.  Its clip and cvv records
+** hold q itself; the earlier stages have none.  This function can't fail. */
+void pt_journey_of_clip(pt_journey *j, const pt_scene *s, const pt_plan *p,
+                        const pt_model *m, pt_vec4 q);
 
 /* The name, spaces and formula of stage st as j's camera has it (the matrix
 ** camera's viewport stage floors instead of rounding).  Can't fail. */

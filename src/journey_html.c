@@ -158,7 +158,6 @@ static const char *const script[] = {
 "                                   .indexOf(q.stage) + 1;\n"
 "      if (t >= 1) st = t - 1;\n"
 "    }\n"
-"    return q;\n"
 "  }\n",
 "  fromHash();\n"
 "  show();\n"

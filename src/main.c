@@ -143,9 +143,9 @@ static int parse_args(cli *c, int argc, char **argv)
 ** --model, in some model). */
 static int check_filters(const cli *c, const pt_scene *s)
 {
+    if (c->opt.vertex)                      /* looks the model up too */
+        return pt_cli_vertex_model(s, NULL, c->opt.model, c->opt.vertex) ? 0 : EXIT_INPUT;
     if (c->opt.model && !pt_cli_model(s, NULL, c->opt.model)) return EXIT_INPUT;
-    if (c->opt.vertex && !pt_cli_vertex_model(s, NULL, c->opt.model, c->opt.vertex))
-        return EXIT_INPUT;
     return 0;
 }
 
@@ -192,7 +192,6 @@ int main(int argc, char **argv)
             pt_trace_init(tr, tout.f, c.fmt, c.precision);
             pt_trace_listener(tr, &l);
             tr->explain = c.explain;
-            tr->raw_lookat = c.opt.raw_lookat;
         }
     }
     if (!rc && c.image && pt_fb_init(&fb, s.fb_w, s.fb_h, s.background) != 0) {

@@ -199,8 +199,9 @@ static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
 ** k > 0 (y = n 2^(q-2-k) / 5^k, q-2-k >= 0: when 5^k divides n, so k <= 24);
 ** for k < -54, y = n 5^-k / 2^(2-q+k) with 2-q+k > 57 never is.  Non-integers
 ** never come that close: by the continued fractions of 2^(q-2) / 10^k, the
-** nearest any n < 2^56 gets is 2^-64.5 (checked once for every q, as in
-** Schubfach's and Ryu's proofs).  Big integers settle it if that were wrong. */
+** nearest any n < 2^56 gets is 2^-64.5 (found once for every q by a script
+** outside this repository, as in Schubfach's and Ryu's proofs; nothing here
+** relies on it: big integers settle any case that comes that close). */
 static uint64_t scaled(uint64_t n, int q, int k, const tenpow *p, int *exact)
 {
     int h = q + p->beta + 126;
@@ -402,11 +403,12 @@ static int low_bits(uint64_t hi, uint64_t lo, int s)
 ** is below 2^(s-1), half the divisor: fp = 0, no tie.  fp = 10^prec carries
 ** into ip.  A tie goes to the even last digit: fp's when prec > 0 (10^prec is
 ** even), else ip's.  The sign is signbit's: -0.0 and small negatives give
-** "-0.000", as printf does.  s <= 0: |x| = c 2^-s is an integer. */
+** "-0.000", as printf does.  |x| < 1e15 < 2^50 and c >= 2^52 (or subnormal)
+** make s >= 3. */
 static size_t fixed(char *buf, double x, int prec)
 {
-    uint64_t bits, c, ip, fp = 0, u;
-    int be, s, k;
+    uint64_t bits, c, ip, fp = 0, u, f, hi, lo;
+    int be, s, k, up = 0;
     char *o, *end;
 
     memcpy(&bits, &x, sizeof bits);
@@ -414,23 +416,17 @@ static size_t fixed(char *buf, double x, int prec)
     c = bits & ((UINT64_C(1) << 52) - 1);
     if (be == 0) s = 1074;                          /* subnormal: |x| = c 2^-1074 */
     else { s = 1075 - be; c |= UINT64_C(1) << 52; } /* |x| = c 2^-s, c >= 2^52 */
-    if (s <= 0) ip = c << -s;                       /* an integer: |x| < 2^50 */
-    else {
-        uint64_t f, hi, lo;
-        int up = 0;
-
-        ip = s < 64 ? c >> s : 0;                   /* s >= 53: c < 2^s */
-        f = s < 64 ? c & ((UINT64_C(1) << s) - 1) : c;
-        hi = mul_64x64(f, pow10_tab[prec], &lo);    /* hi:lo = f 10^prec */
-        if (s <= 110) {
-            fp = shr_128(hi, lo, s);                /* floor(f 10^prec / 2^s) */
-            if (shr_128(hi, lo, s - 1) & 1)         /* the half bit: round up if */
-                up = low_bits(hi, lo, s - 1) ||     /* above half, or a tie and */
-                     ((prec ? fp : ip) & 1);        /* the last digit is odd */
-        }
-        fp += (uint64_t)up;
-        if (fp == pow10_tab[prec]) { fp = 0; ip++; }
+    ip = s < 64 ? c >> s : 0;                       /* s >= 53: c < 2^s */
+    f = s < 64 ? c & ((UINT64_C(1) << s) - 1) : c;
+    hi = mul_64x64(f, pow10_tab[prec], &lo);        /* hi:lo = f 10^prec */
+    if (s <= 110) {
+        fp = shr_128(hi, lo, s);                    /* floor(f 10^prec / 2^s) */
+        if (shr_128(hi, lo, s - 1) & 1)             /* the half bit: round up if */
+            up = low_bits(hi, lo, s - 1) ||         /* above half, or a tie and */
+                 ((prec ? fp : ip) & 1);            /* the last digit is odd */
     }
+    fp += (uint64_t)up;
+    if (fp == pow10_tab[prec]) { fp = 0; ip++; }
     end = buf + (signbit(x) != 0) + 1 + (prec ? 1 + prec : 0);  /* [-]ip[.fp] */
     for (u = ip; u >= 10; u /= 10) end++;           /* ip's digits but one */
     *end = '\0';

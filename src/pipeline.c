@@ -276,11 +276,11 @@ static int matrix_segment(const pt_scene *s, const pt_model *m, uint64_t seg,
     if ((va->code | vb->code) == 0) return 1;           /* all inside */
     if (!pt_clip_segment(va->clip, vb->clip, &t0, &t1, &q0, &q1)) return 0;
     if (va->code) {                                     /* a new first end */
-        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t0);
+        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t0, q0);
         *a = pt_matrix_tail(s, q0, fabs(q0.w), sinks);
     }
     if (vb->code) {                                     /* a new last end */
-        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t1);
+        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t1, q1);
         *b = pt_matrix_tail(s, q1, fabs(q1.w), sinks);
     }
     return 1;

@@ -94,9 +94,10 @@ typedef struct pt_listener {
     void (*vertex_begin)(void *ud, const pt_model *m, uint64_t v);  /* 1-based v */
     pt_sink sink;                                   /* the stages' records */
     void (*clipvertex_begin)(void *ud, const pt_model *m, uint64_t seg,
-                             uint64_t from, uint64_t to, double t);
-                          /* matrix camera: a point made by clipping segment seg
-                          ** (from -> to, 1-based) at t; its records follow */
+                             uint64_t from, uint64_t to, double t, pt_vec4 q);
+                          /* matrix camera: the point q (clip coordinates) made
+                          ** by clipping segment seg (from -> to, 1-based) at t;
+                          ** its records follow */
     void (*pixel)(void *ud, const pt_model *m, uint64_t seg,        /* 1-based seg */
                   int64_t x_fb, int64_t y_fb, int64_t idx);
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,

@@ -409,6 +409,7 @@ static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
     pt_trace *t = ud;
 
     t->scene = s;
+    t->plan = p;
     if (t->fmt == PT_FORMAT_JSONL) header_json(t, s, p);
     else if (t->fmt == PT_FORMAT_TEXT) header_text(t, s, p);
     else puts_(t, s->matrix ? csv_matrix : csv_classic);
@@ -417,7 +418,7 @@ static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
 /* ===== vertex records ===== */
 
 static void on_clipvertex_begin(void *ud, const pt_model *m, uint64_t seg,
-                               uint64_t from, uint64_t to, double tc)
+                               uint64_t from, uint64_t to, double tc, pt_vec4 q)
 {
     pt_trace *t = ud;
 
@@ -427,8 +428,8 @@ static void on_clipvertex_begin(void *ud, const pt_model *m, uint64_t seg,
     t->from = from;
     t->to = to;
     t->t_clip = tc;
-    t->explain_lost = !(t->explain && t->scene) ||
-        pt_journey_of_clip(&t->journey, t->scene, m, from, to, tc, t->raw_lookat) != 0;
+    t->q_clip = q;
+    t->journey_made = t->explain_lost = 0;
 }
 
 static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)
@@ -438,10 +439,7 @@ static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)
     t->clipv = 0;
     t->model = m;
     t->v = v;
-    t->explain_lost = 0;
-    if (t->explain && t->scene &&   /* every stage, even those left out */
-        pt_journey_of(&t->journey, t->scene, m, v, t->raw_lookat) != 0)
-        t->explain_lost = 1;
+    t->journey_made = t->explain_lost = 0;
 }
 
 /* Names of a stage's coordinates in the text format, in pt_stage order. */
@@ -480,7 +478,13 @@ static void put_explain(pt_trace *t, const pt_vrec *r)
     char b[PT_EXPLAINLEN];
     size_t n;
 
-    if (!t->scene || !pt_journey_matches(&t->journey, r)) t->explain_lost = 1;
+    if (!t->scene || !t->plan) t->explain_lost = 1;
+    if (!t->explain_lost && !t->journey_made) {     /* every stage, even those left out */
+        if (t->clipv) pt_journey_of_clip(&t->journey, t->scene, t->plan, t->model, t->q_clip);
+        else pt_journey_of_plan(&t->journey, t->scene, t->plan, t->model, t->v);
+        t->journey_made = 1;
+    }
+    if (!t->explain_lost && !pt_journey_matches(&t->journey, r)) t->explain_lost = 1;
     if (t->explain_lost) return;
     n = pt_explain_stage(b, sizeof b, &t->journey, r->stage, "; ");
     if (n >= sizeof b) n = sizeof b - 1;
@@ -782,25 +786,24 @@ static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
 static void on_summary(void *ud, const pt_summary *sum)
 {
     pt_trace *t = ud;
-    static const char *const names[] = {
-        "models", "vertices", "vertices_unused", "vertices_traced", "segments",
-        "segments_degenerate", "segments_skipped", "segments_culled", "pixels",
-        "clipped", "clip_runs", "behind",
+    const struct { const char *name; uint64_t hi, lo; } c[] = {    /* hi * 2^64 + lo */
+        {"models", 0, sum->models}, {"vertices", 0, sum->vertices},
+        {"vertices_unused", 0, sum->vertices_unused},
+        {"vertices_traced", 0, sum->vertices_traced}, {"segments", 0, sum->segments},
+        {"segments_degenerate", 0, sum->segments_degenerate},
+        {"segments_skipped", 0, sum->segments_skipped},
+        {"segments_culled", 0, sum->segments_culled}, {"pixels", 0, sum->pixels},
+        {"clipped", sum->clipped_hi, sum->clipped}, {"clip_runs", 0, sum->clip_runs},
+        {"behind", 0, sum->behind},
     };
-    const uint64_t vals[] = {
-        sum->models, sum->vertices, sum->vertices_unused, sum->vertices_traced,
-        sum->segments, sum->segments_degenerate, sum->segments_skipped,
-        sum->segments_culled, sum->pixels, sum->clipped, sum->clip_runs, sum->behind,
-    };
-    const uint64_t hi[] = {0, 0, 0, 0, 0, 0, 0, 0, 0, sum->clipped_hi, 0, 0};  /* 2^64s */
     size_t k;
 
     if (t->fmt == PT_FORMAT_CSV) return;
     if (t->fmt == PT_FORMAT_JSONL) {
         puts_(t, "{\"type\":\"summary\"");
-        for (k = 0; k < sizeof vals / sizeof vals[0]; k++) {
-            puts_(t, ",\""); puts_(t, names[k]); puts_(t, "\":");
-            put_u128(t, hi[k], vals[k]);
+        for (k = 0; k < sizeof c / sizeof c[0]; k++) {
+            puts_(t, ",\""); puts_(t, c[k].name); puts_(t, "\":");
+            put_u128(t, c[k].hi, c[k].lo);
         }
         puts_(t, ",\"warnings\":{");
         for (k = 0; k < PT_NWARN; k++) {
@@ -812,10 +815,10 @@ static void on_summary(void *ud, const pt_summary *sum)
         return;
     }
     puts_(t, "\nsummary");
-    for (k = 0; k < sizeof vals / sizeof vals[0]; k++) {
+    for (k = 0; k < sizeof c / sizeof c[0]; k++) {
         puts_(t, k % 4 == 0 ? "\n  " : "  ");
-        puts_(t, names[k]); put(t, " ", 1);
-        put_u128(t, hi[k], vals[k]);
+        puts_(t, c[k].name); put(t, " ", 1);
+        put_u128(t, c[k].hi, c[k].lo);
     }
     puts_(t, "\n  warnings");
     for (k = 0; k < PT_NWARN; k++) {
@@ -836,8 +839,10 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->v = 0;
     t->explain = 0;
     t->explain_lost = 0;
-    t->raw_lookat = 0;
+    t->journey_made = 0;
+    t->clipv = 0;
     t->scene = NULL;
+    t->plan = NULL;
     t->failed = 0;
     t->len = 0;
 }

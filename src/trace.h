@@ -40,14 +40,16 @@ typedef struct pt_trace {
     int precision;               /* text: digits after the point, 0..17 */
     const pt_model *model;       /* model of the vertex being traced */
     uint64_t v;                  /* its 1-based number */
-    int raw_lookat;              /* --explain: the journey's --raw-lookat */
     int clipv;                   /* 1: records of a point made by clipping: */
     uint64_t seg, from, to;      /*   segment seg, from -> to (1-based) */
-    double t_clip;               /*   at parameter t */
+    double t_clip;               /*   at parameter t, */
+    pt_vec4 q_clip;              /*   its clip coordinates */
     int explain;                 /* 1: each vertex record gets its formula with
                                  ** the numbers put in (--explain); set after init */
-    const pt_scene *scene;       /* the scene, from the header (for explain) */
-    pt_journey journey;          /* with explain: the vertex's whole journey */
+    const pt_scene *scene;       /* the scene and the plan, from the header */
+    const pt_plan *plan;         /*   (for explain; they outlive the run) */
+    pt_journey journey;          /* with explain: the vertex's whole journey, */
+    int journey_made;            /*   once its first record is explained */
     int explain_lost;            /* a record the journey does not reproduce came:
                                  ** no more explanations for this vertex */
     int failed;                  /* 1 after a write error */

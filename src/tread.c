@@ -1336,6 +1336,9 @@ static int p3_parse(pt_ppm *img, const char *path, const char *buf, size_t len,
 
     if (ppm_header(img, path, buf, len, &k, err, errlen) != 0) return -1;
     n = 3 * (size_t)img->w * (size_t)img->h;
+    if (n > (len - k + 1) / 2)              /* each sample takes a digit and a space */
+        return img_fail(err, errlen, path, "%zu samples cannot fit in the %zu bytes "
+                        "left: the image is cut short", n, len - k);
     if (!(img->owned = malloc(n))) return img_fail(err, errlen, path, "out of memory");
     for (i = 0; i < n; i++) {
         if (ppm_num(buf, &k, len, &v) != 0 || v > img->maxval) {

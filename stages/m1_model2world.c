@@ -12,10 +12,7 @@ void pt_emit_vec4(const pt_sink *sink, pt_stage st, pt_vec4 v, int lost)
     r.stage = st;
     r.x = a[0] = v.x; r.y = a[1] = v.y; r.z = a[2] = v.z; r.w = a[3] = v.w;
     r.warn = pt_warn_nonfinite(a, 4);
-    if (lost > PT_BITS_LOST_WARN) {
-        r.warn |= PT_WARN_CANCEL;
-        r.digits_lost = pt_bits_to_digits(lost);
-    }
+    pt_warn_lost(&r, PT_WARN_CANCEL, lost);
     pt_emit(sink, &r);
 }
 

@@ -18,7 +18,8 @@
 **          \       /
 **        ---\-----/--- n
 **            \ . / eye
-** docs/cameras.md#clip.
+** A point close to the near plane cancels most of z_k (z_v f/(f-n) against
+** f n/(f-n)): flagged `cancellation`.  docs/cameras.md#clip.
 */
 #ifndef PT_M3_VIEW2CLIP_H
 #define PT_M3_VIEW2CLIP_H

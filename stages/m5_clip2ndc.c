@@ -17,10 +17,7 @@ pt_vec3 pt_clip2ndc(pt_vec4 k, double w_scale, const pt_sink *sink)
     r.stage = PT_STAGE_NDC;
     r.x = a[0] = n.x; r.y = a[1] = n.y; r.z = a[2] = n.z;
     r.warn = pt_warn_nonfinite(a, 3);
-    if (lost > PT_BITS_LOST_WARN) {
-        r.warn |= PT_WARN_ILLCOND;
-        r.digits_lost = pt_bits_to_digits(lost);
-    }
+    pt_warn_lost(&r, PT_WARN_ILLCOND, lost);
     pt_emit(sink, &r);
     return n;
 }

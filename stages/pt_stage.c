@@ -82,6 +82,13 @@ int pt_bits_to_digits(int bits)
     return (int)((long)bits * 30103L / 100000L);    /* log10(2) = 0.30103 */
 }
 
+void pt_warn_lost(pt_vrec *r, unsigned warn, int lost)
+{
+    if (lost <= PT_BITS_LOST_WARN) return;
+    r->warn |= warn;
+    r->digits_lost = pt_bits_to_digits(lost);
+}
+
 unsigned pt_warn_nonfinite(const double *v, int n)
 {
     int k;

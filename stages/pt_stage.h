@@ -125,6 +125,11 @@ int pt_bits_lost(double scale, double x);
 ** integers so every platform gives the same answer.  This function can't fail. */
 int pt_bits_to_digits(int bits);
 
+/* When more than PT_BITS_LOST_WARN of a result's bits were lost, flag r with
+** warn (PT_WARN_CANCEL or PT_WARN_ILLCOND) and say how many decimal digits in
+** r->digits_lost.  This function can't fail. */
+void pt_warn_lost(pt_vrec *r, unsigned warn, int lost);
+
 /* PT_WARN_NONFINITE when any of the n values is not finite, else 0. */
 unsigned pt_warn_nonfinite(const double *v, int n);
 

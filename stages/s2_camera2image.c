@@ -25,10 +25,7 @@ pt_vec3 pt_camera2image(pt_vec3 c, double z_scale, int perspective, const pt_sin
     r.stage = PT_STAGE_IMAGE;
     r.x = v[0] = ip.x; r.y = v[1] = ip.y; r.z = ip.z;
     r.warn = pt_warn_nonfinite(v, 2);
-    if (lost > PT_BITS_LOST_WARN) {
-        r.warn |= PT_WARN_ILLCOND;
-        r.digits_lost = pt_bits_to_digits(lost);
-    }
+    pt_warn_lost(&r, PT_WARN_ILLCOND, lost);
     pt_emit(sink, &r);
     return ip;
 }

@@ -31,7 +31,7 @@
 
 /* Java's Math.round(x) as a double: floor(x) plus one when x - floor(x) >= 0.5.
 ** Exact: x - floor(x) is computed without rounding error for every finite x
-** but -0.5 < x < 0, where it rounds yet stays above 0.5 (see the .c file).  NaN gives 0, infinities stay infinite.  This function can't fail. */
+** but -0.5 < x < 0, where it may round, never below 0.5 (see the .c file).  NaN gives 0, infinities stay infinite.  This function can't fail. */
 double pt_java_round(double x);
 
 /* Round pixel-plane coordinate x to an integer in *out.  Returns 1, or 0 (and

@@ -302,6 +302,10 @@ check "diff-6.12 P3 against another P6: the same two pixels differ" \
 printf 'P3\n4 2\n255\n0 0 0 1\n' > "$tmp/short3.ppm"
 "$exe" diff "$tmp/a.ppm" "$tmp/short3.ppm" >/dev/null 2>"$tmp/err"
 check "diff-6.13 a cut-short P3: exit 2" test $? = 2
+printf 'P3\n16384 16384\n255\n0 0 0\n' > "$tmp/huge3.ppm"
+"$exe" diff "$tmp/a.ppm" "$tmp/huge3.ppm" >/dev/null 2>"$tmp/err"
+check "diff-6.13a a P3 whose samples cannot fit in the file is refused before allocating" \
+    grep -q "huge3.ppm:1:1: error: 805306368 samples cannot fit in the 6 bytes left" "$tmp/err"
 "$exe" --image "$tmp/bi.png" 2>/dev/null
 "$exe" --image "$tmp/bi.ppm" 2>/dev/null
 "$exe" diff "$tmp/bi.png" "$tmp/bi.ppm" >"$tmp/out" 2>&1

@@ -39,7 +39,7 @@ valgrind    1 sh tests/valgrind.sh $B/pipetrace"
 lane() {    # lane N: run lane N's groups one after another, each into $out/NAME
     printf '%s\n' "$groups" | while read -r name l cmd; do
         [ "$l" = "$1" ] || continue
-        $cmd > "$out/$name" 2>&1
+        $cmd > "$out/$name" 2>&1 < /dev/null   # (stdin is the list)
         echo $? > "$out/$name.rc"
     done
 }

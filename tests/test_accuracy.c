@@ -261,7 +261,7 @@ static void m_begin(void *ud, const pt_model *m, uint64_t v)
 /* End 0 is made when the first end is outside (cvv code not 0) and comes
 ** first; otherwise (or the second time) it is end 1. */
 static void m_clipvertex(void *ud, const pt_model *m, uint64_t seg, uint64_t from,
-                         uint64_t to, double t)
+                         uint64_t to, double t, pt_vec4 q)
 {
     mgot *g = ud;
     size_t k = (size_t)(m - g->s->models);
@@ -269,6 +269,7 @@ static void m_clipvertex(void *ud, const pt_model *m, uint64_t seg, uint64_t fro
     const pt_vrec *cvv = &g->rec[(g->vbase[k] + (size_t)(from - 1)) * NALL + PT_STAGE_CVV];
 
     (void)to;
+    (void)q;
     if (cvv->code == 0 || g->have[slot * NALL + PT_STAGE_NDC]) slot++;
     g->cur = slot;
     g->t[slot] = t;
@@ -800,7 +801,7 @@ static void test_mcompare(void)
              "inf, 2 of 3 differ", isinf(ed[PT_ACC_M_VIEWPORT].max_abs)
              && ed[PT_ACC_M_VIEWPORT].differ == 2 && ed[PT_ACC_M_VIEWPORT].of == 3);
     PT_CHECK("acc-8.11 ... float keeps it inside; no pixel differs",
-             e[PT_ACC_M_CVV].differ == 0 && ed[PT_ACC_M_RASTER].differ == 0);
+             e[PT_ACC_M_CVV].differ == 0 && e[PT_ACC_M_RASTER].differ == 0);
     pt_acc_run_free(&ref); pt_acc_run_free(&f); pt_acc_run_free(&d);
     pt_scene_free(&s);
 

@@ -33,10 +33,7 @@ pt_vec3 pt_model2camera(pt_vec3 m, pt_vec3 t, const pt_sink *sink)
     lost = sum_bits_lost(m.x, t.x, c.x);
     lost = (int)fmax(lost, sum_bits_lost(m.y, t.y, c.y));
     lost = (int)fmax(lost, sum_bits_lost(m.z, t.z, c.z));
-    if (lost > PT_BITS_LOST_WARN) {
-        r.warn |= PT_WARN_CANCEL;
-        r.digits_lost = pt_bits_to_digits(lost);
-    }
+    pt_warn_lost(&r, PT_WARN_CANCEL, lost);
     pt_emit(sink, &r);
     return c;
 }
