@@ -8,20 +8,24 @@
 ** framebuffer -> index; a segment clipped in clip space; and the errors of
 ** these stages against the reference.  As in src/accuracy.c each arithmetic is
 ** written out in its own type, and each computing line echoes its formula.
-** The double functions are operation for operation stages/m1..m7, src/clip.c
-** and src/matrix.c, and its matrices are pt_lookat()'s and pt_perspective()'s
-** own; tests/test_accuracy.c checks them value for value against the
+** Double is the pipeline itself: stages/pt_mat4.c's product, stages/m4..m7
+** and src/clip.c called as they are, with pt_lookat()'s and pt_perspective()'s
+** matrices; tests/test_accuracy.c checks it value for value against the
 ** pipeline's records.
 **
-** Each stage has its small function per arithmetic: vmul (world, view and clip
-** are the same row-vector product), cvv, ndc, screen and viewport; framebuffer
-** and index are integers, the same in every arithmetic (tail_int).
+** Float and the reference have a small function per stage: vmul (world, view
+** and clip are the same row-vector product), cvv, ndc, screen and viewport;
+** framebuffer and index are integers, the same in every arithmetic (tail_int).
 */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "accuracy.h"
+#include "clip.h"
 #include "../stages/m4_clip2cvv.h"
+#include "../stages/m5_clip2ndc.h"
+#include "../stages/m6_ndc2screen.h"
+#include "../stages/m7_screen2viewport.h"
 #include "../stages/s4_pixel2viewport.h"
 
 static const double PI = 3.14159265358979323846;       /* stages/pt_mat4.c's */
@@ -598,85 +602,32 @@ static void journey_f(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney
     else no_tail(&j->t);
 }
 
-/* ----- double ----- */
+/* ----- double: the pipeline's own functions, so its values are the trace's ----- */
 
-static void vmul_d(const double v[4], const pt_mat4 *m, double r[4])
-{
-    int c;
+static pt_vec4 vec4_of(const double a[4]) { pt_vec4 v = {a[0], a[1], a[2], a[3]}; return v; }
 
-    for (c = 0; c < 4; c++)                 /* x' = x*m0c + y*m1c + z*m2c + w*m3c */
-        r[c] = v[0] * m->m[0][c] + v[1] * m->m[1][c] + v[2] * m->m[2][c] + v[3] * m->m[3][c];
-}
-
-static void cvv_dist_d(const double k[4], double d[PT_CVV_NPLANES])
-{
-    d[0] = k[2];                            /* near:   z >= 0 */
-    d[1] = k[3] - k[2];                     /* far:    z <= w */
-    d[2] = k[3] + k[0];                     /* left:   x >= -w */
-    d[3] = k[3] - k[0];                     /* right:  x <= w */
-    d[4] = k[3] + k[1];                     /* bottom: y >= -w */
-    d[5] = k[3] - k[1];                     /* top:    y <= w */
-}
-
-static unsigned cvv_d(const double k[4])
-{
-    double d[PT_CVV_NPLANES];
-    unsigned code = 0;
-    int i;
-
-    cvv_dist_d(k, d);
-    for (i = 0; i < PT_CVV_NPLANES; i++)
-        if (!(d[i] >= 0)) code |= 1u << i;  /* NaN counts as outside */
-    return code;
-}
-
-static void ndc_d(const double k[4], double n[3])
-{
-    n[0] = k[0] / k[3];                     /* x_n = x_k / w_k */
-    n[1] = k[1] / k[3];                     /* y_n = y_k / w_k */
-    n[2] = k[2] / k[3];                     /* z_n = z_k / w_k */
-}
-
-static void screen_d(const pt_scene *s, const double n[3], double sc[3])
-{
-    sc[0] = (n[0] + 1) * s->vp_w * 0.5;     /* x_s = (x_n + 1) * w * 0.5 */
-    sc[1] = (1 - n[1]) * s->vp_h * 0.5;     /* y_s = (1 - y_n) * h * 0.5 */
-    sc[2] = n[2];                           /* z_s = z_n */
-}
-
-static pt_pix viewport_d(const double sc[3])
-{
-    pt_pix vp = {0, 0, 0};
-
-    if (fabs(sc[0]) < PT_PIX_LIMIT && fabs(sc[1]) < PT_PIX_LIMIT) {   /* false for NaN */
-        vp.x = (int64_t)floor(sc[0]);       /* x_vp = floor(x_s) */
-        vp.y = (int64_t)floor(sc[1]);       /* y_vp = floor(y_s) */
-        vp.ok = 1;
-    }
-    return vp;
-}
+static void arr_of(pt_vec4 v, double a[4]) { a[0] = v.x; a[1] = v.y; a[2] = v.z; a[3] = v.w; }
 
 static void tail_d(const pt_scene *s, const double k[4], pt_acc_mtail *t)
 {
-    double n[3], sc[3];
+    pt_vec3 n = pt_clip2ndc(vec4_of(k), fabs(k[3]), NULL);      /* stages/m5..m7 */
+    pt_vec3 sc = pt_ndc2screen(n, s->vp_w, s->vp_h, NULL);
+    const double na[3] = {n.x, n.y, n.z}, sa[3] = {sc.x, sc.y, sc.z};
 
-    ndc_d(k, n);
-    screen_d(s, n, sc);
-    t->vp = viewport_d(sc);
-    widen_d(n, t->n, 3);
-    widen_d(sc, t->sc, 3);
+    t->vp = pt_screen2viewport(sc, s->vp_w, s->vp_h, NULL);
+    widen_d(na, t->n, 3);
+    widen_d(sa, t->sc, 3);
     tail_int(s, t, 0);
 }
 
 static void journey_d(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
 {
-    double m[4], w[4], vw[4], kc[4];
+    double m[4] = {v.x, v.y, v.z, 1}, w[4], vw[4], kc[4];
 
-    m[0] = v.x; m[1] = v.y; m[2] = v.z; m[3] = 1;
-    vmul_d(m, &c->world_d[k], w);           /* (x_w y_w z_w w_w) = (x_m y_m z_m 1) * World */
-    vmul_d(w, &c->view_d, vw);              /* (x_v y_v z_v w_v) = world * View */
-    vmul_d(vw, &c->proj_d, kc);             /* (x_k y_k z_k w_k) = view * Projection */
-    j->code = cvv_d(kc);
+    arr_of(pt_vec4_mul(vec4_of(m), &c->world_d[k]), w);     /* world = (m, 1) * World */
+    arr_of(pt_vec4_mul(vec4_of(w), &c->view_d), vw);        /* view = world * View */
+    arr_of(pt_vec4_mul(vec4_of(vw), &c->proj_d), kc);       /* clip = view * Projection */
+    j->code = pt_clip2cvv(vec4_of(kc), NULL);
     widen_d(m, j->m, 3);
     widen_d(w, j->w, 4);
     widen_d(vw, j->v, 4);
@@ -866,39 +817,22 @@ static int mseg_f(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     return 1;
 }
 
-static void lerp_d(const double p0[4], const double p1[4], double t, double r[4])
-{
-    int c;
-
-    for (c = 0; c < 4; c++) r[c] = p0[c] + t * (p1[c] - p0[c]);   /* P(t) = P0 + t (P1 - P0) */
-}
-
 static int mseg_d(const pt_acc_mcam *c, const pt_acc_mjourney *a,
                   const pt_acc_mjourney *b, pt_acc_mseg *g)
 {
-    double p0[4], p1[4], q[4], d0[PT_CVV_NPLANES], d1[PT_CVV_NPLANES], t[2] = {0, 1};
+    double p0[4], p1[4], t[2], q[2][4];
+    pt_vec4 q0, q1;
     int i, e;
 
     for (i = 0; i < 4; i++) { p0[i] = a->k[i].hi; p1[i] = b->k[i].hi; }
-    cvv_dist_d(p0, d0);
-    cvv_dist_d(p1, d1);
-    for (i = 0; i < PT_CVV_NPLANES; i++) {
-        if (!(d0[i] >= 0) && !(d1[i] >= 0)) return 0;  /* both outside: gone */
-        if (d0[i] < 0) {                                /* entering through plane i */
-            double u = d0[i] / (d0[i] - d1[i]);         /* t = d0 / (d0 - d1) */
-            if (u > t[0]) t[0] = u;
-        } else if (d1[i] < 0) {                         /* leaving through plane i */
-            double u = d0[i] / (d0[i] - d1[i]);
-            if (u < t[1]) t[1] = u;
-        }
-    }
-    if (t[0] > t[1]) return 0;                          /* enters after it has left */
+    if (!pt_clip_segment(vec4_of(p0), vec4_of(p1), &t[0], &t[1], &q0, &q1))
+        return 0;                           /* src/clip.c's, as the pipeline clips */
+    arr_of(q0, q[0]);
+    arr_of(q1, q[1]);
     for (e = 0; e < 2; e++) {
         if (!g->made[e]) continue;
-        if (t[e] == e) memcpy(q, e ? p1 : p0, sizeof q);
-        else lerp_d(p0, p1, t[e], q);
         g->t[e] = dd(t[e]);
-        tail_d(c->s, q, &g->end[e]);
+        tail_d(c->s, q[e], &g->end[e]);
     }
     return 1;
 }
