@@ -262,26 +262,12 @@ static void cross_dd(const pt_dd a[3], const pt_dd b[3], pt_dd r[3])
     r[2] = dd_sub(pt_dd_mul(a[0], b[1]), pt_dd_mul(a[1], b[0]));
 }
 
-/* 2^-e, e the exponent of v's largest component (1 for a zero or non-finite
-** v): scaling v by it is exact and keeps its direction, and |v|^2 can then
-** neither overflow nor underflow (stages/pt_mat4.c scales 1e200 likewise). */
-static double unit_scale(double x, double y, double z)
-{
-    double big = fmax(fabs(x), fmax(fabs(y), fabs(z)));
-    int e;
-
-    if (!isfinite(big) || big == 0) return 1;
-    (void)frexp(big, &e);
-    return ldexp(1.0, -e);
-}
-
 static void normalize_dd(pt_dd v[3])
 {
-    double k = unit_scale(v[0].hi, v[1].hi, v[2].hi);
+    int e = pt_vec3_exp(v[0].hi, v[1].hi, v[2].hi), i;      /* as pt_lookat() */
     pt_dd len;
-    int i;
 
-    for (i = 0; i < 3; i++) { v[i].hi *= k; v[i].lo *= k; }    /* exact */
+    for (i = 0; i < 3; i++) { v[i].hi = ldexp(v[i].hi, -e); v[i].lo = ldexp(v[i].lo, -e); }
     len = pt_dd_sqrt(dot_dd(v, v));         /* v / |v| */
 
     v[0] = pt_dd_div(v[0], len); v[1] = pt_dd_div(v[1], len); v[2] = pt_dd_div(v[2], len);
@@ -354,8 +340,8 @@ static void camera_bounds_dd(const pt_scene *s, const pt_dd_mat4 *view,
                              const pt_dd_mat4 *proj, pt_mat4 *ve, pt_mat4 *pe)
 {
     double eye = fabs(s->eye.x) + fabs(s->eye.y) + fabs(s->eye.z);
-    double k = unit_scale(s->up.x, s->up.y, s->up.z);
-    double ux = s->up.x * k, uy = s->up.y * k, uz = s->up.z * k;        /* exact */
+    int e = pt_vec3_exp(s->up.x, s->up.y, s->up.z);
+    double ux = ldexp(s->up.x, -e), uy = ldexp(s->up.y, -e), uz = ldexp(s->up.z, -e);
     double len = sqrt(ux * ux + uy * uy + uz * uz);
     double u[3], d[3], cond, ud = 0;
     int i, j;

@@ -138,9 +138,18 @@ static pt_vec3 cross(pt_vec3 a, pt_vec3 b)
     return r;
 }
 
+int pt_vec3_exp(double x, double y, double z)
+{
+    double big = fmax(fabs(x), fmax(fabs(y), fabs(z)));
+    int e;
+
+    if (!isfinite(big) || big == 0) return 0;
+    (void)frexp(big, &e);                   /* big = f 2^e, 0.5 <= f < 1 */
+    return e;
+}
+
 /* v / |v|, or 0 when v is 0 or not finite.  When v.v overflows or falls
-** below DBL_MIN (losing digits), v is first scaled by 2^-e, e the exponent of
-** its largest component: exact, and the direction is the same. */
+** below DBL_MIN (losing digits), v is first scaled by 2^-pt_vec3_exp(v). */
 static int normalize(pt_vec3 *v)
 {
     double len = sqrt(dot(*v, *v));         /* sqrt is correctly rounded */
@@ -149,7 +158,7 @@ static int normalize(pt_vec3 *v)
 
     if (!isfinite(big) || big == 0) return 0;
     if (!isfinite(len) || len * len < DBL_MIN) {
-        (void)frexp(big, &e);
+        e = pt_vec3_exp(v->x, v->y, v->z);
         v->x = ldexp(v->x, -e); v->y = ldexp(v->y, -e); v->z = ldexp(v->z, -e);
         len = sqrt(dot(*v, *v));            /* now 2^-2 <= v.v < 3 */
     }

@@ -30,6 +30,13 @@ pt_mat4 pt_mat4_identity(void);
 /* a * b: first a, then b.  This function can't fail. */
 pt_mat4 pt_mat4_mul(const pt_mat4 *a, const pt_mat4 *b);
 
+/* e, the binary exponent of (x, y, z)'s largest component (0 when they are
+** all 0 or one is not finite): scaling the vector by 2^-e, ldexp(x, -e), is
+** exact and keeps its direction, and its squared length can then neither
+** overflow nor underflow (a direction of 1e200 or 1e-200).  (2^-e itself may
+** not be a double: e runs from -1073 to 1024.)  This function can't fail. */
+int pt_vec3_exp(double x, double y, double z);
+
 /* The largest term |s_i * m_ic| (i = 0..3) of column c: when s_i is the
 ** magnitude component i of v was computed from, this is the magnitude
 ** component c of v * m is computed from -- its rounding error is a few units

@@ -157,4 +157,11 @@ check "acc-sh-4.9 --help: exit 0, usage" test "$rc" = 0 -a -n "$(grep 'usage: pi
 acc docs/examples/triangle.scene --repeat 1 --svg "$tmp/nodir/plot.svg"
 check "acc-sh-4.10 unwritable --svg path: exit 2" test "$rc" = 2
 
+# a direction of 1e200 and an up of 1e-310: every arithmetic scales them by a
+# power of two before normalising, so the reference is no NaN and double is close
+printf 'framebuffer 20 10\ncamera lookat 0 0 0 1e200 0 1e200 0 1e-310 0\nprojection perspective 60 1 1 10\nmodel m\nv 0 0 5\nv 1 0 5\nl 1 2\n' > "$tmp/tiny.scene"
+acc "$tmp/tiny.scene" --no-time
+check "acc-sh-5.1 extreme look-at vectors: double's view within 1 ulp of the reference" \
+    grep -qE '^view +double +[0-9.e+-]+ +[0-9.e+-]+ +1 ' "$tmp/out"
+
 report
