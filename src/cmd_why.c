@@ -349,7 +349,8 @@ typedef struct why_ctx {
     long long X, Y;              /* the pixel (x_fb, y_fb) */
     int inside;                  /* 1: it lies inside the viewport */
     uint64_t nlit;               /* segments of counted models that lit it */
-    uint64_t nleft;              /* segments of left-out models that lit it */
+    uint64_t nleft;              /* segments of left-out models that lit it, */
+    size_t left_mi[10], left_si[10];    /*   the first ten of them */
     int drawn;                   /* 1: some segment, of any model, drew it; */
     size_t last_mi, last_si;     /*   the last one drawn sets its color */
     seg_eval best[NEAREST];      /* the nearest segments not counted as lit */
@@ -460,6 +461,10 @@ static void scan(why_ctx *w)
                 show_segment(s, &e, "", &ja, &jb);
                 continue;
             }
+            if (e.lit && w->nleft < 10) {
+                w->left_mi[w->nleft] = mi;
+                w->left_si[w->nleft] = si;
+            }
             if (e.lit) w->nleft++;
             keep_nearest(w->best, &w->nbest, &e);
             if (w->sel && !left_out && (!w->have_sel || nearer(&e, &w->best_sel))) {
@@ -470,25 +475,17 @@ static void scan(why_ctx *w)
     }
 }
 
-/* Segments of left-out models that lit the pixel: "also lit ... : a s1, b s3". */
+/* Segments of left-out models that lit the pixel, as scan() found them:
+** "also lit ... : a s1, b s3". */
 static void show_also_lit(const why_ctx *w)
 {
-    const pt_scene *s = w->s;
-    size_t mi, si;
-    uint64_t n = 0;
-    seg_eval e;
+    uint64_t k;
 
     printf("also lit in the image by segments that --model %s leaves out of the trace:",
            w->sel->name);
-    for (mi = 0; mi < s->nmodels; mi++) {
-        if (&s->models[mi] == w->sel) continue;
-        for (si = 0; si < s->models[mi].nseg; si++) {
-            evaluate(s, mi, si, w->X, w->Y, &e);
-            if (!e.lit) continue;
-            if (n++ < 10) printf("%s %s s%zu", n > 1 ? "," : "", s->models[mi].name, si + 1);
-        }
-    }
-    if (n > 10) printf(", ... (%llu in all)", (unsigned long long)n);
+    for (k = 0; k < w->nleft && k < 10; k++)
+        printf("%s %s s%zu", k ? "," : "", w->s->models[w->left_mi[k]].name, w->left_si[k] + 1);
+    if (w->nleft > 10) printf(", ... (%llu in all)", (unsigned long long)w->nleft);
     putchar('\n');
 }
 

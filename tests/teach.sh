@@ -230,6 +230,11 @@ check "teach-8.10 ... the pixels differ by the rounding conventions" has "the pi
 run step docs/examples/lookat-world.scene --vertex 1 --compare-cameras
 check "teach-8.11 --compare-cameras on a matrix scene" test "$rc" = 0 -a -n "$(grep 'matrix camera:  this scene' "$tmp/out")"
 
+# ---- why --model: the other models that light the pixel are named
+printf 'framebuffer 20 10\ncamera orthographic\nmodel a\nv -0.5 0 0\nv 0.5 0 0\nl 1 2\nmodel b\nv -0.5 0 0\nv 0.5 0 0\nl 1 2\nl 1 2\n' > "$tmp/ov.scene"
+run why "$tmp/ov.scene" --model a 8 5
+check "teach-8.12 why --model a: b's two segments also light the pixel" has "also lit in the image by segments that --model a leaves out of the trace: b s1, b s2"
+
 # ---- where the Java renderer's 32-bit int parts from pipetrace, step says what Java holds
 run step tests/extreme/huge-coordinates.scene --vertex 1 --all
 check "teach-9.1 no pixel for 1e301, and Java's (int)Math.round gives -1" grep -qF -- "round(9.995002498750627e+300) - 1: none, it is beyond 2^62 (the Java renderer's (int)Math.round(x_pp) gives -1 here)" "$tmp/out"
