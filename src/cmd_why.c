@@ -382,8 +382,9 @@ static void show_left_out(const why_ctx *w, const seg_eval *e, const pt_journey 
 static void show_no_segments(const why_ctx *w)
 {
     const pt_scene *s = w->s;
-    size_t idx[NEAREST], vbest[NEAREST], mi, v, n = 0, k;
-    double dbest[NEAREST];
+    seg_eval best[NEAREST], e;              /* here mi: the model, si: its nearest vertex */
+    size_t mi, v;
+    int n = 0, k;
     char d[PT_NUMLEN], fb[PT_EXPLAINLEN];
 
     for (mi = 0; mi < s->nmodels; mi++) {
@@ -405,36 +406,29 @@ static void show_no_segments(const why_ctx *w)
                           s->vp_y + s->vp_h - j.rec[PT_STAGE_PIXEL].y);
             if (v == 0 || dv < dmin) { dmin = dv; vmin = v; }
         }
-        for (k = n; k > 0 && dmin < dbest[k - 1]; k--)     /* insertion, kept sorted */
-            if (k < NEAREST) {
-                idx[k] = idx[k - 1];
-                vbest[k] = vbest[k - 1];
-                dbest[k] = dbest[k - 1];
-            }
-        if (k < NEAREST) {
-            idx[k] = mi;
-            vbest[k] = vmin;
-            dbest[k] = dmin;
-            if (n < NEAREST) n++;
-        }
+        memset(&e, 0, sizeof e);
+        e.mi = mi;
+        e.si = vmin;
+        e.dist = dmin;
+        keep_nearest(best, &n, &e);
     }
     if (!n) return;
     printf("models without segments (left out: the renderer draws nothing of a model "
            "without segments):\n");
     for (k = 0; k < n; k++) {
-        const pt_model *m = &s->models[idx[k]];
+        const pt_model *m = &s->models[best[k].mi];
         pt_stage_params par;
         pt_journey j;
 
         if (!m->nv) { printf("  %s: no vertices either\n", m->name); continue; }
         pt_stage_params_of(&par, s, m);
-        pt_journey_compute(&j, &par, m->v[vbest[k]]);
+        pt_journey_compute(&j, &par, m->v[best[k].si]);
         pt_explain_tuple(fb, sizeof fb, &j, PT_STAGE_FRAMEBUFFER);
-        if (dbest[k] == HUGE_VAL) snprintf(d, sizeof d, "an unknown distance");
-        else pt_fmt_fixed(d, dbest[k], 2);
+        if (best[k].dist == HUGE_VAL) snprintf(d, sizeof d, "an unknown distance");
+        else pt_fmt_fixed(d, best[k].dist, 2);
         printf("  %s: %zu %s; the nearest, v%zu, would be %s%s away, at "
                "(x_fb, y_fb) = %s\n", m->name, m->nv, m->nv == 1 ? "vertex" : "vertices",
-               vbest[k] + 1, d, dbest[k] == HUGE_VAL ? "" : " pixels", fb);
+               best[k].si + 1, d, best[k].dist == HUGE_VAL ? "" : " pixels", fb);
     }
 }
 
