@@ -87,7 +87,7 @@ static int write_file(const char *path, const pt_sbuf *sb, const pt_fb *fb)
 ** or -1 when out of memory (fb is then freed). */
 static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64_t v)
 {
-    static const unsigned char red[3] = {214, 39, 40};      /* #d62728 */
+    static const unsigned char red[3] = PT_JOURNEY_RED_RGB;
     pt_options o;
     pt_plan p;
     pt_summary sum;

@@ -27,7 +27,7 @@
 #define C_FAINT   "#b9bfc9"
 #define C_SEG     "#1f6fd1"
 #define C_CELL    "#a8c7ee"
-#define C_VTX     "#d62728"
+#define C_VTX     "#d62728"        /* PT_JOURNEY_RED_RGB */
 #define C_AREA    "#e6eefa"
 #define C_EDGE    "#7f9cc6"
 #define C_GRID    "#d3d9e3"

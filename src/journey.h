@@ -45,6 +45,8 @@
                                  ** stage's rectangle in each direction */
 #define PT_JOURNEY_MAXSEG  5000  /* faint wireframe: the first this many segments */
 #define PT_JOURNEY_MAXV    2000  /* the HTML page: at most this many vertices */
+#define PT_JOURNEY_RED_RGB {214, 39, 40}    /* the vertex's red, "#d62728" in the
+                                            ** panels (journey.c's C_VTX) */
 
 /* A window of data coordinates mapped onto a box of panel units, same scale on
 ** both axes.  Invariant: x0 < x1, y0 < y1, s > 0, s * (x1 - x0) == bw (and y). */
