@@ -702,6 +702,18 @@ static int load(pt_scene *s, const char *path)
     return rc == 0;
 }
 
+/* The reference, float and double runs of s, and float's (e) and double's
+** (ed) errors against the reference. */
+static void runs3(const pt_scene *s, pt_acc_run *ref, pt_acc_run *f, pt_acc_run *d,
+                  pt_acc_err e[PT_ACC_MAXROWS], pt_acc_err ed[PT_ACC_MAXROWS])
+{
+    pt_acc_run_make(ref, s, PT_ARITH_DD, 0);
+    pt_acc_run_make(f, s, PT_ARITH_FLOAT, 0);
+    pt_acc_run_make(d, s, PT_ARITH_DOUBLE, 0);
+    pt_acc_compare(ref, f, e);
+    pt_acc_compare(ref, d, ed);
+}
+
 static void test_compare(void)
 {
     pt_scene s;
@@ -711,11 +723,7 @@ static void test_compare(void)
 
     PT_CHECK("acc-5.0 loads tests/extreme/cancel-translate.scene",
              load(&s, "tests/extreme/cancel-translate.scene"));
-    pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
-    pt_acc_run_make(&f, &s, PT_ARITH_FLOAT, 0);
-    pt_acc_run_make(&d, &s, PT_ARITH_DOUBLE, 0);
-    pt_acc_compare(&ref, &f, e);
-    pt_acc_compare(&ref, &d, ed);
+    runs3(&s, &ref, &f, &d, e, ed);
     PT_CHECK("acc-5.1 cancel-translate: float's model stage has an error (1000000000.1 "
              "is not a float)", e[PT_ACC_MODEL].max_abs > 0 && e[PT_ACC_MODEL].differ == 1);
     PT_CHECK("acc-5.2 ... and its camera x_c is off by about 0.1 (cancellation)",
@@ -760,13 +768,9 @@ static void test_mcompare(void)
 
     PT_CHECK("acc-8.0 loads docs/examples/lookat-near.scene",
              load(&s, "docs/examples/lookat-near.scene"));
-    pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
-    pt_acc_run_make(&f, &s, PT_ARITH_FLOAT, 0);
-    pt_acc_run_make(&d, &s, PT_ARITH_DOUBLE, 0);
+    runs3(&s, &ref, &f, &d, e, ed);
     PT_CHECK("acc-8.1 lookat-near: the reference clips 2 ends, culls nothing",
              ref.made == 2 && ref.culled == 0 && d.made == 2 && f.made == 2);
-    pt_acc_compare(&ref, &f, e);
-    pt_acc_compare(&ref, &d, ed);
     PT_CHECK("acc-8.2 ... float's clip stage errs (1/aspect = 3/4 of a rounded 4/3), "
              "below 1e-5", e[PT_ACC_M_CLIP].max_abs > 0 && e[PT_ACC_M_CLIP].max_abs < 1e-5);
     PT_CHECK("acc-8.3 ... double's world..clip within 2 ulps",
@@ -786,11 +790,7 @@ static void test_mcompare(void)
     pt_scene_free(&s);
 
     PT_CHECK("acc-8.7 loads tests/data/near-tie.scene", load(&s, "tests/data/near-tie.scene"));
-    pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
-    pt_acc_run_make(&f, &s, PT_ARITH_FLOAT, 0);
-    pt_acc_run_make(&d, &s, PT_ARITH_DOUBLE, 0);
-    pt_acc_compare(&ref, &f, e);
-    pt_acc_compare(&ref, &d, ed);
+    runs3(&s, &ref, &f, &d, e, ed);
     PT_CHECK("acc-8.8 near-tie: the reference keeps the vertex on the near plane inside, "
              "z_k = 0 exactly", ref.mj[0][0].code == 0 && ref.mj[0][0].k[2].hi == 0
              && ref.mj[0][0].k[2].lo == 0);
