@@ -49,7 +49,7 @@ endif
 
 # The stages, in pipeline order: the classic camera's, then the matrix
 # camera's own (it shares s5 and s6), then the driver.
-STAGES_O = $B/pt_stage.o $B/s1_model2camera.o $B/s2_camera2image.o \
+STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/s3_image2pixel.o $B/s4_pixel2viewport.o $B/s5_viewport2fb.o \
            $B/s6_fb2index.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \

@@ -402,14 +402,14 @@ static void dda_step(const dda_out *o, const dda_line *ln, int64_t s, int ok,
     if (!ok) r = y > 0 ? (int64_t)PT_PIX_LIMIT : -(int64_t)PT_PIX_LIMIT;
     if (ln->transposed) { p.x = r - 1; p.y = o->h - s; }   /* (round(x) - 1, h - y) */
     else                { p.x = s - 1; p.y = o->h - r; }   /* (x - 1, h - round(y)) */
-    if (pt_vp_inside(p.x, p.y, o->w, o->h)) o->pixel(o->ud, p.x, p.y);
+    if (pt_inside(p.x, p.y, o->w, o->h)) o->pixel(o->ud, p.x, p.y);
     if (o->step) o->step(o->ud, ln, s, y);
 }
 
 /* Both ends on one pixel: that pixel. */
 static void dda_dot(const dda_out *o, int64_t ix, int64_t iy)
 {
-    if (pt_vp_inside(ix - 1, o->h - iy, o->w, o->h)) o->pixel(o->ud, ix - 1, o->h - iy);
+    if (pt_inside(ix - 1, o->h - iy, o->w, o->h)) o->pixel(o->ud, ix - 1, o->h - iy);
 }
 
 /* Fill ln from the integer ends e = (x0, y0, x1, y1), already transposed and
@@ -904,8 +904,8 @@ static void compare_classic(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_e
             if (a->idx >= 0 && b->idx >= 0)
                 pt_acc_err_add(&e[PT_ACC_INDEX], (double)a->idx, (double)b->idx);
             e[PT_ACC_INDEX].differ += a->idx != b->idx;
-            in_a = a->vp.ok && pt_vp_inside(a->vp.x, a->vp.y, s->vp_w, s->vp_h);
-            in_b = b->vp.ok && pt_vp_inside(b->vp.x, b->vp.y, s->vp_w, s->vp_h);
+            in_a = a->vp.ok && pt_inside(a->vp.x, a->vp.y, s->vp_w, s->vp_h);
+            in_b = b->vp.ok && pt_inside(b->vp.x, b->vp.y, s->vp_w, s->vp_h);
             e[PT_ACC_VIEWPORT].left += in_b && !in_a;
             e[PT_ACC_VIEWPORT].entered += in_a && !in_b;
         }

@@ -929,8 +929,8 @@ static void tail_err(pt_acc_err e[PT_ACC_MAXROWS], const pt_scene *s,
     if (a->idx >= 0 && ref->idx >= 0)
         pt_acc_err_add(&e[PT_ACC_M_INDEX], (double)a->idx, (double)ref->idx);
     e[PT_ACC_M_INDEX].differ += a->idx != ref->idx;
-    in_a = a->vp.ok && pt_vp_inside(a->vp.x, a->vp.y, s->vp_w, s->vp_h);
-    in_ref = ref->vp.ok && pt_vp_inside(ref->vp.x, ref->vp.y, s->vp_w, s->vp_h);
+    in_a = a->vp.ok && pt_inside(a->vp.x, a->vp.y, s->vp_w, s->vp_h);
+    in_ref = ref->vp.ok && pt_inside(ref->vp.x, ref->vp.y, s->vp_w, s->vp_h);
     e[PT_ACC_M_VIEWPORT].left += in_ref && !in_a;
     e[PT_ACC_M_VIEWPORT].entered += in_a && !in_ref;
 }

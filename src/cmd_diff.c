@@ -434,13 +434,13 @@ static int same_real(const dctx *c, double a, double b)
 }
 
 /* 1 when stage st holds doubles, 0 when integers. */
-static int is_real(int st) { return pt_tshapes[st].nreal > 0; }
+static int is_real(int st) { return pt_stage_infos[st].nreal > 0; }
 
 /* Number of values of stage st: 1 to 4. */
-static int ncoord(int st) { return pt_tshapes[st].nreal + pt_tshapes[st].nint; }
+static int ncoord(int st) { return pt_stage_infos[st].nreal + pt_stage_infos[st].nint; }
 
 /* Name of value k of stage st, as the text trace writes it: "x_pp". */
-static const char *coord_name(int st, int k) { return pt_tshapes[st].label[k]; }
+static const char *coord_name(int st, int k) { return pt_stage_infos[st].coord[k]; }
 
 /* "box v3", or for a point where the matrix camera clipped a segment
 ** "box s2 (clipped end 1)", into buf. */
@@ -1018,7 +1018,7 @@ static void compare_vertex(dctx *c, const vent *e)
     for (k = 0; k < PT_NSTAGES_ALL; k++) {
         uint32_t i, j;
         unsigned d;
-        st = pt_torder[k];
+        st = pt_trace_order[k];
         i = e->rec[0][st];
         j = e->rec[1][st];
         if (i == NONE || j == NONE) {       /* a silent stage, or one left out */
@@ -1052,17 +1052,17 @@ static void compare_vertex(dctx *c, const vent *e)
     printf("%s: differs first at %s", who(c, e->model, e->v, name, sizeof name),
            pt_stage_infos[first].name);
     for (k = 0; k < PT_NSTAGES_ALL; k++)
-        if (later & 1u << pt_torder[k])
-            printf("%s%s", nlater++ ? ", " : ", later at ", pt_stage_infos[pt_torder[k]].name);
+        if (later & 1u << pt_trace_order[k])
+            printf("%s%s", nlater++ ? ", " : ", later at ", pt_stage_infos[pt_trace_order[k]].name);
     printf("\n");
     print_stage_diff(first, a, b, m);
-    for (k = 0; k < PT_NSTAGES_ALL && pt_torder[k] != first; k++) {
+    for (k = 0; k < PT_NSTAGES_ALL && (int)pt_trace_order[k] != first; k++) {
         int sd;
         for (sd = 0; sd < 2; sd++)
-            if (c->silent[sd][e->model] & 1u << pt_torder[k])
+            if (c->silent[sd][e->model] & 1u << pt_trace_order[k])
                 printf("    but %s has no %s record: that stage did not report, and the "
                        "difference may start there\n", side_name[sd],
-                       pt_stage_infos[pt_torder[k]].name);
+                       pt_stage_infos[pt_trace_order[k]].name);
     }
     explain(c, e, first, 1);
 }
@@ -1725,9 +1725,9 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
     if (top >= 0) {
         size_t best = NMISTAKES;
         int quiet = -1;                     /* a silent stage before top */
-        for (k = 0; k < PT_NSTAGES_ALL && pt_torder[k] != top; k++)
-            if (c->silent_recs[0][pt_torder[k]] || c->silent_recs[1][pt_torder[k]])
-                quiet = pt_torder[k];
+        for (k = 0; k < PT_NSTAGES_ALL && (int)pt_trace_order[k] != top; k++)
+            if (c->silent_recs[0][pt_trace_order[k]] || c->silent_recs[1][pt_trace_order[k]])
+                quiet = pt_trace_order[k];
         pb_add(&s, " The stage that goes wrong first most often is %s (%zu of %zu)",
                pt_stage_infos[top].name, c->first_at[top], c->differ);
         for (st = 0; st < PT_NSTAGES_ALL; st++)

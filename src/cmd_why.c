@@ -54,6 +54,7 @@
 #include "explain.h"
 #include "numfmt.h"
 #include "raster.h"
+#include "../stages/s4_pixel2viewport.h"
 #include "scene.h"
 
 #define EXIT_USAGE 1
@@ -202,7 +203,7 @@ static void evaluate(const pt_scene *s, size_t mi, size_t si, int64_t X, int64_t
     out.pixel = on_pixel;
     out.clip = on_clip;
     out.ud = &lk;
-    e->result = pt_raster_segment(p0, p1, s->vp_w, s->vp_h, &out);
+    e->result = pt_raster_segment(p0, p1, s->vp_w, s->vp_h, pt_pixel2viewport, &out);
     e->dist = seg_dist((double)X, (double)Y,                 /* (x_ul + x_pp - 1, */
                        s->vp_x + pa->x - 1, s->vp_y + s->vp_h - pa->y,   /* y_ul + h - y_pp) */
                        s->vp_x + pb->x - 1, s->vp_y + s->vp_h - pb->y);

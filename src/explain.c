@@ -20,11 +20,6 @@
 /* The same calls, in the same order, as journey() in pipeline.c; the test
 ** tests/test_explain.c checks that both give the same records. */
 
-static const pt_stage classic_order[PT_NSTAGES] = {
-    PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE, PT_STAGE_PIXEL,
-    PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER, PT_STAGE_INDEX,
-};
-
 /* The sink that files each record under its stage. */
 static void keep(void *ud, const pt_vrec *r)
 {
@@ -41,7 +36,7 @@ void pt_journey_compute(pt_journey *j, const pt_stage_params *par, pt_vec3 v_m)
 
     memset(j, 0, sizeof *j);
     j->par = *par;
-    j->order = classic_order;
+    j->order = pt_classic_order;
     j->norder = PT_NSTAGES;
     sink.vertex = keep;
     sink.ud = j;
@@ -200,29 +195,15 @@ int pt_vertex_used(const pt_model *m, uint64_t v)
 
 /* ===== coordinate names ===== */
 
-static const char *const coord_names[PT_NSTAGES_ALL][4] = {
-    {"x_m", "y_m", "z_m", NULL}, {"x_c", "y_c", "z_c", NULL}, {"x_ip", "y_ip", "z_ip", NULL},
-    {"x_pp", "y_pp", NULL, NULL}, {"x_vp", "y_vp", NULL, NULL}, {"x_fb", "y_fb", NULL, NULL},
-    {"idx", NULL, NULL, NULL},
-    {"x_w", "y_w", "z_w", "w_w"}, {"x_v", "y_v", "z_v", "w_v"}, {"x_k", "y_k", "z_k", "w_k"},
-    {"code", NULL, NULL, NULL}, {"x_n", "y_n", "z_n", NULL}, {"x_s", "y_s", "z_s", NULL},
-};
-
 int pt_coord_count(pt_stage st)
 {
-    switch (st) {
-    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP: return 4;
-    case PT_STAGE_MODEL: case PT_STAGE_CAMERA: case PT_STAGE_IMAGE:
-    case PT_STAGE_NDC: case PT_STAGE_SCREEN: return 3;
-    case PT_STAGE_INDEX: case PT_STAGE_CVV: return 1;
-    default: return 2;
-    }
+    return pt_stage_nvalues(st);
 }
 
 const char *pt_coord_name(pt_stage st, int k)
 {
     if ((int)st >= PT_NSTAGES_ALL || k < 0 || k >= pt_coord_count(st)) return "";
-    return coord_names[st][k];
+    return pt_stage_infos[st].coord[k];
 }
 
 /* ===== the text appender ===== */
@@ -280,7 +261,7 @@ static void add_pair(text *t, int64_t a, int64_t b)
 /* "name = " */
 static void add_lhs(text *t, pt_stage st, int k)
 {
-    add(t, coord_names[st][k]);
+    add(t, pt_stage_infos[st].coord[k]);
     add(t, " = ");
 }
 
@@ -361,9 +342,9 @@ static void explain_viewport(text *t, const pt_journey *j, int k)
     if (r != (int64_t)pt_explain_java_int_round(x)) add_java(t, x, k);     /* past 32 bits */
     if (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL) {   /* the other one has none */
         add(t, ", but the viewport pixel has no value: ");
-        add(t, coord_names[PT_STAGE_VIEWPORT][1 - k]);
+        add(t, pt_stage_infos[PT_STAGE_VIEWPORT].coord[1 - k]);
         add(t, " has none (");
-        add(t, coord_names[PT_STAGE_PIXEL][1 - k]);
+        add(t, pt_stage_infos[PT_STAGE_PIXEL].coord[1 - k]);
         add(t, isfinite(comp(pp, 1 - k)) ? " is beyond 2^62)" : " is not finite)");
     }
 }
@@ -455,7 +436,7 @@ static void explain_coord(text *t, const pt_journey *j, pt_stage st, int k)
         break;
     case PT_STAGE_CAMERA:                                   /* x_c = x_m + x_t */
         add_lhs(t, st, k);
-        add(t, coord_names[PT_STAGE_MODEL][k]);
+        add(t, pt_stage_infos[PT_STAGE_MODEL].coord[k]);
         add(t, k == 0 ? " + x_t = " : k == 1 ? " + y_t = " : " + z_t = ");
         add_num(t, comp(prev, k), 0); add(t, " + ");
         add_num(t, tcomp(j->par.translate, k), 1); add(t, " = ");
@@ -568,7 +549,7 @@ size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st
         add(&t, "(");
         for (k = 0; k < n; k++) {
             if (k) add(&t, ", ");
-            add(&t, coord_names[st][k]);
+            add(&t, pt_stage_infos[st].coord[k]);
         }
         add(&t, ") = ");
     }

@@ -16,6 +16,7 @@
 #include "journey.h"
 #include "numfmt.h"
 #include "raster.h"
+#include "../stages/s4_pixel2viewport.h"
 
 /* ===== look ===== */
 
@@ -900,7 +901,7 @@ static void raster_segs(const pt_jmodel *jm, size_t k, void (*px)(void *, int64_
         journey_of(jm, m->seg[s].b, &jb);
         a.x = ja.rec[PT_STAGE_PIXEL].x; a.y = ja.rec[PT_STAGE_PIXEL].y;
         b.x = jb.rec[PT_STAGE_PIXEL].x; b.y = jb.rec[PT_STAGE_PIXEL].y;
-        pt_raster_segment(a, b, jm->par.w, jm->par.h, &out);
+        pt_raster_segment(a, b, jm->par.w, jm->par.h, pt_pixel2viewport, &out);
     }
 }
 

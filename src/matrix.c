@@ -14,13 +14,6 @@
 #include "../stages/s5_viewport2fb.h"
 #include "../stages/s6_fb2index.h"
 
-const pt_stage pt_matrix_order[] = {
-    PT_STAGE_MODEL, PT_STAGE_WORLD, PT_STAGE_VIEW, PT_STAGE_CLIP, PT_STAGE_CVV,
-    PT_STAGE_NDC, PT_STAGE_SCREEN, PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER,
-    PT_STAGE_INDEX,
-};
-const int pt_matrix_norder = sizeof pt_matrix_order / sizeof pt_matrix_order[0];
-
 int pt_matrix_plan(pt_plan *p, const pt_scene *s, const pt_options *o)
 {
     size_t k;

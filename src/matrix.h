@@ -15,10 +15,6 @@
 
 #include "pipeline.h"
 
-/* The stages of the matrix camera, in pipeline order, and how many. */
-extern const pt_stage pt_matrix_order[];
-extern const int pt_matrix_norder;
-
 /* Build View, Projection and each model's World into *p.  Returns 0; the
 ** parser has already checked that the camera can be built. */
 int pt_matrix_plan(pt_plan *p, const pt_scene *s, const pt_options *o);

@@ -10,6 +10,7 @@
 #include "clip.h"
 #include "matrix.h"
 #include "../stages/s4_pixel2viewport.h"
+#include "../stages/m7_screen2viewport.h"
 #include "../stages/s5_viewport2fb.h"
 #include "../stages/s6_fb2index.h"
 
@@ -34,11 +35,6 @@ void pt_options_default(pt_options *o)
 }
 
 /* ===== plan ===== */
-
-static const pt_stage classic_order[] = {
-    PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE, PT_STAGE_PIXEL,
-    PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER, PT_STAGE_INDEX,
-};
 
 /* 1 when adding t changes no value: every component is zero.  (x + 0.0 still
 ** turns -0.0 into +0.0; the stage is computed anyway, only its record goes.) */
@@ -81,9 +77,8 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
     p->nmodels = s->nmodels;
     p->models = calloc(s->nmodels ? s->nmodels : 1, sizeof *p->models);
     if (!p->models) return -1;
-    p->order = s->matrix ? pt_matrix_order : classic_order;
-    p->norder = s->matrix ? pt_matrix_norder
-                          : (int)(sizeof classic_order / sizeof classic_order[0]);
+    p->order = s->matrix ? pt_matrix_order : pt_classic_order;
+    p->norder = s->matrix ? pt_matrix_norder : pt_classic_norder;
     if (s->matrix) pt_matrix_plan(p, s, o);
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
@@ -317,6 +312,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
 
     if (o->rasterize) {                     /* rasterize */
         pt_raster_out out = {on_pixel, on_clip, NULL};
+        pt_raster_vp to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
         raster_ctx rc;
 
         sum->rasterized = 1;
@@ -342,7 +338,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
                         l->skip(l->ud, m, j + 1, 0, "outside the view volume");
                     continue;
                 }
-                r = pt_raster_segment(a, b, s->vp_w, s->vp_h, &out);
+                r = pt_raster_segment(a, b, s->vp_w, s->vp_h, to_vp, &out);
                 if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
                 if (r == PT_RASTER_SKIPPED) {
                     sum->segments_skipped++;

@@ -3,9 +3,10 @@
 ** See LICENSE for copyright and license.
 */
 #include <float.h>
+#include <stddef.h>
 #include <math.h>
 #include "raster.h"
-#include "../stages/s4_pixel2viewport.h"
+#include "../stages/pt_round.h"
 
 /* ===== exact fast-forward of y += m ===== */
 
@@ -62,20 +63,6 @@ double pt_raster_advance(double y, double m, uint64_t k)
 
 /* ===== the DDA ===== */
 
-/* One step's pixel in viewport coordinates.  transposed: u is the stepped y. */
-static pt_pix step_pixel(int64_t s, double acc, int transposed, int h)
-{
-    pt_pix p;
-    int64_t r;
-
-    if (!pt_pix_round(acc, &r))                     /* drift past the limit */
-        r = acc > 0 ? (int64_t)PT_PIX_LIMIT : -(int64_t)PT_PIX_LIMIT;
-    if (transposed) { p.x = r - 1; p.y = h - s; }   /* (round(x) - 1, h - y) */
-    else            { p.x = s - 1; p.y = h - r; }   /* (x - 1, h - round(y)) */
-    p.ok = 1;
-    return p;
-}
-
 /* A run of clipped steps being gathered, reported when it ends. */
 typedef struct clip_run {
     uint64_t count;
@@ -95,12 +82,32 @@ static void run_flush(clip_run *run, const pt_raster_out *out)
     run->count = 0;
 }
 
-int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, const pt_raster_out *out)
+/* The segment being stepped: s is the stepped coordinate (x, or y when
+** transposed), acc the other one, accumulated. */
+typedef struct dda {
+    int transposed;              /* 1: |slope| > 1, s is y */
+    int w, h;                    /* the viewport */
+    pt_raster_vp to_vp;          /* pixel plane -> viewport pixel */
+} dda;
+
+/* The viewport pixel of step (s, acc): the point (s, acc), or (acc, s) when
+** transposed, through the viewport stage. */
+static pt_pix step_pixel(const dda *d, int64_t s, double acc)
 {
-    int64_t ix0, iy0, ix1, iy1, s, s0, s1, band_lo, band_hi;
+    pt_vec2 p;
+
+    if (d->transposed) { p.x = acc; p.y = (double)s; }
+    else               { p.x = (double)s; p.y = acc; }
+    return d->to_vp(p, d->w, d->h, NULL);
+}
+
+int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
+                      const pt_raster_out *out)
+{
+    int64_t ix0, iy0, ix1, iy1, s, s0, s1, band_lo, band_hi, margin;
     double x0, y0, x1, y1, m, acc;
-    int transposed;
     clip_run run = {0, {0, 0, 0}, {0, 0, 0}};
+    dda d;
     pt_pix p;
 
     if (!pt_pix_round(p0.x, &ix0) || !pt_pix_round(p0.y, &iy0) ||
@@ -108,15 +115,16 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, const pt_raster_out 
         return PT_RASTER_SKIPPED;
     x0 = (double)ix0; y0 = (double)iy0;             /* the rounded endpoints */
     x1 = (double)ix1; y1 = (double)iy1;
+    d.w = w; d.h = h; d.to_vp = to_vp; d.transposed = 0;
 
     if (x0 == x1 && y0 == y1) {                     /* degenerate: one pixel */
-        p = step_pixel(ix0, y0, 0, h);
-        if (pt_vp_inside(p.x, p.y, w, h)) out->pixel(out->ud, p.x, p.y);
+        p = step_pixel(&d, ix0, y0);
+        if (p.ok && pt_inside(p.x, p.y, w, h)) out->pixel(out->ud, p.x, p.y);
         else out->clip(out->ud, 1, p, p);
         return PT_RASTER_DEGENERATE;
     }
-    transposed = fabs(y1 - y0) > fabs(x1 - x0);     /* |slope| > 1: step in y */
-    if (transposed) {
+    d.transposed = fabs(y1 - y0) > fabs(x1 - x0);   /* |slope| > 1: step in y */
+    if (d.transposed) {
         double t;
         t = x0; x0 = y0; y0 = t;
         t = x1; x1 = y1; y1 = t;
@@ -129,8 +137,14 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, const pt_raster_out 
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
     s0 = (int64_t)x0;
     s1 = (int64_t)x1;
-    band_lo = 1;                                    /* steps that can be inside: */
-    band_hi = transposed ? h : w;                   /* 1 <= s <= w (or h) */
+    /* The steps the viewport stage is asked about: 1 <= s <= w (or h), where
+    ** x_vp = s - 1 lies inside, widened by a margin of max(w, h) on each side
+    ** for a student's stage that moves pixels (docs/teaching.md).  Steps
+    ** beyond are clipped without asking, and skipped by the exact
+    ** fast-forward: drawing costs time in proportion to the band. */
+    margin = w > h ? w : h;
+    band_lo = 1 - margin;
+    band_hi = (d.transposed ? h : w) + margin;
 
     acc = y0;
     s = s0;
@@ -138,14 +152,13 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, const pt_raster_out 
         int64_t last = s1 < band_lo - 1 ? s1 : band_lo - 1;
         uint64_t n = (uint64_t)(last - s) + 1;
         double acc_last = pt_raster_advance(acc, m, n - 1);
-        run_add(&run, n, step_pixel(s, acc, transposed, h),
-                step_pixel(last, acc_last, transposed, h));
+        run_add(&run, n, step_pixel(&d, s, acc), step_pixel(&d, last, acc_last));
         acc = acc_last + m;
         s = last + 1;
     }
     for (; s <= s1 && s <= band_hi; s++) {          /* inside the band: step */
-        p = step_pixel(s, acc, transposed, h);
-        if (pt_vp_inside(p.x, p.y, w, h)) {
+        p = step_pixel(&d, s, acc);
+        if (p.ok && pt_inside(p.x, p.y, w, h)) {
             run_flush(&run, out);
             out->pixel(out->ud, p.x, p.y);
         } else {
@@ -156,8 +169,7 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, const pt_raster_out 
     if (s <= s1) {                                  /* after the band: skip */
         uint64_t n = (uint64_t)(s1 - s) + 1;
         double acc_last = pt_raster_advance(acc, m, n - 1);
-        run_add(&run, n, step_pixel(s, acc, transposed, h),
-                step_pixel(s1, acc_last, transposed, h));
+        run_add(&run, n, step_pixel(&d, s, acc), step_pixel(&d, s1, acc_last));
     }
     run_flush(&run, out);
     return PT_RASTER_DRAWN;

@@ -442,31 +442,16 @@ static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)
     t->journey_made = t->explain_lost = 0;
 }
 
-/* Names of a stage's coordinates in the text format, in pt_stage order. */
-static const char *const coord_names[PT_NSTAGES_ALL][4] = {
-    {"x_m  = ", "y_m  = ", "z_m  = ", ""},     {"x_c  = ", "y_c  = ", "z_c  = ", ""},
-    {"x_ip = ", "y_ip = ", "z_ip = ", ""},     {"x_pp = ", "y_pp = ", "", ""},
-    {"x_vp = ", "y_vp = ", "", ""},            {"x_fb = ", "y_fb = ", "", ""},
-    {"idx  = ", "", "", ""},
-    {"x_w  = ", "y_w  = ", "z_w  = ", "w_w  = "}, {"x_v  = ", "y_v  = ", "z_v  = ", "w_v  = "},
-    {"x_k  = ", "y_k  = ", "z_k  = ", "w_k  = "}, {"code = ", "", "", ""},
-    {"x_n  = ", "y_n  = ", "z_n  = ", ""},     {"x_s  = ", "y_s  = ", "z_s  = ", ""},
-};
-
-/* How many real coordinates a stage's record holds (0: integer stages). */
-static int real_dims(pt_stage st)
+/* "x_pp = ": the name of value k of stage st (stages/pt_stage.h), padded to
+** four characters so that the columns line up. */
+static void put_lhs(pt_trace *t, pt_stage st, int k)
 {
-    switch (st) {
-    case PT_STAGE_MODEL: case PT_STAGE_CAMERA: case PT_STAGE_IMAGE:
-    case PT_STAGE_NDC: case PT_STAGE_SCREEN:
-        return 3;
-    case PT_STAGE_PIXEL:
-        return 2;
-    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
-        return 4;
-    default:
-        return 0;
-    }
+    const char *name = pt_stage_infos[st].coord[k];
+    size_t n = strlen(name);
+
+    put(t, name, n);
+    for (; n < 4; n++) put(t, " ", 1);
+    put(t, " = ", 3);
 }
 
 /* --explain: r's formula with this vertex's numbers, from the journey computed
@@ -542,7 +527,6 @@ static void put_planes_text(pt_trace *t, unsigned code)
 
 static void vertex_text(pt_trace *t, const pt_vrec *r)
 {
-    const char *const *cn = coord_names[r->stage];
 
     if (t->clipv) put_who(t, t->model->name, 's', t->seg);
     else put_who(t, t->model->name, 'v', t->v);
@@ -553,25 +537,25 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
         for (k = 0; k < PT_CVV_NPLANES; k++)
             bits[k] = r->code & (1u << (PT_CVV_NPLANES - 1 - k)) ? '1' : '0';
         bits[PT_CVV_NPLANES] = '\0';
-        puts_(t, cn[0]); put_i64(t, r->code); puts_(t, "  (0b"); puts_(t, bits);
+        put_lhs(t, r->stage, 0); put_i64(t, r->code); puts_(t, "  (0b"); puts_(t, bits);
         put_planes_text(t, r->code);
     } else if (r->stage == PT_STAGE_INDEX) {
-        puts_(t, cn[0]);
+        put_lhs(t, r->stage, 0);
         if (r->flags & PT_REC_NULL) put_col(t, "none", 4, 12);
         else put_int_col(t, r->i);
-    } else if (real_dims(r->stage)) {
+    } else if (pt_stage_infos[r->stage].nreal) {
         const double v[4] = {r->x, r->y, r->z, r->w};
         int k;
-        for (k = 0; k < real_dims(r->stage); k++) {
+        for (k = 0; k < pt_stage_infos[r->stage].nreal; k++) {
             if (k) puts_(t, "  ");
-            puts_(t, cn[k]); put_fixed_col(t, v[k], t->precision);
+            put_lhs(t, r->stage, k); put_fixed_col(t, v[k], t->precision);
         }
     } else if (r->flags & PT_REC_NULL) {
-        puts_(t, cn[0]); put_col(t, "none", 4, 12);
-        puts_(t, "  "); puts_(t, cn[1]); put_col(t, "none", 4, 12);
+        put_lhs(t, r->stage, 0); put_col(t, "none", 4, 12);
+        puts_(t, "  "); put_lhs(t, r->stage, 1); put_col(t, "none", 4, 12);
     } else {
-        puts_(t, cn[0]); put_int_col(t, r->ix);
-        puts_(t, "  "); puts_(t, cn[1]); put_int_col(t, r->iy);
+        put_lhs(t, r->stage, 0); put_int_col(t, r->ix);
+        puts_(t, "  "); put_lhs(t, r->stage, 1); put_int_col(t, r->iy);
     }
     if (r->flags & PT_REC_BEHIND) puts_(t, "  behind the camera");
     if (r->stage == PT_STAGE_VIEWPORT)
@@ -583,6 +567,12 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
     if (r->warn) put_warnings_text(t, r);
     put(t, "\n", 1);
     if (t->explain) put_explain(t, r);
+}
+
+/* ',"x":': the JSON key of value k of stage st (stages/pt_stage.h). */
+static void put_key(pt_trace *t, pt_stage st, int k)
+{
+    puts_(t, ",\""); puts_(t, pt_stage_infos[st].key[k]); puts_(t, "\":");
 }
 
 static void vertex_json(pt_trace *t, const pt_vrec *r)
@@ -609,19 +599,19 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
             put(t, "\"", 1); puts_(t, pt_cvv_names[k]); put(t, "\"", 1);
         }
         put(t, "]", 1);
-    } else if (r->stage == PT_STAGE_INDEX) {
-        puts_(t, ",\"i\":");
-        if (r->flags & PT_REC_NULL) puts_(t, "null"); else put_i64(t, r->i);
-    } else if (real_dims(r->stage)) {
+    } else if (pt_stage_infos[r->stage].nreal) {
         const double v[4] = {r->x, r->y, r->z, r->w};
-        static const char *const keys[4] = {",\"x\":", ",\"y\":", ",\"z\":", ",\"w\":"};
         int k;
-        for (k = 0; k < real_dims(r->stage); k++) { puts_(t, keys[k]); put_json_num(t, v[k]); }
-    } else if (r->flags & PT_REC_NULL) {
-        puts_(t, ",\"x\":null,\"y\":null");
-    } else {
-        puts_(t, ",\"x\":"); put_i64(t, r->ix);
-        puts_(t, ",\"y\":"); put_i64(t, r->iy);
+        for (k = 0; k < pt_stage_infos[r->stage].nreal; k++) {
+            put_key(t, r->stage, k); put_json_num(t, v[k]);
+        }
+    } else {                                /* viewport, framebuffer, index */
+        const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
+        int k;
+        for (k = 0; k < pt_stage_infos[r->stage].nint; k++) {
+            put_key(t, r->stage, k);
+            if (r->flags & PT_REC_NULL) puts_(t, "null"); else put_i64(t, n[k]);
+        }
     }
     if (r->stage == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND))
         puts_(t, ",\"behind\":true");
@@ -653,7 +643,7 @@ static void put_names_csv(pt_trace *t, unsigned bits, const char *const *names, 
 
 static void vertex_csv(pt_trace *t, const pt_vrec *r)
 {
-    int matrix = t->scene && t->scene->matrix, k, dims = real_dims(r->stage);
+    int matrix = t->scene && t->scene->matrix, k, dims = pt_stage_infos[r->stage].nreal;
     const double v[4] = {r->x, r->y, r->z, r->w};
 
     puts_(t, t->model->name); put(t, ",", 1);

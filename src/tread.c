@@ -109,37 +109,12 @@ void pt_names_free(pt_names *nm)
 
 /* ===== stages ===== */
 
-_Static_assert(PT_NSTAGES_ALL == 13, "pt_tshapes and pt_torder list 13 stages");
-
-const pt_tshape pt_tshapes[PT_NSTAGES_ALL] = {        /* in pt_stage order */
-    {3, 0, {"x_m", "y_m", "z_m", NULL}, {"x", "y", "z", NULL}},        /* model */
-    {3, 0, {"x_c", "y_c", "z_c", NULL}, {"x", "y", "z", NULL}},        /* camera */
-    {3, 0, {"x_ip", "y_ip", "z_ip", NULL}, {"x", "y", "z", NULL}},     /* image */
-    {2, 0, {"x_pp", "y_pp", NULL, NULL}, {"x", "y", NULL, NULL}},      /* pixel */
-    {0, 2, {"x_vp", "y_vp", NULL, NULL}, {"x", "y", NULL, NULL}},      /* viewport */
-    {0, 2, {"x_fb", "y_fb", NULL, NULL}, {"x", "y", NULL, NULL}},      /* framebuffer */
-    {0, 1, {"idx", NULL, NULL, NULL}, {"i", NULL, NULL, NULL}},        /* index */
-    {4, 0, {"x_w", "y_w", "z_w", "w_w"}, {"x", "y", "z", "w"}},        /* world */
-    {4, 0, {"x_v", "y_v", "z_v", "w_v"}, {"x", "y", "z", "w"}},        /* view */
-    {4, 0, {"x_k", "y_k", "z_k", "w_k"}, {"x", "y", "z", "w"}},        /* clip */
-    {0, 1, {"code", NULL, NULL, NULL}, {"code", NULL, NULL, NULL}},    /* cvv */
-    {3, 0, {"x_n", "y_n", "z_n", NULL}, {"x", "y", "z", NULL}},        /* ndc */
-    {3, 0, {"x_s", "y_s", "z_s", NULL}, {"x", "y", "z", NULL}},        /* screen */
-};
-
-const unsigned char pt_torder[PT_NSTAGES_ALL] = {
-    PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE, PT_STAGE_PIXEL,  /* classic */
-    PT_STAGE_WORLD, PT_STAGE_VIEW, PT_STAGE_CLIP, PT_STAGE_CVV,       /* matrix */
-    PT_STAGE_NDC, PT_STAGE_SCREEN,
-    PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER, PT_STAGE_INDEX,          /* both */
-};
-
-/* The place of stage st in pt_torder. */
+/* The place of stage st in pt_trace_order. */
 static int order_pos(int st)
 {
     int k;
 
-    for (k = 0; k < PT_NSTAGES_ALL; k++) if (pt_torder[k] == st) return k;
+    for (k = 0; k < PT_NSTAGES_ALL; k++) if ((int)pt_trace_order[k] == st) return k;
     return 0;
 }
 
@@ -229,7 +204,7 @@ typedef struct rd {
     int cv_have;                 /* 1: a clip-vertex record was read: */
     uint32_t cv_model;           /*   its model, */
     uint64_t cv_seg;             /*   segment, */
-    int cv_pos, cv_end;          /*   stage's place in pt_torder, and end */
+    int cv_pos, cv_end;          /*   stage's place in pt_trace_order, and end */
 } rd;
 
 /* Write "FILE:LINE:COL: error: ..." for the byte `at` of the current line.
@@ -673,7 +648,7 @@ static int jmodel(rd *r, const jfield *f, int nf, const char *what, uint32_t *id
 static int j_vertex(rd *r, const jfield *f, int nf, int clipv)
 {
     const char *what = clipv ? "clipvertex" : "vertex";
-    const pt_tshape *sh;
+    const pt_stage_info *sh;
     const jval *v, *sv;
     pt_tvrec *rec;
     int st, k, isnull = 0, nul;
@@ -691,7 +666,7 @@ static int j_vertex(rd *r, const jfield *f, int nf, int clipv)
     rec->model = model;
     rec->v = vnum;
     rec->stage = (unsigned char)st;
-    sh = &pt_tshapes[st];
+    sh = &pt_stage_infos[st];
     for (k = 0; k < sh->nreal; k++) {
         if (!(v = need(r, f, nf, sh->key[k], what))) return -1;
         if (jnum(r, v, &rec->u.d[k]) != 0) return -1;
@@ -950,7 +925,7 @@ static int text_count(rd *r, const char *w, size_t n, uint64_t lo, uint64_t *x)
 static int t_vertex(rd *r, cur *c, uint32_t model, uint64_t vnum, int clipv,
                     const char *sw, size_t sn)
 {
-    const pt_tshape *sh;
+    const pt_stage_info *sh;
     pt_tvrec *rec;
     const char *w;
     size_t n;
@@ -962,9 +937,9 @@ static int t_vertex(rd *r, cur *c, uint32_t model, uint64_t vnum, int clipv,
     rec->model = model;
     rec->v = vnum;
     rec->stage = (unsigned char)st;
-    sh = &pt_tshapes[st];
+    sh = &pt_stage_infos[st];
     for (k = 0; k < sh->nreal + sh->nint; k++) {
-        if (expect(r, c, sh->label[k]) || expect(r, c, "=")) return -1;
+        if (expect(r, c, sh->coord[k]) || expect(r, c, "=")) return -1;
         if (sh->nreal) {
             if (text_real(r, c, &rec->u.d[k]) != 0) return -1;
         } else {

@@ -54,29 +54,13 @@ void pt_names_free(pt_names *nm);
 
 /* ===== records ===== */
 
-/* How each stage's record is laid out: nreal doubles (model .. pixel, and the
-** matrix camera's world .. screen) or nint integers (viewport, framebuffer,
-** index, cvv), named label[] in the text format and key[] in JSON Lines. */
-typedef struct pt_tshape {
-    int nreal;                   /* doubles in d[]; 0 for an integer stage */
-    int nint;                    /* integers in n[] */
-    const char *label[4];        /* "x_m", "y_m", ... */
-    const char *key[4];          /* "x", "y", ... */
-} pt_tshape;
-
-extern const pt_tshape pt_tshapes[PT_NSTAGES_ALL];
-
-/* The stages of both cameras in one pipeline order.  A vertex has the stages
-** of one camera, so its records come in this order. */
-extern const unsigned char pt_torder[PT_NSTAGES_ALL];
-
 /* Vertex numbers with this bit stand for the points where the matrix camera
 ** clips a segment: v = PT_TCLIPV | (segment << 1) | end, end 0 or 1 in the
 ** order the trace gives them. */
 #define PT_TCLIPV (UINT64_C(1) << 63)
 
-/* One vertex record: a vertex at one stage, laid out as pt_tshapes[stage]
-** says.  PT_REC_NULL marks an integer stage without value ("null" in JSON,
+/* One vertex record: a vertex at one stage, laid out as pt_stage_infos[stage]
+** says (stages/pt_stage.h).  PT_REC_NULL marks an integer stage without value ("null" in JSON,
 ** "none" in text). */
 typedef struct pt_tvrec {
     uint64_t v;                  /* 1-based vertex number, or a PT_TCLIPV one */

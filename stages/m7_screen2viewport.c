@@ -5,7 +5,7 @@
 #include <assert.h>
 #include <math.h>
 #include "m7_screen2viewport.h"
-#include "s4_pixel2viewport.h"
+#include "pt_round.h"
 
 pt_pix pt_screen2viewport(pt_vec3 s, int w, int h, const pt_sink *sink)
 {
@@ -20,7 +20,7 @@ pt_pix pt_screen2viewport(pt_vec3 s, int w, int h, const pt_sink *sink)
     }
     r.stage = PT_STAGE_VIEWPORT;
     if (!vp.ok) { r.flags |= PT_REC_NULL; r.warn |= PT_WARN_RANGE; }
-    else if (pt_vp_inside(vp.x, vp.y, w, h)) r.flags |= PT_REC_INSIDE;
+    else if (pt_inside(vp.x, vp.y, w, h)) r.flags |= PT_REC_INSIDE;
     r.ix = vp.x; r.iy = vp.y;
     pt_emit(sink, &r);
     return vp;
@@ -33,4 +33,18 @@ pt_vec2 pt_viewport2pixelplane(pt_pix vp, int h)
     p.x = (double)(vp.x + 1);               /* x_pp = x_vp + 1 */
     p.y = (double)(h - vp.y);               /* y_pp = h - y_vp */
     return p;
+}
+
+pt_pix pt_pixelplane2viewport(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    pt_pix vp = {0, 0, 0};
+    int64_t rx, ry;
+
+    (void)w; (void)sink;
+    if (pt_pix_round(pp.x, &rx) && pt_pix_round(pp.y, &ry)) {
+        vp.x = rx - 1;                      /* x_vp = round(x_pp) - 1 */
+        vp.y = h - ry;                      /* y_vp = h - round(y_pp) */
+        vp.ok = 1;
+    }
+    return vp;
 }

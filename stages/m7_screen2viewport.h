@@ -10,7 +10,12 @@
 ** camera's "- 1" and "h -" are not needed.  For the rasterizer, which works in
 ** the classic pixel plane (y up, pixels 1..w), the one mapping used is
 **   x_pp = x_vp + 1,  y_pp = h - y_vp
-** whose Java rounding gives back exactly (x_vp, y_vp) (both are integers).
+** whose Java rounding gives back exactly (x_vp, y_vp) (both are integers);
+** the rasterizer's steps come back by its inverse, pt_pixelplane2viewport(),
+** x_vp = round(x_pp) - 1, y_vp = h - round(y_pp): the classic viewport
+** stage's formula, kept here too so that a student's s4 (which the matrix
+** camera does not trace) leaves the matrix camera's image alone
+** (tests/test_stages.c ties the two together).
 ** No value (PT_REC_NULL, out_of_range) when |x_s| or |y_s| >= 2^62 or is not a
 ** number.  docs/cameras.md#viewport.
 */
@@ -26,5 +31,10 @@ pt_pix pt_screen2viewport(pt_vec3 s, int w, int h, const pt_sink *sink);
 /* The classic pixel-plane point the rasterizer uses for viewport pixel vp of a
 ** viewport of height h (see above).  This function can't fail. */
 pt_vec2 pt_viewport2pixelplane(pt_pix vp, int h);
+
+/* The viewport pixel of the rasterizer's point pp, the inverse of the above,
+** with the signature of a viewport stage (sink is not used; ok == 0 when a
+** coordinate has no integer value).  This function can't fail. */
+pt_pix pt_pixelplane2viewport(pt_vec2 pp, int w, int h, const pt_sink *sink);
 
 #endif

@@ -94,13 +94,20 @@ static inline void pt_emit(const pt_sink *sink, const pt_vrec *r)
     if (sink) sink->vertex(sink->ud, r);
 }
 
-/* Fixed facts about a stage, for headers, step-through and docs. */
+/* Fixed facts about a stage: the one table that trace writers and readers,
+** explain, diff, step and the docs ask.  A stage's values are nreal doubles
+** (pt_vrec x, y, z, w in that order) or nint integers (ix, iy; i for the
+** index; code for the cvv), never both; coord[k] names value k in code, text
+** traces and docs ("x_pp"), key[k] in JSON Lines and CSV ("x"). */
 typedef struct pt_stage_info {
     const char *name;          /* trace name: "camera" */
     const char *from;          /* space it reads: "model" */
     const char *to;            /* space it writes: "camera" */
     const char *formula;       /* the formula as the trace and docs print it */
     const char *what;          /* what it does, in one sentence (pipetrace step) */
+    int nreal, nint;           /* how many real and integer values */
+    const char *coord[4];      /* value names: "x_pp", "y_pp" (NULL past the last) */
+    const char *key[4];        /* JSON keys: "x", "y" */
 } pt_stage_info;
 
 /* The table of all stages, indexed by pt_stage.  The viewport entry is the
@@ -108,6 +115,20 @@ typedef struct pt_stage_info {
 ** pt_matrix_viewport_info. */
 extern const pt_stage_info pt_stage_infos[PT_NSTAGES_ALL];
 extern const pt_stage_info pt_matrix_viewport_info;
+
+/* The stages of each camera in pipeline order, and how many. */
+extern const pt_stage pt_classic_order[];
+extern const int pt_classic_norder;
+extern const pt_stage pt_matrix_order[];
+extern const int pt_matrix_norder;
+
+/* Every stage once, in the order a trace lists them: the classic camera's up
+** to pixel, the matrix camera's up to screen, then the shared viewport,
+** framebuffer and index. */
+extern const pt_stage pt_trace_order[PT_NSTAGES_ALL];
+
+/* The number of values of stage st (nreal + nint).  This function can't fail. */
+int pt_stage_nvalues(pt_stage st);
 
 /* The pt_stage whose name is s, or -1. This function can't fail. */
 int pt_stage_by_name(const char *s);

@@ -9,7 +9,8 @@
 **   inside when 0 <= x_vp < w and 0 <= y_vp < h; other pixels are clipped
 ** round is Java's Math.round: the nearest integer, ties toward +infinity
 ** (round(-2.5) = -2), exact for every double (round(0.49999999999999994) = 0,
-** where floor(x + 0.5) would give 1).
+** where floor(x + 0.5) would give 1); it lives in pt_round.h with the inside
+** test, so that a student's version of this file replaces only the formula.
 **
 **   y_pp                             (0,0) +---------> x_vp
 **   h |  . . logical pixel (m,n)           |  physical pixel
@@ -25,25 +26,11 @@
 #define PT_S4_PIXEL2VIEWPORT_H
 
 #include "pt_stage.h"
-
-/* 2^62: beyond it, x_vp, x_fb and the rasterizer's step counts could overflow. */
-#define PT_PIX_LIMIT 4611686018427387904.0
-
-/* Java's Math.round(x) as a double: floor(x) plus one when x - floor(x) >= 0.5.
-** Exact: x - floor(x) is computed without rounding error for every finite x
-** but -0.5 < x < 0, where it may round, never below 0.5 (see the .c file).  NaN gives 0, infinities stay infinite.  This function can't fail. */
-double pt_java_round(double x);
-
-/* Round pixel-plane coordinate x to an integer in *out.  Returns 1, or 0 (and
-** *out = 0) when x is not finite or |x| >= PT_PIX_LIMIT.  This function can't fail. */
-int pt_pix_round(double x, int64_t *out);
+#include "pt_round.h"
 
 /* Find the viewport pixel of pp in a w x h viewport and report the viewport record
 ** to sink (may be NULL).  The result has ok == 0 when either coordinate has no
 ** integer value.  Requires w, h >= 1.  This function can't fail. */
 pt_pix pt_pixel2viewport(pt_vec2 pp, int w, int h, const pt_sink *sink);
-
-/* 1 when (x_vp, y_vp) lies inside a w x h viewport.  This function can't fail. */
-int pt_vp_inside(int64_t x_vp, int64_t y_vp, int w, int h);
 
 #endif

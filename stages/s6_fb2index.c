@@ -8,11 +8,12 @@
 int64_t pt_fb2index(pt_pix fb, int W, int H, const pt_sink *sink)
 {
     int64_t idx = -1;
-    pt_vrec r = {0};
 
     assert(W > 0 && H > 0);
-    if (fb.ok && fb.x >= 0 && fb.x < W && fb.y >= 0 && fb.y < H)
+    if (fb.ok && pt_inside(fb.x, fb.y, W, H))
         idx = fb.y * (int64_t)W + fb.x;     /* idx = y_fb * W + x_fb */
+    if (!sink) return idx;                  /* nobody listens: no record */
+    pt_vrec r = {0};
     r.stage = PT_STAGE_INDEX;
     if (idx < 0) r.flags |= PT_REC_NULL;
     if (idx < 0 && fb.ok) r.warn |= PT_WARN_OUTSIDE;

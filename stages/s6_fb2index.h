@@ -18,6 +18,7 @@
 #define PT_S6_FB2INDEX_H
 
 #include "pt_stage.h"
+#include "pt_round.h"
 
 /* Return the index of fb in a W x H framebuffer, or -1 when fb has no value or
 ** lies outside; report the index record to sink (may be NULL).  Requires

@@ -24,6 +24,7 @@
 #include "pipeline.h"
 #include "raster.h"
 #include "../stages/m4_clip2cvv.h"
+#include "../stages/s4_pixel2viewport.h"
 
 /* ===== double-double ===== */
 
@@ -222,7 +223,7 @@ static int dda_agrees(pt_vec2 p0, pt_vec2 p1, int w, int h)
 
     pa.n = pb.n = 0;
     pa.over = pb.over = 0;
-    pt_raster_segment(p0, p1, w, h, &out);
+    pt_raster_segment(p0, p1, w, h, pt_pixel2viewport, &out);
     pt_acc_raster_segment(PT_ARITH_DOUBLE, 0, pt_dd_from(p0.x), pt_dd_from(p0.y),
                           pt_dd_from(p1.x), pt_dd_from(p1.y), w, h, px_add, &pb);
     return same_pixels(&pa, &pb);

@@ -46,7 +46,7 @@ static int draw(canvas *c, double x0, double y0, double x1, double y1)
 {
     pt_raster_out out = {c_pixel, c_clip, NULL};
     out.ud = c;
-    return pt_raster_segment((pt_vec2){x0, y0}, (pt_vec2){x1, y1}, c->w, c->h, &out);
+    return pt_raster_segment((pt_vec2){x0, y0}, (pt_vec2){x1, y1}, c->w, c->h, pt_pixel2viewport, &out);
 }
 
 /* Compare the canvas with rows of '*' and '.', top row first. */

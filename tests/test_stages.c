@@ -11,6 +11,7 @@
 #include "s4_pixel2viewport.h"
 #include "s5_viewport2fb.h"
 #include "s6_fb2index.h"
+#include "m7_screen2viewport.h"
 
 /* A sink that keeps the last record. */
 static pt_vrec last;
@@ -165,6 +166,59 @@ static void test_table(void)
     PT_CHECK("stage-1.3 a NULL sink reports nothing", nrec == 0);
 }
 
+/* The matrix camera's rasterizer maps its steps back with a copy of s4's
+** formula (m7_screen2viewport.h says why): the two must agree on every point,
+** ties, the limit and values without a pixel included. */
+static void test_plane2viewport(void)
+{
+    static const double xs[] = {
+        0.5, 1.0, 1.5, 2.4999999999999996, 2.5, -0.5, -2.5, -0.49999999999999994,
+        0.49999999999999994, 19.5, 20.5, 1e15 + 0.5, -1e15, 4611686018427387904.0,
+        4611686018427386880.0, -4611686018427387904.0, 1e300, (double)INFINITY,
+        (double)NAN, 0.0, -0.0, 7.25,
+    };
+    int n = (int)(sizeof xs / sizeof xs[0]), i, j, h, agree = 1;
+
+    for (h = 1; h <= 30; h += 29)
+        for (i = 0; i < n; i++)
+            for (j = 0; j < n; j++) {
+                pt_vec2 p = {xs[i], xs[j]};
+                pt_pix a = pt_pixel2viewport(p, 20, h, NULL);
+                pt_pix b = pt_pixelplane2viewport(p, 20, h, NULL);
+                if (a.ok != b.ok || (a.ok && (a.x != b.x || a.y != b.y))) agree = 0;
+            }
+    PT_CHECK("m7-2.1 pt_pixelplane2viewport() is s4's formula on every point", agree);
+}
+
+/* The table is the one place each stage's values are described. */
+static void test_values(void)
+{
+    int st, ok = 1;
+
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {
+        const pt_stage_info *in = &pt_stage_infos[st];
+        int k;
+        if ((in->nreal > 0) == (in->nint > 0) || pt_stage_nvalues(st) > 4) ok = 0;
+        for (k = 0; k < 4; k++)
+            if ((k < pt_stage_nvalues(st)) != (in->coord[k] != NULL && in->key[k] != NULL))
+                ok = 0;
+    }
+    PT_CHECK("stage-2.1 every stage has reals or integers, each named and keyed", ok);
+    PT_CHECK("stage-2.2 pixel: x_pp, y_pp as x, y",
+             !strcmp(pt_stage_infos[PT_STAGE_PIXEL].coord[1], "y_pp") &&
+             !strcmp(pt_stage_infos[PT_STAGE_PIXEL].key[1], "y"));
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {
+        int k, seen = 0;
+        for (k = 0; k < PT_NSTAGES_ALL; k++) seen += (int)pt_trace_order[k] == st;
+        if (seen != 1) ok = 0;
+    }
+    PT_CHECK("stage-2.3 the trace order lists every stage once", ok);
+    PT_CHECK("stage-2.4 both cameras start at model and end at index",
+             pt_classic_order[0] == PT_STAGE_MODEL && pt_matrix_order[0] == PT_STAGE_MODEL &&
+             pt_classic_order[pt_classic_norder - 1] == PT_STAGE_INDEX &&
+             pt_matrix_order[pt_matrix_norder - 1] == PT_STAGE_INDEX);
+}
+
 int main(void)
 {
     test_s1();
@@ -175,5 +229,7 @@ int main(void)
     test_s5_s6();
     test_warnings();
     test_table();
+    test_plane2viewport();
+    test_values();
     return pt_test_report();
 }

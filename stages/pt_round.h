@@ -1,0 +1,39 @@
+/*
+** stages/pt_round.h -- Java's rounding, the pixel limit, the inside tests
+** See LICENSE for copyright and license.
+**
+** The rules the viewport and index stages lean on, kept apart from them so that
+** a student's stage (make STAGE_viewport=FILE.c) replaces the formula and never
+** these: the rasterizer, the trace readers and diff's catalogue all round and
+** test "inside" with the functions below.
+**
+**   round(x)   Java's Math.round: the nearest integer, ties toward +infinity
+**              (round(-2.5) = -2, round(0.49999999999999994) = 0)
+**   limit      |x| < 2^62, or the pixel has no integer value (Java's int would
+**              have wrapped long before: docs/stability.md)
+**   inside     0 <= x < w and 0 <= y < h  (viewport w x h, framebuffer W x H)
+*/
+#ifndef PT_ROUND_H
+#define PT_ROUND_H
+
+#include <stdint.h>
+
+/* 2^62: beyond it, x_vp, x_fb and the rasterizer's step counts could overflow. */
+#define PT_PIX_LIMIT 4611686018427387904.0
+
+/* Java's Math.round(x) as a double: floor(x) plus one when x - floor(x) >= 0.5.
+** Exact for every double (see the .c file).  NaN gives 0, infinities stay
+** infinite.  This function can't fail. */
+double pt_java_round(double x);
+
+/* Round pixel-plane coordinate x to an integer in *out.  Returns 1, or 0 (and
+** *out = 0) when x is not finite or |round(x)| >= PT_PIX_LIMIT.  This function
+** can't fail. */
+int pt_pix_round(double x, int64_t *out);
+
+/* 1 when (x, y) lies inside a w x h rectangle whose upper-left pixel is (0, 0):
+** a viewport pixel inside its viewport, or a framebuffer pixel inside the
+** framebuffer.  This function can't fail. */
+int pt_inside(int64_t x, int64_t y, int w, int h);
+
+#endif

@@ -1,0 +1,76 @@
+#!/bin/sh
+# tests/student.sh -- a stage of stages/ with one known mistake, made when needed
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/student.sh NAME OUT.c      write the mistaken stage to OUT.c
+#        sh tests/student.sh --list          the names, their stage and mistake
+#
+# Each mistake is one sed edit of today's stage file, so a student stage never
+# drifts from stages/: when a stage changes so that the edit no longer applies,
+# this script fails (it checks how many lines the edit changed) instead of
+# building yesterday's copy.  Build with it: make STAGE_VAR=OUT.c (the Makefile's
+# student block), e.g.
+#   sh tests/student.sh s3_two build/s3_two.c && make STAGE_pixel=build/s3_two.c
+# tests/diff.sh checks that pipetrace diff names each mistake.
+
+# NAME  STAGE-FILE  MAKE-VAR  LINES  MISTAKE   (the sed edit is in edit() below)
+table='s1_subtract s1_model2camera camera      3 x_c = x_m - x_t: the translation subtracted
+s2_divz     s2_camera2image projection  2 x_ip = x_c / z_c: the image mirrored
+s2_silent   s2_camera2image projection  1 the right numbers, but no pt_emit(): no image records
+s3_two      s3_image2pixel  pixel       2 x_pp = 0.5 + w/2 * (x_ip + 1): 2 (in integers) for 2.001
+s3_swapwh   s3_image2pixel  pixel       2 x_pp = 0.5 + h/2.001 * (x_ip + 1): w and h swapped
+s4_cround   s4_pixel2viewport viewport  2 C round(): ties away from zero
+s4_floor    s4_pixel2viewport viewport  2 floor(x + 0.5): the sum rounds first
+s4_noflip   s4_pixel2viewport viewport  1 y_vp = round(y_pp) - 1: no y flip
+s4_nominus1 s4_pixel2viewport viewport  1 x_vp = round(x_pp): no -1
+s4_yminus1  s4_pixel2viewport viewport  1 y_vp = h - 1 - round(y_pp): one row too high
+s6_xh       s6_fb2index     index       1 idx = x_fb * H + y_fb: column by column
+s6_vpw      s6_fb2index     index       1 idx = y_fb * 24 + x_fb: the viewport width (24 in tests/data/diff/offset.scene)'
+
+edit() {    # edit NAME: the sed program of mistake NAME
+    case $1 in
+    s1_subtract) printf '%s\n' 's/ + t\./ - t./' ;;
+    s2_divz)     printf '%s\n' 's| / -c\.z;| / c.z;|' ;;
+    s2_silent)   printf '%s\n' 's|pt_emit(sink, &r);|(void)sink; (void)r;|' ;;
+    s3_two)      printf '%s\n' 's|/ 2\.001 \*|/ 2 *|' ;;
+    s3_swapwh)   printf '%s\n' 's|0\.5 + w / 2\.001 \* (ip\.x|0.5 + h / 2.001 * (ip.x|
+                       s|0\.5 + h / 2\.001 \* (ip\.y|0.5 + w / 2.001 * (ip.y|' ;;
+    s4_cround)   printf '%s\n' 's|^#include <assert\.h>$|&\n#include <math.h>|
+                       s|pt_pix_round(pp\.\([xy]\), |pt_pix_round(round(pp.\1), |g' ;;
+    s4_floor)    printf '%s\n' 's|^#include <assert\.h>$|&\n#include <math.h>|
+                       s|pt_pix_round(pp\.\([xy]\), |pt_pix_round(floor(pp.\1 + 0.5), |g' ;;
+    s4_noflip)   printf '%s\n' 's|vp\.y = h - ry;|vp.y = ry - 1;|' ;;
+    s4_nominus1) printf '%s\n' 's|vp\.x = rx - 1;|vp.x = rx;|' ;;
+    s4_yminus1)  printf '%s\n' 's|vp\.y = h - ry;|vp.y = h - 1 - ry;|' ;;
+    s6_xh)       printf '%s\n' 's|fb\.y \* (int64_t)W + fb\.x;|fb.x * (int64_t)H + fb.y;|' ;;
+    s6_vpw)      printf '%s\n' 's|fb\.y \* (int64_t)W + fb\.x;|fb.y * (int64_t)24 + fb.x;|' ;;
+    esac
+}
+
+if [ "$1" = --list ]; then
+    printf '%s\n' "$table"
+    exit 0
+fi
+if [ $# -ne 2 ]; then
+    echo "usage: sh tests/student.sh NAME OUT.c | --list" >&2
+    exit 2
+fi
+row=$(printf '%s\n' "$table" | awk -v n="$1" '$1 == n')
+if [ -z "$row" ]; then
+    echo "tests/student.sh: no mistake named '$1' (sh tests/student.sh --list)" >&2
+    exit 2
+fi
+set -- "$1" "$2" $row
+name=$1 out=$2 file=stages/$4.c lines=$6
+shift 6
+{
+    printf '/* %s, made by tests/student.sh %s: %s */\n' "$file" "$name" "$*"
+    sed "$(edit "$name")" "$file"
+} > "$out.tmp" || exit 2
+changed=$(tail -n +2 "$out.tmp" | diff "$file" - | grep -c '^>')
+if [ "$changed" != "$lines" ]; then
+    echo "tests/student.sh: $name changes $changed lines of $file, not $lines: update its edit" >&2
+    rm -f "$out.tmp"
+    exit 2
+fi
+mv "$out.tmp" "$out"
