@@ -18,7 +18,8 @@ WARN    = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
 # IEEE double in the formulas' order: no fused multiply-add, no fast-math.
 FPFLAGS = -ffp-contract=off
 CFLAGS  ?= -O2 -g
-ALLCFLAGS = -std=c11 $(WARN) $(FPFLAGS) $(CFLAGS)
+# Includes name their layer: "stages/pt_stage.h", "core/pipetrace.h", "io/trace.h".
+ALLCFLAGS = -std=c11 $(WARN) $(FPFLAGS) -I. -Isrc $(CFLAGS)
 LDLIBS  = -lm
 B       = build
 
@@ -47,18 +48,23 @@ $B/s6_fb2index.o:       $(or $(STAGE_index),stages/s6_fb2index.c) stages/*.h $B/
 endif
 # ===== end of student stages =====
 
-# The stages, in pipeline order: the classic camera's, then the matrix
-# camera's own (it shares s5 and s6), then the driver.
+# The layers, bottom up (docs/architecture.md; tests/layers.sh checks that
+# none includes a header of a layer above it).
+# stages/: the formulas, in pipeline order: what all share, the classic
+# camera's, then the matrix camera's own (it shares s5 and s6).
 STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/s3_image2pixel.o $B/s4_pixel2viewport.o $B/s5_viewport2fb.o \
            $B/s6_fb2index.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
-           $B/m7_screen2viewport.o
-SRC_O    = $B/scene.o $B/pipeline.o $B/matrix.o $B/clip.o $B/raster.o $B/fb.o $B/numfmt.o \
-           $B/trace.o $B/outfile.o $B/builtin.o $B/cli.o $B/explain.o $B/tread.o $B/accuracy.o \
-           $B/accuracy_matrix.o $B/png.o $B/sbuf.o $B/journey.o $B/journey_html.o
-# The subcommands, one file each.
+           $B/m7_screen2viewport.o $B/pt_matrix.o
+# src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
+CORE_O   = $B/scene.o $B/builtin.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
+# src/io/: numbers as text, trace writers and readers, images, output files.
+IO_O     = $B/numfmt.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/png.o $B/outfile.o
+# src/tools/: the command line and the subcommands (diff, accuracy and
+# journey in folders of their own).
+TOOLS_O  = $B/cli.o $B/accuracy.o $B/accuracy_matrix.o $B/journey.o $B/journey_html.o
 CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o \
            $B/cmd_journey.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
@@ -70,24 +76,35 @@ all: $B/pipetrace
 $B/pipetrace: $B/main.o $(CMDS_O) $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
 
-$B/libpipetrace.a: $(STAGES_O) $(SRC_O)
+$B/libpipetrace.a: $(STAGES_O) $(CORE_O) $(IO_O) $(TOOLS_O)
 	rm -f $@ && ar rcs $@ $^
 
+HDRS     = stages/*.h src/*/*.h src/tools/*/*.h
 $B/%.o: stages/%.c stages/*.h | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
-$B/%.o: src/%.c src/*.h stages/*.h | $B
+$B/%.o: src/core/%.c $(HDRS) | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
-$B/builtin.o: $B/builtin.c src/builtin.h
-	$(CC) $(ALLCFLAGS) -Isrc -c -o $@ $<
+$B/%.o: src/io/%.c $(HDRS) | $B
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/%.o: src/tools/%.c $(HDRS) | $B
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/%.o: src/tools/diff/%.c $(HDRS) | $B
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/%.o: src/tools/accuracy/%.c $(HDRS) | $B
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/%.o: src/tools/journey/%.c $(HDRS) | $B
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/builtin.o: $B/builtin.c src/core/builtin.h
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
 # The built-in scene is docs/examples/builtin.scene, embedded as a C string.
-$B/builtin.c: docs/examples/builtin.scene | $B
-	awk 'BEGIN { print "#include \"builtin.h\""; print "const char pt_builtin_scene[] =" } \
+$B/builtin.c: docs/examples/builtin.scene Makefile | $B
+	awk 'BEGIN { print "#include \"core/builtin.h\""; print "const char pt_builtin_scene[] =" } \
 	     { gsub(/\\/, "\\\\"); gsub(/"/, "\\\""); print "    \"" $$0 "\\n\"" } \
 	     END { print "    \"\";" }' $< > $@
 $B/bench: tests/bench.c $B/libpipetrace.a
-	$(CC) $(ALLCFLAGS) -Isrc -Istages -o $@ $< $B/libpipetrace.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B/test_%: tests/test_%.c tests/testhelp.h $B/libpipetrace.a
-	$(CC) $(ALLCFLAGS) -Isrc -Istages -o $@ $< $B/libpipetrace.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B:
 	mkdir -p $B
 

@@ -4,18 +4,6 @@
 */
 #include "m1_model2world.h"
 
-void pt_emit_vec4(const pt_sink *sink, pt_stage st, pt_vec4 v, int lost)
-{
-    pt_vrec r = {0};
-    double a[4];
-
-    r.stage = st;
-    r.x = a[0] = v.x; r.y = a[1] = v.y; r.z = a[2] = v.z; r.w = a[3] = v.w;
-    r.warn = pt_warn_nonfinite(a, 4);
-    pt_warn_lost(&r, PT_WARN_CANCEL, lost);
-    pt_emit(sink, &r);
-}
-
 pt_vec4 pt_model2world(pt_vec3 m, const pt_mat4 *world, const pt_sink *sink)
 {
     pt_vec4 p = {m.x, m.y, m.z, 1.0}, w;

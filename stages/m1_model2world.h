@@ -27,10 +27,4 @@
 ** This function can't fail. */
 pt_vec4 pt_model2world(pt_vec3 m, const pt_mat4 *world, const pt_sink *sink);
 
-/* Report v as a record of stage st with x y z w set, flagged nonfinite, and
-** cancellation when lost (bits, pt_vec4_mul_bits_lost()) is more than
-** PT_BITS_LOST_WARN; the shared tail of the matrix stages.  This function
-** can't fail. */
-void pt_emit_vec4(const pt_sink *sink, pt_stage st, pt_vec4 v, int lost);
-
 #endif

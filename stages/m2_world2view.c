@@ -2,7 +2,6 @@
 ** stages/m2_world2view.c -- matrix camera: world coordinates -> view coordinates
 ** See LICENSE for copyright and license.
 */
-#include "m1_model2world.h"
 #include "m2_world2view.h"
 
 pt_vec4 pt_world2view(pt_vec4 p, const pt_mat4 *view, const pt_sink *sink)

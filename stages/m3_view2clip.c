@@ -2,7 +2,6 @@
 ** stages/m3_view2clip.c -- matrix camera: view coordinates -> clip space
 ** See LICENSE for copyright and license.
 */
-#include "m1_model2world.h"
 #include "m3_view2clip.h"
 
 pt_vec4 pt_view2clip(pt_vec4 v, const pt_mat4 *proj, const pt_sink *sink)

@@ -14,15 +14,6 @@
 
 #include "pt_stage.h"
 
-/* The numbers of the scene that the formulas use, for one model. */
-typedef struct pt_stage_params {
-    pt_vec3 translate;           /* (x_t, y_t, z_t): the model's translation */
-    int perspective;             /* 1: perspective camera, 0: orthographic */
-    int w, h;                    /* the viewport's size in pixels */
-    int x_ul, y_ul;              /* its upper-left corner in the framebuffer */
-    int W, H;                    /* the framebuffer's size */
-} pt_stage_params;
-
 /* Run v_m through the model record and the six stages with par; stage st
 ** reports to sinks[st] (NULL: not reported).  Sets *z_c (for "behind")
 ** and returns the pixel-plane point, which the rasterizer uses.  Requires

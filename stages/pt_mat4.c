@@ -217,3 +217,15 @@ pt_cam_error pt_perspective(pt_mat4 *proj, double fov_deg, double aspect,
     *proj = r;
     return PT_CAM_OK;
 }
+
+void pt_emit_vec4(const pt_sink *sink, pt_stage st, pt_vec4 v, int lost)
+{
+    pt_vrec r = {0};
+    double a[4];
+
+    r.stage = st;
+    r.x = a[0] = v.x; r.y = a[1] = v.y; r.z = a[2] = v.z; r.w = a[3] = v.w;
+    r.warn = pt_warn_nonfinite(a, 4);
+    pt_warn_lost(&r, PT_WARN_CANCEL, lost);
+    pt_emit(sink, &r);
+}

@@ -101,4 +101,10 @@ pt_cam_error pt_lookat(pt_mat4 *view, pt_vec3 eye, pt_vec3 dir, pt_vec3 up,
 pt_cam_error pt_perspective(pt_mat4 *proj, double fov_deg, double aspect,
                             double n, double f);
 
+/* Report v as a record of stage st with x y z w set, flagged nonfinite, and
+** cancellation when lost (bits, pt_vec4_mul_bits_lost()) is more than
+** PT_BITS_LOST_WARN; the shared tail of the matrix stages.  This function
+** can't fail. */
+void pt_emit_vec4(const pt_sink *sink, pt_stage st, pt_vec4 v, int lost);
+
 #endif

@@ -88,6 +88,16 @@ typedef struct pt_sink {
     void *ud;                                     /* passed back unchanged */
 } pt_sink;
 
+/* The numbers of the scene that the formulas use, for one model
+** (the matrix camera uses w .. H; its matrices come apart, pt_matrix.h). */
+typedef struct pt_stage_params {
+    pt_vec3 translate;           /* (x_t, y_t, z_t): the model's translation */
+    int perspective;             /* 1: perspective camera, 0: orthographic */
+    int w, h;                    /* the viewport's size in pixels */
+    int x_ul, y_ul;              /* its upper-left corner in the framebuffer */
+    int W, H;                    /* the framebuffer's size */
+} pt_stage_params;
+
 /* Report r to sink (nothing when sink is NULL).  This function can't fail. */
 static inline void pt_emit(const pt_sink *sink, const pt_vrec *r)
 {

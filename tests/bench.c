@@ -15,8 +15,8 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <time.h>
-#include "pipeline.h"
-#include "trace.h"
+#include "core/pipeline.h"
+#include "io/trace.h"
 
 #define RUNS 5
 

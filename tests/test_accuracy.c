@@ -1,5 +1,5 @@
 /*
-** tests/test_accuracy.c -- the three arithmetics of src/accuracy.c
+** tests/test_accuracy.c -- the three arithmetics of src/tools/accuracy/accuracy.c
 ** See LICENSE for copyright and license.
 **
 ** Usage: test_accuracy [REFERENCE_DIR], from the repository root.  Checks:
@@ -8,7 +8,7 @@
 ** value for value, for every vertex of every scene in REFERENCE_DIR (default
 ** tests/reference), tests/extreme and docs/examples; for the matrix camera's
 ** scenes the same with its matrices, its clipping and its image; that the
-** double DDA lights exactly src/raster.c's pixels; that the float DDA (with
+** double DDA lights exactly src/core/raster.c's pixels; that the float DDA (with
 ** its fast-forward) lights the plain float loop's; that the reference DDA
 ** lights the exact line's, ties included; and what pt_acc_compare() reports on
 ** scenes whose answer is known.
@@ -20,11 +20,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testhelp.h"
-#include "accuracy.h"
-#include "pipeline.h"
-#include "raster.h"
-#include "../stages/m4_clip2cvv.h"
-#include "../stages/s4_pixel2viewport.h"
+#include "tools/accuracy/accuracy.h"
+#include "core/pipeline.h"
+#include "core/raster.h"
+#include "stages/m4_clip2cvv.h"
+#include "stages/s4_pixel2viewport.h"
 
 /* ===== double-double ===== */
 
@@ -467,7 +467,7 @@ static void check_matrix_scene(const char *path)
 }
 
 /* One scene: the double journey of every used vertex against the stages'
-** records, and every segment's double DDA against src/raster.c. */
+** records, and every segment's double DDA against src/core/raster.c. */
 static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
                         size_t *bad_vertices, size_t *bad_segments)
 {
@@ -647,14 +647,14 @@ static void test_random_ddas(void)
 {
     int k, bad_d = 0, bad_f = 0, bad_x = 0, w = 37, h = 23;
 
-    for (k = 0; k < 3000; k++) {                    /* double: src/raster.c */
+    for (k = 0; k < 3000; k++) {                    /* double: src/core/raster.c */
         double far = k % 3 == 0 ? 1e7 : k % 3 == 1 ? 1e4 : 100;
         pt_vec2 p0 = {uniform(-far, w + 1), uniform(-10, h + 10)};
         pt_vec2 p1 = {uniform(-5, w + far), uniform(-h, 2 * h)};
         if (k % 2) { double t = p0.x; p0.x = p0.y; p0.y = t; t = p1.x; p1.x = p1.y; p1.y = t; }
         if (!dda_agrees(p0, p1, w, h)) bad_d++;
     }
-    PT_CHECK("acc-4.1 the double DDA lights src/raster.c's pixels (3000 random segments)",
+    PT_CHECK("acc-4.1 the double DDA lights src/core/raster.c's pixels (3000 random segments)",
              bad_d == 0);
 
     for (k = 0; k < 600; k++) {                     /* float: the plain loop */
@@ -835,7 +835,7 @@ int main(int argc, char **argv)
     snprintf(descr, sizeof descr, "acc-3.1 the double journey is the stages' for all "
              "%zu vertices of %zu scenes", nv, nscenes);
     PT_CHECK(descr, bv == 0 && nv > 100);
-    snprintf(descr, sizeof descr, "acc-3.2 the double DDA lights src/raster.c's pixels "
+    snprintf(descr, sizeof descr, "acc-3.2 the double DDA lights src/core/raster.c's pixels "
              "for all %zu segments", ns);
     PT_CHECK(descr, bs == 0 && ns > 100);
     snprintf(descr, sizeof descr, "acc-6.1 matrix camera: the double View, Projection and "

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 #include "testhelp.h"
-#include "explain.h"
+#include "io/explain.h"
 
 /* The triangle of docs/examples/triangle.scene: 20 x 10, translate 0 0 -2. */
 static const pt_stage_params tri = {{0, 0, -2}, 1, 20, 10, 0, 0, 20, 10};

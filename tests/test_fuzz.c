@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testhelp.h"
-#include "pipeline.h"
+#include "core/pipeline.h"
 
 static uint64_t state = 0x9E3779B97F4A7C15ULL;
 

@@ -5,16 +5,16 @@
 #include <math.h>
 #include <string.h>
 #include "testhelp.h"
-#include "pt_mat4.h"
-#include "m1_model2world.h"
-#include "m2_world2view.h"
-#include "m3_view2clip.h"
-#include "m4_clip2cvv.h"
-#include "m5_clip2ndc.h"
-#include "m6_ndc2screen.h"
-#include "m7_screen2viewport.h"
-#include "s4_pixel2viewport.h"
-#include "clip.h"
+#include "stages/pt_mat4.h"
+#include "stages/m1_model2world.h"
+#include "stages/m2_world2view.h"
+#include "stages/m3_view2clip.h"
+#include "stages/m4_clip2cvv.h"
+#include "stages/m5_clip2ndc.h"
+#include "stages/m6_ndc2screen.h"
+#include "stages/m7_screen2viewport.h"
+#include "stages/s4_pixel2viewport.h"
+#include "core/clip.h"
 
 static pt_vrec last;
 static void keep(void *ud, const pt_vrec *r) { (void)ud; last = *r; }

@@ -2,7 +2,7 @@
 ** tests/test_numfmt.c -- shortest round-trip and fixed formatting of doubles
 ** See LICENSE for copyright and license.
 **
-** pt_fmt_shortest() computes its digits exactly (src/numfmt.c).  The oracle
+** pt_fmt_shortest() computes its digits exactly (src/io/numfmt.c).  The oracle
 ** below is the printf-and-strtod search it replaced: slow, but its correctness
 ** rests only on a correctly rounded printf and strtod.  Every value tested must
 ** be spelled byte for byte as the oracle spells it, and read back bit for bit.
@@ -18,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testhelp.h"
-#include "numfmt.h"
+#include "io/numfmt.h"
 
 /* ===== the oracle: pt_fmt_shortest as it was, by printf and strtod ===== */
 

@@ -7,7 +7,7 @@
 */
 #include <stdlib.h>
 #include <string.h>
-#include "png.h"
+#include "io/png.h"
 #include "testhelp.h"
 
 static uint32_t rd32(const unsigned char *p)

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testhelp.h"
-#include "raster.h"
-#include "s4_pixel2viewport.h"
+#include "core/raster.h"
+#include "stages/s4_pixel2viewport.h"
 
 /* ===== a collecting raster sink ===== */
 

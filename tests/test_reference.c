@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testhelp.h"
-#include "pipeline.h"
+#include "core/pipeline.h"
 
 /* What the pipeline produced for one case. */
 typedef struct got {

@@ -1,5 +1,5 @@
 /*
-** tests/test_scene.c -- tests of the scene parser (src/scene.c)
+** tests/test_scene.c -- tests of the scene parser (src/core/scene.c)
 ** See LICENSE for copyright and license.
 **
 ** Run from the repository root (the fixtures are in tests/data/).  Ids:
@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "testhelp.h"
-#include "scene.h"
+#include "core/scene.h"
 
 static char err[PT_ERRLEN];
 

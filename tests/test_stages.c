@@ -5,13 +5,13 @@
 #include <math.h>
 #include <string.h>
 #include "testhelp.h"
-#include "s1_model2camera.h"
-#include "s2_camera2image.h"
-#include "s3_image2pixel.h"
-#include "s4_pixel2viewport.h"
-#include "s5_viewport2fb.h"
-#include "s6_fb2index.h"
-#include "m7_screen2viewport.h"
+#include "stages/s1_model2camera.h"
+#include "stages/s2_camera2image.h"
+#include "stages/s3_image2pixel.h"
+#include "stages/s4_pixel2viewport.h"
+#include "stages/s5_viewport2fb.h"
+#include "stages/s6_fb2index.h"
+#include "stages/m7_screen2viewport.h"
 
 /* A sink that keeps the last record. */
 static pt_vrec last;

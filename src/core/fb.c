@@ -1,0 +1,48 @@
+/*
+** src/core/fb.c -- the framebuffer: W x H RGB pixels, row-major, top row first
+** See LICENSE for copyright and license.
+*/
+#include <assert.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "core/fb.h"
+
+int pt_fb_init(pt_fb *fb, int w, int h, const unsigned char bg[3])
+{
+    size_t n, k;
+
+    assert(w > 0 && h > 0);
+    n = (size_t)w * (size_t)h;
+    fb->w = w; fb->h = h;
+    fb->rgb = malloc(3 * n);
+    if (!fb->rgb) return -1;
+    for (k = 0; k < n; k++) {
+        fb->rgb[3 * k] = bg[0];
+        fb->rgb[3 * k + 1] = bg[1];
+        fb->rgb[3 * k + 2] = bg[2];
+    }
+    return 0;
+}
+
+void pt_fb_set(pt_fb *fb, int64_t idx, const unsigned char color[3])
+{
+    unsigned char *p;
+
+    assert(idx >= 0 && idx < (int64_t)fb->w * fb->h);
+    p = fb->rgb + 3 * (size_t)idx;
+    p[0] = color[0]; p[1] = color[1]; p[2] = color[2];
+}
+
+int pt_fb_write_ppm(const pt_fb *fb, FILE *f)
+{
+    size_t n = 3 * (size_t)fb->w * (size_t)fb->h;
+
+    if (fprintf(f, "P6\n%d %d\n255\n", fb->w, fb->h) < 0) return -1;
+    return fwrite(fb->rgb, 1, n, f) == n ? 0 : -1;
+}
+
+void pt_fb_free(pt_fb *fb)
+{
+    free(fb->rgb);
+    fb->rgb = NULL;
+}

@@ -1,0 +1,29 @@
+/*
+** src/core/fb.h -- the framebuffer: W x H RGB pixels, row-major, top row first
+** See LICENSE for copyright and license.
+*/
+#ifndef PT_FB_H
+#define PT_FB_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+typedef struct pt_fb {
+    int w, h;                    /* size in pixels, 1..PT_MAX_SIZE */
+    unsigned char *rgb;          /* 3*w*h bytes; pixel idx at rgb[3*idx]; owned */
+} pt_fb;
+
+/* Allocate a w x h framebuffer filled with bg.  Returns 0, or -1 when out of
+** memory (then fb->rgb is NULL). */
+int pt_fb_init(pt_fb *fb, int w, int h, const unsigned char bg[3]);
+
+/* Set pixel idx (0 <= idx < w*h) to color.  This function can't fail. */
+void pt_fb_set(pt_fb *fb, int64_t idx, const unsigned char color[3]);
+
+/* Write fb as binary PPM (P6) to the open stream f.  Returns 0 or -1 (errno). */
+int pt_fb_write_ppm(const pt_fb *fb, FILE *f);
+
+/* Free the pixels.  This function can't fail. */
+void pt_fb_free(pt_fb *fb);
+
+#endif

@@ -1,0 +1,386 @@
+/*
+** src/core/pipeline.c -- plan the stages, run every vertex through them, rasterize
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "core/pipeline.h"
+#include "core/raster.h"
+#include "core/clip.h"
+#include "stages/pt_matrix.h"
+#include "stages/s4_pixel2viewport.h"
+#include "stages/m7_screen2viewport.h"
+#include "stages/s5_viewport2fb.h"
+#include "stages/s6_fb2index.h"
+
+void pt_stage_params_of(pt_stage_params *par, const pt_scene *s, const pt_model *m)
+{
+    par->translate = m->translate;
+    par->perspective = s->perspective;
+    par->w = s->vp_w;
+    par->h = s->vp_h;
+    par->x_ul = s->vp_x;
+    par->y_ul = s->vp_y;
+    par->W = s->fb_w;
+    par->H = s->fb_h;
+}
+
+void pt_options_default(pt_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->stage_mask = (1u << PT_NSTAGES_ALL) - 1;
+    o->trace_raster = 1;
+    o->rasterize = 1;
+}
+
+/* ===== plan ===== */
+
+/* 1 when adding t changes no value: every component is zero.  (x + 0.0 still
+** turns -0.0 into +0.0; the stage is computed anyway, only its record goes.) */
+static int is_zero(pt_vec3 t)
+{
+    return t.x == 0 && t.y == 0 && t.z == 0;
+}
+
+static int is_identity(const pt_mat4 *a)
+{
+    pt_mat4 id = pt_mat4_identity();
+    int i, j;
+
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            if (a->m[i][j] != id.m[i][j]) return 0;
+    return 1;
+}
+
+/* Why stage st is the identity for model k under plan p, or NULL. */
+static const char *identity_why(const pt_scene *s, const pt_plan *p, size_t k, int st)
+{
+    if (st == PT_STAGE_CAMERA && is_zero(s->models[k].translate))
+        return "identity: translation 0 0 0";
+    if (st == PT_STAGE_WORLD && is_identity(&p->models[k].world))
+        return "identity: world matrix";
+    if (st == PT_STAGE_VIEW && is_identity(&p->view))
+        return "identity: view matrix";
+    if (st == PT_STAGE_FRAMEBUFFER && s->vp_x == 0 && s->vp_y == 0)
+        return "identity: viewport at 0,0";
+    return NULL;
+}
+
+/* The matrix camera's View and Projection, and each model's World: its
+** `world` lines, then its translate.  The parser has already checked that the
+** camera can be built. */
+static void matrix_plan(pt_plan *p, const pt_scene *s, const pt_options *o)
+{
+    size_t k;
+    int skewed = 0;
+
+    pt_lookat(&p->view, s->eye, s->dir, s->up, o->raw_lookat, &skewed);
+    pt_perspective(&p->proj, s->fov, s->aspect, s->znear, s->zfar);
+    p->up_skewed = skewed;
+    p->up_adjusted = skewed && !o->raw_lookat;
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+        pt_mat4 t = pt_mat4_translate(m->translate.x, m->translate.y, m->translate.z);
+        p->models[k].world = pt_mat4_mul(&m->world, &t);
+    }
+}
+
+void pt_matrices_of(pt_matrices *mx, const pt_plan *p, size_t k)
+{
+    mx->world = &p->models[k].world;
+    mx->view = &p->view;
+    mx->proj = &p->proj;
+}
+
+int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
+{
+    size_t k, j;
+    int st, i;
+
+    memset(p, 0, sizeof *p);
+    p->nmodels = s->nmodels;
+    p->models = calloc(s->nmodels ? s->nmodels : 1, sizeof *p->models);
+    if (!p->models) return -1;
+    p->order = s->matrix ? pt_matrix_order : pt_classic_order;
+    p->norder = s->matrix ? pt_matrix_norder : pt_classic_norder;
+    if (s->matrix) matrix_plan(p, s, o);
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+        pt_model_plan *mp = &p->models[k];
+
+        mp->selected = !o->model || strcmp(o->model, m->name) == 0;
+        mp->used = calloc(m->nv ? m->nv : 1, 1);
+        if (!mp->used) { pt_plan_free(p); return -1; }
+        for (j = 0; j < m->nseg; j++) {
+            mp->used[m->seg[j].a] = 1;
+            mp->used[m->seg[j].b] = 1;
+        }
+        for (j = 0; j < m->nv; j++) mp->nused += mp->used[j];
+        for (st = 0; st < PT_NSTAGES_ALL; st++) mp->why[st] = PT_WHY_OTHER_CAMERA;
+        for (i = 0; i < p->norder; i++) {
+            const char *why;
+            st = p->order[i];
+            mp->why[st] = PT_WHY_TRACED;
+            mp->why_text[st] = NULL;
+            if (!(o->stage_mask & (1u << st))) {
+                mp->why[st] = PT_WHY_FILTER;
+                mp->why_text[st] = "not chosen by --stage";
+            } else if (!o->all_stages && (why = identity_why(s, p, k, st)) != NULL) {
+                mp->why[st] = PT_WHY_IDENTITY;
+                mp->why_text[st] = why;
+            }
+        }
+    }
+    return 0;
+}
+
+void pt_plan_free(pt_plan *p)
+{
+    size_t k;
+
+    for (k = 0; k < p->nmodels; k++) free(p->models[k].used);
+    free(p->models);
+    p->models = NULL;
+    p->nmodels = 0;
+}
+
+/* ===== run the stages ===== */
+
+/* A sink in front of the listener's: counts warnings, forwards when traced. */
+typedef struct counting_sink {
+    pt_summary *sum;
+    const pt_sink *next;         /* NULL: the stage is not traced */
+} counting_sink;
+
+static void count_record(void *ud, const pt_vrec *r)
+{
+    counting_sink *cs = ud;
+    int k;
+
+    for (k = 0; k < PT_NWARN; k++)
+        if (r->warn & (1u << k)) cs->sum->warnings[k]++;
+    if (cs->next) cs->next->vertex(cs->next->ud, r);
+}
+
+/* The sinks of one model: traced[st] for a traced vertex, quiet[st] (counts
+** only) for the others. */
+typedef struct model_sinks {
+    counting_sink counters[2];   /* [0]: count only, [1]: count and forward */
+    pt_sink sink_of[2];
+    const pt_sink *traced[PT_NSTAGES_ALL], *quiet[PT_NSTAGES_ALL];
+} model_sinks;
+
+static void sinks_init(model_sinks *ms, const pt_model_plan *mp, const pt_listener *l,
+                       pt_summary *sum)
+{
+    int st;
+
+    ms->counters[0].sum = ms->counters[1].sum = sum;
+    ms->counters[0].next = NULL;
+    ms->counters[1].next = l->sink.vertex ? &l->sink : NULL;
+    ms->sink_of[0].vertex = ms->sink_of[1].vertex = count_record;
+    ms->sink_of[0].ud = &ms->counters[0];
+    ms->sink_of[1].ud = &ms->counters[1];
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {
+        ms->traced[st] = &ms->sink_of[mp->why[st] == PT_WHY_TRACED];
+        ms->quiet[st] = &ms->sink_of[0];
+    }
+}
+
+/* What the rasterizer needs of a vertex. */
+typedef struct vtx {
+    pt_vec2 pp;                  /* pixel-plane point (NaN: none) */
+    pt_vec4 clip;                /* matrix camera: clip coordinates */
+    unsigned code;               /* matrix camera: CVV outcode */
+} vtx;
+
+/* Run every vertex of model k that needs it; fill v[] for the rasterizer. */
+static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
+                      const pt_listener *l, size_t k, const model_sinks *ms,
+                      vtx *v, pt_summary *sum)
+{
+    const pt_model *m = &s->models[k];
+    const pt_model_plan *mp = &p->models[k];
+    pt_stage_params par;
+    size_t j;
+
+    pt_stage_params_of(&par, s, m);
+    for (j = 0; j < m->nv; j++) {
+        int traced = mp->selected && (!o->vertex || o->vertex == j + 1);
+        const pt_sink *const *sinks = traced ? ms->traced : ms->quiet;
+        int behind;
+        vtx x;
+
+        if (!mp->used[j] || (!traced && !o->rasterize)) continue;
+        if (traced && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
+        if (s->matrix) {
+            pt_matrices mx;
+            pt_matrices_of(&mx, p, k);
+            x.pp = pt_matrix_journey(&par, &mx, m->v[j], sinks, &x.clip, &x.code);
+            behind = x.clip.w < 0;
+        } else {
+            double z_c;
+            x.pp = pt_classic_journey(&par, m->v[j], sinks, &z_c);
+            behind = s->perspective && z_c > 0;
+        }
+        if (traced) {
+            sum->vertices_traced++;
+            sum->behind += behind;
+        }
+        if (o->rasterize) v[j] = x;
+    }
+}
+
+/* ===== rasterize ===== */
+
+/* What the raster callbacks need to turn viewport pixels into records. */
+typedef struct raster_ctx {
+    const pt_scene *s;
+    const pt_model *m;
+    uint64_t seg;                /* 1-based segment number */
+    const pt_listener *l;        /* NULL: nothing to report */
+    pt_fb *fb;                   /* NULL: nothing to draw */
+    pt_summary *sum;
+} raster_ctx;
+
+static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
+{
+    raster_ctx *rc = ud;
+    pt_pix vp = {x_vp, y_vp, 1}, f;
+    int64_t idx;
+
+    f = pt_viewport2fb(vp, rc->s->vp_x, rc->s->vp_y, NULL);
+    idx = pt_fb2index(f, rc->s->fb_w, rc->s->fb_h, NULL);
+    rc->sum->pixels++;
+    if (rc->l && rc->l->pixel) rc->l->pixel(rc->l->ud, rc->m, rc->seg, f.x, f.y, idx);
+    if (rc->fb) pt_fb_set(rc->fb, idx, rc->m->color);
+}
+
+static void on_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
+{
+    raster_ctx *rc = ud;
+
+    rc->sum->clipped += count;
+    if (rc->sum->clipped < count) rc->sum->clipped_hi++;    /* carried past 2^64 */
+    rc->sum->clip_runs++;
+    if (rc->l && rc->l->clip) rc->l->clip(rc->l->ud, rc->m, rc->seg, count, first, last);
+}
+
+/* Say which endpoint of a skipped segment has no pixel, and why. */
+static void skip_report(const pt_listener *l, const pt_model *m, uint64_t seg,
+                        pt_vec2 a, pt_vec2 b)
+{
+    const pt_segment *sg = &m->seg[seg - 1];
+    int a_bad = !(fabs(a.x) < PT_PIX_LIMIT && fabs(a.y) < PT_PIX_LIMIT);
+    pt_vec2 p = a_bad ? a : b;
+    const char *why = isfinite(p.x) && isfinite(p.y)
+        ? "endpoint beyond 2^62 in the pixel plane: no integer pixel"
+        : "endpoint not finite in the pixel plane";
+
+    l->skip(l->ud, m, seg, (a_bad ? sg->a : sg->b) + 1, why);
+}
+
+/* Clip a matrix-camera segment in clip space; the points clipping makes run
+** the rest of the pipeline.  Returns 0 when nothing of it is visible, else 1
+** with *a, *b the pixel-plane points to draw between. */
+static int matrix_segment(const pt_scene *s, const pt_model *m, uint64_t seg,
+                          const vtx *va, const vtx *vb, const pt_listener *l,
+                          const model_sinks *ms, pt_vec2 *a, pt_vec2 *b)
+{
+    const pt_segment *sg = &m->seg[seg - 1];
+    const pt_sink *const *sinks = l ? ms->traced : ms->quiet;
+    pt_stage_params par;
+    double t0, t1;
+    pt_vec4 q0, q1;
+
+    *a = va->pp;
+    *b = vb->pp;
+    if ((va->code | vb->code) == 0) return 1;           /* all inside */
+    if (!pt_clip_segment(va->clip, vb->clip, &t0, &t1, &q0, &q1)) return 0;
+    pt_stage_params_of(&par, s, m);
+    if (va->code) {                                     /* a new first end */
+        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t0, q0);
+        *a = pt_matrix_tail(&par, q0, fabs(q0.w), sinks);
+    }
+    if (vb->code) {                                     /* a new last end */
+        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t1, q1);
+        *b = pt_matrix_tail(&par, q1, fabs(q1.w), sinks);
+    }
+    return 1;
+}
+
+int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
+           const pt_listener *l, pt_fb *fb, pt_summary *sum)
+{
+    size_t k, j;
+    vtx **vs;                    /* vs[k][v]: what the rasterizer needs of v */
+    model_sinks *ms;             /* ms[k]: model k's sinks */
+    int status = 0;
+
+    memset(sum, 0, sizeof *sum);
+    sum->models = s->nmodels;
+    vs = calloc(s->nmodels ? s->nmodels : 1, sizeof *vs);
+    ms = malloc((s->nmodels ? s->nmodels : 1) * sizeof *ms);
+    if (!vs || !ms) { free(vs); free(ms); return -1; }
+    if (l->header) l->header(l->ud, s, p);
+
+    for (k = 0; k < s->nmodels; k++) {      /* run the stages */
+        const pt_model *m = &s->models[k];
+
+        sum->vertices += m->nv;
+        sum->segments += m->nseg;
+        sum->vertices_unused += m->nv - p->models[k].nused;
+        sinks_init(&ms[k], &p->models[k], l, sum);
+        if (o->rasterize) {
+            vs[k] = malloc((m->nv ? m->nv : 1) * sizeof **vs);
+            if (!vs[k]) { status = -1; goto done; }
+        }
+        run_model(s, p, o, l, k, &ms[k], vs[k], sum);
+    }
+
+    if (o->rasterize) {                     /* rasterize */
+        pt_raster_out out = {on_pixel, on_clip, NULL};
+        pt_raster_vp to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
+        raster_ctx rc;
+
+        sum->rasterized = 1;
+        rc.s = s; rc.fb = fb; rc.sum = sum;
+        out.ud = &rc;
+        for (k = 0; k < s->nmodels; k++) {
+            const pt_model *m = &s->models[k];
+            int traced = p->models[k].selected && !o->vertex;  /* its clip vertices */
+            int report = o->trace_raster && traced;             /* its raster records */
+
+            rc.m = m;
+            rc.l = report ? l : NULL;
+            for (j = 0; j < m->nseg; j++) {
+                const vtx *va = &vs[k][m->seg[j].a], *vb = &vs[k][m->seg[j].b];
+                pt_vec2 a = va->pp, b = vb->pp;
+                int r;
+
+                rc.seg = j + 1;
+                if (s->matrix && !matrix_segment(s, m, j + 1, va, vb, traced ? l : NULL,
+                                                 &ms[k], &a, &b)) {
+                    sum->segments_culled++;
+                    if (report && l->skip)
+                        l->skip(l->ud, m, j + 1, 0, "outside the view volume");
+                    continue;
+                }
+                r = pt_raster_segment(a, b, s->vp_w, s->vp_h, to_vp, &out);
+                if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
+                if (r == PT_RASTER_SKIPPED) {
+                    sum->segments_skipped++;
+                    if (report && l->skip) skip_report(l, m, j + 1, a, b);
+                }
+            }
+        }
+    }
+    if (l->summary) l->summary(l->ud, sum);
+done:
+    for (k = 0; k < s->nmodels; k++) free(vs[k]);
+    free(vs);
+    free(ms);
+    return status;
+}

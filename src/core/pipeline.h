@@ -1,0 +1,135 @@
+/*
+** src/core/pipeline.h -- plan the stages, run every vertex through them, rasterize
+** See LICENSE for copyright and license.
+**
+** USAGE
+**   pt_scene s;  pt_scene_load(&s, path, err, sizeof err);       parse
+**   pt_options o;  pt_options_default(&o);  (set filters)
+**   pt_plan p;  pt_plan_make(&p, &s, &o);                         plan
+**   pt_fb fb;  pt_fb_init(&fb, s.fb_w, s.fb_h, s.background);     (optional)
+**   pt_run(&s, &p, &o, &listener, &fb, &summary);                 run + rasterize
+**   pt_plan_free(&p);  pt_fb_free(&fb);  pt_scene_free(&s);
+**
+** The framebuffer is row-major, top row first: idx = y_fb * W + x_fb.
+** Records reach the listener in this order: header; for each model in file
+** order, the journey of each used vertex in vertex order (stage order within a
+** vertex); then for each model and segment, its pixel and clip records in step
+** order; then the summary.  Errors: only pt_scene_load() and pt_run()'s
+** allocations can fail; they return -1 with a message, nothing here exits.
+*/
+#ifndef PT_PIPELINE_H
+#define PT_PIPELINE_H
+
+#include <stdint.h>
+#include <stddef.h>
+#include "core/scene.h"
+#include "core/fb.h"
+#include "stages/pt_classic.h"
+#include "stages/pt_matrix.h"
+
+/* What to compute and what to report. */
+typedef struct pt_options {
+    int all_stages;              /* 1: trace identity stages too (--all-stages) */
+    const char *model;           /* trace only this model (--model), or NULL */
+    uint64_t vertex;             /* trace only this 1-based vertex (--vertex), or 0 */
+    unsigned stage_mask;         /* bit k: trace stage k (--stage); default all */
+    int trace_raster;            /* 1: report pixel and clip records */
+    int rasterize;               /* 1: draw the segments (image or raster trace) */
+    int raw_lookat;              /* 1: the seed's look-at matrix, up not re-derived */
+} pt_options;
+
+/* Why a stage is left out of a model's trace. */
+typedef enum pt_why {
+    PT_WHY_TRACED = 0,           /* not left out */
+    PT_WHY_IDENTITY,             /* the stage is the identity for this model */
+    PT_WHY_FILTER,               /* --stage chose other stages */
+    PT_WHY_OTHER_CAMERA          /* a stage of the other camera model */
+} pt_why;
+
+/* The plan for one model: which stages it traces and which vertices it needs. */
+typedef struct pt_model_plan {
+    pt_why why[PT_NSTAGES_ALL];  /* PT_WHY_TRACED for each stage traced */
+    const char *why_text[PT_NSTAGES_ALL];   /* reason in words, or NULL */
+    pt_mat4 world;               /* matrix camera: the model's `world` lines, then
+                                 ** its translate */
+    unsigned char *used;         /* used[v]: some segment uses vertex v; owned */
+    size_t nused;                /* number of used vertices */
+    int selected;                /* 1: passes the --model filter */
+} pt_model_plan;
+
+typedef struct pt_plan {
+    pt_model_plan *models;       /* one per scene model; owned */
+    size_t nmodels;
+    const pt_stage *order;       /* the camera's stages in pipeline order */
+    int norder;                  /* how many */
+    pt_mat4 view, proj;          /* matrix camera: View and Projection */
+    int up_skewed;               /* matrix camera: the given up was not
+                                 ** perpendicular to direction */
+    int up_adjusted;             /* ... and was re-derived (not --raw-lookat) */
+} pt_plan;
+
+/* Counts for the summary record. */
+typedef struct pt_summary {
+    uint64_t models;             /* models in the scene */
+    uint64_t vertices;           /* vertices in the scene */
+    uint64_t vertices_unused;    /* used by no segment: not transformed */
+    uint64_t vertices_traced;    /* journeys reported */
+    uint64_t segments;           /* segments in the scene */
+    uint64_t segments_degenerate;/* both ends round to one pixel */
+    uint64_t segments_skipped;   /* an endpoint has no pixel (not finite, huge) */
+    uint64_t segments_culled;    /* matrix camera: wholly outside the view volume */
+    uint64_t pixels;             /* pixels written (inside the viewport) */
+    uint64_t clipped;            /* steps clipped (outside the viewport), and */
+    uint64_t clipped_hi;         /* its carries: the count is clipped_hi * 2^64 +
+                                 ** clipped (one segment has fewer than 2^64
+                                 ** steps, but several can add up to more) */
+    uint64_t clip_runs;          /* clip records */
+    uint64_t behind;             /* traced vertices behind a perspective camera */
+    uint64_t warnings[PT_NWARN]; /* records raised with warning k (traced or not) */
+    int rasterized;              /* 1: the segments were drawn */
+} pt_summary;
+
+/* Who hears what the pipeline does.  Any callback may be NULL. */
+typedef struct pt_listener {
+    void (*header)(void *ud, const pt_scene *s, const pt_plan *p);
+    void (*vertex_begin)(void *ud, const pt_model *m, uint64_t v);  /* 1-based v */
+    pt_sink sink;                                   /* the stages' records */
+    void (*clipvertex_begin)(void *ud, const pt_model *m, uint64_t seg,
+                             uint64_t from, uint64_t to, double t, pt_vec4 q);
+                          /* matrix camera: the point q (clip coordinates) made
+                          ** by clipping segment seg (from -> to, 1-based) at t;
+                          ** its records follow */
+    void (*pixel)(void *ud, const pt_model *m, uint64_t seg,        /* 1-based seg */
+                  int64_t x_fb, int64_t y_fb, int64_t idx);
+    void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
+                 pt_pix first, pt_pix last);
+    void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */
+                 uint64_t v, const char *why);      /* v: the endpoint at fault, 0: none */
+    void (*summary)(void *ud, const pt_summary *sum);
+    void *ud;
+} pt_listener;
+
+/* Fill *par with the numbers of scene s that the classic stages use for its
+** model m.  This function can't fail. */
+void pt_stage_params_of(pt_stage_params *par, const pt_scene *s, const pt_model *m);
+
+/* Point *mx at the matrices plan p holds for model k (matrix camera).  This
+** function can't fail. */
+void pt_matrices_of(pt_matrices *mx, const pt_plan *p, size_t k);
+
+/* Defaults: everything traced, identity stages left out, raster traced. */
+void pt_options_default(pt_options *o);
+
+/* Decide, for each model, the stages to trace and the vertices to transform.
+** Returns 0, or -1 when out of memory (then *p is empty). */
+int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o);
+
+/* Free what *p owns.  This function can't fail. */
+void pt_plan_free(pt_plan *p);
+
+/* Run the scene through the plan, drawing into fb when fb is not NULL and
+** o->rasterize is set.  Fills *sum.  Returns 0, or -1 when out of memory. */
+int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
+           const pt_listener *l, pt_fb *fb, pt_summary *sum);
+
+#endif

@@ -1,0 +1,43 @@
+/*
+** src/core/pipetrace.h -- the core's one public header: what io and the tools use
+** See LICENSE for copyright and license.
+**
+** The core parses a scene, plans its stages, runs every vertex through the
+** stages of stages/ and rasterizes the segments into a framebuffer:
+**
+**   pt_scene_load -> pt_plan_make -> pt_run (stages, then raster) -> listener
+**
+** Everything above the core (src/io: trace writers and readers, images,
+** files, numbers as text; src/tools: the commands) includes this header and no
+** other header of src/core or stages/; tests/layers.sh checks it.  USAGE is in
+** pipeline.h; the stages' formulas are at the top of each stages/ header.
+*/
+#ifndef PT_PIPETRACE_H
+#define PT_PIPETRACE_H
+
+#include "stages/pt_stage.h"           /* vectors, stage ids, records, the table */
+#include "stages/pt_round.h"           /* Java's rounding, the inside tests */
+#include "stages/pt_mat4.h"            /* 4x4 matrices on row vectors */
+#include "stages/pt_classic.h"         /* the classic camera's stages, in order */
+#include "stages/pt_matrix.h"          /* the matrix camera's stages, in order */
+#include "stages/s1_model2camera.h"
+#include "stages/s2_camera2image.h"
+#include "stages/s3_image2pixel.h"
+#include "stages/s4_pixel2viewport.h"
+#include "stages/s5_viewport2fb.h"
+#include "stages/s6_fb2index.h"
+#include "stages/m1_model2world.h"
+#include "stages/m2_world2view.h"
+#include "stages/m3_view2clip.h"
+#include "stages/m4_clip2cvv.h"
+#include "stages/m5_clip2ndc.h"
+#include "stages/m6_ndc2screen.h"
+#include "stages/m7_screen2viewport.h"
+#include "core/scene.h"                /* the scene, parsed */
+#include "core/builtin.h"              /* the scene rendered when given none */
+#include "core/fb.h"                   /* the framebuffer */
+#include "core/clip.h"                 /* the matrix camera's clipping */
+#include "core/raster.h"               /* the DDA */
+#include "core/pipeline.h"             /* plan, run, listen */
+
+#endif

@@ -1,0 +1,1449 @@
+/*
+** src/core/scene.c -- parse .scene and Wavefront .obj files into a pt_scene
+** See LICENSE for copyright and license.
+**
+** Design.  A file is read into memory whole and walked once, line by line.
+** next_line() finds the end of a line and checks every byte on the way (valid
+** UTF-8, no control characters, CR only as part of CRLF), so everything after
+** it sees clean text.  next_token() splits a line at spaces and tabs and hands
+** out (pointer, length) pairs into the buffer: tokens are never copied, except
+** a number longer than 127 bytes, which strtod() needs NUL-terminated.
+**
+** A parser struct holds what spans lines: which once-only directives were seen
+** and on which line, and which model is current (always the last one in
+** s->models).  A source struct holds one text being read: its name, the read
+** position, and the current line.  An `obj` line reads the named file as a
+** second source in "OBJ mode", where only v, l and f count and indices are
+** relative to the file's own vertices; OBJ mode never opens further files.
+**
+** Errors.  Every function that can fail returns 0 (or a count) on success and
+** -1 on failure.  The first failure writes "FILE:LINE:COL: error: MESSAGE" to
+** the caller's buffer; the -1 then travels straight up to the public function,
+** which frees the half-built scene.  Nothing here prints or exits.
+*/
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/scene.h"
+
+#define MAX_VERTS  0x7fffffffu  /* per model: indices must fit in a uint32_t */
+#define MAX_SEGS   0x7fffffffu  /* per model: a matching limit for segments */
+#define QUOTE_MAX  40           /* bytes of a token quoted in a message */
+#define QUOTE_BUF  (QUOTE_MAX + 4)
+#define INT_CAP    INT64_C(100000000000000000)  /* integers saturate at +-1e17 */
+
+/* A token: n bytes at p, inside the text buffer (not NUL-terminated). */
+typedef struct token {
+    const char *p;
+    size_t n;
+} token;
+
+/* The unread part of one line: from p up to end, where end is the line end
+** or the first '#', whichever comes first. */
+typedef struct cursor {
+    const char *p, *end;
+} cursor;
+
+/* One text being read: a .scene file, or an OBJ file (included or not). */
+typedef struct source {
+    const char *name;           /* file name for messages */
+    const char *p, *end;        /* the unread text */
+    const char *line;           /* start of the current line; columns count from here */
+    size_t lineno;              /* number of the current line, 1-based */
+    int obj;                    /* 1: OBJ mode (only v, l, f; other keywords ignored) */
+    size_t base;                /* vertices the model had before this text began */
+} source;
+
+/* What the parse of one scene remembers between lines. */
+typedef struct parser {
+    pt_scene *s;                /* the scene being filled */
+    const char *dir;            /* obj paths are relative to dir[0..dirlen) */
+    size_t dirlen;
+    char *err;                  /* the caller's message buffer */
+    size_t errlen;
+    size_t fb_line, bg_line;    /* line of each once-per-scene directive, 0: none yet */
+    size_t vp_line, cam_line;
+    size_t proj_line;           /* line of `projection`, 0: none */
+    size_t world_line;          /* line and column of the first `world`, 0: none */
+    size_t world_col;
+    size_t cam_col;             /* column of the camera's kind, for late checks */
+    size_t proj_col[5];         /* columns of `projection`, fov, aspect, near, far */
+    size_t vp_col;              /* column of `viewport`, for the late fit check */
+    size_t translate_line;      /* once-per-model directives of the current model */
+    size_t color_line;
+    size_t *model_line;         /* model_line[i]: line of the `model` of s->models[i] */
+    size_t cap_model_line;
+} parser;
+
+/* ---------------------------------------------------------------- messages */
+
+#if defined(__GNUC__)
+#define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
+#else
+#define PRINTF_LIKE(f, a)
+#endif
+
+/* Write "NAME:LINE:COL: error: " and the formatted message to err.  Any control
+** byte (say, a newline in a file name) becomes '?', so that the message is
+** exactly one line.  Returns -1, so that callers can `return vfail(...)`. */
+static int vfail(char *err, size_t errlen, const char *name, size_t line,
+                 size_t col, const char *fmt, va_list ap)
+{
+    int k;
+    size_t n, i;
+
+    if (err == NULL || errlen == 0)
+        return -1;
+    k = snprintf(err, errlen, "%s:%zu:%zu: error: ", name, line, col);
+    n = k < 0 ? 0 : (size_t)k;
+    if (n < errlen)
+        vsnprintf(err + n, errlen - n, fmt, ap);
+    for (i = 0; err[i] != '\0'; i++)
+        if ((unsigned char)err[i] < 0x20 || err[i] == 0x7f)
+            err[i] = '?';
+    return -1;
+}
+
+/* An error at an explicit file, line and column. */
+static int fail_at(char *err, size_t errlen, const char *name, size_t line,
+                   size_t col, const char *fmt, ...) PRINTF_LIKE(6, 7);
+static int fail_at(char *err, size_t errlen, const char *name, size_t line,
+                   size_t col, const char *fmt, ...)
+{
+    va_list ap;
+
+    va_start(ap, fmt);
+    vfail(err, errlen, name, line, col, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+/* An error at the byte `at` of the current line of src. */
+static int fail(parser *ps, const source *src, const char *at,
+                const char *fmt, ...) PRINTF_LIKE(4, 5);
+static int fail(parser *ps, const source *src, const char *at,
+                const char *fmt, ...)
+{
+    va_list ap;
+    size_t col = (size_t)(at - src->line) + 1;
+
+    va_start(ap, fmt);
+    vfail(ps->err, ps->errlen, src->name, src->lineno, col, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+/* Copy p[0..n) into buf (QUOTE_BUF bytes) for a message.  Text longer than
+** QUOTE_MAX bytes is cut, at a character boundary, and "..." appended. */
+static const char *shown(const char *p, size_t n, char *buf)
+{
+    size_t k = n;
+
+    if (k > QUOTE_MAX) {
+        k = QUOTE_MAX;
+        while (k > 0 && ((unsigned char)p[k] & 0xC0) == 0x80)
+            k--;                        /* p[k] continues a character: back off */
+    }
+    if (k > 0)
+        memcpy(buf, p, k);
+    strcpy(buf + k, k < n ? "..." : "");
+    return buf;
+}
+
+/* -------------------------------------------------- bytes, lines, tokens */
+
+/* The length (2..4) of the valid UTF-8 character at p, given avail >= 1 bytes
+** and p[0] >= 0x80; or 0 when it is not valid, with *why naming the reason, or
+** NULL when p[0] cannot start a character at all. */
+static size_t utf8_len(const unsigned char *p, size_t avail, const char **why)
+{
+    unsigned c = p[0];
+    unsigned lo = 0x80, hi = 0xBF;      /* allowed range of the second byte */
+    size_t n, i;
+
+    *why = NULL;
+    if (c == 0xC0 || c == 0xC1) {
+        *why = "overlong form";
+        return 0;
+    }
+    if (c >= 0xC2 && c <= 0xDF)
+        n = 2;
+    else if (c >= 0xE0 && c <= 0xEF)
+        n = 3;
+    else if (c >= 0xF0 && c <= 0xF4)
+        n = 4;
+    else
+        return 0;                       /* a continuation byte, or 0xF5..0xFF */
+    for (i = 1; i < n; i++)
+        if (i >= avail || (p[i] & 0xC0) != 0x80) {
+            *why = "truncated";
+            return 0;
+        }
+    if (c == 0xE0)      { lo = 0xA0; *why = "overlong form"; }
+    else if (c == 0xED) { hi = 0x9F; *why = "surrogate"; }
+    else if (c == 0xF0) { lo = 0x90; *why = "overlong form"; }
+    else if (c == 0xF4) { hi = 0x8F; *why = "beyond U+10FFFF"; }
+    if (p[1] < lo || p[1] > hi)
+        return 0;
+    *why = NULL;
+    return n;
+}
+
+/* Is the valid UTF-8 character at p (length n) a C1 control, U+0080..U+009F? */
+static int is_c1_control(const unsigned char *p, size_t n)
+{
+    return n == 2 && p[0] == 0xC2 && p[1] < 0xA0;
+}
+
+/* Check the character at p, one that is not printable ASCII, tab or LF, and
+** return its length; or report why it is not allowed and return 0.  A CR is
+** allowed (length 1) only right before an LF. */
+static size_t check_char(parser *ps, const source *src, const unsigned char *p,
+                         const unsigned char *end)
+{
+    const char *at = (const char *)p;
+    const char *why;
+    size_t n;
+
+    if (p[0] == '\r') {
+        if (p + 1 < end && p[1] == '\n')
+            return 1;
+        fail(ps, src, at, "carriage return not followed by a line feed");
+    } else if (p[0] == 0) {
+        fail(ps, src, at, "NUL byte");
+    } else if (p[0] < 0x80) {
+        fail(ps, src, at, "control character 0x%02x", p[0]);
+    } else if ((n = utf8_len(p, (size_t)(end - p), &why)) == 0) {
+        if (why == NULL)
+            fail(ps, src, at, "invalid UTF-8 byte 0x%02x", p[0]);
+        else
+            fail(ps, src, at, "invalid UTF-8 sequence starting with byte 0x%02x (%s)",
+                 p[0], why);
+    } else if (is_c1_control(p, n)) {
+        fail(ps, src, at, "control character U+%04X", (unsigned)p[1]);
+    } else {
+        return n;
+    }
+    return 0;
+}
+
+/* Step src to its next line and check every byte of it, comment included.
+** *line gets the line's text up to the first '#' or the line end (LF, CRLF or
+** the end of the text).  Returns 1 for a line, 0 at the end, -1 on a bad byte. */
+static int next_line(parser *ps, source *src, cursor *line)
+{
+    const unsigned char *p = (const unsigned char *)src->p;
+    const unsigned char *end = (const unsigned char *)src->end;
+    const unsigned char *hash = NULL;   /* the first '#', if any */
+    const unsigned char *stop;          /* where the line's text ends */
+    size_t n;
+
+    if (p == end)
+        return 0;
+    src->line = src->p;
+    src->lineno++;
+    for (;;) {
+        if (p == end || *p == '\n') {
+            stop = p;
+            break;
+        }
+        if ((*p >= 0x20 && *p < 0x7f) || *p == '\t') {     /* the common case */
+            if (*p == '#' && hash == NULL)
+                hash = p;
+            p++;
+            continue;
+        }
+        n = check_char(ps, src, p, end);    /* CR, controls, UTF-8 */
+        if (n == 0)
+            return -1;
+        if (*p == '\r') {               /* check_char allowed it: a CRLF */
+            stop = p;
+            p++;                        /* on the LF, as in the first case */
+            break;
+        }
+        p += n;
+    }
+    line->p = src->p;
+    line->end = (const char *)(hash != NULL ? hash : stop);
+    src->p = (const char *)(p == end ? p : p + 1);        /* past the LF */
+    return 1;
+}
+
+/* Take the next token from c into *t.  Returns 1, or 0 when none is left. */
+static int next_token(cursor *c, token *t)
+{
+    const char *p = c->p;
+
+    while (p < c->end && (*p == ' ' || *p == '\t'))
+        p++;
+    if (p == c->end) {
+        c->p = p;
+        return 0;
+    }
+    t->p = p;
+    while (p < c->end && *p != ' ' && *p != '\t')
+        p++;
+    t->n = (size_t)(p - t->p);
+    c->p = p;
+    return 1;
+}
+
+/* Is t the word w? */
+static int tok_is(const token *t, const char *w)
+{
+    size_t n = strlen(w);
+
+    return t->n == n && memcmp(t->p, w, n) == 0;
+}
+
+/* --------------------------------------------------------------- numbers */
+
+static int is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+/* Does p[0..n) match [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)? ?
+** Anything else (hex, inf, nan, "1f", "1,5") is refused before strtod sees it. */
+static int is_decimal(const char *p, size_t n)
+{
+    const char *e = p + n;
+    size_t before = 0, after = 0;       /* digits before and after the point */
+
+    if (p < e && (*p == '+' || *p == '-'))
+        p++;
+    for (; p < e && is_digit(*p); p++)
+        before++;
+    if (p < e && *p == '.')
+        for (p++; p < e && is_digit(*p); p++)
+            after++;
+    if (before == 0 && after == 0)
+        return 0;
+    if (p < e && (*p == 'e' || *p == 'E')) {
+        p++;
+        if (p < e && (*p == '+' || *p == '-'))
+            p++;
+        if (p == e || !is_digit(*p))
+            return 0;
+        while (p < e && is_digit(*p))
+            p++;
+    }
+    return p == e;
+}
+
+/* Does p[0..n) match [+-]?digits ? */
+static int is_integer(const char *p, size_t n)
+{
+    size_t i = 0;
+
+    if (n > 0 && (p[0] == '+' || p[0] == '-'))
+        i = 1;
+    if (i == n)
+        return 0;
+    for (; i < n; i++)
+        if (!is_digit(p[i]))
+            return 0;
+    return 1;
+}
+
+/* Convert p[0..n) of the form [+-]?digits to *out.  Magnitudes beyond INT_CAP
+** saturate to +-INT_CAP, which is out of every range this file checks, so a
+** 40-digit number is reported as out of range without ever overflowing.
+** Returns 0, or -1 when the form is wrong. */
+static int scan_integer(const char *p, size_t n, int64_t *out)
+{
+    int64_t v = 0;
+    size_t i = 0;
+
+    if (!is_integer(p, n))
+        return -1;
+    if (p[0] == '+' || p[0] == '-')
+        i = 1;
+    for (; i < n; i++) {
+        if (v < INT_CAP)
+            v = v * 10 + (p[i] - '0');  /* v < 1e17, so v*10 + 9 fits */
+        if (v > INT_CAP)
+            v = INT_CAP;
+    }
+    *out = p[0] == '-' ? -v : v;
+    return 0;
+}
+
+/* Parse t as a finite decimal number into *out; what names it in messages. */
+static int parse_number(parser *ps, const source *src, const token *t,
+                        const char *what, double *out)
+{
+    char small[128], q[QUOTE_BUF];
+    char *buf = small;
+    double x;
+
+    if (!is_decimal(t->p, t->n))
+        return fail(ps, src, t->p, "'%s' is not a decimal number",
+                    shown(t->p, t->n, q));
+    if (t->n >= sizeof small) {         /* rare: a very long number */
+        buf = malloc(t->n + 1);
+        if (buf == NULL)
+            return fail(ps, src, t->p, "out of memory");
+    }
+    memcpy(buf, t->p, t->n);
+    buf[t->n] = '\0';
+    x = strtod(buf, NULL);              /* "C" locale: '.' is the decimal point */
+    if (buf != small)
+        free(buf);
+    if (!isfinite(x))
+        return fail(ps, src, t->p, "%s '%s' is not finite", what,
+                    shown(t->p, t->n, q));
+    *out = x;
+    return 0;
+}
+
+/* Parse t as an integer in lo..hi into *out; what names it in messages. */
+static int parse_int(parser *ps, const source *src, const token *t,
+                     const char *what, int lo, int hi, int *out)
+{
+    char q[QUOTE_BUF];
+    int64_t v;
+
+    if (scan_integer(t->p, t->n, &v) < 0)
+        return fail(ps, src, t->p, "%s '%s' is not an integer", what,
+                    shown(t->p, t->n, q));
+    if (v < lo || v > hi)
+        return fail(ps, src, t->p, "%s %s is out of range (%d..%d)", what,
+                    shown(t->p, t->n, q), lo, hi);
+    *out = (int)v;                      /* lo <= v <= hi: the cast is exact */
+    return 0;
+}
+
+/* ---------------------------------------------------------------- models */
+
+/* Grow the array p of *cap elements of size bytes, doubling (from 16) but
+** never beyond max elements nor SIZE_MAX bytes.  Returns the new array and
+** updates *cap, or returns NULL, p untouched, when it cannot grow. */
+static void *grow(void *p, size_t *cap, size_t size, size_t max)
+{
+    size_t n;
+
+    if (max > SIZE_MAX / size)
+        max = SIZE_MAX / size;
+    if (*cap >= max)
+        return NULL;
+    n = *cap == 0 ? 16 : (*cap <= max / 2 ? *cap * 2 : max);
+    if (n > max)
+        n = max;
+    p = realloc(p, n * size);
+    if (p != NULL)
+        *cap = n;
+    return p;
+}
+
+/* The current model.  Callers make sure there is one. */
+static pt_model *cur_model(parser *ps)
+{
+    return &ps->s->models[ps->s->nmodels - 1];
+}
+
+/* Append a white, untranslated model called name[0..n) that began on line
+** lineno.  Returns 0, or -1 when out of memory (no message). */
+static int new_model(parser *ps, const char *name, size_t n, size_t lineno)
+{
+    pt_scene *s = ps->s;
+    pt_model *m;
+    char *copy;
+    void *p;
+
+    if (s->nmodels == s->cap_models) {
+        p = grow(s->models, &s->cap_models, sizeof *s->models, SIZE_MAX);
+        if (p == NULL)
+            return -1;
+        s->models = p;
+    }
+    /* model_line keeps pace with models; its elements are smaller than a
+    ** pt_model, so the byte count cannot overflow. */
+    if (ps->cap_model_line < s->cap_models) {
+        p = realloc(ps->model_line, s->cap_models * sizeof *ps->model_line);
+        if (p == NULL)
+            return -1;
+        ps->model_line = p;
+        ps->cap_model_line = s->cap_models;
+    }
+    copy = malloc(n + 1);
+    if (copy == NULL)
+        return -1;
+    if (n > 0)
+        memcpy(copy, name, n);
+    copy[n] = '\0';
+    ps->model_line[s->nmodels] = lineno;
+    m = &s->models[s->nmodels++];
+    memset(m, 0, sizeof *m);
+    m->name = copy;
+    m->color[0] = m->color[1] = m->color[2] = 255;
+    m->world = pt_mat4_identity();
+    ps->translate_line = ps->color_line = 0;
+    return 0;
+}
+
+/* Append vertex v to the current model; at is where to point an error. */
+static int add_vertex(parser *ps, const source *src, const char *at, pt_vec3 v)
+{
+    pt_model *m = cur_model(ps);
+    void *p;
+
+    if (m->nv == m->cap_v) {
+        if (m->nv >= MAX_VERTS)
+            return fail(ps, src, at, "more than %lu vertices in one model",
+                        (unsigned long)MAX_VERTS);
+        p = grow(m->v, &m->cap_v, sizeof *m->v, MAX_VERTS);
+        if (p == NULL)
+            return fail(ps, src, at, "out of memory");
+        m->v = p;
+    }
+    m->v[m->nv++] = v;
+    return 0;
+}
+
+/* Append segment a-b (0-based) to the current model. */
+static int add_segment(parser *ps, const source *src, const char *at,
+                       uint32_t a, uint32_t b)
+{
+    pt_model *m = cur_model(ps);
+    void *p;
+
+    if (m->nseg == m->cap_seg) {
+        if (m->nseg >= MAX_SEGS)
+            return fail(ps, src, at, "more than %lu segments in one model",
+                        (unsigned long)MAX_SEGS);
+        p = grow(m->seg, &m->cap_seg, sizeof *m->seg, MAX_SEGS);
+        if (p == NULL)
+            return fail(ps, src, at, "out of memory");
+        m->seg = p;
+    }
+    m->seg[m->nseg].a = a;
+    m->seg[m->nseg].b = b;
+    m->nseg++;
+    return 0;
+}
+
+/* The first '/' in p[0..end), or end when there is none. */
+static const char *find_slash(const char *p, const char *end)
+{
+    while (p < end && *p != '/')
+        p++;
+    return p;
+}
+
+/* Split a vertex reference I, I/T, I//N or I/T/N and set *vpart to its I.
+** T and N must be integers but are otherwise unused.  Returns 0, or -1 when
+** the form is wrong. */
+static int vertex_ref(const token *t, token *vpart)
+{
+    const char *end = t->p + t->n;
+    const char *s1, *s2;                /* the first and second '/', or end */
+
+    s1 = find_slash(t->p, end);
+    vpart->p = t->p;
+    vpart->n = (size_t)(s1 - t->p);
+    if (s1 == end)
+        return 0;                                           /* I */
+    s2 = find_slash(s1 + 1, end);
+    if (s2 == end)                                          /* I/T */
+        return is_integer(s1 + 1, (size_t)(end - s1 - 1)) ? 0 : -1;
+    if (s2 > s1 + 1 && !is_integer(s1 + 1, (size_t)(s2 - s1 - 1)))
+        return -1;                                          /* a bad T */
+    return is_integer(s2 + 1, (size_t)(end - s2 - 1)) ? 0 : -1;  /* I//N, I/T/N */
+}
+
+/* Turn the vertex reference t into a 0-based index into the model's v[].
+** In scope are the vertices the model has so far, less those from before the
+** source began (an OBJ file counts its own vertices from 1):
+**     k > 0:  the k-th vertex in scope          (k <= count)
+**     k < 0:  the |k|-th vertex counting back   (|k| <= count, -1 = the last) */
+static int resolve_index(parser *ps, const source *src, const token *t,
+                         uint32_t *out)
+{
+    size_t nv = cur_model(ps)->nv;
+    size_t count = nv - src->base;      /* vertices in scope, <= MAX_VERTS */
+    const char *scope = src->obj ? " in this file" : "";
+    const char *noun = count == 1 ? "vertex" : "vertices";
+    char q[QUOTE_BUF];
+    token vp;
+    int64_t k;
+
+    if (vertex_ref(t, &vp) < 0 || scan_integer(vp.p, vp.n, &k) < 0)
+        return fail(ps, src, t->p,
+                    "'%s' is not a vertex index (expected I, I/T, I//N or I/T/N)",
+                    shown(t->p, t->n, q));
+    if (k == 0)
+        return fail(ps, src, t->p, "index 0 is not valid (indices start at 1)");
+    if (k > 0 && (uint64_t)k > count)
+        return fail(ps, src, t->p, "index %s refers past the %zu %s defined so far%s",
+                    shown(vp.p, vp.n, q), count, noun, scope);
+    if (k < 0 && (uint64_t)-k > count)
+        return fail(ps, src, t->p,
+                    "index %s refers before the first of the %zu %s defined so far%s",
+                    shown(vp.p, vp.n, q), count, noun, scope);
+    /* Both results are < nv <= MAX_VERTS, so they fit in a uint32_t. */
+    *out = (uint32_t)(k > 0 ? src->base + (size_t)k - 1 : nv - (size_t)-k);
+    return 0;
+}
+
+/* ------------------------------------------------------------ directives */
+
+/* A directive's handler: dir is the directive's token, args the rest of the
+** line.  Returns 0 or -1. */
+typedef int handler(parser *ps, source *src, const token *dir, cursor *args);
+
+/* Read the arguments of directive dir, which takes lo..hi of them (hi <= 4),
+** into arg[] and their number into *count (if not NULL); noun says what they
+** are ("numbers").  Missing arguments are reported at the directive, extra
+** ones at the first extra argument. */
+static int take_args(parser *ps, const source *src, const token *dir,
+                     cursor *args, token *arg, size_t lo, size_t hi,
+                     const char *noun, size_t *count)
+{
+    const char *extra = NULL;
+    char q[QUOTE_BUF];
+    size_t n = 0;
+    token t;
+
+    while (next_token(args, &t)) {
+        if (n < hi)
+            arg[n] = t;
+        else if (extra == NULL)
+            extra = t.p;
+        n++;
+    }
+    if (n < lo)
+        return fail(ps, src, dir->p, "expected %zu %s after '%s', found %zu",
+                    lo, noun, shown(dir->p, dir->n, q), n);
+    if (n > hi && lo == hi)
+        return fail(ps, src, extra, "expected %zu %s after '%s', found %zu",
+                    lo, noun, shown(dir->p, dir->n, q), n);
+    if (n > hi)
+        return fail(ps, src, extra, "expected at most %zu %s after '%s', found %zu",
+                    hi, noun, shown(dir->p, dir->n, q), n);
+    if (count != NULL)
+        *count = n;
+    return 0;
+}
+
+/* A directive allowed once (per scene or per model): remember its line in
+** *seen, or fail when *seen already holds one. */
+static int once(parser *ps, const source *src, const token *dir, size_t *seen)
+{
+    char q[QUOTE_BUF];
+
+    if (*seen != 0)
+        return fail(ps, src, dir->p, "duplicate '%s' (first at line %zu)",
+                    shown(dir->p, dir->n, q), *seen);
+    *seen = src->lineno;
+    return 0;
+}
+
+/* Three integers 0..255 into rgb[]: for `background` and `color`. */
+static int parse_rgb(parser *ps, const source *src, const token *dir,
+                     cursor *args, const char *what, unsigned char rgb[3])
+{
+    token a[3];
+    int c[3], i;
+
+    if (take_args(ps, src, dir, args, a, 3, 3, "integers", NULL) < 0)
+        return -1;
+    for (i = 0; i < 3; i++)
+        if (parse_int(ps, src, &a[i], what, 0, 255, &c[i]) < 0)
+            return -1;
+    for (i = 0; i < 3; i++)
+        rgb[i] = (unsigned char)c[i];   /* 0..255: exact */
+    return 0;
+}
+
+/* framebuffer W H */
+static int do_framebuffer(parser *ps, source *src, const token *dir, cursor *args)
+{
+    token a[2];
+
+    if (once(ps, src, dir, &ps->fb_line) < 0
+        || take_args(ps, src, dir, args, a, 2, 2, "integers", NULL) < 0
+        || parse_int(ps, src, &a[0], "framebuffer width", 1, PT_MAX_SIZE,
+                     &ps->s->fb_w) < 0
+        || parse_int(ps, src, &a[1], "framebuffer height", 1, PT_MAX_SIZE,
+                     &ps->s->fb_h) < 0)
+        return -1;
+    return 0;
+}
+
+/* background R G B */
+static int do_background(parser *ps, source *src, const token *dir, cursor *args)
+{
+    if (once(ps, src, dir, &ps->bg_line) < 0)
+        return -1;
+    return parse_rgb(ps, src, dir, args, "background component",
+                     ps->s->background);
+}
+
+/* viewport X Y W H.  Whether it fits in the framebuffer is checked once the
+** whole file is read (finish_viewport), as `framebuffer` may come later. */
+static int do_viewport(parser *ps, source *src, const token *dir, cursor *args)
+{
+    pt_scene *s = ps->s;
+    token a[4];
+
+    if (once(ps, src, dir, &ps->vp_line) < 0
+        || take_args(ps, src, dir, args, a, 4, 4, "integers", NULL) < 0
+        || parse_int(ps, src, &a[0], "viewport x", 0, PT_MAX_SIZE - 1, &s->vp_x) < 0
+        || parse_int(ps, src, &a[1], "viewport y", 0, PT_MAX_SIZE - 1, &s->vp_y) < 0
+        || parse_int(ps, src, &a[2], "viewport width", 1, PT_MAX_SIZE, &s->vp_w) < 0
+        || parse_int(ps, src, &a[3], "viewport height", 1, PT_MAX_SIZE, &s->vp_h) < 0)
+        return -1;
+    ps->vp_col = (size_t)(dir->p - src->line) + 1;
+    return 0;
+}
+
+/* Numbers a[0..n) into v[]; what names them in messages. */
+static int parse_numbers(parser *ps, const source *src, const token *a, size_t n,
+                         const char *what, double *v)
+{
+    size_t i;
+
+    for (i = 0; i < n; i++)
+        if (parse_number(ps, src, &a[i], what, &v[i]) < 0)
+            return -1;
+    return 0;
+}
+
+/* camera perspective | orthographic | lookat EX EY EZ DX DY DZ UX UY UZ
+** | lookat-target EX EY EZ TX TY TZ UX UY UZ.  A look-at camera is checked
+** once the whole file is read (finish_camera). */
+static int do_camera(parser *ps, source *src, const token *dir, cursor *args)
+{
+    char q[QUOTE_BUF];
+    token a[10];
+    double v[9];
+    size_t n;
+
+    if (once(ps, src, dir, &ps->cam_line) < 0
+        || take_args(ps, src, dir, args, a, 1, 10, "word", &n) < 0)
+        return -1;
+    ps->cam_col = (size_t)(a[0].p - src->line) + 1;
+    if (tok_is(&a[0], "perspective") || tok_is(&a[0], "orthographic")) {
+        if (n != 1)
+            return fail(ps, src, a[1].p, "expected 1 word after 'camera', found %zu", n);
+        ps->s->perspective = tok_is(&a[0], "perspective");
+        return 0;
+    }
+    if (!tok_is(&a[0], "lookat") && !tok_is(&a[0], "lookat-target"))
+        return fail(ps, src, a[0].p, "unknown camera '%s' (expected perspective, "
+                    "orthographic, lookat or lookat-target)", shown(a[0].p, a[0].n, q));
+    if (n != 10)
+        return fail(ps, src, a[0].p, "expected 9 numbers after 'camera %s' "
+                    "(eye, %s, up), found %zu", shown(a[0].p, a[0].n, q),
+                    tok_is(&a[0], "lookat") ? "direction" : "target", n - 1);
+    if (parse_numbers(ps, src, a + 1, 9, "camera coordinate", v) < 0)
+        return -1;
+    ps->s->matrix = 1;
+    ps->s->eye = (pt_vec3){v[0], v[1], v[2]};
+    ps->s->dir = (pt_vec3){v[3], v[4], v[5]};
+    ps->s->up = (pt_vec3){v[6], v[7], v[8]};
+    if (tok_is(&a[0], "lookat-target")) {   /* direction = target - eye */
+        ps->s->dir.x = v[3] - v[0];
+        ps->s->dir.y = v[4] - v[1];
+        ps->s->dir.z = v[5] - v[2];
+    }
+    return 0;
+}
+
+/* projection perspective FOV_DEGREES ASPECT|auto NEAR FAR */
+static int do_projection(parser *ps, source *src, const token *dir, cursor *args)
+{
+    pt_scene *s = ps->s;
+    char q[QUOTE_BUF];
+    token a[5];
+    size_t n;
+
+    if (once(ps, src, dir, &ps->proj_line) < 0
+        || take_args(ps, src, dir, args, a, 5, 5, "words", NULL) < 0)
+        return -1;
+    ps->proj_col[0] = (size_t)(dir->p - src->line) + 1;
+    for (n = 1; n < 5; n++)
+        ps->proj_col[n] = (size_t)(a[n].p - src->line) + 1;
+    if (!tok_is(&a[0], "perspective"))
+        return fail(ps, src, a[0].p, "unknown projection '%s' (expected perspective)",
+                    shown(a[0].p, a[0].n, q));
+    if (parse_number(ps, src, &a[1], "field of view", &s->fov) < 0)
+        return -1;
+    if (tok_is(&a[2], "auto"))
+        s->aspect = 0;                  /* filled in by finish_camera() */
+    else if (parse_number(ps, src, &a[2], "aspect ratio", &s->aspect) < 0)
+        return -1;
+    else if (!(s->aspect > 0))
+        return fail(ps, src, a[2].p, "projection: aspect ratio must be > 0");
+    if (parse_number(ps, src, &a[3], "near distance", &s->znear) < 0
+        || parse_number(ps, src, &a[4], "far distance", &s->zfar) < 0)
+        return -1;
+    return 0;
+}
+
+/* world translate X Y Z | world scale S | world scale X Y Z
+** | world rotate x|y|z DEGREES: appended to the model's world matrix. */
+static int do_world(parser *ps, source *src, const token *dir, cursor *args)
+{
+    pt_model *m = cur_model(ps);
+    char q[QUOTE_BUF];
+    token a[4];
+    double v[3];
+    size_t n;
+    pt_mat4 t;
+    int axis;
+
+    if (take_args(ps, src, dir, args, a, 2, 4, "words", &n) < 0)
+        return -1;
+    if (tok_is(&a[0], "translate") || tok_is(&a[0], "scale")) {
+        int scale = tok_is(&a[0], "scale");
+        if (n != 4 && !(scale && n == 2))
+            return fail(ps, src, a[0].p, "expected %s after 'world %s', found %zu",
+                        scale ? "1 or 3 numbers" : "3 numbers",
+                        shown(a[0].p, a[0].n, q), n - 1);
+        if (parse_numbers(ps, src, a + 1, n - 1, "world number", v) < 0)
+            return -1;
+        if (n == 2) v[1] = v[2] = v[0];
+        t = scale ? pt_mat4_scale(v[0], v[1], v[2]) : pt_mat4_translate(v[0], v[1], v[2]);
+    } else if (tok_is(&a[0], "rotate")) {
+        const char *axes = "xyz", *at;
+        if (n != 3)
+            return fail(ps, src, a[0].p, "expected an axis and an angle after "
+                        "'world rotate', found %zu words", n - 1);
+        at = a[1].n == 1 ? strchr(axes, a[1].p[0]) : NULL;
+        if (at == NULL || *at == '\0')
+            return fail(ps, src, a[1].p, "unknown axis '%s' (expected x, y or z)",
+                        shown(a[1].p, a[1].n, q));
+        if (parse_number(ps, src, &a[2], "angle", &v[0]) < 0)
+            return -1;
+        axis = (int)(at - axes);
+        t = pt_mat4_rotate(axis, v[0]);
+    } else {
+        return fail(ps, src, a[0].p, "unknown world transformation '%s' "
+                    "(expected translate, scale or rotate)", shown(a[0].p, a[0].n, q));
+    }
+    m->world = pt_mat4_mul(&m->world, &t);  /* row vectors: earlier lines act first */
+    for (n = 0; n < 16; n++)
+        if (!isfinite(m->world.m[n / 4][n % 4]))
+            return fail(ps, src, dir->p, "the world matrix overflows: entry (%zu, %zu) "
+                        "is not finite", n / 4 + 1, n % 4 + 1);
+    if (ps->world_line == 0) {
+        ps->world_line = src->lineno;
+        ps->world_col = (size_t)(dir->p - src->line) + 1;
+    }
+    return 0;
+}
+
+/* model NAME: a new current model.  Names are unique and go into JSON, CSV
+** and text output, so '"', '\' and ',' are kept out of them.  (Spaces, '#'
+** and control characters cannot reach here.)  The duplicate check is a linear
+** scan: scenes have few models. */
+static int do_model(parser *ps, source *src, const token *dir, cursor *args)
+{
+    pt_scene *s = ps->s;
+    char q[QUOTE_BUF];
+    size_t i;
+    token a;
+
+    if (take_args(ps, src, dir, args, &a, 1, 1, "name", NULL) < 0)
+        return -1;
+    for (i = 0; i < a.n; i++)
+        if (a.p[i] == '"' || a.p[i] == '\\' || a.p[i] == ',')
+            return fail(ps, src, a.p + i, "model name '%s' may not contain '%c'",
+                        shown(a.p, a.n, q), a.p[i]);
+    for (i = 0; i < s->nmodels; i++)
+        if (strlen(s->models[i].name) == a.n
+            && memcmp(s->models[i].name, a.p, a.n) == 0)
+            return fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",
+                        shown(a.p, a.n, q), ps->model_line[i]);
+    if (new_model(ps, a.p, a.n, src->lineno) < 0)
+        return fail(ps, src, dir->p, "out of memory");
+    return 0;
+}
+
+/* translate X Y Z */
+static int do_translate(parser *ps, source *src, const token *dir, cursor *args)
+{
+    pt_vec3 t;
+    token a[3];
+
+    if (once(ps, src, dir, &ps->translate_line) < 0
+        || take_args(ps, src, dir, args, a, 3, 3, "numbers", NULL) < 0
+        || parse_number(ps, src, &a[0], "translation", &t.x) < 0
+        || parse_number(ps, src, &a[1], "translation", &t.y) < 0
+        || parse_number(ps, src, &a[2], "translation", &t.z) < 0)
+        return -1;
+    cur_model(ps)->translate = t;
+    return 0;
+}
+
+/* color R G B */
+static int do_color(parser *ps, source *src, const token *dir, cursor *args)
+{
+    if (once(ps, src, dir, &ps->color_line) < 0)
+        return -1;
+    return parse_rgb(ps, src, dir, args, "color component", cur_model(ps)->color);
+}
+
+/* v X Y Z [W]: W is checked like the others, then ignored. */
+static int do_vertex(parser *ps, source *src, const token *dir, cursor *args)
+{
+    pt_vec3 v;
+    double w;
+    size_t n;
+    token a[4];
+
+    if (take_args(ps, src, dir, args, a, 3, 4, "numbers", &n) < 0
+        || parse_number(ps, src, &a[0], "coordinate", &v.x) < 0
+        || parse_number(ps, src, &a[1], "coordinate", &v.y) < 0
+        || parse_number(ps, src, &a[2], "coordinate", &v.z) < 0
+        || (n == 4 && parse_number(ps, src, &a[3], "coordinate", &w) < 0))
+        return -1;
+    return add_vertex(ps, src, dir->p, v);
+}
+
+/* l I J ... (an open polyline) or, closed, f I J K ... (a face's outline):
+** segments I-J, J-K, ... and for a face also last-first.  Only the previous
+** and the first index are kept, so a line of any length needs no memory. */
+static int polyline(parser *ps, source *src, const token *dir, cursor *args,
+                    int closed)
+{
+    size_t need = closed ? 3 : 2, count = 0;
+    uint32_t first = 0, prev = 0, cur = 0;
+    char q[QUOTE_BUF];
+    token t;
+
+    while (next_token(args, &t)) {
+        if (resolve_index(ps, src, &t, &cur) < 0)
+            return -1;
+        if (count == 0)
+            first = cur;
+        else if (add_segment(ps, src, t.p, prev, cur) < 0)
+            return -1;
+        prev = cur;
+        count++;
+    }
+    if (count < need)
+        return fail(ps, src, dir->p,
+                    "expected at least %zu indices after '%s', found %zu",
+                    need, shown(dir->p, dir->n, q), count);
+    if (closed)
+        return add_segment(ps, src, dir->p, prev, first);
+    return 0;
+}
+
+static int do_line(parser *ps, source *src, const token *dir, cursor *args)
+{
+    return polyline(ps, src, dir, args, 0);
+}
+
+static int do_face(parser *ps, source *src, const token *dir, cursor *args)
+{
+    return polyline(ps, src, dir, args, 1);
+}
+
+/* Read the whole file at path into a new NUL-terminated buffer *text of *len
+** bytes (plus the NUL).  A chunked read works for pipes too, where the size is
+** not known beforehand.  Reading stops early after a chunk with a NUL byte:
+** the parser reports that byte anyway, and stopping keeps `obj /dev/zero`
+** from eating all memory.  Returns 0; -1 on a read error, with the errno value
+** in *errnum (0 if none was set); -2 when out of memory. */
+static int read_file(const char *path, char **text, size_t *len, int *errnum)
+{
+    FILE *f;
+    char *buf, *p;
+    size_t n = 0, cap = 65536, want, got;
+    int status = 0;
+
+    *text = NULL;
+    *len = 0;
+    errno = 0;
+    f = fopen(path, "rb");
+    if (f == NULL) {
+        *errnum = errno;
+        return -1;
+    }
+    buf = malloc(cap);
+    if (buf == NULL) {
+        fclose(f);
+        return -2;
+    }
+    for (;;) {
+        if (cap - n < 2) {              /* keep room for a byte and the NUL */
+            p = grow(buf, &cap, 1, SIZE_MAX);
+            if (p == NULL) {
+                status = -2;
+                break;
+            }
+            buf = p;
+        }
+        want = cap - n - 1;
+        errno = 0;
+        got = fread(buf + n, 1, want, f);
+        n += got;
+        if (got > 0 && memchr(buf + n - got, '\0', got) != NULL)
+            break;                      /* a NUL byte: see the comment above */
+        if (got < want) {               /* end of file, or an error */
+            if (ferror(f)) {
+                *errnum = errno;
+                status = -1;
+            }
+            break;
+        }
+    }
+    fclose(f);
+    if (status != 0) {
+        free(buf);
+        return status;
+    }
+    buf[n] = '\0';
+    *text = buf;
+    *len = n;
+    return 0;
+}
+
+static int parse_source(parser *ps, source *src);
+
+/* Set up src to read text[0..len) as file name, skipping a UTF-8 byte-order
+** mark (columns on line 1 then count from after it). */
+static void init_source(source *src, const char *name, const char *text,
+                        size_t len, int obj, size_t base)
+{
+    static const char empty[1] = "";
+
+    if (text == NULL) {                 /* no text: pointer arithmetic on NULL is UB */
+        text = empty;
+        len = 0;
+    }
+    if (len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0) {
+        text += 3;
+        len -= 3;
+    }
+    src->name = name;
+    src->p = src->line = text;
+    src->end = text + len;
+    src->lineno = 0;
+    src->obj = obj;
+    src->base = base;
+}
+
+/* obj PATH: the rest of the line, trimmed, names an OBJ file relative to the
+** scene's directory (unless it is absolute).  Its v, l and f lines go to the
+** current model, and its indices count from the model's vertex count now. */
+static int do_obj(parser *ps, source *src, const token *dir, cursor *args)
+{
+    const char *p = args->p, *e = args->end;
+    size_t n, len, dirlen = ps->dirlen;
+    char *path, *text;
+    int errnum = 0, r;
+    source sub;
+
+    while (p < e && (*p == ' ' || *p == '\t'))
+        p++;
+    while (e > p && (e[-1] == ' ' || e[-1] == '\t'))
+        e--;
+    if (p == e)
+        return fail(ps, src, dir->p, "expected a file name after 'obj'");
+    n = (size_t)(e - p);
+    if (p[0] == '/')
+        dirlen = 0;                     /* absolute: the directory plays no part */
+    if (n > SIZE_MAX - dirlen - 1 || (path = malloc(dirlen + n + 1)) == NULL)
+        return fail(ps, src, p, "out of memory");
+    if (dirlen > 0)
+        memcpy(path, ps->dir, dirlen);
+    memcpy(path + dirlen, p, n);
+    path[dirlen + n] = '\0';
+    r = read_file(path, &text, &len, &errnum);
+    if (r == -1)
+        r = fail(ps, src, p, "cannot read '%s': %s", path,
+                 errnum != 0 ? strerror(errnum) : "read error");
+    else if (r == -2)
+        r = fail(ps, src, p, "out of memory");
+    else {
+        init_source(&sub, path, text, len, 1, cur_model(ps)->nv);
+        r = parse_source(ps, &sub);     /* OBJ mode: never comes back here */
+        free(text);
+    }
+    free(path);
+    return r;
+}
+
+/* ---------------------------------------------------------- the drivers */
+
+/* The directives of a .scene file; in_model: only after a `model` line.
+** The most frequent come first, as the table is searched in order. */
+static const struct directive {
+    const char *name;
+    handler *fn;
+    int in_model;
+} directives[] = {
+    { "v",           do_vertex,      1 },
+    { "f",           do_face,        1 },
+    { "l",           do_line,        1 },
+    { "model",       do_model,       0 },
+    { "translate",   do_translate,   1 },
+    { "color",       do_color,       1 },
+    { "obj",         do_obj,         1 },
+    { "framebuffer", do_framebuffer, 0 },
+    { "background",  do_background,  0 },
+    { "viewport",    do_viewport,    0 },
+    { "camera",      do_camera,      0 },
+    { "projection",  do_projection,  0 },
+    { "world",       do_world,       1 },
+};
+
+/* One line of a .scene file. */
+static int scene_line(parser *ps, source *src, cursor *line)
+{
+    char q[QUOTE_BUF];
+    size_t i;
+    token d;
+
+    if (!next_token(line, &d))
+        return 0;                       /* blank, or only a comment */
+    for (i = 0; i < sizeof directives / sizeof directives[0]; i++) {
+        if (!tok_is(&d, directives[i].name))
+            continue;
+        if (directives[i].in_model && ps->s->nmodels == 0)
+            return fail(ps, src, d.p, "'%s' before any 'model'", directives[i].name);
+        return directives[i].fn(ps, src, &d, line);
+    }
+    return fail(ps, src, d.p, "unknown directive '%s'", shown(d.p, d.n, q));
+}
+
+/* The statements of the Wavefront OBJ format (its specification, version
+** 3.0) that pipetrace has no use for: texture and normal vertices, free-form
+** geometry, points, grouping and display attributes.  They are ignored. */
+static const char *const obj_unused[] = {
+    "vt", "vn", "vp", "cstype", "deg", "bmat", "step", "p", "curv", "curv2",
+    "surf", "parm", "trim", "hole", "scrv", "sp", "end", "con", "g", "s", "mg",
+    "o", "bevel", "c_interp", "d_interp", "lod", "usemtl", "mtllib",
+    "shadow_obj", "trace_obj", "ctech", "stech", "maplib", "usemap", "call", "csh",
+};
+
+/* One line of an OBJ file: v, l and f count; the other OBJ statements are
+** ignored; anything else is not OBJ, and an error, as in a scene. */
+static int obj_line(parser *ps, source *src, cursor *line)
+{
+    char q[QUOTE_BUF];
+    size_t i;
+    token d;
+
+    if (!next_token(line, &d))
+        return 0;
+    if (tok_is(&d, "v"))
+        return do_vertex(ps, src, &d, line);
+    if (tok_is(&d, "l"))
+        return do_line(ps, src, &d, line);
+    if (tok_is(&d, "f"))
+        return do_face(ps, src, &d, line);
+    for (i = 0; i < sizeof obj_unused / sizeof obj_unused[0]; i++)
+        if (tok_is(&d, obj_unused[i]))
+            return 0;
+    return fail(ps, src, d.p, "unknown OBJ statement '%s'", shown(d.p, d.n, q));
+}
+
+/* Parse every line of src.  Returns 0 or -1. */
+static int parse_source(parser *ps, source *src)
+{
+    cursor line;
+    int r;
+
+    while ((r = next_line(ps, src, &line)) > 0)
+        if ((src->obj ? obj_line(ps, src, &line) : scene_line(ps, src, &line)) < 0)
+            return -1;
+    return r;
+}
+
+/* Fill in the default viewport (the whole framebuffer), or check that the
+** given one fits, now that the framebuffer size is final.  The sums are at
+** most 2 * PT_MAX_SIZE, so they cannot overflow. */
+static int finish_viewport(parser *ps, const char *name)
+{
+    pt_scene *s = ps->s;
+
+    if (ps->vp_line == 0) {
+        s->vp_x = s->vp_y = 0;
+        s->vp_w = s->fb_w;
+        s->vp_h = s->fb_h;
+        return 0;
+    }
+    if (s->vp_x + s->vp_w > s->fb_w || s->vp_y + s->vp_h > s->fb_h)
+        return fail_at(ps->err, ps->errlen, name, ps->vp_line, ps->vp_col,
+                       "viewport %d %d %d %d does not fit in the %dx%d framebuffer",
+                       s->vp_x, s->vp_y, s->vp_w, s->vp_h, s->fb_w, s->fb_h);
+    return 0;
+}
+
+/* Check the matrix camera now that the viewport (for `auto`) is known:
+** `camera lookat` and `projection` come together, and both must give a
+** camera that can be built. */
+static int finish_camera(parser *ps, const char *name)
+{
+    pt_scene *s = ps->s;
+    pt_mat4 m;
+    pt_cam_error e;
+    int skewed;
+
+    if (s->matrix && ps->proj_line == 0)
+        return fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
+                       "'camera lookat' needs a 'projection perspective' line");
+    if (!s->matrix && ps->proj_line != 0)
+        return fail_at(ps->err, ps->errlen, name, ps->proj_line, ps->proj_col[0],
+                       "'projection' needs a 'camera lookat' line");
+    if (!s->matrix && ps->world_line != 0)
+        return fail_at(ps->err, ps->errlen, name, ps->world_line, ps->world_col,
+                       "'world' needs the matrix camera ('camera lookat'); the "
+                       "classic camera places a model with 'translate'");
+    if (!s->matrix)
+        return 0;
+    if (s->aspect == 0)
+        s->aspect = (double)s->vp_w / s->vp_h;  /* auto: the viewport's w/h */
+    e = pt_lookat(&m, s->eye, s->dir, s->up, 0, &skewed);
+    if (e != PT_CAM_OK)
+        return fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
+                       "camera: %s", pt_cam_error_text(e));
+    e = pt_perspective(&m, s->fov, s->aspect, s->znear, s->zfar);
+    if (e != PT_CAM_OK)                 /* point at the number at fault */
+        return fail_at(ps->err, ps->errlen, name, ps->proj_line,
+                       ps->proj_col[e == PT_CAM_FOV || e == PT_CAM_FOV_RANGE ? 1
+                                    : e == PT_CAM_ASPECT || e == PT_CAM_ASPECT_RANGE ? 2
+                                    : e == PT_CAM_NEAR ? 3 : 4],
+                       "projection: %s", pt_cam_error_text(e));
+    return 0;
+}
+
+/* Empty *s, then give it its defaults and a copy of name.  Returns 0, or -1
+** when out of memory (*s stays empty). */
+static int start_scene(pt_scene *s, const char *name)
+{
+    size_t n = strlen(name);
+
+    memset(s, 0, sizeof *s);
+    s->path = malloc(n + 1);
+    if (s->path == NULL)
+        return -1;
+    memcpy(s->path, name, n + 1);
+    s->fb_w = 800;
+    s->fb_h = 600;
+    s->perspective = 1;
+    return 0;                           /* the viewport: see finish_viewport() */
+}
+
+static void init_parser(parser *ps, pt_scene *s, const char *dir, size_t dirlen,
+                        char *err, size_t errlen)
+{
+    memset(ps, 0, sizeof *ps);
+    ps->s = s;
+    ps->dir = dir;
+    ps->dirlen = dirlen;
+    ps->err = err;
+    ps->errlen = errlen;
+}
+
+/* Parse the scene text[0..len) called name; obj paths are relative to
+** name[0..dirlen). */
+static int parse_scene(pt_scene *s, const char *name, size_t dirlen,
+                       const char *text, size_t len, char *err, size_t errlen)
+{
+    parser ps;
+    source src;
+    int r;
+
+    if (start_scene(s, name) < 0)
+        return fail_at(err, errlen, name, 1, 1, "out of memory");
+    init_parser(&ps, s, name, dirlen, err, errlen);
+    init_source(&src, name, text, len, 0, 0);
+    r = parse_source(&ps, &src);
+    if (r == 0)
+        r = finish_viewport(&ps, name);
+    if (r == 0)
+        r = finish_camera(&ps, name);
+    free(ps.model_line);
+    if (r < 0)
+        pt_scene_free(s);
+    return r;
+}
+
+/* The model name for a plain OBJ file: its base name without ".obj"; or "obj"
+** when that is empty or would not be a valid model name (a file name may hold
+** any byte; a model name is one token of valid UTF-8 without control
+** characters, '"', '\', ',' or '#').  path ends in ".obj", any case. */
+static void obj_model_name(const char *path, const char **name, size_t *n)
+{
+    const char *base = strrchr(path, '/');
+    const unsigned char *p, *e;
+    const char *why;
+    size_t k;
+
+    base = base != NULL ? base + 1 : path;
+    k = strlen(base) - 4;               /* base ends in ".obj" too */
+    *name = "obj";
+    *n = 3;
+    p = (const unsigned char *)base;
+    e = p + k;
+    if (k == 0)
+        return;
+    while (p < e) {
+        if (*p >= 0x80) {
+            k = utf8_len(p, (size_t)(e - p), &why);
+            if (k == 0 || is_c1_control(p, k))
+                return;
+            p += k;
+        } else if (*p <= ' ' || *p == 0x7f || strchr("\"\\,#", *p) != NULL) {
+            return;
+        } else {
+            p++;
+        }
+    }
+    *name = base;
+    *n = (size_t)(e - (const unsigned char *)base);
+}
+
+/* The translation that puts a plain OBJ model in front of the default
+** perspective camera (which looks down -z onto the image plane z = -1).
+** With the bounding box centre (cx,cy,cz), half extents (rx,ry,rz) and
+** R = max(rx, ry), or 1 when that is 0:
+**
+**     translation = (-cx, -cy, -cz - rz - 2R)
+**
+** Afterwards the box has |x| <= rx <= R, |y| <= ry <= R, and its nearest face
+** at z = -2R, so every vertex projects to x_c / -z_c, y_c / -z_c in
+** [-0.5, 0.5]: centred, at most half the view.  No vertices: (0, 0, 0).
+** Returns 0, or -1 when the result is not finite (coordinates near DBL_MAX). */
+static int frame_obj(const pt_model *m, pt_vec3 *t)
+{
+    pt_vec3 lo, hi, c, r;
+    double big;
+    size_t i;
+
+    t->x = t->y = t->z = 0.0;
+    if (m->nv == 0)
+        return 0;
+    lo = hi = m->v[0];
+    for (i = 1; i < m->nv; i++) {
+        const pt_vec3 *v = &m->v[i];
+        if (v->x < lo.x) lo.x = v->x;
+        if (v->x > hi.x) hi.x = v->x;
+        if (v->y < lo.y) lo.y = v->y;
+        if (v->y > hi.y) hi.y = v->y;
+        if (v->z < lo.z) lo.z = v->z;
+        if (v->z > hi.z) hi.z = v->z;
+    }
+    /* Halve first: lo + hi and hi - lo may overflow, lo/2 + hi/2 cannot. */
+    c.x = lo.x / 2 + hi.x / 2;
+    c.y = lo.y / 2 + hi.y / 2;
+    c.z = lo.z / 2 + hi.z / 2;
+    r.x = hi.x / 2 - lo.x / 2;
+    r.y = hi.y / 2 - lo.y / 2;
+    r.z = hi.z / 2 - lo.z / 2;
+    big = r.x > r.y ? r.x : r.y;
+    if (!(big > 0))                     /* a point, or a segment along z */
+        big = 1;
+    t->x = 0.0 - c.x;                   /* 0 - c rather than -c: +0, never -0 */
+    t->y = 0.0 - c.y;
+    t->z = 0.0 - c.z - r.z - 2 * big;
+    return isfinite(t->z) ? 0 : -1;     /* x and y are finite: c is */
+}
+
+/* Wrap the OBJ text[0..len) from path in a default scene (see frame_obj). */
+static int load_obj(pt_scene *s, const char *path, const char *text, size_t len,
+                    char *err, size_t errlen)
+{
+    const char *name;
+    parser ps;
+    source src;
+    pt_vec3 t = { 0.0, 0.0, 0.0 };
+    size_t n;
+    int r;
+
+    if (start_scene(s, path) < 0)
+        return fail_at(err, errlen, path, 1, 1, "out of memory");
+    init_parser(&ps, s, "", 0, err, errlen);
+    obj_model_name(path, &name, &n);
+    if (new_model(&ps, name, n, 1) < 0) {
+        r = fail_at(err, errlen, path, 1, 1, "out of memory");
+    } else {
+        init_source(&src, path, text, len, 1, 0);
+        r = parse_source(&ps, &src);
+    }
+    if (r == 0 && frame_obj(&s->models[0], &t) < 0)
+        r = fail_at(err, errlen, path, 1, 1,
+                    "coordinates too large to place the model in view");
+    if (r == 0) {
+        s->from_obj = 1;
+        s->obj_translate = t;
+        s->models[0].translate = t;
+        r = finish_viewport(&ps, path);
+    }
+    free(ps.model_line);
+    if (r < 0)
+        pt_scene_free(s);
+    return r;
+}
+
+/* Does path end in ".obj", in any case? */
+static int ends_with_obj(const char *path)
+{
+    size_t n = strlen(path);
+
+    return n >= 4 && path[n - 4] == '.'
+        && (path[n - 3] == 'o' || path[n - 3] == 'O')
+        && (path[n - 2] == 'b' || path[n - 2] == 'B')
+        && (path[n - 1] == 'j' || path[n - 1] == 'J');
+}
+
+/* ----------------------------------------------------------- public API */
+
+int pt_scene_load(pt_scene *s, const char *path, char *err, size_t errlen)
+{
+    const char *slash;
+    char *text;
+    size_t len, dirlen;
+    int errnum = 0, r;
+
+    memset(s, 0, sizeof *s);
+    r = read_file(path, &text, &len, &errnum);
+    if (r == -1)
+        return fail_at(err, errlen, path, 1, 1, "cannot read file: %s",
+                       errnum != 0 ? strerror(errnum) : "read error");
+    if (r == -2)
+        return fail_at(err, errlen, path, 1, 1, "out of memory");
+    if (ends_with_obj(path)) {
+        r = load_obj(s, path, text, len, err, errlen);
+    } else {
+        slash = strrchr(path, '/');
+        dirlen = slash != NULL ? (size_t)(slash - path) + 1 : 0;
+        r = parse_scene(s, path, dirlen, text, len, err, errlen);
+    }
+    free(text);
+    return r;
+}
+
+int pt_scene_parse(pt_scene *s, const char *name, const char *text, size_t len,
+                   char *err, size_t errlen)
+{
+    return parse_scene(s, name != NULL ? name : "<builtin>", 0, text, len,
+                       err, errlen);
+}
+
+void pt_scene_free(pt_scene *s)
+{
+    size_t i;
+
+    if (s == NULL)
+        return;
+    for (i = 0; i < s->nmodels; i++) {
+        free(s->models[i].name);
+        free(s->models[i].v);
+        free(s->models[i].seg);
+    }
+    free(s->models);
+    free(s->path);
+    memset(s, 0, sizeof *s);
+}

@@ -1,0 +1,724 @@
+/*
+** src/io/explain.c -- one vertex's journey, and each stage's formula with its numbers
+** See LICENSE for copyright and license.
+**
+** No stdio here: the text goes into the caller's buffer through a small
+** appender that counts what did not fit.  Numbers are pt_fmt_shortest's, so
+** every number shown reads back to the double the stage computed.
+*/
+#include <math.h>
+#include <string.h>
+#include "io/explain.h"
+#include "core/pipetrace.h"
+#include "io/numfmt.h"
+
+/* ===== the journey ===== */
+
+/* The same calls, in the same order, as journey() in pipeline.c; the test
+** tests/test_explain.c checks that both give the same records. */
+
+/* The sink that files each record under its stage. */
+static void keep(void *ud, const pt_vrec *r)
+{
+    pt_journey *j = ud;
+    if ((int)r->stage < PT_NSTAGES_ALL) j->rec[r->stage] = *r;
+}
+
+void pt_journey_compute(pt_journey *j, const pt_stage_params *par, pt_vec3 v_m)
+{
+    pt_sink sink;
+    const pt_sink *sinks[PT_NSTAGES_ALL];
+    double z_c;
+    int st;
+
+    memset(j, 0, sizeof *j);
+    j->par = *par;
+    j->order = pt_classic_order;
+    j->norder = PT_NSTAGES;
+    sink.vertex = keep;
+    sink.ud = j;
+    for (st = 0; st < PT_NSTAGES_ALL; st++) sinks[st] = &sink;
+    pt_classic_journey(par, v_m, sinks, &z_c);
+}
+
+const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st)
+{
+    if (j->matrix && st == PT_STAGE_VIEWPORT) return &pt_matrix_viewport_info;
+    return &pt_stage_infos[st];
+}
+
+int pt_journey_of(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
+                  int raw_lookat)
+{
+    pt_options o;
+    pt_plan p;
+
+    if (!s->matrix) {
+        pt_journey_of_plan(j, s, NULL, m, v);
+        return 0;
+    }
+    pt_options_default(&o);
+    o.raw_lookat = raw_lookat;
+    if (pt_plan_make(&p, s, &o) != 0) return -1;
+    pt_journey_of_plan(j, s, &p, m, v);
+    pt_plan_free(&p);
+    return 0;
+}
+
+/* Start a matrix-camera journey of model m under plan p: its numbers and
+** matrices, no records yet; sinks[] all keep() into j. */
+static void matrix_start(pt_journey *j, const pt_scene *s, const pt_plan *p, const pt_model *m,
+                         pt_sink *sink, const pt_sink *sinks[PT_NSTAGES_ALL])
+{
+    int st;
+
+    memset(j, 0, sizeof *j);
+    pt_stage_params_of(&j->par, s, m);
+    j->matrix = 1;
+    j->world = p->models[m - s->models].world;
+    j->view = p->view;
+    j->proj = p->proj;
+    j->order = pt_matrix_order;
+    j->norder = pt_matrix_norder;
+    sink->vertex = keep;
+    sink->ud = j;
+    for (st = 0; st < PT_NSTAGES_ALL; st++) sinks[st] = sink;
+}
+
+void pt_journey_of_plan(pt_journey *j, const pt_scene *s, const pt_plan *p,
+                        const pt_model *m, uint64_t v)
+{
+    pt_stage_params par;
+    pt_sink sink;
+    const pt_sink *sinks[PT_NSTAGES_ALL];
+    pt_vec4 clip;
+    unsigned code;
+    pt_matrices mx;
+
+    if (!s->matrix) {
+        pt_stage_params_of(&par, s, m);
+        pt_journey_compute(j, &par, m->v[v - 1]);
+        return;
+    }
+    matrix_start(j, s, p, m, &sink, sinks);
+    pt_matrices_of(&mx, p, (size_t)(m - s->models));
+    pt_matrix_journey(&j->par, &mx, m->v[v - 1], sinks, &clip, &code);
+    if (code) j->norder = 5;                /* outside: it stops at the cvv */
+}
+
+void pt_journey_of_clip(pt_journey *j, const pt_scene *s, const pt_plan *p,
+                        const pt_model *m, pt_vec4 q)
+{
+    pt_sink sink;
+    const pt_sink *sinks[PT_NSTAGES_ALL];
+    pt_vrec r = {0};
+
+    matrix_start(j, s, p, m, &sink, sinks);
+    r.stage = PT_STAGE_CLIP;                /* the point, where its journey starts */
+    r.x = q.x; r.y = q.y; r.z = q.z; r.w = q.w;
+    j->rec[PT_STAGE_CLIP] = r;
+    r.stage = PT_STAGE_CVV;                 /* inside: on a plane at most */
+    j->rec[PT_STAGE_CVV] = r;
+    pt_matrix_tail(&j->par, q, fabs(q.w), sinks);
+}
+
+/* 1 when a and b hold the same numbers (bit for bit) and flags. */
+static int same_rec(const pt_vrec *a, const pt_vrec *b)
+{
+    return a->stage == b->stage && a->flags == b->flags && a->code == b->code &&
+           memcmp(&a->x, &b->x, sizeof a->x) == 0 && memcmp(&a->y, &b->y, sizeof a->y) == 0 &&
+           memcmp(&a->z, &b->z, sizeof a->z) == 0 && memcmp(&a->w, &b->w, sizeof a->w) == 0 &&
+           a->ix == b->ix && a->iy == b->iy && a->i == b->i;
+}
+
+int pt_journey_matches(const pt_journey *j, const pt_vrec *r)
+{
+    return (int)r->stage < PT_NSTAGES_ALL && same_rec(&j->rec[r->stage], r);
+}
+
+/* The check of pt_journey_agrees(): a listener comparing each record with
+** the journey computed when its vertex begins. */
+typedef struct agree {
+    const pt_scene *s;
+    pt_journey j;
+    int differs;
+} agree;
+
+static void agree_begin(void *ud, const pt_model *m, uint64_t v)
+{
+    agree *ag = ud;
+
+    if (pt_journey_of(&ag->j, ag->s, m, v, 0) != 0) ag->differs = 1;
+}
+
+static void agree_rec(void *ud, const pt_vrec *r)
+{
+    agree *ag = ud;
+    if (!pt_journey_matches(&ag->j, r)) ag->differs = 1;
+}
+
+int pt_journey_agrees(const pt_scene *s)
+{
+    pt_options o;
+    pt_plan p;
+    pt_listener l;
+    pt_summary sum;
+    agree ag;
+    int rc;
+
+    pt_options_default(&o);
+    o.all_stages = 1;
+    o.trace_raster = 0;
+    o.rasterize = 0;
+    memset(&l, 0, sizeof l);
+    memset(&ag, 0, sizeof ag);
+    ag.s = s;
+    l.vertex_begin = agree_begin;
+    l.sink.vertex = agree_rec;
+    l.sink.ud = &ag;
+    l.ud = &ag;
+    if (pt_plan_make(&p, s, &o) != 0) return -1;
+    rc = pt_run(s, &p, &o, &l, NULL, &sum);
+    pt_plan_free(&p);
+    return rc != 0 ? -1 : !ag.differs;
+}
+
+int pt_vertex_used(const pt_model *m, uint64_t v)
+{
+    size_t k;
+
+    for (k = 0; k < m->nseg; k++)
+        if ((uint64_t)m->seg[k].a + 1 == v || (uint64_t)m->seg[k].b + 1 == v) return 1;
+    return 0;
+}
+
+/* ===== coordinate names ===== */
+
+int pt_coord_count(pt_stage st)
+{
+    return pt_stage_nvalues(st);
+}
+
+const char *pt_coord_name(pt_stage st, int k)
+{
+    if ((int)st >= PT_NSTAGES_ALL || k < 0 || k >= pt_coord_count(st)) return "";
+    return pt_stage_infos[st].coord[k];
+}
+
+/* ===== the text appender ===== */
+
+/* Text being written into buf[0..cap); len counts what would have been written. */
+typedef struct text {
+    char *buf;
+    size_t cap, len;
+} text;
+
+static void text_init(text *t, char *buf, size_t cap)
+{
+    t->buf = buf;
+    t->cap = cap;
+    t->len = 0;
+    if (cap) buf[0] = '\0';
+}
+
+static void add(text *t, const char *s)
+{
+    for (; *s; s++, t->len++)
+        if (t->len + 1 < t->cap) t->buf[t->len] = *s;
+    if (t->cap) t->buf[t->len < t->cap ? t->len : t->cap - 1] = '\0';
+}
+
+/* A number as written by pt_fmt_shortest; in parentheses when paren is set
+** and the number is negative ("-1 + (-1.5)"). */
+static void add_num(text *t, double x, int paren)
+{
+    char b[PT_NUMLEN];
+
+    pt_fmt_shortest(b, x);
+    if (paren && b[0] == '-') { add(t, "("); add(t, b); add(t, ")"); }
+    else add(t, b);
+}
+
+static void add_int(text *t, int64_t x, int paren)
+{
+    char b[24], *o = b + sizeof b - 1;
+    uint64_t u = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
+
+    *o = '\0';
+    do { *--o = (char)('0' + u % 10); u /= 10; } while (u);
+    if (x < 0) *--o = '-';
+    if (paren && x < 0) { add(t, "("); add(t, o); add(t, ")"); }
+    else add(t, o);
+}
+
+/* "(a, b)" of two integers */
+static void add_pair(text *t, int64_t a, int64_t b)
+{
+    add(t, "("); add_int(t, a, 0); add(t, ", "); add_int(t, b, 0); add(t, ")");
+}
+
+/* "name = " */
+static void add_lhs(text *t, pt_stage st, int k)
+{
+    add(t, pt_stage_infos[st].coord[k]);
+    add(t, " = ");
+}
+
+/* Component k of a real-valued record. */
+static double comp(const pt_vrec *r, int k)
+{
+    return k == 0 ? r->x : k == 1 ? r->y : k == 2 ? r->z : r->w;
+}
+
+/* The stage before st in j's journey (st itself for the first). */
+static pt_stage prev_stage(const pt_journey *j, pt_stage st)
+{
+    int i;
+
+    for (i = 1; i < j->norder; i++)
+        if (j->order[i] == st) return j->order[i - 1];
+    return st;
+}
+
+static double tcomp(pt_vec3 v, int k)
+{
+    return k == 0 ? v.x : k == 1 ? v.y : v.z;
+}
+
+/* ===== one coordinate's formula ===== */
+
+/* Why pixel-plane coordinate x has no integer pixel. */
+static const char *no_pixel_why(double x)
+{
+    return isfinite(x) ? "it is beyond 2^62" : "it is not finite";
+}
+
+int32_t pt_explain_java_int_round(double x)
+{
+    double r = pt_java_round(x);            /* NaN: 0 */
+    uint32_t low;
+
+    if (r >= 9223372036854775808.0) return -1;          /* 2^63 - 1: low bits all 1 */
+    if (r < -9223372036854775808.0) return 0;           /* -2^63: low bits all 0 */
+    low = (uint32_t)(uint64_t)(int64_t)r;   /* exact: |r| <= 2^63, an integer */
+    return low <= INT32_MAX ? (int32_t)low : -(int32_t)(UINT32_MAX - low) - 1;
+}
+
+/* Where Java parts from pipetrace: " (the Java renderer's (int)Math.round(x_pp)
+** gives -1 here)". */
+static void add_java(text *t, double x, int k)
+{
+    add(t, k == 0 ? " (the Java renderer's (int)Math.round(x_pp) gives "
+                  : " (the Java renderer's (int)Math.round(y_pp) gives ");
+    add_int(t, pt_explain_java_int_round(x), 0);
+    add(t, " here)");
+}
+
+static void explain_viewport(text *t, const pt_journey *j, int k)
+{
+    const pt_vrec *pp = &j->rec[PT_STAGE_PIXEL];
+    double x = comp(pp, k);
+    int64_t r, v;
+
+    add_lhs(t, PT_STAGE_VIEWPORT, k);
+    add(t, k == 0 ? "round(x_pp) - 1 = round(" : "h - round(y_pp) = ");
+    if (k == 1) { add_int(t, j->par.h, 0); add(t, " - round("); }
+    add_num(t, x, 0);
+    add(t, k == 0 ? ") - 1" : ")");
+    if (!pt_pix_round(x, &r)) {
+        add(t, ": none, ");
+        add(t, no_pixel_why(x));
+        add_java(t, x, k);
+        return;
+    }
+    add(t, " = ");
+    if (k == 0) { add_int(t, r, 0); add(t, " - 1 = "); v = r - 1; }  /* x_vp = round(x_pp) - 1 */
+    else {                                                          /* y_vp = h - round(y_pp) */
+        add_int(t, j->par.h, 0); add(t, " - "); add_int(t, r, 1); add(t, " = ");
+        v = j->par.h - r;
+    }
+    add_int(t, v, 0);
+    if (r != (int64_t)pt_explain_java_int_round(x)) add_java(t, x, k);     /* past 32 bits */
+    if (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL) {   /* the other one has none */
+        add(t, ", but the viewport pixel has no value: ");
+        add(t, pt_stage_infos[PT_STAGE_VIEWPORT].coord[1 - k]);
+        add(t, " has none (");
+        add(t, pt_stage_infos[PT_STAGE_PIXEL].coord[1 - k]);
+        add(t, isfinite(comp(pp, 1 - k)) ? " is beyond 2^62)" : " is not finite)");
+    }
+}
+
+/* x' = x*m0k + y*m1k + z*m2k + w*m3k with the numbers, for the matrix stages. */
+static void explain_product(text *t, const pt_journey *j, pt_stage st, int k)
+{
+    const pt_vrec *prev = &j->rec[prev_stage(j, st)];
+    const pt_mat4 *m = st == PT_STAGE_WORLD ? &j->world : st == PT_STAGE_VIEW ? &j->view
+                                             : &j->proj;
+    const char *mname = st == PT_STAGE_WORLD ? "World" : st == PT_STAGE_VIEW ? "View"
+                                              : "Projection";
+    double in[4];
+    int r;
+
+    in[0] = prev->x; in[1] = prev->y; in[2] = prev->z;
+    in[3] = prev->stage == PT_STAGE_MODEL ? 1.0 : prev->w;   /* a point: w = 1 */
+    add_lhs(t, st, k);
+    add(t, "column "); add_int(t, k, 0); add(t, " of "); add(t, mname); add(t, ": ");
+    for (r = 0; r < 4; r++) {
+        if (r) add(t, " + ");
+        add_num(t, in[r], r > 0); add(t, "*"); add_num(t, m->m[r][k], 1);
+    }
+    add(t, " = ");
+    add_num(t, comp(&j->rec[st], k), 0);
+}
+
+static void explain_matrix_stage(text *t, const pt_journey *j, pt_stage st, int k)
+{
+    const pt_vrec *prev = &j->rec[prev_stage(j, st)];
+    const pt_vrec *cur = &j->rec[st];
+    int b, first = 1;
+
+    switch (st) {
+    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
+        explain_product(t, j, st, k);
+        break;
+    case PT_STAGE_CVV:                                      /* the outcode */
+        add(t, "code = ");
+        add_int(t, cur->code, 0);
+        if (!cur->code) { add(t, ": 0 <= z <= w, -w <= x <= w, -w <= y <= w"); break; }
+        add(t, ": outside");
+        for (b = 0; b < PT_CVV_NPLANES; b++) {
+            if (!(cur->code & (1u << b))) continue;
+            add(t, first ? " " : ", ");
+            first = 0;
+            add(t, pt_cvv_names[b]);
+        }
+        add(t, " (w_k = "); add_num(t, cur->w, 0); add(t, ")");
+        break;
+    case PT_STAGE_NDC:                                      /* x_n = x_k / w_k */
+        add_lhs(t, st, k);
+        add(t, k == 0 ? "x_k / w_k = " : k == 1 ? "y_k / w_k = " : "z_k / w_k = ");
+        add_num(t, comp(prev, k), 0); add(t, " / "); add_num(t, prev->w, 1);
+        add(t, " = "); add_num(t, comp(cur, k), 0);
+        break;
+    case PT_STAGE_SCREEN:
+        add_lhs(t, st, k);
+        if (k == 2) { add(t, "z_n = "); add_num(t, cur->z, 0); break; }
+        add(t, k == 0 ? "(x_n + 1) * w * 0.5 = (" : "(1 - y_n) * h * 0.5 = (1 - ");
+        add_num(t, comp(prev, k), k == 1);
+        add(t, k == 0 ? " + 1) * " : ") * ");
+        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, " * 0.5 = ");
+        add_num(t, comp(cur, k), 0);
+        break;
+    default:                                                /* viewport: floor */
+        add_lhs(t, st, k);
+        add(t, k == 0 ? "floor(x_s) = floor(" : "floor(y_s) = floor(");
+        add_num(t, comp(prev, k), 0); add(t, ")");
+        if (cur->flags & PT_REC_NULL) { add(t, ": none, "); add(t, no_pixel_why(comp(prev, k))); break; }
+        add(t, " = "); add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+        break;
+    }
+}
+
+static void explain_coord(text *t, const pt_journey *j, pt_stage st, int k)
+{
+    const pt_vrec *prev = st > PT_STAGE_MODEL ? &j->rec[prev_stage(j, st)] : NULL;
+    const pt_vrec *cur = &j->rec[st];
+
+    if (st >= PT_NSTAGES || (j->matrix && st == PT_STAGE_VIEWPORT)) {
+        explain_matrix_stage(t, j, st, k);
+        return;
+    }
+    switch (st) {
+    case PT_STAGE_MODEL:                                    /* as given */
+        add_lhs(t, st, k);
+        add_num(t, comp(cur, k), 0);
+        break;
+    case PT_STAGE_CAMERA:                                   /* x_c = x_m + x_t */
+        add_lhs(t, st, k);
+        add(t, pt_stage_infos[PT_STAGE_MODEL].coord[k]);
+        add(t, k == 0 ? " + x_t = " : k == 1 ? " + y_t = " : " + z_t = ");
+        add_num(t, comp(prev, k), 0); add(t, " + ");
+        add_num(t, tcomp(j->par.translate, k), 1); add(t, " = ");
+        add_num(t, comp(cur, k), 0);
+        break;
+    case PT_STAGE_IMAGE:
+        add_lhs(t, st, k);
+        if (k == 2) {                                       /* z_ip = -1 or 0 */
+            add_num(t, cur->z, 0);
+            add(t, j->par.perspective ? " (the image plane)" : " (orthographic)");
+        } else if (j->par.perspective) {                    /* x_ip = x_c / -z_c */
+            add(t, k == 0 ? "x_c / -z_c = " : "y_c / -z_c = ");
+            add_num(t, comp(prev, k), 0); add(t, " / -");
+            add_num(t, prev->z, 1); add(t, " = ");
+            add_num(t, comp(cur, k), 0);
+        } else {                                            /* x_ip = x_c */
+            add(t, k == 0 ? "x_c = " : "y_c = ");
+            add_num(t, comp(cur, k), 0);
+        }
+        break;
+    case PT_STAGE_PIXEL:                                    /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
+        add_lhs(t, st, k);
+        add(t, k == 0 ? "0.5 + w/2.001 * (x_ip + 1) = 0.5 + "
+                      : "0.5 + h/2.001 * (y_ip + 1) = 0.5 + ");
+        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, "/2.001 * (");
+        add_num(t, comp(prev, k), 0); add(t, " + 1) = ");
+        add_num(t, comp(cur, k), 0);
+        break;
+    case PT_STAGE_VIEWPORT:
+        explain_viewport(t, j, k);
+        break;
+    case PT_STAGE_FRAMEBUFFER:                              /* x_fb = x_ul + x_vp */
+        add_lhs(t, st, k);
+        add(t, k == 0 ? "x_ul + x_vp" : "y_ul + y_vp");
+        if (prev->flags & PT_REC_NULL) {
+            add(t, ": none, the viewport pixel has no value");
+            break;
+        }
+        add(t, " = ");
+        add_int(t, k == 0 ? j->par.x_ul : j->par.y_ul, 0); add(t, " + ");
+        add_int(t, k == 0 ? prev->ix : prev->iy, 1); add(t, " = ");
+        add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+        break;
+    default:                                                /* idx = y_fb * W + x_fb */
+        add(t, "idx = y_fb * W + x_fb");
+        if (prev->flags & PT_REC_NULL) {
+            add(t, ": none, the pixel has no value");
+        } else if (cur->flags & PT_REC_NULL) {
+            add(t, ": none, (x_fb, y_fb) = ");
+            add_pair(t, prev->ix, prev->iy);
+            add(t, " lies outside the ");
+            add_int(t, j->par.W, 0); add(t, " x "); add_int(t, j->par.H, 0);
+            add(t, " framebuffer");
+        } else {
+            add(t, " = ");
+            add_int(t, prev->iy, 0); add(t, " * "); add_int(t, j->par.W, 0);
+            add(t, " + "); add_int(t, prev->ix, 0); add(t, " = ");
+            add_int(t, cur->i, 0);
+        }
+        break;
+    }
+}
+
+size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
+                        const char *sep)
+{
+    text t;
+    int k;
+
+    text_init(&t, buf, len);
+    if ((int)st >= PT_NSTAGES_ALL) return 0;
+    for (k = 0; k < pt_coord_count(st); k++) {
+        if (k) add(&t, sep);
+        explain_coord(&t, j, st, k);
+    }
+    return t.len;
+}
+
+/* ===== values as a tuple ===== */
+
+/* The numbers of r (stage st) alone: "(-1, -1, -2)", "144", "none". */
+static void add_tuple(text *t, const pt_vrec *r, pt_stage st)
+{
+    int k, n = pt_coord_count(st);
+
+    if (st == PT_STAGE_CVV) add_int(t, r->code, 0);
+    else if (r->flags & PT_REC_NULL) add(t, "none");
+    else if (st == PT_STAGE_INDEX) add_int(t, r->i, 0);
+    else if (st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER) add_pair(t, r->ix, r->iy);
+    else {
+        add(t, "(");
+        for (k = 0; k < n; k++) {
+            if (k) add(t, ", ");
+            add_num(t, comp(r, k), 0);
+        }
+        add(t, ")");
+    }
+}
+
+size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st)
+{
+    text t;
+    int k, n = pt_coord_count(st);
+
+    text_init(&t, buf, len);
+    if ((int)st >= PT_NSTAGES_ALL) return 0;
+    if (st == PT_STAGE_CVV) add(&t, "code = ");
+    else if (n == 1) add(&t, "idx = ");
+    else {
+        add(&t, "(");
+        for (k = 0; k < n; k++) {
+            if (k) add(&t, ", ");
+            add(&t, pt_stage_infos[st].coord[k]);
+        }
+        add(&t, ") = ");
+    }
+    add_tuple(&t, &j->rec[st], st);
+    return t.len;
+}
+
+size_t pt_explain_tuple(char *buf, size_t len, const pt_journey *j, pt_stage st)
+{
+    text t;
+
+    text_init(&t, buf, len);
+    if ((int)st < PT_NSTAGES_ALL) add_tuple(&t, &j->rec[st], st);
+    return t.len;
+}
+
+/* ===== what comes next ===== */
+
+/* "1..w x 1..h"-style range */
+static void add_range(text *t, int lo_x, int hi_x, int lo_y, int hi_y)
+{
+    add_int(t, lo_x, 0); add(t, ".."); add_int(t, hi_x, 0); add(t, " x ");
+    add_int(t, lo_y, 0); add(t, ".."); add_int(t, hi_y, 0);
+}
+
+static void next_camera(text *t, const pt_journey *j)
+{
+    double z = j->rec[PT_STAGE_CAMERA].z;
+
+    if (!j->par.perspective)
+        add(t, "orthographic camera: the image stage keeps x_c and y_c and drops the depth");
+    else if (z < 0) {
+        add(t, "in front of the camera (z_c < 0): the image stage divides by its distance -z_c = ");
+        add_num(t, -z, 0);
+    } else if (z > 0)
+        add(t, "behind the camera (z_c > 0): the image stage projects it mirrored through the origin");
+    else if (z == 0)
+        add(t, "in the camera's plane (z_c = 0): the image stage divides by zero");
+    else
+        add(t, "z_c is not a number: so is its projection");
+}
+
+static void next_image(text *t, const pt_journey *j)
+{
+    const pt_vrec *ip = &j->rec[PT_STAGE_IMAGE];
+    int vp_inside = (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE) != 0;
+    int rect = fabs(ip->x) <= 1 && fabs(ip->y) <= 1;
+
+    if (ip->flags & PT_REC_BEHIND)
+        add(t, "behind the camera (z_c > 0): projected mirrored through the origin; ");
+    if (!isfinite(ip->x) || !isfinite(ip->y))
+        add(t, "not finite: it will have no pixel, and segments using it are skipped");
+    else if (rect)
+        add(t, "inside the view rectangle [-1, 1] x [-1, 1]: the point lies inside the viewport");
+    else if (vp_inside)
+        add(t, "just outside the view rectangle [-1, 1] x [-1, 1], but the pixel stage's "
+               "2.001 leaves room: it still rounds to a pixel inside the viewport");
+    else
+        add(t, "outside the view rectangle [-1, 1] x [-1, 1]: the point lies outside the viewport");
+}
+
+static void next_pixel(text *t, const pt_journey *j)
+{
+    const pt_vrec *pp = &j->rec[PT_STAGE_PIXEL];
+    const pt_vrec *vp = &j->rec[PT_STAGE_VIEWPORT];
+    int64_t m, n;
+
+    if (vp->flags & PT_REC_NULL) {
+        add(t, "no integer pixel (not finite, or beyond 2^62): segments using it are skipped");
+        return;
+    }
+    pt_pix_round(pp->x, &m);
+    pt_pix_round(pp->y, &n);
+    add(t, "the viewport stage rounds it to the logical pixel ");
+    add_pair(t, m, n);
+    add(t, vp->flags & PT_REC_INSIDE ? ", inside " : ", outside ");
+    add_range(t, 1, j->par.w, 1, j->par.h);
+    if (!(vp->flags & PT_REC_INSIDE))
+        add(t, " (the view rectangle's pixels): the point lies outside the viewport");
+}
+
+static void next_framebuffer(text *t, const pt_journey *j)
+{
+    const pt_vrec *fb = &j->rec[PT_STAGE_FRAMEBUFFER];
+
+    if (fb->flags & PT_REC_NULL) add(t, "no pixel: no index");
+    else if (j->rec[PT_STAGE_INDEX].flags & PT_REC_NULL)
+        add(t, "outside the framebuffer: no index");
+    else if (!(j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
+        add(t, "inside the framebuffer but outside the viewport: it has an index, "
+               "but the rasterizer never writes there");
+    else add(t, "inside the framebuffer: the index stage numbers it");
+}
+
+size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
+{
+    const pt_vrec *r = &j->rec[st];
+    pt_vec3 tr = j->par.translate;
+    text t;
+
+    text_init(&t, buf, len);
+    if ((int)st >= PT_NSTAGES_ALL) return 0;
+    switch (st) {
+    case PT_STAGE_MODEL:
+        if (j->matrix)
+            add(&t, "the world stage multiplies (x_m, y_m, z_m, 1) by the model's world matrix");
+        else if (tr.x == 0 && tr.y == 0 && tr.z == 0)
+            add(&t, "the translation is (0, 0, 0): the camera stage changes nothing");
+        else {
+            add(&t, "the camera stage adds the model's translation (x_t, y_t, z_t) = (");
+            add_num(&t, tr.x, 0); add(&t, ", "); add_num(&t, tr.y, 0); add(&t, ", ");
+            add_num(&t, tr.z, 0); add(&t, ")");
+        }
+        break;
+    case PT_STAGE_CAMERA: next_camera(&t, j); break;
+    case PT_STAGE_IMAGE: next_image(&t, j); break;
+    case PT_STAGE_PIXEL: next_pixel(&t, j); break;
+    case PT_STAGE_VIEWPORT:
+        if (r->flags & PT_REC_NULL)
+            add(&t, "no pixel: segments using this vertex are skipped");
+        else if (r->flags & PT_REC_INSIDE)
+            add(&t, "inside the viewport: the rasterizer writes the pixels of its segments here");
+        else
+            add(&t, "outside the viewport: its pixel is clipped (the rasterizer steps "
+                    "there but writes nothing)");
+        break;
+    case PT_STAGE_FRAMEBUFFER: next_framebuffer(&t, j); break;
+    case PT_STAGE_WORLD:
+        add(&t, "the view stage moves the eye to the origin and turns the camera's axes onto x, y, z");
+        break;
+    case PT_STAGE_VIEW:
+        if (r->z > 0) {
+            add(&t, "in front of the eye (z_v > 0): the clip stage sets w_k = z_v = ");
+            add_num(&t, r->z, 0);
+        } else
+            add(&t, "not in front of the eye (z_v <= 0): w_k will be <= 0, "
+                    "outside the near plane");
+        break;
+    case PT_STAGE_CLIP:
+        add(&t, "the cvv stage compares x_k, y_k, z_k with w_k = ");
+        add_num(&t, r->w, 0);
+        add(&t, ", before any division");
+        break;
+    case PT_STAGE_CVV:
+        if (r->code == 0)
+            add(&t, "inside the view volume: the ndc stage divides by w_k");
+        else
+            add(&t, "outside the view volume: this vertex is not divided (for w_k <= 0 that "
+                    "would flip it into view); its segments are clipped at the planes in clip "
+                    "space, and the points that makes go on from there");
+        break;
+    case PT_STAGE_NDC:
+        add(&t, fabs(r->x) <= 1 && fabs(r->y) <= 1 && r->z >= 0 && r->z <= 1
+                ? "inside the cube [-1, 1] x [-1, 1] x [0, 1]: the screen stage stretches it over the viewport"
+                : "on the cube's border (rounding): the screen stage stretches it over the viewport");
+        break;
+    case PT_STAGE_SCREEN:
+        add(&t, "the viewport stage takes the pixel whose square contains (x_s, y_s): floor of each");
+        break;
+    default:
+        if (r->flags & PT_REC_NULL)
+            add(&t, "outside the framebuffer: no index, nothing is stored for this point");
+        else {
+            add(&t, "the end of the journey: the pixel's color is element ");
+            add_int(&t, r->i, 0);
+            add(&t, " of the pixel array");
+            if (!(j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
+                add(&t, " (never written: outside the viewport)");
+        }
+        break;
+    }
+    return t.len;
+}

@@ -1,0 +1,447 @@
+/*
+** src/io/numfmt.c -- doubles as text: shortest round-trip, and fixed decimals
+** See LICENSE for copyright and license.
+**
+** Shortest round-trip.  A finite x > 0 is exactly v = c 2^q (integer c < 2^53),
+** and every real in its rounding interval R reads back to x (strtod rounds to
+** nearest, ties to even):
+**     R = [v - 2^q/2, v + 2^q/2], width 2^q, or at a binade edge (c = 2^52 above
+**     the least normal exponent, where the gap below is half the gap above)
+**     R = [v - 2^q/4, v + 2^q/2], width 3/4 2^q;
+** both ends in R when c is even, neither when c is odd.  The answer is the
+** decimal in R with the fewest digits, of those the nearest to v (a tie: even
+** last digit).  The way to it is Schubfach's (R. Giulietti, "The Schubfach way
+** to render doubles", 2020).  Take k = floor(log10 width), so 10^k <= width <
+** 10^(k+1): R holds at most one multiple of 10^(k+1), and at least one of s 10^k,
+** (s+1) 10^k, where s = floor(v / 10^k).  With sp = 10 floor(s/10), sp 10^k <= v
+** < (sp+10) 10^k, and
+**   - when sp 10^k or (sp+10) 10^k is in R, that is the answer: the only
+**     multiple of 10^(k+1) in R, so no decimal in R has fewer digits;
+**   - else s 10^k or (s+1) 10^k, whichever is in R; the nearer to v if both are.
+** scaled() decides each "is in R" and "nearer" exactly, from 128-bit powers of
+** ten, so the digits are the true shortest (17 at most).
+**
+** Spelling, as the printf-and-strtod search this replaced spelled it (kept in
+** tests/test_numfmt.c as the oracle, byte for byte): integers below 1e15 digit by
+** digit; else "%.*g" style, trailing zeros dropped, exponent form when the
+** decimal exponent is < -4 or >= P, where P = 15 when the answer has at most 15
+** digits (it is then x's 15-digit rounding: no two 15-digit decimals read back
+** to one double, DBL_DIG = 15) and P = its 16 or 17 digits otherwise.
+** Subnormals always take the exponent form, so P does not matter for them.
+**
+** Fixed decimals ("%.*f") are exact integer arithmetic too: see fixed().
+*/
+#include <assert.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include "io/numfmt.h"
+
+/* ===== big integers, for exact powers of ten ===== */
+
+#define BIG_LIMBS 40             /* 1280 bits; the largest made is 10^324 */
+
+/* A natural number in base 2^32.  Limbs w[n..] are garbage; n = 0 is zero. */
+typedef struct big {
+    uint32_t w[BIG_LIMBS];       /* value = sum of w[i] * 2^(32 i), i < n */
+    int n;                       /* limbs in use */
+} big;
+
+static void big_mul(big *b, uint32_t m)                     /* b *= m */
+{
+    uint64_t carry = 0;
+    int i;
+
+    for (i = 0; i < b->n; i++) {
+        uint64_t t = (uint64_t)b->w[i] * m + carry;         /* < 2^64 */
+        b->w[i] = (uint32_t)t;
+        carry = t >> 32;
+    }
+    if (carry) { assert(b->n < BIG_LIMBS); b->w[b->n++] = (uint32_t)carry; }
+}
+
+/* b = floor(b / d), d > 0.  Returns 1 when the remainder is not 0. */
+static int big_div(big *b, uint32_t d)
+{
+    uint64_t r = 0;
+    int i;
+
+    for (i = b->n - 1; i >= 0; i--) {
+        uint64_t t = r << 32 | b->w[i];                     /* r < d: no overflow */
+        b->w[i] = (uint32_t)(t / d);
+        r = t % d;
+    }
+    while (b->n > 0 && b->w[b->n - 1] == 0) b->n--;
+    return r != 0;
+}
+
+static void big_shl(big *b, int s)                          /* b *= 2^s */
+{
+    int limbs = s / 32;
+
+    if (b->n == 0) return;
+    assert(b->n + limbs < BIG_LIMBS);
+    memmove(b->w + limbs, b->w, (size_t)b->n * sizeof b->w[0]);
+    memset(b->w, 0, (size_t)limbs * sizeof b->w[0]);
+    b->n += limbs;
+    big_mul(b, (uint32_t)1 << s % 32);
+}
+
+/* b = floor(b / 2^s).  Returns 1 when bits were lost. */
+static int big_shr(big *b, int s)
+{
+    int limbs = s / 32, lost = 0, i;
+
+    if (limbs >= b->n) { lost = b->n > 0; b->n = 0; return lost; }
+    for (i = 0; i < limbs; i++) lost |= b->w[i] != 0;
+    memmove(b->w, b->w + limbs, (size_t)(b->n - limbs) * sizeof b->w[0]);
+    b->n -= limbs;
+    return big_div(b, (uint32_t)1 << s % 32) | lost;
+}
+
+static uint64_t pow5(int j)                                 /* 5^j, j <= 27 */
+{
+    uint64_t p = 1;
+    while (j-- > 0) p *= 5;
+    return p;
+}
+
+/* *hi * 2^64 + *lo = floor(n 2^e / 10^k) = floor(n 5^-k 2^(e-k)), which must
+** be below 2^128.  Returns 1 when that is exact (no remainder). */
+static int exact_scaled(uint64_t n, int e, int k, uint64_t *hi, uint64_t *lo)
+{
+    big b;
+    int inexact = 0, j;
+
+    b.w[0] = (uint32_t)n; b.w[1] = (uint32_t)(n >> 32);
+    b.n = n >> 32 ? 2 : n ? 1 : 0;
+    for (j = -k; j > 0; j -= 13)            /* 5^13 < 2^32 */
+        big_mul(&b, (uint32_t)pow5(j < 13 ? j : 13));    /* b = n 5^-k (k < 0) */
+    if (e - k >= 0) big_shl(&b, e - k);                  /* b *= 2^(e-k) */
+    else inexact |= big_shr(&b, k - e);
+    for (j = k; j > 0; j -= 13)                          /* b /= 5^k (k > 0) */
+        inexact |= big_div(&b, (uint32_t)pow5(j < 13 ? j : 13));
+    assert(b.n <= 4);
+    for (j = b.n; j < 4; j++) b.w[j] = 0;
+    *hi = (uint64_t)b.w[3] << 32 | b.w[2];
+    *lo = (uint64_t)b.w[1] << 32 | b.w[0];
+    return !inexact;
+}
+
+/* ===== powers of ten, made at first use ===== */
+
+#define K_MIN (-324)             /* k for the subnormals: floor(log10 2^-1074) */
+#define K_MAX 292                /* k for the top binade: floor(log10 2^971) */
+
+/* 10^-k ~= g 2^beta, g rounded up to an integer in [2^126, 2^127]:
+**     g = ceil(10^-k 2^-beta) = ceil(5^-k 2^(-k-beta)),
+** exact when -k-beta >= 0 and 5^-k < 2^127, that is for -54 <= k <= 0. */
+typedef struct tenpow {
+    uint64_t hi, lo;             /* g = hi * 2^64 + lo; hi = 0: not made yet */
+    int beta;                    /* the binary exponent */
+    int exact;                   /* g equals 10^-k * 2^-beta */
+} tenpow;
+
+/* Made one by one as they are needed, like png.c's CRC table: pipetrace has
+** one thread.  Each costs a few microseconds of big-integer work, once. */
+static tenpow tenpow_tab[K_MAX - K_MIN + 1];
+
+static const tenpow *tenpow_of(int k)
+{
+    tenpow *p = &tenpow_tab[k - K_MIN];
+    big t;
+    uint32_t top;
+    int j, bits;
+
+    assert(k >= K_MIN && k <= K_MAX);
+    if (p->hi) return p;
+    t.w[0] = 1; t.n = 1;                    /* t = 10^|k|, 2^(bits-1) <= t < 2^bits */
+    for (j = k < 0 ? -k : k; j > 0; j -= 9) {
+        uint32_t m = 1;
+        int i;
+        for (i = 0; i < j && i < 9; i++) m *= 10;
+        big_mul(&t, m);
+    }
+    top = t.w[t.n - 1];
+    for (bits = 32 * (t.n - 1); top; top >>= 1) bits++;
+    p->beta = k <= 0 ? bits - 127           /* 10^-k 2^-beta in [2^126, 2^127) */
+                     : -bits - 126;         /* 10^-k in (2^-bits, 2^(1-bits)) */
+    p->exact = exact_scaled(1, -p->beta, k, &p->hi, &p->lo);
+    if (!p->exact && ++p->lo == 0) p->hi++; /* round up: g = floor(..) + 1 */
+    return p;
+}
+
+/* ===== shortest digits ===== */
+
+/* *hi * 2^64 + lo = a * b, from four 32x32-bit products (C11 has no 128-bit
+** integer).  Returns the high half. */
+static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
+{
+    uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
+    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint64_t mid = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu); /* < 3 2^32 */
+
+    *lo = mid << 32 | (p00 & 0xffffffffu);
+    return p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+}
+
+/* floor(y), and whether y is an integer, for
+**     y = n 2^(q-2) / 10^k,   0 < n < 2^56,
+** with k = floor_log10_width(q, .), so that 2^q / 10^k is in [1, 40/3).
+** With 10^-k = g_true 2^beta (g_true in [2^126, 2^127)) and h = q + beta + 126:
+**     y = m g_true / 2^128,   m = n 2^h,
+** and 2^q / 10^k = 2^h g_true / 2^126 puts h in 0..3, so m < 2^59, y < 2^58.
+** The 192-bit P = m g is exact when g is; else g_true < g < g_true + 1 and
+** m g_true lies in (P - m, P]: when P's low 128 bits are at least m, no integer
+** lies between y and P / 2^128, so floor(y) = P >> 128 and y is no integer.
+** Else y is within m / 2^128 < 2^-69 of an integer.  It may be one only when
+** k > 0 (y = n 2^(q-2-k) / 5^k, q-2-k >= 0: when 5^k divides n, so k <= 24);
+** for k < -54, y = n 5^-k / 2^(2-q+k) with 2-q+k > 57 never is.  Non-integers
+** never come that close: by the continued fractions of 2^(q-2) / 10^k, the
+** nearest any n < 2^56 gets is 2^-64.5 (found once for every q by a script
+** outside this repository, as in Schubfach's and Ryu's proofs; nothing here
+** relies on it: big integers settle any case that comes that close). */
+static uint64_t scaled(uint64_t n, int q, int k, const tenpow *p, int *exact)
+{
+    int h = q + p->beta + 126;
+    uint64_t m, p0, p1, p2, t, hi;
+
+    assert(h >= 0 && h <= 3);
+    m = n << h;
+    p1 = mul_64x64(m, p->lo, &p0);          /* m lo = p1:p0 */
+    p2 = mul_64x64(m, p->hi, &t);           /* m hi = p2:t, at 2^64 */
+    p1 += t;                                /* P = p2:p1:p0 */
+    p2 += p1 < t;
+    if (p->exact) { *exact = (p1 | p0) == 0; return p2; }
+    if (p1 != 0 || p0 >= m) { *exact = 0; return p2; }
+    if (k > 0 && k <= 24 && n % pow5(k) == 0) { *exact = 1; return p2; }
+    *exact = exact_scaled(n, q - 2, k, &hi, &t);
+    assert(hi == 0);
+    return t;
+}
+
+/* v's interval R scaled by 10^-k: ends yl, yr, as floor and integer flag. */
+typedef struct bounds {
+    uint64_t fl, fr;             /* floor(yl), floor(yr) */
+    int xl, xr;                  /* yl, yr are integers */
+    int closed;                  /* R holds its ends (c even) */
+} bounds;
+
+static int above_low(const bounds *b, uint64_t n)   /* n >= yl (closed), n > yl */
+{
+    return n > b->fl || (n == b->fl && b->xl && b->closed);
+}
+
+static int below_high(const bounds *b, uint64_t n)  /* n <= yr (closed), n < yr */
+{
+    return n < b->fr || (n == b->fr && (b->closed || !b->xr));
+}
+
+/* floor(log10 width) for width 2^q (lop = 0) or 3/4 2^q (lop = 1), |q| <= 1100:
+** floor(q log10 2 + lop log10 3/4), the logs times 2^32 rounded.  The sum stays
+** 8.7e-5 (376662 / 2^32) away from integers over that range (q != 0), more than
+** the constants' error (< 1100 * 0.5 / 2^32); the tests cover every q. */
+static int floor_log10_width(int q, int lop)
+{
+    int64_t t = (int64_t)q * 1292913986 - (lop ? 536607788 : 0);
+    return (int)((t + ((int64_t)1 << 50)) >> 32) - (1 << 18);   /* t + 2^50 >= 0 */
+}
+
+/* The shortest decimal that reads back to finite x > 0, nearest x: d * 10^e,
+** d not a multiple of 10. */
+static void shortest(double x, uint64_t *d, int *e)
+{
+    uint64_t bits, c, f2, s, sp;
+    int be, q, k, lop, x2;
+    const tenpow *p;
+    bounds b;
+
+    memcpy(&bits, &x, sizeof bits);
+    be = (int)(bits >> 52 & 0x7ff);
+    c = bits & ((UINT64_C(1) << 52) - 1);
+    if (be == 0) q = -1074;                             /* subnormal: v = c 2^-1074 */
+    else { q = be - 1075; c |= UINT64_C(1) << 52; }     /* v = c 2^q, 2^52 <= c < 2^53 */
+    lop = c == UINT64_C(1) << 52 && be > 1;             /* gap below = half gap above */
+    k = floor_log10_width(q, lop);
+    p = tenpow_of(k);
+
+    /* In units of 2^(q-2) R's ends are 4c - 2 (4c - 1 when lop) and 4c + 2. */
+    b.fl = scaled(4 * c - (lop ? 1 : 2), q, k, p, &b.xl);   /* yl = (v - gap) / 10^k */
+    b.fr = scaled(4 * c + 2, q, k, p, &b.xr);               /* yr = (v + 2^q/2) / 10^k */
+    b.closed = c % 2 == 0;
+    f2 = scaled(8 * c, q, k, p, &x2);                       /* floor(2 v / 10^k) */
+    s = f2 >> 1;                                            /* s = floor(v / 10^k) */
+
+    sp = s / 10 * 10;                       /* sp <= s <= v/10^k < s+1 <= sp+10 */
+    if (above_low(&b, sp)) *d = sp;
+    else if (below_high(&b, sp + 10)) *d = sp + 10;
+    else {
+        int u_in = above_low(&b, s), w_in = below_high(&b, s + 1);
+        /* One is in R: the nearer is within 10^k/2 <= width/2 of v.  At a
+        ** binade edge, when s 10^k is more than 2^q/4 below v, then (s+1) 10^k
+        ** is less than 10^k - 2^q/4 <= 3/4 2^q - 2^q/4 = 2^q/2 above it. */
+        assert(u_in || w_in);
+        if (!w_in) *d = s;
+        else if (!u_in) *d = s + 1;
+        else if (f2 == 2 * s) *d = s;       /* 2 v/10^k < 2s + 1: s is nearer */
+        else if (!x2) *d = s + 1;           /* 2 v/10^k > 2s + 1 */
+        else *d = s + (s & 1);              /* a tie: the even one */
+    }
+    *e = k;
+    while (*d % 10 == 0) { *d /= 10; ++*e; }
+}
+
+/* ===== spelling ===== */
+
+static size_t nonfinite(char *buf, double x)
+{
+    const char *s = isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
+    strcpy(buf, s);
+    return strlen(s);
+}
+
+/* x is an integer with |x| < 1e15: write it digit by digit ("-0" for -0.0). */
+static size_t int_digits(char *buf, double x)
+{
+    char b[24], *o = b + sizeof b;
+    uint64_t u = (uint64_t)fabs(x);
+    size_t n;
+
+    do { *--o = (char)('0' + u % 10); u /= 10; } while (u);
+    if (signbit(x)) *--o = '-';
+    n = (size_t)(b + sizeof b - o);
+    memcpy(buf, o, n);
+    buf[n] = '\0';
+    return n;
+}
+
+/* Spell [-]d * 10^e (d > 0, not a multiple of 10) the way "%.*g" does with
+** precision P = max(15, digits of d); see the top of the file. */
+static size_t g_style(char *buf, int neg, uint64_t d, int e)
+{
+    char dig[20], *o = buf;
+    int n = 20, exp10, i;
+
+    do { dig[--n] = (char)('0' + d % 10); d /= 10; } while (d);
+    memmove(dig, dig + n, (size_t)(20 - n));
+    n = 20 - n;                             /* the digits: dig[0..n) */
+    exp10 = e + n - 1;                      /* x = d.ddd 10^exp10 */
+    if (neg) *o++ = '-';
+    if (exp10 < -4 || exp10 >= (n > 15 ? n : 15)) {        /* d.ddde+XX */
+        int a = exp10 < 0 ? -exp10 : exp10;
+        *o++ = dig[0];
+        if (n > 1) { *o++ = '.'; memcpy(o, dig + 1, (size_t)n - 1); o += n - 1; }
+        *o++ = 'e';
+        *o++ = exp10 < 0 ? '-' : '+';
+        if (a >= 100) *o++ = (char)('0' + a / 100);
+        *o++ = (char)('0' + a / 10 % 10);
+        *o++ = (char)('0' + a % 10);
+    } else if (exp10 < 0) {                 /* 0.000ddd */
+        *o++ = '0'; *o++ = '.';
+        for (i = -1; i > exp10; i--) *o++ = '0';
+        memcpy(o, dig, (size_t)n); o += n;
+    } else {                                /* ddd.ddd or ddd000 */
+        for (i = 0; i <= exp10; i++) *o++ = i < n ? dig[i] : '0';
+        if (n > exp10 + 1) {
+            *o++ = '.';
+            memcpy(o, dig + exp10 + 1, (size_t)(n - exp10 - 1));
+            o += n - exp10 - 1;
+        }
+    }
+    *o = '\0';
+    return (size_t)(o - buf);
+}
+
+size_t pt_fmt_shortest(char *buf, double x)
+{
+    uint64_t d;
+    int e;
+
+    if (!isfinite(x)) return nonfinite(buf, x);
+    if (fabs(x) < 1e15 && x == (double)(int64_t)x)  /* an integer: its digits, */
+        return int_digits(buf, x);                  /* as %.15g writes them */
+    shortest(fabs(x), &d, &e);
+    return g_style(buf, signbit(x) != 0, d, e);
+}
+
+/* ===== fixed decimals ===== */
+
+static const uint64_t pow10_tab[18] = {         /* 10^0 .. 10^17 */
+    UINT64_C(1), UINT64_C(10), UINT64_C(100), UINT64_C(1000), UINT64_C(10000),
+    UINT64_C(100000), UINT64_C(1000000), UINT64_C(10000000), UINT64_C(100000000),
+    UINT64_C(1000000000), UINT64_C(10000000000), UINT64_C(100000000000),
+    UINT64_C(1000000000000), UINT64_C(10000000000000), UINT64_C(100000000000000),
+    UINT64_C(1000000000000000), UINT64_C(10000000000000000),
+    UINT64_C(100000000000000000),
+};
+
+/* hi * 2^64 + lo shifted right by s, 0 <= s < 128; only the low 64 bits. */
+static uint64_t shr_128(uint64_t hi, uint64_t lo, int s)
+{
+    if (s == 0) return lo;
+    if (s < 64) return hi << (64 - s) | lo >> s;
+    return hi >> (s - 64);
+}
+
+/* Whether (hi * 2^64 + lo) mod 2^s is not 0, 0 <= s < 128. */
+static int low_bits(uint64_t hi, uint64_t lo, int s)
+{
+    if (s < 64) return (lo & ((UINT64_C(1) << s) - 1)) != 0;
+    return lo != 0 || (hi & ((UINT64_C(1) << (s - 64)) - 1)) != 0;
+}
+
+/* "%.*f" for finite |x| < 1e15, 0 <= prec <= 17, exactly as glibc's printf
+** rounds it in the default rounding mode, which pipetrace never changes: to
+** nearest, ties to even (0.125 -> "0.12", 2.5 -> "2"; tests/test_numfmt.c
+** compares the two byte for byte).  |x| = c / 2^s (integer c < 2^53), s > 0,
+** splits into
+**     ip = floor(|x|) = c >> s  (< 1e15)   and   f / 2^s,  f = c mod 2^s,
+** and the digits after the point are
+**     fp = round(f 10^prec / 2^s),   f 10^prec < 2^53 2^57 = 2^110,
+** the product in two uint64 (C11 has no 128-bit integer).  When s > 110 that
+** is below 2^(s-1), half the divisor: fp = 0, no tie.  fp = 10^prec carries
+** into ip.  A tie goes to the even last digit: fp's when prec > 0 (10^prec is
+** even), else ip's.  The sign is signbit's: -0.0 and small negatives give
+** "-0.000", as printf does.  |x| < 1e15 < 2^50 and c >= 2^52 (or subnormal)
+** make s >= 3. */
+static size_t fixed(char *buf, double x, int prec)
+{
+    uint64_t bits, c, ip, fp = 0, u, f, hi, lo;
+    int be, s, k, up = 0;
+    char *o, *end;
+
+    memcpy(&bits, &x, sizeof bits);
+    be = (int)(bits >> 52 & 0x7ff);
+    c = bits & ((UINT64_C(1) << 52) - 1);
+    if (be == 0) s = 1074;                          /* subnormal: |x| = c 2^-1074 */
+    else { s = 1075 - be; c |= UINT64_C(1) << 52; } /* |x| = c 2^-s, c >= 2^52 */
+    ip = s < 64 ? c >> s : 0;                       /* s >= 53: c < 2^s */
+    f = s < 64 ? c & ((UINT64_C(1) << s) - 1) : c;
+    hi = mul_64x64(f, pow10_tab[prec], &lo);        /* hi:lo = f 10^prec */
+    if (s <= 110) {
+        fp = shr_128(hi, lo, s);                    /* floor(f 10^prec / 2^s) */
+        if (shr_128(hi, lo, s - 1) & 1)             /* the half bit: round up if */
+            up = low_bits(hi, lo, s - 1) ||         /* above half, or a tie and */
+                 ((prec ? fp : ip) & 1);            /* the last digit is odd */
+    }
+    fp += (uint64_t)up;
+    if (fp == pow10_tab[prec]) { fp = 0; ip++; }
+    end = buf + (signbit(x) != 0) + 1 + (prec ? 1 + prec : 0);  /* [-]ip[.fp] */
+    for (u = ip; u >= 10; u /= 10) end++;           /* ip's digits but one */
+    *end = '\0';
+    o = end;                                        /* written backwards */
+    for (k = 0; k < prec; k++) { *--o = (char)('0' + fp % 10); fp /= 10; }
+    if (prec) *--o = '.';
+    do { *--o = (char)('0' + ip % 10); ip /= 10; } while (ip);
+    if (o > buf) *--o = '-';
+    return (size_t)(end - buf);
+}
+
+size_t pt_fmt_fixed(char *buf, double x, int prec)
+{
+    assert(prec >= 0 && prec <= 17);
+    if (!isfinite(x)) return nonfinite(buf, x);
+    if (fabs(x) >= 1e15) return (size_t)snprintf(buf, PT_NUMLEN, "%.*e", prec, x);
+    return fixed(buf, x, prec);
+}

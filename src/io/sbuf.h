@@ -1,0 +1,57 @@
+/*
+** src/io/sbuf.h -- a growing text buffer, with XML and JSON escaping
+** See LICENSE for copyright and license.
+**
+** The SVG and HTML writers build their documents here and hand them to an
+** output file in one piece.  An allocation failure does not stop the calls:
+** it sets sb->failed, later appends do nothing, and the caller checks failed
+** once at the end.
+*/
+#ifndef PT_SBUF_H
+#define PT_SBUF_H
+
+#include <stddef.h>
+
+typedef struct pt_sbuf {
+    char *s;                     /* the text, NUL-terminated (NULL while empty); owned */
+    size_t len, cap;             /* length, and bytes allocated */
+    int failed;                  /* 1 after an allocation failed */
+} pt_sbuf;
+
+/* Start empty.  This function can't fail. */
+void pt_sbuf_init(pt_sbuf *sb);
+
+/* Free the text and start empty again.  This function can't fail. */
+void pt_sbuf_free(pt_sbuf *sb);
+
+/* Append the string t.  On allocation failure sets sb->failed. */
+void pt_sbuf_add(pt_sbuf *sb, const char *t);
+
+/* Append n bytes at t. */
+void pt_sbuf_addn(pt_sbuf *sb, const char *t, size_t n);
+
+/* Append printf(fmt, ...) ("C" locale formats, as pipetrace never sets one). */
+void pt_sbuf_addf(pt_sbuf *sb, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* Length of the well-formed UTF-8 sequence at p (RFC 3629: no overlong
+** forms, no surrogates, at most U+10FFFF; reads no byte past a NUL), or 0 when
+** it is not one.  This function can't fail. */
+int pt_sbuf_utf8_len(const unsigned char *p);
+
+/* Append t as XML character data or attribute value: & < > " ' become
+** entities; well-formed UTF-8 passes through unchanged; a byte that is not
+** part of one, and control characters other than tab and newline (XML 1.0
+** forbids them), become U+FFFD. */
+void pt_sbuf_add_xml(pt_sbuf *sb, const char *t);
+
+/* Append t as a JSON string, quotes included.  Besides " \ and control
+** characters, a '<' before '/' or '!' is written \u003c, so the string can sit
+** inside an HTML <script> element ("</script" or "<!--" would end it).  Bad
+** UTF-8 becomes U+FFFD, as in pt_sbuf_add_xml(). */
+void pt_sbuf_add_json(pt_sbuf *sb, const char *t);
+
+#endif

@@ -1,0 +1,859 @@
+/*
+** src/io/trace.c -- write the trace: JSON Lines, aligned text, or CSV
+** See LICENSE for copyright and license.
+*/
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "io/sbuf.h"
+#include "io/trace.h"
+#include "io/numfmt.h"
+#include "core/pipetrace.h"
+
+/* ===== the output block ===== */
+
+static void flush(pt_trace *t)
+{
+    if (t->len && fwrite(t->buf, 1, t->len, t->f) != t->len) t->failed = 1;
+    t->len = 0;
+}
+
+static void put(pt_trace *t, const char *s, size_t n)
+{
+    if (t->len + n > sizeof t->buf) flush(t);
+    if (n > sizeof t->buf) {                /* longer than a block: write as is */
+        if (fwrite(s, 1, n, t->f) != n) t->failed = 1;
+        return;
+    }
+    memcpy(t->buf + t->len, s, n);
+    t->len += n;
+}
+
+static void puts_(pt_trace *t, const char *s) { put(t, s, strlen(s)); }
+
+/* Integers by hand: snprintf costs more than the rest of a pixel record. */
+static void put_u64(pt_trace *t, uint64_t x)
+{
+    char b[24], *o = b + sizeof b;
+
+    do { *--o = (char)('0' + x % 10); x /= 10; } while (x);
+    put(t, o, (size_t)(b + sizeof b - o));
+}
+
+/* hi * 2^64 + lo in decimal: long division by 10 on 32-bit limbs. */
+static void put_u128(pt_trace *t, uint64_t hi, uint64_t lo)
+{
+    uint32_t limb[4] = {(uint32_t)(hi >> 32), (uint32_t)hi, (uint32_t)(lo >> 32), (uint32_t)lo};
+    char b[40], *o = b + sizeof b;
+    int k, nonzero;
+
+    if (hi == 0) { put_u64(t, lo); return; }
+    do {
+        uint64_t rem = 0;
+        nonzero = 0;
+        for (k = 0; k < 4; k++) {           /* limb[] /= 10, most significant first */
+            uint64_t cur = (rem << 32) | limb[k];
+            limb[k] = (uint32_t)(cur / 10);
+            rem = cur % 10;
+            nonzero |= limb[k] != 0;
+        }
+        *--o = (char)('0' + rem);
+    } while (nonzero);
+    put(t, o, (size_t)(b + sizeof b - o));
+}
+
+static void put_i64(pt_trace *t, int64_t x)
+{
+    if (x < 0) { put(t, "-", 1); put_u64(t, 0u - (uint64_t)x); }
+    else put_u64(t, (uint64_t)x);
+}
+
+/* A double in JSON: shortest round-trip, non-finite as a string. */
+static void put_json_num(pt_trace *t, double x)
+{
+    char b[PT_NUMLEN];
+    size_t n = pt_fmt_shortest(b, x);
+
+    if (isfinite(x)) { put(t, b, n); return; }
+    put(t, "\"", 1); put(t, b, n); put(t, "\"", 1);
+}
+
+static void put_short(pt_trace *t, double x)
+{
+    char b[PT_NUMLEN];
+    put(t, b, pt_fmt_shortest(b, x));
+}
+
+/* A string in JSON quotes, escaping what JSON requires. */
+static void put_json_str(pt_trace *t, const char *s)
+{
+    const unsigned char *p = (const unsigned char *)s;
+    int n;
+
+    put(t, "\"", 1);
+    while (*p) {
+        unsigned char c = *p;
+        if (c == '"' || c == '\\') { char e[2] = {'\\', (char)c}; put(t, e, 2); p++; }
+        else if (c < 0x20) { char e[8]; put(t, e, (size_t)snprintf(e, sizeof e, "\\u%04x", c)); p++; }
+        else if ((n = pt_sbuf_utf8_len(p)) == 0) { puts_(t, "\\ufffd"); p++; }  /* a path's bad byte */
+        else { put(t, (const char *)p, (size_t)n); p += n; }
+    }
+    put(t, "\"", 1);
+}
+
+/* Text: a fixed-width right-aligned column. */
+static void put_col(pt_trace *t, const char *s, size_t n, size_t width)
+{
+    static const char spaces[] = "                                ";
+    if (n < width) put(t, spaces, width - n < 32 ? width - n : 32);
+    put(t, s, n);
+}
+
+/* Text: room for n bytes (n <= 128) at the end of the block, for the column
+** writers below: they write there and move t->len past what they wrote. */
+static char *room(pt_trace *t, size_t n)
+{
+    if (t->len + n > sizeof t->buf) flush(t);
+    return t->buf + t->len;
+}
+
+/* Text: s right-aligned in width columns at o (n + padding bytes); returns
+** the end.  What put_col() puts, without a put per piece. */
+static char *col_at(char *o, const char *s, size_t n, size_t width)
+{
+    for (; width > n; width--) *o++ = ' ';
+    memcpy(o, s, n);
+    return o + n;
+}
+
+/* Text: x as "%12.*f" (pt_fmt_fixed: "%.*e" from 1e15 on), right-aligned. */
+static void put_fixed_col(pt_trace *t, double x, int prec)
+{
+    char b[PT_NUMLEN], *o;
+    size_t n = pt_fmt_fixed(b, x, prec);
+
+    o = room(t, PT_NUMLEN + 12);
+    t->len = (size_t)(col_at(o, b, n, 12) - t->buf);
+}
+
+/* Text: x's decimal digits, written backwards to end at end; returns their
+** start.  "%" PRIu64 by hand (snprintf costs more than the rest of a record). */
+static char *digits_to(char *end, uint64_t x)
+{
+    do { *--end = (char)('0' + x % 10); x /= 10; } while (x);
+    return end;
+}
+
+/* Text: "%*" PRId64 at o (at most 20 bytes plus padding); returns the end. */
+static char *int_at(char *o, int64_t x, size_t width)
+{
+    char b[24], *end = b + sizeof b, *d;
+
+    d = digits_to(end, x < 0 ? 0u - (uint64_t)x : (uint64_t)x);
+    if (x < 0) *--d = '-';
+    return col_at(o, d, (size_t)(end - d), width);
+}
+
+static char *str_at(char *o, const char *s)         /* s at o; returns the end */
+{
+    size_t n = strlen(s);
+    memcpy(o, s, n);
+    return o + n;
+}
+
+static void put_int_col(pt_trace *t, int64_t x)
+{
+    t->len = (size_t)(int_at(room(t, 32), x, 12) - t->buf);
+}
+
+/* Text: "name v12", padded so that the stage names line up: to 14 columns, or
+** by one space when longer. */
+static void put_who(pt_trace *t, const char *name, char kind, uint64_t n)
+{
+    char b[24], *end = b + sizeof b, *d = digits_to(end, n), *o;
+    size_t nlen = strlen(name), len = nlen + 2 + (size_t)(end - d);
+    size_t pad = len < 14 ? 14 - len : 1;
+
+    *--d = kind;
+    *--d = ' ';
+    put(t, name, nlen);
+    o = room(t, 40);                                /* 2 + 20 + 13 bytes */
+    memcpy(o, d, (size_t)(end - d));
+    memset(o + (end - d), ' ', pad);
+    t->len += (size_t)(end - d) + pad;
+}
+
+/* Text: a stage name left-aligned in 13 columns ("%-13s", cut to 13). */
+static void put_stage_col(pt_trace *t, const char *name)
+{
+    size_t n = strlen(name);
+    char *o = room(t, 13);
+
+    if (n > 13) n = 13;
+    memcpy(o, name, n);
+    memset(o + n, ' ', 13 - n);
+    t->len += 13;
+}
+
+/* ===== header ===== */
+
+static const char *camera_name(const pt_scene *s)
+{
+    return s->matrix ? "lookat" : s->perspective ? "perspective" : "orthographic";
+}
+
+static void put_vec3_json(pt_trace *t, pt_vec3 v)
+{
+    put(t, "[", 1); put_json_num(t, v.x); put(t, ",", 1); put_json_num(t, v.y);
+    put(t, ",", 1); put_json_num(t, v.z); put(t, "]", 1);
+}
+
+static void put_vec3_text(pt_trace *t, pt_vec3 v)
+{
+    put(t, "(", 1); put_short(t, v.x); puts_(t, ", "); put_short(t, v.y);
+    puts_(t, ", "); put_short(t, v.z); put(t, ")", 1);
+}
+
+/* A matrix as four rows: [[m00,m01,m02,m03],...]. */
+static void put_mat_json(pt_trace *t, const pt_mat4 *m)
+{
+    int i, j;
+
+    put(t, "[", 1);
+    for (i = 0; i < 4; i++) {
+        puts_(t, i ? ",[" : "[");
+        for (j = 0; j < 4; j++) {
+            if (j) put(t, ",", 1);
+            put_json_num(t, m->m[i][j]);
+        }
+        put(t, "]", 1);
+    }
+    put(t, "]", 1);
+}
+
+/* A matrix as "[m00 m01 m02 m03] [m10 ...] ...". */
+static void put_mat_text(pt_trace *t, const pt_mat4 *m)
+{
+    int i, j;
+
+    for (i = 0; i < 4; i++) {
+        puts_(t, i ? " [" : "[");
+        for (j = 0; j < 4; j++) {
+            if (j) put(t, " ", 1);
+            put_short(t, m->m[i][j]);
+        }
+        put(t, "]", 1);
+    }
+}
+
+/* The matrix camera's parameters and matrices, JSON. */
+static void camera_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
+{
+    puts_(t, ",\"lookat\":{\"eye\":"); put_vec3_json(t, s->eye);
+    puts_(t, ",\"direction\":"); put_vec3_json(t, s->dir);
+    puts_(t, ",\"up\":"); put_vec3_json(t, s->up);
+    puts_(t, ",\"up_perpendicular\":"); puts_(t, p->up_skewed ? "false" : "true");
+    puts_(t, ",\"up_adjusted\":"); puts_(t, p->up_adjusted ? "true" : "false");
+    puts_(t, "},\"projection\":{\"fov\":"); put_json_num(t, s->fov);
+    puts_(t, ",\"aspect\":"); put_json_num(t, s->aspect);
+    puts_(t, ",\"near\":"); put_json_num(t, s->znear);
+    puts_(t, ",\"far\":"); put_json_num(t, s->zfar);
+    puts_(t, "},\"view\":"); put_mat_json(t, &p->view);
+    puts_(t, ",\"projection_matrix\":"); put_mat_json(t, &p->proj);
+}
+
+/* The same as text lines. */
+static void camera_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
+{
+    puts_(t, " eye "); put_vec3_text(t, s->eye);
+    puts_(t, " direction "); put_vec3_text(t, s->dir);
+    puts_(t, " up "); put_vec3_text(t, s->up);
+    if (p->up_adjusted)
+        puts_(t, "\n  warning    up is not perpendicular to direction: re-derived"
+                 " (--raw-lookat keeps it)");
+    else if (p->up_skewed)
+        puts_(t, "\n  warning    up is not perpendicular to direction: kept as given"
+                 " (--raw-lookat), so View is not orthonormal");
+    puts_(t, "\nprojection   perspective fov "); put_short(t, s->fov);
+    puts_(t, " aspect "); put_short(t, s->aspect);
+    puts_(t, " near "); put_short(t, s->znear);
+    puts_(t, " far "); put_short(t, s->zfar);
+    puts_(t, "\nview         "); put_mat_text(t, &p->view);
+    puts_(t, "\nprojection   "); put_mat_text(t, &p->proj);
+}
+
+static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
+{
+    size_t k;
+    int st, i;
+
+    puts_(t, "{\"type\":\"header\",\"version\":1,\"scene\":");
+    put_json_str(t, s->path);
+    puts_(t, ",\"framebuffer\":{\"w\":"); put_i64(t, s->fb_w);
+    puts_(t, ",\"h\":"); put_i64(t, s->fb_h);
+    puts_(t, "},\"background\":["); put_i64(t, s->background[0]);
+    put(t, ",", 1); put_i64(t, s->background[1]);
+    put(t, ",", 1); put_i64(t, s->background[2]);
+    puts_(t, "],\"viewport\":{\"x\":"); put_i64(t, s->vp_x);
+    puts_(t, ",\"y\":"); put_i64(t, s->vp_y);
+    puts_(t, ",\"w\":"); put_i64(t, s->vp_w);
+    puts_(t, ",\"h\":"); put_i64(t, s->vp_h);
+    puts_(t, "},\"camera\":\""); puts_(t, camera_name(s)); put(t, "\"", 1);
+    if (s->matrix) camera_json(t, s, p);
+    if (s->from_obj) {
+        puts_(t, ",\"obj_translate\":["); put_json_num(t, s->obj_translate.x);
+        put(t, ",", 1); put_json_num(t, s->obj_translate.y);
+        put(t, ",", 1); put_json_num(t, s->obj_translate.z); put(t, "]", 1);
+    }
+    puts_(t, ",\"models\":[");
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+        const pt_model_plan *mp = &p->models[k];
+        int first = 1;
+
+        if (k) put(t, ",", 1);
+        puts_(t, "{\"name\":"); put_json_str(t, m->name);
+        puts_(t, ",\"vertices\":"); put_u64(t, m->nv);
+        puts_(t, ",\"used\":"); put_u64(t, mp->nused);
+        puts_(t, ",\"segments\":"); put_u64(t, m->nseg);
+        puts_(t, ",\"translate\":["); put_json_num(t, m->translate.x);
+        put(t, ",", 1); put_json_num(t, m->translate.y);
+        put(t, ",", 1); put_json_num(t, m->translate.z);
+        puts_(t, "],\"color\":["); put_i64(t, m->color[0]);
+        put(t, ",", 1); put_i64(t, m->color[1]);
+        put(t, ",", 1); put_i64(t, m->color[2]);
+        puts_(t, "],\"traced\":");
+        puts_(t, mp->selected ? "true" : "false");
+        if (s->matrix) { puts_(t, ",\"world\":"); put_mat_json(t, &mp->world); }
+        puts_(t, ",\"stages\":[");
+        for (i = 0; i < p->norder; i++) {
+            st = p->order[i];
+            if (mp->why[st] != PT_WHY_TRACED) continue;
+            if (!first) put(t, ",", 1);
+            first = 0;
+            put_json_str(t, pt_stage_infos[st].name);
+        }
+        puts_(t, "],\"left_out\":[");
+        first = 1;
+        for (i = 0; i < p->norder; i++) {
+            st = p->order[i];
+            if (mp->why[st] == PT_WHY_TRACED) continue;
+            if (!first) put(t, ",", 1);
+            first = 0;
+            puts_(t, "{\"stage\":"); put_json_str(t, pt_stage_infos[st].name);
+            puts_(t, ",\"why\":"); put_json_str(t, mp->why_text[st]); put(t, "}", 1);
+        }
+        puts_(t, "]}");
+    }
+    puts_(t, "]}\n");
+}
+
+static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
+{
+    size_t k;
+    int st, i;
+
+    puts_(t, "# pipetrace trace, format version 1\nscene        ");
+    puts_(t, s->path);
+    puts_(t, "\nframebuffer  "); put_i64(t, s->fb_w); puts_(t, " x "); put_i64(t, s->fb_h);
+    puts_(t, ", background "); put_i64(t, s->background[0]);
+    put(t, " ", 1); put_i64(t, s->background[1]);
+    put(t, " ", 1); put_i64(t, s->background[2]);
+    puts_(t, "\nviewport     "); put_i64(t, s->vp_w); puts_(t, " x "); put_i64(t, s->vp_h);
+    puts_(t, " at (x_ul, y_ul) = ("); put_i64(t, s->vp_x); puts_(t, ", ");
+    put_i64(t, s->vp_y); puts_(t, ")\ncamera       "); puts_(t, camera_name(s));
+    if (s->matrix) camera_text(t, s, p);
+    if (s->from_obj) {
+        puts_(t, "\nobj placed   translate "); put_short(t, s->obj_translate.x);
+        put(t, " ", 1); put_short(t, s->obj_translate.y);
+        put(t, " ", 1); put_short(t, s->obj_translate.z);
+    }
+    put(t, "\n", 1);
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+        const pt_model_plan *mp = &p->models[k];
+
+        puts_(t, "model        "); puts_(t, m->name);
+        puts_(t, ": "); put_u64(t, m->nv); puts_(t, " vertices (");
+        put_u64(t, mp->nused); puts_(t, " used), "); put_u64(t, m->nseg);
+        puts_(t, " segments, translate "); put_short(t, m->translate.x);
+        put(t, " ", 1); put_short(t, m->translate.y);
+        put(t, " ", 1); put_short(t, m->translate.z);
+        puts_(t, ", color "); put_i64(t, m->color[0]);
+        put(t, " ", 1); put_i64(t, m->color[1]);
+        put(t, " ", 1); put_i64(t, m->color[2]);
+        if (!mp->selected) puts_(t, ", not traced (--model)");
+        put(t, "\n", 1);
+        if (s->matrix) {
+            puts_(t, "  world      "); put_mat_text(t, &mp->world); put(t, "\n", 1);
+        }
+        for (i = 0; i < p->norder; i++) {
+            st = p->order[i];
+            if (mp->why[st] == PT_WHY_TRACED) continue;
+            puts_(t, "  left out   "); puts_(t, pt_stage_infos[st].name);
+            puts_(t, ": "); puts_(t, mp->why_text[st]); put(t, "\n", 1);
+        }
+    }
+    put(t, "\n", 1);
+}
+
+/* The CSV header rows; see vertex_csv(). */
+static const char csv_classic[] =
+    "model,v,stage,x,y,z,inside,behind,i,warning,digits_lost\n";
+static const char csv_matrix[] =
+    "model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning,digits_lost\n";
+
+static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
+{
+    pt_trace *t = ud;
+
+    t->scene = s;
+    t->plan = p;
+    if (t->fmt == PT_FORMAT_JSONL) header_json(t, s, p);
+    else if (t->fmt == PT_FORMAT_TEXT) header_text(t, s, p);
+    else puts_(t, s->matrix ? csv_matrix : csv_classic);
+}
+
+/* ===== vertex records ===== */
+
+static void on_clipvertex_begin(void *ud, const pt_model *m, uint64_t seg,
+                               uint64_t from, uint64_t to, double tc, pt_vec4 q)
+{
+    pt_trace *t = ud;
+
+    t->model = m;
+    t->clipv = 1;
+    t->seg = seg;
+    t->from = from;
+    t->to = to;
+    t->t_clip = tc;
+    t->q_clip = q;
+    t->journey_made = t->explain_lost = 0;
+}
+
+static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)
+{
+    pt_trace *t = ud;
+
+    t->clipv = 0;
+    t->model = m;
+    t->v = v;
+    t->journey_made = t->explain_lost = 0;
+}
+
+/* "x_pp = ": the name of value k of stage st (stages/pt_stage.h), padded to
+** four characters so that the columns line up. */
+static void put_lhs(pt_trace *t, pt_stage st, int k)
+{
+    const char *name = pt_stage_infos[st].coord[k];
+    size_t n = strlen(name);
+
+    put(t, name, n);
+    for (; n < 4; n++) put(t, " ", 1);
+    put(t, " = ", 3);
+}
+
+/* --explain: r's formula with this vertex's numbers, from the journey computed
+** at vertex_begin, so a stage left out still feeds the next one its real value.
+** Text: an indented line; JSON: an "explain" field.  Once a record differs from
+** the journey (a camera with other stages), the vertex gets no more of them. */
+static void put_explain(pt_trace *t, const pt_vrec *r)
+{
+    char b[PT_EXPLAINLEN];
+    size_t n;
+
+    if (!t->scene || !t->plan) t->explain_lost = 1;
+    if (!t->explain_lost && !t->journey_made) {     /* every stage, even those left out */
+        if (t->clipv) pt_journey_of_clip(&t->journey, t->scene, t->plan, t->model, t->q_clip);
+        else pt_journey_of_plan(&t->journey, t->scene, t->plan, t->model, t->v);
+        t->journey_made = 1;
+    }
+    if (!t->explain_lost && !pt_journey_matches(&t->journey, r)) t->explain_lost = 1;
+    if (t->explain_lost) return;
+    n = pt_explain_stage(b, sizeof b, &t->journey, r->stage, "; ");
+    if (n >= sizeof b) n = sizeof b - 1;
+    if (t->fmt == PT_FORMAT_JSONL) { puts_(t, ",\"explain\":"); put_json_str(t, b); return; }
+    put_col(t, "", 0, 14);
+    put(t, b, n);
+    put(t, "\n", 1);
+}
+
+/* Text: "  ! cancellation (9 digits lost)". */
+static void put_warnings_text(pt_trace *t, const pt_vrec *r)
+{
+    int k;
+
+    puts_(t, "  !");
+    for (k = 0; k < PT_NWARN; k++) {
+        if (!(r->warn & (1u << k))) continue;
+        put(t, " ", 1);
+        puts_(t, pt_warn_names[k]);
+        if ((1u << k) & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) {
+            puts_(t, " ("); put_i64(t, r->digits_lost); puts_(t, " digits lost)");
+        }
+    }
+}
+
+/* JSON: ,"warning":["cancellation"],"digits_lost":9 */
+static void put_warnings_json(pt_trace *t, const pt_vrec *r)
+{
+    int k, first = 1;
+
+    puts_(t, ",\"warning\":[");
+    for (k = 0; k < PT_NWARN; k++) {
+        if (!(r->warn & (1u << k))) continue;
+        if (!first) put(t, ",", 1);
+        first = 0;
+        put(t, "\"", 1); puts_(t, pt_warn_names[k]); put(t, "\"", 1);
+    }
+    put(t, "]", 1);
+    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) {
+        puts_(t, ",\"digits_lost\":"); put_i64(t, r->digits_lost);
+    }
+}
+
+/* Text: the rest of "(0b000101: outside near left)", or ": inside ...)". */
+static void put_planes_text(pt_trace *t, unsigned code)
+{
+    int k;
+
+    if (!code) { puts_(t, ": inside the view volume)"); return; }
+    puts_(t, ": outside");
+    for (k = 0; k < PT_CVV_NPLANES; k++)
+        if (code & (1u << k)) { put(t, " ", 1); puts_(t, pt_cvv_names[k]); }
+    put(t, ")", 1);
+}
+
+static void vertex_text(pt_trace *t, const pt_vrec *r)
+{
+
+    if (t->clipv) put_who(t, t->model->name, 's', t->seg);
+    else put_who(t, t->model->name, 'v', t->v);
+    put_stage_col(t, pt_stage_infos[r->stage].name);
+    if (r->stage == PT_STAGE_CVV) {             /* "code = 61 = 0b111101" */
+        char bits[PT_CVV_NPLANES + 1];
+        int k;
+        for (k = 0; k < PT_CVV_NPLANES; k++)
+            bits[k] = r->code & (1u << (PT_CVV_NPLANES - 1 - k)) ? '1' : '0';
+        bits[PT_CVV_NPLANES] = '\0';
+        put_lhs(t, r->stage, 0); put_i64(t, r->code); puts_(t, "  (0b"); puts_(t, bits);
+        put_planes_text(t, r->code);
+    } else if (r->stage == PT_STAGE_INDEX) {
+        put_lhs(t, r->stage, 0);
+        if (r->flags & PT_REC_NULL) put_col(t, "none", 4, 12);
+        else put_int_col(t, r->i);
+    } else if (pt_stage_infos[r->stage].nreal) {
+        const double v[4] = {r->x, r->y, r->z, r->w};
+        int k;
+        for (k = 0; k < pt_stage_infos[r->stage].nreal; k++) {
+            if (k) puts_(t, "  ");
+            put_lhs(t, r->stage, k); put_fixed_col(t, v[k], t->precision);
+        }
+    } else if (r->flags & PT_REC_NULL) {
+        put_lhs(t, r->stage, 0); put_col(t, "none", 4, 12);
+        puts_(t, "  "); put_lhs(t, r->stage, 1); put_col(t, "none", 4, 12);
+    } else {
+        put_lhs(t, r->stage, 0); put_int_col(t, r->ix);
+        puts_(t, "  "); put_lhs(t, r->stage, 1); put_int_col(t, r->iy);
+    }
+    if (r->flags & PT_REC_BEHIND) puts_(t, "  behind the camera");
+    if (r->stage == PT_STAGE_VIEWPORT)
+        puts_(t, r->flags & PT_REC_INSIDE ? "  inside" : "  outside");
+    if (t->clipv && r->stage == PT_STAGE_NDC) {
+        puts_(t, "  (clipped v"); put_u64(t, t->from); puts_(t, "-v"); put_u64(t, t->to);
+        puts_(t, " at t = "); put_short(t, t->t_clip); put(t, ")", 1);
+    }
+    if (r->warn) put_warnings_text(t, r);
+    put(t, "\n", 1);
+    if (t->explain) put_explain(t, r);
+}
+
+/* ',"x":': the JSON key of value k of stage st (stages/pt_stage.h). */
+static void put_key(pt_trace *t, pt_stage st, int k)
+{
+    puts_(t, ",\""); puts_(t, pt_stage_infos[st].key[k]); puts_(t, "\":");
+}
+
+static void vertex_json(pt_trace *t, const pt_vrec *r)
+{
+    if (t->clipv) {
+        puts_(t, "{\"type\":\"clipvertex\",\"model\":"); put_json_str(t, t->model->name);
+        puts_(t, ",\"segment\":"); put_u64(t, t->seg);
+        puts_(t, ",\"from\":"); put_u64(t, t->from);
+        puts_(t, ",\"to\":"); put_u64(t, t->to);
+        puts_(t, ",\"t\":"); put_json_num(t, t->t_clip);
+    } else {
+        puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
+        puts_(t, ",\"v\":"); put_u64(t, t->v);
+    }
+    puts_(t, ",\"stage\":\""); puts_(t, pt_stage_infos[r->stage].name); put(t, "\"", 1);
+    if (r->stage == PT_STAGE_CVV) {
+        int k, first = 1;
+        puts_(t, ",\"code\":"); put_i64(t, r->code);
+        puts_(t, ",\"planes\":[");
+        for (k = 0; k < PT_CVV_NPLANES; k++) {
+            if (!(r->code & (1u << k))) continue;
+            if (!first) put(t, ",", 1);
+            first = 0;
+            put(t, "\"", 1); puts_(t, pt_cvv_names[k]); put(t, "\"", 1);
+        }
+        put(t, "]", 1);
+    } else if (pt_stage_infos[r->stage].nreal) {
+        const double v[4] = {r->x, r->y, r->z, r->w};
+        int k;
+        for (k = 0; k < pt_stage_infos[r->stage].nreal; k++) {
+            put_key(t, r->stage, k); put_json_num(t, v[k]);
+        }
+    } else {                                /* viewport, framebuffer, index */
+        const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
+        int k;
+        for (k = 0; k < pt_stage_infos[r->stage].nint; k++) {
+            put_key(t, r->stage, k);
+            if (r->flags & PT_REC_NULL) puts_(t, "null"); else put_i64(t, n[k]);
+        }
+    }
+    if (r->stage == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND))
+        puts_(t, ",\"behind\":true");
+    if (r->stage == PT_STAGE_VIEWPORT)
+        puts_(t, r->flags & PT_REC_INSIDE ? ",\"inside\":true" : ",\"inside\":false");
+    if (r->warn) put_warnings_json(t, r);
+    if (t->explain) put_explain(t, r);
+    puts_(t, "}\n");
+}
+
+/* CSV rows, empty where a field does not apply, warning names joined by '|':
+**   classic camera: model,v,stage,x,y,z,inside,behind,i,warning,digits_lost
+**   matrix camera:  model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning,
+**                   digits_lost
+** (planes joined by '|'; a point clipping made has no v, but its segment and t). */
+
+/* Names whose bits are set in bits, joined by '|'. */
+static void put_names_csv(pt_trace *t, unsigned bits, const char *const *names, int n)
+{
+    int k, first = 1;
+
+    for (k = 0; k < n; k++) {
+        if (!(bits & (1u << k))) continue;
+        if (!first) put(t, "|", 1);
+        first = 0;
+        puts_(t, names[k]);
+    }
+}
+
+static void vertex_csv(pt_trace *t, const pt_vrec *r)
+{
+    int matrix = t->scene && t->scene->matrix, k, dims = pt_stage_infos[r->stage].nreal;
+    const double v[4] = {r->x, r->y, r->z, r->w};
+
+    puts_(t, t->model->name); put(t, ",", 1);
+    if (!t->clipv) put_u64(t, t->v);
+    put(t, ",", 1);
+    puts_(t, pt_stage_infos[r->stage].name);
+    for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
+        put(t, ",", 1);
+        if (k < dims) put_short(t, v[k]);
+        else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
+                 && !(r->flags & PT_REC_NULL))
+            put_i64(t, k ? r->iy : r->ix);
+    }
+    put(t, ",", 1);
+    if (matrix) {                                       /* code,planes */
+        if (r->stage == PT_STAGE_CVV) {
+            put_i64(t, r->code); put(t, ",", 1);
+            put_names_csv(t, r->code, pt_cvv_names, PT_CVV_NPLANES);
+        } else {
+            put(t, ",", 1);
+        }
+        put(t, ",", 1);
+    }
+    if (r->stage == PT_STAGE_VIEWPORT) puts_(t, r->flags & PT_REC_INSIDE ? "1" : "0");
+    put(t, ",", 1);
+    if (!matrix) {                                      /* behind */
+        if (r->stage == PT_STAGE_IMAGE) puts_(t, r->flags & PT_REC_BEHIND ? "1" : "0");
+        put(t, ",", 1);
+    }
+    if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) put_i64(t, r->i);
+    put(t, ",", 1);
+    if (matrix) {                                       /* segment,t */
+        if (t->clipv) { put_u64(t, t->seg); put(t, ",", 1); put_short(t, t->t_clip); }
+        else put(t, ",", 1);
+        put(t, ",", 1);
+    }
+    put_names_csv(t, r->warn, pt_warn_names, PT_NWARN);
+    put(t, ",", 1);
+    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) put_i64(t, r->digits_lost);
+    put(t, "\n", 1);
+}
+
+static void on_vertex(void *ud, const pt_vrec *r)
+{
+    pt_trace *t = ud;
+
+    if (t->fmt == PT_FORMAT_JSONL) vertex_json(t, r);
+    else if (t->fmt == PT_FORMAT_TEXT) vertex_text(t, r);
+    else vertex_csv(t, r);
+}
+
+/* ===== raster records ===== */
+
+static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
+                     int64_t x_fb, int64_t y_fb, int64_t idx)
+{
+    pt_trace *t = ud;
+
+    if (t->fmt == PT_FORMAT_JSONL) {
+        puts_(t, "{\"type\":\"pixel\",\"model\":"); put_json_str(t, m->name);
+        puts_(t, ",\"segment\":"); put_u64(t, seg);
+        puts_(t, ",\"x\":"); put_i64(t, x_fb);
+        puts_(t, ",\"y\":"); put_i64(t, y_fb);
+        puts_(t, ",\"i\":"); put_i64(t, idx);
+        puts_(t, "}\n");
+    } else if (t->fmt == PT_FORMAT_TEXT) {
+        char *o;
+        put_who(t, m->name, 's', seg);
+        o = room(t, 100);                   /* 20 + 20 + 9 + 20 + 8 + 20 + 1 bytes */
+        o = int_at(str_at(o, "pixel        x_fb = "), x_fb, 12);
+        o = int_at(str_at(o, "  y_fb = "), y_fb, 12);
+        o = int_at(str_at(o, "  idx = "), idx, 0);
+        *o++ = '\n';
+        t->len = (size_t)(o - t->buf);
+    }
+}
+
+static void put_pair_json(pt_trace *t, pt_pix p)
+{
+    put(t, "[", 1); put_i64(t, p.x); put(t, ",", 1); put_i64(t, p.y); put(t, "]", 1);
+}
+
+static void put_pair_text(pt_trace *t, pt_pix p)
+{
+    put(t, "(", 1); put_i64(t, p.x); puts_(t, ", "); put_i64(t, p.y); put(t, ")", 1);
+}
+
+static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
+                    pt_pix first, pt_pix last)
+{
+    pt_trace *t = ud;
+
+    if (t->fmt == PT_FORMAT_JSONL) {
+        puts_(t, "{\"type\":\"clip\",\"model\":"); put_json_str(t, m->name);
+        puts_(t, ",\"segment\":"); put_u64(t, seg);
+        puts_(t, ",\"count\":"); put_u64(t, count);
+        puts_(t, ",\"first\":"); put_pair_json(t, first);
+        puts_(t, ",\"last\":"); put_pair_json(t, last);
+        puts_(t, "}\n");
+    } else if (t->fmt == PT_FORMAT_TEXT) {
+        put_who(t, m->name, 's', seg);
+        puts_(t, "clipped      "); put_u64(t, count);
+        puts_(t, count == 1 ? " step at (x_vp, y_vp) = " : " steps, (x_vp, y_vp) from ");
+        put_pair_text(t, first);
+        if (count > 1) { puts_(t, " to "); put_pair_text(t, last); }
+        put(t, "\n", 1);
+    }
+}
+
+static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
+                    const char *why)
+{
+    pt_trace *t = ud;
+
+    if (t->fmt == PT_FORMAT_JSONL) {
+        puts_(t, "{\"type\":\"skip\",\"model\":"); put_json_str(t, m->name);
+        puts_(t, ",\"segment\":"); put_u64(t, seg);
+        if (v) { puts_(t, ",\"v\":"); put_u64(t, v); }
+        puts_(t, ",\"why\":"); put_json_str(t, why); puts_(t, "}\n");
+    } else if (t->fmt == PT_FORMAT_TEXT) {
+        put_who(t, m->name, 's', seg);
+        puts_(t, "skipped      ");
+        if (v) { put(t, "v", 1); put_u64(t, v); puts_(t, ": "); }
+        puts_(t, why); put(t, "\n", 1);
+    }
+}
+
+/* ===== summary ===== */
+
+static void on_summary(void *ud, const pt_summary *sum)
+{
+    pt_trace *t = ud;
+    const struct { const char *name; uint64_t hi, lo; } c[] = {    /* hi * 2^64 + lo */
+        {"models", 0, sum->models}, {"vertices", 0, sum->vertices},
+        {"vertices_unused", 0, sum->vertices_unused},
+        {"vertices_traced", 0, sum->vertices_traced}, {"segments", 0, sum->segments},
+        {"segments_degenerate", 0, sum->segments_degenerate},
+        {"segments_skipped", 0, sum->segments_skipped},
+        {"segments_culled", 0, sum->segments_culled}, {"pixels", 0, sum->pixels},
+        {"clipped", sum->clipped_hi, sum->clipped}, {"clip_runs", 0, sum->clip_runs},
+        {"behind", 0, sum->behind},
+    };
+    size_t k;
+
+    if (t->fmt == PT_FORMAT_CSV) return;
+    if (t->fmt == PT_FORMAT_JSONL) {
+        puts_(t, "{\"type\":\"summary\"");
+        for (k = 0; k < sizeof c / sizeof c[0]; k++) {
+            puts_(t, ",\""); puts_(t, c[k].name); puts_(t, "\":");
+            put_u128(t, c[k].hi, c[k].lo);
+        }
+        puts_(t, ",\"warnings\":{");
+        for (k = 0; k < PT_NWARN; k++) {
+            if (k) put(t, ",", 1);
+            put(t, "\"", 1); puts_(t, pt_warn_names[k]); puts_(t, "\":");
+            put_u64(t, sum->warnings[k]);
+        }
+        puts_(t, sum->rasterized ? "},\"rasterized\":true}\n" : "},\"rasterized\":false}\n");
+        return;
+    }
+    puts_(t, "\nsummary");
+    for (k = 0; k < sizeof c / sizeof c[0]; k++) {
+        puts_(t, k % 4 == 0 ? "\n  " : "  ");
+        puts_(t, c[k].name); put(t, " ", 1);
+        put_u128(t, c[k].hi, c[k].lo);
+    }
+    puts_(t, "\n  warnings");
+    for (k = 0; k < PT_NWARN; k++) {
+        put(t, " ", 1); puts_(t, pt_warn_names[k]); put(t, " ", 1);
+        put_u64(t, sum->warnings[k]);
+    }
+    puts_(t, sum->rasterized ? "\n  rasterized yes\n" : "\n  rasterized no (--vertex without --image)\n");
+}
+
+/* ===== public ===== */
+
+void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
+{
+    t->f = f;
+    t->fmt = fmt;
+    t->precision = precision;
+    t->model = NULL;
+    t->v = 0;
+    t->explain = 0;
+    t->explain_lost = 0;
+    t->journey_made = 0;
+    t->clipv = 0;
+    t->scene = NULL;
+    t->plan = NULL;
+    t->failed = 0;
+    t->len = 0;
+}
+
+void pt_trace_listener(pt_trace *t, pt_listener *l)
+{
+    l->header = on_header;
+    l->vertex_begin = on_vertex_begin;
+    l->sink.vertex = on_vertex;
+    l->clipvertex_begin = on_clipvertex_begin;
+    l->sink.ud = t;
+    l->pixel = on_pixel;
+    l->clip = on_clip;
+    l->skip = on_skip;
+    l->summary = on_summary;
+    l->ud = t;
+}
+
+int pt_trace_finish(pt_trace *t)
+{
+    flush(t);
+    if (fflush(t->f) != 0) t->failed = 1;
+    return t->failed ? -1 : 0;
+}

@@ -1,0 +1,69 @@
+/*
+** src/io/trace.h -- write the trace: JSON Lines, aligned text, or CSV
+** See LICENSE for copyright and license.
+**
+** The trace writer is a pt_listener: the pipeline hands it numbers, it formats
+** them into a 64 KiB buffer and writes whole blocks.  No allocation per record.
+** Record kinds and their fields (docs/trace-format.md has the full table):
+**
+**   kind     field     meaning
+**   -------  --------  ------------------------------------------------------
+**   header   version   trace format version, PT_TRACE_VERSION
+**            scene ... framebuffer, viewport, camera, one entry per model with
+**                      its stages, what was left out and why
+**   vertex   model, v  model name, 1-based vertex number as in the scene
+**            stage     model camera image pixel viewport framebuffer index
+**            x y z     model, camera, image; x y: pixel, viewport, framebuffer
+**            behind    image only, true when z_c > 0 under perspective
+**            inside    viewport only
+**            i         index only; null outside the framebuffer
+**   pixel    model, segment, x, y, i   a pixel written (framebuffer coords)
+**   clip     model, segment, count, first, last   a run of clipped steps
+**                                      (viewport coords)
+**   skip     model, segment, why       a segment not rasterized
+**   summary  counts    see pt_summary in pipeline.h
+*/
+#ifndef PT_TRACE_H
+#define PT_TRACE_H
+
+#include <stdio.h>
+#include "core/pipetrace.h"
+#include "io/explain.h"
+
+#define PT_TRACE_VERSION 1
+
+typedef enum pt_format { PT_FORMAT_TEXT, PT_FORMAT_JSONL, PT_FORMAT_CSV } pt_format;
+
+typedef struct pt_trace {
+    FILE *f;                     /* destination, not owned */
+    pt_format fmt;               /* output format */
+    int precision;               /* text: digits after the point, 0..17 */
+    const pt_model *model;       /* model of the vertex being traced */
+    uint64_t v;                  /* its 1-based number */
+    int clipv;                   /* 1: records of a point made by clipping: */
+    uint64_t seg, from, to;      /*   segment seg, from -> to (1-based) */
+    double t_clip;               /*   at parameter t, */
+    pt_vec4 q_clip;              /*   its clip coordinates */
+    int explain;                 /* 1: each vertex record gets its formula with
+                                 ** the numbers put in (--explain); set after init */
+    const pt_scene *scene;       /* the scene and the plan, from the header */
+    const pt_plan *plan;         /*   (for explain; they outlive the run) */
+    pt_journey journey;          /* with explain: the vertex's whole journey, */
+    int journey_made;            /*   once its first record is explained */
+    int explain_lost;            /* a record the journey does not reproduce came:
+                                 ** no more explanations for this vertex */
+    int failed;                  /* 1 after a write error */
+    size_t len;                  /* bytes waiting in buf */
+    char buf[1 << 16];           /* output block */
+} pt_trace;
+
+/* Prepare t to write fmt to f.  This function can't fail. */
+void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision);
+
+/* Fill *l with callbacks that write to t. */
+void pt_trace_listener(pt_trace *t, pt_listener *l);
+
+/* Write what is buffered.  Returns 0, or -1 when any write failed. */
+int pt_trace_finish(pt_trace *t);
+
+#endif

@@ -1,0 +1,74 @@
+/*
+** src/tools/cli.c -- what every pipetrace command does with its arguments
+** See LICENSE for copyright and license.
+*/
+#include <stdio.h>
+#include <string.h>
+#include "tools/cli.h"
+#include "core/pipetrace.h"
+
+int pt_cli_load(pt_scene *s, const char *path)
+{
+    char err[PT_ERRLEN];
+    int rc = path ? pt_scene_load(s, path, err, sizeof err)
+                  : pt_scene_parse(s, "<builtin>", pt_builtin_scene,
+                                   strlen(pt_builtin_scene), err, sizeof err);
+
+    if (rc == 0) return 0;
+    fprintf(stderr, "%s\n", err);
+    return PT_EXIT_INPUT;
+}
+
+const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *name)
+{
+    size_t k;
+
+    for (k = 0; k < s->nmodels; k++)
+        if (!strcmp(name, s->models[k].name)) return &s->models[k];
+    fprintf(stderr, "pipetrace%s%s: --model %s: %s has no model '%s' (", cmd ? " " : "",
+            cmd ? cmd : "", name, s->path, name);
+    for (k = 0; k < s->nmodels; k++)
+        fprintf(stderr, "%s%s", k ? ", " : "its models: ", s->models[k].name);
+    fprintf(stderr, "%s)\n", s->nmodels ? "" : "it has no models");
+    return NULL;
+}
+
+const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
+                                    const char *name, uint64_t v)
+{
+    const pt_model *m;
+    size_t k, most = 0;
+
+    if (name) {
+        if (!(m = pt_cli_model(s, cmd, name))) return NULL;
+        if (m->nv >= v) return m;
+        fprintf(stderr, "pipetrace%s%s: --vertex %llu: model %s of %s has no vertex %llu "
+                "(it has %zu)\n", cmd ? " " : "", cmd ? cmd : "", (unsigned long long)v, m->name, s->path,
+                (unsigned long long)v, m->nv);
+        return NULL;
+    }
+    for (k = 0; k < s->nmodels; k++) {
+        if (s->models[k].nv >= v) return &s->models[k];
+        if (s->models[k].nv > most) most = s->models[k].nv;
+    }
+    fprintf(stderr, "pipetrace%s%s: --vertex %llu: no model of %s has a vertex %llu "
+            "(the largest has %zu)\n", cmd ? " " : "", cmd ? cmd : "", (unsigned long long)v, s->path,
+            (unsigned long long)v, most);
+    return NULL;
+}
+
+int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out)
+{
+    uint64_t v = 0;
+    const char *p = text;
+
+    if (*p < '0' || *p > '9') return -1;
+    for (; *p >= '0' && *p <= '9'; p++) {
+        unsigned d = (unsigned)(*p - '0');
+        if (v > (UINT64_MAX - d) / 10) return -1;   /* would overflow */
+        v = v * 10 + d;
+    }
+    if (*p || v < lo || v > hi) return -1;
+    *out = v;
+    return 0;
+}

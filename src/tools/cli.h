@@ -1,0 +1,39 @@
+/*
+** src/tools/cli.h -- what every pipetrace command does with its arguments
+** See LICENSE for copyright and license.
+**
+** Loading the scene named on the command line (or the built-in one), finding
+** the model that has vertex N, reading a count.  These print their own
+** diagnostics to standard error, prefixed "pipetrace CMD: ", and return the
+** exit status to use; only main() and the cmd_*.c files call them.
+*/
+#ifndef PT_CLI_H
+#define PT_CLI_H
+
+#include "core/pipetrace.h"
+
+#define PT_EXIT_USAGE 1          /* a usage error */
+#define PT_EXIT_INPUT 2          /* bad input, or an output that cannot be written */
+
+/* Load the scene at path, or the built-in scene when path is NULL.  Returns 0,
+** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */
+int pt_cli_load(pt_scene *s, const char *path);
+
+/* The model called name.  Prints "pipetrace CMD: --model NAME: ..." (cmd
+** NULL: "pipetrace: --model ...") with the scene's model names and returns NULL
+** when there is none. */
+const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *name);
+
+/* The model whose 1-based vertex v a command follows: the model called name,
+** or (name NULL) the first model that has a vertex v.  Prints why and returns
+** NULL when there is none; the message starts with the argument at fault
+** ("--model NAME: ..." or "--vertex N: ...").  cmd names the command (NULL:
+** the render command, "pipetrace: ..."). */
+const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
+                                    const char *name, uint64_t v);
+
+/* A whole decimal number in [lo, hi] from text into *out.  Returns 0, or -1
+** (no message) for anything else: signs, spaces, overflow.  Can't fail. */
+int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out);
+
+#endif

@@ -1,0 +1,312 @@
+/*
+** src/tools/cmd_step.c -- pipetrace step: one vertex, one stage at a time
+** See LICENSE for copyright and license.
+**
+**   pipetrace step [SCENE] --vertex N [--model NAME] [--all | --interactive]
+**
+** For each of the seven stages: its name, the spaces it maps from and to, what
+** it does, its formula, the formula with this vertex's numbers and the result,
+** and what the result means for the next stage (src/io/explain.h writes all of it).
+** When standard input and output are terminals the stages come one at a time:
+** Enter shows the next, b the one before, q quits; lines are read from standard
+** input, no raw terminal mode.  Otherwise (or with --all) every stage is
+** printed at once, the same bytes every run.  --interactive forces the loop
+** (the tests drive it through a pipe; input lines are then echoed).
+*/
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "tools/commands.h"
+#include "tools/cli.h"
+#include "io/explain.h"
+#include "core/pipetrace.h"
+
+#define EXIT_USAGE 1
+#define EXIT_INPUT 2
+
+static const char usage[] =
+"usage: pipetrace step [SCENE] [--vertex N] [--model NAME] [--all | --interactive]\n"
+"                      [--compare-cameras] [--raw-lookat]\n"
+"Follow vertex N (1-based, default 1) of model NAME (default: the first model\n"
+"that has a vertex N) from model coordinates to its pixel-array index, one\n"
+"stage at a time: the formula, the formula with the vertex's numbers, the\n"
+"result, and what the next stage will do with it.  SCENE defaults to the\n"
+"built-in scene.\n"
+"\n"
+"  --all            print every stage at once (the default unless standard\n"
+"                   input and output are both terminals)\n"
+"  --interactive    one stage at a time even when not on a terminal\n"
+"                   (Enter: next stage, b: back, q: quit)\n"
+"  --compare-cameras  the vertex through the classic and the matrix camera,\n"
+"                   side by side (docs/cameras.md)\n"
+"  --raw-lookat     matrix camera: keep the given up vector as it is\n";
+
+static int usage_error(const char *msg, const char *arg)
+{
+    fprintf(stderr, "pipetrace step: %s%s\nTry 'pipetrace step --help'.\n", msg, arg);
+    return EXIT_USAGE;
+}
+
+/* Print stage st of journey j: name, spaces, what, formula, numbers, next. */
+static void show_stage(const pt_journey *j, int i)
+{
+    pt_stage st = j->order[i];
+    const pt_stage_info *in = pt_journey_info(j, st);
+    char b[PT_EXPLAINLEN];
+
+    printf("stage %d of %d: %s (%s -> %s)\n", i + 1, j->norder, in->name,
+           in->from, in->to);
+    printf("  what     %s\n", in->what);
+    printf("  formula  %s\n", in->formula);
+    pt_explain_stage(b, sizeof b, j, st, "\n           ");
+    printf("  here     %s\n", b);
+    pt_explain_next(b, sizeof b, j, st);
+    printf("  next     %s\n", b);
+}
+
+/* Read one line of standard input into b (newline dropped; the rest of a too
+** long line is skipped).  echo: print it, so that a transcript driven through
+** a pipe reads like a terminal session.  Returns 0, or -1 at end of input. */
+static int read_line(char *b, size_t n, int echo)
+{
+    size_t len;
+
+    if (!fgets(b, (int)n, stdin)) return -1;
+    len = strlen(b);
+    if (len && b[len - 1] == '\n') b[--len] = '\0';
+    else { int ch; while ((ch = getchar()) != EOF && ch != '\n') {} }
+    if (len && b[len - 1] == '\r') b[--len] = '\0';
+    if (echo) printf("%s\n", b);
+    return 0;
+}
+
+/* Enter, b, q: walk the stages until q, end of input, or Enter after the last. */
+static void interact(const pt_journey *j)
+{
+    int st = 0, show = 1, echo = !isatty(STDIN_FILENO);
+    char line[256];
+
+    for (;;) {
+        if (show) show_stage(j, st);
+        show = 1;
+        printf("[Enter] %s, b back, q quit: ", st + 1 < j->norder ? "next stage" : "done");
+        fflush(stdout);
+        if (read_line(line, sizeof line, echo) != 0) { putchar('\n'); break; }
+        if (!strcmp(line, "q") || !strcmp(line, "quit")) break;
+        if (!strcmp(line, "b") || !strcmp(line, "back")) {
+            if (st > 0) st--;
+        } else if (line[0] == '\0') {
+            if (st + 1 == j->norder) break;
+            st++;
+        } else {
+            printf("(Enter: next stage, b: back, q: quit)\n");
+            show = 0;
+            continue;
+        }
+        putchar('\n');
+    }
+}
+
+/* ===== --compare-cameras ===== */
+
+/* Which stages of each camera answer the same question, row by row. */
+static const struct cmp_row {
+    const char *what;
+    pt_stage classic[2], matrix[3];          /* PT_NSTAGES_ALL: none */
+} cmp_rows[] = {
+    { "the vertex",      {PT_STAGE_MODEL, PT_NSTAGES_ALL}, {PT_STAGE_MODEL, PT_NSTAGES_ALL, PT_NSTAGES_ALL} },
+    { "seen from the camera", {PT_STAGE_CAMERA, PT_NSTAGES_ALL}, {PT_STAGE_WORLD, PT_STAGE_VIEW, PT_NSTAGES_ALL} },
+    { "projected",       {PT_STAGE_IMAGE, PT_NSTAGES_ALL}, {PT_STAGE_CLIP, PT_STAGE_CVV, PT_STAGE_NDC} },
+    { "on the viewport", {PT_STAGE_PIXEL, PT_STAGE_VIEWPORT}, {PT_STAGE_SCREEN, PT_STAGE_VIEWPORT, PT_NSTAGES_ALL} },
+    { "in the framebuffer", {PT_STAGE_FRAMEBUFFER, PT_NSTAGES_ALL}, {PT_STAGE_FRAMEBUFFER, PT_NSTAGES_ALL, PT_NSTAGES_ALL} },
+    { "in the pixel array", {PT_STAGE_INDEX, PT_NSTAGES_ALL}, {PT_STAGE_INDEX, PT_NSTAGES_ALL, PT_NSTAGES_ALL} },
+};
+
+/* 1 when stage st is part of journey j. */
+static int in_journey(const pt_journey *j, pt_stage st)
+{
+    int i;
+    for (i = 0; i < j->norder; i++)
+        if (j->order[i] == st) return 1;
+    return 0;
+}
+
+/* One side of a row: "stage  values" per stage, each on its own line. */
+static int side_lines(const pt_journey *j, const pt_stage *sts, int n, char out[][PT_EXPLAINLEN + 16])
+{
+    int i, k = 0;
+
+    for (i = 0; i < n && sts[i] != PT_NSTAGES_ALL; i++) {
+        char b[PT_EXPLAINLEN];
+        if (!in_journey(j, sts[i])) continue;
+        pt_explain_values(b, sizeof b, j, sts[i]);
+        snprintf(out[k++], PT_EXPLAINLEN + 16, "%-9s %s", pt_stage_infos[sts[i]].name, b);
+    }
+    return k;
+}
+
+/* The vertex through both cameras.  A classic scene gets the matrix camera
+** that sees exactly what the classic one sees; a matrix scene gets the classic
+** camera with each model's translation (its world lines and look-at have no
+** classic counterpart). */
+static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int raw)
+{
+    pt_journey jc, jm;
+    pt_stage_params par;
+    pt_scene ms = *s;
+    pt_model *models = NULL;
+    size_t r, mi = (size_t)(m - s->models);
+    int rc = 0;
+
+    pt_stage_params_of(&par, s, m);
+    if (s->matrix) par.perspective = 1;
+    pt_journey_compute(&jc, &par, m->v[v - 1]);
+    if (!s->matrix) {                       /* the equivalent matrix camera */
+        models = malloc(s->nmodels * sizeof *models);
+        if (!models) return EXIT_INPUT;
+        memcpy(models, s->models, s->nmodels * sizeof *models);
+        for (r = 0; r < s->nmodels; r++) {  /* World = T(translate) * S(1, 1, -1) */
+            pt_mat4 t = pt_mat4_translate(models[r].translate.x, models[r].translate.y,
+                                          models[r].translate.z);
+            pt_mat4 flip = pt_mat4_scale(1, 1, -1);
+            models[r].world = pt_mat4_mul(&t, &flip);
+            models[r].translate.x = models[r].translate.y = models[r].translate.z = 0;
+        }
+        ms.models = models;
+        ms.matrix = 1;
+        ms.eye = (pt_vec3){0, 0, 0};
+        ms.dir = (pt_vec3){0, 0, 1};
+        ms.up = (pt_vec3){0, 1, 0};
+        ms.fov = 90;
+        ms.aspect = 1;
+        ms.znear = 0.01;
+        ms.zfar = 1e9;
+    }
+    if (pt_journey_of(&jm, &ms, &ms.models[mi], v, raw) != 0) { free(models); return EXIT_INPUT; }
+
+    printf("pipetrace step --compare-cameras: vertex %llu of model %s in %s\n",
+           (unsigned long long)v, m->name, s->path);
+    if (!s->matrix) {
+        printf("classic camera: %s, at the origin, looking down -z (right-handed)\n",
+               s->perspective ? "perspective" : "orthographic");
+        printf("matrix camera:  the same view as look-at matrices: eye (0, 0, 0), direction\n"
+               "                (0, 0, 1), up (0, 1, 0), fov 90, aspect 1, near 0.01, far 1e9;\n"
+               "                World = T(translate) * S(1, 1, -1) turns the right-handed\n"
+               "                camera space into the left-handed view space\n");
+        if (!s->perspective)
+            printf("note: the matrix camera is a perspective camera; the classic one here is\n"
+                   "      orthographic, so their image points differ\n");
+    } else {
+        printf("matrix camera:  this scene's look-at camera\n");
+        printf("classic camera: perspective at the origin looking down -z, with each model's\n"
+               "                translation (world lines and the look-at have no classic form)\n");
+    }
+    printf("\n%-20s %-52s | %s\n", "", "classic camera", "matrix camera");
+    for (r = 0; r < sizeof cmp_rows / sizeof cmp_rows[0]; r++) {
+        char left[2][PT_EXPLAINLEN + 16], right[3][PT_EXPLAINLEN + 16];
+        int nl = side_lines(&jc, cmp_rows[r].classic, 2, left);
+        int nr = side_lines(&jm, cmp_rows[r].matrix, 3, right), i;
+
+        for (i = 0; i < nl || i < nr; i++)
+            printf("%-20s %-52s | %s\n", i ? "" : cmp_rows[r].what, i < nl ? left[i] : "",
+                   i < nr ? right[i] : "");
+    }
+    if (in_journey(&jm, PT_STAGE_NDC) && s->perspective) {
+        const pt_vrec *ip = &jc.rec[PT_STAGE_IMAGE], *n = &jm.rec[PT_STAGE_NDC];
+        int same = memcmp(&ip->x, &n->x, sizeof ip->x) == 0 && memcmp(&ip->y, &n->y, sizeof ip->y) == 0;
+        printf("\n(x_ip, y_ip) and (x_n, y_n) are %s\n", same
+               ? "equal, bit for bit: both cameras put the vertex at the same point of the view rectangle"
+               : "different: the two cameras do not look at the same view");
+    } else if (!in_journey(&jm, PT_STAGE_NDC)) {
+        printf("\nthe matrix camera stops at the cvv: the vertex is outside its view volume\n");
+    }
+    if (in_journey(&jm, PT_STAGE_VIEWPORT) && !(jc.rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL)) {
+        const pt_vrec *a = &jc.rec[PT_STAGE_VIEWPORT], *b = &jm.rec[PT_STAGE_VIEWPORT];
+        if (a->ix != b->ix || a->iy != b->iy)
+            printf("the pixels differ: the classic camera rounds x_pp = 0.5 + w/2.001 * (x_ip + 1)\n"
+                   "to the nearest logical pixel; the matrix camera floors x_s = (x_n + 1) * w/2\n");
+        else
+            printf("both cameras pick the same pixel\n");
+    }
+    free(models);
+    if (fflush(stdout) != 0) rc = EXIT_INPUT;
+    return rc;
+}
+
+int pt_cmd_step(int argc, char **argv)
+{
+    const char *path = NULL, *model = NULL;
+    uint64_t v = 1;
+    int k, all = 0, inter = 0, raw = 0, compare = 0, rc;
+    const pt_model *m = NULL;
+    pt_journey j;
+    pt_scene s;
+
+    for (k = 1; k < argc; k++) {
+        const char *a = argv[k];
+
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
+        if (!strcmp(a, "--all")) all = 1;
+        else if (!strcmp(a, "--interactive")) inter = 1;
+        else if (!strcmp(a, "--raw-lookat")) raw = 1;
+        else if (!strcmp(a, "--compare-cameras")) compare = 1;
+        else if (!strcmp(a, "--vertex") || !strcmp(a, "--model")) {
+            if (k + 1 >= argc) return usage_error("option needs a value: ", a);
+            if (!strcmp(a, "--model")) model = argv[++k];
+            else if (pt_cli_count(argv[++k], 1, 4294967295u, &v) != 0)
+                return usage_error("--vertex takes a vertex number >= 1, not ", argv[k]);
+        } else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option ", a);
+        else if (path) return usage_error("more than one scene given: ", a);
+        else path = a;
+    }
+    if (all && inter) return usage_error("--all and --interactive exclude each other", "");
+
+    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
+    rc = pt_journey_agrees(&s);
+    if (rc != 1) {
+        fprintf(stderr, "pipetrace step: %s: %s\n", s.path, rc < 0 ? "out of memory"
+                : "the step-through does not agree with the pipeline on this scene");
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+    m = pt_cli_vertex_model(&s, "step", model, v);
+    if (!m) {
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+
+    if (compare) {
+        rc = compare_cameras(&s, m, v, raw);
+        pt_scene_free(&s);
+        return rc;
+    }
+    if (pt_journey_of(&j, &s, m, v, raw) != 0) {
+        fputs("pipetrace step: out of memory\n", stderr);
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+    printf("pipetrace step: vertex %llu of model %s in %s\n", (unsigned long long)v, m->name, s.path);
+    printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n\n",
+           s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
+           s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);
+    if (!pt_vertex_used(m, v))
+        printf("note: no segment uses vertex %llu, so the renderer does not transform it;\n"
+               "      here is the journey it would take.\n\n", (unsigned long long)v);
+    if (inter || (!all && isatty(STDIN_FILENO) && isatty(STDOUT_FILENO)))
+        interact(&j);
+    else
+        for (k = 0; k < j.norder; k++) {
+            if (k) putchar('\n');
+            show_stage(&j, k);
+        }
+    if (j.norder < (s.matrix ? pt_matrix_norder : PT_NSTAGES))
+        printf("\n(the journey ends at the cvv: the vertex is outside the view volume)\n");
+    pt_scene_free(&s);
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fputs("pipetrace step: cannot write to standard output\n", stderr);
+        return EXIT_INPUT;
+    }
+    return 0;
+}

@@ -1,0 +1,615 @@
+/*
+** src/tools/cmd_why.c -- pipetrace why: which segments lit a pixel, or why none did
+** See LICENSE for copyright and license.
+**
+**   pipetrace why [SCENE] X_FB Y_FB [--model NAME]
+**
+** Every segment of the scene is rasterized exactly as the renderer does it
+** (pt_raster_segment, with callbacks of our own), so "lit" means "the renderer
+** writes this pixel".  Each segment that lit it is shown with its two
+** vertices' journeys, model to index.  A pixel that nothing lit gets the
+** segments that come nearest, measured from the pixel's centre to the segment
+** between its two pixel-plane endpoints (before rounding), mapped to
+** framebuffer coordinates: the logical pixel (x_pp, y_pp) is the point
+** (x_ul + x_pp - 1, y_ul + h - y_pp) of the framebuffer, whose pixel centres
+** sit at integer coordinates.  For each of them, the stage where the pixel was
+** lost; the first that applies wins (the table below).  Whether a clipped step
+** landed on the pixel comes from the rasterizer's clip runs, which give only a
+** run's first and last step: it is exact when the run pins the step down (one
+** row or column, or one diagonal, or the pixel off the run's range), and
+** otherwise decided by the segment between the rounded endpoints (the line the
+** DDA steps along) passing within half a pixel of the pixel's centre.
+**
+**   model     its model left out    --model chose another model: the render
+**                                   command still draws it into the image but
+**                                   traces none of its records (pipeline.c), so
+**                                   only NAME's segments count as lighting the
+**                                   pixel; the others are judged as in the image
+**   viewport  clipped               the pixel lies outside the viewport and a
+**                                   clipped step of the segment lands on it
+**             outside the viewport  the pixel lies outside the viewport: nothing
+**                                   is ever drawn there
+**             skipped               an endpoint has no integer pixel
+**   image     behind the camera     an endpoint has z_c > 0 (perspective): it is
+**                                   projected mirrored, the line drawn is another
+**   raster    degenerate            both endpoints round to one pixel, drawn
+**                                   elsewhere (viewport: clipped, if outside)
+**   viewport  clipped               every step of the segment lies outside the
+**                                   viewport
+**   raster    rounded elsewhere     the segment passes through the pixel, but the
+**                                   DDA steps from the rounded endpoints and its
+**                                   nearest step lit a neighbouring pixel
+**             passes by             it simply does not come here (not lost)
+**
+** A model without segments has no segment to be near: it is listed apart, as
+** left out of the drawing, with the vertex of it that lands nearest.
+*/
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tools/commands.h"
+#include "tools/cli.h"
+#include "io/explain.h"
+#include "io/numfmt.h"
+#include "core/pipetrace.h"
+
+#define EXIT_USAGE 1
+#define EXIT_INPUT 2
+#define NEAREST    3             /* segments listed for a pixel nothing lit */
+
+static const char usage[] =
+"usage: pipetrace why [SCENE] X_FB Y_FB [--model NAME]\n"
+"Say which segments lit the framebuffer pixel (X_FB, Y_FB) of SCENE (default:\n"
+"the built-in scene), with their vertices' journeys from model to index.\n"
+"When none did, list the nearest segments and the stage where each lost it:\n"
+"its model left out, outside the viewport, clipped, skipped, behind the\n"
+"camera, degenerate, or endpoints rounded elsewhere; and the models without\n"
+"segments, which are never drawn.\n"
+"\n"
+"  --model NAME   ask about the trace of 'pipetrace SCENE --model NAME': only\n"
+"                 NAME's segments count; the others are drawn into the image\n"
+"                 but left out of the trace\n";
+
+/* What rasterizing one segment did, seen from the pixel asked about. */
+typedef struct seg_eval {
+    size_t mi, si;               /* model index, segment index (0-based) */
+    int result;                  /* PT_RASTER_* */
+    int lit;                     /* 1: it wrote the pixel */
+    uint64_t npix, nclip;        /* pixels written, steps clipped */
+    int have_near;               /* 1: near_x/near_y hold a pixel it wrote */
+    int64_t near_x, near_y;      /* the written pixel nearest the target (vp) */
+    int64_t clip_x, clip_y;      /* degenerate and clipped: its one step (vp) */
+    int clip_hit;                /* a clipped step on the target: 1 yes, 0 no,
+                                 ** -1 the clip runs cannot tell */
+    double dist;                 /* pixel centre to segment, framebuffer pixels */
+    double dist_drawn;           /* ... to the segment between rounded endpoints */
+} seg_eval;
+
+/* The pixel asked about, in viewport coordinates, and what one segment did. */
+typedef struct look {
+    int64_t tx, ty;              /* target (x_vp, y_vp) */
+    seg_eval *e;
+} look;
+
+static uint64_t cheb(int64_t dx, int64_t dy)
+{
+    uint64_t ax = (uint64_t)(dx < 0 ? -dx : dx), ay = (uint64_t)(dy < 0 ? -dy : dy);
+    return ax > ay ? ax : ay;
+}
+
+/* Pixels written: is it the target, is it the nearest so far? */
+static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
+{
+    look *lk = ud;
+    seg_eval *e = lk->e;
+    int64_t dx = x_vp - lk->tx, dy = y_vp - lk->ty;
+
+    e->npix++;
+    if (dx == 0 && dy == 0) e->lit = 1;
+    if (!e->have_near) {
+        e->have_near = 1;
+        e->near_x = x_vp; e->near_y = y_vp;
+    } else {
+        int64_t ex = e->near_x - lk->tx, ey = e->near_y - lk->ty;
+        uint64_t c = cheb(dx, dy), ce = cheb(ex, ey);
+        if (c < ce || (c == ce && dx * dx + dy * dy < ex * ex + ey * ey)) {
+            e->near_x = x_vp; e->near_y = y_vp;
+        }
+    }
+}
+
+/* Does a run of count clipped steps from f to l (viewport coordinates) hold the
+** step (tx, ty)?  Steps go one by one along x (x_vp = s - 1) or, for steep
+** segments, along -y (y_vp = h - s); the other coordinate is monotone (the
+** DDA's sum only grows or only shrinks).  1 yes, 0 no, -1 cannot tell. */
+static int run_holds(uint64_t count, pt_pix f, pt_pix l, int64_t tx, int64_t ty)
+{
+    int64_t n = (int64_t)count - 1, along, other, f_o, l_o, k;
+
+    if ((f.x == tx && f.y == ty) || (l.x == tx && l.y == ty)) return 1;
+    if (count <= 2) return 0;
+    if (l.x - f.x == n) { along = tx - f.x; other = ty; f_o = f.y; l_o = l.y; }
+    else if (f.y - l.y == n) { along = f.y - ty; other = tx; f_o = f.x; l_o = l.x; }
+    else return -1;
+    if (along < 0 || along > n) return 0;                   /* off the run */
+    if (other < (f_o < l_o ? f_o : l_o) || other > (f_o > l_o ? f_o : l_o)) return 0;
+    if (f_o == l_o) return other == f_o;                    /* one row or column */
+    k = l_o > f_o ? along : -along;
+    if (l_o - f_o == n || f_o - l_o == n) return other == f_o + k;   /* a diagonal */
+    return -1;
+}
+
+static void on_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
+{
+    look *lk = ud;
+    int h = run_holds(count, first, last, lk->tx, lk->ty);
+
+    lk->e->nclip += count;
+    lk->e->clip_x = first.x;
+    lk->e->clip_y = first.y;
+    if (h == 1 || (h == -1 && lk->e->clip_hit == 0)) lk->e->clip_hit = h;
+}
+
+/* Distance from (px, py) to the segment a-b; +inf when not finite. */
+static double seg_dist(double px, double py, double ax, double ay, double bx, double by)
+{
+    double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy, t = 0, d;
+
+    if (l2 > 0) {
+        t = ((px - ax) * dx + (py - ay) * dy) / l2;
+        if (t < 0) t = 0;
+        if (t > 1) t = 1;
+    }
+    d = hypot(px - (ax + t * dx), py - (ay + t * dy));
+    return isfinite(d) ? d : HUGE_VAL;
+}
+
+/* The journeys of segment si of model mi's two endpoints. */
+static void seg_journeys(const pt_scene *s, size_t mi, size_t si, pt_journey *a, pt_journey *b)
+{
+    const pt_model *m = &s->models[mi];
+    pt_stage_params par;
+
+    pt_stage_params_of(&par, s, m);
+    pt_journey_compute(a, &par, m->v[m->seg[si].a]);
+    pt_journey_compute(b, &par, m->v[m->seg[si].b]);
+}
+
+/* Rasterize segment si of model mi and measure it against (X, Y). */
+static void evaluate(const pt_scene *s, size_t mi, size_t si, int64_t X, int64_t Y,
+                     seg_eval *e)
+{
+    pt_journey a, b;
+    const pt_vrec *pa, *pb;
+    pt_vec2 p0, p1;
+    pt_raster_out out;
+    look lk;
+
+    memset(e, 0, sizeof *e);
+    e->mi = mi;
+    e->si = si;
+    seg_journeys(s, mi, si, &a, &b);
+    pa = &a.rec[PT_STAGE_PIXEL];
+    pb = &b.rec[PT_STAGE_PIXEL];
+    p0.x = pa->x; p0.y = pa->y;
+    p1.x = pb->x; p1.y = pb->y;
+    lk.tx = X - s->vp_x;
+    lk.ty = Y - s->vp_y;
+    lk.e = e;
+    out.pixel = on_pixel;
+    out.clip = on_clip;
+    out.ud = &lk;
+    e->result = pt_raster_segment(p0, p1, s->vp_w, s->vp_h, pt_pixel2viewport, &out);
+    e->dist = seg_dist((double)X, (double)Y,                 /* (x_ul + x_pp - 1, */
+                       s->vp_x + pa->x - 1, s->vp_y + s->vp_h - pa->y,   /* y_ul + h - y_pp) */
+                       s->vp_x + pb->x - 1, s->vp_y + s->vp_h - pb->y);
+    e->dist_drawn = HUGE_VAL;
+    if (e->result != PT_RASTER_SKIPPED)                     /* rounded: viewport pixels */
+        e->dist_drawn = seg_dist((double)lk.tx, (double)lk.ty,
+                                 (double)a.rec[PT_STAGE_VIEWPORT].ix,
+                                 (double)a.rec[PT_STAGE_VIEWPORT].iy,
+                                 (double)b.rec[PT_STAGE_VIEWPORT].ix,
+                                 (double)b.rec[PT_STAGE_VIEWPORT].iy);
+}
+
+/* One endpoint's journey, three lines:
+**     v3  model (..) -> camera (..) -> image (..)
+**         -> pixel (..) -> viewport (..) -> framebuffer (..) -> index N
+** each stage's numbers as pt_explain_tuple writes them, with the notes a reader
+** needs on the way (behind the camera, outside the viewport). */
+static void show_vertex(uint64_t v, const pt_journey *j)
+{
+    static const char *const lead[PT_NSTAGES] = {
+        "model ", " -> camera ", " -> image ", "\n        -> pixel ", " -> viewport ",
+        "\n        -> framebuffer ", " -> index ",
+    };
+    char b[PT_EXPLAINLEN];
+    int st;
+
+    printf("    v%llu  ", (unsigned long long)v);
+    for (st = 0; st < PT_NSTAGES; st++) {
+        const pt_vrec *r = &j->rec[st];
+        pt_explain_tuple(b, sizeof b, j, (pt_stage)st);
+        printf("%s%s", lead[st], b);
+        if (st == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND)) printf(" behind the camera");
+        if (st == PT_STAGE_VIEWPORT && !(r->flags & (PT_REC_INSIDE | PT_REC_NULL)))
+            printf(" outside");
+    }
+    putchar('\n');
+}
+
+/* "  tri s2 (v2 -> v3)" plus both endpoints' journeys. */
+static void show_segment(const pt_scene *s, const seg_eval *e, const char *tail,
+                         pt_journey *a, pt_journey *b)
+{
+    const pt_model *m = &s->models[e->mi];
+    uint64_t va = m->seg[e->si].a + 1ull, vb = m->seg[e->si].b + 1ull;
+
+    seg_journeys(s, e->mi, e->si, a, b);
+    printf("  %s s%llu (v%llu -> v%llu)%s\n", m->name, (unsigned long long)e->si + 1,
+           (unsigned long long)va, (unsigned long long)vb, tail);
+    show_vertex(va, a);
+    show_vertex(vb, b);
+}
+
+/* The stage where segment e lost pixel (X, Y), in words, after the caller's
+** indentation. */
+static void show_reason(const pt_scene *s, const seg_eval *e, const pt_journey *a,
+                        const pt_journey *b, long long X, long long Y, int target_inside)
+{
+    const pt_model *m = &s->models[e->mi];
+    const pt_journey *behind = NULL;
+    uint64_t vnull = a->rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL ? m->seg[e->si].a + 1ull
+                                                                  : m->seg[e->si].b + 1ull;
+    char num[PT_NUMLEN];
+
+    if (s->perspective && a->rec[PT_STAGE_CAMERA].z > 0) behind = a;
+    else if (s->perspective && b->rec[PT_STAGE_CAMERA].z > 0) behind = b;
+
+    if (!target_inside && e->clip_hit == 1)
+        printf("lost at viewport: clipped by the viewport: one of its steps lands on "
+               "this pixel, (x_vp, y_vp) = (%lld, %lld), but the pixel lies outside the "
+               "viewport and steps there are not drawn\n",
+               (long long)(X - s->vp_x), (long long)(Y - s->vp_y));
+    else if (!target_inside && e->clip_hit == -1 && e->dist_drawn <= 0.5)
+        printf("lost at viewport: clipped by the viewport: it runs through this pixel "
+               "(the line between its rounded endpoints passes within half a pixel of the "
+               "centre), but the pixel lies outside the viewport and steps there are not "
+               "drawn\n");
+    else if (!target_inside)
+        printf("lost at viewport: outside the viewport: the pixel lies outside the "
+               "viewport, nothing is ever drawn there\n");
+    else if (e->result == PT_RASTER_SKIPPED)
+        printf("lost at viewport: skipped: v%llu has no integer pixel (not finite, or "
+               "beyond 2^62), so the segment is not drawn\n", (unsigned long long)vnull);
+    else if (behind) {
+        pt_fmt_shortest(num, behind->rec[PT_STAGE_CAMERA].z);
+        printf("lost at image: behind the camera: v%llu has z_c = %s > 0 and is "
+               "projected mirrored through the origin, so the line drawn is not the one "
+               "in front of the camera\n", behind == a ? m->seg[e->si].a + 1ull
+                                                      : m->seg[e->si].b + 1ull, num);
+    } else if (e->result == PT_RASTER_DEGENERATE && e->npix)
+        printf("lost at raster: degenerate: both endpoints round to one pixel, and it "
+               "drew that one pixel elsewhere, at (x_fb, y_fb) = (%lld, %lld)\n",
+               (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
+    else if (e->result == PT_RASTER_DEGENERATE)
+        printf("lost at viewport: degenerate and clipped: both endpoints round to one "
+               "pixel, (x_vp, y_vp) = (%lld, %lld), outside the viewport\n",
+               (long long)e->clip_x, (long long)e->clip_y);
+    else if (e->npix == 0)
+        printf("lost at viewport: clipped by the viewport: all %llu of its steps lie "
+               "outside the viewport\n", (unsigned long long)e->nclip);
+    else if (e->dist <= 0.5)
+        printf("lost at raster: endpoints rounded elsewhere: the segment passes through "
+               "this pixel, but the DDA steps from the rounded endpoints and its nearest "
+               "step lit the neighbouring pixel (x_fb, y_fb) = (%lld, %lld)\n",
+               (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
+    else
+        printf("not lost: it passes by; the nearest pixel it lit is (x_fb, y_fb) = "
+               "(%lld, %lld)\n",
+               (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
+}
+
+/* A whole number from s into *v; 0 on success. */
+static int parse_int(const char *s, long long *v)
+{
+    char *end;
+
+    errno = 0;
+    *v = strtoll(s, &end, 10);
+    return (*s == '\0' || *end || errno) ? -1 : 0;
+}
+
+/* 1 when a sorts before b: nearer, and in file order among equals. */
+static int nearer(const seg_eval *a, const seg_eval *b)
+{
+    return a->dist < b->dist;
+}
+
+/* Put e into the list best[0..*n) kept sorted by nearer(), at most NEAREST. */
+static void keep_nearest(seg_eval best[NEAREST], int *n, const seg_eval *e)
+{
+    int k;
+
+    for (k = *n; k > 0 && nearer(e, &best[k - 1]); k--)
+        if (k < NEAREST) best[k] = best[k - 1];
+    if (k < NEAREST) {
+        best[k] = *e;
+        if (*n < NEAREST) ++*n;
+    }
+}
+
+/* What the loop over the segments found, beyond the segments it printed. */
+typedef struct why_ctx {
+    const pt_scene *s;
+    const pt_model *sel;         /* --model's model, or NULL: every model counts */
+    long long X, Y;              /* the pixel (x_fb, y_fb) */
+    int inside;                  /* 1: it lies inside the viewport */
+    uint64_t nlit;               /* segments of counted models that lit it */
+    uint64_t nleft;              /* segments of left-out models that lit it, */
+    size_t left_mi[10], left_si[10];    /*   the first ten of them */
+    int drawn;                   /* 1: some segment, of any model, drew it; */
+    size_t last_mi, last_si;     /*   the last one drawn sets its color */
+    seg_eval best[NEAREST];      /* the nearest segments not counted as lit */
+    int nbest;
+    seg_eval best_sel;           /* --model: the nearest of its own segments */
+    int have_sel;
+} why_ctx;
+
+/* "lost at model: its model left out" for a segment of a model --model left
+** out, then what the renderer does with it in the image. */
+static void show_left_out(const why_ctx *w, const seg_eval *e, const pt_journey *a,
+                          const pt_journey *b)
+{
+    const char *name = w->s->models[e->mi].name;
+
+    printf("    lost at model: its model left out: --model %s traces the records of "
+           "model %s only; model %s is drawn into the image but not traced\n",
+           w->sel->name, w->sel->name, name);
+    if (e->lit) printf("    in the image, it lights this pixel\n");
+    else {
+        printf("    in the image, ");
+        show_reason(w->s, e, a, b, w->X, w->Y, w->inside);
+    }
+}
+
+/* The models without segments: the renderer transforms and draws nothing of
+** them.  For the NEAREST nearest (by their nearest vertex, measured as the
+** segments' endpoints are), where that vertex would land. */
+static void show_no_segments(const why_ctx *w)
+{
+    const pt_scene *s = w->s;
+    seg_eval best[NEAREST], e;              /* here mi: the model, si: its nearest vertex */
+    size_t mi, v;
+    int n = 0, k;
+    char d[PT_NUMLEN], fb[PT_EXPLAINLEN];
+
+    for (mi = 0; mi < s->nmodels; mi++) {
+        const pt_model *m = &s->models[mi];
+        pt_stage_params par;
+        double dmin = HUGE_VAL;
+        size_t vmin = 0;
+
+        if (m->nseg) continue;
+        pt_stage_params_of(&par, s, m);
+        for (v = 0; v < m->nv; v++) {
+            pt_journey j;
+            double dv;
+            pt_journey_compute(&j, &par, m->v[v]);      /* a point: a segment of length 0 */
+            dv = seg_dist((double)w->X, (double)w->Y,
+                          s->vp_x + j.rec[PT_STAGE_PIXEL].x - 1,
+                          s->vp_y + s->vp_h - j.rec[PT_STAGE_PIXEL].y,
+                          s->vp_x + j.rec[PT_STAGE_PIXEL].x - 1,
+                          s->vp_y + s->vp_h - j.rec[PT_STAGE_PIXEL].y);
+            if (v == 0 || dv < dmin) { dmin = dv; vmin = v; }
+        }
+        memset(&e, 0, sizeof e);
+        e.mi = mi;
+        e.si = vmin;
+        e.dist = dmin;
+        keep_nearest(best, &n, &e);
+    }
+    if (!n) return;
+    printf("models without segments (left out: the renderer draws nothing of a model "
+           "without segments):\n");
+    for (k = 0; k < n; k++) {
+        const pt_model *m = &s->models[best[k].mi];
+        pt_stage_params par;
+        pt_journey j;
+
+        if (!m->nv) { printf("  %s: no vertices either\n", m->name); continue; }
+        pt_stage_params_of(&par, s, m);
+        pt_journey_compute(&j, &par, m->v[best[k].si]);
+        pt_explain_tuple(fb, sizeof fb, &j, PT_STAGE_FRAMEBUFFER);
+        if (best[k].dist == HUGE_VAL) snprintf(d, sizeof d, "an unknown distance");
+        else pt_fmt_fixed(d, best[k].dist, 2);
+        printf("  %s: %zu %s; the nearest, v%zu, would be %s%s away, at "
+               "(x_fb, y_fb) = %s\n", m->name, m->nv, m->nv == 1 ? "vertex" : "vertices",
+               best[k].si + 1, d, best[k].dist == HUGE_VAL ? "" : " pixels", fb);
+    }
+}
+
+/* Evaluate every segment against the pixel: print those that lit it (of the
+** counted models), keep the nearest of the others. */
+static void scan(why_ctx *w)
+{
+    const pt_scene *s = w->s;
+    size_t mi, si;
+    seg_eval e;
+    pt_journey ja, jb;
+
+    for (mi = 0; mi < s->nmodels; mi++) {
+        int left_out = w->sel && &s->models[mi] != w->sel;
+        for (si = 0; si < s->models[mi].nseg; si++) {
+            evaluate(s, mi, si, w->X, w->Y, &e);
+            if (e.lit) {                    /* drawing order: the last one sets the color */
+                w->drawn = 1;
+                w->last_mi = mi;
+                w->last_si = si;
+            }
+            if (e.lit && !left_out) {
+                if (w->nlit++ == 0) printf("lit by:\n");
+                show_segment(s, &e, "", &ja, &jb);
+                continue;
+            }
+            if (e.lit && w->nleft < 10) {
+                w->left_mi[w->nleft] = mi;
+                w->left_si[w->nleft] = si;
+            }
+            if (e.lit) w->nleft++;
+            keep_nearest(w->best, &w->nbest, &e);
+            if (w->sel && !left_out && (!w->have_sel || nearer(&e, &w->best_sel))) {
+                w->best_sel = e;
+                w->have_sel = 1;
+            }
+        }
+    }
+}
+
+/* Segments of left-out models that lit the pixel, as scan() found them:
+** "also lit ... : a s1, b s3". */
+static void show_also_lit(const why_ctx *w)
+{
+    uint64_t k;
+
+    printf("also lit in the image by segments that --model %s leaves out of the trace:",
+           w->sel->name);
+    for (k = 0; k < w->nleft && k < 10; k++)
+        printf("%s %s s%zu", k ? "," : "", w->s->models[w->left_mi[k]].name, w->left_si[k] + 1);
+    if (w->nleft > 10) printf(", ... (%llu in all)", (unsigned long long)w->nleft);
+    putchar('\n');
+}
+
+/* The nearest segments, each with the stage where it lost the pixel. */
+static void show_nearest(const why_ctx *w)
+{
+    seg_eval list[NEAREST + 1];
+    int n = w->nbest, k, has_sel = 0;
+    pt_journey ja, jb;
+
+    memcpy(list, w->best, sizeof w->best);
+    for (k = 0; k < n; k++) has_sel |= &w->s->models[list[k].mi] == w->sel;
+    if (w->have_sel && !has_sel) list[n++] = w->best_sel;  /* --model's own, always */
+    if (n)
+        printf("nearest segments (distance from the pixel's centre to the segment "
+               "between its pixel-plane endpoints, in framebuffer pixels):\n");
+    for (k = 0; k < n; k++) {
+        const seg_eval *e = &list[k];
+        char tail[64], d[PT_NUMLEN];
+
+        if (e->dist == HUGE_VAL) snprintf(tail, sizeof tail, ": distance unknown");
+        else {
+            pt_fmt_fixed(d, e->dist, 2);
+            snprintf(tail, sizeof tail, ": %s pixels away", d);
+        }
+        show_segment(w->s, e, tail, &ja, &jb);
+        if (w->sel && &w->s->models[e->mi] != w->sel) show_left_out(w, e, &ja, &jb);
+        else {
+            printf("    ");
+            show_reason(w->s, e, &ja, &jb, w->X, w->Y, w->inside);
+        }
+    }
+}
+
+int pt_cmd_why(int argc, char **argv)
+{
+    const char *pos[3], *model = NULL;
+    int npos = 0, k, rc;
+    pt_scene s;
+    why_ctx w;
+
+    for (k = 1; k < argc; k++) {
+        const char *a = argv[k];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
+        if (!strcmp(a, "--model")) {
+            if (k + 1 >= argc) {
+                fputs("pipetrace why: --model needs a model name\n"
+                      "Try 'pipetrace why --help'.\n", stderr);
+                return EXIT_USAGE;
+            }
+            model = argv[++k];
+            continue;
+        }
+        if (a[0] == '-' && !(a[1] >= '0' && a[1] <= '9')) {
+            fprintf(stderr, "pipetrace why: unknown option %s\nTry 'pipetrace why --help'.\n", a);
+            return EXIT_USAGE;
+        }
+        if (npos == 3) {
+            fprintf(stderr, "pipetrace why: too many arguments ('%s'): expected [SCENE] "
+                    "X_FB Y_FB\nTry 'pipetrace why --help'.\n", a);
+            return EXIT_USAGE;
+        }
+        pos[npos++] = a;
+    }
+    memset(&w, 0, sizeof w);
+    if (npos < 2 || parse_int(pos[npos - 2], &w.X) || parse_int(pos[npos - 1], &w.Y)) {
+        fputs("pipetrace why: needs a pixel: X_FB Y_FB (whole numbers)\n"
+              "Try 'pipetrace why --help'.\n", stderr);
+        return EXIT_USAGE;
+    }
+
+    if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return EXIT_INPUT;
+    w.s = &s;
+    rc = s.matrix ? 0 : pt_journey_agrees(&s);
+    if (rc != 1) {
+        fprintf(stderr, "pipetrace why: %s: %s\n", s.path, rc < 0 ? "out of memory"
+                : "why follows the classic camera (model -> camera -> image -> pixel -> "
+                  "viewport); this scene has the matrix camera: try 'pipetrace step'");
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+    if (w.X < 0 || w.X >= s.fb_w || w.Y < 0 || w.Y >= s.fb_h) {
+        fprintf(stderr, "pipetrace why: X_FB Y_FB = %lld %lld: the pixel lies outside the "
+                "%d x %d framebuffer of %s (x_fb 0..%d, y_fb 0..%d)\n", w.X, w.Y, s.fb_w,
+                s.fb_h, s.path, s.fb_w - 1, s.fb_h - 1);
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+    if (model && !(w.sel = pt_cli_model(&s, "why", model))) {
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+
+    w.inside = w.X >= s.vp_x && w.X < s.vp_x + s.vp_w && w.Y >= s.vp_y && w.Y < s.vp_y + s.vp_h;
+    printf("pixel (x_fb, y_fb) = (%lld, %lld) of %s: idx = %lld, ", w.X, w.Y, s.path,
+           w.Y * s.fb_w + w.X);
+    if (w.inside)
+        printf("inside the viewport at (x_vp, y_vp) = (%lld, %lld)\n", w.X - s.vp_x, w.Y - s.vp_y);
+    else
+        printf("outside the viewport (x_fb %d..%d, y_fb %d..%d): nothing is ever drawn there\n",
+               s.vp_x, s.vp_x + s.vp_w - 1, s.vp_y, s.vp_y + s.vp_h - 1);
+    if (w.sel)
+        printf("--model %s: the trace of this model alone; the image still shows every "
+               "model\n", w.sel->name);
+
+    scan(&w);
+    if (w.nleft && w.nlit) show_also_lit(&w);
+    if (!w.nlit) {
+        if (!w.drawn)
+            printf("not lit: no segment writes it, so it keeps the background color "
+                   "%d %d %d\n", s.background[0], s.background[1], s.background[2]);
+        else
+            printf("not lit in the trace of --model %s: none of its segments writes this "
+                   "pixel; segments of models it leaves out do (below)\n", w.sel->name);
+        if (w.sel && !w.sel->nseg)
+            printf("model %s has no segments: the renderer draws nothing of it (below)\n",
+                   w.sel->name);
+        show_nearest(&w);
+        if (!w.nbest) printf("the scene has no segments\n");
+        show_no_segments(&w);
+    }
+    if (w.drawn) {
+        const pt_model *m = &s.models[w.last_mi];
+        printf("color %d %d %d%s: %s s%zu is the last segment drawn there\n", m->color[0],
+               m->color[1], m->color[2], w.sel ? " in the image" : "", m->name,
+               w.last_si + 1);
+    }
+    pt_scene_free(&s);
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fputs("pipetrace why: cannot write to standard output\n", stderr);
+        return EXIT_INPUT;
+    }
+    return 0;
+}

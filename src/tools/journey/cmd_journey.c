@@ -1,0 +1,191 @@
+/*
+** src/tools/journey/cmd_journey.c -- pipetrace journey: draw one vertex's way through the stages
+** See LICENSE for copyright and license.
+**
+**   pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]
+**                     [--image FILE]
+**
+** --svg writes one SVG picture with a panel per coordinate system; --html a
+** self-contained page that shows one stage at a time with its formula and
+** numbers, Prev/Next buttons and a choice of vertex (src/tools/journey/journey.h and
+** src/tools/journey/journey_html.c draw them); --image the rendered framebuffer with the
+** vertex's pixel marked, PNG or PPM as the render command writes it.  Files
+** are written whole or not at all (src/io/outfile.h); "-" is standard output.
+** Only the classic camera is drawn: a scene with the matrix camera is refused
+** with exit status 2.
+*/
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tools/cli.h"
+#include "tools/commands.h"
+#include "io/explain.h"
+#include "core/pipetrace.h"
+#include "tools/journey/journey.h"
+#include "io/outfile.h"
+#include "io/png.h"
+
+#define EXIT_USAGE 1
+#define EXIT_INPUT 2
+
+static const char usage[] =
+"usage: pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
+"                         [--image FILE]\n"
+"Draw vertex N (1-based) of model NAME (default: the first model that has a\n"
+"vertex N) on its way from model coordinates to its element of the pixel\n"
+"array, one panel per coordinate system.  SCENE defaults to the built-in scene.\n"
+"\n"
+"  --svg FILE     one SVG picture with all seven panels ('-': standard output)\n"
+"  --html FILE    a self-contained page: one stage at a time with its formula\n"
+"                 and numbers, Prev/Next buttons, every used vertex to choose\n"
+"                 (at most 2000); it needs no network and no other file\n"
+"  --image FILE   the rendered framebuffer with the vertex's pixel ringed in red:\n"
+"                 PNG when FILE ends in .png (any case), else binary PPM (P6)\n"
+"\n"
+"At least one of --svg, --html and --image.  Only the classic camera (perspective or\n"
+"orthographic) is drawn; a scene with the matrix camera exits with status 2.\n"
+"Exit status: 0 success, 1 usage error, 2 bad input or output error.\n";
+
+static int usage_error(const char *msg, const char *arg)
+{
+    fprintf(stderr, "pipetrace journey: %s%s\nTry 'pipetrace journey --help'.\n", msg, arg);
+    return EXIT_USAGE;
+}
+
+/* Write the text in sb (or, sb NULL, the image fb) to path, whole or not at
+** all.  Returns 0 or -1. */
+static int write_file(const char *path, const pt_sbuf *sb, const pt_fb *fb)
+{
+    pt_outfile o = {NULL, NULL, NULL, NULL};
+    char err[PT_ERRLEN];
+    int bad;
+
+    if (pt_outfile_open(&o, path, err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace journey: %s\n", err);
+        return -1;
+    }
+    if (sb) bad = fwrite(sb->s, 1, sb->len, o.f) != sb->len;
+    else bad = (pt_path_is_png(path) ? pt_fb_write_png(fb, o.f) : pt_fb_write_ppm(fb, o.f)) != 0;
+    if (bad) {
+        fprintf(stderr, "pipetrace journey: cannot write '%s'\n", path);
+        pt_outfile_abort(&o);
+        return -1;
+    }
+    if (pt_outfile_commit(&o, err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace journey: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* The scene rendered into fb (initialised here), with the framebuffer pixel of
+** vertex v of model m, when it has one, ringed in the panels' red: the pixel
+** itself and the square 3 pixels around it, inside the framebuffer.  Returns 0,
+** or -1 when out of memory (fb is then freed). */
+static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64_t v)
+{
+    static const unsigned char red[3] = PT_JOURNEY_RED_RGB;
+    pt_options o;
+    pt_plan p;
+    pt_summary sum;
+    pt_journey j;
+    pt_listener quiet;                      /* no trace: every hook NULL */
+    int64_t x, y, dx, dy;
+
+    memset(&quiet, 0, sizeof quiet);
+    pt_options_default(&o);
+    if (pt_plan_make(&p, s, &o) != 0) return -1;
+    if (pt_fb_init(fb, s->fb_w, s->fb_h, s->background) != 0) { pt_plan_free(&p); return -1; }
+    if (pt_run(s, &p, &o, &quiet, fb, &sum) != 0 || pt_journey_of(&j, s, m, v, 0) != 0) {
+        pt_plan_free(&p);
+        pt_fb_free(fb);
+        return -1;
+    }
+    pt_plan_free(&p);
+    if (j.rec[PT_STAGE_FRAMEBUFFER].flags & PT_REC_NULL) return 0;     /* no pixel */
+    x = j.rec[PT_STAGE_FRAMEBUFFER].ix;
+    y = j.rec[PT_STAGE_FRAMEBUFFER].iy;
+    for (dy = -3; dy <= 3; dy++)
+        for (dx = -3; dx <= 3; dx++) {
+            int ring = dx == -3 || dx == 3 || dy == -3 || dy == 3;
+            if (!(ring || (dx == 0 && dy == 0))) continue;
+            if (x + dx < 0 || x + dx >= s->fb_w || y + dy < 0 || y + dy >= s->fb_h) continue;
+            pt_fb_set(fb, (y + dy) * s->fb_w + (x + dx), red);    /* idx = y * W + x */
+        }
+    return 0;
+}
+
+int pt_cmd_journey(int argc, char **argv)
+{
+    const char *path = NULL, *model = NULL, *svg = NULL, *html = NULL, *image = NULL;
+    unsigned long long v = 0;
+    const pt_model *m = NULL;
+    pt_scene s;
+    pt_sbuf a, b;
+    pt_fb fb;
+    int k, rc, have_fb = 0;
+
+    for (k = 1; k < argc; k++) {
+        const char *o = argv[k];
+
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) { fputs(usage, stdout); return 0; }
+        if (!strcmp(o, "--vertex") || !strcmp(o, "--model") || !strcmp(o, "--svg") ||
+            !strcmp(o, "--html") || !strcmp(o, "--image")) {
+            const char *val;
+            if (k + 1 >= argc) return usage_error("option needs a value: ", o);
+            val = argv[++k];
+            if (!strcmp(o, "--model")) model = val;
+            else if (!strcmp(o, "--svg")) svg = val;
+            else if (!strcmp(o, "--html")) html = val;
+            else if (!strcmp(o, "--image")) image = val;
+            else {
+                char *end;
+                errno = 0;
+                v = strtoull(val, &end, 10);
+                if (val[0] < '0' || val[0] > '9' || *end || errno || v < 1 || v > 4294967295ULL)
+                    return usage_error("--vertex takes a vertex number >= 1, not ", val);
+            }
+        } else if (o[0] == '-' && o[1] != '\0') return usage_error("unknown option ", o);
+        else if (path) return usage_error("more than one scene given: ", o);
+        else path = o;
+    }
+    if (!v) return usage_error("--vertex N is required", "");
+    if (!svg && !html && !image)
+        return usage_error("nothing to write: give --svg FILE, --html FILE or --image FILE", "");
+    if ((svg && html && !strcmp(svg, html)) || (svg && image && !strcmp(svg, image)) ||
+        (html && image && !strcmp(html, image)))
+        return usage_error("two outputs name the same file: ",
+                           svg && html && !strcmp(svg, html) ? svg : image);
+
+    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
+    if (s.matrix) {
+        fprintf(stderr, "pipetrace journey: %s: the matrix camera (camera lookat) is not "
+                "drawn; journey draws the classic camera's stages model -> camera -> image "
+                "-> pixel -> viewport -> framebuffer -> index\n", s.path);
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+    if (!(m = pt_cli_vertex_model(&s, "journey", model, v))) {
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+
+    pt_sbuf_init(&a);
+    pt_sbuf_init(&b);
+    rc = 0;
+    if (svg && pt_journey_svg(&a, &s, m, v) != 0) rc = -1;
+    if (!rc && html && pt_journey_html(&b, &s, m, v) != 0) rc = -1;
+    if (!rc && image && render_marked(&fb, &s, m, v) != 0) rc = -1;
+    have_fb = !rc && image;
+    if (rc) fputs("pipetrace journey: out of memory\n", stderr);
+    /* every output is complete before any file is touched */
+    if (!rc && svg && write_file(svg, &a, NULL) != 0) rc = -1;
+    if (!rc && html && write_file(html, &b, NULL) != 0) rc = -1;
+    if (!rc && image && write_file(image, NULL, &fb) != 0) rc = -1;
+    if (have_fb) pt_fb_free(&fb);
+    pt_sbuf_free(&a);
+    pt_sbuf_free(&b);
+    pt_scene_free(&s);
+    return rc ? EXIT_INPUT : 0;
+}

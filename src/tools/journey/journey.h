@@ -1,0 +1,99 @@
+/*
+** src/tools/journey/journey.h -- one vertex's journey drawn: a panel per coordinate system (SVG)
+** See LICENSE for copyright and license.
+**
+** Seven panels, one per stage of the classic camera, in pipeline order:
+**
+**   1 model space      3-D view: axes, the model's wireframe, the vertex
+**   2 camera space     3-D side view: camera, view pyramid (or box), image plane,
+**                      the wireframe moved by the translation, the projection ray
+**   3 image plane      the view rectangle [-1, 1]^2 and the projected wireframe
+**   4 logical pixels   the logical viewport [0.5, w+0.5] x [0.5, h+0.5], y up
+**   5 viewport         the w x h pixel grid, y down, the vertex's pixel filled
+**   6 framebuffer      the W x H framebuffer with the viewport outlined
+**   7 pixel array      the array as a strip of rows, the index marked
+**
+** Every panel marks the vertex and labels it with its coordinates (the text of
+** pt_explain_values(), so the numbers are the trace's), and draws the segments
+** that use it over the rest of the model.  The numbers come from
+** pt_journey_compute(), the stage functions themselves.
+**
+** A panel is a background that depends only on the model (frame, title,
+** axes, grid, the faint wireframe) and a foreground for one vertex (its
+** segments, marker, label, a zoom inset).  The panel's scale is chosen per
+** model so that one background serves every vertex of the model: the drawn
+** range grows from the stage's own rectangle to take in the model's vertices,
+** but at most to PT_JOURNEY_REACH times the rectangle's size; a vertex beyond
+** that (or behind the camera, or huge) is marked by an arrow at the panel's
+** edge pointing toward it.  When pixels are too small to see, the pixel
+** panels add a zoom inset around the vertex's pixel.
+**
+** Everything is written into a pt_sbuf (no stdio); coordinates in panel units
+** with one decimal, every text XML-escaped.  Only the classic camera is drawn:
+** the caller refuses a scene with s->matrix.
+*/
+#ifndef PT_JOURNEY_H
+#define PT_JOURNEY_H
+
+#include <stdint.h>
+#include "io/explain.h"
+#include "io/sbuf.h"
+
+#define PT_JOURNEY_PW      400   /* a panel's width, SVG units */
+#define PT_JOURNEY_PH      340   /* a panel's height */
+#define PT_JOURNEY_REACH   4.0   /* drawn range: at most this many times the
+                                 ** stage's rectangle in each direction */
+#define PT_JOURNEY_MAXSEG  5000  /* faint wireframe: the first this many segments */
+#define PT_JOURNEY_MAXV    2000  /* the HTML page: at most this many vertices */
+#define PT_JOURNEY_RED_RGB {214, 39, 40}    /* the vertex's red, "#d62728" in the
+                                            ** panels (journey.c's C_VTX) */
+
+/* A window of data coordinates mapped onto a box of panel units, same scale on
+** both axes.  Invariant: x0 < x1, y0 < y1, s > 0, s * (x1 - x0) == bw (and y). */
+typedef struct pt_jview {
+    double x0, y0, x1, y1;       /* the window, data coordinates */
+    double bx, by, bw, bh;       /* the box, panel units (y down) */
+    double s;                    /* panel units per data unit */
+    int ydown;                   /* 1: data y grows downward (pixel rows) */
+} pt_jview;
+
+/* The panels' geometry for one model: shared by all its vertices. */
+typedef struct pt_jmodel {
+    const pt_scene *s;           /* the scene, not owned */
+    const pt_model *m;           /* the model drawn, not owned */
+    pt_stage_params par;         /* the numbers of the formulas */
+    pt_jview view[PT_NSTAGES];   /* each panel's main view (index: unused) */
+    double axis_m, axis_c;       /* axis lengths of the two 3-D panels */
+    double depth;                /* camera panel: depth of the view pyramid */
+} pt_jmodel;
+
+/* Lay out the panels of model m of scene s (the classic camera: !s->matrix).
+** Returns 0, or -1 when out of memory. */
+int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m);
+
+/* The panel's title ("camera space") and its coordinates ("(x_c, y_c, z_c)").
+** This function can't fail. */
+const char *pt_journey_title(pt_stage st);
+
+/* Append the background of stage st's panel, in panel units (0..PW x 0..PH):
+** frame, title, formula, axes, grid, the model's wireframe.  On allocation
+** failure sb->failed is set (as for every pt_sbuf writer). */
+void pt_journey_panel_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st);
+
+/* Append the foreground for the model's 1-based vertex v (1 <= v <= nv):
+** its segments, marker or edge arrow, the coordinates label
+** (<text class="coords">) and a note (<text class="note">), a zoom inset. */
+void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t v, pt_stage st);
+
+/* Append a whole SVG document: every panel for vertex v of model m, a header
+** and a legend.  The root has a viewBox and width="100%", so it scales.
+** Returns 0, or -1 when out of memory. */
+int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v);
+
+/* Append a self-contained HTML page (journey_html.c): one panel at a time with
+** its formula and numbers, Prev/Next buttons and a choice of vertex; data for
+** up to PT_JOURNEY_MAXV used vertices of the scene, vertex v of m first shown.
+** Returns 0, or -1 when out of memory. */
+int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v);
+
+#endif

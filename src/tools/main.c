@@ -1,0 +1,233 @@
+/*
+** src/tools/main.c -- the pipetrace command: options, then parse -> plan -> run -> write
+** See LICENSE for copyright and license.
+**
+** Exit status: 0 success, 1 usage error, 2 bad input or output error.  Only
+** this file prints diagnostics or decides the exit status.
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tools/cli.h"
+#include "tools/commands.h"
+#include "io/outfile.h"
+#include "core/pipetrace.h"
+#include "io/png.h"
+#include "io/trace.h"
+
+#define PT_VERSION "0.1.0"
+
+#define EXIT_USAGE 1
+#define EXIT_INPUT 2
+
+static const char usage[] =
+"usage: pipetrace [SCENE] [options]\n"
+"       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N]\n"
+"       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE]\n"
+"       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all] [--compare-cameras]\n"
+"       pipetrace why [SCENE] X_FB Y_FB\n"
+"       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
+"       pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
+"       pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
+"                         [--image FILE]\n"
+"Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
+"through the classic teaching pipeline and trace every vertex at every stage:\n"
+"  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
+"or, for a scene with 'camera lookat', through the matrix camera:\n"
+"  model -> world -> view -> clip -> cvv -> ndc -> screen -> viewport -> ...\n"
+"\n"
+"  --image FILE      write the rendered framebuffer: PNG when FILE ends in\n"
+"                    .png (any case), else binary PPM (P6)\n"
+"  --trace FILE      write the trace to FILE ('-': standard output)\n"
+"  --format F        trace format: text (default), jsonl, csv\n"
+"  --vertex N        trace only vertex N (1-based) of each model\n"
+"  --model NAME      trace only the model NAME\n"
+"  --stage NAME      trace only this stage (repeatable): model, camera, image,\n"
+"                    pixel, viewport, framebuffer, index, or raster (pixels);\n"
+"                    matrix camera: world, view, clip, cvv, ndc, screen too\n"
+"  --all-stages      trace identity stages too (they are left out by default)\n"
+"  --raw-lookat      matrix camera: keep the given up vector as it is (the\n"
+"                    seed's matrix) instead of making it perpendicular\n"
+"  --explain         under each vertex record, its formula with the numbers put in\n"
+"  --precision N     digits after the point in the text format (0-17, default 6)\n"
+"  --help            show this help\n"
+"  --version         show the version\n"
+"\n"
+"With neither --image nor --trace the text trace goes to standard output.\n"
+"Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
+"Docs: docs/README.md, docs/scene-format.md, docs/trace-format.md, docs/cameras.md\n";
+
+/* ===== options ===== */
+
+typedef struct cli {
+    const char *scene;           /* NULL: the built-in scene */
+    const char *image;           /* --image, or NULL */
+    const char *trace;           /* --trace, or NULL */
+    pt_format fmt;
+    int precision;
+    int raster_chosen;           /* --stage raster given */
+    int explain;                 /* --explain */
+    pt_options opt;
+} cli;
+
+static int usage_error(const char *fmt, const char *arg)
+{
+    fputs("pipetrace: ", stderr);
+    fprintf(stderr, fmt, arg);
+    fputs("\nTry 'pipetrace --help'.\n", stderr);
+    return EXIT_USAGE;
+}
+
+/* Fill *c from argv.  Returns -1 to go on, else the exit status. */
+static int parse_args(cli *c, int argc, char **argv)
+{
+    int k, staged = 0;
+
+    memset(c, 0, sizeof *c);
+    pt_options_default(&c->opt);
+    c->precision = 6;
+    for (k = 1; k < argc; k++) {
+        const char *a = argv[k];
+        const char *val = k + 1 < argc ? argv[k + 1] : NULL;
+        int takes = !strcmp(a, "--image") || !strcmp(a, "--trace") ||
+                    !strcmp(a, "--format") || !strcmp(a, "--vertex") ||
+                    !strcmp(a, "--model") || !strcmp(a, "--stage") ||
+                    !strcmp(a, "--precision");
+
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
+        if (!strcmp(a, "--version")) { puts("pipetrace " PT_VERSION); return 0; }
+        if (takes && !val) return usage_error("option '%s' needs a value", a);
+        if (takes) k++;
+        if (!strcmp(a, "--image")) c->image = val;
+        else if (!strcmp(a, "--trace")) c->trace = val;
+        else if (!strcmp(a, "--model")) c->opt.model = val;
+        else if (!strcmp(a, "--format")) {
+            if (!strcmp(val, "text")) c->fmt = PT_FORMAT_TEXT;
+            else if (!strcmp(val, "jsonl")) c->fmt = PT_FORMAT_JSONL;
+            else if (!strcmp(val, "csv")) c->fmt = PT_FORMAT_CSV;
+            else return usage_error("unknown format '%s' (text, jsonl, csv)", val);
+        } else if (!strcmp(a, "--vertex")) {
+            if (pt_cli_count(val, 1, 4294967295u, &c->opt.vertex) != 0)
+                return usage_error("--vertex takes a vertex number >= 1, not '%s'", val);
+        } else if (!strcmp(a, "--precision")) {
+            uint64_t p;
+            if (pt_cli_count(val, 0, 17, &p) != 0)
+                return usage_error("--precision takes 0 to 17, not '%s'", val);
+            c->precision = (int)p;
+        } else if (!strcmp(a, "--stage")) {
+            int st = pt_stage_by_name(val);
+            if (!staged) { c->opt.stage_mask = 0; staged = 1; }
+            if (!strcmp(val, "raster")) c->raster_chosen = 1;
+            else if (st < 0) return usage_error("unknown stage '%s'", val);
+            else c->opt.stage_mask |= 1u << st;
+        } else if (!strcmp(a, "--all-stages")) c->opt.all_stages = 1;
+        else if (!strcmp(a, "--raw-lookat")) c->opt.raw_lookat = 1;
+        else if (!strcmp(a, "--explain")) c->explain = 1;
+        else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option '%s'", a);
+        else if (c->scene) return usage_error("more than one scene given ('%s')", a);
+        else c->scene = a;
+    }
+    if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
+    if (c->explain && c->fmt == PT_FORMAT_CSV)
+        return usage_error("--explain needs --format text or jsonl%s", "");
+    if (!c->image && !c->trace) c->trace = "-";
+    /* --vertex without --image: only that vertex's journey is computed */
+    c->opt.rasterize = c->image != NULL || !c->opt.vertex;
+    return -1;
+}
+
+/* ===== checks that need the scene ===== */
+
+/* --model must name a model, and --vertex N must exist in it (or, without
+** --model, in some model). */
+static int check_filters(const cli *c, const pt_scene *s)
+{
+    if (c->opt.vertex)                      /* looks the model up too */
+        return pt_cli_vertex_model(s, NULL, c->opt.model, c->opt.vertex) ? 0 : EXIT_INPUT;
+    if (c->opt.model && !pt_cli_model(s, NULL, c->opt.model)) return EXIT_INPUT;
+    return 0;
+}
+
+/* ===== main ===== */
+
+int main(int argc, char **argv)
+{
+    cli c;
+    pt_scene s;
+    pt_plan plan;
+    pt_fb fb = {0, 0, NULL};
+    pt_summary sum;
+    pt_listener l;
+    pt_trace *tr = NULL;
+    pt_outfile tout = {NULL, NULL, NULL, NULL}, iout = {NULL, NULL, NULL, NULL};
+    char err[PT_ERRLEN];
+    int rc;
+
+    if (argc > 1 && strcmp(argv[1], "diff") == 0) return pt_cmd_diff(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "step") == 0) return pt_cmd_step(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "why") == 0) return pt_cmd_why(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "quiz") == 0) return pt_cmd_quiz(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "accuracy") == 0) return pt_cmd_accuracy(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "journey") == 0) return pt_cmd_journey(argc - 1, argv + 1);
+    rc = parse_args(&c, argc, argv);
+    if (rc >= 0) return rc;
+
+    if (pt_cli_load(&s, c.scene) != 0) return EXIT_INPUT;
+    rc = check_filters(&c, &s);
+    if (rc) { pt_scene_free(&s); return rc; }
+    if (pt_plan_make(&plan, &s, &c.opt) != 0) {
+        fputs("pipetrace: out of memory\n", stderr);
+        pt_scene_free(&s);
+        return EXIT_INPUT;
+    }
+
+    memset(&l, 0, sizeof l);
+    rc = 0;
+    if (c.trace) {
+        tr = malloc(sizeof *tr);
+        if (!tr) { snprintf(err, sizeof err, "pipetrace: out of memory"); rc = 1; }
+        else if (pt_outfile_open(&tout, c.trace, err, sizeof err) != 0) rc = 1;
+        else {
+            pt_trace_init(tr, tout.f, c.fmt, c.precision);
+            pt_trace_listener(tr, &l);
+            tr->explain = c.explain;
+        }
+    }
+    if (!rc && c.image && pt_fb_init(&fb, s.fb_w, s.fb_h, s.background) != 0) {
+        snprintf(err, sizeof err, "pipetrace: out of memory");
+        rc = 1;
+    }
+    if (!rc && pt_run(&s, &plan, &c.opt, &l, c.image ? &fb : NULL, &sum) != 0) {
+        snprintf(err, sizeof err, "pipetrace: out of memory");
+        rc = 1;
+    }
+    if (!rc && tr && pt_trace_finish(tr) != 0) {
+        snprintf(err, sizeof err, "cannot write the trace to '%s'", c.trace);
+        rc = 1;
+    }
+    if (!rc && c.image) {
+        if (pt_outfile_open(&iout, c.image, err, sizeof err) != 0) rc = 1;
+        else if ((pt_path_is_png(c.image) ? pt_fb_write_png(&fb, iout.f)
+                                          : pt_fb_write_ppm(&fb, iout.f)) != 0) {
+            snprintf(err, sizeof err, "cannot write '%s'", c.image);
+            rc = 1;
+        } else if (pt_outfile_commit(&iout, err, sizeof err) != 0) rc = 1;
+    }
+    if (!rc && c.trace && pt_outfile_commit(&tout, err, sizeof err) != 0) rc = 1;
+    if (rc) {
+        fprintf(stderr, "%s%s\n", strncmp(err, "pipetrace:", 10) ? "pipetrace: " : "", err);
+        pt_outfile_abort(&iout);
+        pt_outfile_abort(&tout);
+    }
+    if (!rc && c.opt.raw_lookat && !s.matrix)
+        fputs("pipetrace: note: --raw-lookat changes nothing: the scene uses the "
+              "classic camera\n", stderr);
+    if (!rc && c.opt.vertex && !c.image && sum.vertices_traced == 0)
+        fprintf(stderr, "pipetrace: note: vertex %llu is used by no segment, so it "
+                "is not transformed\n", (unsigned long long)c.opt.vertex);
+    free(tr);
+    pt_fb_free(&fb);
+    pt_plan_free(&plan);
+    pt_scene_free(&s);
+    return rc ? EXIT_INPUT : 0;
+}
