@@ -48,7 +48,7 @@ $B/s6_fb2index.o:       $(or $(STAGE_index),stages/s6_fb2index.c) stages/*.h $B/
 endif
 # ===== end of student stages =====
 
-# The layers, bottom up (docs/architecture.md; tests/layers.sh checks that
+# The layers, bottom up (docs/architecture.md; tests/layers.py checks that
 # none includes a header of a layer above it).
 # stages/: the formulas, in pipeline order: what all share, the classic
 # camera's, then the matrix camera's own (it shares s5 and s6).

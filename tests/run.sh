@@ -25,7 +25,7 @@ reference   1 $B/test_reference $ref
 fuzz        1 $B/test_fuzz
 explain     1 $B/test_explain
 png         1 $B/test_png
-layers      1 python3 tests/layers.py
+layers      1 sh tests/layers.sh
 golden      1 sh tests/golden.sh $B/pipetrace
 cli         1 sh tests/cli.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace

@@ -9,7 +9,7 @@
 **
 ** Everything above the core (src/io: trace writers and readers, images,
 ** files, numbers as text; src/tools: the commands) includes this header and no
-** other header of src/core or stages/; tests/layers.sh checks it.  USAGE is in
+** other header of src/core or stages/; tests/layers.py checks it.  USAGE is in
 ** pipeline.h; the stages' formulas are at the top of each stages/ header.
 */
 #ifndef PT_PIPETRACE_H
