@@ -87,6 +87,8 @@ typedef struct parser {
 #define PRINTF_LIKE(f, a)
 #endif
 
+/* ===== errors: FILE:LINE:COL messages ===== */
+
 /* Write "NAME:LINE:COL: error: " and the formatted message to err.  Any control
 ** byte (say, a newline in a file name) becomes '?', so that the message is
 ** exactly one line.  Returns -1, so that callers can `return vfail(...)`. */
@@ -136,6 +138,8 @@ static int fail(parser *ps, const source *src, const char *at,
     va_end(ap);
     return -1;
 }
+
+/* ===== characters and lines: UTF-8, controls, the cursor ===== */
 
 /* Copy p[0..n) into buf (QUOTE_BUF bytes) for a message.  Text longer than
 ** QUOTE_MAX bytes is cut, at a character boundary, and "..." appended. */
@@ -272,6 +276,8 @@ static int next_line(parser *ps, source *src, cursor *line)
     src->p = (const char *)(p == end ? p : p + 1);        /* past the LF */
     return 1;
 }
+
+/* ===== tokens and numbers ===== */
 
 /* Take the next token from c into *t.  Returns 1, or 0 when none is left. */
 static int next_token(cursor *c, token *t)
@@ -419,6 +425,8 @@ static int parse_int(parser *ps, const source *src, const token *t,
 }
 
 /* ---------------------------------------------------------------- models */
+
+/* ===== the scene being built: models, vertices, segments ===== */
 
 /* Grow the array p of *cap elements of size bytes, doubling (from 16) but
 ** never beyond max elements nor SIZE_MAX bytes.  Returns the new array and
@@ -591,6 +599,8 @@ static int resolve_index(parser *ps, const source *src, const token *t,
 }
 
 /* ------------------------------------------------------------ directives */
+
+/* ===== directives, one handler each ===== */
 
 /* A directive's handler: dir is the directive's token, args the rest of the
 ** line.  Returns 0 or -1. */
@@ -947,6 +957,8 @@ static int do_face(parser *ps, source *src, const token *dir, cursor *args)
     return polyline(ps, src, dir, args, 1);
 }
 
+/* ===== files, includes and OBJ ===== */
+
 /* Read the whole file at path into a new NUL-terminated buffer *text of *len
 ** bytes (plus the NUL).  A chunked read works for pipes too, where the size is
 ** not known beforehand.  Reading stops early after a chunk with a NUL byte:
@@ -1097,6 +1109,8 @@ static const struct directive {
     { "world",       do_world,       1 },
 };
 
+/* ===== the parse loop ===== */
+
 /* One line of a .scene file. */
 static int scene_line(parser *ps, source *src, cursor *line)
 {
@@ -1160,6 +1174,8 @@ static int parse_source(parser *ps, source *src)
     return r;
 }
 
+/* ===== checks once the whole scene is read ===== */
+
 /* Fill in the default viewport (the whole framebuffer), or check that the
 ** given one fits, now that the framebuffer size is final.  The sums are at
 ** most 2 * PT_MAX_SIZE, so they cannot overflow. */
@@ -1217,6 +1233,8 @@ static int finish_camera(parser *ps, const char *name)
                        "projection: %s", pt_cam_error_text(e));
     return 0;
 }
+
+/* ===== a whole scene: start, parse, OBJ as a scene ===== */
 
 /* Empty *s, then give it its defaults and a copy of name.  Returns 0, or -1
 ** when out of memory (*s stays empty). */
@@ -1399,6 +1417,8 @@ static int ends_with_obj(const char *path)
 }
 
 /* ----------------------------------------------------------- public API */
+
+/* ===== the public functions ===== */
 
 int pt_scene_load(pt_scene *s, const char *path, char *err, size_t errlen)
 {

@@ -2,6 +2,7 @@
 ** src/tools/cli.c -- what every pipetrace command does with its arguments
 ** See LICENSE for copyright and license.
 */
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include "tools/cli.h"
@@ -71,4 +72,16 @@ int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out)
     if (*p || v < lo || v > hi) return -1;
     *out = v;
     return 0;
+}
+
+int pt_cli_usage(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+
+    fprintf(stderr, "pipetrace%s%s: ", cmd ? " " : "", cmd ? cmd : "");
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "\nTry 'pipetrace%s%s --help'.\n", cmd ? " " : "", cmd ? cmd : "");
+    return PT_EXIT_USAGE;
 }

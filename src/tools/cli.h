@@ -12,8 +12,22 @@
 
 #include "core/pipetrace.h"
 
-#define PT_EXIT_USAGE 1          /* a usage error */
-#define PT_EXIT_INPUT 2          /* bad input, or an output that cannot be written */
+/* The exit statuses of every command: the one table. */
+#define PT_EXIT_OK     0         /* done; for diff: the two agree */
+#define PT_EXIT_DIFFER 1         /* diff: the two differ */
+#define PT_EXIT_USAGE  1         /* a usage error */
+#define PT_EXIT_INPUT  2         /* bad input, or an output that cannot be written */
+
+#if defined(__GNUC__) || defined(__clang__)
+#define PT_PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
+#else
+#define PT_PRINTF_LIKE(f, a)
+#endif
+
+/* The one usage-error path: print "pipetrace CMD: MESSAGE" and "Try 'pipetrace
+** CMD --help'." to standard error (cmd NULL: the render command, "pipetrace:
+** MESSAGE", "Try 'pipetrace --help'.") and return PT_EXIT_USAGE. */
+int pt_cli_usage(const char *cmd, const char *fmt, ...) PT_PRINTF_LIKE(2, 3);
 
 /* Load the scene at path, or the built-in scene when path is NULL.  Returns 0,
 ** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */

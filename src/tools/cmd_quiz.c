@@ -26,8 +26,6 @@
 #include "io/explain.h"
 #include "core/pipetrace.h"
 
-#define EXIT_USAGE 1
-#define EXIT_INPUT 2
 #define TOL        1e-6          /* absolute and relative tolerance for doubles */
 
 static const char usage[] =
@@ -41,8 +39,7 @@ static const char usage[] =
 
 static int usage_error(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pipetrace quiz: %s%s\nTry 'pipetrace quiz --help'.\n", msg, arg);
-    return EXIT_USAGE;
+    return pt_cli_usage("quiz", "%s%s", msg, arg);
 }
 
 /* xorshift64* (Vigna, 2016): small, and the same numbers on every platform. */
@@ -230,18 +227,18 @@ int pt_cmd_quiz(int argc, char **argv)
     }
     if (v && seeded) return usage_error("--vertex and --seed exclude each other", "");
 
-    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
+    if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     rc = pt_journey_agrees(&s);
     if (rc != 1) {
         fprintf(stderr, "pipetrace quiz: %s: %s\n", s.path, rc < 0 ? "out of memory"
                 : "the quiz does not agree with the pipeline on this scene");
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     if (v) m = pt_cli_vertex_model(&s, "quiz", model, v);
     if ((v && !m) || (!v && model && !pt_cli_model(&s, "quiz", model))) {
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     if (!v) {
         uint64_t total = 0, st;
@@ -256,7 +253,7 @@ int pt_cmd_quiz(int argc, char **argv)
             fprintf(stderr, "pipetrace quiz: %s: no segment uses any vertex%s%s\n", s.path,
                     model ? " of " : "", model ? model : "");
             pt_scene_free(&s);
-            return EXIT_INPUT;
+            return PT_EXIT_INPUT;
         }
         st = seed ^ 0x9E3779B97F4A7C15ULL;
         if (st == 0) st = 1;
@@ -268,7 +265,7 @@ int pt_cmd_quiz(int argc, char **argv)
     if (pt_journey_of(&j, &s, m, v, 0) != 0) {
         fputs("pipetrace quiz: out of memory\n", stderr);
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     printf("pipetrace quiz: vertex %llu of model %s in %s", v, m->name, s.path);
     if (picked) printf(" (picked with --seed %llu)", seed);

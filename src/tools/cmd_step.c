@@ -23,8 +23,6 @@
 #include "io/explain.h"
 #include "core/pipetrace.h"
 
-#define EXIT_USAGE 1
-#define EXIT_INPUT 2
 
 static const char usage[] =
 "usage: pipetrace step [SCENE] [--vertex N] [--model NAME] [--all | --interactive]\n"
@@ -45,8 +43,7 @@ static const char usage[] =
 
 static int usage_error(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pipetrace step: %s%s\nTry 'pipetrace step --help'.\n", msg, arg);
-    return EXIT_USAGE;
+    return pt_cli_usage("step", "%s%s", msg, arg);
 }
 
 /* Print stage st of journey j: name, spaces, what, formula, numbers, next. */
@@ -165,7 +162,7 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
     pt_journey_compute(&jc, &par, m->v[v - 1]);
     if (!s->matrix) {                       /* the equivalent matrix camera */
         models = malloc(s->nmodels * sizeof *models);
-        if (!models) return EXIT_INPUT;
+        if (!models) return PT_EXIT_INPUT;
         memcpy(models, s->models, s->nmodels * sizeof *models);
         for (r = 0; r < s->nmodels; r++) {  /* World = T(translate) * S(1, 1, -1) */
             pt_mat4 t = pt_mat4_translate(models[r].translate.x, models[r].translate.y,
@@ -184,7 +181,7 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
         ms.znear = 0.01;
         ms.zfar = 1e9;
     }
-    if (pt_journey_of(&jm, &ms, &ms.models[mi], v, raw) != 0) { free(models); return EXIT_INPUT; }
+    if (pt_journey_of(&jm, &ms, &ms.models[mi], v, raw) != 0) { free(models); return PT_EXIT_INPUT; }
 
     printf("pipetrace step --compare-cameras: vertex %llu of model %s in %s\n",
            (unsigned long long)v, m->name, s->path);
@@ -231,7 +228,7 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
             printf("both cameras pick the same pixel\n");
     }
     free(models);
-    if (fflush(stdout) != 0) rc = EXIT_INPUT;
+    if (fflush(stdout) != 0) rc = PT_EXIT_INPUT;
     return rc;
 }
 
@@ -263,18 +260,18 @@ int pt_cmd_step(int argc, char **argv)
     }
     if (all && inter) return usage_error("--all and --interactive exclude each other", "");
 
-    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
+    if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     rc = pt_journey_agrees(&s);
     if (rc != 1) {
         fprintf(stderr, "pipetrace step: %s: %s\n", s.path, rc < 0 ? "out of memory"
                 : "the step-through does not agree with the pipeline on this scene");
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     m = pt_cli_vertex_model(&s, "step", model, v);
     if (!m) {
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
 
     if (compare) {
@@ -285,7 +282,7 @@ int pt_cmd_step(int argc, char **argv)
     if (pt_journey_of(&j, &s, m, v, raw) != 0) {
         fputs("pipetrace step: out of memory\n", stderr);
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     printf("pipetrace step: vertex %llu of model %s in %s\n", (unsigned long long)v, m->name, s.path);
     printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n\n",
@@ -306,7 +303,7 @@ int pt_cmd_step(int argc, char **argv)
     pt_scene_free(&s);
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("pipetrace step: cannot write to standard output\n", stderr);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     return 0;
 }

@@ -55,8 +55,6 @@
 #include "io/numfmt.h"
 #include "core/pipetrace.h"
 
-#define EXIT_USAGE 1
-#define EXIT_INPUT 2
 #define NEAREST    3             /* segments listed for a pixel nothing lit */
 
 static const char usage[] =
@@ -524,33 +522,22 @@ int pt_cmd_why(int argc, char **argv)
         const char *a = argv[k];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
         if (!strcmp(a, "--model")) {
-            if (k + 1 >= argc) {
-                fputs("pipetrace why: --model needs a model name\n"
-                      "Try 'pipetrace why --help'.\n", stderr);
-                return EXIT_USAGE;
-            }
+            if (k + 1 >= argc) return pt_cli_usage("why", "--model needs a model name");
             model = argv[++k];
             continue;
         }
-        if (a[0] == '-' && !(a[1] >= '0' && a[1] <= '9')) {
-            fprintf(stderr, "pipetrace why: unknown option %s\nTry 'pipetrace why --help'.\n", a);
-            return EXIT_USAGE;
-        }
-        if (npos == 3) {
-            fprintf(stderr, "pipetrace why: too many arguments ('%s'): expected [SCENE] "
-                    "X_FB Y_FB\nTry 'pipetrace why --help'.\n", a);
-            return EXIT_USAGE;
-        }
+        if (a[0] == '-' && !(a[1] >= '0' && a[1] <= '9'))
+            return pt_cli_usage("why", "unknown option %s", a);
+        if (npos == 3)
+            return pt_cli_usage("why", "too many arguments ('%s'): expected [SCENE] X_FB Y_FB", a);
         pos[npos++] = a;
     }
     memset(&w, 0, sizeof w);
     if (npos < 2 || parse_int(pos[npos - 2], &w.X) || parse_int(pos[npos - 1], &w.Y)) {
-        fputs("pipetrace why: needs a pixel: X_FB Y_FB (whole numbers)\n"
-              "Try 'pipetrace why --help'.\n", stderr);
-        return EXIT_USAGE;
+        return pt_cli_usage("why", "needs a pixel: X_FB Y_FB (whole numbers)");
     }
 
-    if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return EXIT_INPUT;
+    if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return PT_EXIT_INPUT;
     w.s = &s;
     rc = s.matrix ? 0 : pt_journey_agrees(&s);
     if (rc != 1) {
@@ -558,18 +545,18 @@ int pt_cmd_why(int argc, char **argv)
                 : "why follows the classic camera (model -> camera -> image -> pixel -> "
                   "viewport); this scene has the matrix camera: try 'pipetrace step'");
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     if (w.X < 0 || w.X >= s.fb_w || w.Y < 0 || w.Y >= s.fb_h) {
         fprintf(stderr, "pipetrace why: X_FB Y_FB = %lld %lld: the pixel lies outside the "
                 "%d x %d framebuffer of %s (x_fb 0..%d, y_fb 0..%d)\n", w.X, w.Y, s.fb_w,
                 s.fb_h, s.path, s.fb_w - 1, s.fb_h - 1);
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     if (model && !(w.sel = pt_cli_model(&s, "why", model))) {
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
 
     w.inside = w.X >= s.vp_x && w.X < s.vp_x + s.vp_w && w.Y >= s.vp_y && w.Y < s.vp_y + s.vp_h;
@@ -609,7 +596,7 @@ int pt_cmd_why(int argc, char **argv)
     pt_scene_free(&s);
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("pipetrace why: cannot write to standard output\n", stderr);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     return 0;
 }

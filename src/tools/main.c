@@ -17,8 +17,6 @@
 
 #define PT_VERSION "0.1.0"
 
-#define EXIT_USAGE 1
-#define EXIT_INPUT 2
 
 static const char usage[] =
 "usage: pipetrace [SCENE] [options]\n"
@@ -72,10 +70,7 @@ typedef struct cli {
 
 static int usage_error(const char *fmt, const char *arg)
 {
-    fputs("pipetrace: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputs("\nTry 'pipetrace --help'.\n", stderr);
-    return EXIT_USAGE;
+    return pt_cli_usage(NULL, fmt, arg);
 }
 
 /* Fill *c from argv.  Returns -1 to go on, else the exit status. */
@@ -143,8 +138,8 @@ static int parse_args(cli *c, int argc, char **argv)
 static int check_filters(const cli *c, const pt_scene *s)
 {
     if (c->opt.vertex)                      /* looks the model up too */
-        return pt_cli_vertex_model(s, NULL, c->opt.model, c->opt.vertex) ? 0 : EXIT_INPUT;
-    if (c->opt.model && !pt_cli_model(s, NULL, c->opt.model)) return EXIT_INPUT;
+        return pt_cli_vertex_model(s, NULL, c->opt.model, c->opt.vertex) ? 0 : PT_EXIT_INPUT;
+    if (c->opt.model && !pt_cli_model(s, NULL, c->opt.model)) return PT_EXIT_INPUT;
     return 0;
 }
 
@@ -172,13 +167,13 @@ int main(int argc, char **argv)
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
 
-    if (pt_cli_load(&s, c.scene) != 0) return EXIT_INPUT;
+    if (pt_cli_load(&s, c.scene) != 0) return PT_EXIT_INPUT;
     rc = check_filters(&c, &s);
     if (rc) { pt_scene_free(&s); return rc; }
     if (pt_plan_make(&plan, &s, &c.opt) != 0) {
         fputs("pipetrace: out of memory\n", stderr);
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
 
     memset(&l, 0, sizeof l);
@@ -229,5 +224,5 @@ int main(int argc, char **argv)
     pt_fb_free(&fb);
     pt_plan_free(&plan);
     pt_scene_free(&s);
-    return rc ? EXIT_INPUT : 0;
+    return rc ? PT_EXIT_INPUT : 0;
 }

@@ -34,8 +34,6 @@
 #include "io/outfile.h"
 #include "core/pipetrace.h"
 
-#define EXIT_USAGE 1
-#define EXIT_INPUT 2
 
 #define MIN_SECONDS   0.2        /* one measurement lasts at least this long */
 #define BATCH_SECONDS 0.01       /* one clock reading spans at least this long */
@@ -58,9 +56,7 @@ static const char usage[] =
 
 static int usage_error(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pipetrace accuracy: %s%s\nTry 'pipetrace accuracy --help'.\n",
-            msg, arg);
-    return EXIT_USAGE;
+    return pt_cli_usage("accuracy", "%s%s", msg, arg);
 }
 
 /* ===== the runs ===== */
@@ -717,9 +713,9 @@ int pt_cmd_accuracy(int argc, char **argv)
     }
     if (svg && no_time) return usage_error("--svg plots run time: drop --no-time", "");
 
-    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
+    if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     st = calloc(1, sizeof *st);
-    if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return EXIT_INPUT; }
+    if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return PT_EXIT_INPUT; }
     st->s = &s;
     st->rows = s.matrix ? &matrix_rows : &classic_rows;
     for (k = 0; k < NRUNS && rc == 0; k++) {
@@ -729,7 +725,7 @@ int pt_cmd_accuracy(int argc, char **argv)
     }
     if (rc != 0) {
         fputs("pipetrace accuracy: out of memory\n", stderr);
-        rc = EXIT_INPUT;
+        rc = PT_EXIT_INPUT;
         goto done;
     }
     for (k = 0; k < NRUNS; k++)
@@ -742,16 +738,16 @@ int pt_cmd_accuracy(int argc, char **argv)
     print_choices(st);
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("pipetrace accuracy: cannot write to standard output\n", stderr);
-        rc = EXIT_INPUT;
+        rc = PT_EXIT_INPUT;
         goto done;
     }
     if (svg) {
         pt_outfile out;
 
-        if (pt_outfile_open(&out, svg, err, sizeof err) != 0) rc = EXIT_INPUT;
+        if (pt_outfile_open(&out, svg, err, sizeof err) != 0) rc = PT_EXIT_INPUT;
         else {
             write_svg(out.f, st);
-            if (pt_outfile_commit(&out, err, sizeof err) != 0) rc = EXIT_INPUT;
+            if (pt_outfile_commit(&out, err, sizeof err) != 0) rc = PT_EXIT_INPUT;
         }
         if (rc) fprintf(stderr, "pipetrace accuracy: %s\n", err);
     }

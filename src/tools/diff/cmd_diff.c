@@ -37,15 +37,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/commands.h"
+#include "tools/cli.h"
 #include "io/numfmt.h"
 #include "io/outfile.h"
 #include "core/pipetrace.h"
 #include "io/tread.h"
 
-#define EXIT_SAME   0
-#define EXIT_DIFFER 1
-#define EXIT_USAGE  1
-#define EXIT_INPUT  2
 
 #define NONE UINT32_MAX          /* no record */
 
@@ -82,10 +79,7 @@ static const char *const side_name[2] = {"EXPECTED", "ACTUAL"};
 
 static int usage_error(const char *fmt, const char *arg)
 {
-    fputs("pipetrace: diff: ", stderr);
-    fprintf(stderr, fmt, arg);
-    fputs("\nTry 'pipetrace diff --help'.\n", stderr);
-    return EXIT_USAGE;
+    return pt_cli_usage("diff", fmt, arg);
 }
 
 /* A finite number >= 0 from s, or -1. */
@@ -177,14 +171,8 @@ typedef struct pbuf {
     size_t n;
 } pbuf;
 
-#if defined(__GNUC__)
-#define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
-#else
-#define PRINTF_LIKE(f, a)
-#endif
-
 /* Append to s what printf would print; text past its room is dropped. */
-static void pb_add(pbuf *s, const char *fmt, ...) PRINTF_LIKE(2, 3);
+static void pb_add(pbuf *s, const char *fmt, ...) PT_PRINTF_LIKE(2, 3);
 static void pb_add(pbuf *s, const char *fmt, ...)
 {
     va_list ap;
@@ -295,11 +283,11 @@ static int image_diff(const dopts *o, const pt_ppm img[2])
     else
         printf("The images are the same: %d x %d pixels.\n", w, h);
     if (o->image_out) {
-        if (write_highlight(o->image_out, a, b, w, h) != 0) return EXIT_INPUT;
+        if (write_highlight(o->image_out, a, b, w, h) != 0) return PT_EXIT_INPUT;
         printf("Highlight written to %s: differing pixels red, the others EXPECTED's in "
                "dimmed gray.\n", o->image_out);
     }
-    return ndiff || differ ? EXIT_DIFFER : EXIT_SAME;
+    return ndiff || differ ? PT_EXIT_DIFFER : PT_EXIT_OK;
 }
 
 /* ===== the vertex table ===== */
@@ -1516,7 +1504,7 @@ static int fill_table(dctx *c)
                         "first is on line %" PRIu32 ")\n", c->o->path[s], r->line,
                         pt_stage_infos[r->stage].name, who(c, r->model, r->v, name, sizeof name),
                         c->t[s].vx[e->rec[s][r->stage]].line);
-                return EXIT_INPUT;
+                return PT_EXIT_INPUT;
             }
             e->rec[s][r->stage] = (uint32_t)k;
         }
@@ -1701,7 +1689,7 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         if (pixels_compared) pb_add(&s, ", and the same %zu lit pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
         else pb_add(&s, ".");
         para("", s.b);
-        return EXIT_SAME;
+        return PT_EXIT_OK;
     }
     for (k = 0; k < 2; k++)
         for (st = 0; st < PT_NSTAGES_ALL; st++)
@@ -1784,7 +1772,7 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         pb_add(&s, " Both light the same %zu pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
     }
     para("", s.b);
-    return EXIT_DIFFER;
+    return PT_EXIT_DIFFER;
 }
 
 /* Print the raster check's details for the first differing segment. */
@@ -1885,18 +1873,18 @@ static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
 
     if (pt_tread_file(c->o->path[s], buf, len, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     *kind = pt_tread_kind(*buf, *len);
     if (*kind == PT_TK_CSV) {
         fprintf(stderr, "%s:1:1: error: a CSV trace has no header and no raster records; "
                 "write it with --format jsonl\n", c->o->path[s]);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     if (is_image(*kind)) return 0;
     if (pt_tread_parse(&c->t[s], c->o->path[s], *buf, *len, &c->nm, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     free(*buf);
     *buf = NULL;
@@ -1916,7 +1904,7 @@ int pt_cmd_diff(int argc, char **argv)
     rc = parse_args(&o, argc, argv);
     if (rc >= 0) return rc;
     c = calloc(1, sizeof *c);
-    if (!c) { fputs("pipetrace: out of memory\n", stderr); return EXIT_INPUT; }
+    if (!c) { fputs("pipetrace: out of memory\n", stderr); return PT_EXIT_INPUT; }
     c->o = &o;
     for (s = 0; s < 2; s++)
         if ((rc = load(c, s, &buf[s], &len[s], &kind[s])) != 0) goto done;
@@ -1928,7 +1916,7 @@ int pt_cmd_diff(int argc, char **argv)
         for (s = 0; s < 2 && rc == 0; s++) {
             if (pt_image_parse(&img[s], o.path[s], buf[s], len[s], err, sizeof err) != 0) {
                 fprintf(stderr, "%s\n", err);
-                rc = EXIT_INPUT;
+                rc = PT_EXIT_INPUT;
             }
         }
         if (rc == 0) rc = image_diff(&o, img);
@@ -1941,12 +1929,12 @@ int pt_cmd_diff(int argc, char **argv)
     }
     if (rc < 0) {
         fputs("pipetrace: out of memory\n", stderr);
-        rc = EXIT_INPUT;
+        rc = PT_EXIT_INPUT;
     }
 done:
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("pipetrace: cannot write to standard output\n", stderr);
-        rc = EXIT_INPUT;
+        rc = PT_EXIT_INPUT;
     }
     pt_tread_free(&c->t[0]);
     pt_tread_free(&c->t[1]);

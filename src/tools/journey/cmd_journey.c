@@ -26,8 +26,6 @@
 #include "io/outfile.h"
 #include "io/png.h"
 
-#define EXIT_USAGE 1
-#define EXIT_INPUT 2
 
 static const char usage[] =
 "usage: pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
@@ -49,8 +47,7 @@ static const char usage[] =
 
 static int usage_error(const char *msg, const char *arg)
 {
-    fprintf(stderr, "pipetrace journey: %s%s\nTry 'pipetrace journey --help'.\n", msg, arg);
-    return EXIT_USAGE;
+    return pt_cli_usage("journey", "%s%s", msg, arg);
 }
 
 /* Write the text in sb (or, sb NULL, the image fb) to path, whole or not at
@@ -158,17 +155,17 @@ int pt_cmd_journey(int argc, char **argv)
         return usage_error("two outputs name the same file: ",
                            svg && html && !strcmp(svg, html) ? svg : image);
 
-    if (pt_cli_load(&s, path) != 0) return EXIT_INPUT;
+    if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     if (s.matrix) {
         fprintf(stderr, "pipetrace journey: %s: the matrix camera (camera lookat) is not "
                 "drawn; journey draws the classic camera's stages model -> camera -> image "
                 "-> pixel -> viewport -> framebuffer -> index\n", s.path);
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
     if (!(m = pt_cli_vertex_model(&s, "journey", model, v))) {
         pt_scene_free(&s);
-        return EXIT_INPUT;
+        return PT_EXIT_INPUT;
     }
 
     pt_sbuf_init(&a);
@@ -187,5 +184,5 @@ int pt_cmd_journey(int argc, char **argv)
     pt_sbuf_free(&a);
     pt_sbuf_free(&b);
     pt_scene_free(&s);
-    return rc ? EXIT_INPUT : 0;
+    return rc ? PT_EXIT_INPUT : 0;
 }
