@@ -66,7 +66,7 @@ IO_O     = $B/numfmt.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/png.o $B/
 # journey in folders of their own).
 TOOLS_O  = $B/cli.o $B/accuracy.o $B/accuracy_matrix.o $B/journey.o $B/journey_html.o
 CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o \
-           $B/cmd_journey.o
+           $B/cmd_journey.o $B/cmd_stages.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
            $B/test_accuracy $B/test_png

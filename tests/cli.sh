@@ -183,4 +183,16 @@ check "cli-8.17 --raw-lookat: columns u = (0, .7071, .7071) and d = (0, 0, 1) ar
 run docs/examples/lookat-cube.scene --format jsonl --stage cvv --stage screen
 check "cli-8.18 --stage takes the matrix camera's stages" test "$(grep '"type":"vertex"' "$tmp/out" | grep -Evc '"stage":"(cvv|screen)"')" = 0 -a "$(grep -c '"type":"vertex"' "$tmp/out")" = 16
 
+
+# ---- pipetrace stages: the table of stages/pt_stage.c
+run stages
+check "cli-9.1 stages: exit 0" test "$rc" = 0
+check "cli-9.2 ... every stage once, the viewport once per camera" \
+    test "$(grep -c '^[a-z]' "$tmp/out")" = 14 -a "$(grep -c '^viewport ' "$tmp/out")" = 2
+check "cli-9.3 ... with the pixel stage's formula and values" \
+    grep -q '^  formula  x_pp = 0.5 + w/2.001 \* (x_ip + 1)' "$tmp/out"
+check "cli-9.4 ... value names and JSON keys" grep -q '^  values   x_vp (x), y_vp (y): integers' "$tmp/out"
+run stages extra
+check "cli-9.5 stages takes no arguments: usage error" test "$rc" = 1 -a -n "$(grep "Try 'pipetrace stages --help'" "$tmp/err")"
+
 report

@@ -4,7 +4,8 @@
 **
 ** Each takes the arguments after its name (argv[0] is the subcommand's name)
 ** and returns the exit status: 0 success, 1 usage error or "differs"
-** (diff), 2 bad input.  Each lives in its own src/cmd_NAME.c.
+** (diff), 2 bad input.  Each lives in src/tools/cmd_NAME.c or in a folder
+** src/tools/NAME/.
 */
 #ifndef PT_COMMANDS_H
 #define PT_COMMANDS_H
@@ -15,5 +16,6 @@ int pt_cmd_why(int argc, char **argv);    /* which segments lit a pixel, or why 
 int pt_cmd_quiz(int argc, char **argv);   /* ask a vertex's values stage by stage */
 int pt_cmd_accuracy(int argc, char **argv);  /* error against run time, per arithmetic */
 int pt_cmd_journey(int argc, char **argv);   /* draw one vertex's journey: SVG, HTML */
+int pt_cmd_stages(int argc, char **argv);    /* the table of stages */
 
 #endif
