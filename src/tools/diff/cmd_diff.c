@@ -12,9 +12,9 @@
 ** stage is recomputed from EXPECTED's value of the stage before, with the
 ** mistake, and must reproduce ACTUAL's value within the tolerance (from a text
 ** trace, for some input within its printed digits; see reproduces()).  The
-** formulas, right and wrong, are written out here rather than taken from
-** stages/: a student build replaces a stage's .c file, and the diff must
-** still know the reference.  Stage 5 has no known mistake listed.  Only the
+** formulas, right and wrong, are the catalogue's (src/tools/catalogue.h),
+** which knows the reference even in a student build.  Stage 5 has no known
+** mistake listed.  Only the
 ** classic camera's mistakes are known; matrix-camera traces are compared
 ** without naming any.
 **
@@ -24,10 +24,11 @@
 ** later stage's difference is not blamed on the later stage alone.
 **
 ** When every vertex agrees and the lit pixels differ, the rasterizer's
-** rounding is checked the same way: each differing segment's DDA is run again
-** from its rounded endpoints (its first and last steps in EXPECTED), first with
-** Java's rounding, which must give EXPECTED's pixels, then with the mistake,
-** which must give ACTUAL's.
+** rounding is checked the same way: the rasterizer (pt_raster_segment) is run
+** again on each differing segment from its rounded endpoints (its first and
+** last steps in EXPECTED), first with the right viewport stage, which must give
+** EXPECTED's pixels, then with the catalogue's viewport stage that rounds
+** wrongly, which must give ACTUAL's.
 */
 #include <errno.h>
 #include <inttypes.h>
@@ -42,6 +43,7 @@
 #include "io/outfile.h"
 #include "core/pipetrace.h"
 #include "io/tread.h"
+#include "tools/catalogue.h"
 
 
 #define NONE UINT32_MAX          /* no record */
@@ -505,241 +507,11 @@ static void print_stage_diff(int st, const pt_tvrec *a, const pt_tvrec *b, unsig
 
 /* ===== known mistakes ===== */
 
-/* One stage's values, for recomputing. */
-typedef struct sval {
-    int null;                    /* an integer stage without value */
-    double d[3];                 /* real stages */
-    int64_t n[2];                /* integer stages */
-} sval;
-
 /* What the formulas need from EXPECTED's header, for one vertex. */
 typedef struct hctx {
-    int w, h;                    /* viewport size */
-    int W, H;                    /* framebuffer size */
-    int x_ul, y_ul;              /* viewport corner */
-    int perspective;             /* 1: perspective camera */
-    int has_t;                   /* 1: t is known */
-    double t[3];                 /* the vertex's model's translation */
+    pt_stage_params par;         /* w, h, W, H, x_ul, y_ul, perspective, translation */
+    int has_t;                   /* 1: the translation is known */
 } hctx;
-
-typedef double (*rnd_fn)(double);
-
-/* Java's Math.round, as stages/s4_pixel2viewport.c computes it: floor(x), plus
-** one when x - floor(x) >= 0.5 (exact for every double). */
-static double java_round(double x)
-{
-    double r;
-
-    if (isnan(x)) return 0.0;
-    if (isinf(x)) return x;
-    r = floor(x);
-    if (x - r >= 0.5) r += 1.0;
-    return r;
-}
-
-static double c_round(double x) { return round(x); }            /* ties away from 0 */
-static double floor_half(double x) { return floor(x + 0.5); }   /* the sum rounds */
-
-/* Round x with rnd to an integer pixel coordinate, as pt_pix_round() does:
-** 1, or 0 when there is none (not finite, |x| >= 2^62). */
-static int pix_round(rnd_fn rnd, double x, int64_t *out)
-{
-    double r = rnd(x);
-
-    if (!isfinite(x) || !isfinite(r) || fabs(r) >= PT_PIX_LIMIT) { *out = 0; return 0; }
-    *out = (int64_t)r;
-    return 1;
-}
-
-/* The viewport stage with rounding rnd, x_vp = round(x_pp) + dx and y_vp =
-** sy * round(y_pp) + oy (the right formula: dx = -1, sy = -1, oy = h). */
-static void viewport_with(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy,
-                          const sval *in, sval *out)
-{
-    int64_t rx, ry;
-
-    out->null = !(pix_round(rnd, in->d[0], &rx) && pix_round(rnd, in->d[1], &ry));
-    out->n[0] = out->null ? 0 : rx + dx;
-    out->n[1] = out->null ? 0 : sy * ry + oy;
-}
-
-/* The index stage with idx = y * mul_y + x * mul_x, null outside W x H. */
-static void index_with(const hctx *h, int64_t mul_x, int64_t mul_y, const sval *in, sval *out)
-{
-    int64_t x = in->n[0], y = in->n[1];
-
-    out->null = in->null || x < 0 || x >= h->W || y < 0 || y >= h->H;
-    out->n[0] = out->null ? 0 : y * mul_y + x * mul_x;
-}
-
-static void mk_subtract(const hctx *h, const sval *in, sval *out)
-{
-    int k;
-    for (k = 0; k < 3; k++) out->d[k] = in->d[k] - h->t[k];
-}
-
-static void mk_divz(const hctx *h, const sval *in, sval *out)
-{
-    (void)h;
-    out->d[0] = in->d[0] / in->d[2];
-    out->d[1] = in->d[1] / in->d[2];
-    out->d[2] = -1.0;
-}
-
-static void mk_two(const hctx *h, const sval *in, sval *out)
-{
-    out->d[0] = 0.5 + h->w / 2.0 * (in->d[0] + 1);
-    out->d[1] = 0.5 + h->h / 2.0 * (in->d[1] + 1);
-}
-
-static void mk_two_int(const hctx *h, const sval *in, sval *out)
-{
-    out->d[0] = 0.5 + (double)(h->w / 2) * (in->d[0] + 1);
-    out->d[1] = 0.5 + (double)(h->h / 2) * (in->d[1] + 1);
-}
-
-static void mk_swap_wh(const hctx *h, const sval *in, sval *out)
-{
-    out->d[0] = 0.5 + h->h / 2.001 * (in->d[0] + 1);
-    out->d[1] = 0.5 + h->w / 2.001 * (in->d[1] + 1);
-}
-
-static void mk_cround(const hctx *h, const sval *in, sval *out)
-{
-    viewport_with(c_round, -1, -1, h->h, in, out);
-}
-
-static void mk_floor(const hctx *h, const sval *in, sval *out)
-{
-    viewport_with(floor_half, -1, -1, h->h, in, out);
-}
-
-static void mk_noflip1(const hctx *h, const sval *in, sval *out)
-{
-    (void)h;
-    viewport_with(java_round, -1, 1, -1, in, out);
-}
-
-static void mk_noflip0(const hctx *h, const sval *in, sval *out)
-{
-    (void)h;
-    viewport_with(java_round, -1, 1, 0, in, out);
-}
-
-static void mk_nominus1(const hctx *h, const sval *in, sval *out)
-{
-    viewport_with(java_round, 0, -1, h->h, in, out);
-}
-
-static void mk_xh(const hctx *h, const sval *in, sval *out)
-{
-    index_with(h, h->H, 1, in, out);
-}
-
-static void mk_vpw(const hctx *h, const sval *in, sval *out)
-{
-    index_with(h, 1, h->w, in, out);
-}
-
-/* The right formula of stage st, as stages/ computes it. */
-static void correct(int st, const hctx *h, const sval *in, sval *out)
-{
-    int k;
-
-    switch (st) {
-    case PT_STAGE_CAMERA:
-        for (k = 0; k < 3; k++) out->d[k] = in->d[k] + h->t[k];
-        break;
-    case PT_STAGE_IMAGE:
-        if (h->perspective) {
-            out->d[0] = in->d[0] / -in->d[2];
-            out->d[1] = in->d[1] / -in->d[2];
-            out->d[2] = -1.0;
-        } else {
-            out->d[0] = in->d[0];
-            out->d[1] = in->d[1];
-            out->d[2] = 0.0;
-        }
-        break;
-    case PT_STAGE_PIXEL:
-        out->d[0] = 0.5 + h->w / 2.001 * (in->d[0] + 1);
-        out->d[1] = 0.5 + h->h / 2.001 * (in->d[1] + 1);
-        break;
-    case PT_STAGE_VIEWPORT:
-        viewport_with(java_round, -1, -1, h->h, in, out);
-        break;
-    case PT_STAGE_FRAMEBUFFER:
-        out->null = in->null;
-        out->n[0] = in->null ? 0 : h->x_ul + in->n[0];
-        out->n[1] = in->null ? 0 : h->y_ul + in->n[1];
-        break;
-    default:
-        index_with(h, 1, h->W, in, out);
-        break;
-    }
-}
-
-/* A known mistake: made in `stage`, its formula written out in apply. */
-typedef struct mistake {
-    int stage;                   /* pt_stage it is made in */
-    const char *name;            /* what was done, a few words */
-    const char *how;             /* the wrong formula, and why it goes wrong */
-    void (*apply)(const hctx *h, const sval *in, sval *out);
-} mistake;
-
-static const mistake mistakes[] = {
-    {PT_STAGE_CAMERA, "translation subtracted",
-     "x_c = x_m - x_t (likewise y, z) instead of x_m + x_t", mk_subtract},
-    {PT_STAGE_IMAGE, "projection divides by z_c instead of -z_c",
-     "x_ip = x_c / z_c: the image comes out mirrored, x and y negated", mk_divz},
-    {PT_STAGE_PIXEL, "2 instead of 2.001",
-     "x_pp = 0.5 + w/2 * (x_ip + 1): every x_pp moves right by w/4002 * (x_ip + 1), "
-     "and the right edge x_ip = 1 lands on w + 0.5, between two pixels",
-     mk_two},
-    {PT_STAGE_PIXEL, "2 instead of 2.001",
-     "x_pp = 0.5 + w/2 * (x_ip + 1) with w/2 in integer arithmetic: half of an odd "
-     "size is lost", mk_two_int},
-    {PT_STAGE_PIXEL, "w and h swapped",
-     "x_pp = 0.5 + h/2.001 * (x_ip + 1), y_pp = 0.5 + w/2.001 * (y_ip + 1)", mk_swap_wh},
-    {PT_STAGE_VIEWPORT, "C round() instead of Java's Math.round",
-     "round() and lround() take ties away from zero: round(-2.5) = -3, "
-     "Math.round(-2.5) = -2", mk_cround},
-    {PT_STAGE_VIEWPORT, "floor(x + 0.5) instead of Java's Math.round",
-     "0.49999999999999994 + 0.5 rounds up to 1.0, so floor gives 1 where "
-     "Math.round gives 0", mk_floor},
-    {PT_STAGE_VIEWPORT, "missing y flip",
-     "y_vp = round(y_pp) - 1 instead of h - round(y_pp): the image comes out upside down",
-     mk_noflip1},
-    {PT_STAGE_VIEWPORT, "missing y flip",
-     "y_vp = round(y_pp) instead of h - round(y_pp): the image comes out upside down",
-     mk_noflip0},
-    {PT_STAGE_VIEWPORT, "missing -1 in x_vp",
-     "x_vp = round(x_pp) instead of round(x_pp) - 1: one pixel too far right",
-     mk_nominus1},
-    {PT_STAGE_INDEX, "index x * H + y",
-     "idx = x_fb * H + y_fb (column by column) instead of y_fb * W + x_fb", mk_xh},
-    {PT_STAGE_INDEX, "viewport width instead of framebuffer width",
-     "idx = y_fb * w + x_fb with the viewport's w instead of the framebuffer's W", mk_vpw},
-};
-
-#define NMISTAKES (sizeof mistakes / sizeof mistakes[0])
-
-/* The mistakes of the rasterizer's rounding (pt_pix_round() in s4). */
-static const struct {
-    const char *name;            /* as in mistakes[] */
-    const char *how;
-    rnd_fn rnd;
-} raster_mistakes[] = {
-    {"floor(x + 0.5) instead of Java's Math.round",
-     "in the rasterizer's rounding (pt_pix_round in s4): the DDA's running y can "
-     "be 0.49999999999999994, which floor(y + 0.5) takes to 1 and Math.round to 0",
-     floor_half},
-    {"C round() instead of Java's Math.round",
-     "in the rasterizer's rounding (pt_pix_round in s4): round() takes ties away "
-     "from zero", c_round},
-};
-
-#define NRASTER (sizeof raster_mistakes / sizeof raster_mistakes[0])
 
 /* Range of one recomputed value over the inputs tried. */
 typedef struct vrange {
@@ -749,7 +521,7 @@ typedef struct vrange {
     int64_t ilo, ihi;
 } vrange;
 
-static void range_add(vrange *r, int real, const sval *o, int k)
+static void range_add(vrange *r, int real, const pt_cat_val *o, int k)
 {
     if (real) {
         double x = o->d[k];
@@ -821,17 +593,17 @@ static int in_ranges(const dctx *c, const vrange r[4], int st, const pt_tvrec *a
 **     the samples() of each, keeping only inputs that the right formula takes
 **     to EXPECTED's own record erec (a tie printed "-2.500000" stays a tie).
 ** An integer input (framebuffer -> index) is exact. */
-static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sval *in,
+static int reproduces(const dctx *c, const pt_mistake *mk, const hctx *h, const pt_cat_val *in,
                       const double in_slack[3], int in_real, int st,
-                      const pt_tvrec *erec, const pt_tvrec *arec, sval *at_in)
+                      const pt_tvrec *erec, const pt_tvrec *arec, pt_cat_val *at_in)
 {
     vrange r[4];
-    sval x, out, right;
+    pt_cat_val x, out, right;
     int k, p;
 
     memset(r, 0, sizeof r);
     memset(at_in, 0, sizeof *at_in);
-    mk->apply(h, in, at_in);
+    mk->apply(&h->par, in, at_in);
     if (!in_real) {
         for (k = 0; k < ncoord(st); k++) range_add(&r[k], is_real(st), at_in, k);
     } else if (is_real(st)) {
@@ -844,7 +616,7 @@ static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sva
             for (j = 0; j < nvary; j++, q /= 3)
                 x.d[vary[j]] += (q % 3 - 1) * in_slack[vary[j]];
             memset(&out, 0, sizeof out);
-            mk->apply(h, &x, &out);
+            mk->apply(&h->par, &x, &out);
             for (k = 0; k < ncoord(st); k++) range_add(&r[k], 1, &out, k);
         }
     } else {
@@ -855,11 +627,11 @@ static int reproduces(const dctx *c, const mistake *mk, const hctx *h, const sva
                 x = *in;
                 x.d[k] = v[p];
                 memset(&right, 0, sizeof right);
-                correct(st, h, &x, &right);
+                pt_cat_right(st, &h->par, &x, &right);
                 if (right.null != ((erec->flags & PT_REC_NULL) != 0) ||
                     (!right.null && right.n[k] != erec->u.n[k])) continue;
                 memset(&out, 0, sizeof out);
-                mk->apply(h, &x, &out);
+                mk->apply(&h->par, &x, &out);
                 range_add(&r[k], 0, &out, k);
             }
         }
@@ -874,12 +646,16 @@ static int hctx_of(const dctx *c, uint32_t model, hctx *h)
     const pt_thdr *hd = &c->t[0].hdr;
 
     if (!hd->have || hd->perspective < 0 || hd->vp_w < 1 || hd->vp_h < 1) return 0;
-    h->w = hd->vp_w; h->h = hd->vp_h;
-    h->W = hd->fb_w; h->H = hd->fb_h;
-    h->x_ul = hd->vp_x; h->y_ul = hd->vp_y;
-    h->perspective = hd->perspective;
+    h->par.w = hd->vp_w; h->par.h = hd->vp_h;
+    h->par.W = hd->fb_w; h->par.H = hd->fb_h;
+    h->par.x_ul = hd->vp_x; h->par.y_ul = hd->vp_y;
+    h->par.perspective = hd->perspective;
     h->has_t = model < c->nm.n && c->has_tr[model];
-    if (h->has_t) memcpy(h->t, c->tr[model], sizeof h->t);
+    if (h->has_t) {
+        h->par.translate.x = c->tr[model][0];
+        h->par.translate.y = c->tr[model][1];
+        h->par.translate.z = c->tr[model][2];
+    }
     return 1;
 }
 
@@ -889,7 +665,7 @@ static int hctx_of(const dctx *c, uint32_t model, hctx *h)
 ** translation is 0 0 0; framebuffer = viewport when the viewport is at 0,0).
 ** Returns 0 when there is no such record. */
 static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
-                      sval *in, double in_slack[3], int *from)
+                      pt_cat_val *in, double in_slack[3], int *from)
 {
     int p = st - 1, k;
     uint32_t i;
@@ -897,10 +673,10 @@ static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
 
     if (p < 0) return 0;
     i = e->rec[0][p];
-    if (i == NONE && p == PT_STAGE_CAMERA && h->has_t &&
-        h->t[0] == 0 && h->t[1] == 0 && h->t[2] == 0)
+    if (i == NONE && p == PT_STAGE_CAMERA && h->has_t && h->par.translate.x == 0 &&
+        h->par.translate.y == 0 && h->par.translate.z == 0)
         i = e->rec[0][p = PT_STAGE_MODEL];
-    if (i == NONE && p == PT_STAGE_FRAMEBUFFER && h->x_ul == 0 && h->y_ul == 0)
+    if (i == NONE && p == PT_STAGE_FRAMEBUFFER && h->par.x_ul == 0 && h->par.y_ul == 0)
         i = e->rec[0][p = PT_STAGE_VIEWPORT];
     if (i == NONE) return 0;
     r = &c->t[0].vx[i];
@@ -920,7 +696,7 @@ static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
 }
 
 /* Append the values of stage st in *v to sb: "x_pp = 1.5, y_pp = 2". */
-static void sval_str(pbuf *sb, int st, const sval *v)
+static void pt_cat_val_str(pbuf *sb, int st, const pt_cat_val *v)
 {
     char b[PT_NUMLEN];
     int k;
@@ -938,7 +714,7 @@ static void sval_str(pbuf *sb, int st, const sval *v)
 static void explain(dctx *c, const vent *e, int st, int print)
 {
     hctx h;
-    sval in, out;
+    pt_cat_val in, out;
     double in_slack[3];
     int from, found = 0;
     size_t k;
@@ -963,12 +739,12 @@ static void explain(dctx *c, const vent *e, int st, int print)
                           "recompute from)\n", pt_stage_infos[st - 1].name);
         return;
     }
-    for (k = 0; k < NMISTAKES; k++) {
-        const mistake *mk = &mistakes[k];
+    for (k = 0; k < PT_NMISTAKES; k++) {
+        const pt_mistake *mk = &pt_mistakes[k];
         if (mk->stage != st) continue;
         if (st == PT_STAGE_CAMERA && !h.has_t) continue;
-        if (st == PT_STAGE_IMAGE && !h.perspective) continue;
-        if (mk->apply == mk_two_int && h.w % 2 == 0 && h.h % 2 == 0) continue;
+        if (st == PT_STAGE_IMAGE && !h.par.perspective) continue;
+        if (mk->odd_only && h.par.w % 2 == 0 && h.par.h % 2 == 0) continue;
         if (!reproduces(c, mk, &h, &in, in_slack, is_real(from), st, erec, arec, &out)) continue;
         if (last && !strcmp(last, mk->name)) continue;   /* a second form of the same */
         last = mk->name;
@@ -980,9 +756,9 @@ static void explain(dctx *c, const vent *e, int st, int print)
         memset(&sb, 0, sizeof sb);
         pb_add(&sb, "check: the %s stage recomputed with it from EXPECTED's %s record (",
                pt_stage_infos[st].name, pt_stage_infos[from].name);
-        sval_str(&sb, from, &in);
+        pt_cat_val_str(&sb, from, &in);
         pb_add(&sb, ") gives ");
-        sval_str(&sb, st, &out);
+        pt_cat_val_str(&sb, st, &out);
         pb_add(&sb, ", as ACTUAL has%s.", c->t[0].prec >= 0 || c->t[1].prec >= 0 ?
                " (within the printed digits)" : "");
         para("      ", sb.b);
@@ -1179,6 +955,7 @@ static skey *sorted_steps(const pt_tread *t, size_t *n)
 typedef struct plist {
     int64_t (*p)[2];             /* owned */
     size_t n, cap;
+    int oom;                     /* 1: plist_add failed while replaying */
 } plist;
 
 static int plist_add(plist *l, int64_t x, int64_t y)
@@ -1196,59 +973,35 @@ static int plist_add(plist *l, int64_t x, int64_t y)
     return 0;
 }
 
-/* One DDA step's pixel, as step_pixel() in raster.c, rounding with rnd. */
-static void step_pixel(rnd_fn rnd, int64_t s, double acc, int transposed, int h,
-                       int64_t *x, int64_t *y)
+static void replay_pixel(void *ud, int64_t x, int64_t y)
 {
-    int64_t r;
-
-    if (!pix_round(rnd, acc, &r))
-        r = acc > 0 ? (int64_t)PT_PIX_LIMIT : -(int64_t)PT_PIX_LIMIT;
-    if (transposed) { *x = r - 1; *y = h - s; }
-    else            { *x = s - 1; *y = h - r; }
+    plist *l = ud;
+    if (plist_add(l, x, y) != 0) l->oom = 1;
 }
 
-static int inside(int64_t x, int64_t y, int w, int h)
+static void replay_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
 {
-    return x >= 0 && x < w && y >= 0 && y < h;
+    (void)ud; (void)count; (void)first; (void)last;
 }
 
-/* Run raster.c's DDA again, rounding its running coordinate with rnd, for the
-** segment whose rounded endpoints are (X0, Y0) and (X1, Y1) (logical pixels),
-** in a w x h viewport; the pixels it writes go to *out in step order.  The same
-** steps as pt_raster_segment(), clipped runs skipped by pt_raster_advance(). */
-static int replay(int64_t X0, int64_t Y0, int64_t X1, int64_t Y1, int w, int h,
-                  rnd_fn rnd, plist *out)
+/* Run the rasterizer again, each step's pixel found by to_vp, for the segment
+** whose rounded endpoints are ends[] = X0 Y0 X1 Y1 (logical pixels), in a w x h
+** viewport; the pixels it writes go to *out in step order.  Returns 0, or -1
+** when out of memory. */
+static int replay(const int64_t ends[4], int w, int h, pt_raster_vp to_vp, plist *out)
 {
-    double x0 = (double)X0, y0 = (double)Y0, x1 = (double)X1, y1 = (double)Y1, m, acc, t;
-    int64_t s, s0, s1, band_hi, px, py;
-    int transposed;
+    pt_vec2 p0, p1;
+    pt_raster_out ro;
 
+    p0.x = (double)ends[0]; p0.y = (double)ends[1];
+    p1.x = (double)ends[2]; p1.y = (double)ends[3];
+    ro.pixel = replay_pixel;
+    ro.clip = replay_clip;
+    ro.ud = out;
     out->n = 0;
-    if (X0 == X1 && Y0 == Y1) {             /* degenerate: one pixel */
-        step_pixel(rnd, X0, y0, 0, h, &px, &py);
-        return inside(px, py, w, h) ? plist_add(out, px, py) : 0;
-    }
-    transposed = fabs(y1 - y0) > fabs(x1 - x0);
-    if (transposed) { t = x0; x0 = y0; y0 = t; t = x1; x1 = y1; y1 = t; }
-    if (x1 < x0) { t = x0; x0 = x1; x1 = t; t = y0; y0 = y1; y1 = t; }
-    m = (y1 - y0) / (x1 - x0);
-    s0 = (int64_t)x0;
-    s1 = (int64_t)x1;
-    band_hi = transposed ? h : w;
-    acc = y0;
-    s = s0;
-    if (s < 1) {                            /* before the band */
-        int64_t last = s1 < 0 ? s1 : 0;
-        acc = pt_raster_advance(acc, m, (uint64_t)(last - s)) + m;
-        s = last + 1;
-    }
-    for (; s <= s1 && s <= band_hi; s++) {
-        step_pixel(rnd, s, acc, transposed, h, &px, &py);
-        if (inside(px, py, w, h) && plist_add(out, px, py) != 0) return -1;
-        acc += m;
-    }
-    return 0;
+    out->oom = 0;
+    pt_raster_segment(p0, p1, w, h, to_vp, &ro);
+    return out->oom ? -1 : 0;
 }
 
 static int plist_eq(const plist *a, const plist *b)
@@ -1259,7 +1012,7 @@ static int plist_eq(const plist *a, const plist *b)
 /* What the raster check found. */
 typedef struct rstat {
     size_t segs_differ;          /* segments whose pixels differ */
-    size_t hits[NRASTER];        /* ... that each rounding mistake reproduces */
+    size_t hits[PT_NRASTER_MISTAKES];        /* ... that each rounding mistake reproduces */
     int first_set;               /* 1: first_* below are set */
     uint32_t first_model;        /* the first differing segment */
     uint64_t first_seg;
@@ -1274,7 +1027,7 @@ static int check_raster(dctx *c, rstat *rs)
     const pt_thdr *hd = &c->t[0].hdr;
     size_t n[2], k[2] = {0, 0}, j;
     skey *s[2];
-    plist pl[2] = {{NULL, 0, 0}, {NULL, 0, 0}}, re = {NULL, 0, 0};
+    plist pl[2] = {{NULL, 0, 0, 0}, {NULL, 0, 0, 0}}, re = {NULL, 0, 0, 0};
     int side, rc = 0;
 
     memset(rs, 0, sizeof *rs);
@@ -1315,7 +1068,8 @@ static int check_raster(dctx *c, rstat *rs)
         if (rc != 0 || plist_eq(&pl[0], &pl[1])) continue;
         /* rounded endpoints: EXPECTED's first and last steps, as logical pixels;
         ** a viewport beyond PT_MAX_SIZE is no trace of pipetrace's: not replayed */
-        if (end[0] > beg[0] && sane && hd->vp_w <= PT_MAX_SIZE && hd->vp_h <= PT_MAX_SIZE) {
+        if (end[0] > beg[0] && sane && hd->vp_w >= 1 && hd->vp_h >= 1 &&
+            hd->vp_w <= PT_MAX_SIZE && hd->vp_h <= PT_MAX_SIZE) {
             const skey *f = &s[0][beg[0]], *l = &s[0][end[0] - 1];
             int64_t fx, fy, lx, ly;
             if (f->clip) { fx = c->t[0].cl[f->k].first[0]; fy = c->t[0].cl[f->k].first[1]; }
@@ -1325,7 +1079,7 @@ static int check_raster(dctx *c, rstat *rs)
             ends[0] = fx + 1; ends[1] = hd->vp_h - fy;
             ends[2] = lx + 1; ends[3] = hd->vp_h - ly;
             have_ends = 1;
-            if (replay(ends[0], ends[1], ends[2], ends[3], hd->vp_w, hd->vp_h, java_round, &re))
+            if (replay(ends, hd->vp_w, hd->vp_h, pt_pixel2viewport, &re))
                 rc = -1;
             ok = rc == 0 && plist_eq(&re, &pl[0]);
         }
@@ -1337,9 +1091,8 @@ static int check_raster(dctx *c, rstat *rs)
             rs->ends_ok = ok;
         }
         rs->segs_differ++;
-        for (j = 0; ok && rc == 0 && j < NRASTER; j++) {
-            if (replay(ends[0], ends[1], ends[2], ends[3], hd->vp_w, hd->vp_h,
-                       raster_mistakes[j].rnd, &re)) rc = -1;
+        for (j = 0; ok && rc == 0 && j < PT_NRASTER_MISTAKES; j++) {
+            if (replay(ends, hd->vp_w, hd->vp_h, pt_raster_mistakes[j].to_vp, &re)) rc = -1;
             else if (plist_eq(&re, &pl[1])) rs->hits[j]++;
         }
     }
@@ -1709,7 +1462,7 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
     for (st = 0; st < PT_NSTAGES_ALL; st++)
         if (c->first_at[st] && (top < 0 || c->first_at[st] > c->first_at[top])) top = st;
     if (top >= 0) {
-        size_t best = NMISTAKES;
+        size_t best = PT_NMISTAKES;
         int quiet = -1;                     /* a silent stage before top */
         for (k = 0; k < PT_NSTAGES_ALL && (int)pt_trace_order[k] != top; k++)
             if (c->silent_recs[0][pt_trace_order[k]] || c->silent_recs[1][pt_trace_order[k]])
@@ -1724,14 +1477,14 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
             pb_add(&s, " But the %s stage before it did not report, so the mistake may be "
                    "there, not in the %s stage.", pt_stage_infos[quiet].name,
                    pt_stage_infos[top].name);
-        for (k = 0; k < NMISTAKES; k++)
-            if (mistakes[k].stage == top && c->mk_hits[k] &&
-                (best == NMISTAKES || c->mk_hits[k] > c->mk_hits[best])) best = k;
-        if (best < NMISTAKES) {
+        for (k = 0; k < PT_NMISTAKES; k++)
+            if (pt_mistakes[k].stage == top && c->mk_hits[k] &&
+                (best == PT_NMISTAKES || c->mk_hits[k] > c->mk_hits[best])) best = k;
+        if (best < PT_NMISTAKES) {
             size_t hits = 0;
-            for (k = 0; k < NMISTAKES; k++)
-                if (!strcmp(mistakes[k].name, mistakes[best].name)) hits += c->mk_hits[k];
-            pb_add(&s, " Likely mistake there: %s, which reproduces ACTUAL", mistakes[best].name);
+            for (k = 0; k < PT_NMISTAKES; k++)
+                if (!strcmp(pt_mistakes[k].name, pt_mistakes[best].name)) hits += c->mk_hits[k];
+            pb_add(&s, " Likely mistake there: %s, which reproduces ACTUAL", pt_mistakes[best].name);
             if (hits < c->first_at[top])
                 pb_add(&s, " for %zu of those %zu vertices.", hits, c->first_at[top]);
             else if (hits > 2) pb_add(&s, " for all %zu.", hits);
@@ -1751,14 +1504,14 @@ static int summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                nlit[0], nlit[1], nmiss, nextra);
         if (vertices_differ) pb_add(&s, ", as a consequence.");
         else if (rs->segs_differ) {
-            size_t best = NRASTER;
+            size_t best = PT_NRASTER_MISTAKES;
             pb_add(&s, ", so the rasterizer differs, in %zu segment%s.",
                    rs->segs_differ, rs->segs_differ > 1 ? "s" : "");
-            for (k = 0; k < NRASTER; k++)
-                if (rs->hits[k] && (best == NRASTER || rs->hits[k] > rs->hits[best])) best = k;
-            if (best < NRASTER) {
+            for (k = 0; k < PT_NRASTER_MISTAKES; k++)
+                if (rs->hits[k] && (best == PT_NRASTER_MISTAKES || rs->hits[k] > rs->hits[best])) best = k;
+            if (best < PT_NRASTER_MISTAKES) {
                 pb_add(&s, " Likely mistake: %s in the rasterizer's rounding (pt_pix_round in "
-                       "s4), which reproduces ACTUAL's pixels", raster_mistakes[best].name);
+                       "s4), which reproduces ACTUAL's pixels", pt_raster_mistakes[best].name);
                 if (rs->hits[best] < rs->segs_differ)
                     pb_add(&s, " for %zu of those segments.", rs->hits[best]);
                 else pb_add(&s, ".");
@@ -1794,10 +1547,10 @@ static void report_raster(const dctx *c, const rstat *rs)
         pb_add(&sb, " Its endpoints cannot be read off EXPECTED's steps, so no mistake was "
                "checked.");
     para("  ", sb.b);
-    for (k = 0; rs->ends_ok && k < NRASTER; k++) {
+    for (k = 0; rs->ends_ok && k < PT_NRASTER_MISTAKES; k++) {
         if (!rs->hits[k]) continue;
-        printf("  likely mistake: %s\n", raster_mistakes[k].name);
-        para("    ", raster_mistakes[k].how);
+        printf("  likely mistake: %s\n", pt_raster_mistakes[k].name);
+        para("    ", pt_raster_mistakes[k].how);
         memset(&sb, 0, sizeof sb);
         pb_add(&sb, "check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
                ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round and "
@@ -1819,7 +1572,7 @@ static int trace_diff(dctx *c)
     rc = fill_table(c);
     if (rc) return rc;
     if (fill_translations(c) != 0 || find_silent(c) != 0) return -1;
-    c->mk_hits = calloc(NMISTAKES, sizeof *c->mk_hits);
+    c->mk_hits = calloc(PT_NMISTAKES, sizeof *c->mk_hits);
     if (!c->mk_hits) return -1;
 
     print_intro(c);
