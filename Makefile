@@ -116,7 +116,7 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	     END { print "    \"\";" }' $< > $@
 $B/bench: tests/bench.c $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
-$B/test_%: tests/test_%.c tests/testhelp.h $B/libpipetrace.a
+$B/test_%: tests/test_%.c tests/testhelp.h tests/refcases.h $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B:
 	mkdir -p $B

@@ -12,12 +12,12 @@
 ** could fail), and the edge cases of rounding agree with stages/.
 */
 #define _POSIX_C_SOURCE 200809L
-#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "testhelp.h"
+#include "refcases.h"
 #include "core/pipetrace.h"
 #include "tools/catalogue.h"
 
@@ -114,11 +114,6 @@ static void run_case(const char *dir, const char *name)
     pt_scene_free(&s);
 }
 
-static int by_name(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
 /* The numbers of tests/data/diff/offset.scene: W != w, H != h, an odd h. */
 static pt_stage_params offset_params(void)
 {
@@ -202,27 +197,7 @@ static void hand_checks(void)
 
 int main(int argc, char **argv)
 {
-    const char *dir = argc > 1 ? argv[1] : "tests/reference";
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    char *names[4096];
-    size_t n = 0, k;
-
-    PT_CHECK("cat-0 reference directory opens", d != NULL);
-    while (d && (e = readdir(d)) != NULL && n < 4096) {
-        size_t len = strlen(e->d_name);
-        if (len > 6 && strcmp(e->d_name + len - 6, ".scene") == 0) {
-            names[n] = malloc(len - 5);
-            memcpy(names[n], e->d_name, len - 6);
-            names[n][len - 6] = '\0';
-            n++;
-        }
-    }
-    if (d) closedir(d);
-    PT_CHECK("cat-0 reference cases found", n > 0);
-    qsort(names, n, sizeof names[0], by_name);
-    for (k = 0; k < n; k++) { run_case(dir, names[k]); free(names[k]); }
+    pt_ref_run(argc, argv, "test_catalogue", run_case);
     hand_checks();
-    printf("test_catalogue: %zu cases from %s\n", n, dir);
     return pt_test_report();
 }
