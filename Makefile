@@ -39,6 +39,10 @@ ifneq ($(strip $(STAGE_camera)$(STAGE_projection)$(STAGE_pixel)$(STAGE_viewport)
 B       = build-student
 $(shell mkdir -p $B; echo '$(CHOICE)' | cmp -s - $B/choice || echo '$(CHOICE)' > $B/choice)
 STAGE_CC = $(CC) $(ALLCFLAGS) -Istages -c -o $@ $<
+STUDENT  = $(strip $(if $(STAGE_camera),camera) $(if $(STAGE_projection),projection) \
+           $(if $(STAGE_pixel),pixel) $(if $(STAGE_viewport),viewport) \
+           $(if $(STAGE_framebuffer),framebuffer) $(if $(STAGE_index),index))
+CHOSEN   = $B/choice
 $B/s1_model2camera.o:   $(or $(STAGE_camera),stages/s1_model2camera.c) stages/*.h $B/choice; $(STAGE_CC)
 $B/s2_camera2image.o:   $(or $(STAGE_projection),stages/s2_camera2image.c) stages/*.h $B/choice; $(STAGE_CC)
 $B/s3_image2pixel.o:    $(or $(STAGE_pixel),stages/s3_image2pixel.c) stages/*.h $B/choice; $(STAGE_CC)
@@ -47,6 +51,10 @@ $B/s5_viewport2fb.o:    $(or $(STAGE_framebuffer),stages/s5_viewport2fb.c) stage
 $B/s6_fb2index.o:       $(or $(STAGE_index),stages/s6_fb2index.c) stages/*.h $B/choice; $(STAGE_CC)
 endif
 # ===== end of student stages =====
+# $B/buildinfo.c names the stages replaced ("" in build/): pipetrace step and
+# --version say so (pt_student_stages, src/tools/cli.h).
+$B/buildinfo.c: Makefile $(CHOSEN) | $B
+	printf '#include "tools/cli.h"\nconst char pt_student_stages[] = "%s";\n' '$(STUDENT)' > $@
 
 # The layers, bottom up (docs/architecture.md; tests/layers.py checks that
 # none includes a header of a layer above it).
@@ -62,14 +70,17 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o
 CORE_O   = $B/scene.o $B/builtin.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/png.o $B/outfile.o
-# src/tools/: the command line and the subcommands (diff, accuracy and
-# journey in folders of their own).
-TOOLS_O  = $B/cli.o $B/accuracy.o $B/accuracy_matrix.o $B/journey.o $B/journey_html.o
-CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o \
-           $B/cmd_journey.o $B/cmd_stages.o
+# src/tools/: the command line, the catalogue of formulas and mistakes (diff
+# and step), the subcommands (diff, accuracy and journey in folders of their
+# own; diff's parts listed with the commands).
+TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/accuracy.o $B/accuracy_matrix.o \
+           $B/journey.o $B/journey_html.o
+CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o \
+           $B/dpixels.o $B/dsummary.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o \
+           $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
-           $B/test_accuracy $B/test_png
+           $B/test_accuracy $B/test_png $B/test_catalogue
 
 all: $B/pipetrace
 
@@ -96,6 +107,8 @@ $B/%.o: src/tools/journey/%.c $(HDRS) | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
 $B/builtin.o: $B/builtin.c src/core/builtin.h
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/buildinfo.o: $B/buildinfo.c src/tools/cli.h
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
 # The built-in scene is docs/examples/builtin.scene, embedded as a C string.
 $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	awk 'BEGIN { print "#include \"core/builtin.h\""; print "const char pt_builtin_scene[] =" } \
@@ -103,7 +116,7 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	     END { print "    \"\";" }' $< > $@
 $B/bench: tests/bench.c $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
-$B/test_%: tests/test_%.c tests/testhelp.h $B/libpipetrace.a
+$B/test_%: tests/test_%.c tests/testhelp.h tests/refcases.h $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B:
 	mkdir -p $B

@@ -25,6 +25,12 @@
 
 #include "pt_stage.h"
 
+/* The divisor of the formula: 2.001, not 2 (Blinn, "A Trip Down the Graphics
+** Pipeline", 1996, p. 142; see above).  s3_image2pixel.c writes the number
+** itself, so that a student's copy shows the whole formula; the tools that
+** recompute the formula (src/tools/catalogue.c) use this name. */
+#define PT_PIXEL_DIVISOR 2.001
+
 /* Map (ip.x, ip.y) into the pixel plane of a w x h viewport and report the pixel
 ** record to sink (may be NULL).  Requires w, h >= 1.  This function can't fail. */
 pt_vec2 pt_image2pixel(pt_vec3 ip, int w, int h, const pt_sink *sink);

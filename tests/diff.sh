@@ -124,6 +124,19 @@ mistaken s3_two
 "$tmp/sb/pipetrace" docs/exercises/03-pixel.scene --format jsonl --trace "$tmp/ex3.jsonl"
 check "diff-1.19 docs/exercises/03-pixel-two.jsonl is today's student trace (else: make it again as docs/exercises/README.md says)" \
     cmp "$tmp/ex3.jsonl" docs/exercises/03-pixel-two.jsonl
+
+# pipetrace step on a student build: says so, and shows where the student's
+# stage leaves the formula (the catalogue's, src/tools/catalogue.c)
+"$tmp/sb/pipetrace" step docs/examples/triangle.scene --vertex 1 >"$tmp/step.out" 2>&1
+check "diff-10.1 step on a student build says so" \
+    grep -qxF "student build: the pixel stage is yours (make STAGE_pixel=...)" "$tmp/step.out"
+check "diff-10.2 ... and where the pixel stage differs from the formula" \
+    grep -qxF "  check    your stage gave x_pp = 5.5; the formula gives 5.497501249375313" "$tmp/step.out"
+check "diff-10.3 ... in the pixel stage only" test "$(grep -c 'your stage gave' "$tmp/step.out")" = 2
+check "diff-10.4 --version says so too" sh -c "'$tmp/sb/pipetrace' --version | grep -q 'student build: the pixel stage'"
+"$exe" step docs/examples/triangle.scene --vertex 1 >"$tmp/step.out" 2>&1
+check "diff-10.5 the reference build: no check line" test "$(grep -c 'your stage gave' "$tmp/step.out")" = 0
+check "diff-10.6 ... and no student note" test "$(grep -c 'student build' "$tmp/step.out")" = 0
 mistaken s4_cround
 "$tmp/sb/pipetrace" docs/exercises/04-rounding.scene --format jsonl --trace "$tmp/ex4.jsonl"
 check "diff-1.20 docs/exercises/04-rounding-cround.jsonl is today's student trace (else: make it again as docs/exercises/README.md says)" \

@@ -22,6 +22,7 @@ raster      1 $B/test_raster
 matrix      1 $B/test_matrix
 scene       1 $B/test_scene
 reference   1 $B/test_reference $ref
+catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
 explain     1 $B/test_explain
 png         1 $B/test_png

@@ -9,12 +9,12 @@
 ** pixels exactly.  Format of .expect: tests/reference/README.md.
 */
 #define _POSIX_C_SOURCE 200809L
-#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "testhelp.h"
+#include "refcases.h"
 #include "core/pipeline.h"
 
 /* What the pipeline produced for one case. */
@@ -166,33 +166,8 @@ static void run_case(const char *dir, const char *name)
     pt_scene_free(&s);
 }
 
-static int by_name(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
 int main(int argc, char **argv)
 {
-    const char *dir = argc > 1 ? argv[1] : "tests/reference";
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    char *names[4096];
-    size_t n = 0, k;
-
-    PT_CHECK("ref-0 reference directory opens", d != NULL);
-    while (d && (e = readdir(d)) != NULL && n < 4096) {
-        size_t len = strlen(e->d_name);
-        if (len > 6 && strcmp(e->d_name + len - 6, ".scene") == 0) {
-            names[n] = malloc(len - 5);
-            memcpy(names[n], e->d_name, len - 6);
-            names[n][len - 6] = '\0';
-            n++;
-        }
-    }
-    if (d) closedir(d);
-    PT_CHECK("ref-0 reference cases found", n > 0);
-    qsort(names, n, sizeof names[0], by_name);
-    for (k = 0; k < n; k++) { run_case(dir, names[k]); free(names[k]); }
-    printf("test_reference: %zu cases from %s\n", n, dir);
+    pt_ref_run(argc, argv, "test_reference", run_case);
     return pt_test_report();
 }

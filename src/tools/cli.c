@@ -85,3 +85,31 @@ int pt_cli_usage(const char *cmd, const char *fmt, ...)
     fprintf(stderr, "\nTry 'pipetrace%s%s --help'.\n", cmd ? " " : "", cmd ? cmd : "");
     return PT_EXIT_USAGE;
 }
+
+int pt_cli_student_note(char *buf, size_t n)
+{
+    char names[256], vars[512];
+    const char *p = pt_student_stages, *sep;
+    size_t ln = 0, lv = 0;
+    int k = 0, count = 0;
+
+    for (sep = p; *sep; sep++) count += *sep != ' ' && (sep == p || sep[-1] == ' ');
+    names[0] = vars[0] = '\0';
+    while (*p) {
+        size_t len;
+        while (*p == ' ') p++;
+        len = strcspn(p, " ");
+        if (!len) break;
+        k++;
+        ln += (size_t)snprintf(names + ln, sizeof names - ln, "%s%.*s",
+                               k == 1 ? "" : k == count ? " and " : ", ", (int)len, p);
+        lv += (size_t)snprintf(vars + lv, sizeof vars - lv,
+                               "%sSTAGE_%.*s=...", k == 1 ? "" : " ", (int)len, p);
+        if (ln >= sizeof names || lv >= sizeof vars) break;
+        p += len;
+    }
+    if (!k || !n) { if (n) buf[0] = '\0'; return 0; }
+    snprintf(buf, n, "student build: the %s stage%s %s yours (make %s)", names,
+             k > 1 ? "s" : "", k > 1 ? "are" : "is", vars);
+    return 1;
+}

@@ -50,4 +50,15 @@ const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
 ** (no message) for anything else: signs, spaces, overflow.  Can't fail. */
 int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out);
 
+/* The stages a student build replaces, by the Makefile's names, separated by
+** spaces ("pixel viewport"); "" in the reference build.  Written by the
+** Makefile into $B/buildinfo.c (make STAGE_pixel=FILE.c: docs/teaching.md). */
+extern const char pt_student_stages[];
+
+/* "student build: the viewport stage is yours (make STAGE_viewport=...)" (two
+** stages: "the pixel and viewport stages are yours (make STAGE_pixel=...
+** STAGE_viewport=...)") into buf of n bytes.  Returns 1, or 0 with buf empty in
+** the reference build.  This function can't fail. */
+int pt_cli_student_note(char *buf, size_t n);
+
 #endif

@@ -21,6 +21,8 @@
 #include "tools/commands.h"
 #include "tools/cli.h"
 #include "io/explain.h"
+#include "io/numfmt.h"
+#include "tools/catalogue.h"
 #include "core/pipetrace.h"
 
 
@@ -46,6 +48,41 @@ static int usage_error(const char *msg, const char *arg)
     return pt_cli_usage("step", "%s%s", msg, arg);
 }
 
+/* Value k of v (stage st) as text: the shortest double, the integer, "none". */
+static const char *value_text(char *b, size_t n, int st, const pt_cat_val *v, int k)
+{
+    if (pt_stage_infos[st].nreal) pt_fmt_shortest(b, v->d[k]);
+    else if (v->null) snprintf(b, n, "none");
+    else snprintf(b, n, "%lld", (long long)v->n[k]);
+    return b;
+}
+
+/* Stage i of journey j against the catalogue's right formula applied to the
+** stage before: in a student build (make STAGE_pixel=FILE.c) the stage is the
+** student's, the formula the reference.  Prints one line per value where they
+** differ, none where they agree (always, in the reference build:
+** tests/test_catalogue.c). */
+static void check_stage(const pt_journey *j, int i)
+{
+    pt_stage st = j->order[i];
+    pt_cat_val in, want, got;
+    unsigned m;
+    int k;
+
+    if (j->matrix || i == 0 || j->order[i - 1] != st - 1) return;
+    pt_cat_val_of(&in, &j->rec[st - 1]);
+    pt_cat_val_of(&got, &j->rec[st]);
+    if (!pt_cat_right(st, &j->par, &in, &want)) return;
+    m = pt_cat_differ(st, &got, &want);
+    for (k = 0; k < pt_stage_nvalues(st); k++) {
+        char a[PT_NUMLEN], b[PT_NUMLEN];
+        if (!(m & 1u << k)) continue;
+        printf("  check    your stage gave %s = %s; the formula gives %s\n",
+               pt_stage_infos[st].coord[k], value_text(a, sizeof a, st, &got, k),
+               value_text(b, sizeof b, st, &want, k));
+    }
+}
+
 /* Print stage st of journey j: name, spaces, what, formula, numbers, next. */
 static void show_stage(const pt_journey *j, int i)
 {
@@ -59,6 +96,7 @@ static void show_stage(const pt_journey *j, int i)
     printf("  formula  %s\n", in->formula);
     pt_explain_stage(b, sizeof b, j, st, "\n           ");
     printf("  here     %s\n", b);
+    check_stage(j, i);
     pt_explain_next(b, sizeof b, j, st);
     printf("  next     %s\n", b);
 }
@@ -240,6 +278,7 @@ int pt_cmd_step(int argc, char **argv)
     const pt_model *m = NULL;
     pt_journey j;
     pt_scene s;
+    char note[512];
 
     for (k = 1; k < argc; k++) {
         const char *a = argv[k];
@@ -285,6 +324,7 @@ int pt_cmd_step(int argc, char **argv)
         return PT_EXIT_INPUT;
     }
     printf("pipetrace step: vertex %llu of model %s in %s\n", (unsigned long long)v, m->name, s.path);
+    if (pt_cli_student_note(note, sizeof note)) printf("%s\n", note);
     printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n\n",
            s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
            s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);

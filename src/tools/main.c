@@ -91,7 +91,12 @@ static int parse_args(cli *c, int argc, char **argv)
                     !strcmp(a, "--precision");
 
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
-        if (!strcmp(a, "--version")) { puts("pipetrace " PT_VERSION); return 0; }
+        if (!strcmp(a, "--version")) {
+            char note[512];
+            puts("pipetrace " PT_VERSION);
+            if (pt_cli_student_note(note, sizeof note)) puts(note);
+            return 0;
+        }
         if (takes && !val) return usage_error("option '%s' needs a value", a);
         if (takes) k++;
         if (!strcmp(a, "--image")) c->image = val;

@@ -1,0 +1,262 @@
+/*
+** src/tools/catalogue.c -- the classic stages' right formulas and their known mistakes
+** See LICENSE for copyright and license.
+**
+** Each formula is written in the order of operations of its stage in stages/
+** (tests/test_catalogue.c checks that they agree bit for bit); rounding and
+** the inside test are pt_round.h's own functions.
+*/
+#include <math.h>
+#include <string.h>
+#include "tools/catalogue.h"
+
+void pt_cat_val_of(pt_cat_val *v, const pt_vrec *r)
+{
+    memset(v, 0, sizeof *v);
+    v->d[0] = r->x; v->d[1] = r->y; v->d[2] = r->z;
+    v->null = (r->flags & PT_REC_NULL) != 0;
+    if (r->stage == PT_STAGE_INDEX) v->n[0] = r->i;
+    else { v->n[0] = r->ix; v->n[1] = r->iy; }
+}
+
+/* ===== rounding and the shared shapes of formulas ===== */
+
+typedef double (*rnd_fn)(double);
+
+static double c_round(double x) { return round(x); }            /* ties away from 0 */
+static double floor_half(double x) { return floor(x + 0.5); }   /* the sum rounds */
+
+/* The viewport stage with rounding rnd (NULL: Java's Math.round), x_vp =
+** round(x_pp) + dx and y_vp = sy * round(y_pp) + oy (the right formula: dx =
+** -1, sy = -1, oy = h).  No value where pt_pix_round() finds none. */
+static void viewport_with(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy,
+                          const pt_cat_val *in, pt_cat_val *out)
+{
+    int64_t rx, ry;
+    double x = rnd ? rnd(in->d[0]) : in->d[0], y = rnd ? rnd(in->d[1]) : in->d[1];
+
+    out->null = !(pt_pix_round(x, &rx) && pt_pix_round(y, &ry));
+    out->n[0] = out->null ? 0 : rx + dx;
+    out->n[1] = out->null ? 0 : sy * ry + oy;
+}
+
+/* The index stage with idx = y * mul_y + x * mul_x, no value outside W x H. */
+static void index_with(const pt_stage_params *par, int64_t mul_x, int64_t mul_y,
+                       const pt_cat_val *in, pt_cat_val *out)
+{
+    int64_t x = in->n[0], y = in->n[1];
+
+    out->null = in->null || !pt_inside(x, y, par->W, par->H);
+    out->n[0] = out->null ? 0 : y * mul_y + x * mul_x;
+}
+
+/* ===== the right formulas ===== */
+
+int pt_cat_right(int st, const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    const double t[3] = {par->translate.x, par->translate.y, par->translate.z};
+    int k;
+
+    memset(out, 0, sizeof *out);
+    switch (st) {
+    case PT_STAGE_CAMERA:                   /* x_c = x_m + x_t */
+        for (k = 0; k < 3; k++) out->d[k] = in->d[k] + t[k];
+        return 1;
+    case PT_STAGE_IMAGE:
+        if (par->perspective) {
+            out->d[0] = in->d[0] / -in->d[2];   /* x_ip = x_c / -z_c */
+            out->d[1] = in->d[1] / -in->d[2];
+            out->d[2] = -1.0;
+        } else {
+            out->d[0] = in->d[0];               /* x_ip = x_c */
+            out->d[1] = in->d[1];
+            out->d[2] = 0.0;
+        }
+        return 1;
+    case PT_STAGE_PIXEL:                    /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
+        out->d[0] = 0.5 + par->w / PT_PIXEL_DIVISOR * (in->d[0] + 1);
+        out->d[1] = 0.5 + par->h / PT_PIXEL_DIVISOR * (in->d[1] + 1);
+        return 1;
+    case PT_STAGE_VIEWPORT:                 /* x_vp = round(x_pp) - 1, y_vp = h - round(y_pp) */
+        viewport_with(NULL, -1, -1, par->h, in, out);
+        return 1;
+    case PT_STAGE_FRAMEBUFFER:              /* x_fb = x_ul + x_vp */
+        out->null = in->null;
+        out->n[0] = in->null ? 0 : par->x_ul + in->n[0];
+        out->n[1] = in->null ? 0 : par->y_ul + in->n[1];
+        return 1;
+    case PT_STAGE_INDEX:                    /* idx = y_fb * W + x_fb */
+        index_with(par, 1, par->W, in, out);
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+unsigned pt_cat_differ(int st, const pt_cat_val *a, const pt_cat_val *b)
+{
+    const pt_stage_info *in = &pt_stage_infos[st];
+    unsigned m = 0;
+    int k;
+
+    for (k = 0; k < in->nreal; k++)
+        if (memcmp(&a->d[k], &b->d[k], sizeof a->d[k]) != 0 &&
+            !(isnan(a->d[k]) && isnan(b->d[k]))) m |= 1u << k;
+    if (in->nint && a->null != b->null) return (1u << in->nint) - 1;
+    for (k = 0; k < in->nint && !a->null; k++)
+        if (a->n[k] != b->n[k]) m |= 1u << k;
+    return m;
+}
+
+/* ===== the known mistakes ===== */
+
+static void mk_subtract(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    out->d[0] = in->d[0] - par->translate.x;
+    out->d[1] = in->d[1] - par->translate.y;
+    out->d[2] = in->d[2] - par->translate.z;
+}
+
+static void mk_divz(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    (void)par;
+    out->d[0] = in->d[0] / in->d[2];
+    out->d[1] = in->d[1] / in->d[2];
+    out->d[2] = -1.0;
+}
+
+static void mk_two(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    out->d[0] = 0.5 + par->w / 2.0 * (in->d[0] + 1);
+    out->d[1] = 0.5 + par->h / 2.0 * (in->d[1] + 1);
+}
+
+static void mk_two_int(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    out->d[0] = 0.5 + (double)(par->w / 2) * (in->d[0] + 1);
+    out->d[1] = 0.5 + (double)(par->h / 2) * (in->d[1] + 1);
+}
+
+/* The right pixel stage, given h for w and w for h. */
+static void mk_swap_wh(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    pt_vec3 ip = {in->d[0], in->d[1], in->d[2]};
+    pt_vec2 pp = pt_image2pixel(ip, par->h, par->w, NULL);
+
+    out->d[0] = pp.x;
+    out->d[1] = pp.y;
+}
+
+static void mk_cround(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    viewport_with(c_round, -1, -1, par->h, in, out);
+}
+
+static void mk_floor(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    viewport_with(floor_half, -1, -1, par->h, in, out);
+}
+
+static void mk_noflip1(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    (void)par;
+    viewport_with(NULL, -1, 1, -1, in, out);
+}
+
+static void mk_noflip0(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    (void)par;
+    viewport_with(NULL, -1, 1, 0, in, out);
+}
+
+static void mk_nominus1(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    viewport_with(NULL, 0, -1, par->h, in, out);
+}
+
+static void mk_xh(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    index_with(par, par->H, 1, in, out);
+}
+
+/* w for W in the product only: the bounds stay the framebuffer's, as in a
+** stage that checks the pixel against W x H and then multiplies by w (so
+** pt_fb2index(fb, w, H) would not do: it also checks x_fb < w). */
+static void mk_vpw(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    index_with(par, 1, par->w, in, out);
+}
+
+const pt_mistake pt_mistakes[PT_NMISTAKES] = {
+    {PT_STAGE_CAMERA, "translation subtracted",
+     "x_c = x_m - x_t (likewise y, z) instead of x_m + x_t", 0, mk_subtract},
+    {PT_STAGE_IMAGE, "projection divides by z_c instead of -z_c",
+     "x_ip = x_c / z_c: the image comes out mirrored, x and y negated", 0, mk_divz},
+    {PT_STAGE_PIXEL, "2 instead of 2.001",
+     "x_pp = 0.5 + w/2 * (x_ip + 1): every x_pp moves right by w/4002 * (x_ip + 1), "
+     "and the right edge x_ip = 1 lands on w + 0.5, between two pixels", 0, mk_two},
+    {PT_STAGE_PIXEL, "2 instead of 2.001",
+     "x_pp = 0.5 + w/2 * (x_ip + 1) with w/2 in integer arithmetic: half of an odd "
+     "size is lost", 1, mk_two_int},
+    {PT_STAGE_PIXEL, "w and h swapped",
+     "x_pp = 0.5 + h/2.001 * (x_ip + 1), y_pp = 0.5 + w/2.001 * (y_ip + 1)", 0, mk_swap_wh},
+    {PT_STAGE_VIEWPORT, "C round() instead of Java's Math.round",
+     "round() and lround() take ties away from zero: round(-2.5) = -3, "
+     "Math.round(-2.5) = -2", 0, mk_cround},
+    {PT_STAGE_VIEWPORT, "floor(x + 0.5) instead of Java's Math.round",
+     "0.49999999999999994 + 0.5 rounds up to 1.0, so floor gives 1 where "
+     "Math.round gives 0", 0, mk_floor},
+    {PT_STAGE_VIEWPORT, "missing y flip",
+     "y_vp = round(y_pp) - 1 instead of h - round(y_pp): the image comes out upside down",
+     0, mk_noflip1},
+    {PT_STAGE_VIEWPORT, "missing y flip",
+     "y_vp = round(y_pp) instead of h - round(y_pp): the image comes out upside down",
+     0, mk_noflip0},
+    {PT_STAGE_VIEWPORT, "missing -1 in x_vp",
+     "x_vp = round(x_pp) instead of round(x_pp) - 1: one pixel too far right",
+     0, mk_nominus1},
+    {PT_STAGE_INDEX, "index x * H + y",
+     "idx = x_fb * H + y_fb (column by column) instead of y_fb * W + x_fb", 0, mk_xh},
+    {PT_STAGE_INDEX, "viewport width instead of framebuffer width",
+     "idx = y_fb * w + x_fb with the viewport's w instead of the framebuffer's W", 0, mk_vpw},
+};
+
+/* ===== the rasterizer's rounding mistakes ===== */
+
+/* The viewport stage's formula with rounding rnd, as a pt_raster_vp. */
+static pt_pix viewport_rounding(rnd_fn rnd, pt_vec2 pp, int h)
+{
+    pt_cat_val in, out;
+    pt_pix vp;
+
+    memset(&in, 0, sizeof in);
+    in.d[0] = pp.x;
+    in.d[1] = pp.y;
+    viewport_with(rnd, -1, -1, h, &in, &out);
+    vp.x = out.n[0];
+    vp.y = out.n[1];
+    vp.ok = !out.null;
+    return vp;
+}
+
+pt_pix pt_cat_vp_floor(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    (void)w; (void)sink;
+    return viewport_rounding(floor_half, pp, h);
+}
+
+pt_pix pt_cat_vp_cround(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    (void)w; (void)sink;
+    return viewport_rounding(c_round, pp, h);
+}
+
+const pt_raster_mistake pt_raster_mistakes[PT_NRASTER_MISTAKES] = {
+    {"floor(x + 0.5) instead of Java's Math.round",
+     "in the rasterizer's rounding (pt_pix_round in s4): the DDA's running y can "
+     "be 0.49999999999999994, which floor(y + 0.5) takes to 1 and Math.round to 0",
+     pt_cat_vp_floor},
+    {"C round() instead of Java's Math.round",
+     "in the rasterizer's rounding (pt_pix_round in s4): round() takes ties away "
+     "from zero", pt_cat_vp_cround},
+};

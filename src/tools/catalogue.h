@@ -1,0 +1,89 @@
+/*
+** src/tools/catalogue.h -- the classic stages' right formulas and their known mistakes
+** See LICENSE for copyright and license.
+**
+** What `pipetrace diff` and `pipetrace step` check a stage's numbers against:
+**
+**   right      each classic stage's formula (camera .. index), computed from
+**              the previous stage's values and the scene's numbers
+**              (pt_stage_params: w, h, W, H, x_ul, y_ul, perspective, the
+**              model's translation);
+**   mistakes   the known wrong versions of those formulas, each with a name,
+**              an explanation and the wrong formula itself;
+**   raster     the rasterizer's rounding mistakes, as viewport stages with
+**              that rounding (pt_raster_vp), to hand to pt_raster_segment().
+**
+** The right formulas are written out here again on purpose: a student build
+** replaces a stage's .c file (make STAGE_pixel=FILE.c), and the tools must
+** still know the reference.  tests/test_catalogue.c ties them to stages/: on
+** every reference case each right formula gives the stage's record bit for
+** bit.  They round and test "inside" with stages/pt_round.h, which a student
+** does not replace.  A mistake that is the right formula with wrong inputs
+** (w and h swapped) calls the stage function with those inputs.
+*/
+#ifndef PT_CATALOGUE_H
+#define PT_CATALOGUE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "core/pipetrace.h"
+
+/* One stage's values, as a trace holds them.  A real stage (camera, image,
+** pixel) uses d[0..2] (x, y, z); the viewport and framebuffer n[0..1] (x, y);
+** the index n[0].  null: an integer stage without value (PT_REC_NULL). */
+typedef struct pt_cat_val {
+    int null;                    /* integer stage: no value */
+    double d[3];                 /* real stages: x, y, z */
+    int64_t n[2];                /* integer stages: x, y; the index: n[0] */
+} pt_cat_val;
+
+/* The values of record r (of stage r->stage) into *v.  This function can't
+** fail. */
+void pt_cat_val_of(pt_cat_val *v, const pt_vrec *r);
+
+/* The right formula of classic stage st (camera .. index) applied to in, the
+** previous stage's values, with the numbers of par; the result into *out,
+** computed as stages/ computes it, bit for bit.  Returns 1, or 0 (and *out
+** zeroed) when st has no formula here (model, the matrix camera's stages).
+** Requires par->w, h, W, H >= 1.  This function can't fail. */
+int pt_cat_right(int st, const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out);
+
+/* Which values of stage st differ between a and b, bit for bit (-0.0 differs
+** from 0.0; NaN agrees with NaN): bit k for value k; all of an integer stage's
+** bits when one has a value and the other none.  0 when they agree.  This
+** function can't fail. */
+unsigned pt_cat_differ(int st, const pt_cat_val *a, const pt_cat_val *b);
+
+/* A known mistake of a classic stage. */
+typedef struct pt_mistake {
+    int stage;                   /* pt_stage it is made in */
+    const char *name;            /* what was done, a few words (two forms of one
+                                 ** mistake share it) */
+    const char *how;             /* the wrong formula, and why it goes wrong */
+    int odd_only;                /* 1: differs from another form only when w or
+                                 ** h is odd (w/2 in integers) */
+    void (*apply)(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out);
+                                 /* the stage with the mistake, as pt_cat_right */
+} pt_mistake;
+
+#define PT_NMISTAKES 12
+extern const pt_mistake pt_mistakes[PT_NMISTAKES];
+
+/* A known mistake of the rasterizer's rounding. */
+typedef struct pt_raster_mistake {
+    const char *name;            /* as the stage's mistake of that rounding */
+    const char *how;             /* what goes wrong in the DDA */
+    pt_raster_vp to_vp;          /* the viewport stage rounding that way */
+} pt_raster_mistake;
+
+#define PT_NRASTER_MISTAKES 2
+extern const pt_raster_mistake pt_raster_mistakes[PT_NRASTER_MISTAKES];
+
+/* The viewport stage's formula (x_vp = r(x_pp) - 1, y_vp = h - r(y_pp)) with
+** r(x) = floor(x + 0.5), resp. C's round() (ties away from zero), instead of
+** Java's Math.round; no value beyond PT_PIX_LIMIT as pt_pixel2viewport().
+** Report nothing (sink is ignored).  These functions can't fail. */
+pt_pix pt_cat_vp_floor(pt_vec2 pp, int w, int h, const pt_sink *sink);
+pt_pix pt_cat_vp_cround(pt_vec2 pp, int w, int h, const pt_sink *sink);
+
+#endif

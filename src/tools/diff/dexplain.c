@@ -1,0 +1,279 @@
+/*
+** src/tools/diff/dexplain.c -- pipetrace diff: a vertex's first difference explained by a known mistake
+** See LICENSE for copyright and license.
+**
+** A mistake of the catalogue (src/tools/catalogue.h) is named only when it
+** is shown for this vertex: the diverging stage is recomputed from EXPECTED's
+** value of the stage before, with the mistake, and must reproduce ACTUAL's
+** value within the tolerance (from a text trace, for some input within its
+** printed digits; see reproduces()).  Stage 5 has no known mistake; only the
+** classic camera's mistakes are known.
+*/
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tools/diff/diff.h"
+
+/* What the formulas need from EXPECTED's header, for one vertex. */
+typedef struct hctx {
+    pt_stage_params par;         /* w, h, W, H, x_ul, y_ul, perspective, translation */
+    int has_t;                   /* 1: the translation is known */
+} hctx;
+
+/* Range of one recomputed value over the inputs tried. */
+typedef struct vrange {
+    int any_finite, nan, pinf, ninf;    /* kinds of double seen */
+    double lo, hi;               /* finite doubles */
+    int any_null, any_value;     /* integer stages */
+    int64_t ilo, ihi;
+} vrange;
+
+static void range_add(vrange *r, int real, const pt_cat_val *o, int k)
+{
+    if (real) {
+        double x = o->d[k];
+        if (isnan(x)) r->nan = 1;
+        else if (isinf(x)) { if (x > 0) r->pinf = 1; else r->ninf = 1; }
+        else if (!r->any_finite++) r->lo = r->hi = x;
+        else { r->lo = fmin(r->lo, x); r->hi = fmax(r->hi, x); }
+    } else if (o->null) {
+        r->any_null = 1;
+    } else {
+        int64_t x = o->n[k];
+        if (!r->any_value++) r->ilo = r->ihi = x;
+        else { if (x < r->ilo) r->ilo = x; if (x > r->ihi) r->ihi = x; }
+    }
+}
+
+/* Where to try an input x known to within +-s: x itself, both ends, and each
+** tie k + 0.5 in between with its neighbouring doubles, where roundings change
+** their minds (floor(x + 0.5) at 0.49999999999999994).  Returns the count. */
+static int samples(double x, double s, double out[16])
+{
+    double t;
+    int n = 0;
+
+    out[n++] = x;
+    if (!(s > 0) || !isfinite(x)) return n;
+    out[n++] = x - s;
+    out[n++] = x + s;
+    for (t = floor(x - s) + 0.5; t <= x + s && n + 3 <= 16; t += 1) {
+        if (t < x - s) continue;
+        out[n++] = t;
+        out[n++] = nextafter(t, -HUGE_VAL);
+        out[n++] = nextafter(t, HUGE_VAL);
+    }
+    return n;
+}
+
+/* 1 when the ranges r[] of the mistake's results hold ACTUAL's record arec. */
+static int in_ranges(const dctx *c, const vrange r[4], int st, const pt_tvrec *arec)
+{
+    int k;
+
+    for (k = 0; k < ncoord(st); k++) {
+        if (is_real(st)) {
+            double a = arec->u.d[k], allow;
+            if (isnan(a)) { if (!r[k].nan) return 0; continue; }
+            if (isinf(a)) { if (!(a > 0 ? r[k].pinf : r[k].ninf)) return 0; continue; }
+            if (!r[k].any_finite) return 0;
+            allow = fmax(c->o->tol, c->o->rel * fmax(fabs(a), fmax(fabs(r[k].lo), fabs(r[k].hi))));
+            allow += pt_diff_slack(c, 1, a);
+            if (a < r[k].lo - allow || a > r[k].hi + allow) return 0;
+        } else if (arec->flags & PT_REC_NULL) {
+            if (!r[k].any_null) return 0;
+        } else if (!r[k].any_value || arec->u.n[k] < r[k].ilo || arec->u.n[k] > r[k].ihi) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* 1 when mistake mk reproduces ACTUAL's record arec of stage st from the input
+** in: EXPECTED's previous stage; *at_in gets the mistake's result for in, to
+** show.  When in came from a text trace, each real input may be anywhere
+** within in_slack[k] of its value, and the mistake's results over that box
+** must hold arec:
+**   - a real-valued stage: the box's corners and mid-points bound them (each
+**     formula is monotone in each input, the sign of z_c aside);
+**   - the viewport stage, whose x and y each depend on x_pp or y_pp alone:
+**     the samples() of each, keeping only inputs that the right formula takes
+**     to EXPECTED's own record erec (a tie printed "-2.500000" stays a tie).
+** An integer input (framebuffer -> index) is exact. */
+static int reproduces(const dctx *c, const pt_mistake *mk, const hctx *h, const pt_cat_val *in,
+                      const double in_slack[3], int in_real, int st,
+                      const pt_tvrec *erec, const pt_tvrec *arec, pt_cat_val *at_in)
+{
+    vrange r[4];
+    pt_cat_val x, out, right;
+    int k, p;
+
+    memset(r, 0, sizeof r);
+    memset(at_in, 0, sizeof *at_in);
+    mk->apply(&h->par, in, at_in);
+    if (!in_real) {
+        for (k = 0; k < ncoord(st); k++) range_add(&r[k], is_real(st), at_in, k);
+    } else if (is_real(st)) {
+        int vary[3], nvary = 0, npts = 1;
+        for (k = 0; k < 3; k++)
+            if (in_slack[k] > 0) { vary[nvary++] = k; npts *= 3; }
+        for (p = 0; p < npts; p++) {        /* offsets -1, 0, +1 of each input */
+            int q = p, j;
+            x = *in;
+            for (j = 0; j < nvary; j++, q /= 3)
+                x.d[vary[j]] += (q % 3 - 1) * in_slack[vary[j]];
+            memset(&out, 0, sizeof out);
+            mk->apply(&h->par, &x, &out);
+            for (k = 0; k < ncoord(st); k++) range_add(&r[k], 1, &out, k);
+        }
+    } else {
+        for (k = 0; k < ncoord(st); k++) {
+            double v[16];
+            int n = samples(in->d[k], in_slack[k], v);
+            for (p = 0; p < n; p++) {
+                x = *in;
+                x.d[k] = v[p];
+                memset(&right, 0, sizeof right);
+                pt_cat_right(st, &h->par, &x, &right);
+                if (right.null != ((erec->flags & PT_REC_NULL) != 0) ||
+                    (!right.null && right.n[k] != erec->u.n[k])) continue;
+                memset(&out, 0, sizeof out);
+                mk->apply(&h->par, &x, &out);
+                range_add(&r[k], 0, &out, k);
+            }
+        }
+    }
+    return in_ranges(c, r, st, arec);
+}
+
+/* Fill *h from EXPECTED's header for a vertex of model `model`; 0 when there is
+** no header. */
+static int hctx_of(const dctx *c, uint32_t model, hctx *h)
+{
+    const pt_thdr *hd = &c->t[0].hdr;
+
+    if (!hd->have || hd->perspective < 0 || hd->vp_w < 1 || hd->vp_h < 1) return 0;
+    h->par.w = hd->vp_w; h->par.h = hd->vp_h;
+    h->par.W = hd->fb_w; h->par.H = hd->fb_h;
+    h->par.x_ul = hd->vp_x; h->par.y_ul = hd->vp_y;
+    h->par.perspective = hd->perspective;
+    h->has_t = model < c->nm.n && c->has_tr[model];
+    if (h->has_t) {
+        h->par.translate.x = c->tr[model][0];
+        h->par.translate.y = c->tr[model][1];
+        h->par.translate.z = c->tr[model][2];
+    }
+    return 1;
+}
+
+/* EXPECTED's value of the stage before st for vertex e, into *in with the slack
+** of each real value; *from gets the stage it came from.  A stage left out as
+** the identity is replaced by the one before it (camera = model when the
+** translation is 0 0 0; framebuffer = viewport when the viewport is at 0,0).
+** Returns 0 when there is no such record. */
+static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
+                      pt_cat_val *in, double in_slack[3], int *from)
+{
+    int p = st - 1, k;
+    uint32_t i;
+    const pt_tvrec *r;
+
+    if (p < 0) return 0;
+    i = e->rec[0][p];
+    if (i == NONE && p == PT_STAGE_CAMERA && h->has_t && h->par.translate.x == 0 &&
+        h->par.translate.y == 0 && h->par.translate.z == 0)
+        i = e->rec[0][p = PT_STAGE_MODEL];
+    if (i == NONE && p == PT_STAGE_FRAMEBUFFER && h->par.x_ul == 0 && h->par.y_ul == 0)
+        i = e->rec[0][p = PT_STAGE_VIEWPORT];
+    if (i == NONE) return 0;
+    r = &c->t[0].vx[i];
+    memset(in, 0, sizeof *in);
+    in_slack[0] = in_slack[1] = in_slack[2] = 0;
+    if (is_real(p)) {
+        for (k = 0; k < ncoord(p); k++) {
+            in->d[k] = r->u.d[k];
+            in_slack[k] = pt_diff_slack(c, 0, r->u.d[k]);
+        }
+    } else {
+        in->null = (r->flags & PT_REC_NULL) != 0;
+        for (k = 0; k < ncoord(p); k++) in->n[k] = r->u.n[k];
+    }
+    *from = p;
+    return 1;
+}
+
+/* Append the values of stage st in *v to sb: "x_pp = 1.5, y_pp = 2". */
+static void val_str(pbuf *sb, int st, const pt_cat_val *v)
+{
+    char b[PT_NUMLEN];
+    int k;
+
+    for (k = 0; k < ncoord(st); k++) {
+        pt_diff_add(sb, "%s%s = ", k ? ", " : "", coord_name(st, k));
+        if (is_real(st)) pt_diff_add(sb, "%s", pt_diff_num(v->d[k], b));
+        else if (v->null) pt_diff_add(sb, "none");
+        else pt_diff_add(sb, "%" PRId64, v->n[k]);
+    }
+}
+
+/* Find the mistakes that reproduce the first difference of e at stage st,
+** count them, and print them when `print`. */
+void pt_diff_explain(dctx *c, const vent *e, int st, int print)
+{
+    hctx h;
+    pt_cat_val in, out;
+    double in_slack[3];
+    int from, found = 0;
+    size_t k;
+    const pt_tvrec *erec = &c->t[0].vx[e->rec[0][st]];
+    const pt_tvrec *arec = &c->t[1].vx[e->rec[1][st]];
+    const char *last = NULL;
+    pbuf sb;
+
+    memset(&h, 0, sizeof h);
+    if (!hctx_of(c, e->model, &h)) {
+        if (print) printf("    (no known mistake checked: %s)\n", c->t[0].hdr.have ?
+                          "those known are the classic camera's" : "EXPECTED has no header");
+        return;
+    }
+    if (st == PT_STAGE_MODEL) {
+        if (print) printf("    (the model stage holds the scene's own numbers: are these "
+                          "traces of one scene?)\n");
+        return;
+    }
+    if (!prev_value(c, e, st, &h, &in, in_slack, &from)) {
+        if (print) printf("    (no known mistake checked: EXPECTED has no %s record to "
+                          "recompute from)\n", pt_stage_infos[st - 1].name);
+        return;
+    }
+    for (k = 0; k < PT_NMISTAKES; k++) {
+        const pt_mistake *mk = &pt_mistakes[k];
+        if (mk->stage != st) continue;
+        if (st == PT_STAGE_CAMERA && !h.has_t) continue;
+        if (st == PT_STAGE_IMAGE && !h.par.perspective) continue;
+        if (mk->odd_only && h.par.w % 2 == 0 && h.par.h % 2 == 0) continue;
+        if (!reproduces(c, mk, &h, &in, in_slack, is_real(from), st, erec, arec, &out)) continue;
+        if (last && !strcmp(last, mk->name)) continue;   /* a second form of the same */
+        last = mk->name;
+        found++;
+        c->mk_hits[k]++;
+        if (!print) continue;
+        printf("    likely mistake: %s\n", mk->name);
+        pt_diff_para("      ", mk->how);
+        memset(&sb, 0, sizeof sb);
+        pt_diff_add(&sb, "check: the %s stage recomputed with it from EXPECTED's %s record (",
+                    pt_stage_infos[st].name, pt_stage_infos[from].name);
+        val_str(&sb, from, &in);
+        pt_diff_add(&sb, ") gives ");
+        val_str(&sb, st, &out);
+        pt_diff_add(&sb, ", as ACTUAL has%s.", c->t[0].prec >= 0 || c->t[1].prec >= 0 ?
+                    " (within the printed digits)" : "");
+        pt_diff_para("      ", sb.b);
+    }
+    if (!found) {
+        if (print) printf("    no known mistake reproduces this from EXPECTED's %s record\n",
+                          pt_stage_infos[from].name);
+    }
+}

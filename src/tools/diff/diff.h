@@ -1,0 +1,206 @@
+/*
+** src/tools/diff/diff.h -- what the files of pipetrace diff share (internal to src/tools/diff/)
+** See LICENSE for copyright and license.
+**
+** pipetrace diff, file by file, in the order a trace diff runs:
+**   cmd_diff.c   the options, loading both files, the trace diff's driver
+**   dimage.c     two images, pixel by pixel
+**   dsummary.c   the intro and the headers; silent and one-sided stages; the
+**                summary paragraph
+**   dvertex.c    the vertex table and the comparison, vertex by vertex
+**   dexplain.c   a vertex's first difference explained with the catalogue's
+**                known mistakes (src/tools/catalogue.h)
+**   dpixels.c    the lit pixels, and the rasterizer replayed on a segment
+**   dprint.c     numbers, paragraphs, names
+** The types below are diff's own (short names, never seen outside this
+** folder); the functions between the files start pt_diff_.  Functions that
+** print write to standard output; none can fail unless it says so.
+*/
+#ifndef PT_DIFF_H
+#define PT_DIFF_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "core/pipetrace.h"
+#include "io/numfmt.h"
+#include "io/tread.h"
+#include "tools/cli.h"
+#include "tools/catalogue.h"
+
+#define NONE UINT32_MAX          /* no record */
+
+/* The command line. */
+typedef struct dopts {
+    const char *path[2];         /* EXPECTED, ACTUAL */
+    double tol, rel;             /* tolerance for doubles */
+    const char *image_out;       /* --image-out, or NULL */
+    size_t show;                 /* vertices and pixels listed */
+} dopts;
+
+/* A growing string for paragraphs. */
+typedef struct pbuf {
+    char b[2048];
+    size_t n;
+} pbuf;
+
+/* One vertex of either trace: where each side's record of each stage is. */
+typedef struct vent {
+    uint64_t v;                  /* 1-based vertex number */
+    uint32_t model;              /* name id */
+    uint32_t rec[2][PT_NSTAGES_ALL];   /* index into side's vx[], or NONE */
+} vent;
+
+/* Open addressing over entries in order of first sight (EXPECTED's first). */
+typedef struct vtab {
+    vent *e;                     /* entries; owned */
+    size_t n, cap;
+    uint32_t *slot;              /* entry index + 1, or 0; owned */
+    size_t nslot;                /* power of two > 2 n */
+} vtab;
+
+/* Everything one trace diff needs. */
+typedef struct dctx {
+    const dopts *o;
+    pt_names nm;                 /* model names of both traces */
+    pt_tread t[2];               /* EXPECTED, ACTUAL */
+    vtab vt;
+    double (*tr)[3];             /* tr[model id]: translation from EXPECTED's header */
+    unsigned char *has_tr;       /* has_tr[model id]: 1 when tr is known */
+    /* counts */
+    size_t agree, differ, only[2];
+    size_t first_at[PT_NSTAGES_ALL];    /* vertices that first differ at each stage */
+    size_t stage_only[2][PT_NSTAGES_ALL];   /* records without a partner */
+    size_t shown;                /* vertices listed */
+    size_t *mk_hits;             /* per mistake: vertices it reproduces */
+    size_t agree_clip, differ_clip;     /* of agree and differ: matrix clip points */
+    unsigned *silent[2];         /* silent[s][model id]: bit st when side s has no
+                                 ** record of stage st for that model though its
+                                 ** header does not leave st out and the other side
+                                 ** has them: the stage did not report; owned */
+    size_t silent_recs[2][PT_NSTAGES_ALL];  /* the other side's records it lacks */
+} dctx;
+
+/* What the raster check found. */
+typedef struct rstat {
+    size_t segs_differ;          /* segments whose pixels differ */
+    size_t hits[PT_NRASTER_MISTAKES];   /* ... that each rounding mistake reproduces */
+    int first_set;               /* 1: first_* below are set */
+    uint32_t first_model;        /* the first differing segment */
+    uint64_t first_seg;
+    int64_t ends[4];             /* its rounded endpoints X0 Y0 X1 Y1 */
+    int ends_ok;                 /* 1: ends verified by replaying EXPECTED */
+} rstat;
+
+/* 1 when stage st holds doubles, 0 when integers. */
+static inline int is_real(int st) { return pt_stage_infos[st].nreal > 0; }
+
+/* Number of values of stage st: 1 to 4. */
+static inline int ncoord(int st) { return pt_stage_infos[st].nreal + pt_stage_infos[st].nint; }
+
+/* Name of value k of stage st, as the text trace writes it: "x_pp". */
+static inline const char *coord_name(int st, int k) { return pt_stage_infos[st].coord[k]; }
+
+/* 1 when |x| < 2^62: sums and differences of two such numbers, or one and a
+** size, cannot overflow.  pipetrace's own integers always are (PT_PIX_LIMIT);
+** a trace from elsewhere may hold anything. */
+static inline int small(int64_t x)
+{
+    return x > -(INT64_C(1) << 62) && x < (INT64_C(1) << 62);
+}
+
+/* ===== dprint.c ===== */
+
+/* "EXPECTED", "ACTUAL": side 0 and side 1. */
+extern const char *const pt_diff_side[2];
+
+/* x as the shortest decimal that reads back to it, in buf; returns buf. */
+const char *pt_diff_num(double x, char buf[PT_NUMLEN]);
+
+/* Print text as one paragraph wrapped at 78 columns, each line after lead. */
+void pt_diff_para(const char *lead, const char *text);
+
+/* Append to s what printf would print; text past its room is dropped. */
+void pt_diff_add(pbuf *s, const char *fmt, ...) PT_PRINTF_LIKE(2, 3);
+
+/* Append "SIDE has no STAGE records: the stage did not report them." to s. */
+void pt_diff_no_records(pbuf *s, int side, int st);
+
+/* "box v3", or for a point where the matrix camera clipped a segment "box s2
+** (clipped end 1)", into buf of len bytes; returns buf. */
+const char *pt_diff_who(const dctx *c, uint32_t model, uint64_t v, char *buf, size_t len);
+
+/* ===== dimage.c ===== */
+
+/* Compare two images pixel by pixel and print the result (and write o's
+** --image-out).  Returns the exit status. */
+int pt_diff_images(const dopts *o, const pt_ppm img[2]);
+
+/* ===== dvertex.c ===== */
+
+/* Fill c's vertex table from both sides.  Returns 0, PT_EXIT_INPUT on a
+** duplicate record (message printed), -1 when out of memory. */
+int pt_diff_fill_table(dctx *c);
+
+/* EXPECTED's translations by model id into c->tr.  Returns 0, or -1 when out
+** of memory. */
+int pt_diff_fill_translations(dctx *c);
+
+/* The slack of the number x read from side s: half a unit in the last printed
+** digit of a text trace, plus strtod's half ulp; 0 for JSON Lines. */
+double pt_diff_slack(const dctx *c, int s, double x);
+
+/* 1 when a (EXPECTED) and b (ACTUAL) agree within the tolerance. */
+int pt_diff_same_real(const dctx *c, double a, double b);
+
+/* Compare vertex e, present on both sides, stage by stage; count it, and print
+** and explain its first difference while fewer than --show are listed. */
+void pt_diff_compare_vertex(dctx *c, const vent *e);
+
+/* ===== dexplain.c ===== */
+
+/* Find the known mistakes that reproduce e's first difference, at stage st,
+** from EXPECTED's previous stage; count them in c->mk_hits, print them when
+** print. */
+void pt_diff_explain(dctx *c, const vent *e, int st, int print);
+
+/* ===== dpixels.c ===== */
+
+/* Compare the sets of lit pixels: the missing and extra ones into *nmiss and
+** *nextra (a few of each listed), nlit[s] the distinct pixels of side s.
+** Returns 0, or -1 when out of memory. */
+int pt_diff_compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2]);
+
+/* Segment by segment: which differ, and which rounding mistake of the
+** rasterizer reproduces ACTUAL's pixels from EXPECTED's endpoints, into *rs.
+** Returns 0, or -1 when out of memory. */
+int pt_diff_check_raster(dctx *c, rstat *rs);
+
+/* Print the raster check's details for the first differing segment. */
+void pt_diff_report_raster(const dctx *c, const rstat *rs);
+
+/* ===== dsummary.c ===== */
+
+/* Print both files, their formats and the tolerance. */
+void pt_diff_print_intro(const dctx *c);
+
+/* Print how the headers differ; returns 1 when they do. */
+int pt_diff_compare_headers(const dctx *c);
+
+/* Find the stages that did not report (c->silent).  Returns 0, or -1 when out
+** of memory. */
+int pt_diff_find_silent(dctx *c);
+
+/* 1 when a stage of either side did not report. */
+int pt_diff_silent_any(const dctx *c);
+
+/* Print the vertices only one side has, the silent stages, the stages only
+** one side holds. */
+void pt_diff_report_one_sided(dctx *c);
+void pt_diff_report_silent(const dctx *c);
+void pt_diff_report_stage_only(const dctx *c);
+
+/* Print the summary paragraph; returns the exit status. */
+int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
+                      const size_t nlit[2], int pixels_compared, const rstat *rs);
+
+#endif

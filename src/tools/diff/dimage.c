@@ -1,0 +1,115 @@
+/*
+** src/tools/diff/dimage.c -- pipetrace diff: two images, pixel by pixel
+** See LICENSE for copyright and license.
+**
+** Two images (PPM P6 or P3, or PNG as pipetrace writes it) are compared
+** pixel by pixel: the differing ones listed, their bounding box, and with
+** --image-out a picture of them in red over EXPECTED dimmed to gray.
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "io/outfile.h"
+#include "tools/diff/diff.h"
+
+/* The color of (x, y) in img, or NULL outside it. */
+static const unsigned char *rgb_at(const pt_ppm *img, int x, int y)
+{
+    if (x >= img->w || y >= img->h) return NULL;
+    return img->rgb + 3 * ((size_t)y * (size_t)img->w + (size_t)x);
+}
+
+static void print_rgb(const unsigned char *c)
+{
+    if (c) printf("%3d %3d %3d", c[0], c[1], c[2]);
+    else printf("(outside)  ");
+}
+
+/* Write the highlight: differing pixels red, the others a's, dimmed to gray. */
+static int write_highlight(const char *path, const pt_ppm *a, const pt_ppm *b, int w, int h)
+{
+    pt_outfile out = {NULL, NULL, NULL, NULL};
+    char err[PT_ERRLEN];
+    unsigned char *row = malloc(3 * (size_t)w);
+    int x, y;
+
+    if (!row) { fputs("pipetrace: out of memory\n", stderr); return -1; }
+    if (pt_outfile_open(&out, path, err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace: %s\n", err);
+        free(row);
+        return -1;
+    }
+    fprintf(out.f, "P6\n%d %d\n255\n", w, h);
+    for (y = 0; y < h; y++) {
+        for (x = 0; x < w; x++) {
+            const unsigned char *ca = rgb_at(a, x, y), *cb = rgb_at(b, x, y);
+            unsigned char *p = row + 3 * (size_t)x;
+            if (!ca || !cb || memcmp(ca, cb, 3) != 0) { p[0] = 255; p[1] = 0; p[2] = 0; }
+            else {                          /* luma / 3: the picture stays readable */
+                int g = (299 * ca[0] + 587 * ca[1] + 114 * ca[2]) / 3000;
+                p[0] = p[1] = p[2] = (unsigned char)g;
+            }
+        }
+        if (fwrite(row, 1, 3 * (size_t)w, out.f) != 3 * (size_t)w) break;
+    }
+    free(row);
+    if (y < h || ferror(out.f)) {
+        fprintf(stderr, "pipetrace: cannot write '%s'\n", path);
+        pt_outfile_abort(&out);
+        return -1;
+    }
+    if (pt_outfile_commit(&out, err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+int pt_diff_images(const dopts *o, const pt_ppm img[2])
+{
+    const pt_ppm *a = &img[0], *b = &img[1];
+    int w = a->w > b->w ? a->w : b->w, h = a->h > b->h ? a->h : b->h;
+    int x, y, x0 = w, y0 = h, x1 = -1, y1 = -1, k;
+    size_t ndiff = 0, shown = 0;
+    int differ = a->w != b->w || a->h != b->h || a->maxval != b->maxval;
+
+    for (k = 0; k < 2; k++)
+        printf("%-9s %s  (%s, %d x %d, maxval %d)\n", pt_diff_side[k], o->path[k],
+               img[k].format, img[k].w, img[k].h, img[k].maxval);
+    if (a->w != b->w || a->h != b->h)
+        printf("The sizes differ; pixels inside one image only count as different.\n");
+    if (a->maxval != b->maxval)
+        printf("The maxvals differ; the color bytes are compared as they are.\n");
+    for (y = 0; y < h; y++) {
+        for (x = 0; x < w; x++) {
+            const unsigned char *ca = rgb_at(a, x, y), *cb = rgb_at(b, x, y);
+            if (ca && cb && memcmp(ca, cb, 3) == 0) continue;
+            if (ndiff++ == 0) printf("\n");
+            if (x < x0) x0 = x;
+            if (x > x1) x1 = x;
+            if (y < y0) y0 = y;
+            if (y > y1) y1 = y;
+            if (shown < o->show) {
+                printf("  (%d, %d)  expected ", x, y);
+                print_rgb(ca);
+                printf("  actual ");
+                print_rgb(cb);
+                printf("\n");
+                shown++;
+            }
+        }
+    }
+    if (ndiff > shown) printf("  ... and %zu more\n", ndiff - shown);
+    printf("\n");
+    if (ndiff)
+        printf("%zu of %zu pixels differ, all within the box (x, y) = (%d, %d) .. (%d, %d).\n",
+               ndiff, (size_t)w * (size_t)h, x0, y0, x1, y1);
+    else
+        printf("The images are the same: %d x %d pixels.\n", w, h);
+    if (o->image_out) {
+        if (write_highlight(o->image_out, a, b, w, h) != 0) return PT_EXIT_INPUT;
+        printf("Highlight written to %s: differing pixels red, the others EXPECTED's in "
+               "dimmed gray.\n", o->image_out);
+    }
+    return ndiff || differ ? PT_EXIT_DIFFER : PT_EXIT_OK;
+}

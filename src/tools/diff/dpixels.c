@@ -1,0 +1,364 @@
+/*
+** src/tools/diff/dpixels.c -- pipetrace diff: the lit pixels, and the rasterizer replayed
+** See LICENSE for copyright and license.
+**
+** The sets of lit pixels are compared position by position.  When every
+** vertex agrees and the pixels differ, the rasterizer (pt_raster_segment) is
+** run again on each differing segment from its rounded endpoints (its first
+** and last steps in EXPECTED), first with the right viewport stage, which
+** must give EXPECTED's pixels, then with each of the catalogue's viewport
+** stages that round wrongly, which must give ACTUAL's.
+*/
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tools/diff/diff.h"
+
+/* A pixel record's place, for sorting by position. */
+typedef struct pkey {
+    int64_t y, x, i;             /* sort keys */
+    size_t k;                    /* index into px[] */
+} pkey;
+
+static int pkey_cmp(const void *pa, const void *pb)
+{
+    const pkey *a = pa, *b = pb;
+
+    if (a->y != b->y) return a->y < b->y ? -1 : 1;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->i != b->i) return a->i < b->i ? -1 : 1;
+    return a->k < b->k ? -1 : a->k > b->k;
+}
+
+/* A raster record (pixel or clip) in its segment, for sorting by segment. */
+typedef struct skey {
+    uint64_t seg;                /* 1-based segment */
+    uint32_t model;              /* name id */
+    int clip;                    /* 1: cl[k], 0: px[k] */
+    size_t order;                /* place in the file: 2 npix (clip), 2 k + 1 (pixel) */
+    size_t k;                    /* index */
+} skey;
+
+/* Order of the segments of a and b: model id, then segment number. */
+static int seg_cmp(const skey *a, const skey *b)
+{
+    if (a->model != b->model) return a->model < b->model ? -1 : 1;
+    if (a->seg != b->seg) return a->seg < b->seg ? -1 : 1;
+    return 0;
+}
+
+static int skey_cmp(const void *pa, const void *pb)
+{
+    const skey *a = pa, *b = pb;
+    int c = seg_cmp(a, b);
+
+    if (c) return c;
+    return a->order < b->order ? -1 : a->order > b->order;
+}
+
+static size_t pix_hash(int64_t x, int64_t y, int64_t i)
+{
+    uint64_t h = (uint64_t)x * 0x9E3779B97F4A7C15u ^ (uint64_t)y * 0xC2B2AE3D27D4EB4Fu ^
+                 (uint64_t)i * 0x165667B19E3779F9u;
+    h ^= h >> 31;
+    return (size_t)h;
+}
+
+/* The distinct pixels (x, y, i) of t sorted by position, each with its first
+** record's index.  A hash set drops the repeats first (a pixel lit by many
+** segments), so only distinct pixels are sorted: at most the framebuffer's
+** worth however long the trace. */
+static pkey *sorted_pixels(const pt_tread *t, size_t *n)
+{
+    size_t nslot = 1024, m = 0, cap = 256, k, j;
+    uint32_t *slot = calloc(nslot, sizeof *slot);
+    pkey *p = malloc(cap * sizeof *p);
+
+    if (!slot || !p || t->npx >= UINT32_MAX) goto fail;
+    for (k = 0; k < t->npx; k++) {
+        const pt_tpix *x = &t->px[k];
+        size_t h = pix_hash(x->x, x->y, x->i) & (nslot - 1);
+        for (; slot[h]; h = (h + 1) & (nslot - 1)) {
+            const pkey *q = &p[slot[h] - 1];
+            if (q->x == x->x && q->y == x->y && q->i == x->i) break;
+        }
+        if (slot[h]) continue;              /* seen */
+        if (m == cap) {
+            pkey *np = realloc(p, 2 * cap * sizeof *np);
+            if (!np) goto fail;
+            p = np;
+            cap *= 2;
+        }
+        p[m].x = x->x; p[m].y = x->y; p[m].i = x->i; p[m].k = k;
+        slot[h] = (uint32_t)++m;
+        if (2 * m >= nslot) {               /* grow and rehash */
+            uint32_t *ns = calloc(2 * nslot, sizeof *ns);
+            if (!ns) goto fail;
+            nslot *= 2;
+            for (j = 0; j < m; j++) {
+                h = pix_hash(p[j].x, p[j].y, p[j].i) & (nslot - 1);
+                while (ns[h]) h = (h + 1) & (nslot - 1);
+                ns[h] = (uint32_t)j + 1;
+            }
+            free(slot);
+            slot = ns;
+        }
+    }
+    free(slot);
+    qsort(p, m, sizeof *p, pkey_cmp);
+    *n = m;
+    return p;
+fail:
+    free(slot);
+    free(p);
+    return NULL;
+}
+
+/* The raster records of t sorted by segment, in step order within each. */
+static skey *sorted_steps(const pt_tread *t, size_t *n)
+{
+    size_t k, m = 0;
+    skey *s = malloc((t->npx + t->ncl ? t->npx + t->ncl : 1) * sizeof *s);
+
+    if (!s) return NULL;
+    for (k = 0; k < t->npx; k++, m++) {
+        s[m].seg = t->px[k].seg; s[m].model = t->px[k].model;
+        s[m].clip = 0; s[m].order = 2 * k + 1; s[m].k = k;
+    }
+    for (k = 0; k < t->ncl; k++, m++) {
+        s[m].seg = t->cl[k].seg; s[m].model = t->cl[k].model;
+        s[m].clip = 1; s[m].order = 2 * t->cl[k].npix; s[m].k = k;
+    }
+    qsort(s, m, sizeof *s, skey_cmp);
+    *n = m;
+    return s;
+}
+
+/* The pixels of one segment in viewport coordinates, step order. */
+typedef struct plist {
+    int64_t (*p)[2];             /* owned */
+    size_t n, cap;
+    int oom;                     /* 1: plist_add failed while replaying */
+} plist;
+
+static int plist_add(plist *l, int64_t x, int64_t y)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 64;
+        int64_t (*np)[2] = realloc(l->p, cap * sizeof *np);
+        if (!np) return -1;
+        l->p = np;
+        l->cap = cap;
+    }
+    l->p[l->n][0] = x;
+    l->p[l->n][1] = y;
+    l->n++;
+    return 0;
+}
+
+static void replay_pixel(void *ud, int64_t x, int64_t y)
+{
+    plist *l = ud;
+    if (plist_add(l, x, y) != 0) l->oom = 1;
+}
+
+static void replay_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
+{
+    (void)ud; (void)count; (void)first; (void)last;
+}
+
+/* Run the rasterizer again, each step's pixel found by to_vp, for the segment
+** whose rounded endpoints are ends[] = X0 Y0 X1 Y1 (logical pixels), in a w x h
+** viewport; the pixels it writes go to *out in step order.  Returns 0, or -1
+** when out of memory. */
+static int replay(const int64_t ends[4], int w, int h, pt_raster_vp to_vp, plist *out)
+{
+    pt_vec2 p0, p1;
+    pt_raster_out ro;
+
+    p0.x = (double)ends[0]; p0.y = (double)ends[1];
+    p1.x = (double)ends[2]; p1.y = (double)ends[3];
+    ro.pixel = replay_pixel;
+    ro.clip = replay_clip;
+    ro.ud = out;
+    out->n = 0;
+    out->oom = 0;
+    pt_raster_segment(p0, p1, w, h, to_vp, &ro);
+    return out->oom ? -1 : 0;
+}
+
+static int plist_eq(const plist *a, const plist *b)
+{
+    return a->n == b->n && (a->n == 0 || memcmp(a->p, b->p, a->n * sizeof *a->p) == 0);
+}
+
+/* Segment by segment: which differ, and which rounding mistake of the
+** rasterizer reproduces ACTUAL's pixels from EXPECTED's endpoints. */
+int pt_diff_check_raster(dctx *c, rstat *rs)
+{
+    const pt_thdr *hd = &c->t[0].hdr;
+    size_t n[2], k[2] = {0, 0}, j;
+    skey *s[2];
+    plist pl[2] = {{NULL, 0, 0, 0}, {NULL, 0, 0, 0}}, re = {NULL, 0, 0, 0};
+    int side, rc = 0;
+
+    memset(rs, 0, sizeof *rs);
+    s[0] = sorted_steps(&c->t[0], &n[0]);
+    s[1] = sorted_steps(&c->t[1], &n[1]);
+    if (!s[0] || !s[1]) rc = -1;
+    while (rc == 0 && (k[0] < n[0] || k[1] < n[1])) {
+        uint32_t model;
+        uint64_t seg;
+        size_t beg[2], end[2];
+        int64_t ends[4];
+        int have_ends = 0, ok = 0, sane = 1;    /* sane: every coordinate small() */
+
+        /* the next segment of either list: the smaller (model, seg) */
+        side = k[1] >= n[1] ? 0 : k[0] >= n[0] ? 1 : seg_cmp(&s[0][k[0]], &s[1][k[1]]) <= 0 ? 0 : 1;
+        model = s[side][k[side]].model;
+        seg = s[side][k[side]].seg;
+        for (side = 0; side < 2; side++) {
+            beg[side] = k[side];
+            pl[side].n = 0;
+            while (k[side] < n[side] && s[side][k[side]].model == model &&
+                   s[side][k[side]].seg == seg) {
+                const skey *q = &s[side][k[side]++];
+                if (!q->clip) {
+                    const pt_tpix *p = &c->t[side].px[q->k];
+                    if (!small(p->x) || !small(p->y)) sane = 0;
+                    else if (plist_add(&pl[side], p->x - hd->vp_x, p->y - hd->vp_y) != 0)
+                        rc = -1;
+                } else if (!small(c->t[side].cl[q->k].first[0]) ||
+                           !small(c->t[side].cl[q->k].first[1]) ||
+                           !small(c->t[side].cl[q->k].last[0]) ||
+                           !small(c->t[side].cl[q->k].last[1])) {
+                    sane = 0;
+                }
+            }
+            end[side] = k[side];
+        }
+        if (rc != 0 || plist_eq(&pl[0], &pl[1])) continue;
+        /* rounded endpoints: EXPECTED's first and last steps, as logical pixels;
+        ** a viewport beyond PT_MAX_SIZE is no trace of pipetrace's: not replayed */
+        if (end[0] > beg[0] && sane && hd->vp_w >= 1 && hd->vp_h >= 1 &&
+            hd->vp_w <= PT_MAX_SIZE && hd->vp_h <= PT_MAX_SIZE) {
+            const skey *f = &s[0][beg[0]], *l = &s[0][end[0] - 1];
+            int64_t fx, fy, lx, ly;
+            if (f->clip) { fx = c->t[0].cl[f->k].first[0]; fy = c->t[0].cl[f->k].first[1]; }
+            else { fx = c->t[0].px[f->k].x - hd->vp_x; fy = c->t[0].px[f->k].y - hd->vp_y; }
+            if (l->clip) { lx = c->t[0].cl[l->k].last[0]; ly = c->t[0].cl[l->k].last[1]; }
+            else { lx = c->t[0].px[l->k].x - hd->vp_x; ly = c->t[0].px[l->k].y - hd->vp_y; }
+            ends[0] = fx + 1; ends[1] = hd->vp_h - fy;
+            ends[2] = lx + 1; ends[3] = hd->vp_h - ly;
+            have_ends = 1;
+            if (replay(ends, hd->vp_w, hd->vp_h, pt_pixel2viewport, &re))
+                rc = -1;
+            ok = rc == 0 && plist_eq(&re, &pl[0]);
+        }
+        if (!rs->first_set) {
+            rs->first_set = 1;
+            rs->first_model = model;
+            rs->first_seg = seg;
+            if (have_ends) memcpy(rs->ends, ends, sizeof ends);
+            rs->ends_ok = ok;
+        }
+        rs->segs_differ++;
+        for (j = 0; ok && rc == 0 && j < PT_NRASTER_MISTAKES; j++) {
+            if (replay(ends, hd->vp_w, hd->vp_h, pt_raster_mistakes[j].to_vp, &re)) rc = -1;
+            else if (plist_eq(&re, &pl[1])) rs->hits[j]++;
+        }
+    }
+    free(s[0]);
+    free(s[1]);
+    free(pl[0].p);
+    free(pl[1].p);
+    free(re.p);
+    return rc;
+}
+
+/* Compare the sets of lit pixels: count the missing and extra ones into
+** *nmiss and *nextra, and list a few of each.  nlit[s]: distinct pixels of
+** side s. */
+int pt_diff_compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2])
+{
+    pkey *p[2];
+    size_t n[2], count[2] = {0, 0};
+    int pass;
+
+    p[0] = sorted_pixels(&c->t[0], &n[0]);
+    p[1] = sorted_pixels(&c->t[1], &n[1]);
+    if (!p[0] || !p[1]) { free(p[0]); free(p[1]); return -1; }
+    nlit[0] = n[0];
+    nlit[1] = n[1];
+    /* pass 0 counts; pass 1 lists the missing, pass 2 the extra ones */
+    for (pass = 0; pass < 3; pass++) {
+        size_t a = 0, b = 0, shown = 0;
+        int want = pass - 1;                /* the side listed: 0 missing, 1 extra */
+        if (pass == 1 && (count[0] || count[1]))
+            printf("Lit pixels: %zu in EXPECTED, %zu in ACTUAL.\n", n[0], n[1]);
+        if (pass && !count[want]) continue;
+        if (pass) printf("  %s in ACTUAL: %zu\n", want ? "extra" : "missing", count[want]);
+        while ((a < n[0] || b < n[1]) && (pass == 0 || shown < c->o->show)) {
+            int side, cmp = a >= n[0] ? 1 : b >= n[1] ? -1 : 0;
+            const pkey *q;
+            if (!cmp) {
+                pkey x = p[0][a], y = p[1][b];
+                x.k = y.k = 0;
+                cmp = pkey_cmp(&x, &y);
+            }
+            if (!cmp) { a++; b++; continue; }
+            side = cmp < 0 ? 0 : 1;
+            q = side ? &p[1][b++] : &p[0][a++];
+            if (pass == 0) { count[side]++; continue; }
+            if (side == want) {
+                const pt_tpix *x = &c->t[side].px[q->k];
+                printf("    (x_fb, y_fb) = (%" PRId64 ", %" PRId64 "), idx %" PRId64
+                       ", from %s s%" PRIu64 "\n", x->x, x->y, x->i,
+                       pt_names_get(&c->nm, x->model), x->seg);
+                shown++;
+            }
+        }
+        if (pass && count[want] > shown) printf("    ... and %zu more\n", count[want] - shown);
+    }
+    *nmiss = count[0];
+    *nextra = count[1];
+    free(p[0]);
+    free(p[1]);
+    return 0;
+}
+
+/* Print the raster check's details for the first differing segment. */
+void pt_diff_report_raster(const dctx *c, const rstat *rs)
+{
+    pbuf sb;
+    size_t k;
+
+    if (!rs->first_set) return;
+    memset(&sb, 0, sizeof sb);
+    if (rs->segs_differ == 1)
+        pt_diff_add(&sb, "Every vertex agrees, so the rasterizer differs: segment %s s%" PRIu64
+                    " lights other pixels.", pt_names_get(&c->nm, rs->first_model), rs->first_seg);
+    else
+        pt_diff_add(&sb, "Every vertex agrees, so the rasterizer differs: %zu segments light other "
+                    "pixels, the first %s s%" PRIu64 ".", rs->segs_differ,
+                    pt_names_get(&c->nm, rs->first_model), rs->first_seg);
+    if (!rs->ends_ok)
+        pt_diff_add(&sb, " Its endpoints cannot be read off EXPECTED's steps, so no mistake was "
+                    "checked.");
+    pt_diff_para("  ", sb.b);
+    for (k = 0; rs->ends_ok && k < PT_NRASTER_MISTAKES; k++) {
+        if (!rs->hits[k]) continue;
+        printf("  likely mistake: %s\n", pt_raster_mistakes[k].name);
+        pt_diff_para("    ", pt_raster_mistakes[k].how);
+        memset(&sb, 0, sizeof sb);
+        pt_diff_add(&sb, "check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
+                    ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round and "
+                    "ACTUAL's with it", rs->ends[0], rs->ends[1], rs->ends[2], rs->ends[3]);
+        if (rs->segs_differ > 1)
+            pt_diff_add(&sb, "; so it does for %zu of the %zu segments", rs->hits[k], rs->segs_differ);
+        pt_diff_add(&sb, ".");
+        pt_diff_para("    ", sb.b);
+    }
+}
