@@ -10,12 +10,15 @@
 **   pt_run(&s, &p, &o, &listener, &fb, &summary);                 run + rasterize
 **   pt_plan_free(&p);  pt_fb_free(&fb);  pt_scene_free(&s);
 **
+**   pt_journey j;  pt_run_journey(&j, &s, &s.models[0], v, 0);    one vertex,
+**                                                                 every stage
+**
 ** The framebuffer is row-major, top row first: idx = y_fb * W + x_fb.
 ** Records reach the listener in this order: header; for each model in file
 ** order, the journey of each used vertex in vertex order (stage order within a
-** vertex; a listener with a journey callback gets the whole journey first,
-** then the vertex's records); then for each model and segment, its pixel and clip records in step
-** order; then the summary.  Errors: only pt_scene_load() and pt_run()'s
+** vertex; a listener with a journey callback gets the whole pt_journey first,
+** then the vertex's records); then for each model and segment, its pixel and
+** clip records in step order; then the summary.  Errors: only pt_scene_load() and pt_run()'s
 ** allocations can fail; they return -1 with a message, nothing here exits.
 */
 #ifndef PT_PIPELINE_H
@@ -103,16 +106,16 @@ typedef struct pt_listener {
                           /* matrix camera: the point q (clip coordinates) made
                           ** by clipping segment seg (from -> to, 1-based) at t;
                           ** its records follow */
-    void (*pixel)(void *ud, const pt_model *m, uint64_t seg,        /* 1-based seg */
-                  int64_t x_fb, int64_t y_fb, int64_t idx);
-    void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
-                 pt_pix first, pt_pix last);
     void (*journey)(void *ud, const pt_model *m, uint64_t v, const pt_journey *j);
                           /* a traced point's whole journey, every stage's record
                           ** (also those the trace leaves out), before its records
                           ** reach sink: v is the 1-based vertex, or 0 for a point
                           ** clipping made (after its clipvertex_begin).  NULL: no
                           ** journey is kept, which costs nothing */
+    void (*pixel)(void *ud, const pt_model *m, uint64_t seg,        /* 1-based seg */
+                  int64_t x_fb, int64_t y_fb, int64_t idx);
+    void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
+                 pt_pix first, pt_pix last);
     void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */
                  uint64_t v, const char *why);      /* v: the endpoint at fault, 0: none */
     void (*summary)(void *ud, const pt_summary *sum);
