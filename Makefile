@@ -67,7 +67,7 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
            $B/m7_screen2viewport.o $B/pt_matrix.o
 # src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
-CORE_O   = $B/scene.o $B/builtin.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
+CORE_O   = $B/scene.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/png.o $B/outfile.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff

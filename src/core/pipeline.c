@@ -2,6 +2,7 @@
 ** src/core/pipeline.c -- plan the stages, run every vertex through them, rasterize
 ** See LICENSE for copyright and license.
 */
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -154,13 +155,19 @@ typedef struct counting_sink {
     const pt_sink *next;         /* NULL: the stage is not traced */
 } counting_sink;
 
-static void count_record(void *ud, const pt_vrec *r)
+static void count_warnings(pt_summary *sum, const pt_vrec *r)
 {
-    counting_sink *cs = ud;
     int k;
 
     for (k = 0; k < PT_NWARN; k++)
-        if (r->warn & (1u << k)) cs->sum->warnings[k]++;
+        if (r->warn & (1u << k)) sum->warnings[k]++;
+}
+
+static void count_record(void *ud, const pt_vrec *r)
+{
+    counting_sink *cs = ud;
+
+    count_warnings(cs->sum, r);
     if (cs->next) cs->next->vertex(cs->next->ud, r);
 }
 
@@ -189,6 +196,60 @@ static void sinks_init(model_sinks *ms, const pt_model_plan *mp, const pt_listen
     }
 }
 
+/* A traced point's journey while its stages run, for a listener with a
+** journey callback: every stage reports to filing's sink, which counts the
+** warnings (as count_record) and files the record; then the listener gets
+** the whole journey, then the records of the traced stages in the order they
+** came, as the sinks of model_sinks would have forwarded them. */
+typedef struct filing {
+    pt_journey j;                /* the records, filed by stage */
+    pt_summary *sum;
+    pt_stage came[PT_NSTAGES_ALL];  /* the stages, in the order they reported */
+    int ncame;
+    pt_sink sink;                /* file_record, this */
+    const pt_sink *sinks[PT_NSTAGES_ALL];   /* all &sink */
+} filing;
+
+static void file_record(void *ud, const pt_vrec *r)
+{
+    filing *f = ud;
+
+    count_warnings(f->sum, r);
+    pt_journey_file(&f->j, r);
+    if (f->ncame < PT_NSTAGES_ALL) f->came[f->ncame++] = r->stage;
+}
+
+/* Start filing the journey of a point of model k. */
+static void filing_start(filing *f, const pt_scene *s, const pt_plan *p, size_t k,
+                         pt_summary *sum)
+{
+    pt_stage_params par;
+    int st;
+
+    pt_stage_params_of(&par, s, &s->models[k]);
+    if (s->matrix) pt_journey_start(&f->j, &par, &p->models[k].world, &p->view, &p->proj);
+    else pt_journey_start(&f->j, &par, NULL, NULL, NULL);
+    f->sum = sum;
+    f->ncame = 0;
+    f->sink.vertex = file_record;
+    f->sink.ud = f;
+    for (st = 0; st < PT_NSTAGES_ALL; st++) f->sinks[st] = &f->sink;
+}
+
+/* Hand the journey over (v: 1-based vertex, 0: a point clipping made), then
+** the records of the stages model plan mp traces. */
+static void filing_end(filing *f, const pt_listener *l, const pt_model *m, uint64_t v,
+                       const pt_model_plan *mp)
+{
+    int i;
+
+    l->journey(l->ud, m, v, &f->j);
+    if (!l->sink.vertex) return;
+    for (i = 0; i < f->ncame; i++)
+        if (mp->why[f->came[i]] == PT_WHY_TRACED)
+            l->sink.vertex(l->sink.ud, &f->j.rec[f->came[i]]);
+}
+
 /* What the rasterizer needs of a vertex. */
 typedef struct vtx {
     pt_vec2 pp;                  /* pixel-plane point (NaN: none) */
@@ -196,10 +257,11 @@ typedef struct vtx {
     unsigned code;               /* matrix camera: CVV outcode */
 } vtx;
 
-/* Run every vertex of model k that needs it; fill v[] for the rasterizer. */
+/* Run every vertex of model k that needs it; fill v[] for the rasterizer.
+** fl: room for a journey (used when the listener wants journeys). */
 static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
                       const pt_listener *l, size_t k, const model_sinks *ms,
-                      vtx *v, pt_summary *sum)
+                      vtx *v, filing *fl, pt_summary *sum)
 {
     const pt_model *m = &s->models[k];
     const pt_model_plan *mp = &p->models[k];
@@ -211,10 +273,16 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
         int traced = mp->selected && (!o->vertex || o->vertex == j + 1);
         const pt_sink *const *sinks = traced ? ms->traced : ms->quiet;
         int behind;
+        filing *f = traced && l->journey ? fl : NULL;
         vtx x;
 
-        if (!mp->used[j] || (!traced && !o->rasterize)) continue;
+        if (!traced && !o->rasterize) continue;
+        if (!mp->used[j] && !(traced && o->every_vertex)) continue;
         if (traced && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
+        if (f) {
+            filing_start(f, s, p, k, sum);
+            sinks = f->sinks;
+        }
         if (s->matrix) {
             pt_matrices mx;
             pt_matrices_of(&mx, p, k);
@@ -224,6 +292,10 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
             double z_c;
             x.pp = pt_classic_journey(&par, m->v[j], sinks, &z_c);
             behind = s->perspective && z_c > 0;
+        }
+        if (f) {
+            f->j.norder = f->ncame;         /* matrix: 5 when it stops at the cvv */
+            filing_end(f, l, m, j + 1, mp);
         }
         if (traced) {
             sum->vertices_traced++;
@@ -282,16 +354,42 @@ static void skip_report(const pt_listener *l, const pt_model *m, uint64_t seg,
     l->skip(l->ud, m, seg, (a_bad ? sg->a : sg->b) + 1, why);
 }
 
-/* Clip a matrix-camera segment in clip space; the points clipping makes run
-** the rest of the pipeline.  Returns 0 when nothing of it is visible, else 1
-** with *a, *b the pixel-plane points to draw between. */
-static int matrix_segment(const pt_scene *s, const pt_model *m, uint64_t seg,
-                          const vtx *va, const vtx *vb, const pt_listener *l,
-                          const model_sinks *ms, pt_vec2 *a, pt_vec2 *b)
+/* Run the tail for the point q clipping made at t on segment seg of model k
+** (traced when l is not NULL); returns its pixel-plane point. */
+static pt_vec2 clip_point(const pt_scene *s, const pt_plan *p, size_t k, uint64_t seg,
+                          double t, pt_vec4 q, const pt_listener *l,
+                          const model_sinks *ms, filing *fl, pt_summary *sum)
 {
+    const pt_model *m = &s->models[k];
     const pt_segment *sg = &m->seg[seg - 1];
-    const pt_sink *const *sinks = l ? ms->traced : ms->quiet;
     pt_stage_params par;
+    pt_vrec r = {0};
+    pt_vec2 pp;
+
+    if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t, q);
+    pt_stage_params_of(&par, s, m);
+    if (!l || !l->journey) return pt_matrix_tail(&par, q, fabs(q.w), l ? ms->traced : ms->quiet);
+    filing_start(fl, s, p, k, sum);
+    r.stage = PT_STAGE_CLIP;                /* the point, where its journey starts */
+    r.x = q.x; r.y = q.y; r.z = q.z; r.w = q.w;
+    pt_journey_file(&fl->j, &r);
+    r.stage = PT_STAGE_CVV;                 /* inside: on a plane at most */
+    pt_journey_file(&fl->j, &r);
+    pp = pt_matrix_tail(&par, q, fabs(q.w), fl->sinks);
+    fl->j.norder = pt_matrix_norder;
+    filing_end(fl, l, m, 0, &p->models[k]);
+    return pp;
+}
+
+/* Clip a matrix-camera segment of model k in clip space; the points clipping
+** makes run the rest of the pipeline (traced when l is not NULL).  Returns 0
+** when nothing of it is visible, else 1 with *a, *b the pixel-plane points to
+** draw between. */
+static int matrix_segment(const pt_scene *s, const pt_plan *p, size_t k, uint64_t seg,
+                          const vtx *va, const vtx *vb, const pt_listener *l,
+                          const model_sinks *ms, filing *fl, pt_summary *sum,
+                          pt_vec2 *a, pt_vec2 *b)
+{
     double t0, t1;
     pt_vec4 q0, q1;
 
@@ -299,15 +397,10 @@ static int matrix_segment(const pt_scene *s, const pt_model *m, uint64_t seg,
     *b = vb->pp;
     if ((va->code | vb->code) == 0) return 1;           /* all inside */
     if (!pt_clip_segment(va->clip, vb->clip, &t0, &t1, &q0, &q1)) return 0;
-    pt_stage_params_of(&par, s, m);
-    if (va->code) {                                     /* a new first end */
-        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t0, q0);
-        *a = pt_matrix_tail(&par, q0, fabs(q0.w), sinks);
-    }
-    if (vb->code) {                                     /* a new last end */
-        if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t1, q1);
-        *b = pt_matrix_tail(&par, q1, fabs(q1.w), sinks);
-    }
+    if (va->code)                                       /* a new first end */
+        *a = clip_point(s, p, k, seg, t0, q0, l, ms, fl, sum);
+    if (vb->code)                                       /* a new last end */
+        *b = clip_point(s, p, k, seg, t1, q1, l, ms, fl, sum);
     return 1;
 }
 
@@ -317,6 +410,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     size_t k, j;
     vtx **vs;                    /* vs[k][v]: what the rasterizer needs of v */
     model_sinks *ms;             /* ms[k]: model k's sinks */
+    filing fl;                   /* a traced point's journey (l->journey) */
     int status = 0;
 
     memset(sum, 0, sizeof *sum);
@@ -337,7 +431,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
             vs[k] = malloc((m->nv ? m->nv : 1) * sizeof **vs);
             if (!vs[k]) { status = -1; goto done; }
         }
-        run_model(s, p, o, l, k, &ms[k], vs[k], sum);
+        run_model(s, p, o, l, k, &ms[k], vs[k], &fl, sum);
     }
 
     if (o->rasterize) {                     /* rasterize */
@@ -361,8 +455,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
                 int r;
 
                 rc.seg = j + 1;
-                if (s->matrix && !matrix_segment(s, m, j + 1, va, vb, traced ? l : NULL,
-                                                 &ms[k], &a, &b)) {
+                if (s->matrix && !matrix_segment(s, p, k, j + 1, va, vb, traced ? l : NULL,
+                                                 &ms[k], &fl, sum, &a, &b)) {
                     sum->segments_culled++;
                     if (report && l->skip)
                         l->skip(l->ud, m, j + 1, 0, "outside the view volume");
@@ -383,4 +477,82 @@ done:
     free(vs);
     free(ms);
     return status;
+}
+
+/* ===== journeys ===== */
+
+/* What pt_run_journey() and pt_run_journeys() keep: the journeys of model m,
+** js[v - 1] for vertex v (v in 1 .. nv); js[0] for vertex `only` when set. */
+typedef struct keeper {
+    const pt_model *m;
+    pt_journey *js;
+    uint64_t nv;
+    uint64_t only;               /* 0, or the one vertex kept */
+    int kept;                    /* how many were kept */
+} keeper;
+
+static void keep_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
+{
+    keeper *kp = ud;
+
+    if (m != kp->m || v < 1 || v > kp->nv || (kp->only && v != kp->only)) return;
+    kp->js[kp->only ? 0 : v - 1] = *j;
+    kp->kept++;
+}
+
+/* Run s tracing model m (vertex v alone, or all when v is 0), every vertex
+** used or not, nothing drawn, into kp. */
+static int run_keeping(const pt_scene *s, const pt_model *m, uint64_t v, int raw_lookat,
+                       keeper *kp)
+{
+    pt_options o;
+    pt_plan p;
+    pt_listener l;
+    pt_summary sum;
+    int rc;
+
+    pt_options_default(&o);
+    o.model = m->name;           /* models of the same name: keep_journey picks m */
+    o.vertex = v;
+    o.trace_raster = 0;
+    o.rasterize = 0;
+    o.raw_lookat = raw_lookat;
+    o.every_vertex = 1;
+    memset(&l, 0, sizeof l);
+    l.journey = keep_journey;
+    l.ud = kp;
+    if (pt_plan_make(&p, s, &o) != 0) return -1;
+    rc = pt_run(s, &p, &o, &l, NULL, &sum);
+    pt_plan_free(&p);
+    return rc;
+}
+
+int pt_run_journey(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
+                   int raw_lookat)
+{
+    keeper kp;
+
+    assert(v >= 1 && v <= m->nv);
+    kp.m = m;
+    kp.js = j;
+    kp.nv = m->nv;
+    kp.only = v;
+    kp.kept = 0;
+    if (run_keeping(s, m, v, raw_lookat, &kp) != 0) return -1;
+    assert(kp.kept == 1);
+    return 0;
+}
+
+pt_journey *pt_run_journeys(const pt_scene *s, const pt_model *m, int raw_lookat)
+{
+    keeper kp;
+
+    kp.m = m;
+    kp.nv = m->nv;
+    kp.only = 0;
+    kp.kept = 0;
+    kp.js = calloc(m->nv ? m->nv : 1, sizeof *kp.js);
+    if (!kp.js) return NULL;
+    if (run_keeping(s, m, 0, raw_lookat, &kp) != 0) { free(kp.js); return NULL; }
+    return kp.js;
 }

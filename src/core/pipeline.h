@@ -10,11 +10,15 @@
 **   pt_run(&s, &p, &o, &listener, &fb, &summary);                 run + rasterize
 **   pt_plan_free(&p);  pt_fb_free(&fb);  pt_scene_free(&s);
 **
+**   pt_journey j;  pt_run_journey(&j, &s, &s.models[0], v, 0);    one vertex,
+**                                                                 every stage
+**
 ** The framebuffer is row-major, top row first: idx = y_fb * W + x_fb.
 ** Records reach the listener in this order: header; for each model in file
 ** order, the journey of each used vertex in vertex order (stage order within a
-** vertex); then for each model and segment, its pixel and clip records in step
-** order; then the summary.  Errors: only pt_scene_load() and pt_run()'s
+** vertex; a listener with a journey callback gets the whole pt_journey first,
+** then the vertex's records); then for each model and segment, its pixel and
+** clip records in step order; then the summary.  Errors: only pt_scene_load() and pt_run()'s
 ** allocations can fail; they return -1 with a message, nothing here exits.
 */
 #ifndef PT_PIPELINE_H
@@ -24,6 +28,7 @@
 #include <stddef.h>
 #include "core/scene.h"
 #include "core/fb.h"
+#include "core/vjourney.h"
 #include "stages/pt_classic.h"
 #include "stages/pt_matrix.h"
 
@@ -36,6 +41,8 @@ typedef struct pt_options {
     int trace_raster;            /* 1: report pixel and clip records */
     int rasterize;               /* 1: draw the segments (image or raster trace) */
     int raw_lookat;              /* 1: the seed's look-at matrix, up not re-derived */
+    int every_vertex;            /* 1: trace the vertices no segment uses too (where
+                                 ** they would land: step, quiz, why) */
 } pt_options;
 
 /* Why a stage is left out of a model's trace. */
@@ -99,6 +106,12 @@ typedef struct pt_listener {
                           /* matrix camera: the point q (clip coordinates) made
                           ** by clipping segment seg (from -> to, 1-based) at t;
                           ** its records follow */
+    void (*journey)(void *ud, const pt_model *m, uint64_t v, const pt_journey *j);
+                          /* a traced point's whole journey, every stage's record
+                          ** (also those the trace leaves out), before its records
+                          ** reach sink: v is the 1-based vertex, or 0 for a point
+                          ** clipping made (after its clipvertex_begin).  NULL: no
+                          ** journey is kept, which costs nothing */
     void (*pixel)(void *ud, const pt_model *m, uint64_t seg,        /* 1-based seg */
                   int64_t x_fb, int64_t y_fb, int64_t idx);
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
@@ -131,5 +144,19 @@ void pt_plan_free(pt_plan *p);
 ** o->rasterize is set.  Fills *sum.  Returns 0, or -1 when out of memory. */
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
            const pt_listener *l, pt_fb *fb, pt_summary *sum);
+
+/* The journey of 1-based vertex v (1 <= v <= m->nv) of model m of scene s, as
+** pt_run() computes it (raw_lookat as its option), used by a segment or not:
+** pt_run() traces v alone and hands its journey over.  Under the matrix camera
+** a vertex outside the view volume stops at the cvv.  Returns 0, or -1 when
+** out of memory. */
+int pt_run_journey(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
+                   int raw_lookat);
+
+/* The journeys of every vertex of model m of scene s, from one pt_run():
+** element k is vertex k + 1's (as pt_run_journey()).  Returns an array of
+** m->nv journeys (at least one element) the caller frees, or NULL when out of
+** memory. */
+pt_journey *pt_run_journeys(const pt_scene *s, const pt_model *m, int raw_lookat);
 
 #endif

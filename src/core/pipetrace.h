@@ -38,6 +38,7 @@
 #include "core/fb.h"                   /* the framebuffer */
 #include "core/clip.h"                 /* the matrix camera's clipping */
 #include "core/raster.h"               /* the DDA */
+#include "core/vjourney.h"             /* one point's records, every stage */
 #include "core/pipeline.h"             /* plan, run, listen */
 
 #endif

@@ -1,18 +1,17 @@
 /*
-** src/io/explain.h -- one vertex's journey, and each stage's formula with its numbers
+** src/io/explain.h -- each stage's formula with one vertex's numbers put in
 ** See LICENSE for copyright and license.
 **
-** A pt_journey is everything the seven stages compute for one vertex, filled by
-** calling the stage functions of stages/ in pipeline order (so its numbers are
-** the trace's numbers, bit for bit).  The explain functions turn a journey into
+** A pt_journey (src/core/vjourney.h) is the record of every stage pt_run()
+** ran for one vertex, handed over by pt_run() itself (so its numbers are the
+** trace's numbers, bit for bit).  The explain functions turn a journey into
 ** text for people: the formula of a stage with this vertex's numbers put in, and
 ** a note on what the next stage will do with the result.  Every number is
 ** written as the shortest decimal that reads back to the same double, so a
 ** student can redo each step with a calculator and get the same digits.
 **
 ** USAGE
-**   pt_stage_params par;  pt_stage_params_of(&par, scene, model);
-**   pt_journey j;  pt_journey_compute(&j, &par, model->v[v - 1]);
+**   pt_journey j;  pt_run_journey(&j, scene, model, v, 0);
 **   char b[PT_EXPLAINLEN];
 **   pt_explain_stage(b, sizeof b, &j, PT_STAGE_PIXEL, "; ");
 **     -> "x_pp = 0.5 + w/2.001 * (x_ip + 1) = 0.5 + 20/2.001 * (-0.5 + 1)
@@ -31,54 +30,6 @@
 #include "core/pipetrace.h"
 
 #define PT_EXPLAINLEN 1024       /* room for any text written here */
-
-/* One vertex's full journey.  rec[st] is the record stage st reports (model:
-** the vertex itself), whether or not a trace would leave the stage out. */
-typedef struct pt_journey {
-    pt_stage_params par;         /* the numbers used */
-    pt_vrec rec[PT_NSTAGES_ALL]; /* each stage's values, indexed by pt_stage */
-    const pt_stage *order;       /* the stages this journey went through, */
-    int norder;                  /*   in pipeline order, and how many */
-    int matrix;                  /* 1: the matrix camera's journey */
-    pt_mat4 world, view, proj;   /* matrix camera: World, View, Projection */
-} pt_journey;
-
-/* Run v_m (model coordinates) through the classic camera's six stages with
-** par.  Requires par->w, h, W, H >= 1.  This function can't fail. */
-void pt_journey_compute(pt_journey *j, const pt_stage_params *par, pt_vec3 v_m);
-
-/* The journey of 1-based vertex v of model m in scene s, through whichever
-** camera s has, exactly as pt_run() computes it (raw_lookat as its option).
-** Under the matrix camera a vertex outside the view volume stops at the cvv
-** stage.  Returns 0, or -1 when out of memory. */
-int pt_journey_of(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,
-                  int raw_lookat);
-
-/* The same under plan p, the one pt_run() got (p may be NULL for the classic
-** camera): no plan is built, so a caller with many vertices pays for one plan,
-** not one per vertex.  This function can't fail. */
-void pt_journey_of_plan(pt_journey *j, const pt_scene *s, const pt_plan *p,
-                        const pt_model *m, uint64_t v);
-
-/* The journey of a point the matrix camera's clipping made on a segment of
-** model m, from its clip coordinates q (the listener's clipvertex_begin gets
-** them): ndc .. index, as pt_run() computes them.  Its clip and cvv records
-** hold q itself; the earlier stages have none.  This function can't fail. */
-void pt_journey_of_clip(pt_journey *j, const pt_scene *s, const pt_plan *p,
-                        const pt_model *m, pt_vec4 q);
-
-/* The name, spaces and formula of stage st as j's camera has it (the matrix
-** camera's viewport stage floors instead of rounding).  Can't fail. */
-const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st);
-
-/* 1 when r is the record of its stage in j, number for number.  This function
-** can't fail. */
-int pt_journey_matches(const pt_journey *j, const pt_vrec *r);
-
-/* 1 when pt_run() reports, for every used vertex of s, exactly the records of
-** its pt_journey; 0 when it does not (a scene whose camera takes other stages,
-** which the explain functions do not know); -1 when out of memory. */
-int pt_journey_agrees(const pt_scene *s);
 
 /* 1 when some segment of m uses its 1-based vertex v.  This function can't fail. */
 int pt_vertex_used(const pt_model *m, uint64_t v);

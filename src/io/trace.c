@@ -429,7 +429,7 @@ static void on_clipvertex_begin(void *ud, const pt_model *m, uint64_t seg,
     t->to = to;
     t->t_clip = tc;
     t->q_clip = q;
-    t->journey_made = t->explain_lost = 0;
+    t->journey_made = 0;
 }
 
 static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)
@@ -439,7 +439,17 @@ static void on_vertex_begin(void *ud, const pt_model *m, uint64_t v)
     t->clipv = 0;
     t->model = m;
     t->v = v;
-    t->journey_made = t->explain_lost = 0;
+    t->journey_made = 0;
+}
+
+/* --explain: the point's journey, which comes before its records. */
+static void on_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
+{
+    pt_trace *t = ud;
+
+    (void)m; (void)v;
+    t->journey = *j;
+    t->journey_made = 1;
 }
 
 /* "x_pp = ": the name of value k of stage st (stages/pt_stage.h), padded to
@@ -454,23 +464,15 @@ static void put_lhs(pt_trace *t, pt_stage st, int k)
     put(t, " = ", 3);
 }
 
-/* --explain: r's formula with this vertex's numbers, from the journey computed
-** at vertex_begin, so a stage left out still feeds the next one its real value.
-** Text: an indented line; JSON: an "explain" field.  Once a record differs from
-** the journey (a camera with other stages), the vertex gets no more of them. */
+/* --explain: r's formula with this vertex's numbers, from the journey pt_run()
+** handed over before the records, so a stage left out still feeds the next
+** one its real value.  Text: an indented line; JSON: an "explain" field. */
 static void put_explain(pt_trace *t, const pt_vrec *r)
 {
     char b[PT_EXPLAINLEN];
     size_t n;
 
-    if (!t->scene || !t->plan) t->explain_lost = 1;
-    if (!t->explain_lost && !t->journey_made) {     /* every stage, even those left out */
-        if (t->clipv) pt_journey_of_clip(&t->journey, t->scene, t->plan, t->model, t->q_clip);
-        else pt_journey_of_plan(&t->journey, t->scene, t->plan, t->model, t->v);
-        t->journey_made = 1;
-    }
-    if (!t->explain_lost && !pt_journey_matches(&t->journey, r)) t->explain_lost = 1;
-    if (t->explain_lost) return;
+    if (!t->journey_made) return;
     n = pt_explain_stage(b, sizeof b, &t->journey, r->stage, "; ");
     if (n >= sizeof b) n = sizeof b - 1;
     if (t->fmt == PT_FORMAT_JSONL) { puts_(t, ",\"explain\":"); put_json_str(t, b); return; }
@@ -828,7 +830,6 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->model = NULL;
     t->v = 0;
     t->explain = 0;
-    t->explain_lost = 0;
     t->journey_made = 0;
     t->clipv = 0;
     t->scene = NULL;
@@ -846,6 +847,7 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
     l->sink.ud = t;
     l->pixel = on_pixel;
     l->clip = on_clip;
+    l->journey = t->explain ? on_journey : NULL;   /* no cost without --explain */
     l->skip = on_skip;
     l->summary = on_summary;
     l->ud = t;

@@ -45,13 +45,12 @@ typedef struct pt_trace {
     double t_clip;               /*   at parameter t, */
     pt_vec4 q_clip;              /*   its clip coordinates */
     int explain;                 /* 1: each vertex record gets its formula with
-                                 ** the numbers put in (--explain); set after init */
+                                 ** the numbers put in (--explain); set after init,
+                                 ** before pt_trace_listener() */
     const pt_scene *scene;       /* the scene and the plan, from the header */
-    const pt_plan *plan;         /*   (for explain; they outlive the run) */
-    pt_journey journey;          /* with explain: the vertex's whole journey, */
-    int journey_made;            /*   once its first record is explained */
-    int explain_lost;            /* a record the journey does not reproduce came:
-                                 ** no more explanations for this vertex */
+    const pt_plan *plan;         /*   (they outlive the run) */
+    pt_journey journey;          /* with explain: the point's whole journey, */
+    int journey_made;            /*   as pt_run() handed it over */
     int failed;                  /* 1 after a write error */
     size_t len;                  /* bytes waiting in buf */
     char buf[1 << 16];           /* output block */
@@ -60,7 +59,8 @@ typedef struct pt_trace {
 /* Prepare t to write fmt to f.  This function can't fail. */
 void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision);
 
-/* Fill *l with callbacks that write to t. */
+/* Fill *l with callbacks that write to t (with t->explain: also the one that
+** takes each point's journey, pt_listener.journey). */
 void pt_trace_listener(pt_trace *t, pt_listener *l);
 
 /* Write what is buffered.  Returns 0, or -1 when any write failed. */

@@ -196,7 +196,7 @@ int pt_cmd_quiz(int argc, char **argv)
 {
     const char *path = NULL, *model = NULL;
     unsigned long long v = 0, seed = 0;
-    int k, rc, seeded = 0, picked = 0, right, asked;
+    int k, seeded = 0, picked = 0, right, asked;
     const pt_model *m = NULL;
     pt_journey j;
     pt_scene s;
@@ -228,13 +228,6 @@ int pt_cmd_quiz(int argc, char **argv)
     if (v && seeded) return usage_error("--vertex and --seed exclude each other", "");
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    rc = pt_journey_agrees(&s);
-    if (rc != 1) {
-        fprintf(stderr, "pipetrace quiz: %s: %s\n", s.path, rc < 0 ? "out of memory"
-                : "the quiz does not agree with the pipeline on this scene");
-        pt_scene_free(&s);
-        return PT_EXIT_INPUT;
-    }
     if (v) m = pt_cli_vertex_model(&s, "quiz", model, v);
     if ((v && !m) || (!v && model && !pt_cli_model(&s, "quiz", model))) {
         pt_scene_free(&s);
@@ -262,7 +255,7 @@ int pt_cmd_quiz(int argc, char **argv)
         picked = 1;
     }
 
-    if (pt_journey_of(&j, &s, m, v, 0) != 0) {
+    if (pt_run_journey(&j, &s, m, v, 0) != 0) {
         fputs("pipetrace quiz: out of memory\n", stderr);
         pt_scene_free(&s);
         return PT_EXIT_INPUT;

@@ -189,15 +189,16 @@ static int side_lines(const pt_journey *j, const pt_stage *sts, int n, char out[
 static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int raw)
 {
     pt_journey jc, jm;
-    pt_stage_params par;
-    pt_scene ms = *s;
+    pt_scene cs = *s, ms = *s;
     pt_model *models = NULL;
     size_t r, mi = (size_t)(m - s->models);
     int rc = 0;
 
-    pt_stage_params_of(&par, s, m);
-    if (s->matrix) par.perspective = 1;
-    pt_journey_compute(&jc, &par, m->v[v - 1]);
+    if (s->matrix) {                        /* the classic camera, perspective */
+        cs.matrix = 0;
+        cs.perspective = 1;
+    }
+    if (pt_run_journey(&jc, &cs, &cs.models[mi], v, raw) != 0) return PT_EXIT_INPUT;
     if (!s->matrix) {                       /* the equivalent matrix camera */
         models = malloc(s->nmodels * sizeof *models);
         if (!models) return PT_EXIT_INPUT;
@@ -219,7 +220,7 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
         ms.znear = 0.01;
         ms.zfar = 1e9;
     }
-    if (pt_journey_of(&jm, &ms, &ms.models[mi], v, raw) != 0) { free(models); return PT_EXIT_INPUT; }
+    if (pt_run_journey(&jm, &ms, &ms.models[mi], v, raw) != 0) { free(models); return PT_EXIT_INPUT; }
 
     printf("pipetrace step --compare-cameras: vertex %llu of model %s in %s\n",
            (unsigned long long)v, m->name, s->path);
@@ -300,13 +301,6 @@ int pt_cmd_step(int argc, char **argv)
     if (all && inter) return usage_error("--all and --interactive exclude each other", "");
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    rc = pt_journey_agrees(&s);
-    if (rc != 1) {
-        fprintf(stderr, "pipetrace step: %s: %s\n", s.path, rc < 0 ? "out of memory"
-                : "the step-through does not agree with the pipeline on this scene");
-        pt_scene_free(&s);
-        return PT_EXIT_INPUT;
-    }
     m = pt_cli_vertex_model(&s, "step", model, v);
     if (!m) {
         pt_scene_free(&s);
@@ -318,7 +312,7 @@ int pt_cmd_step(int argc, char **argv)
         pt_scene_free(&s);
         return rc;
     }
-    if (pt_journey_of(&j, &s, m, v, raw) != 0) {
+    if (pt_run_journey(&j, &s, m, v, raw) != 0) {
         fputs("pipetrace step: out of memory\n", stderr);
         pt_scene_free(&s);
         return PT_EXIT_INPUT;

@@ -164,20 +164,20 @@ static double seg_dist(double px, double py, double ax, double ay, double bx, do
     return isfinite(d) ? d : HUGE_VAL;
 }
 
-/* The journeys of segment si of model mi's two endpoints. */
-static void seg_journeys(const pt_scene *s, size_t mi, size_t si, pt_journey *a, pt_journey *b)
+/* The journeys of segment si of model mi's two endpoints, from js[mi]
+** (pt_run_journeys()). */
+static void seg_journeys(const pt_scene *s, pt_journey *const *js, size_t mi, size_t si,
+                         pt_journey *a, pt_journey *b)
 {
     const pt_model *m = &s->models[mi];
-    pt_stage_params par;
 
-    pt_stage_params_of(&par, s, m);
-    pt_journey_compute(a, &par, m->v[m->seg[si].a]);
-    pt_journey_compute(b, &par, m->v[m->seg[si].b]);
+    *a = js[mi][m->seg[si].a];
+    *b = js[mi][m->seg[si].b];
 }
 
 /* Rasterize segment si of model mi and measure it against (X, Y). */
-static void evaluate(const pt_scene *s, size_t mi, size_t si, int64_t X, int64_t Y,
-                     seg_eval *e)
+static void evaluate(const pt_scene *s, pt_journey *const *js, size_t mi, size_t si,
+                     int64_t X, int64_t Y, seg_eval *e)
 {
     pt_journey a, b;
     const pt_vrec *pa, *pb;
@@ -188,7 +188,7 @@ static void evaluate(const pt_scene *s, size_t mi, size_t si, int64_t X, int64_t
     memset(e, 0, sizeof *e);
     e->mi = mi;
     e->si = si;
-    seg_journeys(s, mi, si, &a, &b);
+    seg_journeys(s, js, mi, si, &a, &b);
     pa = &a.rec[PT_STAGE_PIXEL];
     pb = &b.rec[PT_STAGE_PIXEL];
     p0.x = pa->x; p0.y = pa->y;
@@ -239,13 +239,13 @@ static void show_vertex(uint64_t v, const pt_journey *j)
 }
 
 /* "  tri s2 (v2 -> v3)" plus both endpoints' journeys. */
-static void show_segment(const pt_scene *s, const seg_eval *e, const char *tail,
-                         pt_journey *a, pt_journey *b)
+static void show_segment(const pt_scene *s, pt_journey *const *js, const seg_eval *e,
+                         const char *tail, pt_journey *a, pt_journey *b)
 {
     const pt_model *m = &s->models[e->mi];
     uint64_t va = m->seg[e->si].a + 1ull, vb = m->seg[e->si].b + 1ull;
 
-    seg_journeys(s, e->mi, e->si, a, b);
+    seg_journeys(s, js, e->mi, e->si, a, b);
     printf("  %s s%llu (v%llu -> v%llu)%s\n", m->name, (unsigned long long)e->si + 1,
            (unsigned long long)va, (unsigned long long)vb, tail);
     show_vertex(va, a);
@@ -342,6 +342,8 @@ static void keep_nearest(seg_eval best[NEAREST], int *n, const seg_eval *e)
 /* What the loop over the segments found, beyond the segments it printed. */
 typedef struct why_ctx {
     const pt_scene *s;
+    pt_journey **js;             /* js[mi][v]: model mi's vertex v + 1's journey,
+                                 ** from pt_run_journeys(); owned */
     const pt_model *sel;         /* --model's model, or NULL: every model counts */
     long long X, Y;              /* the pixel (x_fb, y_fb) */
     int inside;                  /* 1: it lies inside the viewport */
@@ -386,21 +388,18 @@ static void show_no_segments(const why_ctx *w)
 
     for (mi = 0; mi < s->nmodels; mi++) {
         const pt_model *m = &s->models[mi];
-        pt_stage_params par;
         double dmin = HUGE_VAL;
         size_t vmin = 0;
 
         if (m->nseg) continue;
-        pt_stage_params_of(&par, s, m);
         for (v = 0; v < m->nv; v++) {
-            pt_journey j;
+            const pt_journey *jv = &w->js[mi][v];       /* a point: a segment of length 0 */
             double dv;
-            pt_journey_compute(&j, &par, m->v[v]);      /* a point: a segment of length 0 */
             dv = seg_dist((double)w->X, (double)w->Y,
-                          s->vp_x + j.rec[PT_STAGE_PIXEL].x - 1,
-                          s->vp_y + s->vp_h - j.rec[PT_STAGE_PIXEL].y,
-                          s->vp_x + j.rec[PT_STAGE_PIXEL].x - 1,
-                          s->vp_y + s->vp_h - j.rec[PT_STAGE_PIXEL].y);
+                          s->vp_x + jv->rec[PT_STAGE_PIXEL].x - 1,
+                          s->vp_y + s->vp_h - jv->rec[PT_STAGE_PIXEL].y,
+                          s->vp_x + jv->rec[PT_STAGE_PIXEL].x - 1,
+                          s->vp_y + s->vp_h - jv->rec[PT_STAGE_PIXEL].y);
             if (v == 0 || dv < dmin) { dmin = dv; vmin = v; }
         }
         memset(&e, 0, sizeof e);
@@ -414,13 +413,9 @@ static void show_no_segments(const why_ctx *w)
            "without segments):\n");
     for (k = 0; k < n; k++) {
         const pt_model *m = &s->models[best[k].mi];
-        pt_stage_params par;
-        pt_journey j;
 
         if (!m->nv) { printf("  %s: no vertices either\n", m->name); continue; }
-        pt_stage_params_of(&par, s, m);
-        pt_journey_compute(&j, &par, m->v[best[k].si]);
-        pt_explain_tuple(fb, sizeof fb, &j, PT_STAGE_FRAMEBUFFER);
+        pt_explain_tuple(fb, sizeof fb, &w->js[best[k].mi][best[k].si], PT_STAGE_FRAMEBUFFER);
         if (best[k].dist == HUGE_VAL) snprintf(d, sizeof d, "an unknown distance");
         else pt_fmt_fixed(d, best[k].dist, 2);
         printf("  %s: %zu %s; the nearest, v%zu, would be %s%s away, at "
@@ -441,7 +436,7 @@ static void scan(why_ctx *w)
     for (mi = 0; mi < s->nmodels; mi++) {
         int left_out = w->sel && &s->models[mi] != w->sel;
         for (si = 0; si < s->models[mi].nseg; si++) {
-            evaluate(s, mi, si, w->X, w->Y, &e);
+            evaluate(s, w->js, mi, si, w->X, w->Y, &e);
             if (e.lit) {                    /* drawing order: the last one sets the color */
                 w->drawn = 1;
                 w->last_mi = mi;
@@ -449,7 +444,7 @@ static void scan(why_ctx *w)
             }
             if (e.lit && !left_out) {
                 if (w->nlit++ == 0) printf("lit by:\n");
-                show_segment(s, &e, "", &ja, &jb);
+                show_segment(s, w->js, &e, "", &ja, &jb);
                 continue;
             }
             if (e.lit && w->nleft < 10) {
@@ -502,7 +497,7 @@ static void show_nearest(const why_ctx *w)
             pt_fmt_fixed(d, e->dist, 2);
             snprintf(tail, sizeof tail, ": %s pixels away", d);
         }
-        show_segment(w->s, e, tail, &ja, &jb);
+        show_segment(w->s, w->js, e, tail, &ja, &jb);
         if (w->sel && &w->s->models[e->mi] != w->sel) show_left_out(w, e, &ja, &jb);
         else {
             printf("    ");
@@ -511,10 +506,34 @@ static void show_nearest(const why_ctx *w)
     }
 }
 
+static void journeys_free(pt_journey **js, size_t n)
+{
+    size_t mi;
+
+    for (mi = 0; mi < n; mi++) free(js[mi]);
+    free(js);
+}
+
+/* Every vertex's journey, js[mi][v], as pt_run() computes it (a model without
+** segments too: where its vertices would land).  NULL when out of memory. */
+static pt_journey **journeys_of(const pt_scene *s)
+{
+    pt_journey **js = calloc(s->nmodels ? s->nmodels : 1, sizeof *js);
+    size_t mi;
+
+    if (!js) return NULL;
+    for (mi = 0; mi < s->nmodels; mi++)
+        if (!(js[mi] = pt_run_journeys(s, &s->models[mi], 0))) {
+            journeys_free(js, mi);
+            return NULL;
+        }
+    return js;
+}
+
 int pt_cmd_why(int argc, char **argv)
 {
     const char *pos[3], *model = NULL;
-    int npos = 0, k, rc;
+    int npos = 0, k;
     pt_scene s;
     why_ctx w;
 
@@ -539,11 +558,10 @@ int pt_cmd_why(int argc, char **argv)
 
     if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return PT_EXIT_INPUT;
     w.s = &s;
-    rc = s.matrix ? 0 : pt_journey_agrees(&s);
-    if (rc != 1) {
-        fprintf(stderr, "pipetrace why: %s: %s\n", s.path, rc < 0 ? "out of memory"
-                : "why follows the classic camera (model -> camera -> image -> pixel -> "
-                  "viewport); this scene has the matrix camera: try 'pipetrace step'");
+    if (s.matrix) {
+        fprintf(stderr, "pipetrace why: %s: %s\n", s.path,
+                "why follows the classic camera (model -> camera -> image -> pixel -> "
+                "viewport); this scene has the matrix camera: try 'pipetrace step'");
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
@@ -555,6 +573,11 @@ int pt_cmd_why(int argc, char **argv)
         return PT_EXIT_INPUT;
     }
     if (model && !(w.sel = pt_cli_model(&s, "why", model))) {
+        pt_scene_free(&s);
+        return PT_EXIT_INPUT;
+    }
+    if (!(w.js = journeys_of(&s))) {
+        fprintf(stderr, "pipetrace why: %s: out of memory\n", s.path);
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
@@ -593,6 +616,7 @@ int pt_cmd_why(int argc, char **argv)
                m->color[1], m->color[2], w.sel ? " in the image" : "", m->name,
                w.last_si + 1);
     }
+    journeys_free(w.js, s.nmodels);
     pt_scene_free(&s);
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("pipetrace why: cannot write to standard output\n", stderr);

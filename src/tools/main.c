@@ -191,8 +191,8 @@ int main(int argc, char **argv)
         else if (pt_outfile_open(&tout, c.trace, err, sizeof err) != 0) rc = 1;
         else {
             pt_trace_init(tr, tout.f, c.fmt, c.precision);
-            pt_trace_listener(tr, &l);
             tr->explain = c.explain;
+            pt_trace_listener(tr, &l);
         }
     }
     if (!rc && c.image && pt_fb_init(&fb, s.fb_w, s.fb_h, s.background) != 0) {

@@ -94,7 +94,7 @@ static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64
     pt_options_default(&o);
     if (pt_plan_make(&p, s, &o) != 0) return -1;
     if (pt_fb_init(fb, s->fb_w, s->fb_h, s->background) != 0) { pt_plan_free(&p); return -1; }
-    if (pt_run(s, &p, &o, &quiet, fb, &sum) != 0 || pt_journey_of(&j, s, m, v, 0) != 0) {
+    if (pt_run(s, &p, &o, &quiet, fb, &sum) != 0 || pt_run_journey(&j, s, m, v, 0) != 0) {
         pt_plan_free(&p);
         pt_fb_free(fb);
         return -1;

@@ -361,9 +361,10 @@ static int vline3(pt_sbuf *sb, const pt_jview *v, const axes3 *ax, const double 
 
 /* ===== the journey's numbers ===== */
 
+/* Vertex k + 1's journey, as pt_run() handed it over. */
 static void journey_of(const pt_jmodel *jm, size_t k, pt_journey *j)
 {
-    pt_journey_compute(j, &jm->par, jm->m->v[k]);
+    *j = jm->js[k];
 }
 
 /* The point of stage st in its panel's data coordinates: projected for the
@@ -442,6 +443,7 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m)
     jm->s = s;
     jm->m = m;
     pt_stage_params_of(&jm->par, s, m);
+    if (!(jm->js = pt_run_journeys(s, m, 0))) { free(used); return -1; }
     for (k = 0; k < m->nseg; k++) used[m->seg[k].a] = used[m->seg[k].b] = 1;
 
     /* 3-D panels: axis lengths and the pyramid's depth from the used vertices */
@@ -516,6 +518,12 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m)
         view_fit(&jm->view[st], b[st][0], b[st][1], b[st][2], b[st][3], BOX_X, BOX_Y,
                  BOX_W, BOX_H, st >= PT_STAGE_VIEWPORT);
     return 0;
+}
+
+void pt_jmodel_free(pt_jmodel *jm)
+{
+    free(jm->js);
+    jm->js = NULL;
 }
 
 /* ===== titles ===== */
@@ -1427,5 +1435,6 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
                       px + PT_JOURNEY_PW + GAP - 2, py + PT_JOURNEY_PH / 2.0, 12, "#8a919b");
     }
     pt_sbuf_add(sb, "</svg>\n");
+    pt_jmodel_free(&jm);
     return sb->failed ? -1 : 0;
 }

@@ -15,8 +15,8 @@
 **
 ** Every panel marks the vertex and labels it with its coordinates (the text of
 ** pt_explain_values(), so the numbers are the trace's), and draws the segments
-** that use it over the rest of the model.  The numbers come from
-** pt_journey_compute(), the stage functions themselves.
+** that use it over the rest of the model.  The numbers are the journeys
+** pt_run() hands over (pt_run_journeys()), the trace's own records.
 **
 ** A panel is a background that depends only on the model (frame, title,
 ** axes, grid, the faint wireframe) and a foreground for one vertex (its
@@ -62,14 +62,19 @@ typedef struct pt_jmodel {
     const pt_scene *s;           /* the scene, not owned */
     const pt_model *m;           /* the model drawn, not owned */
     pt_stage_params par;         /* the numbers of the formulas */
+    pt_journey *js;              /* js[k]: vertex k + 1's journey, from pt_run(); owned */
     pt_jview view[PT_NSTAGES];   /* each panel's main view (index: unused) */
     double axis_m, axis_c;       /* axis lengths of the two 3-D panels */
     double depth;                /* camera panel: depth of the view pyramid */
 } pt_jmodel;
 
-/* Lay out the panels of model m of scene s (the classic camera: !s->matrix).
-** Returns 0, or -1 when out of memory. */
+/* Lay out the panels of model m of scene s (the classic camera: !s->matrix),
+** running the scene for the journeys of its vertices.  Returns 0, or -1 when
+** out of memory (then nothing is left to free). */
 int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m);
+
+/* Free what *jm owns (a zeroed or freed jm too).  This function can't fail. */
+void pt_jmodel_free(pt_jmodel *jm);
 
 /* The panel's title ("camera space") and its coordinates ("(x_c, y_c, z_c)").
 ** This function can't fail. */

@@ -180,7 +180,7 @@ static void texts(pt_sbuf *sb, const pt_jmodel *jm, const item *it, int kind)
     pt_journey j;
     int st;
 
-    pt_journey_compute(&j, &jm->par, jm->m->v[it->v - 1]);
+    j = jm->js[it->v - 1];
     pt_sbuf_add(sb, "[");
     for (st = 0; st < PT_NSTAGES; st++) {
         if (st) pt_sbuf_add(sb, ",");
@@ -306,6 +306,7 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
 done:
     pt_sbuf_free(&t);
     free(items);
+    for (mi = 0; jms && mi < s->nmodels; mi++) pt_jmodel_free(&jms[mi]);
     free(jms);
     free(has);
     free(used);
