@@ -32,6 +32,16 @@ static uint64_t hash_bytes(const char *s, size_t n)
     return h;
 }
 
+/* The first empty slot at or after the slot of hash h (linear probing;
+** nslot a power of two, the table never full). */
+static size_t free_slot(const uint32_t *slot, size_t nslot, uint64_t h)
+{
+    size_t k = (size_t)h & (nslot - 1);
+
+    while (slot[k]) k = (k + 1) & (nslot - 1);
+    return k;
+}
+
 /* Rebuild the hash table with nslot slots (a power of two). */
 static int names_rehash(pt_names *nm, size_t nslot)
 {
@@ -40,10 +50,8 @@ static int names_rehash(pt_names *nm, size_t nslot)
 
     if (!slot) return -1;
     for (id = 0; id < nm->n; id++) {
-        const char *s = nm->text + nm->off[id];
-        size_t k = (size_t)hash_bytes(s, strlen(s)) & (nslot - 1);
-        while (slot[k]) k = (k + 1) & (nslot - 1);
-        slot[k] = (uint32_t)id + 1;
+        const char *s = pt_names_get(nm, (uint32_t)id);
+        slot[free_slot(slot, nslot, hash_bytes(s, strlen(s)))] = (uint32_t)id + 1;
     }
     free(nm->slot);
     nm->slot = slot;
@@ -223,16 +231,48 @@ uint32_t pt_tr_line32(const pt_treader *r)
     return r->lineno > UINT32_MAX ? UINT32_MAX : (uint32_t)r->lineno;
 }
 
-pt_tvrec *pt_tr_new_vrec(pt_treader *r)
+pt_tvrec *pt_tr_new_vrec(pt_treader *r, uint32_t model, uint64_t v, int st)
 {
     pt_tread *t = r->t;
-    pt_tvrec *v;
+    pt_tvrec *rec;
 
     if (pt_tr_grow(r, (void **)&t->vx, t->nvx, &t->cap_vx, sizeof *t->vx)) return NULL;
-    v = &t->vx[t->nvx++];
-    memset(v, 0, sizeof *v);
-    v->line = pt_tr_line32(r);
-    return v;
+    rec = &t->vx[t->nvx++];
+    memset(rec, 0, sizeof *rec);
+    rec->line = pt_tr_line32(r);
+    rec->model = model;
+    rec->v = v;
+    rec->stage = (unsigned char)st;
+    return rec;
+}
+
+pt_tmodel *pt_tr_new_model(pt_treader *r)
+{
+    pt_thdr *h = &r->t->hdr;
+    pt_tmodel *m;
+
+    if (pt_tr_grow(r, (void **)&h->models, h->nmodels, &h->cap, sizeof *h->models)) return NULL;
+    m = &h->models[h->nmodels++];
+    memset(m, 0, sizeof *m);
+    return m;
+}
+
+int pt_tr_add_pixel(pt_treader *r, const pt_tpix *px)
+{
+    pt_tread *t = r->t;
+
+    if (pt_tr_grow(r, (void **)&t->px, t->npx, &t->cap_px, sizeof *t->px)) return -1;
+    t->px[t->npx++] = *px;
+    return 0;
+}
+
+int pt_tr_add_clip(pt_treader *r, const pt_tclip *c)
+{
+    pt_tread *t = r->t;
+
+    if (pt_tr_grow(r, (void **)&t->cl, t->ncl, &t->cap_cl, sizeof *t->cl)) return -1;
+    t->cl[t->ncl++] = *c;
+    return 0;
 }
 
 int pt_tr_clipv_number(pt_treader *r, uint32_t model, uint64_t seg, int st, const char *at,

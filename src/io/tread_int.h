@@ -20,6 +20,9 @@
 struct pt_names;
 struct pt_tread;
 struct pt_tvrec;
+struct pt_tpix;
+struct pt_tclip;
+struct pt_tmodel;
 
 #if defined(__GNUC__) || defined(__clang__)
 #define PT_TR_PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
@@ -69,9 +72,19 @@ int pt_tr_grow(pt_treader *r, void **arr, size_t n, size_t *cap, size_t size);
 ** function can't fail. */
 uint32_t pt_tr_line32(const pt_treader *r);
 
-/* A new vertex record at the end of r->t->vx, zeroed but for its line.
-** Returns it, or NULL (out of memory, reported). */
-struct pt_tvrec *pt_tr_new_vrec(pt_treader *r);
+/* A new vertex record at the end of r->t->vx: vertex v of model at stage st
+** on the current line, no flags, no values yet.  Returns it, or NULL (out of
+** memory, reported). */
+struct pt_tvrec *pt_tr_new_vrec(pt_treader *r, uint32_t model, uint64_t v, int st);
+
+/* Append *px to r->t->px, *c to r->t->cl.  Return 0, or -1 (out of memory,
+** reported). */
+int pt_tr_add_pixel(pt_treader *r, const struct pt_tpix *px);
+int pt_tr_add_clip(pt_treader *r, const struct pt_tclip *c);
+
+/* A new model at the end of r->t->hdr.models, zeroed.  Returns it, or NULL
+** (out of memory, reported). */
+struct pt_tmodel *pt_tr_new_model(pt_treader *r);
 
 /* The vertex number of a clip vertex of segment seg at stage st: the records
 ** of its first end, then of its second, each in stage order, so a stage that

@@ -324,10 +324,7 @@ static int j_vertex(pt_treader *r, const jfield *f, int nf, int clipv)
     st = sv->kind == J_STR ? pt_tr_stage_named(sv->p, (size_t)(sv->e - sv->p)) : -1;
     if (st < 0) return pt_tr_fail(r, sv->p, "unknown stage");
     if (clipv && pt_tr_clipv_number(r, model, vnum, st, sv->p, &vnum) != 0) return -1;
-    if (!(rec = pt_tr_new_vrec(r))) return -1;
-    rec->model = model;
-    rec->v = vnum;
-    rec->stage = (unsigned char)st;
+    if (!(rec = pt_tr_new_vrec(r, model, vnum, st))) return -1;
     sh = &pt_stage_infos[st];
     for (k = 0; k < sh->nreal; k++) {
         if (!(v = need(r, f, nf, sh->key[k], what))) return -1;
@@ -352,22 +349,37 @@ static int j_vertex(pt_treader *r, const jfield *f, int nf, int clipv)
     return 0;
 }
 
+/* Field `key` of a `what` record, an integer, into *x.  0, or 1 after the
+** error. */
+static int need_int(pt_treader *r, const jfield *f, int nf, const char *key, const char *what,
+                    int64_t *x)
+{
+    const jval *v = need(r, f, nf, key, what);
+
+    return !v || jint(r, v, x, 0, NULL) != 0;
+}
+
+/* Field `key` of a `what` record, a count >= 1, into *x.  0, or 1 after the
+** error. */
+static int need_count(pt_treader *r, const jfield *f, int nf, const char *key, const char *what,
+                      uint64_t *x)
+{
+    const jval *v = need(r, f, nf, key, what);
+
+    return !v || jcount(r, v, 1, x) != 0;
+}
+
 static int j_pixel(pt_treader *r, const jfield *f, int nf)
 {
-    pt_tread *t = r->t;
-    const jval *v;
     pt_tpix px;
 
     memset(&px, 0, sizeof px);
-    if (jmodel(r, f, nf, "pixel", &px.model) != 0) return -1;
-    if (!(v = need(r, f, nf, "segment", "pixel")) || jcount(r, v, 1, &px.seg) != 0) return -1;
-    if (!(v = need(r, f, nf, "x", "pixel")) || jint(r, v, &px.x, 0, NULL) != 0) return -1;
-    if (!(v = need(r, f, nf, "y", "pixel")) || jint(r, v, &px.y, 0, NULL) != 0) return -1;
-    if (!(v = need(r, f, nf, "i", "pixel")) || jint(r, v, &px.i, 0, NULL) != 0) return -1;
+    if (jmodel(r, f, nf, "pixel", &px.model) != 0 ||
+        need_count(r, f, nf, "segment", "pixel", &px.seg) || need_int(r, f, nf, "x", "pixel", &px.x) ||
+        need_int(r, f, nf, "y", "pixel", &px.y) || need_int(r, f, nf, "i", "pixel", &px.i))
+        return -1;
     px.line = pt_tr_line32(r);
-    if (pt_tr_grow(r, (void **)&t->px, t->npx, &t->cap_px, sizeof *t->px)) return -1;
-    t->px[t->npx++] = px;
-    return 0;
+    return pt_tr_add_pixel(r, &px);
 }
 
 /* A pair [x,y] of integers. */
@@ -388,20 +400,18 @@ static int jpair(pt_treader *r, const jval *v, int64_t out[2])
 
 static int j_clip(pt_treader *r, const jfield *f, int nf)
 {
-    pt_tread *t = r->t;
-    const jval *v;
+    const jval *first, *last;
     pt_tclip c;
 
     memset(&c, 0, sizeof c);
-    if (jmodel(r, f, nf, "clip", &c.model) != 0) return -1;
-    if (!(v = need(r, f, nf, "segment", "clip")) || jcount(r, v, 1, &c.seg) != 0) return -1;
-    if (!(v = need(r, f, nf, "count", "clip")) || jcount(r, v, 1, &c.count) != 0) return -1;
-    if (!(v = need(r, f, nf, "first", "clip")) || jpair(r, v, c.first) != 0) return -1;
-    if (!(v = need(r, f, nf, "last", "clip")) || jpair(r, v, c.last) != 0) return -1;
-    c.npix = t->npx;
-    if (pt_tr_grow(r, (void **)&t->cl, t->ncl, &t->cap_cl, sizeof *t->cl)) return -1;
-    t->cl[t->ncl++] = c;
-    return 0;
+    if (jmodel(r, f, nf, "clip", &c.model) != 0 ||
+        need_count(r, f, nf, "segment", "clip", &c.seg) ||
+        need_count(r, f, nf, "count", "clip", &c.count) ||
+        !(first = need(r, f, nf, "first", "clip")) || jpair(r, first, c.first) != 0 ||
+        !(last = need(r, f, nf, "last", "clip")) || jpair(r, last, c.last) != 0)
+        return -1;
+    c.npix = r->t->npx;
+    return pt_tr_add_clip(r, &c);
 }
 
 /* An int field of a header object, 0 <= x <= 1e9. */
@@ -455,9 +465,7 @@ static int j_header(pt_treader *r, const jfield *f, int nf)
 
         if (item.kind != J_OBJ) return pt_tr_fail(r, item.p, "expected a model object");
         if (j_fields(r, &item, g, &ng) != 0) return -1;
-        if (pt_tr_grow(r, (void **)&h->models, h->nmodels, &h->cap, sizeof *h->models)) return -1;
-        m = &h->models[h->nmodels++];
-        memset(m, 0, sizeof *m);
+        if (!(m = pt_tr_new_model(r))) return -1;
         if (jmodel(r, g, ng, "header model", &m->name) != 0) return -1;
         if ((tr = j_get(g, ng, "left_out")) != NULL) {  /* [{"stage":..,"why":..}, ..] */
             const char *lpos = NULL;

@@ -105,10 +105,7 @@ static int t_vertex(pt_treader *r, cur *c, uint32_t model, uint64_t vnum, int cl
 
     if (st < 0) return pt_tr_fail(r, sw, "unknown stage '%.*s'", (int)(sn > 40 ? 40 : sn), sw);
     if (clipv && pt_tr_clipv_number(r, model, vnum, st, sw, &vnum) != 0) return -1;
-    if (!(rec = pt_tr_new_vrec(r))) return -1;
-    rec->model = model;
-    rec->v = vnum;
-    rec->stage = (unsigned char)st;
+    if (!(rec = pt_tr_new_vrec(r, model, vnum, st))) return -1;
     sh = &pt_stage_infos[st];
     for (k = 0; k < sh->nreal + sh->nint; k++) {
         if (expect(r, c, sh->coord[k]) || expect(r, c, "=")) return -1;
@@ -140,7 +137,6 @@ static int t_vertex(pt_treader *r, cur *c, uint32_t model, uint64_t vnum, int cl
 /* "NAME sN  pixel  x_fb = X  y_fb = Y  idx = I" */
 static int t_pixel(pt_treader *r, cur *c, uint32_t model, uint64_t seg)
 {
-    pt_tread *t = r->t;
     pt_tpix px;
     const char *w;
     size_t n;
@@ -154,9 +150,7 @@ static int t_pixel(pt_treader *r, cur *c, uint32_t model, uint64_t seg)
         expect(r, c, "idx") || expect(r, c, "=") || text_int(r, c, &px.i, 0, NULL))
         return -1;
     if (word(c, &w, &n)) return pt_tr_fail(r, w, "unexpected text after the pixel");
-    if (pt_tr_grow(r, (void **)&t->px, t->npx, &t->cap_px, sizeof *t->px)) return -1;
-    t->px[t->npx++] = px;
-    return 0;
+    return pt_tr_add_pixel(r, &px);
 }
 
 /* "NAME sN  clipped  4 steps, (x_vp, y_vp) from (-4, 2) to (-1, 2)" or
@@ -193,9 +187,7 @@ static int t_clip(pt_treader *r, cur *c, uint32_t model, uint64_t seg)
     if (k != want) return pt_tr_fail(r, c->p, "expected %d integers in the clip record", want);
     cl.first[0] = v[0]; cl.first[1] = v[1];
     cl.last[0] = v[want - 2]; cl.last[1] = v[want - 1];
-    if (pt_tr_grow(r, (void **)&t->cl, t->ncl, &t->cap_cl, sizeof *t->cl)) return -1;
-    t->cl[t->ncl++] = cl;
-    return 0;
+    return pt_tr_add_clip(r, &cl);
 }
 
 /* A record line: "NAME vN STAGE ..." or "NAME sN pixel|clipped|skipped ...". */
@@ -305,9 +297,7 @@ static int text_header_line(pt_treader *r)
 
         if (!word(&c, &name, &n) || n < 2 || name[n - 1] != ':')
             return pt_tr_fail(r, name, "expected 'NAME:' after 'model'");
-        if (pt_tr_grow(r, (void **)&h->models, h->nmodels, &h->cap, sizeof *h->models)) return -1;
-        m = &h->models[h->nmodels++];
-        memset(m, 0, sizeof *m);
+        if (!(m = pt_tr_new_model(r))) return -1;
         m->left_known = 1;                  /* its "left out" lines follow */
         if (pt_names_intern(r->nm, name, n - 1, &m->name) != 0) return pt_tr_oom(r);
         while (word(&c, &w, &n) && !pt_tr_is(w, n, "translate")) ;
