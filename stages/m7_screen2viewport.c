@@ -10,7 +10,6 @@
 pt_pix pt_screen2viewport(pt_vec3 s, int w, int h, const pt_sink *sink)
 {
     pt_pix vp = {0, 0, 0};
-    pt_vrec r = {0};
 
     assert(w > 0 && h > 0);
     if (fabs(s.x) < PT_PIX_LIMIT && fabs(s.y) < PT_PIX_LIMIT) {  /* false for NaN */
@@ -18,11 +17,7 @@ pt_pix pt_screen2viewport(pt_vec3 s, int w, int h, const pt_sink *sink)
         vp.y = (int64_t)floor(s.y);         /* y_vp = floor(y_s) */
         vp.ok = 1;
     }
-    r.stage = PT_STAGE_VIEWPORT;
-    if (!vp.ok) { r.flags |= PT_REC_NULL; r.warn |= PT_WARN_RANGE; }
-    else if (pt_inside(vp.x, vp.y, w, h)) r.flags |= PT_REC_INSIDE;
-    r.ix = vp.x; r.iy = vp.y;
-    pt_emit(sink, &r);
+    pt_emit_viewport(sink, vp, w, h);       /* record: null, inside or outside */
     return vp;
 }
 
@@ -35,16 +30,19 @@ pt_vec2 pt_viewport2pixelplane(pt_pix vp, int h)
     return p;
 }
 
+/* s4's formula, written as the inverse of pt_viewport2pixelplane() above:
+** round each coordinate, then undo x_pp = x_vp + 1 and y_pp = h - y_vp.  It
+** reports nothing (sink is not used). */
 pt_pix pt_pixelplane2viewport(pt_vec2 pp, int w, int h, const pt_sink *sink)
 {
     pt_pix vp = {0, 0, 0};
-    int64_t rx, ry;
+    int64_t r[2];                           /* round(x_pp), round(y_pp) */
 
     (void)w; (void)sink;
-    if (pt_pix_round(pp.x, &rx) && pt_pix_round(pp.y, &ry)) {
-        vp.x = rx - 1;                      /* x_vp = round(x_pp) - 1 */
-        vp.y = h - ry;                      /* y_vp = h - round(y_pp) */
-        vp.ok = 1;
+    vp.ok = pt_pix_round(pp.x, &r[0]) && pt_pix_round(pp.y, &r[1]);
+    if (vp.ok) {
+        vp.x = r[0] - 1;                    /* x_vp = round(x_pp) - 1 */
+        vp.y = h - r[1];                    /* y_vp = h - round(y_pp) */
     }
     return vp;
 }

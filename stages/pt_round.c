@@ -37,3 +37,15 @@ int pt_inside(int64_t x, int64_t y, int w, int h)
 {
     return x >= 0 && x < w && y >= 0 && y < h;
 }
+
+void pt_emit_viewport(const pt_sink *sink, pt_pix vp, int w, int h)
+{
+    pt_vrec r = {0};
+
+    if (!sink) return;                      /* nobody listens: no record */
+    r.stage = PT_STAGE_VIEWPORT;
+    if (!vp.ok) { r.flags |= PT_REC_NULL; r.warn |= PT_WARN_RANGE; }
+    else if (pt_inside(vp.x, vp.y, w, h)) r.flags |= PT_REC_INSIDE;
+    r.ix = vp.x; r.iy = vp.y;
+    pt_emit(sink, &r);
+}

@@ -17,6 +17,7 @@
 #define PT_ROUND_H
 
 #include <stdint.h>
+#include "pt_stage.h"
 
 /* 2^62: beyond it, x_vp, x_fb and the rasterizer's step counts could overflow. */
 #define PT_PIX_LIMIT 4611686018427387904.0
@@ -35,5 +36,11 @@ int pt_pix_round(double x, int64_t *out);
 ** a viewport pixel inside its viewport, or a framebuffer pixel inside the
 ** framebuffer.  This function can't fail. */
 int pt_inside(int64_t x, int64_t y, int w, int h);
+
+/* Report viewport pixel vp of a w x h viewport to sink, as both cameras'
+** viewport stages do: null with a range warning when !vp.ok, else flagged
+** inside or not by pt_inside().  Nothing when sink is NULL.  This function
+** can't fail. */
+void pt_emit_viewport(const pt_sink *sink, pt_pix vp, int w, int h);
 
 #endif

@@ -16,12 +16,6 @@ pt_pix pt_pixel2viewport(pt_vec2 pp, int w, int h, const pt_sink *sink)
         vp.y = h - ry;                      /* y_vp = h - round(y_pp) */
         vp.ok = 1;
     }
-    if (!sink) return vp;                   /* nobody listens: no record */
-    pt_vrec r = {0};
-    r.stage = PT_STAGE_VIEWPORT;
-    if (!vp.ok) { r.flags |= PT_REC_NULL; r.warn |= PT_WARN_RANGE; }
-    else if (pt_inside(vp.x, vp.y, w, h)) r.flags |= PT_REC_INSIDE;
-    r.ix = vp.x; r.iy = vp.y;
-    pt_emit(sink, &r);
+    pt_emit_viewport(sink, vp, w, h);       /* record: null, inside or outside */
     return vp;
 }

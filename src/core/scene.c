@@ -494,21 +494,32 @@ static int new_model(parser *ps, const char *name, size_t n, size_t lineno)
     return 0;
 }
 
+/* Room in *arr (n items of size bytes, room for *cap) for one more, at most
+** max of them in one model: `what` names them in the message, at is where
+** to point an error.  Returns 0, or -1 after the error. */
+static int room_for_one(parser *ps, const source *src, const char *at, void **arr,
+                        size_t n, size_t *cap, size_t size, size_t max, const char *what)
+{
+    void *p;
+
+    if (n != *cap) return 0;
+    if (n >= max)
+        return fail(ps, src, at, "more than %lu %s in one model", (unsigned long)max, what);
+    p = grow(*arr, cap, size, max);
+    if (p == NULL)
+        return fail(ps, src, at, "out of memory");
+    *arr = p;
+    return 0;
+}
+
 /* Append vertex v to the current model; at is where to point an error. */
 static int add_vertex(parser *ps, const source *src, const char *at, pt_vec3 v)
 {
     pt_model *m = cur_model(ps);
-    void *p;
 
-    if (m->nv == m->cap_v) {
-        if (m->nv >= MAX_VERTS)
-            return fail(ps, src, at, "more than %lu vertices in one model",
-                        (unsigned long)MAX_VERTS);
-        p = grow(m->v, &m->cap_v, sizeof *m->v, MAX_VERTS);
-        if (p == NULL)
-            return fail(ps, src, at, "out of memory");
-        m->v = p;
-    }
+    if (room_for_one(ps, src, at, (void **)&m->v, m->nv, &m->cap_v, sizeof *m->v,
+                     MAX_VERTS, "vertices") != 0)
+        return -1;
     m->v[m->nv++] = v;
     return 0;
 }
@@ -518,17 +529,10 @@ static int add_segment(parser *ps, const source *src, const char *at,
                        uint32_t a, uint32_t b)
 {
     pt_model *m = cur_model(ps);
-    void *p;
 
-    if (m->nseg == m->cap_seg) {
-        if (m->nseg >= MAX_SEGS)
-            return fail(ps, src, at, "more than %lu segments in one model",
-                        (unsigned long)MAX_SEGS);
-        p = grow(m->seg, &m->cap_seg, sizeof *m->seg, MAX_SEGS);
-        if (p == NULL)
-            return fail(ps, src, at, "out of memory");
-        m->seg = p;
-    }
+    if (room_for_one(ps, src, at, (void **)&m->seg, m->nseg, &m->cap_seg, sizeof *m->seg,
+                     MAX_SEGS, "segments") != 0)
+        return -1;
     m->seg[m->nseg].a = a;
     m->seg[m->nseg].b = b;
     m->nseg++;

@@ -102,45 +102,62 @@ static void add_utf8(pt_sbuf *sb, const unsigned char **pp)
     *pp += n;
 }
 
-void pt_sbuf_add_xml(pt_sbuf *sb, const char *t)
+/* What an escaper writes for the byte at p: its replacement, or NULL to copy
+** the UTF-8 character that starts there (U+FFFD when it is not one).  buf
+** has room for a replacement made up on the spot. */
+typedef const char *escaper(const unsigned char *p, char buf[8]);
+
+static const char *xml_escape(const unsigned char *p, char buf[8])
+{
+    (void)buf;
+    switch (*p) {
+    case '&':  return "&amp;";
+    case '<':  return "&lt;";
+    case '>':  return "&gt;";
+    case '"':  return "&quot;";
+    case '\'': return "&apos;";
+    default:   return *p < 0x20 && *p != '\t' && *p != '\n' ? REPLACEMENT : NULL;
+    }
+}
+
+static const char *json_escape(const unsigned char *p, char buf[8])
+{
+    switch (*p) {
+    case '"':  return "\\\"";
+    case '\\': return "\\\\";
+    case '\n': return "\\n";
+    case '\t': return "\\t";
+    case '<':                /* "</script" or "<!--" would end the element */
+        return p[1] == '/' || p[1] == '!' ? "\\u003c" : "<";
+    default:
+        if (*p >= 0x20) return NULL;
+        snprintf(buf, 8, "\\u%04x", (unsigned)*p);
+        return buf;
+    }
+}
+
+/* Append t with each byte escaped as esc says. */
+static void add_escaped(pt_sbuf *sb, const char *t, escaper *esc)
 {
     const unsigned char *p = (const unsigned char *)t;
+    char buf[8];
+    const char *r;
 
     while (*p) {
-        switch (*p) {
-        case '&':  pt_sbuf_add(sb, "&amp;"); break;
-        case '<':  pt_sbuf_add(sb, "&lt;"); break;
-        case '>':  pt_sbuf_add(sb, "&gt;"); break;
-        case '"':  pt_sbuf_add(sb, "&quot;"); break;
-        case '\'': pt_sbuf_add(sb, "&apos;"); break;
-        default:
-            if (*p < 0x20 && *p != '\t' && *p != '\n') pt_sbuf_add(sb, REPLACEMENT);
-            else { add_utf8(sb, &p); continue; }
-        }
+        if ((r = esc(p, buf)) == NULL) { add_utf8(sb, &p); continue; }
+        pt_sbuf_add(sb, r);
         p++;
     }
 }
 
+void pt_sbuf_add_xml(pt_sbuf *sb, const char *t)
+{
+    add_escaped(sb, t, xml_escape);
+}
+
 void pt_sbuf_add_json(pt_sbuf *sb, const char *t)
 {
-    const unsigned char *p = (const unsigned char *)t;
-
     pt_sbuf_add(sb, "\"");
-    while (*p) {
-        switch (*p) {
-        case '"':  pt_sbuf_add(sb, "\\\""); break;
-        case '\\': pt_sbuf_add(sb, "\\\\"); break;
-        case '\n': pt_sbuf_add(sb, "\\n"); break;
-        case '\t': pt_sbuf_add(sb, "\\t"); break;
-        case '<':                /* "</script" or "<!--" would end the element */
-            if (p[1] == '/' || p[1] == '!') pt_sbuf_add(sb, "\\u003c");
-            else pt_sbuf_add(sb, "<");
-            break;
-        default:
-            if (*p < 0x20) pt_sbuf_addf(sb, "\\u%04x", (unsigned)*p);
-            else { add_utf8(sb, &p); continue; }
-        }
-        p++;
-    }
+    add_escaped(sb, t, json_escape);
     pt_sbuf_add(sb, "\"");
 }

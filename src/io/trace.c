@@ -247,40 +247,52 @@ static void put_mat_text(pt_trace *t, const pt_mat4 *m)
     }
 }
 
-/* The matrix camera's parameters and matrices, JSON. */
-static void camera_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
+/* Three small integers (a colour) separated by sep. */
+static void put_rgb(pt_trace *t, const unsigned char c[3], const char *sep)
 {
-    puts_(t, ",\"lookat\":{\"eye\":"); put_vec3_json(t, s->eye);
-    puts_(t, ",\"direction\":"); put_vec3_json(t, s->dir);
-    puts_(t, ",\"up\":"); put_vec3_json(t, s->up);
-    puts_(t, ",\"up_perpendicular\":"); puts_(t, p->up_skewed ? "false" : "true");
-    puts_(t, ",\"up_adjusted\":"); puts_(t, p->up_adjusted ? "true" : "false");
-    puts_(t, "},\"projection\":{\"fov\":"); put_json_num(t, s->fov);
-    puts_(t, ",\"aspect\":"); put_json_num(t, s->aspect);
-    puts_(t, ",\"near\":"); put_json_num(t, s->znear);
-    puts_(t, ",\"far\":"); put_json_num(t, s->zfar);
-    puts_(t, "},\"view\":"); put_mat_json(t, &p->view);
-    puts_(t, ",\"projection_matrix\":"); put_mat_json(t, &p->proj);
+    put_i64(t, c[0]); puts_(t, sep); put_i64(t, c[1]); puts_(t, sep); put_i64(t, c[2]);
 }
 
-/* The same as text lines. */
-static void camera_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
+/* A point as the text header writes it: "x y z". */
+static void put_xyz_text(pt_trace *t, pt_vec3 v)
 {
-    puts_(t, " eye "); put_vec3_text(t, s->eye);
-    puts_(t, " direction "); put_vec3_text(t, s->dir);
-    puts_(t, " up "); put_vec3_text(t, s->up);
-    if (p->up_adjusted)
+    put_short(t, v.x); put(t, " ", 1); put_short(t, v.y); put(t, " ", 1); put_short(t, v.z);
+}
+
+/* The matrix camera's parameters and matrices, JSON (json 1) or text lines
+** (json 0): the same values in the same order, each after its label. */
+static void camera_put(pt_trace *t, const pt_scene *s, const pt_plan *p, int json)
+{
+    static const char *const vec_label[2][3] = {
+        {" eye ", " direction ", " up "},
+        {",\"lookat\":{\"eye\":", ",\"direction\":", ",\"up\":"}};
+    static const char *const num_label[2][4] = {
+        {"\nprojection   perspective fov ", " aspect ", " near ", " far "},
+        {"},\"projection\":{\"fov\":", ",\"aspect\":", ",\"near\":", ",\"far\":"}};
+    static const char *const mat_label[2][2] = {
+        {"\nview         ", "\nprojection   "},
+        {"},\"view\":", ",\"projection_matrix\":"}};
+    const pt_vec3 vec[3] = {s->eye, s->dir, s->up};
+    const double num[4] = {s->fov, s->aspect, s->znear, s->zfar};
+    const pt_mat4 *mat[2] = {&p->view, &p->proj};
+    void (*put_vec)(pt_trace *, pt_vec3) = json ? put_vec3_json : put_vec3_text;
+    void (*put_num)(pt_trace *, double) = json ? put_json_num : put_short;
+    void (*put_mat)(pt_trace *, const pt_mat4 *) = json ? put_mat_json : put_mat_text;
+    int k;
+
+    for (k = 0; k < 3; k++) { puts_(t, vec_label[json][k]); put_vec(t, vec[k]); }
+    if (json) {
+        puts_(t, ",\"up_perpendicular\":"); puts_(t, p->up_skewed ? "false" : "true");
+        puts_(t, ",\"up_adjusted\":"); puts_(t, p->up_adjusted ? "true" : "false");
+    } else if (p->up_adjusted) {
         puts_(t, "\n  warning    up is not perpendicular to direction: re-derived"
                  " (--raw-lookat keeps it)");
-    else if (p->up_skewed)
+    } else if (p->up_skewed) {
         puts_(t, "\n  warning    up is not perpendicular to direction: kept as given"
                  " (--raw-lookat), so View is not orthonormal");
-    puts_(t, "\nprojection   perspective fov "); put_short(t, s->fov);
-    puts_(t, " aspect "); put_short(t, s->aspect);
-    puts_(t, " near "); put_short(t, s->znear);
-    puts_(t, " far "); put_short(t, s->zfar);
-    puts_(t, "\nview         "); put_mat_text(t, &p->view);
-    puts_(t, "\nprojection   "); put_mat_text(t, &p->proj);
+    }
+    for (k = 0; k < 4; k++) { puts_(t, num_label[json][k]); put_num(t, num[k]); }
+    for (k = 0; k < 2; k++) { puts_(t, mat_label[json][k]); put_mat(t, mat[k]); }
 }
 
 static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
@@ -292,20 +304,14 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
     put_json_str(t, s->path);
     puts_(t, ",\"framebuffer\":{\"w\":"); put_i64(t, s->fb_w);
     puts_(t, ",\"h\":"); put_i64(t, s->fb_h);
-    puts_(t, "},\"background\":["); put_i64(t, s->background[0]);
-    put(t, ",", 1); put_i64(t, s->background[1]);
-    put(t, ",", 1); put_i64(t, s->background[2]);
+    puts_(t, "},\"background\":["); put_rgb(t, s->background, ",");
     puts_(t, "],\"viewport\":{\"x\":"); put_i64(t, s->vp_x);
     puts_(t, ",\"y\":"); put_i64(t, s->vp_y);
     puts_(t, ",\"w\":"); put_i64(t, s->vp_w);
     puts_(t, ",\"h\":"); put_i64(t, s->vp_h);
     puts_(t, "},\"camera\":\""); puts_(t, camera_name(s)); put(t, "\"", 1);
-    if (s->matrix) camera_json(t, s, p);
-    if (s->from_obj) {
-        puts_(t, ",\"obj_translate\":["); put_json_num(t, s->obj_translate.x);
-        put(t, ",", 1); put_json_num(t, s->obj_translate.y);
-        put(t, ",", 1); put_json_num(t, s->obj_translate.z); put(t, "]", 1);
-    }
+    if (s->matrix) camera_put(t, s, p, 1);
+    if (s->from_obj) { puts_(t, ",\"obj_translate\":"); put_vec3_json(t, s->obj_translate); }
     puts_(t, ",\"models\":[");
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
@@ -317,12 +323,8 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
         puts_(t, ",\"vertices\":"); put_u64(t, m->nv);
         puts_(t, ",\"used\":"); put_u64(t, mp->nused);
         puts_(t, ",\"segments\":"); put_u64(t, m->nseg);
-        puts_(t, ",\"translate\":["); put_json_num(t, m->translate.x);
-        put(t, ",", 1); put_json_num(t, m->translate.y);
-        put(t, ",", 1); put_json_num(t, m->translate.z);
-        puts_(t, "],\"color\":["); put_i64(t, m->color[0]);
-        put(t, ",", 1); put_i64(t, m->color[1]);
-        put(t, ",", 1); put_i64(t, m->color[2]);
+        puts_(t, ",\"translate\":"); put_vec3_json(t, m->translate);
+        puts_(t, ",\"color\":["); put_rgb(t, m->color, ",");
         puts_(t, "],\"traced\":");
         puts_(t, mp->selected ? "true" : "false");
         if (s->matrix) { puts_(t, ",\"world\":"); put_mat_json(t, &mp->world); }
@@ -357,18 +359,12 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     puts_(t, "# pipetrace trace, format version 1\nscene        ");
     puts_(t, s->path);
     puts_(t, "\nframebuffer  "); put_i64(t, s->fb_w); puts_(t, " x "); put_i64(t, s->fb_h);
-    puts_(t, ", background "); put_i64(t, s->background[0]);
-    put(t, " ", 1); put_i64(t, s->background[1]);
-    put(t, " ", 1); put_i64(t, s->background[2]);
+    puts_(t, ", background "); put_rgb(t, s->background, " ");
     puts_(t, "\nviewport     "); put_i64(t, s->vp_w); puts_(t, " x "); put_i64(t, s->vp_h);
     puts_(t, " at (x_ul, y_ul) = ("); put_i64(t, s->vp_x); puts_(t, ", ");
     put_i64(t, s->vp_y); puts_(t, ")\ncamera       "); puts_(t, camera_name(s));
-    if (s->matrix) camera_text(t, s, p);
-    if (s->from_obj) {
-        puts_(t, "\nobj placed   translate "); put_short(t, s->obj_translate.x);
-        put(t, " ", 1); put_short(t, s->obj_translate.y);
-        put(t, " ", 1); put_short(t, s->obj_translate.z);
-    }
+    if (s->matrix) camera_put(t, s, p, 0);
+    if (s->from_obj) { puts_(t, "\nobj placed   translate "); put_xyz_text(t, s->obj_translate); }
     put(t, "\n", 1);
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
@@ -377,12 +373,8 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
         puts_(t, "model        "); puts_(t, m->name);
         puts_(t, ": "); put_u64(t, m->nv); puts_(t, " vertices (");
         put_u64(t, mp->nused); puts_(t, " used), "); put_u64(t, m->nseg);
-        puts_(t, " segments, translate "); put_short(t, m->translate.x);
-        put(t, " ", 1); put_short(t, m->translate.y);
-        put(t, " ", 1); put_short(t, m->translate.z);
-        puts_(t, ", color "); put_i64(t, m->color[0]);
-        put(t, " ", 1); put_i64(t, m->color[1]);
-        put(t, " ", 1); put_i64(t, m->color[2]);
+        puts_(t, " segments, translate "); put_xyz_text(t, m->translate);
+        puts_(t, ", color "); put_rgb(t, m->color, " ");
         if (!mp->selected) puts_(t, ", not traced (--model)");
         put(t, "\n", 1);
         if (s->matrix) {

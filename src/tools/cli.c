@@ -74,6 +74,32 @@ int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out)
     return 0;
 }
 
+int pt_cli_value(const char *cmd, int argc, char **argv, int *k, const char **val)
+{
+    if (*k + 1 >= argc) return pt_cli_usage(cmd, "option needs a value: %s", argv[*k]);
+    *val = argv[++*k];
+    return -1;
+}
+
+int pt_cli_arg(pt_cli_args *a, int argc, char **argv, int *k)
+{
+    const char *o = argv[*k], *val = NULL;
+    int rc;
+
+    if (!strcmp(o, "--help") || !strcmp(o, "-h")) { fputs(a->usage, stdout); return 0; }
+    if (a->takes_vertex && (!strcmp(o, "--vertex") || !strcmp(o, "--model"))) {
+        if ((rc = pt_cli_value(a->cmd, argc, argv, k, &val)) >= 0) return rc;
+        if (!strcmp(o, "--model")) a->model = val;
+        else if (pt_cli_count(val, 1, 4294967295u, &a->vertex) != 0)
+            return pt_cli_usage(a->cmd, "--vertex takes a vertex number >= 1, not %s", val);
+        return -1;
+    }
+    if (o[0] == '-' && o[1] != '\0') return pt_cli_usage(a->cmd, "unknown option %s", o);
+    if (a->path) return pt_cli_usage(a->cmd, "more than one scene given: %s", o);
+    a->path = o;
+    return -1;
+}
+
 int pt_cli_usage(const char *cmd, const char *fmt, ...)
 {
     va_list ap;

@@ -46,6 +46,30 @@ const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *nam
 const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
                                     const char *name, uint64_t v);
 
+/* The arguments the scene commands (step, quiz, journey, accuracy) share.
+** Set cmd, usage and takes_vertex, and vertex to its default; pt_cli_arg()
+** fills in the rest. */
+typedef struct pt_cli_args {
+    const char *cmd;             /* the command, for messages: "step", ... */
+    const char *usage;           /* what --help prints */
+    int takes_vertex;            /* 1: --vertex N and --model NAME are options */
+    const char *path;            /* the SCENE argument, or NULL */
+    const char *model;           /* --model NAME, or NULL */
+    uint64_t vertex;             /* --vertex N (1 <= N < 2^32), or as set */
+} pt_cli_args;
+
+/* Read argv[*k], one argument that is none of the command's own options, as
+** every scene command does: "--help" or "-h" (print a->usage), with
+** takes_vertex "--vertex N" and "--model NAME" (*k moves past the value),
+** any other "-..." (an unknown option), else the scene (only one).  Returns
+** -1 when it took the argument, else what the command returns: 0 after
+** --help, PT_EXIT_USAGE after printing the usage error. */
+int pt_cli_arg(pt_cli_args *a, int argc, char **argv, int *k);
+
+/* The value of the option argv[*k] into *val, *k moved to it.  Returns -1,
+** or PT_EXIT_USAGE after printing "option needs a value" when it is last. */
+int pt_cli_value(const char *cmd, int argc, char **argv, int *k, const char **val);
+
 /* A whole decimal number in [lo, hi] from text into *out.  Returns 0, or -1
 ** (no message) for anything else: signs, spaces, overflow.  Can't fail. */
 int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out);

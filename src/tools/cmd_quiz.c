@@ -37,11 +37,6 @@ static const char usage[] =
 "not exist.  Without --vertex a used vertex is picked at random (--seed S:\n"
 "repeatably).  SCENE defaults to the built-in scene.\n";
 
-static int usage_error(const char *msg, const char *arg)
-{
-    return pt_cli_usage("quiz", "%s%s", msg, arg);
-}
-
 /* xorshift64* (Vigna, 2016): small, and the same numbers on every platform. */
 static uint64_t xorshift(uint64_t *st)
 {
@@ -202,30 +197,26 @@ int pt_cmd_quiz(int argc, char **argv)
     pt_scene s;
     uint64_t n;
     size_t mi;
+    pt_cli_args ca = {"quiz", usage, 1, NULL, NULL, 0};
 
     for (k = 1; k < argc; k++) {
         const char *a = argv[k];
 
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
-        if (!strcmp(a, "--vertex") || !strcmp(a, "--model") || !strcmp(a, "--seed")) {
-            const char *val = k + 1 < argc ? argv[++k] : NULL;
-            if (!val) return usage_error("option needs a value: ", a);
-            if (!strcmp(a, "--model")) model = val;
-            else if (!strcmp(a, "--vertex")) {
-                if (pt_cli_count(val, 1, 4294967295u, &n))
-                    return usage_error("--vertex takes a vertex number >= 1, not ", val);
-                v = n;
-            } else {
-                if (pt_cli_count(val, 0, UINT64_MAX, &n))
-                    return usage_error("--seed takes a whole number >= 0, not ", val);
-                seed = n;
-                seeded = 1;
-            }
-        } else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option ", a);
-        else if (path) return usage_error("more than one scene given: ", a);
-        else path = a;
+        const char *val;
+        int u;
+
+        if (!strcmp(a, "--seed")) {
+            if ((u = pt_cli_value("quiz", argc, argv, &k, &val)) >= 0) return u;
+            if (pt_cli_count(val, 0, UINT64_MAX, &n))
+                return pt_cli_usage("quiz", "--seed takes a whole number >= 0, not %s", val);
+            seed = n;
+            seeded = 1;
+        } else if ((u = pt_cli_arg(&ca, argc, argv, &k)) >= 0) return u;  /* SCENE, --vertex, ... */
     }
-    if (v && seeded) return usage_error("--vertex and --seed exclude each other", "");
+    path = ca.path;
+    model = ca.model;
+    v = ca.vertex;
+    if (v && seeded) return pt_cli_usage("quiz", "--vertex and --seed exclude each other");
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     if (v) m = pt_cli_vertex_model(&s, "quiz", model, v);

@@ -43,11 +43,6 @@ static const char usage[] =
 "                   side by side (docs/cameras.md)\n"
 "  --raw-lookat     matrix camera: keep the given up vector as it is\n";
 
-static int usage_error(const char *msg, const char *arg)
-{
-    return pt_cli_usage("step", "%s%s", msg, arg);
-}
-
 /* Value k of v (stage st) as text: the shortest double, the integer, "none". */
 static const char *value_text(char *b, size_t n, int st, const pt_cat_val *v, int k)
 {
@@ -280,25 +275,22 @@ int pt_cmd_step(int argc, char **argv)
     pt_journey j;
     pt_scene s;
     char note[512];
+    pt_cli_args ca = {"step", usage, 1, NULL, NULL, 1};
 
     for (k = 1; k < argc; k++) {
         const char *a = argv[k];
+        int u;
 
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
         if (!strcmp(a, "--all")) all = 1;
         else if (!strcmp(a, "--interactive")) inter = 1;
         else if (!strcmp(a, "--raw-lookat")) raw = 1;
         else if (!strcmp(a, "--compare-cameras")) compare = 1;
-        else if (!strcmp(a, "--vertex") || !strcmp(a, "--model")) {
-            if (k + 1 >= argc) return usage_error("option needs a value: ", a);
-            if (!strcmp(a, "--model")) model = argv[++k];
-            else if (pt_cli_count(argv[++k], 1, 4294967295u, &v) != 0)
-                return usage_error("--vertex takes a vertex number >= 1, not ", argv[k]);
-        } else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option ", a);
-        else if (path) return usage_error("more than one scene given: ", a);
-        else path = a;
+        else if ((u = pt_cli_arg(&ca, argc, argv, &k)) >= 0) return u;  /* SCENE, --vertex, ... */
     }
-    if (all && inter) return usage_error("--all and --interactive exclude each other", "");
+    path = ca.path;
+    model = ca.model;
+    v = ca.vertex;
+    if (all && inter) return pt_cli_usage("step", "--all and --interactive exclude each other");
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     m = pt_cli_vertex_model(&s, "step", model, v);

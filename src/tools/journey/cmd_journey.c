@@ -45,11 +45,6 @@ static const char usage[] =
 "orthographic) is drawn; a scene with the matrix camera exits with status 2.\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n";
 
-static int usage_error(const char *msg, const char *arg)
-{
-    return pt_cli_usage("journey", "%s%s", msg, arg);
-}
-
 /* Write the text in sb (or, sb NULL, the image fb) to path, whole or not at
 ** all.  Returns 0 or -1. */
 static int write_file(const char *path, const pt_sbuf *sb, const pt_fb *fb)
@@ -122,38 +117,31 @@ int pt_cmd_journey(int argc, char **argv)
     pt_sbuf a, b;
     pt_fb fb;
     int k, rc, have_fb = 0;
+    pt_cli_args ca = {"journey", usage, 1, NULL, NULL, 0};
 
     for (k = 1; k < argc; k++) {
         const char *o = argv[k];
 
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) { fputs(usage, stdout); return 0; }
-        if (!strcmp(o, "--vertex") || !strcmp(o, "--model") || !strcmp(o, "--svg") ||
-            !strcmp(o, "--html") || !strcmp(o, "--image")) {
-            const char *val;
-            if (k + 1 >= argc) return usage_error("option needs a value: ", o);
-            val = argv[++k];
-            if (!strcmp(o, "--model")) model = val;
-            else if (!strcmp(o, "--svg")) svg = val;
+        const char *val;
+        int u;
+
+        if (!strcmp(o, "--svg") || !strcmp(o, "--html") || !strcmp(o, "--image")) {
+            if ((u = pt_cli_value("journey", argc, argv, &k, &val)) >= 0) return u;
+            if (!strcmp(o, "--svg")) svg = val;
             else if (!strcmp(o, "--html")) html = val;
-            else if (!strcmp(o, "--image")) image = val;
-            else {
-                char *end;
-                errno = 0;
-                v = strtoull(val, &end, 10);
-                if (val[0] < '0' || val[0] > '9' || *end || errno || v < 1 || v > 4294967295ULL)
-                    return usage_error("--vertex takes a vertex number >= 1, not ", val);
-            }
-        } else if (o[0] == '-' && o[1] != '\0') return usage_error("unknown option ", o);
-        else if (path) return usage_error("more than one scene given: ", o);
-        else path = o;
+            else image = val;
+        } else if ((u = pt_cli_arg(&ca, argc, argv, &k)) >= 0) return u;  /* SCENE, --vertex, ... */
     }
-    if (!v) return usage_error("--vertex N is required", "");
+    path = ca.path;
+    model = ca.model;
+    v = ca.vertex;
+    if (!v) return pt_cli_usage("journey", "--vertex N is required");
     if (!svg && !html && !image)
-        return usage_error("nothing to write: give --svg FILE, --html FILE or --image FILE", "");
+        return pt_cli_usage("journey", "nothing to write: give --svg FILE, --html FILE or --image FILE");
     if ((svg && html && !strcmp(svg, html)) || (svg && image && !strcmp(svg, image)) ||
         (html && image && !strcmp(html, image)))
-        return usage_error("two outputs name the same file: ",
-                           svg && html && !strcmp(svg, html) ? svg : image);
+        return pt_cli_usage("journey", "two outputs name the same file: %s",
+                            svg && html && !strcmp(svg, html) ? svg : image);
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     if (s.matrix) {
