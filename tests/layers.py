@@ -103,26 +103,28 @@ for path in files:
     graph[path] = edges
     check("layers-1.1 %s includes only downward" % path, not bad, "\n  ".join(bad))
 
-# no cycles: depth-first search, colouring the files on the current path
-state = {}
-cycle = []
+# no cycles: depth-first search, colouring the nodes on the current path
+def find_cycle(g):
+    state, cycle = {}, []
+
+    def visit(p, stack):
+        state[p] = 1
+        stack.append(p)
+        for q in sorted(g.get(p, ())):
+            if state.get(q) == 1 and not cycle:
+                cycle.extend(stack[stack.index(q):] + [q])
+            elif q not in state:
+                visit(q, stack)
+        stack.pop()
+        state[p] = 2
+
+    for p in sorted(g):
+        if p not in state:
+            visit(p, [])
+    return cycle
 
 
-def visit(p, stack):
-    state[p] = 1
-    stack.append(p)
-    for q in graph.get(p, []):
-        if state.get(q) == 1 and not cycle:
-            cycle.extend(stack[stack.index(q):] + [q])
-        elif q not in state:
-            visit(q, stack)
-    stack.pop()
-    state[p] = 2
-
-
-for p in sorted(graph):
-    if p not in state:
-        visit(p, [])
+cycle = find_cycle(graph)
 check("layers-2.1 no include cycle", not cycle, " -> ".join(cycle))
 
 # no cycle between modules either (a module: x.c with its header x.h), so
@@ -134,25 +136,7 @@ for p, edges in graph.items():
         other = os.path.splitext(q)[0]
         if other != mod:
             mgraph.setdefault(mod, set()).add(other)
-state.clear()
-del cycle[:]
-
-
-def mvisit(p, stack):
-    state[p] = 1
-    stack.append(p)
-    for q in sorted(mgraph.get(p, ())):
-        if state.get(q) == 1 and not cycle:
-            cycle.extend(stack[stack.index(q):] + [q])
-        elif q not in state:
-            mvisit(q, stack)
-    stack.pop()
-    state[p] = 2
-
-
-for p in sorted(mgraph):
-    if p not in state:
-        mvisit(p, [])
+cycle = find_cycle(mgraph)
 check("layers-2.2 no cycle between modules", not cycle, " -> ".join(cycle))
 
 # the checks can fail: a core file that included io would be refused

@@ -110,3 +110,19 @@ void pt_outfile_abort(pt_outfile *o)
     free(o->target);
     o->tmp = o->target = NULL;
 }
+
+int pt_outfile_finish(pt_outfile *o, int bad, const char *who)
+{
+    char err[512];
+
+    if (bad) {
+        fprintf(stderr, "%s: cannot write '%s'\n", who, o->path);
+        pt_outfile_abort(o);
+        return -1;
+    }
+    if (pt_outfile_commit(o, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", who, err);
+        return -1;
+    }
+    return 0;
+}

@@ -35,4 +35,9 @@ int pt_outfile_commit(pt_outfile *o, char *err, size_t errlen);
 /* Close and remove the temporary file.  This function can't fail. */
 void pt_outfile_abort(pt_outfile *o);
 
+/* End a file whose writing went wrong when bad is set (then abort it), else
+** commit it; on failure print "WHO: cannot write 'PATH'" or the commit's
+** message, prefixed "WHO: ", to standard error.  Returns 0, or -1. */
+int pt_outfile_finish(pt_outfile *o, int bad, const char *who);
+
 #endif

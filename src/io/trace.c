@@ -691,14 +691,21 @@ static void on_vertex(void *ud, const pt_vrec *r)
 
 /* ===== raster records ===== */
 
+/* '{"type":"KIND","model":NAME,"segment":SEG': how a raster record opens. */
+static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint64_t seg)
+{
+    puts_(t, "{\"type\":\""); puts_(t, kind); puts_(t, "\",\"model\":");
+    put_json_str(t, m->name);
+    puts_(t, ",\"segment\":"); put_u64(t, seg);
+}
+
 static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
                      int64_t x_fb, int64_t y_fb, int64_t idx)
 {
     pt_trace *t = ud;
 
     if (t->fmt == PT_FORMAT_JSONL) {
-        puts_(t, "{\"type\":\"pixel\",\"model\":"); put_json_str(t, m->name);
-        puts_(t, ",\"segment\":"); put_u64(t, seg);
+        put_seg_json(t, "pixel", m, seg);
         puts_(t, ",\"x\":"); put_i64(t, x_fb);
         puts_(t, ",\"y\":"); put_i64(t, y_fb);
         puts_(t, ",\"i\":"); put_i64(t, idx);
@@ -731,8 +738,7 @@ static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
     pt_trace *t = ud;
 
     if (t->fmt == PT_FORMAT_JSONL) {
-        puts_(t, "{\"type\":\"clip\",\"model\":"); put_json_str(t, m->name);
-        puts_(t, ",\"segment\":"); put_u64(t, seg);
+        put_seg_json(t, "clip", m, seg);
         puts_(t, ",\"count\":"); put_u64(t, count);
         puts_(t, ",\"first\":"); put_pair_json(t, first);
         puts_(t, ",\"last\":"); put_pair_json(t, last);
@@ -753,8 +759,7 @@ static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
     pt_trace *t = ud;
 
     if (t->fmt == PT_FORMAT_JSONL) {
-        puts_(t, "{\"type\":\"skip\",\"model\":"); put_json_str(t, m->name);
-        puts_(t, ",\"segment\":"); put_u64(t, seg);
+        put_seg_json(t, "skip", m, seg);
         if (v) { puts_(t, ",\"v\":"); put_u64(t, v); }
         puts_(t, ",\"why\":"); put_json_str(t, why); puts_(t, "}\n");
     } else if (t->fmt == PT_FORMAT_TEXT) {

@@ -139,3 +139,16 @@ int pt_cli_student_note(char *buf, size_t n)
              k > 1 ? "s" : "", k > 1 ? "are" : "is", vars);
     return 1;
 }
+
+int pt_cli_read_line(char *b, size_t n, int echo)
+{
+    size_t len;
+
+    if (!fgets(b, (int)n, stdin)) return -1;
+    len = strlen(b);
+    if (len && b[len - 1] == '\n') b[--len] = '\0';
+    else { int ch; while ((ch = getchar()) != EOF && ch != '\n') {} }
+    if (len && b[len - 1] == '\r') b[--len] = '\0';
+    if (echo) printf("%s\n", b);
+    return 0;
+}

@@ -85,4 +85,10 @@ extern const char pt_student_stages[];
 ** the reference build.  This function can't fail. */
 int pt_cli_student_note(char *buf, size_t n);
 
+/* Read one line of standard input into b (newline and a trailing CR dropped;
+** the rest of a too long line is skipped).  echo: print it, so that a
+** transcript driven through a pipe reads like a terminal session (step and
+** quiz).  Returns 0, or -1 at end of input. */
+int pt_cli_read_line(char *b, size_t n, int echo);
+
 #endif

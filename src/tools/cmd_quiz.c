@@ -49,20 +49,6 @@ static uint64_t xorshift(uint64_t *st)
     return x * 0x2545F4914F6CDD1DULL;
 }
 
-/* Read one line as in cmd_step.c; echo it when standard input is no terminal. */
-static int read_line(char *b, size_t n, int echo)
-{
-    size_t len;
-
-    if (!fgets(b, (int)n, stdin)) return -1;
-    len = strlen(b);
-    if (len && b[len - 1] == '\n') b[--len] = '\0';
-    else { int ch; while ((ch = getchar()) != EOF && ch != '\n') {} }
-    if (len && b[len - 1] == '\r') b[--len] = '\0';
-    if (echo) printf("%s\n", b);
-    return 0;
-}
-
 /* Split an answer into numbers (spaces, tabs or commas between them); "none"
 ** sets none[k].  Returns how many, or -1 when a token is not a number or there
 ** are more than max. */
@@ -146,7 +132,7 @@ static int ask(const pt_journey *j, int *asked)
             printf(" %s", pt_coord_name((pt_stage)st, k));
         printf(" = ? ");
         fflush(stdout);
-        if (read_line(line, sizeof line, echo) != 0) { putchar('\n'); return right; }
+        if (pt_cli_read_line(line, sizeof line, echo) != 0) { putchar('\n'); return right; }
         ++*asked;
         n = parse_answer(line, v, none, 4);
         ok = n >= 0 && check(j, (pt_stage)st, v, none, n);

@@ -96,22 +96,6 @@ static void show_stage(const pt_journey *j, int i)
     printf("  next     %s\n", b);
 }
 
-/* Read one line of standard input into b (newline dropped; the rest of a too
-** long line is skipped).  echo: print it, so that a transcript driven through
-** a pipe reads like a terminal session.  Returns 0, or -1 at end of input. */
-static int read_line(char *b, size_t n, int echo)
-{
-    size_t len;
-
-    if (!fgets(b, (int)n, stdin)) return -1;
-    len = strlen(b);
-    if (len && b[len - 1] == '\n') b[--len] = '\0';
-    else { int ch; while ((ch = getchar()) != EOF && ch != '\n') {} }
-    if (len && b[len - 1] == '\r') b[--len] = '\0';
-    if (echo) printf("%s\n", b);
-    return 0;
-}
-
 /* Enter, b, q: walk the stages until q, end of input, or Enter after the last. */
 static void interact(const pt_journey *j)
 {
@@ -123,7 +107,7 @@ static void interact(const pt_journey *j)
         show = 1;
         printf("[Enter] %s, b back, q quit: ", st + 1 < j->norder ? "next stage" : "done");
         fflush(stdout);
-        if (read_line(line, sizeof line, echo) != 0) { putchar('\n'); break; }
+        if (pt_cli_read_line(line, sizeof line, echo) != 0) { putchar('\n'); break; }
         if (!strcmp(line, "q") || !strcmp(line, "quit")) break;
         if (!strcmp(line, "b") || !strcmp(line, "back")) {
             if (st > 0) st--;

@@ -53,16 +53,7 @@ static int write_highlight(const char *path, const pt_ppm *a, const pt_ppm *b, i
         if (fwrite(row, 1, 3 * (size_t)w, out.f) != 3 * (size_t)w) break;
     }
     free(row);
-    if (y < h || ferror(out.f)) {
-        fprintf(stderr, "pipetrace: cannot write '%s'\n", path);
-        pt_outfile_abort(&out);
-        return -1;
-    }
-    if (pt_outfile_commit(&out, err, sizeof err) != 0) {
-        fprintf(stderr, "pipetrace: %s\n", err);
-        return -1;
-    }
-    return 0;
+    return pt_outfile_finish(&out, y < h || ferror(out.f), "pipetrace");
 }
 
 int pt_diff_images(const dopts *o, const pt_ppm img[2])

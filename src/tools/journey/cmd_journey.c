@@ -59,16 +59,7 @@ static int write_file(const char *path, const pt_sbuf *sb, const pt_fb *fb)
     }
     if (sb) bad = fwrite(sb->s, 1, sb->len, o.f) != sb->len;
     else bad = (pt_path_is_png(path) ? pt_fb_write_png(fb, o.f) : pt_fb_write_ppm(fb, o.f)) != 0;
-    if (bad) {
-        fprintf(stderr, "pipetrace journey: cannot write '%s'\n", path);
-        pt_outfile_abort(&o);
-        return -1;
-    }
-    if (pt_outfile_commit(&o, err, sizeof err) != 0) {
-        fprintf(stderr, "pipetrace journey: %s\n", err);
-        return -1;
-    }
-    return 0;
+    return pt_outfile_finish(&o, bad, "pipetrace journey");
 }
 
 /* The scene rendered into fb (initialised here), with the framebuffer pixel of
