@@ -64,7 +64,8 @@ CORE_O   = $B/scene.o $B/builtin.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
 IO_O     = $B/numfmt.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/png.o $B/outfile.o
 # src/tools/: the command line and the subcommands (diff, accuracy and
 # journey in folders of their own).
-TOOLS_O  = $B/cli.o $B/accuracy.o $B/accuracy_matrix.o $B/journey.o $B/journey_html.o
+TOOLS_O  = $B/cli.o $B/dd.o $B/acc_shared.o $B/acc_float.o $B/acc_double.o $B/acc_dd.o \
+           $B/accuracy.o $B/journey.o $B/journey_html.o
 CMDS_O   = $B/cmd_diff.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o $B/cmd_accuracy.o \
            $B/cmd_journey.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
