@@ -27,12 +27,15 @@
 
 /* ===== the classic camera ===== */
 
-void pt_acc_dd_journey(const pt_scene *s, const pt_model *m, pt_vec3 v, pt_acc_journey *j)
+static void journey(const pt_scene *s, const pt_model *m, pt_vec3 v, unsigned choices,
+                    pt_acc_journey *j)
 {
     const pt_dd one = {1.0, 0.0}, half = {0.5, 0.0};
     pt_dd x_c, y_c, z_c, x_ip, y_ip, x_pp, y_pp, w_k, h_k;
     int64_t rx = 0, ry = 0;
     int ok;
+
+    (void)choices;                                  /* the reference has none */
 
     j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
     x_c = pt_dd_add(j->m[0], pt_acc_dd(m->translate.x));     /* x_c = x_m + x_t */
@@ -60,11 +63,13 @@ void pt_acc_dd_journey(const pt_scene *s, const pt_model *m, pt_vec3 v, pt_acc_j
 
 static int64_t i64_abs(int64_t v) { return v < 0 ? -v : v; }  /* |v| < 2^63 */
 
-int pt_acc_dd_raster(const pt_dd p0[2], const pt_dd p1[2], const pt_acc_dda *o)
+static int raster(const pt_dd p0[2], const pt_dd p1[2], unsigned choices, const pt_acc_dda *o)
 {
     int64_t e[4], s, first, last, r;
     pt_acc_line ln;
     int tr;
+
+    (void)choices;                                  /* the reference has none */
 
     if (!pt_dd_pix_round(p0[0], &e[0]) || !pt_dd_pix_round(p0[1], &e[1]) ||
         !pt_dd_pix_round(p1[0], &e[2]) || !pt_dd_pix_round(p1[1], &e[3]))
@@ -210,7 +215,7 @@ static void camera_bounds_dd(const pt_scene *s, const pt_dd_mat4 *view,
 
 /* ----- double-double ----- */
 
-int pt_acc_dd_mcam(pt_acc_mcam *c)
+static int mcam(pt_acc_mcam *c)
 {
     const pt_scene *s = c->s;
     size_t k, n = s->nmodels ? s->nmodels : 1;
@@ -330,7 +335,7 @@ static void tail_dd(const pt_scene *s, const pt_dd k[4], const double ek[4], pt_
     pt_acc_mtail_int(s, t, 1);
 }
 
-void pt_acc_dd_mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+static void mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
 {
     static const double exact[4] = {0, 0, 0, 0};
     double ew[4], ev[4];
@@ -374,8 +379,8 @@ static double t_bound(pt_dd t, pt_dd d0, pt_dd d1, double e0, double e1)
     return (e0 + fabs(t.hi) * (e0 + e1)) / fabs(d0.hi - d1.hi) + TIE_U * fabs(t.hi);
 }
 
-int pt_acc_dd_mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
-                   const pt_acc_mjourney *b, pt_acc_mseg *g)
+static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
+                const pt_acc_mjourney *b, pt_acc_mseg *g)
 {
     pt_dd q[4], d0[PT_CVV_NPLANES], d1[PT_CVV_NPLANES], t[2];
     double ea[PT_CVV_NPLANES], eb[PT_CVV_NPLANES], et[2] = {0, 0}, eq[4];
@@ -414,3 +419,4 @@ int pt_acc_dd_mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     return 1;
 }
 
+const pt_acc_ops pt_acc_dd_ops = { journey, raster, mcam, mjourney, mseg };

@@ -18,8 +18,8 @@ static pt_vec2 image2pixel_two(pt_vec3 ip, int w, int h)
     return pp;
 }
 
-void pt_acc_double_journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
-                           unsigned choices, pt_acc_journey *j)
+static void journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
+                    unsigned choices, pt_acc_journey *j)
 {
     pt_stage_params par;
     pt_vec3 c, ip;
@@ -96,9 +96,10 @@ static void steps_d(const pt_dd p0[2], const pt_dd p1[2], int recompute, const p
     }
 }
 
-int pt_acc_double_raster(const pt_dd p0[2], const pt_dd p1[2], int recompute,
-                         const pt_acc_dda *o)
+static int raster(const pt_dd p0[2], const pt_dd p1[2], unsigned choices,
+                  const pt_acc_dda *o)
 {
+    int recompute = (choices & PT_ACC_RECOMPUTE) != 0;
     pt_vec2 a, b;
     pt_raster_out out;
     int64_t r;
@@ -113,13 +114,13 @@ int pt_acc_double_raster(const pt_dd p0[2], const pt_dd p1[2], int recompute,
     out.pixel = forward_pixel;
     out.clip = ignore_clip;
     out.ud = (void *)o;
-    pt_raster_segment(a, b, o->w, o->h, o->to_vp ? o->to_vp : pt_pixel2viewport, &out);
+    pt_raster_segment(a, b, o->w, o->h, o->to_vp, &out);
     return 0;
 }
 
 /* ===== the matrix camera ===== */
 
-int pt_acc_double_mcam(pt_acc_mcam *c)
+static int mcam(pt_acc_mcam *c)
 {
     pt_options o;
 
@@ -149,7 +150,7 @@ static void tail_d(const pt_scene *s, pt_vec4 k, pt_acc_mtail *t)
     t->pp[1] = pt_acc_dd(t->vp.ok ? pp.y : (double)NAN);
 }
 
-void pt_acc_double_mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+static void mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
 {
     pt_matrices mx;
     pt_vec4 w, vw, kc;
@@ -168,8 +169,8 @@ void pt_acc_double_mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mj
     else pt_acc_no_tail(&j->t);
 }
 
-int pt_acc_double_mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
-                       const pt_acc_mjourney *b, pt_acc_mseg *g)
+static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
+                const pt_acc_mjourney *b, pt_acc_mseg *g)
 {
     pt_vec4 p[2], q[2];
     double t[2];
@@ -186,3 +187,5 @@ int pt_acc_double_mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     }
     return 1;
 }
+
+const pt_acc_ops pt_acc_double_ops = { journey, raster, mcam, mjourney, mseg };

@@ -14,31 +14,11 @@
 
 #include "tools/accuracy/acc_shared.h"
 
-/* The classic journey of v (model m of scene s): stages s1 .. s6 (with
-** PT_ACC_TWO, s3's formula with 2 for 2.001).  This function can't fail. */
-void pt_acc_double_journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
-                           unsigned choices, pt_acc_journey *j);
-
-/* The segment p0-p1 of the pixel plane: pt_raster_segment() with o->to_vp,
-** its pixels to o->pixel, and each step's accumulated y to o->step (when not
-** NULL); with recompute, a DDA that computes y = y0 + m*(x - x0) each step.
-** Returns 0, or -1 when an endpoint has no integer pixel (nothing drawn).
-** This function can't fail. */
-int pt_acc_double_raster(const pt_dd p0[2], const pt_dd p1[2], int recompute,
-                         const pt_acc_dda *o);
-
-/* Fill c's double matrices (c->s set): the pipeline's plan of the scene.
-** Returns 0, or -1 when out of memory. */
-int pt_acc_double_mcam(pt_acc_mcam *c);
-
-/* The matrix camera's journey of v_m of model k: stages m1 .. m7, s5, s6.
-** This function can't fail. */
-void pt_acc_double_mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v_m, pt_acc_mjourney *j);
-
-/* The segment a-b clipped by pt_clip_segment(), g->made set by the caller:
-** returns 1 and fills the made ends, or 0 when culled.  This function can't
-** fail. */
-int pt_acc_double_mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
-                       const pt_acc_mjourney *b, pt_acc_mseg *g);
+/* The double run: stages s1 .. s6 (PT_ACC_TWO: s3's formula with 2 for
+** 2.001); pt_raster_segment() with o->to_vp, each step's accumulated y to
+** o->step when not NULL (PT_ACC_RECOMPUTE: a DDA that computes y = y0 + m*(x
+** - x0) each step instead); the pipeline's plan for the matrices; stages
+** m1 .. m7, s5, s6 and pt_clip_segment() for the matrix camera. */
+extern const pt_acc_ops pt_acc_double_ops;
 
 #endif

@@ -84,8 +84,8 @@ static void widen_f(const float *a, pt_dd *r, int n)
 
 /* ===== the classic camera ===== */
 
-void pt_acc_float_journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
-                      unsigned choices, pt_acc_journey *j)
+static void journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
+                    unsigned choices, pt_acc_journey *j)
 {
     float x_m = to_float(v.x), y_m = to_float(v.y), z_m = to_float(v.z);
     float x_c, y_c, z_c, x_ip, y_ip, x_pp, y_pp;
@@ -155,11 +155,11 @@ static int raster_f(float px0, float py0, float px1, float py1, int recompute,
     return 0;
 }
 
-int pt_acc_float_raster(const pt_dd p0[2], const pt_dd p1[2], int recompute,
-                        const pt_acc_dda *o)
+static int raster(const pt_dd p0[2], const pt_dd p1[2], unsigned choices,
+                  const pt_acc_dda *o)
 {
     return raster_f(to_float(p0[0].hi), to_float(p0[1].hi), to_float(p1[0].hi),
-                    to_float(p1[1].hi), recompute, o);
+                    to_float(p1[1].hi), (choices & PT_ACC_RECOMPUTE) != 0, o);
 }
 
 /* ===== the matrix camera: matrices ===== */
@@ -272,7 +272,7 @@ static void world_f(const pt_model *m, pt_acc_mat4f *r)
     *r = mul_f(&w, &t);                     /* World = (world lines) * T */
 }
 
-int pt_acc_float_mcam(pt_acc_mcam *c)
+static int mcam(pt_acc_mcam *c)
 {
     const pt_scene *s = c->s;
     size_t k;
@@ -347,7 +347,7 @@ static void tail_f(const pt_scene *s, const float k[4], pt_acc_mtail *t)
     pt_acc_mtail_int(s, t, 0);
 }
 
-void pt_acc_float_mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+static void mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
 {
     float m[4], w[4], vw[4], kc[4];
 
@@ -375,8 +375,8 @@ static void lerp_f(const float p0[4], const float p1[4], float t, float r[4])
     for (c = 0; c < 4; c++) r[c] = p0[c] + t * (p1[c] - p0[c]);   /* P(t) = P0 + t (P1 - P0) */
 }
 
-int pt_acc_float_mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
-                  const pt_acc_mjourney *b, pt_acc_mseg *g)
+static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
+                const pt_acc_mjourney *b, pt_acc_mseg *g)
 {
     float p0[4], p1[4], q[4], d0[PT_CVV_NPLANES], d1[PT_CVV_NPLANES], t[2] = {0, 1};
     int i, e;
@@ -405,3 +405,4 @@ int pt_acc_float_mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     return 1;
 }
 
+const pt_acc_ops pt_acc_float_ops = { journey, raster, mcam, mjourney, mseg };

@@ -12,30 +12,10 @@
 
 #include "tools/accuracy/acc_shared.h"
 
-/* The classic journey of v (model m of scene s) in float; choices: PT_ACC_TWO
-** divides by 2 instead of 2.001.  This function can't fail. */
-void pt_acc_float_journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
-                          unsigned choices, pt_acc_journey *j);
-
-/* The DDA in float between the pixel-plane points p0 and p1 (rounded to
-** float): y += m, or y = y0 + m*(x - x0) when recompute is set, for the steps
-** in the viewport's band.  Returns 0, or -1 when an endpoint has no integer
-** pixel (nothing drawn).  This function can't fail. */
-int pt_acc_float_raster(const pt_dd p0[2], const pt_dd p1[2], int recompute,
-                        const pt_acc_dda *o);
-
-/* Fill c's float matrices (c->s set): View, Projection and every World from
-** the scene's numbers rounded to float.  Returns 0, or -1 when out of memory. */
-int pt_acc_float_mcam(pt_acc_mcam *c);
-
-/* The matrix camera's journey of v_m of model k in float.  This function
-** can't fail. */
-void pt_acc_float_mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v_m, pt_acc_mjourney *j);
-
-/* The segment a-b clipped in clip space in float, g->made set by the caller:
-** returns 1 and fills the made ends, or 0 when culled.  This function can't
-** fail. */
-int pt_acc_float_mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
-                      const pt_acc_mjourney *b, pt_acc_mseg *g);
+/* The float run: the classic journey (choices: PT_ACC_TWO divides by 2, not
+** 2.001), the DDA on the ends rounded to float (y += m, or with
+** PT_ACC_RECOMPUTE y = y0 + m*(x - x0) each step), the matrices from the
+** scene's numbers rounded to float, the matrix camera's journey and clipping. */
+extern const pt_acc_ops pt_acc_float_ops;
 
 #endif

@@ -12,6 +12,7 @@
 #ifndef PT_ACC_SHARED_H
 #define PT_ACC_SHARED_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include "core/pipetrace.h"
 #include "tools/accuracy/dd.h"
@@ -150,5 +151,29 @@ void pt_acc_dda_step(const pt_acc_dda *o, const pt_acc_line *ln, int64_t s, int 
 /* Both ends on the pixel (ix, iy): that pixel, if inside.  This function
 ** can't fail. */
 void pt_acc_dda_dot(const pt_acc_dda *o, int64_t ix, int64_t iy);
+
+/* ===== one arithmetic ===== */
+
+/* One arithmetic's stages and DDA: acc_float.c's pt_acc_float_ops,
+** acc_double.c's pt_acc_double_ops, acc_dd.c's pt_acc_dd_ops.  None can fail
+** but by running out of memory (mcam).  The reference ignores choices. */
+typedef struct pt_acc_ops {
+    void (*journey)(const pt_scene *s, const pt_model *m, pt_vec3 v,
+                    unsigned choices, pt_acc_journey *j);
+                                 /* the classic journey of v, a vertex of m */
+    int (*raster)(const pt_dd p0[2], const pt_dd p1[2], unsigned choices,
+                  const pt_acc_dda *o);
+                                 /* the DDA from p0 to p1 (pixel plane), the
+                                 ** steps in the viewport's band to o: 0, or -1
+                                 ** when an end has no integer pixel */
+    int (*mcam)(pt_acc_mcam *c); /* fill c's matrices (c->s set): 0, or -1
+                                 ** when out of memory */
+    void (*mjourney)(const pt_acc_mcam *c, size_t k, pt_vec3 v_m, pt_acc_mjourney *j);
+                                 /* the matrix camera's journey of v_m, model k */
+    int (*mseg)(const pt_acc_mcam *c, const pt_acc_mjourney *a,
+                const pt_acc_mjourney *b, pt_acc_mseg *g);
+                                 /* a-b clipped in clip space, g->made set by
+                                 ** the caller: 1 with the made ends, 0 culled */
+} pt_acc_ops;
 
 #endif

@@ -16,6 +16,11 @@
 #include "tools/accuracy/acc_double.h"
 #include "tools/accuracy/acc_dd.h"
 
+/* Each arithmetic's stages and DDA, by pt_arith. */
+static const pt_acc_ops *const ops[PT_NARITH] = {
+    &pt_acc_float_ops, &pt_acc_double_ops, &pt_acc_dd_ops
+};
+
 const char *const pt_arith_names[PT_NARITH] = { "float", "double", "double-double" };
 const int pt_arith_bits[PT_NARITH] = { 24, 53, PT_DD_BITS };
 const char *const pt_acc_row_names[PT_ACC_NROWS] = {
@@ -31,20 +36,12 @@ const char *const pt_acc_mrow_names[PT_ACC_M_NROWS] = {
 void pt_acc_journey_of(pt_arith a, unsigned choices, const pt_scene *s,
                        const pt_model *m, pt_vec3 v_m, pt_acc_journey *j)
 {
-    switch (a) {
-    case PT_ARITH_FLOAT:  pt_acc_float_journey(s, m, v_m, choices, j); break;
-    case PT_ARITH_DOUBLE: pt_acc_double_journey(s, m, v_m, choices, j); break;
-    default:              pt_acc_dd_journey(s, m, v_m, j); break;
-    }
+    ops[a]->journey(s, m, v_m, choices, j);
 }
 
 void pt_acc_mjourney_of(const pt_acc_mcam *c, size_t k, pt_vec3 v_m, pt_acc_mjourney *j)
 {
-    switch (c->arith) {
-    case PT_ARITH_FLOAT:  pt_acc_float_mjourney(c, k, v_m, j); break;
-    case PT_ARITH_DOUBLE: pt_acc_double_mjourney(c, k, v_m, j); break;
-    default:              pt_acc_dd_mjourney(c, k, v_m, j); break;
-    }
+    ops[c->arith]->mjourney(c, k, v_m, j);
 }
 
 void pt_acc_mseg_of(const pt_acc_mcam *c, const pt_acc_mjourney *a,
@@ -54,24 +51,8 @@ void pt_acc_mseg_of(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     g->made[0] = a->code != 0;              /* an end outside gets a new point */
     g->made[1] = b->code != 0;
     if (!g->made[0] && !g->made[1]) { g->visible = 1; return; }    /* all inside */
-    switch (c->arith) {
-    case PT_ARITH_FLOAT:  g->visible = pt_acc_float_mseg(c, a, b, g); break;
-    case PT_ARITH_DOUBLE: g->visible = pt_acc_double_mseg(c, a, b, g); break;
-    default:              g->visible = pt_acc_dd_mseg(c, a, b, g); break;
-    }
+    g->visible = ops[c->arith]->mseg(c, a, b, g);
     if (!g->visible) g->made[0] = g->made[1] = 0;
-}
-
-static int raster_one(pt_arith a, unsigned choices, const pt_dd p0[2],
-                      const pt_dd p1[2], const pt_acc_dda *o)
-{
-    int re = (choices & PT_ACC_RECOMPUTE) != 0;
-
-    switch (a) {
-    case PT_ARITH_FLOAT:  return pt_acc_float_raster(p0, p1, re, o);
-    case PT_ARITH_DOUBLE: return pt_acc_double_raster(p0, p1, re, o);
-    default:              return pt_acc_dd_raster(p0, p1, o);
-    }
 }
 
 int pt_acc_raster_segment(pt_arith a, unsigned choices, pt_dd x0, pt_dd y0,
@@ -82,9 +63,10 @@ int pt_acc_raster_segment(pt_arith a, unsigned choices, pt_dd x0, pt_dd y0,
     pt_acc_dda o;
     pt_dd p0[2], p1[2];
 
-    o.pixel = pixel; o.step = NULL; o.ud = ud; o.w = w; o.h = h; o.to_vp = NULL;
+    o.pixel = pixel; o.step = NULL; o.ud = ud; o.w = w; o.h = h;
+    o.to_vp = pt_pixel2viewport;
     p0[0] = x0; p0[1] = y0; p1[0] = x1; p1[1] = y1;
-    return raster_one(a, a == PT_ARITH_DD ? 0 : choices, p0, p1, &o);
+    return ops[a]->raster(p0, p1, a == PT_ARITH_DD ? 0 : choices, &o);
 }
 
 /* Matrix camera: clip segment q of model k, then draw what is left between
@@ -98,8 +80,8 @@ static void raster_mseg(const pt_acc_run *r, size_t k, size_t q, const pt_acc_dd
 
     pt_acc_mseg_of(r->cam, a, b, g);
     if (!g->visible) return;                        /* culled */
-    raster_one(r->arith, r->choices, g->made[0] ? g->end[0].pp : a->t.pp,
-               g->made[1] ? g->end[1].pp : b->t.pp, o);
+    ops[r->arith]->raster(g->made[0] ? g->end[0].pp : a->t.pp,
+                          g->made[1] ? g->end[1].pp : b->t.pp, r->choices, o);
 }
 
 /* Every segment of every model, in file order; *rgb (when not NULL) is set to
@@ -116,8 +98,8 @@ static void raster_scene(const pt_acc_run *r, const pt_acc_dda *o, uint32_t *rgb
         if (rgb) *rgb = (uint32_t)m->color[0] << 16 | (uint32_t)m->color[1] << 8 | m->color[2];
         for (q = 0; q < m->nseg; q++)
             if (r->cam) raster_mseg(r, k, q, o, keep ? &r->seg[k][q] : &g);
-            else raster_one(r->arith, r->choices, r->j[k][m->seg[q].a].pp,
-                            r->j[k][m->seg[q].b].pp, o);
+            else ops[r->arith]->raster(r->j[k][m->seg[q].a].pp,
+                                       r->j[k][m->seg[q].b].pp, r->choices, o);
     }
 }
 
@@ -126,17 +108,11 @@ static void raster_scene(const pt_acc_run *r, const pt_acc_dda *o, uint32_t *rgb
 pt_acc_mcam *pt_acc_mcam_make(const pt_scene *s, pt_arith a)
 {
     pt_acc_mcam *c = calloc(1, sizeof *c);
-    int rc;
 
     if (!c) return NULL;
     c->s = s;
     c->arith = a;
-    switch (a) {
-    case PT_ARITH_FLOAT:  rc = pt_acc_float_mcam(c); break;
-    case PT_ARITH_DOUBLE: rc = pt_acc_double_mcam(c); break;
-    default:              rc = pt_acc_dd_mcam(c); break;
-    }
-    if (rc == 0) return c;
+    if (ops[a]->mcam(c) == 0) return c;
     pt_acc_mcam_free(c);
     return NULL;
 }
