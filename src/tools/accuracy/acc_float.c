@@ -38,39 +38,46 @@ static int pix_round_f(float x, int64_t *out)
     return 1;
 }
 
+/* The binade [lo, 2 lo) that y1 and y2 share, both finite, of one sign and
+** not near zero: returns 1 and sets *lo, else 0 (then take real steps). */
+static int one_binade_f(float y1, float y2, float *lo)
+{
+    int e1, e2;
+
+    if (!isfinite(y2) || y1 == 0.0f || y2 == 0.0f || (y1 > 0) != (y2 > 0)) return 0;
+    frexpf(y1, &e1);
+    frexpf(y2, &e2);
+    *lo = ldexpf(1.0f, e2 - 1);
+    return e1 == e2 && *lo >= 0x1p-100f;
+}
+
 /* pt_raster_advance() in float: y after k steps of y += m, exactly as k float
 ** additions leave it, in O(binades crossed).  The argument of src/core/raster.c
-** holds word for word with 24 bits for 53. */
+** holds word for word with 24 bits for 53: two real steps settle the parity,
+** the third measures the constant increment d, and a jump of j steps adds
+** j*d exactly while the sum stays 4|m| + 4|d| inside the binade. */
 static float advance_f(float y, float m, uint64_t k)
 {
-    if (m == 0.0f) return k ? y + m : y;            /* y + 0 is y (or +0 for -0) */
-    while (k > 0) {
-        float y1, y2, d, lo, room;
-        int e1, e2;
-        uint64_t jump;
+    float y1, lo, d, room;
+    uint64_t jump;
 
-        if (k < 3) { y += m; k--; continue; }
+    if (m == 0.0f) return k ? y + m : y;            /* y + 0 is y (or +0 for -0) */
+    for (; k >= 3; k -= jump) {
         y1 = y + m;                                 /* two real steps */
-        y2 = y1 + m;
+        y = y1 + m;
         k -= 2;
-        y = y2;
-        if (!isfinite(y2) || y1 == 0.0f || y2 == 0.0f) continue;
-        frexpf(y1, &e1);
-        frexpf(y2, &e2);
-        if (e1 != e2 || (y1 > 0) != (y2 > 0)) continue;
-        lo = ldexpf(1.0f, e2 - 1);
-        if (lo < 0x1p-100f) continue;               /* near zero: just step */
-        d = (y2 + m) - y2;                          /* the constant increment */
-        if (d == 0.0f) return y2;
-        if ((y2 > 0) == (d > 0)) room = 2 * lo - fabsf(y2);
-        else room = fabsf(y2) - lo;
+        jump = 0;
+        if (!one_binade_f(y1, y, &lo)) continue;
+        d = (y + m) - y;                            /* the constant increment */
+        if (d == 0.0f) return y;                    /* m too small: y stays put */
+        room = (y > 0) == (d > 0) ? 2 * lo - fabsf(y) : fabsf(y) - lo;
         room -= 4 * fabsf(m) + 4 * fabsf(d);
         if (room <= 0) continue;
         jump = (uint64_t)fminf(room / fabsf(d), 0x1p62f);
         if (jump > k) jump = k;
-        y = y2 + (float)jump * d;                   /* exact: jump < 2^24 */
-        k -= jump;
+        y += (float)jump * d;                       /* exact: jump < 2^24 */
     }
+    for (; k > 0; k--) y += m;                      /* the last one or two */
     return y;
 }
 
@@ -225,24 +232,31 @@ static void normalize_f(float v[3])
     v[0] = v[0] / len; v[1] = v[1] / len; v[2] = v[2] / len;
 }
 
+/* v rounded to float and made a unit vector. */
+static void unit_f(pt_vec3 v, float r[3])
+{
+    vec3_f(v, r);
+    normalize_f(r);                         /* v / |v| */
+}
+
 static void lookat_f(const pt_scene *s, pt_acc_mat4f *r)
 {
     float eye[3], d[3], u[3], h[3];
-    int i;
+    const float *axis[3];
+    int c, i;
 
     vec3_f(s->eye, eye);
-    vec3_f(s->dir, d);
-    vec3_f(s->up, u);
-    normalize_f(d);                         /* d = dir/|dir| */
-    normalize_f(u);                         /* u = up/|up| */
+    unit_f(s->dir, d);                      /* d = dir/|dir| */
+    unit_f(s->up, u);                       /* u = up/|up| */
     cross_f(u, d, h);                       /* h = (u x d)/|u x d| */
     normalize_f(h);
     cross_f(d, h, u);                       /* u = d x h */
+    axis[0] = h; axis[1] = u; axis[2] = d;
     identity_f(r);
-    for (i = 0; i < 3; i++) { r->m[i][0] = h[i]; r->m[i][1] = u[i]; r->m[i][2] = d[i]; }
-    r->m[3][0] = -dot_f(eye, h);            /* last row (-eye.h, -eye.u, -eye.d, 1) */
-    r->m[3][1] = -dot_f(eye, u);
-    r->m[3][2] = -dot_f(eye, d);
+    for (c = 0; c < 3; c++) {               /* columns h, u, d; last row -eye.h, ... */
+        for (i = 0; i < 3; i++) r->m[i][c] = axis[c][i];
+        r->m[3][c] = -dot_f(eye, axis[c]);  /* (-eye.h, -eye.u, -eye.d, 1) */
+    }
 }
 
 static void perspective_f(const pt_scene *s, pt_acc_mat4f *r)

@@ -1,5 +1,5 @@
 /*
-** src/tools/accuracy/acc_shared.h -- what the three arithmetics share: journeys, integer stages, DDA steps
+** src/tools/accuracy/acc_shared.h -- what the three arithmetics share: journeys, integers, DDA steps
 ** See LICENSE for copyright and license.
 **
 ** acc_float.c, acc_double.c and acc_dd.c each write the stages and the DDA in

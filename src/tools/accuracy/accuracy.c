@@ -195,14 +195,19 @@ static double err_add(pt_acc_err *e, double v, double ref)
     return d;
 }
 
-/* Real coordinates: returns 1 when any differs from the reference double. */
-static int err_reals(pt_acc_err *e, const pt_dd *v, const pt_dd *ref, int n)
+/* Consecutive rows e[0 .. rows-1] of real coordinates: row i compares the
+** n[i] values v[i] with the reference's ref[i]; a vertex differs when any
+** value differs from the reference double. */
+static void err_rows(pt_acc_err *e, const pt_dd *const v[], const pt_dd *const ref[],
+                     const int n[], int rows)
 {
-    int k, differ = 0;
+    int i, k, differ;
 
-    for (k = 0; k < n; k++)
-        if (err_add(e, v[k].hi, ref[k].hi) != 0.0) differ = 1;
-    return differ;
+    for (i = 0; i < rows; i++) {
+        for (differ = 0, k = 0; k < n[i]; k++)
+            if (err_add(&e[i], v[i][k].hi, ref[i][k].hi) != 0.0) differ = 1;
+        e[i].differ += (uint64_t)differ;
+    }
 }
 
 /* A pixel: no pixel on one side only counts as an infinite error. */
@@ -444,15 +449,16 @@ static uint64_t image_diff(const pt_acc_run *a, const pt_acc_run *b, uint64_t *e
 }
 
 /* Rows viewport, framebuffer and index (e[0], e[1], e[2], in that order in
-** both cameras' tables) of one vertex's pixels a against the reference's b. */
-static void err_pixels(pt_acc_err e[3], const pt_scene *s, const pt_pix a[2], int64_t ia,
-                       const pt_pix b[2], int64_t ib)
+** both cameras' tables) of one vertex: its pixels a (viewport, framebuffer)
+** and index ia against the reference's b and ib. */
+static void err_pixels(pt_acc_err e[3], const pt_scene *s, pt_pix a_vp, pt_pix a_fb,
+                       int64_t ia, pt_pix b_vp, pt_pix b_fb, int64_t ib)
 {
-    int in_a = a[0].ok && pt_inside(a[0].x, a[0].y, s->vp_w, s->vp_h);
-    int in_b = b[0].ok && pt_inside(b[0].x, b[0].y, s->vp_w, s->vp_h);
+    int in_a = a_vp.ok && pt_inside(a_vp.x, a_vp.y, s->vp_w, s->vp_h);
+    int in_b = b_vp.ok && pt_inside(b_vp.x, b_vp.y, s->vp_w, s->vp_h);
 
-    e[0].differ += err_pix(&e[0], a[0], b[0]);
-    e[1].differ += err_pix(&e[1], a[1], b[1]);
+    e[0].differ += err_pix(&e[0], a_vp, b_vp);
+    e[1].differ += err_pix(&e[1], a_fb, b_fb);
     if (ia >= 0 && ib >= 0) err_add(&e[2], (double)ia, (double)ib);
     e[2].differ += ia != ib;
     e[0].left += in_b && !in_a;
@@ -464,7 +470,8 @@ static void err_pixels(pt_acc_err e[3], const pt_scene *s, const pt_pix a[2], in
 static void tail_err(pt_acc_err e[PT_ACC_MAXROWS], const pt_scene *s,
                      const pt_acc_mtail *a, const pt_acc_mtail *ref)
 {
-    pt_pix pa[2], pb[2];
+    static const int n[2] = {3, 3};
+    const pt_dd *va[2], *vb[2];
     int row, k;
 
     for (row = PT_ACC_M_NDC; row <= PT_ACC_M_INDEX; row++) e[row].of++;
@@ -480,84 +487,77 @@ static void tail_err(pt_acc_err e[PT_ACC_MAXROWS], const pt_scene *s,
         for (row = PT_ACC_M_NDC; row <= PT_ACC_M_INDEX; row++) e[row].differ++;
         return;
     }
-    e[PT_ACC_M_NDC].differ += err_reals(&e[PT_ACC_M_NDC], a->n, ref->n, 3);
-    e[PT_ACC_M_SCREEN].differ += err_reals(&e[PT_ACC_M_SCREEN], a->sc, ref->sc, 3);
-    pa[0] = a->vp; pa[1] = a->fb;
-    pb[0] = ref->vp; pb[1] = ref->fb;
-    err_pixels(&e[PT_ACC_M_VIEWPORT], s, pa, a->idx, pb, ref->idx);
+    va[0] = a->n; va[1] = a->sc;                    /* ndc, screen */
+    vb[0] = ref->n; vb[1] = ref->sc;
+    err_rows(&e[PT_ACC_M_NDC], va, vb, n, 2);
+    err_pixels(&e[PT_ACC_M_VIEWPORT], s, a->vp, a->fb, a->idx, ref->vp, ref->fb, ref->idx);
 }
 
-/* The classic camera's rows model .. index. */
-static void compare_classic(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_NROWS])
+/* The classic camera's rows model .. index: one used vertex. */
+static void vertex_classic(pt_acc_err e[PT_ACC_MAXROWS], const pt_scene *s,
+                           const pt_acc_journey *a, const pt_acc_journey *ref)
 {
-    const pt_scene *s = r->s;
-    size_t k, v;
-    int row;
+    static const int n[4] = {3, 3, 2, 2};           /* model, camera, image, pixel */
+    const pt_dd *va[4] = {a->m, a->c, a->ip, a->pp};
+    const pt_dd *vb[4] = {ref->m, ref->c, ref->ip, ref->pp};
 
-    for (row = 0; row < PT_ACC_NROWS; row++) {
-        e[row].real = row <= PT_ACC_PIXEL || row == PT_ACC_RASTER;
-        e[row].of = r->nused;
-    }
-    for (k = 0; k < s->nmodels; k++)
-        for (v = 0; v < s->models[k].nv; v++) {
-            const pt_acc_journey *a = &r->j[k][v], *b = &ref->j[k][v];
-            pt_pix pa[2], pb[2];
-
-            if (!r->used[k][v]) continue;
-            e[PT_ACC_MODEL].differ += err_reals(&e[PT_ACC_MODEL], a->m, b->m, 3);
-            e[PT_ACC_CAMERA].differ += err_reals(&e[PT_ACC_CAMERA], a->c, b->c, 3);
-            e[PT_ACC_IMAGE].differ += err_reals(&e[PT_ACC_IMAGE], a->ip, b->ip, 2);
-            e[PT_ACC_PIXEL].differ += err_reals(&e[PT_ACC_PIXEL], a->pp, b->pp, 2);
-            pa[0] = a->vp; pa[1] = a->fb;
-            pb[0] = b->vp; pb[1] = b->fb;
-            err_pixels(&e[PT_ACC_VIEWPORT], s, pa, a->idx, pb, b->idx);
-        }
+    err_rows(&e[PT_ACC_MODEL], va, vb, n, 4);
+    err_pixels(&e[PT_ACC_VIEWPORT], s, a->vp, a->fb, a->idx, ref->vp, ref->fb, ref->idx);
 }
 
-/* The matrix camera's rows model .. index. */
-static void compare_matrix(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS])
+/* The matrix camera's rows model .. index: one used vertex. */
+static void vertex_matrix(pt_acc_err e[PT_ACC_MAXROWS], const pt_scene *s,
+                          const pt_acc_mjourney *a, const pt_acc_mjourney *ref)
 {
-    const pt_scene *s = r->s;
-    size_t k, v, q;
-    int row, end;
+    static const int n[4] = {3, 4, 4, 4};           /* model, world, view, clip */
+    const pt_dd *va[4] = {a->m, a->w, a->v, a->k};
+    const pt_dd *vb[4] = {ref->m, ref->w, ref->v, ref->k};
 
-    for (row = PT_ACC_M_MODEL; row <= PT_ACC_M_INDEX; row++) {
-        e[row].real = row <= PT_ACC_M_CLIP || row == PT_ACC_M_NDC || row == PT_ACC_M_SCREEN;
-        e[row].of = row <= PT_ACC_M_CVV ? r->nused : 0;    /* ndc ..: counted as they come */
-    }
-    for (k = 0; k < s->nmodels; k++) {
-        const pt_model *m = &s->models[k];
+    err_rows(&e[PT_ACC_M_MODEL], va, vb, n, 4);
+    e[PT_ACC_M_CVV].differ += a->code != ref->code;
+    if (a->code == 0 || ref->code == 0)
+        tail_err(e, s, a->code == 0 ? &a->t : NULL, ref->code == 0 ? &ref->t : NULL);
+}
 
-        for (v = 0; v < m->nv; v++) {                       /* the used vertices */
-            const pt_acc_mjourney *a = &r->mj[k][v], *b = &ref->mj[k][v];
+/* The matrix camera's rows ndc .. index: the points clipping made in model
+** k's segments, by segment end, in either run. */
+static void made_points(pt_acc_err e[PT_ACC_MAXROWS], const pt_acc_run *ref,
+                        const pt_acc_run *r, size_t k)
+{
+    size_t q;
+    int end;
 
-            if (!r->used[k][v]) continue;
-            e[PT_ACC_M_MODEL].differ += err_reals(&e[PT_ACC_M_MODEL], a->m, b->m, 3);
-            e[PT_ACC_M_WORLD].differ += err_reals(&e[PT_ACC_M_WORLD], a->w, b->w, 4);
-            e[PT_ACC_M_VIEW].differ += err_reals(&e[PT_ACC_M_VIEW], a->v, b->v, 4);
-            e[PT_ACC_M_CLIP].differ += err_reals(&e[PT_ACC_M_CLIP], a->k, b->k, 4);
-            e[PT_ACC_M_CVV].differ += a->code != b->code;
-            if (a->code == 0 || b->code == 0)
-                tail_err(e, s, a->code == 0 ? &a->t : NULL, b->code == 0 ? &b->t : NULL);
+    for (q = 0; q < r->s->models[k].nseg; q++)
+        for (end = 0; end < 2; end++) {
+            const pt_acc_mseg *ga = &r->seg[k][q], *gb = &ref->seg[k][q];
+
+            if (ga->made[end] || gb->made[end])
+                tail_err(e, r->s, ga->made[end] ? &ga->end[end] : NULL,
+                         gb->made[end] ? &gb->end[end] : NULL);
         }
-        for (q = 0; q < m->nseg; q++)                       /* the points clipping made */
-            for (end = 0; end < 2; end++) {
-                const pt_acc_mseg *ga = &r->seg[k][q], *gb = &ref->seg[k][q];
-
-                if (ga->made[end] || gb->made[end])
-                    tail_err(e, s, ga->made[end] ? &ga->end[end] : NULL,
-                             gb->made[end] ? &gb->end[end] : NULL);
-            }
-    }
 }
 
 void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS])
 {
-    int raster = r->s->matrix ? PT_ACC_M_RASTER : PT_ACC_RASTER;
+    const pt_scene *s = r->s;
+    int raster = s->matrix ? PT_ACC_M_RASTER : PT_ACC_RASTER, row;
+    size_t k, v;
 
     memset(e, 0, (size_t)(raster + 1) * sizeof *e);
-    if (r->s->matrix) compare_matrix(ref, r, e);
-    else compare_classic(ref, r, e);
+    for (row = 0; row < raster; row++) {
+        e[row].real = s->matrix ? row <= PT_ACC_M_CLIP || row == PT_ACC_M_NDC
+                                  || row == PT_ACC_M_SCREEN
+                                : row <= PT_ACC_PIXEL;
+        e[row].of = s->matrix && row > PT_ACC_M_CVV ? 0 : r->nused;  /* matrix ndc ..: */
+    }                                                               /* counted as they come */
+    for (k = 0; k < s->nmodels; k++) {
+        for (v = 0; v < s->models[k].nv; v++) {
+            if (!r->used[k][v]) continue;
+            if (s->matrix) vertex_matrix(e, s, &r->mj[k][v], &ref->mj[k][v]);
+            else vertex_classic(e, s, &r->j[k][v], &ref->j[k][v]);
+        }
+        if (s->matrix) made_points(e, ref, r, k);
+    }
     e[raster] = r->line;
     e[raster].real = 1;
     e[raster].differ = image_diff(ref, r, &e[raster].of);

@@ -54,11 +54,6 @@ static const char usage[] =
 "  --svg FILE    also draw error against time, log-log, as SVG into FILE\n"
 "Docs: docs/accuracy.md\n";
 
-static int usage_error(const char *msg, const char *arg)
-{
-    return pt_cli_usage("accuracy", "%s%s", msg, arg);
-}
-
 /* ===== the runs ===== */
 
 /* The runs compared, the reference first. */
@@ -694,7 +689,7 @@ int pt_cmd_accuracy(int argc, char **argv)
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
         if (!strcmp(a, "--no-time")) no_time = 1;
         else if (!strcmp(a, "--repeat") || !strcmp(a, "--svg")) {
-            if (k + 1 >= argc) return usage_error("option needs a value: ", a);
+            if (k + 1 >= argc) return pt_cli_usage("accuracy", "option needs a value: %s", a);
             if (!strcmp(a, "--svg")) svg = argv[++k];
             else {
                 const char *val = argv[++k];
@@ -704,14 +699,15 @@ int pt_cmd_accuracy(int argc, char **argv)
                 errno = 0;
                 v = strtol(val, &end, 10);
                 if (val[0] < '0' || val[0] > '9' || *end || errno || v < 1 || v > MAX_REPEAT)
-                    return usage_error("--repeat takes 1 to 100, not ", val);
+                    return pt_cli_usage("accuracy", "--repeat takes 1 to 100, not %s", val);
                 repeat = (int)v;
             }
-        } else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option ", a);
-        else if (path) return usage_error("more than one scene given: ", a);
+        } else if (a[0] == '-' && a[1] != '\0')
+            return pt_cli_usage("accuracy", "unknown option %s", a);
+        else if (path) return pt_cli_usage("accuracy", "more than one scene given: %s", a);
         else path = a;
     }
-    if (svg && no_time) return usage_error("--svg plots run time: drop --no-time", "");
+    if (svg && no_time) return pt_cli_usage("accuracy", "--svg plots run time: drop --no-time");
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     st = calloc(1, sizeof *st);
