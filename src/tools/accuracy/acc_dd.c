@@ -36,7 +36,6 @@ static void journey(const pt_scene *s, const pt_model *m, pt_vec3 v, unsigned ch
     int ok;
 
     (void)choices;                                  /* the reference has none */
-
     j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
     x_c = pt_dd_add(j->m[0], pt_acc_dd(m->translate.x));     /* x_c = x_m + x_t */
     y_c = pt_dd_add(j->m[1], pt_acc_dd(m->translate.y));     /* y_c = y_m + y_t */
@@ -70,7 +69,6 @@ static int raster(const pt_dd p0[2], const pt_dd p1[2], unsigned choices, const 
     int tr;
 
     (void)choices;                                  /* the reference has none */
-
     if (!pt_dd_pix_round(p0[0], &e[0]) || !pt_dd_pix_round(p0[1], &e[1]) ||
         !pt_dd_pix_round(p1[0], &e[2]) || !pt_dd_pix_round(p1[1], &e[3]))
         return -1;

@@ -493,30 +493,32 @@ static void tail_err(pt_acc_err e[PT_ACC_MAXROWS], const pt_scene *s,
     err_pixels(&e[PT_ACC_M_VIEWPORT], s, a->vp, a->fb, a->idx, ref->vp, ref->fb, ref->idx);
 }
 
-/* The classic camera's rows model .. index: one used vertex. */
-static void vertex_classic(pt_acc_err e[PT_ACC_MAXROWS], const pt_scene *s,
-                           const pt_acc_journey *a, const pt_acc_journey *ref)
+/* Used vertex v of model k: the rows of its real stages, then its pixels'
+** (matrix camera: those from ndc on when it is inside the view volume on
+** either side). */
+static void vertex_err(pt_acc_err e[PT_ACC_MAXROWS], const pt_acc_run *ref,
+                       const pt_acc_run *r, size_t k, size_t v)
 {
-    static const int n[4] = {3, 3, 2, 2};           /* model, camera, image, pixel */
-    const pt_dd *va[4] = {a->m, a->c, a->ip, a->pp};
-    const pt_dd *vb[4] = {ref->m, ref->c, ref->ip, ref->pp};
+    static const int nc[4] = {3, 3, 2, 2}, nm[4] = {3, 4, 4, 4};
+    const pt_dd *va[4], *vb[4];
 
-    err_rows(&e[PT_ACC_MODEL], va, vb, n, 4);
-    err_pixels(&e[PT_ACC_VIEWPORT], s, a->vp, a->fb, a->idx, ref->vp, ref->fb, ref->idx);
-}
+    if (r->s->matrix) {
+        const pt_acc_mjourney *a = &r->mj[k][v], *b = &ref->mj[k][v];
 
-/* The matrix camera's rows model .. index: one used vertex. */
-static void vertex_matrix(pt_acc_err e[PT_ACC_MAXROWS], const pt_scene *s,
-                          const pt_acc_mjourney *a, const pt_acc_mjourney *ref)
-{
-    static const int n[4] = {3, 4, 4, 4};           /* model, world, view, clip */
-    const pt_dd *va[4] = {a->m, a->w, a->v, a->k};
-    const pt_dd *vb[4] = {ref->m, ref->w, ref->v, ref->k};
+        va[0] = a->m; va[1] = a->w; va[2] = a->v; va[3] = a->k;
+        vb[0] = b->m; vb[1] = b->w; vb[2] = b->v; vb[3] = b->k;
+        err_rows(&e[PT_ACC_M_MODEL], va, vb, nm, 4);    /* model, world, view, clip */
+        e[PT_ACC_M_CVV].differ += a->code != b->code;
+        if (a->code == 0 || b->code == 0)
+            tail_err(e, r->s, a->code == 0 ? &a->t : NULL, b->code == 0 ? &b->t : NULL);
+    } else {
+        const pt_acc_journey *a = &r->j[k][v], *b = &ref->j[k][v];
 
-    err_rows(&e[PT_ACC_M_MODEL], va, vb, n, 4);
-    e[PT_ACC_M_CVV].differ += a->code != ref->code;
-    if (a->code == 0 || ref->code == 0)
-        tail_err(e, s, a->code == 0 ? &a->t : NULL, ref->code == 0 ? &ref->t : NULL);
+        va[0] = a->m; va[1] = a->c; va[2] = a->ip; va[3] = a->pp;
+        vb[0] = b->m; vb[1] = b->c; vb[2] = b->ip; vb[3] = b->pp;
+        err_rows(&e[PT_ACC_MODEL], va, vb, nc, 4);      /* model, camera, image, pixel */
+        err_pixels(&e[PT_ACC_VIEWPORT], r->s, a->vp, a->fb, a->idx, b->vp, b->fb, b->idx);
+    }
 }
 
 /* The matrix camera's rows ndc .. index: the points clipping made in model
@@ -551,11 +553,8 @@ void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_
         e[row].of = s->matrix && row > PT_ACC_M_CVV ? 0 : r->nused;  /* matrix ndc ..: */
     }                                                               /* counted as they come */
     for (k = 0; k < s->nmodels; k++) {
-        for (v = 0; v < s->models[k].nv; v++) {
-            if (!r->used[k][v]) continue;
-            if (s->matrix) vertex_matrix(e, s, &r->mj[k][v], &ref->mj[k][v]);
-            else vertex_classic(e, s, &r->j[k][v], &ref->j[k][v]);
-        }
+        for (v = 0; v < s->models[k].nv; v++)
+            if (r->used[k][v]) vertex_err(e, ref, r, k, v);
         if (s->matrix) made_points(e, ref, r, k);
     }
     e[raster] = r->line;
