@@ -3,7 +3,7 @@
 # See LICENSE for copyright and license.
 #
 # Usage: sh tests/accuracy.sh PIPETRACE.  Run from the repository root.  Also
-# runs test_accuracy (the unit test of src/tools/accuracy/accuracy.c) from PIPETRACE's
+# runs test_accuracy (the unit test of src/tools/accuracy/) from PIPETRACE's
 # directory and adds its counts.  Everything but two plots (one per camera)
 # runs with --no-time.
 exe=$1
@@ -20,7 +20,7 @@ field() {   # field ROW_PREFIX N: the Nth word of the first line starting with R
     grep "^$1" "$tmp/out" | head -1 | awk -v n="$2" '{ print $n }'
 }
 
-# ---- the unit test of src/tools/accuracy/accuracy.c
+# ---- the unit test of src/tools/accuracy/
 if [ -x "$dir/test_accuracy" ]; then
     "$dir/test_accuracy" "$ref" > "$tmp/unit" 2>&1
     grep '^FAIL' "$tmp/unit"

@@ -1,5 +1,5 @@
 /*
-** tests/test_accuracy.c -- the three arithmetics of src/tools/accuracy/accuracy.c
+** tests/test_accuracy.c -- the three arithmetics of src/tools/accuracy/
 ** See LICENSE for copyright and license.
 **
 ** Usage: test_accuracy [REFERENCE_DIR], from the repository root.  Checks:

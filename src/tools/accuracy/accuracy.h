@@ -8,11 +8,18 @@
 **
 **   float          binary32, 24 significant bits.  The scene's doubles are
 **                  rounded to float first; that rounding is float's error too.
-**   double         binary64, 53 bits: exactly what the stages and src/core/raster.c
-**                  compute (tests/test_accuracy.c checks it value for value).
-**   double-double  the reference: a value is hi + lo, two doubles, 106 bits.
-**                  Two-sum and two-product (with fma(), exactly rounded) make
-**                  add, mul and div accurate to about 2^-104 relative.
+**   double         binary64, 53 bits: the stages of stages/, src/core/clip.c
+**                  and src/core/raster.c themselves (acc_double.c), so their
+**                  values are the trace's (tests/test_accuracy.c checks it).
+**   double-double  the reference: a value is hi + lo, two doubles, 106 bits
+**                  (dd.h).  Two-sum and two-product (with fma(), exactly
+**                  rounded) make add, mul and div accurate to about 2^-104
+**                  relative.
+**
+** One file per arithmetic: acc_float.c, acc_double.c, acc_dd.c, each with
+** both cameras' stages and the DDA; acc_shared.c holds what they share (the
+** journeys' types, the integer stages, the DDA's bookkeeping); this module
+** runs them and measures the errors.
 **
 ** Reference semantics.  The same formulas in the same order, evaluated in
 ** double-double from the scene's doubles (taken as exact); 2.001 is the decimal
@@ -22,10 +29,10 @@
 ** rounded integer endpoints, the exact line (ties are exact while (s - s0) * dy
 ** < 2^53).  Errors are measured against the reference rounded to double.
 **
-** The matrix camera (s->matrix, src/tools/accuracy/accuracy_matrix.c): each arithmetic builds
-** View, Projection and every World itself, with stages/pt_mat4.c's formulas:
-** float from the scene's numbers rounded to float (sqrtf, sinf, cosf), double
-** with pt_lookat() and pt_perspective() themselves, the reference in
+** The matrix camera (s->matrix): each arithmetic builds View, Projection and
+** every World itself, with stages/pt_mat4.c's formulas: float from the
+** scene's numbers rounded to float (sqrtf, sinf, cosf), double by the
+** pipeline's own plan (pt_lookat(), pt_perspective()), the reference in
 ** double-double (a double-double sqrt; cot(fov/2) from Taylor series, to about
 ** 2^-104).  World = (product of the `world` lines) * T(translate): the scene
 ** keeps only that product, multiplied out in double by the parser, so every
@@ -56,115 +63,16 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "core/pipetrace.h"
-
-/* ===== double-double ===== */
-
-/* hi + lo with hi = fl(hi + lo): the unevaluated sum of two doubles.  A
-** non-finite value has lo = 0. */
-typedef struct pt_dd { double hi, lo; } pt_dd;
-
-#define PT_DD_BITS 106           /* significant bits: 2 x 53 */
-
-/* The double-double nearest 2001/1000, the constant of s3_image2pixel. */
-extern const pt_dd pt_dd_2001;
-
-/* x exactly.  This function can't fail. */
-pt_dd pt_dd_from(double x);
-/* v exactly (any int64_t).  This function can't fail. */
-pt_dd pt_dd_from_i64(int64_t v);
-/* a + b, a * b, a / b, -a: accurate to about 2^-104 relative; an infinite or
-** NaN result is what double gives for hi.  These functions can't fail. */
-pt_dd pt_dd_add(pt_dd a, pt_dd b);
-pt_dd pt_dd_mul(pt_dd a, pt_dd b);
-pt_dd pt_dd_div(pt_dd a, pt_dd b);
-pt_dd pt_dd_neg(pt_dd a);
-/* sqrt(a): one Newton step from the double sqrt, about 2^-104 relative; 0, a
-** negative a, inf and NaN give what double's sqrt gives for hi.  This function
-** can't fail. */
-pt_dd pt_dd_sqrt(pt_dd a);
-/* cot(deg degrees) for 0 < deg < 90: Taylor series of sin and cos on an angle
-** of at most 45 degrees (cot(deg) = tan(90 - deg) above 45), about 2^-104
-** relative; exactly 1 at 45.  In src/tools/accuracy/accuracy_matrix.c, as are the two
-** matrix functions below.  This function can't fail. */
-pt_dd pt_dd_cot_deg(double deg);
-
-/* A 4x4 matrix of double-doubles on row vectors, as in stages/pt_mat4.h. */
-typedef struct pt_dd_mat4 { pt_dd m[4][4]; } pt_dd_mat4;
-
-/* a * b, each entry summed in k order; v * m into r[4] (not v), each
-** component summed in row order.  These functions can't fail. */
-pt_dd_mat4 pt_dd_mat4_mul(const pt_dd_mat4 *a, const pt_dd_mat4 *b);
-void pt_dd_vec4_mul(const pt_dd v[4], const pt_dd_mat4 *m, pt_dd r[4]);
-
-/* Java's Math.round of the exact value hi + lo, as pt_pix_round() does for a
-** double: returns 1 and the integer in *out, or 0 (and *out = 0) when x is not
-** finite or the result is at least 2^62 in magnitude.  This function can't fail. */
-int pt_dd_pix_round(pt_dd x, int64_t *out);
-
-/* ===== the pipeline in three arithmetics ===== */
-
-typedef enum pt_arith {
-    PT_ARITH_FLOAT,
-    PT_ARITH_DOUBLE,
-    PT_ARITH_DD,                 /* the reference */
-    PT_NARITH
-} pt_arith;
+#include "tools/accuracy/acc_shared.h"
 
 extern const char *const pt_arith_names[PT_NARITH];  /* "float", ... */
 extern const int pt_arith_bits[PT_NARITH];           /* 24, 53, 106 */
-
-/* Algorithm choices, for float and double (the reference ignores them). */
-#define PT_ACC_TWO        0x01u  /* x_pp = 0.5 + w/2.0 * (x_ip + 1): 2 for 2.001 */
-#define PT_ACC_RECOMPUTE  0x02u  /* DDA: y = y0 + m*(x - x0) each step, not y += m */
-
-/* One vertex's journey, every real value widened to pt_dd without rounding
-** (float and double: lo = 0).  z_ip is -1 or 0 in every arithmetic: not kept. */
-typedef struct pt_acc_journey {
-    pt_dd m[3];                  /* model (x_m, y_m, z_m) as the arithmetic holds it */
-    pt_dd c[3];                  /* camera (x_c, y_c, z_c) */
-    pt_dd ip[2];                 /* image (x_ip, y_ip) */
-    pt_dd pp[2];                 /* pixel (x_pp, y_pp) */
-    pt_pix vp, fb;               /* viewport, framebuffer; ok == 0: no pixel */
-    int64_t idx;                 /* index, or -1 outside the framebuffer */
-} pt_acc_journey;
 
 /* A pixel of the final image: the last color written there. */
 typedef struct pt_acc_pixel {
     int64_t idx;                 /* y_fb * W + x_fb */
     uint32_t rgb;                /* 0xRRGGBB */
 } pt_acc_pixel;
-
-/* The matrix camera's journey from clip coordinates on (stages/pt_matrix.c's
-** pt_matrix_tail()): an inside vertex's, or a point that clipping made. */
-typedef struct pt_acc_mtail {
-    pt_dd n[3];                  /* ndc (x_n, y_n, z_n) */
-    pt_dd sc[3];                 /* screen (x_s, y_s, z_s) */
-    pt_pix vp, fb;               /* viewport (floor), framebuffer; ok == 0: no pixel */
-    int64_t idx;                 /* index, or -1 outside the framebuffer */
-    pt_dd pp[2];                 /* for the rasterizer: (x_vp + 1, h - y_vp); NaN: none */
-} pt_acc_mtail;
-
-/* One vertex's journey through the matrix camera, widened to pt_dd like
-** pt_acc_journey. */
-typedef struct pt_acc_mjourney {
-    pt_dd m[3];                  /* model (x_m, y_m, z_m) as the arithmetic holds it */
-    pt_dd w[4], v[4], k[4];      /* world, view, clip: (x y z w) */
-    double kerr[4];              /* the reference: a bound on k's rounding error
-                                 ** (float, double: 0) */
-    unsigned code;               /* cvv outcode (PT_CVV_* bits); 0: inside */
-    pt_acc_mtail t;              /* ndc .. index, when code == 0 (else all zero) */
-} pt_acc_mjourney;
-
-/* One segment of the matrix camera after clipping in clip space. */
-typedef struct pt_acc_mseg {
-    int visible;                 /* 0: culled, nothing of it is inside */
-    int made[2];                 /* end e (0: first, 1: last) is a point clipping made */
-    pt_dd t[2];                  /* its parameter on the segment, 0 <= t <= 1 */
-    pt_acc_mtail end[2];         /* its journey from clip coordinates on */
-} pt_acc_mseg;
-
-/* The matrix camera's matrices in one arithmetic (opaque). */
-typedef struct pt_acc_mcam pt_acc_mcam;
 
 /* Errors of one stage against the reference.  Absolute errors are
 ** |value - reference rounded to double| over every coordinate of every used
@@ -264,7 +172,7 @@ int pt_acc_raster_segment(pt_arith a, unsigned choices, pt_dd x0, pt_dd y0,
 void pt_acc_journey_of(pt_arith a, unsigned choices, const pt_scene *s,
                        const pt_model *m, pt_vec3 v_m, pt_acc_journey *j);
 
-/* ===== the matrix camera (src/tools/accuracy/accuracy_matrix.c) ===== */
+/* ===== the matrix camera ===== */
 
 /* View, Projection and each model's World of scene s (s->matrix) in arithmetic
 ** a, as described at the top.  Returns NULL when out of memory.  s must outlive
@@ -286,26 +194,5 @@ void pt_acc_mjourney_of(const pt_acc_mcam *c, size_t k, pt_vec3 v_m, pt_acc_mjou
 ** new ends where an end was outside.  This function can't fail. */
 void pt_acc_mseg_of(const pt_acc_mcam *c, const pt_acc_mjourney *a,
                     const pt_acc_mjourney *b, pt_acc_mseg *g);
-
-/* pt_acc_compare()'s rows model .. index for the matrix camera (not raster).
-** This function can't fail. */
-void pt_acc_mcompare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS]);
-
-/* ===== shared by src/tools/accuracy/accuracy.c and src/tools/accuracy/accuracy_matrix.c ===== */
-
-/* x rounded to float (overflow to inf spelled out).  This function can't fail. */
-float pt_acc_to_float(double x);
-
-/* Count one value's error |v - ref| into e and return it: 0 for the same
-** non-finite value, infinite for another.  This function can't fail. */
-double pt_acc_err_add(pt_acc_err *e, double v, double ref);
-
-/* n real coordinates against the reference's: returns 1 when any differs.
-** This function can't fail. */
-int pt_acc_err_reals(pt_acc_err *e, const pt_dd *v, const pt_dd *ref, int n);
-
-/* A pixel (two coordinates; no pixel on one side only is an infinite error):
-** returns 1 when it differs.  This function can't fail. */
-int pt_acc_err_pix(pt_acc_err *e, pt_pix v, pt_pix ref);
 
 #endif

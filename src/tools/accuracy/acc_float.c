@@ -1,0 +1,422 @@
+/*
+** src/tools/accuracy/acc_float.c -- both cameras' stages and the DDA in float
+** See LICENSE for copyright and license.
+**
+** binary32, 24 significant bits: the scene's doubles are rounded to float
+** first (that rounding is float's error too), then every formula runs in
+** float, in the stages' order, each computing line echoing its formula.  The
+** literal 2.001 stands here as a float, as the teaching renderer would have it.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tools/accuracy/acc_float.h"
+
+static const double PI = 3.14159265358979323846;       /* stages/pt_mat4.c's */
+
+/* ===== numbers ===== */
+
+/* x rounded to float.  IEEE rounding, spelled out only for overflow, which C
+** leaves undefined: from 2^128 - 2^103 (half an ulp above FLT_MAX) on, inf. */
+static float to_float(double x)
+{
+    if (fabs(x) >= 0x1.ffffffp127) return x > 0 ? (float)INFINITY : -(float)INFINITY;
+    return (float)x;
+}
+
+/* pt_pix_round() in float: Java's rounding, no value beyond 2^62. */
+static int pix_round_f(float x, int64_t *out)
+{
+    float r;
+
+    *out = 0;
+    if (!isfinite(x)) return 0;
+    r = floorf(x);
+    if (x - r >= 0.5f) r += 1.0f;              /* ties go up: toward +infinity */
+    if (fabsf(r) >= 0x1p62f) return 0;
+    *out = (int64_t)r;
+    return 1;
+}
+
+/* The binade [lo, 2 lo) that y1 and y2 share, both finite, of one sign and
+** not near zero: returns 1 and sets *lo, else 0 (then take real steps). */
+static int one_binade_f(float y1, float y2, float *lo)
+{
+    int e1, e2;
+
+    if (!isfinite(y2) || y1 == 0.0f || y2 == 0.0f || (y1 > 0) != (y2 > 0)) return 0;
+    frexpf(y1, &e1);
+    frexpf(y2, &e2);
+    *lo = ldexpf(1.0f, e2 - 1);
+    return e1 == e2 && *lo >= 0x1p-100f;
+}
+
+/* pt_raster_advance() in float: y after k steps of y += m, exactly as k float
+** additions leave it, in O(binades crossed).  The argument of src/core/raster.c
+** holds word for word with 24 bits for 53: two real steps settle the parity,
+** the third measures the constant increment d, and a jump of j steps adds
+** j*d exactly while the sum stays 4|m| + 4|d| inside the binade. */
+static float advance_f(float y, float m, uint64_t k)
+{
+    float y1, lo, d, room;
+    uint64_t jump;
+
+    if (m == 0.0f) return k ? y + m : y;            /* y + 0 is y (or +0 for -0) */
+    for (; k >= 3; k -= jump) {
+        y1 = y + m;                                 /* two real steps */
+        y = y1 + m;
+        k -= 2;
+        jump = 0;
+        if (!one_binade_f(y1, y, &lo)) continue;
+        d = (y + m) - y;                            /* the constant increment */
+        if (d == 0.0f) return y;                    /* m too small: y stays put */
+        room = (y > 0) == (d > 0) ? 2 * lo - fabsf(y) : fabsf(y) - lo;
+        room -= 4 * fabsf(m) + 4 * fabsf(d);
+        if (room <= 0) continue;
+        jump = (uint64_t)fminf(room / fabsf(d), 0x1p62f);
+        if (jump > k) jump = k;
+        y += (float)jump * d;                       /* exact: jump < 2^24 */
+    }
+    for (; k > 0; k--) y += m;                      /* the last one or two */
+    return y;
+}
+
+/* n floats widened to pt_dd (exact). */
+static void widen_f(const float *a, pt_dd *r, int n)
+{
+    int k;
+
+    for (k = 0; k < n; k++) r[k] = pt_acc_dd((double)a[k]);
+}
+
+/* ===== the classic camera ===== */
+
+static void journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
+                    unsigned choices, pt_acc_journey *j)
+{
+    float x_m = to_float(v.x), y_m = to_float(v.y), z_m = to_float(v.z);
+    float x_c, y_c, z_c, x_ip, y_ip, x_pp, y_pp;
+    float k = choices & PT_ACC_TWO ? 2.0f : 2.001f;
+    float w = (float)s->vp_w, h = (float)s->vp_h;
+    int64_t rx = 0, ry = 0;
+    int ok;
+
+    x_c = x_m + to_float(m->translate.x);           /* x_c = x_m + x_t */
+    y_c = y_m + to_float(m->translate.y);           /* y_c = y_m + y_t */
+    z_c = z_m + to_float(m->translate.z);           /* z_c = z_m + z_t */
+    if (s->perspective) {
+        x_ip = x_c / -z_c;                          /* x_ip = x_c / -z_c */
+        y_ip = y_c / -z_c;                          /* y_ip = y_c / -z_c */
+    } else {
+        x_ip = x_c;                                 /* x_ip = x_c */
+        y_ip = y_c;                                 /* y_ip = y_c */
+    }
+    x_pp = 0.5f + w / k * (x_ip + 1.0f);            /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
+    y_pp = 0.5f + h / k * (y_ip + 1.0f);            /* y_pp = 0.5 + h/2.001 * (y_ip + 1) */
+    ok = pix_round_f(x_pp, &rx) && pix_round_f(y_pp, &ry);
+    j->m[0] = pt_acc_dd((double)x_m); j->m[1] = pt_acc_dd((double)y_m);
+    j->m[2] = pt_acc_dd((double)z_m);
+    j->c[0] = pt_acc_dd((double)x_c); j->c[1] = pt_acc_dd((double)y_c);
+    j->c[2] = pt_acc_dd((double)z_c);
+    j->ip[0] = pt_acc_dd((double)x_ip); j->ip[1] = pt_acc_dd((double)y_ip);
+    j->pp[0] = pt_acc_dd((double)x_pp); j->pp[1] = pt_acc_dd((double)y_pp);
+    pt_acc_journey_tail(j, s, ok, rx, ry);
+}
+
+/* ===== the DDA ===== */
+
+static int raster_f(float px0, float py0, float px1, float py1, int recompute,
+                    const pt_acc_dda *o)
+{
+    int64_t e[4], s, first, last, r;
+    float x0, y0, x1, y1, m, acc;
+    pt_acc_line ln;
+    int tr;
+
+    if (!pix_round_f(px0, &e[0]) || !pix_round_f(py0, &e[1]) ||
+        !pix_round_f(px1, &e[2]) || !pix_round_f(py1, &e[3]))
+        return -1;
+    x0 = (float)e[0]; y0 = (float)e[1];             /* the rounded endpoints */
+    x1 = (float)e[2]; y1 = (float)e[3];             /* (exact: they were floats) */
+    if (x0 == x1 && y0 == y1) { pt_acc_dda_dot(o, e[0], e[1]); return 0; }
+    tr = fabsf(y1 - y0) > fabsf(x1 - x0);           /* |slope| > 1: step in y */
+    pt_acc_dda_setup(&ln, tr, e, o, &first, &last);
+    x0 = (float)e[0]; y0 = (float)e[1];
+    x1 = (float)e[2]; y1 = (float)e[3];
+    m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
+    if (first > last) return 0;
+    if (recompute) {
+        for (s = first; s <= last; s++) {
+            float y = y0 + m * ((float)s - x0);     /* y = y0 + m*(x - x0) */
+            int ok = pix_round_f(y, &r);
+            pt_acc_dda_step(o, &ln, s, ok, r, (double)y);
+        }
+        return 0;
+    }
+    acc = advance_f(y0, m, (uint64_t)(first - e[0]));
+    for (s = first; s <= last; s++) {
+        int ok = pix_round_f(acc, &r);
+        pt_acc_dda_step(o, &ln, s, ok, r, (double)acc);
+        acc += m;                                   /* y += m */
+    }
+    return 0;
+}
+
+static int raster(const pt_dd p0[2], const pt_dd p1[2], unsigned choices,
+                  const pt_acc_dda *o)
+{
+    return raster_f(to_float(p0[0].hi), to_float(p0[1].hi), to_float(p1[0].hi),
+                    to_float(p1[1].hi), (choices & PT_ACC_RECOMPUTE) != 0, o);
+}
+
+/* ===== the matrix camera: matrices ===== */
+
+/*
+** stages/pt_mat4.c's formulas from the scene's numbers rounded to float, with
+** sqrtf (correctly rounded) and sinf, cosf.  The parser's checks are not
+** repeated: a camera that float cannot build (a direction whose squared
+** length overflows float, say) gets inf or NaN entries, and every vertex shows
+** it.  Up is re-derived as d x h, pipetrace's default (not --raw-lookat).
+*/
+
+static void vmul_f(const float v[4], const pt_acc_mat4f *m, float r[4])
+{
+    int c;
+
+    for (c = 0; c < 4; c++)                 /* x' = x*m0c + y*m1c + z*m2c + w*m3c */
+        r[c] = v[0] * m->m[0][c] + v[1] * m->m[1][c] + v[2] * m->m[2][c] + v[3] * m->m[3][c];
+}
+
+static void identity_f(pt_acc_mat4f *r)
+{
+    int i, j;
+
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) r->m[i][j] = i == j ? 1.0f : 0.0f;
+}
+
+/* a * b: row i of the product is row i of a times b (vmul_f), so each
+** entry is summed in k order. */
+static pt_acc_mat4f mul_f(const pt_acc_mat4f *a, const pt_acc_mat4f *b)
+{
+    pt_acc_mat4f r;
+    int i;
+
+    for (i = 0; i < 4; i++) vmul_f(a->m[i], b, r.m[i]);
+    return r;
+}
+
+static void vec3_f(pt_vec3 v, float r[3])
+{
+    r[0] = to_float(v.x);
+    r[1] = to_float(v.y);
+    r[2] = to_float(v.z);
+}
+
+static float dot_f(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross_f(const float a[3], const float b[3], float r[3])
+{
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static void normalize_f(float v[3])
+{
+    float len = sqrtf(dot_f(v, v));         /* v / |v| */
+
+    v[0] = v[0] / len; v[1] = v[1] / len; v[2] = v[2] / len;
+}
+
+/* v rounded to float and made a unit vector. */
+static void unit_f(pt_vec3 v, float r[3])
+{
+    vec3_f(v, r);
+    normalize_f(r);                         /* v / |v| */
+}
+
+static void lookat_f(const pt_scene *s, pt_acc_mat4f *r)
+{
+    float eye[3], d[3], u[3], h[3];
+    const float *axis[3];
+    int c, i;
+
+    vec3_f(s->eye, eye);
+    unit_f(s->dir, d);                      /* d = dir/|dir| */
+    unit_f(s->up, u);                       /* u = up/|up| */
+    cross_f(u, d, h);                       /* h = (u x d)/|u x d| */
+    normalize_f(h);
+    cross_f(d, h, u);                       /* u = d x h */
+    axis[0] = h; axis[1] = u; axis[2] = d;
+    identity_f(r);
+    for (c = 0; c < 3; c++) {               /* columns h, u, d; last row -eye.h, ... */
+        for (i = 0; i < 3; i++) r->m[i][c] = axis[c][i];
+        r->m[3][c] = -dot_f(eye, axis[c]);  /* (-eye.h, -eye.u, -eye.d, 1) */
+    }
+}
+
+static void perspective_f(const pt_scene *s, pt_acc_mat4f *r)
+{
+    float fov = to_float(s->fov), aspect = to_float(s->aspect);
+    float n = to_float(s->znear), f = to_float(s->zfar);
+    float a = fov / 2 * ((float)PI / 180), cot;
+
+    cot = fov == 90 ? 1.0f : cosf(a) / sinf(a);     /* cot(fov/2); exact at 90 degrees */
+    memset(r, 0, sizeof *r);
+    r->m[0][0] = cot / aspect;              /* x' = x * cot(fov/2) / aspect */
+    r->m[1][1] = cot;                       /* y' = y * cot(fov/2) */
+    r->m[2][2] = f / (f - n);               /* z' = z * f/(f-n) ... */
+    r->m[3][2] = f * n / (n - f);           /*      - f*n/(f-n) */
+    r->m[2][3] = 1.0f;                      /* w' = z */
+}
+
+static void world_f(const pt_model *m, pt_acc_mat4f *r)
+{
+    pt_acc_mat4f w, t;
+    int i, j;
+
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) w.m[i][j] = to_float(m->world.m[i][j]);
+    identity_f(&t);
+    vec3_f(m->translate, t.m[3]);           /* T(translate): the last row */
+    *r = mul_f(&w, &t);                     /* World = (world lines) * T */
+}
+
+static int mcam(pt_acc_mcam *c)
+{
+    const pt_scene *s = c->s;
+    size_t k;
+
+    c->world_f = malloc((s->nmodels ? s->nmodels : 1) * sizeof *c->world_f);
+    if (!c->world_f) return -1;
+    lookat_f(s, &c->view_f);
+    perspective_f(s, &c->proj_f);
+    for (k = 0; k < s->nmodels; k++) world_f(&s->models[k], &c->world_f[k]);
+    return 0;
+}
+
+/* ===== the matrix camera: journeys ===== */
+
+static void cvv_dist_f(const float k[4], float d[PT_CVV_NPLANES])
+{
+    d[0] = k[2];                            /* near:   z >= 0 */
+    d[1] = k[3] - k[2];                     /* far:    z <= w */
+    d[2] = k[3] + k[0];                     /* left:   x >= -w */
+    d[3] = k[3] - k[0];                     /* right:  x <= w */
+    d[4] = k[3] + k[1];                     /* bottom: y >= -w */
+    d[5] = k[3] - k[1];                     /* top:    y <= w */
+}
+
+static unsigned cvv_f(const float k[4])
+{
+    float d[PT_CVV_NPLANES];
+    unsigned code = 0;
+    int i;
+
+    cvv_dist_f(k, d);
+    for (i = 0; i < PT_CVV_NPLANES; i++)
+        if (!(d[i] >= 0)) code |= 1u << i;  /* NaN counts as outside */
+    return code;
+}
+
+static void ndc_f(const float k[4], float n[3])
+{
+    n[0] = k[0] / k[3];                     /* x_n = x_k / w_k */
+    n[1] = k[1] / k[3];                     /* y_n = y_k / w_k */
+    n[2] = k[2] / k[3];                     /* z_n = z_k / w_k */
+}
+
+static void screen_f(const pt_scene *s, const float n[3], float sc[3])
+{
+    sc[0] = (n[0] + 1) * (float)s->vp_w * 0.5f;     /* x_s = (x_n + 1) * w * 0.5 */
+    sc[1] = (1 - n[1]) * (float)s->vp_h * 0.5f;     /* y_s = (1 - y_n) * h * 0.5 */
+    sc[2] = n[2];                                   /* z_s = z_n */
+}
+
+static pt_pix viewport_f(const float sc[3])
+{
+    pt_pix vp = {0, 0, 0};
+
+    if (fabsf(sc[0]) < 0x1p62f && fabsf(sc[1]) < 0x1p62f) {   /* false for NaN */
+        vp.x = (int64_t)floorf(sc[0]);      /* x_vp = floor(x_s) */
+        vp.y = (int64_t)floorf(sc[1]);      /* y_vp = floor(y_s) */
+        vp.ok = 1;
+    }
+    return vp;
+}
+
+static void tail_f(const pt_scene *s, const float k[4], pt_acc_mtail *t)
+{
+    float n[3], sc[3];
+
+    ndc_f(k, n);
+    screen_f(s, n, sc);
+    t->vp = viewport_f(sc);
+    widen_f(n, t->n, 3);
+    widen_f(sc, t->sc, 3);
+    pt_acc_mtail_int(s, t, 0);
+}
+
+static void mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    float m[4], w[4], vw[4], kc[4];
+
+    vec3_f(v, m);
+    m[3] = 1;
+    vmul_f(m, &c->world_f[k], w);           /* (x_w y_w z_w w_w) = (x_m y_m z_m 1) * World */
+    vmul_f(w, &c->view_f, vw);              /* (x_v y_v z_v w_v) = world * View */
+    vmul_f(vw, &c->proj_f, kc);             /* (x_k y_k z_k w_k) = view * Projection */
+    j->code = cvv_f(kc);
+    widen_f(m, j->m, 3);
+    widen_f(w, j->w, 4);
+    widen_f(vw, j->v, 4);
+    widen_f(kc, j->k, 4);
+    memset(j->kerr, 0, sizeof j->kerr);
+    if (j->code == 0) tail_f(c->s, kc, &j->t);
+    else pt_acc_no_tail(&j->t);
+}
+
+/* ===== the matrix camera: clipping ===== */
+
+static void lerp_f(const float p0[4], const float p1[4], float t, float r[4])
+{
+    int c;
+
+    for (c = 0; c < 4; c++) r[c] = p0[c] + t * (p1[c] - p0[c]);   /* P(t) = P0 + t (P1 - P0) */
+}
+
+static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
+                const pt_acc_mjourney *b, pt_acc_mseg *g)
+{
+    float p0[4], p1[4], q[4], d0[PT_CVV_NPLANES], d1[PT_CVV_NPLANES], t[2] = {0, 1};
+    int i, e;
+
+    for (i = 0; i < 4; i++) { p0[i] = (float)a->k[i].hi; p1[i] = (float)b->k[i].hi; }  /* exact */
+    cvv_dist_f(p0, d0);
+    cvv_dist_f(p1, d1);
+    for (i = 0; i < PT_CVV_NPLANES; i++) {
+        if (!(d0[i] >= 0) && !(d1[i] >= 0)) return 0;  /* both outside: gone */
+        if (d0[i] < 0) {                                /* entering through plane i */
+            float u = d0[i] / (d0[i] - d1[i]);          /* t = d0 / (d0 - d1) */
+            if (u > t[0]) t[0] = u;
+        } else if (d1[i] < 0) {                         /* leaving through plane i */
+            float u = d0[i] / (d0[i] - d1[i]);
+            if (u < t[1]) t[1] = u;
+        }
+    }
+    if (t[0] > t[1]) return 0;                          /* enters after it has left */
+    for (e = 0; e < 2; e++) {
+        if (!g->made[e]) continue;
+        if (t[e] == e) memcpy(q, e ? p1 : p0, sizeof q);
+        else lerp_f(p0, p1, t[e], q);
+        g->t[e] = pt_acc_dd((double)t[e]);
+        tail_f(c->s, q, &g->end[e]);
+    }
+    return 1;
+}
+
+const pt_acc_ops pt_acc_float_ops = { journey, raster, mcam, mjourney, mseg };

@@ -1,0 +1,120 @@
+/*
+** src/tools/accuracy/acc_shared.c -- what the three arithmetics share: integer stages, DDA steps
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include <string.h>
+#include "tools/accuracy/acc_shared.h"
+
+/* ===== the integer stages ===== */
+
+/* idx = y_fb * W + x_fb, or -1 outside the framebuffer (s6_fb2index). */
+static int64_t index_of(const pt_scene *s, pt_pix fb)
+{
+    return fb.ok && pt_inside(fb.x, fb.y, s->fb_w, s->fb_h)
+           ? fb.y * (int64_t)s->fb_w + fb.x : -1;   /* idx = y_fb * W + x_fb */
+}
+
+/* x_fb = x_ul + x_vp, y_fb = y_ul + y_vp (s5_viewport2fb). */
+static pt_pix fb_of(const pt_scene *s, pt_pix vp)
+{
+    pt_pix fb = {0, 0, 0};
+
+    if (vp.ok) {
+        fb.x = s->vp_x + vp.x;                      /* x_fb = x_ul + x_vp */
+        fb.y = s->vp_y + vp.y;                      /* y_fb = y_ul + y_vp */
+        fb.ok = 1;
+    }
+    return fb;
+}
+
+void pt_acc_journey_tail(pt_acc_journey *j, const pt_scene *s, int ok,
+                         int64_t rx, int64_t ry)
+{
+    pt_pix vp = {0, 0, 0};
+
+    if (ok) {
+        vp.x = rx - 1;                              /* x_vp = round(x_pp) - 1 */
+        vp.y = s->vp_h - ry;                        /* y_vp = h - round(y_pp) */
+        vp.ok = 1;
+    }
+    j->vp = vp;
+    j->fb = fb_of(s, vp);
+    j->idx = index_of(s, j->fb);
+}
+
+void pt_acc_mtail_int(const pt_scene *s, pt_acc_mtail *t, int exact)
+{
+    pt_pix vp = t->vp;
+
+    if (vp.ok) {
+        t->pp[0] = exact ? pt_dd_from_i64(vp.x + 1)               /* x_pp = x_vp + 1 */
+                         : pt_acc_dd((double)(vp.x + 1));
+        t->pp[1] = exact ? pt_dd_from_i64(s->vp_h - vp.y)         /* y_pp = h - y_vp */
+                         : pt_acc_dd((double)(s->vp_h - vp.y));
+    } else {
+        t->pp[0] = t->pp[1] = pt_acc_dd((double)NAN);
+    }
+    t->fb = fb_of(s, vp);
+    t->idx = index_of(s, t->fb);
+}
+
+void pt_acc_no_tail(pt_acc_mtail *t)
+{
+    memset(t, 0, sizeof *t);
+    t->idx = -1;
+    t->pp[0] = t->pp[1] = pt_acc_dd((double)NAN);
+}
+
+/* ===== the DDA's integer bookkeeping ===== */
+
+/* The product is exact below 2^53, and then so is a quotient that is a double
+** (IEEE division is exact when it can be), ties included. */
+pt_dd pt_acc_line_y(const pt_acc_line *ln, int64_t s)
+{
+    pt_dd num = pt_dd_mul(pt_dd_from_i64(s - ln->s0), pt_dd_from_i64(ln->dy));
+
+    return pt_dd_add(pt_dd_from_i64(ln->y0),
+                     pt_dd_div(num, pt_dd_from_i64(ln->ds)));  /* y = y0 + k*dy/dx */
+}
+
+static void swap64(int64_t *a, int64_t *b)
+{
+    int64_t t = *a;
+
+    *a = *b;
+    *b = t;
+}
+
+/* The ends are integers, so ordering them is exact in any arithmetic; only
+** the transposition test is the arithmetic's. */
+void pt_acc_dda_setup(pt_acc_line *ln, int transposed, int64_t e[4],
+                      const pt_acc_dda *o, int64_t *first, int64_t *last)
+{
+    int64_t band = transposed ? o->h : o->w;
+
+    if (transposed) { swap64(&e[0], &e[1]); swap64(&e[2], &e[3]); }
+    if (e[2] < e[0]) { swap64(&e[0], &e[2]); swap64(&e[1], &e[3]); }
+    ln->transposed = transposed;
+    ln->s0 = e[0]; ln->y0 = e[1];
+    ln->ds = e[2] - e[0]; ln->dy = e[3] - e[1];     /* |e| < 2^62: no overflow */
+    *first = e[0] < 1 ? 1 : e[0];
+    *last = e[2] < band ? e[2] : band;
+}
+
+void pt_acc_dda_step(const pt_acc_dda *o, const pt_acc_line *ln, int64_t s, int ok,
+                     int64_t r, double y)
+{
+    pt_pix p;
+
+    if (!ok) r = y > 0 ? (int64_t)PT_PIX_LIMIT : -(int64_t)PT_PIX_LIMIT;
+    if (ln->transposed) { p.x = r - 1; p.y = o->h - s; }   /* (round(x) - 1, h - y) */
+    else                { p.x = s - 1; p.y = o->h - r; }   /* (x - 1, h - round(y)) */
+    if (pt_inside(p.x, p.y, o->w, o->h)) o->pixel(o->ud, p.x, p.y);
+    if (o->step) o->step(o->ud, ln, s, y);
+}
+
+void pt_acc_dda_dot(const pt_acc_dda *o, int64_t ix, int64_t iy)
+{
+    if (pt_inside(ix - 1, o->h - iy, o->w, o->h)) o->pixel(o->ud, ix - 1, o->h - iy);
+}

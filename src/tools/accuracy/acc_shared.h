@@ -1,0 +1,179 @@
+/*
+** src/tools/accuracy/acc_shared.h -- what the three arithmetics share: journeys, integers, DDA steps
+** See LICENSE for copyright and license.
+**
+** acc_float.c, acc_double.c and acc_dd.c each write the stages and the DDA in
+** one arithmetic; accuracy.c runs them and compares.  This header holds what
+** they all use: the journeys' types (every real value widened to pt_dd
+** without rounding), the camera of one arithmetic, the integer stages
+** (viewport .. index, the same in every arithmetic) and the DDA's integer
+** bookkeeping (endpoints, order, band, steps).
+*/
+#ifndef PT_ACC_SHARED_H
+#define PT_ACC_SHARED_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "core/pipetrace.h"
+#include "tools/accuracy/dd.h"
+
+typedef enum pt_arith {
+    PT_ARITH_FLOAT,
+    PT_ARITH_DOUBLE,
+    PT_ARITH_DD,                 /* the reference */
+    PT_NARITH
+} pt_arith;
+
+/* Algorithm choices, for float and double (the reference ignores them). */
+#define PT_ACC_TWO        0x01u  /* x_pp = 0.5 + w/2.0 * (x_ip + 1): 2 for 2.001 */
+#define PT_ACC_RECOMPUTE  0x02u  /* DDA: y = y0 + m*(x - x0) each step, not y += m */
+
+/* One vertex's journey, every real value widened to pt_dd without rounding
+** (float and double: lo = 0).  z_ip is -1 or 0 in every arithmetic: not kept. */
+typedef struct pt_acc_journey {
+    pt_dd m[3];                  /* model (x_m, y_m, z_m) as the arithmetic holds it */
+    pt_dd c[3];                  /* camera (x_c, y_c, z_c) */
+    pt_dd ip[2];                 /* image (x_ip, y_ip) */
+    pt_dd pp[2];                 /* pixel (x_pp, y_pp) */
+    pt_pix vp, fb;               /* viewport, framebuffer; ok == 0: no pixel */
+    int64_t idx;                 /* index, or -1 outside the framebuffer */
+} pt_acc_journey;
+
+/* The matrix camera's journey from clip coordinates on (stages/pt_matrix.c's
+** pt_matrix_tail()): an inside vertex's, or a point that clipping made. */
+typedef struct pt_acc_mtail {
+    pt_dd n[3];                  /* ndc (x_n, y_n, z_n) */
+    pt_dd sc[3];                 /* screen (x_s, y_s, z_s) */
+    pt_pix vp, fb;               /* viewport (floor), framebuffer; ok == 0: no pixel */
+    int64_t idx;                 /* index, or -1 outside the framebuffer */
+    pt_dd pp[2];                 /* for the rasterizer: (x_vp + 1, h - y_vp); NaN: none */
+} pt_acc_mtail;
+
+/* One vertex's journey through the matrix camera, widened to pt_dd like
+** pt_acc_journey. */
+typedef struct pt_acc_mjourney {
+    pt_dd m[3];                  /* model (x_m, y_m, z_m) as the arithmetic holds it */
+    pt_dd w[4], v[4], k[4];      /* world, view, clip: (x y z w) */
+    double kerr[4];              /* the reference: a bound on k's rounding error
+                                 ** (float, double: 0) */
+    unsigned code;               /* cvv outcode (PT_CVV_* bits); 0: inside */
+    pt_acc_mtail t;              /* ndc .. index, when code == 0 (else all zero) */
+} pt_acc_mjourney;
+
+/* One segment of the matrix camera after clipping in clip space. */
+typedef struct pt_acc_mseg {
+    int visible;                 /* 0: culled, nothing of it is inside */
+    int made[2];                 /* end e (0: first, 1: last) is a point clipping made */
+    pt_dd t[2];                  /* its parameter on the segment, 0 <= t <= 1 */
+    pt_acc_mtail end[2];         /* its journey from clip coordinates on */
+} pt_acc_mseg;
+
+typedef struct pt_acc_mat4f { float m[4][4]; } pt_acc_mat4f;   /* m[row][col] */
+
+/* The matrix camera's matrices in one arithmetic: only that arithmetic's set
+** is filled (float by acc_float.c, double by acc_double.c, the reference by
+** acc_dd.c), and freed by pt_acc_mcam_free() (accuracy.h). */
+typedef struct pt_acc_mcam {
+    const pt_scene *s;           /* not owned */
+    pt_arith arith;
+    pt_acc_mat4f view_f, proj_f, *world_f;      /* float: world_f[k]; owned */
+    pt_plan plan;                               /* double: the pipeline's own plan */
+    pt_dd_mat4 view_dd, proj_dd, *world_dd;     /* double-double: world_dd[k]; owned */
+    pt_mat4 view_e, proj_e, *world_e;           /* bounds on its entries' errors; owned */
+} pt_acc_mcam;
+
+/* ===== the integer stages ===== */
+
+/* A value held exactly as the reference does: v, lo = 0.  This function can't
+** fail. */
+static inline pt_dd pt_acc_dd(double v)
+{
+    pt_dd r;
+
+    r.hi = v;
+    r.lo = 0.0;
+    return r;
+}
+
+/* Classic camera: viewport, framebuffer and index of j from the rounded pixel
+** (rx, ry) (ok == 0: none).  This function can't fail. */
+void pt_acc_journey_tail(pt_acc_journey *j, const pt_scene *s, int ok,
+                         int64_t rx, int64_t ry);
+
+/* Matrix camera: framebuffer and index of the viewport pixel t->vp, and the
+** pixel-plane point for the rasterizer, held exactly (pt_dd_from_i64) when
+** exact is set.  This function can't fail. */
+void pt_acc_mtail_int(const pt_scene *s, pt_acc_mtail *t, int exact);
+
+/* A vertex outside the view volume: its journey stops at the cvv.  This
+** function can't fail. */
+void pt_acc_no_tail(pt_acc_mtail *t);
+
+/* ===== the DDA's integer bookkeeping ===== */
+
+/* A segment after rounding its ends, in stepping order: s runs from s0 to
+** s0 + ds, and the exact line is y = y0 + (s - s0) * dy / ds. */
+typedef struct pt_acc_line {
+    int64_t s0, y0;              /* the first endpoint */
+    int64_t ds, dy;              /* ds >= 1 */
+    int transposed;              /* 1: s is y and "y" is x (|slope| > 1) */
+} pt_acc_line;
+
+/* Where the steps go. */
+typedef struct pt_acc_dda {
+    void (*pixel)(void *ud, int64_t x_vp, int64_t y_vp);  /* a pixel inside */
+    void (*step)(void *ud, const pt_acc_line *ln, int64_t s, double y);
+                                 /* every step in the band with its y, or NULL */
+    void *ud;
+    int w, h;                    /* the viewport */
+    pt_raster_vp to_vp;          /* the viewport stage the double run's rasterizer
+                                 ** asks (src/core/raster.h): pt_pixel2viewport,
+                                 ** or pt_pixelplane2viewport (matrix camera) */
+} pt_acc_dda;
+
+/* The exact line at step s, to about 2^-104: y0 + ((s - s0) * dy) / ds.  This
+** function can't fail. */
+pt_dd pt_acc_line_y(const pt_acc_line *ln, int64_t s);
+
+/* Step along y (swap x and y of both integer ends e = (x0, y0, x1, y1)) when
+** transposed, order the ends so that s increases, and fill ln; sets the band
+** of steps that can be inside, [max(s0, 1), min(s1, w or h)].  This function
+** can't fail. */
+void pt_acc_dda_setup(pt_acc_line *ln, int transposed, int64_t e[4],
+                      const pt_acc_dda *o, int64_t *first, int64_t *last);
+
+/* Step s with y rounded to r (ok == 0: y has no integer, it drifted past
+** 2^62): the pixel (s - 1, h - r), or (r - 1, h - s) when transposed, if
+** inside; then o->step.  This function can't fail. */
+void pt_acc_dda_step(const pt_acc_dda *o, const pt_acc_line *ln, int64_t s, int ok,
+                     int64_t r, double y);
+
+/* Both ends on the pixel (ix, iy): that pixel, if inside.  This function
+** can't fail. */
+void pt_acc_dda_dot(const pt_acc_dda *o, int64_t ix, int64_t iy);
+
+/* ===== one arithmetic ===== */
+
+/* One arithmetic's stages and DDA: acc_float.c's pt_acc_float_ops,
+** acc_double.c's pt_acc_double_ops, acc_dd.c's pt_acc_dd_ops.  None can fail
+** but by running out of memory (mcam).  The reference ignores choices. */
+typedef struct pt_acc_ops {
+    void (*journey)(const pt_scene *s, const pt_model *m, pt_vec3 v,
+                    unsigned choices, pt_acc_journey *j);
+                                 /* the classic journey of v, a vertex of m */
+    int (*raster)(const pt_dd p0[2], const pt_dd p1[2], unsigned choices,
+                  const pt_acc_dda *o);
+                                 /* the DDA from p0 to p1 (pixel plane), the
+                                 ** steps in the viewport's band to o: 0, or -1
+                                 ** when an end has no integer pixel */
+    int (*mcam)(pt_acc_mcam *c); /* fill c's matrices (c->s set): 0, or -1
+                                 ** when out of memory */
+    void (*mjourney)(const pt_acc_mcam *c, size_t k, pt_vec3 v_m, pt_acc_mjourney *j);
+                                 /* the matrix camera's journey of v_m, model k */
+    int (*mseg)(const pt_acc_mcam *c, const pt_acc_mjourney *a,
+                const pt_acc_mjourney *b, pt_acc_mseg *g);
+                                 /* a-b clipped in clip space, g->made set by
+                                 ** the caller: 1 with the made ends, 0 culled */
+} pt_acc_ops;
+
+#endif
