@@ -15,13 +15,14 @@ static int sum_bits_lost(double m, double t, double c)
 pt_vec3 pt_model2camera(pt_vec3 m, pt_vec3 t, const pt_sink *sink)
 {
     pt_vec3 c;
-    pt_vrec r = {0};
     double v[3];
     int lost;
 
     c.x = m.x + t.x;                        /* x_c = x_m + x_t */
     c.y = m.y + t.y;                        /* y_c = y_m + y_t */
     c.z = m.z + t.z;                        /* z_c = z_m + z_t */
+    if (!sink) return c;                    /* nobody listens: no record */
+    pt_vrec r = {0};
     r.stage = PT_STAGE_CAMERA;
     r.x = v[0] = c.x; r.y = v[1] = c.y; r.z = v[2] = c.z;
     r.warn = pt_warn_nonfinite(v, 3);
