@@ -215,36 +215,25 @@ static void put_vec3_text(pt_trace *t, pt_vec3 v)
     puts_(t, ", "); put_short(t, v.z); put(t, ")", 1);
 }
 
-/* A matrix as four rows: [[m00,m01,m02,m03],...]. */
-static void put_mat_json(pt_trace *t, const pt_mat4 *m)
+/* A matrix as four rows: JSON [[m00,m01,m02,m03],...], text "[m00 m01 m02
+** m03] [m10 ...] ...". */
+static void put_mat(pt_trace *t, const pt_mat4 *m, int json)
 {
+    const char *sep = json ? "," : " ";
     int i, j;
 
-    put(t, "[", 1);
+    if (json) put(t, "[", 1);
     for (i = 0; i < 4; i++) {
-        puts_(t, i ? ",[" : "[");
+        if (i) put(t, sep, 1);
+        put(t, "[", 1);
         for (j = 0; j < 4; j++) {
-            if (j) put(t, ",", 1);
-            put_json_num(t, m->m[i][j]);
+            if (j) put(t, sep, 1);
+            if (json) put_json_num(t, m->m[i][j]);
+            else put_short(t, m->m[i][j]);
         }
         put(t, "]", 1);
     }
-    put(t, "]", 1);
-}
-
-/* A matrix as "[m00 m01 m02 m03] [m10 ...] ...". */
-static void put_mat_text(pt_trace *t, const pt_mat4 *m)
-{
-    int i, j;
-
-    for (i = 0; i < 4; i++) {
-        puts_(t, i ? " [" : "[");
-        for (j = 0; j < 4; j++) {
-            if (j) put(t, " ", 1);
-            put_short(t, m->m[i][j]);
-        }
-        put(t, "]", 1);
-    }
+    if (json) put(t, "]", 1);
 }
 
 /* Three small integers (a colour) separated by sep. */
@@ -277,7 +266,6 @@ static void camera_put(pt_trace *t, const pt_scene *s, const pt_plan *p, int jso
     const pt_mat4 *mat[2] = {&p->view, &p->proj};
     void (*put_vec)(pt_trace *, pt_vec3) = json ? put_vec3_json : put_vec3_text;
     void (*put_num)(pt_trace *, double) = json ? put_json_num : put_short;
-    void (*put_mat)(pt_trace *, const pt_mat4 *) = json ? put_mat_json : put_mat_text;
     int k;
 
     for (k = 0; k < 3; k++) { puts_(t, vec_label[json][k]); put_vec(t, vec[k]); }
@@ -292,7 +280,7 @@ static void camera_put(pt_trace *t, const pt_scene *s, const pt_plan *p, int jso
                  " (--raw-lookat), so View is not orthonormal");
     }
     for (k = 0; k < 4; k++) { puts_(t, num_label[json][k]); put_num(t, num[k]); }
-    for (k = 0; k < 2; k++) { puts_(t, mat_label[json][k]); put_mat(t, mat[k]); }
+    for (k = 0; k < 2; k++) { puts_(t, mat_label[json][k]); put_mat(t, mat[k], json); }
 }
 
 static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
@@ -327,7 +315,7 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
         puts_(t, ",\"color\":["); put_rgb(t, m->color, ",");
         puts_(t, "],\"traced\":");
         puts_(t, mp->selected ? "true" : "false");
-        if (s->matrix) { puts_(t, ",\"world\":"); put_mat_json(t, &mp->world); }
+        if (s->matrix) { puts_(t, ",\"world\":"); put_mat(t, &mp->world, 1); }
         puts_(t, ",\"stages\":[");
         for (i = 0; i < p->norder; i++) {
             st = p->order[i];
@@ -378,7 +366,7 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
         if (!mp->selected) puts_(t, ", not traced (--model)");
         put(t, "\n", 1);
         if (s->matrix) {
-            puts_(t, "  world      "); put_mat_text(t, &mp->world); put(t, "\n", 1);
+            puts_(t, "  world      "); put_mat(t, &mp->world, 0); put(t, "\n", 1);
         }
         for (i = 0; i < p->norder; i++) {
             st = p->order[i];
@@ -489,19 +477,26 @@ static void put_warnings_text(pt_trace *t, const pt_vrec *r)
     }
 }
 
-/* JSON: ,"warning":["cancellation"],"digits_lost":9 */
-static void put_warnings_json(pt_trace *t, const pt_vrec *r)
+/* JSON: ["a","b"], the names whose bits are set in bits. */
+static void put_names_json(pt_trace *t, unsigned bits, const char *const *names, int n)
 {
     int k, first = 1;
 
-    puts_(t, ",\"warning\":[");
-    for (k = 0; k < PT_NWARN; k++) {
-        if (!(r->warn & (1u << k))) continue;
+    put(t, "[", 1);
+    for (k = 0; k < n; k++) {
+        if (!(bits & (1u << k))) continue;
         if (!first) put(t, ",", 1);
         first = 0;
-        put(t, "\"", 1); puts_(t, pt_warn_names[k]); put(t, "\"", 1);
+        put(t, "\"", 1); puts_(t, names[k]); put(t, "\"", 1);
     }
     put(t, "]", 1);
+}
+
+/* JSON: ,"warning":["cancellation"],"digits_lost":9 */
+static void put_warnings_json(pt_trace *t, const pt_vrec *r)
+{
+    puts_(t, ",\"warning\":");
+    put_names_json(t, r->warn, pt_warn_names, PT_NWARN);
     if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) {
         puts_(t, ",\"digits_lost\":"); put_i64(t, r->digits_lost);
     }
@@ -583,16 +578,9 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
     }
     puts_(t, ",\"stage\":\""); puts_(t, pt_stage_infos[r->stage].name); put(t, "\"", 1);
     if (r->stage == PT_STAGE_CVV) {
-        int k, first = 1;
         puts_(t, ",\"code\":"); put_i64(t, r->code);
-        puts_(t, ",\"planes\":[");
-        for (k = 0; k < PT_CVV_NPLANES; k++) {
-            if (!(r->code & (1u << k))) continue;
-            if (!first) put(t, ",", 1);
-            first = 0;
-            put(t, "\"", 1); puts_(t, pt_cvv_names[k]); put(t, "\"", 1);
-        }
-        put(t, "]", 1);
+        puts_(t, ",\"planes\":");
+        put_names_json(t, r->code, pt_cvv_names, PT_CVV_NPLANES);
     } else if (pt_stage_infos[r->stage].nreal) {
         const double v[4] = {r->x, r->y, r->z, r->w};
         int k;
@@ -703,15 +691,9 @@ static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
                      int64_t x_fb, int64_t y_fb, int64_t idx)
 {
     pt_trace *t = ud;
+    char *o;
 
-    if (t->fmt == PT_FORMAT_JSONL) {
-        put_seg_json(t, "pixel", m, seg);
-        puts_(t, ",\"x\":"); put_i64(t, x_fb);
-        puts_(t, ",\"y\":"); put_i64(t, y_fb);
-        puts_(t, ",\"i\":"); put_i64(t, idx);
-        puts_(t, "}\n");
-    } else if (t->fmt == PT_FORMAT_TEXT) {
-        char *o;
+    if (t->fmt == PT_FORMAT_TEXT) {         /* the most frequent line: no puts_ */
         put_who(t, m->name, 's', seg);
         o = room(t, 100);                   /* 20 + 20 + 9 + 20 + 8 + 20 + 1 bytes */
         o = int_at(str_at(o, "pixel        x_fb = "), x_fb, 12);
@@ -719,7 +701,14 @@ static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
         o = int_at(str_at(o, "  idx = "), idx, 0);
         *o++ = '\n';
         t->len = (size_t)(o - t->buf);
+        return;
     }
+    if (t->fmt != PT_FORMAT_JSONL) return;  /* CSV has no raster rows */
+    put_seg_json(t, "pixel", m, seg);
+    puts_(t, ",\"x\":"); put_i64(t, x_fb);
+    puts_(t, ",\"y\":"); put_i64(t, y_fb);
+    puts_(t, ",\"i\":"); put_i64(t, idx);
+    puts_(t, "}\n");
 }
 
 static void put_pair_json(pt_trace *t, pt_pix p)
