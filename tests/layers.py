@@ -12,7 +12,8 @@
 #               src/io/ headers; no other core or stage header, no tool header
 #   src/tools/  includes core/pipetrace.h, src/io/ and src/tools/ headers
 # and that every included file exists and no chain of includes comes back to
-# where it started.  Prints "N passed, N failed".
+# where it started; and that docs/architecture.md names every folder.  Prints
+# "N passed, N failed".
 import os
 import re
 import sys
@@ -146,6 +147,16 @@ check("layers-3.2 ... a tool reaching past core/pipetrace.h",
       allowed("src/tools/cmd_step.c", "core/raster.h", "src/core/raster.h") is not None)
 check("layers-3.3 ... a stage including src/",
       allowed("stages/s1_model2camera.c", "core/scene.h", "src/core/scene.h") is not None)
+
+# docs/architecture.md is the map: it names every folder of src/ and stages/
+arch = os.path.join(root, "docs", "architecture.md")
+text = open(arch, encoding="utf-8").read() if os.path.exists(arch) else ""
+folders = ["stages/"] + sorted(
+    os.path.relpath(d, root) + "/" for d, _, _ in os.walk(os.path.join(root, "src"))
+    if os.path.relpath(d, root) != "src")
+missing = [f for f in folders if f not in text]
+check("layers-4.1 docs/architecture.md names every folder of src/ and stages/",
+      text and not missing, "missing: " + ", ".join(missing))
 
 print("%d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)
