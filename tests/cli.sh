@@ -193,6 +193,11 @@ check "cli-9.3 ... with the pixel stage's formula and values" \
     grep -q '^  formula  x_pp = 0.5 + w/2.001 \* (x_ip + 1)' "$tmp/out"
 check "cli-9.4 ... value names and JSON keys" grep -q '^  values   x_vp (x), y_vp (y): integers' "$tmp/out"
 run stages extra
-check "cli-9.5 stages takes no arguments: usage error" test "$rc" = 1 -a -n "$(grep "Try 'pipetrace stages --help'" "$tmp/err")"
+check "cli-9.5 stages: an unknown argument is a usage error" test "$rc" = 1 -a -n "$(grep "Try 'pipetrace stages --help'" "$tmp/err")"
+run stages --camera matrix
+check "cli-9.6 --camera matrix: its 10 stages, the classic viewport not among them" \
+    test "$(grep -c '^[a-z]' "$tmp/out")" = 10 -a -z "$(grep 'round(x_pp)' "$tmp/out")"
+run stages --camera pinhole
+check "cli-9.7 --camera takes classic or matrix" test "$rc" = 1
 
 report

@@ -28,7 +28,7 @@ static const char usage[] =
 "       pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
 "       pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
 "                         [--image FILE]\n"
-"       pipetrace stages\n"
+"       pipetrace stages [--camera classic|matrix]\n"
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
 "through the classic teaching pipeline and trace every vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
