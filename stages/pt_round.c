@@ -24,20 +24,6 @@ double pt_java_round(double x)
     return r;
 }
 
-int pt_pix_round(double x, int64_t *out)
-{
-    double r = pt_java_round(x);
-
-    if (!isfinite(x) || fabs(r) >= PT_PIX_LIMIT) { *out = 0; return 0; }
-    *out = (int64_t)r;                      /* exact: |r| < 2^62 */
-    return 1;
-}
-
-int pt_inside(int64_t x, int64_t y, int w, int h)
-{
-    return x >= 0 && x < w && y >= 0 && y < h;
-}
-
 void pt_emit_viewport(const pt_sink *sink, pt_pix vp, int w, int h)
 {
     pt_vrec r = {0};

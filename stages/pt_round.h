@@ -29,13 +29,33 @@ double pt_java_round(double x);
 
 /* Round pixel-plane coordinate x to an integer in *out.  Returns 1, or 0 (and
 ** *out = 0) when x is not finite or |round(x)| >= PT_PIX_LIMIT.  This function
-** can't fail. */
-int pt_pix_round(double x, int64_t *out);
+** can't fail.
+**
+** It is pt_java_round() for |x| < 2^62, in integers, inline because it runs
+** for every pixel the rasterizer draws: the cast truncates toward zero
+** exactly, and every double of that size holds its integer part, so (double)i
+** is exact; x - floor(x) is exact as pt_round.c shows.  From 2^53 on, x is an
+** integer and neither correction applies, so the result stays below 2^62.
+** tests/test_stages.c compares it with pt_java_round(). */
+static inline int pt_pix_round(double x, int64_t *out)
+{
+    int64_t i;
+
+    if (!(x < PT_PIX_LIMIT && x > -PT_PIX_LIMIT)) { *out = 0; return 0; }  /* NaN too */
+    i = (int64_t)x;                         /* toward zero */
+    if ((double)i > x) i--;                 /* floor(x) */
+    if (x - (double)i >= 0.5) i++;          /* ties go up: toward +infinity */
+    *out = i;
+    return 1;
+}
 
 /* 1 when (x, y) lies inside a w x h rectangle whose upper-left pixel is (0, 0):
 ** a viewport pixel inside its viewport, or a framebuffer pixel inside the
 ** framebuffer.  This function can't fail. */
-int pt_inside(int64_t x, int64_t y, int w, int h);
+static inline int pt_inside(int64_t x, int64_t y, int w, int h)
+{
+    return x >= 0 && x < w && y >= 0 && y < h;
+}
 
 /* Report viewport pixel vp of a w x h viewport to sink, as both cameras'
 ** viewport stages do: null with a range warning when !vp.ok, else flagged

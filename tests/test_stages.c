@@ -219,6 +219,39 @@ static void test_values(void)
              pt_matrix_order[pt_matrix_norder - 1] == PT_STAGE_INDEX);
 }
 
+/* pt_pix_round() (integers, for the rasterizer) against pt_java_round(). */
+static void test_pix_round(void)
+{
+    static const double edge[] = {
+        0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994, -0.49999999999999994,
+        0.5000000000000001, -0.5000000000000001, 4503599627370495.5, -4503599627370495.5,
+        4503599627370496.0, 9007199254740991.0, 9007199254740993.0, -9007199254740993.0,
+        4611686018427386880.0, -4611686018427386880.0, 4611686018427387904.0,
+        -4611686018427387904.0, 1e300, -1e300, 0.0, -0.0, 1e-310, -1e-310,
+        (double)INFINITY, -(double)INFINITY, (double)NAN,
+    };
+    uint64_t st = 88172645463325252u;
+    int k, agree = 1;
+
+    for (k = 0; k < 200000 + (int)(sizeof edge / sizeof edge[0]); k++) {
+        double x, r;
+        int64_t got;
+        int ok;
+        if (k < (int)(sizeof edge / sizeof edge[0])) x = edge[k];
+        else {                              /* xorshift: halves, and any bits */
+            st ^= st << 13; st ^= st >> 7; st ^= st << 17;
+            x = k % 2 ? (double)(int64_t)(st % 2000001) / 2 - 500000.0
+                      : ldexp((double)(st >> 11), (int)(st % 120) - 60) * (st & 1 ? -1 : 1);
+        }
+        r = pt_java_round(x);
+        ok = pt_pix_round(x, &got);
+        if (ok != (isfinite(x) && fabs(r) < PT_PIX_LIMIT) || (ok && (double)got != r))
+            agree = 0;
+    }
+    PT_CHECK("s4-2.1 pt_pix_round() is Java's rounding on 200000 values, ties and limits included",
+             agree);
+}
+
 int main(void)
 {
     test_s1();
@@ -230,6 +263,7 @@ int main(void)
     test_warnings();
     test_table();
     test_plane2viewport();
+    test_pix_round();
     test_values();
     return pt_test_report();
 }

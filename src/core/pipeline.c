@@ -314,6 +314,7 @@ typedef struct raster_ctx {
     uint64_t seg;                /* 1-based segment number */
     const pt_listener *l;        /* NULL: nothing to report */
     pt_fb *fb;                   /* NULL: nothing to draw */
+    int64_t npix;                /* W * H: the pixel array's length */
     pt_summary *sum;
 } raster_ctx;
 
@@ -327,7 +328,9 @@ static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
     idx = pt_fb2index(f, rc->s->fb_w, rc->s->fb_h, NULL);
     rc->sum->pixels++;
     if (rc->l && rc->l->pixel) rc->l->pixel(rc->l->ud, rc->m, rc->seg, f.x, f.y, idx);
-    if (rc->fb) pt_fb_set(rc->fb, idx, rc->m->color);
+    /* a student's framebuffer or index stage may name no pixel of the array
+    ** (Java would throw); the trace shows it, the image is left alone */
+    if (rc->fb && idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, rc->m->color);
 }
 
 static void on_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
@@ -441,6 +444,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
 
         sum->rasterized = 1;
         rc.s = s; rc.fb = fb; rc.sum = sum;
+        rc.npix = (int64_t)s->fb_w * s->fb_h;
         out.ud = &rc;
         for (k = 0; k < s->nmodels; k++) {
             const pt_model *m = &s->models[k];
