@@ -86,6 +86,15 @@ mistake diff-1.11 $data/offset.scene jsonl "index x * H + y"
 mistake diff-1.12 $data/ties.scene jsonl "index x * H + y"
 mistaken s6_vpw
 mistake diff-1.13 $data/offset.scene jsonl "viewport width instead of framebuffer width"
+# ... whose index lies past the pixel array for the bottom rows of a 10 x 10
+# framebuffer: the trace shows it, the image is left alone, nothing fails
+printf 'framebuffer 10 10\nmodel m\ntranslate 0 0 -2\nv -1.5 -1.5 0\nv 1.5 -1.5 0\nl 1 2\n' > "$tmp/low.scene"
+"$tmp/sb/pipetrace" "$tmp/low.scene" --image "$tmp/low.ppm" --format jsonl --trace "$tmp/low.jsonl"
+check "diff-1.13a an index past the pixel array: exit 0" test $? = 0
+check "diff-1.13b ... the trace has the pixels, index 193 among them" grep -q '"y":8,"i":193}' "$tmp/low.jsonl"
+printf 'framebuffer 10 10\n' > "$tmp/empty.scene"
+"$exe" "$tmp/empty.scene" --image "$tmp/empty.ppm"
+check "diff-1.13c ... and the image has none of them" cmp "$tmp/low.ppm" "$tmp/empty.ppm"
 
 # the image is drawn through the stages: a viewport stage one row off moves the
 # picture too, and diff says so (2026-11: the rasterizer rounded and flipped by
