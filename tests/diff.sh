@@ -161,6 +161,16 @@ check "diff-8.1 a stage that does not report: exit 1" test $? = 1
 check "diff-8.2 ... said plainly" grep -q "^ACTUAL has no image records: the stage did not report them" "$tmp/out"
 check "diff-8.3 ... with the call it must make" grep -qF "pt_emit(sink, &r)" "$tmp/out"
 check "diff-8.4 ... not as a stage left out on purpose" test "$(grep -c 'Not compared' "$tmp/out")" = 0
+"$tmp/sb/pipetrace" step docs/examples/triangle.scene --vertex 1 --all >"$tmp/step.out" 2>&1
+check "diff-8.4a step on it: all 7 stages, the index too" \
+    test "$(grep -c '^stage [0-9] of 7:' "$tmp/step.out")" = 7
+check "diff-8.4b ... the silent stage said plainly, no made-up numbers" \
+    grep -q "^  here     none: the image stage did not report its record" "$tmp/step.out"
+check "diff-8.4c ... and the pixel stage not blamed for it" \
+    test "$(grep -c 'your stage gave' "$tmp/step.out")" = 0
+"$tmp/sb/pipetrace" docs/examples/triangle.scene --vertex 1 --explain --all-stages >"$tmp/expl.out" 2>&1
+check "diff-8.4d --explain: the index explained from the framebuffer's numbers" \
+    grep -q "idx = y_fb \* W + x_fb = 7 \* 20 + 4 = 144" "$tmp/expl.out"
 "$exe" diff "$tmp/got.txt" "$tmp/want.jsonl" >"$tmp/out" 2>&1
 check "diff-8.5 ... on either side, in text too" grep -q "^EXPECTED has no image records: the stage did not report them" "$tmp/out"
 sed 's|pt_emit(sink, &r);|(void)sink; (void)r;        /* no pt_emit: silent */|' \

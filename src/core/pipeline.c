@@ -294,7 +294,9 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
             behind = s->perspective && z_c > 0;
         }
         if (f) {
-            f->j.norder = f->ncame;         /* matrix: 5 when it stops at the cvv */
+            /* from the camera, not from the records that came: a student's
+            ** stage that does not report must not shorten the journey */
+            f->j.norder = pt_journey_norder(s->matrix, s->matrix ? x.code : 0);
             filing_end(f, l, m, j + 1, mp);
         }
         if (traced) {

@@ -20,7 +20,20 @@ void pt_journey_start(pt_journey *j, const pt_stage_params *par, const pt_mat4 *
 
 void pt_journey_file(pt_journey *j, const pt_vrec *r)
 {
-    if ((int)r->stage < PT_NSTAGES_ALL) j->rec[r->stage] = *r;
+    if ((int)r->stage >= PT_NSTAGES_ALL) return;
+    j->rec[r->stage] = *r;
+    j->reported |= 1u << r->stage;
+}
+
+int pt_journey_norder(int matrix, unsigned code)
+{
+    int i;
+
+    if (!matrix) return pt_classic_norder;
+    if (!code) return pt_matrix_norder;
+    for (i = 0; i < pt_matrix_norder; i++)  /* outside: it stops at the cvv */
+        if (pt_matrix_order[i] == PT_STAGE_CVV) return i + 1;
+    return pt_matrix_norder;
 }
 
 const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st)

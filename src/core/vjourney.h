@@ -30,6 +30,8 @@ typedef struct pt_journey {
     pt_vrec rec[PT_NSTAGES_ALL]; /* each stage's values, indexed by pt_stage */
     const pt_stage *order;       /* the stages this journey went through, */
     int norder;                  /*   in pipeline order, and how many */
+    unsigned reported;           /* bit st: stage st reported its record (a
+                                 ** student's stage may not: its rec is zeros) */
     int matrix;                  /* 1: the matrix camera's journey */
     pt_mat4 world, view, proj;   /* matrix camera: World, View, Projection */
 } pt_journey;
@@ -40,13 +42,18 @@ typedef struct pt_journey {
 void pt_journey_start(pt_journey *j, const pt_stage_params *par, const pt_mat4 *world,
                       const pt_mat4 *view, const pt_mat4 *proj);
 
-/* File record r under its stage in j (a stage past the last is ignored).
-** This function can't fail. */
+/* File record r under its stage in j and mark the stage reported (a stage
+** past the last is ignored).  This function can't fail. */
 void pt_journey_file(pt_journey *j, const pt_vrec *r);
 
 /* The name, spaces and formula of stage st as j's camera has it (the matrix
 ** camera's viewport stage floors instead of rounding).  Can't fail. */
 const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st);
+
+/* How many stages of its camera's order a point goes through: the classic
+** camera's all; the matrix camera's all, or up to the cvv for a vertex outside
+** the view volume (outcode code != 0).  This function can't fail. */
+int pt_journey_norder(int matrix, unsigned code);
 
 /* 1 when r is the record of its stage in j, number for number (bit for bit,
 ** flags and all).  This function can't fail. */

@@ -338,6 +338,18 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
 
     text_init(&t, buf, len);
     if ((int)st >= PT_NSTAGES_ALL) return 0;
+    if (!(j->reported & 1u << st)) {        /* a student's stage without pt_emit */
+        add(&t, "none: the ");
+        add(&t, pt_stage_infos[st].name);
+        add(&t, " stage did not report its record (no pt_emit(sink, &r))");
+        return t.len;
+    }
+    if (!(j->reported & 1u << prev_stage(j, st))) {
+        add(&t, "the ");
+        add(&t, pt_stage_infos[prev_stage(j, st)].name);
+        add(&t, " stage did not report its record: the numbers it handed on are not known");
+        return t.len;
+    }
     for (k = 0; k < pt_coord_count(st); k++) {
         if (k) add(&t, sep);
         explain_coord(&t, j, st, k);
@@ -482,6 +494,10 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
 
     text_init(&t, buf, len);
     if ((int)st >= PT_NSTAGES_ALL) return 0;
+    if (!(j->reported & 1u << st)) {
+        add(&t, "the next stage computes from numbers this stage did not report");
+        return t.len;
+    }
     switch (st) {
     case PT_STAGE_MODEL:
         if (j->matrix)

@@ -65,6 +65,7 @@ static void check_stage(const pt_journey *j, int i)
     int k;
 
     if (j->matrix || i == 0 || j->order[i - 1] != st - 1) return;
+    if ((j->reported & 3u << (st - 1)) != 3u << (st - 1)) return;   /* not reported */
     pt_cat_val_of(&in, &j->rec[st - 1]);
     pt_cat_val_of(&got, &j->rec[st]);
     if (!pt_cat_right(st, &j->par, &in, &want)) return;
