@@ -63,6 +63,7 @@ fi
 set -- "$1" "$2" $row
 name=$1 out=$2 file=stages/$4.c lines=$6
 shift 6
+mkdir -p "$(dirname "$out")" || exit 2
 {
     printf '/* %s, made by tests/student.sh %s: %s */\n' "$file" "$name" "$*"
     sed "$(edit "$name")" "$file"

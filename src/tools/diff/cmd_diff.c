@@ -115,8 +115,8 @@ static int trace_diff(dctx *c)
         const vent *e = &c->vt.e[k];
         int st, both[2] = {0, 0};
         for (st = 0; st < PT_NSTAGES_ALL; st++) {
-            both[0] |= e->rec[0][st] != NONE;
-            both[1] |= e->rec[1][st] != NONE;
+            both[0] |= e->rec[0][st] != PT_DIFF_NONE;
+            both[1] |= e->rec[1][st] != PT_DIFF_NONE;
         }
         if (both[0] && both[1]) pt_diff_compare_vertex(c, e);
     }

@@ -73,8 +73,8 @@ static int in_ranges(const dctx *c, const vrange r[4], int st, const pt_tvrec *a
 {
     int k;
 
-    for (k = 0; k < ncoord(st); k++) {
-        if (is_real(st)) {
+    for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
+        if (pt_diff_is_real(st)) {
             double a = arec->u.d[k], allow;
             if (isnan(a)) { if (!r[k].nan) return 0; continue; }
             if (isinf(a)) { if (!(a > 0 ? r[k].pinf : r[k].ninf)) return 0; continue; }
@@ -114,8 +114,8 @@ static int reproduces(const dctx *c, const pt_mistake *mk, const hctx *h, const 
     memset(at_in, 0, sizeof *at_in);
     mk->apply(&h->par, in, at_in);
     if (!in_real) {
-        for (k = 0; k < ncoord(st); k++) range_add(&r[k], is_real(st), at_in, k);
-    } else if (is_real(st)) {
+        for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) range_add(&r[k], pt_diff_is_real(st), at_in, k);
+    } else if (pt_diff_is_real(st)) {
         int vary[3], nvary = 0, npts = 1;
         for (k = 0; k < 3; k++)
             if (in_slack[k] > 0) { vary[nvary++] = k; npts *= 3; }
@@ -126,10 +126,10 @@ static int reproduces(const dctx *c, const pt_mistake *mk, const hctx *h, const 
                 x.d[vary[j]] += (q % 3 - 1) * in_slack[vary[j]];
             memset(&out, 0, sizeof out);
             mk->apply(&h->par, &x, &out);
-            for (k = 0; k < ncoord(st); k++) range_add(&r[k], 1, &out, k);
+            for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) range_add(&r[k], 1, &out, k);
         }
     } else {
-        for (k = 0; k < ncoord(st); k++) {
+        for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
             double v[16];
             int n = samples(in->d[k], in_slack[k], v);
             for (p = 0; p < n; p++) {
@@ -182,23 +182,23 @@ static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
 
     if (p < 0) return 0;
     i = e->rec[0][p];
-    if (i == NONE && p == PT_STAGE_CAMERA && h->has_t && h->par.translate.x == 0 &&
+    if (i == PT_DIFF_NONE && p == PT_STAGE_CAMERA && h->has_t && h->par.translate.x == 0 &&
         h->par.translate.y == 0 && h->par.translate.z == 0)
         i = e->rec[0][p = PT_STAGE_MODEL];
-    if (i == NONE && p == PT_STAGE_FRAMEBUFFER && h->par.x_ul == 0 && h->par.y_ul == 0)
+    if (i == PT_DIFF_NONE && p == PT_STAGE_FRAMEBUFFER && h->par.x_ul == 0 && h->par.y_ul == 0)
         i = e->rec[0][p = PT_STAGE_VIEWPORT];
-    if (i == NONE) return 0;
+    if (i == PT_DIFF_NONE) return 0;
     r = &c->t[0].vx[i];
     memset(in, 0, sizeof *in);
     in_slack[0] = in_slack[1] = in_slack[2] = 0;
-    if (is_real(p)) {
-        for (k = 0; k < ncoord(p); k++) {
+    if (pt_diff_is_real(p)) {
+        for (k = 0; k < pt_stage_nvalues((pt_stage)p); k++) {
             in->d[k] = r->u.d[k];
             in_slack[k] = pt_diff_slack(c, 0, r->u.d[k]);
         }
     } else {
         in->null = (r->flags & PT_REC_NULL) != 0;
-        for (k = 0; k < ncoord(p); k++) in->n[k] = r->u.n[k];
+        for (k = 0; k < pt_stage_nvalues((pt_stage)p); k++) in->n[k] = r->u.n[k];
     }
     *from = p;
     return 1;
@@ -210,9 +210,9 @@ static void val_str(pbuf *sb, int st, const pt_cat_val *v)
     char b[PT_NUMLEN];
     int k;
 
-    for (k = 0; k < ncoord(st); k++) {
-        pt_diff_add(sb, "%s%s = ", k ? ", " : "", coord_name(st, k));
-        if (is_real(st)) pt_diff_add(sb, "%s", pt_diff_num(v->d[k], b));
+    for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
+        pt_diff_add(sb, "%s%s = ", k ? ", " : "", pt_diff_coord_name(st, k));
+        if (pt_diff_is_real(st)) pt_diff_add(sb, "%s", pt_diff_num(v->d[k], b));
         else if (v->null) pt_diff_add(sb, "none");
         else pt_diff_add(sb, "%" PRId64, v->n[k]);
     }
@@ -254,7 +254,7 @@ void pt_diff_explain(dctx *c, const vent *e, int st, int print)
         if (st == PT_STAGE_CAMERA && !h.has_t) continue;
         if (st == PT_STAGE_IMAGE && !h.par.perspective) continue;
         if (mk->odd_only && h.par.w % 2 == 0 && h.par.h % 2 == 0) continue;
-        if (!reproduces(c, mk, &h, &in, in_slack, is_real(from), st, erec, arec, &out)) continue;
+        if (!reproduces(c, mk, &h, &in, in_slack, pt_diff_is_real(from), st, erec, arec, &out)) continue;
         if (last && !strcmp(last, mk->name)) continue;   /* a second form of the same */
         last = mk->name;
         found++;

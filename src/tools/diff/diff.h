@@ -27,7 +27,7 @@
 #include "tools/cli.h"
 #include "tools/catalogue.h"
 
-#define NONE UINT32_MAX          /* no record */
+#define PT_DIFF_NONE UINT32_MAX          /* no record */
 
 /* The command line. */
 typedef struct dopts {
@@ -47,7 +47,7 @@ typedef struct pbuf {
 typedef struct vent {
     uint64_t v;                  /* 1-based vertex number */
     uint32_t model;              /* name id */
-    uint32_t rec[2][PT_NSTAGES_ALL];   /* index into side's vx[], or NONE */
+    uint32_t rec[2][PT_NSTAGES_ALL];   /* index into side's vx[], or PT_DIFF_NONE */
 } vent;
 
 /* Open addressing over entries in order of first sight (EXPECTED's first). */
@@ -92,18 +92,15 @@ typedef struct rstat {
 } rstat;
 
 /* 1 when stage st holds doubles, 0 when integers. */
-static inline int is_real(int st) { return pt_stage_infos[st].nreal > 0; }
-
-/* Number of values of stage st: 1 to 4. */
-static inline int ncoord(int st) { return pt_stage_infos[st].nreal + pt_stage_infos[st].nint; }
+static inline int pt_diff_is_real(int st) { return pt_stage_infos[st].nreal > 0; }
 
 /* Name of value k of stage st, as the text trace writes it: "x_pp". */
-static inline const char *coord_name(int st, int k) { return pt_stage_infos[st].coord[k]; }
+static inline const char *pt_diff_coord_name(int st, int k) { return pt_stage_infos[st].coord[k]; }
 
 /* 1 when |x| < 2^62: sums and differences of two such numbers, or one and a
 ** size, cannot overflow.  pipetrace's own integers always are (PT_PIX_LIMIT);
 ** a trace from elsewhere may hold anything. */
-static inline int small(int64_t x)
+static inline int pt_diff_small(int64_t x)
 {
     return x > -(INT64_C(1) << 62) && x < (INT64_C(1) << 62);
 }

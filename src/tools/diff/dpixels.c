@@ -213,7 +213,7 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
         uint64_t seg;
         size_t beg[2], end[2];
         int64_t ends[4];
-        int have_ends = 0, ok = 0, sane = 1;    /* sane: every coordinate small() */
+        int have_ends = 0, ok = 0, sane = 1;    /* sane: every coordinate pt_diff_small() */
 
         /* the next segment of either list: the smaller (model, seg) */
         side = k[1] >= n[1] ? 0 : k[0] >= n[0] ? 1 : seg_cmp(&s[0][k[0]], &s[1][k[1]]) <= 0 ? 0 : 1;
@@ -227,13 +227,13 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
                 const skey *q = &s[side][k[side]++];
                 if (!q->clip) {
                     const pt_tpix *p = &c->t[side].px[q->k];
-                    if (!small(p->x) || !small(p->y)) sane = 0;
+                    if (!pt_diff_small(p->x) || !pt_diff_small(p->y)) sane = 0;
                     else if (plist_add(&pl[side], p->x - hd->vp_x, p->y - hd->vp_y) != 0)
                         rc = -1;
-                } else if (!small(c->t[side].cl[q->k].first[0]) ||
-                           !small(c->t[side].cl[q->k].first[1]) ||
-                           !small(c->t[side].cl[q->k].last[0]) ||
-                           !small(c->t[side].cl[q->k].last[1])) {
+                } else if (!pt_diff_small(c->t[side].cl[q->k].first[0]) ||
+                           !pt_diff_small(c->t[side].cl[q->k].first[1]) ||
+                           !pt_diff_small(c->t[side].cl[q->k].last[0]) ||
+                           !pt_diff_small(c->t[side].cl[q->k].last[1])) {
                     sane = 0;
                 }
             }

@@ -180,8 +180,8 @@ void pt_diff_report_one_sided(dctx *c)
             const vent *e = &c->vt.e[k];
             int here = 0, there = 0;
             for (st = 0; st < PT_NSTAGES_ALL; st++) {
-                here |= e->rec[s][st] != NONE;
-                there |= e->rec[!s][st] != NONE;
+                here |= e->rec[s][st] != PT_DIFF_NONE;
+                there |= e->rec[!s][st] != PT_DIFF_NONE;
             }
             if (!here || there) continue;
             if (c->only[s]++ == 0) printf("only in %s:", pt_diff_side[s]);

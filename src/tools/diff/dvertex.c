@@ -67,7 +67,7 @@ static vent *vt_get(vtab *t, uint32_t model, uint64_t v)
     e->v = v;
     e->model = model;
     for (side = 0; side < 2; side++)
-        for (st = 0; st < PT_NSTAGES_ALL; st++) e->rec[side][st] = NONE;
+        for (st = 0; st < PT_NSTAGES_ALL; st++) e->rec[side][st] = PT_DIFF_NONE;
     t->slot[s] = (uint32_t)++t->n;
     return e;
 }
@@ -83,9 +83,9 @@ int pt_diff_fill_table(dctx *c)
         for (k = 0; k < c->t[s].nvx; k++) {
             const pt_tvrec *r = &c->t[s].vx[k];
             vent *e;
-            if (k >= NONE) return -1;
+            if (k >= PT_DIFF_NONE) return -1;
             if (!(e = vt_get(&c->vt, r->model, r->v))) return -1;
-            if (e->rec[s][r->stage] != NONE) {
+            if (e->rec[s][r->stage] != PT_DIFF_NONE) {
                 char name[128];
                 fprintf(stderr, "%s:%" PRIu32 ":1: error: a second %s record for %s (the "
                         "first is on line %" PRIu32 ")\n", c->o->path[s], r->line,
@@ -157,13 +157,13 @@ static unsigned stage_diff(const dctx *c, int st, const pt_tvrec *a, const pt_tv
     unsigned m = 0;
     int k;
 
-    if (is_real(st)) {
-        for (k = 0; k < ncoord(st); k++)
+    if (pt_diff_is_real(st)) {
+        for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++)
             if (!pt_diff_same_real(c, a->u.d[k], b->u.d[k])) m |= 1u << k;
     } else if ((a->flags ^ b->flags) & PT_REC_NULL) {
         m |= D_NULL;
     } else if (!(a->flags & PT_REC_NULL)) {
-        for (k = 0; k < ncoord(st); k++)
+        for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++)
             if (a->u.n[k] != b->u.n[k]) m |= 1u << k;
     }
     if ((a->flags ^ b->flags) & (PT_REC_INSIDE | PT_REC_BEHIND)) m |= D_FLAG;
@@ -176,10 +176,10 @@ static void print_stage_diff(int st, const pt_tvrec *a, const pt_tvrec *b, unsig
     char b1[PT_NUMLEN], b2[PT_NUMLEN], b3[PT_NUMLEN];
     int k;
 
-    for (k = 0; k < ncoord(st); k++) {
+    for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
         if (!(m & (D_NULL | 1u << k))) continue;
-        printf("    %-5s expected ", coord_name(st, k));
-        if (is_real(st)) {
+        printf("    %-5s expected ", pt_diff_coord_name(st, k));
+        if (pt_diff_is_real(st)) {
             printf("%s, actual %s", pt_diff_num(a->u.d[k], b1), pt_diff_num(b->u.d[k], b2));
             if (isfinite(a->u.d[k]) && isfinite(b->u.d[k]))
                 printf(", difference %s", pt_diff_num(b->u.d[k] - a->u.d[k], b3));
@@ -189,7 +189,7 @@ static void print_stage_diff(int st, const pt_tvrec *a, const pt_tvrec *b, unsig
             printf("%" PRId64 ", actual none", a->u.n[k]);
         } else {
             printf("%" PRId64 ", actual %" PRId64, a->u.n[k], b->u.n[k]);
-            if (small(a->u.n[k]) && small(b->u.n[k]))
+            if (pt_diff_small(a->u.n[k]) && pt_diff_small(b->u.n[k]))
                 printf(", difference %+" PRId64, b->u.n[k] - a->u.n[k]);
         }
         printf("\n");
@@ -216,9 +216,9 @@ void pt_diff_compare_vertex(dctx *c, const vent *e)
         st = pt_trace_order[k];
         i = e->rec[0][st];
         j = e->rec[1][st];
-        if (i == NONE || j == NONE) {       /* a silent stage, or one left out */
-            int lacking = i == NONE ? 0 : 1;    /* the side without it */
-            if (i == NONE && j == NONE) continue;
+        if (i == PT_DIFF_NONE || j == PT_DIFF_NONE) {       /* a silent stage, or one left out */
+            int lacking = i == PT_DIFF_NONE ? 0 : 1;    /* the side without it */
+            if (i == PT_DIFF_NONE && j == PT_DIFF_NONE) continue;
             if (c->silent[lacking][e->model] & 1u << st) c->silent_recs[lacking][st]++;
             else c->stage_only[!lacking][st]++;
             continue;
