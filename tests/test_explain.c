@@ -399,6 +399,48 @@ static void test_java(void)
              && pt_explain_java_int_round(-2.5) == -2 && pt_explain_java_int_round(0.49999999999999994) == 0);
 }
 
+/* explain writes each classic formula out again with the numbers put in; its
+** symbolic part ("x_pp = 0.5 + w/2.001 * (x_ip + 1)", before the numbers) must
+** be the formula of the stage table (stages/pt_stage.c), value by value, in
+** perspective and orthographic scenes. */
+static void test_formulas_are_the_table(void)
+{
+    static const char *const heads[2] = {
+        "framebuffer 20 10\nviewport 1 2 16 7\nmodel m\ntranslate 0.25 -0.5 -2\n",
+        "framebuffer 20 10\ncamera orthographic\nmodel m\ntranslate 0.25 -0.5 -2\n",
+    };
+    int h, st, k, bad = 0, n = 0;
+
+    for (h = 0; h < 2; h++) {
+        pt_journey j;
+        journey_at(&j, heads[h], (pt_vec3){0.5, 0.25, -1});
+        for (st = PT_STAGE_CAMERA; st < PT_NSTAGES; st++) {
+            char *part = b, *sep;
+            pt_explain_stage(b, sizeof b, &j, (pt_stage)st, "|");
+            for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
+                char sym[PT_EXPLAINLEN], *eq, *paren;
+                sep = strchr(part, '|');
+                if (sep) *sep = '\0';
+                /* the symbols end where the first number does: at the second
+                ** " = ", or a parenthesis after a constant ("z_ip = -1 (...)") */
+                snprintf(sym, sizeof sym, "%s", part);
+                eq = strstr(sym, " = ");
+                if (eq && (eq = strstr(eq + 3, " = ")) != NULL) *eq = '\0';
+                else if ((paren = strstr(sym, " (")) != NULL) *paren = '\0';
+                if (!strstr(pt_stage_infos[st].formula, sym)) {
+                    bad++;
+                    printf("  %s: '%s' is not in the table's '%s'\n",
+                           pt_stage_infos[st].name, sym, pt_stage_infos[st].formula);
+                }
+                n++;
+                if (!sep) break;
+                part = sep + 1;
+            }
+        }
+    }
+    PT_CHECK("ex-9.1 explain's formulas are the stage table's, value by value", bad == 0 && n >= 20);
+}
+
 int main(void)
 {
     test_triangle();
@@ -408,5 +450,6 @@ int main(void)
     test_left_out();
     test_matrix();
     test_java();
+    test_formulas_are_the_table();
     return pt_test_report();
 }
