@@ -8,15 +8,18 @@
 ** run every reference case (test_reference.c, test_catalogue.c).
 ** pt_ref_run(argc, argv, prog, run_case) calls run_case(dir, NAME) for each
 ** case of the directory argv[1] (default tests/reference), with the checks
-** that it opens and holds cases, then prints "PROG: N cases from DIR".
+** that it opens and holds cases, then prints "PROG: N cases from DIR";
+** pt_ref_load() loads one case, checking that it does.
 ** Include after testhelp.h.
 */
 #ifndef PT_REFCASES_H
 #define PT_REFCASES_H
 
 #include <dirent.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/pipetrace.h"
 
 static int pt_ref_by_name(const void *a, const void *b)
 {
@@ -42,6 +45,19 @@ static long pt_ref_cases(const char *dir, char **names, size_t max)
     closedir(d);
     qsort(names, n, sizeof names[0], pt_ref_by_name);
     return (long)n;
+}
+
+/* Load case NAME of dir into *s; on failure check "TAG NAME: loads (why)"
+** as failed and return -1.  Needs core/pipetrace.h. */
+static int pt_ref_load(pt_scene *s, const char *dir, const char *name, const char *tag)
+{
+    char path[4096], err[PT_ERRLEN], descr[PT_ERRLEN + 4200];
+
+    snprintf(path, sizeof path, "%s/%s.scene", dir, name);
+    if (pt_scene_load(s, path, err, sizeof err) == 0) return 0;
+    snprintf(descr, sizeof descr, "%s %s: loads (%s)", tag, name, err);
+    PT_CHECK(descr, 0);
+    return -1;
 }
 
 static void pt_ref_run(int argc, char **argv, const char *prog,

@@ -77,7 +77,7 @@ static void on_vertex(void *ud, const pt_vrec *r)
 
 static void run_case(const char *dir, const char *name)
 {
-    char path[4096], err[PT_ERRLEN], descr[PT_ERRLEN + 1200];
+    char descr[PT_ERRLEN + 1200];
     pt_scene s;
     pt_options o;
     pt_plan p;
@@ -85,12 +85,7 @@ static void run_case(const char *dir, const char *name)
     pt_summary sum;
     got g;
 
-    snprintf(path, sizeof path, "%s/%s.scene", dir, name);
-    if (pt_scene_load(&s, path, err, sizeof err) != 0) {
-        snprintf(descr, sizeof descr, "cat %s: loads (%s)", name, err);
-        PT_CHECK(descr, 0);
-        return;
-    }
+    if (pt_ref_load(&s, dir, name, "cat") != 0) return;
     pt_options_default(&o);
     o.all_stages = 1;
     o.rasterize = 0;

@@ -101,7 +101,7 @@ static const char *check_vertex_line(got *g, char *line, size_t *nlines)
 
 static void run_case(const char *dir, const char *name)
 {
-    char path[4096], err[PT_ERRLEN], line[4096], descr[PT_ERRLEN + 600];
+    char path[4096], line[4096], descr[PT_ERRLEN + 600];
     pt_scene s;
     pt_options o;
     pt_plan p;
@@ -113,12 +113,7 @@ static void run_case(const char *dir, const char *name)
     unsigned char *want;
     FILE *f;
 
-    snprintf(path, sizeof path, "%s/%s.scene", dir, name);
-    if (pt_scene_load(&s, path, err, sizeof err) != 0) {
-        snprintf(descr, sizeof descr, "ref %s: loads (%s)", name, err);
-        PT_CHECK(descr, 0);
-        return;
-    }
+    if (pt_ref_load(&s, dir, name, "ref") != 0) return;
     pt_options_default(&o);
     o.all_stages = 1;
     pt_plan_make(&p, &s, &o);

@@ -240,9 +240,11 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
     }
     if (in_journey(&jm, PT_STAGE_VIEWPORT) && !(jc.rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL)) {
         const pt_vrec *a = &jc.rec[PT_STAGE_VIEWPORT], *b = &jm.rec[PT_STAGE_VIEWPORT];
+        const char *x_pp = pt_stage_infos[PT_STAGE_PIXEL].formula;  /* "x_pp = ..., y_pp" */
         if (a->ix != b->ix || a->iy != b->iy)
-            printf("the pixels differ: the classic camera rounds x_pp = 0.5 + w/2.001 * (x_ip + 1)\n"
-                   "to the nearest logical pixel; the matrix camera floors x_s = (x_n + 1) * w/2\n");
+            printf("the pixels differ: the classic camera rounds %.*s\n"
+                   "to the nearest logical pixel; the matrix camera floors x_s = (x_n + 1) * w/2\n",
+                   (int)strcspn(x_pp, ","), x_pp);
         else
             printf("both cameras pick the same pixel\n");
     }
