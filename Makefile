@@ -69,7 +69,7 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o
 # src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
 CORE_O   = $B/scene.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
-IO_O     = $B/numfmt.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
+IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
            $B/tread_jsonl.o $B/tread_image.o $B/png.o $B/outfile.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff
 # and step), the subcommands (diff, accuracy and journey in folders of their
@@ -81,7 +81,7 @@ CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
-           $B/test_accuracy $B/test_png $B/test_catalogue
+           $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum
 
 all: $B/pipetrace
 

@@ -18,6 +18,7 @@ failed=0
 # NAME LANE COMMAND...: the groups, in report order
 groups="stages      1 $B/test_stages
 numfmt      2 $B/test_numfmt
+jnum        2 $B/test_jnum
 raster      1 $B/test_raster
 matrix      1 $B/test_matrix
 scene       1 $B/test_scene
