@@ -89,6 +89,10 @@ const pt_stage pt_trace_order[PT_NSTAGES_ALL] = {
     PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER, PT_STAGE_INDEX,          /* both */
 };
 
+const char *const pt_stage_course[PT_NSTAGES_ALL] = {
+    "0. Model", "1. Camera", "2. Projected", "3. Pixel-plane"   /* the rest: NULL */
+};
+
 int pt_stage_nvalues(pt_stage st)
 {
     return pt_stage_infos[st].nreal + pt_stage_infos[st].nint;

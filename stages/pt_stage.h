@@ -137,6 +137,11 @@ extern const int pt_matrix_norder;
 ** framebuffer and index. */
 extern const pt_stage pt_trace_order[PT_NSTAGES_ALL];
 
+/* The title the course's renderer gives stage st in its debug log ("0. Model",
+** "3. Pixel-plane"; src/io/trace_kraft.c writes it, tread_kraft.c reads it),
+** or NULL for a stage it does not log. */
+extern const char *const pt_stage_course[PT_NSTAGES_ALL];
+
 /* The number of values of stage st (nreal + nint).  This function can't fail. */
 int pt_stage_nvalues(pt_stage st);
 

@@ -31,6 +31,7 @@ layers      1 sh tests/layers.sh
 golden      1 sh tests/golden.sh $B/pipetrace
 cli         1 sh tests/cli.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace
+kraft       2 sh tests/kraft.sh $B/pipetrace $ref
 extreme     1 sh tests/extreme.sh $B/pipetrace
 teach       1 sh tests/teach.sh $B/pipetrace
 accuracy    1 sh tests/accuracy.sh $B/pipetrace

@@ -32,7 +32,12 @@
 
 #define PT_TRACE_VERSION 1
 
-typedef enum pt_format { PT_FORMAT_TEXT, PT_FORMAT_JSONL, PT_FORMAT_CSV } pt_format;
+typedef enum pt_format { PT_FORMAT_TEXT, PT_FORMAT_JSONL, PT_FORMAT_CSV,
+                         PT_FORMAT_KRAFT,          /* the course's debug log, and */
+                         PT_FORMAT_KRAFT_PIXELS    /* with its pixels: written by
+                                                   ** pt_kraft_write (trace_kraft.h),
+                                                   ** not by this listener */
+} pt_format;
 
 typedef struct pt_trace {
     FILE *f;                     /* destination, not owned */

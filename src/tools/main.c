@@ -14,6 +14,7 @@
 #include "core/pipetrace.h"
 #include "io/png.h"
 #include "io/trace.h"
+#include "io/trace_kraft.h"
 
 #define PT_VERSION "0.1.0"
 
@@ -38,7 +39,8 @@ static const char usage[] =
 "  --image FILE      write the rendered framebuffer: PNG when FILE ends in\n"
 "                    .png (any case), else binary PPM (P6)\n"
 "  --trace FILE      write the trace to FILE ('-': standard output)\n"
-"  --format F        trace format: text (default), jsonl, csv\n"
+"  --format F        trace format: text (default), jsonl, csv; kraft: the\n"
+"                    course renderer's debug log, kraft-pixels: with its pixels\n"
 "  --vertex N        trace only vertex N (1-based) of each model\n"
 "  --model NAME      trace only the model NAME\n"
 "  --stage NAME      trace only this stage (repeatable): model, camera, image,\n"
@@ -106,7 +108,10 @@ static int parse_args(cli *c, int argc, char **argv)
             if (!strcmp(val, "text")) c->fmt = PT_FORMAT_TEXT;
             else if (!strcmp(val, "jsonl")) c->fmt = PT_FORMAT_JSONL;
             else if (!strcmp(val, "csv")) c->fmt = PT_FORMAT_CSV;
-            else return usage_error("unknown format '%s' (text, jsonl, csv)", val);
+            else if (!strcmp(val, "kraft")) c->fmt = PT_FORMAT_KRAFT;
+            else if (!strcmp(val, "kraft-pixels")) c->fmt = PT_FORMAT_KRAFT_PIXELS;
+            else return usage_error("unknown format '%s' (text, jsonl, csv, kraft, "
+                                    "kraft-pixels)", val);
         } else if (!strcmp(a, "--vertex")) {
             if (pt_cli_count(val, 1, 4294967295u, &c->opt.vertex) != 0)
                 return usage_error("--vertex takes a vertex number >= 1, not '%s'", val);
@@ -131,6 +136,11 @@ static int parse_args(cli *c, int argc, char **argv)
     if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
     if (c->explain && c->fmt == PT_FORMAT_CSV)
         return usage_error("--explain needs --format text or jsonl%s", "");
+    if ((c->fmt == PT_FORMAT_KRAFT || c->fmt == PT_FORMAT_KRAFT_PIXELS) &&
+        (staged || c->explain || c->opt.vertex || c->opt.model || c->opt.all_stages))
+        return usage_error("--format %s logs the whole scene as the course's renderer "
+                           "does: no --vertex, --model, --stage, --all-stages, --explain",
+                           c->fmt == PT_FORMAT_KRAFT ? "kraft" : "kraft-pixels");
     if (!c->image && !c->trace) c->trace = "-";
     /* --vertex without --image: only that vertex's journey is computed */
     c->opt.rasterize = c->image != NULL || !c->opt.vertex;
@@ -162,7 +172,7 @@ int main(int argc, char **argv)
     pt_trace *tr = NULL;
     pt_outfile tout = {NULL, NULL, NULL, NULL}, iout = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
-    int rc;
+    int rc, kraft;
 
     if (argc > 1 && strcmp(argv[1], "diff") == 0) return pt_cmd_diff(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "step") == 0) return pt_cmd_step(argc - 1, argv + 1);
@@ -185,7 +195,10 @@ int main(int argc, char **argv)
 
     memset(&l, 0, sizeof l);
     rc = 0;
-    if (c.trace) {
+    kraft = c.fmt == PT_FORMAT_KRAFT || c.fmt == PT_FORMAT_KRAFT_PIXELS;
+    if (c.trace && kraft) {                 /* written after the run, below */
+        if (pt_outfile_open(&tout, c.trace, err, sizeof err) != 0) rc = 1;
+    } else if (c.trace) {
         tr = malloc(sizeof *tr);
         if (!tr) { snprintf(err, sizeof err, "pipetrace: out of memory"); rc = 1; }
         else if (pt_outfile_open(&tout, c.trace, err, sizeof err) != 0) rc = 1;
@@ -201,6 +214,13 @@ int main(int argc, char **argv)
     }
     if (!rc && pt_run(&s, &plan, &c.opt, &l, c.image ? &fb : NULL, &sum) != 0) {
         snprintf(err, sizeof err, "pipetrace: out of memory");
+        rc = 1;
+    }
+    if (!rc && c.trace && kraft &&
+        pt_kraft_write(tout.f, &s, c.fmt == PT_FORMAT_KRAFT_PIXELS, err, sizeof err) != 0)
+        rc = 1;
+    else if (!rc && c.trace && kraft && (fflush(tout.f) != 0 || ferror(tout.f))) {
+        snprintf(err, sizeof err, "cannot write the trace to '%s'", c.trace);
         rc = 1;
     }
     if (!rc && tr && pt_trace_finish(tr) != 0) {
