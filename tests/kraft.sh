@@ -66,4 +66,66 @@ check "kraft-4.1 colour list: java.awt.Color" grep -q '^3. Pixel-plane: cIndex =
 check "kraft-4.2 pixel lines: r g b after gamma" grep -q 'r=1.0000 g=0.7310 b=0.0000$' "$tmp/out"
 check "kraft-4.3 colour slopes of one colour: 0.0" test "$(grep -c '^Slope m... = 0.0$' "$tmp/out")" = 3
 
+# ---- kraft-5: diff reads the logs, as EXPECTED or ACTUAL: each agrees with
+# pipetrace's own trace of its scene (vIndex 0-based is vertex v + 1; the
+# log's five decimals get half a unit of tolerance; its pixels are compared)
+n=0
+for log in "$ref"/kraftlog/*.log; do
+    b=${log##*/}
+    name=${b%%.*}
+    "$exe" "$ref/$name.scene" --trace "$tmp/t.txt"
+    "$exe" "$ref/$name.scene" --format jsonl --trace "$tmp/t.jsonl"
+    run diff "$tmp/t.txt" "$log"
+    check "kraft-5.1 $b as ACTUAL: agrees with the text trace" test "$rc" = 0
+    run diff "$log" "$tmp/t.jsonl"
+    check "kraft-5.2 $b as EXPECTED: agrees with the JSON Lines trace" test "$rc" = 0
+    n=$((n + 1))
+done
+check "kraft-5.3 all 51 logs read" test "$n" = 51
+"$exe" "$ref/basic-two-models.scene" --trace "$tmp/t.txt"
+run diff "$tmp/t.txt" "$ref/kraftlog/basic-two-models.pixels.log"
+check "kraft-5.4 diff says what it read" grep -q "(the course's debug log, 5 decimals: 64 vertex, 338 pixel records)" "$tmp/out"
+check "kraft-5.5 ... and compares the pixels" grep -q "the same 279" "$tmp/out"
+"$exe" "$ref/basic-unused-vertex.scene" --trace "$tmp/t.txt"
+run diff "$tmp/t.txt" "$ref/kraftlog/basic-unused-vertex.log"
+check "kraft-5.6 a vertex no segment uses is not compared (the trace has none)" test "$rc" = 0
+
+# ---- kraft-6: a log with a known mistake is found at the right stage.  The
+# course's Viewport stage (pipetrace's pixel stage) of a student who wrote
+# w/2 for w/2.001: the log's "3. Pixel-plane" vertices edited to what it
+# prints, 0.5 + w/2 * (x_ip + 1) from the log's own "2. Projected" lines
+scene=$ref/basic-two-models.scene                   # viewport 100 x 80
+"$exe" "$scene" --trace "$tmp/want.txt"
+awk -v w=100 -v h=80 '
+    /^2\. Projected  : vIndex/ { n = $6 + 0; xi[n] = $10; yi[n] = $11 }
+    /^3\. Pixel-plane: vIndex/ { n = $5 + 0
+        printf "3. Pixel-plane: vIndex = %3d, (x,y,z) = (%10.5f  %10.5f  %10.5f)\n",
+               n, 0.5 + w / 2 * (xi[n] + 1), 0.5 + h / 2 * (yi[n] + 1), 0; next }
+    { print }' "$ref/kraftlog/basic-two-models.log" > "$tmp/student.log"
+check "kraft-6.1 the edit changed the pixel plane" test "$(cmp -l "$tmp/student.log" "$ref/kraftlog/basic-two-models.log" | wc -l)" -gt 0
+run diff "$tmp/want.txt" "$tmp/student.log"
+check "kraft-6.2 exit 1" test "$rc" = 1
+check "kraft-6.3 first wrong stage: pixel" grep -q "^a v1: differs first at pixel" "$tmp/out"
+check "kraft-6.4 the mistake named" grep -q "likely mistake: 2 instead of 2.001" "$tmp/out"
+check "kraft-6.5 ... and no other" test "$(grep 'likely mistake' "$tmp/out" | grep -cv '2 instead of 2.001')" = 0
+# the rasterizer's lines: every pixel one row higher
+awk '/^      fb_/ { i = index($0, "y_vp="); n = substr($0, i + 5, 4) + 0
+                   $0 = substr($0, 1, i + 4) sprintf("%4d", n - 1) substr($0, i + 9) } { print }' \
+    "$ref/kraftlog/basic-two-models.pixels.log" > "$tmp/student.log"
+run diff "$tmp/want.txt" "$tmp/student.log"
+check "kraft-6.6 pixels one row up: exit 1" test "$rc" = 1
+check "kraft-6.7 ... every vertex agrees, the pixels differ" grep -q "16 of 16 vertices agree. But the lit pixels differ" "$tmp/out"
+
+# ---- kraft-7: a log that is not one
+printf '\n== Begin Rendering of Scene:  ==\nperspective = maybe\n' > "$tmp/bad.log"
+run diff "$tmp/bad.log" "$tmp/want.txt"
+check "kraft-7.1 a bad line: exit 2" test "$rc" = 2
+check "kraft-7.2 ... FILE:LINE:COL: error" grep -q "^$tmp/bad.log:3:15: error: expected 'true' or 'false'" "$tmp/err"
+head -20 "$ref/kraftlog/basic-two-models.log" > "$tmp/cut.log"
+run diff "$tmp/cut.log" "$tmp/want.txt"
+check "kraft-7.3 a log cut short: exit 2" test "$rc" = 2 -a -n "$(grep 'ends before' "$tmp/err")"
+sed '5s/.*/hello from my renderer/' "$ref/kraftlog/basic-two-models.log" > "$tmp/chatty.log"
+run diff "$tmp/chatty.log" "$tmp/want.txt"
+check "kraft-7.4 a line the renderer does not print: exit 2, its line" grep -q "chatty.log:5:1: error: not a line of the course renderer's debug log" "$tmp/err"
+
 report

@@ -176,6 +176,8 @@ pt_tkind pt_tread_kind(const char *buf, size_t len)
 {
     static const char text[] = "# pipetrace trace";
     static const char csv[] = "model,v,stage,";
+    static const char kraft[] = "== Begin Rendering of Scene:";
+    size_t k = 0;
 
     static const char png[] = "\211PNG\r\n\032\n";
 
@@ -185,6 +187,9 @@ pt_tkind pt_tread_kind(const char *buf, size_t len)
     if (len >= 1 && buf[0] == '{') return PT_TK_JSONL;
     if (len >= sizeof text - 1 && memcmp(buf, text, sizeof text - 1) == 0) return PT_TK_TEXT;
     if (len >= sizeof csv - 1 && memcmp(buf, csv, sizeof csv - 1) == 0) return PT_TK_CSV;
+    while (k < len && (buf[k] == '\n' || buf[k] == '\r')) k++;    /* its empty line */
+    if (len - k >= sizeof kraft - 1 && memcmp(buf + k, kraft, sizeof kraft - 1) == 0)
+        return PT_TK_KRAFT;
     return PT_TK_UNKNOWN;
 }
 
@@ -373,7 +378,10 @@ int pt_tread_parse(pt_tread *t, const char *path, const char *buf, size_t len,
     r.t = t;
     r.line = buf;
     r.lineno = 1;
-    if (t->kind != PT_TK_JSONL && t->kind != PT_TK_TEXT) {
+    if (t->kind == PT_TK_KRAFT) {          /* the course's log: read whole */
+        rc = pt_tr_kraft(&r, buf, len);
+        p = end;
+    } else if (t->kind != PT_TK_JSONL && t->kind != PT_TK_TEXT) {
         r.eol = buf;
         rc = pt_tr_fail(&r, buf, "not a pipetrace trace (JSON Lines or text) nor an image "
                         "(" PT_TR_IMG_FORMATS ")");

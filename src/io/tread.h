@@ -121,7 +121,9 @@ typedef enum pt_tkind {
     PT_TK_CSV,                   /* a CSV trace: "model,v,stage," */
     PT_TK_PPM,                   /* a binary PPM image: "P6" */
     PT_TK_PNG,                   /* a PNG image: its 8-byte signature */
-    PT_TK_P3                     /* a plain (ASCII) PPM image: "P3" */
+    PT_TK_P3,                    /* a plain (ASCII) PPM image: "P3" */
+    PT_TK_KRAFT                  /* the course renderer's debug log (--format
+                                 ** kraft): "== Begin Rendering of Scene:" */
 } pt_tkind;
 
 /* A trace read back. */

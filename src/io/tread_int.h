@@ -133,4 +133,8 @@ int pt_tr_text_line(pt_treader *r);
 ** line. */
 int pt_tr_text_end(pt_treader *r);
 
+/* Read a whole log of the course's renderer, buf[0..len) (tread_kraft.c).
+** Returns 0, or -1 (reported). */
+int pt_tr_kraft(pt_treader *r, const char *buf, size_t len);
+
 #endif

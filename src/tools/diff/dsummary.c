@@ -63,6 +63,7 @@ int pt_diff_compare_headers(const dctx *c)
 
 static const char *format_name(const pt_tread *t)
 {
+    if (t->kind == PT_TK_KRAFT) return "the course's debug log";
     return t->kind == PT_TK_JSONL ? "JSON Lines" : "text";
 }
 
