@@ -128,4 +128,21 @@ sed '5s/.*/hello from my renderer/' "$ref/kraftlog/basic-two-models.log" > "$tmp
 run diff "$tmp/chatty.log" "$tmp/want.txt"
 check "kraft-7.4 a line the renderer does not print: exit 2, its line" grep -q "chatty.log:5:1: error: not a line of the course renderer's debug log" "$tmp/err"
 
+# ---- kraft-8: a log cut anywhere is refused with a message, never a crash
+log=$ref/kraftlog/basic-clip-edges.pixels.log
+"$exe" "$ref/basic-clip-edges.scene" --trace "$tmp/want.txt"
+size=$(wc -c < "$log")
+cuts=0 crashed=0 accepted=0
+i=1
+while [ "$i" -lt "$size" ]; do
+    head -c "$i" "$log" > "$tmp/cut.log"
+    "$exe" diff "$tmp/want.txt" "$tmp/cut.log" >/dev/null 2>&1; rc=$?
+    [ "$rc" -gt 2 ] && crashed=$((crashed + 1))
+    [ "$rc" -ne 2 ] && accepted=$((accepted + 1))
+    cuts=$((cuts + 1))
+    i=$((i + 211))
+done
+check "kraft-8.1 $cuts cuts of a pixel log: none crashes" test "$crashed" = 0
+check "kraft-8.2 ... each is an error (exit 2)" test "$accepted" = 0
+
 report

@@ -48,4 +48,7 @@ vg "vg-14 journey: SVG and HTML" 0 journey --vertex 1 --svg "$tmp/j.svg" --html 
 vg "vg-15 diff: JSONL against text" 0 diff "$tmp/a.jsonl" "$tmp/a.txt"
 "$exe" --image "$tmp/c.ppm"
 vg "vg-16 diff: two images" 0 diff "$tmp/c.ppm" "$tmp/c.ppm"
+vg "vg-17 the course's debug log with pixels" 0 tests/reference/basic-clip-edges.scene --format kraft-pixels
+"$exe" tests/reference/basic-clip-edges.scene > "$tmp/e.txt"
+vg "vg-18 diff reads the course's log" 0 diff tests/reference/kraftlog/basic-clip-edges.pixels.log "$tmp/e.txt"
 report
