@@ -5,7 +5,9 @@
 ** Both start from the same decimal: x = d1.d2...dn * 10^e, n <= 17 digits, no
 ** trailing zero, the digits Double.toString shows (java_digits()).  toString
 ** spells them; %f rounds them half up at the requested decimal (Java's
-** Formatter rounds the decimal string, not the binary value).
+** Formatter rounds the decimal string, not the binary value).  The one
+** snprintf and strtod here run in the "C" locale, as every program does that
+** never calls setlocale (pipetrace does not), so the point is a '.'.
 */
 #include <math.h>
 #include <stdio.h>
