@@ -108,13 +108,16 @@ check "kraft-6.2 exit 1" test "$rc" = 1
 check "kraft-6.3 first wrong stage: pixel" grep -q "^a v1: differs first at pixel" "$tmp/out"
 check "kraft-6.4 the mistake named" grep -q "likely mistake: 2 instead of 2.001" "$tmp/out"
 check "kraft-6.5 ... and no other" test "$(grep 'likely mistake' "$tmp/out" | grep -cv '2 instead of 2.001')" = 0
+run diff "$tmp/student.log" "$tmp/want.txt"
+check "kraft-6.6 as EXPECTED, a log without pixels has no header: no mistake checked" \
+    grep -q "no known mistake checked: EXPECTED has no header" "$tmp/out"
 # the rasterizer's lines: every pixel one row higher
 awk '/^      fb_/ { i = index($0, "y_vp="); n = substr($0, i + 5, 4) + 0
                    $0 = substr($0, 1, i + 4) sprintf("%4d", n - 1) substr($0, i + 9) } { print }' \
     "$ref/kraftlog/basic-two-models.pixels.log" > "$tmp/student.log"
 run diff "$tmp/want.txt" "$tmp/student.log"
-check "kraft-6.6 pixels one row up: exit 1" test "$rc" = 1
-check "kraft-6.7 ... every vertex agrees, the pixels differ" grep -q "16 of 16 vertices agree. But the lit pixels differ" "$tmp/out"
+check "kraft-6.7 pixels one row up: exit 1" test "$rc" = 1
+check "kraft-6.8 ... every vertex agrees, the pixels differ" grep -q "16 of 16 vertices agree. But the lit pixels differ" "$tmp/out"
 
 # ---- kraft-7: a log that is not one
 printf '\n== Begin Rendering of Scene:  ==\nperspective = maybe\n' > "$tmp/bad.log"
