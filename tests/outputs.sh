@@ -1,0 +1,102 @@
+#!/bin/sh
+# tests/outputs.sh -- output files: signals, replacing a file, writing over an
+# input, what the trace writes of paths and numbers
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/outputs.sh PIPETRACE.  Run from the repository root.
+exe=$1
+. tests/testlib.sh
+skipped=0
+tri=docs/examples/triangle.scene
+
+# ---- a signal while writing leaves no temporary file and the old file whole
+# The trace is written to a temporary file first; the image goes to a FIFO
+# afterwards, and that FIFO is opened for reading only here: once the open
+# returns, pipetrace has the whole trace in its temporary file and blocks on
+# the image (360 kB, more than a pipe holds).  Then the signal.  No sleep: the
+# open is the synchronisation (timeout only guards against a run that fails).
+signal_case() {     # signal_case ID SIGNAL
+    dir="$tmp/sig-$2"
+    mkdir "$dir"
+    echo "old trace" > "$dir/out.trace"
+    mkfifo "$dir/img.ppm"
+    "$exe" --trace "$dir/out.trace" --image "$dir/img.ppm" 2>/dev/null &
+    pid=$!
+    timeout 60 sh -c 'exec 3<"$1"; kill -"$2" "$3"' sh "$dir/img.ppm" "$2" "$pid"
+    opened=$?
+    wait "$pid"; prc=$?
+    check "$1 SIG$2 while writing: the run was stopped by it" test "$opened" = 0 -a "$prc" -gt 128
+    check "$1 ... leaves no temporary file" test "$(ls -A "$dir" | tr '\n' ' ')" = "img.ppm out.trace "
+    check "$1 ... and the old file as it was" test "$(cat "$dir/out.trace")" = "old trace"
+}
+signal_case out-3.1 INT
+signal_case out-3.2 TERM
+signal_case out-3.3 KILL            # the temporary file has no name (O_TMPFILE)
+
+# ---- replacing a file keeps what it was
+dir="$tmp/keep"
+mkdir "$dir"
+echo old > "$dir/private.trace"
+chmod 600 "$dir/private.trace"
+run "$tri" --trace "$dir/private.trace"
+check "out-7.1 a 0600 trace is replaced" test "$rc" = 0 -a "$(head -c 9 "$dir/private.trace")" = "# pipetra"
+check "out-7.2 ... and stays 0600" test "$(stat -c %a "$dir/private.trace")" = 600
+echo old > "$dir/shared.trace"
+chmod 640 "$dir/shared.trace"
+run "$tri" --format jsonl --trace "$dir/shared.trace"
+check "out-7.3 a 0640 trace stays 0640" test "$(stat -c %a "$dir/shared.trace")" = 640
+( umask 022 && "$exe" "$tri" --trace "$dir/new.trace" )
+check "out-7.4 a new file is 0666 less the umask" test "$(stat -c %a "$dir/new.trace")" = 644
+
+echo "read only" > "$dir/ro.trace"
+chmod 444 "$dir/ro.trace"
+run "$tri" --trace "$dir/ro.trace"
+check "out-7.5 a read-only file is refused: exit 2" test "$rc" = 2
+check "out-7.6 ... with the reason" grep -q "^pipetrace: cannot write '$dir/ro.trace': " "$tmp/err"
+check "out-7.7 ... and kept" test "$(cat "$dir/ro.trace")" = "read only"
+
+echo "linked" > "$dir/a.trace"
+ln "$dir/a.trace" "$dir/b.trace"
+run "$tri" --trace "$dir/a.trace"
+check "out-7.8 a file with two links is written" test "$rc" = 0 -a "$(head -c 9 "$dir/a.trace")" = "# pipetra"
+check "out-7.9 ... and keeps its links" test "$(stat -c %h "$dir/a.trace")" = 2 -a \
+    "$(stat -c %i "$dir/a.trace")" = "$(stat -c %i "$dir/b.trace")"
+check "out-7.10 ... so the other name sees the new trace" cmp -s "$dir/a.trace" "$dir/b.trace"
+echo "linked" > "$dir/a.trace"
+run "$tri" --trace "$dir/a.trace" --image /dev/full
+check "out-7.11 a failed run leaves a linked file as it was" test "$rc" = 2 -a "$(cat "$dir/b.trace")" = linked
+
+long=$(printf 'n%.0s' $(seq 249))
+for n in 249 255; do
+    name=$(printf '%s' "$long$long" | cut -c1-$((n - 6))).trace
+    run "$tri" --trace "$dir/$name"
+    check "out-7.12 a name of $n bytes is written" test "$rc" = 0 -a -s "$dir/$name"
+done
+ls -A "$dir" > "$tmp/listing"
+check "out-7.13 no temporary file left" test "$(grep -c pipetrace "$tmp/listing")" = 0
+
+# A directory where no file can be made (immutable with chattr, else
+# read-only when not root): a writable file in it is written in place.
+dir="$tmp/rodir"
+mkdir "$dir"
+echo old > "$dir/t.trace"
+locked=
+if chattr +i "$dir" 2>/dev/null; then locked=chattr
+elif [ "$(id -u)" != 0 ]; then chmod 555 "$dir"; locked=chmod
+fi
+if [ -n "$locked" ]; then
+    run "$tri" --trace "$dir/t.trace" --image /dev/full
+    check "out-7.14 no temporary file can be made: a failed run keeps the old file" \
+        test "$rc" = 2 -a "$(cat "$dir/t.trace")" = old
+    run "$tri" --trace "$dir/t.trace"
+    check "out-7.15 ... and a good run writes it in place" test "$rc" = 0 -a \
+        "$(head -c 9 "$dir/t.trace")" = "# pipetra"
+    run "$tri" --trace "$dir/new.trace"
+    check "out-7.16 ... a new file there cannot be made: exit 2" test "$rc" = 2 -a ! -e "$dir/new.trace"
+    if [ "$locked" = chattr ]; then chattr -i "$dir"; else chmod 755 "$dir"; fi
+else
+    skipped=$((skipped + 3))
+fi
+
+[ "$skipped" -gt 0 ] && echo "$skipped skipped (no way to lock a directory here)"
+report
