@@ -98,5 +98,46 @@ else
     skipped=$((skipped + 3))
 fi
 
+# ---- an output over an input, or over the other output
+dir="$tmp/same"
+mkdir "$dir"
+cp "$tri" "$dir/x.scene"
+run "$dir/x.scene" --trace "$dir/x.scene"
+check "out-4.1 --trace SCENE is refused: exit 2" test "$rc" = 2
+check "out-4.2 ... with OUT: error: ..." grep -q "^$dir/x.scene: error: --trace names the scene file" "$tmp/err"
+check "out-4.3 ... and the scene kept" cmp -s "$tri" "$dir/x.scene"
+ln -s x.scene "$dir/sym.scene"
+ln "$dir/x.scene" "$dir/hard.scene"
+run "$dir/x.scene" --image "$dir/sym.scene"
+check "out-4.4 --image through a symbolic link to the scene: exit 2" test "$rc" = 2
+run "$dir/sym.scene" --trace "$dir/hard.scene"
+check "out-4.5 --trace a hard link of the scene: exit 2" test "$rc" = 2
+check "out-4.6 ... and the scene kept" cmp -s "$tri" "$dir/x.scene"
+"$exe" - --trace "$dir/x.scene" < "$dir/x.scene" 2>"$tmp/err"
+check "out-4.7 --trace the file standard input reads the scene from: exit 2" test "$?" = 2
+check "out-4.8 ... and the scene kept" cmp -s "$tri" "$dir/x.scene"
+echo "old" > "$dir/out"
+run "$tri" --trace "$dir/out" --image "$dir/./out"
+check "out-4.9 --image F --trace F: exit 2" test "$rc" = 2 -a "$(cat "$dir/out")" = old
+check "out-4.10 ... with OUT: error: ..." grep -q "^$dir/./out: error: --trace and --image name the same file" "$tmp/err"
+run "$tri" --trace "$dir/new" --image "$dir/../same/new"
+check "out-4.11 ... also when F does not exist yet" test "$rc" = 2 -a ! -e "$dir/new"
+run "$tri" --trace /dev/null --image /dev/null
+check "out-4.12 a device twice is fine" test "$rc" = 0
+
+# ---- smaller: the reason a trace cannot be written; '-' as the scene
+run "$tri" --trace /dev/full
+check "out-14.1 --trace /dev/full: exit 2 with the reason" test "$rc" = 2 -a \
+    "$err" = "pipetrace: cannot write the trace to '/dev/full': No space left on device"
+"$exe" - < "$tri" > "$tmp/stdin.trace" 2>"$tmp/err"
+check "out-14.2 '-' reads the scene from standard input" test "$?" = 0
+"$exe" "$tri" | sed "s|^scene        $tri\$|scene        <stdin>|" > "$tmp/file.trace"
+check "out-14.3 ... the trace of the file, named <stdin>" cmp -s "$tmp/stdin.trace" "$tmp/file.trace"
+printf 'framebuffer 10 10\nmodel m\nv 1 2\n' | "$exe" - > /dev/null 2>"$tmp/err"
+check "out-14.4 ... its errors say <stdin>:LINE:COL" test "$?" = 2 -a \
+    "$(cat "$tmp/err")" = "<stdin>:3:1: error: expected 3 numbers after 'v', found 2"
+"$exe" step - --vertex 1 --all < "$tri" > "$tmp/out" 2>&1
+check "out-14.5 ... in the other commands too" grep -q "of model tri in <stdin>" "$tmp/out"
+
 [ "$skipped" -gt 0 ] && echo "$skipped skipped (no way to lock a directory here)"
 report

@@ -432,11 +432,38 @@ int pt_outfile_finish(pt_outfile *o, int bad, const char *who)
     return 0;
 }
 
+/* Where a file that does not exist yet would be made: its directory's real
+** path, "/", its last name.  NULL when that directory does not exist (or out
+** of memory). */
+static char *new_place(const char *path)
+{
+    char *dir = dir_of(path), *real = dir ? realpath(dir, NULL) : NULL, *out = NULL;
+    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+
+    if (real && (out = malloc(strlen(real) + strlen(base) + 2)) != NULL)
+        sprintf(out, "%s/%s", real, base);
+    free(real);
+    free(dir);
+    return out;
+}
+
 int pt_outfile_same(const char *a, const char *b)
 {
     struct stat sa, sb;
+    int ha, hb, same;
+    char *pa, *pb;
 
     if (!strcmp(a, "-") || !strcmp(b, "-")) return 0;
-    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && S_ISREG(sa.st_mode)
-           && S_ISREG(sb.st_mode) && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    ha = stat(a, &sa) == 0;
+    hb = stat(b, &sb) == 0;
+    if (ha && hb)
+        return S_ISREG(sa.st_mode) && S_ISREG(sb.st_mode) && sa.st_dev == sb.st_dev
+               && sa.st_ino == sb.st_ino;
+    if (ha || hb || lstat(a, &sa) == 0 || lstat(b, &sb) == 0) return 0;
+    pa = new_place(a);                      /* two new files: the same name? */
+    pb = new_place(b);
+    same = pa && pb && !strcmp(pa, pb);
+    free(pa);
+    free(pb);
+    return same;
 }

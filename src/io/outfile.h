@@ -61,8 +61,10 @@ void pt_outfile_abort(pt_outfile *o);
 ** message, prefixed "WHO: ", to standard error.  Returns 0, or -1. */
 int pt_outfile_finish(pt_outfile *o, int bad, const char *who);
 
-/* 1 when a and b both name one existing file (same device and inode, links
-** followed), else 0; "-" (standard output) is no file here.  For the checks
+/* 1 when a and b both name one existing regular file (same device and
+** inode, links followed) or, neither existing, one new file (the same name
+** in the same directory), else 0; "-" (standard output) and devices are no
+** file here (--image /dev/null --trace /dev/null is fine).  For the checks
 ** that refuse to write an output over an input or over another output.
 ** This function can't fail. */
 int pt_outfile_same(const char *a, const char *b);

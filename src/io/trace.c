@@ -2,6 +2,7 @@
 ** src/io/trace.c -- write the trace: JSON Lines, aligned text, or CSV
 ** See LICENSE for copyright and license.
 */
+#include <errno.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
@@ -13,9 +14,15 @@
 
 /* ===== the output block ===== */
 
+/* A write failed: keep the first reason (errno) for the message. */
+static void write_failed(pt_trace *t)
+{
+    if (!t->failed) t->failed = errno ? errno : EIO;
+}
+
 static void flush(pt_trace *t)
 {
-    if (t->len && fwrite(t->buf, 1, t->len, t->f) != t->len) t->failed = 1;
+    if (t->len && fwrite(t->buf, 1, t->len, t->f) != t->len) write_failed(t);
     t->len = 0;
 }
 
@@ -23,7 +30,7 @@ static void put(pt_trace *t, const char *s, size_t n)
 {
     if (t->len + n > sizeof t->buf) flush(t);
     if (n > sizeof t->buf) {                /* longer than a block: write as is */
-        if (fwrite(s, 1, n, t->f) != n) t->failed = 1;
+        if (fwrite(s, 1, n, t->f) != n) write_failed(t);
         return;
     }
     memcpy(t->buf + t->len, s, n);
@@ -842,6 +849,6 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
 int pt_trace_finish(pt_trace *t)
 {
     flush(t);
-    if (fflush(t->f) != 0) t->failed = 1;
+    if (fflush(t->f) != 0) write_failed(t);
     return t->failed ? -1 : 0;
 }

@@ -29,7 +29,8 @@
 ** MESSAGE", "Try 'pipetrace --help'.") and return PT_EXIT_USAGE. */
 int pt_cli_usage(const char *cmd, const char *fmt, ...) PT_PRINTF_LIKE(2, 3);
 
-/* Load the scene at path, or the built-in scene when path is NULL.  Returns 0,
+/* Load the scene at path ("-": standard input, named "<stdin>" in messages
+** and the trace), or the built-in scene when path is NULL.  Returns 0,
 ** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */
 int pt_cli_load(pt_scene *s, const char *path);
 
