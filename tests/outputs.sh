@@ -125,6 +125,14 @@ check "out-4.11 ... also when F does not exist yet" test "$rc" = 2 -a ! -e "$dir
 run "$tri" --trace /dev/null --image /dev/null
 check "out-4.12 a device twice is fine" test "$rc" = 0
 
+# ---- negative zero in JSON keeps its sign
+run tests/extreme/negative-zero.scene --format jsonl
+check "out-9.1 JSON writes negative zero as -0.0" grep -q '"v":1,"stage":"model","x":-0.0,"y":-0.0,"z":-2}' "$tmp/out"
+check "out-9.2 ... and no -0 that reads back as the integer 0" test -z "$(grep -E '[:,[]-0[],}]' "$tmp/out")"
+cp "$tmp/out" "$tmp/nz.jsonl"
+run diff "$tmp/nz.jsonl" "$tmp/nz.jsonl"
+check "out-9.3 ... and diff reads it back" test "$rc" = 0
+
 # ---- smaller: the reason a trace cannot be written; '-' as the scene
 run "$tri" --trace /dev/full
 check "out-14.1 --trace /dev/full: exit 2 with the reason" test "$rc" = 2 -a \

@@ -76,12 +76,14 @@ static void put_i64(pt_trace *t, int64_t x)
     else put_u64(t, (uint64_t)x);
 }
 
-/* A double in JSON: shortest round-trip, non-finite as a string. */
+/* A double in JSON: shortest round-trip, non-finite as a string, negative
+** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign). */
 static void put_json_num(pt_trace *t, double x)
 {
     char b[PT_NUMLEN];
     size_t n = pt_fmt_shortest(b, x);
 
+    if (x == 0 && signbit(x)) { put(t, "-0.0", 4); return; }
     if (isfinite(x)) { put(t, b, n); return; }
     put(t, "\"", 1); put(t, b, n); put(t, "\"", 1);
 }
