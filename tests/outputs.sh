@@ -125,6 +125,27 @@ check "out-4.11 ... also when F does not exist yet" test "$rc" = 2 -a ! -e "$dir
 run "$tri" --trace /dev/null --image /dev/null
 check "out-4.12 a device twice is fine" test "$rc" = 0
 
+# ---- the text trace escapes the scene path as JSONL does
+dir="$tmp/path"
+mkdir "$dir"
+odd="$dir/$(printf 'a\nb\033[31mc\\d"')e.scene"
+cp "$tri" "$odd"
+run "$odd" --trace "$dir/odd.trace"
+check "out-8.1 a path with a newline, ESC, \\ and \": one scene line" \
+    test "$rc" = 0 -a "$(sed -n 2p "$dir/odd.trace")" = "scene        $dir/a\\u000ab\\u001b[31mc\\\\d\\\"e.scene"
+check "out-8.2 ... no ESC byte for the terminal" test "$(tr -dc '\033' < "$dir/odd.trace" | wc -c)" = 0
+run "$odd" --format jsonl --trace "$dir/odd.jsonl"
+check "out-8.3 ... escaped as the JSONL header's \"scene\"" grep -qF \
+    "\"scene\":\"$(sed -n 's/^scene        //p' "$dir/odd.trace")\"," "$dir/odd.jsonl"
+run diff "$dir/odd.trace" "$dir/odd.trace"
+check "out-8.4 ... and the text reader reads it back (diff)" test "$rc" = 0
+run diff "$dir/odd.jsonl" "$dir/odd.trace"
+check "out-8.5 ... against the JSONL trace too" test "$rc" = 0
+sed '2s/$/\\q/' "$dir/odd.trace" > "$dir/bad.trace"
+run diff "$dir/bad.trace" "$dir/odd.trace"
+check "out-8.6 a bad escape in the scene path: FILE:LINE:COL: error" test "$rc" = 2 -a \
+    -n "$(grep "^$dir/bad.trace:2:[0-9]*: error: bad escape in the scene path" "$tmp/err")"
+
 # ---- negative zero in JSON keeps its sign
 run tests/extreme/negative-zero.scene --format jsonl
 check "out-9.1 JSON writes negative zero as -0.0" grep -q '"v":1,"stage":"model","x":-0.0,"y":-0.0,"z":-2}' "$tmp/out"

@@ -94,13 +94,15 @@ static void put_short(pt_trace *t, double x)
     put(t, b, pt_fmt_shortest(b, x));
 }
 
-/* A string in JSON quotes, escaping what JSON requires. */
-static void put_json_str(pt_trace *t, const char *s)
+/* A string's characters as JSON writes them inside quotes: " and \ after a
+** backslash, control characters as \u00XX, a byte that is no UTF-8 as
+** \ufffd.  The text header writes the scene path so too: one line, nothing
+** for a terminal to act on, and tread_text.c reads it back. */
+static void put_json_chars(pt_trace *t, const char *s)
 {
     const unsigned char *p = (const unsigned char *)s;
     int n;
 
-    put(t, "\"", 1);
     while (*p) {
         unsigned char c = *p;
         if (c == '"' || c == '\\') { char e[2] = {'\\', (char)c}; put(t, e, 2); p++; }
@@ -108,6 +110,13 @@ static void put_json_str(pt_trace *t, const char *s)
         else if ((n = pt_sbuf_utf8_len(p)) == 0) { puts_(t, "\\ufffd"); p++; }  /* a path's bad byte */
         else { put(t, (const char *)p, (size_t)n); p += n; }
     }
+}
+
+/* A string in JSON quotes, escaping what JSON requires. */
+static void put_json_str(pt_trace *t, const char *s)
+{
+    put(t, "\"", 1);
+    put_json_chars(t, s);
     put(t, "\"", 1);
 }
 
@@ -354,7 +363,7 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     int st, i;
 
     puts_(t, "# pipetrace trace, format version 1\nscene        ");
-    puts_(t, s->path);
+    put_json_chars(t, s->path);
     puts_(t, "\nframebuffer  "); put_i64(t, s->fb_w); puts_(t, " x "); put_i64(t, s->fb_h);
     puts_(t, ", background "); put_rgb(t, s->background, " ");
     puts_(t, "\nviewport     "); put_i64(t, s->vp_w); puts_(t, " x "); put_i64(t, s->vp_h);

@@ -243,6 +243,26 @@ static int t_size(pt_treader *r, cur *c, int *w, int *h)
     return 0;
 }
 
+/* "scene        PATH": the path escaped as in a JSON string, without the
+** quotes (trace.c), which a raw control character or a bad escape breaks. */
+static int text_scene(pt_treader *r)
+{
+    const char *s = r->line + 6;
+    int k;
+
+    while (s < r->eol && *s == ' ') s++;
+    for (; s < r->eol; s++) {
+        if ((unsigned char)*s < 0x20) return pt_tr_fail(r, s, "control character in the scene path");
+        if (*s != '\\') continue;
+        if (s + 1 < r->eol && s[1] && strchr("\"\\/bfnrt", s[1])) { s++; continue; }
+        for (k = 2; k < 6 && s + k < r->eol && s[k] && strchr("0123456789abcdefABCDEF", s[k]); k++) ;
+        if (s + 1 >= r->eol || s[1] != 'u' || k < 6)
+            return pt_tr_fail(r, s, "bad escape in the scene path");
+        s += 5;
+    }
+    return 0;
+}
+
 static int text_header_line(pt_treader *r)
 {
     pt_thdr *h = &r->t->hdr;
@@ -260,7 +280,8 @@ static int text_header_line(pt_treader *r)
         h->models[h->nmodels - 1].left_out |= 1u << st;
         return 0;
     }
-    if (starts(r, "scene ") || starts(r, "obj placed ") || starts(r, "  ") ||
+    if (starts(r, "scene ")) return text_scene(r);
+    if (starts(r, "obj placed ") || starts(r, "  ") ||
         starts(r, "projection ") || starts(r, "view ")) return 0;  /* nothing diff needs */
     if (pt_tr_is(w, n, "framebuffer")) return t_size(r, &c, &h->fb_w, &h->fb_h);
     if (pt_tr_is(w, n, "viewport")) {
