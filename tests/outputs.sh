@@ -24,7 +24,7 @@ signal_case() {     # signal_case ID SIGNAL
     pid=$!
     timeout 60 sh -c 'exec 3<"$1"; kill -"$2" "$3"' sh "$dir/img.ppm" "$2" "$pid"
     opened=$?
-    wait "$pid"; prc=$?
+    { wait "$pid"; } 2>/dev/null; prc=$?
     check "$1 SIG$2 while writing: the run was stopped by it" test "$opened" = 0 -a "$prc" -gt 128
     check "$1 ... leaves no temporary file" test "$(ls -A "$dir" | tr '\n' ' ')" = "img.ppm out.trace "
     check "$1 ... and the old file as it was" test "$(cat "$dir/out.trace")" = "old trace"
@@ -153,6 +153,24 @@ check "out-9.2 ... and no -0 that reads back as the integer 0" test -z "$(grep -
 cp "$tmp/out" "$tmp/nz.jsonl"
 run diff "$tmp/nz.jsonl" "$tmp/nz.jsonl"
 check "out-9.3 ... and diff reads it back" test "$rc" = 0
+
+# ---- null per value: x_pp infinite, y_pp = 22.9895 keeps y_vp = 7, y_fb = 10
+half=tests/data/null-per-value.scene
+run "$half" --vertex 1 --format jsonl --trace "$tmp/half.jsonl"
+check "out-10.1 JSONL viewport: x null, y kept" grep -q '"stage":"viewport","x":null,"y":7,"inside":false,"warning":\["out_of_range"\]}' "$tmp/half.jsonl"
+check "out-10.2 JSONL framebuffer: x null, y kept" grep -q '"stage":"framebuffer","x":null,"y":10}' "$tmp/half.jsonl"
+check "out-10.3 ... and no index" grep -q '"stage":"index","i":null}' "$tmp/half.jsonl"
+run "$half" --vertex 1 --all-stages --trace "$tmp/half.trace"
+check "out-10.4 text: none and 7" grep -qE '^m v1 +viewport +x_vp = +none +y_vp = +7 +outside' "$tmp/half.trace"
+check "out-10.5 text: none and 10" grep -qE '^m v1 +framebuffer +x_fb = +none +y_fb = +10$' "$tmp/half.trace"
+run "$half" --vertex 1 --format csv
+check "out-10.6 CSV: x empty, y kept" test -n "$(echo "$out" | grep -x 'm,1,viewport,,7,,0,,,out_of_range,')" \
+    -a -n "$(echo "$out" | grep -x 'm,1,framebuffer,,10,,,,,,')"
+run diff "$tmp/half.trace" "$tmp/half.jsonl"
+check "out-10.7 both readers read a half-null pixel back" test "$rc" = 0
+sed 's/"y":7,/"y":8,/' "$tmp/half.jsonl" > "$tmp/half8.jsonl"
+run diff "$tmp/half.trace" "$tmp/half8.jsonl"
+check "out-10.8 ... and its value counts (y_vp 7 against 8 differs)" test "$rc" = 1
 
 # ---- smaller: the reason a trace cannot be written; '-' as the scene
 run "$tri" --trace /dev/full

@@ -557,12 +557,11 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
             if (k) puts_(t, "  ");
             put_lhs(t, r->stage, k); put_fixed_col(t, v[k], t->precision);
         }
-    } else if (r->flags & PT_REC_NULL) {
-        put_lhs(t, r->stage, 0); put_col(t, "none", 4, 12);
-        puts_(t, "  "); put_lhs(t, r->stage, 1); put_col(t, "none", 4, 12);
-    } else {
-        put_lhs(t, r->stage, 0); put_int_col(t, r->ix);
-        puts_(t, "  "); put_lhs(t, r->stage, 1); put_int_col(t, r->iy);
+    } else {                                /* viewport, framebuffer: null per value */
+        put_lhs(t, r->stage, 0);
+        if (pt_rec_has(r, 0)) put_int_col(t, r->ix); else put_col(t, "none", 4, 12);
+        puts_(t, "  "); put_lhs(t, r->stage, 1);
+        if (pt_rec_has(r, 1)) put_int_col(t, r->iy); else put_col(t, "none", 4, 12);
     }
     if (r->flags & PT_REC_BEHIND) puts_(t, "  behind the camera");
     if (r->stage == PT_STAGE_VIEWPORT)
@@ -610,7 +609,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         int k;
         for (k = 0; k < pt_stage_infos[r->stage].nint; k++) {
             put_key(t, r->stage, k);
-            if (r->flags & PT_REC_NULL) puts_(t, "null"); else put_i64(t, n[k]);
+            if (pt_rec_has(r, k)) put_i64(t, n[k]); else puts_(t, "null");
         }
     }
     if (r->stage == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND))
@@ -654,7 +653,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
         put(t, ",", 1);
         if (k < dims) put_short(t, v[k]);
         else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
-                 && !(r->flags & PT_REC_NULL))
+                 && pt_rec_has(r, k))
             put_i64(t, k ? r->iy : r->ix);
     }
     put(t, ",", 1);

@@ -101,7 +101,8 @@ static int t_vertex(pt_treader *r, cur *c, uint32_t model, uint64_t vnum, int cl
     pt_tvrec *rec;
     const char *w;
     size_t n;
-    int st = pt_tr_stage_named(sw, sn), k, isnull = 0, nul;
+    int st = pt_tr_stage_named(sw, sn), k, nul = 0;
+    unsigned nulls = 0;
 
     if (st < 0) return pt_tr_fail(r, sw, "unknown stage '%.*s'", (int)(sn > 40 ? 40 : sn), sw);
     if (clipv && pt_tr_clipv_number(r, model, vnum, st, sw, &vnum) != 0) return -1;
@@ -113,11 +114,10 @@ static int t_vertex(pt_treader *r, cur *c, uint32_t model, uint64_t vnum, int cl
             if (text_real(r, c, &rec->u.d[k]) != 0) return -1;
         } else {
             if (text_int(r, c, &rec->u.n[k], st != PT_STAGE_CVV, &nul) != 0) return -1;
-            if (k && nul != isnull) return pt_tr_fail(r, c->p, "one coordinate none, the other not");
-            isnull = nul;
+            if (nul) nulls |= 1u << k;      /* null per value */
         }
     }
-    if (isnull) rec->flags |= PT_REC_NULL;
+    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->nint);
     while (word(c, &w, &n)) {               /* flags; then notes and warnings */
         if (pt_tr_is(w, n, "!") || w[0] == '(') break;
         if (st == PT_STAGE_IMAGE && pt_tr_is(w, n, "behind")) {
