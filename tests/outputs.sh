@@ -31,7 +31,12 @@ signal_case() {     # signal_case ID SIGNAL
 }
 signal_case out-3.1 INT
 signal_case out-3.2 TERM
-signal_case out-3.3 KILL            # the temporary file has no name (O_TMPFILE)
+# SIGKILL cannot be caught: only a temporary file without a name (O_TMPFILE,
+# where the file system has it) leaves nothing then.
+if python3 -c 'import os, sys; os.close(os.open(sys.argv[1], os.O_TMPFILE | os.O_WRONLY))' "$tmp" 2>/dev/null
+then signal_case out-3.3 KILL
+else skipped=$((skipped + 3))
+fi
 
 # ---- replacing a file keeps what it was
 dir="$tmp/keep"
@@ -186,5 +191,5 @@ check "out-14.4 ... its errors say <stdin>:LINE:COL" test "$?" = 2 -a \
 "$exe" step - --vertex 1 --all < "$tri" > "$tmp/out" 2>&1
 check "out-14.5 ... in the other commands too" grep -q "of model tri in <stdin>" "$tmp/out"
 
-[ "$skipped" -gt 0 ] && echo "$skipped skipped (no way to lock a directory here)"
+[ "$skipped" -gt 0 ] && echo "$skipped skipped (no O_TMPFILE, or no way to lock a directory here)"
 report
