@@ -129,6 +129,14 @@ run "$tri" --trace "$dir/new" --image "$dir/../same/new"
 check "out-4.11 ... also when F does not exist yet" test "$rc" = 2 -a ! -e "$dir/new"
 run "$tri" --trace /dev/null --image /dev/null
 check "out-4.12 a device twice is fine" test "$rc" = 0
+run journey "$dir/x.scene" --vertex 1 --svg "$dir/hard.scene"
+check "out-4.13 journey --svg over the scene: exit 2, scene kept" test "$rc" = 2 -a \
+    -n "$(grep "^$dir/hard.scene: error: --svg names the scene file" "$tmp/err")" -a "$(cmp "$tri" "$dir/x.scene" && echo same)" = same
+run journey "$dir/x.scene" --vertex 1 --svg "$dir/j.svg" --html "$dir/./j.svg"
+check "out-4.14 journey --svg F --html F: exit 2" test "$rc" = 2
+run accuracy "$dir/x.scene" --repeat 1 --svg "$dir/sym.scene"
+check "out-4.15 accuracy --svg over the scene: exit 2, scene kept" test "$rc" = 2 -a \
+    "$(cmp "$tri" "$dir/x.scene" && echo same)" = same
 
 # ---- the text trace escapes the scene path as JSONL does
 dir="$tmp/path"

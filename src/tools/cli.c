@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/cli.h"
+#include "io/outfile.h"
 #include "core/pipetrace.h"
 
 /* Standard input as a scene named "<stdin>": read whole, up to the chunk
@@ -53,6 +54,28 @@ int pt_cli_load(pt_scene *s, const char *path)
     if (rc == 0) return 0;
     fprintf(stderr, "%s\n", err);
     return PT_EXIT_INPUT;
+}
+
+int pt_cli_outputs(const char *scene, const char *const *out, const char *const *opt, int n)
+{
+    const char *in = scene && !strcmp(scene, "-") ? "/dev/stdin" : scene;
+    int k, i;
+
+    for (k = 0; k < n; k++) {
+        if (!out[k]) continue;
+        if (in && pt_outfile_same(out[k], in)) {
+            fprintf(stderr, "%s: error: %s names the scene file%s; writing it would "
+                    "destroy the scene\n", out[k], opt[k], in == scene ? "" : " (standard input)");
+            return PT_EXIT_INPUT;
+        }
+        for (i = 0; i < k; i++)
+            if (out[i] && pt_outfile_same(out[i], out[k])) {
+                fprintf(stderr, "%s: error: %s and %s name the same file; one would "
+                        "overwrite the other\n", out[k], opt[i], opt[k]);
+                return PT_EXIT_INPUT;
+            }
+    }
+    return 0;
 }
 
 const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *name)

@@ -150,34 +150,6 @@ static int check_filters(const cli *c, const pt_scene *s)
     return 0;
 }
 
-/* ===== outputs over inputs ===== */
-
-/* An output that is the scene file, or the other output, would be lost or
-** would destroy the input (same file by device and inode, links followed;
-** a scene "-" is what standard input reads).  Prints "OUT: error: ..." and
-** returns PT_EXIT_INPUT then, else 0. */
-static int check_outputs(const cli *c)
-{
-    const char *scene = c->scene && !strcmp(c->scene, "-") ? "/dev/stdin" : c->scene;
-    const char *out[2] = {c->trace, c->image}, *opt[2] = {"--trace", "--image"};
-    int k;
-
-    for (k = 0; k < 2; k++) {
-        if (out[k] && scene && pt_outfile_same(out[k], scene)) {
-            fprintf(stderr, "%s: error: %s names the scene file%s; writing it would "
-                    "destroy the scene\n", out[k], opt[k], scene == c->scene ? "" :
-                    " (standard input)");
-            return PT_EXIT_INPUT;
-        }
-    }
-    if (c->trace && c->image && pt_outfile_same(c->trace, c->image)) {
-        fprintf(stderr, "%s: error: --trace and --image name the same file; one "
-                "would overwrite the other\n", c->image);
-        return PT_EXIT_INPUT;
-    }
-    return 0;
-}
-
 /* ===== main ===== */
 
 int main(int argc, char **argv)
@@ -202,7 +174,10 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "stages") == 0) return pt_cmd_stages(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
-    if (check_outputs(&c) != 0) return PT_EXIT_INPUT;
+    {
+        const char *out[2] = {c.trace, c.image}, *opt[2] = {"--trace", "--image"};
+        if (pt_cli_outputs(c.scene, out, opt, 2) != 0) return PT_EXIT_INPUT;
+    }
 
     if (pt_cli_load(&s, c.scene) != 0) return PT_EXIT_INPUT;
     rc = check_filters(&c, &s);
