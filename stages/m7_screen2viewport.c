@@ -10,13 +10,12 @@
 pt_pix pt_screen2viewport(pt_vec3 s, int w, int h, const pt_sink *sink)
 {
     pt_pix vp = {0, 0, 0};
+    int has = (fabs(s.x) < PT_PIX_LIMIT) | (fabs(s.y) < PT_PIX_LIMIT) << 1;  /* 0 for NaN */
 
     assert(w > 0 && h > 0);
-    if (fabs(s.x) < PT_PIX_LIMIT && fabs(s.y) < PT_PIX_LIMIT) {  /* false for NaN */
-        vp.x = (int64_t)floor(s.x);         /* x_vp = floor(x_s) */
-        vp.y = (int64_t)floor(s.y);         /* y_vp = floor(y_s) */
-        vp.ok = 1;
-    }
+    if (has & 1) vp.x = (int64_t)floor(s.x);   /* x_vp = floor(x_s) */
+    if (has & 2) vp.y = (int64_t)floor(s.y);   /* y_vp = floor(y_s) */
+    vp = pt_pix_mark(vp, has);              /* null per value */
     pt_emit_viewport(sink, vp, w, h);       /* record: null, inside or outside */
     return vp;
 }

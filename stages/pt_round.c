@@ -30,8 +30,10 @@ void pt_emit_viewport(const pt_sink *sink, pt_pix vp, int w, int h)
 
     if (!sink) return;                      /* nobody listens: no record */
     r.stage = PT_STAGE_VIEWPORT;
-    if (!vp.ok) { r.flags |= PT_REC_NULL; r.warn |= PT_WARN_RANGE; }
+    r.flags = pt_pix_flags(vp);             /* null per value */
+    if (!vp.ok) r.warn |= PT_WARN_RANGE;
     else if (pt_inside(vp.x, vp.y, w, h)) r.flags |= PT_REC_INSIDE;
-    r.ix = vp.x; r.iy = vp.y;
+    r.ix = pt_pix_has(vp, 0) ? vp.x : 0;
+    r.iy = pt_pix_has(vp, 1) ? vp.y : 0;
     pt_emit(sink, &r);
 }

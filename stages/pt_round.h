@@ -49,6 +49,20 @@ static inline int pt_pix_round(double x, int64_t *out)
     return 1;
 }
 
+/* p as a stage returns it, when bit 0 of has says x has a value and bit 1
+** that y has: ok when both; with one, the other becomes PT_PIX_NONE (null
+** per value); with neither, {0, 0, 0}.  This function can't fail. */
+static inline pt_pix pt_pix_mark(pt_pix p, int has)
+{
+    p.ok = has == 3;
+    if (!has) p.x = p.y = 0;
+    else if (has != 3) {
+        if (!(has & 1)) p.x = PT_PIX_NONE;
+        if (!(has & 2)) p.y = PT_PIX_NONE;
+    }
+    return p;
+}
+
 /* 1 when (x, y) lies inside a w x h rectangle whose upper-left pixel is (0, 0):
 ** a viewport pixel inside its viewport, or a framebuffer pixel inside the
 ** framebuffer.  This function can't fail. */

@@ -25,9 +25,25 @@
 typedef struct pt_vec3 { double x, y, z; } pt_vec3;
 typedef struct pt_vec2 { double x, y; } pt_vec2;
 
-/* A pixel position.  ok == 0 means "no value": the coordinate was not finite or too
-** large for rounding to an integer to mean anything (see s4_pixel2viewport.h). */
+/* A pixel position.  ok == 0 means "no pixel": a coordinate was not finite or
+** too large for rounding to an integer to mean anything (see
+** s4_pixel2viewport.h).  The other coordinate may still have its value (x_pp
+** infinite, y_pp = 22.99: y_vp is h - 23); then the one without is
+** PT_PIX_NONE.  Ask pt_pix_has(), which counts {0, 0, 0} as neither. */
 typedef struct pt_pix { int64_t x, y; int ok; } pt_pix;
+
+/* The coordinate without value of a pixel whose other coordinate has one:
+** 3 * 2^61, beyond every value a stage gives (below 2^62 + 2^31 in size) and
+** far enough from 2^63 that adding a viewport's corner cannot overflow. */
+#define PT_PIX_NONE ((int64_t)3 << 61)
+
+/* 1 when coordinate k (0: x, 1: y) of p has a value.  This function can't fail. */
+static inline int pt_pix_has(pt_pix p, int k)
+{
+    int64_t mine = k ? p.y : p.x, other = k ? p.x : p.y;
+
+    return p.ok || (mine != PT_PIX_NONE && other == PT_PIX_NONE);
+}
 
 typedef enum pt_stage {
     PT_STAGE_MODEL,
@@ -51,6 +67,8 @@ typedef enum pt_stage {
 #define PT_REC_BEHIND  0x01u   /* image: z_c > 0 under a perspective camera */
 #define PT_REC_INSIDE  0x02u   /* viewport: 0 <= x_vp < w and 0 <= y_vp < h */
 #define PT_REC_NULL    0x04u   /* viewport, framebuffer, index: no value */
+#define PT_REC_HAS_X   0x08u   /* with NULL (viewport, framebuffer): x still */
+#define PT_REC_HAS_Y   0x10u   /*   has its value; y still has its value */
 
 /* Warnings a stage raises about the numbers it produced (docs/stability.md). */
 #define PT_WARN_NONFINITE   0x01u  /* a result is infinite or not a number */
@@ -68,7 +86,9 @@ typedef enum pt_stage {
 /* One vertex at one stage.  Which fields hold values depends on the stage:
 ** model, camera, image use x y z; pixel uses x y; viewport and framebuffer use
 ** ix iy; index uses i.  PT_REC_NULL marks an integer result that does not exist
-** (a pixel outside the framebuffer has no index). */
+** (a pixel outside the framebuffer has no index); a viewport or framebuffer
+** record without a pixel may keep one coordinate (PT_REC_HAS_X, PT_REC_HAS_Y):
+** null is per value.  pt_rec_has() says which. */
 typedef struct pt_vrec {
     pt_stage stage;            /* which stage produced it */
     unsigned flags;            /* PT_REC_* */
@@ -80,6 +100,24 @@ typedef struct pt_vrec {
     int64_t ix, iy;            /* viewport, framebuffer */
     int64_t i;                 /* index */
 } pt_vrec;
+
+/* 1 when integer value k (0: ix or i, 1: iy) of a record with these flags
+** (of r) has a value; the flags a pixel p gives its record (0, or PT_REC_NULL
+** with PT_REC_HAS_X/Y for the coordinates that have one).  These functions
+** can't fail. */
+static inline int pt_flags_have(unsigned flags, int k)
+{
+    return !(flags & PT_REC_NULL) || (flags & (k ? PT_REC_HAS_Y : PT_REC_HAS_X)) != 0;
+}
+
+static inline int pt_rec_has(const pt_vrec *r, int k) { return pt_flags_have(r->flags, k); }
+
+static inline unsigned pt_pix_flags(pt_pix p)
+{
+    if (p.ok) return 0;
+    return PT_REC_NULL | (pt_pix_has(p, 0) ? PT_REC_HAS_X : 0u)
+                       | (pt_pix_has(p, 1) ? PT_REC_HAS_Y : 0u);
+}
 
 /* Where stages send their records.  The driver sets which model and vertex the
 ** records belong to; stages see only this interface. */

@@ -18,8 +18,9 @@
 **     +-------> x_pp                 y_vp  v
 **
 ** Java keeps these numbers in 32-bit ints; pipetrace keeps them in 64 bits and
-** gives no value (PT_REC_NULL) when |x_pp| or |y_pp| >= PT_PIX_LIMIT or is not a
-** number, with the warning out_of_range (Java's (int) cast wraps from 2^31 on,
+** gives no pixel (PT_REC_NULL) when |x_pp| or |y_pp| >= PT_PIX_LIMIT or is not a
+** number (null per value: the other coordinate keeps its value; pt_pix_has()),
+** with the warning out_of_range (Java's (int) cast wraps from 2^31 on,
 ** and Math.round itself saturates from 2^63).  docs/stages.md#s4.
 */
 #ifndef PT_S4_PIXEL2VIEWPORT_H

@@ -23,7 +23,8 @@
 #include "pt_stage.h"
 
 /* Offset vp by the viewport corner (x_ul, y_ul) and report the framebuffer record
-** to sink (may be NULL).  A vp without value (ok == 0) gives one without value.
+** to sink (may be NULL).  A vp without pixel (ok == 0) gives none either; a
+** coordinate of it that has a value (pt_pix_has()) is still offset.
 ** Requires |vp.x|, |vp.y| < 2^62 (s4 guarantees it).  This function can't fail. */
 pt_pix pt_viewport2fb(pt_pix vp, int x_ul, int y_ul, const pt_sink *sink);
 

@@ -30,6 +30,7 @@ png         1 $B/test_png
 layers      1 sh tests/layers.sh
 golden      1 sh tests/golden.sh $B/pipetrace
 cli         1 sh tests/cli.sh $B/pipetrace
+outputs     2 sh tests/outputs.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace
 kraft       2 sh tests/kraft.sh $B/pipetrace $ref
 extreme     1 sh tests/extreme.sh $B/pipetrace

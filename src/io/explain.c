@@ -365,9 +365,16 @@ static void add_tuple(text *t, const pt_vrec *r, pt_stage st)
     int k, n = pt_coord_count(st);
 
     if (st == PT_STAGE_CVV) add_int(t, r->code, 0);
+    else if ((st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER)
+             && (pt_rec_has(r, 0) || pt_rec_has(r, 1))) {   /* null per value: */
+        add(t, "(");                                      /* "(none, 7)" */
+        if (pt_rec_has(r, 0)) add_int(t, r->ix, 0); else add(t, "none");
+        add(t, ", ");
+        if (pt_rec_has(r, 1)) add_int(t, r->iy, 0); else add(t, "none");
+        add(t, ")");
+    }
     else if (r->flags & PT_REC_NULL) add(t, "none");
     else if (st == PT_STAGE_INDEX) add_int(t, r->i, 0);
-    else if (st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER) add_pair(t, r->ix, r->iy);
     else {
         add(t, "(");
         for (k = 0; k < n; k++) {

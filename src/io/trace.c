@@ -2,6 +2,7 @@
 ** src/io/trace.c -- write the trace: JSON Lines, aligned text, or CSV
 ** See LICENSE for copyright and license.
 */
+#include <errno.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
@@ -13,9 +14,15 @@
 
 /* ===== the output block ===== */
 
+/* A write failed: keep the first reason (errno) for the message. */
+static void write_failed(pt_trace *t)
+{
+    if (!t->failed) t->failed = errno ? errno : EIO;
+}
+
 static void flush(pt_trace *t)
 {
-    if (t->len && fwrite(t->buf, 1, t->len, t->f) != t->len) t->failed = 1;
+    if (t->len && fwrite(t->buf, 1, t->len, t->f) != t->len) write_failed(t);
     t->len = 0;
 }
 
@@ -23,7 +30,7 @@ static void put(pt_trace *t, const char *s, size_t n)
 {
     if (t->len + n > sizeof t->buf) flush(t);
     if (n > sizeof t->buf) {                /* longer than a block: write as is */
-        if (fwrite(s, 1, n, t->f) != n) t->failed = 1;
+        if (fwrite(s, 1, n, t->f) != n) write_failed(t);
         return;
     }
     memcpy(t->buf + t->len, s, n);
@@ -69,12 +76,14 @@ static void put_i64(pt_trace *t, int64_t x)
     else put_u64(t, (uint64_t)x);
 }
 
-/* A double in JSON: shortest round-trip, non-finite as a string. */
+/* A double in JSON: shortest round-trip, non-finite as a string, negative
+** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign). */
 static void put_json_num(pt_trace *t, double x)
 {
     char b[PT_NUMLEN];
     size_t n = pt_fmt_shortest(b, x);
 
+    if (x == 0 && signbit(x)) { put(t, "-0.0", 4); return; }
     if (isfinite(x)) { put(t, b, n); return; }
     put(t, "\"", 1); put(t, b, n); put(t, "\"", 1);
 }
@@ -85,13 +94,15 @@ static void put_short(pt_trace *t, double x)
     put(t, b, pt_fmt_shortest(b, x));
 }
 
-/* A string in JSON quotes, escaping what JSON requires. */
-static void put_json_str(pt_trace *t, const char *s)
+/* A string's characters as JSON writes them inside quotes: " and \ after a
+** backslash, control characters as \u00XX, a byte that is no UTF-8 as
+** \ufffd.  The text header writes the scene path so too: one line, nothing
+** for a terminal to act on, and tread_text.c reads it back. */
+static void put_json_chars(pt_trace *t, const char *s)
 {
     const unsigned char *p = (const unsigned char *)s;
     int n;
 
-    put(t, "\"", 1);
     while (*p) {
         unsigned char c = *p;
         if (c == '"' || c == '\\') { char e[2] = {'\\', (char)c}; put(t, e, 2); p++; }
@@ -99,6 +110,13 @@ static void put_json_str(pt_trace *t, const char *s)
         else if ((n = pt_sbuf_utf8_len(p)) == 0) { puts_(t, "\\ufffd"); p++; }  /* a path's bad byte */
         else { put(t, (const char *)p, (size_t)n); p += n; }
     }
+}
+
+/* A string in JSON quotes, escaping what JSON requires. */
+static void put_json_str(pt_trace *t, const char *s)
+{
+    put(t, "\"", 1);
+    put_json_chars(t, s);
     put(t, "\"", 1);
 }
 
@@ -345,7 +363,7 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     int st, i;
 
     puts_(t, "# pipetrace trace, format version 1\nscene        ");
-    puts_(t, s->path);
+    put_json_chars(t, s->path);
     puts_(t, "\nframebuffer  "); put_i64(t, s->fb_w); puts_(t, " x "); put_i64(t, s->fb_h);
     puts_(t, ", background "); put_rgb(t, s->background, " ");
     puts_(t, "\nviewport     "); put_i64(t, s->vp_w); puts_(t, " x "); put_i64(t, s->vp_h);
@@ -539,12 +557,11 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
             if (k) puts_(t, "  ");
             put_lhs(t, r->stage, k); put_fixed_col(t, v[k], t->precision);
         }
-    } else if (r->flags & PT_REC_NULL) {
-        put_lhs(t, r->stage, 0); put_col(t, "none", 4, 12);
-        puts_(t, "  "); put_lhs(t, r->stage, 1); put_col(t, "none", 4, 12);
-    } else {
-        put_lhs(t, r->stage, 0); put_int_col(t, r->ix);
-        puts_(t, "  "); put_lhs(t, r->stage, 1); put_int_col(t, r->iy);
+    } else {                                /* viewport, framebuffer: null per value */
+        put_lhs(t, r->stage, 0);
+        if (pt_rec_has(r, 0)) put_int_col(t, r->ix); else put_col(t, "none", 4, 12);
+        puts_(t, "  "); put_lhs(t, r->stage, 1);
+        if (pt_rec_has(r, 1)) put_int_col(t, r->iy); else put_col(t, "none", 4, 12);
     }
     if (r->flags & PT_REC_BEHIND) puts_(t, "  behind the camera");
     if (r->stage == PT_STAGE_VIEWPORT)
@@ -592,7 +609,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         int k;
         for (k = 0; k < pt_stage_infos[r->stage].nint; k++) {
             put_key(t, r->stage, k);
-            if (r->flags & PT_REC_NULL) puts_(t, "null"); else put_i64(t, n[k]);
+            if (pt_rec_has(r, k)) put_i64(t, n[k]); else puts_(t, "null");
         }
     }
     if (r->stage == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND))
@@ -636,7 +653,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
         put(t, ",", 1);
         if (k < dims) put_short(t, v[k]);
         else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
-                 && !(r->flags & PT_REC_NULL))
+                 && pt_rec_has(r, k))
             put_i64(t, k ? r->iy : r->ix);
     }
     put(t, ",", 1);
@@ -842,6 +859,6 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
 int pt_trace_finish(pt_trace *t)
 {
     flush(t);
-    if (fflush(t->f) != 0) t->failed = 1;
+    if (fflush(t->f) != 0) write_failed(t);
     return t->failed ? -1 : 0;
 }

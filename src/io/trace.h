@@ -56,7 +56,8 @@ typedef struct pt_trace {
     const pt_plan *plan;         /*   (they outlive the run) */
     pt_journey journey;          /* with explain: the point's whole journey, */
     int journey_made;            /*   as pt_run() handed it over */
-    int failed;                  /* 1 after a write error */
+    int failed;                  /* after a write error: its errno value (EIO
+                                 ** when none was set), else 0 */
     size_t len;                  /* bytes waiting in buf */
     char buf[1 << 16];           /* output block */
 } pt_trace;
@@ -68,7 +69,8 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision);
 ** takes each point's journey, pt_listener.journey). */
 void pt_trace_listener(pt_trace *t, pt_listener *l);
 
-/* Write what is buffered.  Returns 0, or -1 when any write failed. */
+/* Write what is buffered.  Returns 0, or -1 when any write failed (why:
+** t->failed). */
 int pt_trace_finish(pt_trace *t);
 
 #endif

@@ -313,7 +313,8 @@ static int j_vertex(pt_treader *r, const jfield *f, int nf, int clipv)
     const pt_stage_info *sh;
     const jval *v, *sv;
     pt_tvrec *rec;
-    int st, k, isnull = 0, nul;
+    int st, k, nul = 0;
+    unsigned nulls = 0;
     uint32_t model;
     uint64_t vnum;
 
@@ -333,10 +334,9 @@ static int j_vertex(pt_treader *r, const jfield *f, int nf, int clipv)
     for (k = 0; k < sh->nint; k++) {
         if (!(v = need(r, f, nf, sh->key[k], what))) return -1;
         if (jint(r, v, &rec->u.n[k], st != PT_STAGE_CVV, &nul) != 0) return -1;
-        if (k && nul != isnull) return pt_tr_fail(r, v->p, "one coordinate null, the other not");
-        isnull = nul;
+        if (nul) nulls |= 1u << k;          /* null per value */
     }
-    if (isnull) rec->flags |= PT_REC_NULL;
+    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->nint);
     if (st == PT_STAGE_IMAGE && (v = j_get(f, nf, "behind")) != NULL) {
         if (v->kind != J_TRUE && v->kind != J_FALSE) return pt_tr_fail(r, v->p, "expected true or false");
         if (v->kind == J_TRUE) rec->flags |= PT_REC_BEHIND;

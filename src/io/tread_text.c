@@ -101,7 +101,8 @@ static int t_vertex(pt_treader *r, cur *c, uint32_t model, uint64_t vnum, int cl
     pt_tvrec *rec;
     const char *w;
     size_t n;
-    int st = pt_tr_stage_named(sw, sn), k, isnull = 0, nul;
+    int st = pt_tr_stage_named(sw, sn), k, nul = 0;
+    unsigned nulls = 0;
 
     if (st < 0) return pt_tr_fail(r, sw, "unknown stage '%.*s'", (int)(sn > 40 ? 40 : sn), sw);
     if (clipv && pt_tr_clipv_number(r, model, vnum, st, sw, &vnum) != 0) return -1;
@@ -113,11 +114,10 @@ static int t_vertex(pt_treader *r, cur *c, uint32_t model, uint64_t vnum, int cl
             if (text_real(r, c, &rec->u.d[k]) != 0) return -1;
         } else {
             if (text_int(r, c, &rec->u.n[k], st != PT_STAGE_CVV, &nul) != 0) return -1;
-            if (k && nul != isnull) return pt_tr_fail(r, c->p, "one coordinate none, the other not");
-            isnull = nul;
+            if (nul) nulls |= 1u << k;      /* null per value */
         }
     }
-    if (isnull) rec->flags |= PT_REC_NULL;
+    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->nint);
     while (word(c, &w, &n)) {               /* flags; then notes and warnings */
         if (pt_tr_is(w, n, "!") || w[0] == '(') break;
         if (st == PT_STAGE_IMAGE && pt_tr_is(w, n, "behind")) {
@@ -243,6 +243,26 @@ static int t_size(pt_treader *r, cur *c, int *w, int *h)
     return 0;
 }
 
+/* "scene        PATH": the path escaped as in a JSON string, without the
+** quotes (trace.c), which a raw control character or a bad escape breaks. */
+static int text_scene(pt_treader *r)
+{
+    const char *s = r->line + 6;
+    int k;
+
+    while (s < r->eol && *s == ' ') s++;
+    for (; s < r->eol; s++) {
+        if ((unsigned char)*s < 0x20) return pt_tr_fail(r, s, "control character in the scene path");
+        if (*s != '\\') continue;
+        if (s + 1 < r->eol && s[1] && strchr("\"\\/bfnrt", s[1])) { s++; continue; }
+        for (k = 2; k < 6 && s + k < r->eol && s[k] && strchr("0123456789abcdefABCDEF", s[k]); k++) ;
+        if (s + 1 >= r->eol || s[1] != 'u' || k < 6)
+            return pt_tr_fail(r, s, "bad escape in the scene path");
+        s += 5;
+    }
+    return 0;
+}
+
 static int text_header_line(pt_treader *r)
 {
     pt_thdr *h = &r->t->hdr;
@@ -260,7 +280,8 @@ static int text_header_line(pt_treader *r)
         h->models[h->nmodels - 1].left_out |= 1u << st;
         return 0;
     }
-    if (starts(r, "scene ") || starts(r, "obj placed ") || starts(r, "  ") ||
+    if (starts(r, "scene ")) return text_scene(r);
+    if (starts(r, "obj placed ") || starts(r, "  ") ||
         starts(r, "projection ") || starts(r, "view ")) return 0;  /* nothing diff needs */
     if (pt_tr_is(w, n, "framebuffer")) return t_size(r, &c, &h->fb_w, &h->fb_h);
     if (pt_tr_is(w, n, "viewport")) {

@@ -29,9 +29,16 @@
 ** MESSAGE", "Try 'pipetrace --help'.") and return PT_EXIT_USAGE. */
 int pt_cli_usage(const char *cmd, const char *fmt, ...) PT_PRINTF_LIKE(2, 3);
 
-/* Load the scene at path, or the built-in scene when path is NULL.  Returns 0,
+/* Load the scene at path ("-": standard input, named "<stdin>" in messages
+** and the trace), or the built-in scene when path is NULL.  Returns 0,
 ** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */
 int pt_cli_load(pt_scene *s, const char *path);
+
+/* Refuse outputs that would destroy an input or each other: out[k] (given
+** as option opt[k]; NULL: not given) naming the scene file (a scene "-": the
+** file standard input reads) or another output, as pt_outfile_same() tells.
+** Prints "OUT: error: ..." and returns PT_EXIT_INPUT, else returns 0. */
+int pt_cli_outputs(const char *scene, const char *const *out, const char *const *opt, int n);
 
 /* The model called name.  Prints "pipetrace CMD: --model NAME: ..." (cmd
 ** NULL: "pipetrace: --model ...") with the scene's model names and returns NULL

@@ -30,8 +30,9 @@ static const char usage[] =
 "       pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
 "                         [--image FILE]\n"
 "       pipetrace stages [--camera classic|matrix]\n"
-"Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
-"through the classic teaching pipeline and trace every vertex at every stage:\n"
+"Render SCENE (a .scene file or a plain .obj file; -: standard input; none:\n"
+"the built-in scene) through the classic teaching pipeline and trace every\n"
+"vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
 "or, for a scene with 'camera lookat', through the matrix camera:\n"
 "  model -> world -> view -> clip -> cvv -> ndc -> screen -> viewport -> ...\n"
@@ -183,6 +184,10 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "stages") == 0) return pt_cmd_stages(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
+    {
+        const char *out[2] = {c.trace, c.image}, *opt[2] = {"--trace", "--image"};
+        if (pt_cli_outputs(c.scene, out, opt, 2) != 0) return PT_EXIT_INPUT;
+    }
 
     if (pt_cli_load(&s, c.scene) != 0) return PT_EXIT_INPUT;
     rc = check_filters(&c, &s);
@@ -224,7 +229,8 @@ int main(int argc, char **argv)
         rc = 1;
     }
     if (!rc && tr && pt_trace_finish(tr) != 0) {
-        snprintf(err, sizeof err, "cannot write the trace to '%s'", c.trace);
+        snprintf(err, sizeof err, "cannot write the trace to '%s': %s", c.trace,
+                 strerror(tr->failed));
         rc = 1;
     }
     if (!rc && c.image) {

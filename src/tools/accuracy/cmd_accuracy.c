@@ -706,6 +706,7 @@ int pt_cmd_accuracy(int argc, char **argv)
     }
     path = ca.path;
     if (svg && no_time) return pt_cli_usage("accuracy", "--svg plots run time: drop --no-time");
+    if (pt_cli_outputs(path, &svg, (const char *const[]){"--svg"}, 1) != 0) return PT_EXIT_INPUT;
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     st = calloc(1, sizeof *st);

@@ -162,9 +162,11 @@ static unsigned stage_diff(const dctx *c, int st, const pt_tvrec *a, const pt_tv
             if (!pt_diff_same_real(c, a->u.d[k], b->u.d[k])) m |= 1u << k;
     } else if ((a->flags ^ b->flags) & PT_REC_NULL) {
         m |= D_NULL;
-    } else if (!(a->flags & PT_REC_NULL)) {
-        for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++)
-            if (a->u.n[k] != b->u.n[k]) m |= 1u << k;
+    } else {                                /* null per value */
+        for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
+            int ha = pt_flags_have(a->flags, k), hb = pt_flags_have(b->flags, k);
+            if (ha != hb || (ha && a->u.n[k] != b->u.n[k])) m |= 1u << k;
+        }
     }
     if ((a->flags ^ b->flags) & (PT_REC_INSIDE | PT_REC_BEHIND)) m |= D_FLAG;
     return m;
@@ -183,9 +185,9 @@ static void print_stage_diff(int st, const pt_tvrec *a, const pt_tvrec *b, unsig
             printf("%s, actual %s", pt_diff_num(a->u.d[k], b1), pt_diff_num(b->u.d[k], b2));
             if (isfinite(a->u.d[k]) && isfinite(b->u.d[k]))
                 printf(", difference %s", pt_diff_num(b->u.d[k] - a->u.d[k], b3));
-        } else if (a->flags & PT_REC_NULL) {
+        } else if (!pt_flags_have(a->flags, k)) {
             printf("none, actual %" PRId64, b->u.n[k]);
-        } else if (b->flags & PT_REC_NULL) {
+        } else if (!pt_flags_have(b->flags, k)) {
             printf("%" PRId64 ", actual none", a->u.n[k]);
         } else {
             printf("%" PRId64 ", actual %" PRId64, a->u.n[k], b->u.n[k]);

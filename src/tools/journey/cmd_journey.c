@@ -133,6 +133,10 @@ int pt_cmd_journey(int argc, char **argv)
         (html && image && !strcmp(html, image)))
         return pt_cli_usage("journey", "two outputs name the same file: %s",
                             svg && html && !strcmp(svg, html) ? svg : image);
+    {
+        const char *out[3] = {svg, html, image}, *opt[3] = {"--svg", "--html", "--image"};
+        if (pt_cli_outputs(path, out, opt, 3) != 0) return PT_EXIT_INPUT;   /* over the scene */
+    }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     if (s.matrix) {
