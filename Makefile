@@ -9,6 +9,7 @@
 #   make screenshots  rewrite docs/journey-* (needs chromium; on purpose only)
 #   make sanitize  run the tests under -fsanitize=address,undefined
 #   make bench     time parsing, stages, rasterizer and trace output
+#   make fuzz      build the libFuzzer targets (clang) and run each FUZZ_SECONDS
 #   make clean
 
 CC      ?= cc
@@ -115,6 +116,11 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	awk 'BEGIN { print "#include \"core/builtin.h\""; print "const char pt_builtin_scene[] =" } \
 	     { gsub(/\\/, "\\\\"); gsub(/"/, "\\\""); print "    \"" $$0 "\\n\"" } \
 	     END { print "    \"\";" }' $< > $@
+# tests/test_fuzz also replays the fuzz targets' regression corpus (tests/fuzz/).
+FUZZ_C   = tests/fuzz/fuzz_scene.c tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_trace.c \
+           tests/fuzz/fuzz_image.c tests/fuzz/fuzz_common.c
+$B/test_fuzz: tests/test_fuzz.c $(FUZZ_C) tests/fuzz/fuzz.h tests/testhelp.h $B/libpipetrace.a
+	$(CC) $(ALLCFLAGS) -o $@ tests/test_fuzz.c $(FUZZ_C) $B/libpipetrace.a $(LDLIBS)
 $B/bench: tests/bench.c $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B/test_%: tests/test_%.c tests/testhelp.h tests/refcases.h $B/libpipetrace.a
@@ -147,7 +153,24 @@ bench: $B/bench
 sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test
 
-clean:
-	rm -rf build build-san build-student
+# ===== fuzzing (tests/fuzz/run.sh) =====
+# Each target is linked with libFuzzer; the library is built in build-fuzz/
+# with coverage for it.  FUZZ_SECONDS a target, one after another.
+FUZZ_CC      = clang
+FUZZ_SAN     = -O1 -g -gdwarf-4 -fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_SECONDS = 60
+FUZZERS      = scene obj trace image
+fuzz: $B/pipetrace
+	$(MAKE) B=build-fuzz CC=$(FUZZ_CC) CFLAGS="$(FUZZ_SAN) -fsanitize=fuzzer-no-link" \
+	    build-fuzz/libpipetrace.a
+	for t in $(FUZZERS); do \
+	    $(FUZZ_CC) -std=c11 $(WARN) $(FPFLAGS) -I. -Isrc $(FUZZ_SAN) -fsanitize=fuzzer \
+	        -DPT_LIBFUZZER -o build-fuzz/fuzz_$$t tests/fuzz/fuzz_$$t.c \
+	        tests/fuzz/fuzz_common.c build-fuzz/libpipetrace.a $(LDLIBS) || exit 1; \
+	done
+	sh tests/fuzz/run.sh $B/pipetrace build-fuzz $(FUZZ_SECONDS) $(FUZZERS)
 
-.PHONY: all run test golden docs screenshots bench sanitize clean
+clean:
+	rm -rf build build-san build-student build-fuzz
+
+.PHONY: all run test golden docs screenshots bench sanitize fuzz clean
