@@ -24,6 +24,7 @@ scene       1 $B/test_scene
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
+tread       2 $B/test_tread
 explain     1 $B/test_explain
 png         1 $B/test_png
 layers      1 sh tests/layers.sh

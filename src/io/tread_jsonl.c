@@ -313,7 +313,7 @@ static int j_vertex(pt_treader *r, const jfield *f, int nf, int clipv)
     const pt_stage_info *sh;
     const jval *v, *sv;
     pt_tvrec *rec;
-    int st, k, isnull = 0, nul;
+    int st, k, isnull = 0, nul = 0;
     uint32_t model;
     uint64_t vnum;
 

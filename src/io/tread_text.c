@@ -197,7 +197,7 @@ static int text_record(pt_treader *r)
     cur c = {r->line, r->eol};
     const char *name, *id, *kind;
     size_t nn, ni, nk;
-    uint64_t num;
+    uint64_t num = 0;
     uint32_t model;
 
     if (!word(&c, &name, &nn)) return 0;
