@@ -167,7 +167,9 @@ FUZZ_CC      = clang
 FUZZ_SAN     = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all
 FUZZ_SECONDS = 60
 FUZZERS      = scene obj trace image
-fuzz: $B/pipetrace
+fuzz: fuzz-build $B/pipetrace
+	sh tests/fuzz/run.sh $B/pipetrace build-fuzz $(FUZZ_SECONDS) $(FUZZERS)
+fuzz-build:
 	$(MAKE) B=build-fuzz CC=$(FUZZ_CC) CFLAGS="$(FUZZ_SAN) -fsanitize=fuzzer-no-link" \
 	    build-fuzz/libpipetrace.a
 	for t in $(FUZZERS); do \
@@ -175,9 +177,8 @@ fuzz: $B/pipetrace
 	        -DPT_LIBFUZZER -o build-fuzz/fuzz_$$t tests/fuzz/fuzz_$$t.c \
 	        tests/fuzz/fuzz_common.c build-fuzz/libpipetrace.a $(LDLIBS) || exit 1; \
 	done
-	sh tests/fuzz/run.sh $B/pipetrace build-fuzz $(FUZZ_SECONDS) $(FUZZERS)
 
 clean:
 	rm -rf build build-san build-student build-fuzz
 
-.PHONY: all run test golden docs screenshots bench sanitize fuzz clean
+.PHONY: all run test golden docs screenshots bench sanitize fuzz fuzz-build clean
