@@ -139,6 +139,44 @@ static void test_bytes(void)
              parse(text, 20, 2, err, sizeof err) == 1 && strstr(err, "cut:2:4: error: NUL byte"));
 }
 
+/* ===== the readers' other limits (docs/limits.md) ===== */
+
+static void test_limits(void)
+{
+    char text[512], err[1024];
+    pt_ppm img;
+    int k, n = 0;
+
+    n += snprintf(text, sizeof text, "{\"type\":\"skip\",\"a\":");
+    for (k = 0; k < 32; k++) text[n++] = '[';   /* 33 deep with the record's braces */
+    for (k = 0; k < 32; k++) text[n++] = ']';
+    n += snprintf(text + n, sizeof text - (size_t)n, "}\n");
+    PT_CHECK("tread-5.1 JSON nested more than 32 deep is refused",
+             parse(text, (size_t)n, 1, err, sizeof err) == 1 && strstr(err, "nested too deeply"));
+    text[19] = ' ';                         /* one '[' less: 32 deep */
+    text[n - 3] = ' ';
+    PT_CHECK("tread-5.2 ... 32 deep is read", parse(text, (size_t)n, 1, err, sizeof err) == 0);
+    n = snprintf(text, sizeof text, "{\"type\":\"pixel\",\"model\":\"m\",\"segment\":1,"
+                 "\"x\":9223372036854775808,\"y\":0,\"i\":0}\n");
+    PT_CHECK("tread-5.3 an integer beyond int64 is refused",
+             parse(text, (size_t)n, 1, err, sizeof err) == 1 && strstr(err, "cut:1:45: error: integer out of range"));
+    n = snprintf(text, sizeof text, "# pipetrace trace, format version 1\n"
+                 "framebuffer  1000000001 x 10, background 0 0 0\n");
+    PT_CHECK("tread-5.4 a framebuffer over 10^9 in a header is refused",
+             parse(text, (size_t)n, 2, err, sizeof err) == 1 && strstr(err, "size out of range"));
+    n = snprintf(text, sizeof text, "{\"type\":\"clipvertex\",\"model\":\"m\","
+                 "\"segment\":4611686018427387904,\"stage\":\"cvv\",\"code\":0,\"planes\":[]}\n");
+    PT_CHECK("tread-5.5 a segment number of 2^62 is refused",
+             parse(text, (size_t)n, 1, err, sizeof err) == 1 && strstr(err, "segment number out of range"));
+    strcpy(text, "P6 65536 1 255\n");
+    PT_CHECK("tread-5.6 a PPM wider than 65535 is refused",
+             pt_image_parse(&img, "img", text, strlen(text), err, sizeof err) == -1 &&
+             strstr(err, "img:1:1: error: bad P6 header"));
+    strcpy(text, "P6 2 1 256\nabcdef");
+    PT_CHECK("tread-5.7 a PPM maxval over 255 is refused",
+             pt_image_parse(&img, "img", text, strlen(text), err, sizeof err) == -1);
+}
+
 /* ===== cuts ===== */
 
 /* Every cut of the trace s[0..n): at the end and in the middle of each line.
@@ -252,6 +290,7 @@ int main(void)
     if (!mkdtemp(tmpdir)) { printf("cannot make %s\n", tmpdir); return 1; }
     test_files();
     test_bytes();
+    test_limits();
     for (k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
         char *s, what[200];
         size_t n;
