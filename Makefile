@@ -9,6 +9,7 @@
 #   make screenshots  rewrite docs/journey-* (needs chromium; on purpose only)
 #   make sanitize  run the tests under -fsanitize=address,undefined
 #   make bench     time parsing, stages, rasterizer and trace output
+#   make fuzz      build the libFuzzer targets (clang) and run each FUZZ_SECONDS
 #   make clean
 
 CC      ?= cc
@@ -18,8 +19,11 @@ WARN    = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
 # IEEE double in the formulas' order: no fused multiply-add, no fast-math.
 FPFLAGS = -ffp-contract=off
 CFLAGS  ?= -O2 -g
+# Debug information as DWARF 4 with any compiler: valgrind 3.19 cannot read the
+# DWARF 5 clang 14 writes (tests/valgrind.sh).  CFLAGS=-g0 turns it off.
+DEBUGFMT = -gdwarf-4
 # Includes name their layer: "stages/pt_stage.h", "core/pipetrace.h", "io/trace.h".
-ALLCFLAGS = -std=c11 $(WARN) $(FPFLAGS) -I. -Isrc $(CFLAGS)
+ALLCFLAGS = -std=c11 $(WARN) $(FPFLAGS) -I. -Isrc $(DEBUGFMT) $(CFLAGS)
 LDLIBS  = -lm
 B       = build
 
@@ -82,7 +86,8 @@ CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
-           $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum
+           $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
+           $B/test_tread
 
 all: $B/pipetrace
 
@@ -116,6 +121,14 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	awk 'BEGIN { print "#include \"core/builtin.h\""; print "const char pt_builtin_scene[] =" } \
 	     { gsub(/\\/, "\\\\"); gsub(/"/, "\\\""); print "    \"" $$0 "\\n\"" } \
 	     END { print "    \"\";" }' $< > $@
+# tests/test_fuzz also replays the fuzz targets' regression corpus (tests/fuzz/).
+FUZZ_C   = tests/fuzz/fuzz_scene.c tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_trace.c \
+           tests/fuzz/fuzz_image.c tests/fuzz/fuzz_common.c
+$B/test_fuzz: tests/test_fuzz.c $(FUZZ_C) tests/fuzz/fuzz.h tests/testhelp.h $B/libpipetrace.a
+	$(CC) $(ALLCFLAGS) -o $@ tests/test_fuzz.c $(FUZZ_C) $B/libpipetrace.a $(LDLIBS)
+$B/test_tread: tests/test_tread.c tests/fuzz/fuzz_common.c tests/fuzz/fuzz.h tests/testhelp.h \
+               $B/libpipetrace.a
+	$(CC) $(ALLCFLAGS) -o $@ tests/test_tread.c tests/fuzz/fuzz_common.c $B/libpipetrace.a $(LDLIBS)
 $B/bench: tests/bench.c $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B/test_%: tests/test_%.c tests/testhelp.h tests/refcases.h $B/libpipetrace.a
@@ -148,7 +161,25 @@ bench: $B/bench
 sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test
 
-clean:
-	rm -rf build build-san build-student
+# ===== fuzzing (tests/fuzz/run.sh) =====
+# Each target is linked with libFuzzer; the library is built in build-fuzz/
+# with coverage for it.  FUZZ_SECONDS a target, one after another.
+FUZZ_CC      = clang
+FUZZ_SAN     = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_SECONDS = 60
+FUZZERS      = scene obj trace image
+fuzz: fuzz-build $B/pipetrace
+	sh tests/fuzz/run.sh $B/pipetrace build-fuzz $(FUZZ_SECONDS) $(FUZZERS)
+fuzz-build:
+	$(MAKE) B=build-fuzz CC=$(FUZZ_CC) CFLAGS="$(FUZZ_SAN) -fsanitize=fuzzer-no-link" \
+	    build-fuzz/libpipetrace.a
+	for t in $(FUZZERS); do \
+	    $(FUZZ_CC) -std=c11 $(WARN) $(FPFLAGS) -I. -Isrc $(DEBUGFMT) $(FUZZ_SAN) -fsanitize=fuzzer \
+	        -DPT_LIBFUZZER -o build-fuzz/fuzz_$$t tests/fuzz/fuzz_$$t.c \
+	        tests/fuzz/fuzz_common.c build-fuzz/libpipetrace.a $(LDLIBS) || exit 1; \
+	done
 
-.PHONY: all run test golden docs screenshots bench sanitize clean
+clean:
+	rm -rf build build-san build-student build-fuzz
+
+.PHONY: all run test golden docs screenshots bench sanitize fuzz fuzz-build clean

@@ -4,9 +4,12 @@
 #
 # Usage: sh tests/run.sh BUILD_DIR.  Each test prints "N passed, N failed" as its
 # last line; this script prints the sum as its own last line and exits 1 when
-# anything failed (or a test crashed without printing its count).  The groups
-# run in two lanes at once (CI has two cores), the slowest ones split between
-# them; their reports are printed afterwards in the order listed below.
+# anything failed (or a test crashed without printing its count).  A group that
+# cannot run for want of a tool prints "  skipped: WHY" (each such line is one
+# skip); then the line before the sum says "N skipped (GROUP: WHY, ...)".  The
+# groups run in two lanes at once (CI has two cores), the slowest ones split
+# between them; their reports are printed afterwards in the order listed below.
+# PT_RUN_GROUPS, when set, replaces the list (tests/runner.sh tests this script).
 B=${1:-build}
 ref=tests/reference
 [ -d ../shared/reference ] && ref=../shared/reference
@@ -14,9 +17,11 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 passed=0
 failed=0
+skipped=0
+why=
 
 # NAME LANE COMMAND...: the groups, in report order
-groups="stages      1 $B/test_stages
+groups=${PT_RUN_GROUPS:-"stages      1 $B/test_stages
 numfmt      2 $B/test_numfmt
 jnum        2 $B/test_jnum
 raster      1 $B/test_raster
@@ -25,9 +30,11 @@ scene       1 $B/test_scene
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
+tread       2 $B/test_tread
 explain     1 $B/test_explain
 png         1 $B/test_png
 layers      1 sh tests/layers.sh
+runner      2 sh tests/runner.sh $B
 golden      1 sh tests/golden.sh $B/pipetrace
 cli         1 sh tests/cli.sh $B/pipetrace
 outputs     2 sh tests/outputs.sh $B/pipetrace
@@ -39,7 +46,7 @@ accuracy    1 sh tests/accuracy.sh $B/pipetrace
 journey     1 sh tests/journey.sh $B/pipetrace
 browser     2 sh tests/journey_browser.sh $B/pipetrace
 docs        1 sh tests/docs.sh $B/pipetrace
-valgrind    1 sh tests/valgrind.sh $B/pipetrace"
+valgrind    1 sh tests/valgrind.sh $B/pipetrace"}
 
 lane() {    # lane N: run lane N's groups one after another, each into $out/NAME
     printf '%s\n' "$groups" | while read -r name l cmd; do
@@ -62,6 +69,12 @@ report() {  # report NAME: show failures, add the counts
     p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
     [ "$rc" -ne 0 ] && [ "$f" -eq 0 ] && f=1
     grep -E '^(FAIL|  )' "$out/$name" | head -40
+    s=$(grep -c '^  skipped: ' "$out/$name")
+    if [ "$s" -gt 0 ]; then
+        skipped=$((skipped + s))
+        why="${why:+$why, }$(awk -v g="$name" '/^  skipped: / { sub(/^  skipped: /, "");
+            printf "%s%s: %s", k++ ? ", " : "", g, $0 }' "$out/$name")"
+    fi
     printf '%-16s %s\n' "$name" "$last"
     passed=$((passed + p)); failed=$((failed + f))
 }
@@ -70,5 +83,6 @@ lane 1 &
 lane 2
 wait
 for name in $(printf '%s\n' "$groups" | cut -d' ' -f1); do report "$name"; done
+[ "$skipped" -gt 0 ] && echo "$skipped skipped ($why)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

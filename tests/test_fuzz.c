@@ -1,5 +1,5 @@
 /*
-** tests/test_fuzz.c -- corrupted scenes never crash, hang or leak
+** tests/test_fuzz.c -- corrupted scenes never crash, hang or leak; the fuzz corpus
 ** See LICENSE for copyright and license.
 **
 ** Take each example scene, corrupt it in many small ways with a fixed random
@@ -8,12 +8,18 @@
 ** scene, or -1 with one "NAME:LINE:COL: error: " message.  Run under
 ** `make sanitize` this also proves there is no memory error or undefined
 ** behaviour on these inputs.
+**
+** Then replay the regression corpus of the libFuzzer targets (tests/fuzz/):
+** every file of tests/fuzz/corpus/TARGET/ through its target, with a plain
+** main, so that no finding comes back even where clang is missing.
 */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "testhelp.h"
-#include "core/pipeline.h"
+#include "fuzz/fuzz.h"
 
 static uint64_t state = 0x9E3779B97F4A7C15ULL;
 
@@ -58,29 +64,37 @@ static void mutate(char *buf, size_t *len, size_t cap)
     }
 }
 
-static void quiet_vertex(void *ud, const pt_vrec *r) { (void)ud; (void)r; }
-
-static int run_one(const char *text, size_t len)
+/* Replay every file of tests/fuzz/corpus/NAME through fn; returns how many
+** files there were, and prints each one fn refused. */
+static int replay(const char *name, int (*fn)(const uint8_t *, size_t), int *bad)
 {
-    pt_scene s;
-    pt_options o;
-    pt_plan p;
-    pt_listener l;
-    pt_summary sum;
-    char err[PT_ERRLEN];
+    char dir[256], path[1024];
+    DIR *d;
+    struct dirent *e;
+    int files = 0;
 
-    if (pt_scene_parse(&s, "fuzz", text, len, err, sizeof err) != 0)
-        return strncmp(err, "fuzz:", 5) == 0 && strstr(err, ": error: ") != NULL ? 1 : -1;
-    pt_options_default(&o);
-    o.all_stages = 1;
-    memset(&l, 0, sizeof l);
-    l.sink.vertex = quiet_vertex;
-    if (pt_plan_make(&p, &s, &o) == 0) {
-        pt_run(&s, &p, &o, &l, NULL, &sum);
-        pt_plan_free(&p);
+    snprintf(dir, sizeof dir, "tests/fuzz/corpus/%s", name);
+    if (!(d = opendir(dir))) return 0;
+    while ((e = readdir(d)) != NULL) {
+        FILE *in;
+        char *buf;
+        long n;
+        if (e->d_name[0] == '.') continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (!(in = fopen(path, "rb"))) continue;
+        if (fseek(in, 0, SEEK_END) != 0 || (n = ftell(in)) < 0 || fseek(in, 0, SEEK_SET) != 0 ||
+            !(buf = malloc((size_t)n + 1)) ) { fclose(in); (*bad)++; continue; }
+        if (fread(buf, 1, (size_t)n, in) != (size_t)n || fn((const uint8_t *)buf, (size_t)n) < 0) {
+            printf("  %s: refused without a FILE:LINE:COL: error: message, or broke a promise\n",
+                   path);
+            (*bad)++;
+        }
+        free(buf);
+        fclose(in);
+        files++;
     }
-    pt_scene_free(&s);
-    return 0;
+    closedir(d);
+    return files;
 }
 
 int main(void)
@@ -104,7 +118,7 @@ int main(void)
             int r;
             memcpy(buf, base, n);
             for (e = 0; e < edits; e++) mutate(buf, &len, sizeof buf);
-            r = run_one(buf, len);
+            r = pt_fuzz_scene((const uint8_t *)buf, len);
             if (r == 0) good++;
             else if (r == 1) bad++;
             else malformed++;
@@ -113,5 +127,22 @@ int main(void)
     printf("test_fuzz: %d parsed, %d rejected\n", good, bad);
     PT_CHECK("fuzz-1.1 every rejection is one FILE:LINE:COL: error: message", malformed == 0);
     PT_CHECK("fuzz-1.2 the corruptions exercise both outcomes", good > 100 && bad > 100);
+    {
+        static const struct { const char *name; int (*fn)(const uint8_t *, size_t); } t[] = {
+            { "scene", pt_fuzz_scene }, { "obj", pt_fuzz_obj },
+            { "trace", pt_fuzz_trace }, { "image", pt_fuzz_image },
+        };
+        size_t i;
+        for (i = 0; i < sizeof t / sizeof t[0]; i++) {
+            int nbad = 0, n = replay(t[i].name, t[i].fn, &nbad);
+            char d[128];
+            printf("test_fuzz: tests/fuzz/corpus/%s: %d files\n", t[i].name, n);
+            snprintf(d, sizeof d, "fuzz-2.%d the corpus of target %s is there", (int)i + 1, t[i].name);
+            PT_CHECK(d, n > 0);
+            snprintf(d, sizeof d, "fuzz-3.%d every file of tests/fuzz/corpus/%s passes", (int)i + 1,
+                     t[i].name);
+            PT_CHECK(d, nbad == 0);
+        }
+    }
     return pt_test_report();
 }

@@ -99,6 +99,11 @@ static const char *check_vertex_line(got *g, char *line, size_t *nlines)
     return NULL;
 }
 
+/* The cases tests/reference/ holds (its README.md): every one must run, so
+** that a lost or unreadable case fails instead of shrinking the test. */
+#define REF_NCASES 39
+static int ncases_run;
+
 static void run_case(const char *dir, const char *name)
 {
     char path[4096], line[4096], descr[PT_ERRLEN + 600];
@@ -114,6 +119,7 @@ static void run_case(const char *dir, const char *name)
     FILE *f;
 
     if (pt_ref_load(&s, dir, name, "ref") != 0) return;
+    ncases_run++;
     pt_options_default(&o);
     o.all_stages = 1;
     pt_plan_make(&p, &s, &o);
@@ -164,5 +170,10 @@ static void run_case(const char *dir, const char *name)
 int main(int argc, char **argv)
 {
     pt_ref_run(argc, argv, "test_reference", run_case);
+    {
+        char d[80];
+        snprintf(d, sizeof d, "ref-0 all %d reference cases ran (%d did)", REF_NCASES, ncases_run);
+        PT_CHECK(d, ncases_run == REF_NCASES);
+    }
     return pt_test_report();
 }

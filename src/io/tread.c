@@ -12,12 +12,15 @@
 ** strtod() reads is exactly the token (and buf is NUL-terminated, so it cannot
 ** run off the end).  pipetrace never calls setlocale(), so '.' is the point.
 */
+#define _POSIX_C_SOURCE 200809L         /* fstat(), fileno() */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include "io/sbuf.h"
 #include "io/tread.h"
 #include "io/tread_int.h"
 
@@ -134,9 +137,25 @@ int pt_tr_stage_named(const char *p, size_t n)
 
 int pt_tread_file(const char *path, char **buf, size_t *len, char *err, size_t errlen)
 {
+    return pt_tread_file_max(path, PT_TREAD_MAX_BYTES, buf, len, err, errlen);
+}
+
+/* 1 when what buf[0..n) starts with may hold NUL bytes: a binary PPM or a PNG. */
+static int binary_kind(const char *buf, size_t n)
+{
+    pt_tkind k = pt_tread_kind(buf, n);
+
+    return k == PT_TK_PPM || k == PT_TK_PNG;
+}
+
+int pt_tread_file_max(const char *path, size_t max, char **buf, size_t *len, char *err,
+                      size_t errlen)
+{
     FILE *f = strcmp(path, "-") ? fopen(path, "rb") : stdin;
     size_t n = 0, cap = 1 << 16;
+    struct stat st;
     char *b;
+    int big = 0, text = -1;                 /* text: 1 when NUL ends the reading */
 
     *buf = NULL;
     *len = 0;
@@ -144,20 +163,29 @@ int pt_tread_file(const char *path, char **buf, size_t *len, char *err, size_t e
         snprintf(err, errlen, "%s:1:1: error: cannot read file: %s", path, strerror(errno));
         return -1;
     }
-    b = malloc(cap);
-    while (b) {
-        size_t got;
+    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && (uintmax_t)st.st_size > max)
+        big = 1;                            /* a regular file: known before reading it */
+    b = big ? NULL : malloc(cap);
+    while (b) {                             /* invariant: n <= max, n < cap */
+        size_t got, from = n;
         if (cap - n < 2) {                  /* room for one more byte and the NUL */
-            char *nb = cap < SIZE_MAX / 2 ? realloc(b, 2 * cap) : NULL;
+            size_t nc = cap > max / 2 ? max + 2 : 2 * cap;
+            char *nb = realloc(b, nc);
             if (!nb) { free(b); b = NULL; break; }
             b = nb;
-            cap *= 2;
+            cap = nc;
         }
         got = fread(b + n, 1, cap - n - 1, f);
         n += got;
         if (got == 0) break;
+        if (n > max) { big = 1; free(b); b = NULL; break; }
+        if (text < 0 && n >= 8) { text = !binary_kind(b, n); from = 0; }
+        if (text == 1 && memchr(b + from, '\0', n - from)) break;  /* pt_tread_parse() says where */
     }
-    if (!b) {
+    if (big) {
+        snprintf(err, errlen, "%s:1:1: error: the file is larger than %zu bytes, the most "
+                 "pipetrace reads", path, max);
+    } else if (!b) {
         snprintf(err, errlen, "%s:1:1: error: out of memory", path);
     } else if (ferror(f)) {
         snprintf(err, errlen, "%s:1:1: error: cannot read file: read error", path);
@@ -367,11 +395,24 @@ int pt_tr_nonfinite(const char *p, size_t n, double *x)
 
 /* ===== the trace ===== */
 
+/* The first byte of p[0..e) that does not begin well-formed UTF-8, or NULL.
+** p[0..e) holds no NUL and e[0] is '\n', '\r' or the buffer's NUL, so
+** pt_sbuf_utf8_len() stays inside. */
+static const char *bad_utf8(const char *p, const char *e)
+{
+    int n;
+
+    for (; p < e; p += n)
+        if ((n = (unsigned char)*p < 0x80 ? 1 : pt_sbuf_utf8_len((const unsigned char *)p)) == 0 ||
+            n > e - p) return p;
+    return NULL;
+}
+
 int pt_tread_parse(pt_tread *t, const char *path, const char *buf, size_t len,
                    pt_names *nm, char *err, size_t errlen)
 {
     pt_treader r;
-    const char *p = buf, *end = buf + len;
+    const char *p = buf, *end = buf + len, *bad;
     int rc = 0;
 
     memset(t, 0, sizeof *t);
@@ -394,12 +435,16 @@ int pt_tread_parse(pt_tread *t, const char *path, const char *buf, size_t len,
                         "(" PT_TR_IMG_FORMATS ")");
     }
     while (rc == 0 && p < end) {
-        const char *nl = memchr(p, '\n', (size_t)(end - p));
+        const char *nl = memchr(p, '\n', (size_t)(end - p)), *nul;
+        size_t n = (size_t)((nl ? nl : end) - p);
+        if (n > 0 && p[n - 1] == '\r') n--;
         r.line = p;
-        r.eol = nl ? nl : end;
-        if (r.eol > p && r.eol[-1] == '\r') r.eol--;
-        if (memchr(p, '\0', (size_t)(r.eol - p)) != NULL)
-            rc = pt_tr_fail(&r, memchr(p, '\0', (size_t)(r.eol - p)), "NUL byte in a trace");
+        r.eol = p + n;
+        if ((nul = memchr(p, '\0', n)) != NULL)
+            rc = pt_tr_fail(&r, nul, "NUL byte in a trace");
+        else if ((bad = bad_utf8(p, r.eol)) != NULL)
+            rc = pt_tr_fail(&r, bad, "invalid UTF-8 sequence starting with byte 0x%02x",
+                            (unsigned char)*bad);
         else if (t->kind == PT_TK_JSONL)
             rc = pt_tr_json_line(&r);
         else

@@ -138,10 +138,21 @@ typedef struct pt_tread {
     pt_tclip *cl; size_t ncl, cap_cl;    /* clip records, file order; owned */
 } pt_tread;
 
+/* The largest file pt_tread_file() reads (1 GiB): more than the largest image
+** (16384 x 16384 pixels, 768 MiB as P6 or PNG) and a trace of millions of
+** records; it caps what a reader holds (docs/limits.md). */
+#define PT_TREAD_MAX_BYTES ((size_t)1 << 30)
+
 /* Read the whole file at path ("-": standard input) into a new buffer *buf of
-** *len bytes plus a terminating NUL; the caller frees it.  Returns 0, or -1
-** with a message in err. */
+** *len bytes plus a terminating NUL; the caller frees it.  A file that is not
+** a binary image (P6, PNG) is read only up to the first chunk holding a NUL
+** byte, which pt_tread_parse() then refuses; a file of more than
+** PT_TREAD_MAX_BYTES is refused.  Returns 0, or -1 with a message in err. */
 int pt_tread_file(const char *path, char **buf, size_t *len, char *err, size_t errlen);
+
+/* pt_tread_file() with max (< SIZE_MAX - 1) in place of PT_TREAD_MAX_BYTES. */
+int pt_tread_file_max(const char *path, size_t max, char **buf, size_t *len, char *err,
+                      size_t errlen);
 
 /* What buf[0..len) holds.  This function can't fail. */
 pt_tkind pt_tread_kind(const char *buf, size_t len);

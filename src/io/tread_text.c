@@ -169,7 +169,8 @@ static int t_clip(pt_treader *r, cur *c, uint32_t model, uint64_t seg)
     cl.model = model;
     cl.seg = seg;
     cl.npix = t->npx;
-    if (!word(c, &w, &n) || text_count(r, w, n, 1, &cl.count) != 0) return -1;
+    if (!word(c, &w, &n)) return pt_tr_fail(r, w, "expected the number of steps clipped");
+    if (text_count(r, w, n, 1, &cl.count) != 0) return -1;
     want = cl.count == 1 ? 2 : 4;
     s = c->p;
     while (s < c->e && *s != ')') s++;      /* past "(x_vp, y_vp)" */
@@ -196,7 +197,7 @@ static int text_record(pt_treader *r)
     cur c = {r->line, r->eol};
     const char *name, *id, *kind;
     size_t nn, ni, nk;
-    uint64_t num;
+    uint64_t num = 0;
     uint32_t model;
 
     if (!word(&c, &name, &nn)) return 0;

@@ -482,6 +482,7 @@ static void show_nearest(const why_ctx *w)
     int n = w->nbest, k, has_sel = 0;
     pt_journey ja, jb;
 
+    memset(list, 0, sizeof list);           /* list[NEAREST] too (gcc -O3 asks) */
     memcpy(list, w->best, sizeof w->best);
     for (k = 0; k < n; k++) has_sel |= &w->s->models[list[k].mi] == w->sel;
     if (w->have_sel && !has_sel) list[n++] = w->best_sel;  /* --model's own, always */
