@@ -54,4 +54,5 @@ vg "vg-14 journey: SVG and HTML" 0 journey --vertex 1 --svg "$tmp/j.svg" --html 
 vg "vg-15 diff: JSONL against text" 0 diff "$tmp/a.jsonl" "$tmp/a.txt"
 "$exe" --image "$tmp/c.ppm"
 vg "vg-16 diff: two images" 0 diff "$tmp/c.ppm" "$tmp/c.ppm"
+vg "vg-17 diff: /dev/zero is refused at once, nothing leaks" 2 diff /dev/zero /dev/zero
 report
