@@ -57,4 +57,5 @@ vg "vg-16 diff: two images" 0 diff "$tmp/c.ppm" "$tmp/c.ppm"
 vg "vg-17 the course's debug log with pixels" 0 tests/reference/basic-clip-edges.scene --format kraft-pixels
 "$exe" tests/reference/basic-clip-edges.scene > "$tmp/e.txt"
 vg "vg-18 diff reads the course's log" 0 diff tests/reference/kraftlog/basic-clip-edges.pixels.log "$tmp/e.txt"
+vg "vg-19 diff: /dev/zero is refused at once, nothing leaks" 2 diff /dev/zero /dev/zero
 report
