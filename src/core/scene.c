@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "core/scene.h"
+#include "core/nameset.h"
 
 #define MAX_VERTS  0x7fffffffu  /* per model: indices must fit in a uint32_t */
 #define MAX_SEGS   0x7fffffffu  /* per model: a matching limit for segments */
@@ -77,6 +78,7 @@ typedef struct parser {
     size_t color_line;
     size_t *model_line;         /* model_line[i]: line of the `model` of s->models[i] */
     size_t cap_model_line;
+    pt_nameset names;             /* the models' names -> their index in s->models */
 } parser;
 
 /* ---------------------------------------------------------------- messages */
@@ -855,8 +857,8 @@ static int do_world(parser *ps, source *src, const token *dir, cursor *args)
 
 /* model NAME: a new current model.  Names are unique and go into JSON, CSV
 ** and text output, so '"', '\' and ',' are kept out of them.  (Spaces, '#'
-** and control characters cannot reach here.)  The duplicate check is a linear
-** scan: scenes have few models. */
+** and control characters cannot reach here.)  The duplicate check asks a hash
+** table (core/nameset.h): a scene of many models is read in linear time. */
 static int do_model(parser *ps, source *src, const token *dir, cursor *args)
 {
     pt_scene *s = ps->s;
@@ -870,12 +872,11 @@ static int do_model(parser *ps, source *src, const token *dir, cursor *args)
         if (a.p[i] == '"' || a.p[i] == '\\' || a.p[i] == ',')
             return fail(ps, src, a.p + i, "model name '%s' may not contain '%c'",
                         shown(a.p, a.n, q), a.p[i]);
-    for (i = 0; i < s->nmodels; i++)
-        if (strlen(s->models[i].name) == a.n
-            && memcmp(s->models[i].name, a.p, a.n) == 0)
-            return fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",
-                        shown(a.p, a.n, q), ps->model_line[i]);
-    if (new_model(ps, a.p, a.n, src->lineno) < 0)
+    if ((i = pt_nameset_find(&ps->names, a.p, a.n)) != SIZE_MAX)
+        return fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",
+                    shown(a.p, a.n, q), ps->model_line[i]);
+    if (new_model(ps, a.p, a.n, src->lineno) < 0
+        || pt_nameset_add(&ps->names, cur_model(ps)->name, a.n, s->nmodels - 1) < 0)
         return fail(ps, src, dir->p, "out of memory");
     return 0;
 }
@@ -1287,6 +1288,7 @@ static int parse_scene(pt_scene *s, const char *name, size_t dirlen,
     if (r == 0)
         r = finish_camera(&ps, name);
     free(ps.model_line);
+    pt_nameset_free(&ps.names);
     if (r < 0)
         pt_scene_free(s);
     return r;
@@ -1404,6 +1406,7 @@ static int load_obj(pt_scene *s, const char *path, const char *text, size_t len,
         r = finish_viewport(&ps, path);
     }
     free(ps.model_line);
+    pt_nameset_free(&ps.names);
     if (r < 0)
         pt_scene_free(s);
     return r;
