@@ -67,7 +67,7 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
            $B/m7_screen2viewport.o $B/pt_matrix.o
 # src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
-CORE_O   = $B/scene.o $B/nameset.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
+CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
            $B/tread_jsonl.o $B/tread_image.o $B/png.o $B/outfile.o
@@ -81,7 +81,8 @@ CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
-           $B/test_accuracy $B/test_png $B/test_catalogue $B/test_nameset
+           $B/test_accuracy $B/test_png $B/test_catalogue $B/test_nameset \
+           $B/test_numparse
 
 all: $B/pipetrace
 
@@ -115,8 +116,14 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	awk 'BEGIN { print "#include \"core/builtin.h\""; print "const char pt_builtin_scene[] =" } \
 	     { gsub(/\\/, "\\\\"); gsub(/"/, "\\\""); print "    \"" $$0 "\\n\"" } \
 	     END { print "    \"\";" }' $< > $@
+# make bench: the benchmark (tests/bench.c), its scene generator and the
+# plain-C baseline it compares with (docs/bench.md).
 $B/bench: tests/bench.c $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
+$B/benchgen: tests/benchgen.c | $B
+	$(CC) $(ALLCFLAGS) -o $@ $<
+$B/baseline: tests/baseline.c | $B
+	$(CC) $(ALLCFLAGS) -o $@ $< $(LDLIBS)
 $B/test_%: tests/test_%.c tests/testhelp.h tests/refcases.h $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B:
@@ -141,8 +148,8 @@ screenshots: $B/pipetrace
 	cp $B/journey-shots/journey-builtin.png docs/journey-builtin.png
 	cp $B/journey-shots/journey-page-stage4.png docs/journey-page.png
 
-bench: $B/bench
-	$B/bench
+bench: $B/bench $B/benchgen $B/baseline $B/pipetrace
+	$B/bench $B
 
 sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test

@@ -22,6 +22,7 @@ raster      1 $B/test_raster
 matrix      1 $B/test_matrix
 scene       1 $B/test_scene
 nameset     2 $B/test_nameset
+numparse    2 $B/test_numparse
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz

@@ -7,7 +7,8 @@
 ** UTF-8, no control characters, CR only as part of CRLF), so everything after
 ** it sees clean text.  next_token() splits a line at spaces and tabs and hands
 ** out (pointer, length) pairs into the buffer: tokens are never copied, except
-** a number longer than 127 bytes, which strtod() needs NUL-terminated.
+** a number that takes strtod()'s path, which needs it NUL-terminated
+** (core/numparse.h).
 **
 ** A parser struct holds what spans lines: which once-only directives were seen
 ** and on which line, and which model is current (always the last one in
@@ -30,6 +31,7 @@
 
 #include "core/scene.h"
 #include "core/nameset.h"
+#include "core/numparse.h"
 
 #define MAX_VERTS  0x7fffffffu  /* per model: indices must fit in a uint32_t */
 #define MAX_SEGS   0x7fffffffu  /* per model: a matching limit for segments */
@@ -315,34 +317,6 @@ static int is_digit(char c)
     return c >= '0' && c <= '9';
 }
 
-/* Does p[0..n) match [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)? ?
-** Anything else (hex, inf, nan, "1f", "1,5") is refused before strtod sees it. */
-static int is_decimal(const char *p, size_t n)
-{
-    const char *e = p + n;
-    size_t before = 0, after = 0;       /* digits before and after the point */
-
-    if (p < e && (*p == '+' || *p == '-'))
-        p++;
-    for (; p < e && is_digit(*p); p++)
-        before++;
-    if (p < e && *p == '.')
-        for (p++; p < e && is_digit(*p); p++)
-            after++;
-    if (before == 0 && after == 0)
-        return 0;
-    if (p < e && (*p == 'e' || *p == 'E')) {
-        p++;
-        if (p < e && (*p == '+' || *p == '-'))
-            p++;
-        if (p == e || !is_digit(*p))
-            return 0;
-        while (p < e && is_digit(*p))
-            p++;
-    }
-    return p == e;
-}
-
 /* Does p[0..n) match [+-]?digits ? */
 static int is_integer(const char *p, size_t n)
 {
@@ -381,27 +355,22 @@ static int scan_integer(const char *p, size_t n, int64_t *out)
     return 0;
 }
 
-/* Parse t as a finite decimal number into *out; what names it in messages. */
+/* Parse t as a finite decimal number into *out; what names it in messages.
+** pt_parse_decimal() checks the form [+-]?(digits[.digits*]|.digits)
+** ([eE][+-]?digits)? (no hex, inf, nan, "1f", "1,5") and converts in one
+** pass, exactly as strtod() would (core/numparse.h). */
 static int parse_number(parser *ps, const source *src, const token *t,
                         const char *what, double *out)
 {
-    char small[128], q[QUOTE_BUF];
-    char *buf = small;
+    char q[QUOTE_BUF];
     double x;
+    int r = pt_parse_decimal(t->p, t->n, &x);
 
-    if (!is_decimal(t->p, t->n))
+    if (r == -1)
         return fail(ps, src, t->p, "'%s' is not a decimal number",
                     shown(t->p, t->n, q));
-    if (t->n >= sizeof small) {         /* rare: a very long number */
-        buf = malloc(t->n + 1);
-        if (buf == NULL)
-            return fail(ps, src, t->p, "out of memory");
-    }
-    memcpy(buf, t->p, t->n);
-    buf[t->n] = '\0';
-    x = strtod(buf, NULL);              /* "C" locale: '.' is the decimal point */
-    if (buf != small)
-        free(buf);
+    if (r == -2)
+        return fail(ps, src, t->p, "out of memory");
     if (!isfinite(x))
         return fail(ps, src, t->p, "%s '%s' is not finite", what,
                     shown(t->p, t->n, q));
