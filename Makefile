@@ -133,7 +133,7 @@ run: $B/pipetrace
 	$B/pipetrace --image $B/builtin.ppm --trace -
 	@echo "image written to $B/builtin.ppm"
 
-test: $B/pipetrace $(TESTS)
+test: $B/pipetrace $(TESTS) $B/benchgen $B/baseline
 	@sh tests/run.sh $B
 
 golden: $B/pipetrace
@@ -148,7 +148,8 @@ screenshots: $B/pipetrace
 	cp $B/journey-shots/journey-builtin.png docs/journey-builtin.png
 	cp $B/journey-shots/journey-page-stage4.png docs/journey-page.png
 
-bench: $B/bench $B/benchgen $B/baseline $B/pipetrace
+bench: $B/bench $B/benchgen $B/baseline $B/pipetrace $B/test_numparse
+	$B/test_numparse 2000000
 	$B/bench $B
 
 sanitize:

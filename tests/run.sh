@@ -23,6 +23,7 @@ matrix      1 $B/test_matrix
 scene       1 $B/test_scene
 nameset     2 $B/test_nameset
 numparse    2 $B/test_numparse
+baseline    2 sh tests/baseline.sh $B
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
