@@ -445,7 +445,10 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
         run_model(s, p, o, l, k, &ms[k], pps[k], cls[k], &fl, sum);
     }
 
-    if (o->rasterize) {                     /* rasterize */
+    /* Rasterize for an image, for a listener of pixel, clip, skip or summary
+    ** records, or for the matrix camera's points clipping makes; else nobody
+    ** listens (a CSV trace has no raster rows): skip it. */
+    if (o->rasterize && (fb || l->pixel || l->clip || l->skip || l->summary || s->matrix)) {
         pt_raster_out out = {on_pixel, on_clip, NULL};
         pt_raster_vp to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
         raster_ctx rc;
