@@ -24,6 +24,7 @@ scene       1 $B/test_scene
 nameset     2 $B/test_nameset
 numparse    2 $B/test_numparse
 baseline    2 sh tests/baseline.sh $B
+stream      2 sh tests/stream.sh $B/pipetrace
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz

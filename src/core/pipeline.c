@@ -323,16 +323,16 @@ typedef struct raster_ctx {
     pt_fb *fb;                   /* NULL: nothing to draw */
     int64_t npix;                /* W * H: the pixel array's length */
     pt_summary *sum;
+    int x_ul, y_ul, W, H;        /* the scene's, at hand for every pixel */
 } raster_ctx;
 
 static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
     raster_ctx *rc = ud;
-    pt_pix vp = {x_vp, y_vp, 1}, f;
-    int64_t idx;
+    pt_pix vp = {x_vp, y_vp, 1};
+    pt_pix f = pt_viewport2fb(vp, rc->x_ul, rc->y_ul, NULL);
+    int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
 
-    f = pt_viewport2fb(vp, rc->s->vp_x, rc->s->vp_y, NULL);
-    idx = pt_fb2index(f, rc->s->fb_w, rc->s->fb_h, NULL);
     rc->sum->pixels++;
     if (rc->l && rc->l->pixel) rc->l->pixel(rc->l->ud, rc->m, rc->seg, f.x, f.y, idx);
     /* a student's framebuffer or index stage may name no pixel of the array
@@ -456,6 +456,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
         sum->rasterized = 1;
         rc.s = s; rc.fb = fb; rc.sum = sum;
         rc.npix = (int64_t)s->fb_w * s->fb_h;
+        rc.x_ul = s->vp_x; rc.y_ul = s->vp_y; rc.W = s->fb_w; rc.H = s->fb_h;
         out.ud = &rc;
         for (k = 0; k < s->nmodels; k++) {
             const pt_model *m = &s->models[k];
