@@ -452,12 +452,15 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
         pt_raster_out out = {on_pixel, on_clip, NULL};
         pt_raster_vp to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
         raster_ctx rc;
+        pt_raster_image im;          /* draw: the classic camera's pixels, untraced */
+        int draw;
 
         sum->rasterized = 1;
         rc.s = s; rc.fb = fb; rc.sum = sum;
         rc.npix = (int64_t)s->fb_w * s->fb_h;
         rc.x_ul = s->vp_x; rc.y_ul = s->vp_y; rc.W = s->fb_w; rc.H = s->fb_h;
         out.ud = &rc;
+        im.fb = fb; im.x_ul = s->vp_x; im.y_ul = s->vp_y; im.pixels = 0;
         for (k = 0; k < s->nmodels; k++) {
             const pt_model *m = &s->models[k];
             int traced = p->models[k].selected && !o->vertex;  /* its clip vertices */
@@ -465,6 +468,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
 
             rc.m = m;
             rc.l = report ? l : NULL;
+            draw = !s->matrix && fb && !(rc.l && rc.l->pixel);
+            im.color = m->color;
             for (j = 0; j < m->nseg; j++) {
                 pt_vec2 a = pps[k][m->seg[j].a], b = pps[k][m->seg[j].b];
                 int r;
@@ -478,7 +483,10 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
                         l->skip(l->ud, m, j + 1, 0, "outside the view volume");
                     continue;
                 }
-                r = pt_raster_segment(a, b, s->vp_w, s->vp_h, to_vp, &out);
+                if (draw)                   /* nobody listens to the pixels */
+                    r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &im, &out);
+                else
+                    r = pt_raster_segment(a, b, s->vp_w, s->vp_h, to_vp, &out);
                 if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
                 if (r == PT_RASTER_SKIPPED) {
                     sum->segments_skipped++;
@@ -486,6 +494,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
                 }
             }
         }
+        sum->pixels += im.pixels;           /* those drawn without on_pixel */
     }
     if (l->summary) l->summary(l->ud, sum);
 done:
