@@ -210,7 +210,12 @@ static int same_file(const char *a, const char *b)
     FILE *f = fopen(a, "rb"), *g = fopen(b, "rb");
     int c, d, same = f && g;
 
-    while (same && ((c = getc(f)) != EOF) | ((d = getc(g)) != EOF)) same = c == d;
+    while (same) {                      /* both ends, or the first difference */
+        c = getc(f);
+        d = getc(g);
+        same = c == d;
+        if (c == EOF || d == EOF) break;
+    }
     if (f) fclose(f);
     if (g) fclose(g);
     return same;
