@@ -50,9 +50,7 @@ CHOSEN   = $B/choice
 $B/s1_model2camera.o:   $(or $(STAGE_camera),stages/s1_model2camera.c) stages/*.h $B/choice; $(STAGE_CC)
 $B/s2_camera2image.o:   $(or $(STAGE_projection),stages/s2_camera2image.c) stages/*.h $B/choice; $(STAGE_CC)
 $B/s3_image2pixel.o:    $(or $(STAGE_pixel),stages/s3_image2pixel.c) stages/*.h $B/choice; $(STAGE_CC)
-$B/s4_pixel2viewport.o: $(or $(STAGE_viewport),stages/s4_pixel2viewport.c) stages/*.h $B/choice; $(STAGE_CC)
-$B/s5_viewport2fb.o:    $(or $(STAGE_framebuffer),stages/s5_viewport2fb.c) stages/*.h $B/choice; $(STAGE_CC)
-$B/s6_fb2index.o:       $(or $(STAGE_index),stages/s6_fb2index.c) stages/*.h $B/choice; $(STAGE_CC)
+# (viewport, framebuffer and index: see $B/pixelpath.c below)
 endif
 # ===== end of student stages =====
 # $B/buildinfo.c names the stages replaced ("" in build/): pipetrace step and
@@ -65,13 +63,13 @@ $B/buildinfo.c: Makefile $(CHOSEN) | $B
 # stages/: the formulas, in pipeline order: what all share, the classic
 # camera's, then the matrix camera's own (it shares s5 and s6).
 STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o \
-           $B/s3_image2pixel.o $B/s4_pixel2viewport.o $B/s5_viewport2fb.o \
-           $B/s6_fb2index.o $B/pt_classic.o \
+           $B/s3_image2pixel.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
            $B/m7_screen2viewport.o $B/pt_matrix.o
 # src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
-CORE_O   = $B/scene.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
+# pixelpath.o is the rasterizer with the stages s4, s5 and s6 (see below).
+CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/pixelpath.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
            $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o $B/png.o $B/outfile.o \
@@ -87,7 +85,7 @@ CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o \
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
-           $B/test_tread
+           $B/test_tread $B/test_nameset $B/test_numparse
 
 all: $B/pipetrace
 
@@ -116,6 +114,17 @@ $B/builtin.o: $B/builtin.c src/core/builtin.h
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
 $B/buildinfo.o: $B/buildinfo.c src/tools/cli.h
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
+# The rasterizer (src/core/raster.c) and the stages it calls for every pixel,
+# viewport, framebuffer and index (a student's files when chosen), compiled as
+# one translation unit, so that the compiler can inline them into the DDA's
+# loop (docs/bench.md); the stages stay the files they are.
+PIXEL_SRC = $(or $(STAGE_viewport),stages/s4_pixel2viewport.c) \
+            $(or $(STAGE_framebuffer),stages/s5_viewport2fb.c) \
+            $(or $(STAGE_index),stages/s6_fb2index.c) src/core/raster.c
+$B/pixelpath.c: Makefile $(CHOSEN) | $B
+	printf '#include "%s"\n' $(abspath $(PIXEL_SRC)) > $@
+$B/pixelpath.o: $B/pixelpath.c $(PIXEL_SRC) $(HDRS)
+	$(CC) $(ALLCFLAGS) -Istages -c -o $@ $<
 # The built-in scene is docs/examples/builtin.scene, embedded as a C string.
 $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	awk 'BEGIN { print "#include \"core/builtin.h\""; print "const char pt_builtin_scene[] =" } \
@@ -129,8 +138,14 @@ $B/test_fuzz: tests/test_fuzz.c $(FUZZ_C) tests/fuzz/fuzz.h tests/testhelp.h $B/
 $B/test_tread: tests/test_tread.c tests/fuzz/fuzz_common.c tests/fuzz/fuzz.h tests/testhelp.h \
                $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ tests/test_tread.c tests/fuzz/fuzz_common.c $B/libpipetrace.a $(LDLIBS)
+# make bench: the benchmark (tests/bench.c), its scene generator and the
+# plain-C baseline it compares with (docs/bench.md).
 $B/bench: tests/bench.c $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
+$B/benchgen: tests/benchgen.c | $B
+	$(CC) $(ALLCFLAGS) -o $@ $<
+$B/baseline: tests/baseline.c | $B
+	$(CC) $(ALLCFLAGS) -o $@ $< $(LDLIBS)
 $B/test_%: tests/test_%.c tests/testhelp.h tests/refcases.h $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B:
@@ -140,7 +155,7 @@ run: $B/pipetrace
 	$B/pipetrace --image $B/builtin.ppm --trace -
 	@echo "image written to $B/builtin.ppm"
 
-test: $B/pipetrace $(TESTS)
+test: $B/pipetrace $(TESTS) $B/benchgen $B/baseline
 	@sh tests/run.sh $B
 
 golden: $B/pipetrace
@@ -155,8 +170,9 @@ screenshots: $B/pipetrace
 	cp $B/journey-shots/journey-builtin.png docs/journey-builtin.png
 	cp $B/journey-shots/journey-page-stage4.png docs/journey-page.png
 
-bench: $B/bench
-	$B/bench
+bench: $B/bench $B/benchgen $B/baseline $B/pipetrace $B/test_numparse
+	$B/test_numparse 2000000
+	$B/bench $B
 
 sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test

@@ -24,11 +24,10 @@ double pt_java_round(double x)
     return r;
 }
 
-void pt_emit_viewport(const pt_sink *sink, pt_pix vp, int w, int h)
+void pt_emit_viewport_record(const pt_sink *sink, pt_pix vp, int w, int h)
 {
     pt_vrec r = {0};
 
-    if (!sink) return;                      /* nobody listens: no record */
     r.stage = PT_STAGE_VIEWPORT;
     r.flags = pt_pix_flags(vp);             /* null per value */
     if (!vp.ok) r.warn |= PT_WARN_RANGE;

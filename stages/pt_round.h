@@ -73,8 +73,13 @@ static inline int pt_inside(int64_t x, int64_t y, int w, int h)
 
 /* Report viewport pixel vp of a w x h viewport to sink, as both cameras'
 ** viewport stages do: null with a range warning when !vp.ok, else flagged
-** inside or not by pt_inside().  Nothing when sink is NULL.  This function
-** can't fail. */
-void pt_emit_viewport(const pt_sink *sink, pt_pix vp, int w, int h);
+** inside or not by pt_inside().  Nothing when sink is NULL: the test is
+** inline, as the rasterizer asks the viewport stage about every step with a
+** NULL sink, and the record is built out of line.  This function can't fail. */
+void pt_emit_viewport_record(const pt_sink *sink, pt_pix vp, int w, int h);
+static inline void pt_emit_viewport(const pt_sink *sink, pt_pix vp, int w, int h)
+{
+    if (sink) pt_emit_viewport_record(sink, vp, w, h);
+}
 
 #endif

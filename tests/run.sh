@@ -27,6 +27,10 @@ jnum        2 $B/test_jnum
 raster      1 $B/test_raster
 matrix      1 $B/test_matrix
 scene       1 $B/test_scene
+nameset     2 $B/test_nameset
+numparse    2 $B/test_numparse
+baseline    2 sh tests/baseline.sh $B
+stream      2 sh tests/stream.sh $B/pipetrace
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz

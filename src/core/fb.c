@@ -5,6 +5,7 @@
 #include <assert.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "core/fb.h"
 
 int pt_fb_init(pt_fb *fb, int w, int h, const unsigned char bg[3])
@@ -16,21 +17,14 @@ int pt_fb_init(pt_fb *fb, int w, int h, const unsigned char bg[3])
     fb->w = w; fb->h = h;
     fb->rgb = malloc(3 * n);
     if (!fb->rgb) return -1;
-    for (k = 0; k < n; k++) {
-        fb->rgb[3 * k] = bg[0];
-        fb->rgb[3 * k + 1] = bg[1];
-        fb->rgb[3 * k + 2] = bg[2];
+    if (bg[0] == bg[1] && bg[1] == bg[2]) {     /* gray (black): one byte */
+        memset(fb->rgb, bg[0], 3 * n);
+        return 0;
     }
+    for (k = 0; k < 3; k++) fb->rgb[k] = bg[k]; /* one pixel, then doubling */
+    for (k = 1; k < n; k *= 2)
+        memcpy(fb->rgb + 3 * k, fb->rgb, 3 * (k < n - k ? k : n - k));
     return 0;
-}
-
-void pt_fb_set(pt_fb *fb, int64_t idx, const unsigned char color[3])
-{
-    unsigned char *p;
-
-    assert(idx >= 0 && idx < (int64_t)fb->w * fb->h);
-    p = fb->rgb + 3 * (size_t)idx;
-    p[0] = color[0]; p[1] = color[1]; p[2] = color[2];
 }
 
 int pt_fb_write_ppm(const pt_fb *fb, FILE *f)

@@ -5,6 +5,8 @@
 #ifndef PT_FB_H
 #define PT_FB_H
 
+#include <assert.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -17,8 +19,16 @@ typedef struct pt_fb {
 ** memory (then fb->rgb is NULL). */
 int pt_fb_init(pt_fb *fb, int w, int h, const unsigned char bg[3]);
 
-/* Set pixel idx (0 <= idx < w*h) to color.  This function can't fail. */
-void pt_fb_set(pt_fb *fb, int64_t idx, const unsigned char color[3]);
+/* Set pixel idx (0 <= idx < w*h) to color.  This function can't fail.
+** Inline: the rasterizer calls it for every pixel it draws. */
+static inline void pt_fb_set(pt_fb *fb, int64_t idx, const unsigned char color[3])
+{
+    unsigned char *p;
+
+    assert(idx >= 0 && idx < (int64_t)fb->w * fb->h);
+    p = fb->rgb + 3 * (size_t)idx;
+    p[0] = color[0]; p[1] = color[1]; p[2] = color[2];
+}
 
 /* Write fb as binary PPM (P6) to the open stream f.  Returns 0 or -1 (errno). */
 int pt_fb_write_ppm(const pt_fb *fb, FILE *f);

@@ -172,7 +172,8 @@ static void count_record(void *ud, const pt_vrec *r)
 }
 
 /* The sinks of one model: traced[st] for a traced vertex, quiet[st] (counts
-** only) for the others. */
+** only) for the others.  All NULL when nobody listens (no sink, no summary):
+** then the stages build no record and no warning is counted. */
 typedef struct model_sinks {
     counting_sink counters[2];   /* [0]: count only, [1]: count and forward */
     pt_sink sink_of[2];
@@ -191,8 +192,9 @@ static void sinks_init(model_sinks *ms, const pt_model_plan *mp, const pt_listen
     ms->sink_of[0].ud = &ms->counters[0];
     ms->sink_of[1].ud = &ms->counters[1];
     for (st = 0; st < PT_NSTAGES_ALL; st++) {
-        ms->traced[st] = &ms->sink_of[mp->why[st] == PT_WHY_TRACED];
-        ms->quiet[st] = &ms->sink_of[0];
+        int listens = l->sink.vertex || l->summary;
+        ms->traced[st] = listens ? &ms->sink_of[mp->why[st] == PT_WHY_TRACED] : NULL;
+        ms->quiet[st] = listens ? &ms->sink_of[0] : NULL;
     }
 }
 
@@ -250,18 +252,20 @@ static void filing_end(filing *f, const pt_listener *l, const pt_model *m, uint6
             l->sink.vertex(l->sink.ud, &f->j.rec[f->came[i]]);
 }
 
-/* What the rasterizer needs of a vertex. */
-typedef struct vtx {
-    pt_vec2 pp;                  /* pixel-plane point (NaN: none) */
-    pt_vec4 clip;                /* matrix camera: clip coordinates */
-    unsigned code;               /* matrix camera: CVV outcode */
-} vtx;
+/* What the rasterizer needs of a vertex: its pixel-plane point (pt_vec2,
+** for both cameras) and, for the matrix camera only, this.  Kept apart so
+** that the classic camera keeps 16 bytes a vertex, not 56 (peak memory). */
+typedef struct vtx_clip {
+    pt_vec4 clip;                /* clip coordinates */
+    unsigned code;               /* CVV outcode */
+} vtx_clip;
 
-/* Run every vertex of model k that needs it; fill v[] for the rasterizer.
-** fl: room for a journey (used when the listener wants journeys). */
+/* Run every vertex of model k that needs it; fill pp[] (and cl[] when not
+** NULL) for the rasterizer.  fl: room for a journey (used when the listener
+** wants journeys). */
 static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
                       const pt_listener *l, size_t k, const model_sinks *ms,
-                      vtx *v, filing *fl, pt_summary *sum)
+                      pt_vec2 *pp, vtx_clip *cl, filing *fl, pt_summary *sum)
 {
     const pt_model *m = &s->models[k];
     const pt_model_plan *mp = &p->models[k];
@@ -274,7 +278,7 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
         const pt_sink *const *sinks = traced ? ms->traced : ms->quiet;
         int behind;
         filing *f = traced && l->journey ? fl : NULL;
-        vtx x;
+        struct { pt_vec2 pp; pt_vec4 clip; unsigned code; } x;
 
         if (!traced && !o->rasterize) continue;
         if (!mp->used[j] && !(traced && o->every_vertex)) continue;
@@ -303,7 +307,8 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
             sum->vertices_traced++;
             sum->behind += behind;
         }
-        if (o->rasterize) v[j] = x;
+        if (o->rasterize) pp[j] = x.pp;
+        if (o->rasterize && cl) { cl[j].clip = x.clip; cl[j].code = x.code; }
     }
 }
 
@@ -318,16 +323,16 @@ typedef struct raster_ctx {
     pt_fb *fb;                   /* NULL: nothing to draw */
     int64_t npix;                /* W * H: the pixel array's length */
     pt_summary *sum;
+    int x_ul, y_ul, W, H;        /* the scene's, at hand for every pixel */
 } raster_ctx;
 
 static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
     raster_ctx *rc = ud;
-    pt_pix vp = {x_vp, y_vp, 1}, f;
-    int64_t idx;
+    pt_pix vp = {x_vp, y_vp, 1};
+    pt_pix f = pt_viewport2fb(vp, rc->x_ul, rc->y_ul, NULL);
+    int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
 
-    f = pt_viewport2fb(vp, rc->s->vp_x, rc->s->vp_y, NULL);
-    idx = pt_fb2index(f, rc->s->fb_w, rc->s->fb_h, NULL);
     rc->sum->pixels++;
     if (rc->l && rc->l->pixel) rc->l->pixel(rc->l->ud, rc->m, rc->seg, f.x, f.y, idx);
     /* a student's framebuffer or index stage may name no pixel of the array
@@ -391,15 +396,13 @@ static pt_vec2 clip_point(const pt_scene *s, const pt_plan *p, size_t k, uint64_
 ** when nothing of it is visible, else 1 with *a, *b the pixel-plane points to
 ** draw between. */
 static int matrix_segment(const pt_scene *s, const pt_plan *p, size_t k, uint64_t seg,
-                          const vtx *va, const vtx *vb, const pt_listener *l,
+                          const vtx_clip *va, const vtx_clip *vb, const pt_listener *l,
                           const model_sinks *ms, filing *fl, pt_summary *sum,
                           pt_vec2 *a, pt_vec2 *b)
 {
     double t0, t1;
     pt_vec4 q0, q1;
 
-    *a = va->pp;
-    *b = vb->pp;
     if ((va->code | vb->code) == 0) return 1;           /* all inside */
     if (!pt_clip_segment(va->clip, vb->clip, &t0, &t1, &q0, &q1)) return 0;
     if (va->code)                                       /* a new first end */
@@ -413,16 +416,18 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
            const pt_listener *l, pt_fb *fb, pt_summary *sum)
 {
     size_t k, j;
-    vtx **vs;                    /* vs[k][v]: what the rasterizer needs of v */
+    pt_vec2 **pps;               /* pps[k][v]: vertex v's pixel-plane point */
+    vtx_clip **cls;              /* cls[k][v]: its clip coordinates (matrix) */
     model_sinks *ms;             /* ms[k]: model k's sinks */
     filing fl;                   /* a traced point's journey (l->journey) */
     int status = 0;
 
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
-    vs = calloc(s->nmodels ? s->nmodels : 1, sizeof *vs);
+    pps = calloc(s->nmodels ? s->nmodels : 1, sizeof *pps);
+    cls = calloc(s->nmodels ? s->nmodels : 1, sizeof *cls);
     ms = malloc((s->nmodels ? s->nmodels : 1) * sizeof *ms);
-    if (!vs || !ms) { free(vs); free(ms); return -1; }
+    if (!pps || !cls || !ms) { free(pps); free(cls); free(ms); return -1; }
     if (l->header) l->header(l->ud, s, p);
 
     for (k = 0; k < s->nmodels; k++) {      /* run the stages */
@@ -433,21 +438,29 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
         sum->vertices_unused += m->nv - p->models[k].nused;
         sinks_init(&ms[k], &p->models[k], l, sum);
         if (o->rasterize) {
-            vs[k] = malloc((m->nv ? m->nv : 1) * sizeof **vs);
-            if (!vs[k]) { status = -1; goto done; }
+            pps[k] = malloc((m->nv ? m->nv : 1) * sizeof **pps);
+            if (s->matrix) cls[k] = malloc((m->nv ? m->nv : 1) * sizeof **cls);
+            if (!pps[k] || (s->matrix && !cls[k])) { status = -1; goto done; }
         }
-        run_model(s, p, o, l, k, &ms[k], vs[k], &fl, sum);
+        run_model(s, p, o, l, k, &ms[k], pps[k], cls[k], &fl, sum);
     }
 
-    if (o->rasterize) {                     /* rasterize */
+    /* Rasterize for an image, for a listener of pixel, clip, skip or summary
+    ** records, or for the matrix camera's points clipping makes; else nobody
+    ** listens (a CSV trace has no raster rows): skip it. */
+    if (o->rasterize && (fb || l->pixel || l->clip || l->skip || l->summary || s->matrix)) {
         pt_raster_out out = {on_pixel, on_clip, NULL};
         pt_raster_vp to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
         raster_ctx rc;
+        pt_raster_image im;          /* draw: the classic camera's pixels, untraced */
+        int draw;
 
         sum->rasterized = 1;
         rc.s = s; rc.fb = fb; rc.sum = sum;
         rc.npix = (int64_t)s->fb_w * s->fb_h;
+        rc.x_ul = s->vp_x; rc.y_ul = s->vp_y; rc.W = s->fb_w; rc.H = s->fb_h;
         out.ud = &rc;
+        im.fb = fb; im.x_ul = s->vp_x; im.y_ul = s->vp_y; im.pixels = 0;
         for (k = 0; k < s->nmodels; k++) {
             const pt_model *m = &s->models[k];
             int traced = p->models[k].selected && !o->vertex;  /* its clip vertices */
@@ -455,20 +468,25 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
 
             rc.m = m;
             rc.l = report ? l : NULL;
+            draw = !s->matrix && fb && !(rc.l && rc.l->pixel);
+            im.color = m->color;
             for (j = 0; j < m->nseg; j++) {
-                const vtx *va = &vs[k][m->seg[j].a], *vb = &vs[k][m->seg[j].b];
-                pt_vec2 a = va->pp, b = vb->pp;
+                pt_vec2 a = pps[k][m->seg[j].a], b = pps[k][m->seg[j].b];
                 int r;
 
                 rc.seg = j + 1;
-                if (s->matrix && !matrix_segment(s, p, k, j + 1, va, vb, traced ? l : NULL,
+                if (s->matrix && !matrix_segment(s, p, k, j + 1, &cls[k][m->seg[j].a],
+                                                 &cls[k][m->seg[j].b], traced ? l : NULL,
                                                  &ms[k], &fl, sum, &a, &b)) {
                     sum->segments_culled++;
                     if (report && l->skip)
                         l->skip(l->ud, m, j + 1, 0, "outside the view volume");
                     continue;
                 }
-                r = pt_raster_segment(a, b, s->vp_w, s->vp_h, to_vp, &out);
+                if (draw)                   /* nobody listens to the pixels */
+                    r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &im, &out);
+                else
+                    r = pt_raster_segment(a, b, s->vp_w, s->vp_h, to_vp, &out);
                 if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
                 if (r == PT_RASTER_SKIPPED) {
                     sum->segments_skipped++;
@@ -476,11 +494,13 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
                 }
             }
         }
+        sum->pixels += im.pixels;           /* those drawn without on_pixel */
     }
     if (l->summary) l->summary(l->ud, sum);
 done:
-    for (k = 0; k < s->nmodels; k++) free(vs[k]);
-    free(vs);
+    for (k = 0; k < s->nmodels; k++) { free(pps[k]); free(cls[k]); }
+    free(pps);
+    free(cls);
     free(ms);
     return status;
 }

@@ -92,7 +92,9 @@ typedef struct pt_summary {
                                  ** steps, but several can add up to more) */
     uint64_t clip_runs;          /* clip records */
     uint64_t behind;             /* traced vertices behind a perspective camera */
-    uint64_t warnings[PT_NWARN]; /* records raised with warning k (traced or not) */
+    uint64_t warnings[PT_NWARN]; /* records raised with warning k (traced or not);
+                                 ** counted when the listener has a sink or a
+                                 ** summary, else 0: nobody listens, no record */
     int rasterized;              /* 1: the segments were drawn */
 } pt_summary;
 

@@ -7,6 +7,17 @@
 #include <math.h>
 #include "core/raster.h"
 #include "stages/pt_round.h"
+#include "stages/s4_pixel2viewport.h"
+#include "stages/s5_viewport2fb.h"
+#include "stages/s6_fb2index.h"
+
+#if defined(__GNUC__)
+#define ALWAYS_INLINE __attribute__((always_inline))
+#define FLATTEN __attribute__((flatten))
+#else
+#define ALWAYS_INLINE
+#define FLATTEN
+#endif
 
 /* ===== exact fast-forward of y += m ===== */
 
@@ -82,6 +93,10 @@ static void run_flush(clip_run *run, const pt_raster_out *out)
     run->count = 0;
 }
 
+/* Where a pixel inside goes: out->pixel (pt_raster_segment), or straight
+** through the framebuffer and index stages into an image (pt_raster_draw). */
+typedef void pixel_fn(void *ud, int64_t x_vp, int64_t y_vp);
+
 /* The segment being stepped: s is the stepped coordinate (x, or y when
 ** transposed), acc the other one, accumulated. */
 typedef struct dda {
@@ -92,7 +107,7 @@ typedef struct dda {
 
 /* The viewport pixel of step (s, acc): the point (s, acc), or (acc, s) when
 ** transposed, through the viewport stage. */
-static pt_pix step_pixel(const dda *d, int64_t s, double acc)
+static inline ALWAYS_INLINE pt_pix step_pixel(const dda *d, int64_t s, double acc)
 {
     pt_vec2 p;
 
@@ -101,8 +116,13 @@ static pt_pix step_pixel(const dda *d, int64_t s, double acc)
     return d->to_vp(p, d->w, d->h, NULL);
 }
 
-int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
-                      const pt_raster_out *out)
+/* The DDA, once for both entry points below: inline in each, so that where
+** to_vp and pixel are known functions whose code the compiler sees (the
+** Makefile compiles this file with the chosen viewport, framebuffer and index
+** stages), the calls in the loop become plain code. */
+static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
+                                        pt_raster_vp to_vp, pixel_fn *pixel,
+                                        void *pixel_ud, const pt_raster_out *out)
 {
     int64_t ix0, iy0, ix1, iy1, s, s0, s1, band_lo, band_hi, margin;
     double x0, y0, x1, y1, m, acc;
@@ -119,7 +139,7 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
 
     if (x0 == x1 && y0 == y1) {                     /* degenerate: one pixel */
         p = step_pixel(&d, ix0, y0);
-        if (p.ok && pt_inside(p.x, p.y, w, h)) out->pixel(out->ud, p.x, p.y);
+        if (p.ok && pt_inside(p.x, p.y, w, h)) pixel(pixel_ud, p.x, p.y);
         else out->clip(out->ud, 1, p, p);
         return PT_RASTER_DEGENERATE;
     }
@@ -160,7 +180,7 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
         p = step_pixel(&d, s, acc);
         if (p.ok && pt_inside(p.x, p.y, w, h)) {
             run_flush(&run, out);
-            out->pixel(out->ud, p.x, p.y);
+            pixel(pixel_ud, p.x, p.y);
         } else {
             run_add(&run, 1, p, p);
         }
@@ -173,4 +193,30 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
     }
     run_flush(&run, out);
     return PT_RASTER_DRAWN;
+}
+
+int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
+                      const pt_raster_out *out)
+{
+    return segment(p0, p1, w, h, to_vp, out->pixel, out->ud, out);
+}
+
+/* A pixel inside the viewport through the framebuffer and index stages into
+** the image; one the stages put outside the pixel array is left out (a
+** student's stage can: Java would throw). */
+static void draw_pixel(void *ud, int64_t x_vp, int64_t y_vp)
+{
+    pt_raster_image *im = ud;
+    pt_pix vp = {x_vp, y_vp, 1};
+    pt_pix f = pt_viewport2fb(vp, im->x_ul, im->y_ul, NULL);
+    int64_t idx = pt_fb2index(f, im->fb->w, im->fb->h, NULL);
+
+    im->pixels++;
+    if (idx >= 0 && idx < (int64_t)im->fb->w * im->fb->h) pt_fb_set(im->fb, idx, im->color);
+}
+
+FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image *im,
+                           const pt_raster_out *out)
+{
+    return segment(p0, p1, w, h, pt_pixel2viewport, draw_pixel, im, out);
 }

@@ -24,6 +24,7 @@
 
 #include <stdint.h>
 #include "stages/pt_stage.h"
+#include "core/fb.h"
 
 /* What the rasterizer reports, in step order. */
 typedef struct pt_raster_out {
@@ -47,6 +48,23 @@ typedef pt_pix (*pt_raster_vp)(pt_vec2 pp, int w, int h, const pt_sink *sink);
 ** an endpoint is not finite or beyond PT_PIX_LIMIT.  Requires w, h >= 1. */
 int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
                       const pt_raster_out *out);
+
+/* An image the classic camera draws into (pt_raster_draw). */
+typedef struct pt_raster_image {
+    pt_fb *fb;                   /* the framebuffer */
+    int x_ul, y_ul;              /* the viewport's upper-left corner in it */
+    const unsigned char *color;  /* the segment's color, RGB */
+    uint64_t pixels;             /* pixels drawn (inside the viewport), added to */
+} pt_raster_image;
+
+/* pt_raster_segment() for the classic camera when nobody listens to the
+** pixels: each step's pixel from pt_pixel2viewport(), each pixel inside
+** through pt_viewport2fb() and pt_fb2index() into im->fb (unless the stages
+** put it outside the pixel array), counted in im->pixels; runs of clipped
+** steps still go to out->clip (out->pixel is not used).  The same pixels,
+** without a call through a pointer for each: the untraced render's loop. */
+int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image *im,
+                   const pt_raster_out *out);
 
 /* y after k steps of y += m, exactly as k additions in double would leave it.
 ** Costs O(number of binades crossed), not O(k).  This function can't fail. */

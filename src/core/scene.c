@@ -2,12 +2,16 @@
 ** src/core/scene.c -- parse .scene and Wavefront .obj files into a pt_scene
 ** See LICENSE for copyright and license.
 **
-** Design.  A file is read into memory whole and walked once, line by line.
+** Design.  A file is read as a stream, a window of whole lines at a time
+** (fill(): 64 KiB, more for a longer line), and walked once, line by line: the
+** parse holds the scene's data, never its text.  Text in memory
+** (pt_scene_parse) is walked the same way, all of it one window.
 ** next_line() finds the end of a line and checks every byte on the way (valid
 ** UTF-8, no control characters, CR only as part of CRLF), so everything after
 ** it sees clean text.  next_token() splits a line at spaces and tabs and hands
 ** out (pointer, length) pairs into the buffer: tokens are never copied, except
-** a number longer than 127 bytes, which strtod() needs NUL-terminated.
+** a number that takes strtod()'s path, which needs it NUL-terminated
+** (core/numparse.h).
 **
 ** A parser struct holds what spans lines: which once-only directives were seen
 ** and on which line, and which model is current (always the last one in
@@ -29,6 +33,8 @@
 #include <string.h>
 
 #include "core/scene.h"
+#include "core/nameset.h"
+#include "core/numparse.h"
 
 #define MAX_VERTS  0x7fffffffu  /* per model: indices must fit in a uint32_t */
 #define MAX_SEGS   0x7fffffffu  /* per model: a matching limit for segments */
@@ -56,7 +62,14 @@ typedef struct source {
     size_t lineno;              /* number of the current line, 1-based */
     int obj;                    /* 1: OBJ mode (only v, l, f; other keywords ignored) */
     size_t base;                /* vertices the model had before this text began */
+    FILE *f;                    /* a stream: the file; NULL: the text is in memory */
+    char *buf;                  /* a stream: the window p..end lies in, owned */
+    size_t cap;                 /* its size in bytes */
+    int eof;                    /* 1: nothing more to read (always, in memory) */
+    int errnum;                 /* errno of a read error, else 0 */
 } source;
+
+#define CHUNK 65536             /* a stream's window, at least */
 
 /* What the parse of one scene remembers between lines. */
 typedef struct parser {
@@ -77,6 +90,7 @@ typedef struct parser {
     size_t color_line;
     size_t *model_line;         /* model_line[i]: line of the `model` of s->models[i] */
     size_t cap_model_line;
+    pt_nameset names;             /* the models' names -> their index in s->models */
 } parser;
 
 /* ---------------------------------------------------------------- messages */
@@ -235,17 +249,60 @@ static size_t check_char(parser *ps, const source *src, const unsigned char *p,
     return 0;
 }
 
+/* A stream: move the unread text to the start of the window, grow the window
+** when that text fills half of it (a long line), and read what fits after
+** it.  After a chunk with a NUL byte nothing more is read: the parser
+** reports the byte anyway, and `obj /dev/zero` must not eat all memory.
+** Returns 0; -1 on a read error (errno in src->errnum); -2 when out of memory. */
+static void *grow(void *p, size_t *cap, size_t size, size_t max);
+
+static int fill(source *src)
+{
+    size_t keep = (size_t)(src->end - src->p), want, got;
+    char *p;
+
+    memmove(src->buf, src->p, keep);
+    if (keep > src->cap / 2) {
+        p = grow(src->buf, &src->cap, 1, SIZE_MAX);
+        if (p == NULL)
+            return -2;
+        src->buf = p;
+    }
+    src->p = src->line = src->buf;
+    src->end = src->buf + keep;
+    want = src->cap - keep;
+    errno = 0;
+    got = fread(src->buf + keep, 1, want, src->f);
+    src->end += got;
+    if (got > 0 && memchr(src->buf + keep, '\0', got) != NULL)
+        src->eof = 1;
+    if (got < want) {                   /* end of file, or an error */
+        src->eof = 1;
+        if (ferror(src->f)) {
+            src->errnum = errno != 0 ? errno : EIO;
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* Step src to its next line and check every byte of it, comment included.
 ** *line gets the line's text up to the first '#' or the line end (LF, CRLF or
 ** the end of the text).  Returns 1 for a line, 0 at the end, -1 on a bad byte. */
 static int next_line(parser *ps, source *src, cursor *line)
 {
-    const unsigned char *p = (const unsigned char *)src->p;
-    const unsigned char *end = (const unsigned char *)src->end;
+    const unsigned char *p, *end;
     const unsigned char *hash = NULL;   /* the first '#', if any */
     const unsigned char *stop;          /* where the line's text ends */
     size_t n;
+    int r;
 
+    while (!src->eof && memchr(src->p, '\n', (size_t)(src->end - src->p)) == NULL)
+        if ((r = fill(src)) < 0)        /* a stream: read on to the line's end */
+            return fail_at(ps->err, ps->errlen, src->name, src->lineno + 1, 1, "%s",
+                           r == -2 ? "out of memory" : strerror(src->errnum));
+    p = (const unsigned char *)src->p;
+    end = (const unsigned char *)src->end;
     if (p == end)
         return 0;
     src->line = src->p;
@@ -313,34 +370,6 @@ static int is_digit(char c)
     return c >= '0' && c <= '9';
 }
 
-/* Does p[0..n) match [+-]?(digits[.digits*]|.digits)([eE][+-]?digits)? ?
-** Anything else (hex, inf, nan, "1f", "1,5") is refused before strtod sees it. */
-static int is_decimal(const char *p, size_t n)
-{
-    const char *e = p + n;
-    size_t before = 0, after = 0;       /* digits before and after the point */
-
-    if (p < e && (*p == '+' || *p == '-'))
-        p++;
-    for (; p < e && is_digit(*p); p++)
-        before++;
-    if (p < e && *p == '.')
-        for (p++; p < e && is_digit(*p); p++)
-            after++;
-    if (before == 0 && after == 0)
-        return 0;
-    if (p < e && (*p == 'e' || *p == 'E')) {
-        p++;
-        if (p < e && (*p == '+' || *p == '-'))
-            p++;
-        if (p == e || !is_digit(*p))
-            return 0;
-        while (p < e && is_digit(*p))
-            p++;
-    }
-    return p == e;
-}
-
 /* Does p[0..n) match [+-]?digits ? */
 static int is_integer(const char *p, size_t n)
 {
@@ -379,27 +408,22 @@ static int scan_integer(const char *p, size_t n, int64_t *out)
     return 0;
 }
 
-/* Parse t as a finite decimal number into *out; what names it in messages. */
+/* Parse t as a finite decimal number into *out; what names it in messages.
+** pt_parse_decimal() checks the form [+-]?(digits[.digits*]|.digits)
+** ([eE][+-]?digits)? (no hex, inf, nan, "1f", "1,5") and converts in one
+** pass, exactly as strtod() would (core/numparse.h). */
 static int parse_number(parser *ps, const source *src, const token *t,
                         const char *what, double *out)
 {
-    char small[128], q[QUOTE_BUF];
-    char *buf = small;
+    char q[QUOTE_BUF];
     double x;
+    int r = pt_parse_decimal(t->p, t->n, &x);
 
-    if (!is_decimal(t->p, t->n))
+    if (r == -1)
         return fail(ps, src, t->p, "'%s' is not a decimal number",
                     shown(t->p, t->n, q));
-    if (t->n >= sizeof small) {         /* rare: a very long number */
-        buf = malloc(t->n + 1);
-        if (buf == NULL)
-            return fail(ps, src, t->p, "out of memory");
-    }
-    memcpy(buf, t->p, t->n);
-    buf[t->n] = '\0';
-    x = strtod(buf, NULL);              /* "C" locale: '.' is the decimal point */
-    if (buf != small)
-        free(buf);
+    if (r == -2)
+        return fail(ps, src, t->p, "out of memory");
     if (!isfinite(x))
         return fail(ps, src, t->p, "%s '%s' is not finite", what,
                     shown(t->p, t->n, q));
@@ -855,8 +879,8 @@ static int do_world(parser *ps, source *src, const token *dir, cursor *args)
 
 /* model NAME: a new current model.  Names are unique and go into JSON, CSV
 ** and text output, so '"', '\' and ',' are kept out of them.  (Spaces, '#'
-** and control characters cannot reach here.)  The duplicate check is a linear
-** scan: scenes have few models. */
+** and control characters cannot reach here.)  The duplicate check asks a hash
+** table (core/nameset.h): a scene of many models is read in linear time. */
 static int do_model(parser *ps, source *src, const token *dir, cursor *args)
 {
     pt_scene *s = ps->s;
@@ -870,12 +894,11 @@ static int do_model(parser *ps, source *src, const token *dir, cursor *args)
         if (a.p[i] == '"' || a.p[i] == '\\' || a.p[i] == ',')
             return fail(ps, src, a.p + i, "model name '%s' may not contain '%c'",
                         shown(a.p, a.n, q), a.p[i]);
-    for (i = 0; i < s->nmodels; i++)
-        if (strlen(s->models[i].name) == a.n
-            && memcmp(s->models[i].name, a.p, a.n) == 0)
-            return fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",
-                        shown(a.p, a.n, q), ps->model_line[i]);
-    if (new_model(ps, a.p, a.n, src->lineno) < 0)
+    if ((i = pt_nameset_find(&ps->names, a.p, a.n)) != SIZE_MAX)
+        return fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",
+                    shown(a.p, a.n, q), ps->model_line[i]);
+    if (new_model(ps, a.p, a.n, src->lineno) < 0
+        || pt_nameset_add(&ps->names, cur_model(ps)->name, a.n, s->nmodels - 1) < 0)
         return fail(ps, src, dir->p, "out of memory");
     return 0;
 }
@@ -963,64 +986,48 @@ static int do_face(parser *ps, source *src, const token *dir, cursor *args)
 
 /* ===== files, includes and OBJ ===== */
 
-/* Read the whole file at path into a new NUL-terminated buffer *text of *len
-** bytes (plus the NUL).  A chunked read works for pipes too, where the size is
-** not known beforehand.  Reading stops early after a chunk with a NUL byte:
-** the parser reports that byte anyway, and stopping keeps `obj /dev/zero`
-** from eating all memory.  Returns 0; -1 on a read error, with the errno value
-** in *errnum (0 if none was set); -2 when out of memory. */
-static int read_file(const char *path, char **text, size_t *len, int *errnum)
+/* Open the file at path as a stream src (name path, OBJ mode obj, base as in
+** init_source) and read its first window, skipping a UTF-8 byte-order mark.
+** Returns 0 (close it with close_stream); -1 when it cannot be opened or
+** read, with the errno value in *errnum (0 if none was set); -2 when out of
+** memory. */
+static int open_stream(source *src, const char *path, int obj, size_t base, int *errnum)
 {
-    FILE *f;
-    char *buf, *p;
-    size_t n = 0, cap = 65536, want, got;
-    int status = 0;
+    int r;
 
-    *text = NULL;
-    *len = 0;
+    memset(src, 0, sizeof *src);
+    src->name = path;
+    src->obj = obj;
+    src->base = base;
     errno = 0;
-    f = fopen(path, "rb");
-    if (f == NULL) {
+    src->f = fopen(path, "rb");
+    if (src->f == NULL) {
         *errnum = errno;
         return -1;
     }
-    buf = malloc(cap);
-    if (buf == NULL) {
-        fclose(f);
+    src->buf = malloc(CHUNK);
+    if (src->buf == NULL) {
+        fclose(src->f);
         return -2;
     }
-    for (;;) {
-        if (cap - n < 2) {              /* keep room for a byte and the NUL */
-            p = grow(buf, &cap, 1, SIZE_MAX);
-            if (p == NULL) {
-                status = -2;
-                break;
-            }
-            buf = p;
-        }
-        want = cap - n - 1;
-        errno = 0;
-        got = fread(buf + n, 1, want, f);
-        n += got;
-        if (got > 0 && memchr(buf + n - got, '\0', got) != NULL)
-            break;                      /* a NUL byte: see the comment above */
-        if (got < want) {               /* end of file, or an error */
-            if (ferror(f)) {
-                *errnum = errno;
-                status = -1;
-            }
-            break;
-        }
+    src->cap = CHUNK;
+    src->p = src->end = src->line = src->buf;
+    r = fill(src);
+    if (r < 0) {
+        *errnum = src->errnum;
+        fclose(src->f);
+        free(src->buf);
+        return r;
     }
-    fclose(f);
-    if (status != 0) {
-        free(buf);
-        return status;
-    }
-    buf[n] = '\0';
-    *text = buf;
-    *len = n;
+    if (src->end - src->p >= 3 && memcmp(src->p, "\xEF\xBB\xBF", 3) == 0)
+        src->p = src->line = src->p + 3;
     return 0;
+}
+
+static void close_stream(source *src)
+{
+    fclose(src->f);
+    free(src->buf);
 }
 
 static int parse_source(parser *ps, source *src);
@@ -1046,6 +1053,11 @@ static void init_source(source *src, const char *name, const char *text,
     src->lineno = 0;
     src->obj = obj;
     src->base = base;
+    src->f = NULL;
+    src->buf = NULL;
+    src->cap = 0;
+    src->eof = 1;                       /* all of it is in memory */
+    src->errnum = 0;
 }
 
 /* obj PATH: the rest of the line, trimmed, names an OBJ file relative to the
@@ -1054,8 +1066,8 @@ static void init_source(source *src, const char *name, const char *text,
 static int do_obj(parser *ps, source *src, const token *dir, cursor *args)
 {
     const char *p = args->p, *e = args->end;
-    size_t n, len, dirlen = ps->dirlen;
-    char *path, *text;
+    size_t n, dirlen = ps->dirlen;
+    char *path;
     int errnum = 0, r;
     source sub;
 
@@ -1074,16 +1086,15 @@ static int do_obj(parser *ps, source *src, const token *dir, cursor *args)
         memcpy(path, ps->dir, dirlen);
     memcpy(path + dirlen, p, n);
     path[dirlen + n] = '\0';
-    r = read_file(path, &text, &len, &errnum);
+    r = open_stream(&sub, path, 1, cur_model(ps)->nv, &errnum);
     if (r == -1)
         r = fail(ps, src, p, "cannot read '%s': %s", path,
                  errnum != 0 ? strerror(errnum) : "read error");
     else if (r == -2)
         r = fail(ps, src, p, "out of memory");
     else {
-        init_source(&sub, path, text, len, 1, cur_model(ps)->nv);
         r = parse_source(ps, &sub);     /* OBJ mode: never comes back here */
-        free(text);
+        close_stream(&sub);
     }
     free(path);
     return r;
@@ -1268,25 +1279,24 @@ static void init_parser(parser *ps, pt_scene *s, const char *dir, size_t dirlen,
     ps->errlen = errlen;
 }
 
-/* Parse the scene text[0..len) called name; obj paths are relative to
+/* Parse the scene src called name; obj paths are relative to
 ** name[0..dirlen). */
-static int parse_scene(pt_scene *s, const char *name, size_t dirlen,
-                       const char *text, size_t len, char *err, size_t errlen)
+static int parse_scene(pt_scene *s, const char *name, size_t dirlen, source *src,
+                       char *err, size_t errlen)
 {
     parser ps;
-    source src;
     int r;
 
     if (start_scene(s, name) < 0)
         return fail_at(err, errlen, name, 1, 1, "out of memory");
     init_parser(&ps, s, name, dirlen, err, errlen);
-    init_source(&src, name, text, len, 0, 0);
-    r = parse_source(&ps, &src);
+    r = parse_source(&ps, src);
     if (r == 0)
         r = finish_viewport(&ps, name);
     if (r == 0)
         r = finish_camera(&ps, name);
     free(ps.model_line);
+    pt_nameset_free(&ps.names);
     if (r < 0)
         pt_scene_free(s);
     return r;
@@ -1373,13 +1383,11 @@ static int frame_obj(const pt_model *m, pt_vec3 *t)
     return isfinite(t->z) ? 0 : -1;     /* x and y are finite: c is */
 }
 
-/* Wrap the OBJ text[0..len) from path in a default scene (see frame_obj). */
-static int load_obj(pt_scene *s, const char *path, const char *text, size_t len,
-                    char *err, size_t errlen)
+/* Wrap the OBJ file src from path in a default scene (see frame_obj). */
+static int load_obj(pt_scene *s, const char *path, source *src, char *err, size_t errlen)
 {
     const char *name;
     parser ps;
-    source src;
     pt_vec3 t = { 0.0, 0.0, 0.0 };
     size_t n;
     int r;
@@ -1391,8 +1399,7 @@ static int load_obj(pt_scene *s, const char *path, const char *text, size_t len,
     if (new_model(&ps, name, n, 1) < 0) {
         r = fail_at(err, errlen, path, 1, 1, "out of memory");
     } else {
-        init_source(&src, path, text, len, 1, 0);
-        r = parse_source(&ps, &src);
+        r = parse_source(&ps, src);
     }
     if (r == 0 && frame_obj(&s->models[0], &t) < 0)
         r = fail_at(err, errlen, path, 1, 1,
@@ -1404,6 +1411,7 @@ static int load_obj(pt_scene *s, const char *path, const char *text, size_t len,
         r = finish_viewport(&ps, path);
     }
     free(ps.model_line);
+    pt_nameset_free(&ps.names);
     if (r < 0)
         pt_scene_free(s);
     return r;
@@ -1427,33 +1435,37 @@ static int ends_with_obj(const char *path)
 int pt_scene_load(pt_scene *s, const char *path, char *err, size_t errlen)
 {
     const char *slash;
-    char *text;
-    size_t len, dirlen;
+    size_t dirlen;
     int errnum = 0, r;
+    source src;
 
     memset(s, 0, sizeof *s);
-    r = read_file(path, &text, &len, &errnum);
+    r = open_stream(&src, path, ends_with_obj(path), 0, &errnum);
     if (r == -1)
         return fail_at(err, errlen, path, 1, 1, "cannot read file: %s",
                        errnum != 0 ? strerror(errnum) : "read error");
     if (r == -2)
         return fail_at(err, errlen, path, 1, 1, "out of memory");
-    if (ends_with_obj(path)) {
-        r = load_obj(s, path, text, len, err, errlen);
+    if (src.obj) {
+        r = load_obj(s, path, &src, err, errlen);
     } else {
         slash = strrchr(path, '/');
         dirlen = slash != NULL ? (size_t)(slash - path) + 1 : 0;
-        r = parse_scene(s, path, dirlen, text, len, err, errlen);
+        r = parse_scene(s, path, dirlen, &src, err, errlen);
     }
-    free(text);
+    close_stream(&src);
     return r;
 }
 
 int pt_scene_parse(pt_scene *s, const char *name, const char *text, size_t len,
                    char *err, size_t errlen)
 {
-    return parse_scene(s, name != NULL ? name : "<builtin>", 0, text, len,
-                       err, errlen);
+    source src;
+
+    if (name == NULL)
+        name = "<builtin>";
+    init_source(&src, name, text, len, 0, 0);
+    return parse_scene(s, name, 0, &src, err, errlen);
 }
 
 void pt_scene_free(pt_scene *s)

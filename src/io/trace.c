@@ -33,7 +33,13 @@ static void put(pt_trace *t, const char *s, size_t n)
         if (fwrite(s, 1, n, t->f) != n) write_failed(t);
         return;
     }
-    memcpy(t->buf + t->len, s, n);
+    if (n <= 8) {                           /* most pieces: a comma, a key, a digit */
+        char *o = t->buf + t->len;
+        size_t k;
+        for (k = 0; k < n; k++) o[k] = s[k];
+    } else {
+        memcpy(t->buf + t->len, s, n);
+    }
     t->len += n;
 }
 
@@ -696,6 +702,17 @@ static void on_vertex(void *ud, const pt_vrec *r)
 
 /* ===== raster records ===== */
 
+/* 1 when s is at most max bytes of printable ASCII without '"' or '\\': a
+** JSON string as it stands, which put_json_str() would copy unchanged. */
+static int json_plain(const char *s, size_t max)
+{
+    size_t k;
+
+    for (k = 0; s[k]; k++)
+        if (k == max || s[k] < 0x20 || s[k] > 0x7e || s[k] == '"' || s[k] == '\\') return 0;
+    return 1;
+}
+
 /* '{"type":"KIND","model":NAME,"segment":SEG': how a raster record opens. */
 static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint64_t seg)
 {
@@ -721,6 +738,18 @@ static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
         return;
     }
     if (t->fmt != PT_FORMAT_JSONL) return;  /* CSV has no raster rows */
+    if (json_plain(m->name, 200)) {         /* the usual name: no put per piece */
+        o = room(t, 320);                   /* 25 + 200 + 13 + 20 + 3 * (5 + 20) + 2 */
+        o = str_at(str_at(str_at(o, "{\"type\":\"pixel\",\"model\":\""), m->name),
+                   "\",\"segment\":");
+        o = int_at(o, (int64_t)seg, 0);     /* seg <= 2^32: a model's segments */
+        o = int_at(str_at(o, ",\"x\":"), x_fb, 0);
+        o = int_at(str_at(o, ",\"y\":"), y_fb, 0);
+        o = int_at(str_at(o, ",\"i\":"), idx, 0);
+        o = str_at(o, "}\n");
+        t->len = (size_t)(o - t->buf);
+        return;
+    }
     put_seg_json(t, "pixel", m, seg);
     puts_(t, ",\"x\":"); put_i64(t, x_fb);
     puts_(t, ",\"y\":"); put_i64(t, y_fb);
@@ -853,6 +882,12 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
     l->journey = t->explain ? on_journey : NULL;   /* no cost without --explain */
     l->skip = on_skip;
     l->summary = on_summary;
+    if (t->fmt == PT_FORMAT_CSV) {          /* no raster rows, no summary: */
+        l->pixel = NULL;                    /* nobody listens to the rasterizer */
+        l->clip = NULL;
+        l->skip = NULL;
+        l->summary = NULL;
+    }
     l->ud = t;
 }
 

@@ -1,0 +1,31 @@
+#!/bin/sh
+# tests/stream.sh -- the scene is read as a stream: memory holds its data, not its text
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/stream.sh PIPETRACE.  100 MB of scene text, nearly all of
+# it comments, arrives through a pipe; the process's peak resident memory
+# must stay far below the text's size (a reader that holds the whole text
+# needs more than 100 MB).  Memory is measured, not time: python3 asks the
+# kernel for the child's peak (ru_maxrss).
+exe=${1:-build/pipetrace}
+. tests/testlib.sh
+
+peak_kib() {    # peak_kib COMMAND: run it, print its peak resident memory in KiB
+    python3 -c 'import resource, subprocess, sys
+r = subprocess.run(sys.argv[1], shell=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss if r.returncode == 0 else -1)' "$1"
+}
+
+comments="yes '# a comment of sixty bytes, repeated to make a large scene.' | head -c 100000000"
+printf 'model m\nv 0 0 -1\nv 1 1 -2\nl 1 2\n' > "$tmp/head.scene"
+kib=$(peak_kib "{ cat '$tmp/head.scene'; $comments; } | '$exe' /dev/stdin --trace '$tmp/t.trace'")
+check "stream-1.1 100 MB of scene through a pipe is read (peak $kib KiB)" test "$kib" -gt 0
+check "stream-1.2 ... in less than 60 MiB" test "$kib" -lt 61440
+check "stream-1.3 ... and its model is traced" grep -q "segments 1 " "$tmp/t.trace"
+printf 'model m\nv 0 0 -1\n' > "$tmp/a.scene"
+awk 'BEGIN { printf "v 1 1 -2\nl 1 2 # "; for (i = 0; i < 200000; i++) printf "x"; print "" }' \
+    >> "$tmp/a.scene"
+run "$tmp/a.scene"
+check "stream-1.4 a line longer than the read window (200 kB) is read whole" \
+    grep -q "segments 1 " "$tmp/out"
+report
