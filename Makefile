@@ -67,7 +67,7 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
            $B/m7_screen2viewport.o $B/pt_matrix.o
 # src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
-CORE_O   = $B/scene.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
+CORE_O   = $B/scene.o $B/shapes.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/raster.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
            $B/tread_jsonl.o $B/tread_image.o $B/png.o $B/outfile.o
@@ -81,7 +81,7 @@ CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
-           $B/test_accuracy $B/test_png $B/test_catalogue
+           $B/test_accuracy $B/test_png $B/test_catalogue $B/test_shapes
 
 all: $B/pipetrace
 

@@ -21,6 +21,7 @@ numfmt      2 $B/test_numfmt
 raster      1 $B/test_raster
 matrix      1 $B/test_matrix
 scene       1 $B/test_scene
+shapes      1 $B/test_shapes
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
