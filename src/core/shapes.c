@@ -583,8 +583,7 @@ static int number(const char *t, size_t n, char kind, const char *name,
     return 0;
 }
 
-/* "0, 1 or 3": the argument counts in arities. */
-static void counts(unsigned arities, char *buf, size_t len)
+void pt_shape_counts(unsigned arities, char *buf, size_t len)
 {
     size_t used = 0;
     int c, left = 0;
@@ -735,7 +734,7 @@ int pt_shape_make(pt_shape *sh, const char *p, const char *end, const char **at,
     }
     *at = whole;
     if (given > in->nparam || !((in->arities >> given) & 1)) {
-        counts(in->arities, list, sizeof list);
+        pt_shape_counts(in->arities, list, sizeof list);
         for (k = 0, used = 0; k < in->nparam; k++)
             used += (size_t)snprintf(names + used, sizeof names - used, "%s%s",
                                      k ? " " : "", in->param[k]);

@@ -4,7 +4,7 @@
 **
 ** The Java teaching renderer (renderer 4, package renderer.models_L) builds its
 ** wireframe models -- Sphere, Cylinder, Torus, Cube, ... -- from a few numbers.
-** pt_shape_add() builds the same vertices in the same order and the same line
+** pt_shape_make() builds the same vertices in the same order and the same line
 ** segments, so a scene can say `shape sphere 1 15 8` where a student's Java
 ** client says `new Sphere(1, 15, 8)`, and both renderers see one model.  The
 ** arguments come in the Java constructor's order; a shorter overload takes the
@@ -46,6 +46,10 @@ extern const int pt_nshapes;
 
 /* The entry of pt_shapes[] called name[0..n), or NULL.  This function can't fail. */
 const pt_shape_info *pt_shape_find(const char *name, size_t n);
+
+/* The argument counts in arities as words, "0, 1 or 3", into buf (len >= 32
+** holds any).  This function can't fail. */
+void pt_shape_counts(unsigned arities, char *buf, size_t len);
 
 /* A shape built: its vertices and segments (0-based indices into v), owned. */
 typedef struct pt_shape {

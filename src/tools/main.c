@@ -29,6 +29,7 @@ static const char usage[] =
 "       pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
 "                         [--image FILE]\n"
 "       pipetrace stages [--camera classic|matrix]\n"
+"       pipetrace shapes [NAME]\n"
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
 "through the classic teaching pipeline and trace every vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
@@ -171,6 +172,7 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "accuracy") == 0) return pt_cmd_accuracy(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "journey") == 0) return pt_cmd_journey(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "stages") == 0) return pt_cmd_stages(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "shapes") == 0) return pt_cmd_shapes(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
 
