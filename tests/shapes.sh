@@ -17,12 +17,12 @@ for name in sphere cylinder cone torus disk ring circle square squaregrid cube b
 done
 check "shapes-cli-1.4 sphere's parameters in the Java order" grep -qx 'shape sphere r n k' "$tmp/out"
 check "shapes-cli-1.5 torus's defaults as in Torus()" \
-    grep -qx '  defaults r1=0.75 r2=0.25 n=12 k=16' "$tmp/out"
-check "shapes-cli-1.6 squaregrid's k defaults to n" grep -q 'defaults r=1 n=0 k=n' "$tmp/out"
+    grep -q 'by default r1=0.75 r2=0.25 n=12 k=16$' "$tmp/out"
+check "shapes-cli-1.6 squaregrid's k defaults to n" grep -q 'by default r=1 n=0 k=n$' "$tmp/out"
 run shapes pyramid
 n=$(grep -c '^shape ' "$tmp/out")
 check "shapes-cli-1.7 one shape by name" [ "$rc.$n" = 0.1 ]
-check "shapes-cli-1.8 ... with its overloads" grep -q 'takes    0, 2 or 4 arguments' "$tmp/out"
+check "shapes-cli-1.8 ... with its overloads" grep -q '^  takes 0, 2 or 4 arguments' "$tmp/out"
 run shapes blob
 check "shapes-cli-1.9 an unknown name is a usage error" [ "$rc" -eq 1 ]
 check "shapes-cli-1.10 ... that says so" grep -q "no shape called 'blob'" "$tmp/err"

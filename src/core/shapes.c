@@ -45,7 +45,8 @@ const pt_shape_info pt_shapes[] = {
       "n circles of k points around the y axis (r1: to the tube's center, r2: the tube); "
       "n >= 3, k >= 3" },
     { "disk", "Disk", 3, { "r", "n", "k" }, "rii", { "1", "6", "12" }, A(0)|A(1)|A(3),
-      "n circles of k points in the xy-plane, radii r/n ... r, and the center; n >= 1, k >= 3" },
+      "n circles of k points in the xy-plane, radii r/n, 2r/n, ..., r, and the "
+      "center; n >= 1, k >= 3" },
     { "ring", "Ring", 4, { "r1", "r2", "n", "k" }, "rrii", { "1", "0.33", "4", "12" },
       A(0)|A(2)|A(4),
       "n+1 circles of k points in the xy-plane, radii r2 ... r1; n >= 1, k >= 3" },
@@ -65,9 +66,10 @@ const pt_shape_info pt_shapes[] = {
     { "octahedron", "Octahedron", 0, { NULL }, "", { NULL }, A(0),
       "the regular octahedron with its corners on the axes at distance 1" },
     { "dodecahedron", "Dodecahedron", 0, { NULL }, "", { NULL }, A(0),
-      "the regular dodecahedron with corners (+-1/t, +-1/t, +-1/t), t the golden ratio" },
+      "the regular dodecahedron: corners (+-1/t, +-1/t, +-1/t) and (0, +-1/t^2, +-1) "
+      "and its rotations, t the golden ratio" },
     { "icosahedron", "Icosahedron", 0, { NULL }, "", { NULL }, A(0),
-      "the regular icosahedron with corners (+-1/t, +-1, 0) and their rotations" },
+      "the regular icosahedron: corners (+-1/t, +-1, 0) and their rotations" },
     { "icosidodecahedron", "Icosidodecahedron", 0, { NULL }, "", { NULL }, A(0),
       "the icosidodecahedron of radius 1.051462 (the course's 7-digit coordinates)" },
     { "pyramid", "Pyramid", 4, { "s", "h", "n", "k" }, "rrii", { "2", "1", "15", "4" },

@@ -5,9 +5,9 @@
 **   pipetrace shapes [NAME]
 **
 ** Prints every shape of pt_shapes[] (src/core/shapes.c), or the one called
-** NAME: the line to write in a scene, how many arguments it takes, the
-** defaults of the shorter overloads, the Java constructor it follows and what
-** it builds.  docs/scene-format.md shows this output.
+** NAME: the line to write in a scene, the Java constructor it follows, how
+** many arguments it takes, the defaults of the shorter overloads and what it
+** builds.  docs/scene-format.md shows this output.
 */
 #include <stdio.h>
 #include <string.h>
@@ -20,7 +20,30 @@ static const char usage[] =
 "List the shapes a scene's 'shape NAME ARGS...' line builds (the course's\n"
 "models, renderer.models_L): parameters, defaults, Java constructor.\n";
 
-/* Print one shape. */
+/* Print text indented by two spaces, wrapped at spaces to lines of at most
+** 78 characters (a longer word stands alone on its line). */
+static void put_wrapped(const char *text)
+{
+    const char *p = text;
+
+    while (*p != '\0') {
+        size_t n = strlen(p), cut = n;
+
+        if (n > 76) {
+            for (cut = 76; cut > 0 && p[cut] != ' '; cut--)
+                ;
+            if (cut == 0)
+                cut = strcspn(p, " ");
+        }
+        printf("  %.*s\n", (int)cut, p);
+        p += cut;
+        while (*p == ' ')
+            p++;
+    }
+}
+
+/* Print one shape: its line in a scene, the Java constructor with its
+** overloads and defaults, and what it builds. */
 static void put_shape(const pt_shape_info *in)
 {
     char counts[64];
@@ -29,22 +52,19 @@ static void put_shape(const pt_shape_info *in)
     printf("shape %s", in->name);
     for (k = 0; k < in->nparam; k++)
         printf(" %s", in->param[k]);
-    pt_shape_counts(in->arities, counts, sizeof counts);
-    printf("\n  takes    %s arguments", counts);
+    printf("\n  %s(", in->java);
     for (k = 0; k < in->nparam; k++)
-        printf("%s%s %s", k ? ", " : ": ", in->param[k],
-               in->kind[k] == 'i' ? "an int" : "a real");
-    printf("\n");
-    if (in->nparam > 0) {
-        printf("  defaults");
+        printf("%s%s %s", k ? ", " : "", in->kind[k] == 'i' ? "int" : "double", in->param[k]);
+    pt_shape_counts(in->arities, counts, sizeof counts);
+    if (in->nparam == 0)
+        printf(")\n  takes no arguments\n");
+    else {
+        printf(")\n  takes %s arguments; by default", counts);
         for (k = 0; k < in->nparam; k++)
             printf(" %s=%s", in->param[k], in->dflt[k]);
         printf("\n");
     }
-    printf("  java     new %s(", in->java);
-    for (k = 0; k < in->nparam; k++)
-        printf("%s%s", k ? ", " : "", in->param[k]);
-    printf(")\n  builds   %s\n", in->what);
+    put_wrapped(in->what);
 }
 
 int pt_cmd_shapes(int argc, char **argv)
