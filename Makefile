@@ -9,6 +9,9 @@
 #   make screenshots  rewrite docs/journey-* (needs chromium; on purpose only)
 #   make sanitize  run the tests under -fsanitize=address,undefined
 #   make bench     time parsing, stages, rasterizer and trace output
+#   make install   copy the program, its man page and docs under PREFIX
+#                  (default /usr/local; DESTDIR is put in front, for packages)
+#   make uninstall remove what make install copied
 #   make clean
 
 CC      ?= cc
@@ -150,4 +153,23 @@ sanitize:
 clean:
 	rm -rf build build-san build-student
 
-.PHONY: all run test golden docs screenshots bench sanitize clean
+# ===== install =====
+# bin/pipetrace, share/man/man1/pipetrace.1, and share/doc/pipetrace/ holding
+# README.md, LICENSE and docs/ (so that README's links work there too).
+PREFIX  ?= /usr/local
+BINDIR  = $(DESTDIR)$(PREFIX)/bin
+MAN1DIR = $(DESTDIR)$(PREFIX)/share/man/man1
+DOCDIR  = $(DESTDIR)$(PREFIX)/share/doc/pipetrace
+
+install: $B/pipetrace
+	mkdir -p $(BINDIR) $(MAN1DIR) $(DOCDIR)
+	cp $B/pipetrace $(BINDIR)/pipetrace && chmod 755 $(BINDIR)/pipetrace
+	cp docs/pipetrace.1 $(MAN1DIR)/pipetrace.1 && chmod 644 $(MAN1DIR)/pipetrace.1
+	cp README.md LICENSE $(DOCDIR)/
+	rm -rf $(DOCDIR)/docs && cp -R docs $(DOCDIR)/docs
+
+uninstall:
+	rm -f $(BINDIR)/pipetrace $(MAN1DIR)/pipetrace.1
+	rm -rf $(DOCDIR)
+
+.PHONY: all run test golden docs screenshots bench sanitize clean install uninstall

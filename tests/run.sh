@@ -30,6 +30,7 @@ png         1 $B/test_png
 layers      1 sh tests/layers.sh
 golden      1 sh tests/golden.sh $B/pipetrace
 shapes-cli  2 sh tests/shapes.sh $B/pipetrace
+install     2 sh tests/install.sh $B/pipetrace
 cli         1 sh tests/cli.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace
 extreme     1 sh tests/extreme.sh $B/pipetrace
