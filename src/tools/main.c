@@ -30,6 +30,7 @@ static const char usage[] =
 "                         [--image FILE]\n"
 "       pipetrace stages [--camera classic|matrix]\n"
 "       pipetrace shapes [NAME]\n"
+"       pipetrace export java [SCENE] [-o FILE.java] [--pixels]\n"
 "Render SCENE (a .scene file or a plain .obj file; none: the built-in scene)\n"
 "through the classic teaching pipeline and trace every vertex at every stage:\n"
 "  model -> camera -> image -> pixel -> viewport -> framebuffer -> index\n"
@@ -173,6 +174,7 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "journey") == 0) return pt_cmd_journey(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "stages") == 0) return pt_cmd_stages(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "shapes") == 0) return pt_cmd_shapes(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "export") == 0) return pt_cmd_export(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
 
