@@ -31,6 +31,7 @@ layers      1 sh tests/layers.sh
 golden      1 sh tests/golden.sh $B/pipetrace
 shapes-cli  2 sh tests/shapes.sh $B/pipetrace
 install     2 sh tests/install.sh $B/pipetrace
+export      2 sh tests/export.sh $B/pipetrace
 cli         1 sh tests/cli.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace
 extreme     1 sh tests/extreme.sh $B/pipetrace
