@@ -66,8 +66,8 @@ printf 'model big\n' > "$tmp/big.scene"
 i=0; while [ $i -lt 1000 ]; do echo "v $i 0.5 -3"; i=$((i + 1)); done >> "$tmp/big.scene"
 echo "l $(seq -s ' ' 1 1000)" >> "$tmp/big.scene"
 run export java "$tmp/big.scene" -o "$tmp/Big.java"
-check "export-1.19 1000 vertices go into methods of at most 400 calls" \
-    [ "$(grep -c 'private static void m1_vertices' "$tmp/Big.java")" -eq 3 ]
+check "export-1.19 1000 vertices go into classes of at most 400 calls" \
+    [ "$(grep -c 'private static final class M1Vertices' "$tmp/Big.java")" -eq 3 ]
 
 # ----------------------------------------------------------------- export-2
 if command -v javac > /dev/null 2>&1 && command -v java > /dev/null 2>&1; then

@@ -16,8 +16,9 @@
 ** compares with their own renderer's.  The class is named after FILE
 ** (PipetraceScene on standard output).
 **
-** Java limits a method to 64 KiB of bytecode, so vertices and segments go
-** into helper methods of at most CHUNK calls each.
+** Java limits a method to 64 KiB of bytecode and a class to 65535 constants,
+** so vertices and segments go, CHUNK at a time, into small nested classes of
+** their own (each class file has its own constants).
 */
 #include <stdio.h>
 #include <string.h>
@@ -27,7 +28,7 @@
 #include "io/outfile.h"
 #include "core/pipetrace.h"
 
-#define CHUNK 400                /* addVertex or addPrimitive calls a method */
+#define CHUNK 400                /* addVertex or addPrimitive calls a class */
 
 static const char usage[] =
 "usage: pipetrace export java [SCENE] [-o FILE.java] [--pixels]\n"
@@ -105,17 +106,21 @@ static void put_string(FILE *f, const char *name)
     fputc('"', f);
 }
 
-/* The helper methods that fill model number k (mK): its vertices and its
-** segments, CHUNK calls a method (main calls them in put_java()). */
+/* The nested classes that fill model number k (mK): its vertices and its
+** segments, CHUNK calls a class (main calls them in put_java()). */
 static void put_model_parts(FILE *f, const pt_model *m, size_t k)
 {
+    static const char open[] = "   private static final class M%zu%s%zu\n   {\n"
+                               "      static void into(final Model m)\n      {\n";
+    static const char close[] = "      }\n   }\n\n";
     size_t i;
 
     for (i = 0; i < m->nv; i++) {
-        if (i % CHUNK == 0)
-            fprintf(f, "%s   private static void m%zu_vertices%zu(final Model m)\n   {\n",
-                    i ? "   }\n\n" : "", k, i / CHUNK);
-        fputs("      m.addVertex(new Vertex(", f);
+        if (i % CHUNK == 0) {
+            fputs(i ? close : "", f);
+            fprintf(f, open, k, "Vertices", i / CHUNK);
+        }
+        fputs("         m.addVertex(new Vertex(", f);
         put_double(f, m->v[i].x);
         fputs(", ", f);
         put_double(f, m->v[i].y);
@@ -124,16 +129,17 @@ static void put_model_parts(FILE *f, const pt_model *m, size_t k)
         fputs("));\n", f);
     }
     if (m->nv > 0)
-        fputs("   }\n\n", f);
+        fputs(close, f);
     for (i = 0; i < m->nseg; i++) {
-        if (i % CHUNK == 0)
-            fprintf(f, "%s   private static void m%zu_segments%zu(final Model m)\n   {\n",
-                    i ? "   }\n\n" : "", k, i / CHUNK);
-        fprintf(f, "      m.addPrimitive(new LineSegment(%lu, %lu));\n",
+        if (i % CHUNK == 0) {
+            fputs(i ? close : "", f);
+            fprintf(f, open, k, "Segments", i / CHUNK);
+        }
+        fprintf(f, "         m.addPrimitive(new LineSegment(%lu, %lu));\n",
                 (unsigned long)m->seg[i].a, (unsigned long)m->seg[i].b);
     }
     if (m->nseg > 0)
-        fputs("   }\n\n", f);
+        fputs(close, f);
 }
 
 /* The program. */
@@ -174,9 +180,9 @@ static void put_java(FILE *f, const pt_scene *s, const char *cls, size_t ncls,
         put_string(f, m->name);
         fputs(");\n", f);
         for (i = 0; i < (m->nv + CHUNK - 1) / CHUNK; i++)
-            fprintf(f, "      m%zu_vertices%zu(m%zu);\n", k + 1, i, k + 1);
+            fprintf(f, "      M%zuVertices%zu.into(m%zu);\n", k + 1, i, k + 1);
         for (i = 0; i < (m->nseg + CHUNK - 1) / CHUNK; i++)
-            fprintf(f, "      m%zu_segments%zu(m%zu);\n", k + 1, i, k + 1);
+            fprintf(f, "      M%zuSegments%zu.into(m%zu);\n", k + 1, i, k + 1);
         fprintf(f, "      ModelShading.setColor(m%zu, new Color(%d, %d, %d));\n", k + 1,
                 m->color[0], m->color[1], m->color[2]);
         fprintf(f, "      scene.addPosition(new Position(m%zu, ", k + 1);
