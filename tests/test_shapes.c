@@ -63,7 +63,7 @@ static int parse(pt_scene *s, const char *body)
 /* Compare `shape ARGS` with the file name (format: tests/data/shapes/make.sh). */
 static void against_java(const char *name)
 {
-    char path[256], line[512], args[256], body[300], id[800];
+    char path[300], line[512], args[256], body[300], id[800];
     size_t nv = 0, ns = 0, badv = 0, bads = 0;
     int refused = 0, r;
     pt_scene s;
