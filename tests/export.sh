@@ -45,6 +45,10 @@ check "export-1.9 ... nothing on standard output" [ ! -s "$tmp/out" ]
 run export java "$tmp/odd.scene" -o "$tmp/1bad.java"
 check "export-1.10 a FILE that is no Java class name is a usage error" [ "$rc" -eq 1 ]
 check "export-1.11 ... and nothing is written" [ ! -e "$tmp/1bad.java" ]
+run export java "$tmp/odd.scene" -o "$tmp/Scene.java"
+check "export-1.11 a class the program uses (Scene) is refused" [ "$rc" -eq 1 ]
+run export java "$tmp/odd.scene" -o "$tmp/class.java"
+check "export-1.11 so is a reserved word" [ "$rc" -eq 1 ]
 run export java "$tmp/odd.scene" -o "$tmp/Scene.txt"
 check "export-1.12 -o needs .java" [ "$rc" -eq 1 ]
 check "export-1.12 ... and says so" grep -q 'FILE.java' "$tmp/err"

@@ -6,14 +6,15 @@
 # Installs under a temporary PREFIX, checks what is there, that the man page
 # names every command and every option their --help texts name, and that it
 # renders without a warning (with groff and man, where they are installed),
-# then uninstalls and checks that no file is left.
+# then uninstalls and checks that no file is left.  make gets -o PIPETRACE so
+# that it never rebuilds the program another test may be running.
 exe=$1
 . tests/testlib.sh
 B=$(dirname "$exe")
 man1=docs/pipetrace.1
 p=$tmp/prefix
 
-make -s --no-print-directory B="$B" PREFIX="$p" install > "$tmp/make" 2>&1
+make -s --no-print-directory -o "$B/pipetrace" B="$B" PREFIX="$p" install > "$tmp/make" 2>&1
 check "install-1.1 make install PREFIX=... succeeds" [ $? -eq 0 ]
 check "install-1.2 the program in PREFIX/bin" [ -x "$p/bin/pipetrace" ]
 check "install-1.3 ... that runs" "$p/bin/pipetrace" --version
@@ -24,13 +25,13 @@ check "install-1.6 ... docs/ beside them, example scenes too" \
     [ -f "$p/share/doc/pipetrace/docs/scene-format.md" ]
 check "install-1.7 ... and the shapes' examples" \
     [ -f "$p/share/doc/pipetrace/docs/examples/shapes/sphere.scene" ]
-make -s --no-print-directory B="$B" PREFIX="$p" install > "$tmp/make" 2>&1
+make -s --no-print-directory -o "$B/pipetrace" B="$B" PREFIX="$p" install > "$tmp/make" 2>&1
 check "install-1.8 installing twice works" [ $? -eq 0 ]
 
-make -s --no-print-directory B="$B" PREFIX="$p" uninstall > "$tmp/make" 2>&1
+make -s --no-print-directory -o "$B/pipetrace" B="$B" PREFIX="$p" uninstall > "$tmp/make" 2>&1
 check "install-2.1 make uninstall succeeds" [ $? -eq 0 ]
 check "install-2.2 ... and leaves no file behind" [ -z "$(find "$p" ! -type d)" ]
-make -s --no-print-directory B="$B" DESTDIR="$tmp/stage" PREFIX=/opt/pt install > "$tmp/make" 2>&1
+make -s --no-print-directory -o "$B/pipetrace" B="$B" DESTDIR="$tmp/stage" PREFIX=/opt/pt install > "$tmp/make" 2>&1
 check "install-2.3 DESTDIR is put in front of PREFIX" [ -x "$tmp/stage/opt/pt/bin/pipetrace" ]
 
 # Every command of the usage has a section, every option of every --help is

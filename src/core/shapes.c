@@ -2,15 +2,17 @@
 ** src/core/shapes.c -- the course's model library, built as renderer 4 builds it
 ** See LICENSE for copyright and license.
 **
-** Design.  pt_shape_add() reads "NAME ARGS...", fills in the defaults of the
+** Design.  pt_shape_make() reads "NAME ARGS...", fills in the defaults of the
 ** shorter overloads, refuses what the Java constructor refuses (same checks,
 ** same order, same words), counts the vertices and segments the shape will
-** make, grows the model's arrays once, and then runs the shape's builder.  A
-** builder computes every coordinate with the Java expression's operations in
-** their order (Java evaluates left to right: `-r * s2 * s1` is ((-r)*s2)*s1,
-** and `0 + xs` turns -0.0 into 0.0) and emits vertices and segments in the
-** order the Java constructor adds them.  Segment indices are offset by the
+** make (sizes()), allocates its arrays once, and then runs the shape's
+** builder.  A builder computes every coordinate with the Java expression's
+** operations in their order (Java evaluates left to right: `-r * s2 * s1` is
+** ((-r)*s2)*s1, and `0 + xs` turns -0.0 into 0.0) and emits vertices and
+** segments in the order the Java constructor adds them, with indices from 0.
+** The scene parser appends them to the model, offsetting the indices by the
 ** vertices the model had before, so `shape` mixes with `v` and `l` lines.
+** The enum below lists the shapes in pt_shapes[]'s order.
 */
 #include <assert.h>
 #include <math.h>

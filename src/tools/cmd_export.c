@@ -45,9 +45,25 @@ static const char usage[] =
 "  javac -cp renderer_4.jar FILE.java && java -cp renderer_4.jar:. FILE [OUT.ppm]\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n";
 
+/* Names a class of the program may not have: Java's reserved words, and the
+** classes it uses (the class would hide them). */
+static const char *const taken[] = {
+    "abstract", "assert", "boolean", "break", "byte", "case", "catch", "char",
+    "class", "const", "continue", "default", "do", "double", "else", "enum",
+    "extends", "final", "finally", "float", "for", "goto", "if", "implements",
+    "import", "instanceof", "int", "interface", "long", "native", "new",
+    "package", "private", "protected", "public", "return", "short", "static",
+    "strictfp", "super", "switch", "synchronized", "this", "throw", "throws",
+    "transient", "try", "void", "volatile", "while", "true", "false", "null",
+    "_", "var", "yield", "record", "sealed", "permits",
+    "Color", "Scene", "Camera", "Model", "Vertex", "Vector", "Position",
+    "LineSegment", "ModelShading", "FrameBuffer", "Pipeline", "Rasterize",
+    "String", "Object", "System",
+};
+
 /* The class name for path: its base name without ".java", when that is a Java
-** identifier (ASCII letters, digits, '_' and '$', not starting with a digit).
-** Returns its length (name starts at *name), or 0. */
+** identifier (ASCII letters, digits, '_' and '$', not starting with a digit)
+** that is not taken.  Returns its length (name starts at *name), or 0. */
 static size_t class_name(const char *path, const char **name)
 {
     const char *base = strrchr(path, '/');
@@ -65,6 +81,9 @@ static size_t class_name(const char *path, const char **name)
         if (!letter && !(i > 0 && c >= '0' && c <= '9'))
             return 0;
     }
+    for (i = 0; i < sizeof taken / sizeof taken[0]; i++)
+        if (strlen(taken[i]) == n && memcmp(taken[i], base, n) == 0)
+            return 0;
     *name = base;
     return n;
 }
@@ -232,7 +251,8 @@ int pt_cmd_export(int argc, char **argv)
             ncls = class_name(out, &cls);
             if (ncls == 0)
                 return pt_cli_usage("export", "-o takes FILE.java, FILE a Java class "
-                                    "name (letters, digits, '_', '$'), not '%s'", out);
+                                    "name (letters, digits, '_', '$'; not a reserved "
+                                    "word nor a class the program uses), not '%s'", out);
         } else if (argv[k][0] == '-' && argv[k][1] != '\0')
             return pt_cli_usage("export", "unknown option '%s'", argv[k]);
         else if (path != NULL)
