@@ -7,8 +7,9 @@
 #   export-2  (with a JDK) the program compiles against a stub of renderer 4's
 #             API that this script writes, and hands the stub exactly the
 #             scene's doubles, names, indices, colors and sizes
-#   export-3  (with the course's jar: PIPETRACE_RENDERER4_JAR=renderer_4.jar and
-#             the course logs in ../shared/reference/kraftlog) every reference
+#   export-3  (with the course's jar: PIPETRACE_RENDERER4_JAR=renderer_4.jar, and
+#             the course's logs in tests/reference/kraftlog or, failing that,
+#             ../shared/reference/kraftlog) every reference
 #             scene's program prints, on standard error, the course's log, and
 #             writes pipetrace's image
 # Parts that need what is not installed say "skipped" and why.
@@ -226,7 +227,8 @@ fi
 
 # ----------------------------------------------------------------- export-3
 jar=${PIPETRACE_RENDERER4_JAR:-}
-logs=../shared/reference/kraftlog
+logs=tests/reference/kraftlog
+[ -d "$logs" ] || logs=../shared/reference/kraftlog
 if [ -z "$jar" ] || [ ! -f "$jar" ] || [ ! -d "$logs" ] || ! command -v javac > /dev/null 2>&1; then
     echo "skipped: export-3 (stderr equals the course's logs): needs a JDK," \
          "PIPETRACE_RENDERER4_JAR=renderer_4.jar and $logs"
@@ -235,7 +237,7 @@ else
     for log in "$logs"/*.log; do
         name=$(basename "$log" .log)
         cls=C_$(echo "$name" | tr -c 'A-Za-z0-9\n' _)
-        scene=../shared/reference/${name%.pixels}.scene
+        scene=$logs/../${name%.pixels}.scene
         case $name in *.pixels) px=--pixels ;; *) px= ;; esac
         "$exe" export java "$scene" -o "$tmp/jar/$cls.java" $px
     done
@@ -247,7 +249,7 @@ else
         (cd "$tmp/jar" && java -cp "$jar:." "$cls" "$cls.ppm" > /dev/null 2> "$cls.err")
         check "export-3.2 $name: renderer 4's log of the exported scene is $log" \
             cmp -s "$tmp/jar/$cls.err" "$log"
-        "$exe" "../shared/reference/${name%.pixels}.scene" --image "$tmp/jar/$cls.pt.ppm" > /dev/null
+        "$exe" "$logs/../${name%.pixels}.scene" --image "$tmp/jar/$cls.pt.ppm" > /dev/null
         check "export-3.3 $name: renderer 4's image is pipetrace's" \
             cmp -s "$tmp/jar/$cls.ppm" "$tmp/jar/$cls.pt.ppm"
     done
