@@ -48,9 +48,9 @@ vg "vg-14 journey: SVG and HTML" 0 journey --vertex 1 --svg "$tmp/j.svg" --html 
 vg "vg-15 diff: JSONL against text" 0 diff "$tmp/a.jsonl" "$tmp/a.txt"
 "$exe" --image "$tmp/c.ppm"
 vg "vg-16 diff: two images" 0 diff "$tmp/c.ppm" "$tmp/c.ppm"
-vg "vg-19 shape lines mixed with v and l" 0 docs/examples/shapes/mixed.scene --image "$tmp/s.ppm"
+vg "vg-20 shape lines mixed with v and l" 0 docs/examples/shapes/mixed.scene --image "$tmp/s.ppm"
 printf 'model m\nshape torus 1e308 1e308 3 3\n' > "$tmp/inf.scene"
-vg "vg-20 a shape whose coordinates overflow" 2 "$tmp/inf.scene"
-vg "vg-21 the list of shapes" 0 shapes
-vg "vg-22 export java" 0 export java docs/examples/shapes/mixed.scene -o "$tmp/Mixed.java" --pixels
+vg "vg-21 a shape whose coordinates overflow" 2 "$tmp/inf.scene"
+vg "vg-22 the list of shapes" 0 shapes
+vg "vg-23 export java" 0 export java docs/examples/shapes/mixed.scene -o "$tmp/Mixed.java" --pixels
 report
