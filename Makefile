@@ -10,6 +10,9 @@
 #   make sanitize  run the tests under -fsanitize=address,undefined
 #   make bench     time parsing, stages, rasterizer and trace output
 #   make fuzz      build the libFuzzer targets (clang) and run each FUZZ_SECONDS
+#   make install   copy the program, its man page and docs under PREFIX
+#                  (default /usr/local; DESTDIR is put in front, for packages)
+#   make uninstall remove what make install copied
 #   make clean
 
 CC      ?= cc
@@ -69,7 +72,8 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o
            $B/m7_screen2viewport.o $B/pt_matrix.o
 # src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
 # pixelpath.o is the rasterizer with the stages s4, s5 and s6 (see below).
-CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/builtin.o $B/vjourney.o $B/pipeline.o $B/clip.o $B/pixelpath.o $B/fb.o
+CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjourney.o \
+           $B/pipeline.o $B/clip.o $B/pixelpath.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
            $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o $B/png.o $B/outfile.o \
@@ -81,11 +85,11 @@ TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/dd.o $B/acc_shared.o $B/acc
            $B/acc_double.o $B/acc_dd.o $B/accuracy.o $B/journey.o $B/journey_html.o
 CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o \
            $B/dpixels.o $B/dsummary.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o \
-           $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o
+           $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o $B/cmd_shapes.o $B/cmd_export.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
-           $B/test_tread $B/test_nameset $B/test_numparse
+           $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes
 
 all: $B/pipetrace
 
@@ -195,7 +199,26 @@ fuzz-build:
 	        tests/fuzz/fuzz_common.c build-fuzz/libpipetrace.a $(LDLIBS) || exit 1; \
 	done
 
+# ===== install =====
+# bin/pipetrace, share/man/man1/pipetrace.1, and share/doc/pipetrace/ holding
+# README.md, LICENSE and docs/ (so that README's links work there too).
+PREFIX  ?= /usr/local
+BINDIR  = $(DESTDIR)$(PREFIX)/bin
+MAN1DIR = $(DESTDIR)$(PREFIX)/share/man/man1
+DOCDIR  = $(DESTDIR)$(PREFIX)/share/doc/pipetrace
+
+install: $B/pipetrace
+	mkdir -p $(BINDIR) $(MAN1DIR) $(DOCDIR)
+	cp $B/pipetrace $(BINDIR)/pipetrace && chmod 755 $(BINDIR)/pipetrace
+	cp docs/pipetrace.1 $(MAN1DIR)/pipetrace.1 && chmod 644 $(MAN1DIR)/pipetrace.1
+	cp README.md LICENSE $(DOCDIR)/
+	rm -rf $(DOCDIR)/docs && cp -R docs $(DOCDIR)/docs
+
+uninstall:
+	rm -f $(BINDIR)/pipetrace $(MAN1DIR)/pipetrace.1
+	rm -rf $(DOCDIR)
+
 clean:
 	rm -rf build build-san build-student build-fuzz
 
-.PHONY: all run test golden docs screenshots bench sanitize fuzz fuzz-build clean
+.PHONY: all run test golden docs screenshots bench sanitize fuzz fuzz-build clean install uninstall

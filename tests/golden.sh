@@ -4,17 +4,19 @@
 #
 # Usage: sh tests/golden.sh PIPETRACE [--write]
 # For each docs/examples/NAME.scene or NAME.obj, run PIPETRACE on it and compare
-# the text trace with traces/NAME.trace.  --write rewrites traces/ instead
+# the text trace with traces/NAME.trace (docs/examples/shapes/NAME.scene: with
+# traces/shapes/NAME.trace).  --write rewrites traces/ instead
 # (that is `make golden`: do it on purpose, and read the diff before committing).
 exe=$1
 write=${2:-}
 passed=0
 failed=0
-for scene in docs/examples/*.scene docs/examples/*.obj; do
-    name=$(basename "$scene"); name=${name%.*}
+for scene in docs/examples/*.scene docs/examples/*.obj docs/examples/shapes/*.scene; do
+    name=${scene#docs/examples/}; name=${name%.*}
     want=traces/$name.trace
     got=$("$exe" "$scene" --trace - 2>&1); rc=$?
     if [ "$write" = "--write" ]; then
+        mkdir -p "$(dirname "$want")"
         printf '%s\n' "$got" > "$want"
         echo "wrote $want"
         continue

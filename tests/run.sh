@@ -31,6 +31,7 @@ nameset     2 $B/test_nameset
 numparse    2 $B/test_numparse
 baseline    2 sh tests/baseline.sh $B
 stream      2 sh tests/stream.sh $B/pipetrace
+shapes      1 $B/test_shapes
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
@@ -40,6 +41,9 @@ png         1 $B/test_png
 layers      1 sh tests/layers.sh
 runner      2 sh tests/runner.sh $B
 golden      1 sh tests/golden.sh $B/pipetrace
+shapes-cli  2 sh tests/shapes.sh $B/pipetrace
+install     2 sh tests/install.sh $B/pipetrace
+export      2 sh tests/export.sh $B/pipetrace
 cli         1 sh tests/cli.sh $B/pipetrace
 outputs     2 sh tests/outputs.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace

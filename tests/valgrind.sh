@@ -58,4 +58,9 @@ vg "vg-17 the course's debug log with pixels" 0 tests/reference/basic-clip-edges
 "$exe" tests/reference/basic-clip-edges.scene > "$tmp/e.txt"
 vg "vg-18 diff reads the course's log" 0 diff tests/reference/kraftlog/basic-clip-edges.pixels.log "$tmp/e.txt"
 vg "vg-19 diff: /dev/zero is refused at once, nothing leaks" 2 diff /dev/zero /dev/zero
+vg "vg-20 shape lines mixed with v and l" 0 docs/examples/shapes/mixed.scene --image "$tmp/s.ppm"
+printf 'model m\nshape torus 1e308 1e308 3 3\n' > "$tmp/inf.scene"
+vg "vg-21 a shape whose coordinates overflow" 2 "$tmp/inf.scene"
+vg "vg-22 the list of shapes" 0 shapes
+vg "vg-23 export java" 0 export java docs/examples/shapes/mixed.scene -o "$tmp/Mixed.java" --pixels
 report

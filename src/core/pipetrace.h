@@ -34,6 +34,7 @@
 #include "stages/m6_ndc2screen.h"
 #include "stages/m7_screen2viewport.h"
 #include "core/scene.h"                /* the scene, parsed */
+#include "core/shapes.h"                /* the course's models: `shape NAME ARGS` */
 #include "core/builtin.h"              /* the scene rendered when given none */
 #include "core/fb.h"                   /* the framebuffer */
 #include "core/clip.h"                 /* the matrix camera's clipping */

@@ -35,6 +35,7 @@
 #include "core/scene.h"
 #include "core/nameset.h"
 #include "core/numparse.h"
+#include "core/shapes.h"
 
 #define MAX_VERTS  0x7fffffffu  /* per model: indices must fit in a uint32_t */
 #define MAX_SEGS   0x7fffffffu  /* per model: a matching limit for segments */
@@ -1100,6 +1101,27 @@ static int do_obj(parser *ps, source *src, const token *dir, cursor *args)
     return r;
 }
 
+/* shape NAME ARGS...: a model of the course's library (src/core/shapes.h),
+** appended vertex by vertex, so the model's limits and messages hold. */
+static int do_shape(parser *ps, source *src, const token *dir, cursor *args)
+{
+    const char *at = dir->p;
+    char msg[PT_ERRLEN];
+    size_t base = cur_model(ps)->nv, i;
+    pt_shape sh;
+    int r = 0;
+
+    if (pt_shape_make(&sh, args->p, args->end, &at, msg, sizeof msg) < 0)
+        return fail(ps, src, at, "%s", msg);
+    for (i = 0; i < sh.nv && r == 0; i++)
+        r = add_vertex(ps, src, dir->p, sh.v[i]);
+    for (i = 0; i < sh.nseg && r == 0; i++)     /* base + index < nv <= MAX_VERTS */
+        r = add_segment(ps, src, dir->p, (uint32_t)(base + sh.seg[i][0]),
+                        (uint32_t)(base + sh.seg[i][1]));
+    pt_shape_free(&sh);
+    return r;
+}
+
 /* ---------------------------------------------------------- the drivers */
 
 /* The directives of a .scene file; in_model: only after a `model` line.
@@ -1116,6 +1138,7 @@ static const struct directive {
     { "translate",   do_translate,   1 },
     { "color",       do_color,       1 },
     { "obj",         do_obj,         1 },
+    { "shape",       do_shape,       1 },
     { "framebuffer", do_framebuffer, 0 },
     { "background",  do_background,  0 },
     { "viewport",    do_viewport,    0 },

@@ -17,5 +17,7 @@ int pt_cmd_quiz(int argc, char **argv);   /* ask a vertex's values stage by stag
 int pt_cmd_accuracy(int argc, char **argv);  /* error against run time, per arithmetic */
 int pt_cmd_journey(int argc, char **argv);   /* draw one vertex's journey: SVG, HTML */
 int pt_cmd_stages(int argc, char **argv);    /* the table of stages */
+int pt_cmd_shapes(int argc, char **argv);    /* the course's models for `shape` */
+int pt_cmd_export(int argc, char **argv);    /* the scene as a Java client of renderer 4 */
 
 #endif

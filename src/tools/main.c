@@ -30,6 +30,8 @@ static const char usage[] =
 "       pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
 "                         [--image FILE]\n"
 "       pipetrace stages [--camera classic|matrix]\n"
+"       pipetrace shapes [NAME]\n"
+"       pipetrace export java [SCENE] [-o FILE.java] [--pixels]\n"
 "Render SCENE (a .scene file or a plain .obj file; -: standard input; none:\n"
 "the built-in scene) through the classic teaching pipeline and trace every\n"
 "vertex at every stage:\n"
@@ -182,6 +184,8 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "accuracy") == 0) return pt_cmd_accuracy(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "journey") == 0) return pt_cmd_journey(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "stages") == 0) return pt_cmd_stages(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "shapes") == 0) return pt_cmd_shapes(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "export") == 0) return pt_cmd_export(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
     {

@@ -1,0 +1,281 @@
+/*
+** src/tools/cmd_export.c -- pipetrace export java: the scene as a client of the course's renderer
+** See LICENSE for copyright and license.
+**
+**   pipetrace export java [SCENE] [-o FILE.java] [--pixels]
+**
+** Writes a self-contained Java program for the course's renderer 4 (the jar
+** of the Java teaching renderer) that builds the same scene with its API --
+** Scene and Camera, a Model for each model with its Vertex list (the very doubles of
+** the scene, written so that they read back exactly), its LineSegments and
+** its color (ModelShading.setColor: one color a vertex), a Position with the
+** model's translation, a FrameBuffer with its background and Viewport --
+** turns on the debug log (scene.debug; with --pixels Rasterize.debug too),
+** renders, and writes the image as PPM to the file named on its command line.
+** Its standard error is then renderer 4's log of the scene, which a student
+** compares with their own renderer's.  The class is named after FILE
+** (PipetraceScene on standard output).
+**
+** Java limits a method to 64 KiB of bytecode and a class to 65535 constants,
+** so vertices and segments go, CHUNK at a time, into small nested classes of
+** their own (each class file has its own constants).
+*/
+#include <stdio.h>
+#include <string.h>
+#include "tools/commands.h"
+#include "tools/cli.h"
+#include "io/numfmt.h"
+#include "io/outfile.h"
+#include "core/pipetrace.h"
+
+#define CHUNK 400                /* addVertex or addPrimitive calls a class */
+
+static const char usage[] =
+"usage: pipetrace export java [SCENE] [-o FILE.java] [--pixels]\n"
+"Write a Java program for the course's renderer 4 that builds SCENE (default:\n"
+"the built-in scene) with its API, renders it with the debug log on and writes\n"
+"the image as PPM to the file named on its command line.  Its standard error\n"
+"is renderer 4's log of the scene.\n"
+"\n"
+"  -o FILE.java   write FILE.java, class FILE (default: standard output,\n"
+"                 class PipetraceScene)\n"
+"  --pixels       also log every pixel (Rasterize.debug = true)\n"
+"\n"
+"Build and run it with the course's jar:\n"
+"  javac -cp renderer_4.jar FILE.java && java -cp renderer_4.jar:. FILE [OUT.ppm]\n"
+"Exit status: 0 success, 1 usage error, 2 bad input or output error.\n";
+
+/* Names a class of the program may not have: Java's reserved words, and the
+** classes it uses (the class would hide them). */
+static const char *const taken[] = {
+    "abstract", "assert", "boolean", "break", "byte", "case", "catch", "char",
+    "class", "const", "continue", "default", "do", "double", "else", "enum",
+    "extends", "final", "finally", "float", "for", "goto", "if", "implements",
+    "import", "instanceof", "int", "interface", "long", "native", "new",
+    "package", "private", "protected", "public", "return", "short", "static",
+    "strictfp", "super", "switch", "synchronized", "this", "throw", "throws",
+    "transient", "try", "void", "volatile", "while", "true", "false", "null",
+    "_", "var", "yield", "record", "sealed", "permits",
+    "Color", "Scene", "Camera", "Model", "Vertex", "Vector", "Position",
+    "LineSegment", "ModelShading", "FrameBuffer", "Pipeline", "Rasterize",
+    "String", "Object", "System",
+};
+
+/* The class name for path: its base name without ".java", when that is a Java
+** identifier (ASCII letters, digits, '_' and '$', not starting with a digit)
+** that is not taken.  Returns its length (name starts at *name), or 0. */
+static size_t class_name(const char *path, const char **name)
+{
+    const char *base = strrchr(path, '/');
+    size_t n, i;
+
+    base = base ? base + 1 : path;
+    n = strlen(base);
+    if (n <= 5 || strcmp(base + n - 5, ".java") != 0)
+        return 0;
+    n -= 5;
+    for (i = 0; i < n; i++) {
+        char c = base[i];
+        int letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == '$';
+
+        if (!letter && !(i > 0 && c >= '0' && c <= '9'))
+            return 0;
+    }
+    for (i = 0; i < sizeof taken / sizeof taken[0]; i++)
+        if (strlen(taken[i]) == n && memcmp(taken[i], base, n) == 0)
+            return 0;
+    *name = base;
+    return n;
+}
+
+/* x as a Java double literal that reads back to exactly x ("-0.0", "1.5",
+** "1e+300", "5e-324"): the shortest round trip, with ".0" added where it would
+** otherwise read as an int. */
+static void put_double(FILE *f, double x)
+{
+    char buf[PT_NUMLEN];
+
+    pt_fmt_shortest(buf, x);
+    fprintf(f, "%s%s", buf, strpbrk(buf, ".e") ? "" : ".0");
+}
+
+/* name as a Java string literal: printable ASCII as it is (names hold no '"'
+** or '\\'), everything else as \uXXXX escapes of its UTF-16 code units. */
+static void put_string(FILE *f, const char *name)
+{
+    const unsigned char *p = (const unsigned char *)name;
+
+    fputc('"', f);
+    while (*p) {
+        unsigned long c = *p;
+        int more = c >= 0xf0 ? 3 : c >= 0xe0 ? 2 : c >= 0xc0 ? 1 : 0;
+
+        if (more)                /* the scene parser checked the UTF-8 */
+            c &= 0x3fu >> more;
+        for (p++; more > 0 && *p; more--, p++)
+            c = (c << 6) | (*p & 0x3fu);
+        if (c >= 0x20 && c < 0x7f)
+            fputc((int)c, f);
+        else if (c < 0x10000)
+            fprintf(f, "\\u%04lx", c);
+        else
+            fprintf(f, "\\u%04lx\\u%04lx", 0xd800 + ((c - 0x10000) >> 10),
+                    0xdc00 + ((c - 0x10000) & 0x3ff));
+    }
+    fputc('"', f);
+}
+
+/* The nested classes that fill model number k (mK): its vertices and its
+** segments, CHUNK calls a class (main calls them in put_java()). */
+static void put_model_parts(FILE *f, const pt_model *m, size_t k)
+{
+    static const char open[] = "   private static final class M%zu%s%zu\n   {\n"
+                               "      static void into(final Model m)\n      {\n";
+    static const char close[] = "      }\n   }\n\n";
+    size_t i;
+
+    for (i = 0; i < m->nv; i++) {
+        if (i % CHUNK == 0) {
+            fputs(i ? close : "", f);
+            fprintf(f, open, k, "Vertices", i / CHUNK);
+        }
+        fputs("         m.addVertex(new Vertex(", f);
+        put_double(f, m->v[i].x);
+        fputs(", ", f);
+        put_double(f, m->v[i].y);
+        fputs(", ", f);
+        put_double(f, m->v[i].z);
+        fputs("));\n", f);
+    }
+    if (m->nv > 0)
+        fputs(close, f);
+    for (i = 0; i < m->nseg; i++) {
+        if (i % CHUNK == 0) {
+            fputs(i ? close : "", f);
+            fprintf(f, open, k, "Segments", i / CHUNK);
+        }
+        fprintf(f, "         m.addPrimitive(new LineSegment(%lu, %lu));\n",
+                (unsigned long)m->seg[i].a, (unsigned long)m->seg[i].b);
+    }
+    if (m->nseg > 0)
+        fputs(close, f);
+}
+
+/* The program. */
+static void put_java(FILE *f, const pt_scene *s, const char *cls, size_t ncls,
+                     const char *file, int pixels)
+{
+    size_t k, i;
+    const char *c;
+
+    fprintf(f, "// %.*s.java -- written by pipetrace export java from ", (int)ncls, cls);
+    for (c = s->path; *c; c++)   /* javac reads \u escapes even in comments */
+        fputc(*c >= 0x20 && *c < 0x7f && *c != '\\' ? *c : '?', f);
+    fputc('\n', f);
+    fputs("// The scene built with the course's renderer 4 API, rendered with its debug\n"
+          "// log on (standard error); the image goes, as PPM, to the file named as the\n"
+          "// first argument.  Build and run with the course's jar:\n", f);
+    fprintf(f, "//   javac -cp renderer_4.jar %s\n", file);
+    fprintf(f, "//   java -cp renderer_4.jar:. %.*s [OUT.ppm]\n", (int)ncls, cls);
+    fputs("import java.awt.Color;\n"
+          "import renderer.scene.*;\n"
+          "import renderer.scene.primitives.LineSegment;\n"
+          "import renderer.scene.util.ModelShading;\n"
+          "import renderer.framebuffer.FrameBuffer;\n"
+          "import renderer.pipeline.Pipeline;\n"
+          "import renderer.pipeline.Rasterize;\n\n", f);
+    fprintf(f, "public class %.*s\n{\n", (int)ncls, cls);
+    for (k = 0; k < s->nmodels; k++)
+        put_model_parts(f, &s->models[k], k + 1);
+    fputs("   public static void main(String[] args)\n   {\n", f);
+    fprintf(f, "      final Scene scene = new Scene(\"\", Camera.%s());\n",
+            s->perspective ? "projPerspective" : "projOrtho");
+    fputs("      scene.debug = true;\n", f);
+    fprintf(f, "      Rasterize.debug = %s;\n\n", pixels ? "true" : "false");
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+
+        fprintf(f, "      final Model m%zu = new Model(", k + 1);
+        put_string(f, m->name);
+        fputs(");\n", f);
+        for (i = 0; i < (m->nv + CHUNK - 1) / CHUNK; i++)
+            fprintf(f, "      M%zuVertices%zu.into(m%zu);\n", k + 1, i, k + 1);
+        for (i = 0; i < (m->nseg + CHUNK - 1) / CHUNK; i++)
+            fprintf(f, "      M%zuSegments%zu.into(m%zu);\n", k + 1, i, k + 1);
+        fprintf(f, "      ModelShading.setColor(m%zu, new Color(%d, %d, %d));\n", k + 1,
+                m->color[0], m->color[1], m->color[2]);
+        fprintf(f, "      scene.addPosition(new Position(m%zu, ", k + 1);
+        put_string(f, m->name);
+        fputs(", new Vector(", f);
+        put_double(f, m->translate.x);
+        fputs(", ", f);
+        put_double(f, m->translate.y);
+        fputs(", ", f);
+        put_double(f, m->translate.z);
+        fputs(")));\n\n", f);
+    }
+    fprintf(f, "      final FrameBuffer fb = new FrameBuffer(%d, %d, new Color(%d, %d, %d));\n",
+            s->fb_w, s->fb_h, s->background[0], s->background[1], s->background[2]);
+    fprintf(f, "      fb.setViewport(%d, %d, %d, %d);\n", s->vp_x, s->vp_y, s->vp_w, s->vp_h);
+    fputs("      Pipeline.render(scene, fb.vp);\n"
+          "      if (args.length > 0)\n"
+          "         fb.dumpFB2File(args[0]);\n"
+          "   }\n"
+          "}\n", f);
+}
+
+int pt_cmd_export(int argc, char **argv)
+{
+    const char *path = NULL, *out = NULL, *cls = "PipetraceScene";
+    size_t ncls = 14;
+    int k, pixels = 0, rc;
+    char err[PT_ERRLEN];
+    pt_outfile o;
+    pt_scene s;
+
+    if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+        fputs(usage, stdout);
+        return PT_EXIT_OK;
+    }
+    if (argc < 2 || strcmp(argv[1], "java") != 0)
+        return pt_cli_usage("export", "the first argument is the language: java%s", "");
+    for (k = 2; k < argc; k++) {
+        if (!strcmp(argv[k], "--help") || !strcmp(argv[k], "-h")) {
+            fputs(usage, stdout);
+            return PT_EXIT_OK;
+        } else if (!strcmp(argv[k], "--pixels"))
+            pixels = 1;
+        else if (!strcmp(argv[k], "-o")) {
+            if (pt_cli_value("export", argc, argv, &k, &out) != -1)
+                return PT_EXIT_USAGE;
+            ncls = class_name(out, &cls);
+            if (ncls == 0)
+                return pt_cli_usage("export", "-o takes FILE.java, FILE a Java class "
+                                    "name (letters, digits, '_', '$'; not a reserved "
+                                    "word nor a class the program uses), not '%s'", out);
+        } else if (argv[k][0] == '-' && argv[k][1] != '\0')
+            return pt_cli_usage("export", "unknown option '%s'", argv[k]);
+        else if (path != NULL)
+            return pt_cli_usage("export", "more than one scene ('%s')", argv[k]);
+        else
+            path = argv[k];
+    }
+    if (pt_cli_load(&s, path) != 0)
+        return PT_EXIT_INPUT;
+    if (s.matrix) {
+        fprintf(stderr, "pipetrace export: %s uses the matrix camera (camera lookat), "
+                "which renderer 4 does not have\n", s.path);
+        pt_scene_free(&s);
+        return PT_EXIT_INPUT;
+    }
+    if (pt_outfile_open(&o, out ? out : "-", err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace export: %s\n", err);
+        pt_scene_free(&s);
+        return PT_EXIT_INPUT;
+    }
+    put_java(o.f, &s, cls, ncls, out ? cls : "PipetraceScene.java", pixels);
+    rc = pt_outfile_finish(&o, ferror(o.f), "pipetrace export") == 0 ? PT_EXIT_OK
+                                                                      : PT_EXIT_INPUT;
+    pt_scene_free(&s);
+    return rc;
+}
