@@ -32,6 +32,7 @@ cli         1 sh tests/cli.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace
 extreme     1 sh tests/extreme.sh $B/pipetrace
 teach       1 sh tests/teach.sh $B/pipetrace
+classroom   2 sh tests/classroom.sh $B/pipetrace
 accuracy    1 sh tests/accuracy.sh $B/pipetrace
 journey     1 sh tests/journey.sh $B/pipetrace
 browser     2 sh tests/journey_browser.sh $B/pipetrace

@@ -288,7 +288,11 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
     size_t k;
     int st, i;
 
-    puts_(t, "{\"type\":\"header\",\"version\":1,\"scene\":");
+    puts_(t, "{\"type\":\"header\",\"version\":1,");
+    if (t->student && *t->student) {        /* a student build: which stage files */
+        puts_(t, "\"student\":"); put_json_str(t, t->student); put(t, ",", 1);
+    }
+    puts_(t, "\"scene\":");
     put_json_str(t, s->path);
     puts_(t, ",\"framebuffer\":{\"w\":"); put_i64(t, s->fb_w);
     puts_(t, ",\"h\":"); put_i64(t, s->fb_h);
@@ -344,7 +348,11 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     size_t k;
     int st, i;
 
-    puts_(t, "# pipetrace trace, format version 1\nscene        ");
+    puts_(t, "# pipetrace trace, format version 1\n");
+    if (t->student && *t->student) {        /* a student build: which stage files */
+        puts_(t, "student      "); puts_(t, t->student); put(t, "\n", 1);
+    }
+    puts_(t, "scene        ");
     puts_(t, s->path);
     puts_(t, "\nframebuffer  "); put_i64(t, s->fb_w); puts_(t, " x "); put_i64(t, s->fb_h);
     puts_(t, ", background "); put_rgb(t, s->background, " ");
@@ -392,7 +400,12 @@ static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
     t->plan = p;
     if (t->fmt == PT_FORMAT_JSONL) header_json(t, s, p);
     else if (t->fmt == PT_FORMAT_TEXT) header_text(t, s, p);
-    else puts_(t, s->matrix ? csv_matrix : csv_classic);
+    else {
+        if (t->student && *t->student) {    /* a student build: which stage files */
+            puts_(t, "# student "); puts_(t, t->student); put(t, "\n", 1);
+        }
+        puts_(t, s->matrix ? csv_matrix : csv_classic);
+    }
 }
 
 /* ===== vertex records ===== */
@@ -816,6 +829,7 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->model = NULL;
     t->v = 0;
     t->explain = 0;
+    t->student = NULL;
     t->journey_made = 0;
     t->clipv = 0;
     t->scene = NULL;

@@ -51,6 +51,9 @@ typedef struct pt_trace {
     const pt_plan *plan;         /*   (they outlive the run) */
     pt_journey journey;          /* with explain: the point's whole journey, */
     int journey_made;            /*   as pt_run() handed it over */
+    const char *student;         /* a student build's stage files ("pixel=FILE#CKSUM
+                                 ** ..."), written into the header; NULL or "" in
+                                 ** the reference build.  Set after init */
     int failed;                  /* 1 after a write error */
     size_t len;                  /* bytes waiting in buf */
     char buf[1 << 16];           /* output block */

@@ -176,6 +176,7 @@ pt_tkind pt_tread_kind(const char *buf, size_t len)
 {
     static const char text[] = "# pipetrace trace";
     static const char csv[] = "model,v,stage,";
+    static const char student[] = "# student ";
 
     static const char png[] = "\211PNG\r\n\032\n";
 
@@ -185,6 +186,10 @@ pt_tkind pt_tread_kind(const char *buf, size_t len)
     if (len >= 1 && buf[0] == '{') return PT_TK_JSONL;
     if (len >= sizeof text - 1 && memcmp(buf, text, sizeof text - 1) == 0) return PT_TK_TEXT;
     if (len >= sizeof csv - 1 && memcmp(buf, csv, sizeof csv - 1) == 0) return PT_TK_CSV;
+    if (len >= sizeof student - 1 && memcmp(buf, student, sizeof student - 1) == 0) {
+        const char *nl = memchr(buf, '\n', len);    /* a student build's CSV */
+        if (nl) return pt_tread_kind(nl + 1, len - (size_t)(nl + 1 - buf));
+    }
     return PT_TK_UNKNOWN;
 }
 

@@ -192,6 +192,7 @@ int main(int argc, char **argv)
         else {
             pt_trace_init(tr, tout.f, c.fmt, c.precision);
             tr->explain = c.explain;
+            tr->student = pt_student_files;
             pt_trace_listener(tr, &l);
         }
     }

@@ -171,6 +171,10 @@ static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
         fprintf(stderr, "%s\n", err);
         return PT_EXIT_INPUT;
     }
+    if (s == 0 && c->t[0].hdr.student[0])  /* the reference should come first */
+        fprintf(stderr, "pipetrace diff: warning: EXPECTED %s comes from a student build "
+                "(student %s); the reference trace is build/pipetrace's (are the two "
+                "swapped?)\n", c->o->path[0], c->t[0].hdr.student);
     free(*buf);
     *buf = NULL;
     return 0;
