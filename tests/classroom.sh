@@ -82,4 +82,68 @@ for f in txt jsonl; do
 done
 "$exe" diff "$tmp/ref.jsonl" "$tmp/st.jsonl" >"$tmp/out" 2>"$tmp/err"
 check "class-2.8 ... and not the right way round" test "$(grep -c warning "$tmp/err")" = 0
+
+# ---- quiz for class and grading
+feed() {    # feed INPUT ARGS...: like run, with INPUT (backslash escapes) on stdin
+    input=$1; shift
+    printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
+}
+right='-1 -1 0\n-1 -1 -2\n-0.5 -0.5 -1\n5.497501249375313 2.9987506246876565\n4 7\n4 7\n144\n'
+feed "$right" quiz $tri --vertex 1
+check "class-3.1 all right: exit 0" test "$rc" = 0 -a -n "$(grep -x 'score: 7/7' "$tmp/out")"
+feed '-1 -1 0\nbanana\n\n-1 -1 -2\n5.5 3\n-0.5 -0.5 -1\n' quiz $tri --vertex 1 --interactive
+check "class-3.2 at a terminal, 'banana' and an empty line are asked again" \
+    test "$(grep -c '^camera: x_c y_c z_c = ? ' "$tmp/out")" = 3
+check "class-3.3 ... saying what to write" grep -qxF "  (not read: write 3 numbers for x_c y_c z_c, separated by spaces or commas; try again)" "$tmp/out"
+check "class-3.4 ... a miscounted line too, not counted and the answer not shown" \
+    test "$(grep -c '^image: x_ip y_ip z_ip = ? ' "$tmp/out")" = 2 -a "$(grep -c 'go on with' "$tmp/out")" = 0
+check "class-3.5 ... the score counts each stage once" grep -qx "score: 3/3 (input ended after 3 of 7 stages)" "$tmp/out"
+check "class-3.6 ... end of input is said in words" grep -qx "(end of input)" "$tmp/out"
+check "class-3.7 ... unanswered stages: exit 1" test "$rc" = 1
+feed '-1 -1 0\nbanana\n-0.5 -0.5 -1\n' quiz $tri --vertex 1
+check "class-3.8 from a file, 'banana' is wrong for its stage only" \
+    test "$(grep -c '^  wrong' "$tmp/out")" = 1 -a "$(grep -c '^  correct' "$tmp/out")" = 2
+check "class-3.9 ... exit 1" test "$rc" = 1
+feed '-1 -1 0\nbanana\n-0.5 -0.5 -1\n' quiz $tri --vertex 1 --json
+check "class-3.10 --json: one line, the score per stage" test "$(cat "$tmp/out")" = \
+    '{"scene":"docs/examples/triangle.scene","model":"tri","vertex":1,"stages":[{"stage":"model","score":1},{"stage":"camera","score":0},{"stage":"image","score":1},{"stage":"pixel","score":null},{"stage":"viewport","score":null},{"stage":"framebuffer","score":null},{"stage":"index","score":null}],"right":2,"answered":3,"of":7}'
+if command -v python3 >/dev/null 2>&1; then
+    check "class-3.11 ... JSON" python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$tmp/out"
+fi
+feed '5.497501249375313 2.9987506246876565\n' quiz $tri --vertex 1 --stage pixel
+check "class-3.12 --stage pixel asks that stage only" test "$rc" = 0 -a "$(grep -c ' = ? ' "$tmp/out")" = 1
+check "class-3.13 ... given the stage before" grep -qxF "given: (x_ip, y_ip, z_ip) = (-0.5, -0.5, -1)" "$tmp/out"
+run quiz $tri --vertex 1 --stage pixle
+check "class-3.14 --stage with an unknown name: exit 1, listing the stages" \
+    test "$rc" = 1 -a -n "$(grep -F "unknown stage 'pixle' (the stages: model, camera, image, pixel," "$tmp/err")"
+run quiz $tri --vertex 1 --stage ndc
+check "class-3.15 --stage of the other camera: exit 2, listing this journey's stages" \
+    test "$rc" = 2 -a -n "$(grep -F "(its stages: model, camera, image, pixel, viewport, framebuffer, index)" "$tmp/err")"
+printf '%b' "$right" | "$exe" quiz $tri --vertex 1 >/dev/full 2>"$tmp/err"; rc=$?
+check "class-3.16 quiz >/dev/full: exit 2" test "$rc" = 2 -a -n "$(grep 'cannot write' "$tmp/err")"
+printf '%b' "$right" | "$exe" quiz $tri --vertex 1 >&- 2>"$tmp/err"; rc=$?
+check "class-3.17 quiz with standard output closed: exit 2" test "$rc" = 2
+feed '' quiz $tri --vertex 1 --json
+check "class-3.17a --json without answers: nothing answered, exit 1" \
+    test "$rc" = 1 -a -n "$(grep -F '"right":0,"answered":0,"of":7}' "$tmp/out")"
+
+# ---- grading a folder of answer sheets
+mkdir -p "$tmp/sheets/sub"
+printf '%b' "$right" > "$tmp/sheets/alice.txt"
+printf '# Bob\n-1 -1 0\nbanana\n-0.5 -0.5 -1\n5.5 3\n4 7\n4 7\n' > "$tmp/sheets/bob, b.txt"
+printf 'x\n' > "$tmp/sheets/.hidden"
+run quiz $tri --vertex 1 --grade "$tmp/sheets" --out "$tmp/scores.csv"
+check "class-4.1 --grade: exit 1 (a sheet has a wrong answer)" test "$rc" = 1
+check "class-4.2 ... a CSV, a row per sheet in name order, 1/0 per stage, empty unanswered" \
+    test "$(tr '\n' '|' < "$tmp/scores.csv")" = 'sheet,model,camera,image,pixel,viewport,framebuffer,index,right,of|alice.txt,1,1,1,1,1,1,1,7,7|"bob, b.txt",1,0,1,0,1,1,,4,7|'
+rm "$tmp/sheets/bob, b.txt"
+run quiz $tri --vertex 1 --grade "$tmp/sheets"
+check "class-4.3 all sheets right: exit 0, the CSV on standard output" \
+    test "$rc" = 0 -a "$(sed -n 2p "$tmp/out")" = "alice.txt,1,1,1,1,1,1,1,7,7"
+run quiz $tri --grade "$tmp/sheets"
+check "class-4.4 --grade without --vertex or --seed: exit 1" test "$rc" = 1
+run quiz $tri --vertex 1 --grade "$tmp/nosuch"
+check "class-4.5 --grade of a missing folder: exit 2" test "$rc" = 2
+run quiz $tri --vertex 1 --stage index --grade "$tmp/sheets"
+check "class-4.6 --grade with --stage: that stage's column only" test "$(sed -n 1p "$tmp/out")" = "sheet,index,right,of"
 report

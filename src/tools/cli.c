@@ -142,12 +142,17 @@ int pt_cli_student_note(char *buf, size_t n)
 
 int pt_cli_read_line(char *b, size_t n, int echo)
 {
+    return pt_cli_read_line_from(stdin, b, n, echo);
+}
+
+int pt_cli_read_line_from(FILE *f, char *b, size_t n, int echo)
+{
     size_t len;
 
-    if (!fgets(b, (int)n, stdin)) return -1;
+    if (!fgets(b, (int)n, f)) return -1;
     len = strlen(b);
     if (len && b[len - 1] == '\n') b[--len] = '\0';
-    else { int ch; while ((ch = getchar()) != EOF && ch != '\n') {} }
+    else { int ch; while ((ch = getc(f)) != EOF && ch != '\n') {} }
     if (len && b[len - 1] == '\r') b[--len] = '\0';
     if (echo) printf("%s\n", b);
     return 0;

@@ -10,11 +10,12 @@
 #ifndef PT_CLI_H
 #define PT_CLI_H
 
+#include <stdio.h>
 #include "core/pipetrace.h"
 
 /* The exit statuses of every command: the one table. */
 #define PT_EXIT_OK     0         /* done; for diff: the two agree */
-#define PT_EXIT_DIFFER 1         /* diff: the two differ */
+#define PT_EXIT_DIFFER 1         /* diff: the two differ; quiz: an answer wrong */
 #define PT_EXIT_USAGE  1         /* a usage error */
 #define PT_EXIT_INPUT  2         /* bad input, or an output that cannot be written */
 
@@ -95,5 +96,8 @@ int pt_cli_student_note(char *buf, size_t n);
 ** transcript driven through a pipe reads like a terminal session (step and
 ** quiz).  Returns 0, or -1 at end of input. */
 int pt_cli_read_line(char *b, size_t n, int echo);
+
+/* The same from the stream f (quiz --grade reads answer sheets). */
+int pt_cli_read_line_from(FILE *f, char *b, size_t n, int echo);
 
 #endif
