@@ -33,6 +33,7 @@ diff        1 sh tests/diff.sh $B/pipetrace
 extreme     1 sh tests/extreme.sh $B/pipetrace
 teach       1 sh tests/teach.sh $B/pipetrace
 classroom   2 sh tests/classroom.sh $B/pipetrace
+term        2 sh tests/term.sh $B/pipetrace
 accuracy    1 sh tests/accuracy.sh $B/pipetrace
 journey     1 sh tests/journey.sh $B/pipetrace
 browser     2 sh tests/journey_browser.sh $B/pipetrace

@@ -94,7 +94,7 @@ int pt_cli_arg(pt_cli_args *a, int argc, char **argv, int *k)
             return pt_cli_usage(a->cmd, "--vertex takes a vertex number >= 1, not %s", val);
         return -1;
     }
-    if (o[0] == '-' && o[1] != '\0') return pt_cli_usage(a->cmd, "unknown option %s", o);
+    if (o[0] == '-' && o[1] != '\0') return pt_cli_unknown(a->cmd, a->usage, o);
     if (a->path) return pt_cli_usage(a->cmd, "more than one scene given: %s", o);
     a->path = o;
     return -1;
@@ -156,4 +156,64 @@ int pt_cli_read_line_from(FILE *f, char *b, size_t n, int echo)
     if (len && b[len - 1] == '\r') b[--len] = '\0';
     if (echo) printf("%s\n", b);
     return 0;
+}
+
+/* Edit distance of a[0..na) and b[0..nb) (both < 64): insertions, deletions,
+** changes, and swaps of two neighbours (optimal string alignment). */
+static size_t distance(const char *a, size_t na, const char *b, size_t nb)
+{
+    size_t d[64][64], i, j;
+
+    for (i = 0; i <= na; i++) d[i][0] = i;
+    for (j = 0; j <= nb; j++) d[0][j] = j;
+    for (i = 1; i <= na; i++)
+        for (j = 1; j <= nb; j++) {
+            size_t c = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            if (d[i - 1][j] + 1 < c) c = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < c) c = d[i][j - 1] + 1;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+                d[i - 2][j - 2] + 1 < c)
+                c = d[i - 2][j - 2] + 1;
+            d[i][j] = c;
+        }
+    return d[na][nb];
+}
+
+int pt_cli_nearest(const char *arg, const char *text, char *out, size_t n)
+{
+    const char *p = text, *best = NULL;
+    size_t na = strlen(arg), nbest = 0, dbest = 3, letters;
+    int opt = arg[0] == '-';
+
+    letters = na - strspn(arg, "-");
+    if (n) out[0] = '\0';
+    if (na >= 64) return 0;
+    while (*p) {
+        size_t len;
+        if (opt ? !(p[0] == '-' && p[1] == '-' && (p == text || p[-1] != '-'))
+                : !(*p >= 'a' && *p <= 'z') || (p > text && p[-1] >= 'a' && p[-1] <= 'z')) {
+            p++;
+            continue;
+        }
+        len = opt ? 2 + strspn(p + 2, "abcdefghijklmnopqrstuvwxyz0123456789-")
+                  : strspn(p, "abcdefghijklmnopqrstuvwxyz");
+        if (len < 64 && (!opt || len > 2)) {
+            size_t d = distance(arg, na, p, len);
+            if (d < dbest) { dbest = d; best = p; nbest = len; }
+        }
+        p += len;
+    }
+    if (!best || dbest >= letters || dbest == 0 || nbest >= n) return 0;
+    memcpy(out, best, nbest);
+    out[nbest] = '\0';
+    return 1;
+}
+
+int pt_cli_unknown(const char *cmd, const char *usage, const char *arg)
+{
+    char near[64];
+
+    if (pt_cli_nearest(arg, usage, near, sizeof near))
+        return pt_cli_usage(cmd, "unknown option '%s' (did you mean '%s'?)", arg, near);
+    return pt_cli_usage(cmd, "unknown option '%s'", arg);
 }

@@ -30,6 +30,19 @@
 ** MESSAGE", "Try 'pipetrace --help'.") and return PT_EXIT_USAGE. */
 int pt_cli_usage(const char *cmd, const char *fmt, ...) PT_PRINTF_LIKE(2, 3);
 
+/* The word of text nearest to arg, into out (n bytes): when arg starts with
+** '-', the options ("--name") text mentions, else its words of letters.
+** Nearest by edit distance (a swap of two neighbours counts as one edit),
+** the first of equals; only one within 2 edits, and fewer edits than arg has
+** letters.  Returns 1, or 0 with out empty when none is that near.  This
+** function can't fail. */
+int pt_cli_nearest(const char *arg, const char *text, char *out, size_t n);
+
+/* The unknown-option error: "pipetrace CMD: unknown option 'ARG'", with "(did
+** you mean '--NAME'?)" when usage mentions a near one, and the "Try" line.
+** Returns PT_EXIT_USAGE. */
+int pt_cli_unknown(const char *cmd, const char *usage, const char *arg);
+
 /* Load the scene at path, or the built-in scene when path is NULL.  Returns 0,
 ** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */
 int pt_cli_load(pt_scene *s, const char *path);

@@ -41,7 +41,8 @@ static const char usage[] =
 "                   (Enter: next stage, b: back, q: quit)\n"
 "  --compare-cameras  the vertex through the classic and the matrix camera,\n"
 "                   side by side (docs/cameras.md)\n"
-"  --raw-lookat     matrix camera: keep the given up vector as it is\n";
+"  --raw-lookat     matrix camera: keep the given up vector as it is\n"
+"Docs: docs/step-why-quiz.md, docs/cameras.md\n";
 
 /* Value k of v (stage st) as text: the shortest double, the integer, "none". */
 static const char *value_text(char *b, size_t n, int st, const pt_cat_val *v, int k)

@@ -68,7 +68,8 @@ static const char usage[] =
 "\n"
 "  --model NAME   ask about the trace of 'pipetrace SCENE --model NAME': only\n"
 "                 NAME's segments count; the others are drawn into the image\n"
-"                 but left out of the trace\n";
+"                 but left out of the trace\n"
+"Docs: docs/step-why-quiz.md\n";
 
 /* What rasterizing one segment did, seen from the pixel asked about. */
 typedef struct seg_eval {
@@ -546,7 +547,7 @@ int pt_cmd_why(int argc, char **argv)
             continue;
         }
         if (a[0] == '-' && !(a[1] >= '0' && a[1] <= '9'))
-            return pt_cli_usage("why", "unknown option %s", a);
+            return pt_cli_unknown("why", usage, a);
         if (npos == 3)
             return pt_cli_usage("why", "too many arguments ('%s'): expected [SCENE] X_FB Y_FB", a);
         pos[npos++] = a;
