@@ -84,10 +84,6 @@ done
 check "class-2.8 ... and not the right way round" test "$(grep -c warning "$tmp/err")" = 0
 
 # ---- quiz for class and grading
-feed() {    # feed INPUT ARGS...: like run, with INPUT (backslash escapes) on stdin
-    input=$1; shift
-    printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
-}
 right='-1 -1 0\n-1 -1 -2\n-0.5 -0.5 -1\n5.497501249375313 2.9987506246876565\n4 7\n4 7\n144\n'
 feed "$right" quiz $tri --vertex 1
 check "class-3.1 all right: exit 0" test "$rc" = 0 -a -n "$(grep -x 'score: 7/7' "$tmp/out")"

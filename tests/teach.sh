@@ -9,11 +9,6 @@ tri=docs/examples/triangle.scene
 
 
 
-feed() {    # feed INPUT ARGS...: like run, with INPUT (backslash escapes) on stdin
-    input=$1; shift
-    printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
-    out=$(cat "$tmp/out")
-}
 
 has() {     # has LINE: $tmp/out holds exactly this line
     grep -Fxq -- "$1" "$tmp/out"

@@ -10,10 +10,6 @@ exe=$1
 . tests/testlib.sh
 tri=docs/examples/triangle.scene
 
-feed() {    # feed INPUT ARGS...: like run, with INPUT (backslash escapes) on stdin
-    input=$1; shift
-    printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
-}
 
 # ---- a mistyped command or option: the nearest is suggested
 run stpe
