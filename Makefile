@@ -152,7 +152,7 @@ golden: $B/pipetrace
 	sh tests/golden.sh $B/pipetrace --write
 
 docs: $B/pipetrace
-	python3 tests/docs_write.py $B/pipetrace README.md docs/*.md docs/exercises/*.md
+	COLUMNS= python3 tests/docs_write.py $B/pipetrace README.md docs/*.md docs/exercises/*.md
 
 screenshots: $B/pipetrace
 	$B/pipetrace journey --vertex 1 --svg docs/journey-builtin.svg

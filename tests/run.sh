@@ -10,6 +10,7 @@
 B=${1:-build}
 ref=tests/reference
 [ -d ../shared/reference ] && ref=../shared/reference
+unset COLUMNS                   # step and why wrap to it (src/tools/cli.h)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 passed=0

@@ -50,7 +50,7 @@ check "teach-2.3 ... a prompt per stage shown" test "$(grep -c 'b back, q quit: 
 feed '\n\n\n\n\n\n\n' step $tri --vertex 1 --interactive
 check "teach-2.4 Enter after the last stage ends" test "$rc" = 0 -a "$(grep -c '^stage' "$tmp/out")" = 7
 feed 'x\n' step $tri --vertex 1 --interactive
-check "teach-2.5 other input: help, then end of input ends" test "$rc" = 0 -a "$(grep -c '^(Enter: next stage, b: back, q: quit)' "$tmp/out")" = 1
+check "teach-2.5 other input: help, then end of input ends" test "$rc" = 0 -a "$(grep -c '^(Enter: next stage, 1-7: that stage, b: back, q: quit)' "$tmp/out")" = 1
 
 # ---- step: errors
 run step --vertex 0

@@ -7,6 +7,7 @@
 # feed INPUT ARGS...            the same with INPUT (backslash escapes: printf %b)
 #                               on standard input
 # report                        prints "N passed, N failed"; fails if any failed
+unset COLUMNS                   # step and why wrap to it: tests set it themselves
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 passed=0

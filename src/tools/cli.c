@@ -2,9 +2,13 @@
 ** src/tools/cli.c -- what every pipetrace command does with its arguments
 ** See LICENSE for copyright and license.
 */
+#define _POSIX_C_SOURCE 200809L
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
 #include "tools/cli.h"
 #include "core/pipetrace.h"
 
@@ -216,4 +220,100 @@ int pt_cli_unknown(const char *cmd, const char *usage, const char *arg)
     if (pt_cli_nearest(arg, usage, near, sizeof near))
         return pt_cli_usage(cmd, "unknown option '%s' (did you mean '%s'?)", arg, near);
     return pt_cli_usage(cmd, "unknown option '%s'", arg);
+}
+
+/* ===== output wrapped to the terminal's width ===== */
+
+int pt_cli_width(void)
+{
+    const char *c = getenv("COLUMNS");
+    uint64_t w;
+#ifdef TIOCGWINSZ
+    struct winsize ws;
+#endif
+
+    if (c && pt_cli_count(c, 20, 100000, &w) == 0) return (int)w;
+#ifdef TIOCGWINSZ
+    if (isatty(STDOUT_FILENO) && ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col >= 20)
+        return ws.ws_col;
+#endif
+    return 0;
+}
+
+void pt_cli_wrap_line(FILE *f, const char *line, size_t n, int width)
+{
+    size_t lead = 0, cont, col, at, w = width > 0 ? (size_t)width : 0;
+
+    if (!w || n <= w) { fwrite(line, 1, n, f); return; }
+    while (lead < n && line[lead] == ' ') lead++;
+    cont = lead + 4;                        /* the second column, else 4 in */
+    for (col = lead; col + 2 < n; col++)
+        if (line[col] == ' ' && line[col + 1] == ' ') {
+            while (col < n && line[col] == ' ') col++;
+            if (col < n && col < w / 2) cont = col;
+            break;
+        }
+    if (cont >= w / 2) cont = lead < w / 2 ? lead : 0;
+    at = 0;
+    while (at < n) {
+        size_t room = w - (at ? cont : 0), end = 0, k;
+        if (at) { fputc('\n', f); fprintf(f, "%*s", (int)cont, ""); }
+        if (n - at <= room) { fwrite(line + at, 1, n - at, f); return; }
+        /* the last space within the room that is a good break: not after "=" */
+        for (k = at + 1; k <= at + room && k < n; k++)
+            if (line[k] == ' ' && line[k - 1] != ' ' && line[k - 1] != '=' &&
+                (k < 2 || line[k - 1] != '-' || line[k - 2] != ' '))
+                end = k;
+        if (!end)                           /* one long word: let it run over */
+            for (end = at + 1; end < n && line[end] != ' '; end++) ;
+        fwrite(line + at, 1, end - at, f);
+        at = end;
+        while (at < n && line[at] == ' ') at++;
+    }
+}
+
+void pt_cli_out_open(pt_cli_out *o)
+{
+    o->buf = NULL;
+    o->len = 0;
+    o->width = pt_cli_width();
+    o->f = stdout;
+    if (o->width && !(o->f = open_memstream(&o->buf, &o->len))) {
+        o->f = stdout;                      /* out of memory: unwrapped, then */
+        o->width = 0;
+    }
+}
+
+int pt_cli_out_flush(pt_cli_out *o)
+{
+    const char *p, *e, *nl;
+
+    if (o->width) {
+        if (fflush(o->f) != 0) return -1;
+        for (p = o->buf, e = o->buf + o->len; p < e; p = nl + 1) {
+            nl = memchr(p, '\n', (size_t)(e - p));
+            pt_cli_wrap_line(stdout, p, (size_t)((nl ? nl : e) - p), o->width);
+            if (!nl) break;
+            fputc('\n', stdout);
+        }
+        fclose(o->f);
+        free(o->buf);
+        o->buf = NULL;
+        o->len = 0;
+        if (!(o->f = open_memstream(&o->buf, &o->len))) { o->f = stdout; o->width = 0; }
+    }
+    return fflush(stdout) != 0 || ferror(stdout) ? -1 : 0;
+}
+
+int pt_cli_out_close(pt_cli_out *o)
+{
+    int rc = pt_cli_out_flush(o);
+
+    if (o->width) {
+        fclose(o->f);
+        free(o->buf);
+    }
+    o->f = stdout;
+    o->width = 0;
+    return rc;
 }

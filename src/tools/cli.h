@@ -104,6 +104,37 @@ extern const char pt_student_files[];
 ** the reference build.  This function can't fail. */
 int pt_cli_student_note(char *buf, size_t n);
 
+/* ===== output wrapped to the terminal's width ===== */
+
+/* The width to wrap at: COLUMNS when it holds a whole number >= 20, else the
+** terminal's own width (ioctl TIOCGWINSZ) when standard output is a terminal,
+** else 0: no wrapping (a file or a pipe gets the same bytes every run). */
+int pt_cli_width(void);
+
+/* Write line[0..n) (no newline in it) to f, broken at spaces into lines of at
+** most width characters; never inside a word, so no number is split (a word
+** longer than the room runs over), and not between "=" and what follows it.
+** Continued lines start at the line's second column (where the text after a
+** run of two or more spaces begins, as in "  here     x_pp = ..."), or 4 past
+** its own indentation.  width 0: the line as it is.  This function can't fail. */
+void pt_cli_wrap_line(FILE *f, const char *line, size_t n, int width);
+
+/* A command's output, wrapped.  pt_cli_out_open() sets f to a memory stream
+** when pt_cli_width() is not 0 (else to stdout); the command writes to f;
+** pt_cli_out_flush() writes what came so far to standard output, each line
+** wrapped (call it before reading input); pt_cli_out_close() flushes and
+** ends.  Returns 0, or -1 when standard output could not be written. */
+typedef struct pt_cli_out {
+    FILE *f;                     /* where the command writes */
+    int width;                   /* 0: f is stdout, nothing wrapped */
+    char *buf;                   /* the memory stream's text; owned */
+    size_t len;                  /*   and its length */
+} pt_cli_out;
+
+void pt_cli_out_open(pt_cli_out *o);
+int pt_cli_out_flush(pt_cli_out *o);
+int pt_cli_out_close(pt_cli_out *o);
+
 /* Read one line of standard input into b (newline and a trailing CR dropped;
 ** the rest of a too long line is skipped).  echo: print it, so that a
 ** transcript driven through a pipe reads like a terminal session (step and
