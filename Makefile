@@ -69,11 +69,12 @@ endif
 # ===== end of student stages =====
 # $B/buildinfo.c names the stages replaced ("" in build/): pipetrace step and
 # --version say so (pt_student_stages, src/tools/cli.h); every trace header
-# names the files, each with its cksum as 8 hex digits (pt_student_files).
+# names the files (without their folders), each with its cksum as 8 hex
+# digits (pt_student_files).
 $B/buildinfo.c: Makefile $(CHOSEN) | $B
 	printf '#include "tools/cli.h"\nconst char pt_student_stages[] = "%s";\n' '$(STUDENT)' > $@
 	printf 'const char pt_student_files[] = "%s";\n' "$(strip $(foreach n,$(STUDENT),\
-	    $n=$(STAGE_$n)#$$(cksum < '$(STAGE_$n)' | awk '{ printf "%08x", $$1 }')))" >> $@
+	    $n=$(notdir $(STAGE_$n))#$$(cksum < '$(STAGE_$n)' | awk '{ printf "%08x", $$1 }')))" >> $@
 
 # The layers, bottom up (docs/architecture.md; tests/layers.py checks that
 # none includes a header of a layer above it).

@@ -57,15 +57,15 @@ run_sb --version
 check "class-2.1 --version names the stage" grep -qxF "student build: the pixel stage is yours (make STAGE_pixel=...)" "$tmp/out"
 run_sb $tri --vertex 1
 check "class-2.2 text trace: a student line, with the file and its cksum" \
-    test "$(sed -n 2p "$tmp/out")" = "student      pixel=$tmp/s3_two.c#$sum"
+    test "$(sed -n 2p "$tmp/out")" = "student      pixel=s3_two.c#$sum"
 cp "$tmp/out" "$tmp/st.txt"
 run_sb $tri --vertex 1 --format jsonl
 check "class-2.3 JSON Lines: a student field in the header" \
-    grep -qF "{\"type\":\"header\",\"version\":1,\"student\":\"pixel=$tmp/s3_two.c#$sum\",\"scene\":" "$tmp/out"
+    grep -qF "{\"type\":\"header\",\"version\":1,\"student\":\"pixel=s3_two.c#$sum\",\"scene\":" "$tmp/out"
 cp "$tmp/out" "$tmp/st.jsonl"
 run_sb $tri --vertex 1 --format csv
 check "class-2.4 CSV: a first line before the column names" \
-    test "$(head -2 "$tmp/out" | tr '\n' '|')" = "# student pixel=$tmp/s3_two.c#$sum|model,v,stage,x,y,z,inside,behind,i,warning,digits_lost|"
+    test "$(head -2 "$tmp/out" | tr '\n' '|')" = "# student pixel=s3_two.c#$sum|model,v,stage,x,y,z,inside,behind,i,warning,digits_lost|"
 "$exe" $tri --vertex 1 --format jsonl --trace "$tmp/ref.jsonl"
 "$exe" $tri --vertex 1 --format csv --trace "$tmp/ref.csv"
 check "class-2.5 the reference build writes no student line" \
@@ -74,11 +74,11 @@ sh tests/student.sh s3_two "$tmp/s3_two.c" && echo '/* changed */' >> "$tmp/s3_t
 mk STAGE_pixel="$tmp/s3_two.c"
 run_sb $tri --vertex 1
 check "class-2.6 a changed file: a new cksum in the header" \
-    test "$(sed -n 2p "$tmp/out")" = "student      pixel=$tmp/s3_two.c#$(cksum < "$tmp/s3_two.c" | awk '{ printf "%08x", $1 }')"
+    test "$(sed -n 2p "$tmp/out")" = "student      pixel=s3_two.c#$(cksum < "$tmp/s3_two.c" | awk '{ printf "%08x", $1 }')"
 for f in txt jsonl; do
     "$exe" diff "$tmp/st.$f" "$tmp/ref.jsonl" >"$tmp/out" 2>"$tmp/err"
     check "class-2.7.$f diff with a student's $f trace as EXPECTED warns (read back from the header)" \
-        grep -qF "pipetrace diff: warning: EXPECTED $tmp/st.$f comes from a student build (student pixel=$tmp/s3_two.c#$sum)" "$tmp/err"
+        grep -qF "pipetrace diff: warning: EXPECTED $tmp/st.$f comes from a student build (student pixel=s3_two.c#$sum)" "$tmp/err"
 done
 "$exe" diff "$tmp/ref.jsonl" "$tmp/st.jsonl" >"$tmp/out" 2>"$tmp/err"
 check "class-2.8 ... and not the right way round" test "$(grep -c warning "$tmp/err")" = 0

@@ -45,6 +45,9 @@ check "term-2.3 an empty scene warns: no models" grep -qxF "pipetrace: warning: 
 check "term-2.4 ... and still writes its (empty) trace" test "$rc" = 0 -a -n "$(grep '^# pipetrace trace' "$tmp/out")"
 run $tri
 check "term-2.5 a scene with models: no warning" test -z "$err"
+run step "$tmp/empty.scene"
+check "term-2.6 step on an empty scene: 'has no models', exit 2" \
+    test "$rc" = 2 -a "$err" = "pipetrace step: --vertex 1: $tmp/empty.scene has no models"
 
 # ---- --help: a Docs line at the end, naming files that exist; every option in the top-level usage
 "$exe" --help > "$tmp/top"

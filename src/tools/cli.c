@@ -56,6 +56,11 @@ const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
         if (s->models[k].nv >= v) return &s->models[k];
         if (s->models[k].nv > most) most = s->models[k].nv;
     }
+    if (!s->nmodels) {
+        fprintf(stderr, "pipetrace%s%s: --vertex %llu: %s has no models\n", cmd ? " " : "",
+                cmd ? cmd : "", (unsigned long long)v, s->path);
+        return NULL;
+    }
     fprintf(stderr, "pipetrace%s%s: --vertex %llu: no model of %s has a vertex %llu "
             "(the largest has %zu)\n", cmd ? " " : "", cmd ? cmd : "", (unsigned long long)v, s->path,
             (unsigned long long)v, most);

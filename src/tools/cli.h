@@ -93,9 +93,10 @@ int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out);
 ** Makefile into $B/buildinfo.c (make STAGE_pixel=FILE.c: docs/teaching.md). */
 extern const char pt_student_stages[];
 
-/* The files of a student build, "NAME=FILE#CKSUM" a stage (CKSUM: cksum's CRC
-** of the file, 8 hex digits), separated by spaces; "" in the reference build.
-** Every trace header carries it (the "student" line). */
+/* The files of a student build, "NAME=FILE#CKSUM" a stage (FILE: its name
+** without folders; CKSUM: cksum's CRC of the file, 8 hex digits), separated
+** by spaces; "" in the reference build.  Every trace header carries it (the
+** "student" line). */
 extern const char pt_student_files[];
 
 /* "student build: the viewport stage is yours (make STAGE_viewport=...)" (two
