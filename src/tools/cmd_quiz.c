@@ -126,7 +126,7 @@ static int readable(pt_stage st, const int *none, int n)
 {
     int k, nones = 0;
 
-    for (k = 0; k < n; k++) nones += none[k];
+    for (k = 0; k < n && k < 4; k++) nones += none[k];     /* at most 4 values */
     if (n == pt_coord_count(st)) return 1;
     return int_stage(st) && st != PT_STAGE_CVV && n >= 1 && n <= pt_coord_count(st) &&
            nones == n;
@@ -208,8 +208,8 @@ static void ask(quiz *q)
     for (i = 0; i < j->norder; i++) q->result[i] = -1;
     for (i = q->first; i <= q->last; i++) {
         pt_stage st = j->order[i];
-        double v[4];
-        int none[4], n, ok;
+        double v[4] = {0, 0, 0, 0};
+        int none[4] = {0, 0, 0, 0}, n, ok;
 
         if (q->talk) prompt(j, st);
         for (;;) {
