@@ -50,6 +50,9 @@ STAGE_BAD := $(filter-out $(addprefix STAGE_,$(STAGE_NAMES) projection),$(STAGE_
 ifneq ($(STAGE_BAD),)
 $(error unknown student stage $(STAGE_BAD); the stages are $(addprefix STAGE_,$(STAGE_NAMES)) (STAGE_projection is STAGE_image))
 endif
+ifneq ($(and $(STAGE_projection),$(STAGE_$(word 2,$(STAGE_NAMES)))),)
+$(error STAGE_projection is STAGE_$(word 2,$(STAGE_NAMES)): give one of them)
+endif
 STAGE_$(word 2,$(STAGE_NAMES)) := $(or $(STAGE_$(word 2,$(STAGE_NAMES))),$(STAGE_projection))
 $(foreach n,$(STAGE_NAMES),$(if $(STAGE_$n),$(if $(wildcard $(STAGE_$n)),,\
     $(error STAGE_$n=$(STAGE_$n): no such file))))

@@ -42,6 +42,9 @@ mk STAGE_image="$tmp/s2_divz.c"; rc=$?
 check "class-1.7 STAGE_image (the trace's name) is accepted" test "$rc" = 0 -a -x "$tmp/sb/pipetrace"
 check "class-1.8 ... and builds the image stage from FILE" \
     sh -c "'$tmp/sb/pipetrace' --version | grep -qxF 'student build: the image stage is yours (make STAGE_image=...)'"
+mk STAGE_image="$tmp/s2_divz.c" STAGE_projection="$tmp/s2_divz.c"; rc=$?
+check "class-1.8a STAGE_image and its old name STAGE_projection together: make fails" \
+    test "$rc" != 0 -a -n "$(grep 'STAGE_projection is STAGE_image: give one of them' "$tmp/make.log")"
 printf 'this is not C\n' > "$tmp/broken.c"
 mk STAGE_image="$tmp/broken.c"; rc=$?
 check "class-1.9 a stage file that does not compile: make fails" test "$rc" != 0

@@ -9,6 +9,8 @@
 **   kind     field     meaning
 **   -------  --------  ------------------------------------------------------
 **   header   version   trace format version, PT_TRACE_VERSION
+**            student   a student build's stage files (pt_trace.student); CSV:
+**                      a "# student" line before the column names
 **            scene ... framebuffer, viewport, camera, one entry per model with
 **                      its stages, what was left out and why
 **   vertex   model, v  model name, 1-based vertex number as in the scene
