@@ -69,6 +69,9 @@ cp "$tmp/out" "$tmp/st.jsonl"
 run_sb $tri --vertex 1 --format csv
 check "class-2.4 CSV: a first line before the column names" \
     test "$(head -2 "$tmp/out" | tr '\n' '|')" = "# student pixel=s3_two.c#$sum|model,v,stage,x,y,z,inside,behind,i,warning,digits_lost|"
+cp "$tmp/out" "$tmp/st.csv"
+"$exe" diff "$tmp/st.csv" "$tmp/st.csv" >/dev/null 2>"$tmp/err"
+check "class-2.4a ... and it is still read as a CSV trace" grep -qF "$tmp/st.csv:1:1: error: a CSV trace has no header" "$tmp/err"
 "$exe" $tri --vertex 1 --format jsonl --trace "$tmp/ref.jsonl"
 "$exe" $tri --vertex 1 --format csv --trace "$tmp/ref.csv"
 check "class-2.5 the reference build writes no student line" \

@@ -172,24 +172,35 @@ int pt_tread_file(const char *path, char **buf, size_t *len, char *err, size_t e
     return 0;
 }
 
+/* A student build's CSV trace starts with a line "# student ...": its length
+** with the newline, or 0. */
+static size_t student_line(const char *buf, size_t len)
+{
+    static const char student[] = "# student ";
+    const char *nl;
+
+    if (len < sizeof student - 1 || memcmp(buf, student, sizeof student - 1) != 0) return 0;
+    nl = memchr(buf, '\n', len);
+    return nl ? (size_t)(nl + 1 - buf) : 0;
+}
+
 pt_tkind pt_tread_kind(const char *buf, size_t len)
 {
     static const char text[] = "# pipetrace trace";
     static const char csv[] = "model,v,stage,";
-    static const char student[] = "# student ";
 
     static const char png[] = "\211PNG\r\n\032\n";
 
+    {                                       /* a student build's CSV */
+        size_t skip = student_line(buf, len);
+        if (skip) return pt_tread_kind(buf + skip, len - skip);
+    }
     if (len >= 2 && buf[0] == 'P' && buf[1] == '6') return PT_TK_PPM;
     if (len >= 2 && buf[0] == 'P' && buf[1] == '3') return PT_TK_P3;
     if (len >= sizeof png - 1 && memcmp(buf, png, sizeof png - 1) == 0) return PT_TK_PNG;
     if (len >= 1 && buf[0] == '{') return PT_TK_JSONL;
     if (len >= sizeof text - 1 && memcmp(buf, text, sizeof text - 1) == 0) return PT_TK_TEXT;
     if (len >= sizeof csv - 1 && memcmp(buf, csv, sizeof csv - 1) == 0) return PT_TK_CSV;
-    if (len >= sizeof student - 1 && memcmp(buf, student, sizeof student - 1) == 0) {
-        const char *nl = memchr(buf, '\n', len);    /* a student build's CSV */
-        if (nl) return pt_tread_kind(nl + 1, len - (size_t)(nl + 1 - buf));
-    }
     return PT_TK_UNKNOWN;
 }
 

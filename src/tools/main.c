@@ -180,12 +180,12 @@ int main(int argc, char **argv)
     pt_scene s;
     pt_plan plan;
     pt_fb fb = {0, 0, NULL};
+    size_t k;
     pt_summary sum;
     pt_listener l;
     pt_trace *tr = NULL;
     pt_outfile tout = {NULL, NULL, NULL, NULL}, iout = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
-    size_t k;
     int rc;
 
     for (k = 0; argc > 1 && k < NCOMMANDS; k++)
