@@ -60,7 +60,7 @@ run_sb --version
 check "class-2.1 --version names the stage" grep -qxF "student build: the pixel stage is yours (make STAGE_pixel=...)" "$tmp/out"
 run_sb $tri --vertex 1
 check "class-2.2 text trace: a student line, with the file and its cksum" \
-    test "$(sed -n 2p "$tmp/out")" = "student      pixel=s3_two.c#$sum"
+    test "$(grep '^student ' "$tmp/out")" = "student      pixel=s3_two.c#$sum"
 cp "$tmp/out" "$tmp/st.txt"
 run_sb $tri --vertex 1 --format jsonl
 check "class-2.3 JSON Lines: a student field in the header" \
@@ -80,7 +80,7 @@ sh tests/student.sh s3_two "$tmp/s3_two.c" && echo '/* changed */' >> "$tmp/s3_t
 mk STAGE_pixel="$tmp/s3_two.c"
 run_sb $tri --vertex 1
 check "class-2.6 a changed file: a new cksum in the header" \
-    test "$(sed -n 2p "$tmp/out")" = "student      pixel=s3_two.c#$(cksum < "$tmp/s3_two.c" | awk '{ printf "%08x", $1 }')"
+    test "$(grep '^student ' "$tmp/out")" = "student      pixel=s3_two.c#$(cksum < "$tmp/s3_two.c" | awk '{ printf "%08x", $1 }')"
 for f in txt jsonl; do
     "$exe" diff "$tmp/st.$f" "$tmp/ref.jsonl" >"$tmp/out" 2>"$tmp/err"
     check "class-2.7.$f diff with a student's $f trace as EXPECTED warns (read back from the header)" \

@@ -348,11 +348,7 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     size_t k;
     int st, i;
 
-    puts_(t, "# pipetrace trace, format version 1\n");
-    if (t->student && *t->student) {        /* a student build: which stage files */
-        puts_(t, "student      "); puts_(t, t->student); put(t, "\n", 1);
-    }
-    puts_(t, "scene        ");
+    puts_(t, "# pipetrace trace, format version 1\nscene        ");
     puts_(t, s->path);
     puts_(t, "\nframebuffer  "); put_i64(t, s->fb_w); puts_(t, " x "); put_i64(t, s->fb_h);
     puts_(t, ", background "); put_rgb(t, s->background, " ");
@@ -361,6 +357,9 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     put_i64(t, s->vp_y); puts_(t, ")\ncamera       "); puts_(t, camera_name(s));
     if (s->matrix) camera_put(t, s, p, 0);
     if (s->from_obj) { puts_(t, "\nobj placed   translate "); put_xyz_text(t, s->obj_translate); }
+    if (t->student && *t->student) {        /* a student build: which stage files */
+        puts_(t, "\nstudent      "); puts_(t, t->student);
+    }
     put(t, "\n", 1);
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];

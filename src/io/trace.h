@@ -49,13 +49,13 @@ typedef struct pt_trace {
     int explain;                 /* 1: each vertex record gets its formula with
                                  ** the numbers put in (--explain); set after init,
                                  ** before pt_trace_listener() */
+    const char *student;         /* a student build's stage files ("pixel=FILE#CKSUM
+                                 ** ..."), written into the header; NULL or "" in
+                                 ** the reference build.  Set after init */
     const pt_scene *scene;       /* the scene and the plan, from the header */
     const pt_plan *plan;         /*   (they outlive the run) */
     pt_journey journey;          /* with explain: the point's whole journey, */
     int journey_made;            /*   as pt_run() handed it over */
-    const char *student;         /* a student build's stage files ("pixel=FILE#CKSUM
-                                 ** ..."), written into the header; NULL or "" in
-                                 ** the reference build.  Set after init */
     int failed;                  /* 1 after a write error */
     size_t len;                  /* bytes waiting in buf */
     char buf[1 << 16];           /* output block */

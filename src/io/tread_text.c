@@ -260,15 +260,6 @@ static int text_header_line(pt_treader *r)
         h->models[h->nmodels - 1].left_out |= 1u << st;
         return 0;
     }
-    if (pt_tr_is(w, n, "student")) {        /* a student build's stage files */
-        size_t len;
-        while (c.p < c.e && *c.p == ' ') c.p++;
-        len = (size_t)(c.e - c.p);
-        if (len >= sizeof h->student) len = sizeof h->student - 1;
-        memcpy(h->student, c.p, len);
-        h->student[len] = '\0';
-        return 0;
-    }
     if (starts(r, "scene ") || starts(r, "obj placed ") || starts(r, "  ") ||
         starts(r, "projection ") || starts(r, "view ")) return 0;  /* nothing diff needs */
     if (pt_tr_is(w, n, "framebuffer")) return t_size(r, &c, &h->fb_w, &h->fb_h);
@@ -297,6 +288,15 @@ static int text_header_line(pt_treader *r)
         else if (pt_tr_is(w, n, "orthographic")) h->perspective = 0;
         else if (pt_tr_is(w, n, "lookat")) h->perspective = -1;
         else return pt_tr_fail(r, w, "expected 'perspective', 'orthographic' or 'lookat'");
+        return 0;
+    }
+    if (pt_tr_is(w, n, "student")) {        /* a student build's stage files */
+        size_t len;
+        while (c.p < c.e && *c.p == ' ') c.p++;
+        len = (size_t)(c.e - c.p);
+        if (len >= sizeof h->student) len = sizeof h->student - 1;
+        memcpy(h->student, c.p, len);
+        h->student[len] = '\0';
         return 0;
     }
     if (pt_tr_is(w, n, "model")) {

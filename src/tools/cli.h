@@ -30,19 +30,6 @@
 ** MESSAGE", "Try 'pipetrace --help'.") and return PT_EXIT_USAGE. */
 int pt_cli_usage(const char *cmd, const char *fmt, ...) PT_PRINTF_LIKE(2, 3);
 
-/* The word of text nearest to arg, into out (n bytes): when arg starts with
-** '-', the options ("--name") text mentions, else its words of letters.
-** Nearest by edit distance (a swap of two neighbours counts as one edit),
-** the first of equals; only one within 2 edits, and fewer edits than arg has
-** letters.  Returns 1, or 0 with out empty when none is that near.  This
-** function can't fail. */
-int pt_cli_nearest(const char *arg, const char *text, char *out, size_t n);
-
-/* The unknown-option error: "pipetrace CMD: unknown option 'ARG'", with "(did
-** you mean '--NAME'?)" when usage mentions a near one, and the "Try" line.
-** Returns PT_EXIT_USAGE. */
-int pt_cli_unknown(const char *cmd, const char *usage, const char *arg);
-
 /* Load the scene at path, or the built-in scene when path is NULL.  Returns 0,
 ** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */
 int pt_cli_load(pt_scene *s, const char *path);
@@ -87,6 +74,19 @@ int pt_cli_value(const char *cmd, int argc, char **argv, int *k, const char **va
 /* A whole decimal number in [lo, hi] from text into *out.  Returns 0, or -1
 ** (no message) for anything else: signs, spaces, overflow.  Can't fail. */
 int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out);
+
+/* The word of text nearest to arg, into out (n bytes): when arg starts with
+** '-', the options ("--name") text mentions, else its words of letters.
+** Nearest by edit distance (a swap of two neighbours counts as one edit),
+** the first of equals; only one within 2 edits, and fewer edits than arg has
+** letters.  Returns 1, or 0 with out empty when none is that near.  This
+** function can't fail. */
+int pt_cli_nearest(const char *arg, const char *text, char *out, size_t n);
+
+/* The unknown-option error: "pipetrace CMD: unknown option 'ARG'", with "(did
+** you mean '--NAME'?)" when usage mentions a near one, and the "Try" line.
+** Returns PT_EXIT_USAGE. */
+int pt_cli_unknown(const char *cmd, const char *usage, const char *arg);
 
 /* The stages a student build replaces, by the Makefile's names, separated by
 ** spaces ("pixel viewport"); "" in the reference build.  Written by the

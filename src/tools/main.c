@@ -90,6 +90,21 @@ static int usage_error(const char *fmt, const char *arg)
     return pt_cli_usage(NULL, fmt, arg);
 }
 
+/* 1 after saying so when scene names no file but is near a command's name
+** ("stpe": did you mean 'step'?), else 0. */
+static int mistyped_command(const char *scene)
+{
+    char names[128], near[64];
+    size_t len = 0, k;
+
+    if (!strcmp(scene, "-") || access(scene, F_OK) == 0) return 0;
+    for (k = 0; k < NCOMMANDS; k++)
+        len += (size_t)snprintf(names + len, sizeof names - len, "%s ", commands[k].name);
+    if (!pt_cli_nearest(scene, names, near, sizeof near)) return 0;
+    pt_cli_usage(NULL, "no command or scene file '%s' (did you mean '%s'?)", scene, near);
+    return 1;
+}
+
 /* Fill *c from argv.  Returns -1 to go on, else the exit status. */
 static int parse_args(cli *c, int argc, char **argv)
 {
@@ -149,6 +164,7 @@ static int parse_args(cli *c, int argc, char **argv)
         else if (!strcmp(a, "--explain")) c->explain = 1;
         else if (a[0] == '-' && a[1] != '\0') return pt_cli_unknown(NULL, strstr(usage, "\n  --"), a);
         else if (c->scene) return usage_error("more than one scene given ('%s')", a);
+        else if (mistyped_command(a)) return PT_EXIT_USAGE;
         else c->scene = a;
     }
     if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
@@ -192,15 +208,6 @@ int main(int argc, char **argv)
         if (strcmp(argv[1], commands[k].name) == 0) return commands[k].run(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
-    if (c.scene && strcmp(c.scene, "-") && access(c.scene, F_OK) != 0) {
-        char names[128], near[64];          /* "stpe": a command mistyped? */
-        size_t len = 0;
-        for (k = 0; k < NCOMMANDS; k++)
-            len += (size_t)snprintf(names + len, sizeof names - len, "%s ", commands[k].name);
-        if (pt_cli_nearest(c.scene, names, near, sizeof near))
-            return pt_cli_usage(NULL, "no command or scene file '%s' (did you mean '%s'?)",
-                                c.scene, near);
-    }
 
     if (pt_cli_load(&s, c.scene) != 0) return PT_EXIT_INPUT;
     if (s.nmodels == 0)
