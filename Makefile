@@ -32,34 +32,60 @@ B       = build
 
 # ===== student stages (docs/teaching.md) =====
 # `make STAGE_pixel=FILE.c` builds build-student/pipetrace with FILE.c in place
-# of stages/s3_image2pixel.c; build/ stays the reference.  One variable a stage:
-# STAGE_camera (s1), STAGE_projection (s2), STAGE_pixel (s3), STAGE_viewport (s4),
-# STAGE_framebuffer (s5), STAGE_index (s6).  FILE.c includes its stage's header
+# of stages/s3_image2pixel.c; build/ stays the reference.  One variable a stage,
+# named as the trace names it: STAGE_camera (s1), STAGE_image (s2; also
+# STAGE_projection), STAGE_pixel (s3), STAGE_viewport (s4), STAGE_framebuffer
+# (s5), STAGE_index (s6).  The names are not typed here: src/tools/stage_names.c
+# prints them from the stage table (the k-th is stages/sK_*.c's), and an
+# unknown STAGE_x stops make with the list.  FILE.c includes its stage's header
 # by name (-Istages); $B/choice remembers the files, so a new choice rebuilds
 # the stage objects (each depends on it), hence the library and the binary.
-# The stage rules below must not become the default goal: `make STAGE_x=F`
-# with no target builds $B/pipetrace.
+# The old $B/pipetrace is removed first, so a failed build leaves none that
+# does not match the files given.  The stage rules below must not become the
+# default goal: `make STAGE_x=F` with no target builds $B/pipetrace.
 .DEFAULT_GOAL := all
-CHOICE  = camera=$(STAGE_camera) projection=$(STAGE_projection) pixel=$(STAGE_pixel) \
-          viewport=$(STAGE_viewport) framebuffer=$(STAGE_framebuffer) index=$(STAGE_index)
-ifneq ($(strip $(STAGE_camera)$(STAGE_projection)$(STAGE_pixel)$(STAGE_viewport)$(STAGE_framebuffer)$(STAGE_index)),)
+STAGE_GIVEN := $(sort $(foreach v,$(filter STAGE_%,$(.VARIABLES)),$(if $(strip $($v)),$v)))
+ifneq ($(STAGE_GIVEN),)
 B       = build-student
-$(shell mkdir -p $B; echo '$(CHOICE)' | cmp -s - $B/choice || echo '$(CHOICE)' > $B/choice)
+STAGE_NAMES := $(shell mkdir -p $B && rm -f $B/pipetrace && $(CC) -std=c11 -I. -Isrc \
+               -o $B/stage-names src/tools/stage_names.c stages/pt_stage.c -lm && $B/stage-names)
+STAGE_FILES := $(sort $(wildcard stages/s[1-9]_*.c))
+ifneq ($(words $(STAGE_NAMES)),$(words $(STAGE_FILES)))
+$(error cannot match the stage names ($(STAGE_NAMES)) with stages/s*_*.c; is $(CC) working?)
+endif
+STAGE_BAD := $(filter-out $(addprefix STAGE_,$(STAGE_NAMES) projection),$(STAGE_GIVEN))
+ifneq ($(STAGE_BAD),)
+$(error unknown student stage $(STAGE_BAD); the stages are $(addprefix STAGE_,$(STAGE_NAMES)) (STAGE_projection is STAGE_image))
+endif
+ifneq ($(and $(STAGE_projection),$(STAGE_$(word 2,$(STAGE_NAMES)))),)
+$(error STAGE_projection is STAGE_$(word 2,$(STAGE_NAMES)): give one of them)
+endif
+STAGE_$(word 2,$(STAGE_NAMES)) := $(or $(STAGE_$(word 2,$(STAGE_NAMES))),$(STAGE_projection))
+$(foreach n,$(STAGE_NAMES),$(if $(STAGE_$n),$(if $(wildcard $(STAGE_$n)),,\
+    $(error STAGE_$n=$(STAGE_$n): no such file))))
+CHOICE  = $(foreach n,$(STAGE_NAMES),$n=$(STAGE_$n))
+$(shell echo '$(CHOICE)' | cmp -s - $B/choice || echo '$(CHOICE)' > $B/choice)
 STAGE_CC = $(CC) $(ALLCFLAGS) -Istages -c -o $@ $<
-STUDENT  = $(strip $(if $(STAGE_camera),camera) $(if $(STAGE_projection),projection) \
-           $(if $(STAGE_pixel),pixel) $(if $(STAGE_viewport),viewport) \
-           $(if $(STAGE_framebuffer),framebuffer) $(if $(STAGE_index),index))
-CHOSEN   = $B/choice
-$B/s1_model2camera.o:   $(or $(STAGE_camera),stages/s1_model2camera.c) stages/*.h $B/choice; $(STAGE_CC)
-$B/s2_camera2image.o:   $(or $(STAGE_projection),stages/s2_camera2image.c) stages/*.h $B/choice; $(STAGE_CC)
-$B/s3_image2pixel.o:    $(or $(STAGE_pixel),stages/s3_image2pixel.c) stages/*.h $B/choice; $(STAGE_CC)
-# (viewport, framebuffer and index: see $B/pixelpath.c below)
+STUDENT  = $(strip $(foreach n,$(STAGE_NAMES),$(if $(STAGE_$n),$n)))
+STUDENT_FILES = $(foreach n,$(STUDENT),$(STAGE_$n))
+CHOSEN   = $B/choice $(STUDENT_FILES)
+# stage_rule NAME FILE: $B/sK_*.o from the student's file for NAME, or from FILE
+define stage_rule
+$$B/$(notdir $(2:.c=.o)): $$(or $$(STAGE_$1),$2) stages/*.h $$B/choice; $$(STAGE_CC)
+endef
+$(foreach p,$(join $(addsuffix :,$(STAGE_NAMES)),$(STAGE_FILES)),\
+    $(eval $(call stage_rule,$(word 1,$(subst :, ,$p)),$(word 2,$(subst :, ,$p)))))
+# (viewport, framebuffer and index are compiled into $B/pixelpath.o, below)
 endif
 # ===== end of student stages =====
 # $B/buildinfo.c names the stages replaced ("" in build/): pipetrace step and
-# --version say so (pt_student_stages, src/tools/cli.h).
+# --version say so (pt_student_stages, src/tools/cli.h); every trace header
+# names the files (without their folders), each with its cksum as 8 hex
+# digits (pt_student_files).
 $B/buildinfo.c: Makefile $(CHOSEN) | $B
 	printf '#include "tools/cli.h"\nconst char pt_student_stages[] = "%s";\n' '$(STUDENT)' > $@
+	printf 'const char pt_student_files[] = "%s";\n' "$(strip $(foreach n,$(STUDENT),\
+	    $n=$(notdir $(STAGE_$n))#$$(cksum < '$(STAGE_$n)' | awk '{ printf "%08x", $$1 }')))" >> $@
 
 # The layers, bottom up (docs/architecture.md; tests/layers.py checks that
 # none includes a header of a layer above it).
@@ -166,7 +192,7 @@ golden: $B/pipetrace
 	sh tests/golden.sh $B/pipetrace --write
 
 docs: $B/pipetrace
-	python3 tests/docs_write.py $B/pipetrace README.md docs/*.md docs/exercises/*.md
+	COLUMNS= python3 tests/docs_write.py $B/pipetrace README.md docs/*.md docs/exercises/*.md
 
 screenshots: $B/pipetrace
 	$B/pipetrace journey --vertex 1 --svg docs/journey-builtin.svg

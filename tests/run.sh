@@ -13,6 +13,7 @@
 B=${1:-build}
 ref=tests/reference
 [ -d ../shared/reference ] && ref=../shared/reference
+unset COLUMNS                   # step and why wrap to it (src/tools/cli.h)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 passed=0
@@ -50,6 +51,8 @@ diff        1 sh tests/diff.sh $B/pipetrace
 kraft       2 sh tests/kraft.sh $B/pipetrace $ref
 extreme     1 sh tests/extreme.sh $B/pipetrace
 teach       1 sh tests/teach.sh $B/pipetrace
+classroom   2 sh tests/classroom.sh $B/pipetrace
+term        2 sh tests/term.sh $B/pipetrace
 accuracy    1 sh tests/accuracy.sh $B/pipetrace
 journey     1 sh tests/journey.sh $B/pipetrace
 browser     2 sh tests/journey_browser.sh $B/pipetrace

@@ -9,11 +9,6 @@ tri=docs/examples/triangle.scene
 
 
 
-feed() {    # feed INPUT ARGS...: like run, with INPUT (backslash escapes) on stdin
-    input=$1; shift
-    printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
-    out=$(cat "$tmp/out")
-}
 
 has() {     # has LINE: $tmp/out holds exactly this line
     grep -Fxq -- "$1" "$tmp/out"
@@ -55,7 +50,7 @@ check "teach-2.3 ... a prompt per stage shown" test "$(grep -c 'b back, q quit: 
 feed '\n\n\n\n\n\n\n' step $tri --vertex 1 --interactive
 check "teach-2.4 Enter after the last stage ends" test "$rc" = 0 -a "$(grep -c '^stage' "$tmp/out")" = 7
 feed 'x\n' step $tri --vertex 1 --interactive
-check "teach-2.5 other input: help, then end of input ends" test "$rc" = 0 -a "$(grep -c '^(Enter: next stage, b: back, q: quit)' "$tmp/out")" = 1
+check "teach-2.5 other input: help, then end of input ends" test "$rc" = 0 -a "$(grep -c '^(Enter: next stage, 1-7: that stage, b: back, q: quit)' "$tmp/out")" = 1
 
 # ---- step: errors
 run step --vertex 0
@@ -81,7 +76,7 @@ check "teach-3.5 bad scene: exit 2 with FILE:LINE:COL" test "$rc" = 2 -a -n "$(g
 
 # ---- quiz
 feed '-1 -1 0\n-1, -1, -2\n0.5 -0.5 -1\n5.4975012 2.9987506\n4.0 7\n4 7\n144\n' quiz $tri --vertex 1
-check "teach-4.1 quiz: exit 0" test "$rc" = 0
+check "teach-4.1 quiz with one answer wrong: exit 1" test "$rc" = 1
 check "teach-4.2 ... prompt line" grep -q "^camera: x_c y_c z_c = ? -1, -1, -2$" "$tmp/out"
 check "teach-4.3 ... states the tolerance" grep -q "within 1e-6 absolute or 1e-6 relative" "$tmp/out"
 check "teach-4.4 ... six right" test "$(grep -c '^  correct: ' "$tmp/out")" = 6
@@ -92,7 +87,7 @@ feed '1 1 1\n4.4 7\n' quiz $tri --vertex 1
 check "teach-4.8 end of input: the score so far" has "score: 0/2 (input ended after 2 of 7 stages)"
 feed '-2 0 0\n-2 0 0\n-2 0 0\n-3.49800099950025 2.499000499750125\n-4 2\n-2 4\nnone\n' quiz docs/examples/clip.scene --vertex 1
 check "teach-4.9 'none' answers a missing index" test "$(grep -c '^  correct: ' "$tmp/out")" = 7
-check "teach-4.10 ... score 7/7" has "score: 7/7"
+check "teach-4.10 ... score 7/7, exit 0" test "$rc" = 0 -a -n "$(grep -x "score: 7/7" "$tmp/out")"
 feed '1 2\n' quiz $tri --vertex 1
 check "teach-4.11 wrong count of numbers: wrong" grep -q "^  wrong: expected 3 numbers" "$tmp/out"
 feed '' quiz --seed 7

@@ -4,7 +4,10 @@
 # check DESCRIPTION COMMAND...  counts one check: COMMAND must succeed
 # run ARGS...                   runs $exe ARGS with no input; sets $out, $err, $rc
 #                               (also in $tmp/out and $tmp/err)
+# feed INPUT ARGS...            the same with INPUT (backslash escapes: printf %b)
+#                               on standard input
 # report                        prints "N passed, N failed"; fails if any failed
+unset COLUMNS                   # step and why wrap to it: tests set it themselves
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 passed=0
@@ -18,6 +21,12 @@ check() {
 
 run() {
     "$exe" "$@" >"$tmp/out" 2>"$tmp/err" </dev/null; rc=$?
+    out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
+}
+
+feed() {
+    input=$1; shift
+    printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
     out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
 }
 

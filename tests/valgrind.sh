@@ -45,7 +45,7 @@ vg "vg-7 an obj include with an error" 2 tests/data/bad_include.scene
 vg "vg-8 step through every stage" 0 step --vertex 3 --all
 vg "vg-9 step, both cameras side by side" 0 step docs/examples/compare-matrix.scene --compare-cameras
 vg "vg-10 why is a pixel lit" 0 why 133 165
-vg "vg-11 quiz with no answers" 0 quiz --seed 7
+vg "vg-11 quiz with no answers (1: not all right)" 1 quiz --seed 7
 vg "vg-12 accuracy, classic camera" 0 accuracy docs/examples/triangle.scene --no-time
 vg "vg-13 accuracy, matrix camera" 0 accuracy docs/examples/lookat-near.scene --no-time
 vg "vg-14 journey: SVG and HTML" 0 journey --vertex 1 --svg "$tmp/j.svg" --html "$tmp/j.html"

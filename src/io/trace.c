@@ -312,7 +312,11 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
     size_t k;
     int st, i;
 
-    puts_(t, "{\"type\":\"header\",\"version\":1,\"scene\":");
+    puts_(t, "{\"type\":\"header\",\"version\":1,");
+    if (t->student && *t->student) {        /* a student build: which stage files */
+        puts_(t, "\"student\":"); put_json_str(t, t->student); put(t, ",", 1);
+    }
+    puts_(t, "\"scene\":");
     put_json_str(t, s->path);
     puts_(t, ",\"framebuffer\":{\"w\":"); put_i64(t, s->fb_w);
     puts_(t, ",\"h\":"); put_i64(t, s->fb_h);
@@ -377,6 +381,9 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     put_i64(t, s->vp_y); puts_(t, ")\ncamera       "); puts_(t, camera_name(s));
     if (s->matrix) camera_put(t, s, p, 0);
     if (s->from_obj) { puts_(t, "\nobj placed   translate "); put_xyz_text(t, s->obj_translate); }
+    if (t->student && *t->student) {        /* a student build: which stage files */
+        puts_(t, "\nstudent      "); puts_(t, t->student);
+    }
     put(t, "\n", 1);
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
@@ -416,7 +423,12 @@ static void on_header(void *ud, const pt_scene *s, const pt_plan *p)
     t->plan = p;
     if (t->fmt == PT_FORMAT_JSONL) header_json(t, s, p);
     else if (t->fmt == PT_FORMAT_TEXT) header_text(t, s, p);
-    else puts_(t, s->matrix ? csv_matrix : csv_classic);
+    else {
+        if (t->student && *t->student) {    /* a student build: which stage files */
+            puts_(t, "# student "); puts_(t, t->student); put(t, "\n", 1);
+        }
+        puts_(t, s->matrix ? csv_matrix : csv_classic);
+    }
 }
 
 /* ===== vertex records ===== */
@@ -862,6 +874,7 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->model = NULL;
     t->v = 0;
     t->explain = 0;
+    t->student = NULL;
     t->journey_made = 0;
     t->clipv = 0;
     t->scene = NULL;

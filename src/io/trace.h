@@ -9,6 +9,8 @@
 **   kind     field     meaning
 **   -------  --------  ------------------------------------------------------
 **   header   version   trace format version, PT_TRACE_VERSION
+**            student   a student build's stage files (pt_trace.student); CSV:
+**                      a "# student" line before the column names
 **            scene ... framebuffer, viewport, camera, one entry per model with
 **                      its stages, what was left out and why
 **   vertex   model, v  model name, 1-based vertex number as in the scene
@@ -52,6 +54,9 @@ typedef struct pt_trace {
     int explain;                 /* 1: each vertex record gets its formula with
                                  ** the numbers put in (--explain); set after init,
                                  ** before pt_trace_listener() */
+    const char *student;         /* a student build's stage files ("pixel=FILE#CKSUM
+                                 ** ..."), written into the header; NULL or "" in
+                                 ** the reference build.  Set after init */
     const pt_scene *scene;       /* the scene and the plan, from the header */
     const pt_plan *plan;         /*   (they outlive the run) */
     pt_journey journey;          /* with explain: the point's whole journey, */

@@ -109,6 +109,8 @@ typedef struct pt_thdr {
     int vp_x, vp_y, vp_w, vp_h;  /* viewport corner (x_ul, y_ul), size w x h */
     int perspective;             /* 1: perspective, 0: orthographic (the classic
                                  ** camera), -1: the matrix camera (lookat) */
+    char student[256];           /* a student build's "student" line ("pixel=
+                                 ** FILE#CKSUM ..."), cut to fit; "" otherwise */
     pt_tmodel *models;           /* in file order; owned */
     size_t nmodels, cap;         /* count and room */
 } pt_thdr;

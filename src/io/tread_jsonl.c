@@ -440,6 +440,13 @@ static int j_header(pt_treader *r, const jfield *f, int nf)
     if (v->kind != J_NUM || !pt_tr_is(v->p, (size_t)(v->e - v->p), "1"))
         return pt_tr_fail(r, v->p, "trace format version %.*s; this pipetrace reads version 1",
                           (int)(v->e - v->p > 20 ? 20 : v->e - v->p), v->p);
+    if ((v = j_get(f, nf, "student")) != NULL) {   /* a student build's stage files */
+        size_t len = (size_t)(v->e - v->p);
+        if (v->kind != J_STR) return pt_tr_fail(r, v->p, "expected the student's files in quotes");
+        if (len >= sizeof h->student) len = sizeof h->student - 1;
+        memcpy(h->student, v->p, len);      /* as written: not decoded */
+        h->student[len] = '\0';
+    }
     if (!(v = need(r, f, nf, "framebuffer", "header"))) return -1;
     if (v->kind != J_OBJ) return pt_tr_fail(r, v->p, "expected {\"w\":W,\"h\":H}");
     if (j_fields(r, v, g, &ng) || jsize(r, g, ng, "w", &h->fb_w) || jsize(r, g, ng, "h", &h->fb_h))

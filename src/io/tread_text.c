@@ -312,6 +312,15 @@ static int text_header_line(pt_treader *r)
         else return pt_tr_fail(r, w, "expected 'perspective', 'orthographic' or 'lookat'");
         return 0;
     }
+    if (pt_tr_is(w, n, "student")) {        /* a student build's stage files */
+        size_t len;
+        while (c.p < c.e && *c.p == ' ') c.p++;
+        len = (size_t)(c.e - c.p);
+        if (len >= sizeof h->student) len = sizeof h->student - 1;
+        memcpy(h->student, c.p, len);
+        h->student[len] = '\0';
+        return 0;
+    }
     if (pt_tr_is(w, n, "model")) {
         pt_tmodel *m;
         const char *name;

@@ -2,10 +2,13 @@
 ** src/tools/cli.c -- what every pipetrace command does with its arguments
 ** See LICENSE for copyright and license.
 */
+#define _POSIX_C_SOURCE 200809L
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
 #include "tools/cli.h"
 #include "io/outfile.h"
 #include "core/pipetrace.h"
@@ -110,6 +113,11 @@ const pt_model *pt_cli_vertex_model(const pt_scene *s, const char *cmd,
         if (s->models[k].nv >= v) return &s->models[k];
         if (s->models[k].nv > most) most = s->models[k].nv;
     }
+    if (!s->nmodels) {
+        fprintf(stderr, "pipetrace%s%s: --vertex %llu: %s has no models\n", cmd ? " " : "",
+                cmd ? cmd : "", (unsigned long long)v, s->path);
+        return NULL;
+    }
     fprintf(stderr, "pipetrace%s%s: --vertex %llu: no model of %s has a vertex %llu "
             "(the largest has %zu)\n", cmd ? " " : "", cmd ? cmd : "", (unsigned long long)v, s->path,
             (unsigned long long)v, most);
@@ -152,7 +160,7 @@ int pt_cli_arg(pt_cli_args *a, int argc, char **argv, int *k)
             return pt_cli_usage(a->cmd, "--vertex takes a vertex number >= 1, not %s", val);
         return -1;
     }
-    if (o[0] == '-' && o[1] != '\0') return pt_cli_usage(a->cmd, "unknown option %s", o);
+    if (o[0] == '-' && o[1] != '\0') return pt_cli_unknown(a->cmd, a->usage, o);
     if (a->path) return pt_cli_usage(a->cmd, "more than one scene given: %s", o);
     a->path = o;
     return -1;
@@ -200,13 +208,174 @@ int pt_cli_student_note(char *buf, size_t n)
 
 int pt_cli_read_line(char *b, size_t n, int echo)
 {
+    return pt_cli_read_line_from(stdin, b, n, echo);
+}
+
+int pt_cli_read_line_from(FILE *f, char *b, size_t n, int echo)
+{
     size_t len;
 
-    if (!fgets(b, (int)n, stdin)) return -1;
+    if (!fgets(b, (int)n, f)) return -1;
     len = strlen(b);
     if (len && b[len - 1] == '\n') b[--len] = '\0';
-    else { int ch; while ((ch = getchar()) != EOF && ch != '\n') {} }
+    else { int ch; while ((ch = getc(f)) != EOF && ch != '\n') {} }
     if (len && b[len - 1] == '\r') b[--len] = '\0';
     if (echo) printf("%s\n", b);
     return 0;
+}
+
+/* Edit distance of a[0..na) and b[0..nb) (both < 64): insertions, deletions,
+** changes, and swaps of two neighbours (optimal string alignment). */
+static size_t distance(const char *a, size_t na, const char *b, size_t nb)
+{
+    size_t d[64][64], i, j;
+
+    for (i = 0; i <= na; i++) d[i][0] = i;
+    for (j = 0; j <= nb; j++) d[0][j] = j;
+    for (i = 1; i <= na; i++)
+        for (j = 1; j <= nb; j++) {
+            size_t c = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            if (d[i - 1][j] + 1 < c) c = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < c) c = d[i][j - 1] + 1;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+                d[i - 2][j - 2] + 1 < c)
+                c = d[i - 2][j - 2] + 1;
+            d[i][j] = c;
+        }
+    return d[na][nb];
+}
+
+int pt_cli_nearest(const char *arg, const char *text, char *out, size_t n)
+{
+    const char *p = text, *best = NULL;
+    size_t na = strlen(arg), nbest = 0, dbest = 3, letters;
+    int opt = arg[0] == '-';
+
+    letters = na - strspn(arg, "-");
+    if (n) out[0] = '\0';
+    if (na >= 64) return 0;
+    while (*p) {
+        size_t len;
+        if (opt ? !(p[0] == '-' && p[1] == '-' && (p == text || p[-1] != '-'))
+                : !(*p >= 'a' && *p <= 'z') || (p > text && p[-1] >= 'a' && p[-1] <= 'z')) {
+            p++;
+            continue;
+        }
+        len = opt ? 2 + strspn(p + 2, "abcdefghijklmnopqrstuvwxyz0123456789-")
+                  : strspn(p, "abcdefghijklmnopqrstuvwxyz");
+        if (len < 64 && (!opt || len > 2)) {
+            size_t d = distance(arg, na, p, len);
+            if (d < dbest) { dbest = d; best = p; nbest = len; }
+        }
+        p += len;
+    }
+    if (!best || dbest >= letters || dbest == 0 || nbest >= n) return 0;
+    memcpy(out, best, nbest);
+    out[nbest] = '\0';
+    return 1;
+}
+
+int pt_cli_unknown(const char *cmd, const char *usage, const char *arg)
+{
+    char near[64];
+
+    if (pt_cli_nearest(arg, usage, near, sizeof near))
+        return pt_cli_usage(cmd, "unknown option '%s' (did you mean '%s'?)", arg, near);
+    return pt_cli_usage(cmd, "unknown option '%s'", arg);
+}
+
+/* ===== output wrapped to the terminal's width ===== */
+
+int pt_cli_width(void)
+{
+    const char *c = getenv("COLUMNS");
+    uint64_t w;
+#ifdef TIOCGWINSZ
+    struct winsize ws;
+#endif
+
+    if (c && pt_cli_count(c, 20, 100000, &w) == 0) return (int)w;
+#ifdef TIOCGWINSZ
+    if (isatty(STDOUT_FILENO) && ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col >= 20)
+        return ws.ws_col;
+#endif
+    return 0;
+}
+
+void pt_cli_wrap_line(FILE *f, const char *line, size_t n, int width)
+{
+    size_t lead = 0, cont, col, at, w = width > 0 ? (size_t)width : 0;
+
+    if (!w || n <= w) { fwrite(line, 1, n, f); return; }
+    while (lead < n && line[lead] == ' ') lead++;
+    cont = lead + 4;                        /* the second column, else 4 in */
+    for (col = lead; col + 2 < n; col++)
+        if (line[col] == ' ' && line[col + 1] == ' ') {
+            while (col < n && line[col] == ' ') col++;
+            if (col < n && col < w / 2) cont = col;
+            break;
+        }
+    if (cont >= w / 2) cont = lead < w / 2 ? lead : 0;
+    at = 0;
+    while (at < n) {
+        size_t room = w - (at ? cont : 0), end = 0, k;
+        if (at) { fputc('\n', f); fprintf(f, "%*s", (int)cont, ""); }
+        if (n - at <= room) { fwrite(line + at, 1, n - at, f); return; }
+        /* the last space within the room that is a good break: not after "=" */
+        for (k = at + 1; k <= at + room && k < n; k++)
+            if (line[k] == ' ' && line[k - 1] != ' ' && line[k - 1] != '=' &&
+                (k < 2 || line[k - 1] != '-' || line[k - 2] != ' '))
+                end = k;
+        if (!end)                           /* one long word: let it run over */
+            for (end = at + 1; end < n && line[end] != ' '; end++) ;
+        fwrite(line + at, 1, end - at, f);
+        at = end;
+        while (at < n && line[at] == ' ') at++;
+    }
+}
+
+void pt_cli_out_open(pt_cli_out *o)
+{
+    o->buf = NULL;
+    o->len = 0;
+    o->width = pt_cli_width();
+    o->f = stdout;
+    if (o->width && !(o->f = open_memstream(&o->buf, &o->len))) {
+        o->f = stdout;                      /* out of memory: unwrapped, then */
+        o->width = 0;
+    }
+}
+
+int pt_cli_out_flush(pt_cli_out *o)
+{
+    const char *p, *e, *nl;
+
+    if (o->width) {
+        if (fflush(o->f) != 0) return -1;
+        for (p = o->buf, e = o->buf + o->len; p < e; p = nl + 1) {
+            nl = memchr(p, '\n', (size_t)(e - p));
+            pt_cli_wrap_line(stdout, p, (size_t)((nl ? nl : e) - p), o->width);
+            if (!nl) break;
+            fputc('\n', stdout);
+        }
+        fclose(o->f);
+        free(o->buf);
+        o->buf = NULL;
+        o->len = 0;
+        if (!(o->f = open_memstream(&o->buf, &o->len))) { o->f = stdout; o->width = 0; }
+    }
+    return fflush(stdout) != 0 || ferror(stdout) ? -1 : 0;
+}
+
+int pt_cli_out_close(pt_cli_out *o)
+{
+    int rc = pt_cli_out_flush(o);
+
+    if (o->width) {
+        fclose(o->f);
+        free(o->buf);
+    }
+    o->f = stdout;
+    o->width = 0;
+    return rc;
 }

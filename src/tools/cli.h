@@ -10,11 +10,12 @@
 #ifndef PT_CLI_H
 #define PT_CLI_H
 
+#include <stdio.h>
 #include "core/pipetrace.h"
 
 /* The exit statuses of every command: the one table. */
 #define PT_EXIT_OK     0         /* done; for diff: the two agree */
-#define PT_EXIT_DIFFER 1         /* diff: the two differ */
+#define PT_EXIT_DIFFER 1         /* diff: the two differ; quiz: an answer wrong */
 #define PT_EXIT_USAGE  1         /* a usage error */
 #define PT_EXIT_INPUT  2         /* bad input, or an output that cannot be written */
 
@@ -81,10 +82,29 @@ int pt_cli_value(const char *cmd, int argc, char **argv, int *k, const char **va
 ** (no message) for anything else: signs, spaces, overflow.  Can't fail. */
 int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out);
 
+/* The word of text nearest to arg, into out (n bytes): when arg starts with
+** '-', the options ("--name") text mentions, else its words of letters.
+** Nearest by edit distance (a swap of two neighbours counts as one edit),
+** the first of equals; only one within 2 edits, and fewer edits than arg has
+** letters.  Returns 1, or 0 with out empty when none is that near.  This
+** function can't fail. */
+int pt_cli_nearest(const char *arg, const char *text, char *out, size_t n);
+
+/* The unknown-option error: "pipetrace CMD: unknown option 'ARG'", with "(did
+** you mean '--NAME'?)" when usage mentions a near one, and the "Try" line.
+** Returns PT_EXIT_USAGE. */
+int pt_cli_unknown(const char *cmd, const char *usage, const char *arg);
+
 /* The stages a student build replaces, by the Makefile's names, separated by
 ** spaces ("pixel viewport"); "" in the reference build.  Written by the
 ** Makefile into $B/buildinfo.c (make STAGE_pixel=FILE.c: docs/teaching.md). */
 extern const char pt_student_stages[];
+
+/* The files of a student build, "NAME=FILE#CKSUM" a stage (FILE: its name
+** without folders; CKSUM: cksum's CRC of the file, 8 hex digits), separated
+** by spaces; "" in the reference build.  Every trace header carries it (the
+** "student" line). */
+extern const char pt_student_files[];
 
 /* "student build: the viewport stage is yours (make STAGE_viewport=...)" (two
 ** stages: "the pixel and viewport stages are yours (make STAGE_pixel=...
@@ -92,10 +112,44 @@ extern const char pt_student_stages[];
 ** the reference build.  This function can't fail. */
 int pt_cli_student_note(char *buf, size_t n);
 
+/* ===== output wrapped to the terminal's width ===== */
+
+/* The width to wrap at: COLUMNS when it holds a whole number >= 20, else the
+** terminal's own width (ioctl TIOCGWINSZ) when standard output is a terminal,
+** else 0: no wrapping (a file or a pipe gets the same bytes every run). */
+int pt_cli_width(void);
+
+/* Write line[0..n) (no newline in it) to f, broken at spaces into lines of at
+** most width characters; never inside a word, so no number is split (a word
+** longer than the room runs over), and not between "=" and what follows it.
+** Continued lines start at the line's second column (where the text after a
+** run of two or more spaces begins, as in "  here     x_pp = ..."), or 4 past
+** its own indentation.  width 0: the line as it is.  This function can't fail. */
+void pt_cli_wrap_line(FILE *f, const char *line, size_t n, int width);
+
+/* A command's output, wrapped.  pt_cli_out_open() sets f to a memory stream
+** when pt_cli_width() is not 0 (else to stdout); the command writes to f;
+** pt_cli_out_flush() writes what came so far to standard output, each line
+** wrapped (call it before reading input); pt_cli_out_close() flushes and
+** ends.  Returns 0, or -1 when standard output could not be written. */
+typedef struct pt_cli_out {
+    FILE *f;                     /* where the command writes */
+    int width;                   /* 0: f is stdout, nothing wrapped */
+    char *buf;                   /* the memory stream's text; owned */
+    size_t len;                  /*   and its length */
+} pt_cli_out;
+
+void pt_cli_out_open(pt_cli_out *o);
+int pt_cli_out_flush(pt_cli_out *o);
+int pt_cli_out_close(pt_cli_out *o);
+
 /* Read one line of standard input into b (newline and a trailing CR dropped;
 ** the rest of a too long line is skipped).  echo: print it, so that a
 ** transcript driven through a pipe reads like a terminal session (step and
 ** quiz).  Returns 0, or -1 at end of input. */
 int pt_cli_read_line(char *b, size_t n, int echo);
+
+/* The same from the stream f (quiz --grade reads answer sheets). */
+int pt_cli_read_line_from(FILE *f, char *b, size_t n, int echo);
 
 #endif

@@ -2,7 +2,8 @@
 ** src/tools/cmd_quiz.c -- pipetrace quiz: compute a vertex's journey yourself
 ** See LICENSE for copyright and license.
 **
-**   pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]
+**   pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME] [--stage S]
+**                  [--json] [--interactive] [--grade DIR [--out FILE]]
 **
 ** Asks for each stage's values in pipeline order, one line of standard input
 ** per stage ("camera: x_c y_c z_c = ? "), and checks each answer against the
@@ -11,31 +12,56 @@
 ** "none" answers a value that does not exist.  A wrong answer gets the formula
 ** with the numbers put in, and the quiz goes on from the right value, so one
 ** slip costs one stage.  End of input ends the quiz with the score so far.
+** At a terminal (or with --interactive) an answer that cannot be read as the
+** stage's numbers is asked again, neither counted nor answered; from a file
+** it counts as wrong for that stage only, and lines starting with '#' are
+** skipped.  --grade DIR grades every answer sheet in DIR (one answer a line,
+** as above) and writes a CSV of scores.  Exit status: 0 all right, 1 some
+** wrong or unanswered, 2 trouble (bad input, an unreadable sheet, a write error).
 ** Without --vertex a used vertex is picked at random: --seed S makes the pick
 ** repeatable (xorshift64*, below); without it the seed is the time.
 */
 #define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 #include "tools/commands.h"
 #include "tools/cli.h"
 #include "io/explain.h"
+#include "io/outfile.h"
+#include "io/sbuf.h"
 #include "core/pipetrace.h"
 
 #define TOL        1e-6          /* absolute and relative tolerance for doubles */
 
 static const char usage[] =
-"usage: pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
+"usage: pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME] [--stage S]\n"
+"                      [--json] [--interactive] [--grade DIR [--out FILE]]\n"
 "Ask for vertex N's values at every stage, from model coordinates to the\n"
 "pixel-array index, one line of standard input per stage, and check them.\n"
 "Real numbers are right within 1e-6 absolute or 1e-6 relative; pixel\n"
 "coordinates and the index must be exact; write 'none' for a value that does\n"
 "not exist.  Without --vertex a used vertex is picked at random (--seed S:\n"
-"repeatably).  SCENE defaults to the built-in scene.\n";
+"repeatably).  SCENE defaults to the built-in scene.\n"
+"\n"
+"  --stage S        ask for stage S only (given the stage before it)\n"
+"  --json           print only the score, per stage, as one JSON line\n"
+"  --interactive    as at a terminal: an answer that cannot be read as the\n"
+"                   stage's numbers is asked again (from a file it counts as\n"
+"                   wrong for that stage; lines starting with # are skipped)\n"
+"  --grade DIR      grade every answer sheet in DIR (one answer a line) and\n"
+"                   write a CSV of scores, a row per sheet (needs --vertex or\n"
+"                   --seed, so that every sheet answers the same vertex)\n"
+"  --out FILE       where --grade writes the CSV (default: standard output)\n"
+"\n"
+"Exit status: 0 all right, 1 some answer wrong or missing, 2 trouble (bad\n"
+"input, an unreadable sheet, an output that cannot be written).\n"
+"Docs: docs/step-why-quiz.md, docs/teaching.md\n";
 
 /* xorshift64* (Vigna, 2016): small, and the same numbers on every platform. */
 static uint64_t xorshift(uint64_t *st)
@@ -77,6 +103,7 @@ static int parse_answer(const char *line, double *v, int *none, int max)
     }
 }
 
+
 /* a is b, within the tolerance (non-finite: the same value). */
 static int close_enough(double a, double b)
 {
@@ -85,7 +112,6 @@ static int close_enough(double a, double b)
     return fabs(a - b) <= TOL || fabs(a - b) <= TOL * fabs(b);
 }
 
-/* 1 when the n answers are stage st's values in j. */
 /* 1 for the stages whose values are integers: they must be exact. */
 static int int_stage(pt_stage st)
 {
@@ -93,6 +119,20 @@ static int int_stage(pt_stage st)
            st == PT_STAGE_INDEX || st == PT_STAGE_CVV;
 }
 
+/* 1 when n answers (none[k]: "none") have the form of an answer to stage st:
+** its number of values, or for an integer stage that may lack them, 1 to that
+** many "none".  Right or wrong is check()'s question. */
+static int readable(pt_stage st, const int *none, int n)
+{
+    int k, nones = 0;
+
+    for (k = 0; k < n && k < 4; k++) nones += none[k];     /* at most 4 values */
+    if (n == pt_coord_count(st)) return 1;
+    return int_stage(st) && st != PT_STAGE_CVV && n >= 1 && n <= pt_coord_count(st) &&
+           nones == n;
+}
+
+/* 1 when the n answers are stage st's values in j. */
 static int check(const pt_journey *j, pt_stage st, const double *v, const int *none, int n)
 {
     const pt_vrec *r = &j->rec[st];
@@ -115,45 +155,99 @@ static int check(const pt_journey *j, pt_stage st, const double *v, const int *n
     return 1;
 }
 
-/* Ask the seven questions; returns the number right, *asked how many were. */
-static int ask(const pt_journey *j, int *asked)
+/* One quiz: which stages are asked, how, and what came of each. */
+typedef struct quiz {
+    const pt_journey *j;
+    int first, last;             /* the stages asked: j->order[first..last] */
+    FILE *in;                    /* the answers */
+    int interactive;             /* ask again what cannot be read */
+    int talk;                    /* print questions and verdicts (else silent) */
+    int echo;                    /* print each answer read (input not a terminal) */
+    int result[PT_NSTAGES_ALL];  /* by order index: 1 right, 0 wrong, -1 unanswered */
+} quiz;
+
+/* "camera: x_c y_c z_c = ? " */
+static void prompt(const pt_journey *j, pt_stage st)
 {
-    int i, k, right = 0, echo = !isatty(STDIN_FILENO);
+    int k;
+
+    printf("\n%s:", pt_stage_infos[st].name);
+    for (k = 0; k < pt_coord_count(st); k++) printf(" %s", pt_coord_name(st, k));
+    printf(" = ? ");
+    fflush(stdout);
+    (void)j;
+}
+
+/* Print why an answer to st was wrong, the formula with the numbers, and the
+** value the quiz goes on from.  n < 0: it was not numbers at all. */
+static void say_wrong(const pt_journey *j, pt_stage st, int n)
+{
+    char b[PT_EXPLAINLEN];
+    int want = pt_coord_count(st);
+
+    if (n < 0)                              /* only an integer stage may have none */
+        printf("  wrong: expected %d number%s%s\n", want, want > 1 ? "s" : "",
+               int_stage(st) && st != PT_STAGE_CVV ? ", or none" : "");
+    else if (n != want && !(j->rec[st].flags & PT_REC_NULL))
+        printf("  wrong: expected %d number%s, found %d\n", want, want > 1 ? "s" : "", n);
+    else printf("  wrong\n");
+    printf("  %s\n", st == PT_STAGE_MODEL ? "the scene gives:" : pt_journey_info(j, st)->formula);
+    pt_explain_stage(b, sizeof b, j, st, "\n    ");
+    printf("    %s\n", b);
+    pt_explain_values(b, sizeof b, j, st);
+    printf("  go on with %s\n", b);
+}
+
+/* Ask q's stages in turn, filling q->result. */
+static void ask(quiz *q)
+{
+    const pt_journey *j = q->j;
     char line[1024], b[PT_EXPLAINLEN];
+    int i;
 
-    *asked = 0;
-    for (i = 0; i < j->norder; i++) {
+    for (i = 0; i < j->norder; i++) q->result[i] = -1;
+    for (i = q->first; i <= q->last; i++) {
         pt_stage st = j->order[i];
-        double v[4];
-        int none[4], n, ok, want;
+        double v[4] = {0, 0, 0, 0};
+        int none[4] = {0, 0, 0, 0}, n, ok;
 
-        printf("\n%s:", pt_stage_infos[st].name);
-        for (k = 0; k < pt_coord_count((pt_stage)st); k++)
-            printf(" %s", pt_coord_name((pt_stage)st, k));
-        printf(" = ? ");
-        fflush(stdout);
-        if (pt_cli_read_line(line, sizeof line, echo) != 0) { putchar('\n'); return right; }
-        ++*asked;
-        n = parse_answer(line, v, none, 4);
-        ok = n >= 0 && check(j, (pt_stage)st, v, none, n);
-        pt_explain_values(b, sizeof b, j, (pt_stage)st);
-        if (ok) {
-            right++;
-            printf("  correct: %s\n", b);
-            continue;
+        if (q->talk) prompt(j, st);
+        for (;;) {
+            if (pt_cli_read_line_from(q->in, line, sizeof line, q->echo) != 0) {
+                if (q->talk) printf("\n(end of input)\n");
+                return;
+            }
+            if (!q->interactive && line[0] == '#') continue;    /* a note on a sheet */
+            n = parse_answer(line, v, none, 4);
+            if (!q->interactive || (n >= 0 && readable(st, none, n))) break;
+            if (q->talk) {                  /* not counted, the answer not shown */
+                int k, want = pt_coord_count(st);
+                printf("  (not read: write %d number%s for", want, want > 1 ? "s" : "");
+                for (k = 0; k < want; k++) printf(" %s", pt_coord_name(st, k));
+                printf("%s, separated by spaces or commas; try again)\n",
+                       int_stage(st) && st != PT_STAGE_CVV ? ", or none" : "");
+                prompt(j, st);
+            }
         }
-        want = pt_coord_count((pt_stage)st);
-        if (n < 0)                          /* only an integer stage may have none */
-            printf("  wrong: expected %d number%s%s\n", want, want > 1 ? "s" : "",
-                   int_stage(st) && st != PT_STAGE_CVV ? ", or none" : "");
-        else if (n != want && !(j->rec[st].flags & PT_REC_NULL))
-            printf("  wrong: expected %d number%s, found %d\n", want, want > 1 ? "s" : "", n);
-        else printf("  wrong\n");
-        printf("  %s\n", st == PT_STAGE_MODEL ? "the scene gives:" : pt_journey_info(j, st)->formula);
-        pt_explain_stage(b, sizeof b, j, (pt_stage)st, "\n    ");
-        printf("    %s\n", b);
-        pt_explain_values(b, sizeof b, j, (pt_stage)st);
-        printf("  go on with %s\n", b);
+        ok = n >= 0 && check(j, st, v, none, n);
+        q->result[i] = ok;
+        if (!q->talk) continue;
+        if (ok) {
+            pt_explain_values(b, sizeof b, j, st);
+            printf("  correct: %s\n", b);
+        } else say_wrong(j, st, n);
+    }
+}
+
+/* How many of q's stages were answered, and how many right. */
+static int score(const quiz *q, int *answered)
+{
+    int i, right = 0;
+
+    *answered = 0;
+    for (i = q->first; i <= q->last; i++) {
+        *answered += q->result[i] >= 0;
+        right += q->result[i] == 1;
     }
     return right;
 }
@@ -173,21 +267,154 @@ static int pick(const pt_scene *s, const char *model, uint64_t k,
     return -1;
 }
 
+/* ===== grading a folder of answer sheets ===== */
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* A CSV field: as it is, or quoted with "" for " when it holds , " or a line break. */
+static void csv_field(pt_sbuf *sb, const char *t)
+{
+    if (!t[strcspn(t, ",\"\r\n")]) { pt_sbuf_add(sb, t); return; }
+    pt_sbuf_add(sb, "\"");
+    for (; *t; t++) pt_sbuf_addn(sb, t, 1 + (*t == '"'));
+    pt_sbuf_add(sb, "\"");
+}
+
+/* Grade every regular file in dir (not those starting with '.'), in name order,
+** as answer sheets for q's stages, into a CSV written to out.  Returns the
+** exit status. */
+static int grade(quiz *q, const char *dir, const char *out)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char **names = NULL, path[4096];
+    size_t n = 0, cap = 0, k;
+    int i, rc = PT_EXIT_OK, bad = 0;
+    pt_sbuf sb;
+    pt_outfile o = {NULL, NULL, NULL, NULL};
+    char err[PT_ERRLEN];
+
+    if (!d) { fprintf(stderr, "pipetrace quiz: --grade %s: cannot read the folder\n", dir); return PT_EXIT_INPUT; }
+    while ((e = readdir(d)) != NULL) {
+        struct stat st;
+        if (e->d_name[0] == '.') continue;
+        if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, e->d_name) >= sizeof path ||
+            stat(path, &st) != 0 || !S_ISREG(st.st_mode)) continue;
+        if (n == cap) {
+            char **nn = realloc(names, (cap = cap ? 2 * cap : 16) * sizeof *names);
+            if (!nn) { bad = 1; break; }
+            names = nn;
+        }
+        if (!(names[n] = malloc(strlen(e->d_name) + 1))) { bad = 1; break; }
+        strcpy(names[n++], e->d_name);
+    }
+    closedir(d);
+    if (!bad && n) qsort(names, n, sizeof *names, by_name);
+    pt_sbuf_init(&sb);
+    pt_sbuf_add(&sb, "sheet");
+    for (i = q->first; i <= q->last; i++) {
+        pt_sbuf_add(&sb, ",");
+        pt_sbuf_add(&sb, pt_stage_infos[q->j->order[i]].name);
+    }
+    pt_sbuf_add(&sb, ",right,of\n");
+    for (k = 0; k < n && !bad; k++) {
+        int right, answered;
+        snprintf(path, sizeof path, "%s/%s", dir, names[k]);
+        if (!(q->in = fopen(path, "r"))) {
+            fprintf(stderr, "pipetrace quiz: %s: cannot read the answer sheet\n", path);
+            rc = PT_EXIT_INPUT;
+            continue;
+        }
+        ask(q);
+        if (ferror(q->in)) {
+            fprintf(stderr, "pipetrace quiz: %s: cannot read the answer sheet\n", path);
+            rc = PT_EXIT_INPUT;
+        }
+        fclose(q->in);
+        csv_field(&sb, names[k]);
+        for (i = q->first; i <= q->last; i++)
+            pt_sbuf_add(&sb, q->result[i] < 0 ? "," : q->result[i] ? ",1" : ",0");
+        right = score(q, &answered);
+        pt_sbuf_addf(&sb, ",%d,%d\n", right, q->last - q->first + 1);
+        if (rc == PT_EXIT_OK && right < q->last - q->first + 1) rc = PT_EXIT_DIFFER;
+    }
+    for (k = 0; k < n; k++) free(names[k]);
+    free(names);
+    if (bad || sb.failed) {
+        fputs("pipetrace quiz: out of memory\n", stderr);
+        pt_sbuf_free(&sb);
+        return PT_EXIT_INPUT;
+    }
+    if (n == 0) fprintf(stderr, "pipetrace quiz: warning: --grade %s: no answer sheets in it\n", dir);
+    if (pt_outfile_open(&o, out, err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace quiz: %s\n", err);
+        pt_sbuf_free(&sb);
+        return PT_EXIT_INPUT;
+    }
+    if (sb.len) fwrite(sb.s, 1, sb.len, o.f);
+    pt_sbuf_free(&sb);
+    if (pt_outfile_finish(&o, ferror(o.f) != 0, "pipetrace quiz") != 0) return PT_EXIT_INPUT;
+    return rc;
+}
+
+/* ===== the command ===== */
+
+/* The score as one JSON line: per stage 1, 0 or null (unanswered). */
+static void print_json(const quiz *q, const pt_scene *s, const pt_model *m,
+                       unsigned long long v)
+{
+    pt_sbuf sb;
+    int i, right, answered;
+
+    pt_sbuf_init(&sb);
+    pt_sbuf_add(&sb, "{\"scene\":");
+    pt_sbuf_add_json(&sb, s->path);
+    pt_sbuf_add(&sb, ",\"model\":");
+    pt_sbuf_add_json(&sb, m->name);
+    pt_sbuf_addf(&sb, ",\"vertex\":%llu,\"stages\":[", v);
+    for (i = q->first; i <= q->last; i++)
+        pt_sbuf_addf(&sb, "%s{\"stage\":\"%s\",\"score\":%s}", i > q->first ? "," : "",
+                     pt_stage_infos[q->j->order[i]].name,
+                     q->result[i] < 0 ? "null" : q->result[i] ? "1" : "0");
+    right = score(q, &answered);
+    pt_sbuf_addf(&sb, "],\"right\":%d,\"answered\":%d,\"of\":%d}\n", right, answered,
+                 q->last - q->first + 1);
+    if (sb.failed) fputs("pipetrace quiz: out of memory\n", stderr);
+    else fputs(sb.s, stdout);
+    pt_sbuf_free(&sb);
+}
+
+/* The stages of journey j, "model, camera, ..." into buf. */
+static void stage_list(char *buf, size_t n, const pt_journey *j)
+{
+    size_t len = 0;
+    int i;
+
+    buf[0] = '\0';
+    for (i = 0; i < j->norder && len < n; i++)
+        len += (size_t)snprintf(buf + len, n - len, "%s%s", i ? ", " : "",
+                                pt_stage_infos[j->order[i]].name);
+}
+
 int pt_cmd_quiz(int argc, char **argv)
 {
-    const char *path = NULL, *model = NULL;
+    const char *path = NULL, *model = NULL, *stage = NULL, *dir = NULL, *out = NULL;
     unsigned long long v = 0, seed = 0;
-    int k, seeded = 0, picked = 0, right, asked;
+    int k, seeded = 0, picked = 0, json = 0, inter = 0, rc = PT_EXIT_OK;
     const pt_model *m = NULL;
     pt_journey j;
     pt_scene s;
+    quiz q;
     uint64_t n;
     size_t mi;
+    char list[512];
     pt_cli_args ca = {"quiz", usage, 1, NULL, NULL, 0};
 
     for (k = 1; k < argc; k++) {
         const char *a = argv[k];
-
         const char *val;
         int u;
 
@@ -197,12 +424,32 @@ int pt_cmd_quiz(int argc, char **argv)
                 return pt_cli_usage("quiz", "--seed takes a whole number >= 0, not %s", val);
             seed = n;
             seeded = 1;
-        } else if ((u = pt_cli_arg(&ca, argc, argv, &k)) >= 0) return u;  /* SCENE, --vertex, ... */
+        } else if (!strcmp(a, "--stage")) {
+            if ((u = pt_cli_value("quiz", argc, argv, &k, &stage)) >= 0) return u;
+        } else if (!strcmp(a, "--grade")) {
+            if ((u = pt_cli_value("quiz", argc, argv, &k, &dir)) >= 0) return u;
+        } else if (!strcmp(a, "--out")) {
+            if ((u = pt_cli_value("quiz", argc, argv, &k, &out)) >= 0) return u;
+        } else if (!strcmp(a, "--json")) json = 1;
+        else if (!strcmp(a, "--interactive")) inter = 1;
+        else if ((u = pt_cli_arg(&ca, argc, argv, &k)) >= 0) return u;  /* SCENE, --vertex, ... */
     }
     path = ca.path;
     model = ca.model;
     v = ca.vertex;
     if (v && seeded) return pt_cli_usage("quiz", "--vertex and --seed exclude each other");
+    if (dir && !v && !seeded)
+        return pt_cli_usage("quiz", "--grade needs --vertex N or --seed S: every sheet answers the same vertex");
+    if (dir && (json || inter)) return pt_cli_usage("quiz", "--grade writes a CSV: no --json, no --interactive");
+    if (out && !dir) return pt_cli_usage("quiz", "--out is where --grade writes its CSV: give --grade DIR");
+    if (stage && pt_stage_by_name(stage) < 0) {
+        int i;
+        size_t len = 0;
+        for (i = 0; i < PT_NSTAGES_ALL && len < sizeof list; i++)
+            len += (size_t)snprintf(list + len, sizeof list - len, "%s%s", i ? ", " : "",
+                                    pt_stage_infos[pt_trace_order[i]].name);
+        return pt_cli_usage("quiz", "unknown stage '%s' (the stages: %s)", stage, list);
+    }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     if (v) m = pt_cli_vertex_model(&s, "quiz", model, v);
@@ -212,13 +459,13 @@ int pt_cmd_quiz(int argc, char **argv)
     }
     if (!v) {
         uint64_t total = 0, st;
-        size_t q;
+        size_t r;
 
         if (!seeded) seed = (unsigned long long)time(NULL);
         for (mi = 0; mi < s.nmodels; mi++)
             if (!model || !strcmp(model, s.models[mi].name))
-                for (q = 0; q < s.models[mi].nv; q++)
-                    total += (uint64_t)pt_vertex_used(&s.models[mi], q + 1);
+                for (r = 0; r < s.models[mi].nv; r++)
+                    total += (uint64_t)pt_vertex_used(&s.models[mi], r + 1);
         if (total == 0) {
             fprintf(stderr, "pipetrace quiz: %s: no segment uses any vertex%s%s\n", s.path,
                     model ? " of " : "", model ? model : "");
@@ -237,29 +484,69 @@ int pt_cmd_quiz(int argc, char **argv)
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
-    printf("pipetrace quiz: vertex %llu of model %s in %s", v, m->name, s.path);
-    if (picked) printf(" (picked with --seed %llu)", seed);
-    putchar('\n');
-    printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n",
-           s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
-           s.vp_w, s.vp_h, s.vp_x, s.vp_y,
-           s.fb_w, s.fb_h);
-    {
+    memset(&q, 0, sizeof q);
+    q.j = &j;
+    q.first = 0;
+    q.last = j.norder - 1;
+    if (stage) {
+        int st = pt_stage_by_name(stage);
+        for (k = 0; k < j.norder && (int)j.order[k] != st; k++) ;
+        if (k == j.norder) {
+            stage_list(list, sizeof list, &j);
+            fprintf(stderr, "pipetrace quiz: --stage %s: vertex %llu of model %s does not go "
+                    "through it (its stages: %s)\n", stage, v, m->name, list);
+            pt_scene_free(&s);
+            return PT_EXIT_INPUT;
+        }
+        q.first = q.last = k;
+    }
+    if (dir) {
+        rc = grade(&q, dir, out ? out : "-");
+        pt_scene_free(&s);
+        return rc;
+    }
+    q.in = stdin;
+    q.interactive = inter || isatty(STDIN_FILENO);
+    q.talk = !json;
+    q.echo = q.talk && !isatty(STDIN_FILENO);
+    if (q.talk) {
         char t[PT_EXPLAINLEN];
+        int right, answered, of = q.last - q.first + 1;
+
+        printf("pipetrace quiz: vertex %llu of model %s in %s", v, m->name, s.path);
+        if (picked) printf(" (picked with --seed %llu)", seed);
+        putchar('\n');
+        printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n",
+               s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
+               s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);
         pt_explain_next(t, sizeof t, &j, PT_STAGE_MODEL);
         printf("model %s: %s\n", m->name, t);
+        if (q.first > 0) {
+            pt_explain_values(t, sizeof t, &j, j.order[q.first - 1]);
+            printf("given: %s\n", t);
+        }
+        if (!pt_vertex_used(m, v))
+            printf("note: no segment uses this vertex, so the renderer does not transform it\n");
+        printf("Answer each stage with its values on one line, separated by spaces or commas.\n"
+               "Real numbers are right within 1e-6 absolute or 1e-6 relative; pixel\n"
+               "coordinates and the index must be exact; write none for a value that does\n"
+               "not exist.\n");
+        ask(&q);
+        right = score(&q, &answered);
+        if (answered == of) printf("\nscore: %d/%d\n", right, of);
+        else printf("\nscore: %d/%d (input ended after %d of %d stages)\n", right, answered,
+                    answered, of);
+        if (right < of) rc = PT_EXIT_DIFFER;
+    } else {
+        int answered;
+        ask(&q);
+        print_json(&q, &s, m, v);
+        if (score(&q, &answered) < q.last - q.first + 1) rc = PT_EXIT_DIFFER;
     }
-    if (!pt_vertex_used(m, v))
-        printf("note: no segment uses this vertex, so the renderer does not transform it\n");
-    printf("Answer each stage with its values on one line, separated by spaces or commas.\n"
-           "Real numbers are right within 1e-6 absolute or 1e-6 relative; pixel\n"
-           "coordinates and the index must be exact; write none for a value that does\n"
-           "not exist.\n");
-    right = ask(&j, &asked);
-    if (asked == j.norder) printf("\nscore: %d/%d\n", right, j.norder);
-    else printf("\nscore: %d/%d (input ended after %d of %d stages)\n", right, asked,
-                asked, j.norder);
     pt_scene_free(&s);
-    fflush(stdout);
-    return 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fputs("pipetrace quiz: cannot write to standard output\n", stderr);
+        return PT_EXIT_INPUT;
+    }
+    return rc;
 }

@@ -18,7 +18,8 @@
 static const char usage[] =
 "usage: pipetrace stages [--camera classic|matrix]\n"
 "List the stages of both cameras (or of one): name, spaces, values, formula,\n"
-"meaning.\n";
+"meaning.\n"
+"Docs: docs/stages.md, docs/architecture.md\n";
 
 /* "x_pp (x), y_pp (y)": the value names of info, with their JSON keys. */
 static void put_values(const pt_stage_info *in)
@@ -53,7 +54,8 @@ int pt_cmd_stages(int argc, char **argv)
             return PT_EXIT_OK;
         }
         if (strcmp(argv[k], "--camera") != 0)
-            return pt_cli_usage("stages", "unknown argument '%s'", argv[k]);
+            return argv[k][0] == '-' ? pt_cli_unknown("stages", usage, argv[k])
+                                     : pt_cli_usage("stages", "unknown argument '%s'", argv[k]);
         if (k + 1 >= argc || (strcmp(argv[k + 1], "classic") && strcmp(argv[k + 1], "matrix")))
             return pt_cli_usage("stages", "--camera takes classic or matrix");
         want = argv[++k];

@@ -14,6 +14,7 @@
 ** (the tests drive it through a pipe; input lines are then echoed).
 */
 #define _POSIX_C_SOURCE 200809L
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +26,11 @@
 #include "tools/catalogue.h"
 #include "core/pipetrace.h"
 
+
+/* Where step writes: standard output, wrapped to the terminal's width
+** (src/tools/cli.h).  File-static because every printing function here writes
+** to it and one command runs per process. */
+static pt_cli_out term = {NULL, 0, NULL, 0};
 
 static const char usage[] =
 "usage: pipetrace step [SCENE] [--vertex N] [--model NAME] [--all | --interactive]\n"
@@ -41,7 +47,33 @@ static const char usage[] =
 "                   (Enter: next stage, b: back, q: quit)\n"
 "  --compare-cameras  the vertex through the classic and the matrix camera,\n"
 "                   side by side (docs/cameras.md)\n"
-"  --raw-lookat     matrix camera: keep the given up vector as it is\n";
+"  --raw-lookat     matrix camera: keep the given up vector as it is\n"
+"Docs: docs/step-why-quiz.md, docs/cameras.md\n";
+
+/* Print a paragraph that is broken into lines for 80 columns; when the output
+** is wrapped to the terminal's width, the breaks inside it are dropped first
+** (a line break and the spaces after it become one space), so the wrapping
+** reflows it. */
+static void para(const char *fmt, ...) PT_PRINTF_LIKE(1, 2);
+static void para(const char *fmt, ...)
+{
+    char b[1024], *p, *q;
+    va_list ap;
+
+    va_start(ap, fmt);
+    vsnprintf(b, sizeof b, fmt, ap);
+    va_end(ap);
+    if (term.width) {
+        for (p = q = b; *p; p++) {
+            if (*p == '\n' && p[1]) {
+                while (p[1] == ' ') p++;
+                *q++ = ' ';
+            } else *q++ = *p;
+        }
+        *q = '\0';
+    }
+    fputs(b, term.f);
+}
 
 /* Value k of v (stage st) as text: the shortest double, the integer, "none". */
 static const char *value_text(char *b, size_t n, int st, const pt_cat_val *v, int k)
@@ -73,7 +105,7 @@ static void check_stage(const pt_journey *j, int i)
     for (k = 0; k < pt_stage_nvalues(st); k++) {
         char a[PT_NUMLEN], b[PT_NUMLEN];
         if (!(m & 1u << k)) continue;
-        printf("  check    your stage gave %s = %s; the formula gives %s\n",
+        fprintf(term.f, "  check    your stage gave %s = %s; the formula gives %s\n",
                pt_stage_infos[st].coord[k], value_text(a, sizeof a, st, &got, k),
                value_text(b, sizeof b, st, &want, k));
     }
@@ -86,41 +118,54 @@ static void show_stage(const pt_journey *j, int i)
     const pt_stage_info *in = pt_journey_info(j, st);
     char b[PT_EXPLAINLEN];
 
-    printf("stage %d of %d: %s (%s -> %s)\n", i + 1, j->norder, in->name,
+    fprintf(term.f, "stage %d of %d: %s (%s -> %s)\n", i + 1, j->norder, in->name,
            in->from, in->to);
-    printf("  what     %s\n", in->what);
-    printf("  formula  %s\n", in->formula);
+    fprintf(term.f, "  what     %s\n", in->what);
+    fprintf(term.f, "  formula  %s\n", in->formula);
     pt_explain_stage(b, sizeof b, j, st, "\n           ");
-    printf("  here     %s\n", b);
+    fprintf(term.f, "  here     %s\n", b);
     check_stage(j, i);
     pt_explain_next(b, sizeof b, j, st);
-    printf("  next     %s\n", b);
+    fprintf(term.f, "  next     %s\n", b);
 }
 
-/* Enter, b, q: walk the stages until q, end of input, or Enter after the last. */
+/* Enter, a stage number, b, q: walk the stages until q, end of input, or
+** Enter after the last. */
 static void interact(const pt_journey *j)
 {
     int st = 0, show = 1, echo = !isatty(STDIN_FILENO);
     char line[256];
+    uint64_t to;
 
     for (;;) {
         if (show) show_stage(j, st);
         show = 1;
-        printf("[Enter] %s, b back, q quit: ", st + 1 < j->norder ? "next stage" : "done");
-        fflush(stdout);
-        if (pt_cli_read_line(line, sizeof line, echo) != 0) { putchar('\n'); break; }
-        if (!strcmp(line, "q") || !strcmp(line, "quit")) break;
-        if (!strcmp(line, "b") || !strcmp(line, "back")) {
-            if (st > 0) st--;
+        fprintf(term.f, "[Enter] %s, 1-%d go to a stage, b back, q quit: ",
+                st + 1 < j->norder ? "next stage" : "done", j->norder);
+        pt_cli_out_flush(&term);
+        if (pt_cli_read_line(line, sizeof line, echo) != 0) {
+            fprintf(term.f, "\n(end of input: step ends)\n");
+            break;
+        }
+        if (!strcmp(line, "q") || !strcmp(line, "Q") || !strcmp(line, "quit")) break;
+        if (!strcmp(line, "b") || !strcmp(line, "B") || !strcmp(line, "back")) {
+            if (st == 0) {
+                fprintf(term.f, "(this is the first stage: there is none before it)\n");
+                show = 0;
+                continue;
+            }
+            st--;
         } else if (line[0] == '\0') {
             if (st + 1 == j->norder) break;
             st++;
+        } else if (pt_cli_count(line, 1, (uint64_t)j->norder, &to) == 0) {
+            st = (int)to - 1;
         } else {
-            printf("(Enter: next stage, b: back, q: quit)\n");
+            fprintf(term.f, "(Enter: next stage, 1-%d: that stage, b: back, q: quit)\n", j->norder);
             show = 0;
             continue;
         }
-        putchar('\n');
+        fputc('\n', term.f);
     }
 }
 
@@ -172,7 +217,7 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
     pt_scene cs = *s, ms = *s;
     pt_model *models = NULL;
     size_t r, mi = (size_t)(m - s->models);
-    int rc = 0;
+    int rc = 0, stacked;
 
     if (s->matrix) {                        /* the classic camera, perspective */
         cs.matrix = 0;
@@ -202,54 +247,61 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
     }
     if (pt_run_journey(&jm, &ms, &ms.models[mi], v, raw) != 0) { free(models); return PT_EXIT_INPUT; }
 
-    printf("pipetrace step --compare-cameras: vertex %llu of model %s in %s\n",
+    fprintf(term.f, "pipetrace step --compare-cameras: vertex %llu of model %s in %s\n",
            (unsigned long long)v, m->name, s->path);
     if (!s->matrix) {
-        printf("classic camera: %s, at the origin, looking down -z (right-handed)\n",
+        fprintf(term.f, "classic camera: %s, at the origin, looking down -z (right-handed)\n",
                s->perspective ? "perspective" : "orthographic");
-        printf("matrix camera:  the same view as look-at matrices: eye (0, 0, 0), direction\n"
+        para("matrix camera:  the same view as look-at matrices: eye (0, 0, 0), direction\n"
                "                (0, 0, 1), up (0, 1, 0), fov 90, aspect 1, near 0.01, far 1e9;\n"
                "                World = T(translate) * S(1, 1, -1) turns the right-handed\n"
                "                camera space into the left-handed view space\n");
         if (!s->perspective)
-            printf("note: the matrix camera is a perspective camera; the classic one here is\n"
+            para("note: the matrix camera is a perspective camera; the classic one here is\n"
                    "      orthographic, so their image points differ\n");
     } else {
-        printf("matrix camera:  this scene's look-at camera\n");
-        printf("classic camera: perspective at the origin looking down -z, with each model's\n"
+        fprintf(term.f, "matrix camera:  this scene's look-at camera\n");
+        para("classic camera: perspective at the origin looking down -z, with each model's\n"
                "                translation (world lines and the look-at have no classic form)\n");
     }
-    printf("\n%-20s %-52s | %s\n", "", "classic camera", "matrix camera");
+    /* side by side; on a terminal narrower than that, one camera under the other */
+    stacked = term.width && term.width < 20 + 1 + 52 + 3 + 60;
+    if (!stacked) fprintf(term.f, "\n%-20s %-52s | %s\n", "", "classic camera", "matrix camera");
     for (r = 0; r < sizeof cmp_rows / sizeof cmp_rows[0]; r++) {
         char left[2][PT_EXPLAINLEN + 16], right[3][PT_EXPLAINLEN + 16];
         int nl = side_lines(&jc, cmp_rows[r].classic, 2, left);
         int nr = side_lines(&jm, cmp_rows[r].matrix, 3, right), i;
 
+        if (stacked) {
+            fprintf(term.f, "\n%s\n", cmp_rows[r].what);
+            for (i = 0; i < nl; i++) fprintf(term.f, "  classic  %s\n", left[i]);
+            for (i = 0; i < nr; i++) fprintf(term.f, "  matrix   %s\n", right[i]);
+            continue;
+        }
         for (i = 0; i < nl || i < nr; i++)
-            printf("%-20s %-52s | %s\n", i ? "" : cmp_rows[r].what, i < nl ? left[i] : "",
+            fprintf(term.f, "%-20s %-52s | %s\n", i ? "" : cmp_rows[r].what, i < nl ? left[i] : "",
                    i < nr ? right[i] : "");
     }
     if (in_journey(&jm, PT_STAGE_NDC) && s->perspective) {
         const pt_vrec *ip = &jc.rec[PT_STAGE_IMAGE], *n = &jm.rec[PT_STAGE_NDC];
         int same = memcmp(&ip->x, &n->x, sizeof ip->x) == 0 && memcmp(&ip->y, &n->y, sizeof ip->y) == 0;
-        printf("\n(x_ip, y_ip) and (x_n, y_n) are %s\n", same
+        fprintf(term.f, "\n(x_ip, y_ip) and (x_n, y_n) are %s\n", same
                ? "equal, bit for bit: both cameras put the vertex at the same point of the view rectangle"
                : "different: the two cameras do not look at the same view");
     } else if (!in_journey(&jm, PT_STAGE_NDC)) {
-        printf("\nthe matrix camera stops at the cvv: the vertex is outside its view volume\n");
+        fprintf(term.f, "\nthe matrix camera stops at the cvv: the vertex is outside its view volume\n");
     }
     if (in_journey(&jm, PT_STAGE_VIEWPORT) && !(jc.rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL)) {
         const pt_vrec *a = &jc.rec[PT_STAGE_VIEWPORT], *b = &jm.rec[PT_STAGE_VIEWPORT];
         const char *x_pp = pt_stage_infos[PT_STAGE_PIXEL].formula;  /* "x_pp = ..., y_pp" */
         if (a->ix != b->ix || a->iy != b->iy)
-            printf("the pixels differ: the classic camera rounds %.*s\n"
+            para("the pixels differ: the classic camera rounds %.*s\n"
                    "to the nearest logical pixel; the matrix camera floors x_s = (x_n + 1) * w/2\n",
                    (int)strcspn(x_pp, ","), x_pp);
         else
-            printf("both cameras pick the same pixel\n");
+            fprintf(term.f, "both cameras pick the same pixel\n");
     }
     free(models);
-    if (fflush(stdout) != 0) rc = PT_EXIT_INPUT;
     return rc;
 }
 
@@ -286,35 +338,41 @@ int pt_cmd_step(int argc, char **argv)
         return PT_EXIT_INPUT;
     }
 
+    pt_cli_out_open(&term);
     if (compare) {
         rc = compare_cameras(&s, m, v, raw);
         pt_scene_free(&s);
+        if (pt_cli_out_close(&term) != 0) {
+            fputs("pipetrace step: cannot write to standard output\n", stderr);
+            return PT_EXIT_INPUT;
+        }
         return rc;
     }
     if (pt_run_journey(&j, &s, m, v, raw) != 0) {
         fputs("pipetrace step: out of memory\n", stderr);
+        pt_cli_out_close(&term);
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
-    printf("pipetrace step: vertex %llu of model %s in %s\n", (unsigned long long)v, m->name, s.path);
-    if (pt_cli_student_note(note, sizeof note)) printf("%s\n", note);
-    printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n\n",
+    fprintf(term.f, "pipetrace step: vertex %llu of model %s in %s\n", (unsigned long long)v, m->name, s.path);
+    if (pt_cli_student_note(note, sizeof note)) fprintf(term.f, "%s\n", note);
+    fprintf(term.f, "camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n\n",
            s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
            s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);
     if (!pt_vertex_used(m, v))
-        printf("note: no segment uses vertex %llu, so the renderer does not transform it;\n"
+        para("note: no segment uses vertex %llu, so the renderer does not transform it;\n"
                "      here is the journey it would take.\n\n", (unsigned long long)v);
     if (inter || (!all && isatty(STDIN_FILENO) && isatty(STDOUT_FILENO)))
         interact(&j);
     else
         for (k = 0; k < j.norder; k++) {
-            if (k) putchar('\n');
+            if (k) fputc('\n', term.f);
             show_stage(&j, k);
         }
     if (j.norder < (s.matrix ? pt_matrix_norder : PT_NSTAGES))
-        printf("\n(the journey ends at the cvv: the vertex is outside the view volume)\n");
+        fprintf(term.f, "\n(the journey ends at the cvv: the vertex is outside the view volume)\n");
     pt_scene_free(&s);
-    if (fflush(stdout) != 0 || ferror(stdout)) {
+    if (pt_cli_out_close(&term) != 0) {
         fputs("pipetrace step: cannot write to standard output\n", stderr);
         return PT_EXIT_INPUT;
     }

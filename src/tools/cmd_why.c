@@ -57,6 +57,11 @@
 
 #define NEAREST    3             /* segments listed for a pixel nothing lit */
 
+/* Where the report goes: standard output, wrapped to the terminal's width
+** (src/tools/cli.h).  File-static because every printing function here writes
+** to it and one command runs per process. */
+static pt_cli_out term = {NULL, 0, NULL, 0};
+
 static const char usage[] =
 "usage: pipetrace why [SCENE] X_FB Y_FB [--model NAME]\n"
 "Say which segments lit the framebuffer pixel (X_FB, Y_FB) of SCENE (default:\n"
@@ -68,7 +73,8 @@ static const char usage[] =
 "\n"
 "  --model NAME   ask about the trace of 'pipetrace SCENE --model NAME': only\n"
 "                 NAME's segments count; the others are drawn into the image\n"
-"                 but left out of the trace\n";
+"                 but left out of the trace\n"
+"Docs: docs/step-why-quiz.md\n";
 
 /* What rasterizing one segment did, seen from the pixel asked about. */
 typedef struct seg_eval {
@@ -226,16 +232,16 @@ static void show_vertex(uint64_t v, const pt_journey *j)
     char b[PT_EXPLAINLEN];
     int st;
 
-    printf("    v%llu  ", (unsigned long long)v);
+    fprintf(term.f, "    v%llu  ", (unsigned long long)v);
     for (st = 0; st < PT_NSTAGES; st++) {
         const pt_vrec *r = &j->rec[st];
         pt_explain_tuple(b, sizeof b, j, (pt_stage)st);
-        printf("%s%s", lead[st], b);
-        if (st == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND)) printf(" behind the camera");
+        fprintf(term.f, "%s%s", lead[st], b);
+        if (st == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND)) fprintf(term.f, " behind the camera");
         if (st == PT_STAGE_VIEWPORT && !(r->flags & (PT_REC_INSIDE | PT_REC_NULL)))
-            printf(" outside");
+            fprintf(term.f, " outside");
     }
-    putchar('\n');
+    fputc('\n', term.f);
 }
 
 /* "  tri s2 (v2 -> v3)" plus both endpoints' journeys. */
@@ -246,7 +252,7 @@ static void show_segment(const pt_scene *s, pt_journey *const *js, const seg_eva
     uint64_t va = m->seg[e->si].a + 1ull, vb = m->seg[e->si].b + 1ull;
 
     seg_journeys(s, js, e->mi, e->si, a, b);
-    printf("  %s s%llu (v%llu -> v%llu)%s\n", m->name, (unsigned long long)e->si + 1,
+    fprintf(term.f, "  %s s%llu (v%llu -> v%llu)%s\n", m->name, (unsigned long long)e->si + 1,
            (unsigned long long)va, (unsigned long long)vb, tail);
     show_vertex(va, a);
     show_vertex(vb, b);
@@ -267,45 +273,45 @@ static void show_reason(const pt_scene *s, const seg_eval *e, const pt_journey *
     else if (s->perspective && b->rec[PT_STAGE_CAMERA].z > 0) behind = b;
 
     if (!target_inside && e->clip_hit == 1)
-        printf("lost at viewport: clipped by the viewport: one of its steps lands on "
+        fprintf(term.f, "lost at viewport: clipped by the viewport: one of its steps lands on "
                "this pixel, (x_vp, y_vp) = (%lld, %lld), but the pixel lies outside the "
                "viewport and steps there are not drawn\n",
                (long long)(X - s->vp_x), (long long)(Y - s->vp_y));
     else if (!target_inside && e->clip_hit == -1 && e->dist_drawn <= 0.5)
-        printf("lost at viewport: clipped by the viewport: it runs through this pixel "
+        fprintf(term.f, "lost at viewport: clipped by the viewport: it runs through this pixel "
                "(the line between its rounded endpoints passes within half a pixel of the "
                "centre), but the pixel lies outside the viewport and steps there are not "
                "drawn\n");
     else if (!target_inside)
-        printf("lost at viewport: outside the viewport: the pixel lies outside the "
+        fprintf(term.f, "lost at viewport: outside the viewport: the pixel lies outside the "
                "viewport, nothing is ever drawn there\n");
     else if (e->result == PT_RASTER_SKIPPED)
-        printf("lost at viewport: skipped: v%llu has no integer pixel (not finite, or "
+        fprintf(term.f, "lost at viewport: skipped: v%llu has no integer pixel (not finite, or "
                "beyond 2^62), so the segment is not drawn\n", (unsigned long long)vnull);
     else if (behind) {
         pt_fmt_shortest(num, behind->rec[PT_STAGE_CAMERA].z);
-        printf("lost at image: behind the camera: v%llu has z_c = %s > 0 and is "
+        fprintf(term.f, "lost at image: behind the camera: v%llu has z_c = %s > 0 and is "
                "projected mirrored through the origin, so the line drawn is not the one "
                "in front of the camera\n", behind == a ? m->seg[e->si].a + 1ull
                                                       : m->seg[e->si].b + 1ull, num);
     } else if (e->result == PT_RASTER_DEGENERATE && e->npix)
-        printf("lost at raster: degenerate: both endpoints round to one pixel, and it "
+        fprintf(term.f, "lost at raster: degenerate: both endpoints round to one pixel, and it "
                "drew that one pixel elsewhere, at (x_fb, y_fb) = (%lld, %lld)\n",
                (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
     else if (e->result == PT_RASTER_DEGENERATE)
-        printf("lost at viewport: degenerate and clipped: both endpoints round to one "
+        fprintf(term.f, "lost at viewport: degenerate and clipped: both endpoints round to one "
                "pixel, (x_vp, y_vp) = (%lld, %lld), outside the viewport\n",
                (long long)e->clip_x, (long long)e->clip_y);
     else if (e->npix == 0)
-        printf("lost at viewport: clipped by the viewport: all %llu of its steps lie "
+        fprintf(term.f, "lost at viewport: clipped by the viewport: all %llu of its steps lie "
                "outside the viewport\n", (unsigned long long)e->nclip);
     else if (e->dist <= 0.5)
-        printf("lost at raster: endpoints rounded elsewhere: the segment passes through "
+        fprintf(term.f, "lost at raster: endpoints rounded elsewhere: the segment passes through "
                "this pixel, but the DDA steps from the rounded endpoints and its nearest "
                "step lit the neighbouring pixel (x_fb, y_fb) = (%lld, %lld)\n",
                (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
     else
-        printf("not lost: it passes by; the nearest pixel it lit is (x_fb, y_fb) = "
+        fprintf(term.f, "not lost: it passes by; the nearest pixel it lit is (x_fb, y_fb) = "
                "(%lld, %lld)\n",
                (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
 }
@@ -365,12 +371,12 @@ static void show_left_out(const why_ctx *w, const seg_eval *e, const pt_journey 
 {
     const char *name = w->s->models[e->mi].name;
 
-    printf("    lost at model: its model left out: --model %s traces the records of "
+    fprintf(term.f, "    lost at model: its model left out: --model %s traces the records of "
            "model %s only; model %s is drawn into the image but not traced\n",
            w->sel->name, w->sel->name, name);
-    if (e->lit) printf("    in the image, it lights this pixel\n");
+    if (e->lit) fprintf(term.f, "    in the image, it lights this pixel\n");
     else {
-        printf("    in the image, ");
+        fprintf(term.f, "    in the image, ");
         show_reason(w->s, e, a, b, w->X, w->Y, w->inside);
     }
 }
@@ -409,16 +415,16 @@ static void show_no_segments(const why_ctx *w)
         keep_nearest(best, &n, &e);
     }
     if (!n) return;
-    printf("models without segments (left out: the renderer draws nothing of a model "
+    fprintf(term.f, "models without segments (left out: the renderer draws nothing of a model "
            "without segments):\n");
     for (k = 0; k < n; k++) {
         const pt_model *m = &s->models[best[k].mi];
 
-        if (!m->nv) { printf("  %s: no vertices either\n", m->name); continue; }
+        if (!m->nv) { fprintf(term.f, "  %s: no vertices either\n", m->name); continue; }
         pt_explain_tuple(fb, sizeof fb, &w->js[best[k].mi][best[k].si], PT_STAGE_FRAMEBUFFER);
         if (best[k].dist == HUGE_VAL) snprintf(d, sizeof d, "an unknown distance");
         else pt_fmt_fixed(d, best[k].dist, 2);
-        printf("  %s: %zu %s; the nearest, v%zu, would be %s%s away, at "
+        fprintf(term.f, "  %s: %zu %s; the nearest, v%zu, would be %s%s away, at "
                "(x_fb, y_fb) = %s\n", m->name, m->nv, m->nv == 1 ? "vertex" : "vertices",
                best[k].si + 1, d, best[k].dist == HUGE_VAL ? "" : " pixels", fb);
     }
@@ -443,7 +449,7 @@ static void scan(why_ctx *w)
                 w->last_si = si;
             }
             if (e.lit && !left_out) {
-                if (w->nlit++ == 0) printf("lit by:\n");
+                if (w->nlit++ == 0) fprintf(term.f, "lit by:\n");
                 show_segment(s, w->js, &e, "", &ja, &jb);
                 continue;
             }
@@ -467,12 +473,12 @@ static void show_also_lit(const why_ctx *w)
 {
     uint64_t k;
 
-    printf("also lit in the image by segments that --model %s leaves out of the trace:",
+    fprintf(term.f, "also lit in the image by segments that --model %s leaves out of the trace:",
            w->sel->name);
     for (k = 0; k < w->nleft && k < 10; k++)
-        printf("%s %s s%zu", k ? "," : "", w->s->models[w->left_mi[k]].name, w->left_si[k] + 1);
-    if (w->nleft > 10) printf(", ... (%llu in all)", (unsigned long long)w->nleft);
-    putchar('\n');
+        fprintf(term.f, "%s %s s%zu", k ? "," : "", w->s->models[w->left_mi[k]].name, w->left_si[k] + 1);
+    if (w->nleft > 10) fprintf(term.f, ", ... (%llu in all)", (unsigned long long)w->nleft);
+    fputc('\n', term.f);
 }
 
 /* The nearest segments, each with the stage where it lost the pixel. */
@@ -487,7 +493,7 @@ static void show_nearest(const why_ctx *w)
     for (k = 0; k < n; k++) has_sel |= &w->s->models[list[k].mi] == w->sel;
     if (w->have_sel && !has_sel) list[n++] = w->best_sel;  /* --model's own, always */
     if (n)
-        printf("nearest segments (distance from the pixel's centre to the segment "
+        fprintf(term.f, "nearest segments (distance from the pixel's centre to the segment "
                "between its pixel-plane endpoints, in framebuffer pixels):\n");
     for (k = 0; k < n; k++) {
         const seg_eval *e = &list[k];
@@ -501,7 +507,7 @@ static void show_nearest(const why_ctx *w)
         show_segment(w->s, w->js, e, tail, &ja, &jb);
         if (w->sel && &w->s->models[e->mi] != w->sel) show_left_out(w, e, &ja, &jb);
         else {
-            printf("    ");
+            fprintf(term.f, "    ");
             show_reason(w->s, e, &ja, &jb, w->X, w->Y, w->inside);
         }
     }
@@ -547,7 +553,7 @@ int pt_cmd_why(int argc, char **argv)
             continue;
         }
         if (a[0] == '-' && !(a[1] >= '0' && a[1] <= '9'))
-            return pt_cli_usage("why", "unknown option %s", a);
+            return pt_cli_unknown("why", usage, a);
         if (npos == 3)
             return pt_cli_usage("why", "too many arguments ('%s'): expected [SCENE] X_FB Y_FB", a);
         pos[npos++] = a;
@@ -583,43 +589,44 @@ int pt_cmd_why(int argc, char **argv)
         return PT_EXIT_INPUT;
     }
 
+    pt_cli_out_open(&term);
     w.inside = w.X >= s.vp_x && w.X < s.vp_x + s.vp_w && w.Y >= s.vp_y && w.Y < s.vp_y + s.vp_h;
-    printf("pixel (x_fb, y_fb) = (%lld, %lld) of %s: idx = %lld, ", w.X, w.Y, s.path,
+    fprintf(term.f, "pixel (x_fb, y_fb) = (%lld, %lld) of %s: idx = %lld, ", w.X, w.Y, s.path,
            w.Y * s.fb_w + w.X);
     if (w.inside)
-        printf("inside the viewport at (x_vp, y_vp) = (%lld, %lld)\n", w.X - s.vp_x, w.Y - s.vp_y);
+        fprintf(term.f, "inside the viewport at (x_vp, y_vp) = (%lld, %lld)\n", w.X - s.vp_x, w.Y - s.vp_y);
     else
-        printf("outside the viewport (x_fb %d..%d, y_fb %d..%d): nothing is ever drawn there\n",
+        fprintf(term.f, "outside the viewport (x_fb %d..%d, y_fb %d..%d): nothing is ever drawn there\n",
                s.vp_x, s.vp_x + s.vp_w - 1, s.vp_y, s.vp_y + s.vp_h - 1);
     if (w.sel)
-        printf("--model %s: the trace of this model alone; the image still shows every "
+        fprintf(term.f, "--model %s: the trace of this model alone; the image still shows every "
                "model\n", w.sel->name);
 
     scan(&w);
     if (w.nleft && w.nlit) show_also_lit(&w);
     if (!w.nlit) {
         if (!w.drawn)
-            printf("not lit: no segment writes it, so it keeps the background color "
+            fprintf(term.f, "not lit: no segment writes it, so it keeps the background color "
                    "%d %d %d\n", s.background[0], s.background[1], s.background[2]);
         else
-            printf("not lit in the trace of --model %s: none of its segments writes this "
+            fprintf(term.f, "not lit in the trace of --model %s: none of its segments writes this "
                    "pixel; segments of models it leaves out do (below)\n", w.sel->name);
         if (w.sel && !w.sel->nseg)
-            printf("model %s has no segments: the renderer draws nothing of it (below)\n",
+            fprintf(term.f, "model %s has no segments: the renderer draws nothing of it (below)\n",
                    w.sel->name);
         show_nearest(&w);
-        if (!w.nbest) printf("the scene has no segments\n");
+        if (!w.nbest) fprintf(term.f, "the scene has no segments\n");
         show_no_segments(&w);
     }
     if (w.drawn) {
         const pt_model *m = &s.models[w.last_mi];
-        printf("color %d %d %d%s: %s s%zu is the last segment drawn there\n", m->color[0],
+        fprintf(term.f, "color %d %d %d%s: %s s%zu is the last segment drawn there\n", m->color[0],
                m->color[1], m->color[2], w.sel ? " in the image" : "", m->name,
                w.last_si + 1);
     }
     journeys_free(w.js, s.nmodels);
     pt_scene_free(&s);
-    if (fflush(stdout) != 0 || ferror(stdout)) {
+    if (pt_cli_out_close(&term) != 0) {
         fputs("pipetrace why: cannot write to standard output\n", stderr);
         return PT_EXIT_INPUT;
     }

@@ -5,9 +5,11 @@
 ** Exit status: 0 success, 1 usage error, 2 bad input or output error.  Only
 ** this file prints diagnostics or decides the exit status.
 */
+#define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "tools/cli.h"
 #include "tools/commands.h"
 #include "io/outfile.h"
@@ -23,9 +25,11 @@ static const char usage[] =
 "usage: pipetrace [SCENE] [options]\n"
 "       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N]\n"
 "       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE]\n"
-"       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all] [--compare-cameras]\n"
-"       pipetrace why [SCENE] X_FB Y_FB\n"
-"       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME]\n"
+"       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all | --interactive]\n"
+"                      [--compare-cameras] [--raw-lookat]\n"
+"       pipetrace why [SCENE] X_FB Y_FB [--model NAME]\n"
+"       pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME] [--stage S]\n"
+"                      [--json] [--interactive] [--grade DIR [--out FILE]]\n"
 "       pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
 "       pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
 "                         [--image FILE]\n"
@@ -59,7 +63,19 @@ static const char usage[] =
 "\n"
 "With neither --image nor --trace the text trace goes to standard output.\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
+"Each command's --help says more.\n"
 "Docs: docs/README.md, docs/scene-format.md, docs/trace-format.md, docs/cameras.md\n";
+
+/* The subcommands, by name: main() dispatches on the first argument. */
+static const struct command {
+    const char *name;
+    int (*run)(int argc, char **argv);
+} commands[] = {
+    {"diff", pt_cmd_diff}, {"step", pt_cmd_step}, {"why", pt_cmd_why},
+    {"quiz", pt_cmd_quiz}, {"accuracy", pt_cmd_accuracy}, {"journey", pt_cmd_journey},
+    {"stages", pt_cmd_stages}, {"shapes", pt_cmd_shapes}, {"export", pt_cmd_export},
+};
+#define NCOMMANDS (sizeof commands / sizeof commands[0])
 
 /* ===== options ===== */
 
@@ -77,6 +93,21 @@ typedef struct cli {
 static int usage_error(const char *fmt, const char *arg)
 {
     return pt_cli_usage(NULL, fmt, arg);
+}
+
+/* 1 after saying so when scene names no file but is near a command's name
+** ("stpe": did you mean 'step'?), else 0. */
+static int mistyped_command(const char *scene)
+{
+    char names[128], near[64];
+    size_t len = 0, k;
+
+    if (!strcmp(scene, "-") || access(scene, F_OK) == 0) return 0;
+    for (k = 0; k < NCOMMANDS; k++)
+        len += (size_t)snprintf(names + len, sizeof names - len, "%s ", commands[k].name);
+    if (!pt_cli_nearest(scene, names, near, sizeof near)) return 0;
+    pt_cli_usage(NULL, "no command or scene file '%s' (did you mean '%s'?)", scene, near);
+    return 1;
 }
 
 /* Fill *c from argv.  Returns -1 to go on, else the exit status. */
@@ -127,13 +158,21 @@ static int parse_args(cli *c, int argc, char **argv)
             int st = pt_stage_by_name(val);
             if (!staged) { c->opt.stage_mask = 0; staged = 1; }
             if (!strcmp(val, "raster")) c->raster_chosen = 1;
-            else if (st < 0) return usage_error("unknown stage '%s'", val);
+            else if (st < 0) {
+                char list[512];
+                size_t len = 0, i;
+                for (i = 0; i < PT_NSTAGES_ALL && len < sizeof list; i++)
+                    len += (size_t)snprintf(list + len, sizeof list - len, "%s, ",
+                                            pt_stage_infos[pt_trace_order[i]].name);
+                return pt_cli_usage(NULL, "unknown stage '%s' (the stages: %sraster)", val, list);
+            }
             else c->opt.stage_mask |= 1u << st;
         } else if (!strcmp(a, "--all-stages")) c->opt.all_stages = 1;
         else if (!strcmp(a, "--raw-lookat")) c->opt.raw_lookat = 1;
         else if (!strcmp(a, "--explain")) c->explain = 1;
-        else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option '%s'", a);
+        else if (a[0] == '-' && a[1] != '\0') return pt_cli_unknown(NULL, strstr(usage, "\n  --"), a);
         else if (c->scene) return usage_error("more than one scene given ('%s')", a);
+        else if (mistyped_command(a)) return PT_EXIT_USAGE;
         else c->scene = a;
     }
     if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
@@ -170,6 +209,7 @@ int main(int argc, char **argv)
     pt_scene s;
     pt_plan plan;
     pt_fb fb = {0, 0, NULL};
+    size_t k;
     pt_summary sum;
     pt_listener l;
     pt_trace *tr = NULL;
@@ -177,15 +217,8 @@ int main(int argc, char **argv)
     char err[PT_ERRLEN];
     int rc, kraft;
 
-    if (argc > 1 && strcmp(argv[1], "diff") == 0) return pt_cmd_diff(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "step") == 0) return pt_cmd_step(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "why") == 0) return pt_cmd_why(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "quiz") == 0) return pt_cmd_quiz(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "accuracy") == 0) return pt_cmd_accuracy(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "journey") == 0) return pt_cmd_journey(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "stages") == 0) return pt_cmd_stages(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "shapes") == 0) return pt_cmd_shapes(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "export") == 0) return pt_cmd_export(argc - 1, argv + 1);
+    for (k = 0; argc > 1 && k < NCOMMANDS; k++)
+        if (strcmp(argv[1], commands[k].name) == 0) return commands[k].run(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
     if (rc >= 0) return rc;
     {
@@ -194,6 +227,8 @@ int main(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, c.scene) != 0) return PT_EXIT_INPUT;
+    if (s.nmodels == 0)
+        fprintf(stderr, "pipetrace: warning: %s has no models: nothing to trace or draw\n", s.path);
     rc = check_filters(&c, &s);
     if (rc) { pt_scene_free(&s); return rc; }
     if (pt_plan_make(&plan, &s, &c.opt) != 0) {
@@ -214,6 +249,7 @@ int main(int argc, char **argv)
         else {
             pt_trace_init(tr, tout.f, c.fmt, c.precision);
             tr->explain = c.explain;
+            tr->student = pt_student_files;
             pt_trace_listener(tr, &l);
         }
     }

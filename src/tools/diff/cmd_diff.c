@@ -85,7 +85,7 @@ static int parse_args(dopts *o, int argc, char **argv)
         } else if (!strcmp(a, "--image-out")) {
             o->image_out = val;
         } else if (a[0] == '-' && a[1] != '\0') {
-            return usage_error("unknown option '%s'", a);
+            return pt_cli_unknown("diff", diff_usage, a);
         } else if (npath == 2) {
             return usage_error("more than two files given ('%s')", a);
         } else {
@@ -171,6 +171,10 @@ static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
         fprintf(stderr, "%s\n", err);
         return PT_EXIT_INPUT;
     }
+    if (s == 0 && c->t[0].hdr.student[0])  /* the reference should come first */
+        fprintf(stderr, "pipetrace diff: warning: EXPECTED %s comes from a student build "
+                "(student %s); the reference trace is build/pipetrace's (are the two "
+                "swapped?)\n", c->o->path[0], c->t[0].hdr.student);
     free(*buf);
     *buf = NULL;
     return 0;

@@ -43,7 +43,8 @@ static const char usage[] =
 "\n"
 "At least one of --svg, --html and --image.  Only the classic camera (perspective or\n"
 "orthographic) is drawn; a scene with the matrix camera exits with status 2.\n"
-"Exit status: 0 success, 1 usage error, 2 bad input or output error.\n";
+"Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
+"Docs: docs/journey.md\n";
 
 /* Write the text in sb (or, sb NULL, the image fb) to path, whole or not at
 ** all.  Returns 0 or -1. */
