@@ -106,8 +106,7 @@ static int trace_diff(dctx *c)
     rc = pt_diff_fill_table(c);
     if (rc) return rc;
     if (pt_diff_fill_translations(c) != 0 || pt_diff_find_silent(c) != 0) return -1;
-    c->mk_hits = calloc(PT_NMISTAKES, sizeof *c->mk_hits);
-    if (!c->mk_hits) return -1;
+    if (pt_diff_fit(c) != 0) return -1;
 
     pt_diff_print_intro(c);
     hdr_differ = pt_diff_compare_headers(c);
@@ -125,6 +124,7 @@ static int trace_diff(dctx *c)
     pt_diff_report_one_sided(c);
     pt_diff_report_silent(c);
     pt_diff_report_stage_only(c);
+    pt_diff_report_fit(c);
 
     /* pixels: compared when both traces were rasterized with raster records */
     pixels_compared = (c->t[0].npx || c->t[0].ncl) && (c->t[1].npx || c->t[1].ncl);
@@ -228,7 +228,6 @@ done:
     free(c->vt.slot);
     free(c->tr);
     free(c->has_tr);
-    free(c->mk_hits);
     free(c->silent[0]);
     free(c->silent[1]);
     free(c);

@@ -276,7 +276,6 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
     for (st = 0; st < PT_NSTAGES_ALL; st++)
         if (c->first_at[st] && (top < 0 || c->first_at[st] > c->first_at[top])) top = st;
     if (top >= 0) {
-        size_t best = PT_NMISTAKES;
         int quiet = -1;                     /* a silent stage before top */
         for (k = 0; k < PT_NSTAGES_ALL && (int)pt_trace_order[k] != top; k++)
             if (c->silent_recs[0][pt_trace_order[k]] || c->silent_recs[1][pt_trace_order[k]])
@@ -291,24 +290,9 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
             pt_diff_add(&s, " But the %s stage before it did not report, so the mistake may be "
                         "there, not in the %s stage.", pt_stage_infos[quiet].name,
                         pt_stage_infos[top].name);
-        for (k = 0; k < PT_NMISTAKES; k++)
-            if (pt_mistakes[k].stage == top && c->mk_hits[k] &&
-                (best == PT_NMISTAKES || c->mk_hits[k] > c->mk_hits[best])) best = k;
-        if (best < PT_NMISTAKES) {
-            size_t hits = 0;
-            for (k = 0; k < PT_NMISTAKES; k++)
-                if (!strcmp(pt_mistakes[k].name, pt_mistakes[best].name)) hits += c->mk_hits[k];
-            pt_diff_add(&s, " Likely mistake there: %s, which reproduces ACTUAL", pt_mistakes[best].name);
-            if (hits < c->first_at[top])
-                pt_diff_add(&s, " for %zu of those %zu vertices.", hits, c->first_at[top]);
-            else if (hits > 2) pt_diff_add(&s, " for all %zu.", hits);
-            else if (hits == 2) pt_diff_add(&s, " for both.");
-            else pt_diff_add(&s, ".");
-        } else if (c->t[0].hdr.perspective < 0) {
+        pt_diff_verdict(c, &s);
+        if (!c->nhy && c->t[0].hdr.perspective < 0)
             pt_diff_add(&s, " The known mistakes are the classic camera's: none was checked.");
-        } else {
-            pt_diff_add(&s, " No known mistake reproduces ACTUAL there.");
-        }
     }
     if (hdr_differ) pt_diff_add(&s, " The headers differ.");
     if (pixels_compared && (nmiss || nextra)) {
