@@ -9,6 +9,7 @@
 #   make screenshots  rewrite docs/journey-* (needs chromium; on purpose only)
 #   make sanitize  run the tests under -fsanitize=address,undefined
 #   make bench     time parsing, stages, rasterizer and trace output
+#   make check-stage STAGE_pixel=FILE.c   a student stage's self-check
 #   make clean
 
 CC      ?= cc
@@ -144,10 +145,24 @@ screenshots: $B/pipetrace
 bench: $B/bench
 	$B/bench
 
+# The self-check of a student stage (docs/teaching.md): `make check-stage
+# STAGE_pixel=FILE.c` builds the student build and the reference (build/),
+# runs both on docs/examples/selfcheck.scene, and the reference's diff says
+# whether the stage passes, and if not where and why.
+SELFCHECK = docs/examples/selfcheck.scene
+check-stage: $B/pipetrace
+	@test -n "$(STUDENT)" || { echo "make check-stage: name the stage file, e.g. make check-stage STAGE_pixel=FILE.c" >&2; exit 2; }
+	@$(MAKE) -s B=build STAGE_camera= STAGE_projection= STAGE_pixel= STAGE_viewport= \
+	    STAGE_framebuffer= STAGE_index= build/pipetrace
+	@build/pipetrace $(SELFCHECK) --format jsonl --trace $B/selfcheck-reference.jsonl
+	@$B/pipetrace $(SELFCHECK) --format jsonl --trace $B/selfcheck-yours.jsonl
+	@echo "check-stage: your $(STUDENT) stage on $(SELFCHECK), against the reference"
+	@build/pipetrace diff --show 3 --verdict $B/selfcheck-reference.jsonl $B/selfcheck-yours.jsonl
+
 sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test
 
 clean:
 	rm -rf build build-san build-student
 
-.PHONY: all run test golden docs screenshots bench sanitize clean
+.PHONY: all run test golden docs screenshots bench sanitize clean check-stage

@@ -311,7 +311,7 @@ check "diff-5.6 a record twice: exit 2" test $? = 2
 "$exe" diff "$tmp/cube.csv" "$tmp/cube.jsonl" >/dev/null 2>"$tmp/err"
 check "diff-5.7 CSV is refused: exit 2" test $? = 2
 "$exe" diff "$tmp/offset.jsonl" >/dev/null 2>&1
-check "diff-5.8 one file: usage error, exit 1" test $? = 1
+check "diff-5.8 one file: usage error, exit 2 (as diff(1); 1 means different)" test $? = 2
 # a text trace ends with its summary: cut anywhere before, it is refused
 n=$(wc -l < "$tmp/offset.txt")
 for cut in 4 12 $((n - 1)); do
@@ -329,7 +329,7 @@ printf 'hello\n' > "$tmp/hello.txt"
 check "diff-5.14 neither trace nor image: exit 2, naming what is read" \
     grep -qF "not a pipetrace trace (JSON Lines or text) nor an image (binary PPM (P6), plain PPM (P3), or PNG" "$tmp/err"
 "$exe" diff "$tmp/offset.jsonl" "$tmp/offset.jsonl" --image-out "$tmp/x.ppm" >/dev/null 2>&1
-check "diff-5.9 --image-out with traces: usage error, exit 1" test $? = 1
+check "diff-5.9 --image-out with traces: usage error, exit 2" test $? = 2
 "$exe" diff --help >"$tmp/out" 2>&1
 check "diff-5.10 --help" grep -q "^usage: pipetrace diff" "$tmp/out"
 
@@ -359,7 +359,11 @@ head -c 20 "$tmp/a.ppm" > "$tmp/short.ppm"
 "$exe" diff "$tmp/a.ppm" "$tmp/short.ppm" >/dev/null 2>"$tmp/err"
 check "diff-6.9 a cut-short image: exit 2" test $? = 2
 "$exe" diff "$tmp/a.ppm" "$tmp/offset.jsonl" >/dev/null 2>&1
-check "diff-6.10 an image against a trace: exit 1" test $? = 1
+check "diff-6.10 an image against a trace: exit 2" test $? = 2
+"$exe" diff --tol x "$tmp/a.ppm" "$tmp/a.ppm" >/dev/null 2>&1
+check "diff-6.10a a bad option value: exit 2" test $? = 2
+"$exe" diff --nosuch "$tmp/a.ppm" "$tmp/a.ppm" >/dev/null 2>&1
+check "diff-6.10b an unknown option: exit 2" test $? = 2
 
 # ---- other images: plain PPM (P3) and PNG
 printf 'P3\n4 2\n255\n0 0 0  255 255 255  0 0 0  0 0 0\n0 0 0 0 0 0 0 0 1 0 0 0\n' > "$tmp/b3.ppm"

@@ -32,15 +32,22 @@ static const char diff_usage[] =
 "                    adds half a unit in its last printed digit\n"
 "  --show N          list at most N vertices and N pixels of each kind\n"
 "                    (default 10)\n"
+"  --verdict         end with a verdict: pass, or the stage that goes wrong\n"
+"                    first, the evidence and the mistake that explains it all\n"
+"                    (make check-stage uses it)\n"
 "  --image-out FILE  images: write FILE (P6 PPM) with the differing pixels red and\n"
 "                    the others EXPECTED's, dimmed to gray\n"
 "\n"
-"Exit status: 0 same, 1 different (or a usage error), 2 unreadable input.\n"
+"Exit status, as diff(1): 0 same, 1 different, 2 trouble (unreadable input\n"
+"or a usage error).\n"
 "Docs: docs/teaching.md\n";
 
+/* A usage error: the message, and diff's exit status for trouble (2, as
+** diff(1): 1 means "different"). */
 static int usage_error(const char *fmt, const char *arg)
 {
-    return pt_cli_usage("diff", fmt, arg);
+    pt_cli_usage("diff", fmt, arg);
+    return PT_EXIT_TROUBLE;
 }
 
 /* A finite number >= 0 from s, or -1. */
@@ -71,6 +78,7 @@ static int parse_args(dopts *o, int argc, char **argv)
                     !strcmp(a, "--image-out") || !strcmp(a, "--show");
 
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(diff_usage, stdout); return 0; }
+        if (!strcmp(a, "--verdict")) { o->verdict = 1; continue; }
         if (takes && !val) return usage_error("option '%s' needs a value", a);
         if (takes) k++;
         if (!strcmp(a, "--tol") || !strcmp(a, "--rel")) {

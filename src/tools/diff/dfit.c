@@ -298,3 +298,69 @@ void pt_diff_verdict(const dctx *c, pbuf *s)
                     "arguments in the wrong order? (pipetrace diff REFERENCE STUDENT)",
                     c->swap_hy.name);
 }
+
+void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, const rstat *rs)
+{
+    pbuf s;
+    size_t k;
+    int side, st;
+
+    memset(&s, 0, sizeof s);
+    if (!differ) {
+        pt_diff_para("", "Verdict: PASS. ACTUAL agrees with EXPECTED at every stage of every "
+                     "vertex, and lights the same pixels.");
+        return;
+    }
+    for (side = 0; side < 2; side++)
+        for (st = 0; st < PT_NSTAGES_ALL; st++)
+            if (c->silent_recs[side][st]) {
+                pt_diff_add(&s, "Verdict: FAIL at the %s stage: %s has no %s records. The stage "
+                            "computes, but does not report what it computed: it must call "
+                            "pt_emit(sink, &r) as stages/ does.", pt_stage_infos[st].name,
+                            pt_diff_side[side], pt_stage_infos[st].name);
+                pt_diff_para("", s.b);
+                return;
+            }
+    if (top >= 0) {
+        const vent *e = c->first_ex[top] ? &c->vt.e[c->first_ex[top] - 1] : NULL;
+        char who[128];
+        pt_diff_add(&s, "Verdict: FAIL at the %s stage, where %zu of the %zu differing "
+                    "vertices go wrong first", pt_stage_infos[top].name, c->first_at[top], c->differ);
+        if (e) {
+            pt_diff_add(&s, "; the first is %s: ", pt_diff_who(c, e->model, e->v, who, sizeof who));
+            pt_diff_evidence(c, e, top, &s);
+        }
+        pt_diff_add(&s, ".");
+        if (c->verdict >= 0 && c->nfull == 1 && c->hy[c->verdict].stage == top) {
+            const dhyp *hy = &c->hy[c->verdict];
+            pt_diff_add(&s, " Likely mistake: %s: %s. It explains all the evidence: it ",
+                        hy->name, hy->how);
+            fit_str(&s, hy, c->fit_differ, c->fit_agree);
+            pt_diff_add(&s, ".");
+        } else if (c->verdict >= 0) {
+            pt_diff_add(&s, " More than one known mistake explains it (see above).");
+        } else {
+            pt_diff_add(&s, " No known mistake explains it: compare your %s stage with its "
+                        "formula, %s, on that vertex (pipetrace step --vertex N shows each "
+                        "stage's numbers).", pt_stage_infos[top].name, pt_stage_infos[top].formula);
+        }
+        if (c->swapped >= 0)
+            pt_diff_add(&s, " With EXPECTED and ACTUAL swapped, %s explains it: the reference "
+                        "goes first.", c->swap_hy.name);
+    } else if (px_differ) {
+        pt_diff_add(&s, "Verdict: FAIL in the pixels: every vertex agrees, but the lit pixels "
+                    "differ");
+        for (k = 0; k < PT_NRASTER_MISTAKES; k++)
+            if (rs->segs_differ && rs->hits[k] == rs->segs_differ) break;
+        if (k < PT_NRASTER_MISTAKES)
+            pt_diff_add(&s, ". Likely mistake: %s, in the rounding the rasterizer calls for "
+                        "every step (the viewport stage's): %s. It reproduces every one of the "
+                        "%zu segments that differ.", pt_raster_mistakes[k].name,
+                        pt_raster_mistakes[k].how, rs->segs_differ);
+        else
+            pt_diff_add(&s, "; no known mistake of the rasterizer's rounding explains them.");
+    } else {
+        pt_diff_add(&s, "Verdict: FAIL: the traces differ (see above).");
+    }
+    pt_diff_para("", s.b);
+}

@@ -38,6 +38,7 @@ typedef struct dopts {
     double tol, rel;             /* tolerance for doubles */
     const char *image_out;       /* --image-out, or NULL */
     size_t show;                 /* vertices and pixels listed */
+    int verdict;                 /* --verdict: end with a verdict paragraph */
 } dopts;
 
 /* A growing string for paragraphs. */
@@ -91,6 +92,7 @@ typedef struct dctx {
     /* counts */
     size_t agree, differ, only[2];
     size_t first_at[PT_NSTAGES_ALL];    /* vertices that first differ at each stage */
+    size_t first_ex[PT_NSTAGES_ALL];    /* 1 + vt index of the first of them, or 0 */
     size_t stage_only[2][PT_NSTAGES_ALL];   /* records without a partner */
     size_t shown;                /* vertices listed */
     dhyp hy[PT_DIFF_MAXHYP];     /* the hypotheses tested (dfit.c) */
@@ -178,6 +180,10 @@ double pt_diff_slack(const dctx *c, int s, double x);
 /* 1 when a (EXPECTED) and b (ACTUAL) agree within the tolerance. */
 int pt_diff_same_real(const dctx *c, double a, double b);
 
+/* Append "x_pp expected 1.5, actual 2" for each value of stage st that
+** differs between vertex e's records. */
+void pt_diff_evidence(const dctx *c, const vent *e, int st, pbuf *s);
+
 /* Compare vertex e, present on both sides, stage by stage; count it, and print
 ** and explain its first difference while fewer than --show are listed. */
 void pt_diff_compare_vertex(dctx *c, const vent *e);
@@ -214,6 +220,11 @@ void pt_diff_report_fit(const dctx *c);
 
 /* Append the verdict to the summary paragraph s. */
 void pt_diff_verdict(const dctx *c, pbuf *s);
+
+/* Print --verdict's paragraph: pass, or where it goes wrong first (stage
+** top, -1 when no vertex differs), the evidence and the mistake if one
+** explains all.  px_differ: the lit pixels differ; rs: the raster check. */
+void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, const rstat *rs);
 
 /* ===== dpixels.c ===== */
 

@@ -255,6 +255,10 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         if (pixels_compared) pt_diff_add(&s, ", and the same %zu lit pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
         else pt_diff_add(&s, ".");
         pt_diff_para("", s.b);
+        if (c->o->verdict) {
+            printf("\n");
+            pt_diff_print_verdict(c, 0, -1, 0, rs);
+        }
         return PT_EXIT_OK;
     }
     for (k = 0; k < 2; k++)
@@ -323,5 +327,9 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         pt_diff_add(&s, " Both light the same %zu pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
     }
     pt_diff_para("", s.b);
+    if (c->o->verdict) {
+        printf("\n");
+        pt_diff_print_verdict(c, 1, top, pixels_compared && (nmiss || nextra), rs);
+    }
     return PT_EXIT_DIFFER;
 }
