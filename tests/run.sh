@@ -30,6 +30,7 @@ layers      1 sh tests/layers.sh
 golden      1 sh tests/golden.sh $B/pipetrace
 cli         1 sh tests/cli.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace
+selfcheck   2 sh tests/selfcheck.sh $B/pipetrace
 extreme     1 sh tests/extreme.sh $B/pipetrace
 teach       1 sh tests/teach.sh $B/pipetrace
 accuracy    1 sh tests/accuracy.sh $B/pipetrace

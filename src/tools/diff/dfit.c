@@ -353,10 +353,9 @@ void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, co
         for (k = 0; k < PT_NRASTER_MISTAKES; k++)
             if (rs->segs_differ && rs->hits[k] == rs->segs_differ) break;
         if (k < PT_NRASTER_MISTAKES)
-            pt_diff_add(&s, ". Likely mistake: %s, in the rounding the rasterizer calls for "
-                        "every step (the viewport stage's): %s. It reproduces every one of the "
-                        "%zu segments that differ.", pt_raster_mistakes[k].name,
-                        pt_raster_mistakes[k].how, rs->segs_differ);
+            pt_diff_add(&s, ". Likely mistake: %s: %s. It reproduces %s.", pt_raster_mistakes[k].name,
+                        pt_raster_mistakes[k].how, rs->segs_differ == 1 ? "the one segment "
+                        "that differs" : "every segment that differs");
         else
             pt_diff_add(&s, "; no known mistake of the rasterizer's rounding explains them.");
     } else {

@@ -350,6 +350,13 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
     pt_diff_para("  ", sb.b);
     for (k = 0; rs->ends_ok && k < PT_NRASTER_MISTAKES; k++) {
         if (!rs->hits[k]) continue;
+        if (rs->hits[k] < rs->segs_differ) {   /* never a confident name for part of it */
+            memset(&sb, 0, sizeof sb);
+            pt_diff_add(&sb, "partial: %s reproduces %zu of the %zu segments that differ: it does "
+                        "NOT explain them.", pt_raster_mistakes[k].name, rs->hits[k], rs->segs_differ);
+            pt_diff_para("  ", sb.b);
+            continue;
+        }
         printf("  likely mistake: %s\n", pt_raster_mistakes[k].name);
         pt_diff_para("    ", pt_raster_mistakes[k].how);
         memset(&sb, 0, sizeof sb);
@@ -357,7 +364,7 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
                     ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round and "
                     "ACTUAL's with it", rs->ends[0], rs->ends[1], rs->ends[2], rs->ends[3]);
         if (rs->segs_differ > 1)
-            pt_diff_add(&sb, "; so it does for %zu of the %zu segments", rs->hits[k], rs->segs_differ);
+            pt_diff_add(&sb, "; so it does for all %zu segments that differ", rs->segs_differ);
         pt_diff_add(&sb, ".");
         pt_diff_para("    ", sb.b);
     }

@@ -311,12 +311,14 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                         rs->segs_differ, rs->segs_differ > 1 ? "s" : "");
             for (k = 0; k < PT_NRASTER_MISTAKES; k++)
                 if (rs->hits[k] && (best == PT_NRASTER_MISTAKES || rs->hits[k] > rs->hits[best])) best = k;
-            if (best < PT_NRASTER_MISTAKES) {
+            if (best < PT_NRASTER_MISTAKES && rs->hits[best] == rs->segs_differ) {
                 pt_diff_add(&s, " Likely mistake: %s in the rasterizer's rounding (pt_pix_round in "
-                            "s4), which reproduces ACTUAL's pixels", pt_raster_mistakes[best].name);
-                if (rs->hits[best] < rs->segs_differ)
-                    pt_diff_add(&s, " for %zu of those segments.", rs->hits[best]);
-                else pt_diff_add(&s, ".");
+                            "s4), which reproduces ACTUAL's pixels in every segment that differs.",
+                            pt_raster_mistakes[best].name);
+            } else if (best < PT_NRASTER_MISTAKES) {
+                pt_diff_add(&s, " No known mistake of its rounding explains every segment: %s "
+                            "reproduces %zu of the %zu, so it does NOT explain them.",
+                            pt_raster_mistakes[best].name, rs->hits[best], rs->segs_differ);
             } else {
                 pt_diff_add(&s, " No known mistake of its rounding reproduces them.");
             }
