@@ -115,7 +115,73 @@ check "diff-1.21 a viewport stage one row off moves the whole image up one row" 
 "$exe" diff "$tmp/want.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1
 check "diff-1.22 ... and diff does not say both light the same pixels" \
     sh -c "! grep -q 'Both light the same pixels' '$tmp/out'"
-check "diff-1.23 ... its pixels differ" grep -q "^  missing in ACTUAL: 92" "$tmp/out"
+tr '\n' ' ' < "$tmp/out" > "$tmp/flat"
+check "diff-1.23 ... its pixels differ: all moved up one row" \
+    grep -qF "Lit pixels: 156 in EXPECTED, 156 in ACTUAL: ACTUAL's are EXPECTED's moved by (0, -1)." "$tmp/flat"
+check "diff-1.24 ... not listed as missing and extra ones" test "$(grep -c 'missing in ACTUAL' "$tmp/out")" = 0
+
+# ---- the examples of issue 11, on the built-in scene: before, diff named
+# "missing -1 in x_vp" for (int64_t)(x + 0.5) (which moves 1 vertex of 15),
+# "missing y flip" for y_vp = h - 1 - round(y_pp), and nothing for a forgotten
+# viewport offset or float arithmetic; a mistake is named now only when it
+# reproduces every differing vertex and leaves every agreeing one as it is
+"$exe" --format jsonl --trace "$tmp/bi.jsonl"
+"$exe" --image "$tmp/bi-want.ppm"
+summary() {
+    awk 'BEGIN { RS = "" } { p = $0 } END { print p }' "$tmp/out" | tr '\n' ' ' >"$tmp/summary"
+    tr '\n' ' ' < "$tmp/out" | tr -s ' ' > "$tmp/flat"
+}
+mistaken s4_trunc
+"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+check "diff-11.1 (int64_t)(x + 0.5): truncation named, with its fit" grep -qF "Likely mistake there: truncation toward zero instead of Java's Math.round, which reproduces the 1 differing vertex and leaves the 14 agreeing ones as they are." "$tmp/summary"
+check "diff-11.2 ... 'missing -1' only as a partial candidate, which it says does not explain the trace" \
+    grep -qF "partial: missing -1 in x_vp (viewport stage), which reproduces 1 of the 1 differing vertices and would change 14 of the 14 agreeing ones: it does NOT explain the trace." "$tmp/flat"
+check "diff-11.3 ... and never as the likely one" test "$(grep -c 'ikely mistake.*missing -1' "$tmp/out")" = 0
+mistaken s4_yminus1
+"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+check "diff-11.4 y_vp = h - 1 - round(y_pp): a constant -1 in y_vp, from the numbers" \
+    grep -qF "Likely mistake there: an extra -1 in y_vp, which reproduces all 15 differing vertices." "$tmp/summary"
+check "diff-11.5 ... not 'missing y flip'" test "$(grep -c 'ikely mistake.*y flip' "$tmp/out")" = 0
+# diff's arguments the wrong way round: the student's trace as EXPECTED
+"$exe" diff "$tmp/got.jsonl" "$tmp/bi.jsonl" >"$tmp/out" 2>&1; summary
+check "diff-11.6 the arguments swapped: said, and no mistake named the wrong way round" \
+    sh -c "grep -qF 'With EXPECTED and ACTUAL swapped, an extra -1 in y_vp explains every vertex: are the arguments in the wrong order?' '$tmp/summary' ||
+           grep -qF 'No single known mistake explains every vertex.' '$tmp/summary'"
+check "diff-11.6a ... no likely mistake" test "$(grep -c 'ikely mistake' "$tmp/out")" = 0
+mistaken s4_nominus1
+"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/got.jsonl" "$tmp/bi.jsonl" >"$tmp/out" 2>&1; summary
+check "diff-11.7 a catalogue mistake with the arguments swapped: said" \
+    grep -qF "With EXPECTED and ACTUAL swapped, missing -1 in x_vp explains every vertex: are the arguments in the wrong order? (pipetrace diff REFERENCE STUDENT)" "$tmp/summary"
+check "diff-11.7a ... no likely mistake the wrong way round" test "$(grep -c 'ikely mistake' "$tmp/out")" = 0
+mistaken s5_nooffset
+"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl" --image "$tmp/bi-got.ppm"
+"$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+check "diff-11.8 a forgotten viewport offset: named" \
+    grep -qF "Likely mistake there: viewport offset (x_ul, y_ul) forgotten, which reproduces all 15 differing vertices." "$tmp/summary"
+check "diff-11.9 ... the pixels: a shift by (-40, -30)" \
+    grep -qF "Lit pixels: 1243 in EXPECTED, 1243 in ACTUAL: ACTUAL's are EXPECTED's moved by (-40, -30)." "$tmp/flat"
+check "diff-11.10 ... not 1217 missing and 1217 extra" test "$(grep -c 'missing in ACTUAL' "$tmp/out")" = 0
+check "diff-11.11 ... in the summary too" grep -qF "The lit pixels differ too: all of them moved by (-40, -30), as a consequence." "$tmp/summary"
+"$exe" diff "$tmp/bi-want.ppm" "$tmp/bi-got.ppm" --image-out "$tmp/hl.png" >"$tmp/out" 2>&1
+check "diff-11.12 the two images: a shift by (-40, -30)" \
+    grep -qxF "ACTUAL is EXPECTED moved by (-40, -30): the same picture, shifted." "$tmp/out"
+check "diff-11.13 --image-out FILE.png writes a PNG" test "$(head -c 4 "$tmp/hl.png" | od -An -c | tr -d ' ')" = "211PNG"
+"$exe" diff "$tmp/bi-want.ppm" "$tmp/bi-got.ppm" --image-out "$tmp/hl.ppm" >/dev/null 2>&1
+"$exe" diff "$tmp/hl.png" "$tmp/hl.ppm" >"$tmp/out" 2>&1
+check "diff-11.14 ... the same picture as the PPM one" test $? = 0
+"$exe" diff "$tmp/bi-want.ppm" "$tmp/bi.jsonl" >/dev/null 2>&1
+mistaken s3_float
+"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+check "diff-11.15 the pixel stage in float: named from the numbers" \
+    grep -qF "Likely mistake there: float arithmetic in the pixel stage, which reproduces all" "$tmp/summary"
+"$exe" --trace "$tmp/bi.txt"
+"$exe" diff "$tmp/bi.txt" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+check "diff-11.16 ... from a text EXPECTED too" \
+    grep -qF "Likely mistake there: float arithmetic in the pixel stage, which reproduces all" "$tmp/summary"
 
 # floor(x + 0.5) in a vertex record needs y_pp = 0.49999999999999994, which s3
 # cannot produce (0.5 + w/2.001 * (y_ip + 1) is 0.5 or at least 2^-53 away):

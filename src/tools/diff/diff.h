@@ -103,6 +103,9 @@ typedef struct dctx {
                                  ** swapped, or -1 */
     dhyp swap_hy;                /* ... that hypothesis, its fit swapped */
     size_t fit_differ, fit_agree;   /* the vertices the fits count */
+    int px_shift;                /* 1: ACTUAL's lit pixels are EXPECTED's moved */
+    int64_t px_d[2];             /* ... by (dx, dy) */
+    size_t px_out;               /* ... this many of them out of the framebuffer */
     size_t agree_clip, differ_clip;     /* of agree and differ: matrix clip points */
     unsigned *silent[2];         /* silent[s][model id]: bit st when side s has no
                                  ** record of stage st for that model though its

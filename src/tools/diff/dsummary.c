@@ -301,9 +301,14 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
     if (hdr_differ) pt_diff_add(&s, " The headers differ.");
     if (pixels_compared && (nmiss || nextra)) {
         int vertices_differ = c->differ || c->only[0] || c->only[1] || pt_diff_silent_any(c);
-        pt_diff_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
-                    "%zu extra)", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
-                    nlit[0], nlit[1], nmiss, nextra);
+        if (c->px_shift)
+            pt_diff_add(&s, " %s lit pixels differ%s: all of them moved by (%" PRId64 ", %" PRId64
+                        ")", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
+                        c->px_d[0], c->px_d[1]);
+        else
+            pt_diff_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
+                        "%zu extra)", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
+                        nlit[0], nlit[1], nmiss, nextra);
         if (vertices_differ) pt_diff_add(&s, ", as a consequence.");
         else if (rs->segs_differ) {
             size_t best = PT_NRASTER_MISTAKES;
