@@ -15,28 +15,7 @@ exe=$1
 data=tests/data/diff
 
 
-# student VAR FILE: build $tmp/sb/pipetrace with FILE as stage VAR.  MAKEFLAGS
-# is cleared so that a `make test` around this script passes nothing down.
-# The first build starts from PIPETRACE's own objects (cp -p keeps them up to
-# date) unless they are built with sanitizers, which the default flags lack:
-# then it compiles everything.
-mkdir -p "$tmp/sb"
-bdir=$(dirname "$exe")
-reuse=
-if [ -f "$bdir/main.o" ] && [ -f "$bdir/builtin.c" ] && ! grep -q __asan_ "$bdir/main.o"; then
-    reuse=1
-    cp -p "$bdir"/*.o "$bdir/builtin.c" "$tmp/sb/"
-fi
-student() {
-    MAKEFLAGS= MFLAGS= MAKELEVEL= make -s -j2 B="$tmp/sb" "STAGE_$1=$2" \
-        "$tmp/sb/pipetrace" >"$tmp/make.log" 2>&1
-}
-
-# mistaken NAME: make $tmp/NAME.c with tests/student.sh and build it as its stage.
-mistaken() {
-    sh tests/student.sh "$1" "$tmp/$1.c" >"$tmp/make.log" 2>&1 &&
-        student "$(sh tests/student.sh --list | awk -v n="$1" '$1 == n { print $3 }')" "$tmp/$1.c"
-}
+. tests/studentlib.sh
 
 # mistake ID SCENE FORMAT NAME: diff the reference's trace of SCENE (in FORMAT)
 # against the student build's (JSON Lines); the output must name NAME only.
@@ -127,38 +106,38 @@ check "diff-1.24 ... not listed as missing and extra ones" test "$(grep -c 'miss
 # reproduces every differing vertex and leaves every agreeing one as it is
 "$exe" --format jsonl --trace "$tmp/bi.jsonl"
 "$exe" --image "$tmp/bi-want.ppm"
+# bi_diff NAME [swap]: the built-in scene through student build NAME, diffed
+# against the reference (swap: the student's trace given first)
+bi_diff() {
+    mistaken "$1"
+    "$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl" --image "$tmp/bi-got.ppm"
+    if [ "${2-}" = swap ]; then "$exe" diff "$tmp/got.jsonl" "$tmp/bi.jsonl" >"$tmp/out" 2>&1
+    else "$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; fi
+    summary
+}
 summary() {
     awk 'BEGIN { RS = "" } { p = $0 } END { print p }' "$tmp/out" | tr '\n' ' ' >"$tmp/summary"
     tr '\n' ' ' < "$tmp/out" | tr -s ' ' > "$tmp/flat"
 }
-mistaken s4_trunc
-"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl"
-"$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+bi_diff s4_trunc
 check "diff-11.1 (int64_t)(x + 0.5): truncation named, with its fit" grep -qF "Likely mistake there: truncation toward zero instead of Java's Math.round, which reproduces the 1 differing vertex and leaves the 14 agreeing ones as they are." "$tmp/summary"
 check "diff-11.2 ... 'missing -1' only as a partial candidate, which it says does not explain the trace" \
     grep -qF "partial: missing -1 in x_vp (viewport stage), which reproduces 1 of the 1 differing vertices and would change 14 of the 14 agreeing ones: it does NOT explain the trace." "$tmp/flat"
 check "diff-11.3 ... and never as the likely one" test "$(grep -c 'ikely mistake.*missing -1' "$tmp/out")" = 0
-mistaken s4_yminus1
-"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl"
-"$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+bi_diff s4_yminus1
 check "diff-11.4 y_vp = h - 1 - round(y_pp): a constant -1 in y_vp, from the numbers" \
     grep -qF "Likely mistake there: an extra -1 in y_vp, which reproduces all 15 differing vertices." "$tmp/summary"
 check "diff-11.5 ... not 'missing y flip'" test "$(grep -c 'ikely mistake.*y flip' "$tmp/out")" = 0
 # diff's arguments the wrong way round: the student's trace as EXPECTED
 "$exe" diff "$tmp/got.jsonl" "$tmp/bi.jsonl" >"$tmp/out" 2>&1; summary
-check "diff-11.6 the arguments swapped: said, and no mistake named the wrong way round" \
-    sh -c "grep -qF 'With EXPECTED and ACTUAL swapped, an extra -1 in y_vp explains every vertex: are the arguments in the wrong order?' '$tmp/summary' ||
-           grep -qF 'No single known mistake explains every vertex.' '$tmp/summary'"
+check "diff-11.6 the arguments swapped: said" \
+    grep -qF "With EXPECTED and ACTUAL swapped, an extra -1 in y_vp explains every vertex: are the arguments in the wrong order?" "$tmp/summary"
 check "diff-11.6a ... no likely mistake" test "$(grep -c 'ikely mistake' "$tmp/out")" = 0
-mistaken s4_nominus1
-"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl"
-"$exe" diff "$tmp/got.jsonl" "$tmp/bi.jsonl" >"$tmp/out" 2>&1; summary
+bi_diff s4_nominus1 swap
 check "diff-11.7 a catalogue mistake with the arguments swapped: said" \
     grep -qF "With EXPECTED and ACTUAL swapped, missing -1 in x_vp explains every vertex: are the arguments in the wrong order? (pipetrace diff REFERENCE STUDENT)" "$tmp/summary"
 check "diff-11.7a ... no likely mistake the wrong way round" test "$(grep -c 'ikely mistake' "$tmp/out")" = 0
-mistaken s5_nooffset
-"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl" --image "$tmp/bi-got.ppm"
-"$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+bi_diff s5_nooffset
 check "diff-11.8 a forgotten viewport offset: named" \
     grep -qF "Likely mistake there: viewport offset (x_ul, y_ul) forgotten, which reproduces all 15 differing vertices." "$tmp/summary"
 check "diff-11.9 ... the pixels: a shift by (-40, -30)" \
@@ -173,9 +152,7 @@ check "diff-11.13 --image-out FILE.png writes a PNG" test "$(head -c 4 "$tmp/hl.
 "$exe" diff "$tmp/hl.png" "$tmp/hl.ppm" >"$tmp/out" 2>&1
 check "diff-11.14 ... the same picture as the PPM one" test $? = 0
 "$exe" diff "$tmp/bi-want.ppm" "$tmp/bi.jsonl" >/dev/null 2>&1
-mistaken s3_float
-"$tmp/sb/pipetrace" --format jsonl --trace "$tmp/got.jsonl"
-"$exe" diff "$tmp/bi.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; summary
+bi_diff s3_float
 check "diff-11.15 the pixel stage in float: named from the numbers" \
     grep -qF "Likely mistake there: float arithmetic in the pixel stage, which reproduces all" "$tmp/summary"
 "$exe" --trace "$tmp/bi.txt"

@@ -15,20 +15,7 @@ exe=$1
 . tests/testlib.sh
 scene=docs/examples/selfcheck.scene
 
-# student builds start from PIPETRACE's objects when they are plain (as in
-# tests/diff.sh); MAKEFLAGS is cleared so that make test passes nothing down
-mkdir -p "$tmp/sb"
-bdir=$(dirname "$exe")
-reuse=
-if [ -f "$bdir/main.o" ] && [ -f "$bdir/builtin.c" ] && ! grep -q __asan_ "$bdir/main.o"; then
-    reuse=1
-    cp -p "$bdir"/*.o "$bdir/builtin.c" "$tmp/sb/"
-fi
-student() {    # student VAR FILE
-    rm -f "$tmp/sb/pipetrace"
-    MAKEFLAGS= MFLAGS= MAKELEVEL= make -s -j2 B="$tmp/sb" "STAGE_$1=$2" \
-        "$tmp/sb/pipetrace" >"$tmp/make.log" 2>&1
-}
+. tests/studentlib.sh
 
 # the verdict each mistake must get: "mistake NAME", "raster NAME" (every
 # vertex agrees, the pixels tell), "silent STAGE", or "none STAGE" (no
@@ -75,6 +62,8 @@ fits() {
 
 "$exe" $scene --format jsonl --trace "$tmp/ref.jsonl"
 "$exe" $scene --trace "$tmp/ref.txt"
+check "sc-0.0 tests/data/diff/selfcheck.jsonl is today's reference trace (else: $exe $scene --format jsonl --trace tests/data/diff/selfcheck.jsonl)" \
+    cmp "$tmp/ref.jsonl" tests/data/diff/selfcheck.jsonl
 n=0
 for name in $(sh tests/student.sh --list | awk '{ print $1 }'); do
     n=$((n + 1))
@@ -85,6 +74,9 @@ for name in $(sh tests/student.sh --list | awk '{ print $1 }'); do
     student "$var" "$tmp/$name.c"
     check "sc-$n.1 $name: the student build" test -x "$tmp/sb/pipetrace"
     "$tmp/sb/pipetrace" $scene --format jsonl --trace "$tmp/got.jsonl" 2>/dev/null
+    # docs/teaching.md shows the verdict on these two stored traces
+    [ "$name" = s4_trunc ] && check "sc-$n.0 tests/data/diff/selfcheck-trunc.jsonl is today's student trace (else: make it again as docs/teaching.md says)" \
+        cmp "$tmp/got.jsonl" tests/data/diff/selfcheck-trunc.jsonl
     "$exe" diff --verdict --show 3 "$tmp/ref.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1; rc=$?
     check "sc-$n.2 $name: exit 1, different" test "$rc" = 1
     awk 'BEGIN { RS = "" } { p = $0 } END { print p }' "$tmp/out" | tr '\n' ' ' >"$tmp/verdict"

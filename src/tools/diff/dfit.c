@@ -86,8 +86,9 @@ static void name_offset(dhyp *hy, const pt_thdr *hd)
 }
 
 /* An offset hypothesis at stage st from the first vertex that differs first
-** there: ACTUAL's values minus EXPECTED's.  Returns 0 when there is none. */
-static int make_offset(const dctx *c, const fitset *fs, int st, dhyp *hy)
+** there: the values of side !ref minus those of side ref, the reference.
+** Returns 0 when there is none. */
+static int make_offset(const dctx *c, const fitset *fs, int st, int ref, dhyp *hy)
 {
     size_t k;
     int j;
@@ -100,8 +101,8 @@ static int make_offset(const dctx *c, const fitset *fs, int st, dhyp *hy)
         const pt_tvrec *a, *b;
         if (fs->first[k] != st) continue;
         if (e->rec[0][st] == PT_DIFF_NONE || e->rec[1][st] == PT_DIFF_NONE) return 0;
-        a = &c->t[0].vx[e->rec[0][st]];
-        b = &c->t[1].vx[e->rec[1][st]];
+        a = &c->t[ref].vx[e->rec[ref][st]];
+        b = &c->t[!ref].vx[e->rec[!ref][st]];
         for (j = 0; j < pt_stage_nvalues((pt_stage)st); j++) {
             if (pt_diff_is_real(st)) {
                 hy->off[j] = b->u.d[j] - a->u.d[j];
@@ -196,22 +197,23 @@ int pt_diff_fit(dctx *c)
     nbase = c->nhy;
     for (k = 0; k < nbase; k++) test_hyp(c, &fs, &c->hy[k], 0);
     for (st = PT_STAGE_CAMERA; st <= PT_STAGE_INDEX; st++)
-        if (!stage_explained(c, st) && c->nhy < PT_DIFF_MAXHYP && make_offset(c, &fs, st, &c->hy[c->nhy]))
+        if (!stage_explained(c, st) && c->nhy < PT_DIFF_MAXHYP && make_offset(c, &fs, st, 0, &c->hy[c->nhy]))
             test_hyp(c, &fs, &c->hy[c->nhy++], 0);
     for (k = 0; k < c->nhy; k++) {
         if (!c->hy[k].full) continue;
         if (c->verdict < 0) c->verdict = (int)k;
         if (k == (size_t)c->verdict || strcmp(c->hy[k].name, c->hy[c->verdict].name)) c->nfull++;
     }
-    /* diff's arguments in the wrong order: the known mistakes with ACTUAL as
-    ** the reference (an offset would fit either way round: not tried) */
-    if (c->verdict < 0 || c->hy[c->verdict].kind == PT_DIFF_H_OFFSET) {
-        for (k = 0; k < nbase; k++) {
-            dhyp h = c->hy[k];
-            if (h.kind == PT_DIFF_H_FLOAT && c->t[0].prec >= 0) continue;
-            test_hyp(c, &fs, &h, 1);
-            if (h.full) { c->swap_hy = h; c->swapped = (int)k; break; }
-        }
+    /* diff's arguments in the wrong order: the hypotheses with ACTUAL as the
+    ** reference (which must then be right, see pt_diff_hyp_vertex: so a
+    ** mistake does not fit both ways round) */
+    for (k = 0; c->verdict < 0 && c->swapped < 0 && k < nbase + PT_NSTAGES; k++) {
+        dhyp h = k < nbase ? c->hy[k] : c->hy[0];
+        if (k >= nbase && (k - nbase < PT_STAGE_CAMERA ||
+                           !make_offset(c, &fs, (int)(k - nbase), 1, &h))) continue;
+        if (h.kind == PT_DIFF_H_FLOAT && c->t[0].prec >= 0) continue;
+        test_hyp(c, &fs, &h, 1);
+        if (h.full) { c->swap_hy = h; c->swapped = (int)k; }
     }
     free(fs.first);
     return 0;
