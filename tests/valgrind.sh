@@ -48,4 +48,6 @@ vg "vg-14 journey: SVG and HTML" 0 journey --vertex 1 --svg "$tmp/j.svg" --html 
 vg "vg-15 diff: JSONL against text" 0 diff "$tmp/a.jsonl" "$tmp/a.txt"
 "$exe" --image "$tmp/c.ppm"
 vg "vg-16 diff: two images" 0 diff "$tmp/c.ppm" "$tmp/c.ppm"
+vg "vg-16a diff: every mistake tested on every vertex, the verdict" 1 diff --verdict \
+    tests/data/diff/selfcheck.jsonl tests/data/diff/selfcheck-trunc.jsonl
 report

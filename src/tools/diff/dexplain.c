@@ -350,7 +350,8 @@ void pt_diff_explain(const dctx *c, const vent *e, int st)
         pt_diff_add(&sb, "%s%s", n++ ? "; " : "", hy->name);
     }
     if (n) {
-        printf("    reproduced here by (each fails elsewhere, see the end):\n");
+        printf("    reproduced here by (%s, see the end):\n", c->verdict >= 0 ?
+               "they fit every vertex: this scene cannot tell them apart" : "each fails elsewhere");
         pt_diff_para("      ", sb.b);
     } else if (prev_known(c, e, st)) {
         printf("    no known mistake reproduces this from EXPECTED's %s record\n",

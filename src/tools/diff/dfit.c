@@ -42,6 +42,9 @@ static void test_hyp(const dctx *c, const fitset *fs, dhyp *hy, int ref)
         if (f == -1) hy->kept += r != 0;
         else hy->repro += r == 1;
     }
+    /* an offset read off one vertex is shown by the others only: with no
+    ** other differing vertex it is no evidence, and is not even listed */
+    if (hy->kind == PT_DIFF_H_OFFSET && hy->repro < 2) hy->repro = 0;
     hy->full = fs->differ > 0 && hy->repro == fs->differ && hy->kept == fs->agree &&
                fs->onesided == 0;
 }
