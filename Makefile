@@ -13,6 +13,7 @@
 #   make install   copy the program, its man page and docs under PREFIX
 #                  (default /usr/local; DESTDIR is put in front, for packages)
 #   make uninstall remove what make install copied
+#   make check-stage STAGE_pixel=FILE.c   a student stage's self-check
 #   make clean
 
 CC      ?= cc
@@ -109,7 +110,7 @@ IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B
 # own; diff's parts listed with the commands).
 TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/dd.o $B/acc_shared.o $B/acc_float.o \
            $B/acc_double.o $B/acc_dd.o $B/accuracy.o $B/journey.o $B/journey_html.o
-CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o \
+CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/dfit.o \
            $B/dpixels.o $B/dsummary.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o $B/cmd_shapes.o $B/cmd_export.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
@@ -204,6 +205,20 @@ bench: $B/bench $B/benchgen $B/baseline $B/pipetrace $B/test_numparse
 	$B/test_numparse 2000000
 	$B/bench $B
 
+# The self-check of a student stage (docs/teaching.md): `make check-stage
+# STAGE_pixel=FILE.c` builds the student build and the reference (build/),
+# runs both on docs/examples/selfcheck.scene, and the reference's diff says
+# whether the stage passes, and if not where and why.
+SELFCHECK = docs/examples/selfcheck.scene
+check-stage: $B/pipetrace
+	@test -n "$(STUDENT)" || { echo "make check-stage: name the stage file, e.g. make check-stage STAGE_pixel=FILE.c" >&2; exit 2; }
+	@$(MAKE) -s B=build STAGE_camera= STAGE_projection= STAGE_image= STAGE_pixel= STAGE_viewport= \
+	    STAGE_framebuffer= STAGE_index= build/pipetrace
+	@build/pipetrace $(SELFCHECK) --format jsonl --trace $B/selfcheck-reference.jsonl
+	@$B/pipetrace $(SELFCHECK) --format jsonl --trace $B/selfcheck-yours.jsonl
+	@echo "check-stage: your $(STUDENT) stage on $(SELFCHECK), against the reference"
+	@build/pipetrace diff --show 3 --verdict $B/selfcheck-reference.jsonl $B/selfcheck-yours.jsonl
+
 sanitize:
 	$(MAKE) B=build-san CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all" test
 
@@ -247,4 +262,5 @@ uninstall:
 clean:
 	rm -rf build build-san build-student build-fuzz
 
-.PHONY: all run test golden docs screenshots bench sanitize fuzz fuzz-build clean install uninstall
+.PHONY: all run test golden docs screenshots bench sanitize fuzz fuzz-build clean install uninstall \
+        check-stage

@@ -49,6 +49,7 @@ cli         1 sh tests/cli.sh $B/pipetrace
 outputs     2 sh tests/outputs.sh $B/pipetrace
 diff        1 sh tests/diff.sh $B/pipetrace
 kraft       2 sh tests/kraft.sh $B/pipetrace $ref
+selfcheck   2 sh tests/selfcheck.sh $B/pipetrace
 extreme     1 sh tests/extreme.sh $B/pipetrace
 teach       1 sh tests/teach.sh $B/pipetrace
 classroom   2 sh tests/classroom.sh $B/pipetrace

@@ -63,4 +63,6 @@ printf 'model m\nshape torus 1e308 1e308 3 3\n' > "$tmp/inf.scene"
 vg "vg-21 a shape whose coordinates overflow" 2 "$tmp/inf.scene"
 vg "vg-22 the list of shapes" 0 shapes
 vg "vg-23 export java" 0 export java docs/examples/shapes/mixed.scene -o "$tmp/Mixed.java" --pixels
+vg "vg-24 diff: every mistake tested on every vertex, the verdict" 1 diff --verdict \
+    tests/data/diff/selfcheck.jsonl tests/data/diff/selfcheck-trunc.jsonl
 report

@@ -25,6 +25,7 @@ typedef double (*rnd_fn)(double);
 
 static double c_round(double x) { return round(x); }            /* ties away from 0 */
 static double floor_half(double x) { return floor(x + 0.5); }   /* the sum rounds */
+static double trunc_half(double x) { return trunc(x + 0.5); }   /* (int64_t)(x + 0.5) */
 
 /* The viewport stage with rounding rnd (NULL: Java's Math.round), x_vp =
 ** round(x_pp) + dx and y_vp = sy * round(y_pp) + oy (the right formula: dx =
@@ -157,6 +158,14 @@ static void mk_floor(const pt_stage_params *par, const pt_cat_val *in, pt_cat_va
     viewport_with(floor_half, -1, -1, par->h, in, out);
 }
 
+/* (int64_t)(x + 0.5): the cast truncates toward zero, so below -0.5 it
+** rounds up.  trunc() of a double is the cast's value wherever the cast is
+** defined, and a value beyond 2^62 has no pixel either way. */
+static void mk_trunc(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    viewport_with(trunc_half, -1, -1, par->h, in, out);
+}
+
 static void mk_noflip1(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
 {
     (void)par;
@@ -172,6 +181,14 @@ static void mk_noflip0(const pt_stage_params *par, const pt_cat_val *in, pt_cat_
 static void mk_nominus1(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
 {
     viewport_with(NULL, 0, -1, par->h, in, out);
+}
+
+static void mk_nooffset(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    (void)par;
+    out->null = in->null;
+    out->n[0] = in->null ? 0 : in->n[0];    /* x_fb = x_vp */
+    out->n[1] = in->null ? 0 : in->n[1];
 }
 
 static void mk_xh(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
@@ -195,9 +212,9 @@ const pt_mistake pt_mistakes[PT_NMISTAKES] = {
     {PT_STAGE_PIXEL, "2 instead of 2.001",
      "x_pp = 0.5 + w/2 * (x_ip + 1): every x_pp moves right by w/4002 * (x_ip + 1), "
      "and the right edge x_ip = 1 lands on w + 0.5, between two pixels", 0, mk_two},
-    {PT_STAGE_PIXEL, "2 instead of 2.001",
-     "x_pp = 0.5 + w/2 * (x_ip + 1) with w/2 in integer arithmetic: half of an odd "
-     "size is lost", 1, mk_two_int},
+    {PT_STAGE_PIXEL, "2 instead of 2.001, with w/2 in integers",
+     "x_pp = 0.5 + w/2 * (x_ip + 1) with w/2 in integer arithmetic (int w): besides the "
+     "2, half a pixel of an odd size is lost", 1, mk_two_int},
     {PT_STAGE_PIXEL, "w and h swapped",
      "x_pp = 0.5 + h/2.001 * (x_ip + 1), y_pp = 0.5 + w/2.001 * (y_ip + 1)", 0, mk_swap_wh},
     {PT_STAGE_VIEWPORT, "C round() instead of Java's Math.round",
@@ -206,6 +223,10 @@ const pt_mistake pt_mistakes[PT_NMISTAKES] = {
     {PT_STAGE_VIEWPORT, "floor(x + 0.5) instead of Java's Math.round",
      "0.49999999999999994 + 0.5 rounds up to 1.0, so floor gives 1 where "
      "Math.round gives 0", 0, mk_floor},
+    {PT_STAGE_VIEWPORT, "truncation toward zero instead of Java's Math.round",
+     "(int64_t)(x_pp + 0.5) truncates toward zero: right for x_pp >= -0.5, but a "
+     "negative x_pp rounds up (-79.46 + 0.5 = -78.96 becomes -78, Math.round gives -79)",
+     0, mk_trunc},
     {PT_STAGE_VIEWPORT, "missing y flip",
      "y_vp = round(y_pp) - 1 instead of h - round(y_pp): the image comes out upside down",
      0, mk_noflip1},
@@ -215,6 +236,9 @@ const pt_mistake pt_mistakes[PT_NMISTAKES] = {
     {PT_STAGE_VIEWPORT, "missing -1 in x_vp",
      "x_vp = round(x_pp) instead of round(x_pp) - 1: one pixel too far right",
      0, mk_nominus1},
+    {PT_STAGE_FRAMEBUFFER, "viewport offset (x_ul, y_ul) forgotten",
+     "x_fb = x_vp, y_fb = y_vp instead of x_ul + x_vp, y_ul + y_vp: the picture sits "
+     "in the framebuffer's upper-left corner, not in the viewport", 0, mk_nooffset},
     {PT_STAGE_INDEX, "index x * H + y",
      "idx = x_fb * H + y_fb (column by column) instead of y_fb * W + x_fb", 0, mk_xh},
     {PT_STAGE_INDEX, "viewport width instead of framebuffer width",

@@ -66,7 +66,7 @@ typedef struct pt_mistake {
                                  /* the stage with the mistake, as pt_cat_right */
 } pt_mistake;
 
-#define PT_NMISTAKES 12
+#define PT_NMISTAKES 14
 extern const pt_mistake pt_mistakes[PT_NMISTAKES];
 
 /* A known mistake of the rasterizer's rounding. */

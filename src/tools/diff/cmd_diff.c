@@ -19,28 +19,37 @@
 #include "tools/diff/diff.h"
 
 static const char diff_usage[] =
-"usage: pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N]\n"
+"usage: pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N] [--verdict]\n"
 "       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE] [--show N]\n"
 "Compare two traces (JSON Lines or text, in any mix) vertex by vertex: for\n"
-"each vertex the first stage where they differ, both values, and the known\n"
-"mistake that reproduces ACTUAL from EXPECTED's previous stage, if one does;\n"
-"then the lit pixels.  Or compare two images pixel by pixel: binary (P6) or\n"
-"plain (P3) PPM, or PNG as pipetrace writes it (uncompressed).\n"
+"each vertex the first stage where they differ and both values; then the\n"
+"known mistake that explains every vertex (recomputed from EXPECTED's previous\n"
+"stage, it gives ACTUAL's values where they differ and leaves the others as\n"
+"they are), if one does, else the partial candidates; then the lit pixels.\n"
+"Or compare two images pixel by pixel: binary (P6) or plain (P3) PPM, or PNG\n"
+"as pipetrace writes it (uncompressed).\n"
 "\n"
 "  --tol ABS         doubles agree when |a - b| <= max(ABS, REL * max(|a|, |b|))\n"
 "  --rel REL         (defaults 0 and 1e-9; integers must be equal); a text trace\n"
 "                    adds half a unit in its last printed digit\n"
 "  --show N          list at most N vertices and N pixels of each kind\n"
 "                    (default 10)\n"
-"  --image-out FILE  images: write FILE (P6 PPM) with the differing pixels red and\n"
-"                    the others EXPECTED's, dimmed to gray\n"
+"  --verdict         end with a verdict: pass, or the stage that goes wrong\n"
+"                    first, the evidence and the mistake that explains it all\n"
+"                    (make check-stage uses it)\n"
+"  --image-out FILE  images: write FILE (PNG when it ends in .png, else P6 PPM)\n"
+"                    with the differing pixels red, the others EXPECTED's dimmed\n"
 "\n"
-"Exit status: 0 same, 1 different (or a usage error), 2 unreadable input.\n"
+"Exit status, as diff(1): 0 same, 1 different, 2 trouble (unreadable input\n"
+"or a usage error).\n"
 "Docs: docs/teaching.md\n";
 
+/* A usage error: the message, and diff's exit status for trouble (2, as
+** diff(1): 1 means "different"). */
 static int usage_error(const char *fmt, const char *arg)
 {
-    return pt_cli_usage("diff", fmt, arg);
+    pt_cli_usage("diff", fmt, arg);
+    return PT_EXIT_TROUBLE;
 }
 
 /* A finite number >= 0 from s, or -1. */
@@ -71,6 +80,7 @@ static int parse_args(dopts *o, int argc, char **argv)
                     !strcmp(a, "--image-out") || !strcmp(a, "--show");
 
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(diff_usage, stdout); return 0; }
+        if (!strcmp(a, "--verdict")) { o->verdict = 1; continue; }
         if (takes && !val) return usage_error("option '%s' needs a value", a);
         if (takes) k++;
         if (!strcmp(a, "--tol") || !strcmp(a, "--rel")) {
@@ -106,8 +116,7 @@ static int trace_diff(dctx *c)
     rc = pt_diff_fill_table(c);
     if (rc) return rc;
     if (pt_diff_fill_translations(c) != 0 || pt_diff_find_silent(c) != 0) return -1;
-    c->mk_hits = calloc(PT_NMISTAKES, sizeof *c->mk_hits);
-    if (!c->mk_hits) return -1;
+    if (pt_diff_fit(c) != 0) return -1;
 
     pt_diff_print_intro(c);
     hdr_differ = pt_diff_compare_headers(c);
@@ -125,6 +134,7 @@ static int trace_diff(dctx *c)
     pt_diff_report_one_sided(c);
     pt_diff_report_silent(c);
     pt_diff_report_stage_only(c);
+    pt_diff_report_fit(c);
 
     /* pixels: compared when both traces were rasterized with raster records */
     pixels_compared = (c->t[0].npx || c->t[0].ncl) && (c->t[1].npx || c->t[1].ncl);
@@ -232,7 +242,6 @@ done:
     free(c->vt.slot);
     free(c->tr);
     free(c->has_tr);
-    free(c->mk_hits);
     free(c->silent[0]);
     free(c->silent[1]);
     free(c);

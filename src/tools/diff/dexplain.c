@@ -1,12 +1,13 @@
 /*
-** src/tools/diff/dexplain.c -- pipetrace diff: a vertex's first difference explained by a known mistake
+** src/tools/diff/dexplain.c -- pipetrace diff: one hypothesis on one vertex, and a vertex's difference explained
 ** See LICENSE for copyright and license.
 **
-** A mistake of the catalogue (src/tools/catalogue.h) is named only when it
-** is shown for this vertex: the diverging stage is recomputed from EXPECTED's
-** value of the stage before, with the mistake, and must reproduce ACTUAL's
-** value within the tolerance (from a text trace, for some input within its
-** printed digits; see reproduces()).  Stage 5 has no known mistake; only the
+** A hypothesis (dfit.c) says how a stage went wrong.  On one vertex it is
+** tested by recomputing that stage the wrong way from the reference's value
+** of the stage before; the result must be the other side's value within the
+** tolerance (from a text trace, for some input within its printed digits; see
+** reproduces()).  Float arithmetic is tested on the values themselves: the
+** other side's are floats, within float error of the reference's.  Only the
 ** classic camera's mistakes are known.
 */
 #include <inttypes.h>
@@ -69,7 +70,7 @@ static int samples(double x, double s, double out[16])
 }
 
 /* 1 when the ranges r[] of the mistake's results hold ACTUAL's record arec. */
-static int in_ranges(const dctx *c, const vrange r[4], int st, const pt_tvrec *arec)
+static int in_ranges(const dctx *c, const vrange r[4], int st, int aside, const pt_tvrec *arec)
 {
     int k;
 
@@ -80,7 +81,7 @@ static int in_ranges(const dctx *c, const vrange r[4], int st, const pt_tvrec *a
             if (isinf(a)) { if (!(a > 0 ? r[k].pinf : r[k].ninf)) return 0; continue; }
             if (!r[k].any_finite) return 0;
             allow = fmax(c->o->tol, c->o->rel * fmax(fabs(a), fmax(fabs(r[k].lo), fabs(r[k].hi))));
-            allow += pt_diff_slack(c, 1, a);
+            allow += pt_diff_slack(c, aside, a);
             if (a < r[k].lo - allow || a > r[k].hi + allow) return 0;
         } else if (arec->flags & PT_REC_NULL) {
             if (!r[k].any_null) return 0;
@@ -89,6 +90,21 @@ static int in_ranges(const dctx *c, const vrange r[4], int st, const pt_tvrec *a
         }
     }
     return 1;
+}
+
+/* Hypothesis h's stage applied to in, as pt_cat_right. */
+static void happly(const dhyp *h, const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
+{
+    int k;
+
+    memset(out, 0, sizeof *out);
+    if (h->kind == PT_DIFF_H_MISTAKE) { h->mk->apply(par, in, out); return; }
+    pt_cat_right(h->stage, par, in, out);
+    if (pt_diff_is_real(h->stage)) {
+        for (k = 0; k < 3; k++) out->d[k] += h->off[k];
+    } else if (!out->null) {
+        for (k = 0; k < 2; k++) out->n[k] += h->ioff[k];
+    }
 }
 
 /* 1 when mistake mk reproduces ACTUAL's record arec of stage st from the input
@@ -102,7 +118,7 @@ static int in_ranges(const dctx *c, const vrange r[4], int st, const pt_tvrec *a
 **     the samples() of each, keeping only inputs that the right formula takes
 **     to EXPECTED's own record erec (a tie printed "-2.500000" stays a tie).
 ** An integer input (framebuffer -> index) is exact. */
-static int reproduces(const dctx *c, const pt_mistake *mk, const hctx *h, const pt_cat_val *in,
+static int reproduces(const dctx *c, const dhyp *mk, int ref, const hctx *h, const pt_cat_val *in,
                       const double in_slack[3], int in_real, int st,
                       const pt_tvrec *erec, const pt_tvrec *arec, pt_cat_val *at_in)
 {
@@ -112,7 +128,7 @@ static int reproduces(const dctx *c, const pt_mistake *mk, const hctx *h, const 
 
     memset(r, 0, sizeof r);
     memset(at_in, 0, sizeof *at_in);
-    mk->apply(&h->par, in, at_in);
+    happly(mk, &h->par, in, at_in);
     if (!in_real) {
         for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) range_add(&r[k], pt_diff_is_real(st), at_in, k);
     } else if (pt_diff_is_real(st)) {
@@ -124,8 +140,7 @@ static int reproduces(const dctx *c, const pt_mistake *mk, const hctx *h, const 
             x = *in;
             for (j = 0; j < nvary; j++, q /= 3)
                 x.d[vary[j]] += (q % 3 - 1) * in_slack[vary[j]];
-            memset(&out, 0, sizeof out);
-            mk->apply(&h->par, &x, &out);
+            happly(mk, &h->par, &x, &out);
             for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) range_add(&r[k], 1, &out, k);
         }
     } else {
@@ -139,20 +154,19 @@ static int reproduces(const dctx *c, const pt_mistake *mk, const hctx *h, const 
                 pt_cat_right(st, &h->par, &x, &right);
                 if (right.null != ((erec->flags & PT_REC_NULL) != 0) ||
                     (!right.null && right.n[k] != erec->u.n[k])) continue;
-                memset(&out, 0, sizeof out);
-                mk->apply(&h->par, &x, &out);
+                happly(mk, &h->par, &x, &out);
                 range_add(&r[k], 0, &out, k);
             }
         }
     }
-    return in_ranges(c, r, st, arec);
+    return in_ranges(c, r, st, !ref, arec);
 }
 
-/* Fill *h from EXPECTED's header for a vertex of model `model`; 0 when there is
+/* Fill *h from side ref's header (translations: EXPECTED's) for a vertex of model `model`; 0 when there is
 ** no header. */
-static int hctx_of(const dctx *c, uint32_t model, hctx *h)
+static int hctx_of(const dctx *c, int ref, uint32_t model, hctx *h)
 {
-    const pt_thdr *hd = &c->t[0].hdr;
+    const pt_thdr *hd = &c->t[ref].hdr;
 
     if (!hd->have || hd->perspective < 0 || hd->vp_w < 1 || hd->vp_h < 1) return 0;
     h->par.w = hd->vp_w; h->par.h = hd->vp_h;
@@ -168,12 +182,12 @@ static int hctx_of(const dctx *c, uint32_t model, hctx *h)
     return 1;
 }
 
-/* EXPECTED's value of the stage before st for vertex e, into *in with the slack
+/* Side ref's value of the stage before st for vertex e, into *in with the slack
 ** of each real value; *from gets the stage it came from.  A stage left out as
 ** the identity is replaced by the one before it (camera = model when the
 ** translation is 0 0 0; framebuffer = viewport when the viewport is at 0,0).
 ** Returns 0 when there is no such record. */
-static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
+static int prev_value(const dctx *c, int ref, const vent *e, int st, const hctx *h,
                       pt_cat_val *in, double in_slack[3], int *from)
 {
     int p = st - 1, k;
@@ -181,20 +195,20 @@ static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
     const pt_tvrec *r;
 
     if (p < 0) return 0;
-    i = e->rec[0][p];
+    i = e->rec[ref][p];
     if (i == PT_DIFF_NONE && p == PT_STAGE_CAMERA && h->has_t && h->par.translate.x == 0 &&
         h->par.translate.y == 0 && h->par.translate.z == 0)
-        i = e->rec[0][p = PT_STAGE_MODEL];
+        i = e->rec[ref][p = PT_STAGE_MODEL];
     if (i == PT_DIFF_NONE && p == PT_STAGE_FRAMEBUFFER && h->par.x_ul == 0 && h->par.y_ul == 0)
-        i = e->rec[0][p = PT_STAGE_VIEWPORT];
+        i = e->rec[ref][p = PT_STAGE_VIEWPORT];
     if (i == PT_DIFF_NONE) return 0;
-    r = &c->t[0].vx[i];
+    r = &c->t[ref].vx[i];
     memset(in, 0, sizeof *in);
     in_slack[0] = in_slack[1] = in_slack[2] = 0;
     if (pt_diff_is_real(p)) {
         for (k = 0; k < pt_stage_nvalues((pt_stage)p); k++) {
             in->d[k] = r->u.d[k];
-            in_slack[k] = pt_diff_slack(c, 0, r->u.d[k]);
+            in_slack[k] = pt_diff_slack(c, ref, r->u.d[k]);
         }
     } else {
         in->null = (r->flags & PT_REC_NULL) != 0;
@@ -205,7 +219,7 @@ static int prev_value(const dctx *c, const vent *e, int st, const hctx *h,
 }
 
 /* Append the values of stage st in *v to sb: "x_pp = 1.5, y_pp = 2". */
-static void val_str(pbuf *sb, int st, const pt_cat_val *v)
+void pt_diff_val_str(pbuf *sb, int st, const pt_cat_val *v)
 {
     char b[PT_NUMLEN];
     int k;
@@ -218,62 +232,132 @@ static void val_str(pbuf *sb, int st, const pt_cat_val *v)
     }
 }
 
-/* Find the mistakes that reproduce the first difference of e at stage st,
-** count them, and print them when `print`. */
-void pt_diff_explain(dctx *c, const vent *e, int st, int print)
+/* 1 when x is a float: (double)(float)x == x. */
+static int is_float(double x)
+{
+    return !isfinite(x) || (fabs(x) <= 0x1.fffffep127 && (double)(float)x == x);
+}
+
+/* The float hypothesis on one vertex: every value of the other side is a
+** float within float error of the reference's, the error bounded by 16
+** float roundings of the numbers the formula adds (its inputs, the
+** translation, w or h). */
+static int float_fits(const dctx *c, const dhyp *hy, const hctx *h, int ref, const pt_cat_val *in,
+                      const pt_tvrec *erec, const pt_tvrec *arec)
+{
+    int k, st = hy->stage;
+    const double t[3] = {h->par.translate.x, h->par.translate.y, h->par.translate.z};
+
+    (void)c;
+    for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
+        double e = erec->u.d[k], a = arec->u.d[k], scale;
+        if (!is_float(a)) return 0;
+        if (!isfinite(e) || !isfinite(a)) { if (!(e == a || (isnan(e) && isnan(a)))) return 0; continue; }
+        scale = fabs(e) + fabs(in->d[k]) + 1;
+        if (st == PT_STAGE_CAMERA) scale += fabs(t[k]);
+        if (st == PT_STAGE_IMAGE) scale += fabs(in->d[k] / in->d[2]);
+        if (st == PT_STAGE_PIXEL) scale += k ? h->par.h : h->par.w;
+        if (!(fabs(a - e) <= 16 * 0x1p-24 * scale)) return 0;
+    }
+    (void)ref;
+    return 1;
+}
+
+int pt_diff_hyp_vertex(const dctx *c, const dhyp *hy, const vent *e, int ref,
+                       pt_cat_val *in, int *from, pt_cat_val *got)
 {
     hctx h;
-    pt_cat_val in, out;
+    dhyp right;                  /* the right formula: an offset of 0 */
     double in_slack[3];
-    int from, found = 0;
-    size_t k;
-    const pt_tvrec *erec = &c->t[0].vx[e->rec[0][st]];
-    const pt_tvrec *arec = &c->t[1].vx[e->rec[1][st]];
-    const char *last = NULL;
-    pbuf sb;
+    int st = hy->stage;
+    uint32_t i = e->rec[ref][st], j = e->rec[!ref][st];
 
     memset(&h, 0, sizeof h);
-    if (!hctx_of(c, e->model, &h)) {
-        if (print) printf("    (no known mistake checked: %s)\n", c->t[0].hdr.have ?
-                          "those known are the classic camera's" : "EXPECTED has no header");
-        return;
-    }
+    memset(got, 0, sizeof *got);
+    if (i == PT_DIFF_NONE || j == PT_DIFF_NONE || !hctx_of(c, ref, e->model, &h)) return -1;
+    if (st == PT_STAGE_CAMERA && !h.has_t) return -1;
+    if (!prev_value(c, ref, e, st, &h, in, in_slack, from)) return -1;
+    /* the reference must be right here: its value follows from its previous
+    ** stage by the right formula (reproduces() with the sides as given
+    ** compares with side !ref, so ref's own record is passed as side !!ref) */
+    memset(&right, 0, sizeof right);
+    right.stage = st;
+    right.kind = PT_DIFF_H_OFFSET;
+    if (!reproduces(c, &right, !ref, &h, in, in_slack, pt_diff_is_real(*from), st,
+                    &c->t[ref].vx[i], &c->t[ref].vx[i], got)) return -1;
+    if (hy->kind == PT_DIFF_H_FLOAT)
+        return float_fits(c, hy, &h, ref, in, &c->t[ref].vx[i], &c->t[!ref].vx[j]);
+    return reproduces(c, hy, ref, &h, in, in_slack, pt_diff_is_real(*from), st,
+                      &c->t[ref].vx[i], &c->t[!ref].vx[j], got);
+}
+
+/* 1 when EXPECTED has the record stage st is recomputed from, for vertex e. */
+static int prev_known(const dctx *c, const vent *e, int st)
+{
+    hctx h;
+    pt_cat_val in;
+    double sl[3];
+    int from;
+
+    memset(&h, 0, sizeof h);
+    return hctx_of(c, 0, e->model, &h) && prev_value(c, 0, e, st, &h, &in, sl, &from);
+}
+
+/* Print what the hypotheses say of vertex e, whose first difference is at
+** stage st: the check of the one that explains the trace, or which partial
+** ones reproduce it, or that none does. */
+void pt_diff_explain(const dctx *c, const vent *e, int st)
+{
+    pbuf sb;
+    pt_cat_val in, got;
+    int from = st, n = 0;
+    size_t k;
+
     if (st == PT_STAGE_MODEL) {
-        if (print) printf("    (the model stage holds the scene's own numbers: are these "
-                          "traces of one scene?)\n");
+        printf("    (the model stage holds the scene's own numbers: are these "
+               "traces of one scene?)\n");
         return;
     }
-    if (!prev_value(c, e, st, &h, &in, in_slack, &from)) {
-        if (print) printf("    (no known mistake checked: EXPECTED has no %s record to "
-                          "recompute from)\n", pt_stage_infos[st - 1].name);
+    if (!c->nhy) {
+        printf("    (no known mistake checked: %s)\n", !c->t[0].hdr.have ? "EXPECTED has no header"
+               : "those known are the classic camera's");
         return;
     }
-    for (k = 0; k < PT_NMISTAKES; k++) {
-        const pt_mistake *mk = &pt_mistakes[k];
-        if (mk->stage != st) continue;
-        if (st == PT_STAGE_CAMERA && !h.has_t) continue;
-        if (st == PT_STAGE_IMAGE && !h.par.perspective) continue;
-        if (mk->odd_only && h.par.w % 2 == 0 && h.par.h % 2 == 0) continue;
-        if (!reproduces(c, mk, &h, &in, in_slack, pt_diff_is_real(from), st, erec, arec, &out)) continue;
-        if (last && !strcmp(last, mk->name)) continue;   /* a second form of the same */
-        last = mk->name;
-        found++;
-        c->mk_hits[k]++;
-        if (!print) continue;
-        printf("    likely mistake: %s\n", mk->name);
-        pt_diff_para("      ", mk->how);
+    if (c->verdict >= 0 && c->nfull == 1) {
+        const dhyp *hy = &c->hy[c->verdict];
+        if (pt_diff_hyp_vertex(c, hy, e, 0, &in, &from, &got) != 1 || hy->stage != st) return;
+        printf("    likely mistake: %s\n", hy->name);
         memset(&sb, 0, sizeof sb);
-        pt_diff_add(&sb, "check: the %s stage recomputed with it from EXPECTED's %s record (",
-                    pt_stage_infos[st].name, pt_stage_infos[from].name);
-        val_str(&sb, from, &in);
-        pt_diff_add(&sb, ") gives ");
-        val_str(&sb, st, &out);
-        pt_diff_add(&sb, ", as ACTUAL has%s.", c->t[0].prec >= 0 || c->t[1].prec >= 0 ?
-                    " (within the printed digits)" : "");
+        if (hy->kind == PT_DIFF_H_FLOAT) {
+            pt_diff_add(&sb, "check: ACTUAL's %s values are floats, within float error of "
+                        "EXPECTED's.", pt_stage_infos[st].name);
+        } else {
+            pt_diff_add(&sb, "check: the %s stage recomputed with it from EXPECTED's %s record (",
+                        pt_stage_infos[st].name, pt_stage_infos[from].name);
+            pt_diff_val_str(&sb, from, &in);
+            pt_diff_add(&sb, ") gives ");
+            pt_diff_val_str(&sb, st, &got);
+            pt_diff_add(&sb, ", as ACTUAL has%s; it does so for every vertex (see the end).",
+                        c->t[0].prec >= 0 || c->t[1].prec >= 0 ? " (within the printed digits)" : "");
+        }
         pt_diff_para("      ", sb.b);
+        return;
     }
-    if (!found) {
-        if (print) printf("    no known mistake reproduces this from EXPECTED's %s record\n",
-                          pt_stage_infos[from].name);
+    memset(&sb, 0, sizeof sb);
+    for (k = 0; k < c->nhy; k++) {
+        const dhyp *hy = &c->hy[k];
+        if (hy->stage != st || pt_diff_hyp_vertex(c, hy, e, 0, &in, &from, &got) != 1) continue;
+        pt_diff_add(&sb, "%s%s", n++ ? "; " : "", hy->name);
+    }
+    if (n) {
+        printf("    reproduced here by (%s, see the end):\n", c->verdict >= 0 ?
+               "they fit every vertex: this scene cannot tell them apart" : "each fails elsewhere");
+        pt_diff_para("      ", sb.b);
+    } else if (prev_known(c, e, st)) {
+        printf("    no known mistake reproduces this from EXPECTED's %s record\n",
+               pt_stage_infos[st - 1].name);
+    } else {
+        printf("    (no known mistake checked: EXPECTED has no %s record to "
+               "recompute from)\n", pt_stage_infos[st - 1].name);
     }
 }

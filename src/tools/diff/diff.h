@@ -8,8 +8,11 @@
 **   dsummary.c   the intro and the headers; silent and one-sided stages; the
 **                summary paragraph
 **   dvertex.c    the vertex table and the comparison, vertex by vertex
-**   dexplain.c   a vertex's first difference explained with the catalogue's
-**                known mistakes (src/tools/catalogue.h)
+**   dfit.c       the hypotheses (the catalogue's known mistakes, src/tools/
+**                catalogue.h, and patterns read off the numbers), each tested on
+**                every vertex; the verdict
+**   dexplain.c   one hypothesis on one vertex; a vertex's first difference
+**                explained
 **   dpixels.c    the lit pixels, and the rasterizer replayed on a segment
 **   dprint.c     numbers, paragraphs, names
 ** The types below are diff's own (short names, never seen outside this
@@ -35,6 +38,7 @@ typedef struct dopts {
     double tol, rel;             /* tolerance for doubles */
     const char *image_out;       /* --image-out, or NULL */
     size_t show;                 /* vertices and pixels listed */
+    int verdict;                 /* --verdict: end with a verdict paragraph */
 } dopts;
 
 /* A growing string for paragraphs. */
@@ -58,6 +62,25 @@ typedef struct vtab {
     size_t nslot;                /* power of two > 2 n */
 } vtab;
 
+/* A hypothesis: one stage computed some wrong way.  It is named only when it
+** reproduces ACTUAL on every vertex (dfit.c): where the traces differ and
+** where they agree. */
+enum { PT_DIFF_H_MISTAKE, PT_DIFF_H_OFFSET, PT_DIFF_H_FLOAT };
+typedef struct dhyp {
+    int stage;                   /* pt_stage it is made in */
+    int kind;                    /* PT_DIFF_H_* */
+    const pt_mistake *mk;        /* PT_DIFF_H_MISTAKE: the catalogue's */
+    double off[3];               /* PT_DIFF_H_OFFSET: added to a real stage's values */
+    int64_t ioff[2];             /* ... to an integer stage's */
+    char name[96];               /* what was done */
+    char how[320];               /* the formula, and why it goes wrong */
+    size_t repro;                /* differing vertices it reproduces */
+    size_t kept;                 /* agreeing vertices it leaves as they are */
+    int full;                    /* 1: it explains every vertex */
+} dhyp;
+
+#define PT_DIFF_MAXHYP (PT_NMISTAKES + 16)
+
 /* Everything one trace diff needs. */
 typedef struct dctx {
     const dopts *o;
@@ -69,9 +92,20 @@ typedef struct dctx {
     /* counts */
     size_t agree, differ, only[2];
     size_t first_at[PT_NSTAGES_ALL];    /* vertices that first differ at each stage */
+    size_t first_ex[PT_NSTAGES_ALL];    /* 1 + vt index of the first of them, or 0 */
     size_t stage_only[2][PT_NSTAGES_ALL];   /* records without a partner */
     size_t shown;                /* vertices listed */
-    size_t *mk_hits;             /* per mistake: vertices it reproduces */
+    dhyp hy[PT_DIFF_MAXHYP];     /* the hypotheses tested (dfit.c) */
+    size_t nhy;
+    int verdict;                 /* hy[] index of the one that explains all, or -1 */
+    int nfull;                   /* hypotheses (by name) that explain all */
+    int swapped;                 /* hy index that explains all with the sides
+                                 ** swapped, or -1 */
+    dhyp swap_hy;                /* ... that hypothesis, its fit swapped */
+    size_t fit_differ, fit_agree;   /* the vertices the fits count */
+    int px_shift;                /* 1: ACTUAL's lit pixels are EXPECTED's moved */
+    int64_t px_d[2];             /* ... by (dx, dy) */
+    size_t px_out;               /* ... this many of them out of the framebuffer */
     size_t agree_clip, differ_clip;     /* of agree and differ: matrix clip points */
     unsigned *silent[2];         /* silent[s][model id]: bit st when side s has no
                                  ** record of stage st for that model though its
@@ -149,16 +183,51 @@ double pt_diff_slack(const dctx *c, int s, double x);
 /* 1 when a (EXPECTED) and b (ACTUAL) agree within the tolerance. */
 int pt_diff_same_real(const dctx *c, double a, double b);
 
+/* Append "x_pp expected 1.5, actual 2" for each value of stage st that
+** differs between vertex e's records. */
+void pt_diff_evidence(const dctx *c, const vent *e, int st, pbuf *s);
+
 /* Compare vertex e, present on both sides, stage by stage; count it, and print
 ** and explain its first difference while fewer than --show are listed. */
 void pt_diff_compare_vertex(dctx *c, const vent *e);
 
+/* The first stage where vertex e differs, -1 when it agrees at every stage
+** both sides hold, -2 when one side has none of its records. */
+int pt_diff_first_stage(const dctx *c, const vent *e);
+
 /* ===== dexplain.c ===== */
 
-/* Find the known mistakes that reproduce e's first difference, at stage st,
-** from EXPECTED's previous stage; count them in c->mk_hits, print them when
-** print. */
-void pt_diff_explain(dctx *c, const vent *e, int st, int print);
+/* Hypothesis h on vertex e, with side ref (0; 1: the sides swapped) as the
+** reference: its stage recomputed from ref's previous stage; *in, *from and
+** *got get the input, its stage and the result.  Returns 1 when that gives
+** the other side's record (within the tolerance and printed digits), 0 when
+** not, -1 when it cannot be tested (records missing). */
+int pt_diff_hyp_vertex(const dctx *c, const dhyp *h, const vent *e, int ref,
+                       pt_cat_val *in, int *from, pt_cat_val *got);
+
+/* Print what the hypotheses say of vertex e, whose first difference is at
+** stage st. */
+void pt_diff_explain(const dctx *c, const vent *e, int st);
+
+/* Append the values of stage st in *v to sb: "x_pp = 1.5, y_pp = 2". */
+void pt_diff_val_str(pbuf *sb, int st, const pt_cat_val *v);
+
+/* ===== dfit.c ===== */
+
+/* Make the hypotheses and test each on every vertex (c->hy, verdict,
+** swapped).  Returns 0, or -1 when out of memory. */
+int pt_diff_fit(dctx *c);
+
+/* Print the hypotheses that reproduce any vertex, with their fit. */
+void pt_diff_report_fit(const dctx *c);
+
+/* Append the verdict to the summary paragraph s. */
+void pt_diff_verdict(const dctx *c, pbuf *s);
+
+/* Print --verdict's paragraph: pass, or where it goes wrong first (stage
+** top, -1 when no vertex differs), the evidence and the mistake if one
+** explains all.  px_differ: the lit pixels differ; rs: the raster check. */
+void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, const rstat *rs);
 
 /* ===== dpixels.c ===== */
 

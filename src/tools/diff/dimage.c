@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "io/outfile.h"
+#include "io/png.h"
 #include "tools/diff/diff.h"
 
 /* The color of (x, y) in img, or NULL outside it. */
@@ -25,35 +26,82 @@ static void print_rgb(const unsigned char *c)
     else printf("(outside)  ");
 }
 
-/* Write the highlight: differing pixels red, the others a's, dimmed to gray. */
+/* Write the highlight: differing pixels red, the others a's, dimmed to gray;
+** PNG when path ends in ".png", else binary PPM (P6). */
 static int write_highlight(const char *path, const pt_ppm *a, const pt_ppm *b, int w, int h)
 {
     pt_outfile out = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
-    unsigned char *row = malloc(3 * (size_t)w);
-    int x, y;
+    pt_fb fb;
+    int x, y, bad;
 
-    if (!row) { fputs("pipetrace: out of memory\n", stderr); return -1; }
-    if (pt_outfile_open(&out, path, err, sizeof err) != 0) {
-        fprintf(stderr, "pipetrace: %s\n", err);
-        free(row);
-        return -1;
-    }
-    fprintf(out.f, "P6\n%d %d\n255\n", w, h);
+    fb.w = w;
+    fb.h = h;
+    fb.rgb = malloc(3 * (size_t)w * (size_t)h);
+    if (!fb.rgb) { fputs("pipetrace: out of memory\n", stderr); return -1; }
     for (y = 0; y < h; y++) {
         for (x = 0; x < w; x++) {
             const unsigned char *ca = rgb_at(a, x, y), *cb = rgb_at(b, x, y);
-            unsigned char *p = row + 3 * (size_t)x;
+            unsigned char *p = fb.rgb + 3 * ((size_t)y * (size_t)w + (size_t)x);
             if (!ca || !cb || memcmp(ca, cb, 3) != 0) { p[0] = 255; p[1] = 0; p[2] = 0; }
             else {                          /* luma / 3: the picture stays readable */
                 int g = (299 * ca[0] + 587 * ca[1] + 114 * ca[2]) / 3000;
                 p[0] = p[1] = p[2] = (unsigned char)g;
             }
         }
-        if (fwrite(row, 1, 3 * (size_t)w, out.f) != 3 * (size_t)w) break;
     }
-    free(row);
-    return pt_outfile_finish(&out, y < h || ferror(out.f), "pipetrace");
+    if (pt_outfile_open(&out, path, err, sizeof err) != 0) {
+        fprintf(stderr, "pipetrace: %s\n", err);
+        free(fb.rgb);
+        return -1;
+    }
+    if (pt_path_is_png(path)) {
+        bad = pt_fb_write_png(&fb, out.f) != 0;
+    } else {
+        fprintf(out.f, "P6\n%d %d\n255\n", w, h);
+        bad = fwrite(fb.rgb, 1, 3 * (size_t)w * (size_t)h, out.f) != 3 * (size_t)w * (size_t)h;
+    }
+    free(fb.rgb);
+    return pt_outfile_finish(&out, bad || ferror(out.f), "pipetrace");
+}
+
+/* 1 when b is a moved by (dx, dy) != (0, 0): every pixel of b is a's from
+** (x - dx, y - dy), or a's background (its pixel (0, 0)) where that lies
+** outside a.  The shift is read off the boxes of the pixels that are not
+** the background.  Same sizes only. */
+static int image_shift(const pt_ppm *a, const pt_ppm *b, int *dx, int *dy)
+{
+    const unsigned char *bg = a->rgb;
+    int box[2][4], k, x, y;
+
+    if (a->w != b->w || a->h != b->h) return 0;
+    for (k = 0; k < 2; k++) {
+        const pt_ppm *m = k ? b : a;
+        box[k][0] = m->w; box[k][1] = m->h; box[k][2] = -1; box[k][3] = -1;
+        for (y = 0; y < m->h; y++)
+            for (x = 0; x < m->w; x++) {
+                if (!memcmp(rgb_at(m, x, y), bg, 3)) continue;
+                if (x < box[k][0]) box[k][0] = x;
+                if (y < box[k][1]) box[k][1] = y;
+                if (x > box[k][2]) box[k][2] = x;
+                if (y > box[k][3]) box[k][3] = y;
+            }
+        if (box[k][2] < 0) return 0;
+    }
+    /* the box's corner that stays inside: the upper-left one unless it moved out */
+    *dx = box[1][0] - box[0][0];
+    *dy = box[1][1] - box[0][1];
+    if (box[1][0] == 0) *dx = box[1][2] - box[0][2];
+    if (box[1][1] == 0) *dy = box[1][3] - box[0][3];
+    if (*dx == 0 && *dy == 0) return 0;
+    for (y = 0; y < b->h; y++)
+        for (x = 0; x < b->w; x++) {
+            int sx = x - *dx, sy = y - *dy;
+            const unsigned char *want = sx >= 0 && sy >= 0 && sx < a->w && sy < a->h ?
+                                        rgb_at(a, sx, sy) : bg;
+            if (memcmp(rgb_at(b, x, y), want, 3)) return 0;
+        }
+    return 1;
 }
 
 int pt_diff_images(const dopts *o, const pt_ppm img[2])
@@ -95,6 +143,8 @@ int pt_diff_images(const dopts *o, const pt_ppm img[2])
     if (ndiff)
         printf("%zu of %zu pixels differ, all within the box (x, y) = (%d, %d) .. (%d, %d).\n",
                ndiff, (size_t)w * (size_t)h, x0, y0, x1, y1);
+    if (ndiff && image_shift(a, b, &x, &y))
+        printf("ACTUAL is EXPECTED moved by (%d, %d): the same picture, shifted.\n", x, y);
     else
         printf("The images are the same: %d x %d pixels.\n", w, h);
     if (o->image_out) {

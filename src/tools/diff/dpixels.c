@@ -278,6 +278,66 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
     return rc;
 }
 
+/* 1 when the sorted pixels p[0..n) hold one at (x, y), whatever its index. */
+static int has_pixel(const pkey *p, size_t n, int64_t x, int64_t y)
+{
+    size_t lo = 0, hi = n;
+
+    while (lo < hi) {                       /* the first one at or past (y, x) */
+        size_t mid = lo + (hi - lo) / 2;
+        if (p[mid].y < y || (p[mid].y == y && p[mid].x < x)) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo < n && p[lo].y == y && p[lo].x == x;
+}
+
+/* 1 when the pixels b are the pixels a moved by (dx, dy), (dx, dy) != (0, 0):
+** each of a moved lands on one of b unless it leaves the W x H framebuffer
+** (counted in *out), and each of b comes from one of a. */
+static int is_shift(const pkey *a, size_t na, const pkey *b, size_t nb, int64_t dx, int64_t dy,
+                    int64_t W, int64_t H, size_t *out)
+{
+    size_t k;
+
+    *out = 0;
+    if ((dx == 0 && dy == 0) || !na || !nb) return 0;
+    for (k = 0; k < na; k++) {
+        int64_t x = a[k].x + dx, y = a[k].y + dy;
+        if (!pt_diff_small(a[k].x) || !pt_diff_small(a[k].y)) return 0;
+        if (x < 0 || y < 0 || x >= W || y >= H) { ++*out; continue; }
+        if (!has_pixel(b, nb, x, y)) return 0;
+    }
+    for (k = 0; k < nb; k++) {
+        if (!pt_diff_small(b[k].x) || !pt_diff_small(b[k].y)) return 0;
+        if (!has_pixel(a, na, b[k].x - dx, b[k].y - dy)) return 0;
+    }
+    return 1;
+}
+
+/* Whether ACTUAL's lit pixels are EXPECTED's moved: tried with the shift of
+** the first pixels (top row first) and of the last ones; into c->px_shift. */
+static void find_shift(dctx *c, const pkey *a, size_t na, const pkey *b, size_t nb)
+{
+    const pt_thdr *hd = &c->t[0].hdr;
+    int64_t W = hd->have ? hd->fb_w : INT64_MAX, H = hd->have ? hd->fb_h : INT64_MAX;
+    int64_t d[2][2];
+    size_t out;
+    int k;
+
+    c->px_shift = 0;
+    if (!na || !nb) return;
+    d[0][0] = b[0].x - a[0].x; d[0][1] = b[0].y - a[0].y;
+    d[1][0] = b[nb - 1].x - a[na - 1].x; d[1][1] = b[nb - 1].y - a[na - 1].y;
+    for (k = 0; k < 2; k++)
+        if (is_shift(a, na, b, nb, d[k][0], d[k][1], W, H, &out)) {
+            c->px_shift = 1;
+            c->px_d[0] = d[k][0];
+            c->px_d[1] = d[k][1];
+            c->px_out = out;
+            return;
+        }
+}
+
 /* Compare the sets of lit pixels: count the missing and extra ones into
 ** *nmiss and *nextra, and list a few of each.  nlit[s]: distinct pixels of
 ** side s. */
@@ -296,6 +356,17 @@ int pt_diff_compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2
     for (pass = 0; pass < 3; pass++) {
         size_t a = 0, b = 0, shown = 0;
         int want = pass - 1;                /* the side listed: 0 missing, 1 extra */
+        if (pass == 1 && count[0] && count[1]) find_shift(c, p[0], n[0], p[1], n[1]);
+        if (pass == 1 && c->px_shift) {
+            pbuf sb;
+            memset(&sb, 0, sizeof sb);
+            pt_diff_add(&sb, "Lit pixels: %zu in EXPECTED, %zu in ACTUAL: ACTUAL's are EXPECTED's "
+                        "moved by (%" PRId64 ", %" PRId64 ")", n[0], n[1], c->px_d[0], c->px_d[1]);
+            if (c->px_out) pt_diff_add(&sb, ", %zu of them out of the framebuffer", c->px_out);
+            pt_diff_add(&sb, ".");
+            pt_diff_para("", sb.b);
+            break;
+        }
         if (pass == 1 && (count[0] || count[1]))
             printf("Lit pixels: %zu in EXPECTED, %zu in ACTUAL.\n", n[0], n[1]);
         if (pass && !count[want]) continue;
@@ -350,6 +421,13 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
     pt_diff_para("  ", sb.b);
     for (k = 0; rs->ends_ok && k < PT_NRASTER_MISTAKES; k++) {
         if (!rs->hits[k]) continue;
+        if (rs->hits[k] < rs->segs_differ) {   /* never a confident name for part of it */
+            memset(&sb, 0, sizeof sb);
+            pt_diff_add(&sb, "partial: %s reproduces %zu of the %zu segments that differ: it does "
+                        "NOT explain them.", pt_raster_mistakes[k].name, rs->hits[k], rs->segs_differ);
+            pt_diff_para("  ", sb.b);
+            continue;
+        }
         printf("  likely mistake: %s\n", pt_raster_mistakes[k].name);
         pt_diff_para("    ", pt_raster_mistakes[k].how);
         memset(&sb, 0, sizeof sb);
@@ -357,7 +435,7 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
                     ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round and "
                     "ACTUAL's with it", rs->ends[0], rs->ends[1], rs->ends[2], rs->ends[3]);
         if (rs->segs_differ > 1)
-            pt_diff_add(&sb, "; so it does for %zu of the %zu segments", rs->hits[k], rs->segs_differ);
+            pt_diff_add(&sb, "; so it does for all %zu segments that differ", rs->segs_differ);
         pt_diff_add(&sb, ".");
         pt_diff_para("    ", sb.b);
     }

@@ -256,6 +256,10 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         if (pixels_compared) pt_diff_add(&s, ", and the same %zu lit pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
         else pt_diff_add(&s, ".");
         pt_diff_para("", s.b);
+        if (c->o->verdict) {
+            printf("\n");
+            pt_diff_print_verdict(c, 0, -1, 0, rs);
+        }
         return PT_EXIT_OK;
     }
     for (k = 0; k < 2; k++)
@@ -277,7 +281,6 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
     for (st = 0; st < PT_NSTAGES_ALL; st++)
         if (c->first_at[st] && (top < 0 || c->first_at[st] > c->first_at[top])) top = st;
     if (top >= 0) {
-        size_t best = PT_NMISTAKES;
         int quiet = -1;                     /* a silent stage before top */
         for (k = 0; k < PT_NSTAGES_ALL && (int)pt_trace_order[k] != top; k++)
             if (c->silent_recs[0][pt_trace_order[k]] || c->silent_recs[1][pt_trace_order[k]])
@@ -292,31 +295,21 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
             pt_diff_add(&s, " But the %s stage before it did not report, so the mistake may be "
                         "there, not in the %s stage.", pt_stage_infos[quiet].name,
                         pt_stage_infos[top].name);
-        for (k = 0; k < PT_NMISTAKES; k++)
-            if (pt_mistakes[k].stage == top && c->mk_hits[k] &&
-                (best == PT_NMISTAKES || c->mk_hits[k] > c->mk_hits[best])) best = k;
-        if (best < PT_NMISTAKES) {
-            size_t hits = 0;
-            for (k = 0; k < PT_NMISTAKES; k++)
-                if (!strcmp(pt_mistakes[k].name, pt_mistakes[best].name)) hits += c->mk_hits[k];
-            pt_diff_add(&s, " Likely mistake there: %s, which reproduces ACTUAL", pt_mistakes[best].name);
-            if (hits < c->first_at[top])
-                pt_diff_add(&s, " for %zu of those %zu vertices.", hits, c->first_at[top]);
-            else if (hits > 2) pt_diff_add(&s, " for all %zu.", hits);
-            else if (hits == 2) pt_diff_add(&s, " for both.");
-            else pt_diff_add(&s, ".");
-        } else if (c->t[0].hdr.perspective < 0) {
+        pt_diff_verdict(c, &s);
+        if (!c->nhy && c->t[0].hdr.perspective < 0)
             pt_diff_add(&s, " The known mistakes are the classic camera's: none was checked.");
-        } else {
-            pt_diff_add(&s, " No known mistake reproduces ACTUAL there.");
-        }
     }
     if (hdr_differ) pt_diff_add(&s, " The headers differ.");
     if (pixels_compared && (nmiss || nextra)) {
         int vertices_differ = c->differ || c->only[0] || c->only[1] || pt_diff_silent_any(c);
-        pt_diff_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
-                    "%zu extra)", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
-                    nlit[0], nlit[1], nmiss, nextra);
+        if (c->px_shift)
+            pt_diff_add(&s, " %s lit pixels differ%s: all of them moved by (%" PRId64 ", %" PRId64
+                        ")", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
+                        c->px_d[0], c->px_d[1]);
+        else
+            pt_diff_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
+                        "%zu extra)", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
+                        nlit[0], nlit[1], nmiss, nextra);
         if (vertices_differ) pt_diff_add(&s, ", as a consequence.");
         else if (rs->segs_differ) {
             size_t best = PT_NRASTER_MISTAKES;
@@ -324,12 +317,14 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                         rs->segs_differ, rs->segs_differ > 1 ? "s" : "");
             for (k = 0; k < PT_NRASTER_MISTAKES; k++)
                 if (rs->hits[k] && (best == PT_NRASTER_MISTAKES || rs->hits[k] > rs->hits[best])) best = k;
-            if (best < PT_NRASTER_MISTAKES) {
+            if (best < PT_NRASTER_MISTAKES && rs->hits[best] == rs->segs_differ) {
                 pt_diff_add(&s, " Likely mistake: %s in the rasterizer's rounding (pt_pix_round in "
-                            "s4), which reproduces ACTUAL's pixels", pt_raster_mistakes[best].name);
-                if (rs->hits[best] < rs->segs_differ)
-                    pt_diff_add(&s, " for %zu of those segments.", rs->hits[best]);
-                else pt_diff_add(&s, ".");
+                            "s4), which reproduces ACTUAL's pixels in every segment that differs.",
+                            pt_raster_mistakes[best].name);
+            } else if (best < PT_NRASTER_MISTAKES) {
+                pt_diff_add(&s, " No known mistake of its rounding explains every segment: %s "
+                            "reproduces %zu of the %zu, so it does NOT explain them.",
+                            pt_raster_mistakes[best].name, rs->hits[best], rs->segs_differ);
             } else {
                 pt_diff_add(&s, " No known mistake of its rounding reproduces them.");
             }
@@ -340,5 +335,9 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         pt_diff_add(&s, " Both light the same %zu pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
     }
     pt_diff_para("", s.b);
+    if (c->o->verdict) {
+        printf("\n");
+        pt_diff_print_verdict(c, 1, top, pixels_compared && (nmiss || nextra), rs);
+    }
     return PT_EXIT_DIFFER;
 }

@@ -204,6 +204,48 @@ static void print_stage_diff(int st, const pt_tvrec *a, const pt_tvrec *b, unsig
                a->flags & PT_REC_BEHIND ? "yes" : "no", b->flags & PT_REC_BEHIND ? "yes" : "no");
 }
 
+int pt_diff_first_stage(const dctx *c, const vent *e)
+{
+    int k, st, here[2] = {0, 0};
+
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {
+        here[0] |= e->rec[0][st] != PT_DIFF_NONE;
+        here[1] |= e->rec[1][st] != PT_DIFF_NONE;
+    }
+    if (!here[0] || !here[1]) return -2;
+    for (k = 0; k < PT_NSTAGES_ALL; k++) {
+        uint32_t i, j;
+        st = pt_trace_order[k];
+        i = e->rec[0][st];
+        j = e->rec[1][st];
+        if (i == PT_DIFF_NONE || j == PT_DIFF_NONE) continue;
+        if (stage_diff(c, st, &c->t[0].vx[i], &c->t[1].vx[j])) return st;
+    }
+    return -1;
+}
+
+void pt_diff_evidence(const dctx *c, const vent *e, int st, pbuf *s)
+{
+    const pt_tvrec *a = &c->t[0].vx[e->rec[0][st]], *b = &c->t[1].vx[e->rec[1][st]];
+    unsigned m = stage_diff(c, st, a, b);
+    char b1[PT_NUMLEN], b2[PT_NUMLEN];
+    int k, n = 0;
+
+    for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
+        if (!(m & (D_NULL | 1u << k))) continue;
+        pt_diff_add(s, "%s%s expected ", n++ ? ", " : "", pt_diff_coord_name(st, k));
+        if (pt_diff_is_real(st)) {
+            pt_diff_add(s, "%s, actual %s", pt_diff_num(a->u.d[k], b1), pt_diff_num(b->u.d[k], b2));
+        } else {
+            if (a->flags & PT_REC_NULL) pt_diff_add(s, "none");
+            else pt_diff_add(s, "%" PRId64, a->u.n[k]);
+            if (b->flags & PT_REC_NULL) pt_diff_add(s, ", actual none");
+            else pt_diff_add(s, ", actual %" PRId64, b->u.n[k]);
+        }
+    }
+    if (!n && (m & D_FLAG)) pt_diff_add(s, "its inside or behind flag differs");
+}
+
 /* Compare one vertex present on both sides, stage by stage in pipeline order. */
 void pt_diff_compare_vertex(dctx *c, const vent *e)
 {
@@ -244,7 +286,8 @@ void pt_diff_compare_vertex(dctx *c, const vent *e)
     c->differ++;
     c->differ_clip += (e->v & PT_TCLIPV) != 0;
     c->first_at[first]++;
-    if (c->shown >= c->o->show) { pt_diff_explain(c, e, first, 0); return; }
+    if (!c->first_ex[first]) c->first_ex[first] = (size_t)(e - c->vt.e) + 1;
+    if (c->shown >= c->o->show) return;
     c->shown++;
     printf("%s: differs first at %s", pt_diff_who(c, e->model, e->v, name, sizeof name),
                    pt_stage_infos[first].name);
@@ -261,5 +304,5 @@ void pt_diff_compare_vertex(dctx *c, const vent *e)
                        "difference may start there\n", pt_diff_side[sd],
                        pt_stage_infos[pt_trace_order[k]].name);
     }
-    pt_diff_explain(c, e, first, 1);
+    pt_diff_explain(c, e, first);
 }
