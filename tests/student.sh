@@ -52,7 +52,7 @@ edit() {    # edit NAME: the sed program of mistake NAME
     s4_nominus1) printf '%s\n' 's|vp\.x = rx - 1;|vp.x = rx;|' ;;
     s4_yminus1)  printf '%s\n' 's|vp\.y = h - ry;|vp.y = h - 1 - ry;|' ;;
     s4_trunc)    printf '%s\n' 's|pt_pix_round(pp\.\([xy]\), |pt_pix_round((double)(int64_t)(pp.\1 + 0.5), |g' ;;
-    s5_nooffset) printf '%s\n' 's|fb\.\([xy]\) = \([xy]\)_ul + vp\.[xy];|fb.\1 = vp.\1; (void)\2_ul;|' ;;
+    s5_nooffset) printf '%s\n' 's|? [xy]_ul + vp\.\([xy]\) :|? vp.\1 :|' ;;
     u_s2_ynodiv) printf '%s\n' 's|ip\.y = c\.y / -c\.z;|ip.y = c.y;|' ;;
     u_s3_ww)     printf '%s\n' 's|0\.5 + h / 2\.001 \* (ip\.y|0.5 + w / 2.001 * (ip.y|' ;;
     u_s6_wm1)    printf '%s\n' 's|fb\.y \* (int64_t)W + fb\.x;|fb.y * (int64_t)(W - 1) + fb.x;|' ;;

@@ -43,7 +43,8 @@ static const char usage[] =
 "\n"
 "Build and run it with the course's jar:\n"
 "  javac -cp renderer_4.jar FILE.java && java -cp renderer_4.jar:. FILE [OUT.ppm]\n"
-"Exit status: 0 success, 1 usage error, 2 bad input or output error.\n";
+"Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
+"Docs: docs/java.md\n";
 
 /* Names a class of the program may not have: Java's reserved words, and the
 ** classes it uses (the class would hide them). */

@@ -18,7 +18,8 @@
 static const char usage[] =
 "usage: pipetrace shapes [NAME]\n"
 "List the shapes a scene's 'shape NAME ARGS...' line builds (the course's\n"
-"models, renderer.models_L): parameters, defaults, Java constructor.\n";
+"models, renderer.models_L): parameters, defaults, Java constructor.\n"
+"Docs: docs/scene-format.md\n";
 
 /* Print text indented by two spaces, wrapped at spaces to lines of at most
 ** 78 characters (a longer word stands alone on its line). */

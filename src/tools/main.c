@@ -23,7 +23,7 @@
 
 static const char usage[] =
 "usage: pipetrace [SCENE] [options]\n"
-"       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N]\n"
+"       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N] [--verdict]\n"
 "       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE]\n"
 "       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all | --interactive]\n"
 "                      [--compare-cameras] [--raw-lookat]\n"

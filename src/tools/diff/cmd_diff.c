@@ -95,7 +95,8 @@ static int parse_args(dopts *o, int argc, char **argv)
         } else if (!strcmp(a, "--image-out")) {
             o->image_out = val;
         } else if (a[0] == '-' && a[1] != '\0') {
-            return pt_cli_unknown("diff", diff_usage, a);
+            pt_cli_unknown("diff", diff_usage, a);
+            return PT_EXIT_TROUBLE;             /* diff's usage errors: 2 */
         } else if (npath == 2) {
             return usage_error("more than two files given ('%s')", a);
         } else {
