@@ -137,6 +137,13 @@ check "out-4.14 journey --svg F --html F: exit 2" test "$rc" = 2
 run accuracy "$dir/x.scene" --repeat 1 --svg "$dir/sym.scene"
 check "out-4.15 accuracy --svg over the scene: exit 2, scene kept" test "$rc" = 2 -a \
     "$(cmp "$tri" "$dir/x.scene" && echo same)" = same
+"$exe" "$tri" --image "$dir/a.ppm" && cp "$dir/a.ppm" "$dir/a0.ppm" && "$exe" "$tri" --image "$dir/b.ppm"
+run diff "$dir/a.ppm" "$dir/b.ppm" --image-out "$dir/./a.ppm"
+check "out-4.16 diff --image-out over EXPECTED: exit 2, the image kept" test "$rc" = 2 -a \
+    -n "$(grep "^$dir/./a.ppm: error: --image-out names EXPECTED, $dir/a.ppm; writing it would destroy it" "$tmp/err")" -a "$(cmp "$dir/a.ppm" "$dir/a0.ppm" && echo same)" = same
+ln -f "$dir/b.ppm" "$dir/b-link.ppm"
+run diff "$dir/a.ppm" "$dir/b.ppm" --image-out "$dir/b-link.ppm"
+check "out-4.17 ... over ACTUAL through a hard link: exit 2" test "$rc" = 2
 
 # ---- the text trace escapes the scene path as JSONL does
 dir="$tmp/path"

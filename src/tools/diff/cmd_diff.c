@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/outfile.h"
 #include "tools/commands.h"
 #include "tools/diff/diff.h"
 
@@ -203,6 +204,12 @@ int pt_cmd_diff(int argc, char **argv)
 
     rc = parse_args(&o, argc, argv);
     if (rc >= 0) return rc;
+    for (s = 0; s < 2 && o.image_out; s++)      /* --image-out over an input: no */
+        if (pt_outfile_same(o.image_out, !strcmp(o.path[s], "-") ? "/dev/stdin" : o.path[s])) {
+            fprintf(stderr, "%s: error: --image-out names %s, %s; writing it would destroy it\n",
+                    o.image_out, s ? "ACTUAL" : "EXPECTED", o.path[s]);
+            return PT_EXIT_TROUBLE;
+        }
     c = calloc(1, sizeof *c);
     if (!c) { fputs("pipetrace: out of memory\n", stderr); return PT_EXIT_INPUT; }
     c->o = &o;
