@@ -27,35 +27,66 @@
 
 /* ===== the classic camera ===== */
 
-static void journey(const pt_scene *s, const pt_model *m, pt_vec3 v, unsigned choices,
-                    pt_acc_journey *j)
+/* Each stage reads its input from the journey and writes its output there. */
+
+static void model(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)c;
+    j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
+}
+
+static void camera(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->c[0] = pt_dd_add(j->m[0], pt_acc_dd(c->m->translate.x));  /* x_c = x_m + x_t */
+    j->c[1] = pt_dd_add(j->m[1], pt_acc_dd(c->m->translate.y));  /* y_c = y_m + y_t */
+    j->c[2] = pt_dd_add(j->m[2], pt_acc_dd(c->m->translate.z));  /* z_c = z_m + z_t */
+}
+
+static void image(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    if (c->s->perspective) {
+        j->ip[0] = pt_dd_div(j->c[0], pt_dd_neg(j->c[2]));  /* x_ip = x_c / -z_c */
+        j->ip[1] = pt_dd_div(j->c[1], pt_dd_neg(j->c[2]));  /* y_ip = y_c / -z_c */
+    } else {
+        j->ip[0] = j->c[0];                                 /* x_ip = x_c */
+        j->ip[1] = j->c[1];                                 /* y_ip = y_c */
+    }
+}
+
+static void pixel(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
 {
     const pt_dd one = {1.0, 0.0}, half = {0.5, 0.0};
-    pt_dd x_c, y_c, z_c, x_ip, y_ip, x_pp, y_pp, w_k, h_k;
-    int64_t rx = 0, ry = 0;
-    int ok;
+    pt_dd w_k = pt_dd_div(pt_acc_dd(c->s->vp_w), pt_dd_2001);   /* w/2.001 */
+    pt_dd h_k = pt_dd_div(pt_acc_dd(c->s->vp_h), pt_dd_2001);   /* h/2.001 */
 
-    (void)choices;                                  /* the reference has none */
-    j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
-    x_c = pt_dd_add(j->m[0], pt_acc_dd(m->translate.x));     /* x_c = x_m + x_t */
-    y_c = pt_dd_add(j->m[1], pt_acc_dd(m->translate.y));     /* y_c = y_m + y_t */
-    z_c = pt_dd_add(j->m[2], pt_acc_dd(m->translate.z));     /* z_c = z_m + z_t */
-    if (s->perspective) {
-        x_ip = pt_dd_div(x_c, pt_dd_neg(z_c));              /* x_ip = x_c / -z_c */
-        y_ip = pt_dd_div(y_c, pt_dd_neg(z_c));              /* y_ip = y_c / -z_c */
-    } else {
-        x_ip = x_c;                                         /* x_ip = x_c */
-        y_ip = y_c;                                         /* y_ip = y_c */
-    }
-    w_k = pt_dd_div(pt_acc_dd(s->vp_w), pt_dd_2001);         /* w/2.001 */
-    h_k = pt_dd_div(pt_acc_dd(s->vp_h), pt_dd_2001);         /* h/2.001 */
-    x_pp = pt_dd_add(half, pt_dd_mul(w_k, pt_dd_add(x_ip, one)));  /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
-    y_pp = pt_dd_add(half, pt_dd_mul(h_k, pt_dd_add(y_ip, one)));  /* y_pp = 0.5 + h/2.001 * (y_ip + 1) */
-    ok = pt_dd_pix_round(x_pp, &rx) && pt_dd_pix_round(y_pp, &ry);
-    j->c[0] = x_c; j->c[1] = y_c; j->c[2] = z_c;
-    j->ip[0] = x_ip; j->ip[1] = y_ip;
-    j->pp[0] = x_pp; j->pp[1] = y_pp;
-    pt_acc_journey_tail(j, s, ok, rx, ry);
+    (void)v;                                        /* the reference has no choices */
+    j->pp[0] = pt_dd_add(half, pt_dd_mul(w_k, pt_dd_add(j->ip[0], one)));
+                                                    /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
+    j->pp[1] = pt_dd_add(half, pt_dd_mul(h_k, pt_dd_add(j->ip[1], one)));
+                                                    /* y_pp = 0.5 + h/2.001 * (y_ip + 1) */
+}
+
+static void viewport(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    int64_t rx = 0, ry = 0;
+    int ok = pt_dd_pix_round(j->pp[0], &rx) && pt_dd_pix_round(j->pp[1], &ry);
+
+    (void)v;
+    j->vp = pt_acc_vp_of(c->s, ok, rx, ry);         /* x_vp = round(x_pp) - 1, ... */
+}
+
+static void framebuffer(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->fb = pt_acc_fb_of(c->s, j->vp);              /* x_fb = x_ul + x_vp, ... */
+}
+
+static void index_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->idx = pt_acc_index_of(c->s, j->fb);          /* idx = y_fb * W + x_fb */
 }
 
 /* ===== the DDA: the exact line ===== */
@@ -323,34 +354,69 @@ static pt_pix viewport_dd(const pt_dd sc[3], const double es[2])
     return vp;
 }
 
-static void tail_dd(const pt_scene *s, const pt_dd k[4], const double ek[4], pt_acc_mtail *t)
+static void m_model(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
 {
-    double en[3], es[2];
-
-    ndc_dd(k, ek, t->n, en);
-    screen_dd(s, t->n, en, t->sc, es);
-    t->vp = viewport_dd(t->sc, es);
-    pt_acc_mtail_int(s, t, 1);
+    (void)c; (void)k;
+    vec3_dd(v, j->m);
 }
 
-static void mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+static void m_world(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
 {
     static const double exact[4] = {0, 0, 0, 0};
-    double ew[4], ev[4];
     pt_dd m[4];
 
-    vec3_dd(v, m);
+    (void)v;
+    m[0] = j->m[0]; m[1] = j->m[1]; m[2] = j->m[2];
     m[3] = pt_acc_dd(1.0);
-    vmul_dd(m, exact, &c->world_dd[k], &c->world_e[k], j->w, ew);
+    vmul_dd(m, exact, &c->world_dd[k], &c->world_e[k], j->w, j->werr);
                                             /* (x_w y_w z_w w_w) = (x_m y_m z_m 1) * World */
-    vmul_dd(j->w, ew, &c->view_dd, &c->view_e, j->v, ev);
+}
+
+static void m_view(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    (void)k; (void)v;
+    vmul_dd(j->w, j->werr, &c->view_dd, &c->view_e, j->v, j->verr);
                                             /* (x_v y_v z_v w_v) = world * View */
-    vmul_dd(j->v, ev, &c->proj_dd, &c->proj_e, j->k, j->kerr);
+}
+
+static void m_clip(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    (void)k; (void)v;
+    vmul_dd(j->v, j->verr, &c->proj_dd, &c->proj_e, j->k, j->kerr);
                                             /* (x_k y_k z_k w_k) = view * Projection */
+}
+
+static void m_cvv(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    (void)c; (void)k; (void)v;
     j->code = cvv_dd(j->k, j->kerr);
-    j->m[0] = m[0]; j->m[1] = m[1]; j->m[2] = m[2];
-    if (j->code == 0) tail_dd(c->s, j->k, j->kerr, &j->t);
-    else pt_acc_no_tail(&j->t);
+}
+
+static void t_ndc(const pt_scene *s, pt_acc_mtail *t)
+{
+    (void)s;
+    ndc_dd(t->k, t->kerr, t->n, t->en);     /* x_n = x_k / w_k, ... */
+}
+
+static void t_screen(const pt_scene *s, pt_acc_mtail *t)
+{
+    screen_dd(s, t->n, t->en, t->sc, t->es);    /* x_s = (x_n + 1) * w * 0.5, ... */
+}
+
+static void t_viewport(const pt_scene *s, pt_acc_mtail *t)
+{
+    t->vp = viewport_dd(t->sc, t->es);      /* x_vp = floor(x_s), ... */
+    pt_acc_mtail_pp(s, t, 1);               /* the rasterizer's point, exact */
+}
+
+static void t_framebuffer(const pt_scene *s, pt_acc_mtail *t)
+{
+    t->fb = pt_acc_fb_of(s, t->vp);         /* x_fb = x_ul + x_vp, ... */
+}
+
+static void t_index(const pt_scene *s, pt_acc_mtail *t)
+{
+    t->idx = pt_acc_index_of(s, t->fb);     /* idx = y_fb * W + x_fb */
 }
 
 /* ===== the matrix camera: clipping ===== */
@@ -384,6 +450,7 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     double ea[PT_CVV_NPLANES], eb[PT_CVV_NPLANES], et[2] = {0, 0}, eq[4];
     int i, e;
 
+    (void)c;
     t[0] = pt_acc_dd(0.0);
     t[1] = pt_acc_dd(1.0);
     cvv_dist_dd(a->k, a->kerr, d0);
@@ -412,9 +479,16 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
             memcpy(eq, e ? b->kerr : a->kerr, sizeof eq);
         } else lerp_dd(a->k, a->kerr, b->k, b->kerr, t[e], et[e], q, eq);
         g->t[e] = t[e];
-        tail_dd(c->s, q, eq, &g->end[e]);
+        memcpy(g->end[e].k, q, sizeof q);
+        memcpy(g->end[e].kerr, eq, sizeof eq);
     }
     return 1;
 }
 
-const pt_acc_ops pt_acc_dd_ops = { journey, raster, mcam, mjourney, mseg };
+const pt_acc_ops pt_acc_dd_ops = {
+    { model, camera, image, pixel, viewport, framebuffer, index_stage },
+    raster, mcam,
+    { m_model, m_world, m_view, m_clip, m_cvv },
+    { t_ndc, t_screen, t_viewport, t_framebuffer, t_index },
+    mseg
+};

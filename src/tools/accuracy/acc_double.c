@@ -18,25 +18,67 @@ static pt_vec2 image2pixel_two(pt_vec3 ip, int w, int h)
     return pp;
 }
 
-static void journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
-                    unsigned choices, pt_acc_journey *j)
+/* Each stage reads its input from the journey (doubles, lo = 0) and calls
+** the stage function of stages/ on it. */
+
+static void model(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
 {
-    pt_stage_params par;
-    pt_vec3 c, ip;
+    (void)c;
+    j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
+}
+
+static void camera(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    pt_vec3 m, cc;
+
+    (void)v;
+    m.x = j->m[0].hi; m.y = j->m[1].hi; m.z = j->m[2].hi;
+    cc = pt_model2camera(m, c->par.translate, NULL);
+    j->c[0] = pt_acc_dd(cc.x); j->c[1] = pt_acc_dd(cc.y); j->c[2] = pt_acc_dd(cc.z);
+}
+
+static void image(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    pt_vec3 cc, ip;
+
+    (void)v;
+    cc.x = j->c[0].hi; cc.y = j->c[1].hi; cc.z = j->c[2].hi;
+    ip = pt_camera2image(cc, fmax(fabs(j->m[2].hi), fabs(c->par.translate.z)),
+                         c->par.perspective, NULL);
+    j->ip[0] = pt_acc_dd(ip.x); j->ip[1] = pt_acc_dd(ip.y);
+}
+
+static void pixel(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    pt_vec3 ip;
     pt_vec2 pp;
 
-    pt_stage_params_of(&par, s, m);
-    c = pt_model2camera(v, par.translate, NULL);
-    ip = pt_camera2image(c, fmax(fabs(v.z), fabs(par.translate.z)), par.perspective, NULL);
-    pp = choices & PT_ACC_TWO ? image2pixel_two(ip, par.w, par.h)
-                              : pt_image2pixel(ip, par.w, par.h, NULL);
-    j->vp = pt_pixel2viewport(pp, par.w, par.h, NULL);
-    j->fb = pt_viewport2fb(j->vp, par.x_ul, par.y_ul, NULL);
-    j->idx = pt_fb2index(j->fb, par.W, par.H, NULL);
-    j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
-    j->c[0] = pt_acc_dd(c.x); j->c[1] = pt_acc_dd(c.y); j->c[2] = pt_acc_dd(c.z);
-    j->ip[0] = pt_acc_dd(ip.x); j->ip[1] = pt_acc_dd(ip.y);
+    (void)v;
+    ip.x = j->ip[0].hi; ip.y = j->ip[1].hi; ip.z = 0.0;     /* z_ip: not used */
+    pp = c->choices & PT_ACC_TWO ? image2pixel_two(ip, c->par.w, c->par.h)
+                                 : pt_image2pixel(ip, c->par.w, c->par.h, NULL);
     j->pp[0] = pt_acc_dd(pp.x); j->pp[1] = pt_acc_dd(pp.y);
+}
+
+static void viewport(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    pt_vec2 pp;
+
+    (void)v;
+    pp.x = j->pp[0].hi; pp.y = j->pp[1].hi;
+    j->vp = pt_pixel2viewport(pp, c->par.w, c->par.h, NULL);
+}
+
+static void framebuffer(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->fb = pt_viewport2fb(j->vp, c->par.x_ul, c->par.y_ul, NULL);
+}
+
+static void index_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->idx = pt_fb2index(j->fb, c->par.W, c->par.H, NULL);
 }
 
 /* ===== the DDA ===== */
@@ -133,40 +175,96 @@ static void widen4(pt_vec4 v, pt_dd r[4])
     r[0] = pt_acc_dd(v.x); r[1] = pt_acc_dd(v.y); r[2] = pt_acc_dd(v.z); r[3] = pt_acc_dd(v.w);
 }
 
-/* From clip coordinates on: m5 .. m7, s5, s6 and the rasterizer's point. */
-static void tail_d(const pt_scene *s, pt_vec4 k, pt_acc_mtail *t)
+static pt_vec4 narrow4(const pt_dd r[4])
 {
+    pt_vec4 v;
+
+    v.x = r[0].hi; v.y = r[1].hi; v.z = r[2].hi; v.w = r[3].hi;
+    return v;
+}
+
+static void m_model(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    (void)c; (void)k;
+    j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
+}
+
+static void m_world(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    pt_matrices mx;
+    pt_vec3 m;
+
+    (void)v;
+    pt_matrices_of(&mx, &c->plan, k);
+    m.x = j->m[0].hi; m.y = j->m[1].hi; m.z = j->m[2].hi;
+    widen4(pt_model2world(m, mx.world, NULL), j->w);
+}
+
+static void m_view(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    pt_matrices mx;
+
+    (void)v;
+    pt_matrices_of(&mx, &c->plan, k);
+    widen4(pt_world2view(narrow4(j->w), mx.view, NULL), j->v);
+}
+
+static void m_clip(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    pt_matrices mx;
+
+    (void)v;
+    pt_matrices_of(&mx, &c->plan, k);
+    widen4(pt_view2clip(narrow4(j->v), mx.proj, NULL), j->k);
+    memset(j->kerr, 0, sizeof j->kerr);
+}
+
+static void m_cvv(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    (void)c; (void)k; (void)v;
+    j->code = pt_clip2cvv(narrow4(j->k), NULL);
+}
+
+/* From clip coordinates on: m5 .. m7, s5, s6 and the rasterizer's point. */
+
+static void t_ndc(const pt_scene *s, pt_acc_mtail *t)
+{
+    pt_vec4 k = narrow4(t->k);
     pt_vec3 n = pt_clip2ndc(k, fabs(k.w), NULL);
-    pt_vec3 sc = pt_ndc2screen(n, s->vp_w, s->vp_h, NULL);
+
+    (void)s;
+    t->n[0] = pt_acc_dd(n.x); t->n[1] = pt_acc_dd(n.y); t->n[2] = pt_acc_dd(n.z);
+}
+
+static void t_screen(const pt_scene *s, pt_acc_mtail *t)
+{
+    pt_vec3 n, sc;
+
+    n.x = t->n[0].hi; n.y = t->n[1].hi; n.z = t->n[2].hi;
+    sc = pt_ndc2screen(n, s->vp_w, s->vp_h, NULL);
+    t->sc[0] = pt_acc_dd(sc.x); t->sc[1] = pt_acc_dd(sc.y); t->sc[2] = pt_acc_dd(sc.z);
+}
+
+static void t_viewport(const pt_scene *s, pt_acc_mtail *t)
+{
+    pt_vec3 sc;
     pt_vec2 pp;
 
+    sc.x = t->sc[0].hi; sc.y = t->sc[1].hi; sc.z = t->sc[2].hi;
     t->vp = pt_screen2viewport(sc, s->vp_w, s->vp_h, NULL);
-    t->fb = pt_viewport2fb(t->vp, s->vp_x, s->vp_y, NULL);
-    t->idx = pt_fb2index(t->fb, s->fb_w, s->fb_h, NULL);
-    pp = pt_viewport2pixelplane(t->vp, s->vp_h);
-    t->n[0] = pt_acc_dd(n.x); t->n[1] = pt_acc_dd(n.y); t->n[2] = pt_acc_dd(n.z);
-    t->sc[0] = pt_acc_dd(sc.x); t->sc[1] = pt_acc_dd(sc.y); t->sc[2] = pt_acc_dd(sc.z);
+    pp = pt_viewport2pixelplane(t->vp, s->vp_h);   /* the rasterizer's point */
     t->pp[0] = pt_acc_dd(t->vp.ok ? pp.x : (double)NAN);
     t->pp[1] = pt_acc_dd(t->vp.ok ? pp.y : (double)NAN);
 }
 
-static void mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+static void t_framebuffer(const pt_scene *s, pt_acc_mtail *t)
 {
-    pt_matrices mx;
-    pt_vec4 w, vw, kc;
+    t->fb = pt_viewport2fb(t->vp, s->vp_x, s->vp_y, NULL);
+}
 
-    pt_matrices_of(&mx, &c->plan, k);
-    w = pt_model2world(v, mx.world, NULL);
-    vw = pt_world2view(w, mx.view, NULL);
-    kc = pt_view2clip(vw, mx.proj, NULL);
-    j->code = pt_clip2cvv(kc, NULL);
-    j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
-    widen4(w, j->w);
-    widen4(vw, j->v);
-    widen4(kc, j->k);
-    memset(j->kerr, 0, sizeof j->kerr);
-    if (j->code == 0) tail_d(c->s, kc, &j->t);
-    else pt_acc_no_tail(&j->t);
+static void t_index(const pt_scene *s, pt_acc_mtail *t)
+{
+    t->idx = pt_fb2index(t->fb, s->fb_w, s->fb_h, NULL);
 }
 
 static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
@@ -176,6 +274,7 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     double t[2];
     int e;
 
+    (void)c;
     p[0].x = a->k[0].hi; p[0].y = a->k[1].hi; p[0].z = a->k[2].hi; p[0].w = a->k[3].hi;
     p[1].x = b->k[0].hi; p[1].y = b->k[1].hi; p[1].z = b->k[2].hi; p[1].w = b->k[3].hi;
     if (!pt_clip_segment(p[0], p[1], &t[0], &t[1], &q[0], &q[1]))
@@ -183,9 +282,15 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     for (e = 0; e < 2; e++) {
         if (!g->made[e]) continue;
         g->t[e] = pt_acc_dd(t[e]);
-        tail_d(c->s, q[e], &g->end[e]);
+        widen4(q[e], g->end[e].k);
     }
     return 1;
 }
 
-const pt_acc_ops pt_acc_double_ops = { journey, raster, mcam, mjourney, mseg };
+const pt_acc_ops pt_acc_double_ops = {
+    { model, camera, image, pixel, viewport, framebuffer, index_stage },
+    raster, mcam,
+    { m_model, m_world, m_view, m_clip, m_cvv },
+    { t_ndc, t_screen, t_viewport, t_framebuffer, t_index },
+    mseg
+};

@@ -91,36 +91,76 @@ static void widen_f(const float *a, pt_dd *r, int n)
 
 /* ===== the classic camera ===== */
 
-static void journey(const pt_scene *s, const pt_model *m, pt_vec3 v,
-                    unsigned choices, pt_acc_journey *j)
-{
-    float x_m = to_float(v.x), y_m = to_float(v.y), z_m = to_float(v.z);
-    float x_c, y_c, z_c, x_ip, y_ip, x_pp, y_pp;
-    float k = choices & PT_ACC_TWO ? 2.0f : 2.001f;
-    float w = (float)s->vp_w, h = (float)s->vp_h;
-    int64_t rx = 0, ry = 0;
-    int ok;
+/* Each stage reads its input from the journey (floats widened exactly, so
+** (float)hi gives them back) and writes its output there. */
 
-    x_c = x_m + to_float(m->translate.x);           /* x_c = x_m + x_t */
-    y_c = y_m + to_float(m->translate.y);           /* y_c = y_m + y_t */
-    z_c = z_m + to_float(m->translate.z);           /* z_c = z_m + z_t */
-    if (s->perspective) {
+static void model(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)c;
+    j->m[0] = pt_acc_dd((double)to_float(v.x));     /* the scene's x_m rounded to float */
+    j->m[1] = pt_acc_dd((double)to_float(v.y));
+    j->m[2] = pt_acc_dd((double)to_float(v.z));
+}
+
+static void camera(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    float x_m = (float)j->m[0].hi, y_m = (float)j->m[1].hi, z_m = (float)j->m[2].hi;
+
+    (void)v;
+    j->c[0] = pt_acc_dd((double)(x_m + to_float(c->m->translate.x)));  /* x_c = x_m + x_t */
+    j->c[1] = pt_acc_dd((double)(y_m + to_float(c->m->translate.y)));  /* y_c = y_m + y_t */
+    j->c[2] = pt_acc_dd((double)(z_m + to_float(c->m->translate.z)));  /* z_c = z_m + z_t */
+}
+
+static void image(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    float x_c = (float)j->c[0].hi, y_c = (float)j->c[1].hi, z_c = (float)j->c[2].hi;
+    float x_ip, y_ip;
+
+    (void)v;
+    if (c->s->perspective) {
         x_ip = x_c / -z_c;                          /* x_ip = x_c / -z_c */
         y_ip = y_c / -z_c;                          /* y_ip = y_c / -z_c */
     } else {
         x_ip = x_c;                                 /* x_ip = x_c */
         y_ip = y_c;                                 /* y_ip = y_c */
     }
-    x_pp = 0.5f + w / k * (x_ip + 1.0f);            /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
-    y_pp = 0.5f + h / k * (y_ip + 1.0f);            /* y_pp = 0.5 + h/2.001 * (y_ip + 1) */
-    ok = pix_round_f(x_pp, &rx) && pix_round_f(y_pp, &ry);
-    j->m[0] = pt_acc_dd((double)x_m); j->m[1] = pt_acc_dd((double)y_m);
-    j->m[2] = pt_acc_dd((double)z_m);
-    j->c[0] = pt_acc_dd((double)x_c); j->c[1] = pt_acc_dd((double)y_c);
-    j->c[2] = pt_acc_dd((double)z_c);
-    j->ip[0] = pt_acc_dd((double)x_ip); j->ip[1] = pt_acc_dd((double)y_ip);
-    j->pp[0] = pt_acc_dd((double)x_pp); j->pp[1] = pt_acc_dd((double)y_pp);
-    pt_acc_journey_tail(j, s, ok, rx, ry);
+    j->ip[0] = pt_acc_dd((double)x_ip);
+    j->ip[1] = pt_acc_dd((double)y_ip);
+}
+
+static void pixel(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    float x_ip = (float)j->ip[0].hi, y_ip = (float)j->ip[1].hi;
+    float k = c->choices & PT_ACC_TWO ? 2.0f : 2.001f;
+    float w = (float)c->s->vp_w, h = (float)c->s->vp_h;
+
+    (void)v;
+    j->pp[0] = pt_acc_dd((double)(0.5f + w / k * (x_ip + 1.0f)));
+                                                    /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
+    j->pp[1] = pt_acc_dd((double)(0.5f + h / k * (y_ip + 1.0f)));
+                                                    /* y_pp = 0.5 + h/2.001 * (y_ip + 1) */
+}
+
+static void viewport(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    int64_t rx = 0, ry = 0;
+    int ok = pix_round_f((float)j->pp[0].hi, &rx) && pix_round_f((float)j->pp[1].hi, &ry);
+
+    (void)v;
+    j->vp = pt_acc_vp_of(c->s, ok, rx, ry);         /* x_vp = round(x_pp) - 1, ... */
+}
+
+static void framebuffer(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->fb = pt_acc_fb_of(c->s, j->vp);              /* x_fb = x_ul + x_vp, ... */
+}
+
+static void index_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->idx = pt_acc_index_of(c->s, j->fb);          /* idx = y_fb * W + x_fb */
 }
 
 /* ===== the DDA ===== */
@@ -311,73 +351,114 @@ static void cvv_dist_f(const float k[4], float d[PT_CVV_NPLANES])
     d[5] = k[3] - k[1];                     /* top:    y <= w */
 }
 
-static unsigned cvv_f(const float k[4])
+/* n values of a journey, floats widened exactly, back to float. */
+static void narrow_f(const pt_dd *a, float *r, int n)
 {
-    float d[PT_CVV_NPLANES];
+    int k;
+
+    for (k = 0; k < n; k++) r[k] = (float)a[k].hi;
+}
+
+static void m_model(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    float m[3];
+
+    (void)c; (void)k;
+    vec3_f(v, m);                           /* the scene's numbers rounded to float */
+    widen_f(m, j->m, 3);
+}
+
+static void m_world(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    float m[4], w[4];
+
+    (void)v;
+    narrow_f(j->m, m, 3);
+    m[3] = 1;
+    vmul_f(m, &c->world_f[k], w);           /* (x_w y_w z_w w_w) = (x_m y_m z_m 1) * World */
+    widen_f(w, j->w, 4);
+}
+
+static void m_view(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    float w[4], vw[4];
+
+    (void)k; (void)v;
+    narrow_f(j->w, w, 4);
+    vmul_f(w, &c->view_f, vw);              /* (x_v y_v z_v w_v) = world * View */
+    widen_f(vw, j->v, 4);
+}
+
+static void m_clip(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    float vw[4], kc[4];
+
+    (void)k; (void)v;
+    narrow_f(j->v, vw, 4);
+    vmul_f(vw, &c->proj_f, kc);             /* (x_k y_k z_k w_k) = view * Projection */
+    widen_f(kc, j->k, 4);
+    memset(j->kerr, 0, sizeof j->kerr);
+}
+
+static void m_cvv(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+{
+    float kc[4], d[PT_CVV_NPLANES];
     unsigned code = 0;
     int i;
 
-    cvv_dist_f(k, d);
+    (void)c; (void)k; (void)v;
+    narrow_f(j->k, kc, 4);
+    cvv_dist_f(kc, d);
     for (i = 0; i < PT_CVV_NPLANES; i++)
         if (!(d[i] >= 0)) code |= 1u << i;  /* NaN counts as outside */
-    return code;
+    j->code = code;
 }
 
-static void ndc_f(const float k[4], float n[3])
+static void t_ndc(const pt_scene *s, pt_acc_mtail *t)
 {
+    float k[4], n[3];
+
+    (void)s;
+    narrow_f(t->k, k, 4);
     n[0] = k[0] / k[3];                     /* x_n = x_k / w_k */
     n[1] = k[1] / k[3];                     /* y_n = y_k / w_k */
     n[2] = k[2] / k[3];                     /* z_n = z_k / w_k */
+    widen_f(n, t->n, 3);
 }
 
-static void screen_f(const pt_scene *s, const float n[3], float sc[3])
-{
-    sc[0] = (n[0] + 1) * (float)s->vp_w * 0.5f;     /* x_s = (x_n + 1) * w * 0.5 */
-    sc[1] = (1 - n[1]) * (float)s->vp_h * 0.5f;     /* y_s = (1 - y_n) * h * 0.5 */
-    sc[2] = n[2];                                   /* z_s = z_n */
-}
-
-static pt_pix viewport_f(const float sc[3])
-{
-    pt_pix vp = {0, 0, 0};
-
-    if (fabsf(sc[0]) < 0x1p62f && fabsf(sc[1]) < 0x1p62f) {   /* false for NaN */
-        vp.x = (int64_t)floorf(sc[0]);      /* x_vp = floor(x_s) */
-        vp.y = (int64_t)floorf(sc[1]);      /* y_vp = floor(y_s) */
-        vp.ok = 1;
-    }
-    return vp;
-}
-
-static void tail_f(const pt_scene *s, const float k[4], pt_acc_mtail *t)
+static void t_screen(const pt_scene *s, pt_acc_mtail *t)
 {
     float n[3], sc[3];
 
-    ndc_f(k, n);
-    screen_f(s, n, sc);
-    t->vp = viewport_f(sc);
-    widen_f(n, t->n, 3);
+    narrow_f(t->n, n, 3);
+    sc[0] = (n[0] + 1) * (float)s->vp_w * 0.5f;     /* x_s = (x_n + 1) * w * 0.5 */
+    sc[1] = (1 - n[1]) * (float)s->vp_h * 0.5f;     /* y_s = (1 - y_n) * h * 0.5 */
+    sc[2] = n[2];                                   /* z_s = z_n */
     widen_f(sc, t->sc, 3);
-    pt_acc_mtail_int(s, t, 0);
 }
 
-static void mjourney(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
+static void t_viewport(const pt_scene *s, pt_acc_mtail *t)
 {
-    float m[4], w[4], vw[4], kc[4];
+    float x_s = (float)t->sc[0].hi, y_s = (float)t->sc[1].hi;
+    pt_pix vp = {0, 0, 0};
 
-    vec3_f(v, m);
-    m[3] = 1;
-    vmul_f(m, &c->world_f[k], w);           /* (x_w y_w z_w w_w) = (x_m y_m z_m 1) * World */
-    vmul_f(w, &c->view_f, vw);              /* (x_v y_v z_v w_v) = world * View */
-    vmul_f(vw, &c->proj_f, kc);             /* (x_k y_k z_k w_k) = view * Projection */
-    j->code = cvv_f(kc);
-    widen_f(m, j->m, 3);
-    widen_f(w, j->w, 4);
-    widen_f(vw, j->v, 4);
-    widen_f(kc, j->k, 4);
-    memset(j->kerr, 0, sizeof j->kerr);
-    if (j->code == 0) tail_f(c->s, kc, &j->t);
-    else pt_acc_no_tail(&j->t);
+    if (fabsf(x_s) < 0x1p62f && fabsf(y_s) < 0x1p62f) {     /* false for NaN */
+        vp.x = (int64_t)floorf(x_s);        /* x_vp = floor(x_s) */
+        vp.y = (int64_t)floorf(y_s);        /* y_vp = floor(y_s) */
+        vp.ok = 1;
+    }
+    t->vp = vp;
+    pt_acc_mtail_pp(s, t, 0);               /* the rasterizer's point */
+}
+
+static void t_framebuffer(const pt_scene *s, pt_acc_mtail *t)
+{
+    t->fb = pt_acc_fb_of(s, t->vp);         /* x_fb = x_ul + x_vp, ... */
+}
+
+static void t_index(const pt_scene *s, pt_acc_mtail *t)
+{
+    t->idx = pt_acc_index_of(s, t->fb);     /* idx = y_fb * W + x_fb */
 }
 
 /* ===== the matrix camera: clipping ===== */
@@ -395,6 +476,7 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     float p0[4], p1[4], q[4], d0[PT_CVV_NPLANES], d1[PT_CVV_NPLANES], t[2] = {0, 1};
     int i, e;
 
+    (void)c;
     for (i = 0; i < 4; i++) { p0[i] = (float)a->k[i].hi; p1[i] = (float)b->k[i].hi; }  /* exact */
     cvv_dist_f(p0, d0);
     cvv_dist_f(p1, d1);
@@ -414,9 +496,15 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
         if (t[e] == e) memcpy(q, e ? p1 : p0, sizeof q);
         else lerp_f(p0, p1, t[e], q);
         g->t[e] = pt_acc_dd((double)t[e]);
-        tail_f(c->s, q, &g->end[e]);
+        widen_f(q, g->end[e].k, 4);
     }
     return 1;
 }
 
-const pt_acc_ops pt_acc_float_ops = { journey, raster, mcam, mjourney, mseg };
+const pt_acc_ops pt_acc_float_ops = {
+    { model, camera, image, pixel, viewport, framebuffer, index_stage },
+    raster, mcam,
+    { m_model, m_world, m_view, m_clip, m_cvv },
+    { t_ndc, t_screen, t_viewport, t_framebuffer, t_index },
+    mseg
+};

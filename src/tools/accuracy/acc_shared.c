@@ -8,15 +8,13 @@
 
 /* ===== the integer stages ===== */
 
-/* idx = y_fb * W + x_fb, or -1 outside the framebuffer (s6_fb2index). */
-static int64_t index_of(const pt_scene *s, pt_pix fb)
+int64_t pt_acc_index_of(const pt_scene *s, pt_pix fb)
 {
     return fb.ok && pt_inside(fb.x, fb.y, s->fb_w, s->fb_h)
            ? fb.y * (int64_t)s->fb_w + fb.x : -1;   /* idx = y_fb * W + x_fb */
 }
 
-/* x_fb = x_ul + x_vp, y_fb = y_ul + y_vp (s5_viewport2fb). */
-static pt_pix fb_of(const pt_scene *s, pt_pix vp)
+pt_pix pt_acc_fb_of(const pt_scene *s, pt_pix vp)
 {
     pt_pix fb = {0, 0, 0};
 
@@ -28,8 +26,7 @@ static pt_pix fb_of(const pt_scene *s, pt_pix vp)
     return fb;
 }
 
-void pt_acc_journey_tail(pt_acc_journey *j, const pt_scene *s, int ok,
-                         int64_t rx, int64_t ry)
+pt_pix pt_acc_vp_of(const pt_scene *s, int ok, int64_t rx, int64_t ry)
 {
     pt_pix vp = {0, 0, 0};
 
@@ -38,12 +35,10 @@ void pt_acc_journey_tail(pt_acc_journey *j, const pt_scene *s, int ok,
         vp.y = s->vp_h - ry;                        /* y_vp = h - round(y_pp) */
         vp.ok = 1;
     }
-    j->vp = vp;
-    j->fb = fb_of(s, vp);
-    j->idx = index_of(s, j->fb);
+    return vp;
 }
 
-void pt_acc_mtail_int(const pt_scene *s, pt_acc_mtail *t, int exact)
+void pt_acc_mtail_pp(const pt_scene *s, pt_acc_mtail *t, int exact)
 {
     pt_pix vp = t->vp;
 
@@ -55,8 +50,6 @@ void pt_acc_mtail_int(const pt_scene *s, pt_acc_mtail *t, int exact)
     } else {
         t->pp[0] = t->pp[1] = pt_acc_dd((double)NAN);
     }
-    t->fb = fb_of(s, vp);
-    t->idx = index_of(s, t->fb);
 }
 
 void pt_acc_no_tail(pt_acc_mtail *t)

@@ -6,8 +6,11 @@
 ** one arithmetic; accuracy.c runs them and compares.  This header holds what
 ** they all use: the journeys' types (every real value widened to pt_dd
 ** without rounding), the camera of one arithmetic, the integer stages
-** (viewport .. index, the same in every arithmetic) and the DDA's integer
-** bookkeeping (endpoints, order, band, steps).
+** (framebuffer and index, the same in every arithmetic), the DDA's integer
+** bookkeeping (endpoints, order, band, steps), and the table of one
+** arithmetic's stage functions (pt_acc_ops): one function per stage, which
+** the journeys of the error runs call in order and the timing calls one at a
+** time.
 */
 #ifndef PT_ACC_SHARED_H
 #define PT_ACC_SHARED_H
@@ -42,6 +45,9 @@ typedef struct pt_acc_journey {
 /* The matrix camera's journey from clip coordinates on (stages/pt_matrix.c's
 ** pt_matrix_tail()): an inside vertex's, or a point that clipping made. */
 typedef struct pt_acc_mtail {
+    pt_dd k[4];                  /* the clip coordinates it starts from */
+    double kerr[4];              /* the reference: bounds on k's rounding error */
+    double en[3], es[2];         /* the reference: bounds on n's and sc's (x, y) */
     pt_dd n[3];                  /* ndc (x_n, y_n, z_n) */
     pt_dd sc[3];                 /* screen (x_s, y_s, z_s) */
     pt_pix vp, fb;               /* viewport (floor), framebuffer; ok == 0: no pixel */
@@ -54,6 +60,8 @@ typedef struct pt_acc_mtail {
 typedef struct pt_acc_mjourney {
     pt_dd m[3];                  /* model (x_m, y_m, z_m) as the arithmetic holds it */
     pt_dd w[4], v[4], k[4];      /* world, view, clip: (x y z w) */
+    double werr[4], verr[4];     /* the reference: bounds on w's and v's rounding
+                                 ** error (float, double: 0) */
     double kerr[4];              /* the reference: a bound on k's rounding error
                                  ** (float, double: 0) */
     unsigned code;               /* cvv outcode (PT_CVV_* bits); 0: inside */
@@ -95,15 +103,22 @@ static inline pt_dd pt_acc_dd(double v)
     return r;
 }
 
-/* Classic camera: viewport, framebuffer and index of j from the rounded pixel
-** (rx, ry) (ok == 0: none).  This function can't fail. */
-void pt_acc_journey_tail(pt_acc_journey *j, const pt_scene *s, int ok,
-                         int64_t rx, int64_t ry);
+/* Classic camera: the viewport pixel of the pixel (rx, ry) that round() gave
+** (ok == 0: none): x_vp = rx - 1, y_vp = h - ry.  This function can't fail. */
+pt_pix pt_acc_vp_of(const pt_scene *s, int ok, int64_t rx, int64_t ry);
 
-/* Matrix camera: framebuffer and index of the viewport pixel t->vp, and the
-** pixel-plane point for the rasterizer, held exactly (pt_dd_from_i64) when
-** exact is set.  This function can't fail. */
-void pt_acc_mtail_int(const pt_scene *s, pt_acc_mtail *t, int exact);
+/* x_fb = x_ul + x_vp, y_fb = y_ul + y_vp (s5_viewport2fb); none for none.
+** This function can't fail. */
+pt_pix pt_acc_fb_of(const pt_scene *s, pt_pix vp);
+
+/* idx = y_fb * W + x_fb (s6_fb2index), or -1 outside the framebuffer.  This
+** function can't fail. */
+int64_t pt_acc_index_of(const pt_scene *s, pt_pix fb);
+
+/* Matrix camera: the pixel-plane point of the viewport pixel t->vp for the
+** rasterizer, (x_vp + 1, h - y_vp), held exactly (pt_dd_from_i64) when exact
+** is set; NaN when t->vp has none.  This function can't fail. */
+void pt_acc_mtail_pp(const pt_scene *s, pt_acc_mtail *t, int exact);
 
 /* A vertex outside the view volume: its journey stops at the cvv.  This
 ** function can't fail. */
@@ -154,13 +169,37 @@ void pt_acc_dda_dot(const pt_acc_dda *o, int64_t ix, int64_t iy);
 
 /* ===== one arithmetic ===== */
 
+#define PT_ACC_NSTAGES 7         /* classic: model .. index (rows of accuracy.h) */
+#define PT_ACC_M_NFRONT 5        /* matrix camera: model, world, view, clip, cvv */
+#define PT_ACC_M_NTAIL 5         /* ... then ndc, screen, viewport, framebuffer, index */
+
+/* What a classic stage needs besides the journey. */
+typedef struct pt_acc_sctx {
+    const pt_scene *s;
+    const pt_model *m;           /* the vertex's model */
+    unsigned choices;            /* PT_ACC_* (the reference ignores them) */
+    pt_stage_params par;         /* pt_stage_params_of(s, m) */
+} pt_acc_sctx;
+
+/* A classic stage: reads the earlier stages' values from j (the model stage:
+** the scene's vertex v), writes its own.  Can't fail. */
+typedef void (*pt_acc_stage_fn)(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j);
+
+/* The matrix camera's stages up to the cvv, for vertex v of model k; as above. */
+typedef void (*pt_acc_mstage_fn)(const pt_acc_mcam *c, size_t k, pt_vec3 v,
+                                 pt_acc_mjourney *j);
+
+/* The matrix camera's stages from ndc on, on a point from its clip coordinates
+** t->k (a vertex inside the view volume, or a point clipping made). */
+typedef void (*pt_acc_tail_fn)(const pt_scene *s, pt_acc_mtail *t);
+
 /* One arithmetic's stages and DDA: acc_float.c's pt_acc_float_ops,
 ** acc_double.c's pt_acc_double_ops, acc_dd.c's pt_acc_dd_ops.  None can fail
-** but by running out of memory (mcam).  The reference ignores choices. */
+** but by running out of memory (mcam).  The reference ignores choices.
+** accuracy.c strings the stages together into journeys (pt_acc_journey_of,
+** pt_acc_mjourney_of) and times them one by one (pt_acc_stage_pass). */
 typedef struct pt_acc_ops {
-    void (*journey)(const pt_scene *s, const pt_model *m, pt_vec3 v,
-                    unsigned choices, pt_acc_journey *j);
-                                 /* the classic journey of v, a vertex of m */
+    pt_acc_stage_fn stage[PT_ACC_NSTAGES];      /* classic: model .. index */
     int (*raster)(const pt_dd p0[2], const pt_dd p1[2], unsigned choices,
                   const pt_acc_dda *o);
                                  /* the DDA from p0 to p1 (pixel plane), the
@@ -168,12 +207,14 @@ typedef struct pt_acc_ops {
                                  ** when an end has no integer pixel */
     int (*mcam)(pt_acc_mcam *c); /* fill c's matrices (c->s set): 0, or -1
                                  ** when out of memory */
-    void (*mjourney)(const pt_acc_mcam *c, size_t k, pt_vec3 v_m, pt_acc_mjourney *j);
-                                 /* the matrix camera's journey of v_m, model k */
+    pt_acc_mstage_fn mstage[PT_ACC_M_NFRONT];   /* matrix: model .. cvv */
+    pt_acc_tail_fn tail[PT_ACC_M_NTAIL];        /* matrix: ndc .. index */
     int (*mseg)(const pt_acc_mcam *c, const pt_acc_mjourney *a,
                 const pt_acc_mjourney *b, pt_acc_mseg *g);
                                  /* a-b clipped in clip space, g->made set by
-                                 ** the caller: 1 with the made ends, 0 culled */
+                                 ** the caller: 1 with each made end's clip
+                                 ** coordinates (g->end[e].k, .kerr) and t, 0
+                                 ** culled; the caller runs the tails */
 } pt_acc_ops;
 
 #endif

@@ -33,26 +33,83 @@ const char *const pt_acc_mrow_names[PT_ACC_M_NROWS] = {
 
 /* ===== one arithmetic ===== */
 
+/* The two tables of rows and the stage counts of acc_shared.h must agree. */
+typedef char rows_agree[PT_ACC_RASTER == PT_ACC_NSTAGES
+                       && PT_ACC_M_RASTER == PT_ACC_M_NFRONT + PT_ACC_M_NTAIL
+                       && PT_ACC_M_NDC == PT_ACC_M_NFRONT ? 1 : -1];
+
+void pt_acc_sctx_make(pt_acc_sctx *c, const pt_scene *s, const pt_model *m, unsigned choices)
+{
+    c->s = s;
+    c->m = m;
+    c->choices = choices;
+    pt_stage_params_of(&c->par, s, m);
+}
+
+pt_acc_stage_fn pt_acc_stage_of(pt_arith a, int row)
+{
+    return ops[a]->stage[row];
+}
+
+pt_acc_mstage_fn pt_acc_mstage_of(pt_arith a, int row)
+{
+    return ops[a]->mstage[row];
+}
+
+pt_acc_tail_fn pt_acc_tail_of(pt_arith a, int row)
+{
+    return ops[a]->tail[row - PT_ACC_M_NDC];
+}
+
+/* The classic journey: the stages in order. */
+static void journey(pt_arith a, const pt_acc_sctx *c, pt_vec3 v_m, pt_acc_journey *j)
+{
+    int row;
+
+    for (row = 0; row < PT_ACC_NSTAGES; row++) ops[a]->stage[row](c, v_m, j);
+}
+
 void pt_acc_journey_of(pt_arith a, unsigned choices, const pt_scene *s,
                        const pt_model *m, pt_vec3 v_m, pt_acc_journey *j)
 {
-    ops[a]->journey(s, m, v_m, choices, j);
+    pt_acc_sctx c;
+
+    pt_acc_sctx_make(&c, s, m, a == PT_ARITH_DD ? 0 : choices);
+    journey(a, &c, v_m, j);
+}
+
+/* From clip coordinates t->k on: ndc .. index in order. */
+static void mtail(pt_arith a, const pt_scene *s, pt_acc_mtail *t)
+{
+    int i;
+
+    for (i = 0; i < PT_ACC_M_NTAIL; i++) ops[a]->tail[i](s, t);
 }
 
 void pt_acc_mjourney_of(const pt_acc_mcam *c, size_t k, pt_vec3 v_m, pt_acc_mjourney *j)
 {
-    ops[c->arith]->mjourney(c, k, v_m, j);
+    int row;
+
+    for (row = 0; row < PT_ACC_M_NFRONT; row++) ops[c->arith]->mstage[row](c, k, v_m, j);
+    if (j->code != 0) { pt_acc_no_tail(&j->t); return; }
+    memcpy(j->t.k, j->k, sizeof j->t.k);            /* inside: on to the index */
+    memcpy(j->t.kerr, j->kerr, sizeof j->t.kerr);
+    mtail(c->arith, c->s, &j->t);
 }
 
 void pt_acc_mseg_of(const pt_acc_mcam *c, const pt_acc_mjourney *a,
                     const pt_acc_mjourney *b, pt_acc_mseg *g)
 {
+    int e;
+
     memset(g, 0, sizeof *g);
     g->made[0] = a->code != 0;              /* an end outside gets a new point */
     g->made[1] = b->code != 0;
     if (!g->made[0] && !g->made[1]) { g->visible = 1; return; }    /* all inside */
     g->visible = ops[c->arith]->mseg(c, a, b, g);
-    if (!g->visible) g->made[0] = g->made[1] = 0;
+    if (!g->visible) { g->made[0] = g->made[1] = 0; return; }
+    for (e = 0; e < 2; e++)
+        if (g->made[e]) mtail(c->arith, c->s, &g->end[e]);
 }
 
 int pt_acc_raster_segment(pt_arith a, unsigned choices, pt_dd x0, pt_dd y0,
@@ -381,10 +438,12 @@ double pt_acc_vertex_pass(pt_acc_run *r)
 {
     double sum = 0.0;
     size_t k, v;
+    pt_acc_sctx c;
 
     for (k = 0; k < r->s->nmodels; k++) {
         const pt_model *m = &r->s->models[k];
 
+        pt_acc_sctx_make(&c, r->s, m, r->choices);
         for (v = 0; v < m->nv; v++) {
             if (!r->used[k][v]) continue;
             if (r->cam) {
@@ -395,12 +454,137 @@ double pt_acc_vertex_pass(pt_acc_run *r)
             } else {
                 pt_acc_journey *j = &r->j[k][v];
 
-                pt_acc_journey_of(r->arith, r->choices, r->s, m, m->v[v], j);
+                journey(r->arith, &c, m->v[v], j);
                 sum += j->pp[0].hi + (double)j->idx;
             }
         }
     }
     return sum;
+}
+
+/* ===== one stage at a time: the timed work ===== */
+
+struct pt_acc_work {
+    pt_arith arith;
+    const pt_acc_run *r;
+    pt_acc_sctx *ctx;            /* ctx[k]: model k's */
+    size_t n;                    /* inputs */
+    size_t *model;               /* model[i]: input i's model */
+    pt_vec3 *v;                  /* v[i]: its scene vertex */
+    pt_acc_journey *j;           /* classic: copies of the run's journeys */
+    pt_acc_mjourney *mj;         /* matrix, model .. cvv: likewise */
+    pt_acc_mtail *t;             /* matrix, ndc .. index: the inside vertices' tails */
+};
+
+void pt_acc_work_free(pt_acc_work *w)
+{
+    if (!w) return;
+    free(w->ctx);
+    free(w->model);
+    free(w->v);
+    free(w->j);
+    free(w->mj);
+    free(w->t);
+    free(w);
+}
+
+pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
+{
+    const pt_scene *s = r->s;
+    pt_acc_work *w = calloc(1, sizeof *w);
+    size_t k, v, n = r->nused ? (size_t)r->nused : 1, i = 0;
+    int tail = s->matrix && row >= PT_ACC_M_NDC;
+
+    if (!w) return NULL;
+    w->arith = r->arith;
+    w->r = r;
+    w->ctx = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->ctx);
+    w->model = calloc(n, sizeof *w->model);
+    w->v = calloc(n, sizeof *w->v);
+    if (tail) w->t = calloc(n, sizeof *w->t);
+    else if (s->matrix) w->mj = calloc(n, sizeof *w->mj);
+    else w->j = calloc(n, sizeof *w->j);
+    if (!w->ctx || !w->model || !w->v || !(w->t || w->mj || w->j)) {
+        pt_acc_work_free(w);
+        return NULL;
+    }
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+
+        pt_acc_sctx_make(&w->ctx[k], s, m, r->choices);
+        for (v = 0; v < m->nv; v++) {
+            if (!r->used[k][v]) continue;
+            if (tail && r->mj[k][v].code != 0) continue;    /* stops at the cvv */
+            w->model[i] = k;
+            w->v[i] = m->v[v];
+            if (tail) w->t[i] = r->mj[k][v].t;
+            else if (s->matrix) w->mj[i] = r->mj[k][v];
+            else w->j[i] = r->j[k][v];
+            i++;
+        }
+    }
+    w->n = i;
+    return w;
+}
+
+size_t pt_acc_work_size(const pt_acc_work *w)
+{
+    return w->n;
+}
+
+void pt_acc_work_poison(pt_acc_work *w)
+{
+    size_t i;
+
+    for (i = 0; i < w->n; i++)
+        if (w->t) {                                 /* all but the clip coordinates */
+            pt_acc_mtail keep = w->t[i];
+
+            memset(&w->t[i], 0xab, sizeof w->t[i]);
+            memcpy(w->t[i].k, keep.k, sizeof keep.k);
+            memcpy(w->t[i].kerr, keep.kerr, sizeof keep.kerr);
+        } else if (w->mj) memset(&w->mj[i], 0xab, sizeof w->mj[i]);
+        else memset(&w->j[i], 0xab, sizeof w->j[i]);
+}
+
+double pt_acc_stage_pass(pt_acc_work *w, int row)
+{
+    size_t i;
+
+    if (w->n == 0) return 0.0;
+    if (w->t) {
+        pt_acc_tail_fn f = pt_acc_tail_of(w->arith, row);
+
+        for (i = 0; i < w->n; i++) f(w->r->s, &w->t[i]);
+        return w->t[0].n[0].hi + (double)w->t[0].idx;
+    }
+    if (w->mj) {
+        pt_acc_mstage_fn f = pt_acc_mstage_of(w->arith, row);
+
+        for (i = 0; i < w->n; i++) f(w->r->cam, w->model[i], w->v[i], &w->mj[i]);
+        return w->mj[0].k[0].hi + (double)w->mj[0].code;
+    }
+    {
+        pt_acc_stage_fn f = pt_acc_stage_of(w->arith, row);
+
+        for (i = 0; i < w->n; i++) f(&w->ctx[w->model[i]], w->v[i], &w->j[i]);
+        return w->j[0].pp[0].hi + (double)w->j[0].idx;
+    }
+}
+
+const pt_acc_journey *pt_acc_work_journey(const pt_acc_work *w, size_t i)
+{
+    return w->j ? &w->j[i] : NULL;
+}
+
+const pt_acc_mjourney *pt_acc_work_mjourney(const pt_acc_work *w, size_t i)
+{
+    return w->mj ? &w->mj[i] : NULL;
+}
+
+const pt_acc_mtail *pt_acc_work_mtail(const pt_acc_work *w, size_t i)
+{
+    return w->t ? &w->t[i] : NULL;
 }
 
 /* The timed rasterizer's pixel sink: a count and a checksum. */

@@ -53,7 +53,8 @@
 **   pt_acc_run_make(&r, &s, PT_ARITH_FLOAT, 0);
 **   pt_acc_compare(&ref, &r, e);                   e[row]: that stage's errors
 **                      (rows: pt_acc_row_names, or pt_acc_mrow_names when s.matrix)
-**   pt_acc_vertex_pass(&r);  pt_acc_raster_pass(&r, &n);     the timed work
+**   w = pt_acc_work_make(&r, row);  pt_acc_stage_pass(w, row);   one stage, timed
+**   pt_acc_work_free(w);  pt_acc_raster_pass(&r, &n);       the rasterizer, timed
 **   pt_acc_run_free(&r);  pt_acc_run_free(&ref);
 ** Nothing here prints; only allocation can fail.
 */
@@ -147,15 +148,56 @@ void pt_acc_run_free(pt_acc_run *r);
 ** function can't fail. */
 void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS]);
 
-/* The timed work.  pt_acc_vertex_pass() computes every used vertex's journey
-** again (into r->j or r->mj, the same values); pt_acc_raster_pass()
-** rasterizes every segment again (matrix camera: clips it first, and runs the
-** points clipping makes through ndc .. index), counting the pixels written in
-** *pixels but keeping none.
-** Each returns a checksum of what it computed, for the caller to keep the
-** optimizer from skipping the work.  These functions can't fail. */
+/* pt_acc_vertex_pass() computes every used vertex's journey again (into r->j
+** or r->mj, the same values); pt_acc_raster_pass() rasterizes every segment
+** again (matrix camera: clips it first, and runs the points clipping makes
+** through ndc .. index), counting the pixels written in *pixels but keeping
+** none.  Each returns a checksum of what it computed, for the caller to keep
+** the optimizer from skipping the work.  These functions can't fail. */
 double pt_acc_vertex_pass(pt_acc_run *r);
 double pt_acc_raster_pass(const pt_acc_run *r, uint64_t *pixels);
+
+/* ===== one stage at a time: the timed work =====
+**
+** A work holds the inputs of one stage of run r, prepared from r's journeys:
+** a copy of every used vertex's journey (matrix camera, rows ndc .. index:
+** the tails of the vertices inside the view volume in r), with each model's
+** context.  pt_acc_stage_pass(w, row) runs that stage -- the very function of
+** the table the error runs' journeys call (pt_acc_stage_of and the others) --
+** once on every input, which reads the earlier stages' values from its copy
+** and writes its own; running it again rewrites the same values. */
+typedef struct pt_acc_work pt_acc_work;
+
+/* The inputs of row (a stage row, not the rasterizer) of run r; r must
+** outlive the work.  Returns NULL when out of memory. */
+pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row);
+void pt_acc_work_free(pt_acc_work *w);          /* NULL is fine */
+
+/* The number of inputs: the vertices each pass computes. */
+size_t pt_acc_work_size(const pt_acc_work *w);
+
+/* Run stage row on every input, a row of the kind w was made for (classic; the
+** matrix camera's model .. cvv; its ndc .. index).  Returns a checksum.
+** This function can't fail. */
+double pt_acc_stage_pass(pt_acc_work *w, int row);
+
+/* For tests: overwrite every value the stages of w's kind write (all but the
+** clip coordinates a tail starts from) with garbage; and input i as it is now
+** (NULL when w holds another kind). */
+void pt_acc_work_poison(pt_acc_work *w);
+const pt_acc_journey *pt_acc_work_journey(const pt_acc_work *w, size_t i);
+const pt_acc_mjourney *pt_acc_work_mjourney(const pt_acc_work *w, size_t i);
+const pt_acc_mtail *pt_acc_work_mtail(const pt_acc_work *w, size_t i);
+
+/* The context of model m's stages in scene s.  This function can't fail. */
+void pt_acc_sctx_make(pt_acc_sctx *c, const pt_scene *s, const pt_model *m, unsigned choices);
+
+/* Arithmetic a's function for a stage row: classic (rows model .. index),
+** the matrix camera's up to the cvv (model .. cvv), and from ndc on (rows ndc
+** .. index of pt_acc_mrow).  These functions can't fail. */
+pt_acc_stage_fn pt_acc_stage_of(pt_arith a, int row);
+pt_acc_mstage_fn pt_acc_mstage_of(pt_arith a, int row);
+pt_acc_tail_fn pt_acc_tail_of(pt_arith a, int row);
 
 /* The DDA of src/core/raster.h in arithmetic a (float and double: y += m, or with
 ** PT_ACC_RECOMPUTE y = y0 + m*(x - x0); the reference: the exact line), for
