@@ -113,7 +113,20 @@ check "acc-sh-2.6 ... and lights other pixels than the reference" \
 check "acc-sh-2.7 ... recomputing y = y0 + m*(x - x0) lights the reference's" \
     test "$(field 'double      recompute' 5 | cut -d/ -f1)" = 0
 
-# ---- timing and the plot (the only timed run: one repeat)
+# ---- timing and the plot (the only timed runs: one repeat each)
+stage_times() {  # stage_times N: the rows of the per-stage time table with N numbers > 0, finite
+    sed -n '/^time per stage alone/,/^$/p' "$tmp/out" | tail -n +3 | grep -v '^$' |
+        awk 'NF == 4 && $2 + 0 > 0 && $3 + 0 > 0 && $4 + 0 > 0 &&
+             $2 !~ /inf|nan/ && $3 !~ /inf|nan/ && $4 !~ /inf|nan/' | wc -l | tr -d ' '
+}
+svg_check() {    # svg_check ID FILE: panels, axes and label boxes (tests/accuracy_svg.py)
+    if command -v python3 >/dev/null 2>&1; then
+        python3 tests/accuracy_svg.py "$2" > "$tmp/svgcheck" 2>&1
+        check "$1 one panel per unit, axes named, no two texts overlap (accuracy_svg.py)" \
+            test $? = 0
+        grep '^FAIL' "$tmp/svgcheck" | head -5
+    fi
+}
 acc docs/examples/cube.scene --repeat 1 --svg "$tmp/plot.svg"
 check "acc-sh-3.1 --svg: exit 0" test "$rc" = 0
 check "acc-sh-3.2 timed: ns/vertex and ns/pixel columns" grep -q 'ns/vertex  ns/pixel' "$tmp/out"
@@ -126,14 +139,27 @@ import sys, xml.etree.ElementTree as ET
 assert ET.parse(sys.argv[1]).getroot().tag == "{http://www.w3.org/2000/svg}svg"' "$tmp/plot.svg"
 fi
 check "acc-sh-3.5 the plot is self-contained (no links)" test "$(grep -c 'href' "$tmp/plot.svg")" = 0
-check "acc-sh-3.6 ... one circle per point, 8 stages x 3 arithmetics at most + choices" \
-    test "$(grep -c '<circle' "$tmp/plot.svg")" -ge 8
-check "acc-sh-3.7 ... says where errors of 0 are drawn" grep -q 'An error of 0 lies on' "$tmp/plot.svg"
+check "acc-sh-3.6 ... a point per stage and arithmetic (8 x 3), 4 choices, 4 in the legend" \
+    test "$(grep -c '<circle' "$tmp/plot.svg")" = 32
+check "acc-sh-3.7 ... says where errors of 0 are drawn" grep -q 'dashed line marked 0' "$tmp/plot.svg"
+check "acc-sh-3.11 every classic stage timed alone, in every arithmetic: > 0 and finite" \
+    test "$(stage_times)" = 8
+check "acc-sh-3.12 ... float's stages are not all at one time" \
+    test "$(grep 'fill="#d95f02" stroke="#d95f02"' "$tmp/plot.svg" | sed 's/.*cx="\([0-9.]*\)".*/\1/' | sort -u | wc -l)" -gt 3
+svg_check acc-sh-3.13 "$tmp/plot.svg"
+acc --repeat 1 --svg "$tmp/bplot.svg"
+svg_check acc-sh-3.14 "$tmp/bplot.svg"
 acc docs/examples/lookat-near.scene --repeat 1 --svg "$tmp/mplot.svg"
 check "acc-sh-3.8 matrix camera timed: exit 0, ns/vertex and ns/pixel columns" \
     test "$rc" = 0 -a -n "$(grep 'ns/vertex  ns/pixel' "$tmp/out")"
-check "acc-sh-3.9 ... its plot has the matrix stages" grep -q 'model\.\.screen' "$tmp/mplot.svg"
-check "acc-sh-3.10 ... and points" test "$(grep -c '<circle' "$tmp/mplot.svg")" -ge 8
+check "acc-sh-3.9 ... its plot has the matrix stages" grep -q '>ndc</text>' "$tmp/mplot.svg"
+check "acc-sh-3.10 ... a point per stage but the cvv (10 x 3), 2 choices, 4 in the legend" \
+    test "$(grep -c '<circle' "$tmp/mplot.svg")" = 36
+check "acc-sh-3.15 every matrix stage timed alone, in every arithmetic: > 0 and finite" \
+    test "$(stage_times)" = 11
+svg_check acc-sh-3.16 "$tmp/mplot.svg"
+acc docs/examples/lookat-cube.scene --repeat 1 --svg "$tmp/cplot.svg"
+svg_check acc-sh-3.17 "$tmp/cplot.svg"
 
 # ---- exit codes
 printf 'framebuffer 10 10\nmodel m\nv 1 2\n' > "$tmp/bad.scene"

@@ -35,8 +35,8 @@
 #include "core/pipetrace.h"
 
 
-#define MIN_SECONDS   0.2        /* one measurement lasts at least this long */
-#define BATCH_SECONDS 0.01       /* one clock reading spans at least this long */
+#define MIN_SECONDS   0.03       /* one measurement lasts at least this long */
+#define BATCH_SECONDS 0.003      /* one clock reading spans at least this long */
 #define MAX_REPEAT    100
 
 static const char usage[] =
@@ -65,8 +65,9 @@ static const struct { pt_arith arith; unsigned choices; } run_of[NRUNS] = {
     { PT_ARITH_DOUBLE, PT_ACC_RECOMPUTE }
 };
 
-/* Nanoseconds per vertex and per pixel; NAN: not measured. */
-typedef struct timing { double vertex, pixel; } timing;
+/* Nanoseconds per vertex of each stage (row), per pixel of the rasterizer;
+** NAN: not measured. */
+typedef struct timing { double row[PT_ACC_MAXROWS]; } timing;
 
 /* The rows of one camera's table. */
 typedef struct layout {
@@ -88,7 +89,7 @@ typedef struct study {
     const layout *rows;          /* the scene's camera's */
     pt_acc_run run[NRUNS];       /* matrix camera: no RUN_TWO (all zero) */
     pt_acc_err err[NRUNS][PT_ACC_MAXROWS];
-    timing t[NRUNS];             /* vertex of RUN_TWO, pixel of the _RE runs */
+    timing t[NRUNS];             /* RUN_TWO: pixel and viewport; _RE runs: raster */
     int timed;
 } study;
 
@@ -104,20 +105,23 @@ static double now(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-/* n vertex passes of rv, then n raster passes of rr (either may be NULL);
-** their seconds in *tv and *tr. */
-static void batch(pt_acc_run *rv, const pt_acc_run *rr, uint64_t n, double *tv, double *tr)
+/* One timed job: a stage of a run (w, row) or its rasterizer (w NULL). */
+typedef struct job {
+    pt_acc_work *w;
+    int row;
+    const pt_acc_run *r;
+} job;
+
+/* n passes of the job; their seconds. */
+static double batch(const job *jb, uint64_t n)
 {
-    double t0, t1, sum = 0.0;
+    double t0 = now(), sum = 0.0;
     uint64_t k, px;
 
-    t0 = now();
-    for (k = 0; rv && k < n; k++) sum += pt_acc_vertex_pass(rv);
-    t1 = now();
-    *tv = t1 - t0;
-    for (k = 0; rr && k < n; k++) sum += pt_acc_raster_pass(rr, &px);
-    *tr = now() - t1;
+    for (k = 0; k < n; k++)
+        sum += jb->w ? pt_acc_stage_pass(jb->w, jb->row) : pt_acc_raster_pass(jb->r, &px);
     keep = sum;
+    return now() - t0;
 }
 
 static int by_value(const void *a, const void *b)
@@ -132,56 +136,79 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
-/* Time the vertex passes of rv and the raster passes of rr: the median over
-** `repeat` measurements of at least MIN_SECONDS each. */
-static timing measure(pt_acc_run *rv, const pt_acc_run *rr, int repeat)
+/* Nanoseconds per item (items per pass): the median over `repeat`
+** measurements of at least MIN_SECONDS each, each clock reading spanning at
+** least BATCH_SECONDS; NAN when a pass has no items. */
+static double measure(const job *jb, double items, int repeat)
 {
-    double v[MAX_REPEAT], p[MAX_REPEAT], tv, tr;
-    uint64_t n = 1, px = 0;
-    timing t = { (double)NAN, (double)NAN };
+    double v[MAX_REPEAT];
+    uint64_t n = 1;
     int k;
 
-    if (rv && rv->nused == 0) rv = NULL;
-    if (rr) pt_acc_raster_pass(rr, &px);
-    if (rr && px == 0) rr = NULL;
-    if (!rv && !rr) return t;
-    for (;;) {                                      /* passes per clock reading */
-        batch(rv, rr, n, &tv, &tr);
-        if (tv + tr >= BATCH_SECONDS || n >= ((uint64_t)1 << 40)) break;
-        n *= 2;
-    }
+    if (!(items > 0)) return (double)NAN;
+    while (batch(jb, n) < BATCH_SECONDS && n < ((uint64_t)1 << 40)) n *= 2;
     for (k = 0; k < repeat; k++) {
-        double sv = 0.0, sr = 0.0;
+        double sec = 0.0;
         uint64_t passes = 0;
 
         do {
-            batch(rv, rr, n, &tv, &tr);
-            sv += tv; sr += tr; passes += n;
-        } while (sv + sr < MIN_SECONDS);
-        v[k] = rv ? sv * 1e9 / ((double)passes * (double)rv->nused) : 0.0;
-        p[k] = rr ? sr * 1e9 / ((double)passes * (double)px) : 0.0;
+            sec += batch(jb, n);
+            passes += n;
+        } while (sec < MIN_SECONDS);
+        v[k] = sec * 1e9 / ((double)passes * items);
     }
-    if (rv) t.vertex = median(v, repeat);
-    if (rr) t.pixel = median(p, repeat);
-    return t;
+    return median(v, repeat);
+}
+
+/* Time the rows of run r whose bit is set in rows: each stage alone over its
+** inputs (pt_acc_work), the rasterizer by its pass. */
+static void time_run(const study *st, const pt_acc_run *r, unsigned rows, int repeat,
+                     timing *t)
+{
+    int row;
+
+    for (row = 0; row < PT_ACC_MAXROWS; row++) t->row[row] = (double)NAN;
+    for (row = 0; row <= st->rows->raster; row++) {
+        job jb = { NULL, row, r };
+        uint64_t px = 0;
+
+        if (!(rows & 1u << row)) continue;
+        if (row == st->rows->raster) {
+            pt_acc_raster_pass(r, &px);
+            t->row[row] = measure(&jb, (double)px, repeat);
+            continue;
+        }
+        jb.w = pt_acc_work_make(r, row);
+        if (jb.w) t->row[row] = measure(&jb, (double)pt_acc_work_size(jb.w), repeat);
+        pt_acc_work_free(jb.w);
+    }
 }
 
 static void time_all(study *st, int repeat)
 {
-    pt_acc_run *r = st->run;
+    const layout *L = st->rows;
+    unsigned all = (2u << L->raster) - 1, raster = 1u << L->raster;
+    int k;
 
-    st->t[RUN_DD] = measure(&r[RUN_DD], &r[RUN_DD], repeat);
-    st->t[RUN_FLOAT] = measure(&r[RUN_FLOAT], &r[RUN_FLOAT], repeat);
-    st->t[RUN_DOUBLE] = measure(&r[RUN_DOUBLE], &r[RUN_DOUBLE], repeat);
-    if (st->s->matrix)                              /* no 2.001: no RUN_TWO */
-        st->t[RUN_DOUBLE_RE] = measure(NULL, &r[RUN_DOUBLE_RE], repeat);
-    else {
-        st->t[RUN_TWO] = measure(&r[RUN_TWO], &r[RUN_DOUBLE_RE], repeat);
-        st->t[RUN_DOUBLE_RE].pixel = st->t[RUN_TWO].pixel;
-        st->t[RUN_TWO].pixel = (double)NAN;
+    for (k = 0; k < NRUNS; k++) {
+        unsigned rows = k == RUN_DD || k == RUN_FLOAT || k == RUN_DOUBLE ? all
+                      : k == RUN_TWO ? (1u << PT_ACC_PIXEL | 1u << PT_ACC_VIEWPORT) : raster;
+
+        if (st->s->matrix && k == RUN_TWO) continue;    /* no 2.001 to replace */
+        time_run(st, &st->run[k], rows, repeat, &st->t[k]);
     }
-    st->t[RUN_FLOAT_RE] = measure(NULL, &r[RUN_FLOAT_RE], repeat);
     st->timed = 1;
+}
+
+/* A run's time per vertex through every stage: the sum of its stages'. */
+static double journey_time(const study *st, int run)
+{
+    double sum = 0.0;
+    int row;
+
+    for (row = 0; row < st->rows->raster; row++)
+        if (!isnan(st->t[run].row[row])) sum += st->t[run].row[row];
+    return sum;
 }
 
 /* ===== the table ===== */
@@ -314,9 +341,28 @@ static void print_arithmetics(const study *st)
                ref ? "-" : ratio(b2, sizeof b2, e[L->viewport].differ, e[L->viewport].of),
                ref ? "-" : ratio(b3, sizeof b3, e[L->raster].differ, e[L->raster].of));
         if (st->timed)
-            printf(" %10s %9s", num(b4, sizeof b4, st->t[runs[k]].vertex),
-                   num(b5, sizeof b5, st->t[runs[k]].pixel));
+            printf(" %10s %9s", num(b4, sizeof b4, journey_time(st, runs[k])),
+                   num(b5, sizeof b5, st->t[runs[k]].row[L->raster]));
         putchar('\n');
+    }
+}
+
+/* Each stage's time alone, per arithmetic (only when timed). */
+static void print_stage_times(const study *st, int repeat)
+{
+    static const int runs[] = { RUN_FLOAT, RUN_DOUBLE, RUN_DD };
+    char b[3][32];
+    int row, k;
+
+    if (!st->timed) return;
+    printf("\ntime per stage alone, ns per vertex (raster: ns per pixel), median of %d\n"
+           "stage             float     double  double-double\n", repeat);
+    for (row = 0; row < st->rows->nrows; row++) {
+        for (k = 0; k < 3; k++) num(b[k], sizeof b[k], st->t[runs[k]].row[row]);
+        printf("%-12s %10s %10s %14s\n", st->rows->names[row],
+               isnan(st->t[runs[0]].row[row]) ? "-" : b[0],
+               isnan(st->t[runs[1]].row[row]) ? "-" : b[1],
+               isnan(st->t[runs[2]].row[row]) ? "-" : b[2]);
     }
 }
 
@@ -329,7 +375,7 @@ static void print_two(const study *st)
 
     printf("\nchoice: 2.001 or 2.0 in x_pp = 0.5 + w/2.001 * (x_ip + 1), in double\n");
     printf("constant  pixel max err  viewport differ  left viewport  pixels differ%s\n",
-           st->timed ? "  ns/vertex" : "");
+           st->timed ? "  pixel ns/vertex" : "");
     for (k = 0; k < 2; k++) {
         const pt_acc_err *e = st->err[two[k]];
 
@@ -338,7 +384,7 @@ static void print_two(const study *st)
                ratio(b2, sizeof b2, e[PT_ACC_VIEWPORT].differ, e[PT_ACC_VIEWPORT].of),
                (unsigned long long)e[PT_ACC_VIEWPORT].left,
                ratio(b3, sizeof b3, e[PT_ACC_RASTER].differ, e[PT_ACC_RASTER].of));
-        if (st->timed) printf(" %10s", num(b4, sizeof b4, st->t[two[k]].vertex));
+        if (st->timed) printf(" %16s", num(b4, sizeof b4, st->t[two[k]].row[PT_ACC_PIXEL]));
         putchar('\n');
     }
 }
@@ -365,33 +411,104 @@ static void print_choices(const study *st)
                num(b1, sizeof b1, e->n ? e->max_abs : (double)NAN),
                num(b2, sizeof b2, e->n ? e->sum_abs / (double)e->n : (double)NAN),
                ratio(b3, sizeof b3, e->differ, e->of));
-        if (st->timed) printf(" %9s", num(b4, sizeof b4, st->t[dda[k]].pixel));
+        if (st->timed) printf(" %9s", num(b4, sizeof b4, st->t[dda[k]].row[st->rows->raster]));
         putchar('\n');
     }
 }
 
 /* ===== the plot ===== */
 
-/* Canvas and plot area, in SVG user units. */
-#define SVG_W   800
-#define SVG_H   520
-#define PLOT_L  80
-#define PLOT_R  560
-#define PLOT_T  60
-#define PLOT_B  450
-#define MAXPTS  48
+/*
+** Four panels, one per unit of error, each with its own log-log axes: the
+** coordinates (model .. image, or the matrix camera's model .. ndc), pixels
+** (the pixel plane or screen, viewport, framebuffer), array places (index),
+** and the rasterizer (the DDA's y, in pixels, against ns per pixel).  Every
+** stage is a point at its own time.  Labels are placed by boxes: a label's
+** box is its text's width at LABEL_EM of the font size a character, and it
+** goes at the first place beside its point where its box meets no other
+** label, no point and stays inside the plot (tests/accuracy.sh checks the
+** boxes of every text of the SVG).
+*/
 
-/* One point: the stages (bits of rows) of one run that share a time and an
-** error. */
+#define SVG_W    1000
+#define SVG_H    800
+#define PANEL_W  500            /* panels in a 2 x 2 grid below the header */
+#define PANEL_H  345
+#define PANELS_T 100
+#define MARGIN_L 80             /* plot area inside a panel */
+#define MARGIN_R 20
+#define MARGIN_T 30
+#define MARGIN_B 55
+#define LABEL_FS 10             /* font sizes */
+#define TEXT_FS  11
+#define LABEL_EM 0.6            /* a character's width, of the font size */
+#define MAXPTS   48
+#define MAXBOX   96
+
+enum { P_COORD, P_PIXEL, P_INDEX, P_RASTER, NPANELS };
+
+static const char *const panel_unit[NPANELS] = {
+    "coordinates", "pixels", "array places", "raster"
+};
+static const char *const panel_title[NPANELS] = {
+    "coordinates", "pixels", "array index", "rasterizer"
+};
+static const char *const panel_ylabel[NPANELS] = {
+    "max abs error (coordinates), log", "max abs error (pixels), log",
+    "max abs error (array places), log", "max abs error of y (pixels), log"
+};
+static const char *const panel_xlabel[NPANELS] = {
+    "ns per vertex, each stage alone, log", "ns per vertex, each stage alone, log",
+    "ns per vertex, each stage alone, log", "ns per pixel, the DDA's pass, log"
+};
+
+static const char *const series_color[3] = { "#d95f02", "#1b61b8", "#1b9e77" };
+
+/* The panel of a row: -1 for none (the cvv: outcodes, no error). */
+static int panel_of(const study *st, int row)
+{
+    if (row == st->rows->raster) return P_RASTER;
+    if (st->s->matrix) {
+        if (row == PT_ACC_M_CVV) return -1;
+        if (row == PT_ACC_M_INDEX) return P_INDEX;
+        return row <= PT_ACC_M_NDC ? P_COORD : P_PIXEL;
+    }
+    if (row == PT_ACC_INDEX) return P_INDEX;
+    return row <= PT_ACC_IMAGE ? P_COORD : P_PIXEL;
+}
+
+/* One point: a stage of one run at its own time. */
 typedef struct point {
     double t, err;               /* ns, max abs error (0 and inf allowed) */
     int series;                  /* 0 float, 1 double, 2 double-double */
-    const char *choice;          /* an algorithm choice ("2.0: "), or NULL */
-    unsigned rows;               /* bit k: row k */
-    double px, py, ly;           /* the point; its label's baseline */
+    int panel;
+    char label[40];              /* "camera", "2.0: pixel" */
+    double px, py;               /* the point */
+    double lx, ly;               /* its label's anchor and baseline */
+    int anchor_end;              /* 1: text-anchor end (left of the point) */
 } point;
 
-static const char *const series_color[3] = { "#d95f02", "#1b61b8", "#1b9e77" };
+/* A text's box. */
+typedef struct box { double x0, y0, x1, y1; } box;
+
+static int overlap(const box *a, const box *b)
+{
+    return a->x0 < b->x1 && b->x0 < a->x1 && a->y0 < b->y1 && b->y0 < a->y1;
+}
+
+/* The box of text of n characters at font size fs, anchored at (x, y):
+** anchor -1 start, 0 middle, 1 end. */
+static box text_box(double x, double y, size_t n, double fs, int anchor)
+{
+    double w = LABEL_EM * fs * (double)n;
+    box b;
+
+    b.x0 = anchor < 0 ? x : anchor == 0 ? x - w / 2 : x - w;
+    b.x1 = b.x0 + w;
+    b.y0 = y - 0.8 * fs;
+    b.y1 = y + 0.25 * fs;
+    return b;
+}
 
 /* s with &, <, >, " escaped for XML text and attributes. */
 static void xml_text(FILE *f, const char *s)
@@ -406,94 +523,43 @@ static void xml_text(FILE *f, const char *s)
         }
 }
 
-/* Add row's point, or add row to the same run's point with the same values. */
-static int add_point(point *p, int n, int series, const char *choice, double t,
-                     double err, int row)
+static int add_point(point *p, int n, int series, const char *choice, const char *name,
+                     double t, double err, int panel)
 {
-    int k;
-
-    if (isnan(t) || isnan(err) || n == MAXPTS) return n;
-    for (k = 0; k < n; k++)
-        if (p[k].series == series && p[k].choice == choice && p[k].t == t && p[k].err == err) {
-            p[k].rows |= 1u << row;
-            return n;
-        }
+    if (isnan(t) || isnan(err) || panel < 0 || n == MAXPTS) return n;
     memset(&p[n], 0, sizeof p[n]);
-    p[n].t = t; p[n].err = err; p[n].series = series; p[n].choice = choice;
-    p[n].rows = 1u << row;
+    p[n].t = t; p[n].err = err; p[n].series = series; p[n].panel = panel;
+    snprintf(p[n].label, sizeof p[n].label, "%s%s", choice ? choice : "", name);
     return n + 1;
 }
 
-/* The label of a point: its stages (rows of L), three or more in a row as
-** "first..last". */
-static void point_label(char *b, size_t n, const point *p, const layout *L)
+/* Every point of the plot. */
+static int collect_points(const study *st, point *p)
 {
-    size_t len = 0;
-    int r = 0, end;
+    static const int arith_runs[3] = { RUN_FLOAT, RUN_DOUBLE, RUN_DD };
+    const layout *L = st->rows;
+    int n = 0, k, row;
 
-    b[0] = '\0';
-    if (p->choice) len += (size_t)snprintf(b, n, "%s", p->choice);
-    while (r < L->nrows && len < n) {
-        if (!(p->rows & (1u << r))) { r++; continue; }
-        for (end = r; end + 1 < L->nrows && (p->rows & (1u << (end + 1))); end++) {}
-        if (end - r >= 2)
-            len += (size_t)snprintf(b + len, n - len, "%s%s..%s", len && !p->choice ? ", " : "",
-                                    L->names[r], L->names[end]);
-        else
-            for (; r <= end && len < n; r++)
-                len += (size_t)snprintf(b + len, n - len, "%s%s",
-                                        len && !(p->choice && len == strlen(p->choice))
-                                        ? ", " : "", L->names[r]);
-        r = end + 1;
-    }
-}
+    for (k = 0; k < 3; k++)
+        for (row = 0; row < L->nrows; row++) {
+            const pt_acc_err *e = &st->err[arith_runs[k]][row];
 
-static int by_y(const void *a, const void *b)
-{
-    const point *x = *(const point *const *)a, *y = *(const point *const *)b;
-
-    if (x->py != y->py) return x->py < y->py ? -1 : 1;
-    return x->rows < y->rows ? -1 : x->rows > y->rows;
-}
-
-/* Spread the labels of one series at least 12 units apart, top to bottom
-** (not those of errors of 0: they go under the line of zeros). */
-static void spread_labels(point *p, int n, int series)
-{
-    point *col[MAXPTS];
-    int k, m = 0;
-
-    for (k = 0; k < n; k++)
-        if (p[k].series == series && p[k].err != 0) col[m++] = &p[k];
-    qsort(col, (size_t)m, sizeof *col, by_y);
-    for (k = 0; k < m; k++) {
-        col[k]->ly = col[k]->py + 4;
-        if (k && col[k]->ly < col[k - 1]->ly + 12) col[k]->ly = col[k - 1]->ly + 12;
-    }
-}
-
-/* Labels of errors of 0: centered under their points, below the line, each
-** in the first row where it overlaps no label before it (widths estimated
-** at 5.6 units a character). */
-static void place_zero_labels(point *p, int n, const layout *L)
-{
-    double lo[MAXPTS], hi[MAXPTS];
-    int row[MAXPTS], k, j, r, m = 0;
-    char b[160];
-
-    for (k = 0; k < n; k++) {
-        if (p[k].err != 0) continue;
-        point_label(b, sizeof b, &p[k], L);
-        lo[m] = p[k].px - 2.8 * (double)strlen(b) - 4;
-        hi[m] = p[k].px + 2.8 * (double)strlen(b) + 4;
-        for (r = 0;; r++) {
-            for (j = 0; j < m; j++)
-                if (row[j] == r && lo[m] < hi[j] && lo[j] < hi[m]) break;
-            if (j == m) break;
+            n = add_point(p, n, k, NULL, L->names[row], st->t[arith_runs[k]].row[row],
+                          arith_runs[k] == RUN_DD ? 0.0 : e->n ? e->max_abs : (double)NAN,
+                          panel_of(st, row));
         }
-        row[m++] = r;
-        p[k].ly = p[k].py + 16 + 12 * r;
-    }
+    if (!st->s->matrix)                             /* the choice 2.0 for 2.001 */
+        for (row = PT_ACC_PIXEL; row <= PT_ACC_VIEWPORT; row++) {
+            const pt_acc_err *e = &st->err[RUN_TWO][row];
+
+            n = add_point(p, n, 1, "2.0: ", L->names[row], st->t[RUN_TWO].row[row],
+                          e->n ? e->max_abs : (double)NAN, P_PIXEL);
+        }
+    n = add_point(p, n, 0, "recompute y: ", "raster", st->t[RUN_FLOAT_RE].row[L->raster],
+                  st->err[RUN_FLOAT_RE][L->raster].max_abs, P_RASTER);
+    n = add_point(p, n, 1, "recompute y: ", "raster", st->t[RUN_DOUBLE_RE].row[L->raster],
+                  st->err[RUN_DOUBLE_RE][L->raster].max_abs, P_RASTER);
+    return n;
 }
 
 /* Position of decade exponent e on an axis from lo to hi drawn from a to b. */
@@ -502,175 +568,215 @@ static double axis_pos(double e, double lo, double hi, double a, double b)
     return a + (b - a) * (e - lo) / (hi - lo);
 }
 
-/* Write the plot: every stage's max abs error against its run's time, log-log. */
-static void write_svg(FILE *f, const study *st)
+/* A decade's tick label: 0.01 .. 10000 written out, else 1eN. */
+static void decade(char *b, size_t n, int e)
 {
-    static const int arith_runs[3] = { RUN_FLOAT, RUN_DOUBLE, RUN_DD };
-    static const char *const classic_notes[] = {
-        "An error of 0 lies on the dashed",
-        "line marked 0, which stands for",
-        NULL,                                       /* "1e-17; the reference's ..." */
-        "are 0 by definition.",
-        "",                                         /* infs: where inf lies */
-        "Units of error: model..pixel",
-        "in their coordinates; viewport",
-        "and framebuffer in pixels; index",
-        "in array places; raster: the",
-        "DDA's y against the exact line,",
-        "in pixels.  Time: ns per vertex",
-        "(stages), ns per pixel (raster)."
-    };
-    static const char *const matrix_notes[] = {
-        "An error of 0 lies on the dashed",
-        "line marked 0, which stands for",
-        NULL,
-        "are 0 by definition.",
-        "",
-        "Units of error: model..screen",
-        "in their coordinates; viewport",
-        "and framebuffer in pixels; index",
-        "in array places; raster: the",
-        "DDA's y against the exact line,",
-        "in pixels; cvv (outcodes) has",
-        "no point.  Time: ns per vertex",
-        "(stages), ns per pixel (raster",
-        "with clipping)."
-    };
-    const layout *L = st->rows;
-    const char *const *notes = st->s->matrix ? matrix_notes : classic_notes;
-    int nnotes = st->s->matrix ? (int)(sizeof matrix_notes / sizeof matrix_notes[0])
-                               : (int)(sizeof classic_notes / sizeof classic_notes[0]);
-    point p[MAXPTS];
-    static const int tick_steps[] = { 1, 2, 5, 10, 20, 50, 100 };
-    int n = 0, k, row, step, zeros = 0, infs = 0;
+    if (e >= -2 && e <= 4) snprintf(b, n, "%g", pow(10.0, e));
+    else snprintf(b, n, "1e%d", e);
+}
+
+/* One panel's frame: its plot area and decades. */
+typedef struct frame {
+    double l, r, t, b;           /* the plot area */
+    double x0, x1, y0, y1;       /* decades of time and error */
+    double bottom, top;          /* the y axis's ends: room for 0 and inf */
+    int zeros, infs;
+} frame;
+
+static void frame_of(frame *fr, int panel, point *p, int n)
+{
     double tmin = HUGE_VAL, tmax = 0, emin = HUGE_VAL, emax = 0;
-    double x0, x1, y0, y1, bottom, top;
-    char b[160];
+    double ox = (panel % 2) * PANEL_W, oy = PANELS_T + (panel / 2) * PANEL_H;
+    int k;
 
-    for (k = 0; k < 3; k++)                         /* the arithmetics as written */
-        for (row = 0; row < L->nrows; row++) {
-            const pt_acc_err *e = &st->err[arith_runs[k]][row];
-            const timing *t = &st->t[arith_runs[k]];
-
-            n = add_point(p, n, k, NULL, row == L->raster ? t->pixel : t->vertex,
-                          arith_runs[k] == RUN_DD ? 0.0 : e->n ? e->max_abs : (double)NAN, row);
-        }
-    if (!st->s->matrix) {                           /* the choices: 2.001 or 2.0 */
-        n = add_point(p, n, 1, "2.0: ", st->t[RUN_TWO].vertex,
-                      st->err[RUN_TWO][PT_ACC_PIXEL].n ? st->err[RUN_TWO][PT_ACC_PIXEL].max_abs
-                                                       : (double)NAN, PT_ACC_PIXEL);
-        n = add_point(p, n, 1, "2.0: ", st->t[RUN_TWO].vertex,
-                      st->err[RUN_TWO][PT_ACC_VIEWPORT].n
-                      ? st->err[RUN_TWO][PT_ACC_VIEWPORT].max_abs : (double)NAN, PT_ACC_VIEWPORT);
-    }
-    n = add_point(p, n, 0, "recompute y: ", st->t[RUN_FLOAT_RE].pixel,   /* the DDA's */
-                  st->err[RUN_FLOAT_RE][L->raster].max_abs, L->raster);
-    n = add_point(p, n, 1, "recompute y: ", st->t[RUN_DOUBLE_RE].pixel,
-                  st->err[RUN_DOUBLE_RE][L->raster].max_abs, L->raster);
-
-    for (k = 0; k < n; k++) {                       /* the axes: whole decades */
+    memset(fr, 0, sizeof *fr);
+    fr->l = ox + MARGIN_L; fr->r = ox + PANEL_W - MARGIN_R;
+    fr->t = oy + MARGIN_T; fr->b = oy + PANEL_H - MARGIN_B;
+    for (k = 0; k < n; k++) {
+        if (p[k].panel != panel) continue;
         if (p[k].t < tmin) tmin = p[k].t;
         if (p[k].t > tmax) tmax = p[k].t;
-        if (p[k].err == 0) zeros = 1;
-        else if (isinf(p[k].err)) infs = 1;
+        if (p[k].err == 0) fr->zeros = 1;
+        else if (isinf(p[k].err)) fr->infs = 1;
         else {
             if (p[k].err < emin) emin = p[k].err;
             if (p[k].err > emax) emax = p[k].err;
         }
     }
     if (tmax == 0) { tmin = 1; tmax = 10; }
-    if (emax == 0) { emin = 1e-16; emax = 1; }
-    x0 = floor(log10(tmin));
-    x1 = ceil(log10(tmax));
-    if (x1 <= x0) x1 = x0 + 1;
-    y0 = floor(log10(emin));
-    y1 = ceil(log10(emax));
-    if (y1 <= y0) y1 = y0 + 1;
-    bottom = zeros ? y0 - 3 : y0;                   /* the 0 line at y0 - 1 */
-    top = infs ? y1 + 1.5 : y1;                     /* the inf line at y1 + 1 */
+    if (emax == 0) { emin = 0.1; emax = 1; }
+    fr->x0 = floor(log10(tmin));
+    fr->x1 = ceil(log10(tmax));
+    if (fr->x1 <= fr->x0) fr->x1 = fr->x0 + 1;
+    fr->y0 = floor(log10(emin));
+    fr->y1 = ceil(log10(emax));
+    if (fr->y1 <= fr->y0) fr->y1 = fr->y0 + 1;
+    fr->bottom = fr->zeros ? fr->y0 - 1.6 : fr->y0;     /* the 0 line at y0 - 1 */
+    fr->top = fr->infs ? fr->y1 + 1.6 : fr->y1;         /* the inf line at y1 + 1 */
     for (k = 0; k < n; k++) {
-        double e = p[k].err == 0 ? y0 - 1 : isinf(p[k].err) ? y1 + 1 : log10(p[k].err);
+        double e;
 
-        p[k].px = axis_pos(log10(p[k].t), x0, x1, PLOT_L, PLOT_R);
-        p[k].py = axis_pos(e, bottom, top, PLOT_B, PLOT_T);
+        if (p[k].panel != panel) continue;
+        e = p[k].err == 0 ? fr->y0 - 1 : isinf(p[k].err) ? fr->y1 + 1 : log10(p[k].err);
+        p[k].px = axis_pos(log10(p[k].t), fr->x0, fr->x1, fr->l, fr->r);
+        p[k].py = axis_pos(e, fr->bottom, fr->top, fr->b, fr->t);
     }
-    for (k = 0; k < 3; k++) spread_labels(p, n, k);
-    place_zero_labels(p, n, L);
+}
 
-    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
-               "viewBox=\"0 0 %d %d\" font-family=\"sans-serif\" font-size=\"11\">\n",
-            SVG_W, SVG_H, SVG_W, SVG_H);
-    fprintf(f, "<title>pipetrace accuracy: ");
-    xml_text(f, st->s->path);
-    fprintf(f, "</title>\n<rect width=\"%d\" height=\"%d\" fill=\"white\"/>\n", SVG_W, SVG_H);
-    fprintf(f, "<text x=\"%d\" y=\"24\" font-size=\"14\">Error against run time: ", PLOT_L);
-    xml_text(f, st->s->path);
-    fprintf(f, "</text>\n<text x=\"%d\" y=\"42\" fill=\"#555\">max abs error of each stage "
-               "against the double-double reference, one point per stage</text>\n", PLOT_L);
+/* Place the labels of one panel: for each point, the first place beside it
+** (right, then left, then rows further up and down) whose box stays inside the
+** plot and meets no placed label and no point. */
+static void place_labels(point *p, int n, int panel, const frame *fr)
+{
+    box placed[MAXBOX], dot;
+    int np = 0, k, i, tries;
 
-    for (k = (int)x0; k <= (int)x1; k++) {          /* grid, ticks, axes */
-        double x = axis_pos(k, x0, x1, PLOT_L, PLOT_R);
-        fprintf(f, "<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"#ddd\"/>\n"
-                   "<text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">1e%d</text>\n",
-                x, PLOT_T, x, PLOT_B, x, PLOT_B + 16, k);
+    for (k = 0; k < n; k++) {
+        if (p[k].panel != panel) continue;
+        for (tries = 0; tries < 40; tries++) {
+            int side = tries % 2, step = (tries / 2 + 1) / 2;
+            double dy = (tries / 2) % 2 ? -12.0 * step : 12.0 * step;
+            double x = p[k].px + (side ? -7 : 7), y = p[k].py + 3.5 + dy;
+            box b = text_box(x, y, strlen(p[k].label), LABEL_FS, side ? 1 : -1);
+            int ok = b.x0 >= fr->l + 2 && b.x1 <= fr->r - 2 && b.y0 >= fr->t + 2
+                     && b.y1 <= fr->b - 2;
+
+            for (i = 0; ok && i < np; i++) ok = !overlap(&b, &placed[i]);
+            for (i = 0; ok && i < n; i++) {
+                if (p[i].panel != panel) continue;
+                dot.x0 = p[i].px - 5; dot.x1 = p[i].px + 5;
+                dot.y0 = p[i].py - 5; dot.y1 = p[i].py + 5;
+                ok = !overlap(&b, &dot);
+            }
+            if (ok || tries == 39) {
+                p[k].lx = x; p[k].ly = y; p[k].anchor_end = side;
+                if (np < MAXBOX) placed[np++] = b;
+                break;
+            }
+        }
     }
-    for (step = 0; step < 6 && (y1 - y0) / tick_steps[step] > 20; step++) {}
-    step = tick_steps[step];
-    for (k = (int)y0; k <= (int)y1; k++) {          /* every decade, at most ~20 */
-        double y = axis_pos(k, bottom, top, PLOT_B, PLOT_T);
-        if (k % step) continue;
-        fprintf(f, "<line x1=\"%d\" y1=\"%.1f\" x2=\"%d\" y2=\"%.1f\" stroke=\"#ddd\"/>\n"
-                   "<text x=\"%d\" y=\"%.1f\" text-anchor=\"end\">1e%d</text>\n",
-                PLOT_L, y, PLOT_R, y, PLOT_L - 6, y + 4, k);
+}
+
+/* A text at (x, y), anchor -1 start, 0 middle, 1 end; cls names its role. */
+static void text_at(FILE *f, double x, double y, int fs, int anchor, const char *fill,
+                    const char *cls, const char *s)
+{
+    fprintf(f, "<text class=\"%s\" x=\"%.1f\" y=\"%.1f\" font-size=\"%d\"%s%s%s%s%s>", cls,
+            x, y, fs, strcmp(cls, "label") ? "" : " stroke=\"white\" stroke-width=\"3\" "
+            "paint-order=\"stroke\"",
+            anchor < 0 ? "" : anchor == 0 ? " text-anchor=\"middle\"" : " text-anchor=\"end\"",
+            fill ? " fill=\"" : "", fill ? fill : "", fill ? "\"" : "");
+    xml_text(f, s);
+    fputs("</text>\n", f);
+}
+
+static void write_panel(FILE *f, const study *st, int panel, point *p, int n)
+{
+    frame fr;
+    char b[64];
+    int k, step;
+
+    frame_of(&fr, panel, p, n);
+    place_labels(p, n, panel, &fr);
+    fprintf(f, "<g class=\"panel\" data-unit=\"%s\">\n", panel_unit[panel]);
+    snprintf(b, sizeof b, "%s%s", panel_title[panel],
+             panel == P_PIXEL ? (st->s->matrix ? ": screen, viewport, framebuffer"
+                                               : ": pixel plane, viewport, framebuffer")
+             : panel == P_COORD ? (st->s->matrix ? ": model .. ndc" : ": model, camera, image")
+             : "");
+    text_at(f, fr.l, fr.t - 10, 12, -1, NULL, "panel-title", b);
+    for (k = (int)fr.x0; k <= (int)fr.x1; k++) {    /* x: every decade */
+        double x = axis_pos(k, fr.x0, fr.x1, fr.l, fr.r);
+
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n",
+                x, fr.t, x, fr.b);
+        decade(b, sizeof b, k);
+        text_at(f, x, fr.b + 14, 10, 0, NULL, "tick", b);
+    }
+    for (step = 1; (fr.y1 - fr.y0) / step > 6; step++) {}
+    for (k = (int)fr.y0; k <= (int)fr.y1; k++) {    /* y: at most 7 decades named */
+        double y = axis_pos(k, fr.bottom, fr.top, fr.b, fr.t);
+
+        if ((k - (int)fr.y1) % step) continue;
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n",
+                fr.l, y, fr.r, y);
+        decade(b, sizeof b, k);
+        text_at(f, fr.l - 5, y + 3.5, 10, 1, NULL, "tick", b);
     }
     for (k = 0; k < 2; k++) {                       /* the lines of 0 and of inf */
         double y;
-        if (!(k ? infs : zeros)) continue;
-        y = axis_pos(k ? y1 + 1 : y0 - 1, bottom, top, PLOT_B, PLOT_T);
-        fprintf(f, "<line x1=\"%d\" y1=\"%.1f\" x2=\"%d\" y2=\"%.1f\" stroke=\"#888\" "
-                   "stroke-dasharray=\"5 4\"/>\n<text x=\"%d\" y=\"%.1f\" "
-                   "text-anchor=\"end\">%s</text>\n",
-                PLOT_L, y, PLOT_R, y, PLOT_L - 6, y + 4, k ? "inf" : "0");
-    }
-    fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" "
-               "stroke=\"#333\"/>\n", PLOT_L, PLOT_T, PLOT_R - PLOT_L, PLOT_B - PLOT_T);
-    fprintf(f, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">run time: ns per vertex "
-               "(stages) or per pixel (raster), log scale</text>\n",
-            (PLOT_L + PLOT_R) / 2, PLOT_B + 36);
-    fprintf(f, "<text transform=\"translate(%d %d) rotate(-90)\" text-anchor=\"middle\">"
-               "max abs error, log scale</text>\n", PLOT_L - 50, (PLOT_T + PLOT_B) / 2);
 
-    for (k = 0; k < n; k++) {                       /* points and labels */
+        if (!(k ? fr.infs : fr.zeros)) continue;
+        y = axis_pos(k ? fr.y1 + 1 : fr.y0 - 1, fr.bottom, fr.top, fr.b, fr.t);
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#888\" "
+                   "stroke-dasharray=\"5 4\"/>\n", fr.l, y, fr.r, y);
+        text_at(f, fr.l - 5, y + 3.5, 10, 1, NULL, "tick", k ? "inf" : "0");
+    }
+    fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" "
+               "stroke=\"#333\"/>\n", fr.l, fr.t, fr.r - fr.l, fr.b - fr.t);
+    text_at(f, (fr.l + fr.r) / 2, fr.b + 32, TEXT_FS, 0, NULL, "axis x", panel_xlabel[panel]);
+    fprintf(f, "<text class=\"axis y\" x=\"%.1f\" y=\"%.1f\" font-size=\"%d\" "
+               "text-anchor=\"middle\" transform=\"rotate(-90 %.1f %.1f)\">",
+            fr.l - 48, (fr.t + fr.b) / 2, TEXT_FS, fr.l - 48, (fr.t + fr.b) / 2);
+    xml_text(f, panel_ylabel[panel]);
+    fputs("</text>\n", f);
+
+    for (k = 0; k < n; k++) {                       /* points, leaders, labels */
         const char *c = series_color[p[k].series];
-        int left = p[k].series != 1;                /* double's labels go right */
 
+        if (p[k].panel != panel) continue;
         fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\" stroke=\"%s\" "
-                   "stroke-width=\"1.5\"/>\n", p[k].px, p[k].py, p[k].choice ? "white" : c, c);
-        point_label(b, sizeof b, &p[k], L);
-        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"%s\" text-anchor=\"%s\" "
-                   "font-size=\"10\">", p[k].err == 0 ? p[k].px : p[k].px + (left ? -7 : 7),
-                p[k].ly, c, p[k].err == 0 ? "middle" : left ? "end" : "start");
-        xml_text(f, b);
-        fprintf(f, "</text>\n");
+                   "stroke-width=\"1.5\"/>\n", p[k].px, p[k].py,
+                strchr(p[k].label, ':') ? "white" : c, c);
+        if (fabs(p[k].ly - 3.5 - p[k].py) > 1)      /* moved away: a leader */
+            fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" "
+                       "stroke-width=\"0.6\"/>\n", p[k].px, p[k].py,
+                    p[k].lx + (p[k].anchor_end ? 1 : -1), p[k].ly - 3.5, c);
+        text_at(f, p[k].lx, p[k].ly, LABEL_FS, p[k].anchor_end ? 1 : -1, c, "label",
+                p[k].label);
     }
+    fputs("</g>\n", f);
+}
 
-    fprintf(f, "<g transform=\"translate(%d %d)\">\n", PLOT_R + 20, PLOT_T + 6);
-    for (k = 0; k < 3; k++)                         /* the legend */
-        fprintf(f, "<circle cx=\"6\" cy=\"%d\" r=\"4\" fill=\"%s\"/>\n"
-                   "<text x=\"16\" y=\"%d\">%s, %d bits%s</text>\n", k * 18,
-                series_color[k], k * 18 + 4, pt_arith_names[k], pt_arith_bits[k],
-                k == 2 ? " (reference)" : "");
-    fprintf(f, "<circle cx=\"6\" cy=\"54\" r=\"4\" fill=\"white\" stroke=\"#333\" "
-               "stroke-width=\"1.5\"/>\n<text x=\"16\" y=\"58\">an algorithm choice</text>\n");
-    for (k = 0; k < nnotes; k++) {
-        fprintf(f, "<text x=\"0\" y=\"%d\" fill=\"#555\">", 86 + 14 * k);
-        if (!notes[k]) fprintf(f, "1e%d; the reference's errors", (int)y0 - 1);
-        else if (!notes[k][0] && infs) fprintf(f, "inf lies on the top dashed line.");
-        else xml_text(f, notes[k]);
-        fprintf(f, "</text>\n");
+/* Write the plot: every stage's max abs error against its own time. */
+static void write_svg(FILE *f, const study *st)
+{
+    point p[MAXPTS];
+    char b[160];
+    int n = collect_points(st, p), k;
+    double x;
+
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+               "viewBox=\"0 0 %d %d\" font-family=\"sans-serif\" font-size=\"%d\">\n",
+            SVG_W, SVG_H, SVG_W, SVG_H, TEXT_FS);
+    fprintf(f, "<title>pipetrace accuracy: ");
+    xml_text(f, st->s->path);
+    fprintf(f, "</title>\n<rect width=\"%d\" height=\"%d\" fill=\"white\"/>\n", SVG_W, SVG_H);
+    snprintf(b, sizeof b, "Error against the cost of each stage: %s", st->s->path);
+    text_at(f, 20, 24, 14, -1, NULL, "title", b);
+    text_at(f, 20, 42, TEXT_FS, -1, "#555", "note",
+            "max abs error of each stage against the double-double reference, "
+            "one panel per unit; each stage timed alone");
+    for (k = 0, x = 26; k < 4; k++) {               /* the legend, in a row */
+        fprintf(f, "<circle cx=\"%.1f\" cy=\"60\" r=\"4\" fill=\"%s\" stroke=\"%s\" "
+                   "stroke-width=\"1.5\"/>\n", x, k < 3 ? series_color[k] : "white",
+                k < 3 ? series_color[k] : "#333");
+        if (k < 3)
+            snprintf(b, sizeof b, "%s, %d bits%s", pt_arith_names[k], pt_arith_bits[k],
+                     k == 2 ? " (reference)" : "");
+        else snprintf(b, sizeof b, "hollow: an algorithm choice");
+        text_at(f, x + 10, 64, TEXT_FS, -1, NULL, "legend", b);
+        x += 10 + LABEL_EM * TEXT_FS * (double)strlen(b) + 30;
     }
-    fprintf(f, "</g>\n</svg>\n");
+    text_at(f, 20, 84, TEXT_FS, -1, "#555", "note",
+            st->s->matrix
+            ? "0 (the reference's own errors, and exact results) lies on the dashed line "
+              "marked 0, inf on the one marked inf; cvv (outcodes) has no error to plot."
+            : "0 (the reference's own errors, and exact results) lies on the dashed line "
+              "marked 0, inf on the one marked inf.");
+    for (k = 0; k < NPANELS; k++) write_panel(f, st, k, p, n);
+    fprintf(f, "</svg>\n");
 }
 
 /* ===== main ===== */
@@ -714,7 +820,9 @@ int pt_cmd_accuracy(int argc, char **argv)
     st->s = &s;
     st->rows = s.matrix ? &matrix_rows : &classic_rows;
     for (k = 0; k < NRUNS && rc == 0; k++) {
-        st->t[k].vertex = st->t[k].pixel = (double)NAN;
+        int row;
+
+        for (row = 0; row < PT_ACC_MAXROWS; row++) st->t[k].row[row] = (double)NAN;
         if (s.matrix && k == RUN_TWO) continue;     /* no 2.001 to replace */
         rc = pt_acc_run_make(&st->run[k], &s, run_of[k].arith, run_of[k].choices);
     }
@@ -730,6 +838,7 @@ int pt_cmd_accuracy(int argc, char **argv)
     print_header(st);
     print_errors(st);
     print_arithmetics(st);
+    print_stage_times(st, repeat);
     print_choices(st);
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("pipetrace accuracy: cannot write to standard output\n", stderr);
