@@ -854,6 +854,114 @@ static void test_mcompare(void)
     pt_scene_free(&s);
 }
 
+/* ===== the timed stages are the error runs' (pt_acc_work) ===== */
+
+static int same_dd(const pt_dd *a, const pt_dd *b, size_t n)     /* bit for bit */
+{
+    return memcmp(a, b, n * sizeof *a) == 0;
+}
+
+static int same_px(pt_pix a, pt_pix b)
+{
+    return a.x == b.x && a.y == b.y && a.ok == b.ok;
+}
+
+static int same_journey(const pt_acc_journey *a, const pt_acc_journey *b)
+{
+    return same_dd(a->m, b->m, 3) && same_dd(a->c, b->c, 3) && same_dd(a->ip, b->ip, 2)
+           && same_dd(a->pp, b->pp, 2) && same_px(a->vp, b->vp) && same_px(a->fb, b->fb)
+           && a->idx == b->idx;
+}
+
+static int same_front(const pt_acc_mjourney *a, const pt_acc_mjourney *b)
+{
+    return same_dd(a->m, b->m, 3) && same_dd(a->w, b->w, 4) && same_dd(a->v, b->v, 4)
+           && same_dd(a->k, b->k, 4) && !memcmp(a->kerr, b->kerr, sizeof a->kerr)
+           && a->code == b->code;
+}
+
+static int same_mtail(const pt_acc_mtail *a, const pt_acc_mtail *b)
+{
+    return same_dd(a->n, b->n, 3) && same_dd(a->sc, b->sc, 3) && same_px(a->vp, b->vp)
+           && same_px(a->fb, b->fb) && a->idx == b->idx && same_dd(a->pp, b->pp, 2);
+}
+
+/* Run rows first .. last of work w one at a time, after poisoning it when
+** poison is set, and compare every input with run r's journey: 1 when all
+** agree bit for bit.  *n counts the inputs. */
+static int stages_agree(const pt_acc_run *r, pt_acc_work *w, int first, int last, int poison,
+                        size_t *n)
+{
+    const pt_scene *s = r->s;
+    size_t k, v, i = 0;
+    int row, ok = 1;
+
+    if (poison) pt_acc_work_poison(w);
+    for (row = first; row <= last; row++) pt_acc_stage_pass(w, row);
+    for (k = 0; k < s->nmodels; k++)
+        for (v = 0; v < s->models[k].nv; v++) {
+            if (!r->used[k][v]) continue;
+            if (!s->matrix) ok &= same_journey(pt_acc_work_journey(w, i++), &r->j[k][v]);
+            else if (first < PT_ACC_M_NDC)
+                ok &= same_front(pt_acc_work_mjourney(w, i++), &r->mj[k][v]);
+            else if (r->mj[k][v].code == 0)
+                ok &= same_mtail(pt_acc_work_mtail(w, i++), &r->mj[k][v].t);
+        }
+    *n += i;
+    return ok && i == pt_acc_work_size(w);
+}
+
+static void test_work(void)
+{
+    static const char *const scenes[] = {
+        "docs/examples/cube.scene", "docs/examples/lookat-cube.scene",
+        "docs/examples/lookat-near.scene", "tests/extreme/cancel-translate.scene"
+    };
+    static const struct { pt_arith a; unsigned choices; } runs[] = {
+        { PT_ARITH_FLOAT, 0 }, { PT_ARITH_DOUBLE, 0 }, { PT_ARITH_DD, 0 },
+        { PT_ARITH_DOUBLE, PT_ACC_TWO }, { PT_ARITH_FLOAT, PT_ACC_TWO }
+    };
+    size_t si, ri, n = 0, nagain = 0, bad = 0, badagain = 0, classic = 0, matrix = 0;
+    char descr[200];
+    pt_scene s;
+
+    for (si = 0; si < sizeof scenes / sizeof scenes[0]; si++) {
+        if (!load(&s, scenes[si])) { bad++; continue; }
+        for (ri = 0; ri < sizeof runs / sizeof runs[0]; ri++) {
+            pt_acc_run r;
+            int part, row, first, last;
+
+            if (pt_acc_run_make(&r, &s, runs[ri].a, runs[ri].choices) != 0) { bad++; continue; }
+            for (part = 0; part < (s.matrix ? 2 : 1); part++) {
+                first = s.matrix && part ? PT_ACC_M_NDC : 0;
+                last = !s.matrix ? PT_ACC_INDEX : part ? PT_ACC_M_INDEX : PT_ACC_M_CVV;
+                {                       /* all the stages, one at a time, from garbage */
+                    pt_acc_work *w = pt_acc_work_make(&r, first);
+
+                    if (!w || !stages_agree(&r, w, first, last, 1, &n)) bad++;
+                    pt_acc_work_free(w);
+                }
+                for (row = first; row <= last; row++) {    /* each alone, as timed */
+                    pt_acc_work *w = pt_acc_work_make(&r, row);
+
+                    if (!w || !stages_agree(&r, w, row, row, 0, &nagain)) badagain++;
+                    pt_acc_work_free(w);
+                }
+            }
+            if (s.matrix) matrix++; else classic++;
+            pt_acc_run_free(&r);
+        }
+        pt_scene_free(&s);
+    }
+    snprintf(descr, sizeof descr, "acc-7.1 the stages the timing runs one at a time, from "
+             "garbage, rebuild the error runs' journeys bit for bit (%zu classic runs, %zu "
+             "matrix runs, %zu journeys)", classic, matrix, n);
+    PT_CHECK(descr, bad == 0 && classic >= 10 && matrix >= 10 && n > 100);
+    snprintf(descr, sizeof descr, "acc-7.2 a timed pass of one stage over its inputs "
+             "rewrites the same values (%zu inputs)", nagain);
+    PT_CHECK(descr, badagain == 0 && nagain > n);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -890,5 +998,6 @@ int main(int argc, char **argv)
     test_random_ddas();
     test_compare();
     test_mcompare();
+    test_work();
     return pt_test_report();
 }

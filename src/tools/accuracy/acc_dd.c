@@ -77,18 +77,6 @@ static void viewport(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
     j->vp = pt_acc_vp_of(c->s, ok, rx, ry);         /* x_vp = round(x_pp) - 1, ... */
 }
 
-static void framebuffer(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
-{
-    (void)v;
-    j->fb = pt_acc_fb_of(c->s, j->vp);              /* x_fb = x_ul + x_vp, ... */
-}
-
-static void index_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
-{
-    (void)v;
-    j->idx = pt_acc_index_of(c->s, j->fb);          /* idx = y_fb * W + x_fb */
-}
-
 /* ===== the DDA: the exact line ===== */
 
 static int64_t i64_abs(int64_t v) { return v < 0 ? -v : v; }  /* |v| < 2^63 */
@@ -409,16 +397,6 @@ static void t_viewport(const pt_scene *s, pt_acc_mtail *t)
     pt_acc_mtail_pp(s, t, 1);               /* the rasterizer's point, exact */
 }
 
-static void t_framebuffer(const pt_scene *s, pt_acc_mtail *t)
-{
-    t->fb = pt_acc_fb_of(s, t->vp);         /* x_fb = x_ul + x_vp, ... */
-}
-
-static void t_index(const pt_scene *s, pt_acc_mtail *t)
-{
-    t->idx = pt_acc_index_of(s, t->fb);     /* idx = y_fb * W + x_fb */
-}
-
 /* ===== the matrix camera: clipping ===== */
 
 /* P(t) with bounds from P0's, P1's and t's (et), each component within its
@@ -486,9 +464,9 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
 }
 
 const pt_acc_ops pt_acc_dd_ops = {
-    { model, camera, image, pixel, viewport, framebuffer, index_stage },
+    { model, camera, image, pixel, viewport, pt_acc_fb_stage, pt_acc_index_stage },
     raster, mcam,
     { m_model, m_world, m_view, m_clip, m_cvv },
-    { t_ndc, t_screen, t_viewport, t_framebuffer, t_index },
+    { t_ndc, t_screen, t_viewport, pt_acc_fb_tail, pt_acc_index_tail },
     mseg
 };

@@ -151,18 +151,6 @@ static void viewport(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
     j->vp = pt_acc_vp_of(c->s, ok, rx, ry);         /* x_vp = round(x_pp) - 1, ... */
 }
 
-static void framebuffer(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
-{
-    (void)v;
-    j->fb = pt_acc_fb_of(c->s, j->vp);              /* x_fb = x_ul + x_vp, ... */
-}
-
-static void index_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
-{
-    (void)v;
-    j->idx = pt_acc_index_of(c->s, j->fb);          /* idx = y_fb * W + x_fb */
-}
-
 /* ===== the DDA ===== */
 
 static int raster_f(float px0, float py0, float px1, float py1, int recompute,
@@ -379,24 +367,26 @@ static void m_world(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *
     widen_f(w, j->w, 4);
 }
 
+/* out = in * m, in and out as the journey holds them. */
+static void vmul_jf(const pt_dd in[4], const pt_acc_mat4f *m, pt_dd out[4])
+{
+    float a[4], r[4];
+
+    narrow_f(in, a, 4);
+    vmul_f(a, m, r);
+    widen_f(r, out, 4);
+}
+
 static void m_view(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
 {
-    float w[4], vw[4];
-
     (void)k; (void)v;
-    narrow_f(j->w, w, 4);
-    vmul_f(w, &c->view_f, vw);              /* (x_v y_v z_v w_v) = world * View */
-    widen_f(vw, j->v, 4);
+    vmul_jf(j->w, &c->view_f, j->v);        /* (x_v y_v z_v w_v) = world * View */
 }
 
 static void m_clip(const pt_acc_mcam *c, size_t k, pt_vec3 v, pt_acc_mjourney *j)
 {
-    float vw[4], kc[4];
-
     (void)k; (void)v;
-    narrow_f(j->v, vw, 4);
-    vmul_f(vw, &c->proj_f, kc);             /* (x_k y_k z_k w_k) = view * Projection */
-    widen_f(kc, j->k, 4);
+    vmul_jf(j->v, &c->proj_f, j->k);        /* (x_k y_k z_k w_k) = view * Projection */
     memset(j->kerr, 0, sizeof j->kerr);
 }
 
@@ -451,16 +441,6 @@ static void t_viewport(const pt_scene *s, pt_acc_mtail *t)
     pt_acc_mtail_pp(s, t, 0);               /* the rasterizer's point */
 }
 
-static void t_framebuffer(const pt_scene *s, pt_acc_mtail *t)
-{
-    t->fb = pt_acc_fb_of(s, t->vp);         /* x_fb = x_ul + x_vp, ... */
-}
-
-static void t_index(const pt_scene *s, pt_acc_mtail *t)
-{
-    t->idx = pt_acc_index_of(s, t->fb);     /* idx = y_fb * W + x_fb */
-}
-
 /* ===== the matrix camera: clipping ===== */
 
 static void lerp_f(const float p0[4], const float p1[4], float t, float r[4])
@@ -502,9 +482,9 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
 }
 
 const pt_acc_ops pt_acc_float_ops = {
-    { model, camera, image, pixel, viewport, framebuffer, index_stage },
+    { model, camera, image, pixel, viewport, pt_acc_fb_stage, pt_acc_index_stage },
     raster, mcam,
     { m_model, m_world, m_view, m_clip, m_cvv },
-    { t_ndc, t_screen, t_viewport, t_framebuffer, t_index },
+    { t_ndc, t_screen, t_viewport, pt_acc_fb_tail, pt_acc_index_tail },
     mseg
 };

@@ -52,6 +52,28 @@ void pt_acc_mtail_pp(const pt_scene *s, pt_acc_mtail *t, int exact)
     }
 }
 
+void pt_acc_fb_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->fb = pt_acc_fb_of(c->s, j->vp);              /* x_fb = x_ul + x_vp, ... */
+}
+
+void pt_acc_index_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
+{
+    (void)v;
+    j->idx = pt_acc_index_of(c->s, j->fb);          /* idx = y_fb * W + x_fb */
+}
+
+void pt_acc_fb_tail(const pt_scene *s, pt_acc_mtail *t)
+{
+    t->fb = pt_acc_fb_of(s, t->vp);                 /* x_fb = x_ul + x_vp, ... */
+}
+
+void pt_acc_index_tail(const pt_scene *s, pt_acc_mtail *t)
+{
+    t->idx = pt_acc_index_of(s, t->fb);             /* idx = y_fb * W + x_fb */
+}
+
 void pt_acc_no_tail(pt_acc_mtail *t)
 {
     memset(t, 0, sizeof *t);

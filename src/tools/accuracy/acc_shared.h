@@ -217,4 +217,11 @@ typedef struct pt_acc_ops {
                                  ** culled; the caller runs the tails */
 } pt_acc_ops;
 
+/* The framebuffer and index stages float and the reference share (integers:
+** the same in every arithmetic), classic and from ndc on.  Can't fail. */
+void pt_acc_fb_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j);
+void pt_acc_index_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j);
+void pt_acc_fb_tail(const pt_scene *s, pt_acc_mtail *t);
+void pt_acc_index_tail(const pt_scene *s, pt_acc_mtail *t);
+
 #endif
