@@ -7,19 +7,23 @@
 ** Runs the scene's whole pipeline in float, double and double-double (the
 ** reference; src/tools/accuracy/accuracy.h says what it computes) and prints: the errors of
 ** each stage and of the rasterizer against the reference; per arithmetic its
-** bits, headline errors and run time per vertex and per pixel; and two
-** algorithm choices, 2.001 against 2.0 and the DDA's y += m against
-** y = y0 + m*(x - x0).  --svg draws the error of every stage against run
-** time, log-log.  Either camera: the rows are the scene's camera's stages
-** (the layout below); the matrix camera has no 2.001, so that choice is only
-** said not to apply.
+** bits, headline errors and run time per vertex and per pixel; each stage's
+** time alone; and two algorithm choices, 2.001 against 2.0 and the DDA's
+** y += m against y = y0 + m*(x - x0).  --svg draws the error of every stage
+** against the time of that stage, log-log, one panel per unit of error.
+** Either camera: the rows are the scene's camera's stages (the layout
+** below); the matrix camera has no 2.001, so that choice is only said not to
+** apply.
 **
-** Timing: a pass computes every used vertex's journey (or rasterizes every
-** segment).  Passes are batched so that one clock reading spans at least
-** 10 ms, and batches repeat until both passes together took 0.2 s; that is
-** one measurement, and the median of --repeat of them is shown.  Without
-** --no-time the time columns vary from run to run, everything else never.
-** Matrix camera: the raster pass includes the clipping of every segment.
+** Timing, per stage: a pass runs one stage's function (the one the error
+** runs' journeys call) on every used vertex's inputs, prepared beforehand
+** from the run's journeys (pt_acc_work; matrix camera, ndc .. index: the
+** vertices inside the view volume); the rasterizer's pass draws every
+** segment (matrix camera: clipping included).  Passes are batched so that
+** one clock reading spans at least BATCH_SECONDS, and batches repeat until
+** they took MIN_SECONDS; that is one measurement, and the median of --repeat
+** of them is shown.  Without --no-time the time columns and the time table
+** vary from run to run, everything else never.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -43,15 +47,17 @@ static const char usage[] =
 "usage: pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]\n"
 "Run SCENE's whole pipeline (every stage of its camera, classic or matrix, and\n"
 "the rasterizer) in float, double and double-double (the reference, 106 bits)\n"
-"and print each stage's error against the reference, each arithmetic's run\n"
-"time per vertex and per pixel, and two algorithm choices: 2.001 or 2.0 in the\n"
-"pixel stage (classic camera), and the DDA's y += m or y = y0 + m*(x - x0).\n"
+"and print each stage's error against the reference, each stage's run time\n"
+"alone (ns per vertex; the rasterizer: per pixel), and two algorithm choices:\n"
+"2.001 or 2.0 in the pixel stage (classic camera), and the DDA's y += m or\n"
+"y = y0 + m*(x - x0).\n"
 "SCENE defaults to the built-in scene.\n"
 "\n"
-"  --repeat N    time each arithmetic N times (1-100, default 3), show the median\n"
-"  --no-time     leave out the time columns (and do not time): the output is\n"
-"                then the same on every run\n"
-"  --svg FILE    also draw error against time, log-log, as SVG into FILE\n"
+"  --repeat N    time each stage N times (1-100, default 3), show the median\n"
+"  --no-time     leave out the times (and do not time): the output is then the\n"
+"                same on every run\n"
+"  --svg FILE    also draw each stage's error against its time, log-log, one\n"
+"                panel per unit of error, as SVG into FILE\n"
 "Docs: docs/accuracy.md\n";
 
 /* ===== the runs ===== */
