@@ -3,9 +3,11 @@
 ** See LICENSE for copyright and license.
 **
 ** The driver: each arithmetic's stages and DDA are in a file of their own
-** (acc_float.c, acc_double.c, acc_dd.c); here they are chosen by arithmetic,
-** run over a scene (every used vertex, every segment, into an image), timed
-** by the passes, and compared with the reference, row by row.
+** (acc_float.c, acc_double.c, acc_dd.c), one function per stage in a table;
+** here they are chosen by arithmetic, strung together into journeys, run over
+** a scene (every used vertex, every segment, into an image), compared with
+** the reference row by row, and run one stage at a time for the timing
+** (pt_acc_work: the same functions on inputs copied from the journeys).
 */
 #include <float.h>
 #include <math.h>

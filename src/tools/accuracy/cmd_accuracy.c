@@ -1,5 +1,5 @@
 /*
-** src/tools/accuracy/cmd_accuracy.c -- pipetrace accuracy: error against run time, per arithmetic
+** src/tools/accuracy/cmd_accuracy.c -- pipetrace accuracy: each stage's error against its run time
 ** See LICENSE for copyright and license.
 **
 **   pipetrace accuracy [SCENE] [--repeat N] [--no-time] [--svg FILE]
@@ -206,14 +206,15 @@ static void time_all(study *st, int repeat)
     st->timed = 1;
 }
 
-/* A run's time per vertex through every stage: the sum of its stages'. */
+/* A run's time per vertex through every stage: the sum of its stages' (NAN
+** when none was measured). */
 static double journey_time(const study *st, int run)
 {
-    double sum = 0.0;
+    double sum = (double)NAN;
     int row;
 
     for (row = 0; row < st->rows->raster; row++)
-        if (!isnan(st->t[run].row[row])) sum += st->t[run].row[row];
+        if (!isnan(st->t[run].row[row])) sum = (isnan(sum) ? 0.0 : sum) + st->t[run].row[row];
     return sum;
 }
 
@@ -587,6 +588,7 @@ typedef struct frame {
     double x0, x1, y0, y1;       /* decades of time and error */
     double bottom, top;          /* the y axis's ends: room for 0 and inf */
     int zeros, infs;
+    int decades;                 /* 0: no finite error but 0, no decade to name */
 } frame;
 
 static void frame_of(frame *fr, int panel, point *p, int n)
@@ -610,6 +612,7 @@ static void frame_of(frame *fr, int panel, point *p, int n)
         }
     }
     if (tmax == 0) { tmin = 1; tmax = 10; }
+    fr->decades = emax > 0;
     if (emax == 0) { emin = 0.1; emax = 1; }
     fr->x0 = floor(log10(tmin));
     fr->x1 = ceil(log10(tmax));
@@ -700,7 +703,7 @@ static void write_panel(FILE *f, const study *st, int panel, point *p, int n)
         text_at(f, x, fr.b + 14, 10, 0, NULL, "tick", b);
     }
     for (step = 1; (fr.y1 - fr.y0) / step > 6; step++) {}
-    for (k = (int)fr.y0; k <= (int)fr.y1; k++) {    /* y: at most 7 decades named */
+    for (k = (int)fr.y0; fr.decades && k <= (int)fr.y1; k++) {  /* y: 7 decades at most */
         double y = axis_pos(k, fr.bottom, fr.top, fr.b, fr.t);
 
         if ((k - (int)fr.y1) % step) continue;
