@@ -1370,7 +1370,7 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
         break;
     }
     if (j.matrix && !(j.reported & 1u << st))
-        snprintf(t, sizeof t, "%s: not reached", titles[st][1]);
+        pt_jmatrix_unreached(t, sizeof t, st);
     else pt_explain_values(t, sizeof t, &j, st);
     pt_sbuf_addf(sb, "<g data-stage=\"%s\">\n", pt_stage_infos[st].name);
     text_at(sb, 12, CAPTION_Y, 12, "start", "class=\"coords\" font-family=\"" MONO

@@ -187,7 +187,8 @@ static void texts(pt_sbuf *sb, const pt_jmodel *jm, const item *it, int kind)
         st = j.matrix ? pt_matrix_order[i] : pt_classic_order[i];
         if (i) pt_sbuf_add(sb, ",");
         if (j.matrix && !(j.reported & 1u << st)) {
-            if (!pt_jmatrix_note(b, sizeof b, &j, (pt_stage)st) || kind == 2) b[0] = '\0';
+            if (kind == 0) pt_jmatrix_unreached(b, sizeof b, (pt_stage)st);
+            else if (!pt_jmatrix_note(b, sizeof b, &j, (pt_stage)st) || kind == 2) b[0] = '\0';
         } else if (kind == 0) pt_explain_values(b, sizeof b, &j, (pt_stage)st);
         else if (kind == 1) pt_explain_stage(b, sizeof b, &j, (pt_stage)st, "\n");
         else pt_explain_next(b, sizeof b, &j, (pt_stage)st);

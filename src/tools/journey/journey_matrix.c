@@ -522,6 +522,19 @@ void pt_jmatrix_fg(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t
     }
 }
 
+size_t pt_jmatrix_unreached(char *t, size_t n, pt_stage st)
+{
+    size_t len = 0;
+    int k, c = pt_coord_count(st);
+
+    t[0] = '\0';
+    for (k = 0; k < c && len < n; k++)
+        len += (size_t)snprintf(t + len, n - len, "%s%s", k ? ", " : c > 1 ? "(" : "",
+                                pt_coord_name(st, k));
+    if (len < n) len += (size_t)snprintf(t + len, n - len, "%s: not reached", c > 1 ? ")" : "");
+    return len;
+}
+
 int pt_jmatrix_note(char *t, size_t n, const pt_journey *j, pt_stage st)
 {
     const pt_vrec *r = &j->rec[st];
