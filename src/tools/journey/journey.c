@@ -1366,6 +1366,7 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
         if (st == PT_STAGE_MODEL || st == PT_STAGE_WORLD) fg_path(sb, jm, &j, st);
         if (st == PT_STAGE_CAMERA) fg_ray(sb, jm, &j);
         fg_segments(sb, jm, v, st, k, 2);
+        if (st == PT_STAGE_NDC || st == PT_STAGE_SCREEN) pt_jmatrix_cuts(sb, jm, k, st);
         marker(sb, v, ok, x, y, vn, 0, &mx, &my);
         break;
     }

@@ -138,6 +138,10 @@ void pt_jmatrix_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st);
 void pt_jmatrix_fg(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k, pt_stage st);
 int pt_jmatrix_note(char *t, size_t n, const pt_journey *j, pt_stage st);
 
+/* Mark, in stage st's panel (ndc, screen), the points where clipping cut
+** vertex k's segments.  This function can't fail. */
+void pt_jmatrix_cuts(pt_sbuf *sb, const pt_jmodel *jm, size_t k, pt_stage st);
+
 /* The coordinates label of a stage the vertex did not reach: "(x_n, y_n,
 ** z_n): not reached".  Returns its length (cut short when >= n).  Can't fail. */
 size_t pt_jmatrix_unreached(char *t, size_t n, pt_stage st);

@@ -473,6 +473,26 @@ static void fg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c,
     pt_jmarker(sb, v, isfinite(r->w) && isfinite(comp(r, c)), r->w, comp(r, c), k + 1);
 }
 
+void pt_jmatrix_cuts(pt_sbuf *sb, const pt_jmodel *jm, size_t k, pt_stage st)
+{
+    const pt_jview *v = &jm->view[st];
+    const pt_model *m = jm->m;
+    size_t s;
+    int e;
+
+    for (s = 0; s < m->nseg; s++) {
+        if (m->seg[s].a != k && m->seg[s].b != k) continue;
+        for (e = 0; e < 2; e++) {
+            size_t i = jm->cutix[2 * s + e];
+            double x, y;
+            if (i == 0 || i == PT_JOURNEY_CULLED) continue;
+            if (!pt_jstage_xy(&jm->cut[i - 1], st, &x, &y) || !pt_jview_in(v, x, y)) continue;
+            pt_jrect(sb, pt_jview_x(v, x) - 4, pt_jview_y(v, y) - 4, 8, 8, "#fff", RED,
+                     "stroke-width=\"1.5\" class=\"cut\"");
+        }
+    }
+}
+
 /* The outcode: each plane's distance (inside >= 0) and bit. */
 static void fg_code(pt_sbuf *sb, const pt_vrec *r)
 {
@@ -503,6 +523,7 @@ void pt_jmatrix_fg(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t
 
     if (!(j->reported & 1u << st)) {         /* the journey ended at the cvv */
         if (st != PT_STAGE_INDEX) pt_jsegments(sb, jm, &jm->view[st], st, k);
+        if (st == PT_STAGE_NDC || st == PT_STAGE_SCREEN) pt_jmatrix_cuts(sb, jm, k, st);
         snprintf(t, sizeof t, "v%llu stops at the cvv: outside the view volume",
                  (unsigned long long)(k + 1));
         pt_jtext(sb, BX + BW / 2, BY + BH / 2, 12, "middle",
