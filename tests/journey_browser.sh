@@ -69,6 +69,13 @@ for s in "" docs/examples/clip.scene docs/examples/behind.scene docs/examples/or
     check "web-1 ${s:-builtin}: the page loads" test -s "$tmp/dom.html"
     py clicks "$exe" "$tmp/dom.html" $s
 done
+# the matrix camera: vertices inside, behind the eye and off to the side
+for s in docs/examples/lookat-near.scene docs/examples/lookat-cube.scene; do
+    "$exe" journey $s --vertex 1 --html "$tmp/p.html"
+    clicks "$tmp/p.html" > "$tmp/dom.html"
+    check "web-4 $s (matrix camera): the page loads" test -s "$tmp/dom.html"
+    py clicks "$exe" "$tmp/dom.html" $s
+done
 printf 'framebuffer 20 10\nmodel m\nv 1 0.5 0\nv 0 0 -2\nl 1 2\n' > "$tmp/z0.scene"
 "$exe" journey "$tmp/z0.scene" --vertex 1 --html "$tmp/z.html"
 clicks "$tmp/z.html" > "$tmp/dom.html"

@@ -5,9 +5,15 @@
 # Python's standard library only.  Each mode prints "FAIL ..." lines and, last,
 # "N passed, N failed"; exit status 1 when anything failed.
 #
-#   svg EXE FILE MODEL V [SCENE]     well-formed XML, scalable root, seven panels
-#                                    in pipeline order, each panel's coordinates
-#                                    label equal to the JSONL trace's values
+#   svg EXE FILE MODEL V [SCENE]     well-formed XML, scalable root, one panel per
+#                                    stage of the scene's camera (seven, or the
+#                                    matrix camera's ten) in pipeline order, each
+#                                    panel's coordinates label equal to the JSONL
+#                                    trace's values; the matrix camera: the stages
+#                                    a vertex outside the view volume does not
+#                                    reach say so, and the clip panel marks the
+#                                    cuts exactly when the trace has clipvertex
+#                                    records of the vertex's segments
 #   html EXE FILE [SCENE]            self-contained page (no network, no other
 #                                    file), the ids the page promises, every
 #                                    listed vertex's coordinates equal to the
@@ -31,6 +37,11 @@ import xml.etree.ElementTree as ET
 import zlib
 
 STAGES = ["model", "camera", "image", "pixel", "viewport", "framebuffer", "index"]
+MATRIX = ["model", "world", "view", "clip", "cvv", "ndc", "screen", "viewport", "framebuffer",
+          "index"]
+KEYS = {"index": ["i"], "cvv": ["code"], "pixel": ["x", "y"], "viewport": ["x", "y"],
+        "framebuffer": ["x", "y"], "world": ["x", "y", "z", "w"], "view": ["x", "y", "z", "w"],
+        "clip": ["x", "y", "z", "w"]}          # the rest: x, y, z
 passed = 0
 failed = 0
 
@@ -49,17 +60,36 @@ def report():
     sys.exit(1 if failed else 0)
 
 
+def jsonl(exe, scene):
+    args = [exe] + ([scene] if scene else []) + ["--format", "jsonl", "--all-stages"]
+    return subprocess.run(args, stdout=subprocess.PIPE, check=True).stdout.decode("utf-8")
+
+
+def stages_of(exe, scene):
+    """The stages of the scene's camera, in pipeline order."""
+    head = json.loads(jsonl(exe, scene).splitlines()[0])
+    return MATRIX if head.get("camera") == "lookat" else STAGES
+
+
+def clipped(exe, scene, model, v):
+    """1 when clipping cut a segment of vertex v of model (clipvertex records)."""
+    for line in jsonl(exe, scene).splitlines():
+        if line.startswith('{"type":"clipvertex"'):
+            obj = json.loads(line)
+            if obj["model"] == model and v in (obj["from"], obj["to"]):
+                return True
+    return False
+
+
 def trace(exe, scene):
     """{(model, v, stage): [raw JSON value tokens]} of every traced record."""
-    args = [exe] + ([scene] if scene else []) + ["--format", "jsonl", "--all-stages"]
-    out = subprocess.run(args, stdout=subprocess.PIPE, check=True).stdout.decode("utf-8")
+    out = jsonl(exe, scene)
     recs = {}
     for line in out.splitlines():
         if not line.startswith('{"type":"vertex"'):
             continue
         obj = json.loads(line)
-        keys = ["i"] if obj["stage"] == "index" else \
-            ["x", "y", "z"] if obj["stage"] in ("model", "camera", "image") else ["x", "y"]
+        keys = KEYS.get(obj["stage"], ["x", "y", "z"])
         toks = []
         for k in keys:        # the value exactly as written in the line
             m = re.search(r'"%s":("[^"]*"|[^,}]*)' % k, line)
@@ -104,8 +134,21 @@ def svg_mode(exe, path, model, v, scene):
     check("svg-4 scales: width 100%, no fixed height", root.get("width") == "100%" and
           root.get("height") is None)
     panels = [g for g in root.iter(ns + "g") if g.get("class") == "panel"]
+    order = stages_of(exe, scene)
     check("svg-5 one panel per stage, in pipeline order",
-          [g.get("data-stage") for g in panels] == STAGES, str([g.get("data-stage") for g in panels]))
+          [g.get("data-stage") for g in panels] == order, str([g.get("data-stage") for g in panels]))
+    if order == MATRIX:
+        for g in panels:
+            key = (model, int(v), g.get("data-stage"))
+            text = "".join("".join(t.itertext()) for t in g.iter(ns + "text")
+                           if t.get("class") == "coords")
+            check("svg-10 %s: %s in the trace, or 'not reached'" % (key[2], text),
+                  (key in recs) != text.endswith(": not reached"), text)
+        cuts = [r for g in panels if g.get("data-stage") == "clip"
+                for r in g.iter(ns + "rect") if r.get("class") == "cut"]
+        want = clipped(exe, scene, model, int(v))
+        check("svg-11 cuts marked in clip space (%d) exactly when the trace has clipvertex "
+              "records of v%s's segments (%s)" % (len(cuts), v, want), bool(cuts) == want)
     for g in panels:
         st = g.get("data-stage")
         labels = [t for t in g.iter(ns + "text") if t.get("class") == "coords"]
@@ -149,7 +192,8 @@ def html_mode(exe, path, scene):
     check("html-4 the data blob is JSON", data is not None)
     if data is None:
         return
-    check("html-5 seven stages", [s["name"] for s in data["stages"]] == STAGES)
+    order = stages_of(exe, scene)
+    check("html-5 the camera's stages", [s["name"] for s in data["stages"]] == order)
     used = sorted({(m, v) for (m, v, _) in recs})
     listed = [(data["models"][x["m"]]["name"], x["v"]) for x in data["vertices"] if x["used"]]
     if not data["capped"]:
@@ -158,7 +202,7 @@ def html_mode(exe, path, scene):
     bad = 0
     for x in data["vertices"]:
         name = data["models"][x["m"]]["name"]
-        for k, st in enumerate(STAGES):
+        for k, st in enumerate(order):
             key = (name, x["v"], st)
             if key in recs and not same(x["coords"][k], recs[key]):
                 bad += 1
@@ -176,7 +220,7 @@ def html_mode(exe, path, scene):
                                   "</svg>")
                 except ET.ParseError as e:
                     ok = False
-                    print("  %s %s: %s" % (mo["name"], STAGES[k], e))
+                    print("  %s %s: %s" % (mo["name"], order[k], e))
                     break
     check("html-8 every panel fragment is well-formed", ok)
 

@@ -11,8 +11,8 @@
 ** src/tools/journey/journey_html.c draw them); --image the rendered framebuffer with the
 ** vertex's pixel marked, PNG or PPM as the render command writes it.  Files
 ** are written whole or not at all (src/io/outfile.h); "-" is standard output.
-** Only the classic camera is drawn: a scene with the matrix camera is refused
-** with exit status 2.
+** Both cameras are drawn: the matrix camera's panels follow its ten stages
+** (src/tools/journey/journey_matrix.c).
 */
 #include <errno.h>
 #include <stdio.h>
@@ -41,8 +41,10 @@ static const char usage[] =
 "  --image FILE   the rendered framebuffer with the vertex's pixel ringed in red:\n"
 "                 PNG when FILE ends in .png (any case), else binary PPM (P6)\n"
 "\n"
-"At least one of --svg, --html and --image.  Only the classic camera (perspective or\n"
-"orthographic) is drawn; a scene with the matrix camera exits with status 2.\n"
+"At least one of --svg, --html and --image.  Either camera: the classic camera's\n"
+"seven panels, or the matrix camera's ten (camera lookat: world, view, clip, cvv,\n"
+"ndc and screen between model and viewport; a vertex outside the view volume\n"
+"stops at the cvv, and its segments go on from where clipping cut them).\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
 "Docs: docs/journey.md\n";
 
@@ -87,7 +89,8 @@ static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64
         return -1;
     }
     pt_plan_free(&p);
-    if (j.rec[PT_STAGE_FRAMEBUFFER].flags & PT_REC_NULL) return 0;     /* no pixel */
+    if ((j.rec[PT_STAGE_FRAMEBUFFER].flags & PT_REC_NULL) ||          /* no pixel, or */
+        !(j.reported & 1u << PT_STAGE_FRAMEBUFFER)) return 0;        /* stopped at the cvv */
     x = j.rec[PT_STAGE_FRAMEBUFFER].ix;
     y = j.rec[PT_STAGE_FRAMEBUFFER].iy;
     for (dy = -3; dy <= 3; dy++)
@@ -140,13 +143,6 @@ int pt_cmd_journey(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (s.matrix) {
-        fprintf(stderr, "pipetrace journey: %s: the matrix camera (camera lookat) is not "
-                "drawn; journey draws the classic camera's stages model -> camera -> image "
-                "-> pixel -> viewport -> framebuffer -> index\n", s.path);
-        pt_scene_free(&s);
-        return PT_EXIT_INPUT;
-    }
     if (!(m = pt_cli_vertex_model(&s, "journey", model, v))) {
         pt_scene_free(&s);
         return PT_EXIT_INPUT;

@@ -338,8 +338,9 @@ static void axes3_make(axes3 *a, double dx, double dy, double dz)
 ** right side, so -z (the view direction) runs to the right. */
 static void axes_of(pt_stage st, axes3 *a)
 {
-    if (st == PT_STAGE_MODEL) axes3_make(a, 0.55, 0.45, 1.0);
-    else axes3_make(a, 1.0, 0.5, 0.3);
+    if (st == PT_STAGE_MODEL || st == PT_STAGE_WORLD) axes3_make(a, 0.55, 0.45, 1.0);
+    else if (st == PT_STAGE_VIEW || st == PT_STAGE_NDC) axes3_make(a, -1.0, 0.5, -0.3);
+    else axes3_make(a, 1.0, 0.5, 0.3);              /* matrix: view and ndc look down +z */
 }
 
 static void proj(const axes3 *a, double x, double y, double z, double *px, double *py)
@@ -367,6 +368,18 @@ static void journey_of(const pt_jmodel *jm, size_t k, pt_journey *j)
     *j = jm->js[k];
 }
 
+/* The journeys of segment s's two ends as stage st sees them: the vertices';
+** for the matrix camera's stages after the cvv the points clipping made
+** where it cut the segment (journey_matrix.c).  Returns 0 when the stage sees
+** no segment (wholly outside the view volume). */
+static int seg_ends(const pt_jmodel *jm, size_t s, pt_stage st, pt_journey *ja, pt_journey *jb)
+{
+    if (jm->s->matrix) return pt_jmatrix_ends(jm, s, st, ja, jb);
+    journey_of(jm, jm->m->seg[s].a, ja);
+    journey_of(jm, jm->m->seg[s].b, jb);
+    return 1;
+}
+
 /* The point of stage st in its panel's data coordinates: projected for the
 ** 3-D panels, the pixel's centre for the pixel grids.  Returns 1, or 0 when
 ** the stage has no such point (no pixel) or it is not finite; *x, *y are then
@@ -377,15 +390,20 @@ static int stage_xy(const pt_journey *j, pt_stage st, double *x, double *y)
     axes3 a;
 
     *x = *y = (double)NAN;
+    if (j->matrix && !(j->reported & 1u << st)) return 0;  /* stopped at the cvv */
     switch (st) {
     case PT_STAGE_MODEL:
     case PT_STAGE_CAMERA:
+    case PT_STAGE_WORLD:
+    case PT_STAGE_VIEW:
+    case PT_STAGE_NDC:
         if (!isfinite(r->x) || !isfinite(r->y) || !isfinite(r->z)) return 0;
         axes_of(st, &a);
         proj(&a, r->x, r->y, r->z, x, y);
         break;
     case PT_STAGE_IMAGE:
     case PT_STAGE_PIXEL:
+    case PT_STAGE_SCREEN:
         *x = r->x; *y = r->y;
         break;
     case PT_STAGE_VIEWPORT:
@@ -517,6 +535,7 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m)
     for (st = 0; st <= PT_STAGE_FRAMEBUFFER; st++)
         view_fit(&jm->view[st], b[st][0], b[st][1], b[st][2], b[st][3], BOX_X, BOX_Y,
                  BOX_W, BOX_H, st >= PT_STAGE_VIEWPORT);
+    if (s->matrix && pt_jmatrix_init(jm) != 0) { pt_jmodel_free(jm); return -1; }
     return 0;
 }
 
@@ -524,11 +543,15 @@ void pt_jmodel_free(pt_jmodel *jm)
 {
     free(jm->js);
     jm->js = NULL;
+    free(jm->cut);
+    free(jm->cutix);
+    jm->cut = NULL;
+    jm->cutix = NULL;
 }
 
 /* ===== titles ===== */
 
-static const char *const titles[PT_NSTAGES][2] = {
+static const char *const titles[PT_NSTAGES_ALL][2] = {
     {"model space", "(x_m, y_m, z_m)"},
     {"camera space", "(x_c, y_c, z_c)"},
     {"image plane", "(x_ip, y_ip)"},
@@ -536,11 +559,17 @@ static const char *const titles[PT_NSTAGES][2] = {
     {"viewport pixels", "(x_vp, y_vp)"},
     {"framebuffer", "(x_fb, y_fb)"},
     {"pixel array", "idx"},
+    {"world space", "(x_w, y_w, z_w)"},      /* the matrix camera's (journey_matrix.c) */
+    {"view space", "(x_v, y_v, z_v)"},
+    {"clip space", "(x_k, y_k, z_k, w_k)"},
+    {"the six planes", "outcode"},
+    {"NDC cube", "(x_n, y_n, z_n)"},
+    {"screen", "(x_s, y_s)"},
 };
 
 const char *pt_journey_title(pt_stage st)
 {
-    return (int)st < PT_NSTAGES ? titles[st][0] : "";
+    return (int)st < PT_NSTAGES_ALL ? titles[st][0] : "";
 }
 
 /* The formula line under the title. */
@@ -550,6 +579,7 @@ static const char *formula_of(const pt_jmodel *jm, pt_stage st)
     if (st == PT_STAGE_IMAGE)
         return jm->par.perspective ? "x_ip = x_c / -z_c, y_ip = y_c / -z_c, z_ip = -1"
                                    : "orthographic: x_ip = x_c, y_ip = y_c, z_ip = 0";
+    if (jm->s->matrix && st == PT_STAGE_VIEWPORT) return pt_matrix_viewport_info.formula;
     return pt_stage_infos[st].formula;
 }
 
@@ -567,8 +597,7 @@ static void wireframe(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 
     path_start(&pw, sb);
     for (k = 0; k < n; k++) {
-        journey_of(jm, m->seg[k].a, &ja);
-        journey_of(jm, m->seg[k].b, &jb);
+        if (!seg_ends(jm, k, st, &ja, &jb)) continue;
         if (!stage_xy(&ja, st, &ax, &ay) || !stage_xy(&jb, st, &bx, &by)) continue;
         if (!clip(v, &ax, &ay, &bx, &by)) continue;
         path_cmd(&pw, "M", 2, vx(v, ax), vy(v, ay));
@@ -801,9 +830,9 @@ void pt_journey_panel_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
     char t[160];
 
-    if ((int)st >= PT_NSTAGES) return;
+    if ((int)st >= PT_NSTAGES_ALL) return;
     rect(sb, 0.5, 0.5, PT_JOURNEY_PW - 1, PT_JOURNEY_PH - 1, "#fff", C_FRAME, "rx=\"6\"");
-    snprintf(t, sizeof t, "%d  %s  %s", (int)st + 1, titles[st][0], titles[st][1]);
+    snprintf(t, sizeof t, "%d  %s  %s", pt_jmatrix_number(jm, st), titles[st][0], titles[st][1]);
     text_at(sb, 12, 21, 15, "start", "font-weight=\"bold\" fill=\"" C_TEXT "\"", t, 376);
     text_at(sb, 12, 36, 10.5, "start", "font-family=\"" MONO "\" fill=\"" C_NOTE "\"",
             formula_of(jm, st), 376);
@@ -812,7 +841,11 @@ void pt_journey_panel_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
     case PT_STAGE_MODEL: bg_model(sb, jm); break;
     case PT_STAGE_CAMERA: bg_camera(sb, jm); break;
     case PT_STAGE_INDEX: bg_index(sb, jm); break;
-    default: bg_plane(sb, jm, st); break;
+    case PT_STAGE_VIEWPORT: case PT_STAGE_FRAMEBUFFER: bg_plane(sb, jm, st); break;
+    default:
+        if ((int)st >= PT_NSTAGES) pt_jmatrix_bg(sb, jm, st);    /* journey_matrix.c */
+        else bg_plane(sb, jm, st);
+        break;
     }
 }
 
@@ -904,8 +937,13 @@ static void raster_segs(const pt_jmodel *jm, size_t k, void (*px)(void *, int64_
     for (s = 0; s < m->nseg; s++) {
         pt_vec2 a, b;
         if (m->seg[s].a != k && m->seg[s].b != k) continue;
-        journey_of(jm, m->seg[s].a, &ja);
-        journey_of(jm, m->seg[s].b, &jb);
+        if (!seg_ends(jm, s, PT_STAGE_VIEWPORT, &ja, &jb)) continue;
+        if (jm->s->matrix) {                 /* the rasterizer's points, as pt_run's */
+            if (pt_jmatrix_pixelplane(&ja, jm->par.h, &a) != 0) continue;
+            if (pt_jmatrix_pixelplane(&jb, jm->par.h, &b) != 0) continue;
+            pt_raster_segment(a, b, jm->par.w, jm->par.h, pt_pixelplane2viewport, &out);
+            continue;
+        }
         a.x = ja.rec[PT_STAGE_PIXEL].x; a.y = ja.rec[PT_STAGE_PIXEL].y;
         b.x = jb.rec[PT_STAGE_PIXEL].x; b.y = jb.rec[PT_STAGE_PIXEL].y;
         pt_raster_segment(a, b, jm->par.w, jm->par.h, pt_pixel2viewport, &out);
@@ -923,8 +961,7 @@ static void fg_segments(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, pt_
     for (s = 0; s < m->nseg; s++) {
         double ax, ay, bx, by;
         if (m->seg[s].a != k && m->seg[s].b != k) continue;
-        journey_of(jm, m->seg[s].a, &ja);
-        journey_of(jm, m->seg[s].b, &jb);
+        if (!seg_ends(jm, s, st, &ja, &jb)) continue;
         if (!stage_xy(&ja, st, &ax, &ay) || !stage_xy(&jb, st, &bx, &by)) continue;
         vline(sb, v, ax, ay, bx, by, C_SEG, width, "stroke-linecap=\"round\"");
         if (m->seg[s].a == k) { ax = bx; ay = by; }       /* the other end */
@@ -1075,14 +1112,14 @@ static void fg_ray(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j)
 }
 
 /* The model panel's path from the origin along x, then y, then z. */
-static void fg_path(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j)
+static void fg_path(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stage st)
 {
-    const pt_jview *v = &jm->view[PT_STAGE_MODEL];
-    const pt_vrec *r = &j->rec[PT_STAGE_MODEL];
+    const pt_jview *v = &jm->view[st];
+    const pt_vrec *r = &j->rec[st];
     double p0[3] = {0, 0, 0}, p1[3], p2[3], p3[3];
     axes3 ax;
 
-    axes_of(PT_STAGE_MODEL, &ax);
+    axes_of(st, &ax);
     p1[0] = r->x; p1[1] = 0; p1[2] = 0;
     p2[0] = r->x; p2[1] = r->y; p2[2] = 0;
     p3[0] = r->x; p3[1] = r->y; p3[2] = r->z;
@@ -1100,6 +1137,7 @@ static void note_of(char *t, size_t n, const pt_jmodel *jm, const pt_journey *j,
     char a[32], b[32];
 
     t[0] = '\0';
+    if (j->matrix && pt_jmatrix_note(t, n, j, st)) return;
     switch (st) {
     case PT_STAGE_MODEL:
         snprintf(t, n, "%s", used ? "the model's own coordinates, as in the scene"
@@ -1281,12 +1319,17 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
     double x, y, mx = (double)NAN, my = (double)NAN;
     char t[PT_EXPLAINLEN];
 
-    if ((int)st >= PT_NSTAGES || vn < 1 || vn > jm->m->nv) return;
+    if ((int)st >= PT_NSTAGES_ALL || vn < 1 || vn > jm->m->nv) return;
     for (s = 0; s < jm->m->nseg && !used; s++)
         used = jm->m->seg[s].a == k || jm->m->seg[s].b == k;
     journey_of(jm, k, &j);
     ok = stage_xy(&j, st, &x, &y);
-    switch (st) {
+    switch (j.matrix && !(j.reported & 1u << st) ? PT_NSTAGES_ALL : st) {
+    case PT_NSTAGES_ALL:                     /* the matrix camera's own drawings */
+    case PT_STAGE_CLIP:
+    case PT_STAGE_CVV:
+        pt_jmatrix_fg(sb, jm, &j, k, st);
+        break;
     case PT_STAGE_INDEX:
         fg_index(sb, jm, &j, k);
         break;
@@ -1320,13 +1363,16 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
         if (v->s < 6) inset(sb, jm, &j, st, k, mx, my);
         break;
     default:
-        if (st == PT_STAGE_MODEL) fg_path(sb, jm, &j);
+        if (st == PT_STAGE_MODEL || st == PT_STAGE_WORLD) fg_path(sb, jm, &j, st);
         if (st == PT_STAGE_CAMERA) fg_ray(sb, jm, &j);
         fg_segments(sb, jm, v, st, k, 2);
+        if (st == PT_STAGE_NDC || st == PT_STAGE_SCREEN) pt_jmatrix_cuts(sb, jm, k, st);
         marker(sb, v, ok, x, y, vn, 0, &mx, &my);
         break;
     }
-    pt_explain_values(t, sizeof t, &j, st);
+    if (j.matrix && !(j.reported & 1u << st))
+        pt_jmatrix_unreached(t, sizeof t, st);
+    else pt_explain_values(t, sizeof t, &j, st);
     pt_sbuf_addf(sb, "<g data-stage=\"%s\">\n", pt_stage_infos[st].name);
     text_at(sb, 12, CAPTION_Y, 12, "start", "class=\"coords\" font-family=\"" MONO
             "\" font-weight=\"bold\" fill=\"" C_TEXT "\"", t, 376);
@@ -1340,7 +1386,7 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
 #define GAP      16              /* between panels */
 #define HEAD     62              /* the header band */
 #define DOC_W    (GAP + 4 * (PT_JOURNEY_PW + GAP))
-#define DOC_H    (HEAD + 2 * PT_JOURNEY_PH + 2 * GAP)
+#define DOC_H(n) (HEAD + ((n) + 4) / 4 * (PT_JOURNEY_PH + GAP))  /* n panels, legend */
 
 /* The eighth cell: what the scene is and what the colors mean. */
 static void legend(pt_sbuf *sb, const pt_jmodel *jm)
@@ -1377,7 +1423,8 @@ static void legend(pt_sbuf *sb, const pt_jmodel *jm)
     text_at(sb, 12, y, 11, "start", "fill=\"" C_NOTE "\"", u.s ? u.s : "", 376);
     pt_sbuf_free(&u);
     snprintf(t, sizeof t, "camera %s; viewport w x h = %d x %d at (x_ul, y_ul) = (%d, %d)",
-             p->perspective ? "perspective" : "orthographic", p->w, p->h, p->x_ul, p->y_ul);
+             jm->s->matrix ? "lookat" : p->perspective ? "perspective" : "orthographic",
+             p->w, p->h, p->x_ul, p->y_ul);
     text_at(sb, 12, y + 17, 11, "start", "fill=\"" C_NOTE "\"", t, 376);
     snprintf(t, sizeof t, "framebuffer W x H = %d x %d; round() is Java's Math.round", p->W, p->H);
     text_at(sb, 12, y + 34, 11, "start", "fill=\"" C_NOTE "\"", t, 376);
@@ -1391,19 +1438,20 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
 {
     pt_jmodel jm;
     pt_sbuf t;
-    int st;
+    int i, n = s->matrix ? pt_matrix_norder : pt_classic_norder;
+    const pt_stage *ord = s->matrix ? pt_matrix_order : pt_classic_order;
 
     if (pt_jmodel_init(&jm, s, m) != 0) return -1;
     pt_sbuf_add(sb, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     pt_sbuf_addf(sb, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %d %d\" "
-                 "width=\"100%%\" font-family=\"%s\">\n", DOC_W, DOC_H, FONT);
+                 "width=\"100%%\" font-family=\"%s\">\n", DOC_W, DOC_H(n), FONT);
     pt_sbuf_add(sb, "<title>pipetrace journey: vertex ");
     pt_sbuf_addf(sb, "%llu of model ", (unsigned long long)vn);
     pt_sbuf_add_xml(sb, m->name);
     pt_sbuf_add(sb, " in ");
     pt_sbuf_add_xml(sb, s->path);
     pt_sbuf_add(sb, "</title>\n");
-    pt_sbuf_addf(sb, "<rect width=\"%d\" height=\"%d\" fill=\"#f3f4f6\"/>\n", DOC_W, DOC_H);
+    pt_sbuf_addf(sb, "<rect width=\"%d\" height=\"%d\" fill=\"#f3f4f6\"/>\n", DOC_W, DOC_H(n));
     pt_sbuf_init(&t);
     pt_sbuf_addf(&t, "pipetrace journey: vertex %llu of model ", (unsigned long long)vn);
     pt_sbuf_add(&t, m->name);
@@ -1417,10 +1465,10 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
     text_at(sb, GAP, 50, 13, "start", "fill=\"" C_NOTE "\"", t.s ? t.s : "", DOC_W - 2 * GAP);
     if (t.failed) sb->failed = 1;
     pt_sbuf_free(&t);
-    for (st = 0; st <= PT_NSTAGES; st++) {
-        int col = st % 4, row = st / 4;
+    for (i = 0; i <= n; i++) {
+        int col = i % 4, row = i / 4, st = i < n ? (int)ord[i] : -1;
         int px = GAP + col * (PT_JOURNEY_PW + GAP), py = HEAD + row * (PT_JOURNEY_PH + GAP);
-        if (st == PT_NSTAGES) {
+        if (i == n) {
             pt_sbuf_addf(sb, "<g class=\"legend\" transform=\"translate(%d %d)\">\n", px, py);
             legend(sb, &jm);
         } else {
@@ -1430,11 +1478,108 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
             pt_journey_panel_fg(sb, &jm, vn, (pt_stage)st);
         }
         pt_sbuf_add(sb, "</g>\n");
-        if (col < 3 && st < PT_NSTAGES - 1)  /* an arrow to the next panel */
+        if (col < 3 && i < n - 1)            /* an arrow to the next panel */
             arrowhead(sb, px + PT_JOURNEY_PW + 1, py + PT_JOURNEY_PH / 2.0,
                       px + PT_JOURNEY_PW + GAP - 2, py + PT_JOURNEY_PH / 2.0, 12, "#8a919b");
     }
     pt_sbuf_add(sb, "</svg>\n");
     pt_jmodel_free(&jm);
     return sb->failed ? -1 : 0;
+}
+
+/* ===== for the matrix camera's panels (journey_matrix.c) ===== */
+
+void pt_jtext(pt_sbuf *sb, double x, double y, double size, const char *anchor,
+              const char *extra, const char *t, double maxw)
+{
+    text_at(sb, x, y, size, anchor, extra, t, maxw);
+}
+
+void pt_jline(pt_sbuf *sb, double ax, double ay, double bx, double by, const char *stroke,
+              double width, const char *extra)
+{
+    line(sb, ax, ay, bx, by, stroke, width, extra);
+}
+
+void pt_jcircle(pt_sbuf *sb, double x, double y, double r, const char *fill, const char *extra)
+{
+    circle(sb, x, y, r, fill, extra);
+}
+
+void pt_jrect(pt_sbuf *sb, double x, double y, double w, double h, const char *fill,
+              const char *stroke, const char *extra)
+{
+    rect(sb, x, y, w, h, fill, stroke, extra);
+}
+
+void pt_jview_fit(pt_jview *v, const double b[4], int ydown, double bx, double by, double bw,
+                  double bh)
+{
+    view_fit(v, b[0], b[1], b[2], b[3], bx, by, bw, bh, ydown);
+}
+
+int pt_jview_line(pt_sbuf *sb, const pt_jview *v, double ax, double ay, double bx, double by,
+                  const char *stroke, double width, const char *extra)
+{
+    return vline(sb, v, ax, ay, bx, by, stroke, width, extra);
+}
+
+double pt_jview_x(const pt_jview *v, double x) { return vx(v, x); }
+double pt_jview_y(const pt_jview *v, double y) { return vy(v, y); }
+int pt_jview_in(const pt_jview *v, double x, double y) { return in_view(v, x, y); }
+
+void pt_jview_label(pt_sbuf *sb, const pt_jview *v, double x, double y, double dx, double dy,
+                    const char *anchor, const char *t)
+{
+    vlabel(sb, v, x, y, dx, dy, anchor, t);
+}
+
+int pt_jstage_xy(const pt_journey *j, pt_stage st, double *x, double *y)
+{
+    return stage_xy(j, st, x, y);
+}
+
+void pt_jproj(pt_stage st, double x, double y, double z, double *px, double *py)
+{
+    axes3 a;
+
+    axes_of(st, &a);
+    proj(&a, x, y, z, px, py);
+}
+
+void pt_jaxis3(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st, double x, double y, double z,
+               const char *label)
+{
+    axes3 a;
+    double t[3];
+
+    t[0] = x; t[1] = y; t[2] = z;
+    axes_of(st, &a);
+    axis3(sb, &jm->view[st], &a, t, label);
+}
+
+int pt_jline3(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st, const double *a, const double *b,
+              const char *stroke, double width, const char *extra)
+{
+    axes3 ax;
+
+    axes_of(st, &ax);
+    return vline3(sb, &jm->view[st], &ax, a, b, stroke, width, extra);
+}
+
+void pt_jwireframe(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
+{
+    wireframe(sb, jm, st);
+}
+
+void pt_jsegments(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, pt_stage st, size_t k)
+{
+    fg_segments(sb, jm, v, st, k, 2);
+}
+
+void pt_jmarker(pt_sbuf *sb, const pt_jview *v, int ok, double x, double y, uint64_t vn)
+{
+    double px, py;
+
+    marker(sb, v, ok, x, y, vn, 0, &px, &py);
 }

@@ -173,18 +173,23 @@ typedef struct item {
     int used;                    /* some segment uses it */
 } item;
 
-/* Append ["a","b",...] of the seven stages' texts of one kind for vertex it. */
+/* Append ["a","b",...] of the camera's stages' texts of one kind for vertex
+** it (the matrix camera's stages past the cvv of a vertex outside: a note). */
 static void texts(pt_sbuf *sb, const pt_jmodel *jm, const item *it, int kind)
 {
     char b[PT_EXPLAINLEN];
     pt_journey j;
-    int st;
+    int i, st;
 
     j = jm->js[it->v - 1];
     pt_sbuf_add(sb, "[");
-    for (st = 0; st < PT_NSTAGES; st++) {
-        if (st) pt_sbuf_add(sb, ",");
-        if (kind == 0) pt_explain_values(b, sizeof b, &j, (pt_stage)st);
+    for (i = 0; i < (j.matrix ? pt_matrix_norder : pt_classic_norder); i++) {
+        st = j.matrix ? pt_matrix_order[i] : pt_classic_order[i];
+        if (i) pt_sbuf_add(sb, ",");
+        if (j.matrix && !(j.reported & 1u << st)) {
+            if (kind == 0) pt_jmatrix_unreached(b, sizeof b, (pt_stage)st);
+            else if (!pt_jmatrix_note(b, sizeof b, &j, (pt_stage)st) || kind == 2) b[0] = '\0';
+        } else if (kind == 0) pt_explain_values(b, sizeof b, &j, (pt_stage)st);
         else if (kind == 1) pt_explain_stage(b, sizeof b, &j, (pt_stage)st, "\n");
         else pt_explain_next(b, sizeof b, &j, (pt_stage)st);
         pt_sbuf_add_json(sb, b);
@@ -199,7 +204,9 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     pt_jmodel *jms = calloc(s->nmodels ? s->nmodels : 1, sizeof *jms);
     unsigned char *has = calloc(s->nmodels ? s->nmodels : 1, 1), *used = NULL;
     pt_sbuf t;
-    int st, rc = -1, found = 0;
+    int st, i, rc = -1, found = 0;
+    int n_st = s->matrix ? pt_matrix_norder : pt_classic_norder;
+    const pt_stage *ord = s->matrix ? pt_matrix_order : pt_classic_order;
 
     pt_sbuf_init(&t);
     if (!items || !jms || !has) goto done;
@@ -238,7 +245,8 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     pt_sbuf_add(&t, "scene ");
     pt_sbuf_add(&t, s->path);
     pt_sbuf_addf(&t, "; camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); "
-                 "framebuffer %d x %d", s->perspective ? "perspective" : "orthographic",
+                 "framebuffer %d x %d", s->matrix ? "lookat (the matrix camera)"
+                 : s->perspective ? "perspective" : "orthographic",
                  s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h);
     pt_sbuf_add_json(sb, t.s ? t.s : "");
     pt_sbuf_addf(sb, ",\n\"panel\":[%d,%d],\"font\":", PT_JOURNEY_PW, PT_JOURNEY_PH);
@@ -246,9 +254,11 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     pt_sbuf_addf(sb, ",\"capped\":%s,\"total\":%llu,\"start\":%llu,\n\"stages\":[\n",
                  total > PT_JOURNEY_MAXV ? "true" : "false", (unsigned long long)total,
                  (unsigned long long)start);
-    for (st = 0; st < PT_NSTAGES; st++) {
-        const pt_stage_info *in = &pt_stage_infos[st];
-        pt_sbuf_add(sb, st ? ",\n{\"name\":" : "{\"name\":");
+    for (i = 0; i < n_st; i++) {
+        const pt_stage_info *in = s->matrix && ord[i] == PT_STAGE_VIEWPORT
+                                  ? &pt_matrix_viewport_info : &pt_stage_infos[ord[i]];
+        st = ord[i];
+        pt_sbuf_add(sb, i ? ",\n{\"name\":" : "{\"name\":");
         pt_sbuf_add_json(sb, in->name);
         pt_sbuf_add(sb, ",\"title\":");
         pt_sbuf_add_json(sb, pt_journey_title((pt_stage)st));
@@ -267,11 +277,11 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
         pt_sbuf_add(sb, mi ? ",\n{\"name\":" : "{\"name\":");
         pt_sbuf_add_json(sb, s->models[mi].name);
         pt_sbuf_add(sb, ",\"bg\":[");
-        for (st = 0; st < PT_NSTAGES && has[mi]; st++) {
+        for (i = 0; i < n_st && has[mi]; i++) {
             pt_sbuf_free(&t);
-            pt_journey_panel_bg(&t, &jms[mi], (pt_stage)st);
+            pt_journey_panel_bg(&t, &jms[mi], ord[i]);
             if (t.failed) goto done;
-            pt_sbuf_add(sb, st ? ",\n" : "\n");
+            pt_sbuf_add(sb, i ? ",\n" : "\n");
             pt_sbuf_add_json(sb, t.s ? t.s : "");
         }
         pt_sbuf_add(sb, "]}");
@@ -290,11 +300,11 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
         pt_sbuf_add(sb, ",\n\"next\":");
         texts(sb, jm, &items[k], 2);
         pt_sbuf_add(sb, ",\n\"fg\":[");
-        for (st = 0; st < PT_NSTAGES; st++) {
+        for (i = 0; i < n_st; i++) {
             pt_sbuf_free(&t);
-            pt_journey_panel_fg(&t, jm, items[k].v, (pt_stage)st);
+            pt_journey_panel_fg(&t, jm, items[k].v, ord[i]);
             if (t.failed) goto done;
-            pt_sbuf_add(sb, st ? ",\n" : "\n");
+            pt_sbuf_add(sb, i ? ",\n" : "\n");
             pt_sbuf_add_json(sb, t.s ? t.s : "");
         }
         pt_sbuf_add(sb, "]}");

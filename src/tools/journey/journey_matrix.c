@@ -1,0 +1,592 @@
+/*
+** src/tools/journey/journey_matrix.c -- the matrix camera's panels of a journey (SVG)
+** See LICENSE for copyright and license.
+**
+** The panels of the stages the classic camera does not have, drawn with
+** journey.c's pieces (journey.h):
+**
+**   world   3-D: world axes, the model placed by its World matrix, the eye
+**           with its direction and up vectors
+**   view    3-D: the eye at the origin looking down +z_v, the frustum from
+**           the near plane on (its side planes from the Projection matrix)
+**   clip    two plots against w_k: x_k with the planes x_k = -w_k, w_k
+**           (left, right), y_k with y_k = -w_k, w_k (bottom, top)
+**   cvv     z_k against w_k with z_k = 0 (near) and z_k = w_k (far), and the
+**           outcode: the six planes, each distance, each bit
+**   ndc     3-D: the cube [-1, 1] x [-1, 1] x [0, 1]
+**   screen  the w x h screen rectangle, y down
+**
+** Every number drawn is a record pt_run() reported: the vertices' journeys
+** (pt_run_journeys()) and, for a segment that leaves the view volume, the
+** journey of the point clipping made where it cut the segment, which pt_run()
+** hands to a listener's journey callback after clipvertex_begin.  After the
+** cvv a segment is drawn from those points; in clip space the cut is marked.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "tools/journey/journey.h"
+#include "io/numfmt.h"
+#include "core/pipetrace.h"
+
+#define RED     "#d62728"        /* journey.c's colors: the vertex, */
+#define BLUE    "#1f6fd1"        /*   its segments, */
+#define EDGE    "#7f9cc6"        /*   a stage's area and planes, */
+#define GREY    "#5f6670"        /*   notes */
+#define LABEL   "fill=\"" GREY "\""
+
+#define BX      10.0             /* the plot box, as journey.c's */
+#define BY      42.0
+#define BW      380.0
+#define BH      248.0
+#define BIGV    1e150            /* coordinates beyond this never widen a panel */
+
+/* ===== the points clipping made ===== */
+
+typedef struct cutter {
+    pt_jmodel *jm;
+    uint64_t seg;                /* the segment of the point announced, 1-based */
+    size_t cap;                  /* room in jm->cut */
+    int failed;
+} cutter;
+
+static void on_clipvertex(void *ud, const pt_model *m, uint64_t seg, uint64_t from,
+                          uint64_t to, double t, pt_vec4 q)
+{
+    cutter *c = ud;
+
+    (void)from; (void)to; (void)t; (void)q;
+    c->seg = m == c->jm->m ? seg : 0;
+}
+
+/* A journey: a vertex's (ignored: jm->js has them) or a clipping point's. */
+static void on_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
+{
+    cutter *c = ud;
+    pt_jmodel *jm = c->jm;
+    size_t s, e;
+
+    if (m != jm->m || v != 0 || c->seg == 0 || c->failed) return;
+    s = (size_t)(c->seg - 1);
+    /* pt_run() cuts the first end first, and only an end outside the volume */
+    e = jm->cutix[2 * s] == 0 && jm->js[m->seg[s].a].rec[PT_STAGE_CVV].code != 0
+        ? 2 * s : 2 * s + 1;
+    if (jm->ncut == c->cap) {
+        size_t cap = c->cap ? 2 * c->cap : 16;
+        pt_journey *n = realloc(jm->cut, cap * sizeof *n);
+        if (!n) { c->failed = 1; return; }
+        jm->cut = n;
+        c->cap = cap;
+    }
+    jm->cut[jm->ncut++] = *j;
+    jm->cutix[e] = jm->ncut;
+    c->seg = 0;
+}
+
+/* Grow bbox b to take in (x, y) when both are finite and not huge. */
+static void grow(double b[4], double x, double y)
+{
+    if (!(fabs(x) <= BIGV && fabs(y) <= BIGV)) return;
+    if (x < b[0]) b[0] = x;
+    if (y < b[1]) b[1] = y;
+    if (x > b[2]) b[2] = x;
+    if (y > b[3]) b[3] = y;
+}
+
+static void grow3(double b[4], pt_stage st, double x, double y, double z)
+{
+    double px, py;
+
+    pt_jproj(st, x, y, z, &px, &py);
+    grow(b, px, py);
+}
+
+static void bbox_start(double b[4])
+{
+    b[0] = b[1] = 0;
+    b[2] = b[3] = 0;
+}
+
+static void pad_fit(pt_jview *v, double b[4], int ydown, double bx, double by, double bw,
+                    double bh)
+{
+    double p = fmax(b[2] - b[0], b[3] - b[1]) * 0.08;
+
+    b[0] -= p; b[1] -= p; b[2] += p; b[3] += p;
+    pt_jview_fit(v, b, ydown, bx, by, bw, bh);
+}
+
+/* The value of clip-space component c (0 x, 1 y, 2 z) of record r. */
+static double comp(const pt_vrec *r, int c)
+{
+    return c == 0 ? r->x : c == 1 ? r->y : r->z;
+}
+
+/* The length of the world panel's axes: the used vertices and the eye. */
+static double world_axis(const pt_jmodel *jm)
+{
+    const pt_scene *s = jm->s;
+    double big = fmax(fabs(s->eye.x), fmax(fabs(s->eye.y), fabs(s->eye.z)));
+    size_t k;
+
+    for (k = 0; k < jm->m->nv; k++) {
+        const pt_vrec *r = &jm->js[k].rec[PT_STAGE_WORLD];
+        double c = fmax(fabs(r->x), fmax(fabs(r->y), fabs(r->z)));
+        if (pt_vertex_used(jm->m, k + 1) && c <= BIGV && c > big) big = c;
+    }
+    return big > 0 ? 1.25 * big : 1;
+}
+
+/* The depth the view panel draws the frustum to: past the farthest used
+** vertex, at most the far plane. */
+static double view_depth(const pt_jmodel *jm)
+{
+    double d = 2 * jm->s->znear;
+    size_t k;
+
+    for (k = 0; k < jm->m->nv; k++) {
+        double z = jm->js[k].rec[PT_STAGE_VIEW].z;
+        if (pt_vertex_used(jm->m, k + 1) && z <= BIGV && 1.1 * z > d) d = 1.1 * z;
+    }
+    return fmin(d, jm->s->zfar);
+}
+
+/* Corner c (0..3) of the frustum's cross-section at depth z: where x_k = +-w_k
+** and y_k = +-w_k, with w_k = z_v (Projection's diagonal, m3_view2clip.h). */
+static void frustum_corner(const pt_jmodel *jm, int c, double z, double p[3])
+{
+    const pt_mat4 *P = &jm->js[0].proj;
+
+    p[0] = (c == 0 || c == 3 ? -z : z) / P->m[0][0];
+    p[1] = (c < 2 ? -z : z) / P->m[1][1];
+    p[2] = z;
+}
+
+int pt_jmatrix_init(pt_jmodel *jm)
+{
+    const pt_model *m = jm->m;
+    pt_options o;
+    pt_plan p;
+    pt_listener l;
+    pt_summary sum;
+    cutter c;
+    double b[4], A, D, pt[3];
+    size_t k;
+    int rc, i;
+
+    jm->cutix = calloc(m->nseg ? 2 * m->nseg : 1, sizeof *jm->cutix);
+    if (!jm->cutix) return -1;
+    memset(&c, 0, sizeof c);
+    c.jm = jm;
+    memset(&l, 0, sizeof l);
+    l.clipvertex_begin = on_clipvertex;
+    l.journey = on_journey;
+    l.ud = &c;
+    pt_options_default(&o);
+    o.model = m->name;
+    o.trace_raster = 0;
+    o.rasterize = 1;                         /* clipping happens with the segments */
+    if (pt_plan_make(&p, jm->s, &o) != 0) return -1;
+    rc = pt_run(jm->s, &p, &o, &l, NULL, &sum);
+    pt_plan_free(&p);
+    if (rc != 0 || c.failed) return -1;
+    for (k = 0; k < m->nseg; k++) {          /* an end outside and not cut: culled */
+        unsigned ca = jm->js[m->seg[k].a].rec[PT_STAGE_CVV].code;
+        unsigned cb = jm->js[m->seg[k].b].rec[PT_STAGE_CVV].code;
+        if ((ca && !jm->cutix[2 * k]) || (cb && !jm->cutix[2 * k + 1]))
+            jm->cutix[2 * k] = jm->cutix[2 * k + 1] = PT_JOURNEY_CULLED;
+    }
+
+    /* world: origin, axes, the eye, the used vertices */
+    A = world_axis(jm);
+    bbox_start(b);
+    grow3(b, PT_STAGE_WORLD, A, 0, 0);
+    grow3(b, PT_STAGE_WORLD, 0, A, 0);
+    grow3(b, PT_STAGE_WORLD, 0, 0, A);
+    grow3(b, PT_STAGE_WORLD, jm->s->eye.x, jm->s->eye.y, jm->s->eye.z);
+    for (k = 0; k < m->nv; k++) {
+        double x, y;
+        if (pt_vertex_used(m, k + 1) && pt_jstage_xy(&jm->js[k], PT_STAGE_WORLD, &x, &y))
+            grow(b, x, y);
+    }
+    pad_fit(&jm->view[PT_STAGE_WORLD], b, 0, BX, BY, BW, BH);
+    /* view: the eye, the frustum, the used vertices; ndc: the cube */
+    D = view_depth(jm);
+    bbox_start(b);
+    for (i = 0; i < 4; i++) {
+        frustum_corner(jm, i, jm->s->znear, pt); grow3(b, PT_STAGE_VIEW, pt[0], pt[1], pt[2]);
+        frustum_corner(jm, i, D, pt); grow3(b, PT_STAGE_VIEW, pt[0], pt[1], pt[2]);
+    }
+    pad_fit(&jm->view[PT_STAGE_VIEW], b, 0, BX, BY, BW, BH);
+    bbox_start(b);
+    for (i = 0; i < 8; i++)
+        grow3(b, PT_STAGE_NDC, i & 1 ? 1.2 : -1.2, i & 2 ? 1.2 : -1.2, i & 4 ? 1.2 : 0);
+    pad_fit(&jm->view[PT_STAGE_NDC], b, 0, BX, BY, BW, BH);
+    /* screen: the rectangle, y down */
+    b[0] = 0; b[1] = 0; b[2] = jm->par.w; b[3] = jm->par.h;
+    pad_fit(&jm->view[PT_STAGE_SCREEN], b, 1, BX, BY, BW, BH);
+    /* clip space: (w_k, x_k), (w_k, y_k), (w_k, z_k), each from w_k = 0 on */
+    for (i = 0; i < 3; i++) {
+        pt_jview *v = i == 0 ? &jm->view[PT_STAGE_CLIP] : i == 1 ? &jm->clip_y : &jm->clip_z;
+        b[0] = 0; b[1] = i == 2 ? 0 : -1; b[2] = 1; b[3] = 1;
+        for (k = 0; k < m->nv; k++) {
+            const pt_vrec *r = &jm->js[k].rec[PT_STAGE_CLIP];
+            if (pt_vertex_used(m, k + 1)) grow(b, r->w, comp(r, i));
+        }
+        if (i < 2) { b[1] = fmin(b[1], -b[2]); b[3] = fmax(b[3], b[2]); }  /* the wedge */
+        pad_fit(v, b, 0, i == 1 ? BX + BW / 2 + 4 : BX, BY + 16, BW / 2 - 4, BH - 16);
+    }
+    return 0;
+}
+
+int pt_jmatrix_ends(const pt_jmodel *jm, size_t s, pt_stage st, pt_journey *ja, pt_journey *jb)
+{
+    const size_t *cx = &jm->cutix[2 * s];
+    int after = st == PT_STAGE_NDC || st == PT_STAGE_SCREEN || st == PT_STAGE_VIEWPORT ||
+                st == PT_STAGE_FRAMEBUFFER || st == PT_STAGE_INDEX;
+
+    *ja = jm->js[jm->m->seg[s].a];
+    *jb = jm->js[jm->m->seg[s].b];
+    if (!after) return 1;
+    if (cx[0] == PT_JOURNEY_CULLED) return 0;
+    if (cx[0]) *ja = jm->cut[cx[0] - 1];
+    if (cx[1]) *jb = jm->cut[cx[1] - 1];
+    return 1;
+}
+
+int pt_jmatrix_pixelplane(const pt_journey *j, int h, pt_vec2 *pp)
+{
+    const pt_vrec *r = &j->rec[PT_STAGE_VIEWPORT];
+    pt_pix vp;
+
+    if (!(j->reported & 1u << PT_STAGE_VIEWPORT) || (r->flags & PT_REC_NULL)) return -1;
+    vp.x = r->ix; vp.y = r->iy; vp.ok = 1;
+    *pp = pt_viewport2pixelplane(vp, h);
+    return 0;
+}
+
+int pt_jmatrix_number(const pt_jmodel *jm, pt_stage st)
+{
+    const pt_stage *o = jm->s->matrix ? pt_matrix_order : pt_classic_order;
+    int k, n = jm->s->matrix ? pt_matrix_norder : pt_classic_norder;
+
+    for (k = 0; k < n; k++)
+        if (o[k] == st) return k + 1;
+    return (int)st + 1;
+}
+
+/* ===== backgrounds ===== */
+
+static void axes3(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st, double A, const char *sfx)
+{
+    char t[16];
+
+    snprintf(t, sizeof t, "x_%s", sfx); pt_jaxis3(sb, jm, st, A, 0, 0, t);
+    snprintf(t, sizeof t, "y_%s", sfx); pt_jaxis3(sb, jm, st, 0, A, 0, t);
+    snprintf(t, sizeof t, "z_%s", sfx); pt_jaxis3(sb, jm, st, 0, 0, A, t);
+}
+
+/* A labelled point of a 3-D panel. */
+static void point3(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st, const double *p,
+                   const char *label)
+{
+    const pt_jview *v = &jm->view[st];
+    double x, y;
+
+    pt_jproj(st, p[0], p[1], p[2], &x, &y);
+    if (!pt_jview_in(v, x, y)) return;
+    pt_jcircle(sb, pt_jview_x(v, x), pt_jview_y(v, y), 4, "#333", "");
+    pt_jtext(sb, pt_jview_x(v, x) - 7, pt_jview_y(v, y) - 8, 11, "end", "fill=\"#333\"", label, 0);
+}
+
+static void bg_world(pt_sbuf *sb, const pt_jmodel *jm)
+{
+    const pt_scene *s = jm->s;
+    double A = world_axis(jm), e[3], d[3], u[3], nd, nu;
+
+    axes3(sb, jm, PT_STAGE_WORLD, A, "w");
+    pt_jwireframe(sb, jm, PT_STAGE_WORLD);
+    e[0] = s->eye.x; e[1] = s->eye.y; e[2] = s->eye.z;
+    nd = sqrt(s->dir.x * s->dir.x + s->dir.y * s->dir.y + s->dir.z * s->dir.z);
+    nu = sqrt(s->up.x * s->up.x + s->up.y * s->up.y + s->up.z * s->up.z);
+    d[0] = e[0] + 0.4 * A * s->dir.x / nd; d[1] = e[1] + 0.4 * A * s->dir.y / nd;
+    d[2] = e[2] + 0.4 * A * s->dir.z / nd;
+    u[0] = e[0] + 0.25 * A * s->up.x / nu; u[1] = e[1] + 0.25 * A * s->up.y / nu;
+    u[2] = e[2] + 0.25 * A * s->up.z / nu;
+    pt_jline3(sb, jm, PT_STAGE_WORLD, e, d, EDGE, 2, "");
+    pt_jline3(sb, jm, PT_STAGE_WORLD, e, u, EDGE, 1.5, "stroke-dasharray=\"4 2\"");
+    point3(sb, jm, PT_STAGE_WORLD, d, "direction");
+    point3(sb, jm, PT_STAGE_WORLD, u, "up");
+    point3(sb, jm, PT_STAGE_WORLD, e, "eye");
+}
+
+static void bg_view(pt_sbuf *sb, const pt_jmodel *jm)
+{
+    double D = view_depth(jm), o[3] = {0, 0, 0}, n[4][3], f[4][3];
+    char t[64 + PT_NUMLEN], a[PT_NUMLEN];
+    int c;
+
+    for (c = 0; c < 4; c++) {
+        frustum_corner(jm, c, jm->s->znear, n[c]);
+        frustum_corner(jm, c, D, f[c]);
+    }
+    for (c = 0; c < 4; c++) {
+        pt_jline3(sb, jm, PT_STAGE_VIEW, o, f[c], EDGE, 1, "stroke-dasharray=\"5 3\"");
+        pt_jline3(sb, jm, PT_STAGE_VIEW, f[c], f[(c + 1) % 4], EDGE,
+                  D < jm->s->zfar ? 1 : 2, D < jm->s->zfar ? "stroke-dasharray=\"5 3\"" : "");
+        pt_jline3(sb, jm, PT_STAGE_VIEW, n[c], n[(c + 1) % 4], EDGE, 2, "");
+    }
+    axes3(sb, jm, PT_STAGE_VIEW, 0.6 * D, "v");
+    pt_jwireframe(sb, jm, PT_STAGE_VIEW);
+    point3(sb, jm, PT_STAGE_VIEW, o, "eye");
+    pt_fmt_shortest(a, jm->s->znear);
+    snprintf(t, sizeof t, "near plane z_v = %s", a);
+    pt_jtext(sb, BX + 6, BY + BH - 8, 10, "start", LABEL,
+             D < jm->s->zfar ? "frustum: from the near plane; the far plane lies beyond"
+                             : "frustum: from the near plane to the far plane", BW - 12);
+    pt_jtext(sb, BX + 6, BY + 14, 10, "start", LABEL, t, 0);
+}
+
+/* One clip-space plot: component c against w_k, with its two planes. */
+static void bg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c)
+{
+    static const char *const names[3] = {"x_k", "y_k", "z_k"};
+    static const char *const planes[3][2] = {{"right: x_k = w_k", "left: x_k = -w_k"},
+                                             {"top: y_k = w_k", "bottom: y_k = -w_k"},
+                                             {"far: z_k = w_k", "near: z_k = 0"}};
+    const pt_model *m = jm->m;
+    double W = v->x1, t;
+    size_t k;
+    char a[48];
+
+    pt_jview_line(sb, v, v->x0, 0, v->x1, 0, "#6b7280", 0.8, "");
+    pt_jview_line(sb, v, 0, v->y0, 0, v->y1, "#6b7280", 0.8, "");
+    pt_jview_line(sb, v, 0, 0, W, W, EDGE, 1.8, "");
+    pt_jview_line(sb, v, 0, 0, W, c == 2 ? 0 : -W, EDGE, 1.8, "");
+    t = fmin(0.8 * W, v->y1 * 0.8);
+    pt_jview_label(sb, v, t, t, -4, -4, "end", planes[c][0]);
+    pt_jview_label(sb, v, 0.8 * W, c == 2 ? 0 : fmax(-0.8 * W, v->y0 * 0.8), 0, 13, "end",
+                   planes[c][1]);
+    pt_jview_label(sb, v, v->x1, 0, -3, -4, "end", "w_k");
+    snprintf(a, sizeof a, "%s against w_k", names[c]);
+    pt_jtext(sb, v->bx + 2, v->by - 4, 10.5, "start", "fill=\"#222\"", a, 0);
+    for (k = 0; k < m->nseg && k < PT_JOURNEY_MAXSEG; k++) {
+        const pt_vrec *ra = &jm->js[m->seg[k].a].rec[PT_STAGE_CLIP];
+        const pt_vrec *rb = &jm->js[m->seg[k].b].rec[PT_STAGE_CLIP];
+        pt_jview_line(sb, v, ra->w, comp(ra, c), rb->w, comp(rb, c), "#b9bfc9", 1, "");
+    }
+}
+
+static void bg_cvv(pt_sbuf *sb, const pt_jmodel *jm)
+{
+    int b;
+    char t[64];
+
+    bg_wedge(sb, jm, &jm->clip_z, 2);
+    pt_jtext(sb, BX + BW / 2 + 8, BY + 12, 10.5, "start", "fill=\"#222\"",
+             "outside a plane: its bit is 1", 0);
+    for (b = 0; b < PT_CVV_NPLANES; b++) {
+        snprintf(t, sizeof t, "0x%02x %s", 1u << b, pt_cvv_names[b]);
+        pt_jtext(sb, BX + BW / 2 + 8, BY + 32 + 18 * b, 10.5, "start",
+                 "font-family=\"DejaVu Sans Mono, Menlo, Consolas, monospace\" " LABEL, t, 0);
+    }
+}
+
+static void bg_ndc(pt_sbuf *sb, const pt_jmodel *jm)
+{
+    double p[8][3];
+    int i, d;
+
+    for (i = 0; i < 8; i++) {
+        p[i][0] = i & 1 ? 1 : -1; p[i][1] = i & 2 ? 1 : -1; p[i][2] = i & 4 ? 1 : 0;
+    }
+    for (i = 0; i < 8; i++)                  /* each edge once: to a corner one bit up */
+        for (d = 1; d < 8; d <<= 1)
+            if (!(i & d)) pt_jline3(sb, jm, PT_STAGE_NDC, p[i], p[i | d], EDGE, 1.5, "");
+    axes3(sb, jm, PT_STAGE_NDC, 1.2, "n");
+    pt_jwireframe(sb, jm, PT_STAGE_NDC);
+    pt_jtext(sb, BX + 6, BY + BH - 8, 10, "start", LABEL,
+             "the cube -1 <= x_n, y_n <= 1, 0 <= z_n <= 1", 0);
+}
+
+static void bg_screen(pt_sbuf *sb, const pt_jmodel *jm)
+{
+    const pt_jview *v = &jm->view[PT_STAGE_SCREEN];
+    double w = jm->par.w, h = jm->par.h, x0 = pt_jview_x(v, 0), y0 = pt_jview_y(v, 0);
+    char t[64];
+
+    pt_jrect(sb, x0, y0, pt_jview_x(v, w) - x0, pt_jview_y(v, h) - y0, "#e6eefa", EDGE, "");
+    pt_jview_label(sb, v, 0, 0, 0, -5, "start", "(0, 0)");
+    snprintf(t, sizeof t, "(%d, %d)", jm->par.w, jm->par.h);
+    pt_jview_label(sb, v, w, h, 0, 13, "end", t);
+    pt_jview_label(sb, v, w, 0, 4, 10, "start", "x_s");
+    pt_jview_label(sb, v, 0, h, -4, 0, "end", "y_s");
+    pt_jwireframe(sb, jm, PT_STAGE_SCREEN);
+}
+
+void pt_jmatrix_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
+{
+    switch (st) {
+    case PT_STAGE_WORLD: bg_world(sb, jm); break;
+    case PT_STAGE_VIEW: bg_view(sb, jm); break;
+    case PT_STAGE_CLIP:
+        bg_wedge(sb, jm, &jm->view[PT_STAGE_CLIP], 0);
+        bg_wedge(sb, jm, &jm->clip_y, 1);
+        break;
+    case PT_STAGE_CVV: bg_cvv(sb, jm); break;
+    case PT_STAGE_NDC: bg_ndc(sb, jm); break;
+    case PT_STAGE_SCREEN: bg_screen(sb, jm); break;
+    default: break;
+    }
+}
+
+/* ===== foregrounds ===== */
+
+/* Vertex k's segments in a clip-space plot, the cuts clipping made on them,
+** and the vertex. */
+static void fg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c, size_t k)
+{
+    const pt_model *m = jm->m;
+    const pt_vrec *r = &jm->js[k].rec[PT_STAGE_CLIP];
+    size_t s;
+    int e;
+
+    for (s = 0; s < m->nseg; s++) {
+        const pt_vrec *ra = &jm->js[m->seg[s].a].rec[PT_STAGE_CLIP];
+        const pt_vrec *rb = &jm->js[m->seg[s].b].rec[PT_STAGE_CLIP];
+        if (m->seg[s].a != k && m->seg[s].b != k) continue;
+        pt_jview_line(sb, v, ra->w, comp(ra, c), rb->w, comp(rb, c), BLUE, 2,
+                      "stroke-linecap=\"round\"");
+        for (e = 0; e < 2; e++) {            /* where clipping cut it */
+            size_t i = jm->cutix[2 * s + e];
+            const pt_vrec *q;
+            if (i == 0 || i == PT_JOURNEY_CULLED) continue;
+            q = &jm->cut[i - 1].rec[PT_STAGE_CLIP];
+            if (!pt_jview_in(v, q->w, comp(q, c))) continue;
+            pt_jrect(sb, pt_jview_x(v, q->w) - 4, pt_jview_y(v, comp(q, c)) - 4, 8, 8, "#fff",
+                     RED, "stroke-width=\"1.5\" class=\"cut\"");
+            pt_jtext(sb, pt_jview_x(v, q->w) + 6, pt_jview_y(v, comp(q, c)) + 12, 10, "start",
+                     "fill=\"" RED "\"", "cut", 0);
+        }
+    }
+    pt_jmarker(sb, v, isfinite(r->w) && isfinite(comp(r, c)), r->w, comp(r, c), k + 1);
+}
+
+void pt_jmatrix_cuts(pt_sbuf *sb, const pt_jmodel *jm, size_t k, pt_stage st)
+{
+    const pt_jview *v = &jm->view[st];
+    const pt_model *m = jm->m;
+    size_t s;
+    int e;
+
+    for (s = 0; s < m->nseg; s++) {
+        if (m->seg[s].a != k && m->seg[s].b != k) continue;
+        for (e = 0; e < 2; e++) {
+            size_t i = jm->cutix[2 * s + e];
+            double x, y;
+            if (i == 0 || i == PT_JOURNEY_CULLED) continue;
+            if (!pt_jstage_xy(&jm->cut[i - 1], st, &x, &y) || !pt_jview_in(v, x, y)) continue;
+            pt_jrect(sb, pt_jview_x(v, x) - 4, pt_jview_y(v, y) - 4, 8, 8, "#fff", RED,
+                     "stroke-width=\"1.5\" class=\"cut\"");
+        }
+    }
+}
+
+/* The outcode: each plane's distance (inside >= 0) and bit. */
+static void fg_code(pt_sbuf *sb, const pt_vrec *r)
+{
+    pt_vec4 q;
+    double d[PT_CVV_NPLANES];
+    char t[96], a[PT_NUMLEN];
+    int b;
+
+    q.x = r->x; q.y = r->y; q.z = r->z; q.w = r->w;
+    pt_cvv_distances(q, d);
+    for (b = 0; b < PT_CVV_NPLANES; b++) {
+        int out = (r->code >> b) & 1;
+        pt_fmt_shortest(a, d[b]);
+        snprintf(t, sizeof t, "%d  d = %s", out, a);
+        pt_jtext(sb, BX + BW / 2 + 84, BY + 32 + 18 * (double)b, 10.5, "start",
+                 out ? "font-weight=\"bold\" fill=\"" RED "\"" : LABEL, t, BW / 2 - 88);
+    }
+    snprintf(t, sizeof t, "code = %u", r->code);
+    pt_jtext(sb, BX + BW / 2 + 8, BY + 32 + 18 * PT_CVV_NPLANES + 6, 13, "start",
+             "font-weight=\"bold\" fill=\"" RED "\"", t, 0);
+    pt_jtext(sb, BX + BW / 2 + 8, BY + 32 + 18 * PT_CVV_NPLANES + 24, 10, "start", LABEL,
+             "d: the signed distance, inside >= 0", 0);
+}
+
+void pt_jmatrix_fg(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k, pt_stage st)
+{
+    char t[160];
+
+    if (!(j->reported & 1u << st)) {         /* the journey ended at the cvv */
+        if (st != PT_STAGE_INDEX) pt_jsegments(sb, jm, &jm->view[st], st, k);
+        if (st == PT_STAGE_NDC || st == PT_STAGE_SCREEN) pt_jmatrix_cuts(sb, jm, k, st);
+        snprintf(t, sizeof t, "v%llu stops at the cvv: outside the view volume",
+                 (unsigned long long)(k + 1));
+        pt_jtext(sb, BX + BW / 2, BY + BH / 2, 12, "middle",
+                 "fill=\"" RED "\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\"",
+                 t, BW - 10);
+        pt_jtext(sb, BX + BW / 2, BY + BH / 2 + 17, 10.5, "middle",
+                 LABEL " stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\"",
+                 "its segments go on from where clipping cut them", BW - 10);
+        return;
+    }
+    if (st == PT_STAGE_CLIP) {
+        fg_wedge(sb, jm, &jm->view[PT_STAGE_CLIP], 0, k);
+        fg_wedge(sb, jm, &jm->clip_y, 1, k);
+    } else {
+        fg_wedge(sb, jm, &jm->clip_z, 2, k);
+        fg_code(sb, &j->rec[PT_STAGE_CVV]);
+    }
+}
+
+size_t pt_jmatrix_unreached(char *t, size_t n, pt_stage st)
+{
+    size_t len = 0;
+    int k, c = pt_coord_count(st);
+
+    t[0] = '\0';
+    for (k = 0; k < c && len < n; k++)
+        len += (size_t)snprintf(t + len, n - len, "%s%s", k ? ", " : c > 1 ? "(" : "",
+                                pt_coord_name(st, k));
+    if (len < n) len += (size_t)snprintf(t + len, n - len, "%s: not reached", c > 1 ? ")" : "");
+    return len;
+}
+
+int pt_jmatrix_note(char *t, size_t n, const pt_journey *j, pt_stage st)
+{
+    const pt_vrec *r = &j->rec[st];
+
+    if (!(j->reported & 1u << st)) {
+        snprintf(t, n, "not reached: the vertex is outside the view volume (cvv code %u)",
+                 j->rec[PT_STAGE_CVV].code);
+        return 1;
+    }
+    switch (st) {
+    case PT_STAGE_WORLD:
+        snprintf(t, n, "the model placed in the world: its world lines, then translate");
+        return 1;
+    case PT_STAGE_VIEW:
+        snprintf(t, n, "%s", r->z > 0 ? "in front of the eye (z_v > 0)"
+                 : "not in front of the eye (z_v <= 0): the near plane clips it");
+        return 1;
+    case PT_STAGE_CLIP:
+        snprintf(t, n, "inside when -w_k <= x_k, y_k <= w_k and 0 <= z_k <= w_k");
+        return 1;
+    case PT_STAGE_CVV:
+        snprintf(t, n, "%s", r->code == 0 ? "inside the view volume: on to the divide by w_k"
+                 : "outside: its segments are clipped before the divide");
+        return 1;
+    case PT_STAGE_NDC:
+        snprintf(t, n, "divided by w_k: inside the cube");
+        return 1;
+    case PT_STAGE_SCREEN:
+        snprintf(t, n, "y grows downward; pixel (i, j) covers i <= x_s < i + 1, j <= y_s < j + 1");
+        return 1;
+    default:
+        return 0;
+    }
+}
