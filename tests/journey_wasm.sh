@@ -79,7 +79,7 @@ fi
 
 # ---- built without WebAssembly: make WASM=no
 mkdir -p "$tmp/nowasm"
-if MAKEFLAGS= MFLAGS= MAKELEVEL= make -s B="$tmp/nowasm" WASM=no CFLAGS=-O0 \
+if MAKEFLAGS= MFLAGS= MAKELEVEL= make -s -j2 B="$tmp/nowasm" WASM=no CFLAGS=-O0 \
         "$tmp/nowasm/pipetrace" > "$tmp/make.log" 2>&1; then
     passed=$((passed + 1))
     "$tmp/nowasm/pipetrace" journey --vertex 1 --html "$tmp/n.html"

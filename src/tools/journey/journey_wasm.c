@@ -81,6 +81,7 @@ static const char *const script[] = {
 "    o.id = 'o_' + n;\n"
 "    l.appendChild(document.createTextNode(n)); l.appendChild(i); l.appendChild(o);\n"
 "    $('sliders').appendChild(l);\n"
+"    i.addEventListener('keydown', function (e) { e.stopPropagation(); });  /* arrows: its own */\n"
 "    i.addEventListener('input', function () {\n"
 "      if (k < 3) T[vertex().m][k] = Number(i.value); else P[n] = Number(i.value);\n"
 "      moved = true;\n"
@@ -117,13 +118,13 @@ static const char *const script[] = {
 "    if (s.coord.length === 1) return s.coord[0] + ' = ' + shown[0];\n"
 "    return '(' + s.coord.join(', ') + ') = ' + (any ? '(' + shown.join(', ') + ')' : 'none');\n"
 "  }\n"
-"  var live = [];\n",
+"  var live = [], liveFor = null;         /* the values of vertex liveFor */\n",
 "  function run() {\n"
 "    var x = vertex(), vm = W.models[x.m].v[x.v - 1], t = T[x.m], st, k;\n"
 "    ranges();\n"
 "    if (!E) return;\n"
 "    $('livetable').textContent = '';\n"
-"    live = [];\n"
+"    live = []; liveFor = sel.value;\n"
 "    if (!vm) { note.textContent = 'No sliders for this vertex (beyond the first ' +\n"
 "               W.maxv + ' of its model).'; return; }\n"
 "    vm = vm.map(dbl);\n"
@@ -156,6 +157,7 @@ static const char *const script[] = {
 "    coords();\n"
 "  }\n",
 "  function coords() {                     /* the shown stage's #coords */\n"
+"    if (moved && liveFor !== sel.value) return run();   /* chosen by the URL */\n"
 "    var c = $('coords'), st = W.stages.map(function (s) { return s.name; })\n"
 "                                 .indexOf($('stage').textContent);\n"
 "    var want = moved && live[st] !== undefined ? live[st] : null;\n"
