@@ -174,6 +174,7 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 WASM_CC  = clang
 WASM_LD  = wasm-ld
 WASM    := $(if $(STAGE_GIVEN),no,$(if $(and $(shell command -v $(WASM_CC) 2>/dev/null),$(shell command -v $(WASM_LD) 2>/dev/null)),yes,no))
+# -mbulk-memory: a struct copy becomes memory.copy, not a call to libc's memcpy.
 WASM_CFLAGS = --target=wasm32 -ffreestanding -nostdlib -std=c11 $(WARN) $(FPFLAGS) -O2 \
               -mbulk-memory -isystem stages/wasm -Istages
 WASM_SRC = stages/wasm/pt_wasm.c stages/wasm/pt_wasm_libm.c stages/pt_stage.c stages/pt_round.c \
@@ -196,6 +197,8 @@ $B/stages_wasm.c: $B/wasm-choice $(if $(filter yes,$(WASM)),$B/stages.wasm)
 	  echo '    NULL'; echo '};'; } > $@
 $B/stages_wasm.o: $B/stages_wasm.c src/tools/journey/journey_wasm.h
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
+# tests/test_wasm_libm.c includes the module's fmax and ilogb to compare them with libm.
+$B/test_wasm_libm: stages/wasm/pt_wasm_libm.c stages/wasm/pt_wasm_libm.h
 # tests/test_fuzz also replays the fuzz targets' regression corpus (tests/fuzz/).
 FUZZ_C   = tests/fuzz/fuzz_scene.c tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_trace.c \
            tests/fuzz/fuzz_image.c tests/fuzz/fuzz_common.c

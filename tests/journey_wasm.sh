@@ -8,9 +8,10 @@
 #     viewport, framebuffer); tests/journey_wasm.py writes the scene again
 #     with the values the page shows, runs PIPETRACE on it and compares every
 #     stage's values bit for bit, and #coords with the command line's page;
-#   - a pipetrace built with `make WASM=no` (as without clang or wasm-ld)
-#     writes a page that says it has no sliders, and no module.
-# Without chromium the browser part is skipped (the WASM=no build is not).
+#   - a pipetrace built where clang is not found, or with `make WASM=no`,
+#     writes a page that says it has no sliders, and no module; WASM=yes
+#     in the same build directory brings them back.
+# Without chromium the browser part is skipped (the builds without are not).
 exe=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -77,28 +78,60 @@ else
     compare - "$tmp/dom.html"
 fi
 
-# ---- built without WebAssembly: make WASM=no
-mkdir -p "$tmp/nowasm"
-if MAKEFLAGS= MFLAGS= MAKELEVEL= make -s -j2 B="$tmp/nowasm" WASM=no CFLAGS=-O0 \
-        "$tmp/nowasm/pipetrace" > "$tmp/make.log" 2>&1; then
-    passed=$((passed + 1))
+# ---- built without WebAssembly: no clang found (WASM_CC names none), then
+# make WASM=no, then WASM=yes in the same build directory (the choice is
+# remembered in $B/wasm-choice, so the page follows it)
+mk() {      # mk ARGS...: make pipetrace in $tmp/nowasm, nothing passed down
+    MAKEFLAGS= MFLAGS= MAKELEVEL= make -s -j2 B="$tmp/nowasm" CFLAGS=-O0 "$@" \
+        "$tmp/nowasm/pipetrace" > "$tmp/make.log" 2>&1
+}
+nowasm() {  # nowasm HOW: the page of $tmp/nowasm/pipetrace has no sliders
     "$tmp/nowasm/pipetrace" journey --vertex 1 --html "$tmp/n.html"
-    check "wasm-2 WASM=no: the page says it has no sliders" \
+    check "wasm-2 $1: the page says it has no sliders" \
         sh -c "grep -q 'id=\"live\" data-wasm=\"no\"' '$tmp/n.html' &&
                grep -q 'No sliders on this page: pipetrace was built without' '$tmp/n.html'"
-    check "wasm-3 WASM=no: no module, no slider script" \
+    check "wasm-3 $1: no module, no slider script" \
         sh -c "! grep -q 'wasmdata\|s_x_t' '$tmp/n.html'"
-    check "wasm-4 WASM=no: the page is otherwise the same" \
+    check "wasm-4 $1: the page is otherwise the same" \
         sh -c "sed '/<section id=\"live\"/,\$d' '$tmp/n.html' > '$tmp/n.top' &&
                sed '/<section id=\"live\"/,\$d' '$tmp/b.html' > '$tmp/b.top' &&
                cmp '$tmp/n.top' '$tmp/b.top'"
+}
+mkdir -p "$tmp/nowasm"
+if mk WASM_CC=pt-no-such-clang; then
+    passed=$((passed + 1))
+    nowasm "no clang"
     if [ -n "$browser" ]; then
         sliders "$tmp/n.html" '' > "$tmp/dom.html"
-        check "wasm-5 WASM=no: the browser shows the note" \
+        check "wasm-5 no clang: the browser shows the note" \
             grep -q 'nowasm.*No sliders on this page' "$tmp/dom.html"
     fi
+    check "wasm-6 make WASM=no" mk WASM=no
+    nowasm "WASM=no"
+    if command -v clang >/dev/null 2>&1 && command -v wasm-ld >/dev/null 2>&1; then
+        check "wasm-7 make WASM=yes after WASM=no" mk WASM=yes
+        "$tmp/nowasm/pipetrace" journey --vertex 1 --html "$tmp/y.html"
+        check "wasm-8 WASM=yes: the page has the module again" cmp "$tmp/y.html" "$tmp/b.html"
+        # the page runs the build's own stage files: a student's pixel stage
+        # that divides by 2 (not 2.001), built with WASM=yes, moves the page's
+        # numbers as it moves its pipetrace's, and away from the reference's
+        sed 's|w / 2.001|w / 2.0|' stages/s3_image2pixel.c > "$tmp/s3_two.c"
+        check "wasm-9 the student's stage differs from stages/s3_image2pixel.c" \
+            sh -c "! cmp -s stages/s3_image2pixel.c '$tmp/s3_two.c'"
+        if [ -n "$browser" ] && mk WASM=yes STAGE_pixel="$tmp/s3_two.c"; then
+            "$tmp/nowasm/pipetrace" journey --vertex 1 --html "$tmp/s.html"
+            sliders "$tmp/s.html" '&set=x_t:-1.2' > "$tmp/dom.html"
+            exe0=$exe; exe=$tmp/nowasm/pipetrace
+            compare - "$tmp/dom.html"
+            exe=$exe0
+            check "wasm-10 the student's page differs from the reference's" \
+                sh -c "! python3 tests/journey_wasm.py '$exe' '$tmp/dom.html' - '$tmp'"
+        elif [ -n "$browser" ]; then
+            failed=$((failed + 1)); echo "FAIL wasm-9 make WASM=yes STAGE_pixel=FILE"
+        fi
+    fi
 else
-    failed=$((failed + 1)); echo "FAIL wasm-1 make WASM=no"; tail -5 "$tmp/make.log"
+    failed=$((failed + 1)); echo "FAIL wasm-1 make WASM_CC=pt-no-such-clang"; tail -5 "$tmp/make.log"
 fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
