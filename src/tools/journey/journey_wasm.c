@@ -11,7 +11,7 @@
 #include "tools/journey/journey.h"
 #include "tools/journey/journey_wasm.h"
 
-#define MAXV_EXACT 100000       /* a model's first this many vertices get sliders */
+#define PT_JOURNEY_WASM_MAXV 100000  /* a model's first this many vertices get sliders */
 
 static const char style[] =
 "<style>\n"
@@ -218,7 +218,8 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
     for (k = 0; pt_journey_wasm_b64[k]; k++) pt_sbuf_add(sb, pt_journey_wasm_b64[k]);
     pt_sbuf_addf(sb, "\",\n\"perspective\":%s,\"vp\":[%d,%d,%d,%d],\"fb\":[%d,%d],\"max\":%d,"
                  "\"maxv\":%d,\n\"stages\":[", s->perspective ? "true" : "false",
-                 s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h, PT_MAX_SIZE, MAXV_EXACT);
+                 s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h, PT_MAX_SIZE,
+                 PT_JOURNEY_WASM_MAXV);
     for (st = 0; st < PT_NSTAGES; st++) {          /* names and value names: the table's */
         const pt_stage_info *in = &pt_stage_infos[st];
         pt_sbuf_add(sb, st ? ",{\"name\":" : "{\"name\":");
@@ -236,7 +237,7 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
         pt_sbuf_add(sb, mi ? ",\n{\"t\":" : "\n{\"t\":");
         add_vec(sb, m->translate);
         pt_sbuf_add(sb, ",\"v\":[");
-        for (k = 0; k < m->nv && k < MAXV_EXACT; k++) {
+        for (k = 0; k < m->nv && k < PT_JOURNEY_WASM_MAXV; k++) {
             if (k) pt_sbuf_add(sb, k % 8 ? "," : ",\n");
             add_vec(sb, m->v[k]);
         }
