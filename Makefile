@@ -110,14 +110,15 @@ IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B
 # own; diff's parts listed with the commands).
 TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/dd.o $B/acc_shared.o $B/acc_float.o \
            $B/acc_double.o $B/acc_dd.o $B/accuracy.o $B/journey.o $B/journey_html.o \
-           $B/journey_matrix.o
+           $B/journey_matrix.o \
+           $B/journey_wasm.o $B/stages_wasm.o
 CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/dfit.o \
            $B/dpixels.o $B/dsummary.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o $B/cmd_shapes.o $B/cmd_export.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
-           $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes
+           $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm
 
 all: $B/pipetrace
 
@@ -162,6 +163,43 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	awk 'BEGIN { print "#include \"core/builtin.h\""; print "const char pt_builtin_scene[] =" } \
 	     { gsub(/\\/, "\\\\"); gsub(/"/, "\\\""); print "    \"" $$0 "\\n\"" } \
 	     END { print "    \"\";" }' $< > $@
+# ===== the journey page's stages in WebAssembly (docs/journey.md) =====
+# The classic camera's stage files (a student's when chosen), compiled by
+# clang for wasm32 without libc (stages/wasm/: the glue and the few libm
+# functions) and linked by wasm-ld into $B/stages.wasm, which the page
+# embeds as base64 ($B/stages_wasm.c).  WASM=yes when both tools are found
+# (Debian: clang, lld); `make WASM=no` builds the page without its sliders,
+# as a build without them does.  A student build (STAGE_x=FILE.c) has none
+# unless WASM=yes: the file may call what the build without libc lacks.
+# $B/wasm-choice remembers the choice.
+WASM_CC  = clang
+WASM_LD  = wasm-ld
+WASM    := $(if $(STAGE_GIVEN),no,$(if $(and $(shell command -v $(WASM_CC) 2>/dev/null),$(shell command -v $(WASM_LD) 2>/dev/null)),yes,no))
+# -mbulk-memory: a struct copy becomes memory.copy, not a call to libc's memcpy.
+WASM_CFLAGS = --target=wasm32 -ffreestanding -nostdlib -std=c11 $(WARN) $(FPFLAGS) -O2 \
+              -mbulk-memory -isystem stages/wasm -Istages
+WASM_SRC = stages/wasm/pt_wasm.c stages/wasm/pt_wasm_libm.c stages/pt_stage.c stages/pt_round.c \
+           $(or $(STAGE_camera),stages/s1_model2camera.c) \
+           $(or $(STAGE_image),stages/s2_camera2image.c) \
+           $(or $(STAGE_pixel),stages/s3_image2pixel.c) \
+           $(or $(STAGE_viewport),stages/s4_pixel2viewport.c) \
+           $(or $(STAGE_framebuffer),stages/s5_viewport2fb.c) \
+           $(or $(STAGE_index),stages/s6_fb2index.c) stages/pt_classic.c
+$(shell mkdir -p $B && { echo '$(WASM)' | cmp -s - $B/wasm-choice || echo '$(WASM)' > $B/wasm-choice; })
+$B/stages.wasm: $(WASM_SRC) stages/*.h stages/wasm/*.h $B/wasm-choice $(CHOSEN)
+	rm -rf $B/wasm-obj && mkdir -p $B/wasm-obj
+	n=0; for f in $(WASM_SRC); do n=$$((n + 1)); \
+	    $(WASM_CC) $(WASM_CFLAGS) -c -o $B/wasm-obj/$$n.o $$f || exit 1; done
+	$(WASM_LD) --no-entry --strip-all -o $@ $B/wasm-obj/*.o
+$B/stages_wasm.c: $B/wasm-choice $(if $(filter yes,$(WASM)),$B/stages.wasm)
+	{ echo '#include "tools/journey/journey_wasm.h"'; \
+	  echo 'const char *const pt_journey_wasm_b64[] = {'; \
+	  if [ '$(WASM)' = yes ]; then base64 $B/stages.wasm | awk '{ print "    \"" $$0 "\"," }'; fi; \
+	  echo '    NULL'; echo '};'; } > $@
+$B/stages_wasm.o: $B/stages_wasm.c src/tools/journey/journey_wasm.h
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
+# tests/test_wasm_libm.c includes the module's fmax and ilogb to compare them with libm.
+$B/test_wasm_libm: stages/wasm/pt_wasm_libm.c stages/wasm/pt_wasm_libm.h
 # tests/test_fuzz also replays the fuzz targets' regression corpus (tests/fuzz/).
 FUZZ_C   = tests/fuzz/fuzz_scene.c tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_trace.c \
            tests/fuzz/fuzz_image.c tests/fuzz/fuzz_common.c

@@ -51,6 +51,9 @@ def includes(path):
             name = m.group(1)
             if path.startswith("stages/") and "/" not in name:
                 target = "stages/" + name
+                here = os.path.join(os.path.dirname(path), name)   # stages/wasm/
+                if os.path.exists(os.path.join(root, here)):
+                    target = here
             elif name.startswith("stages/"):
                 target = name
             else:

@@ -57,6 +57,8 @@ term        2 sh tests/term.sh $B/pipetrace
 accuracy    1 sh tests/accuracy.sh $B/pipetrace
 journey     1 sh tests/journey.sh $B/pipetrace
 browser     2 sh tests/journey_browser.sh $B/pipetrace
+wasm        1 sh tests/journey_wasm.sh $B/pipetrace
+wasm-libm   1 $B/test_wasm_libm
 docs        1 sh tests/docs.sh $B/pipetrace
 valgrind    1 sh tests/valgrind.sh $B/pipetrace"}
 

@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/journey/journey.h"
+#include "tools/journey/journey_wasm.h"
 
 static const char style[] =
 "body{font-family:'DejaVu Sans',Helvetica,Arial,sans-serif;margin:0;background:#f3f4f6;"
@@ -311,7 +312,9 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     }
     pt_sbuf_add(sb, "]}\n</script>\n<script>\n");
     for (st = 0; script[st]; st++) pt_sbuf_add(sb, script[st]);
-    pt_sbuf_add(sb, "</script>\n</body>\n</html>\n");
+    pt_sbuf_add(sb, "</script>\n");
+    pt_journey_wasm(sb, s);                 /* the sliders (journey_wasm.c) */
+    pt_sbuf_add(sb, "</body>\n</html>\n");
     rc = sb->failed ? -1 : 0;
 done:
     pt_sbuf_free(&t);

@@ -1,0 +1,46 @@
+/*
+** src/tools/journey/journey_wasm.h -- the journey page's sliders, recomputed by the stages in WebAssembly
+** See LICENSE for copyright and license.
+**
+** The page of `pipetrace journey --html` gets a "recompute" section: sliders
+** for the model's translation (x_t, y_t, z_t), the viewport's size and
+** corner (w, h, x_ul, y_ul) and the framebuffer's size (W, H).  Moving one
+** runs the chosen vertex through the classic camera's stages again, in the
+** page, by calling the project's own stage files compiled to WebAssembly
+** (stages/wasm/pt_wasm.c, built into $B/stages.wasm by the Makefile and
+** embedded below as base64).  The page's script only moves numbers between
+** the sliders and the module and prints them; it holds no formula.
+**
+** What the section offers (ids for the tests):
+**   #live              the section; data-ready="1" once the module runs,
+**                      data-wasm="no" when pipetrace was built without it
+**   #s_x_t ... #s_H    the sliders (input type=range), one per parameter
+**   #livetable         a row per stage (data-stage="camera"); its cell
+**                      data-values holds the stage's values, reals as 16 hex
+**                      digits of their IEEE bits, integers in decimal,
+**                      "none" for no value, separated by commas
+**   #livenote          what the numbers shown are
+**   #reset             back to the scene's own numbers
+** When a slider has moved, #coords shows the recomputed values of the shown
+** stage; the panel and the texts "with the numbers" and "next" stay the
+** scene's (they are drawn by pipetrace itself) and are dimmed.
+*/
+#ifndef PT_JOURNEY_WASM_H
+#define PT_JOURNEY_WASM_H
+
+#include "io/sbuf.h"
+#include "core/pipetrace.h"
+
+/* $B/stages.wasm as base64, one line an element, ended by NULL; only the
+** NULL when pipetrace was built without clang and wasm-ld (or WASM=no).
+** Written by the Makefile into $B/stages_wasm.c. */
+extern const char *const pt_journey_wasm_b64[];
+
+/* Append the recompute section for scene s (the classic camera) to a journey
+** page, after its own script: the sliders, the scene's numbers in exact
+** form, the module and the script, or, built without the module, a note
+** that says so.  The script finds the page's #data, #vertex, #stage and
+** #coords (journey_html.c).  On allocation failure sb->failed is set. */
+void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s);
+
+#endif

@@ -1,0 +1,124 @@
+#!/usr/bin/env python3
+# tests/journey_wasm.py -- the journey page's sliders against the command line, bit for bit
+# See LICENSE for copyright and license.
+#
+# Usage: python3 tests/journey_wasm.py PIPETRACE DOM SCENE|- TMPDIR
+# DOM is tests/journey_sliders.html's --dump-dom after moving the sliders of
+# a page made from SCENE ("-": the built-in scene, docs/examples/builtin.scene).
+# It writes SCENE again with the page's framebuffer, viewport and the vertex's
+# model's translation, runs `PIPETRACE NEW --format jsonl` for that vertex and
+# checks every stage's values against the page's (#livetable: reals as IEEE
+# bits, so equal means bit for bit), and #coords against the #coords the
+# command line's own page gives for NEW.  Prints "N passed, N failed".
+import html
+import json
+import os
+import re
+import struct
+import subprocess
+import sys
+
+passed = failed = 0
+
+
+def check(descr, ok, detail=""):
+    global passed, failed
+    if ok:
+        passed += 1
+    else:
+        failed += 1
+        print("FAIL " + descr)
+        if detail:
+            print("  " + detail)
+
+
+def rewrite(text, p, model):
+    """The scene with the page's framebuffer, viewport and model translation."""
+    out = ["framebuffer %s %s" % (p["W"], p["H"]),
+           "viewport %s %s %s %s" % (p["x_ul"], p["y_ul"], p["w"], p["h"])]
+    here = False
+    for line in text.splitlines():
+        words = line.split("#")[0].split()
+        d = words[0] if words else ""
+        if d in ("framebuffer", "viewport"):
+            continue
+        if d == "model":
+            here = len(words) > 1 and words[1] == model
+        if here and d == "translate":
+            continue
+        out.append(line)
+        if d == "model" and here:
+            out.append("translate %s %s %s" % (p["x_t"], p["y_t"], p["z_t"]))
+    return "\n".join(out) + "\n"
+
+
+def bits(x):
+    return struct.pack(">d", float(x)).hex()
+
+
+def main():
+    exe, dom, scene, tmp = sys.argv[1:5]
+    m = re.search(r'<pre id="sliders">(.*?)</pre>', open(dom, encoding="utf-8").read(), re.S)
+    check("slider-0 the harness reported", m is not None)
+    if not m:
+        return
+    lines = html.unescape(m.group(1)).splitlines()
+    check("slider-1 the harness moved every slider", lines[0] == "ok", lines[0])
+    p, page, info = {}, {}, {}
+    for ln in lines[1:]:
+        f = ln.split("\t")
+        if f[0] == "param":
+            p[f[1]] = f[2]
+        elif f[0] == "stage":
+            page[f[1]] = f[2].split(",")
+        else:
+            info[f[0]] = f[1:]
+    model, v = info["vertex"][0], info["vertex"][1]
+    src = "docs/examples/builtin.scene" if scene == "-" else scene
+    new = os.path.join(tmp, "moved.scene")
+    with open(new, "w", encoding="utf-8") as f:
+        f.write(rewrite(open(src, encoding="utf-8").read(), p, model))
+    r = subprocess.run([exe, new, "--model", model, "--vertex", v, "--all-stages",
+                        "--format", "jsonl", "--trace", "-"], capture_output=True, text=True)
+    check("slider-2 the command line reads the moved scene", r.returncode == 0, r.stderr)
+    cli = {}
+    for ln in r.stdout.splitlines():
+        rec = json.loads(ln)
+        if rec.get("type") == "vertex":
+            cli[rec["stage"]] = rec
+    check("slider-3 seven stages on both sides", len(cli) == 7 and len(page) == 7,
+          "%s / %s" % (sorted(cli), sorted(page)))
+    for st, rec in cli.items():
+        keys = ["i"] if st == "index" else ["x", "y"] if st in (
+            "pixel", "viewport", "framebuffer") else ["x", "y", "z"]
+        want = []
+        for k in keys:
+            val = rec.get(k)
+            if val is None:
+                want.append("none")
+            elif st in ("viewport", "framebuffer", "index"):
+                want.append(str(val))
+            else:
+                want.append(bits(val))
+        check("slider-4 %s %s v%s %s: the page's values are the command line's" % (
+            os.path.basename(src), model, v, st), page.get(st) == want,
+            "page %s, pipetrace %s (%s)" % (page.get(st), want, json.dumps(rec)))
+    h = os.path.join(tmp, "moved.html")
+    r = subprocess.run([exe, "journey", new, "--model", model, "--vertex", v, "--html", h],
+                       capture_output=True, text=True)
+    d = re.search(r'<script type="application/json" id="data">\n(.*?)\n</script>',
+                  open(h, encoding="utf-8").read(), re.S)
+    data = json.loads(d.group(1))
+    names = [s["name"] for s in data["stages"]]
+    x = [x for x in data["vertices"]
+         if data["models"][x["m"]]["name"] == model and str(x["v"]) == v][0]
+    shown = info["shown"][0]
+    check("slider-5 %s %s v%s %s: #coords is the command line's page's" % (
+        os.path.basename(src), model, v, shown),
+        info["coords"][0] == x["coords"][names.index(shown)],
+        "page %r, pipetrace %r" % (info["coords"][0], x["coords"][names.index(shown)]))
+
+
+main()
+print("%d passed, %d failed" % (passed, failed))
+sys.exit(1 if failed else 0)
