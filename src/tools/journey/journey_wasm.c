@@ -35,6 +35,11 @@ static const char without[] =
 "(clang and wasm-ld, Debian's packages clang and lld, were not found, or make WASM=no), "
 "so the page cannot run the stages itself.</p>\n</section>\n";
 
+static const char matrix_camera[] =
+"<section id=\"live\" data-wasm=\"no\"><h2>recompute</h2>\n"
+"<p id=\"livenote\">No sliders on this page: they rerun the classic camera's stages, "
+"and this scene has the matrix camera (camera lookat).</p>\n</section>\n";
+
 static const char section[] =
 "<section id=\"live\" data-wasm=\"yes\"><h2>recompute</h2>\n"
 "<div id=\"sliders\"></div>\n"
@@ -212,6 +217,7 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
     int st, c;
 
     pt_sbuf_add(sb, style);
+    if (s->matrix) { pt_sbuf_add(sb, matrix_camera); return; }
     if (!pt_journey_wasm_b64[0]) { pt_sbuf_add(sb, without); return; }
     pt_sbuf_add(sb, section);
     pt_sbuf_add(sb, "<script type=\"application/json\" id=\"wasmdata\">\n{\"wasm\":\"");
