@@ -16,7 +16,9 @@
 
 /* Run v_m through the model record and the six stages with par; stage st
 ** reports to sinks[st] (NULL: not reported).  Sets *z_c (for "behind")
-** and returns the pixel-plane point, which the rasterizer uses.  Requires
+** and returns the pixel-plane point, which the rasterizer uses.  When none of
+** the viewport, framebuffer and index stages reports (all three sinks NULL),
+** they are not run: their values would go nowhere.  Requires
 ** par->w, h, W, H >= 1.  This function can't fail. */
 pt_vec2 pt_classic_journey(const pt_stage_params *par, pt_vec3 v_m,
                            const pt_sink *const sinks[PT_NSTAGES_ALL], double *z_c);

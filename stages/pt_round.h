@@ -16,6 +16,7 @@
 #ifndef PT_ROUND_H
 #define PT_ROUND_H
 
+#include <math.h>
 #include <stdint.h>
 #include "pt_stage.h"
 
@@ -31,20 +32,23 @@ double pt_java_round(double x);
 ** *out = 0) when x is not finite or |round(x)| >= PT_PIX_LIMIT.  This function
 ** can't fail.
 **
-** It is pt_java_round() for |x| < 2^62, in integers, inline because it runs
-** for every pixel the rasterizer draws: the cast truncates toward zero
-** exactly, and every double of that size holds its integer part, so (double)i
-** is exact; x - floor(x) is exact as pt_round.c shows.  From 2^53 on, x is an
-** integer and neither correction applies, so the result stays below 2^62.
-** tests/test_stages.c compares it with pt_java_round(). */
+** It is pt_java_round() for |x| < 2^62, in integers, inline and without a
+** branch that depends on the digits, because it runs for every step the
+** rasterizer takes: the cast truncates toward zero exactly, and the fraction
+** f = x - trunc(x) is exact too (for |x| >= 1, trunc(x) and x lie within a
+** factor of 2 (Sterbenz); below, trunc(x) = 0; from 2^52 on, f = 0).  Then f
+** in (-1, 1) says which way to the nearest: up when f >= 0.5, down when
+** f < -0.5 (a tie, f = -0.5, goes up, to trunc(x)).  tests/test_stages.c
+** compares it with pt_java_round(). */
 static inline int pt_pix_round(double x, int64_t *out)
 {
     int64_t i;
+    double f;
 
-    if (!(x < PT_PIX_LIMIT && x > -PT_PIX_LIMIT)) { *out = 0; return 0; }  /* NaN too */
+    if (!(fabs(x) < PT_PIX_LIMIT)) { *out = 0; return 0; }  /* NaN too */
     i = (int64_t)x;                         /* toward zero */
-    if ((double)i > x) i--;                 /* floor(x) */
-    if (x - (double)i >= 0.5) i++;          /* ties go up: toward +infinity */
+    f = x - (double)i;                      /* the fraction, exact */
+    i += (f >= 0.5) - (f < -0.5);           /* ties go up: toward +infinity */
     *out = i;
     return 1;
 }

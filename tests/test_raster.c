@@ -7,6 +7,7 @@
 #include <string.h>
 #include "testhelp.h"
 #include "core/raster.h"
+#include "core/pipeline.h"
 #include "stages/s4_pixel2viewport.h"
 
 /* ===== a collecting raster sink ===== */
@@ -236,11 +237,81 @@ static void test_long_segment(void)
     PT_CHECK("raster-4.3 the segment does cross the viewport", a.pixels > 0);
 }
 
+/* ===== whole scenes: drawn in turn or after every vertex ===== */
+
+static void no_record(void *ud, const pt_vrec *r) { (void)ud; (void)r; }
+static void no_summary(void *ud, const pt_summary *sum) { (void)ud; (void)sum; }
+static void no_pixel(void *ud, const pt_model *m, uint64_t seg, int64_t x_fb, int64_t y_fb,
+                     int64_t idx)
+{
+    (void)ud; (void)m; (void)seg; (void)x_fb; (void)y_fb; (void)idx;
+}
+
+/* Run scene s with listener l into a fresh framebuffer; 0 when it ran. */
+static int run_into(const pt_scene *s, const pt_listener *l, pt_fb *fb, pt_summary *sum)
+{
+    pt_options o;
+    pt_plan p;
+    int rc;
+
+    pt_options_default(&o);
+    if (pt_plan_make(&p, s, &o) != 0) return -1;
+    if (pt_fb_init(fb, s->fb_w, s->fb_h, s->background) != 0) { pt_plan_free(&p); return -1; }
+    rc = pt_run(s, &p, &o, l, fb, sum);
+    pt_plan_free(&p);
+    return rc;
+}
+
+/* pt_run draws each model right after its vertices when nobody listens to
+** the vertices (in turn), else after all of them: the same image and summary,
+** drawn by pt_raster_draw or, with a pixel listener, pt_raster_segment. */
+static void test_in_turn(void)
+{
+    static const char *const scenes[] = {
+        "docs/examples/builtin.scene", "docs/examples/two-models.scene",
+        "docs/examples/clip.scene", "docs/examples/behind.scene",
+        "docs/examples/lookat-cube.scene", "docs/examples/lookat-near.scene",
+        "docs/examples/lookat-world.scene", "docs/examples/ortho.scene",
+        "docs/examples/selfcheck.scene", "docs/examples/compare-matrix.scene"};
+    int k, loaded = 1, same_image = 1, same_sum = 1, drew = 1;
+
+    for (k = 0; k < (int)(sizeof scenes / sizeof *scenes); k++) {
+        pt_listener l[3];
+        pt_summary sum[3];
+        pt_fb fb[3];
+        pt_scene s;
+        char err[PT_ERRLEN];
+        int i;
+
+        if (pt_scene_load(&s, scenes[k], err, sizeof err) != 0) { loaded = 0; continue; }
+        memset(l, 0, sizeof l);
+        for (i = 0; i < 3; i++) l[i].summary = no_summary;  /* warnings counted */
+        l[1].sink.vertex = no_record;                        /* vertices first */
+        l[2].sink.vertex = no_record;
+        l[2].pixel = no_pixel;                               /* through on_pixel */
+        for (i = 0; i < 3; i++) {
+            if (run_into(&s, &l[i], &fb[i], &sum[i]) != 0) { loaded = 0; break; }
+            if (i == 0) continue;
+            if (memcmp(fb[0].rgb, fb[i].rgb, 3 * (size_t)s.fb_w * s.fb_h) != 0)
+                same_image = 0;
+            if (memcmp(&sum[0], &sum[i], sizeof sum[0]) != 0) same_sum = 0;
+        }
+        if (i == 3 && sum[0].pixels == 0) drew = 0;
+        while (i-- > 0) pt_fb_free(&fb[i]);
+        pt_scene_free(&s);
+    }
+    PT_CHECK("raster-5.1 the example scenes load and run", loaded);
+    PT_CHECK("raster-5.2 each draws pixels", drew);
+    PT_CHECK("raster-5.3 drawn in turn or after every vertex: the same image", same_image);
+    PT_CHECK("raster-5.4 ... and the same summary", same_sum);
+}
+
 int main(void)
 {
     test_pictures();
     test_symmetry();
     test_advance();
     test_long_segment();
+    test_in_turn();
     return pt_test_report();
 }

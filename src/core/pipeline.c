@@ -412,93 +412,127 @@ static int matrix_segment(const pt_scene *s, const pt_plan *p, size_t k, uint64_
     return 1;
 }
 
+/* What drawing needs, the same for every model: the raster callbacks and
+** their context, and the image the untraced classic render draws into. */
+typedef struct drawing {
+    pt_raster_out out;           /* on_pixel, on_clip, &rc */
+    pt_raster_vp to_vp;          /* the camera's viewport stage */
+    raster_ctx rc;
+    pt_raster_image im;          /* draw: the classic camera's pixels, untraced */
+} drawing;
+
+static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *sum)
+{
+    d->out.pixel = on_pixel;
+    d->out.clip = on_clip;
+    d->out.ud = &d->rc;
+    d->to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
+    d->rc.s = s; d->rc.fb = fb; d->rc.sum = sum;
+    d->rc.npix = (int64_t)s->fb_w * s->fb_h;
+    d->rc.x_ul = s->vp_x; d->rc.y_ul = s->vp_y; d->rc.W = s->fb_w; d->rc.H = s->fb_h;
+    d->im.fb = fb; d->im.x_ul = s->vp_x; d->im.y_ul = s->vp_y; d->im.pixels = 0;
+    sum->rasterized = 1;
+}
+
+/* Draw the segments of model k, whose vertices' pixel-plane points are pp[]
+** (and clip coordinates cl[], matrix camera). */
+static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt_options *o,
+                       const pt_listener *l, size_t k, const model_sinks *ms, filing *fl,
+                       pt_summary *sum, const pt_vec2 *pp, const vtx_clip *cl)
+{
+    const pt_model *m = &s->models[k];
+    int traced = p->models[k].selected && !o->vertex;  /* its clip vertices */
+    int report = o->trace_raster && traced;             /* its raster records */
+    int draw;
+    size_t j;
+
+    d->rc.m = m;
+    d->rc.l = report ? l : NULL;
+    draw = !s->matrix && d->im.fb && !(d->rc.l && d->rc.l->pixel);
+    d->im.color = m->color;
+    for (j = 0; j < m->nseg; j++) {
+        pt_vec2 a = pp[m->seg[j].a], b = pp[m->seg[j].b];
+        int r;
+
+        d->rc.seg = j + 1;
+        if (s->matrix && !matrix_segment(s, p, k, j + 1, &cl[m->seg[j].a], &cl[m->seg[j].b],
+                                         traced ? l : NULL, ms, fl, sum, &a, &b)) {
+            sum->segments_culled++;
+            if (report && l->skip) l->skip(l->ud, m, j + 1, 0, "outside the view volume");
+            continue;
+        }
+        if (draw)                           /* nobody listens to the pixels */
+            r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &d->im, &d->out);
+        else
+            r = pt_raster_segment(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out);
+        if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
+        if (r == PT_RASTER_SKIPPED) {
+            sum->segments_skipped++;
+            if (report && l->skip) skip_report(l, m, j + 1, a, b);
+        }
+    }
+}
+
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
            const pt_listener *l, pt_fb *fb, pt_summary *sum)
 {
-    size_t k, j;
+    size_t k, n, maxnv = 1;
     pt_vec2 **pps;               /* pps[k][v]: vertex v's pixel-plane point */
     vtx_clip **cls;              /* cls[k][v]: its clip coordinates (matrix) */
     model_sinks *ms;             /* ms[k]: model k's sinks */
     filing fl;                   /* a traced point's journey (l->journey) */
-    int status = 0;
+    drawing d;
+    int status = 0, raster, in_turn;
 
+    /* Rasterize for an image, for a listener of pixel, clip, skip or summary
+    ** records, or for the matrix camera's points clipping makes; else nobody
+    ** listens (a CSV trace has no raster rows): skip it.  When nobody listens
+    ** to the vertices either, each model is drawn right after its vertices
+    ** ran ("in turn"), from one buffer the size of the largest model, which
+    ** stays in the cache: the records that remain (pixels, clip runs, skips)
+    ** come in the same order as when every model's vertices run first. */
+    raster = o->rasterize && (fb || l->pixel || l->clip || l->skip || l->summary || s->matrix);
+    in_turn = raster && !l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin &&
+              !l->journey;
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
-    pps = calloc(s->nmodels ? s->nmodels : 1, sizeof *pps);
-    cls = calloc(s->nmodels ? s->nmodels : 1, sizeof *cls);
-    ms = malloc((s->nmodels ? s->nmodels : 1) * sizeof *ms);
+    n = s->nmodels ? s->nmodels : 1;
+    pps = calloc(n, sizeof *pps);
+    cls = calloc(n, sizeof *cls);
+    ms = malloc(n * sizeof *ms);
     if (!pps || !cls || !ms) { free(pps); free(cls); free(ms); return -1; }
+    if (in_turn) {
+        for (k = 0; k < s->nmodels; k++) if (s->models[k].nv > maxnv) maxnv = s->models[k].nv;
+        pps[0] = malloc(maxnv * sizeof **pps);
+        if (s->matrix) cls[0] = malloc(maxnv * sizeof **cls);
+        if (!pps[0] || (s->matrix && !cls[0])) { status = -1; goto done; }
+    }
     if (l->header) l->header(l->ud, s, p);
+    if (raster) drawing_start(&d, s, fb, sum);
 
     for (k = 0; k < s->nmodels; k++) {      /* run the stages */
         const pt_model *m = &s->models[k];
+        size_t b = in_turn ? 0 : k;         /* the buffers of model k */
 
         sum->vertices += m->nv;
         sum->segments += m->nseg;
         sum->vertices_unused += m->nv - p->models[k].nused;
         sinks_init(&ms[k], &p->models[k], l, sum);
-        if (o->rasterize) {
+        if (o->rasterize && !in_turn) {
             pps[k] = malloc((m->nv ? m->nv : 1) * sizeof **pps);
             if (s->matrix) cls[k] = malloc((m->nv ? m->nv : 1) * sizeof **cls);
             if (!pps[k] || (s->matrix && !cls[k])) { status = -1; goto done; }
         }
-        run_model(s, p, o, l, k, &ms[k], pps[k], cls[k], &fl, sum);
+        run_model(s, p, o, l, k, &ms[k], pps[b], cls[b], &fl, sum);
+        if (in_turn) draw_model(&d, s, p, o, l, k, &ms[k], &fl, sum, pps[0], cls[0]);
     }
-
-    /* Rasterize for an image, for a listener of pixel, clip, skip or summary
-    ** records, or for the matrix camera's points clipping makes; else nobody
-    ** listens (a CSV trace has no raster rows): skip it. */
-    if (o->rasterize && (fb || l->pixel || l->clip || l->skip || l->summary || s->matrix)) {
-        pt_raster_out out = {on_pixel, on_clip, NULL};
-        pt_raster_vp to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
-        raster_ctx rc;
-        pt_raster_image im;          /* draw: the classic camera's pixels, untraced */
-        int draw;
-
-        sum->rasterized = 1;
-        rc.s = s; rc.fb = fb; rc.sum = sum;
-        rc.npix = (int64_t)s->fb_w * s->fb_h;
-        rc.x_ul = s->vp_x; rc.y_ul = s->vp_y; rc.W = s->fb_w; rc.H = s->fb_h;
-        out.ud = &rc;
-        im.fb = fb; im.x_ul = s->vp_x; im.y_ul = s->vp_y; im.pixels = 0;
-        for (k = 0; k < s->nmodels; k++) {
-            const pt_model *m = &s->models[k];
-            int traced = p->models[k].selected && !o->vertex;  /* its clip vertices */
-            int report = o->trace_raster && traced;             /* its raster records */
-
-            rc.m = m;
-            rc.l = report ? l : NULL;
-            draw = !s->matrix && fb && !(rc.l && rc.l->pixel);
-            im.color = m->color;
-            for (j = 0; j < m->nseg; j++) {
-                pt_vec2 a = pps[k][m->seg[j].a], b = pps[k][m->seg[j].b];
-                int r;
-
-                rc.seg = j + 1;
-                if (s->matrix && !matrix_segment(s, p, k, j + 1, &cls[k][m->seg[j].a],
-                                                 &cls[k][m->seg[j].b], traced ? l : NULL,
-                                                 &ms[k], &fl, sum, &a, &b)) {
-                    sum->segments_culled++;
-                    if (report && l->skip)
-                        l->skip(l->ud, m, j + 1, 0, "outside the view volume");
-                    continue;
-                }
-                if (draw)                   /* nobody listens to the pixels */
-                    r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &im, &out);
-                else
-                    r = pt_raster_segment(a, b, s->vp_w, s->vp_h, to_vp, &out);
-                if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
-                if (r == PT_RASTER_SKIPPED) {
-                    sum->segments_skipped++;
-                    if (report && l->skip) skip_report(l, m, j + 1, a, b);
-                }
-            }
-        }
-        sum->pixels += im.pixels;           /* those drawn without on_pixel */
-    }
+    if (raster && !in_turn)                 /* every model's vertices ran: draw */
+        for (k = 0; k < s->nmodels; k++)
+            draw_model(&d, s, p, o, l, k, &ms[k], &fl, sum, pps[k], cls[k]);
+    if (raster) sum->pixels += d.im.pixels; /* those drawn without on_pixel */
     if (l->summary) l->summary(l->ud, sum);
 done:
-    for (k = 0; k < s->nmodels; k++) { free(pps[k]); free(cls[k]); }
+    for (k = 0; k < n; k++) { free(pps[k]); free(cls[k]); }
     free(pps);
     free(cls);
     free(ms);

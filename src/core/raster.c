@@ -89,8 +89,10 @@ static void run_add(clip_run *run, uint64_t n, pt_pix first, pt_pix last)
 
 static void run_flush(clip_run *run, const pt_raster_out *out)
 {
-    if (run->count) out->clip(out->ud, run->count, run->first, run->last);
-    run->count = 0;
+    if (run->count) {
+        out->clip(out->ud, run->count, run->first, run->last);
+        run->count = 0;
+    }
 }
 
 /* Where a pixel inside goes: out->pixel (pt_raster_segment), or straight
@@ -100,20 +102,73 @@ typedef void pixel_fn(void *ud, int64_t x_vp, int64_t y_vp);
 /* The segment being stepped: s is the stepped coordinate (x, or y when
 ** transposed), acc the other one, accumulated. */
 typedef struct dda {
-    int transposed;              /* 1: |slope| > 1, s is y */
     int w, h;                    /* the viewport */
     pt_raster_vp to_vp;          /* pixel plane -> viewport pixel */
+    pixel_fn *pixel;             /* where a pixel inside goes, */
+    void *pixel_ud;              /* with this */
+    const pt_raster_out *out;    /* where runs of clipped steps go */
 } dda;
 
 /* The viewport pixel of step (s, acc): the point (s, acc), or (acc, s) when
 ** transposed, through the viewport stage. */
-static inline ALWAYS_INLINE pt_pix step_pixel(const dda *d, int64_t s, double acc)
+static inline ALWAYS_INLINE pt_pix step_pixel(const dda *d, int transposed, int64_t s,
+                                              double acc)
 {
     pt_vec2 p;
 
-    if (d->transposed) { p.x = acc; p.y = (double)s; }
-    else               { p.x = (double)s; p.y = acc; }
+    if (transposed) { p.x = acc; p.y = (double)s; }
+    else            { p.x = (double)s; p.y = acc; }
     return d->to_vp(p, d->w, d->h, NULL);
+}
+
+/* Step s from s0 to s1 with acc from acc0, acc += m: the steps in the band
+** through the viewport stage, the others clipped and skipped.  Inline with
+** transposed a constant, so that each of the two loops knows which
+** coordinate it steps. */
+static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int64_t s0, int64_t s1,
+                                      double acc0, double m)
+{
+    int64_t s = s0, band_lo, band_hi, margin, end;
+    double acc = acc0;
+    clip_run run = {0, {0, 0, 0}, {0, 0, 0}};
+    pt_pix p;
+
+    /* The steps the viewport stage is asked about: 1 <= s <= w (or h), where
+    ** x_vp = s - 1 lies inside, widened by a margin of max(w, h) on each side
+    ** for a student's stage that moves pixels (docs/teaching.md).  Steps
+    ** beyond are clipped without asking, and skipped by the exact
+    ** fast-forward: drawing costs time in proportion to the band. */
+    margin = d->w > d->h ? d->w : d->h;
+    band_lo = 1 - margin;
+    band_hi = (transposed ? d->h : d->w) + margin;
+
+    if (s < band_lo) {                              /* before the band: skip */
+        int64_t last = s1 < band_lo - 1 ? s1 : band_lo - 1;
+        uint64_t n = (uint64_t)(last - s) + 1;
+        double acc_last = pt_raster_advance(acc, m, n - 1);
+        run_add(&run, n, step_pixel(d, transposed, s, acc),
+                step_pixel(d, transposed, last, acc_last));
+        acc = acc_last + m;
+        s = last + 1;
+    }
+    end = s1 < band_hi ? s1 : band_hi;
+    for (; s <= end; s++) {                         /* inside the band: step */
+        p = step_pixel(d, transposed, s, acc);
+        if (p.ok && pt_inside(p.x, p.y, d->w, d->h)) {
+            run_flush(&run, d->out);
+            d->pixel(d->pixel_ud, p.x, p.y);
+        } else {
+            run_add(&run, 1, p, p);
+        }
+        acc += m;                                   /* y += m */
+    }
+    if (s <= s1) {                                  /* after the band: skip */
+        uint64_t n = (uint64_t)(s1 - s) + 1;
+        double acc_last = pt_raster_advance(acc, m, n - 1);
+        run_add(&run, n, step_pixel(d, transposed, s, acc),
+                step_pixel(d, transposed, s1, acc_last));
+    }
+    run_flush(&run, d->out);
 }
 
 /* The DDA, once for both entry points below: inline in each, so that where
@@ -124,9 +179,9 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
                                         pt_raster_vp to_vp, pixel_fn *pixel,
                                         void *pixel_ud, const pt_raster_out *out)
 {
-    int64_t ix0, iy0, ix1, iy1, s, s0, s1, band_lo, band_hi, margin;
-    double x0, y0, x1, y1, m, acc;
-    clip_run run = {0, {0, 0, 0}, {0, 0, 0}};
+    int64_t ix0, iy0, ix1, iy1;
+    double x0, y0, x1, y1, m;
+    int transposed;
     dda d;
     pt_pix p;
 
@@ -135,16 +190,17 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
         return PT_RASTER_SKIPPED;
     x0 = (double)ix0; y0 = (double)iy0;             /* the rounded endpoints */
     x1 = (double)ix1; y1 = (double)iy1;
-    d.w = w; d.h = h; d.to_vp = to_vp; d.transposed = 0;
+    d.w = w; d.h = h; d.to_vp = to_vp;
+    d.pixel = pixel; d.pixel_ud = pixel_ud; d.out = out;
 
     if (x0 == x1 && y0 == y1) {                     /* degenerate: one pixel */
-        p = step_pixel(&d, ix0, y0);
+        p = step_pixel(&d, 0, ix0, y0);
         if (p.ok && pt_inside(p.x, p.y, w, h)) pixel(pixel_ud, p.x, p.y);
         else out->clip(out->ud, 1, p, p);
         return PT_RASTER_DEGENERATE;
     }
-    d.transposed = fabs(y1 - y0) > fabs(x1 - x0);   /* |slope| > 1: step in y */
-    if (d.transposed) {
+    transposed = fabs(y1 - y0) > fabs(x1 - x0);     /* |slope| > 1: step in y */
+    if (transposed) {
         double t;
         t = x0; x0 = y0; y0 = t;
         t = x1; x1 = y1; y1 = t;
@@ -155,43 +211,8 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
         t = y0; y0 = y1; y1 = t;
     }
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
-    s0 = (int64_t)x0;
-    s1 = (int64_t)x1;
-    /* The steps the viewport stage is asked about: 1 <= s <= w (or h), where
-    ** x_vp = s - 1 lies inside, widened by a margin of max(w, h) on each side
-    ** for a student's stage that moves pixels (docs/teaching.md).  Steps
-    ** beyond are clipped without asking, and skipped by the exact
-    ** fast-forward: drawing costs time in proportion to the band. */
-    margin = w > h ? w : h;
-    band_lo = 1 - margin;
-    band_hi = (d.transposed ? h : w) + margin;
-
-    acc = y0;
-    s = s0;
-    if (s < band_lo) {                              /* before the band: skip */
-        int64_t last = s1 < band_lo - 1 ? s1 : band_lo - 1;
-        uint64_t n = (uint64_t)(last - s) + 1;
-        double acc_last = pt_raster_advance(acc, m, n - 1);
-        run_add(&run, n, step_pixel(&d, s, acc), step_pixel(&d, last, acc_last));
-        acc = acc_last + m;
-        s = last + 1;
-    }
-    for (; s <= s1 && s <= band_hi; s++) {          /* inside the band: step */
-        p = step_pixel(&d, s, acc);
-        if (p.ok && pt_inside(p.x, p.y, w, h)) {
-            run_flush(&run, out);
-            pixel(pixel_ud, p.x, p.y);
-        } else {
-            run_add(&run, 1, p, p);
-        }
-        acc += m;                                   /* y += m */
-    }
-    if (s <= s1) {                                  /* after the band: skip */
-        uint64_t n = (uint64_t)(s1 - s) + 1;
-        double acc_last = pt_raster_advance(acc, m, n - 1);
-        run_add(&run, n, step_pixel(&d, s, acc), step_pixel(&d, s1, acc_last));
-    }
-    run_flush(&run, out);
+    if (transposed) walk(&d, 1, (int64_t)x0, (int64_t)x1, y0, m);
+    else            walk(&d, 0, (int64_t)x0, (int64_t)x1, y0, m);
     return PT_RASTER_DRAWN;
 }
 
@@ -201,22 +222,46 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
     return segment(p0, p1, w, h, to_vp, out->pixel, out->ud, out);
 }
 
+/* What pt_raster_draw() draws with: a copy of the pt_raster_image in its own
+** frame.  The framebuffer's bytes are chars, which may alias anything the
+** compiler cannot see is local: from the caller's struct, the pixel count,
+** the color and the framebuffer's size would be loaded and stored again
+** around every pixel. */
+typedef struct draw_ctx {
+    pt_fb fb;                    /* im->fb's size and pixels */
+    int x_ul, y_ul;              /* the viewport's corner */
+    int64_t npix;                /* W * H: the pixel array's length */
+    unsigned char color[3];
+    uint64_t pixels;             /* pixels drawn */
+} draw_ctx;
+
 /* A pixel inside the viewport through the framebuffer and index stages into
 ** the image; one the stages put outside the pixel array is left out (a
 ** student's stage can: Java would throw). */
-static void draw_pixel(void *ud, int64_t x_vp, int64_t y_vp)
+static inline ALWAYS_INLINE void draw_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
-    pt_raster_image *im = ud;
+    draw_ctx *c = ud;
     pt_pix vp = {x_vp, y_vp, 1};
-    pt_pix f = pt_viewport2fb(vp, im->x_ul, im->y_ul, NULL);
-    int64_t idx = pt_fb2index(f, im->fb->w, im->fb->h, NULL);
+    pt_pix f = pt_viewport2fb(vp, c->x_ul, c->y_ul, NULL);
+    int64_t idx = pt_fb2index(f, c->fb.w, c->fb.h, NULL);
 
-    im->pixels++;
-    if (idx >= 0 && idx < (int64_t)im->fb->w * im->fb->h) pt_fb_set(im->fb, idx, im->color);
+    c->pixels++;
+    if (idx >= 0 && idx < c->npix) pt_fb_set(&c->fb, idx, c->color);
 }
 
 FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image *im,
                            const pt_raster_out *out)
 {
-    return segment(p0, p1, w, h, pt_pixel2viewport, draw_pixel, im, out);
+    draw_ctx c;
+    int r;
+
+    c.fb = *im->fb;
+    c.x_ul = im->x_ul;
+    c.y_ul = im->y_ul;
+    c.npix = (int64_t)c.fb.w * c.fb.h;
+    c.color[0] = im->color[0]; c.color[1] = im->color[1]; c.color[2] = im->color[2];
+    c.pixels = 0;
+    r = segment(p0, p1, w, h, pt_pixel2viewport, draw_pixel, &c, out);
+    im->pixels += c.pixels;
+    return r;
 }

@@ -289,7 +289,10 @@ static void shortest(double x, uint64_t *d, int *e)
         else *d = s + (s & 1);              /* a tie: the even one */
     }
     *e = k;
-    while (*d % 10 == 0) { *d /= 10; ++*e; }
+    while (*d % 100000000 == 0) { *d /= 100000000; *e += 8; }  /* the trailing */
+    if (*d % 10000 == 0) { *d /= 10000; *e += 4; }             /* zeros, fewest */
+    if (*d % 100 == 0) { *d /= 100; *e += 2; }                 /* divisions */
+    if (*d % 10 == 0) { *d /= 10; ++*e; }
 }
 
 /* ===== spelling ===== */
@@ -316,6 +319,12 @@ static size_t int_digits(char *buf, double x)
     return n;
 }
 
+/* "00" "01" ... "99": the digits of 0..99, two by two. */
+static const char digit_pairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
 /* Spell [-]d * 10^e (d > 0, not a multiple of 10) the way "%.*g" does with
 ** precision P = max(15, digits of d); see the top of the file. */
 static size_t g_style(char *buf, int neg, uint64_t d, int e)
@@ -323,7 +332,12 @@ static size_t g_style(char *buf, int neg, uint64_t d, int e)
     char dig[20], *o = buf;
     int n = 20, exp10, i;
 
-    do { dig[--n] = (char)('0' + d % 10); d /= 10; } while (d);
+    for (; d >= 100; d /= 100) {            /* two digits a division */
+        n -= 2;
+        memcpy(dig + n, digit_pairs + 2 * (d % 100), 2);
+    }
+    if (d >= 10) { n -= 2; memcpy(dig + n, digit_pairs + 2 * d, 2); }
+    else dig[--n] = (char)('0' + d);
     memmove(dig, dig + n, (size_t)(20 - n));
     n = 20 - n;                             /* the digits: dig[0..n) */
     exp10 = e + n - 1;                      /* x = d.ddd 10^exp10 */
