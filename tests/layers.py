@@ -19,18 +19,8 @@ import re
 import sys
 
 root = sys.argv[1] if len(sys.argv) > 1 else "."
-passed = failed = 0
-
-
-def check(descr, ok, detail=""):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL " + descr)
-        if detail:
-            print("  " + detail)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish  # noqa: E402
 
 
 def sources(top):
@@ -161,5 +151,4 @@ missing = [f for f in folders if f not in text]
 check("layers-4.1 docs/architecture.md names every folder of src/ and stages/",
       text and not missing, "missing: " + ", ".join(missing))
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()
