@@ -28,6 +28,7 @@
 #                                    Adler-32) to the PPM's pixels
 #   color FILE.png RRGGBB            the PNG holds a pixel of that color
 import html
+import os
 import json
 import re
 import struct
@@ -42,22 +43,8 @@ MATRIX = ["model", "world", "view", "clip", "cvv", "ndc", "screen", "viewport", 
 KEYS = {"index": ["i"], "cvv": ["code"], "pixel": ["x", "y"], "viewport": ["x", "y"],
         "framebuffer": ["x", "y"], "world": ["x", "y", "z", "w"], "view": ["x", "y", "z", "w"],
         "clip": ["x", "y", "z", "w"]}          # the rest: x, y, z
-passed = 0
-failed = 0
-
-
-def check(descr, cond, detail=""):
-    global passed, failed
-    if cond:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL %s%s" % (descr, (": " + detail) if detail else ""))
-
-
-def report():
-    print("%d passed, %d failed" % (passed, failed))
-    sys.exit(1 if failed else 0)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, finish as report  # noqa: E402
 
 
 def jsonl(exe, scene):
