@@ -191,6 +191,14 @@ check "out-10.7 both readers read a half-null pixel back" test "$rc" = 0
 sed 's/"y":7,/"y":8,/' "$tmp/half.jsonl" > "$tmp/half8.jsonl"
 run diff "$tmp/half.trace" "$tmp/half8.jsonl"
 check "out-10.8 ... and its value counts (y_vp 7 against 8 differs)" test "$rc" = 1
+# a student's missing y flip on that vertex: y_vp = round(y_pp) - 1 = 22, y_fb = 25;
+# diff recomputes null per value too (x_vp stays none, y_vp has its value)
+sed 's/"x":null,"y":7,"inside"/"x":null,"y":22,"inside"/; s/"x":null,"y":10}/"x":null,"y":25}/' \
+    "$tmp/half.jsonl" > "$tmp/flip.jsonl"
+run diff "$tmp/half.jsonl" "$tmp/flip.jsonl"
+check "out-10.9 diff names the missing y flip on a half-null pixel: x_vp = none, y_vp = 22" \
+    test "$rc" = 1 -a -n "$(echo "$out" | grep -x '  explains all: missing y flip (viewport stage), which reproduces the 1')" \
+    -a -n "$(echo "$out" | tr '\n' ' ' | grep 'gives x_vp = none, y_vp = *22, as ACTUAL has')"
 
 # ---- smaller: the reason a trace cannot be written; '-' as the scene
 run "$tri" --trace /dev/full

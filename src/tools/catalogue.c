@@ -14,7 +14,7 @@ void pt_cat_val_of(pt_cat_val *v, const pt_vrec *r)
 {
     memset(v, 0, sizeof *v);
     v->d[0] = r->x; v->d[1] = r->y; v->d[2] = r->z;
-    v->null = (r->flags & PT_REC_NULL) != 0;
+    v->flags = r->flags & (PT_REC_NULL | PT_REC_HAS_X | PT_REC_HAS_Y);
     if (r->stage == PT_STAGE_INDEX) v->n[0] = r->i;
     else { v->n[0] = r->ix; v->n[1] = r->iy; }
 }
@@ -29,16 +29,29 @@ static double trunc_half(double x) { return trunc(x + 0.5); }   /* (int64_t)(x +
 
 /* The viewport stage with rounding rnd (NULL: Java's Math.round), x_vp =
 ** round(x_pp) + dx and y_vp = sy * round(y_pp) + oy (the right formula: dx =
-** -1, sy = -1, oy = h).  No value where pt_pix_round() finds none. */
+** -1, sy = -1, oy = h).  No value where pt_pix_round() finds none, per value
+** (pt_pix_mark(), as the stage). */
 static void viewport_with(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy,
                           const pt_cat_val *in, pt_cat_val *out)
 {
     int64_t rx, ry;
     double x = rnd ? rnd(in->d[0]) : in->d[0], y = rnd ? rnd(in->d[1]) : in->d[1];
+    int has = pt_pix_round(x, &rx) | pt_pix_round(y, &ry) << 1;
+    pt_pix p = {rx + dx, sy * ry + oy, 0};
 
-    out->null = !(pt_pix_round(x, &rx) && pt_pix_round(y, &ry));
-    out->n[0] = out->null ? 0 : rx + dx;
-    out->n[1] = out->null ? 0 : sy * ry + oy;
+    p = pt_pix_mark(p, has);
+    out->flags = pt_pix_flags(p);
+    out->n[0] = pt_pix_has(p, 0) ? p.x : 0;
+    out->n[1] = pt_pix_has(p, 1) ? p.y : 0;
+}
+
+/* The framebuffer stage with corner (x_ul, y_ul): each value that has one is
+** offset, the others stay without (s5). */
+static void framebuffer_with(int64_t x_ul, int64_t y_ul, const pt_cat_val *in, pt_cat_val *out)
+{
+    out->flags = in->flags;
+    out->n[0] = pt_cat_has(in, 0) ? x_ul + in->n[0] : 0;
+    out->n[1] = pt_cat_has(in, 1) ? y_ul + in->n[1] : 0;
 }
 
 /* The index stage with idx = y * mul_y + x * mul_x, no value outside W x H. */
@@ -47,8 +60,10 @@ static void index_with(const pt_stage_params *par, int64_t mul_x, int64_t mul_y,
 {
     int64_t x = in->n[0], y = in->n[1];
 
-    out->null = in->null || !pt_inside(x, y, par->W, par->H);
-    out->n[0] = out->null ? 0 : y * mul_y + x * mul_x;
+    int none = in->flags != 0 || !pt_inside(x, y, par->W, par->H);
+
+    out->flags = none ? PT_REC_NULL : 0;
+    out->n[0] = none ? 0 : y * mul_y + x * mul_x;
 }
 
 /* ===== the right formulas ===== */
@@ -82,9 +97,7 @@ int pt_cat_right(int st, const pt_stage_params *par, const pt_cat_val *in, pt_ca
         viewport_with(NULL, -1, -1, par->h, in, out);
         return 1;
     case PT_STAGE_FRAMEBUFFER:              /* x_fb = x_ul + x_vp */
-        out->null = in->null;
-        out->n[0] = in->null ? 0 : par->x_ul + in->n[0];
-        out->n[1] = in->null ? 0 : par->y_ul + in->n[1];
+        framebuffer_with(par->x_ul, par->y_ul, in, out);
         return 1;
     case PT_STAGE_INDEX:                    /* idx = y_fb * W + x_fb */
         index_with(par, 1, par->W, in, out);
@@ -103,9 +116,10 @@ unsigned pt_cat_differ(int st, const pt_cat_val *a, const pt_cat_val *b)
     for (k = 0; k < in->nreal; k++)
         if (memcmp(&a->d[k], &b->d[k], sizeof a->d[k]) != 0 &&
             !(isnan(a->d[k]) && isnan(b->d[k]))) m |= 1u << k;
-    if (in->nint && a->null != b->null) return (1u << in->nint) - 1;
-    for (k = 0; k < in->nint && !a->null; k++)
-        if (a->n[k] != b->n[k]) m |= 1u << k;
+    for (k = 0; k < in->nint; k++) {
+        int has = pt_cat_has(a, k);
+        if (has != pt_cat_has(b, k) || (has && a->n[k] != b->n[k])) m |= 1u << k;
+    }
     return m;
 }
 
@@ -186,9 +200,7 @@ static void mk_nominus1(const pt_stage_params *par, const pt_cat_val *in, pt_cat
 static void mk_nooffset(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
 {
     (void)par;
-    out->null = in->null;
-    out->n[0] = in->null ? 0 : in->n[0];    /* x_fb = x_vp */
-    out->n[1] = in->null ? 0 : in->n[1];
+    framebuffer_with(0, 0, in, out);        /* x_fb = x_vp */
 }
 
 static void mk_xh(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
@@ -259,8 +271,8 @@ static pt_pix viewport_rounding(rnd_fn rnd, pt_vec2 pp, int h)
     viewport_with(rnd, -1, -1, h, &in, &out);
     vp.x = out.n[0];
     vp.y = out.n[1];
-    vp.ok = !out.null;
-    return vp;
+    vp.ok = 0;
+    return pt_pix_mark(vp, pt_cat_has(&out, 0) | pt_cat_has(&out, 1) << 1);
 }
 
 pt_pix pt_cat_vp_floor(pt_vec2 pp, int w, int h, const pt_sink *sink)

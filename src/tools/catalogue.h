@@ -30,12 +30,17 @@
 
 /* One stage's values, as a trace holds them.  A real stage (camera, image,
 ** pixel) uses d[0..2] (x, y, z); the viewport and framebuffer n[0..1] (x, y);
-** the index n[0].  null: an integer stage without value (PT_REC_NULL). */
+** the index n[0].  flags: which integer values have one, as a record says it
+** (0, or PT_REC_NULL with PT_REC_HAS_X/Y: null per value); ask pt_cat_has(). */
 typedef struct pt_cat_val {
-    int null;                    /* integer stage: no value */
+    unsigned flags;              /* integer stage: PT_REC_NULL, PT_REC_HAS_X/Y */
     double d[3];                 /* real stages: x, y, z */
-    int64_t n[2];                /* integer stages: x, y; the index: n[0] */
+    int64_t n[2];                /* integer stages: x, y; the index: n[0] (0 without value) */
 } pt_cat_val;
+
+/* 1 when integer value k (0: x or the index, 1: y) of v has a value.  This
+** function can't fail. */
+static inline int pt_cat_has(const pt_cat_val *v, int k) { return pt_flags_have(v->flags, k); }
 
 /* The values of record r (of stage r->stage) into *v.  This function can't
 ** fail. */

@@ -79,7 +79,7 @@ static void para(const char *fmt, ...)
 static const char *value_text(char *b, size_t n, int st, const pt_cat_val *v, int k)
 {
     if (pt_stage_infos[st].nreal) pt_fmt_shortest(b, v->d[k]);
-    else if (v->null) snprintf(b, n, "none");
+    else if (!pt_cat_has(v, k)) snprintf(b, n, "none");
     else snprintf(b, n, "%lld", (long long)v->n[k]);
     return b;
 }

@@ -39,7 +39,7 @@ static void range_add(vrange *r, int real, const pt_cat_val *o, int k)
         else if (isinf(x)) { if (x > 0) r->pinf = 1; else r->ninf = 1; }
         else if (!r->any_finite++) r->lo = r->hi = x;
         else { r->lo = fmin(r->lo, x); r->hi = fmax(r->hi, x); }
-    } else if (o->null) {
+    } else if (!pt_cat_has(o, k)) {
         r->any_null = 1;
     } else {
         int64_t x = o->n[k];
@@ -83,7 +83,7 @@ static int in_ranges(const dctx *c, const vrange r[4], int st, int aside, const 
             allow = fmax(c->o->tol, c->o->rel * fmax(fabs(a), fmax(fabs(r[k].lo), fabs(r[k].hi))));
             allow += pt_diff_slack(c, aside, a);
             if (a < r[k].lo - allow || a > r[k].hi + allow) return 0;
-        } else if (arec->flags & PT_REC_NULL) {
+        } else if (!pt_flags_have(arec->flags, k)) {
             if (!r[k].any_null) return 0;
         } else if (!r[k].any_value || arec->u.n[k] < r[k].ilo || arec->u.n[k] > r[k].ihi) {
             return 0;
@@ -102,8 +102,8 @@ static void happly(const dhyp *h, const pt_stage_params *par, const pt_cat_val *
     pt_cat_right(h->stage, par, in, out);
     if (pt_diff_is_real(h->stage)) {
         for (k = 0; k < 3; k++) out->d[k] += h->off[k];
-    } else if (!out->null) {
-        for (k = 0; k < 2; k++) out->n[k] += h->ioff[k];
+    } else {
+        for (k = 0; k < 2; k++) if (pt_cat_has(out, k)) out->n[k] += h->ioff[k];
     }
 }
 
@@ -152,8 +152,8 @@ static int reproduces(const dctx *c, const dhyp *mk, int ref, const hctx *h, con
                 x.d[k] = v[p];
                 memset(&right, 0, sizeof right);
                 pt_cat_right(st, &h->par, &x, &right);
-                if (right.null != ((erec->flags & PT_REC_NULL) != 0) ||
-                    (!right.null && right.n[k] != erec->u.n[k])) continue;
+                if (pt_cat_has(&right, k) != pt_flags_have(erec->flags, k) ||
+                    (pt_cat_has(&right, k) && right.n[k] != erec->u.n[k])) continue;
                 happly(mk, &h->par, &x, &out);
                 range_add(&r[k], 0, &out, k);
             }
@@ -211,7 +211,7 @@ static int prev_value(const dctx *c, int ref, const vent *e, int st, const hctx 
             in_slack[k] = pt_diff_slack(c, ref, r->u.d[k]);
         }
     } else {
-        in->null = (r->flags & PT_REC_NULL) != 0;
+        in->flags = r->flags & (PT_REC_NULL | PT_REC_HAS_X | PT_REC_HAS_Y);
         for (k = 0; k < pt_stage_nvalues((pt_stage)p); k++) in->n[k] = r->u.n[k];
     }
     *from = p;
@@ -227,7 +227,7 @@ void pt_diff_val_str(pbuf *sb, int st, const pt_cat_val *v)
     for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
         pt_diff_add(sb, "%s%s = ", k ? ", " : "", pt_diff_coord_name(st, k));
         if (pt_diff_is_real(st)) pt_diff_add(sb, "%s", pt_diff_num(v->d[k], b));
-        else if (v->null) pt_diff_add(sb, "none");
+        else if (!pt_cat_has(v, k)) pt_diff_add(sb, "none");
         else pt_diff_add(sb, "%" PRId64, v->n[k]);
     }
 }
