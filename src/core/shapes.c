@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "core/shapes.h"
+#include "core/numparse.h"
 
 #define PI         3.141592653589793   /* Math.PI: the double nearest pi */
 
@@ -553,30 +554,33 @@ static int word(const char **p, const char *end, const char **t, size_t *n)
     return *n > 0;
 }
 
-/* t[0..n) as a number: reals as a scene's coordinates are written (digits,
-** sign, point, exponent; strtod must take all of it), ints also within Java's
+/* t[0..n) as a number: reals as a scene's coordinates are written and read
+** (core/numparse.h: digits, sign, point, exponent), ints also within Java's
 ** int range.  Returns 0, or -1 with a message in err. */
 static int number(const char *t, size_t n, char kind, const char *name,
                   double *out, char *err, size_t errlen)
 {
-    char buf[512], *stop;
+    char buf[512];
     size_t i;
+    int rc = -1;
 
     for (i = 0; i < n; i++)
         if (strchr(kind == 'i' ? "0123456789+-" : "0123456789+-.eE", t[i]) == NULL)
             break;
-    if (i < n || n >= sizeof buf) {
+    if (i == n && n < sizeof buf) rc = pt_parse_decimal(t, n, out);
+    if (rc == -2) {
+        snprintf(err, errlen, "%s: out of memory", name);
+        return -1;
+    }
+    if (rc != 0) {
         snprintf(err, errlen, "%s '%.*s' is not %s", name, (int)(n < 40 ? n : 40), t,
                  kind == 'i' ? "an integer" : "a decimal number");
         return -1;
     }
     memcpy(buf, t, n);
     buf[n] = '\0';
-    *out = strtod(buf, &stop);
-    if (stop != buf + n || !isfinite(*out)) {
-        snprintf(err, errlen, "%s '%s' is not %s", name, buf,
-                 stop != buf + n ? (kind == 'i' ? "an integer" : "a decimal number")
-                                 : "finite");
+    if (!isfinite(*out)) {
+        snprintf(err, errlen, "%s '%s' is not finite", name, buf);
         return -1;
     }
     if (kind == 'i' && (*out < -2147483648.0 || *out > 2147483647.0)) {
@@ -757,7 +761,10 @@ int pt_shape_make(pt_shape *sh, const char *p, const char *end, const char **at,
         for (j = 0; j < k; j++)
             if (strcmp(in->dflt[k], in->param[j]) == 0)
                 from = j;
-        x[k] = from >= 0 ? x[from] : strtod(in->dflt[k], NULL);
+        x[k] = 0;
+        if (from >= 0) x[k] = x[from];
+        else if (pt_parse_decimal(in->dflt[k], strlen(in->dflt[k]), &x[k]) != 0)
+            assert(!"a default is a plain decimal");
         argp[k] = NULL;
     }
     for (i = 0; i < sizeof refusals / sizeof refusals[0]; i++) {
