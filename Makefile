@@ -118,7 +118,8 @@ CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/d
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
-           $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm
+           $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm \
+           $B/test_numfmt_portable
 
 all: $B/pipetrace
 
@@ -216,6 +217,9 @@ $B/benchgen: tests/benchgen.c | $B
 	$(CC) $(ALLCFLAGS) -o $@ $<
 $B/baseline: tests/baseline.c | $B
 	$(CC) $(ALLCFLAGS) -o $@ $< $(LDLIBS)
+# test_numfmt once more on numfmt.c's portable 64x64-bit product (no __int128).
+$B/test_numfmt_portable: tests/test_numfmt.c src/io/numfmt.c src/io/numfmt.h tests/testhelp.h | $B
+	$(CC) $(ALLCFLAGS) -DPT_NUMFMT_PORTABLE -o $@ tests/test_numfmt.c src/io/numfmt.c $(LDLIBS)
 $B/test_%: tests/test_%.c tests/testhelp.h tests/refcases.h $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B:

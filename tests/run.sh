@@ -24,6 +24,7 @@ why=
 # NAME LANE COMMAND...: the groups, in report order
 groups=${PT_RUN_GROUPS:-"stages      1 $B/test_stages
 numfmt      2 $B/test_numfmt
+numfmt-portable 1 $B/test_numfmt_portable
 jnum        2 $B/test_jnum
 raster      1 $B/test_raster
 matrix      1 $B/test_matrix

@@ -174,8 +174,22 @@ static const tenpow *tenpow_of(int k)
 
 /* ===== shortest digits ===== */
 
-/* *hi * 2^64 + lo = a * b, from four 32x32-bit products (C11 has no 128-bit
-** integer).  Returns the high half. */
+/* *hi * 2^64 + lo = a * b.  One 64x64 -> 128-bit multiplication where the
+** compiler has a 128-bit integer (gcc and clang on 64-bit targets: an
+** extension of C11, hence __extension__); else four 32x32-bit products
+** (PT_NUMFMT_PORTABLE picks them: $B/test_numfmt_portable tests that path).
+** Returns the high half. */
+#if defined(__SIZEOF_INT128__) && !defined(PT_NUMFMT_PORTABLE)
+__extension__ typedef unsigned __int128 u128;
+
+static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
+{
+    u128 p = (u128)a * b;
+
+    *lo = (uint64_t)p;
+    return (uint64_t)(p >> 64);
+}
+#else
 static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
 {
     uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
@@ -185,6 +199,7 @@ static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
     *lo = mid << 32 | (p00 & 0xffffffffu);
     return p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
 }
+#endif
 
 /* floor(y), and whether y is an integer, for
 **     y = n 2^(q-2) / 10^k,   0 < n < 2^56,
