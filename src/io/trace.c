@@ -2,6 +2,7 @@
 ** src/io/trace.c -- write the trace: JSON Lines, aligned text, or CSV
 ** See LICENSE for copyright and license.
 */
+#include <assert.h>
 #include <errno.h>
 #include <inttypes.h>
 #include <math.h>
@@ -84,20 +85,27 @@ static void put_i64(pt_trace *t, int64_t x)
 
 /* A double in JSON: shortest round-trip, non-finite as a string, negative
 ** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign). */
+static char *json_num_at(char *o, double x)     /* at o (PT_NUMLEN + 2 bytes) */
+{
+    if (x == 0 && signbit(x)) { memcpy(o, "-0.0", 4); return o + 4; }
+    if (isfinite(x)) return o + pt_fmt_shortest(o, x);
+    *o++ = '"';
+    o += pt_fmt_shortest(o, x);
+    *o++ = '"';
+    return o;
+}
+
+static char *room(pt_trace *t, size_t n);
+
 static void put_json_num(pt_trace *t, double x)
 {
-    char b[PT_NUMLEN];
-    size_t n = pt_fmt_shortest(b, x);
-
-    if (x == 0 && signbit(x)) { put(t, "-0.0", 4); return; }
-    if (isfinite(x)) { put(t, b, n); return; }
-    put(t, "\"", 1); put(t, b, n); put(t, "\"", 1);
+    t->len = (size_t)(json_num_at(room(t, PT_NUMLEN + 2), x) - t->buf);
 }
 
 static void put_short(pt_trace *t, double x)
 {
-    char b[PT_NUMLEN];
-    put(t, b, pt_fmt_shortest(b, x));
+    char *o = room(t, PT_NUMLEN);
+    t->len += pt_fmt_shortest(o, x);
 }
 
 /* A string's characters as JSON writes them inside quotes: " and \ after a
@@ -134,8 +142,15 @@ static void put_col(pt_trace *t, const char *s, size_t n, size_t width)
     put(t, s, n);
 }
 
-/* Text: room for n bytes (n <= 128) at the end of the block, for the column
-** writers below: they write there and move t->len past what they wrote. */
+/* Room for n bytes (n <= PT_ROW_REST) at the end of the block, for the
+** writers below that write there by pointer and then move t->len past what
+** they wrote: one check for a whole record instead of one per piece. */
+/* The most a vertex record writes after the model's name (and before
+** --explain's text): v or a segment (20 bytes), the stage's name and keys,
+** five numbers of PT_NUMLEN + 2, integers, the plane and warning names
+** (pt_trace_init() checks that each list fits in 160 bytes), punctuation. */
+#define PT_ROW_REST (5 * (PT_NUMLEN + 2) + 8 * 24 + 2 * 160 + 256)
+
 static char *room(pt_trace *t, size_t n)
 {
     if (t->len + n > sizeof t->buf) flush(t);
@@ -177,6 +192,14 @@ static char *int_at(char *o, int64_t x, size_t width)
     d = digits_to(end, x < 0 ? 0u - (uint64_t)x : (uint64_t)x);
     if (x < 0) *--d = '-';
     return col_at(o, d, (size_t)(end - d), width);
+}
+
+static char *u64_at(char *o, uint64_t x)            /* x's digits at o (20 bytes) */
+{
+    char b[24], *end = b + sizeof b, *d = digits_to(end, x);
+
+    memcpy(o, d, (size_t)(end - d));
+    return o + (end - d);
 }
 
 static char *str_at(char *o, const char *s)         /* s at o; returns the end */
@@ -513,31 +536,6 @@ static void put_warnings_text(pt_trace *t, const pt_vrec *r)
     }
 }
 
-/* JSON: ["a","b"], the names whose bits are set in bits. */
-static void put_names_json(pt_trace *t, unsigned bits, const char *const *names, int n)
-{
-    int k, first = 1;
-
-    put(t, "[", 1);
-    for (k = 0; k < n; k++) {
-        if (!(bits & (1u << k))) continue;
-        if (!first) put(t, ",", 1);
-        first = 0;
-        put(t, "\"", 1); puts_(t, names[k]); put(t, "\"", 1);
-    }
-    put(t, "]", 1);
-}
-
-/* JSON: ,"warning":["cancellation"],"digits_lost":9 */
-static void put_warnings_json(pt_trace *t, const pt_vrec *r)
-{
-    puts_(t, ",\"warning\":");
-    put_names_json(t, r->warn, pt_warn_names, PT_NWARN);
-    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) {
-        puts_(t, ",\"digits_lost\":"); put_i64(t, r->digits_lost);
-    }
-}
-
 /* Text: the rest of "(0b000101: outside near left)", or ": inside ...)". */
 static void put_planes_text(pt_trace *t, unsigned code)
 {
@@ -593,48 +591,81 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
     if (t->explain) put_explain(t, r);
 }
 
-/* ',"x":': the JSON key of value k of stage st (stages/pt_stage.h). */
-static void put_key(pt_trace *t, pt_stage st, int k)
+/* ',"x":' at o: the JSON key of value k of stage st (stages/pt_stage.h). */
+static char *key_at(char *o, pt_stage st, int k)
 {
-    puts_(t, ",\""); puts_(t, pt_stage_infos[st].key[k]); puts_(t, "\":");
+    *o++ = ',';
+    *o++ = '"';
+    o = str_at(o, pt_stage_infos[st].key[k]);
+    *o++ = '"';
+    *o++ = ':';
+    return o;
+}
+
+/* JSON: ["a","b"] at o, the names whose bits are set in bits. */
+static char *names_json_at(char *o, unsigned bits, const char *const *names, int n)
+{
+    int k, first = 1;
+
+    *o++ = '[';
+    for (k = 0; k < n; k++) {
+        if (!(bits & (1u << k))) continue;
+        if (!first) *o++ = ',';
+        first = 0;
+        *o++ = '"';
+        o = str_at(o, names[k]);
+        *o++ = '"';
+    }
+    *o++ = ']';
+    return o;
 }
 
 static void vertex_json(pt_trace *t, const pt_vrec *r)
 {
+    char *o;
+
     if (t->clipv) {
         puts_(t, "{\"type\":\"clipvertex\",\"model\":"); put_json_str(t, t->model->name);
-        puts_(t, ",\"segment\":"); put_u64(t, t->seg);
-        puts_(t, ",\"from\":"); put_u64(t, t->from);
-        puts_(t, ",\"to\":"); put_u64(t, t->to);
-        puts_(t, ",\"t\":"); put_json_num(t, t->t_clip);
+        o = room(t, PT_ROW_REST);
+        o = str_at(o, ",\"segment\":"); o = u64_at(o, t->seg);
+        o = str_at(o, ",\"from\":"); o = u64_at(o, t->from);
+        o = str_at(o, ",\"to\":"); o = u64_at(o, t->to);
+        o = str_at(o, ",\"t\":"); o = json_num_at(o, t->t_clip);
     } else {
         puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
-        puts_(t, ",\"v\":"); put_u64(t, t->v);
+        o = room(t, PT_ROW_REST);
+        o = str_at(o, ",\"v\":"); o = u64_at(o, t->v);
     }
-    puts_(t, ",\"stage\":\""); puts_(t, pt_stage_infos[r->stage].name); put(t, "\"", 1);
+    o = str_at(o, ",\"stage\":\""); o = str_at(o, pt_stage_infos[r->stage].name); *o++ = '"';
     if (r->stage == PT_STAGE_CVV) {
-        puts_(t, ",\"code\":"); put_i64(t, r->code);
-        puts_(t, ",\"planes\":");
-        put_names_json(t, r->code, pt_cvv_names, PT_CVV_NPLANES);
+        o = str_at(o, ",\"code\":"); o = int_at(o, r->code, 0);
+        o = str_at(o, ",\"planes\":");
+        o = names_json_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES);
     } else if (pt_stage_infos[r->stage].nreal) {
         const double v[4] = {r->x, r->y, r->z, r->w};
         int k;
-        for (k = 0; k < pt_stage_infos[r->stage].nreal; k++) {
-            put_key(t, r->stage, k); put_json_num(t, v[k]);
-        }
+        for (k = 0; k < pt_stage_infos[r->stage].nreal; k++)
+            o = json_num_at(key_at(o, r->stage, k), v[k]);
     } else {                                /* viewport, framebuffer, index */
         const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
         int k;
         for (k = 0; k < pt_stage_infos[r->stage].nint; k++) {
-            put_key(t, r->stage, k);
-            if (pt_rec_has(r, k)) put_i64(t, n[k]); else puts_(t, "null");
+            o = key_at(o, r->stage, k);
+            o = pt_rec_has(r, k) ? int_at(o, n[k], 0) : str_at(o, "null");
         }
     }
     if (r->stage == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND))
-        puts_(t, ",\"behind\":true");
+        o = str_at(o, ",\"behind\":true");
     if (r->stage == PT_STAGE_VIEWPORT)
-        puts_(t, r->flags & PT_REC_INSIDE ? ",\"inside\":true" : ",\"inside\":false");
-    if (r->warn) put_warnings_json(t, r);
+        o = str_at(o, r->flags & PT_REC_INSIDE ? ",\"inside\":true" : ",\"inside\":false");
+    if (r->warn) {                          /* ,"warning":["cancellation"],"digits_lost":9 */
+        o = str_at(o, ",\"warning\":");
+        o = names_json_at(o, r->warn, pt_warn_names, PT_NWARN);
+        if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) {
+            o = str_at(o, ",\"digits_lost\":"); o = int_at(o, r->digits_lost, 0);
+        }
+    }
+    t->len = (size_t)(o - t->buf);
     if (t->explain) put_explain(t, r);
     puts_(t, "}\n");
 }
@@ -645,62 +676,68 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
 **                   digits_lost
 ** (planes joined by '|'; a point clipping made has no v, but its segment and t). */
 
-/* Names whose bits are set in bits, joined by '|'. */
-static void put_names_csv(pt_trace *t, unsigned bits, const char *const *names, int n)
+/* Names whose bits are set in bits, joined by sep, at o; returns the end. */
+static char *names_at(char *o, unsigned bits, const char *const *names, int n, char sep)
 {
     int k, first = 1;
 
     for (k = 0; k < n; k++) {
         if (!(bits & (1u << k))) continue;
-        if (!first) put(t, "|", 1);
+        if (!first) *o++ = sep;
         first = 0;
-        puts_(t, names[k]);
+        o = str_at(o, names[k]);
     }
+    return o;
 }
 
 static void vertex_csv(pt_trace *t, const pt_vrec *r)
 {
     int matrix = t->scene && t->scene->matrix, k, dims = pt_stage_infos[r->stage].nreal;
     const double v[4] = {r->x, r->y, r->z, r->w};
+    char *o;
 
-    puts_(t, t->model->name); put(t, ",", 1);
-    if (!t->clipv) put_u64(t, t->v);
-    put(t, ",", 1);
-    puts_(t, pt_stage_infos[r->stage].name);
+    puts_(t, t->model->name);
+    o = room(t, PT_ROW_REST);
+    *o++ = ',';
+    if (!t->clipv) o = u64_at(o, t->v);
+    *o++ = ',';
+    o = str_at(o, pt_stage_infos[r->stage].name);
     for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
-        put(t, ",", 1);
-        if (k < dims) put_short(t, v[k]);
+        *o++ = ',';
+        if (k < dims) o += pt_fmt_shortest(o, v[k]);
         else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
                  && pt_rec_has(r, k))
-            put_i64(t, k ? r->iy : r->ix);
+            o = int_at(o, k ? r->iy : r->ix, 0);
     }
-    put(t, ",", 1);
+    *o++ = ',';
     if (matrix) {                                       /* code,planes */
         if (r->stage == PT_STAGE_CVV) {
-            put_i64(t, r->code); put(t, ",", 1);
-            put_names_csv(t, r->code, pt_cvv_names, PT_CVV_NPLANES);
+            o = int_at(o, r->code, 0);
+            *o++ = ',';
+            o = names_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES, '|');
         } else {
-            put(t, ",", 1);
+            *o++ = ',';
         }
-        put(t, ",", 1);
+        *o++ = ',';
     }
-    if (r->stage == PT_STAGE_VIEWPORT) puts_(t, r->flags & PT_REC_INSIDE ? "1" : "0");
-    put(t, ",", 1);
+    if (r->stage == PT_STAGE_VIEWPORT) *o++ = r->flags & PT_REC_INSIDE ? '1' : '0';
+    *o++ = ',';
     if (!matrix) {                                      /* behind */
-        if (r->stage == PT_STAGE_IMAGE) puts_(t, r->flags & PT_REC_BEHIND ? "1" : "0");
-        put(t, ",", 1);
+        if (r->stage == PT_STAGE_IMAGE) *o++ = r->flags & PT_REC_BEHIND ? '1' : '0';
+        *o++ = ',';
     }
-    if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) put_i64(t, r->i);
-    put(t, ",", 1);
+    if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) o = int_at(o, r->i, 0);
+    *o++ = ',';
     if (matrix) {                                       /* segment,t */
-        if (t->clipv) { put_u64(t, t->seg); put(t, ",", 1); put_short(t, t->t_clip); }
-        else put(t, ",", 1);
-        put(t, ",", 1);
+        if (t->clipv) { o = u64_at(o, t->seg); *o++ = ','; o += pt_fmt_shortest(o, t->t_clip); }
+        else *o++ = ',';
+        *o++ = ',';
     }
-    put_names_csv(t, r->warn, pt_warn_names, PT_NWARN);
-    put(t, ",", 1);
-    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) put_i64(t, r->digits_lost);
-    put(t, "\n", 1);
+    o = names_at(o, r->warn, pt_warn_names, PT_NWARN, '|');
+    *o++ = ',';
+    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) o = int_at(o, r->digits_lost, 0);
+    *o++ = '\n';
+    t->len = (size_t)(o - t->buf);
 }
 
 static void on_vertex(void *ud, const pt_vrec *r)
@@ -866,8 +903,20 @@ static void on_summary(void *ud, const pt_summary *sum)
 
 /* ===== public ===== */
 
+/* The bytes names[0..n) take in a record at most: each quoted, a separator. */
+static size_t names_len(const char *const *names, int n)
+{
+    size_t len = 0;
+    int k;
+
+    for (k = 0; k < n; k++) len += strlen(names[k]) + 3;
+    return len;
+}
+
 void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
 {
+    assert(names_len(pt_warn_names, PT_NWARN) <= 160);         /* PT_ROW_REST */
+    assert(names_len(pt_cvv_names, PT_CVV_NPLANES) <= 160);
     t->f = f;
     t->fmt = fmt;
     t->precision = precision;
