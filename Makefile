@@ -243,6 +243,10 @@ screenshots: $B/pipetrace
 	sh tests/journey_browser.sh $B/pipetrace $B/journey-shots
 	cp $B/journey-shots/journey-builtin.png docs/journey-builtin.png
 	cp $B/journey-shots/journey-page-stage4.png docs/journey-page.png
+	cp $B/journey-shots/journey-present.png docs/journey-present.png
+	cp $B/journey-shots/journey-matrix.png docs/journey-matrix.png
+	$B/pipetrace accuracy --svg docs/accuracy.svg > /dev/null
+	$B/pipetrace accuracy docs/examples/lookat-cube.scene --svg docs/accuracy-lookat.svg > /dev/null
 
 bench: $B/bench $B/benchgen $B/baseline $B/pipetrace $B/test_numparse
 	$B/test_numparse 2000000

@@ -9,6 +9,8 @@
 #   - it clicks Prev and Next through every stage of every vertex of the
 #     scene; each stage's #coords must equal the JSONL trace;
 #   - #v=N&m=MODEL&stage=K opens a chosen vertex and stage;
+#   - tests/journey_layout.html checks the layout at 1024x768, 1280x900 and
+#     1920x1080 and presenter mode, for both cameras;
 #   - screenshots of the SVG and of each stage of the page go to SHOTDIR
 #     (default: journey-shots beside PIPETRACE); `make screenshots` copies two
 #     of them into docs/.
@@ -88,6 +90,19 @@ py dom "$exe" "$tmp/dom.html" pyramid 5 pixel
 chrome --dump-dom "$(url "$tmp/b.html" '#v=2&stage=index')" > "$tmp/dom.html"
 py dom "$exe" "$tmp/dom.html" cube 2 index
 
+# ---- the layout at three window sizes, presenter mode (tests/journey_layout.html)
+"$exe" journey docs/examples/lookat-near.scene --vertex 2 --html "$tmp/m.html"
+for pg in b m; do
+    for size in 1024x768 1280x900 1920x1080; do
+        chrome --window-size=2000,1200 --allow-file-access-from-files --dump-dom \
+            "$(url tests/journey_layout.html "?page=$(url "$tmp/$pg.html")&w=${size%x*}&h=${size#*x}")" \
+            > "$tmp/dom.html"
+        check "web-5 $pg.html at $size: fills the window, no expression wraps, presenter mode" \
+            grep -q '<pre id="layout">ok ' "$tmp/dom.html"
+        grep -o '<pre id="layout">FAIL[^<]*' "$tmp/dom.html" | cut -c1-400
+    done
+done
+
 # ---- screenshots: the SVG, and the page at each stage of vertex 1
 rm -f "$shots"/journey-*.png
 chrome --window-size=1680,772 --screenshot="$shots/journey-builtin.png" "$(url "$tmp/b.svg")" >/dev/null
@@ -99,6 +114,13 @@ for k in 1 2 3 4 5 6 7; do
     check "web-3 screenshot of the page at stage $k" test -s "$shots/journey-page-stage$k.png"
 done
 py color "$shots/journey-page-stage4.png" d62728
+chrome --window-size=1280,720 --screenshot="$shots/journey-present.png" \
+    "$(url "$tmp/b.html" "#v=1&stage=5&present")" >/dev/null
+check "web-3 screenshot of presenter mode" test -s "$shots/journey-present.png"
+chrome --window-size=1200,860 --screenshot="$shots/journey-matrix.png" \
+    "$(url "$tmp/m.html" "#stage=clip")" >/dev/null
+check "web-3 screenshot of the matrix camera's page" test -s "$shots/journey-matrix.png"
+py color "$shots/journey-matrix.png" d62728
 echo "screenshots in $shots" >&2
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -237,9 +237,9 @@ def dom_mode(exe, dom, model, v, stage, scene):
     text = open(dom, encoding="utf-8", errors="replace").read()
     recs = trace(exe, scene)
 
-    def by_id(i):
-        m = re.search(r'id="%s"[^>]*>(.*?)</' % i, text, re.S)
-        return html.unescape(m.group(1)) if m else None
+    def by_id(i):       # the element's text, its tags (span.expr) left out
+        m = re.search(r'<(\w+)[^>]*\bid="%s"[^>]*>(.*?)</\1>' % i, text, re.S)
+        return html.unescape(re.sub(r"<[^>]*>", "", m.group(2))) if m else None
     check("dom-1 #stage is %s" % stage, by_id("stage") == stage, repr(by_id("stage")))
     c = by_id("coords")
     key = (model, int(v), stage)
