@@ -146,4 +146,13 @@ py marked "$exe" "$tmp/mn.png" "$tmp/rn.ppm" stick 1 docs/examples/lookat-near.s
 check "jny-6.6 --image of a vertex outside the view volume: the render, nothing ringed" \
     cmp -s "$tmp/mn2.ppm" "$tmp/rn.ppm"
 
+# ---- axes named in the classic panels, with the way each grows (rows go down)
+for s in "" docs/examples/ortho.scene docs/examples/behind.scene; do
+    "$exe" journey $s --vertex 1 --svg "$tmp/ax.svg"
+    for name in "x_pp →" "y_pp ↑" "x_vp →" "y_vp ↓" "x_fb →" "y_fb ↓" "idx →"; do
+        check "jny-7.1 ${s:-builtin}: a panel names the axis '$name'" \
+            grep -q ">$name</text>" "$tmp/ax.svg"
+    done
+done
+
 report

@@ -732,6 +732,13 @@ static void vlabel(pt_sbuf *sb, const pt_jview *v, double x, double y, double dx
         text_at(sb, vx(v, x) + dx, vy(v, y) + dy, 10, anchor, "fill=\"" C_NOTE "\"", t, 0);
 }
 
+/* "x_vp ->": the trace's name of value k of stage st and an arrow (UTF-8)
+** saying which way it grows. */
+static void axis_name(char *t, size_t n, pt_stage st, int k, const char *arrow)
+{
+    snprintf(t, n, "%s%s", pt_stage_infos[st].coord[k], arrow);
+}
+
 static void bg_plane(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
     const pt_jview *v = &jm->view[st];
@@ -779,8 +786,10 @@ static void bg_plane(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
         fmt_i64(b, sizeof b, p->h); strcpy(a, b); strcat(a, ".5");
         vlabel(sb, v, r[0], r[3], -4, 4, "end", a);
         vlabel(sb, v, r[0], r[1], -4, 0, "end", "0.5");
-        vlabel(sb, v, r[2], r[1], 4, -4, "start", "x_pp");
-        vlabel(sb, v, r[0], r[3], 0, -6, "middle", "y_pp");
+        axis_name(a, sizeof a, st, 0, " \xe2\x86\x92");              /* x_pp ->, y_pp up */
+        vlabel(sb, v, r[2], r[1], 4, -4, "start", a);
+        axis_name(a, sizeof a, st, 1, " \xe2\x86\x91");
+        vlabel(sb, v, r[0], r[3], 0, -6, "middle", a);
     } else {
         int64_t wd = st == PT_STAGE_VIEWPORT ? p->w : p->W, ht = st == PT_STAGE_VIEWPORT ? p->h : p->H;
         vlabel(sb, v, r[0], r[1], 0, -5, "start", "(0, 0)");
@@ -788,8 +797,12 @@ static void bg_plane(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
         fmt_i64(b, sizeof b, wd - 1); strcat(a, b); strcat(a, ", ");
         fmt_i64(b, sizeof b, ht - 1); strcat(a, b); strcat(a, ")");
         vlabel(sb, v, r[2], r[3], 0, 13, "end", a);
-        vlabel(sb, v, r[2], r[1], 4, 10, "start", st == PT_STAGE_VIEWPORT ? "x_vp" : "x_fb");
-        vlabel(sb, v, r[0], r[3], -4, 0, "end", st == PT_STAGE_VIEWPORT ? "y_vp" : "y_fb");
+        /* x along the bottom edge's middle (the zoom inset takes the top
+        ** right), y at the left edge's middle, its arrow down: rows go down */
+        axis_name(a, sizeof a, st, 0, " \xe2\x86\x92");
+        vlabel(sb, v, (r[0] + r[2]) / 2, r[3], 0, 13, "middle", a);
+        axis_name(a, sizeof a, st, 1, " \xe2\x86\x93");
+        vlabel(sb, v, r[0], (r[1] + r[3]) / 2, -4, 4, "end", a);
     }
     wireframe(sb, jm, st);
 }
@@ -822,6 +835,8 @@ static void bg_index(pt_sbuf *sb, const pt_jmodel *jm)
         pt_sbuf_add(sb, "</g>\n");
     }
     text_at(sb, STRIP_X, 98, 10, "start", "fill=\"" C_NOTE "\"", "0", 0);
+    axis_name(a, sizeof a, PT_STAGE_INDEX, 0, " \xe2\x86\x92");
+    text_at(sb, STRIP_X + STRIP_W / 2, 98, 10, "middle", "fill=\"" C_NOTE "\"", a, 0);
     fmt_i64(b, sizeof b, n - 1);
     text_at(sb, STRIP_X + STRIP_W, 98, 10, "end", "fill=\"" C_NOTE "\"", b, 0);
 }
