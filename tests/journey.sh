@@ -155,4 +155,24 @@ for s in "" docs/examples/ortho.scene docs/examples/behind.scene; do
     done
 done
 
+# ---- --vertex LIST: the page lists just those vertices of the model
+vs() { grep -o '{"m":[0-9]*,"v":[0-9]*' "$1" | sed 's/.*"v"://' | tr '\n' ' '; }
+"$exe" journey --vertex 3,1 --model pyramid --html "$tmp/l1.html"
+check "jny-8.1 --vertex 3,1: the page has pyramid's v1 and v3" test "$(vs "$tmp/l1.html")" = "1 3 "
+check "jny-8.2 ... and shows v3 first" grep -q '"start":1[,}]' "$tmp/l1.html"
+"$exe" journey --vertex 2-4,4,7 --html "$tmp/l2.html"
+check "jny-8.3 --vertex 2-4,4,7: ranges, a vertex named twice listed once" test "$(vs "$tmp/l2.html")" = "2 3 4 7 "
+"$exe" journey --vertex all --model pyramid --html "$tmp/l3.html"
+check "jny-8.4 --vertex all: every vertex of the model" test "$(vs "$tmp/l3.html" | wc -w)" = "$("$exe" --format jsonl | grep -c '"model":"pyramid","v":[0-9]*,"stage":"model"')"
+for bad in 0 3-1 1,,2 x 2- ,1 1, 99999999999; do
+    "$exe" journey --vertex "$bad" --html "$tmp/lb.html" 2>"$tmp/err"
+    check "jny-8.5 --vertex '$bad': usage error (exit 1), no file" test $? = 1 -a ! -e "$tmp/lb.html" -a -s "$tmp/err"
+done
+"$exe" journey --vertex 1-99 --html "$tmp/lb.html" 2>"$tmp/err"
+check "jny-8.6 --vertex 1-99 past the model's vertices: exit 2, no file" test $? = 2 -a ! -e "$tmp/lb.html"
+"$exe" journey --vertex 1,2 --svg "$tmp/lb.svg" 2>"$tmp/err"
+check "jny-8.7 a list with --svg: usage error, it draws one vertex" test $? = 1 -a ! -e "$tmp/lb.svg"
+"$exe" journey --vertex all --image "$tmp/lb.ppm" 2>"$tmp/err"
+check "jny-8.8 a list with --image: usage error" test $? = 1 -a ! -e "$tmp/lb.ppm"
+
 report

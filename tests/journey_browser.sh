@@ -78,6 +78,12 @@ for s in docs/examples/lookat-near.scene docs/examples/lookat-cube.scene; do
     check "web-4 $s (matrix camera): the page loads" test -s "$tmp/dom.html"
     py clicks "$exe" "$tmp/dom.html" $s
 done
+# a page of listed vertices (--vertex 3,1): the list holds just those two
+"$exe" journey --vertex 3,1 --model pyramid --html "$tmp/l.html"
+clicks "$tmp/l.html" > "$tmp/dom.html"
+check "web-6 --vertex 3,1: the page lists 2 vertices and steps through them" \
+    grep -q '<pre id="clicks">ok 2 vertices, ' "$tmp/dom.html"
+check "web-6.2 ... pyramid v1 and v3" test "$(grep -c '^pyramid	[13]	' "$tmp/dom.html")" -gt 0
 printf 'framebuffer 20 10\nmodel m\nv 1 0.5 0\nv 0 0 -2\nl 1 2\n' > "$tmp/z0.scene"
 "$exe" journey "$tmp/z0.scene" --vertex 1 --html "$tmp/z.html"
 clicks "$tmp/z.html" > "$tmp/dom.html"

@@ -2,7 +2,7 @@
 ** src/tools/journey/cmd_journey.c -- pipetrace journey: draw one vertex's way through the stages
 ** See LICENSE for copyright and license.
 **
-**   pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]
+**   pipetrace journey [SCENE] --vertex N|LIST [--model NAME] [--svg FILE] [--html FILE]
 **                     [--image FILE]
 **
 ** --svg writes one SVG picture with a panel per coordinate system; --html a
@@ -28,8 +28,8 @@
 
 
 static const char usage[] =
-"usage: pipetrace journey [SCENE] --vertex N [--model NAME] [--svg FILE] [--html FILE]\n"
-"                         [--image FILE]\n"
+"usage: pipetrace journey [SCENE] --vertex N|LIST [--model NAME] [--svg FILE]\n"
+"                         [--html FILE] [--image FILE]\n"
 "Draw vertex N (1-based) of model NAME (default: the first model that has a\n"
 "vertex N) on its way from model coordinates to its element of the pixel\n"
 "array, one panel per coordinate system.  SCENE defaults to the built-in scene.\n"
@@ -40,6 +40,8 @@ static const char usage[] =
 "                 (at most 2000); it needs no network and no other file\n"
 "  --image FILE   the rendered framebuffer with the vertex's pixel ringed in red:\n"
 "                 PNG when FILE ends in .png (any case), else binary PPM (P6)\n"
+"  --vertex LIST  with --html only: several vertices of the model, N and A-B\n"
+"                 joined by commas (1,4-6) or 'all'; the page lists just those\n"
 "\n"
 "At least one of --svg, --html and --image.  Either camera: the classic camera's\n"
 "seven panels, or the matrix camera's ten (camera lookat: world, view, clip, cvv,\n"
@@ -103,6 +105,41 @@ static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64
     return 0;
 }
 
+/* --vertex LIST: "all", or items N or A-B (1 <= A <= B) joined by commas. */
+#define VLIST_MAX 64
+typedef struct vlist {
+    int all;                     /* "all": every vertex of the model */
+    int n;                       /* items; the first item's A is shown first */
+    uint64_t a[VLIST_MAX], b[VLIST_MAX];
+    uint64_t max;                /* the largest B */
+} vlist;
+
+/* Parse t into *l.  Returns 0, or -1 when t is no such list. */
+static int vlist_parse(vlist *l, const char *t)
+{
+    memset(l, 0, sizeof *l);
+    if (!strcmp(t, "all")) { l->all = 1; l->max = 1; return 0; }
+    for (;;) {
+        unsigned long long x[2] = {0, 0};
+        int k, nd;
+        for (k = 0; k < 2; k++) {
+            for (nd = 0; *t >= '0' && *t <= '9'; t++, nd++) {
+                if (x[k] > (4294967295ull - (unsigned)(*t - '0')) / 10) return -1;
+                x[k] = x[k] * 10 + (unsigned)(*t - '0');
+            }
+            if (nd == 0 || x[k] == 0) return -1;
+            if (k == 0 && *t == '-') { t++; continue; }
+            if (k == 0) x[1] = x[0];
+            break;
+        }
+        if (x[0] > x[1] || l->n == VLIST_MAX) return -1;
+        l->a[l->n] = x[0]; l->b[l->n] = x[1]; l->n++;
+        if (x[1] > l->max) l->max = x[1];
+        if (*t == '\0') return 0;
+        if (*t++ != ',') return -1;
+    }
+}
+
 int pt_cmd_journey(int argc, char **argv)
 {
     const char *path = NULL, *model = NULL, *svg = NULL, *html = NULL, *image = NULL;
@@ -113,6 +150,9 @@ int pt_cmd_journey(int argc, char **argv)
     pt_fb fb;
     int k, rc, have_fb = 0;
     pt_cli_args ca = {"journey", usage, 1, NULL, NULL, 0};
+    vlist vl;
+    unsigned char *pick = NULL;
+    int listed = 0;
 
     for (k = 1; k < argc; k++) {
         const char *o = argv[k];
@@ -125,12 +165,21 @@ int pt_cmd_journey(int argc, char **argv)
             if (!strcmp(o, "--svg")) svg = val;
             else if (!strcmp(o, "--html")) html = val;
             else image = val;
+        } else if (!strcmp(o, "--vertex")) {
+            if ((u = pt_cli_value("journey", argc, argv, &k, &val)) >= 0) return u;
+            if (vlist_parse(&vl, val) != 0)
+                return pt_cli_usage("journey", "--vertex takes a vertex number >= 1, a list "
+                                    "such as 1,4-6 or 'all', not %s", val);
+            listed = 1;
         } else if ((u = pt_cli_arg(&ca, argc, argv, &k)) >= 0) return u;  /* SCENE, --vertex, ... */
     }
     path = ca.path;
     model = ca.model;
-    v = ca.vertex;
-    if (!v) return pt_cli_usage("journey", "--vertex N is required");
+    if (!listed) return pt_cli_usage("journey", "--vertex N is required");
+    v = vl.all ? 1 : vl.a[0];
+    if ((vl.all || vl.n > 1 || vl.a[0] != vl.b[0]) && (svg || image))
+        return pt_cli_usage("journey", "--svg and --image draw one vertex; a list of vertices "
+                            "is for --html");
     if (!svg && !html && !image)
         return pt_cli_usage("journey", "nothing to write: give --svg FILE, --html FILE or --image FILE");
     if ((svg && html && !strcmp(svg, html)) || (svg && image && !strcmp(svg, image)) ||
@@ -143,16 +192,28 @@ int pt_cmd_journey(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (!(m = pt_cli_vertex_model(&s, "journey", model, v))) {
+    if (!(m = pt_cli_vertex_model(&s, "journey", model, vl.max))) {
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
+    }
+    if (vl.all || vl.n > 1 || vl.a[0] != vl.b[0]) {   /* the vertices the page lists */
+        int i;
+        if (!(pick = calloc(m->nv, 1))) {
+            fputs("pipetrace journey: out of memory\n", stderr);
+            pt_scene_free(&s);
+            return PT_EXIT_INPUT;
+        }
+        for (i = 0; i < (vl.all ? 1 : vl.n); i++) {
+            uint64_t x, lo = vl.all ? 1 : vl.a[i], hi = vl.all ? m->nv : vl.b[i];
+            for (x = lo; x <= hi; x++) pick[x - 1] = 1;
+        }
     }
 
     pt_sbuf_init(&a);
     pt_sbuf_init(&b);
     rc = 0;
     if (svg && pt_journey_svg(&a, &s, m, v) != 0) rc = -1;
-    if (!rc && html && pt_journey_html(&b, &s, m, v) != 0) rc = -1;
+    if (!rc && html && pt_journey_html(&b, &s, m, v, pick) != 0) rc = -1;
     if (!rc && image && render_marked(&fb, &s, m, v) != 0) rc = -1;
     have_fb = !rc && image;
     if (rc) fputs("pipetrace journey: out of memory\n", stderr);
@@ -163,6 +224,7 @@ int pt_cmd_journey(int argc, char **argv)
     if (have_fb) pt_fb_free(&fb);
     pt_sbuf_free(&a);
     pt_sbuf_free(&b);
+    free(pick);
     pt_scene_free(&s);
     return rc ? PT_EXIT_INPUT : 0;
 }

@@ -108,9 +108,11 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
 
 /* Append a self-contained HTML page (journey_html.c): one panel at a time with
 ** its formula and numbers, Prev/Next buttons and a choice of vertex; data for
-** up to PT_JOURNEY_MAXV used vertices of the scene, vertex v of m first shown.
-** Returns 0, or -1 when out of memory. */
-int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v);
+** up to PT_JOURNEY_MAXV used vertices of the scene, or, pick not NULL, for the
+** vertices k + 1 of m with pick[k] set (used or not); vertex v of m first
+** shown.  Returns 0, or -1 when out of memory. */
+int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v,
+                    const unsigned char *pick);
 
 /* ===== the matrix camera (journey_matrix.c) ===== */
 

@@ -252,7 +252,8 @@ static void texts(pt_sbuf *sb, const pt_jmodel *jm, const item *it, int kind)
     pt_sbuf_add(sb, "]");
 }
 
-int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v)
+int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v,
+                    const unsigned char *pick)
 {
     size_t mi, k, n = 0, total = 0, start = 0, first;
     item *items = malloc((PT_JOURNEY_MAXV + 1) * sizeof *items);
@@ -268,14 +269,15 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     /* the vertices listed: every used vertex in scene order, up to the cap */
     for (mi = 0; mi < s->nmodels; mi++) {
         const pt_model *mm = &s->models[mi];
+        if (pick && mm != m) continue;      /* a list: m's vertices only */
         free(used);
         used = calloc(mm->nv ? mm->nv : 1, 1);
         if (!used) goto done;
         for (k = 0; k < mm->nseg; k++) used[mm->seg[k].a] = used[mm->seg[k].b] = 1;
         for (k = 0; k < mm->nv; k++) {
-            int here = mm == m && k + 1 == v;
-            if (!used[k] && !here) continue;
-            if (used[k]) total++;
+            int here = mm == m && k + 1 == v, want = pick ? pick[k] : used[k];
+            if (!want && !here) continue;
+            if (want) total++;
             if (n >= PT_JOURNEY_MAXV && !(here && !found)) continue;
             if (here) { found = 1; start = n; }
             items[n].m = mi; items[n].v = k + 1; items[n].used = used[k];
