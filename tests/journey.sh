@@ -13,12 +13,15 @@ exe=$1
 
 
 py() {      # py MODE ARGS...: tests/journey_check.py, its counts added to ours
+    pyrun tests/journey_check.py "$@"
+}
+pyrun() {   # pyrun SCRIPT ARGS...: a python3 check, its counts added to ours
     if [ -z "$have_py" ]; then return; fi
-    python3 tests/journey_check.py "$@" > "$tmp/py" 2>&1
+    python3 "$@" > "$tmp/py" 2>&1
     grep -E '^(FAIL|  )' "$tmp/py" | head -20
     last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
     if [ -z "$last" ]; then
-        tail -5 "$tmp/py"; echo "FAIL journey_check.py $1 crashed"; failed=$((failed + 1)); return
+        tail -5 "$tmp/py"; echo "FAIL $* crashed"; failed=$((failed + 1)); return
     fi
     p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
     passed=$((passed + p)); failed=$((failed + f))
@@ -137,7 +140,7 @@ check "jny-6.2 matrix camera: byte-identical on a second run" cmp -s "$tmp/mx1a.
 "$exe" journey docs/examples/lookat-near.scene --vertex 2 --svg "$tmp/mx2b.svg"
 check "jny-6.3 ... (vertex outside the view volume)" cmp -s "$tmp/mx2.svg" "$tmp/mx2b.svg"
 check "jny-6.4 ... its panels after the cvv say it stops there" \
-    grep -q "v2 stops at the cvv: outside the view volume" "$tmp/mx2.svg"
+    grep -q ">v2 stops at the cvv<" "$tmp/mx2.svg"
 "$exe" docs/examples/lookat-near.scene --image "$tmp/rn.ppm"
 "$exe" journey docs/examples/lookat-near.scene --vertex 1 --image "$tmp/mn.png"
 check "jny-6.5 matrix camera --image: exit 0" test $? = 0
@@ -174,5 +177,8 @@ check "jny-8.6 --vertex 1-99 past the model's vertices: exit 2, no file" test $?
 check "jny-8.7 a list with --svg: usage error, it draws one vertex" test $? = 1 -a ! -e "$tmp/lb.svg"
 "$exe" journey --vertex all --image "$tmp/lb.ppm" 2>"$tmp/err"
 check "jny-8.8 a list with --image: usage error" test $? = 1 -a ! -e "$tmp/lb.ppm"
+
+# ---- the labels' widths (src/tools/journey/jplace.c) against the font files
+pyrun tests/journey_fontwidths.py
 
 report

@@ -11,6 +11,8 @@
 #   - #v=N&m=MODEL&stage=K opens a chosen vertex and stage;
 #   - tests/journey_layout.html checks the layout at 1024x768, 1280x900 and
 #     1920x1080 and presenter mode, for both cameras;
+#   - tests/journey_labels.html checks that no label of a panel overlaps
+#     another, lies under the zoom inset or is crossed by a line (web-7);
 #   - screenshots of the SVG and of each stage of the page go to SHOTDIR
 #     (default: journey-shots beside PIPETRACE); `make screenshots` copies two
 #     of them into docs/.
@@ -108,6 +110,33 @@ for pg in b m; do
         grep -o '<pre id="layout">FAIL[^<]*' "$tmp/dom.html" | cut -c1-400
     done
 done
+
+# ---- every label clear of the others, of the zoom inset and of the lines
+# (tests/journey_labels.html), in the pictures of vertices 1-8 of every model
+# of the example scenes (both cameras) and vertices 1-3 of the extreme scenes
+labels() {  # labels NAME MAXV SCENE...: the check over those scenes' pictures
+    name=$1; maxv=$2; shift 2
+    q=; n=0
+    for s in "$@"; do
+        for m in $(awk '$1 == "model" { print $2 }' "$s"); do
+            v=1
+            while [ "$v" -le "$maxv" ]; do
+                n=$((n + 1))
+                if "$exe" journey "$s" --model "$m" --vertex "$v" --svg "$tmp/lab$n.svg" 2>/dev/null
+                then q="$q&svg=$(url "$tmp/lab$n.svg")"; fi
+                v=$((v + 1))
+            done
+        done
+    done
+    chrome --allow-file-access-from-files --dump-dom --virtual-time-budget=60000 \
+        "$(url tests/journey_labels.html "?$q")" > "$tmp/dom.html"
+    check "web-7 $name: every label clear of the others, the inset and the lines" \
+        grep -q '<pre id="labels">ok ' "$tmp/dom.html"
+    grep -o '<pre id="labels">[^<]*' "$tmp/dom.html" | sed 's/^<pre id="labels">//' | cut -c1-600
+    rm -f "$tmp"/lab*.svg
+}
+labels "the example scenes" 8 docs/examples/*.scene
+labels "the extreme scenes" 3 tests/extreme/*.scene
 
 # ---- screenshots: the SVG, and the page at each stage of vertex 1
 rm -f "$shots"/journey-*.png

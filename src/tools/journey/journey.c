@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/journey/journey.h"
+#include "tools/journey/jplace.h"
 #include "io/numfmt.h"
 #include "core/pipetrace.h"
 
@@ -68,26 +69,20 @@ static void attr(pt_sbuf *sb, const char *name, double x)
     pt_sbuf_add(sb, "\"");
 }
 
-/* Characters (not bytes) of UTF-8 text t. */
-static size_t utf8_chars(const char *t)
-{
-    size_t n = 0;
-
-    for (; *t; t++)
-        if (((unsigned char)*t & 0xc0u) != 0x80u) n++;
-    return n;
-}
 
 /* <text> at (x, y): size, anchor ("start", "middle", "end"), more attributes
 ** (extra, may be ""), the text escaped.  When its estimated width exceeds
 ** maxw (> 0) it is squeezed to maxw with textLength. */
-static void text_at(pt_sbuf *sb, double x, double y, double size, const char *anchor,
-                    const char *extra, const char *t, double maxw)
+/* The panel being drawn: while pt_journey_panel_bg() or _fg() runs, the
+** lines, circles and texts drawn are recorded in it, and labels that may move
+** wait there for their place (jplace.h).  NULL otherwise (the legend, the
+** header). */
+static pt_jplace *cur;
+
+static void text_raw(pt_sbuf *sb, double x, double y, double size, const char *anchor,
+                     const char *extra, const char *t, double maxw)
 {
-    /* DejaVu Sans Mono's advance is 0.6 em; a proportional font's average is
-    ** nearer 0.55 em (digits are wider, spaces narrower) */
-    double em = strstr(extra, "monospace") ? 0.6 : 0.55;
-    double est = em * size * (double)utf8_chars(t);
+    double est = pt_jtext_width(t, size, pt_jtext_face(extra));
 
     pt_sbuf_add(sb, "<text");
     attr(sb, "x", x);
@@ -102,6 +97,36 @@ static void text_at(pt_sbuf *sb, double x, double y, double size, const char *an
     pt_sbuf_add(sb, ">");
     pt_sbuf_add_xml(sb, t);
     pt_sbuf_add(sb, "</text>\n");
+}
+
+/* A text that stays where it is put; the panel's labels keep clear of it. */
+static void text_at(pt_sbuf *sb, double x, double y, double size, const char *anchor,
+                    const char *extra, const char *t, double maxw)
+{
+    if (cur) {
+        double b[4];
+        pt_jtext_box(b, x, y, size, anchor, pt_jtext_face(extra), t, maxw);
+        pt_jplace_box(cur, b[0], b[1], b[2], b[3], PT_JPLACE_TAKEN);
+    }
+    text_raw(sb, x, y, size, anchor, extra, t, maxw);
+}
+
+/* A label that wants to be at (x, y) and may move, most important first
+** (prio 0 the vertex's name, 1 axes, 2 the rest): written when the panel's
+** foreground ends (pt_jplace_run()), or at once when no panel is drawn. */
+enum { LAB_VERTEX, LAB_AXIS, LAB_OTHER };
+
+static void label_at(pt_sbuf *sb, double x, double y, double size, const char *anchor,
+                     const char *extra, const char *t, double maxw, int prio)
+{
+    pt_jlabel l;
+
+    if (!cur) { text_raw(sb, x, y, size, anchor, extra, t, maxw); return; }
+    l.x = x; l.y = y; l.size = size; l.maxw = maxw; l.prio = prio;
+    snprintf(l.anchor, sizeof l.anchor, "%s", anchor);
+    snprintf(l.extra, sizeof l.extra, "%s", extra);
+    snprintf(l.text, sizeof l.text, "%s", t);
+    pt_jplace_label(cur, &l);
 }
 
 /* Many lines or cells as one <path>: open on the first piece, then "M x y"
@@ -141,6 +166,7 @@ static void path_end(pathw *p, const char *attrs)
 static void line(pt_sbuf *sb, double ax, double ay, double bx, double by,
                  const char *stroke, double width, const char *extra)
 {
+    if (cur) pt_jplace_seg(cur, ax, ay, bx, by, strstr(extra, "dasharray") != NULL);
     pt_sbuf_add(sb, "<line");
     attr(sb, "x1", ax); attr(sb, "y1", ay); attr(sb, "x2", bx); attr(sb, "y2", by);
     pt_sbuf_addf(sb, " stroke=\"%s\"", stroke);
@@ -163,6 +189,7 @@ static void rect(pt_sbuf *sb, double x, double y, double w, double h, const char
 static void circle(pt_sbuf *sb, double x, double y, double r, const char *fill,
                    const char *extra)
 {
+    if (cur) pt_jplace_box(cur, x - r, y - r, x + r, y + r, r < 4 ? PT_JPLACE_MARK : PT_JPLACE_TAKEN);
     pt_sbuf_add(sb, "<circle");
     attr(sb, "cx", x); attr(sb, "cy", y); attr(sb, "r", r);
     pt_sbuf_addf(sb, " fill=\"%s\"", fill);
@@ -528,6 +555,11 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m)
         }
     }
     free(used);
+    if (!(jm->place = calloc(PT_NSTAGES_ALL, sizeof *jm->place))) { pt_jmodel_free(jm); return -1; }
+    {
+        double area[4] = { BOX_X, BOX_Y, BOX_X + BOX_W, BOX_Y + BOX_H };
+        for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_init(&jm->place[st], area);
+    }
     pad(b[0], 0.08, 0);
     pad(b[1], 0.06, 0);
     for (st = PT_STAGE_IMAGE; st <= PT_STAGE_FRAMEBUFFER; st++)
@@ -541,6 +573,12 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m)
 
 void pt_jmodel_free(pt_jmodel *jm)
 {
+    int st;
+
+    if (jm->place)
+        for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_free(&jm->place[st]);
+    free(jm->place);
+    jm->place = NULL;
     free(jm->js);
     jm->js = NULL;
     free(jm->cut);
@@ -620,8 +658,8 @@ static void axis3(pt_sbuf *sb, const pt_jview *v, const axes3 *ax, const double 
     line(sb, vx(v, px), vy(v, py), vx(v, qx), vy(v, qy), C_AXIS, 1.2, "");
     arrowhead(sb, vx(v, px), vy(v, py), vx(v, qx), vy(v, qy), 8, C_AXIS);
     proj(ax, 1.1 * t[0], 1.1 * t[1], 1.1 * t[2], &qx, &qy);
-    text_at(sb, vx(v, qx), vy(v, qy) + 4, 12, "middle", "fill=\"" C_AXIS "\" font-style=\"italic\"",
-            label, 0);
+    label_at(sb, vx(v, qx), vy(v, qy) + 4, 12, "middle", "fill=\"" C_AXIS "\" font-style=\"italic\"",
+             label, 0, LAB_AXIS);
 }
 
 static void bg_model(pt_sbuf *sb, const pt_jmodel *jm)
@@ -666,8 +704,8 @@ static void bg_camera(pt_sbuf *sb, const pt_jmodel *jm)
     pt_sbuf_addf(sb, " Z\" fill=\"%s\" fill-opacity=\"0.8\" stroke=\"%s\"/>\n", C_AREA, C_EDGE);
     proj(&ax, 1, 1, c[0][2], &px, &py);
     if (in_view(v, px, py) && v->s > 20)
-        text_at(sb, vx(v, px), vy(v, py) - 5, 10, "middle", "fill=\"" C_NOTE "\"",
-                persp ? "image plane z = -1" : "image plane z = 0", 0);
+        label_at(sb, vx(v, px), vy(v, py) - 5, 10, "middle", "fill=\"" C_NOTE "\"",
+                 persp ? "image plane z = -1" : "image plane z = 0", 0, LAB_OTHER);
     tx[0] = A; ty[1] = A; tz[2] = A; dz[2] = -D;
     vline3(sb, v, &ax, o, dz, C_AXIS, 1, "stroke-dasharray=\"1 3\"");
     {                                        /* name the view direction where it leaves */
@@ -675,8 +713,8 @@ static void bg_camera(pt_sbuf *sb, const pt_jmodel *jm)
         proj(&ax, 0, 0, 0, &px, &py);
         proj(&ax, 0, 0, -D, &qx, &qy);
         if (clip(v, &px, &py, &qx, &qy) && (vx(v, qx) - vx(v, px)) > 90)
-            text_at(sb, vx(v, qx) - 4, vy(v, qy) + 14, 10, "end", "fill=\"" C_NOTE "\"",
-                    "looking down -z_c", 0);
+            label_at(sb, vx(v, qx) - 4, vy(v, qy) + 14, 10, "end", "fill=\"" C_NOTE "\"",
+                     "looking down -z_c", 0, LAB_OTHER);
     }
     axis3(sb, v, &ax, tx, "x_c");
     axis3(sb, v, &ax, ty, "y_c");
@@ -684,7 +722,8 @@ static void bg_camera(pt_sbuf *sb, const pt_jmodel *jm)
     proj(&ax, 0, 0, 0, &px, &py);
     if (in_view(v, px, py)) {
         circle(sb, vx(v, px), vy(v, py), 4, "#333", "");
-        text_at(sb, vx(v, px) - 7, vy(v, py) - 8, 11, "end", "fill=\"#333\"", "camera", 0);
+        label_at(sb, vx(v, px) - 7, vy(v, py) - 8, 11, "end", "fill=\"#333\"", "camera", 0,
+                 LAB_OTHER);
     }
     wireframe(sb, jm, PT_STAGE_CAMERA);
 }
@@ -729,7 +768,8 @@ static void vlabel(pt_sbuf *sb, const pt_jview *v, double x, double y, double dx
                    const char *anchor, const char *t)
 {
     if (in_view(v, x, y))
-        text_at(sb, vx(v, x) + dx, vy(v, y) + dy, 10, anchor, "fill=\"" C_NOTE "\"", t, 0);
+        label_at(sb, vx(v, x) + dx, vy(v, y) + dy, 10, anchor, "fill=\"" C_NOTE "\"", t, 0,
+                 LAB_AXIS);
 }
 
 /* "x_vp ->": the trace's name of value k of stage st and an arrow (UTF-8)
@@ -760,11 +800,11 @@ static void bg_plane(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
         if ((vp[2] - vp[0]) * v->s < 150) {
             /* no room for the label */
         } else if ((p->H - vp[3]) * v->s >= 14 && in_view(v, vp[0], vp[3]))
-            text_at(sb, vx(v, vp[0]) + 2, vy(v, vp[3]) + 12, 10, "start",
-                    "fill=\"" C_EDGE "\"", a, 0);
+            label_at(sb, vx(v, vp[0]) + 2, vy(v, vp[3]) + 12, 10, "start",
+                     "fill=\"" C_EDGE "\"", a, 0, LAB_OTHER);
         else if (in_view(v, vp[0], vp[1]))
-            text_at(sb, vx(v, vp[0]) + 2, vy(v, vp[1]) + (vp[1] * v->s >= 14 ? -4 : 13), 10,
-                    "start", "fill=\"" C_EDGE "\"", a, 0);
+            label_at(sb, vx(v, vp[0]) + 2, vy(v, vp[1]) + (vp[1] * v->s >= 14 ? -4 : 13), 10,
+                     "start", "fill=\"" C_EDGE "\"", a, 0, LAB_OTHER);
     } else {
         vrect(sb, v, r[0], r[1], r[2] - r[0], r[3] - r[1], C_AREA, "", "", 0);
         grid(sb, v, r, st == PT_STAGE_PIXEL ? 0.5 : 0, 5);
@@ -830,15 +870,17 @@ static void bg_index(pt_sbuf *sb, const pt_jmodel *jm)
             double x = STRIP_X + STRIP_W * r / p->H;
             pt_sbuf_add(sb, "<line");
             attr(sb, "x1", x); attr(sb, "y1", 68); attr(sb, "x2", x); attr(sb, "y2", 86);
+            if (cur) pt_jplace_seg(cur, x, 68, x, 86, 0);
             pt_sbuf_add(sb, "/>\n");
         }
         pt_sbuf_add(sb, "</g>\n");
     }
-    text_at(sb, STRIP_X, 98, 10, "start", "fill=\"" C_NOTE "\"", "0", 0);
+    if (cur) pt_jplace_box(cur, STRIP_X, 68, STRIP_X + STRIP_W, 86, PT_JPLACE_TAKEN);
+    label_at(sb, STRIP_X, 98, 10, "start", "fill=\"" C_NOTE "\"", "0", 0, LAB_AXIS);
     axis_name(a, sizeof a, PT_STAGE_INDEX, 0, " \xe2\x86\x92");
-    text_at(sb, STRIP_X + STRIP_W / 2, 98, 10, "middle", "fill=\"" C_NOTE "\"", a, 0);
+    label_at(sb, STRIP_X + STRIP_W / 2, 98, 10, "middle", "fill=\"" C_NOTE "\"", a, 0, LAB_AXIS);
     fmt_i64(b, sizeof b, n - 1);
-    text_at(sb, STRIP_X + STRIP_W, 98, 10, "end", "fill=\"" C_NOTE "\"", b, 0);
+    label_at(sb, STRIP_X + STRIP_W, 98, 10, "end", "fill=\"" C_NOTE "\"", b, 0, LAB_AXIS);
 }
 
 void pt_journey_panel_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
@@ -846,6 +888,8 @@ void pt_journey_panel_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
     char t[160];
 
     if ((int)st >= PT_NSTAGES_ALL) return;
+    cur = &jm->place[st];
+    pt_jplace_clear(cur);
     rect(sb, 0.5, 0.5, PT_JOURNEY_PW - 1, PT_JOURNEY_PH - 1, "#fff", C_FRAME, "rx=\"6\"");
     snprintf(t, sizeof t, "%d  %s  %s", pt_jmatrix_number(jm, st), titles[st][0], titles[st][1]);
     text_at(sb, 12, 21, 15, "start", "font-weight=\"bold\" fill=\"" C_TEXT "\"", t, 376);
@@ -862,6 +906,9 @@ void pt_journey_panel_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
         else bg_plane(sb, jm, st);
         break;
     }
+    cur->ready = 1;
+    if (cur->failed) sb->failed = 1;
+    cur = NULL;
 }
 
 /* ===== foregrounds ===== */
@@ -998,34 +1045,36 @@ static void marker(pt_sbuf *sb, const pt_jview *v, int ok, double x, double y,
         *px = vx(v, x); *py = vy(v, y);
         if (ring == 1) circle(sb, *px, *py, 7, "none", "stroke=\"" C_VTX "\" stroke-width=\"2\"");
         else if (ring == 0) circle(sb, *px, *py, 5, C_VTX, "stroke=\"#fff\" stroke-width=\"1.5\" class=\"vertex\"");
-        text_at(sb, *px + 8, *py - 8, 13, "start",
-                "font-weight=\"bold\" fill=\"" C_VTX "\" " HALO, name, 0);
+        label_at(sb, *px + 8, *py - 8, 13, "start",
+                 "font-weight=\"bold\" fill=\"" C_VTX "\" " HALO, name, 0, LAB_VERTEX);
         return;
     }
     edge_arrow(sb, v, x, y, px, py);
-    if (!isnan(*px)) {
-        char t[64];
-        strcpy(t, name);
-        strcat(t, ", off the panel");
-        text_at(sb, *px < v->bx + v->bw / 2 ? *px : *px,
-                *py + (*py < v->by + v->bh / 2 ? 14 : -6), 11,
-                *px < v->bx + v->bw / 3 ? "start" : *px > v->bx + 2 * v->bw / 3 ? "end" : "middle",
-                "font-weight=\"bold\" fill=\"" C_VTX "\" " HALO, t, 0);
+    if (!isnan(*px)) {                      /* its name, and "off the panel" under it */
+        const char *anchor = *px < v->bx + v->bw / 3 ? "start"
+                           : *px > v->bx + 2 * v->bw / 3 ? "end" : "middle";
+        double ly = *py + (*py < v->by + v->bh / 2 ? 14 : -18);
+        label_at(sb, *px, ly, 11, anchor, "font-weight=\"bold\" fill=\"" C_VTX "\" " HALO, name, 0,
+                 LAB_VERTEX);
+        label_at(sb, *px, ly + 12, 9.5, anchor, "fill=\"" C_VTX "\" " HALO, "off the panel", 0,
+                 LAB_VERTEX);
     }
 }
 
 /* The zoom inset of the pixel panels: 9 x 7 pixels around the vertex's pixel,
-** in the box corner farthest from the marker at (mx, my). */
+** where it covers no label and not the marker at (mx, my) (the panel's
+** pt_jplace; it may cover lines), a corner far from the marker when several
+** places are free. */
 static void inset(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stage st,
                   size_t k, double mx, double my)
 {
     const pt_jview *mv = &jm->view[st];
     const pt_stage_params *p = &jm->par;
     const pt_vrec *r = &j->rec[st];
-    double iw = 162, ih = 122, cx, cy, best = -1, bx = 0, by = 0, area[4];
-    double corner[4][2];
+    double iw = 150, ih = 112, cx, cy, best = (double)INFINITY, bx = BOX_X + 5, by = BOX_Y + 5;
+    double area[4];
     pt_jview v;
-    int c;
+    int gx, gy;
     char t[80], b[32];
 
     /* the pixel looked at, as the centre of a cell of this panel's coordinates */
@@ -1039,19 +1088,23 @@ static void inset(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stag
         cx = (double)r->ix + 0.5; cy = (double)r->iy + 0.5;
     }
     if (!(fabs(cx) < PIXMAX && fabs(cy) < PIXMAX)) return;
-    corner[0][0] = BOX_X + 5;               corner[0][1] = BOX_Y + 5;
-    corner[1][0] = BOX_X + BOX_W - iw - 5;  corner[1][1] = BOX_Y + 5;
-    corner[2][0] = BOX_X + 5;               corner[2][1] = BOX_Y + BOX_H - ih - 5;
-    corner[3][0] = BOX_X + BOX_W - iw - 5;  corner[3][1] = BOX_Y + BOX_H - ih - 5;
     if (isnan(mx)) { mx = BOX_X; my = BOX_Y + BOX_H; }
-    for (c = 0; c < 4; c++) {
-        double dx = corner[c][0] + iw / 2 - mx, dy = corner[c][1] + ih / 2 - my;
-        if (dx * dx + dy * dy > best) { best = dx * dx + dy * dy; bx = corner[c][0]; by = corner[c][1]; }
-    }
+    for (gy = 0; gy <= 4; gy++)              /* a 9 x 5 grid of places in the box */
+        for (gx = 0; gx <= 8; gx++) {
+            double x = BOX_X + 5 + gx * (BOX_W - iw - 10) / 8;
+            double y = BOX_Y + 5 + gy * (BOX_H - ih - 10) / 4;
+            double q[4], dx = x + iw / 2 - mx, dy = y + ih / 2 - my, c;
+            q[0] = x; q[1] = y; q[2] = x + iw; q[3] = y + ih;
+            c = (cur ? pt_jplace_cost(cur, q, 0) : 0) - sqrt(dx * dx + dy * dy) / 100;
+            if ((gx % 8) || (gy % 4)) c += 5;         /* corners first */
+            if (c < best) { best = c; bx = x; by = y; }
+        }
     view_fit(&v, cx - 4.5, cy - 3.5, cx + 4.5, cy + 3.5, bx, by + 14, iw, ih - 14,
              st != PT_STAGE_PIXEL);
     /* where the inset looks, in the main view */
     vrect(sb, mv, v.x0, v.y0, v.x1 - v.x0, v.y1 - v.y0, "none", C_VTX, "stroke-width=\"1\"", 5);
+    if (cur) pt_jplace_box(cur, bx, by, bx + iw, by + ih, PT_JPLACE_TAKEN);
+    pt_sbuf_add(sb, "<g class=\"inset\">\n");
     rect(sb, bx, by, iw, ih, "#fff", "#8a919b", "stroke-width=\"1\"");
     text_at(sb, bx + 4, by + 11, 9.5, "start", "fill=\"" C_NOTE "\"", "zoom", 0);
     base_rect(jm, st, area);
@@ -1103,6 +1156,7 @@ static void inset(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stag
     fmt_i64(b, sizeof b, (int64_t)floor(cx)); strcat(t, b); strcat(t, ", ");
     fmt_i64(b, sizeof b, (int64_t)floor(cy)); strcat(t, b); strcat(t, ")");
     text_at(sb, bx + iw - 4, by + 11, 9.5, "end", "fill=\"" C_VTX "\"", t, 0);
+    pt_sbuf_add(sb, "</g>\n");
 }
 
 /* The camera panel's projection ray and image point. */
@@ -1256,10 +1310,10 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
     r1 = y + 1 < H ? y + 1 : y;
     nr = (int)(r1 - r0 + 1);
     bw = STRIP_W / nr;
-    line(sb, STRIP_X + STRIP_W * ((double)r0 * (double)W) / (double)n, 87, STRIP_X, 128,
-         C_GRID, 1, "");
+    line(sb, STRIP_X + STRIP_W * ((double)r0 * (double)W) / (double)n, 87, STRIP_X, 111,
+         C_GRID, 1, "");                     /* the fan stops above the rows' names */
     line(sb, STRIP_X + STRIP_W * ((double)(r1 + 1) * (double)W) / (double)n, 87,
-         STRIP_X + STRIP_W, 128, C_GRID, 1, "");
+         STRIP_X + STRIP_W, 111, C_GRID, 1, "");
     for (r = r0; r <= r1; r++) {
         double bx = STRIP_X + bw * (double)(r - r0);
         rect(sb, bx, 128, bw, 20, r == y ? C_AREA : "#eef0f3", "#9aa1ab", "");
@@ -1284,7 +1338,7 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
     }
     pt_sbuf_add(sb, "</g>\n");
     rowx = STRIP_X + bw * ((double)(y - r0) + ((double)x + 0.5) / (double)W);
-    line(sb, rowx, 124, rowx, 152, C_VTX, 2, "");
+    line(sb, rowx, 127, rowx, 152, C_VTX, 2, "");
 
     /* eleven elements around idx */
     nc = n < 11 ? (int)n : 11;
@@ -1292,15 +1346,18 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
     if (c0 > n - nc) c0 = n - nc;
     if (c0 < 0) c0 = 0;
     bw = STRIP_W / 11;
-    line(sb, rowx, 152, STRIP_X + bw * (double)(i - c0), 196, C_GRID, 1, "");
-    line(sb, rowx, 152, STRIP_X + bw * (double)(i - c0 + 1), 196, C_GRID, 1, "");
+    {                                        /* a fan to them, from below the rows' numbers */
+        double xa = STRIP_X + bw * (double)(i - c0), xb = xa + bw, f = 13.0 / 44;
+        line(sb, rowx + (xa - rowx) * f, 165, xa, 196, C_GRID, 1, "");
+        line(sb, rowx + (xb - rowx) * f, 165, xb, 196, C_GRID, 1, "");
+    }
     fmt_i64(a, sizeof a, y); fmt_i64(b, sizeof b, W); fmt_i64(d, sizeof d, x);
     {
         char e[32];
         fmt_i64(e, sizeof e, i);
         snprintf(t, sizeof t, "idx = y_fb * W + x_fb = %s * %s + %s = %s", a, b, d, e);
     }
-    text_at(sb, 200, 186, 11, "middle", "font-family=\"" MONO "\" fill=\"" C_TEXT "\" " HALO, t, 370);
+    text_at(sb, 200, 258, 11, "middle", "font-family=\"" MONO "\" fill=\"" C_TEXT "\" " HALO, t, 370);
     for (c = 0; c < nc; c++) {
         int64_t e = c0 + c;
         double cxp = STRIP_X + bw * (double)c;
@@ -1319,10 +1376,16 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
                     e == i ? "font-weight=\"bold\" fill=\"" C_VTX "\"" : "fill=\"" C_NOTE "\"", a, 0);
         }
     }
-    text_at(sb, STRIP_X, 252, 9.5, "start", "fill=\"" C_NOTE "\"",
+    text_at(sb, STRIP_X, 276, 9.5, "start", "fill=\"" C_NOTE "\"",
             "cells: x_fb within the row; below: the element's index", 0);
     free(cl.xs);
     free(cl.ys);
+}
+
+/* pt_jplace_run()'s hand: a label in its place. */
+static void put_label(void *ud, const pt_jlabel *l, double x, double y)
+{
+    text_raw(ud, x, y, l->size, l->anchor, l->extra, l->text, l->maxw);
 }
 
 void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage st)
@@ -1333,8 +1396,18 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
     pt_journey j;
     double x, y, mx = (double)NAN, my = (double)NAN;
     char t[PT_EXPLAINLEN];
+    pt_jplace_mark mark;
 
     if ((int)st >= PT_NSTAGES_ALL || vn < 1 || vn > jm->m->nv) return;
+    if (!jm->place[st].ready) {              /* the background's lines and labels */
+        pt_sbuf bg;
+        pt_sbuf_init(&bg);
+        pt_journey_panel_bg(&bg, jm, st);
+        if (bg.failed) sb->failed = 1;
+        pt_sbuf_free(&bg);
+    }
+    mark = pt_jplace_save(&jm->place[st]);
+    cur = &jm->place[st];
     for (s = 0; s < jm->m->nseg && !used; s++)
         used = jm->m->seg[s].a == k || jm->m->seg[s].b == k;
     journey_of(jm, k, &j);
@@ -1361,10 +1434,14 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
         fg_segments(sb, jm, v, st, k, v->s >= 3 ? 1 : 2);
         if (ok) vrect(sb, v, x - 0.5, y - 0.5, 1, 1, C_VTX, "", "", 4);
         marker(sb, v, ok, x, y, vn, v->s < 6 ? 1 : 2, &mx, &my);
-        if (!ok)
-            text_at(sb, BOX_X + BOX_W / 2, BOX_Y + BOX_H / 2, 12, "middle",
-                    "fill=\"" C_VTX "\" " HALO, "no pixel: the pixel-plane point is not finite "
-                    "or beyond 2^62", BOX_W - 10);
+        if (!ok) {
+            label_at(sb, BOX_X + BOX_W / 2, BOX_Y + BOX_H / 2, 12, "middle",
+                     "fill=\"" C_VTX "\" " HALO, "no pixel", 0, LAB_VERTEX);
+            label_at(sb, BOX_X + BOX_W / 2, BOX_Y + BOX_H / 2 + 16, 10.5, "middle",
+                     "fill=\"" C_VTX "\" " HALO, "the pixel-plane point", 0, LAB_VERTEX);
+            label_at(sb, BOX_X + BOX_W / 2, BOX_Y + BOX_H / 2 + 30, 10.5, "middle",
+                     "fill=\"" C_VTX "\" " HALO, "is not finite or beyond 2^62", 0, LAB_VERTEX);
+        }
         if (v->s < 6) inset(sb, jm, &j, st, k, mx, my);
         break;
     case PT_STAGE_PIXEL:
@@ -1385,6 +1462,10 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
         marker(sb, v, ok, x, y, vn, 0, &mx, &my);
         break;
     }
+    cur = NULL;
+    pt_jplace_run(&jm->place[st], put_label, sb);   /* the background's labels and ours */
+    if (jm->place[st].failed) sb->failed = 1;
+    pt_jplace_back(&jm->place[st], mark);
     if (j.matrix && !(j.reported & 1u << st))
         pt_jmatrix_unreached(t, sizeof t, st);
     else pt_explain_values(t, sizeof t, &j, st);
@@ -1508,6 +1589,12 @@ void pt_jtext(pt_sbuf *sb, double x, double y, double size, const char *anchor,
               const char *extra, const char *t, double maxw)
 {
     text_at(sb, x, y, size, anchor, extra, t, maxw);
+}
+
+void pt_jtext_label(pt_sbuf *sb, double x, double y, double size, const char *anchor,
+               const char *extra, const char *t, double maxw)
+{
+    label_at(sb, x, y, size, anchor, extra, t, maxw, LAB_OTHER);
 }
 
 void pt_jline(pt_sbuf *sb, double ax, double ay, double bx, double by, const char *stroke,

@@ -77,6 +77,8 @@ typedef struct pt_jmodel {
                                  ** 0 the vertex, i + 1 cut[i], CULLED: none; owned */
     double axis_m, axis_c;       /* axis lengths of the two 3-D panels */
     double depth;                /* camera panel: depth of the view pyramid */
+    struct pt_jplace *place;     /* place[st]: stage st's lines, boxes and labels
+                                 ** (jplace.h), recorded by its background; owned */
 } pt_jmodel;
 
 /* Lay out the panels of model m of scene s (the classic camera: !s->matrix),
@@ -148,12 +150,15 @@ void pt_jmatrix_cuts(pt_sbuf *sb, const pt_jmodel *jm, size_t k, pt_stage st);
 ** z_n): not reached".  Returns its length (cut short when >= n).  Can't fail. */
 size_t pt_jmatrix_unreached(char *t, size_t n, pt_stage st);
 
-/* journey.c's drawing, for journey_matrix.c: text, lines, circles,
+/* journey.c's drawing, for journey_matrix.c: text (pt_jtext stays where it
+** is put, pt_jtext_label may move clear of the rest: jplace.h), lines, circles,
 ** rectangles in panel units; views (pt_jview) in data units; the 3-D panels'
 ** projection, axes and lines; the faint wireframe, the vertex's segments and
 ** its marker as the classic panels draw them. */
 void pt_jtext(pt_sbuf *sb, double x, double y, double size, const char *anchor,
               const char *extra, const char *t, double maxw);
+void pt_jtext_label(pt_sbuf *sb, double x, double y, double size, const char *anchor,
+                    const char *extra, const char *t, double maxw);
 void pt_jline(pt_sbuf *sb, double ax, double ay, double bx, double by, const char *stroke,
               double width, const char *extra);
 void pt_jcircle(pt_sbuf *sb, double x, double y, double r, const char *fill, const char *extra);

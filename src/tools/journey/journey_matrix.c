@@ -297,7 +297,7 @@ static void point3(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st, const double *
     pt_jproj(st, p[0], p[1], p[2], &x, &y);
     if (!pt_jview_in(v, x, y)) return;
     pt_jcircle(sb, pt_jview_x(v, x), pt_jview_y(v, y), 4, "#333", "");
-    pt_jtext(sb, pt_jview_x(v, x) - 7, pt_jview_y(v, y) - 8, 11, "end", "fill=\"#333\"", label, 0);
+    pt_jtext_label(sb, pt_jview_x(v, x) - 7, pt_jview_y(v, y) - 8, 11, "end", "fill=\"#333\"", label, 0);
 }
 
 static void bg_world(pt_sbuf *sb, const pt_jmodel *jm)
@@ -342,10 +342,10 @@ static void bg_view(pt_sbuf *sb, const pt_jmodel *jm)
     point3(sb, jm, PT_STAGE_VIEW, o, "eye");
     pt_fmt_shortest(a, jm->s->znear);
     snprintf(t, sizeof t, "near plane z_v = %s", a);
-    pt_jtext(sb, BX + 6, BY + BH - 8, 10, "start", LABEL,
+    pt_jtext_label(sb, BX + 6, BY + BH - 8, 10, "start", LABEL,
              D < jm->s->zfar ? "frustum: from the near plane; the far plane lies beyond"
                              : "frustum: from the near plane to the far plane", BW - 12);
-    pt_jtext(sb, BX + 6, BY + 14, 10, "start", LABEL, t, 0);
+    pt_jtext_label(sb, BX + 6, BY + 14, 10, "start", LABEL, t, 0);
 }
 
 /* One clip-space plot: component c against w_k, with its two planes. */
@@ -366,8 +366,8 @@ static void bg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c)
     pt_jview_line(sb, v, 0, 0, W, c == 2 ? 0 : -W, EDGE, 1.8, "");
     t = fmin(0.8 * W, v->y1 * 0.8);
     pt_jview_label(sb, v, t, t, -4, -4, "end", planes[c][0]);
-    pt_jview_label(sb, v, 0.8 * W, c == 2 ? 0 : fmax(-0.8 * W, v->y0 * 0.8), 0, 13, "end",
-                   planes[c][1]);
+    t = fmin(0.65 * W, -0.65 * v->y0);        /* below the line, with room under it */
+    pt_jview_label(sb, v, c == 2 ? 0.8 * W : t, c == 2 ? 0 : -t, 0, 13, "end", planes[c][1]);
     pt_jview_label(sb, v, v->x1, 0, -3, -4, "end", "w_k");
     snprintf(a, sizeof a, "%s against w_k", names[c]);
     pt_jtext(sb, v->bx + 2, v->by - 4, 10.5, "start", "fill=\"#222\"", a, 0);
@@ -466,8 +466,8 @@ static void fg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c,
             if (!pt_jview_in(v, q->w, comp(q, c))) continue;
             pt_jrect(sb, pt_jview_x(v, q->w) - 4, pt_jview_y(v, comp(q, c)) - 4, 8, 8, "#fff",
                      RED, "stroke-width=\"1.5\" class=\"cut\"");
-            pt_jtext(sb, pt_jview_x(v, q->w) + 6, pt_jview_y(v, comp(q, c)) + 12, 10, "start",
-                     "fill=\"" RED "\"", "cut", 0);
+            pt_jtext_label(sb, pt_jview_x(v, q->w) + 6, pt_jview_y(v, comp(q, c)) + 12, 10, "start",
+                      "fill=\"" RED "\"", "cut", 0);
         }
     }
     pt_jmarker(sb, v, isfinite(r->w) && isfinite(comp(r, c)), r->w, comp(r, c), k + 1);
@@ -524,14 +524,13 @@ void pt_jmatrix_fg(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t
     if (!(j->reported & 1u << st)) {         /* the journey ended at the cvv */
         if (st != PT_STAGE_INDEX) pt_jsegments(sb, jm, &jm->view[st], st, k);
         if (st == PT_STAGE_NDC || st == PT_STAGE_SCREEN) pt_jmatrix_cuts(sb, jm, k, st);
-        snprintf(t, sizeof t, "v%llu stops at the cvv: outside the view volume",
-                 (unsigned long long)(k + 1));
-        pt_jtext(sb, BX + BW / 2, BY + BH / 2, 12, "middle",
-                 "fill=\"" RED "\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\"",
-                 t, BW - 10);
-        pt_jtext(sb, BX + BW / 2, BY + BH / 2 + 17, 10.5, "middle",
-                 LABEL " stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\"",
-                 "its segments go on from where clipping cut them", BW - 10);
+        snprintf(t, sizeof t, "v%llu stops at the cvv", (unsigned long long)(k + 1));
+        pt_jtext_label(sb, BX + BW / 2, BY + BH / 2, 12, "middle",
+                       "fill=\"" RED "\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\"",
+                       t, BW - 10);
+        pt_jtext_label(sb, BX + BW / 2, BY + BH / 2 + 17, 10.5, "middle",
+                       LABEL " stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\"",
+                       "its segments: from the cuts", BW - 10);
         return;
     }
     if (st == PT_STAGE_CLIP) {
