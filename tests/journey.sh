@@ -178,6 +178,24 @@ check "jny-8.7 a list with --svg: usage error, it draws one vertex" test $? = 1 
 "$exe" journey --vertex all --image "$tmp/lb.ppm" 2>"$tmp/err"
 check "jny-8.8 a list with --image: usage error" test $? = 1 -a ! -e "$tmp/lb.ppm"
 
+# ---- the framebuffer panel shows the whole frame: every model's pixels
+"$exe" docs/examples/two-models.scene --image "$tmp/two.ppm"
+for m in square arrow; do
+    "$exe" journey docs/examples/two-models.scene --model $m --vertex 2 --svg "$tmp/two-$m.svg"
+    py frame "$tmp/two-$m.svg" "$tmp/two.ppm" 000040 1
+done
+sed '/^model arrow/,$d' docs/examples/two-models.scene > "$tmp/one.scene"
+"$exe" "$tmp/one.scene" --image "$tmp/one.ppm"
+check "jny-9.1 two models light more pixels than one (the test scene)" \
+    test "$(wc -c < "$tmp/two.ppm")" = "$(wc -c < "$tmp/one.ppm")" -a "$(cmp -l "$tmp/two.ppm" "$tmp/one.ppm" | wc -l)" -gt 0
+"$exe" --image "$tmp/b.ppm"
+"$exe" journey --vertex 1 --svg "$tmp/bf.svg"
+py frame "$tmp/bf.svg" "$tmp/b.ppm" 181828 2
+printf 'framebuffer 5000 4000\nviewport 0 0 5000 4000\nmodel m\nv 0 0 -2\nv 0.5 0.5 -2\nl 1 2\n' > "$tmp/big.scene"
+"$exe" journey "$tmp/big.scene" --vertex 1 --svg "$tmp/big.svg"
+check "jny-9.2 a frame past PT_JOURNEY_FRAMEMAX pixels is not drawn" \
+    sh -c "test -s '$tmp/big.svg' && ! grep -q 'class=\"frame\"' '$tmp/big.svg'"
+
 # ---- the labels' widths (src/tools/journey/jplace.c) against the font files
 pyrun tests/journey_fontwidths.py
 

@@ -27,6 +27,11 @@
 #   png FILE.png FILE.ppm            the PNG decodes (CRC of every chunk, zlib's
 #                                    Adler-32) to the PPM's pixels
 #   color FILE.png RRGGBB            the PNG holds a pixel of that color
+#   frame FILE.svg FILE.ppm RRGGBB K  the framebuffer panel draws the whole
+#                                    frame FILE.ppm (every model's pixels, the
+#                                    background RRGGBB left out) in blocks of
+#                                    K x K pixels: data-pixels counts them, and
+#                                    with K = 1 its runs cover just as many
 import html
 import os
 import json
@@ -342,6 +347,36 @@ def marked_mode(exe, png, ppm, model, v, scene):
           not bad, "first differing pixels: %r" % bad[:5])
 
 
+def frame_mode(svg, ppm, bg, k):
+    w, h, data = ppm_read(ppm)
+    bg = bytes.fromhex(bg)
+    lit = sum(1 for i in range(0, len(data), 3) if data[i:i + 3] != bg)
+    root = ET.parse(svg).getroot()
+    ns = "{http://www.w3.org/2000/svg}"
+    panel = [g for g in root.iter(ns + "g") if g.get("data-stage") == "framebuffer"
+             and g.get("class") == "panel"]
+    check("frame-1 %s: a framebuffer panel" % svg, len(panel) == 1)
+    if len(panel) != 1:
+        return
+    paths = [e for e in panel[0].iter(ns + "path") if e.get("class") == "frame"]
+    check("frame-2 ... with the frame's pixels (%d lit in the render)" % lit,
+          len(paths) == 1 and lit > 0)
+    if len(paths) != 1:
+        return
+    f = paths[0]
+    check("frame-3 ... all %d of them counted" % lit, f.get("data-pixels") == str(lit),
+          "data-pixels=%s" % f.get("data-pixels"))
+    check("frame-4 ... in blocks of %s x %s" % (k, k), f.get("data-k") == k, f.get("data-k"))
+    if k != "1":
+        return
+    fbrect = [e for e in panel[0].iter(ns + "rect") if e.get("fill") == "#eef0f3"][0]
+    s = float(fbrect.get("width")) / w                 # panel units per pixel
+    runs = re.findall(r"M([-\d.]+) [-\d.]+H([-\d.]+)V", f.get("d"))
+    total = sum((float(b) - float(a)) / s for a, b in runs)
+    check("frame-5 ... whose runs cover %d pixels" % lit, abs(total - lit) <= 0.5 * len(runs),
+          "%.1f pixels in %d runs" % (total, len(runs)))
+
+
 def main():
     mode, a = sys.argv[1], sys.argv[2:]
     scene = None
@@ -359,6 +394,8 @@ def main():
         color_mode(a[0], a[1])
     elif mode == "marked":
         marked_mode(a[0], a[1], a[2], a[3], a[4], a[5] if len(a) > 5 else None)
+    elif mode == "frame":
+        frame_mode(a[0], a[1], a[2], a[3])
     report()
 
 

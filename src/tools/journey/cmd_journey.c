@@ -74,23 +74,11 @@ static int write_file(const char *path, const pt_sbuf *sb, const pt_fb *fb)
 static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64_t v)
 {
     static const unsigned char red[3] = PT_JOURNEY_RED_RGB;
-    pt_options o;
-    pt_plan p;
-    pt_summary sum;
     pt_journey j;
-    pt_listener quiet;                      /* no trace: every hook NULL */
     int64_t x, y, dx, dy;
 
-    memset(&quiet, 0, sizeof quiet);
-    pt_options_default(&o);
-    if (pt_plan_make(&p, s, &o) != 0) return -1;
-    if (pt_fb_init(fb, s->fb_w, s->fb_h, s->background) != 0) { pt_plan_free(&p); return -1; }
-    if (pt_run(s, &p, &o, &quiet, fb, &sum) != 0 || pt_run_journey(&j, s, m, v, 0) != 0) {
-        pt_plan_free(&p);
-        pt_fb_free(fb);
-        return -1;
-    }
-    pt_plan_free(&p);
+    if (pt_journey_render(fb, s) != 0) return -1;
+    if (pt_run_journey(&j, s, m, v, 0) != 0) { pt_fb_free(fb); return -1; }
     if ((j.rec[PT_STAGE_FRAMEBUFFER].flags & PT_REC_NULL) ||          /* no pixel, or */
         !(j.reported & 1u << PT_STAGE_FRAMEBUFFER)) return 0;        /* stopped at the cvv */
     x = j.rec[PT_STAGE_FRAMEBUFFER].ix;

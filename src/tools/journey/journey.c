@@ -33,6 +33,7 @@
 #define C_EDGE    "#7f9cc6"
 #define C_GRID    "#d3d9e3"
 #define C_FRAME   "#c9ced6"
+#define C_FRAMEPX "#a3abb7"        /* a pixel of the rendered frame */
 
 #define BOX_X     10.0           /* the plot box, panel units */
 #define BOX_Y     42.0
@@ -568,6 +569,30 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m)
         view_fit(&jm->view[st], b[st][0], b[st][1], b[st][2], b[st][3], BOX_X, BOX_Y,
                  BOX_W, BOX_H, st >= PT_STAGE_VIEWPORT);
     if (s->matrix && pt_jmatrix_init(jm) != 0) { pt_jmodel_free(jm); return -1; }
+    if ((int64_t)s->fb_w * s->fb_h <= PT_JOURNEY_FRAMEMAX) {
+        if (pt_journey_render(&jm->frame, s) != 0) { pt_jmodel_free(jm); return -1; }
+        jm->has_frame = 1;
+    }
+    return 0;
+}
+
+int pt_journey_render(pt_fb *fb, const pt_scene *s)
+{
+    pt_options o;
+    pt_plan p;
+    pt_summary sum;
+    pt_listener quiet;                      /* no trace: every hook NULL */
+
+    memset(&quiet, 0, sizeof quiet);
+    pt_options_default(&o);
+    if (pt_plan_make(&p, s, &o) != 0) return -1;
+    if (pt_fb_init(fb, s->fb_w, s->fb_h, s->background) != 0) { pt_plan_free(&p); return -1; }
+    if (pt_run(s, &p, &o, &quiet, fb, &sum) != 0) {
+        pt_plan_free(&p);
+        pt_fb_free(fb);
+        return -1;
+    }
+    pt_plan_free(&p);
     return 0;
 }
 
@@ -575,6 +600,8 @@ void pt_jmodel_free(pt_jmodel *jm)
 {
     int st;
 
+    if (jm->has_frame) pt_fb_free(&jm->frame);
+    jm->has_frame = 0;
     if (jm->place)
         for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_free(&jm->place[st]);
     free(jm->place);
@@ -779,6 +806,53 @@ static void axis_name(char *t, size_t n, pt_stage st, int k, const char *arrow)
     snprintf(t, n, "%s%s", pt_stage_infos[st].coord[k], arrow);
 }
 
+/* Is pixel (x, y) of the rendered frame lit (not the scene's background)? */
+static int frame_lit(const pt_jmodel *jm, int64_t x, int64_t y)
+{
+    const unsigned char *c = jm->frame.rgb + 3 * ((size_t)y * (size_t)jm->frame.w + (size_t)x);
+    const unsigned char *bg = jm->s->background;
+
+    return c[0] != bg[0] || c[1] != bg[1] || c[2] != bg[2];
+}
+
+/* The whole rendered frame, every model's pixels, as grey cells over the
+** framebuffer: runs of lit pixels along each row; when a pixel is under a
+** unit of the panel, blocks of k x k pixels, lit when one of them is.  The
+** <path> says how many pixels are lit (data-pixels) and the block (data-k). */
+static void frame_cells(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v)
+{
+    int64_t W = jm->frame.w, H = jm->frame.h, k = v->s >= 1 ? 1 : (int64_t)ceil(1 / v->s);
+    int64_t bx, by, x, y, run, lit = 0;
+    pathw pw;
+    char attrs[128];
+
+    if (!jm->has_frame) return;
+    path_start(&pw, sb);
+    for (by = 0; by * k < H; by++) {
+        int64_t y1 = by * k + k < H ? by * k + k : H;
+        for (run = -1, bx = 0; ; bx++) {
+            int on = 0;
+            for (y = by * k; bx * k < W && y < y1; y++)
+                for (x = bx * k; x < bx * k + k && x < W; x++)
+                    if (frame_lit(jm, x, y)) { on = 1; lit++; }
+            if (on && run < 0) run = bx;
+            if (!on && run >= 0) {              /* a run of blocks ends */
+                double xa = (double)(run * k), xb = (double)(bx * k < W ? bx * k : W);
+                path_cmd(&pw, "M", 2, vx(v, xa), vy(v, (double)(by * k)));
+                path_cmd(&pw, "H", 1, vx(v, xb), 0);
+                path_cmd(&pw, "V", 1, vy(v, (double)y1), 0);
+                path_cmd(&pw, "H", 1, vx(v, xa), 0);
+                pt_sbuf_add(sb, "z");
+                run = -1;
+            }
+            if (bx * k >= W) break;
+        }
+    }
+    snprintf(attrs, sizeof attrs, "fill=\"" C_FRAMEPX "\" class=\"frame\" data-pixels=\"%lld\" "
+             "data-k=\"%lld\"", (long long)lit, (long long)k);
+    path_end(&pw, attrs);
+}
+
 static void bg_plane(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
     const pt_jview *v = &jm->view[st];
@@ -792,6 +866,7 @@ static void bg_plane(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
         vrect(sb, v, r[0], r[1], r[2] - r[0], r[3] - r[1], "#eef0f3", "#9aa1ab", "", 0);
         vp[0] = p->x_ul; vp[1] = p->y_ul; vp[2] = p->x_ul + p->w; vp[3] = p->y_ul + p->h;
         vrect(sb, v, vp[0], vp[1], p->w, p->h, C_AREA, "", "", 0);
+        frame_cells(sb, jm, v);
         grid(sb, v, r, 0, 5);
         outline(sb, v, vp, C_EDGE, 1.5);
         strcpy(a, "viewport at (x_ul, y_ul) = (");
@@ -1112,8 +1187,13 @@ static void inset(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stag
           st == PT_STAGE_FRAMEBUFFER ? "#eef0f3" : C_AREA, "", "", 0);
     if (st == PT_STAGE_FRAMEBUFFER) {
         double vp[4];
+        int64_t x, y;
         vp[0] = p->x_ul; vp[1] = p->y_ul; vp[2] = p->x_ul + p->w; vp[3] = p->y_ul + p->h;
         vrect(sb, &v, vp[0], vp[1], p->w, p->h, C_AREA, "", "", 0);
+        for (y = (int64_t)floor(v.y0); jm->has_frame && y < v.y1; y++)     /* the frame */
+            for (x = (int64_t)floor(v.x0); x < v.x1; x++)
+                if (x >= 0 && y >= 0 && x < p->W && y < p->H && frame_lit(jm, x, y))
+                    vrect(sb, &v, (double)x, (double)y, 1, 1, C_FRAMEPX, "", "", 0);
     }
     if (st != PT_STAGE_PIXEL) {
         cells cl;
@@ -1502,14 +1582,17 @@ static void legend(pt_sbuf *sb, const pt_jmodel *jm)
     text_at(sb, 36, y + 62, 12, "start", "fill=\"" C_TEXT "\"", "the rest of its model", 0);
     rect(sb, 15, y + 73, 14, 10, C_CELL, "", "");
     text_at(sb, 36, y + 83, 12, "start", "fill=\"" C_TEXT "\"", "pixels its segments light", 0);
-    rect(sb, 15, y + 95, 14, 10, C_AREA, C_EDGE, "");
+    rect(sb, 15, y + 95, 14, 10, C_FRAMEPX, "", "");
     text_at(sb, 36, y + 105, 12, "start", "fill=\"" C_TEXT "\"",
+            "the whole frame: every model's pixels", 0);
+    rect(sb, 15, y + 117, 14, 10, C_AREA, C_EDGE, "");
+    text_at(sb, 36, y + 127, 12, "start", "fill=\"" C_TEXT "\"",
             "what reaches the viewport", 0);
-    line(sb, 13, y + 124, 22, y + 124, C_VTX, 2.5, "");
-    arrowhead(sb, 13, y + 124, 31, y + 124, 10, C_VTX);
-    text_at(sb, 36, y + 128, 12, "start", "fill=\"" C_TEXT "\"",
+    line(sb, 13, y + 146, 22, y + 146, C_VTX, 2.5, "");
+    arrowhead(sb, 13, y + 146, 31, y + 146, 10, C_VTX);
+    text_at(sb, 36, y + 150, 12, "start", "fill=\"" C_TEXT "\"",
             "the vertex lies off the panel that way", 0);
-    y += 158;
+    y += 176;
     pt_fmt_shortest(a, p->translate.x); pt_fmt_shortest(b, p->translate.y);
     pt_fmt_shortest(c, p->translate.z);
     pt_sbuf_init(&u);

@@ -10,7 +10,8 @@
 **   3 image plane      the view rectangle [-1, 1]^2 and the projected wireframe
 **   4 logical pixels   the logical viewport [0.5, w+0.5] x [0.5, h+0.5], y up
 **   5 viewport         the w x h pixel grid, y down, the vertex's pixel filled
-**   6 framebuffer      the W x H framebuffer with the viewport outlined
+**   6 framebuffer      the W x H framebuffer with the viewport outlined and
+**                      the whole frame's pixels, every model's, in grey
 **   7 pixel array      the array as a strip of rows, the index marked
 **
 ** Every panel marks the vertex and labels it with its coordinates (the text of
@@ -43,6 +44,7 @@
 #define PT_JOURNEY_H
 
 #include <stdint.h>
+#include "core/pipetrace.h"
 #include "io/explain.h"
 #include "io/sbuf.h"
 
@@ -52,6 +54,8 @@
                                  ** stage's rectangle in each direction */
 #define PT_JOURNEY_MAXSEG  5000  /* faint wireframe: the first this many segments */
 #define PT_JOURNEY_MAXV    2000  /* the HTML page: at most this many vertices */
+#define PT_JOURNEY_FRAMEMAX 16777216  /* framebuffer panel: the whole frame drawn
+                                      ** up to this many pixels (W x H) */
 #define PT_JOURNEY_RED_RGB {214, 39, 40}    /* the vertex's red, "#d62728" in the
                                             ** panels (journey.c's C_VTX) */
 
@@ -79,6 +83,9 @@ typedef struct pt_jmodel {
     double depth;                /* camera panel: depth of the view pyramid */
     struct pt_jplace *place;     /* place[st]: stage st's lines, boxes and labels
                                  ** (jplace.h), recorded by its background; owned */
+    pt_fb frame;                 /* the scene rendered, every model: the
+                                 ** framebuffer panel's pixels; owned */
+    int has_frame;               /* 0: W x H > PT_JOURNEY_FRAMEMAX, none kept */
 } pt_jmodel;
 
 /* Lay out the panels of model m of scene s (the classic camera: !s->matrix),
@@ -88,6 +95,10 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m);
 
 /* Free what *jm owns (a zeroed or freed jm too).  This function can't fail. */
 void pt_jmodel_free(pt_jmodel *jm);
+
+/* Render scene s into fb (initialised here) as `pipetrace render` does, with
+** no trace.  Returns 0, or -1 when out of memory (fb is then freed). */
+int pt_journey_render(pt_fb *fb, const pt_scene *s);
 
 /* The panel's title ("camera space") and its coordinates ("(x_c, y_c, z_c)").
 ** This function can't fail. */

@@ -96,7 +96,7 @@ static const char body[] =
 "</main>\n"
 "<footer id=\"foot\">In the panels: red, the vertex (an arrow at the edge when it lies off "
 "the panel); blue, the segments that use it and the pixels they light; grey, the rest of "
-"its model.  Keys: left and right arrows (or Page Up and Page Down, Space) move between "
+"its model, and in the framebuffer the whole frame, every model's pixels.  Keys: left and right arrows (or Page Up and Page Down, Space) move between "
 "stages, Home and End go to the first and the last, P shows one panel large for a projector "
 "(presenter mode), Escape leaves it.  Numbers are the shortest "
 "decimals that read back to the same double, as in the trace (pipetrace --format jsonl)."
