@@ -53,15 +53,21 @@ double pt_jtext_width(const char *t, double size, int face)
     return size * (double)sum / 1000.0;
 }
 
+/* The box of a text w wide at size with its baseline at (x, y). */
+static void box_of(double b[4], double x, double y, double w, double size, const char *anchor)
+{
+    if (strcmp(anchor, "middle") == 0) x -= w / 2;
+    else if (strcmp(anchor, "end") == 0) x -= w;
+    b[0] = x; b[1] = y - ASCENT * size; b[2] = x + w; b[3] = y + DESCENT * size;
+}
+
 void pt_jtext_box(double b[4], double x, double y, double size, const char *anchor,
                   int face, const char *t, double maxw)
 {
     double w = pt_jtext_width(t, size, face);
 
     if (maxw > 0 && w > maxw) w = maxw;                 /* squeezed (textLength) */
-    if (strcmp(anchor, "middle") == 0) x -= w / 2;
-    else if (strcmp(anchor, "end") == 0) x -= w;
-    b[0] = x; b[1] = y - ASCENT * size; b[2] = x + w; b[3] = y + DESCENT * size;
+    box_of(b, x, y, w, size, anchor);
 }
 
 void pt_jplace_init(pt_jplace *p, const double a[4])
@@ -139,9 +145,15 @@ void pt_jplace_label(pt_jplace *p, const pt_jlabel *l)
 {
     void *a = p->lab;
 
+    pt_jlabel *n;
+
     if (!room(p, &a, &p->nlab, &p->caplab, sizeof *p->lab)) return;
     p->lab = a;
-    p->lab[p->nlab++] = *l;
+    n = &p->lab[p->nlab++];
+    *n = *l;
+    n->w = pt_jtext_width(n->text, n->size, pt_jtext_face(n->extra));
+    if (n->maxw > 0 && n->w > n->maxw) n->w = n->maxw;
+    box_of(n->want, n->x, n->y, n->w, n->size, n->anchor);
 }
 
 static int overlaps(const double a[4], const double *b)   /* b: 4 numbers or more */
@@ -172,7 +184,8 @@ static int crosses(const double s[5], const double b[4])
 
 static void label_box(double b[4], const pt_jlabel *l, double x, double y)
 {
-    pt_jtext_box(b, x, y, l->size, l->anchor, pt_jtext_face(l->extra), l->text, l->maxw);
+    b[0] = l->want[0] + (x - l->x); b[2] = l->want[2] + (x - l->x);
+    b[1] = l->want[1] + (y - l->y); b[3] = l->want[3] + (y - l->y);
 }
 
 /* Cost of box b (grown by GAP); the labels not yet placed (done[i] == 0, or
@@ -191,10 +204,8 @@ static double cost_of(const pt_jplace *p, const double b[4], const unsigned char
     for (i = 0; lines && i < p->nseg; i++)
         if (crosses(p->seg[i], g)) c += p->seg[i][4];
     for (i = 0; i < p->nlab; i++) {
-        double w[4];
         if ((done && done[i]) || &p->lab[i] == l) continue;
-        label_box(w, &p->lab[i], p->lab[i].x, p->lab[i].y);
-        if (overlaps(g, w)) c += 1000;
+        if (overlaps(g, p->lab[i].want)) c += 1000;
     }
     return c;
 }

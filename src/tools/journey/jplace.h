@@ -43,6 +43,8 @@
 typedef struct pt_jlabel {
     double x, y, size, maxw;     /* the wanted place (baseline), size, squeeze width */
     int prio;
+    double w, want[4];           /* set by pt_jplace_label(): its width, its box
+                                 ** at the wanted place */
     char anchor[8];              /* "start", "middle", "end" */
     char extra[PT_JLABEL_EXTRA];
     char text[PT_JLABEL_TEXT];
