@@ -167,7 +167,7 @@ static void path_end(pathw *p, const char *attrs)
 static void line(pt_sbuf *sb, double ax, double ay, double bx, double by,
                  const char *stroke, double width, const char *extra)
 {
-    if (cur) pt_jplace_seg(cur, ax, ay, bx, by, strstr(extra, "dasharray") != NULL);
+    if (cur) pt_jplace_seg(cur, ax, ay, bx, by);
     pt_sbuf_add(sb, "<line");
     attr(sb, "x1", ax); attr(sb, "y1", ay); attr(sb, "x2", bx); attr(sb, "y2", by);
     pt_sbuf_addf(sb, " stroke=\"%s\"", stroke);
@@ -945,7 +945,7 @@ static void bg_index(pt_sbuf *sb, const pt_jmodel *jm)
             double x = STRIP_X + STRIP_W * r / p->H;
             pt_sbuf_add(sb, "<line");
             attr(sb, "x1", x); attr(sb, "y1", 68); attr(sb, "x2", x); attr(sb, "y2", 86);
-            if (cur) pt_jplace_seg(cur, x, 68, x, 86, 0);
+            if (cur) pt_jplace_seg(cur, x, 68, x, 86);
             pt_sbuf_add(sb, "/>\n");
         }
         pt_sbuf_add(sb, "</g>\n");

@@ -342,9 +342,10 @@ static void bg_view(pt_sbuf *sb, const pt_jmodel *jm)
     point3(sb, jm, PT_STAGE_VIEW, o, "eye");
     pt_fmt_shortest(a, jm->s->znear);
     snprintf(t, sizeof t, "near plane z_v = %s", a);
+    pt_jtext_label(sb, BX + 6, BY + BH - 20, 10, "start", LABEL, "frustum: from the near plane",
+                   0);
     pt_jtext_label(sb, BX + 6, BY + BH - 8, 10, "start", LABEL,
-             D < jm->s->zfar ? "frustum: from the near plane; the far plane lies beyond"
-                             : "frustum: from the near plane to the far plane", BW - 12);
+                   D < jm->s->zfar ? "the far plane lies beyond" : "to the far plane", 0);
     pt_jtext_label(sb, BX + 6, BY + 14, 10, "start", LABEL, t, 0);
 }
 

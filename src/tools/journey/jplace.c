@@ -130,15 +130,14 @@ void pt_jplace_box(pt_jplace *p, double x0, double y0, double x1, double y1, dou
     p->box[p->nbox++][4] = cost;
 }
 
-void pt_jplace_seg(pt_jplace *p, double ax, double ay, double bx, double by, int guide)
+void pt_jplace_seg(pt_jplace *p, double ax, double ay, double bx, double by)
 {
     void *a = p->seg;
 
     if (!(isfinite(ax) && isfinite(ay) && isfinite(bx) && isfinite(by))) return;
     if (!room(p, &a, &p->nseg, &p->capseg, sizeof *p->seg)) return;
     p->seg = a;
-    put4(p->seg[p->nseg], ax, ay, bx, by);
-    p->seg[p->nseg++][4] = guide ? 20 : 100;
+    put4(p->seg[p->nseg++], ax, ay, bx, by);
 }
 
 void pt_jplace_label(pt_jplace *p, const pt_jlabel *l)
@@ -162,7 +161,7 @@ static int overlaps(const double a[4], const double *b)   /* b: 4 numbers or mor
 }
 
 /* Does segment s pass through box b?  (Liang-Barsky against b's four sides) */
-static int crosses(const double s[5], const double b[4])
+static int crosses(const double s[4], const double b[4])
 {
     double t0 = 0, t1 = 1, dx = s[2] - s[0], dy = s[3] - s[1];
     double q[4][2];
@@ -202,7 +201,7 @@ static double cost_of(const pt_jplace *p, const double b[4], const unsigned char
     for (i = 0; i < p->nbox; i++)
         if (overlaps(g, p->box[i])) c += p->box[i][4];
     for (i = 0; lines && i < p->nseg; i++)
-        if (crosses(p->seg[i], g)) c += p->seg[i][4];
+        if (crosses(p->seg[i], g)) c += 100;
     for (i = 0; i < p->nlab; i++) {
         if ((done && done[i]) || &p->lab[i] == l) continue;
         if (overlaps(g, p->lab[i].want)) c += 1000;

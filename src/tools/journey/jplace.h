@@ -11,12 +11,8 @@
 **
 **     cost = 1e6 * (leaves the area) + 1000 * (texts, labels, insets it overlaps)
 **          + 150 * (small marks it overlaps: a segment's end dot)
-**          + 100 * (lines it crosses) + 20 * (guides it crosses)
+**          + 100 * (lines it crosses, dashed ones too)
 **          + (how far it moved, panel units)
-**
-** A guide is a dashed line (a view pyramid's edge, an axis's negative half):
-** a label may lie over one, its white halo keeping both legible, when no
-** place is free.
 **
 ** The candidates are the wanted place and places moved from it by up to
 ** 106 units in sixteen directions, nearest first, and when none of those is
@@ -52,7 +48,7 @@ typedef struct pt_jlabel {
 
 typedef struct pt_jplace {
     double (*box)[5];            /* taken: x0, y0, x1, y1 (y down), the cost of covering */
-    double (*seg)[5];            /* lines: ax, ay, bx, by, the cost of crossing */
+    double (*seg)[4];            /* lines: ax, ay, bx, by */
     pt_jlabel *lab;              /* labels to place */
     size_t nbox, capbox, nseg, capseg, nlab, caplab;
     double area[4];              /* where labels may go */
@@ -88,7 +84,7 @@ void pt_jplace_back(pt_jplace *p, pt_jplace_mark m);
 #define PT_JPLACE_TAKEN 1000.0   /* pt_jplace_box(): a text, a label, an inset, the marker */
 #define PT_JPLACE_MARK  150.0    /* a small mark */
 void pt_jplace_box(pt_jplace *p, double x0, double y0, double x1, double y1, double cost);
-void pt_jplace_seg(pt_jplace *p, double ax, double ay, double bx, double by, int guide);
+void pt_jplace_seg(pt_jplace *p, double ax, double ay, double bx, double by);
 void pt_jplace_label(pt_jplace *p, const pt_jlabel *l);
 
 /* What box b would cost where it is (the formula above, without the move;
