@@ -38,6 +38,57 @@
 #include <string.h>
 #include "io/numfmt.h"
 
+/* ===== integers ===== */
+
+/* "00" "01" ... "99": the digits of 0..99, two by two. */
+static const char digit_pairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+/* The number of decimal digits of x (1 for 0). */
+static int u64_len(uint64_t x)
+{
+    int n = 1;
+
+    if (x >= UINT64_C(10000000000000000)) { n += 16; x /= UINT64_C(10000000000000000); }
+    if (x >= 100000000) { n += 8; x /= 100000000; }
+    if (x >= 10000) { n += 4; x /= 10000; }
+    if (x >= 100) { n += 2; x /= 100; }
+    return n + (x >= 10);
+}
+
+/* x's u64_len(x) digits, written backwards to end just before end: two a
+** step from digit_pairs, in 32-bit arithmetic below 10^8 (stores of two
+** bytes, no library call: these are most of a trace's bytes). */
+static void digits_back(char *end, uint64_t x)
+{
+    uint32_t y;
+    int k;
+
+    while (x >= 100000000) {                /* the low 8 digits, zeros too */
+        y = (uint32_t)(x % 100000000);
+        x /= 100000000;
+        for (k = 0; k < 4; k++) { end -= 2; memcpy(end, digit_pairs + 2 * (y % 100), 2); y /= 100; }
+    }
+    for (y = (uint32_t)x; y >= 100; y /= 100) { end -= 2; memcpy(end, digit_pairs + 2 * (y % 100), 2); }
+    if (y >= 10) { end -= 2; memcpy(end, digit_pairs + 2 * y, 2); }
+    else *--end = (char)('0' + y);
+}
+
+size_t pt_fmt_u64(char *buf, uint64_t x)
+{
+    int n = u64_len(x);
+
+    digits_back(buf + n, x);
+    return (size_t)n;
+}
+
+size_t pt_fmt_ulen(uint64_t x)
+{
+    return (size_t)u64_len(x);
+}
+
 /* ===== big integers, for exact powers of ten ===== */
 
 #define BIG_LIMBS 40             /* 1280 bits; the largest made is 10^324 */
@@ -322,45 +373,29 @@ static size_t nonfinite(char *buf, double x)
 /* x is an integer with |x| < 1e15: write it digit by digit ("-0" for -0.0). */
 static size_t int_digits(char *buf, double x)
 {
-    char b[24], *o = b + sizeof b;
-    uint64_t u = (uint64_t)fabs(x);
-    size_t n;
+    size_t neg = signbit(x) != 0, n;
 
-    do { *--o = (char)('0' + u % 10); u /= 10; } while (u);
-    if (signbit(x)) *--o = '-';
-    n = (size_t)(b + sizeof b - o);
-    memcpy(buf, o, n);
+    buf[0] = '-';                           /* overwritten when x >= 0 */
+    n = neg + pt_fmt_u64(buf + neg, (uint64_t)fabs(x));
     buf[n] = '\0';
     return n;
 }
 
-/* "00" "01" ... "99": the digits of 0..99, two by two. */
-static const char digit_pairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
-
 /* Spell [-]d * 10^e (d > 0, not a multiple of 10) the way "%.*g" does with
-** precision P = max(15, digits of d); see the top of the file. */
+** precision P = max(15, digits of d); see the top of the file.  The digits
+** are written once, at their places; where a point goes among them, the
+** ones after it move right by one byte. */
 static size_t g_style(char *buf, int neg, uint64_t d, int e)
 {
-    char dig[20], *o = buf;
-    int n = 20, exp10, i;
+    char *o = buf + (neg != 0);
+    int n = u64_len(d), exp10 = e + n - 1, i;   /* x = d.ddd 10^exp10 */
 
-    for (; d >= 100; d /= 100) {            /* two digits a division */
-        n -= 2;
-        memcpy(dig + n, digit_pairs + 2 * (d % 100), 2);
-    }
-    if (d >= 10) { n -= 2; memcpy(dig + n, digit_pairs + 2 * d, 2); }
-    else dig[--n] = (char)('0' + d);
-    memmove(dig, dig + n, (size_t)(20 - n));
-    n = 20 - n;                             /* the digits: dig[0..n) */
-    exp10 = e + n - 1;                      /* x = d.ddd 10^exp10 */
-    if (neg) *o++ = '-';
+    buf[0] = '-';                           /* overwritten when not neg */
     if (exp10 < -4 || exp10 >= (n > 15 ? n : 15)) {        /* d.ddde+XX */
         int a = exp10 < 0 ? -exp10 : exp10;
-        *o++ = dig[0];
-        if (n > 1) { *o++ = '.'; memcpy(o, dig + 1, (size_t)n - 1); o += n - 1; }
+        digits_back(o + 1 + n, d);          /* at o[1..n] */
+        o[0] = o[1];
+        if (n > 1) { o[1] = '.'; o += n + 1; } else o++;
         *o++ = 'e';
         *o++ = exp10 < 0 ? '-' : '+';
         if (a >= 100) *o++ = (char)('0' + a / 100);
@@ -369,14 +404,19 @@ static size_t g_style(char *buf, int neg, uint64_t d, int e)
     } else if (exp10 < 0) {                 /* 0.000ddd */
         *o++ = '0'; *o++ = '.';
         for (i = -1; i > exp10; i--) *o++ = '0';
-        memcpy(o, dig, (size_t)n); o += n;
-    } else {                                /* ddd.ddd or ddd000 */
-        for (i = 0; i <= exp10; i++) *o++ = i < n ? dig[i] : '0';
-        if (n > exp10 + 1) {
-            *o++ = '.';
-            memcpy(o, dig + exp10 + 1, (size_t)(n - exp10 - 1));
-            o += n - exp10 - 1;
-        }
+        digits_back(o + n, d);
+        o += n;
+    } else if (n > exp10 + 1) {             /* ddd.ddd */
+        char tail[16];                      /* the n - exp10 - 1 <= 16 after the point */
+        digits_back(o + n, d);
+        memcpy(tail, o + exp10 + 1, 16);    /* one fixed-size move, no library */
+        memcpy(o + exp10 + 2, tail, 16);    /* call (ends by buf + 35 <= PT_NUMLEN) */
+        o[exp10 + 1] = '.';
+        o += n + 1;
+    } else {                                /* ddd000 */
+        digits_back(o + n, d);
+        o += n;
+        for (i = n; i <= exp10; i++) *o++ = '0';
     }
     *o = '\0';
     return (size_t)(o - buf);

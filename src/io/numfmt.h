@@ -1,11 +1,12 @@
 /*
-** src/io/numfmt.h -- doubles as text: shortest round-trip, and fixed decimals
+** src/io/numfmt.h -- numbers as text: shortest round-trip, fixed decimals, integers
 ** See LICENSE for copyright and license.
 */
 #ifndef PT_NUMFMT_H
 #define PT_NUMFMT_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define PT_NUMLEN 40             /* room for any number these functions write */
 
@@ -18,5 +19,12 @@ size_t pt_fmt_shortest(char *buf, double x);
 ** |x| >= 1e15; non-finite as above.  0 <= prec <= 17.  Returns the length.
 ** Can't fail. */
 size_t pt_fmt_fixed(char *buf, double x, int prec);
+
+/* Write x's decimal digits at buf (20 bytes at most; no NUL: the writers put
+** them in place in a longer line).  Returns the length.  Can't fail. */
+size_t pt_fmt_u64(char *buf, uint64_t x);
+
+/* The number of digits pt_fmt_u64() writes for x.  Can't fail. */
+size_t pt_fmt_ulen(uint64_t x);
 
 #endif

@@ -46,13 +46,14 @@ static void put(pt_trace *t, const char *s, size_t n)
 
 static void puts_(pt_trace *t, const char *s) { put(t, s, strlen(s)); }
 
-/* Integers by hand: snprintf costs more than the rest of a pixel record. */
+static char *room(pt_trace *t, size_t n);
+
+/* Integers by hand (pt_fmt_u64): snprintf costs more than the rest of a
+** pixel record. */
 static void put_u64(pt_trace *t, uint64_t x)
 {
-    char b[24], *o = b + sizeof b;
-
-    do { *--o = (char)('0' + x % 10); x /= 10; } while (x);
-    put(t, o, (size_t)(b + sizeof b - o));
+    char *o = room(t, 20);
+    t->len += pt_fmt_u64(o, x);
 }
 
 /* hi * 2^64 + lo in decimal: long division by 10 on 32-bit limbs. */
@@ -94,8 +95,6 @@ static char *json_num_at(char *o, double x)     /* at o (PT_NUMLEN + 2 bytes) */
     *o++ = '"';
     return o;
 }
-
-static char *room(pt_trace *t, size_t n);
 
 static void put_json_num(pt_trace *t, double x)
 {
@@ -157,49 +156,36 @@ static char *room(pt_trace *t, size_t n)
     return t->buf + t->len;
 }
 
-/* Text: s right-aligned in width columns at o (n + padding bytes); returns
-** the end.  What put_col() puts, without a put per piece. */
-static char *col_at(char *o, const char *s, size_t n, size_t width)
-{
-    for (; width > n; width--) *o++ = ' ';
-    memcpy(o, s, n);
-    return o + n;
-}
-
-/* Text: x as "%12.*f" (pt_fmt_fixed: "%.*e" from 1e15 on), right-aligned. */
+/* Text: x as "%12.*f" (pt_fmt_fixed: "%.*e" from 1e15 on), right-aligned.
+** The number goes over in one fixed-size copy of all of b, the bytes past
+** its end included: they land in room that the next piece overwrites. */
 static void put_fixed_col(pt_trace *t, double x, int prec)
 {
-    char b[PT_NUMLEN], *o;
-    size_t n = pt_fmt_fixed(b, x, prec);
+    char b[PT_NUMLEN], *o = room(t, PT_NUMLEN + 12);
+    size_t n = pt_fmt_fixed(b, x, prec), pad = n < 12 ? 12 - n : 0;
 
-    o = room(t, PT_NUMLEN + 12);
-    t->len = (size_t)(col_at(o, b, n, 12) - t->buf);
+    memcpy(o, "            ", 12);
+    memcpy(o + pad, b, PT_NUMLEN);
+    t->len += pad + n;
 }
 
-/* Text: x's decimal digits, written backwards to end at end; returns their
-** start.  "%" PRIu64 by hand (snprintf costs more than the rest of a record). */
-static char *digits_to(char *end, uint64_t x)
-{
-    do { *--end = (char)('0' + x % 10); x /= 10; } while (x);
-    return end;
-}
-
-/* Text: "%*" PRId64 at o (at most 20 bytes plus padding); returns the end. */
+/* "%*" PRId64 at o (at most 20 bytes plus padding); returns the end.  Digits
+** by hand (snprintf costs more than the rest of a record). */
 static char *int_at(char *o, int64_t x, size_t width)
 {
-    char b[24], *end = b + sizeof b, *d;
+    uint64_t u = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
 
-    d = digits_to(end, x < 0 ? 0u - (uint64_t)x : (uint64_t)x);
-    if (x < 0) *--d = '-';
-    return col_at(o, d, (size_t)(end - d), width);
+    if (width) {
+        size_t n = pt_fmt_ulen(u) + (x < 0);
+        for (; width > n; width--) *o++ = ' ';
+    }
+    if (x < 0) *o++ = '-';
+    return o + pt_fmt_u64(o, u);
 }
 
 static char *u64_at(char *o, uint64_t x)            /* x's digits at o (20 bytes) */
 {
-    char b[24], *end = b + sizeof b, *d = digits_to(end, x);
-
-    memcpy(o, d, (size_t)(end - d));
-    return o + (end - d);
+    return o + pt_fmt_u64(o, x);
 }
 
 static char *str_at(char *o, const char *s)         /* s at o; returns the end */
@@ -218,17 +204,17 @@ static void put_int_col(pt_trace *t, int64_t x)
 ** by one space when longer. */
 static void put_who(pt_trace *t, const char *name, char kind, uint64_t n)
 {
-    char b[24], *end = b + sizeof b, *d = digits_to(end, n), *o;
-    size_t nlen = strlen(name), len = nlen + 2 + (size_t)(end - d);
+    size_t nlen = strlen(name), len = nlen + 2 + pt_fmt_ulen(n);
     size_t pad = len < 14 ? 14 - len : 1;
+    char *o;
 
-    *--d = kind;
-    *--d = ' ';
     put(t, name, nlen);
     o = room(t, 40);                                /* 2 + 20 + 13 bytes */
-    memcpy(o, d, (size_t)(end - d));
-    memset(o + (end - d), ' ', pad);
-    t->len += (size_t)(end - d) + pad;
+    o[0] = ' ';
+    o[1] = kind;
+    o += 2 + pt_fmt_u64(o + 2, n);
+    memcpy(o, "             ", 13);                 /* pad <= 13 of them */
+    t->len = (size_t)(o + pad - t->buf);
 }
 
 /* Text: a stage name left-aligned in 13 columns ("%-13s", cut to 13). */
