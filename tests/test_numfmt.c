@@ -195,7 +195,7 @@ static void agrees(double x)
     int ok;
 
     oracle_shortest(want, x);
-    ok = strcmp(got, want) == 0 && n == strlen(got) &&
+    ok = strcmp(got, want) == 0 && n == strlen(got) && n <= PT_SHORTLEN &&
          (isnan(x) || memcmp(&x, &y, sizeof x) == 0);
     group_n++;
     if (!ok && group_bad++ < 5)
@@ -297,6 +297,8 @@ int main(int argc, char **argv)
     PT_CHECK("num-1.10 non-finite", spells((double)NAN, "nan") && spells((double)INFINITY, "inf") &&
              spells(-(double)INFINITY, "-inf"));
     PT_CHECK("num-1.11 largest double", spells(DBL_MAX, "1.7976931348623157e+308"));
+    PT_CHECK("num-1.16 the longest spelling is PT_SHORTLEN bytes",
+             pt_fmt_shortest(b, -2.2250738585072014e-308) == PT_SHORTLEN);
     PT_CHECK("num-1.12 1e15 and 1e16 switch to exponent form",
              spells(1e15, "1e+15") && spells(1e16, "1e+16") && spells(999999999999999, "999999999999999"));
     PT_CHECK("num-1.13 exponent form below 1e-4",

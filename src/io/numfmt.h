@@ -9,6 +9,8 @@
 #include <stdint.h>
 
 #define PT_NUMLEN 40             /* room for any number these functions write */
+#define PT_SHORTLEN 24           /* the longest pt_fmt_shortest() spelling, NUL
+                                 ** not counted: "-2.2250738585072014e-308" */
 
 /* Write the shortest decimal that reads back (strtod) to exactly x, as "%g"
 ** would spell it ("0.1", "-1", "1e+300", "5e-324"); non-finite x as "nan",

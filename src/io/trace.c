@@ -84,12 +84,36 @@ static void put_i64(pt_trace *t, int64_t x)
     else put_u64(t, (uint64_t)x);
 }
 
+/* x as pt_fmt_shortest() spells it, at o (PT_NUMLEN bytes); returns the end.
+** A trace spells the same doubles again and again (a model's z in each of
+** its vertices, the camera's x and y where the translation's are 0, the
+** image plane's z), so the spellings of recent ones are kept in t->nums,
+** one slot for each hash of the bits; a slot holds the spelling of the
+** bits it holds (pt_trace_init() fills each with +0's), so a hit is always
+** right.  The copy is of a fixed PT_SHORTLEN bytes, no library call. */
+static char *short_at(pt_trace *t, char *o, double x)
+{
+    struct pt_trace_num *e;
+    uint64_t bits;
+
+    memcpy(&bits, &x, sizeof bits);
+    e = &t->nums[(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - PT_TRACE_NUMBITS)];
+    if (e->bits == bits) {
+        memcpy(o, e->s, PT_SHORTLEN);
+        return o + e->len;
+    }
+    e->bits = bits;
+    e->len = (unsigned char)pt_fmt_shortest(o, x);
+    memcpy(e->s, o, PT_SHORTLEN);
+    return o + e->len;
+}
+
 /* A double in JSON: shortest round-trip, non-finite as a string, negative
 ** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign). */
-static char *json_num_at(char *o, double x)     /* at o (PT_NUMLEN + 2 bytes) */
+static char *json_num_at(pt_trace *t, char *o, double x)   /* PT_NUMLEN + 2 bytes */
 {
     if (x == 0 && signbit(x)) { memcpy(o, "-0.0", 4); return o + 4; }
-    if (isfinite(x)) return o + pt_fmt_shortest(o, x);
+    if (isfinite(x)) return short_at(t, o, x);
     *o++ = '"';
     o += pt_fmt_shortest(o, x);
     *o++ = '"';
@@ -98,7 +122,7 @@ static char *json_num_at(char *o, double x)     /* at o (PT_NUMLEN + 2 bytes) */
 
 static void put_json_num(pt_trace *t, double x)
 {
-    t->len = (size_t)(json_num_at(room(t, PT_NUMLEN + 2), x) - t->buf);
+    t->len = (size_t)(json_num_at(t, room(t, PT_NUMLEN + 2), x) - t->buf);
 }
 
 static void put_short(pt_trace *t, double x)
@@ -616,7 +640,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         o = str_at(o, ",\"segment\":"); o = u64_at(o, t->seg);
         o = str_at(o, ",\"from\":"); o = u64_at(o, t->from);
         o = str_at(o, ",\"to\":"); o = u64_at(o, t->to);
-        o = str_at(o, ",\"t\":"); o = json_num_at(o, t->t_clip);
+        o = str_at(o, ",\"t\":"); o = json_num_at(t, o, t->t_clip);
     } else {
         puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
         o = room(t, PT_ROW_REST);
@@ -631,7 +655,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         const double v[4] = {r->x, r->y, r->z, r->w};
         int k;
         for (k = 0; k < pt_stage_infos[r->stage].nreal; k++)
-            o = json_num_at(key_at(o, r->stage, k), v[k]);
+            o = json_num_at(t, key_at(o, r->stage, k), v[k]);
     } else {                                /* viewport, framebuffer, index */
         const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
         int k;
@@ -690,7 +714,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     o = str_at(o, pt_stage_infos[r->stage].name);
     for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
         *o++ = ',';
-        if (k < dims) o += pt_fmt_shortest(o, v[k]);
+        if (k < dims) o = short_at(t, o, v[k]);
         else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
                  && pt_rec_has(r, k))
             o = int_at(o, k ? r->iy : r->ix, 0);
@@ -715,7 +739,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) o = int_at(o, r->i, 0);
     *o++ = ',';
     if (matrix) {                                       /* segment,t */
-        if (t->clipv) { o = u64_at(o, t->seg); *o++ = ','; o += pt_fmt_shortest(o, t->t_clip); }
+        if (t->clipv) { o = u64_at(o, t->seg); *o++ = ','; o = short_at(t, o, t->t_clip); }
         else *o++ = ',';
         *o++ = ',';
     }
@@ -901,6 +925,9 @@ static size_t names_len(const char *const *names, int n)
 
 void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
 {
+    char b[PT_NUMLEN];
+    size_t k;
+
     assert(names_len(pt_warn_names, PT_NWARN) <= 160);         /* PT_ROW_REST */
     assert(names_len(pt_cvv_names, PT_CVV_NPLANES) <= 160);
     t->f = f;
@@ -916,6 +943,11 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->plan = NULL;
     t->failed = 0;
     t->len = 0;
+    for (k = 0; k < sizeof t->nums / sizeof t->nums[0]; k++) {  /* each slot: +0 */
+        t->nums[k].bits = 0;
+        t->nums[k].len = (unsigned char)pt_fmt_shortest(b, 0.0);
+        memcpy(t->nums[k].s, b, PT_SHORTLEN);
+    }
 }
 
 void pt_trace_listener(pt_trace *t, pt_listener *l)
