@@ -61,15 +61,24 @@ static int u64_len(uint64_t x)
 /* x's u64_len(x) digits, written backwards to end just before end: two a
 ** step from digit_pairs, in 32-bit arithmetic below 10^8 (stores of two
 ** bytes, no library call: these are most of a trace's bytes). */
+static void eight_digits(char *o, uint32_t y)     /* y < 10^8, zeros too */
+{
+    uint32_t a = y / 10000, b = y % 10000;  /* two halves that do not wait */
+                                            /* for each other */
+    memcpy(o, digit_pairs + 2 * (a / 100), 2);
+    memcpy(o + 2, digit_pairs + 2 * (a % 100), 2);
+    memcpy(o + 4, digit_pairs + 2 * (b / 100), 2);
+    memcpy(o + 6, digit_pairs + 2 * (b % 100), 2);
+}
+
 static void digits_back(char *end, uint64_t x)
 {
     uint32_t y;
-    int k;
 
-    while (x >= 100000000) {                /* the low 8 digits, zeros too */
-        y = (uint32_t)(x % 100000000);
+    while (x >= 100000000) {                /* the low 8 digits */
+        end -= 8;
+        eight_digits(end, (uint32_t)(x % 100000000));
         x /= 100000000;
-        for (k = 0; k < 4; k++) { end -= 2; memcpy(end, digit_pairs + 2 * (y % 100), 2); y /= 100; }
     }
     for (y = (uint32_t)x; y >= 100; y /= 100) { end -= 2; memcpy(end, digit_pairs + 2 * (y % 100), 2); }
     if (y >= 10) { end -= 2; memcpy(end, digit_pairs + 2 * y, 2); }
@@ -198,15 +207,12 @@ typedef struct tenpow {
 ** one thread.  Each costs a few microseconds of big-integer work, once. */
 static tenpow tenpow_tab[K_MAX - K_MIN + 1];
 
-static const tenpow *tenpow_of(int k)
+static const tenpow *tenpow_make(tenpow *p, int k)
 {
-    tenpow *p = &tenpow_tab[k - K_MIN];
     big t;
     uint32_t top;
     int j, bits;
 
-    assert(k >= K_MIN && k <= K_MAX);
-    if (p->hi) return p;
     t.w[0] = 1; t.n = 1;                    /* t = 10^|k|, 2^(bits-1) <= t < 2^bits */
     for (j = k < 0 ? -k : k; j > 0; j -= 9) {
         uint32_t m = 1;
@@ -221,6 +227,14 @@ static const tenpow *tenpow_of(int k)
     p->exact = exact_scaled(1, -p->beta, k, &p->hi, &p->lo);
     if (!p->exact && ++p->lo == 0) p->hi++; /* round up: g = floor(..) + 1 */
     return p;
+}
+
+static const tenpow *tenpow_of(int k)
+{
+    tenpow *p = &tenpow_tab[k - K_MIN];
+
+    assert(k >= K_MIN && k <= K_MAX);
+    return p->hi ? p : tenpow_make(p, k);
 }
 
 /* ===== shortest digits ===== */
@@ -268,10 +282,12 @@ static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
 ** nearest any n < 2^56 gets is 2^-64.5 (found once for every q by a script
 ** outside this repository, as in Schubfach's and Ryu's proofs; nothing here
 ** relies on it: big integers settle any case that comes that close). */
-static uint64_t scaled(uint64_t n, int q, int k, const tenpow *p, int *exact)
+static uint64_t scaled_near(uint64_t n, int q, int k, uint64_t p2, int *exact);
+
+static inline uint64_t scaled(uint64_t n, int q, int k, const tenpow *p, int *exact)
 {
     int h = q + p->beta + 126;
-    uint64_t m, p0, p1, p2, t, hi;
+    uint64_t m, p0, p1, p2, t;
 
     assert(h >= 0 && h <= 3);
     m = n << h;
@@ -281,6 +297,14 @@ static uint64_t scaled(uint64_t n, int q, int k, const tenpow *p, int *exact)
     p2 += p1 < t;
     if (p->exact) { *exact = (p1 | p0) == 0; return p2; }
     if (p1 != 0 || p0 >= m) { *exact = 0; return p2; }
+    return scaled_near(n, q, k, p2, exact);
+}
+
+/* scaled() when y is within 2^-69 of an integer: settled exactly (rare). */
+static uint64_t scaled_near(uint64_t n, int q, int k, uint64_t p2, int *exact)
+{
+    uint64_t hi, t;
+
     if (k > 0 && k <= 24 && n % pow5(k) == 0) { *exact = 1; return p2; }
     *exact = exact_scaled(n, q - 2, k, &hi, &t);
     assert(hi == 0);
@@ -340,9 +364,17 @@ static void shortest(double x, uint64_t *d, int *e)
     s = f2 >> 1;                                            /* s = floor(v / 10^k) */
 
     sp = s / 10 * 10;                       /* sp <= s <= v/10^k < s+1 <= sp+10 */
-    if (above_low(&b, sp)) *d = sp;
-    else if (below_high(&b, sp + 10)) *d = sp + 10;
-    else {
+    *e = k;
+    if (above_low(&b, sp) || below_high(&b, sp + 10)) {
+        *d = (above_low(&b, sp) ? sp : sp + 10) / 10;
+        *e = k + 1;
+        if (*d % 10 == 0) {                 /* more trailing zeros: fewest divisions */
+            while (*d % 100000000 == 0) { *d /= 100000000; *e += 8; }
+            if (*d % 10000 == 0) { *d /= 10000; *e += 4; }
+            if (*d % 100 == 0) { *d /= 100; *e += 2; }
+            if (*d % 10 == 0) { *d /= 10; ++*e; }
+        }
+    } else {                                /* s or s + 1: no multiple of 10 */
         int u_in = above_low(&b, s), w_in = below_high(&b, s + 1);
         /* One is in R: the nearer is within 10^k/2 <= width/2 of v.  At a
         ** binade edge, when s 10^k is more than 2^q/4 below v, then (s+1) 10^k
@@ -354,11 +386,6 @@ static void shortest(double x, uint64_t *d, int *e)
         else if (!x2) *d = s + 1;           /* 2 v/10^k > 2s + 1 */
         else *d = s + (s & 1);              /* a tie: the even one */
     }
-    *e = k;
-    while (*d % 100000000 == 0) { *d /= 100000000; *e += 8; }  /* the trailing */
-    if (*d % 10000 == 0) { *d /= 10000; *e += 4; }             /* zeros, fewest */
-    if (*d % 100 == 0) { *d /= 100; *e += 2; }                 /* divisions */
-    if (*d % 10 == 0) { *d /= 10; ++*e; }
 }
 
 /* ===== spelling ===== */
@@ -381,10 +408,26 @@ static size_t int_digits(char *buf, double x)
     return n;
 }
 
+/* d's digits written backwards to end just before end, with a point before
+** the last f of them (0 < f < digits of d).  Each byte is stored once, at
+** its place: moving digits after they were written costs a stall (a load
+** of bytes from several stores waits for them to reach the cache). */
+static void digits_point(char *end, uint64_t d, int f)
+{
+    if (f >= 8) {
+        end -= 8;
+        eight_digits(end, (uint32_t)(d % 100000000));
+        d /= 100000000;
+        f -= 8;
+    }
+    for (; f >= 2; f -= 2) { end -= 2; memcpy(end, digit_pairs + 2 * (d % 100), 2); d /= 100; }
+    if (f) { *--end = (char)('0' + d % 10); d /= 10; }
+    *--end = '.';
+    digits_back(end, d);
+}
+
 /* Spell [-]d * 10^e (d > 0, not a multiple of 10) the way "%.*g" does with
-** precision P = max(15, digits of d); see the top of the file.  The digits
-** are written once, at their places; where a point goes among them, the
-** ones after it move right by one byte. */
+** precision P = max(15, digits of d); see the top of the file. */
 static size_t g_style(char *buf, int neg, uint64_t d, int e)
 {
     char *o = buf + (neg != 0);
@@ -407,12 +450,8 @@ static size_t g_style(char *buf, int neg, uint64_t d, int e)
         digits_back(o + n, d);
         o += n;
     } else if (n > exp10 + 1) {             /* ddd.ddd */
-        char tail[16];                      /* the n - exp10 - 1 <= 16 after the point */
-        digits_back(o + n, d);
-        memcpy(tail, o + exp10 + 1, 16);    /* one fixed-size move, no library */
-        memcpy(o + exp10 + 2, tail, 16);    /* call (ends by buf + 35 <= PT_NUMLEN) */
-        o[exp10 + 1] = '.';
         o += n + 1;
+        digits_point(o, d, n - exp10 - 1);
     } else {                                /* ddd000 */
         digits_back(o + n, d);
         o += n;
