@@ -49,13 +49,13 @@ static const char digit_pairs[] =
 /* The number of decimal digits of x (1 for 0). */
 static int u64_len(uint64_t x)
 {
-    int n = 1;
+    uint64_t p = UINT64_C(1000000000);
+    int n = 9;
 
-    if (x >= UINT64_C(10000000000000000)) { n += 16; x /= UINT64_C(10000000000000000); }
-    if (x >= 100000000) { n += 8; x /= 100000000; }
-    if (x >= 10000) { n += 4; x /= 10000; }
-    if (x >= 100) { n += 2; x /= 100; }
-    return n + (x >= 10);
+    if (x < 10000) return x < 100 ? 1 + (x >= 10) : 3 + (x >= 1000);
+    if (x < 100000000) return x < 1000000 ? 5 + (x >= 100000) : 7 + (x >= 10000000);
+    for (; n < 20 && x >= p; n++) p *= 10;  /* no overflow: p <= 10^19 */
+    return n;
 }
 
 /* x's u64_len(x) digits, written backwards to end just before end: two a
@@ -87,7 +87,18 @@ static void digits_back(char *end, uint64_t x)
 
 size_t pt_fmt_u64(char *buf, uint64_t x)
 {
-    int n = u64_len(x);
+    int n;
+
+    if (x < 10000) {                        /* most integers of a trace */
+        uint32_t hi = (uint32_t)x / 100, lo = (uint32_t)x % 100;
+        if (x < 10) { buf[0] = (char)('0' + x); return 1; }
+        if (x < 100) { memcpy(buf, digit_pairs + 2 * lo, 2); return 2; }
+        if (x < 1000) { buf[0] = (char)('0' + hi); memcpy(buf + 1, digit_pairs + 2 * lo, 2); return 3; }
+        memcpy(buf, digit_pairs + 2 * hi, 2);
+        memcpy(buf + 2, digit_pairs + 2 * lo, 2);
+        return 4;
+    }
+    n = u64_len(x);
 
     digits_back(buf + n, x);
     return (size_t)n;

@@ -761,17 +761,6 @@ static void on_vertex(void *ud, const pt_vrec *r)
 
 /* ===== raster records ===== */
 
-/* 1 when s is at most max bytes of printable ASCII without '"' or '\\': a
-** JSON string as it stands, which put_json_str() would copy unchanged. */
-static int json_plain(const char *s, size_t max)
-{
-    size_t k;
-
-    for (k = 0; s[k]; k++)
-        if (k == max || s[k] < 0x20 || s[k] > 0x7e || s[k] == '"' || s[k] == '\\') return 0;
-    return 1;
-}
-
 /* '{"type":"KIND","model":NAME,"segment":SEG': how a raster record opens. */
 static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint64_t seg)
 {
@@ -780,33 +769,71 @@ static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint6
     puts_(t, ",\"segment\":"); put_u64(t, seg);
 }
 
+/* How the pixel records of segment seg of m begin, up to the first number:
+** '{"type":"pixel","model":"m1","segment":7,"x":' (JSON Lines) or
+** "m1 s7          pixel        x_fb = " (text), written by the code that
+** writes every other record (then taken back out of the block) and kept in
+** t->pix for the pixels of the segment, which come in a row; t->pix_len is
+** 0 when it does not fit.  A name of up to 40 bytes, each escaped to 6 at
+** most, keeps the whole prefix below the room made first: no flush can
+** come between its start and its end. */
+static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
+{
+    size_t start;
+
+    t->pix_model = m;
+    t->pix_seg = seg;
+    t->pix_len = 0;
+    if (strlen(m->name) > 40) return;
+    room(t, 512);
+    start = t->len;
+    if (t->fmt == PT_FORMAT_TEXT) {
+        put_who(t, m->name, 's', seg);
+        puts_(t, "pixel        x_fb = ");
+    } else {
+        put_seg_json(t, "pixel", m, seg);
+        puts_(t, ",\"x\":");
+    }
+    assert(t->len >= start);
+    if (t->len - start <= sizeof t->pix) {
+        t->pix_len = t->len - start;
+        memcpy(t->pix, t->buf + start, t->pix_len);
+    }
+    t->len = start;
+}
+
 static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
                      int64_t x_fb, int64_t y_fb, int64_t idx)
 {
     pt_trace *t = ud;
     char *o;
 
-    if (t->fmt == PT_FORMAT_TEXT) {         /* the most frequent line: no puts_ */
-        put_who(t, m->name, 's', seg);
-        o = room(t, 100);                   /* 20 + 20 + 9 + 20 + 8 + 20 + 1 bytes */
-        o = int_at(str_at(o, "pixel        x_fb = "), x_fb, 12);
-        o = int_at(str_at(o, "  y_fb = "), y_fb, 12);
-        o = int_at(str_at(o, "  idx = "), idx, 0);
-        *o++ = '\n';
+    if (t->fmt != PT_FORMAT_TEXT && t->fmt != PT_FORMAT_JSONL) return;  /* CSV: none */
+    if (m != t->pix_model || seg != t->pix_seg) pixel_prefix(t, m, seg);
+    if (t->pix_len) {                       /* the usual case: one fixed-size copy */
+        o = room(t, sizeof t->pix + 100);   /* 20 + 9 + 20 + 8 + 20 + 1 bytes */
+        memcpy(o, t->pix, sizeof t->pix);
+        o += t->pix_len;
+        if (t->fmt == PT_FORMAT_TEXT) {
+            o = int_at(o, x_fb, 12);
+            o = int_at(str_at(o, "  y_fb = "), y_fb, 12);
+            o = int_at(str_at(o, "  idx = "), idx, 0);
+            *o++ = '\n';
+        } else {
+            o = int_at(o, x_fb, 0);
+            o = int_at(str_at(o, ",\"y\":"), y_fb, 0);
+            o = int_at(str_at(o, ",\"i\":"), idx, 0);
+            o = str_at(o, "}\n");
+        }
         t->len = (size_t)(o - t->buf);
         return;
     }
-    if (t->fmt != PT_FORMAT_JSONL) return;  /* CSV has no raster rows */
-    if (json_plain(m->name, 200)) {         /* the usual name: no put per piece */
-        o = room(t, 320);                   /* 25 + 200 + 13 + 20 + 3 * (5 + 20) + 2 */
-        o = str_at(str_at(str_at(o, "{\"type\":\"pixel\",\"model\":\""), m->name),
-                   "\",\"segment\":");
-        o = int_at(o, (int64_t)seg, 0);     /* seg <= 2^32: a model's segments */
-        o = int_at(str_at(o, ",\"x\":"), x_fb, 0);
-        o = int_at(str_at(o, ",\"y\":"), y_fb, 0);
-        o = int_at(str_at(o, ",\"i\":"), idx, 0);
-        o = str_at(o, "}\n");
-        t->len = (size_t)(o - t->buf);
+    if (t->fmt == PT_FORMAT_TEXT) {
+        put_who(t, m->name, 's', seg);
+        puts_(t, "pixel        x_fb = "); put_int_col(t, x_fb);
+        puts_(t, "  y_fb = "); put_int_col(t, y_fb);
+        puts_(t, "  idx = "); put_i64(t, idx);
+        put(t, "\n", 1);
         return;
     }
     put_seg_json(t, "pixel", m, seg);
@@ -943,6 +970,9 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->plan = NULL;
     t->failed = 0;
     t->len = 0;
+    t->pix_model = NULL;
+    t->pix_seg = 0;
+    t->pix_len = 0;
     for (k = 0; k < sizeof t->nums / sizeof t->nums[0]; k++) {  /* each slot: +0 */
         t->nums[k].bits = 0;
         t->nums[k].len = (unsigned char)pt_fmt_shortest(b, 0.0);

@@ -68,6 +68,10 @@ typedef struct pt_trace {
                                  ** when none was set), else 0 */
     size_t len;                  /* bytes waiting in buf */
     char buf[1 << 16];           /* output block */
+    const pt_model *pix_model;   /* the segment whose pixels are being written */
+    uint64_t pix_seg;            /*   (trace.c: pixel_prefix) */
+    size_t pix_len;              /* how their records begin: pix[0..pix_len), */
+    char pix[96];                /*   0 when that does not fit */
     struct pt_trace_num {        /* recent doubles, by their bits' hash, */
         uint64_t bits;           /*   spelled as pt_fmt_shortest() spells them */
         unsigned char len;       /*   (trace.c: short_at) */
