@@ -65,6 +65,20 @@ static int same_lines(const char *got, size_t n, const char *want, size_t wn)
     return 0;
 }
 
+/* End the trace t written to f and the lines w wanted; compare the two. */
+static int finish(pt_trace *t, FILE *f, FILE *w, char **got, size_t *n, char **want,
+                  size_t *wn)
+{
+    int ok = pt_trace_finish(t) == 0;
+
+    fclose(f);
+    fclose(w);
+    ok = ok && same_lines(*got, *n, *want, *wn);
+    free(*got);
+    free(*want);
+    return ok;
+}
+
 /* CSV (the classic camera's columns) of NREC model records from the pool. */
 static int csv_numbers(void)
 {
@@ -75,7 +89,7 @@ static int csv_numbers(void)
     char *got = NULL, *want = NULL, num[3][PT_NUMLEN];
     size_t n = 0, wn = 0;
     FILE *f = open_memstream(&got, &n), *w = open_memstream(&want, &wn);
-    int k, ok;
+    int k;
 
     if (!f || !w) return 0;
     for (k = 0; k < NPOOL; k++) pool[k] = pool_value(k);
@@ -97,13 +111,7 @@ static int csv_numbers(void)
         pt_fmt_shortest(num[2], r.z);
         fprintf(w, "m,%d,model,%s,%s,%s,,,,,\n", k + 1, num[0], num[1], num[2]);
     }
-    ok = pt_trace_finish(&t) == 0;
-    fclose(f);
-    fclose(w);
-    ok = ok && same_lines(got, n, want, wn);
-    free(got);
-    free(want);
-    return ok;
+    return finish(&t, f, w, &got, &n, &want, &wn);
 }
 
 /* Pixels of two models, segments switching now and then, in fmt. */
@@ -116,7 +124,7 @@ static int pixels(pt_format fmt)
     char *got = NULL, *want = NULL, who[128];
     size_t n = 0, wn = 0;
     FILE *f = open_memstream(&got, &n), *w = open_memstream(&want, &wn);
-    int k, mk = 0, ok;
+    int k, mk = 0;
     uint64_t seg = 1;
 
     if (!f || !w) return 0;
@@ -141,13 +149,7 @@ static int pixels(pt_format fmt)
                     "  idx = %" PRId64 "\n", who, x, y, i);
         }
     }
-    ok = pt_trace_finish(&t) == 0;
-    fclose(f);
-    fclose(w);
-    ok = ok && same_lines(got, n, want, wn);
-    free(got);
-    free(want);
-    return ok;
+    return finish(&t, f, w, &got, &n, &want, &wn);
 }
 
 int main(void)
