@@ -38,6 +38,7 @@ reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
 tread       2 $B/test_tread
+trace       1 $B/test_trace
 explain     1 $B/test_explain
 png         1 $B/test_png
 layers      1 sh tests/layers.sh

@@ -12,6 +12,7 @@
 ** runs N times as many random values for pt_fmt_fixed (a longer, one-off check).
 */
 #include <float.h>
+#include <inttypes.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -194,7 +195,7 @@ static void agrees(double x)
     int ok;
 
     oracle_shortest(want, x);
-    ok = strcmp(got, want) == 0 && n == strlen(got) &&
+    ok = strcmp(got, want) == 0 && n == strlen(got) && n <= PT_SHORTLEN &&
          (isnan(x) || memcmp(&x, &y, sizeof x) == 0);
     group_n++;
     if (!ok && group_bad++ < 5)
@@ -259,6 +260,24 @@ static double small_decimal(void)
     return r >> 30 & 1 ? -d : d;
 }
 
+/* pt_fmt_u64() and pt_fmt_ulen() against "%" PRIu64: x and its neighbours. */
+static int u64_agrees(uint64_t x)
+{
+    char got[PT_NUMLEN], want[PT_NUMLEN];
+    int d, ok = 1;
+
+    for (d = -1; d <= 1; d++) {
+        uint64_t y = x + (uint64_t)(int64_t)d;
+        size_t n = pt_fmt_u64(got, y);
+        snprintf(want, sizeof want, "%" PRIu64, y);
+        if (n != strlen(want) || pt_fmt_ulen(y) != n || memcmp(got, want, n) != 0) {
+            if (ok) printf("  %s spelled '%.*s'\n", want, (int)n, got);
+            ok = 0;
+        }
+    }
+    return ok;
+}
+
 int main(int argc, char **argv)
 {
     char b[PT_NUMLEN];
@@ -278,6 +297,8 @@ int main(int argc, char **argv)
     PT_CHECK("num-1.10 non-finite", spells((double)NAN, "nan") && spells((double)INFINITY, "inf") &&
              spells(-(double)INFINITY, "-inf"));
     PT_CHECK("num-1.11 largest double", spells(DBL_MAX, "1.7976931348623157e+308"));
+    PT_CHECK("num-1.16 the longest spelling is PT_SHORTLEN bytes",
+             pt_fmt_shortest(b, -2.2250738585072014e-308) == PT_SHORTLEN);
     PT_CHECK("num-1.12 1e15 and 1e16 switch to exponent form",
              spells(1e15, "1e+15") && spells(1e16, "1e+16") && spells(999999999999999, "999999999999999"));
     PT_CHECK("num-1.13 exponent form below 1e-4",
@@ -368,6 +389,15 @@ int main(int argc, char **argv)
     }
     PT_CHECK("num-4.8 typical values: a/b*c, a*b+c of small decimals",
              group_done("num-4.8 a/b*c, a*b+c of small decimals"));
+
+    {
+        uint64_t p = 1;
+        int ok = u64_agrees(0) && u64_agrees(UINT64_MAX) && u64_agrees(UINT64_MAX - 1);
+        for (k = 0; k < 20; k++, p *= 10) ok &= u64_agrees(p);    /* 10^k - 1, 10^k, + 1 */
+        PT_CHECK("num-6.1 integers: 0, 10^k +- 1, the largest, as %" PRIu64 " writes them", ok);
+        for (k = 0; k < 100000; k++) ok &= u64_agrees(next_random() >> (next_random() % 64));
+        PT_CHECK("num-6.2 integers: 100000 random ones of every length", ok);
+    }
 
     pt_fmt_fixed(b, 5.497501249375313, 6);
     PT_CHECK("num-3.1 fixed, 6 digits", strcmp(b, "5.497501") == 0);

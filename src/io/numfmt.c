@@ -38,6 +38,77 @@
 #include <string.h>
 #include "io/numfmt.h"
 
+/* ===== integers ===== */
+
+/* "00" "01" ... "99": the digits of 0..99, two by two. */
+static const char digit_pairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+/* The number of decimal digits of x (1 for 0). */
+static int u64_len(uint64_t x)
+{
+    uint64_t p = UINT64_C(1000000000);
+    int n = 9;
+
+    if (x < 10000) return x < 100 ? 1 + (x >= 10) : 3 + (x >= 1000);
+    if (x < 100000000) return x < 1000000 ? 5 + (x >= 100000) : 7 + (x >= 10000000);
+    for (; n < 20 && x >= p; n++) p *= 10;  /* no overflow: p <= 10^19 */
+    return n;
+}
+
+/* x's u64_len(x) digits, written backwards to end just before end: two a
+** step from digit_pairs, in 32-bit arithmetic below 10^8 (stores of two
+** bytes, no library call: these are most of a trace's bytes). */
+static void eight_digits(char *o, uint32_t y)     /* y < 10^8, zeros too */
+{
+    uint32_t a = y / 10000, b = y % 10000;  /* two halves that do not wait */
+                                            /* for each other */
+    memcpy(o, digit_pairs + 2 * (a / 100), 2);
+    memcpy(o + 2, digit_pairs + 2 * (a % 100), 2);
+    memcpy(o + 4, digit_pairs + 2 * (b / 100), 2);
+    memcpy(o + 6, digit_pairs + 2 * (b % 100), 2);
+}
+
+static void digits_back(char *end, uint64_t x)
+{
+    uint32_t y;
+
+    while (x >= 100000000) {                /* the low 8 digits */
+        end -= 8;
+        eight_digits(end, (uint32_t)(x % 100000000));
+        x /= 100000000;
+    }
+    for (y = (uint32_t)x; y >= 100; y /= 100) { end -= 2; memcpy(end, digit_pairs + 2 * (y % 100), 2); }
+    if (y >= 10) { end -= 2; memcpy(end, digit_pairs + 2 * y, 2); }
+    else *--end = (char)('0' + y);
+}
+
+size_t pt_fmt_u64(char *buf, uint64_t x)
+{
+    int n;
+
+    if (x < 10000) {                        /* most integers of a trace */
+        uint32_t hi = (uint32_t)x / 100, lo = (uint32_t)x % 100;
+        if (x < 10) { buf[0] = (char)('0' + x); return 1; }
+        if (x < 100) { memcpy(buf, digit_pairs + 2 * lo, 2); return 2; }
+        if (x < 1000) { buf[0] = (char)('0' + hi); memcpy(buf + 1, digit_pairs + 2 * lo, 2); return 3; }
+        memcpy(buf, digit_pairs + 2 * hi, 2);
+        memcpy(buf + 2, digit_pairs + 2 * lo, 2);
+        return 4;
+    }
+    n = u64_len(x);
+
+    digits_back(buf + n, x);
+    return (size_t)n;
+}
+
+size_t pt_fmt_ulen(uint64_t x)
+{
+    return (size_t)u64_len(x);
+}
+
 /* ===== big integers, for exact powers of ten ===== */
 
 #define BIG_LIMBS 40             /* 1280 bits; the largest made is 10^324 */
@@ -147,15 +218,12 @@ typedef struct tenpow {
 ** one thread.  Each costs a few microseconds of big-integer work, once. */
 static tenpow tenpow_tab[K_MAX - K_MIN + 1];
 
-static const tenpow *tenpow_of(int k)
+static const tenpow *tenpow_make(tenpow *p, int k)
 {
-    tenpow *p = &tenpow_tab[k - K_MIN];
     big t;
     uint32_t top;
     int j, bits;
 
-    assert(k >= K_MIN && k <= K_MAX);
-    if (p->hi) return p;
     t.w[0] = 1; t.n = 1;                    /* t = 10^|k|, 2^(bits-1) <= t < 2^bits */
     for (j = k < 0 ? -k : k; j > 0; j -= 9) {
         uint32_t m = 1;
@@ -170,6 +238,14 @@ static const tenpow *tenpow_of(int k)
     p->exact = exact_scaled(1, -p->beta, k, &p->hi, &p->lo);
     if (!p->exact && ++p->lo == 0) p->hi++; /* round up: g = floor(..) + 1 */
     return p;
+}
+
+static const tenpow *tenpow_of(int k)
+{
+    tenpow *p = &tenpow_tab[k - K_MIN];
+
+    assert(k >= K_MIN && k <= K_MAX);
+    return p->hi ? p : tenpow_make(p, k);
 }
 
 /* ===== shortest digits ===== */
@@ -217,10 +293,12 @@ static uint64_t mul_64x64(uint64_t a, uint64_t b, uint64_t *lo)
 ** nearest any n < 2^56 gets is 2^-64.5 (found once for every q by a script
 ** outside this repository, as in Schubfach's and Ryu's proofs; nothing here
 ** relies on it: big integers settle any case that comes that close). */
-static uint64_t scaled(uint64_t n, int q, int k, const tenpow *p, int *exact)
+static uint64_t scaled_near(uint64_t n, int q, int k, uint64_t p2, int *exact);
+
+static inline uint64_t scaled(uint64_t n, int q, int k, const tenpow *p, int *exact)
 {
     int h = q + p->beta + 126;
-    uint64_t m, p0, p1, p2, t, hi;
+    uint64_t m, p0, p1, p2, t;
 
     assert(h >= 0 && h <= 3);
     m = n << h;
@@ -230,6 +308,14 @@ static uint64_t scaled(uint64_t n, int q, int k, const tenpow *p, int *exact)
     p2 += p1 < t;
     if (p->exact) { *exact = (p1 | p0) == 0; return p2; }
     if (p1 != 0 || p0 >= m) { *exact = 0; return p2; }
+    return scaled_near(n, q, k, p2, exact);
+}
+
+/* scaled() when y is within 2^-69 of an integer: settled exactly (rare). */
+static uint64_t scaled_near(uint64_t n, int q, int k, uint64_t p2, int *exact)
+{
+    uint64_t hi, t;
+
     if (k > 0 && k <= 24 && n % pow5(k) == 0) { *exact = 1; return p2; }
     *exact = exact_scaled(n, q - 2, k, &hi, &t);
     assert(hi == 0);
@@ -289,9 +375,17 @@ static void shortest(double x, uint64_t *d, int *e)
     s = f2 >> 1;                                            /* s = floor(v / 10^k) */
 
     sp = s / 10 * 10;                       /* sp <= s <= v/10^k < s+1 <= sp+10 */
-    if (above_low(&b, sp)) *d = sp;
-    else if (below_high(&b, sp + 10)) *d = sp + 10;
-    else {
+    *e = k;
+    if (above_low(&b, sp) || below_high(&b, sp + 10)) {
+        *d = (above_low(&b, sp) ? sp : sp + 10) / 10;
+        *e = k + 1;
+        if (*d % 10 == 0) {                 /* more trailing zeros: fewest divisions */
+            while (*d % 100000000 == 0) { *d /= 100000000; *e += 8; }
+            if (*d % 10000 == 0) { *d /= 10000; *e += 4; }
+            if (*d % 100 == 0) { *d /= 100; *e += 2; }
+            if (*d % 10 == 0) { *d /= 10; ++*e; }
+        }
+    } else {                                /* s or s + 1: no multiple of 10 */
         int u_in = above_low(&b, s), w_in = below_high(&b, s + 1);
         /* One is in R: the nearer is within 10^k/2 <= width/2 of v.  At a
         ** binade edge, when s 10^k is more than 2^q/4 below v, then (s+1) 10^k
@@ -303,11 +397,6 @@ static void shortest(double x, uint64_t *d, int *e)
         else if (!x2) *d = s + 1;           /* 2 v/10^k > 2s + 1 */
         else *d = s + (s & 1);              /* a tie: the even one */
     }
-    *e = k;
-    while (*d % 100000000 == 0) { *d /= 100000000; *e += 8; }  /* the trailing */
-    if (*d % 10000 == 0) { *d /= 10000; *e += 4; }             /* zeros, fewest */
-    if (*d % 100 == 0) { *d /= 100; *e += 2; }                 /* divisions */
-    if (*d % 10 == 0) { *d /= 10; ++*e; }
 }
 
 /* ===== spelling ===== */
@@ -322,45 +411,45 @@ static size_t nonfinite(char *buf, double x)
 /* x is an integer with |x| < 1e15: write it digit by digit ("-0" for -0.0). */
 static size_t int_digits(char *buf, double x)
 {
-    char b[24], *o = b + sizeof b;
-    uint64_t u = (uint64_t)fabs(x);
-    size_t n;
+    size_t neg = signbit(x) != 0, n;
 
-    do { *--o = (char)('0' + u % 10); u /= 10; } while (u);
-    if (signbit(x)) *--o = '-';
-    n = (size_t)(b + sizeof b - o);
-    memcpy(buf, o, n);
+    buf[0] = '-';                           /* overwritten when x >= 0 */
+    n = neg + pt_fmt_u64(buf + neg, (uint64_t)fabs(x));
     buf[n] = '\0';
     return n;
 }
 
-/* "00" "01" ... "99": the digits of 0..99, two by two. */
-static const char digit_pairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
+/* d's digits written backwards to end just before end, with a point before
+** the last f of them (0 < f < digits of d).  Each byte is stored once, at
+** its place: moving digits after they were written costs a stall (a load
+** of bytes from several stores waits for them to reach the cache). */
+static void digits_point(char *end, uint64_t d, int f)
+{
+    if (f >= 8) {
+        end -= 8;
+        eight_digits(end, (uint32_t)(d % 100000000));
+        d /= 100000000;
+        f -= 8;
+    }
+    for (; f >= 2; f -= 2) { end -= 2; memcpy(end, digit_pairs + 2 * (d % 100), 2); d /= 100; }
+    if (f) { *--end = (char)('0' + d % 10); d /= 10; }
+    *--end = '.';
+    digits_back(end, d);
+}
 
 /* Spell [-]d * 10^e (d > 0, not a multiple of 10) the way "%.*g" does with
 ** precision P = max(15, digits of d); see the top of the file. */
 static size_t g_style(char *buf, int neg, uint64_t d, int e)
 {
-    char dig[20], *o = buf;
-    int n = 20, exp10, i;
+    char *o = buf + (neg != 0);
+    int n = u64_len(d), exp10 = e + n - 1, i;   /* x = d.ddd 10^exp10 */
 
-    for (; d >= 100; d /= 100) {            /* two digits a division */
-        n -= 2;
-        memcpy(dig + n, digit_pairs + 2 * (d % 100), 2);
-    }
-    if (d >= 10) { n -= 2; memcpy(dig + n, digit_pairs + 2 * d, 2); }
-    else dig[--n] = (char)('0' + d);
-    memmove(dig, dig + n, (size_t)(20 - n));
-    n = 20 - n;                             /* the digits: dig[0..n) */
-    exp10 = e + n - 1;                      /* x = d.ddd 10^exp10 */
-    if (neg) *o++ = '-';
+    buf[0] = '-';                           /* overwritten when not neg */
     if (exp10 < -4 || exp10 >= (n > 15 ? n : 15)) {        /* d.ddde+XX */
         int a = exp10 < 0 ? -exp10 : exp10;
-        *o++ = dig[0];
-        if (n > 1) { *o++ = '.'; memcpy(o, dig + 1, (size_t)n - 1); o += n - 1; }
+        digits_back(o + 1 + n, d);          /* at o[1..n] */
+        o[0] = o[1];
+        if (n > 1) { o[1] = '.'; o += n + 1; } else o++;
         *o++ = 'e';
         *o++ = exp10 < 0 ? '-' : '+';
         if (a >= 100) *o++ = (char)('0' + a / 100);
@@ -369,14 +458,15 @@ static size_t g_style(char *buf, int neg, uint64_t d, int e)
     } else if (exp10 < 0) {                 /* 0.000ddd */
         *o++ = '0'; *o++ = '.';
         for (i = -1; i > exp10; i--) *o++ = '0';
-        memcpy(o, dig, (size_t)n); o += n;
-    } else {                                /* ddd.ddd or ddd000 */
-        for (i = 0; i <= exp10; i++) *o++ = i < n ? dig[i] : '0';
-        if (n > exp10 + 1) {
-            *o++ = '.';
-            memcpy(o, dig + exp10 + 1, (size_t)(n - exp10 - 1));
-            o += n - exp10 - 1;
-        }
+        digits_back(o + n, d);
+        o += n;
+    } else if (n > exp10 + 1) {             /* ddd.ddd */
+        o += n + 1;
+        digits_point(o, d, n - exp10 - 1);
+    } else {                                /* ddd000 */
+        digits_back(o + n, d);
+        o += n;
+        for (i = n; i <= exp10; i++) *o++ = '0';
     }
     *o = '\0';
     return (size_t)(o - buf);

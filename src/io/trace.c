@@ -46,13 +46,14 @@ static void put(pt_trace *t, const char *s, size_t n)
 
 static void puts_(pt_trace *t, const char *s) { put(t, s, strlen(s)); }
 
-/* Integers by hand: snprintf costs more than the rest of a pixel record. */
+static char *room(pt_trace *t, size_t n);
+
+/* Integers by hand (pt_fmt_u64): snprintf costs more than the rest of a
+** pixel record. */
 static void put_u64(pt_trace *t, uint64_t x)
 {
-    char b[24], *o = b + sizeof b;
-
-    do { *--o = (char)('0' + x % 10); x /= 10; } while (x);
-    put(t, o, (size_t)(b + sizeof b - o));
+    char *o = room(t, 20);
+    t->len += pt_fmt_u64(o, x);
 }
 
 /* hi * 2^64 + lo in decimal: long division by 10 on 32-bit limbs. */
@@ -83,23 +84,45 @@ static void put_i64(pt_trace *t, int64_t x)
     else put_u64(t, (uint64_t)x);
 }
 
+/* x as pt_fmt_shortest() spells it, at o (PT_NUMLEN bytes); returns the end.
+** A trace spells the same doubles again and again (a model's z in each of
+** its vertices, the camera's x and y where the translation's are 0, the
+** image plane's z), so the spellings of recent ones are kept in t->nums,
+** one slot for each hash of the bits; a slot holds the spelling of the
+** bits it holds (pt_trace_init() fills each with +0's), so a hit is always
+** right.  The copy is of a fixed PT_SHORTLEN bytes, no library call. */
+static char *short_at(pt_trace *t, char *o, double x)
+{
+    struct pt_trace_num *e;
+    uint64_t bits;
+
+    memcpy(&bits, &x, sizeof bits);
+    e = &t->nums[(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - PT_TRACE_NUMBITS)];
+    if (e->bits == bits) {
+        memcpy(o, e->s, PT_SHORTLEN);
+        return o + e->len;
+    }
+    e->bits = bits;
+    e->len = (unsigned char)pt_fmt_shortest(o, x);
+    memcpy(e->s, o, PT_SHORTLEN);
+    return o + e->len;
+}
+
 /* A double in JSON: shortest round-trip, non-finite as a string, negative
 ** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign). */
-static char *json_num_at(char *o, double x)     /* at o (PT_NUMLEN + 2 bytes) */
+static char *json_num_at(pt_trace *t, char *o, double x)   /* PT_NUMLEN + 2 bytes */
 {
     if (x == 0 && signbit(x)) { memcpy(o, "-0.0", 4); return o + 4; }
-    if (isfinite(x)) return o + pt_fmt_shortest(o, x);
+    if (isfinite(x)) return short_at(t, o, x);
     *o++ = '"';
     o += pt_fmt_shortest(o, x);
     *o++ = '"';
     return o;
 }
 
-static char *room(pt_trace *t, size_t n);
-
 static void put_json_num(pt_trace *t, double x)
 {
-    t->len = (size_t)(json_num_at(room(t, PT_NUMLEN + 2), x) - t->buf);
+    t->len = (size_t)(json_num_at(t, room(t, PT_NUMLEN + 2), x) - t->buf);
 }
 
 static void put_short(pt_trace *t, double x)
@@ -157,49 +180,36 @@ static char *room(pt_trace *t, size_t n)
     return t->buf + t->len;
 }
 
-/* Text: s right-aligned in width columns at o (n + padding bytes); returns
-** the end.  What put_col() puts, without a put per piece. */
-static char *col_at(char *o, const char *s, size_t n, size_t width)
-{
-    for (; width > n; width--) *o++ = ' ';
-    memcpy(o, s, n);
-    return o + n;
-}
-
-/* Text: x as "%12.*f" (pt_fmt_fixed: "%.*e" from 1e15 on), right-aligned. */
+/* Text: x as "%12.*f" (pt_fmt_fixed: "%.*e" from 1e15 on), right-aligned.
+** The number goes over in one fixed-size copy of all of b, the bytes past
+** its end included: they land in room that the next piece overwrites. */
 static void put_fixed_col(pt_trace *t, double x, int prec)
 {
-    char b[PT_NUMLEN], *o;
-    size_t n = pt_fmt_fixed(b, x, prec);
+    char b[PT_NUMLEN], *o = room(t, PT_NUMLEN + 12);
+    size_t n = pt_fmt_fixed(b, x, prec), pad = n < 12 ? 12 - n : 0;
 
-    o = room(t, PT_NUMLEN + 12);
-    t->len = (size_t)(col_at(o, b, n, 12) - t->buf);
+    memcpy(o, "            ", 12);
+    memcpy(o + pad, b, PT_NUMLEN);
+    t->len += pad + n;
 }
 
-/* Text: x's decimal digits, written backwards to end at end; returns their
-** start.  "%" PRIu64 by hand (snprintf costs more than the rest of a record). */
-static char *digits_to(char *end, uint64_t x)
-{
-    do { *--end = (char)('0' + x % 10); x /= 10; } while (x);
-    return end;
-}
-
-/* Text: "%*" PRId64 at o (at most 20 bytes plus padding); returns the end. */
+/* "%*" PRId64 at o (at most 20 bytes plus padding); returns the end.  Digits
+** by hand (snprintf costs more than the rest of a record). */
 static char *int_at(char *o, int64_t x, size_t width)
 {
-    char b[24], *end = b + sizeof b, *d;
+    uint64_t u = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
 
-    d = digits_to(end, x < 0 ? 0u - (uint64_t)x : (uint64_t)x);
-    if (x < 0) *--d = '-';
-    return col_at(o, d, (size_t)(end - d), width);
+    if (width) {
+        size_t n = pt_fmt_ulen(u) + (x < 0);
+        for (; width > n; width--) *o++ = ' ';
+    }
+    if (x < 0) *o++ = '-';
+    return o + pt_fmt_u64(o, u);
 }
 
 static char *u64_at(char *o, uint64_t x)            /* x's digits at o (20 bytes) */
 {
-    char b[24], *end = b + sizeof b, *d = digits_to(end, x);
-
-    memcpy(o, d, (size_t)(end - d));
-    return o + (end - d);
+    return o + pt_fmt_u64(o, x);
 }
 
 static char *str_at(char *o, const char *s)         /* s at o; returns the end */
@@ -218,17 +228,17 @@ static void put_int_col(pt_trace *t, int64_t x)
 ** by one space when longer. */
 static void put_who(pt_trace *t, const char *name, char kind, uint64_t n)
 {
-    char b[24], *end = b + sizeof b, *d = digits_to(end, n), *o;
-    size_t nlen = strlen(name), len = nlen + 2 + (size_t)(end - d);
+    size_t nlen = strlen(name), len = nlen + 2 + pt_fmt_ulen(n);
     size_t pad = len < 14 ? 14 - len : 1;
+    char *o;
 
-    *--d = kind;
-    *--d = ' ';
     put(t, name, nlen);
     o = room(t, 40);                                /* 2 + 20 + 13 bytes */
-    memcpy(o, d, (size_t)(end - d));
-    memset(o + (end - d), ' ', pad);
-    t->len += (size_t)(end - d) + pad;
+    o[0] = ' ';
+    o[1] = kind;
+    o += 2 + pt_fmt_u64(o + 2, n);
+    memcpy(o, "             ", 13);                 /* pad <= 13 of them */
+    t->len = (size_t)(o + pad - t->buf);
 }
 
 /* Text: a stage name left-aligned in 13 columns ("%-13s", cut to 13). */
@@ -630,7 +640,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         o = str_at(o, ",\"segment\":"); o = u64_at(o, t->seg);
         o = str_at(o, ",\"from\":"); o = u64_at(o, t->from);
         o = str_at(o, ",\"to\":"); o = u64_at(o, t->to);
-        o = str_at(o, ",\"t\":"); o = json_num_at(o, t->t_clip);
+        o = str_at(o, ",\"t\":"); o = json_num_at(t, o, t->t_clip);
     } else {
         puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
         o = room(t, PT_ROW_REST);
@@ -645,7 +655,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         const double v[4] = {r->x, r->y, r->z, r->w};
         int k;
         for (k = 0; k < pt_stage_infos[r->stage].nreal; k++)
-            o = json_num_at(key_at(o, r->stage, k), v[k]);
+            o = json_num_at(t, key_at(o, r->stage, k), v[k]);
     } else {                                /* viewport, framebuffer, index */
         const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
         int k;
@@ -704,7 +714,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     o = str_at(o, pt_stage_infos[r->stage].name);
     for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
         *o++ = ',';
-        if (k < dims) o += pt_fmt_shortest(o, v[k]);
+        if (k < dims) o = short_at(t, o, v[k]);
         else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
                  && pt_rec_has(r, k))
             o = int_at(o, k ? r->iy : r->ix, 0);
@@ -729,7 +739,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) o = int_at(o, r->i, 0);
     *o++ = ',';
     if (matrix) {                                       /* segment,t */
-        if (t->clipv) { o = u64_at(o, t->seg); *o++ = ','; o += pt_fmt_shortest(o, t->t_clip); }
+        if (t->clipv) { o = u64_at(o, t->seg); *o++ = ','; o = short_at(t, o, t->t_clip); }
         else *o++ = ',';
         *o++ = ',';
     }
@@ -751,17 +761,6 @@ static void on_vertex(void *ud, const pt_vrec *r)
 
 /* ===== raster records ===== */
 
-/* 1 when s is at most max bytes of printable ASCII without '"' or '\\': a
-** JSON string as it stands, which put_json_str() would copy unchanged. */
-static int json_plain(const char *s, size_t max)
-{
-    size_t k;
-
-    for (k = 0; s[k]; k++)
-        if (k == max || s[k] < 0x20 || s[k] > 0x7e || s[k] == '"' || s[k] == '\\') return 0;
-    return 1;
-}
-
 /* '{"type":"KIND","model":NAME,"segment":SEG': how a raster record opens. */
 static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint64_t seg)
 {
@@ -770,33 +769,71 @@ static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint6
     puts_(t, ",\"segment\":"); put_u64(t, seg);
 }
 
+/* How the pixel records of segment seg of m begin, up to the first number:
+** '{"type":"pixel","model":"m1","segment":7,"x":' (JSON Lines) or
+** "m1 s7          pixel        x_fb = " (text), written by the code that
+** writes every other record (then taken back out of the block) and kept in
+** t->pix for the pixels of the segment, which come in a row; t->pix_len is
+** 0 when it does not fit.  A name of up to 40 bytes, each escaped to 6 at
+** most, keeps the whole prefix below the room made first: no flush can
+** come between its start and its end. */
+static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
+{
+    size_t start;
+
+    t->pix_model = m;
+    t->pix_seg = seg;
+    t->pix_len = 0;
+    if (strlen(m->name) > 40) return;
+    room(t, 512);
+    start = t->len;
+    if (t->fmt == PT_FORMAT_TEXT) {
+        put_who(t, m->name, 's', seg);
+        puts_(t, "pixel        x_fb = ");
+    } else {
+        put_seg_json(t, "pixel", m, seg);
+        puts_(t, ",\"x\":");
+    }
+    assert(t->len >= start);
+    if (t->len - start <= sizeof t->pix) {
+        t->pix_len = t->len - start;
+        memcpy(t->pix, t->buf + start, t->pix_len);
+    }
+    t->len = start;
+}
+
 static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
                      int64_t x_fb, int64_t y_fb, int64_t idx)
 {
     pt_trace *t = ud;
     char *o;
 
-    if (t->fmt == PT_FORMAT_TEXT) {         /* the most frequent line: no puts_ */
-        put_who(t, m->name, 's', seg);
-        o = room(t, 100);                   /* 20 + 20 + 9 + 20 + 8 + 20 + 1 bytes */
-        o = int_at(str_at(o, "pixel        x_fb = "), x_fb, 12);
-        o = int_at(str_at(o, "  y_fb = "), y_fb, 12);
-        o = int_at(str_at(o, "  idx = "), idx, 0);
-        *o++ = '\n';
+    if (t->fmt != PT_FORMAT_TEXT && t->fmt != PT_FORMAT_JSONL) return;  /* CSV: none */
+    if (m != t->pix_model || seg != t->pix_seg) pixel_prefix(t, m, seg);
+    if (t->pix_len) {                       /* the usual case: one fixed-size copy */
+        o = room(t, sizeof t->pix + 100);   /* 20 + 9 + 20 + 8 + 20 + 1 bytes */
+        memcpy(o, t->pix, sizeof t->pix);
+        o += t->pix_len;
+        if (t->fmt == PT_FORMAT_TEXT) {
+            o = int_at(o, x_fb, 12);
+            o = int_at(str_at(o, "  y_fb = "), y_fb, 12);
+            o = int_at(str_at(o, "  idx = "), idx, 0);
+            *o++ = '\n';
+        } else {
+            o = int_at(o, x_fb, 0);
+            o = int_at(str_at(o, ",\"y\":"), y_fb, 0);
+            o = int_at(str_at(o, ",\"i\":"), idx, 0);
+            o = str_at(o, "}\n");
+        }
         t->len = (size_t)(o - t->buf);
         return;
     }
-    if (t->fmt != PT_FORMAT_JSONL) return;  /* CSV has no raster rows */
-    if (json_plain(m->name, 200)) {         /* the usual name: no put per piece */
-        o = room(t, 320);                   /* 25 + 200 + 13 + 20 + 3 * (5 + 20) + 2 */
-        o = str_at(str_at(str_at(o, "{\"type\":\"pixel\",\"model\":\""), m->name),
-                   "\",\"segment\":");
-        o = int_at(o, (int64_t)seg, 0);     /* seg <= 2^32: a model's segments */
-        o = int_at(str_at(o, ",\"x\":"), x_fb, 0);
-        o = int_at(str_at(o, ",\"y\":"), y_fb, 0);
-        o = int_at(str_at(o, ",\"i\":"), idx, 0);
-        o = str_at(o, "}\n");
-        t->len = (size_t)(o - t->buf);
+    if (t->fmt == PT_FORMAT_TEXT) {
+        put_who(t, m->name, 's', seg);
+        puts_(t, "pixel        x_fb = "); put_int_col(t, x_fb);
+        puts_(t, "  y_fb = "); put_int_col(t, y_fb);
+        puts_(t, "  idx = "); put_i64(t, idx);
+        put(t, "\n", 1);
         return;
     }
     put_seg_json(t, "pixel", m, seg);
@@ -915,6 +952,9 @@ static size_t names_len(const char *const *names, int n)
 
 void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
 {
+    char b[PT_NUMLEN];
+    size_t k;
+
     assert(names_len(pt_warn_names, PT_NWARN) <= 160);         /* PT_ROW_REST */
     assert(names_len(pt_cvv_names, PT_CVV_NPLANES) <= 160);
     t->f = f;
@@ -930,6 +970,14 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->plan = NULL;
     t->failed = 0;
     t->len = 0;
+    t->pix_model = NULL;
+    t->pix_seg = 0;
+    t->pix_len = 0;
+    for (k = 0; k < sizeof t->nums / sizeof t->nums[0]; k++) {  /* each slot: +0 */
+        t->nums[k].bits = 0;
+        t->nums[k].len = (unsigned char)pt_fmt_shortest(b, 0.0);
+        memcpy(t->nums[k].s, b, PT_SHORTLEN);
+    }
 }
 
 void pt_trace_listener(pt_trace *t, pt_listener *l)

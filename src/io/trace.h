@@ -28,11 +28,14 @@
 #ifndef PT_TRACE_H
 #define PT_TRACE_H
 
+#include <stdint.h>
 #include <stdio.h>
 #include "core/pipetrace.h"
 #include "io/explain.h"
+#include "io/numfmt.h"
 
 #define PT_TRACE_VERSION 1
+#define PT_TRACE_NUMBITS 8       /* log2 of the doubles whose spelling is kept */
 
 typedef enum pt_format { PT_FORMAT_TEXT, PT_FORMAT_JSONL, PT_FORMAT_CSV,
                          PT_FORMAT_KRAFT,          /* the course's debug log, and */
@@ -65,6 +68,15 @@ typedef struct pt_trace {
                                  ** when none was set), else 0 */
     size_t len;                  /* bytes waiting in buf */
     char buf[1 << 16];           /* output block */
+    const pt_model *pix_model;   /* the segment whose pixels are being written */
+    uint64_t pix_seg;            /*   (trace.c: pixel_prefix) */
+    size_t pix_len;              /* how their records begin: pix[0..pix_len), */
+    char pix[96];                /*   0 when that does not fit */
+    struct pt_trace_num {        /* recent doubles, by their bits' hash, */
+        uint64_t bits;           /*   spelled as pt_fmt_shortest() spells them */
+        unsigned char len;       /*   (trace.c: short_at) */
+        char s[PT_SHORTLEN];
+    } nums[1 << PT_TRACE_NUMBITS];
 } pt_trace;
 
 /* Prepare t to write fmt to f.  This function can't fail. */
