@@ -28,6 +28,7 @@
 #include "pt_classic.h"
 #include "pt_matrix.h"
 #include "pt_wasm_libm.h"                 /* the sin and cos table */
+#include "pt_wasm_in.h"
 
 #define EXPORT(name) __attribute__((export_name(name)))
 
@@ -77,15 +78,7 @@ int pt_wasm_run(double x_m, double y_m, double z_m, double x_t, double y_t, doub
     return 0;
 }
 
-/* The matrix camera's inputs, written by the page into pt_wasm_in()'s
-** doubles: the model's `world` lines' matrix (row by row), its translate,
-** eye, direction (or, with target, the point looked at), up, fov, aspect
-** (unused when auto), near, far and the vertex. */
-enum {
-    PT_WASM_IN_WORLD = 0, PT_WASM_IN_T = 16, PT_WASM_IN_EYE = 19, PT_WASM_IN_DIR = 22,
-    PT_WASM_IN_UP = 25, PT_WASM_IN_FOV = 28, PT_WASM_IN_ASPECT, PT_WASM_IN_NEAR,
-    PT_WASM_IN_FAR, PT_WASM_IN_V, PT_WASM_NIN = PT_WASM_IN_V + 3
-};
+/* The matrix camera's inputs (pt_wasm_in.h). */
 static double in[PT_WASM_NIN];
 
 EXPORT("pt_wasm_in") double *pt_wasm_in(void);
