@@ -107,6 +107,10 @@ nowasm() {  # nowasm HOW: the page of $tmp/nowasm/pipetrace has no sliders
                grep -q 'No sliders on this page: pipetrace was built without' '$tmp/n.html'"
     check "wasm-3 $1: no module, no slider script" \
         sh -c "! grep -q 'wasmdata\|s_x_t' '$tmp/n.html'"
+    "$tmp/nowasm/pipetrace" journey docs/examples/lookat-cube.scene --vertex 1 --html "$tmp/nm.html"
+    check "wasm-2m $1: the matrix camera's page says it has no sliders, and why" \
+        sh -c "grep -q 'No sliders on this page: pipetrace was built without' '$tmp/nm.html' &&
+               ! grep -q 'wasmdata\|s_fov' '$tmp/nm.html'"
     check "wasm-4 $1: the page is otherwise the same" \
         sh -c "sed '/<section id=\"live\"/,\$d' '$tmp/n.html' > '$tmp/n.top' &&
                sed '/<section id=\"live\"/,\$d' '$tmp/b.html' > '$tmp/b.top' &&

@@ -34,10 +34,13 @@ double pt_wasm_fmod(double x, double y)
     double r = __builtin_fabs(x), a = __builtin_fabs(y), b;
 
     if (x != x || y != y || a == 0 || r - r != 0) return __builtin_nan("");
-    while (r >= a) {                        /* a <= r: take off the largest a*2^k <= r */
-        b = a;
-        while (b * 2 <= r) b *= 2;          /* exact: a power of two, no overflow */
-        r -= b;                             /* exact: b <= r < 2b (Sterbenz) */
+    if (r < a) return x;
+    b = a;
+    while (b * 2 <= r) b *= 2;              /* the largest a*2^k <= r: exact */
+    for (;;) {                              /* long division, one bit at a time */
+        if (r >= b) r -= b;                 /* exact: b <= r < 2b (Sterbenz) */
+        if (b == a) break;
+        b /= 2;                             /* exact: a*2^(k-1) */
     }
     return __builtin_copysign(r, x);
 }
