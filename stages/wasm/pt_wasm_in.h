@@ -8,7 +8,8 @@
 ** the direction (with `camera lookat-target`, the point looked at), up, fov,
 ** aspect (unused when auto), near, far and the vertex.  The page learns the
 ** places from its data, which src/tools/journey/journey_wasm.c writes from
-** this list: one list for both sides.
+** this list: one list for both sides.  Likewise the most rows of the sin
+** and cos table (pt_wasm_libm.h) the page may hand over.
 */
 #ifndef PT_WASM_IN_H
 #define PT_WASM_IN_H
@@ -18,5 +19,7 @@ enum {
     PT_WASM_IN_UP = 25, PT_WASM_IN_FOV = 28, PT_WASM_IN_ASPECT, PT_WASM_IN_NEAR,
     PT_WASM_IN_FAR, PT_WASM_IN_V, PT_WASM_NIN = PT_WASM_IN_V + 3
 };
+
+#define PT_WASM_NSINCOS 1024
 
 #endif

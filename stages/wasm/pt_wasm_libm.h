@@ -22,6 +22,8 @@
 #ifndef PT_WASM_LIBM_H
 #define PT_WASM_LIBM_H
 
+#include "pt_wasm_in.h"
+
 /* fmax(x, y) as C99 defines it: the larger; y when x is NaN, x when y is
 ** NaN.  This function can't fail. */
 double pt_wasm_fmax(double x, double y);
@@ -43,8 +45,8 @@ double pt_wasm_ldexp(double x, int n);
 ** for 0, an infinity or NaN.  This function can't fail. */
 double pt_wasm_frexp(double x, int *e);
 
-/* The table of sin and cos: row k is (argument, sin, cos), n rows in use. */
-#define PT_WASM_NSINCOS 1024
+/* The table of sin and cos: row k is (argument, sin, cos), n rows in use
+** (PT_WASM_NSINCOS: pt_wasm_in.h). */
 extern double pt_wasm_sincos[PT_WASM_NSINCOS][3];
 extern int pt_wasm_nsincos;
 extern int pt_wasm_libm_missed;     /* set when an argument was not in the table */

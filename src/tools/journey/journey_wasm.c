@@ -11,8 +11,6 @@
 #include <string.h>
 #include "tools/journey/journey.h"
 #include "tools/journey/journey_wasm.h"
-#include "stages/wasm/pt_wasm_in.h"
-#include "stages/wasm/pt_wasm_libm.h"       /* PT_WASM_NSINCOS */
 
 #define PT_JOURNEY_WASM_MAXV 100000  /* a model's first this many vertices get sliders */
 
