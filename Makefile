@@ -165,7 +165,7 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	     { gsub(/\\/, "\\\\"); gsub(/"/, "\\\""); print "    \"" $$0 "\\n\"" } \
 	     END { print "    \"\";" }' $< > $@
 # ===== the journey page's stages in WebAssembly (docs/journey.md) =====
-# The classic camera's stage files (a student's when chosen), compiled by
+# Both cameras' stage files (a student's when chosen), compiled by
 # clang for wasm32 without libc (stages/wasm/: the glue and the few libm
 # functions) and linked by wasm-ld into $B/stages.wasm, which the page
 # embeds as base64 ($B/stages_wasm.c).  WASM=yes when both tools are found
@@ -185,7 +185,10 @@ WASM_SRC = stages/wasm/pt_wasm.c stages/wasm/pt_wasm_libm.c stages/pt_stage.c st
            $(or $(STAGE_pixel),stages/s3_image2pixel.c) \
            $(or $(STAGE_viewport),stages/s4_pixel2viewport.c) \
            $(or $(STAGE_framebuffer),stages/s5_viewport2fb.c) \
-           $(or $(STAGE_index),stages/s6_fb2index.c) stages/pt_classic.c
+           $(or $(STAGE_index),stages/s6_fb2index.c) stages/pt_classic.c \
+           stages/pt_mat4.c stages/pt_matrix.c stages/m1_model2world.c \
+           stages/m2_world2view.c stages/m3_view2clip.c stages/m4_clip2cvv.c stages/m5_clip2ndc.c \
+           stages/m6_ndc2screen.c stages/m7_screen2viewport.c
 $(shell mkdir -p $B && { echo '$(WASM)' | cmp -s - $B/wasm-choice || echo '$(WASM)' > $B/wasm-choice; })
 $B/stages.wasm: $(WASM_SRC) stages/*.h stages/wasm/*.h $B/wasm-choice $(CHOSEN)
 	rm -rf $B/wasm-obj && mkdir -p $B/wasm-obj

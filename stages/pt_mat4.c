@@ -81,19 +81,49 @@ pt_mat4 pt_mat4_scale(double x, double y, double z)
     return r;
 }
 
-/* sin and cos of an angle in degrees; exact at multiples of 90 degrees, where
-** sin(pi/180 * 90) would give 1 but cos 6.1e-17 instead of 0. */
-static void sincos_deg(double deg, double *s, double *c)
+/* deg reduced to [0, 360): at a multiple of 90 degrees sets *s and *c
+** exactly (sin(pi/180 * 90) would give 1 but cos 6.1e-17 instead of 0) and
+** returns 0; otherwise sets *rad, the radians to give sin and cos, and
+** returns 1. */
+static int deg_arg(double deg, double *rad, double *s, double *c)
 {
     double a = fmod(deg, 360.0);            /* exact */
 
     if (a < 0) a += 360.0;
-    if (a == 0)        { *s = 0;  *c = 1;  return; }
-    if (a == 90)       { *s = 1;  *c = 0;  return; }
-    if (a == 180)      { *s = 0;  *c = -1; return; }
-    if (a == 270)      { *s = -1; *c = 0;  return; }
-    *s = sin(a * (PI / 180));
-    *c = cos(a * (PI / 180));
+    if (a == 0)        { *s = 0;  *c = 1;  return 0; }
+    if (a == 90)       { *s = 1;  *c = 0;  return 0; }
+    if (a == 180)      { *s = 0;  *c = -1; return 0; }
+    if (a == 270)      { *s = -1; *c = 0;  return 0; }
+    *rad = a * (PI / 180);
+    return 1;
+}
+
+/* sin and cos of an angle in degrees. */
+static void sincos_deg(double deg, double *s, double *c)
+{
+    double rad;
+
+    if (deg_arg(deg, &rad, s, c)) { *s = sin(rad); *c = cos(rad); }
+}
+
+int pt_perspective_sincos_arg(double fov_deg, double *rad, double *s, double *c)
+{
+    return deg_arg(fov_deg / 2, rad, s, c);     /* the half angle */
+}
+
+double pt_aspect_auto(int w, int h)
+{
+    return (double)w / h;
+}
+
+pt_vec3 pt_lookat_dir(pt_vec3 eye, pt_vec3 target)
+{
+    pt_vec3 d;
+
+    d.x = target.x - eye.x;
+    d.y = target.y - eye.y;
+    d.z = target.z - eye.z;
+    return d;
 }
 
 pt_mat4 pt_mat4_rotate(int axis, double degrees)
@@ -197,13 +227,13 @@ pt_cam_error pt_perspective(pt_mat4 *proj, double fov_deg, double aspect,
                             double n, double f)
 {
     pt_mat4 r;
-    double s, c, cot;
+    double s, c, cot, rad;
 
     if (!(fov_deg > 0 && fov_deg < 180)) return PT_CAM_FOV;
     if (!(aspect > 0) || !isfinite(aspect)) return PT_CAM_ASPECT;
     if (!(n > 0)) return PT_CAM_NEAR;
     if (!(n < f) || !isfinite(f)) return PT_CAM_FAR;
-    sincos_deg(fov_deg / 2, &s, &c);
+    if (pt_perspective_sincos_arg(fov_deg, &rad, &s, &c)) { s = sin(rad); c = cos(rad); }
     cot = fov_deg == 90 ? 1.0 : c / s;      /* cot(fov/2); exact at 90 degrees */
     memset(&r, 0, sizeof r);
     r.m[0][0] = cot / aspect;               /* x' = x * cot(fov/2) / aspect */

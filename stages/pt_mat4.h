@@ -101,6 +101,21 @@ pt_cam_error pt_lookat(pt_mat4 *view, pt_vec3 eye, pt_vec3 dir, pt_vec3 up,
 pt_cam_error pt_perspective(pt_mat4 *proj, double fov_deg, double aspect,
                             double n, double f);
 
+/* The reduction of pt_perspective()'s half angle fov_deg/2: 0 with *s and
+** *c set exactly at a multiple of 90 degrees; else 1 with *rad, the very
+** argument pt_perspective() gives sin and cos.  (The journey page's sliders
+** hand the module libm's sin and cos of each such argument.)  This function
+** can't fail. */
+int pt_perspective_sincos_arg(double fov_deg, double *rad, double *s, double *c);
+
+/* The aspect ratio `auto` means: the viewport's w / h.  This function can't
+** fail. */
+double pt_aspect_auto(int w, int h);
+
+/* The direction of `camera lookat-target`: target - eye.  This function
+** can't fail. */
+pt_vec3 pt_lookat_dir(pt_vec3 eye, pt_vec3 target);
+
 /* Report v as a record of stage st with x y z w set, flagged nonfinite, and
 ** cancellation when lost (bits, pt_vec4_mul_bits_lost()) is more than
 ** PT_BITS_LOST_WARN; the shared tail of the matrix stages.  This function

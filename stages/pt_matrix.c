@@ -14,6 +14,13 @@
 #include "s5_viewport2fb.h"
 #include "s6_fb2index.h"
 
+pt_mat4 pt_matrix_world(const pt_mat4 *lines, pt_vec3 translate)
+{
+    pt_mat4 t = pt_mat4_translate(translate.x, translate.y, translate.z);
+
+    return pt_mat4_mul(lines, &t);          /* row vectors: the lines act first */
+}
+
 pt_vec2 pt_matrix_tail(const pt_stage_params *par, pt_vec4 clip, double w_scale,
                        const pt_sink *const sinks[PT_NSTAGES_ALL])
 {

@@ -28,6 +28,10 @@ typedef struct pt_matrices {
     const pt_mat4 *proj;         /* the camera's perspective projection */
 } pt_matrices;
 
+/* A model's World: its `world` lines' matrix, then its translate.  This
+** function can't fail. */
+pt_mat4 pt_matrix_world(const pt_mat4 *lines, pt_vec3 translate);
+
 /* Run v_m through the model record and the stages up to the cvv with mx and
 ** par (w .. H); inside the view volume on through the tail.  Stage st reports
 ** to sinks[st] (NULL: not reported).  Sets *clip to the clip coordinates and

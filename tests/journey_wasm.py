@@ -6,10 +6,11 @@
 # DOM is tests/journey_sliders.html's --dump-dom after moving the sliders of
 # a page made from SCENE ("-": the built-in scene, docs/examples/builtin.scene).
 # It writes SCENE again with the page's framebuffer, viewport and the vertex's
-# model's translation, runs `PIPETRACE NEW --format jsonl` for that vertex and
+# model's translation (the matrix camera: eye, fov, near and far too), runs `PIPETRACE NEW --format jsonl` for that vertex and
 # checks every stage's values against the page's (#livetable: reals as IEEE
 # bits, so equal means bit for bit), and #coords against the #coords the
-# command line's own page gives for NEW.  Prints "N passed, N failed".
+# command line's own page gives for NEW.  When the page says it has no camera,
+# pipetrace must refuse NEW with the same reason.  Prints "N passed, N failed".
 import html
 import json
 import os
@@ -23,7 +24,8 @@ from checks import check, finish  # noqa: E402
 
 
 def rewrite(text, p, model):
-    """The scene with the page's framebuffer, viewport and model translation."""
+    """The scene with the page's framebuffer, viewport and model translation,
+    and for the matrix camera its eye, fov, near and far."""
     out = ["framebuffer %s %s" % (p["W"], p["H"]),
            "viewport %s %s %s %s" % (p["x_ul"], p["y_ul"], p["w"], p["h"])]
     here = False
@@ -32,6 +34,10 @@ def rewrite(text, p, model):
         d = words[0] if words else ""
         if d in ("framebuffer", "viewport"):
             continue
+        if d == "camera" and "fov" in p:       # camera lookat[-target] EYE ...
+            line = " ".join(words[:2] + [p["eye_x"], p["eye_y"], p["eye_z"]] + words[5:])
+        if d == "projection" and "fov" in p:   # projection perspective FOV ASPECT NEAR FAR
+            line = " ".join(words[:2] + [p["fov"], words[3], p["near"], p["far"]])
         if d == "model":
             here = len(words) > 1 and words[1] == model
         if here and d == "translate":
@@ -70,23 +76,33 @@ def main():
         f.write(rewrite(open(src, encoding="utf-8").read(), p, model))
     r = subprocess.run([exe, new, "--model", model, "--vertex", v, "--all-stages",
                         "--format", "jsonl", "--trace", "-"], capture_output=True, text=True)
+    note = info["note"][0]
+    if note.startswith("No camera: "):           # the page refuses: so must pipetrace
+        why = note[len("No camera: "):].split(" (")[0]
+        check("slider-6 %s: the command line refuses the camera too, saying why" % why,
+              r.returncode == 2 and why in r.stderr and not page, r.stderr)
+        return
     check("slider-2 the command line reads the moved scene", r.returncode == 0, r.stderr)
     cli = {}
     for ln in r.stdout.splitlines():
         rec = json.loads(ln)
         if rec.get("type") == "vertex":
             cli[rec["stage"]] = rec
-    check("slider-3 seven stages on both sides", len(cli) == 7 and len(page) == 7,
+    reached = sorted(st for st, val in page.items() if val != ["unreached"])
+    check("slider-3 seven (classic) or ten (matrix) stages; the same reached on both sides",
+          len(page) == (10 if "fov" in p else 7) and sorted(cli) == reached,
           "%s / %s" % (sorted(cli), sorted(page)))
+    ints = ("viewport", "framebuffer", "index", "cvv")
     for st, rec in cli.items():
-        keys = ["i"] if st == "index" else ["x", "y"] if st in (
-            "pixel", "viewport", "framebuffer") else ["x", "y", "z"]
+        keys = ["i"] if st == "index" else ["code"] if st == "cvv" else ["x", "y"] if st in (
+            "pixel", "viewport", "framebuffer") else ["x", "y", "z", "w"] if st in (
+            "world", "view", "clip") else ["x", "y", "z"]
         want = []
         for k in keys:
             val = rec.get(k)
             if val is None:
                 want.append("none")
-            elif st in ("viewport", "framebuffer", "index"):
+            elif st in ints:
                 want.append(str(val))
             else:
                 want.append(bits(val))

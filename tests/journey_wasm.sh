@@ -5,7 +5,8 @@
 # Usage: sh tests/journey_wasm.sh PIPETRACE.  Run from the repository root.
 #   - a page by PIPETRACE is loaded in headless Chromium through
 #     tests/journey_sliders.html, which moves its sliders (translation,
-#     viewport, framebuffer); tests/journey_wasm.py writes the scene again
+#     viewport, framebuffer; the matrix camera's fov, eye, near and far
+#     too); tests/journey_wasm.py writes the scene again
 #     with the values the page shows, runs PIPETRACE on it and compares every
 #     stage's values bit for bit, and #coords with the command line's page;
 #   - a pipetrace built where clang is not found, or with `make WASM=no`,
@@ -76,6 +77,20 @@ else
     # the numbers with no slider moved are the scene's, and so is #coords
     sliders "$tmp/b.html" '&stage=4' > "$tmp/dom.html"
     compare - "$tmp/dom.html"
+    # the matrix camera: every slider (aspect auto follows w and h), a
+    # lookat-target camera, a vertex behind the eye (stages past the cvv not
+    # reached), world lines with rotations, an aspect given, the scene's own
+    # fov between the slider's steps, and a camera pipetrace refuses
+    move docs/examples/lookat-cube.scene 'cube%20v1' '&set=fov:45.5,eye_x:2.5,eye_y:1.35,eye_z:-5.4,near:0.35,far:20.5,W:70,w:40,h:30,x_ul:9,x_t:0.3&stage=5'
+    move docs/examples/lookat-near.scene 'stick%20v2' '&set=fov:120,eye_z:-0.5&stage=8'
+    move docs/examples/lookat-near.scene 'stick%20v3' '&set=fov:31&stage=4'
+    move docs/examples/lookat-world.scene 'square%20v3' '&set=eye_y:1.65,y_t:-0.25,far:9.5&stage=3'
+    move docs/examples/lookat-world.scene 'post%20v2' '&set=fov:179.5,near:4.95&stage=7'
+    move docs/examples/compare-matrix.scene 'tri%20v1' '&set=fov:0.5,h:10&stage=10'
+    sed 's/perspective 60 /perspective 47.3 /' docs/examples/lookat-cube.scene > "$tmp/fov.scene"
+    move "$tmp/fov.scene" 'cube%20v8' '&set=x_t:-0.5&stage=2'
+    move "$tmp/fov.scene" 'cube%20v8' ''
+    move docs/examples/lookat-cube.scene 'cube%20v2' '&set=near:4.5,far:3'
 fi
 
 # ---- built without WebAssembly: no clang found (WASM_CC names none), then
@@ -92,6 +107,10 @@ nowasm() {  # nowasm HOW: the page of $tmp/nowasm/pipetrace has no sliders
                grep -q 'No sliders on this page: pipetrace was built without' '$tmp/n.html'"
     check "wasm-3 $1: no module, no slider script" \
         sh -c "! grep -q 'wasmdata\|s_x_t' '$tmp/n.html'"
+    "$tmp/nowasm/pipetrace" journey docs/examples/lookat-cube.scene --vertex 1 --html "$tmp/nm.html"
+    check "wasm-2m $1: the matrix camera's page says it has no sliders, and why" \
+        sh -c "grep -q 'No sliders on this page: pipetrace was built without' '$tmp/nm.html' &&
+               ! grep -q 'wasmdata\|s_fov' '$tmp/nm.html'"
     check "wasm-4 $1: the page is otherwise the same" \
         sh -c "sed '/<section id=\"live\"/,\$d' '$tmp/n.html' > '$tmp/n.top' &&
                sed '/<section id=\"live\"/,\$d' '$tmp/b.html' > '$tmp/b.top' &&

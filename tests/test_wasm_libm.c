@@ -1,9 +1,9 @@
 /*
-** tests/test_wasm_libm.c -- the journey page's fmax and ilogb (stages/wasm/) against libm
+** tests/test_wasm_libm.c -- the journey page's fmax, ilogb, fmod, ldexp, frexp (stages/wasm/) against libm
 ** See LICENSE for copyright and license.
 **
 ** The stages compiled to WebAssembly have no libm; stages/wasm/pt_wasm_libm.c
-** stands in for the two functions that are not single instructions.  Compiled
+** stands in for the functions that are not single instructions.  Compiled
 ** here natively, each must give libm's answer bit for bit: on zeros, NaN,
 ** infinities, subnormals, powers of two and their neighbours, and a million
 ** doubles of every exponent.
@@ -71,5 +71,41 @@ int main(void)
         }
     }
     PT_CHECK("wasm-libm-9 a million random doubles: ilogb and fmax as libm's", bad == 0);
+    bad = 0;
+    for (a = 0; a < n; a++)
+        for (b = 0; b < n; b++) {
+            double x = special[a], y = special[b];
+            int e1, e2;
+            double f1 = pt_wasm_frexp(x, &e1), f2 = frexp(x, &e2);
+            if (y != 0 && bits(pt_wasm_fmod(x, y)) != bits(fmod(x, y))) bad++;
+            if (bits(f1) != bits(f2) || e1 != e2) bad++;
+            for (e1 = -2200; e1 <= 2200; e1 += 37)
+                if (bits(pt_wasm_ldexp(x, e1)) != bits(ldexp(x, e1))) bad++;
+        }
+    PT_CHECK("wasm-libm-10 fmod, frexp, ldexp of the special values as libm's", bad == 0);
+    PT_CHECK("wasm-libm-11 fmod(x, 0), fmod(inf, y): NaN",
+             isnan(pt_wasm_fmod(1.0, 0.0)) && isnan(pt_wasm_fmod((double)INFINITY, 2.0)));
+    for (k = 0; k < 300000; k++) {     /* random doubles; y near x, where loops run longest */
+        double x = from_bits(next()), y = k % 2 ? from_bits(next()) : x / (double)(k % 1000 + 3);
+        int e1, e2, m = (int)(next() % 4400) - 2200;
+        double f1 = pt_wasm_frexp(x, &e1), f2 = frexp(x, &e2);
+        if (!isnan(x) && !isnan(y) && y != 0 && isfinite(x)
+            && bits(pt_wasm_fmod(x, y)) != bits(fmod(x, y))) bad++;
+        if (!isnan(x) && (bits(f1) != bits(f2) || e1 != e2)) bad++;
+        if (!isnan(x) && bits(pt_wasm_ldexp(x, m)) != bits(ldexp(x, m))) bad++;
+        if (k % 4 == 0) {              /* subnormal results and arguments */
+            double sub = from_bits(next() & 0x800fffffffffffffu);
+            if (bits(pt_wasm_ldexp(x, -1100 + (int)(k % 200))) != bits(ldexp(x, -1100 + (int)(k % 200)))) bad++;
+            if (bits(pt_wasm_frexp(sub, &e1)) != bits(frexp(sub, &e2)) || e1 != e2) bad++;
+        }
+    }
+    PT_CHECK("wasm-libm-12 random doubles: fmod, frexp, ldexp as libm's", bad == 0);
+    pt_wasm_nsincos = 1;
+    pt_wasm_sincos[0][0] = 0.5; pt_wasm_sincos[0][1] = sin(0.5); pt_wasm_sincos[0][2] = cos(0.5);
+    pt_wasm_libm_missed = 0;
+    PT_CHECK("wasm-libm-13 sin and cos of an argument in the table: the table's",
+             pt_wasm_sin(0.5) == sin(0.5) && pt_wasm_cos(0.5) == cos(0.5) && !pt_wasm_libm_missed);
+    PT_CHECK("wasm-libm-14 an argument not in the table: NaN and the miss noted",
+             isnan(pt_wasm_sin(0.25)) && pt_wasm_libm_missed);
     return pt_test_report();
 }

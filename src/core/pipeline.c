@@ -82,9 +82,7 @@ static void matrix_plan(pt_plan *p, const pt_scene *s, const pt_options *o)
     p->up_skewed = skewed;
     p->up_adjusted = skewed && !o->raw_lookat;
     for (k = 0; k < s->nmodels; k++) {
-        const pt_model *m = &s->models[k];
-        pt_mat4 t = pt_mat4_translate(m->translate.x, m->translate.y, m->translate.z);
-        p->models[k].world = pt_mat4_mul(&m->world, &t);
+        p->models[k].world = pt_matrix_world(&s->models[k].world, s->models[k].translate);
     }
 }
 

@@ -33,6 +33,7 @@
 #include "stages/m5_clip2ndc.h"
 #include "stages/m6_ndc2screen.h"
 #include "stages/m7_screen2viewport.h"
+#include "stages/wasm/pt_wasm_in.h"    /* the journey page's module: where its inputs go */
 #include "core/scene.h"                /* the scene, parsed */
 #include "core/shapes.h"                /* the course's models: `shape NAME ARGS` */
 #include "core/builtin.h"              /* the scene rendered when given none */

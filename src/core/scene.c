@@ -786,10 +786,10 @@ static int do_camera(parser *ps, source *src, const token *dir, cursor *args)
     ps->s->eye = (pt_vec3){v[0], v[1], v[2]};
     ps->s->dir = (pt_vec3){v[3], v[4], v[5]};
     ps->s->up = (pt_vec3){v[6], v[7], v[8]};
-    if (tok_is(&a[0], "lookat-target")) {   /* direction = target - eye */
-        ps->s->dir.x = v[3] - v[0];
-        ps->s->dir.y = v[4] - v[1];
-        ps->s->dir.z = v[5] - v[2];
+    ps->s->target = tok_is(&a[0], "lookat-target");
+    if (ps->s->target) {
+        ps->s->at = ps->s->dir;
+        ps->s->dir = pt_lookat_dir(ps->s->eye, ps->s->at);
     }
     return 0;
 }
@@ -813,7 +813,8 @@ static int do_projection(parser *ps, source *src, const token *dir, cursor *args
                     shown(a[0].p, a[0].n, q));
     if (parse_number(ps, src, &a[1], "field of view", &s->fov) < 0)
         return -1;
-    if (tok_is(&a[2], "auto"))
+    s->aspect_auto = tok_is(&a[2], "auto");
+    if (s->aspect_auto)
         s->aspect = 0;                  /* filled in by finish_camera() */
     else if (parse_number(ps, src, &a[2], "aspect ratio", &s->aspect) < 0)
         return -1;
@@ -1256,8 +1257,8 @@ static int finish_camera(parser *ps, const char *name)
                        "classic camera places a model with 'translate'");
     if (!s->matrix)
         return 0;
-    if (s->aspect == 0)
-        s->aspect = (double)s->vp_w / s->vp_h;  /* auto: the viewport's w/h */
+    if (s->aspect_auto)
+        s->aspect = pt_aspect_auto(s->vp_w, s->vp_h);
     e = pt_lookat(&m, s->eye, s->dir, s->up, 0, &skewed);
     if (e != PT_CAM_OK)
         return fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,

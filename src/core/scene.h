@@ -47,8 +47,11 @@ typedef struct pt_scene {
     int perspective;             /* 1: camera perspective (default), 0: orthographic */
     int matrix;                  /* 1: the matrix camera (camera lookat + projection) */
     pt_vec3 eye, dir, up;        /* matrix camera: position, direction, up vector */
+    int target;                  /* 1: `camera lookat-target`: dir = at - eye */
+    pt_vec3 at;                  /* with target: the point looked at */
     double fov;                  /* vertical field of view, degrees, in (0, 180) */
     double aspect;               /* aspect ratio w/h > 0 (`auto`: viewport w/h) */
+    int aspect_auto;             /* 1: the scene said `auto` */
     double znear, zfar;          /* 0 < znear < zfar */
     int from_obj;                /* 1: a plain .obj wrapped in a default scene */
     pt_vec3 obj_translate;       /* with from_obj: the translation chosen */

@@ -12,4 +12,7 @@
 
 int strcmp(const char *a, const char *b);
 
+/* stages/pt_mat4.c clears a matrix: memory.fill (-mbulk-memory). */
+#define memset(d, c, n)  __builtin_memset((d), (c), (n))
+
 #endif

@@ -7,11 +7,19 @@
 ** the scene; a slider's value is the decimal text the browser gives it,
 ** read by JavaScript's Number(), correctly rounded like pipetrace's reader.
 */
+#include <math.h>
 #include <string.h>
 #include "tools/journey/journey.h"
 #include "tools/journey/journey_wasm.h"
 
 #define PT_JOURNEY_WASM_MAXV 100000  /* a model's first this many vertices get sliders */
+
+/* The fov slider moves in steps of PT_JOURNEY_FOV_STEP degrees from one step
+** to PT_JOURNEY_FOV_STEPS steps: the page holds the host's sin and cos for
+** each (and for the scene's own fov), as the module has no sin of its own. */
+#define PT_JOURNEY_FOV_STEP  0.5
+#define PT_JOURNEY_FOV_STEPS 359
+_Static_assert(PT_JOURNEY_FOV_STEPS + 1 <= PT_WASM_NSINCOS, "the module's table holds them");
 
 static const char style[] =
 "<style>\n"
@@ -35,11 +43,6 @@ static const char without[] =
 "(clang and wasm-ld, Debian's packages clang and lld, were not found, or make WASM=no), "
 "so the page cannot run the stages itself.</p>\n</section>\n";
 
-static const char matrix_camera[] =
-"<section id=\"live\" data-wasm=\"no\"><h2>recompute</h2>\n"
-"<p id=\"livenote\">No sliders on this page: they rerun the classic camera's stages, "
-"and this scene has the matrix camera (camera lookat).</p>\n</section>\n";
-
 static const char section[] =
 "<section id=\"live\" data-wasm=\"yes\"><h2>recompute</h2>\n"
 "<div id=\"sliders\"></div>\n"
@@ -56,6 +59,7 @@ static const char *const script[] = {
 "  function $(id) { return document.getElementById(id); }\n"
 "  var D = JSON.parse($('data').textContent), W = JSON.parse($('wasmdata').textContent);\n"
 "  var sec = $('live'), note = $('livenote'), sel = $('vertex'), E = null, moved = false;\n"
+"  var M = W.matrix, C = W.cam;\n"
 "  if ($('foot')) document.body.insertBefore(sec, $('foot'));\n"
 "  function dbl(h) {                       /* 16 hex digits -> the double */\n"
 "    var v = new DataView(new ArrayBuffer(8));\n"
@@ -73,9 +77,13 @@ static const char *const script[] = {
 "      Object.is(x, -0) ? '-0' : String(x);\n"
 "  }\n"
 "  var T = W.models.map(function (m) { return m.t.map(dbl); });   /* live translations */\n"
-"  var P = {}, names = ['x_t', 'y_t', 'z_t', 'w', 'h', 'x_ul', 'y_ul', 'W', 'H'];\n"
-"  function scene() { P = {w: W.vp[0], h: W.vp[1], x_ul: W.vp[2], y_ul: W.vp[3],\n"
-"                          W: W.fb[0], H: W.fb[1]}; }\n"
+"  var P = {}, names = ['x_t', 'y_t', 'z_t'].concat(M ? ['fov', 'eye_x', 'eye_y', 'eye_z',\n"
+"      'near', 'far'] : [], ['w', 'h', 'x_ul', 'y_ul', 'W', 'H']);\n"
+"  function scene() {\n"
+"    P = {w: W.vp[0], h: W.vp[1], x_ul: W.vp[2], y_ul: W.vp[3], W: W.fb[0], H: W.fb[1]};\n"
+"    if (M) { P.fov = dbl(C.fov); P.near = dbl(C.near); P.far = dbl(C.far);\n"
+"             P.eye_x = dbl(C.eye[0]); P.eye_y = dbl(C.eye[1]); P.eye_z = dbl(C.eye[2]); }\n"
+"  }\n"
 "  scene();\n"
 "  function vertex() { return D.vertices[Number(sel.value)] || D.vertices[D.start]; }\n"
 "  function slider(n) { return $('s_' + n); }\n"
@@ -93,39 +101,55 @@ static const char *const script[] = {
 "      run();\n"
 "    });\n"
 "  });\n",
+"  function around(c) {                    /* a real's slider: +-5 in steps of 0.05 */\n"
+"    c = Math.abs(c) < 1e6 ? Math.floor(c) : 0;\n"
+"    return [c - 5, c + 5, 0.05];\n"
+"  }\n"
 "  function ranges() {                     /* the scene's limits: viewport inside */\n"
-"    var t = T[vertex().m], k, i;\n"
+"    var t = T[vertex().m];\n"
 "    P.W = Math.min(Math.max(P.W, 1), W.max); P.H = Math.min(Math.max(P.H, 1), W.max);\n"
 "    P.w = Math.min(Math.max(P.w, 1), P.W); P.h = Math.min(Math.max(P.h, 1), P.H);\n"
 "    P.x_ul = Math.min(Math.max(P.x_ul, 0), P.W - P.w);\n"
 "    P.y_ul = Math.min(Math.max(P.y_ul, 0), P.H - P.h);\n"
-"    var lim = {w: [1, P.W], h: [1, P.H], x_ul: [0, P.W - P.w], y_ul: [0, P.H - P.h],\n"
-"               W: [1, Math.min(W.max, Math.max(4 * W.fb[0], 256))],\n"
-"               H: [1, Math.min(W.max, Math.max(4 * W.fb[1], 256))]};\n"
-"    for (k = 0; k < 3; k++) {\n"
-"      var c = Math.abs(t[k]) < 1e6 ? Math.floor(t[k]) : 0;\n"
-"      i = slider(names[k]);\n"
-"      i.min = String(c - 5); i.max = String(c + 5); i.step = '0.05';\n"
-"      if (Number(i.value) !== t[k]) i.value = String(t[k]);\n"
-"      $('o_' + names[k]).textContent = num(t[k]);\n"
+"    var lim = {w: [1, P.W, 1], h: [1, P.H, 1], x_ul: [0, P.W - P.w, 1],\n"
+"               y_ul: [0, P.H - P.h, 1],\n"
+"               W: [1, Math.min(W.max, Math.max(4 * W.fb[0], 256)), 1],\n"
+"               H: [1, Math.min(W.max, Math.max(4 * W.fb[1], 256)), 1]};\n"
+"    if (M) {                              /* fov: the steps the page has sin, cos for */\n"
+"      lim.fov = [W.fov[0], W.fov[1], W.fov[2]];\n"
+"      lim.near = [0.05, Math.max(5, 4 * dbl(C.near)), 0.05];\n"
+"      lim.far = [0.5, Math.max(100, 4 * dbl(C.far)), 0.5];\n"
 "    }\n"
-"    for (k = 3; k < names.length; k++) {\n"
-"      var n = names[k];\n"
-"      i = slider(n);\n"
-"      i.min = String(lim[n][0]); i.max = String(lim[n][1]); i.step = '1';\n"
-"      i.value = String(P[n]);\n"
-"      $('o_' + n).textContent = String(P[n]);\n"
-"    }\n"
+"    names.forEach(function (n, k) {\n"
+"      var v = k < 3 ? t[k] : P[n], r = lim[n] || around(v), i = slider(n);\n"
+"      i.min = String(r[0]); i.max = String(r[1]); i.step = String(r[2]);\n"
+"      if (Number(i.value) !== v) i.value = String(v);\n"
+"      $('o_' + n).textContent = num(v);\n"
+"    });\n"
 "  }\n"
-"  function text(st, vals) {               /* as pipetrace explain writes #coords */\n"
-"    var s = W.stages[st], shown = vals.map(function (x) { return x === null ? 'none' : x; });\n"
+"  function text(s, vals) {                /* as pipetrace explain writes #coords */\n"
+"    var shown = vals.map(function (x) { return x === null ? 'none' : x; });\n"
 "    var any = vals.some(function (x) { return x !== null; });\n"
 "    if (s.coord.length === 1) return s.coord[0] + ' = ' + shown[0];\n"
 "    return '(' + s.coord.join(', ') + ') = ' + (any ? '(' + shown.join(', ') + ')' : 'none');\n"
 "  }\n"
+"  function cstr(a) {                      /* a C string in the module's memory */\n"
+"    var b = new Uint8Array(E.memory.buffer), s = '';\n"
+"    while (b[a]) s += String.fromCharCode(b[a++]);\n"
+"    return s;\n"
+"  }\n"
+"  function matrix(x, vm, t) {             /* the inputs in place (pt_wasm_in.h), run */\n"
+"    var F = new Float64Array(E.memory.buffer, E.pt_wasm_in(), W.nin), I = W.in;\n"
+"    F.set(W.models[x.m].w.map(dbl), I.world); F.set(t, I.t);\n"
+"    F.set([P.eye_x, P.eye_y, P.eye_z], I.eye); F.set(C.dir.map(dbl), I.dir);\n"
+"    F.set(C.up.map(dbl), I.up); F.set(vm, I.v);\n"
+"    F[I.fov] = P.fov; F[I.aspect] = dbl(C.aspect); F[I.near] = P.near; F[I.far] = P.far;\n"
+"    return E.pt_wasm_matrix_run(C.target ? 1 : 0, C.auto ? 1 : 0, P.w, P.h, P.x_ul, P.y_ul,\n"
+"                                P.W, P.H);\n"
+"  }\n"
 "  var live = [], liveFor = null;         /* the values of vertex liveFor */\n",
 "  function run() {\n"
-"    var x = vertex(), vm = W.models[x.m].v[x.v - 1], t = T[x.m], st, k;\n"
+"    var x = vertex(), vm = W.models[x.m].v[x.v - 1], t = T[x.m], st, k, rc;\n"
 "    ranges();\n"
 "    if (!E) return;\n"
 "    $('livetable').textContent = '';\n"
@@ -133,19 +157,28 @@ static const char *const script[] = {
 "    if (!vm) { note.textContent = 'No sliders for this vertex (beyond the first ' +\n"
 "               W.maxv + ' of its model).'; return; }\n"
 "    vm = vm.map(dbl);\n"
-"    if (E.pt_wasm_run(vm[0], vm[1], vm[2], t[0], t[1], t[2], W.perspective ? 1 : 0,\n"
-"                      P.w, P.h, P.x_ul, P.y_ul, P.W, P.H) !== 0) return;\n"
+"    rc = M ? matrix(x, vm, t) : E.pt_wasm_run(vm[0], vm[1], vm[2], t[0], t[1], t[2],\n"
+"               W.perspective ? 1 : 0, P.w, P.h, P.x_ul, P.y_ul, P.W, P.H);\n"
+"    if (rc >= 100) note.textContent = 'No camera: ' + cstr(E.pt_wasm_cam_error(rc - 100)) +\n"
+"      ' (pipetrace would say so for this scene).';\n"
+"    if (rc === -2) note.textContent = 'No sin and cos for fov = ' + num(P.fov) +\n"
+"      ' in this page (it has them for the slider\\'s steps).';\n"
+"    if (rc !== 0) { document.body.classList.toggle('live', moved); return; }\n"
 "    for (st = 0; st < W.stages.length; st++) {\n"
 "      var s = W.stages[st], vals = [], bits = [];\n"
-"      for (k = 0; k < s.nreal; k++) {\n"
-"        var r = E.pt_wasm_real(st, k);\n"
-"        vals.push(num(r)); bits.push(hex(r));\n"
+"      if (M && !E.pt_wasm_reported(s.id)) {\n"
+"        live.push(s.unreached); bits.push('unreached');\n"
+"      } else {\n"
+"        for (k = 0; k < s.nreal; k++) {\n"
+"          var r = E.pt_wasm_real(s.id, k);\n"
+"          vals.push(num(r)); bits.push(hex(r));\n"
+"        }\n"
+"        for (k = 0; k < s.nint; k++) {\n"
+"          var i = E.pt_wasm_has(s.id, k) ? String(E.pt_wasm_int(s.id, k)) : null;\n"
+"          vals.push(i); bits.push(i === null ? 'none' : i);\n"
+"        }\n"
+"        live.push(text(s, vals));\n"
 "      }\n"
-"      for (k = 0; k < s.nint; k++) {\n"
-"        var i = E.pt_wasm_has(st, k) ? String(E.pt_wasm_int(st, k)) : null;\n"
-"        vals.push(i); bits.push(i === null ? 'none' : i);\n"
-"      }\n"
-"      live.push(text(st, vals));\n"
 "      var tr = document.createElement('tr'), th = document.createElement('th'),\n"
 "          td = document.createElement('td');\n"
 "      tr.dataset.stage = s.name; th.textContent = s.name; td.textContent = live[st];\n"
@@ -154,10 +187,12 @@ static const char *const script[] = {
 "    }\n"
 "    note.textContent = (moved ? 'Recomputed' : 'Computed') + ' in this page by ' +\n"
 "      'pipetrace\\'s own stage files compiled to WebAssembly, for ' + D.models[x.m].name +\n"
-"      ' v' + x.v + ' with (x_t, y_t, z_t) = (' + t.map(num).join(', ') + '), viewport ' +\n"
-"      P.w + ' x ' + P.h + ' at (x_ul, y_ul) = (' + P.x_ul + ', ' + P.y_ul + '), framebuffer ' +\n"
-"      P.W + ' x ' + P.H + (moved ? '.  The panel, \"with the numbers\" and \"next\" (dimmed) ' +\n"
-"      'still show the scene\\'s own numbers.' : '.');\n"
+"      ' v' + x.v + ' with (x_t, y_t, z_t) = (' + t.map(num).join(', ') + ')' +\n"
+"      (M ? ', fov ' + num(P.fov) + ', eye (' + [P.eye_x, P.eye_y, P.eye_z].map(num)\n"
+"           .join(', ') + '), near ' + num(P.near) + ', far ' + num(P.far) : '') +\n"
+"      ', viewport ' + P.w + ' x ' + P.h + ' at (x_ul, y_ul) = (' + P.x_ul + ', ' + P.y_ul +\n"
+"      '), framebuffer ' + P.W + ' x ' + P.H + (moved ? '.  The panel, \"with the numbers\" ' +\n"
+"      'and \"next\" (dimmed) still show the scene\\'s own numbers.' : '.');\n"
 "    document.body.classList.toggle('live', moved);\n"
 "    coords();\n"
 "  }\n",
@@ -181,6 +216,11 @@ static const char *const script[] = {
 "  for (k = 0; k < b.length; k++) bytes[k] = b.charCodeAt(k);\n"
 "  WebAssembly.instantiate(bytes).then(function (r) {\n"
 "    E = r.instance.exports;\n"
+"    if (M) {                              /* the host's sin and cos, exact (journey_wasm.c) */\n"
+"      var S = W.sincos, F = new Float64Array(E.memory.buffer, E.pt_wasm_table(S.length),\n"
+"                                             3 * S.length);\n"
+"      S.forEach(function (row, j) { F.set(row.map(dbl), 3 * j); });\n"
+"    }\n"
 "    names.forEach(function (n) { slider(n).disabled = false; });\n"
 "    run();\n"
 "    sec.dataset.ready = '1';\n"
@@ -211,37 +251,113 @@ static void add_vec(pt_sbuf *sb, pt_vec3 v)
     pt_sbuf_add(sb, "]");
 }
 
+/* Append ,"NAME":bits of x. */
+static void add_named(pt_sbuf *sb, const char *name, double x)
+{
+    pt_sbuf_addf(sb, ",\"%s\":", name);
+    add_bits(sb, x);
+}
+
+/* Append the row [argument, sin, cos] for fov, when pt_perspective() calls
+** sin and cos for it: the host's libm, the very values pipetrace gets. */
+static int add_sincos(pt_sbuf *sb, double fov, int n)
+{
+    double rad, sn, cs;
+
+    if (!pt_perspective_sincos_arg(fov, &rad, &sn, &cs)) return n;
+    pt_sbuf_add(sb, n ? ",[" : "[");
+    add_bits(sb, rad);
+    pt_sbuf_add(sb, ",");
+    add_bits(sb, sin(rad));
+    pt_sbuf_add(sb, ",");
+    add_bits(sb, cos(rad));
+    pt_sbuf_add(sb, n % 4 == 3 ? "]\n" : "]");
+    return n + 1;
+}
+
+/* The matrix camera's part of the data: its numbers, where the module wants
+** them (pt_wasm_in.h), the fov slider's steps and their sin and cos. */
+static void add_camera(pt_sbuf *sb, const pt_scene *s)
+{
+    int k, n = 0;
+
+    pt_sbuf_add(sb, ",\n\"cam\":{\"eye\":");
+    add_vec(sb, s->eye);
+    pt_sbuf_add(sb, ",\"dir\":");
+    add_vec(sb, s->target ? s->at : s->dir);
+    pt_sbuf_add(sb, ",\"up\":");
+    add_vec(sb, s->up);
+    add_named(sb, "fov", s->fov);
+    add_named(sb, "aspect", s->aspect);
+    add_named(sb, "near", s->znear);
+    add_named(sb, "far", s->zfar);
+    pt_sbuf_addf(sb, ",\"target\":%s,\"auto\":%s},\n\"in\":{\"world\":%d,\"t\":%d,\"eye\":%d,"
+                 "\"dir\":%d,\"up\":%d,\"fov\":%d,\"aspect\":%d,\"near\":%d,\"far\":%d,\"v\":%d},"
+                 "\"nin\":%d,\n\"fov\":[%g,%g,%g],\"sincos\":[\n", s->target ? "true" : "false",
+                 s->aspect_auto ? "true" : "false", PT_WASM_IN_WORLD, PT_WASM_IN_T,
+                 PT_WASM_IN_EYE, PT_WASM_IN_DIR, PT_WASM_IN_UP, PT_WASM_IN_FOV,
+                 PT_WASM_IN_ASPECT, PT_WASM_IN_NEAR, PT_WASM_IN_FAR, PT_WASM_IN_V, PT_WASM_NIN,
+                 PT_JOURNEY_FOV_STEP, PT_JOURNEY_FOV_STEPS * PT_JOURNEY_FOV_STEP,
+                 PT_JOURNEY_FOV_STEP);
+    for (k = 1; k <= PT_JOURNEY_FOV_STEPS; k++) n = add_sincos(sb, k * PT_JOURNEY_FOV_STEP, n);
+    add_sincos(sb, s->fov, n);              /* the scene's own, perhaps between steps */
+    pt_sbuf_add(sb, "]");
+}
+
 void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
 {
     size_t mi, k;
-    int st, c;
+    int i, st, c;
+    const pt_stage *ord = s->matrix ? pt_matrix_order : pt_classic_order;
+    int n_st = s->matrix ? pt_matrix_norder : pt_classic_norder;
 
     pt_sbuf_add(sb, style);
-    if (s->matrix) { pt_sbuf_add(sb, matrix_camera); return; }
     if (!pt_journey_wasm_b64[0]) { pt_sbuf_add(sb, without); return; }
     pt_sbuf_add(sb, section);
     pt_sbuf_add(sb, "<script type=\"application/json\" id=\"wasmdata\">\n{\"wasm\":\"");
     for (k = 0; pt_journey_wasm_b64[k]; k++) pt_sbuf_add(sb, pt_journey_wasm_b64[k]);
-    pt_sbuf_addf(sb, "\",\n\"perspective\":%s,\"vp\":[%d,%d,%d,%d],\"fb\":[%d,%d],\"max\":%d,"
-                 "\"maxv\":%d,\n\"stages\":[", s->perspective ? "true" : "false",
-                 s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h, PT_MAX_SIZE,
-                 PT_JOURNEY_WASM_MAXV);
-    for (st = 0; st < PT_NSTAGES; st++) {          /* names and value names: the table's */
-        const pt_stage_info *in = &pt_stage_infos[st];
-        pt_sbuf_add(sb, st ? ",{\"name\":" : "{\"name\":");
+    pt_sbuf_addf(sb, "\",\n\"perspective\":%s,\"matrix\":%s,\"vp\":[%d,%d,%d,%d],\"fb\":[%d,%d],"
+                 "\"max\":%d,\"maxv\":%d", s->perspective ? "true" : "false",
+                 s->matrix ? "true" : "false", s->vp_w, s->vp_h, s->vp_x, s->vp_y,
+                 s->fb_w, s->fb_h, PT_MAX_SIZE, PT_JOURNEY_WASM_MAXV);
+    if (s->matrix) add_camera(sb, s);
+    pt_sbuf_add(sb, ",\n\"stages\":[");
+    for (i = 0; i < n_st; i++) {            /* names and value names: the table's */
+        char b[PT_EXPLAINLEN];
+        const pt_stage_info *in;
+
+        st = ord[i];
+        in = s->matrix && st == PT_STAGE_VIEWPORT ? &pt_matrix_viewport_info
+                                                  : &pt_stage_infos[st];
+        pt_sbuf_add(sb, i ? ",\n{\"name\":" : "{\"name\":");
         pt_sbuf_add_json(sb, in->name);
-        pt_sbuf_addf(sb, ",\"nreal\":%d,\"nint\":%d,\"coord\":[", in->nreal, in->nint);
+        pt_sbuf_addf(sb, ",\"id\":%d,\"nreal\":%d,\"nint\":%d,\"coord\":[", st, in->nreal,
+                     in->nint);
         for (c = 0; c < 4 && in->coord[c]; c++) {
             if (c) pt_sbuf_add(sb, ",");
             pt_sbuf_add_json(sb, in->coord[c]);
         }
-        pt_sbuf_add(sb, "]}");
+        pt_sbuf_add(sb, "]");
+        if (s->matrix) {                    /* past the cvv of a vertex outside */
+            pt_jmatrix_unreached(b, sizeof b, (pt_stage)st);
+            pt_sbuf_add(sb, ",\"unreached\":");
+            pt_sbuf_add_json(sb, b);
+        }
+        pt_sbuf_add(sb, "}");
     }
     pt_sbuf_add(sb, "],\n\"models\":[");
     for (mi = 0; mi < s->nmodels; mi++) {
         const pt_model *m = &s->models[mi];
         pt_sbuf_add(sb, mi ? ",\n{\"t\":" : "\n{\"t\":");
         add_vec(sb, m->translate);
+        if (s->matrix) {                    /* its `world` lines, as the CLI computed them */
+            pt_sbuf_add(sb, ",\"w\":[");
+            for (c = 0; c < 16; c++) {
+                if (c) pt_sbuf_add(sb, ",");
+                add_bits(sb, m->world.m[c / 4][c % 4]);
+            }
+            pt_sbuf_add(sb, "]");
+        }
         pt_sbuf_add(sb, ",\"v\":[");
         for (k = 0; k < m->nv && k < PT_JOURNEY_WASM_MAXV; k++) {
             if (k) pt_sbuf_add(sb, k % 8 ? "," : ",\n");

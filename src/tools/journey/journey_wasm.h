@@ -4,8 +4,9 @@
 **
 ** The page of `pipetrace journey --html` gets a "recompute" section: sliders
 ** for the model's translation (x_t, y_t, z_t), the viewport's size and
-** corner (w, h, x_ul, y_ul) and the framebuffer's size (W, H).  Moving one
-** runs the chosen vertex through the classic camera's stages again, in the
+** corner (w, h, x_ul, y_ul) and the framebuffer's size (W, H); for the
+** matrix camera also fov, eye (eye_x, eye_y, eye_z), near and far.  Moving
+** one runs the chosen vertex through the camera's stages again, in the
 ** page, by calling the project's own stage files compiled to WebAssembly
 ** (stages/wasm/pt_wasm.c, built into $B/stages.wasm by the Makefile and
 ** embedded below as base64).  The page's script only moves numbers between
@@ -15,10 +16,12 @@
 **   #live              the section; data-ready="1" once the module runs,
 **                      data-wasm="no" when pipetrace was built without it
 **   #s_x_t ... #s_H    the sliders (input type=range), one per parameter
+**                      (#s_fov, #s_eye_x ... #s_far: the matrix camera's)
 **   #livetable         a row per stage (data-stage="camera"); its cell
 **                      data-values holds the stage's values, reals as 16 hex
 **                      digits of their IEEE bits, integers in decimal,
-**                      "none" for no value, separated by commas
+**                      "none" for no value, separated by commas; "unreached"
+**                      for a matrix stage past the cvv of a vertex outside
 **   #livenote          what the numbers shown are
 **   #reset             back to the scene's own numbers
 ** When a slider has moved, #coords shows the recomputed values of the shown
@@ -36,7 +39,7 @@
 ** Written by the Makefile into $B/stages_wasm.c. */
 extern const char *const pt_journey_wasm_b64[];
 
-/* Append the recompute section for scene s (the classic camera) to a journey
+/* Append the recompute section for scene s (either camera) to a journey
 ** page, after its own script: the sliders, the scene's numbers in exact
 ** form, the module and the script, or, built without the module, a note
 ** that says so.  The script finds the page's #data, #vertex, #stage and
