@@ -3,15 +3,16 @@
 ** See LICENSE for copyright and license.
 **
 ** Compiled with the stages' own files (pt_stage.c, pt_round.c, s1..s6,
-** pt_classic.c; pt_mat4.c, pt_matrix.c, m1..m7) by clang --target=wasm32 -nostdlib and linked by wasm-ld
-** into $B/stages.wasm (the Makefile's wasm part); the journey page
-** (src/tools/journey/journey_wasm.c) embeds it and calls the functions
-** below when a slider moves.  Nothing here computes a coordinate:
-** pt_wasm_run() calls pt_classic_journey(), as pt_run() does,
+** pt_classic.c; pt_mat4.c, pt_matrix.c, m1..m7) by clang --target=wasm32
+** -nostdlib and linked by wasm-ld into $B/stages.wasm (the Makefile's wasm
+** part); the journey page (src/tools/journey/journey_wasm.c) embeds it and
+** calls the functions below when a slider moves.  Nothing here computes a
+** coordinate: pt_wasm_run() calls pt_classic_journey(), as pt_run() does;
 ** pt_wasm_matrix_run() builds the matrices with pt_lookat(), pt_perspective()
 ** and pt_matrix_world(), as the scene reader and pt_plan_make() do, and calls
-** pt_matrix_journey(); both keep the record each stage reports.  The page reads them back one value at a time,
-** so it needs to know nothing of pt_vrec's layout.
+** pt_matrix_journey().  Both keep the record each stage reports; the page
+** reads them back one value at a time, so it needs to know nothing of
+** pt_vrec's layout.
 **
 **   pt_wasm_run(x_m, y_m, z_m, x_t, y_t, z_t, perspective, w, h, x_ul, y_ul, W, H)
 **   pt_wasm_in()            the address of the matrix camera's inputs (PT_WASM_IN_*)

@@ -1,5 +1,5 @@
 /*
-** stages/wasm/pt_wasm_libm.c -- fmax, ilogb, fmod, ldexp, frexp without libm, sin and cos from a table, for the stages in WebAssembly
+** stages/wasm/pt_wasm_libm.c -- the libm the stages need in WebAssembly (see pt_wasm_libm.h)
 ** See LICENSE for copyright and license.
 */
 #include <stdint.h>
