@@ -287,11 +287,13 @@ static void explain_coord(text *t, const pt_journey *j, pt_stage st, int k)
             add_num(t, comp(cur, k), 0);
         }
         break;
-    case PT_STAGE_PIXEL:                                    /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
+    case PT_STAGE_PIXEL:                /* s3_image2pixel.h, its divisor PT_PIXEL_DIVISOR */
         add_lhs(t, st, k);
-        add(t, k == 0 ? "0.5 + w/2.001 * (x_ip + 1) = 0.5 + "
-                      : "0.5 + h/2.001 * (y_ip + 1) = 0.5 + ");
-        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, "/2.001 * (");
+        add(t, k == 0 ? "0.5 + w/" : "0.5 + h/");
+        add_num(t, PT_PIXEL_DIVISOR, 0);
+        add(t, k == 0 ? " * (x_ip + 1) = 0.5 + " : " * (y_ip + 1) = 0.5 + ");
+        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, "/");
+        add_num(t, PT_PIXEL_DIVISOR, 0); add(t, " * (");
         add_num(t, comp(prev, k), 0); add(t, " + 1) = ");
         add_num(t, comp(cur, k), 0);
         break;
