@@ -230,6 +230,12 @@ printf 'framebuffer 20 10\ncamera orthographic\nmodel a\nv -0.5 0 0\nv 0.5 0 0\n
 run why "$tmp/ov.scene" --model a 8 5
 check "teach-8.12 why --model a: b's two segments also light the pixel" has "also lit in the image by segments that --model a leaves out of the trace: b s1, b s2"
 
+# ---- x_ip = 1.0005: outside the view rectangle, yet the pixel stage's divisor keeps it in
+printf 'framebuffer 40 30\nviewport 0 0 40 30\nmodel m\nv 2.001 0 -2\nv 0 0 -2\nl 1 2\n' > "$tmp/room.scene"
+run step "$tmp/room.scene" --vertex 1
+check "teach-8.13 step: just outside the view rectangle, but 2.001 leaves room" \
+    grep -qF -- "but the pixel stage's 2.001 leaves room: it still rounds to a pixel inside the viewport" "$tmp/out"
+
 # ---- where the Java renderer's 32-bit int parts from pipetrace, step says what Java holds
 run step tests/extreme/huge-coordinates.scene --vertex 1 --all
 check "teach-9.1 no pixel for 1e301, and Java's (int)Math.round gives -1" grep -qF -- "round(9.995002498750627e+300) - 1: none, it is beyond 2^62 (the Java renderer's (int)Math.round(x_pp) gives -1 here)" "$tmp/out"

@@ -455,9 +455,11 @@ static void next_image(text *t, const pt_journey *j)
         add(t, "not finite: it will have no pixel, and segments using it are skipped");
     else if (rect)
         add(t, "inside the view rectangle [-1, 1] x [-1, 1]: the point lies inside the viewport");
-    else if (vp_inside)
-        add(t, "just outside the view rectangle [-1, 1] x [-1, 1], but the pixel stage's "
-               "2.001 leaves room: it still rounds to a pixel inside the viewport");
+    else if (vp_inside) {
+        add(t, "just outside the view rectangle [-1, 1] x [-1, 1], but the pixel stage's ");
+        add_num(t, PT_PIXEL_DIVISOR, 0);
+        add(t, " leaves room: it still rounds to a pixel inside the viewport");
+    }
     else
         add(t, "outside the view rectangle [-1, 1] x [-1, 1]: the point lies outside the viewport");
 }
