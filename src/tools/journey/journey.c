@@ -476,7 +476,7 @@ static void pad(double b[4], double frac, double least)
 
 /* ===== layout ===== */
 
-int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m)
+int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame)
 {
     unsigned char *used = calloc(m->nv ? m->nv : 1, 1);
     double b[PT_NSTAGES][4], lim[4], reach, big = 0, deep = 0;
@@ -570,8 +570,12 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m)
                  BOX_W, BOX_H, st >= PT_STAGE_VIEWPORT);
     if (s->matrix && pt_jmatrix_init(jm) != 0) { pt_jmodel_free(jm); return -1; }
     if ((int64_t)s->fb_w * s->fb_h <= PT_JOURNEY_FRAMEMAX) {
-        if (pt_journey_render(&jm->frame, s) != 0) { pt_jmodel_free(jm); return -1; }
-        jm->has_frame = 1;
+        if (frame) jm->frame = frame;       /* rendered once for every model */
+        else {
+            if (pt_journey_render(&jm->own_frame, s) != 0) { pt_jmodel_free(jm); return -1; }
+            jm->owns_frame = 1;
+            jm->frame = &jm->own_frame;
+        }
     }
     return 0;
 }
@@ -600,8 +604,9 @@ void pt_jmodel_free(pt_jmodel *jm)
 {
     int st;
 
-    if (jm->has_frame) pt_fb_free(&jm->frame);
-    jm->has_frame = 0;
+    if (jm->owns_frame) pt_fb_free(&jm->own_frame);
+    jm->owns_frame = 0;
+    jm->frame = NULL;
     if (jm->place)
         for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_free(&jm->place[st]);
     free(jm->place);
@@ -809,7 +814,7 @@ static void axis_name(char *t, size_t n, pt_stage st, int k, const char *arrow)
 /* Is pixel (x, y) of the rendered frame lit (not the scene's background)? */
 static int frame_lit(const pt_jmodel *jm, int64_t x, int64_t y)
 {
-    const unsigned char *c = jm->frame.rgb + 3 * ((size_t)y * (size_t)jm->frame.w + (size_t)x);
+    const unsigned char *c = jm->frame->rgb + 3 * ((size_t)y * (size_t)jm->frame->w + (size_t)x);
     const unsigned char *bg = jm->s->background;
 
     return c[0] != bg[0] || c[1] != bg[1] || c[2] != bg[2];
@@ -821,12 +826,13 @@ static int frame_lit(const pt_jmodel *jm, int64_t x, int64_t y)
 ** <path> says how many pixels are lit (data-pixels) and the block (data-k). */
 static void frame_cells(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v)
 {
-    int64_t W = jm->frame.w, H = jm->frame.h, k = v->s >= 1 ? 1 : (int64_t)ceil(1 / v->s);
+    int64_t W, H, k = v->s >= 1 ? 1 : (int64_t)ceil(1 / v->s);
     int64_t bx, by, x, y, run, lit = 0;
     pathw pw;
     char attrs[128];
 
-    if (!jm->has_frame) return;
+    if (!jm->frame) return;
+    W = jm->frame->w; H = jm->frame->h;
     path_start(&pw, sb);
     for (by = 0; by * k < H; by++) {
         int64_t y1 = by * k + k < H ? by * k + k : H;
@@ -1190,7 +1196,7 @@ static void inset(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stag
         int64_t x, y;
         vp[0] = p->x_ul; vp[1] = p->y_ul; vp[2] = p->x_ul + p->w; vp[3] = p->y_ul + p->h;
         vrect(sb, &v, vp[0], vp[1], p->w, p->h, C_AREA, "", "", 0);
-        for (y = (int64_t)floor(v.y0); jm->has_frame && y < v.y1; y++)     /* the frame */
+        for (y = (int64_t)floor(v.y0); jm->frame && y < v.y1; y++)     /* the frame */
             for (x = (int64_t)floor(v.x0); x < v.x1; x++)
                 if (x >= 0 && y >= 0 && x < p->W && y < p->H && frame_lit(jm, x, y))
                     vrect(sb, &v, (double)x, (double)y, 1, 1, C_FRAMEPX, "", "", 0);
@@ -1620,7 +1626,7 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
     int i, n = s->matrix ? pt_matrix_norder : pt_classic_norder;
     const pt_stage *ord = s->matrix ? pt_matrix_order : pt_classic_order;
 
-    if (pt_jmodel_init(&jm, s, m) != 0) return -1;
+    if (pt_jmodel_init(&jm, s, m, NULL) != 0) return -1;
     pt_sbuf_add(sb, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     pt_sbuf_addf(sb, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %d %d\" "
                  "width=\"100%%\" font-family=\"%s\">\n", DOC_W, DOC_H(n), FONT);

@@ -83,15 +83,19 @@ typedef struct pt_jmodel {
     double depth;                /* camera panel: depth of the view pyramid */
     struct pt_jplace *place;     /* place[st]: stage st's lines, boxes and labels
                                  ** (jplace.h), recorded by its background; owned */
-    pt_fb frame;                 /* the scene rendered, every model: the
-                                 ** framebuffer panel's pixels; owned */
-    int has_frame;               /* 0: W x H > PT_JOURNEY_FRAMEMAX, none kept */
+    const pt_fb *frame;          /* the scene rendered, every model: the
+                                 ** framebuffer panel's pixels; NULL when
+                                 ** W x H > PT_JOURNEY_FRAMEMAX */
+    pt_fb own_frame;             /* frame, when this jm rendered it; owned */
+    int owns_frame;
 } pt_jmodel;
 
 /* Lay out the panels of model m of scene s (the classic camera: !s->matrix),
-** running the scene for the journeys of its vertices.  Returns 0, or -1 when
-** out of memory (then nothing is left to free). */
-int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m);
+** running the scene for the journeys of its vertices.  frame: the scene
+** rendered by another model's pt_jmodel (its ->frame, kept until this one is
+** freed), or NULL to render it here.  Returns 0, or -1 when out of memory
+** (then nothing is left to free). */
+int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame);
 
 /* Free what *jm owns (a zeroed or freed jm too).  This function can't fail. */
 void pt_jmodel_free(pt_jmodel *jm);

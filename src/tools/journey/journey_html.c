@@ -260,6 +260,7 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     pt_jmodel *jms = calloc(s->nmodels ? s->nmodels : 1, sizeof *jms);
     unsigned char *has = calloc(s->nmodels ? s->nmodels : 1, 1), *used = NULL;
     pt_sbuf t;
+    const pt_fb *frame = NULL;
     int st, i, rc = -1, found = 0;
     int n_st = s->matrix ? pt_matrix_norder : pt_classic_norder;
     const pt_stage *ord = s->matrix ? pt_matrix_order : pt_classic_order;
@@ -285,8 +286,11 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
             has[mi] = 1;
         }
     }
-    for (mi = 0; mi < s->nmodels; mi++)
-        if (has[mi] && pt_jmodel_init(&jms[mi], s, &s->models[mi]) != 0) goto done;
+    for (mi = 0; mi < s->nmodels; mi++) {
+        if (!has[mi]) continue;
+        if (pt_jmodel_init(&jms[mi], s, &s->models[mi], frame) != 0) goto done;
+        if (!frame) frame = jms[mi].frame;  /* the scene rendered once for every model */
+    }
 
     pt_sbuf_add(sb, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                 "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
