@@ -264,7 +264,8 @@ static int run_into(const pt_scene *s, const pt_listener *l, pt_fb *fb, pt_summa
 
 /* pt_run draws each model right after its vertices when nobody listens to
 ** the vertices (in turn), else after all of them: the same image and summary,
-** drawn by pt_raster_draw or, with a pixel listener, pt_raster_segment. */
+** drawn by pt_raster_draw with and without a pixel listener (the classic
+** camera) or pt_raster_segment (the matrix camera). */
 static void test_in_turn(void)
 {
     static const char *const scenes[] = {

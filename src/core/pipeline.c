@@ -276,7 +276,9 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
         const pt_sink *const *sinks = traced ? ms->traced : ms->quiet;
         int behind;
         filing *f = traced && l->journey ? fl : NULL;
-        struct { pt_vec2 pp; pt_vec4 clip; unsigned code; } x;
+        pt_vec2 pp_v;                       /* the pixel-plane point */
+        pt_vec4 clip = {0, 0, 0, 0};        /* matrix camera: clip coordinates */
+        unsigned code = 0;                  /* and the CVV outcode */
 
         if (!traced && !o->rasterize) continue;
         if (!mp->used[j] && !(traced && o->every_vertex)) continue;
@@ -288,25 +290,25 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
         if (s->matrix) {
             pt_matrices mx;
             pt_matrices_of(&mx, p, k);
-            x.pp = pt_matrix_journey(&par, &mx, m->v[j], sinks, &x.clip, &x.code);
-            behind = x.clip.w < 0;
+            pp_v = pt_matrix_journey(&par, &mx, m->v[j], sinks, &clip, &code);
+            behind = clip.w < 0;
         } else {
             double z_c;
-            x.pp = pt_classic_journey(&par, m->v[j], sinks, &z_c);
+            pp_v = pt_classic_journey(&par, m->v[j], sinks, &z_c);
             behind = s->perspective && z_c > 0;
         }
         if (f) {
             /* from the camera, not from the records that came: a student's
             ** stage that does not report must not shorten the journey */
-            f->j.norder = pt_journey_norder(s->matrix, s->matrix ? x.code : 0);
+            f->j.norder = pt_journey_norder(s->matrix, s->matrix ? code : 0);
             filing_end(f, l, m, j + 1, mp);
         }
         if (traced) {
             sum->vertices_traced++;
             sum->behind += behind;
         }
-        if (o->rasterize) pp[j] = x.pp;
-        if (o->rasterize && cl) { cl[j].clip = x.clip; cl[j].code = x.code; }
+        if (o->rasterize) pp[j] = pp_v;
+        if (o->rasterize && cl) { cl[j].clip = clip; cl[j].code = code; }
     }
 }
 
@@ -324,6 +326,8 @@ typedef struct raster_ctx {
     int x_ul, y_ul, W, H;        /* the scene's, at hand for every pixel */
 } raster_ctx;
 
+/* A pixel of the matrix camera's segments (pt_raster_segment); the classic
+** camera's are drawn by pt_raster_draw(), its stages inlined. */
 static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
     raster_ctx *rc = ud;
@@ -416,8 +420,16 @@ typedef struct drawing {
     pt_raster_out out;           /* on_pixel, on_clip, &rc */
     pt_raster_vp to_vp;          /* the camera's viewport stage */
     raster_ctx rc;
-    pt_raster_image im;          /* draw: the classic camera's pixels, untraced */
+    pt_raster_image im;          /* the classic camera's image and pixel listener */
 } drawing;
+
+/* The classic camera's pixels, to the listener (pt_raster_draw). */
+static void on_drawn(void *ud, int64_t x_fb, int64_t y_fb, int64_t idx)
+{
+    raster_ctx *rc = ud;
+
+    rc->l->pixel(rc->l->ud, rc->m, rc->seg, x_fb, y_fb, idx);
+}
 
 static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *sum)
 {
@@ -428,7 +440,9 @@ static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *
     d->rc.s = s; d->rc.fb = fb; d->rc.sum = sum;
     d->rc.npix = (int64_t)s->fb_w * s->fb_h;
     d->rc.x_ul = s->vp_x; d->rc.y_ul = s->vp_y; d->rc.W = s->fb_w; d->rc.H = s->fb_h;
-    d->im.fb = fb; d->im.x_ul = s->vp_x; d->im.y_ul = s->vp_y; d->im.pixels = 0;
+    d->im.fb = fb; d->im.W = s->fb_w; d->im.H = s->fb_h;
+    d->im.x_ul = s->vp_x; d->im.y_ul = s->vp_y; d->im.pixels = 0;
+    d->im.pixel_ud = &d->rc;
     sum->rasterized = 1;
 }
 
@@ -446,7 +460,8 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
 
     d->rc.m = m;
     d->rc.l = report ? l : NULL;
-    draw = !s->matrix && d->im.fb && !(d->rc.l && d->rc.l->pixel);
+    d->im.pixel = d->rc.l && d->rc.l->pixel ? on_drawn : NULL;
+    draw = !s->matrix && (d->im.fb || d->im.pixel);
     d->im.color = m->color;
     for (j = 0; j < m->nseg; j++) {
         pt_vec2 a = pp[m->seg[j].a], b = pp[m->seg[j].b];
@@ -459,7 +474,7 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
             if (report && l->skip) l->skip(l->ud, m, j + 1, 0, "outside the view volume");
             continue;
         }
-        if (draw)                           /* nobody listens to the pixels */
+        if (draw)                           /* the classic camera */
             r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &d->im, &d->out);
         else
             r = pt_raster_segment(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out);
@@ -527,7 +542,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     if (raster && !in_turn)                 /* every model's vertices ran: draw */
         for (k = 0; k < s->nmodels; k++)
             draw_model(&d, s, p, o, l, k, &ms[k], &fl, sum, pps[k], cls[k]);
-    if (raster) sum->pixels += d.im.pixels; /* those drawn without on_pixel */
+    if (raster) sum->pixels += d.im.pixels; /* those pt_raster_draw() drew */
     if (l->summary) l->summary(l->ud, sum);
 done:
     for (k = 0; k < n; k++) { free(pps[k]); free(cls[k]); }

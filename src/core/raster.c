@@ -2,7 +2,9 @@
 ** src/core/raster.c -- draw one line segment of the pixel plane into a viewport
 ** See LICENSE for copyright and license.
 */
+#include <assert.h>
 #include <float.h>
+#include <limits.h>
 #include <stddef.h>
 #include <math.h>
 #include "core/raster.h"
@@ -110,14 +112,14 @@ typedef struct dda {
 } dda;
 
 /* The viewport pixel of step (s, acc): the point (s, acc), or (acc, s) when
-** transposed, through the viewport stage. */
-static inline ALWAYS_INLINE pt_pix step_pixel(const dda *d, int transposed, int64_t s,
+** transposed, through the viewport stage.  s is a whole number. */
+static inline ALWAYS_INLINE pt_pix step_pixel(const dda *d, int transposed, double s,
                                               double acc)
 {
     pt_vec2 p;
 
-    if (transposed) { p.x = acc; p.y = (double)s; }
-    else            { p.x = (double)s; p.y = acc; }
+    if (transposed) { p.x = acc; p.y = s; }
+    else            { p.x = s; p.y = acc; }
     return d->to_vp(p, d->w, d->h, NULL);
 }
 
@@ -137,36 +139,46 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int64_t s0, 
     ** x_vp = s - 1 lies inside, widened by a margin of max(w, h) on each side
     ** for a student's stage that moves pixels (docs/teaching.md).  Steps
     ** beyond are clipped without asking, and skipped by the exact
-    ** fast-forward: drawing costs time in proportion to the band. */
+    ** fast-forward: drawing costs time in proportion to the band.  The band
+    ** stays inside the range of an int (it is, for any w and h below 2^30), so
+    ** that the compiler, seeing (double) of an int, knows the stepped
+    ** coordinate is whole and in range, and drops the viewport stage's
+    ** rounding and range check of it. */
     margin = d->w > d->h ? d->w : d->h;
     band_lo = 1 - margin;
     band_hi = (transposed ? d->h : d->w) + margin;
+    if (band_hi > INT_MAX - 1) band_hi = INT_MAX - 1;
 
     if (s < band_lo) {                              /* before the band: skip */
         int64_t last = s1 < band_lo - 1 ? s1 : band_lo - 1;
         uint64_t n = (uint64_t)(last - s) + 1;
         double acc_last = pt_raster_advance(acc, m, n - 1);
-        run_add(&run, n, step_pixel(d, transposed, s, acc),
-                step_pixel(d, transposed, last, acc_last));
+        run_add(&run, n, step_pixel(d, transposed, (double)s, acc),
+                step_pixel(d, transposed, (double)last, acc_last));
         acc = acc_last + m;
         s = last + 1;
     }
     end = s1 < band_hi ? s1 : band_hi;
-    for (; s <= end; s++) {                         /* inside the band: step */
-        p = step_pixel(d, transposed, s, acc);
-        if (p.ok && pt_inside(p.x, p.y, d->w, d->h)) {
-            run_flush(&run, d->out);
-            d->pixel(d->pixel_ud, p.x, p.y);
-        } else {
-            run_add(&run, 1, p, p);
+    if (s <= end) {                                 /* inside the band: step */
+        int si, si_end = (int)end;
+
+        for (si = (int)s; si <= si_end; si++) {
+            p = step_pixel(d, transposed, (double)si, acc);
+            if (p.ok && pt_inside(p.x, p.y, d->w, d->h)) {
+                run_flush(&run, d->out);
+                d->pixel(d->pixel_ud, p.x, p.y);
+            } else {
+                run_add(&run, 1, p, p);
+            }
+            acc += m;                               /* y += m */
         }
-        acc += m;                                   /* y += m */
+        s = end + 1;
     }
     if (s <= s1) {                                  /* after the band: skip */
         uint64_t n = (uint64_t)(s1 - s) + 1;
         double acc_last = pt_raster_advance(acc, m, n - 1);
-        run_add(&run, n, step_pixel(d, transposed, s, acc),
-                step_pixel(d, transposed, s1, acc_last));
+        run_add(&run, n, step_pixel(d, transposed, (double)s, acc),
+                step_pixel(d, transposed, (double)s1, acc_last));
     }
     run_flush(&run, d->out);
 }
@@ -194,7 +206,7 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
     d.pixel = pixel; d.pixel_ud = pixel_ud; d.out = out;
 
     if (x0 == x1 && y0 == y1) {                     /* degenerate: one pixel */
-        p = step_pixel(&d, 0, ix0, y0);
+        p = step_pixel(&d, 0, x0, y0);
         if (p.ok && pt_inside(p.x, p.y, w, h)) pixel(pixel_ud, p.x, p.y);
         else out->clip(out->ud, 1, p, p);
         return PT_RASTER_DEGENERATE;
@@ -228,25 +240,40 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
 ** the color and the framebuffer's size would be loaded and stored again
 ** around every pixel. */
 typedef struct draw_ctx {
-    pt_fb fb;                    /* im->fb's size and pixels */
+    pt_fb fb;                    /* im->fb's size and pixels (rgb NULL: no image) */
+    int W, H;                    /* the framebuffer's size */
     int x_ul, y_ul;              /* the viewport's corner */
     int64_t npix;                /* W * H: the pixel array's length */
     unsigned char color[3];
     uint64_t pixels;             /* pixels drawn */
+    pt_raster_drawn *listener;   /* im->pixel */
+    void *listener_ud;
 } draw_ctx;
 
 /* A pixel inside the viewport through the framebuffer and index stages into
-** the image; one the stages put outside the pixel array is left out (a
-** student's stage can: Java would throw). */
-static inline ALWAYS_INLINE void draw_pixel(void *ud, int64_t x_vp, int64_t y_vp)
+** the image, and to the listener when `listened`; one the stages put outside
+** the pixel array is not drawn (a student's stage can: Java would throw). */
+static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x_vp,
+                                            int64_t y_vp)
 {
-    draw_ctx *c = ud;
     pt_pix vp = {x_vp, y_vp, 1};
     pt_pix f = pt_viewport2fb(vp, c->x_ul, c->y_ul, NULL);
-    int64_t idx = pt_fb2index(f, c->fb.w, c->fb.h, NULL);
+    int64_t idx = pt_fb2index(f, c->W, c->H, NULL);
 
     c->pixels++;
-    if (idx >= 0 && idx < c->npix) pt_fb_set(&c->fb, idx, c->color);
+    if (listened) c->listener(c->listener_ud, f.x, f.y, idx);
+    if ((!listened || c->fb.rgb) && idx >= 0 && idx < c->npix)
+        pt_fb_set(&c->fb, idx, c->color);
+}
+
+static void draw_quiet(void *ud, int64_t x_vp, int64_t y_vp)
+{
+    draw_pixel(ud, 0, x_vp, y_vp);
+}
+
+static void draw_listened(void *ud, int64_t x_vp, int64_t y_vp)
+{
+    draw_pixel(ud, 1, x_vp, y_vp);
 }
 
 FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image *im,
@@ -255,13 +282,22 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
     draw_ctx c;
     int r;
 
-    c.fb = *im->fb;
+    assert(w > 0 && h > 0 && im->W > 0 && im->H > 0);
+    assert(im->fb || im->pixel);
+    assert(!im->fb || (im->fb->w == im->W && im->fb->h == im->H));
+    if (im->fb) c.fb = *im->fb;
+    else { c.fb.w = im->W; c.fb.h = im->H; c.fb.rgb = NULL; }
+    c.W = im->W;
+    c.H = im->H;
     c.x_ul = im->x_ul;
     c.y_ul = im->y_ul;
-    c.npix = (int64_t)c.fb.w * c.fb.h;
+    c.npix = (int64_t)c.W * c.H;
     c.color[0] = im->color[0]; c.color[1] = im->color[1]; c.color[2] = im->color[2];
     c.pixels = 0;
-    r = segment(p0, p1, w, h, pt_pixel2viewport, draw_pixel, &c, out);
+    c.listener = im->pixel;
+    c.listener_ud = im->pixel_ud;
+    if (c.listener) r = segment(p0, p1, w, h, pt_pixel2viewport, draw_listened, &c, out);
+    else            r = segment(p0, p1, w, h, pt_pixel2viewport, draw_quiet, &c, out);
     im->pixels += c.pixels;
     return r;
 }

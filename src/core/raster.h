@@ -49,20 +49,28 @@ typedef pt_pix (*pt_raster_vp)(pt_vec2 pp, int w, int h, const pt_sink *sink);
 int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
                       const pt_raster_out *out);
 
-/* An image the classic camera draws into (pt_raster_draw). */
+/* Told of each pixel pt_raster_draw() draws: its framebuffer pixel and its
+** index, as the framebuffer and index stages give them (idx < 0: none). */
+typedef void pt_raster_drawn(void *ud, int64_t x_fb, int64_t y_fb, int64_t idx);
+
+/* What the classic camera draws into (pt_raster_draw): an image, a listener
+** of the pixels, or both. */
 typedef struct pt_raster_image {
-    pt_fb *fb;                   /* the framebuffer */
+    pt_fb *fb;                   /* the framebuffer (W x H), or NULL: no image */
+    int W, H;                    /* the framebuffer's size */
     int x_ul, y_ul;              /* the viewport's upper-left corner in it */
     const unsigned char *color;  /* the segment's color, RGB */
     uint64_t pixels;             /* pixels drawn (inside the viewport), added to */
+    pt_raster_drawn *pixel;      /* told of each pixel drawn, or NULL */
+    void *pixel_ud;              /* passed back to it unchanged */
 } pt_raster_image;
 
-/* pt_raster_segment() for the classic camera when nobody listens to the
-** pixels: each step's pixel from pt_pixel2viewport(), each pixel inside
-** through pt_viewport2fb() and pt_fb2index() into im->fb (unless the stages
-** put it outside the pixel array), counted in im->pixels; runs of clipped
-** steps still go to out->clip (out->pixel is not used).  The same pixels,
-** without a call through a pointer for each: the untraced render's loop. */
+/* pt_raster_segment() for the classic camera: each step's pixel from
+** pt_pixel2viewport(), each pixel inside through pt_viewport2fb() and
+** pt_fb2index() into im->fb (unless the stages put it outside the pixel
+** array) and to im->pixel, counted in im->pixels; runs of clipped steps
+** still go to out->clip (out->pixel is not used).  The same pixels, with the
+** three stages inlined into the loop: the classic camera's render. */
 int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image *im,
                    const pt_raster_out *out);
 
