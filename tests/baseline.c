@@ -8,7 +8,9 @@
 ** checked), the classic camera's formulas in a loop, floor(x + 0.5) for
 ** rounding, the DDA of src/core/raster.c without its fast-forward, and a
 ** uint32 framebuffer.  It prints "parse S render S pixels N": the least of 5
-** parses, the least of 5 warm renders, and the pixels of one render; with OUT it
+** parses, the least of 15 renders (the first touches the framebuffer's pages
+** for the first time: the least is a warm one, as tests/bench.c's are), and
+** the pixels of one render; with OUT it
 ** writes the image too (binary PPM), so that the whole process can be timed.
 ** tests/bench.c compares pipetrace with it.
 */
@@ -183,10 +185,11 @@ static int by_value(const void *a, const void *b)
 
 int main(int argc, char **argv)
 {
-    double t0, tparse[5], t[5];
+    double t0, tparse[5], t[15];
     uint64_t pixels = 0;
     FILE *f;
     int k, runs = argc > 2 ? 1 : 5;     /* with OUT: once, as a user would */
+    int renders = argc > 2 ? 1 : 15;    /* as many as tests/bench.c's RENDERS */
 
     for (k = 0; k < runs; k++) {
         if (argc < 2 || !(f = fopen(argv[1], "r"))) {
@@ -200,7 +203,7 @@ int main(int argc, char **argv)
         fclose(f);
     }
     fb = calloc((size_t)W * H, sizeof *fb);
-    for (k = 0; k < runs; k++) {
+    for (k = 0; k < renders; k++) {
         t0 = now();
         pixels = render();
         t[k] = now() - t0;
@@ -224,7 +227,7 @@ int main(int argc, char **argv)
                (unsigned long long)pixels);
         return 0;
     }
-    qsort(t, 5, sizeof *t, by_value);
+    qsort(t, (size_t)renders, sizeof *t, by_value);
     qsort(tparse, 5, sizeof *tparse, by_value);
     printf("parse %.6f render %.6f pixels %llu\n", tparse[0], t[0], (unsigned long long)pixels);
     return 0;
