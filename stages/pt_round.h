@@ -38,22 +38,22 @@ double pt_java_round(double x);
 ** f = x - trunc(x) is exact too (for |x| >= 1, trunc(x) and x lie within a
 ** factor of 2 (Sterbenz); below, trunc(x) = 0; from 2^52 on, f = 0).  Then f
 ** in (-1, 1) says which way to the nearest: up when f >= 0.5, down when
-** f < -0.5 (a tie, f = -0.5, goes up, to trunc(x)).  A whole x (f = 0) skips
-** that step, which changes nothing; it is there for the compiler: where x is
-** (double) of an int, as the coordinate the rasterizer steps is, it sees that
-** trunc(x) == x and that x is in range, and drops the rounding altogether.
+** f < -0.5 (a tie, f = -0.5, goes up, to trunc(x)).  The step is multiplied
+** by (trunc(x) != x), which changes nothing (f = 0 then) and takes no
+** branch; it is there for the compiler: where x is (double) of an int, as
+** the coordinate the rasterizer steps is, it sees that trunc(x) == x and that
+** x is in range, and drops the rounding altogether.
 ** tests/test_stages.c compares it with pt_java_round(). */
 static inline int pt_pix_round(double x, int64_t *out)
 {
     int64_t i;
-    double f;
+    double t, f;
 
     if (!(x > -PT_PIX_LIMIT && x < PT_PIX_LIMIT)) { *out = 0; return 0; }  /* NaN too */
     i = (int64_t)x;                         /* toward zero */
-    if ((double)i != x) {
-        f = x - (double)i;                      /* the fraction, exact */
-        i += (f >= 0.5) - (f < -0.5);           /* ties go up: toward +infinity */
-    }
+    t = (double)i;
+    f = x - t;                              /* the fraction, exact */
+    i += (int64_t)(t != x) * ((f >= 0.5) - (f < -0.5));  /* ties go up: to +infinity */
     *out = i;
     return 1;
 }

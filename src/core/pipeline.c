@@ -157,6 +157,7 @@ static void count_warnings(pt_summary *sum, const pt_vrec *r)
 {
     int k;
 
+    if (!r->warn) return;                   /* the usual record */
     for (k = 0; k < PT_NWARN; k++)
         if (r->warn & (1u << k)) sum->warnings[k]++;
 }

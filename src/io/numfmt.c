@@ -85,21 +85,32 @@ static void digits_back(char *end, uint64_t x)
     else *--end = (char)('0' + y);
 }
 
+/* x < 10^4: its 1 to 4 digits at buf. */
+static size_t small_digits(char *buf, uint32_t x)
+{
+    uint32_t hi = x / 100, lo = x % 100;
+
+    if (x < 10) { buf[0] = (char)('0' + x); return 1; }
+    if (x < 100) { memcpy(buf, digit_pairs + 2 * lo, 2); return 2; }
+    if (x < 1000) { buf[0] = (char)('0' + hi); memcpy(buf + 1, digit_pairs + 2 * lo, 2); return 3; }
+    memcpy(buf, digit_pairs + 2 * hi, 2);
+    memcpy(buf + 2, digit_pairs + 2 * lo, 2);
+    return 4;
+}
+
 size_t pt_fmt_u64(char *buf, uint64_t x)
 {
     int n;
 
-    if (x < 10000) {                        /* most integers of a trace */
-        uint32_t hi = (uint32_t)x / 100, lo = (uint32_t)x % 100;
-        if (x < 10) { buf[0] = (char)('0' + x); return 1; }
-        if (x < 100) { memcpy(buf, digit_pairs + 2 * lo, 2); return 2; }
-        if (x < 1000) { buf[0] = (char)('0' + hi); memcpy(buf + 1, digit_pairs + 2 * lo, 2); return 3; }
-        memcpy(buf, digit_pairs + 2 * hi, 2);
-        memcpy(buf + 2, digit_pairs + 2 * lo, 2);
-        return 4;
+    if (x < 10000) return small_digits(buf, (uint32_t)x);  /* most integers of a trace */
+    if (x < 100000000) {                    /* indexes: the high digits, then four */
+        uint32_t y = (uint32_t)x, lo = y % 10000;
+        size_t k = small_digits(buf, y / 10000);
+        memcpy(buf + k, digit_pairs + 2 * (lo / 100), 2);
+        memcpy(buf + k + 2, digit_pairs + 2 * (lo % 100), 2);
+        return k + 4;
     }
     n = u64_len(x);
-
     digits_back(buf + n, x);
     return (size_t)n;
 }
