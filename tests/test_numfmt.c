@@ -398,6 +398,24 @@ int main(int argc, char **argv)
         for (k = 0; k < 100000; k++) ok &= u64_agrees(next_random() >> (next_random() % 64));
         PT_CHECK("num-6.2 integers: 100000 random ones of every length", ok);
     }
+    {
+        static pt_digits4 t;
+        char got[PT_NUMLEN], want[PT_NUMLEN];
+        uint32_t x;
+        int ok = 1;
+
+        pt_digits4_init(&t);
+        static const uint32_t edges[] = {999999, 1000000, 9999999, 10000000, 99999999};
+        for (x = 0; x < 100000000; x += x < 200000 ? 1 : 997) {   /* every one below */
+            size_t n = pt_fmt_u32_tab(&t, got, x), m = pt_fmt_u64(want, x);   /* 200000 */
+            if (n != m || memcmp(got, want, n) != 0) ok = 0;
+        }
+        for (k = 0; k < 5; k++) {
+            size_t n = pt_fmt_u32_tab(&t, got, edges[k]), m = pt_fmt_u64(want, edges[k]);
+            if (n != m || memcmp(got, want, n) != 0) ok = 0;
+        }
+        PT_CHECK("num-6.3 integers below 10^8 from the digit table: pt_fmt_u64()'s digits", ok);
+    }
 
     pt_fmt_fixed(b, 5.497501249375313, 6);
     PT_CHECK("num-3.1 fixed, 6 digits", strcmp(b, "5.497501") == 0);

@@ -115,6 +115,18 @@ size_t pt_fmt_u64(char *buf, uint64_t x)
     return (size_t)n;
 }
 
+void pt_digits4_init(pt_digits4 *t)
+{
+    int k;
+
+    for (k = 0; k < 10000; k++) {
+        memcpy(t->d + 4 * k, digit_pairs + 2 * (k / 100), 2);
+        memcpy(t->d + 4 * k + 2, digit_pairs + 2 * (k % 100), 2);
+        t->n[k] = (unsigned char)(1 + (k >= 10) + (k >= 100) + (k >= 1000));
+    }
+    memset(t->d + 4 * 10000, '0', 4);
+}
+
 size_t pt_fmt_ulen(uint64_t x)
 {
     return (size_t)u64_len(x);

@@ -7,6 +7,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #define PT_NUMLEN 40             /* room for any number these functions write */
 #define PT_SHORTLEN 24           /* the longest pt_fmt_shortest() spelling, NUL
@@ -28,5 +29,31 @@ size_t pt_fmt_u64(char *buf, uint64_t x);
 
 /* The number of digits pt_fmt_u64() writes for x.  Can't fail. */
 size_t pt_fmt_ulen(uint64_t x);
+
+/* The four digits of each of 0 .. 9999, zero-padded ("0000" .. "9999"), and
+** four spare bytes: a writer that formats millions of small integers (a
+** trace's pixels) keeps one and copies from it, four bytes at a time. */
+typedef struct pt_digits4 {
+    char d[4 * 10000 + 4];
+    unsigned char n[10000];      /* how many digits each has: 1 .. 4 */
+} pt_digits4;
+
+/* Fill *t.  This function can't fail. */
+void pt_digits4_init(pt_digits4 *t);
+
+/* pt_fmt_u64() for x < 10^8, from table t: the same digits, written as two
+** four-byte copies at most (buf has 8 bytes of room).  Can't fail. */
+static inline size_t pt_fmt_u32_tab(const pt_digits4 *t, char *buf, uint32_t x)
+{
+    uint32_t hi = x, lo = 0;
+    size_t n;
+
+    if (x >= 10000) { hi = x / 10000; lo = x % 10000; }
+    n = t->n[hi];
+    memcpy(buf, t->d + 4 * hi + 4 - n, 4);  /* hi's n digits, then bytes to spare */
+    if (x < 10000) return n;
+    memcpy(buf + n, t->d + 4 * lo, 4);      /* lo's four, zeros too */
+    return n + 4;
+}
 
 #endif

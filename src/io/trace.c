@@ -193,9 +193,17 @@ static void put_fixed_col(pt_trace *t, double x, int prec)
     t->len += pad + n;
 }
 
+/* u's digits at o (20 bytes); below 10^8 (the pixels, the indexes) from the
+** trace's digit table, else by pt_fmt_u64(). */
+static char *digits_at(const pt_trace *t, char *o, uint64_t u)
+{
+    if (u < 100000000) return o + pt_fmt_u32_tab(&t->digits, o, (uint32_t)u);
+    return o + pt_fmt_u64(o, u);
+}
+
 /* "%*" PRId64 at o (at most 20 bytes plus padding); returns the end.  Digits
 ** by hand (snprintf costs more than the rest of a record). */
-static char *int_at(char *o, int64_t x, size_t width)
+static char *int_at(const pt_trace *t, char *o, int64_t x, size_t width)
 {
     uint64_t u = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
 
@@ -204,12 +212,12 @@ static char *int_at(char *o, int64_t x, size_t width)
         for (; width > n; width--) *o++ = ' ';
     }
     if (x < 0) *o++ = '-';
-    return o + pt_fmt_u64(o, u);
+    return digits_at(t, o, u);
 }
 
-static char *u64_at(char *o, uint64_t x)            /* x's digits at o (20 bytes) */
+static char *u64_at(const pt_trace *t, char *o, uint64_t x)   /* x's digits at o */
 {
-    return o + pt_fmt_u64(o, x);
+    return digits_at(t, o, x);
 }
 
 static char *str_at(char *o, const char *s)         /* s at o; returns the end */
@@ -221,7 +229,7 @@ static char *str_at(char *o, const char *s)         /* s at o; returns the end *
 
 static void put_int_col(pt_trace *t, int64_t x)
 {
-    t->len = (size_t)(int_at(room(t, 32), x, 12) - t->buf);
+    t->len = (size_t)(int_at(t, room(t, 32), x, 12) - t->buf);
 }
 
 /* Text: "name v12", padded so that the stage names line up: to 14 columns, or
@@ -601,15 +609,69 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
     if (t->explain) put_explain(t, r);
 }
 
-/* ',"x":' at o: the JSON key of value k of stage st (stages/pt_stage.h). */
-static char *key_at(char *o, pt_stage st, int k)
+/* Piece k of stage st at o (t->frag: one fixed-size copy); returns the end. */
+static char *frag_at(const pt_trace *t, char *o, pt_stage st, int k)
 {
-    *o++ = ',';
-    *o++ = '"';
-    o = str_at(o, pt_stage_infos[st].key[k]);
-    *o++ = '"';
-    *o++ = ':';
-    return o;
+    memcpy(o, t->frag[st][k].s, sizeof t->frag[st][k].s);
+    return o + t->frag[st][k].len;
+}
+
+/* ',"x":' at o: the JSON key of value k of stage st (stages/pt_stage.h). */
+static char *key_at(const pt_trace *t, char *o, pt_stage st, int k)
+{
+    return frag_at(t, o, st, 1 + k);
+}
+
+/* The pieces of each stage's records: JSON Lines ',"stage":"NAME"' and the
+** keys ',"KEY":' of its values; CSV its name.  From pt_stage_infos; a piece
+** that would not fit (none does) is left empty and asserted. */
+static void frags_init(pt_trace *t)
+{
+    int st, k;
+
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {
+        const pt_stage_info *in = &pt_stage_infos[st];
+        for (k = 0; k < 5; k++) {
+            struct pt_trace_frag *f = &t->frag[st][k];
+            int n = 0;
+            memset(f->s, 0, sizeof f->s);
+            if (k == 0 && t->fmt == PT_FORMAT_CSV)
+                n = snprintf(f->s, sizeof f->s, "%s", in->name);
+            else if (k == 0)
+                n = snprintf(f->s, sizeof f->s, ",\"stage\":\"%s\"", in->name);
+            else if (k - 1 < 4 && in->key[k - 1] && t->fmt != PT_FORMAT_CSV)
+                n = snprintf(f->s, sizeof f->s, ",\"%s\":", in->key[k - 1]);
+            assert(n >= 0 && (size_t)n < sizeof f->s);
+            f->len = (unsigned char)n;
+        }
+    }
+}
+
+/* How the vertex records of model m begin, up to v's digits:
+** '{"type":"vertex","model":"m1","v":' (JSON Lines) or 'm1,' (CSV), written
+** by the code that writes them otherwise (then taken back out of the block)
+** and kept in t->vx; t->vx_len is 0 when it does not fit (as pixel_prefix). */
+static void vertex_prefix(pt_trace *t, const pt_model *m)
+{
+    size_t start;
+
+    t->vx_model = m;
+    t->vx_len = 0;
+    if (strlen(m->name) > 40) return;
+    room(t, 512);
+    start = t->len;
+    if (t->fmt == PT_FORMAT_CSV) {
+        puts_(t, m->name); put(t, ",", 1);
+    } else {
+        puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, m->name);
+        puts_(t, ",\"v\":");
+    }
+    assert(t->len >= start);
+    if (t->len - start <= sizeof t->vx) {
+        t->vx_len = t->len - start;
+        memcpy(t->vx, t->buf + start, t->vx_len);
+    }
+    t->len = start;
 }
 
 /* JSON: ["a","b"] at o, the names whose bits are set in bits. */
@@ -637,31 +699,39 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
     if (t->clipv) {
         puts_(t, "{\"type\":\"clipvertex\",\"model\":"); put_json_str(t, t->model->name);
         o = room(t, PT_ROW_REST);
-        o = str_at(o, ",\"segment\":"); o = u64_at(o, t->seg);
-        o = str_at(o, ",\"from\":"); o = u64_at(o, t->from);
-        o = str_at(o, ",\"to\":"); o = u64_at(o, t->to);
+        o = str_at(o, ",\"segment\":"); o = u64_at(t, o, t->seg);
+        o = str_at(o, ",\"from\":"); o = u64_at(t, o, t->from);
+        o = str_at(o, ",\"to\":"); o = u64_at(t, o, t->to);
         o = str_at(o, ",\"t\":"); o = json_num_at(t, o, t->t_clip);
     } else {
-        puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
-        o = room(t, PT_ROW_REST);
-        o = str_at(o, ",\"v\":"); o = u64_at(o, t->v);
+        if (t->model != t->vx_model) vertex_prefix(t, t->model);
+        if (t->vx_len) {                    /* the usual case: one fixed-size copy */
+            o = room(t, sizeof t->vx + PT_ROW_REST);
+            memcpy(o, t->vx, sizeof t->vx);
+            o += t->vx_len;
+        } else {
+            puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
+            o = room(t, PT_ROW_REST);
+            o = str_at(o, ",\"v\":");
+        }
+        o = u64_at(t, o, t->v);
     }
-    o = str_at(o, ",\"stage\":\""); o = str_at(o, pt_stage_infos[r->stage].name); *o++ = '"';
+    o = frag_at(t, o, r->stage, 0);         /* ,"stage":"camera" */
     if (r->stage == PT_STAGE_CVV) {
-        o = str_at(o, ",\"code\":"); o = int_at(o, r->code, 0);
+        o = str_at(o, ",\"code\":"); o = int_at(t, o, r->code, 0);
         o = str_at(o, ",\"planes\":");
         o = names_json_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES);
     } else if (pt_stage_infos[r->stage].nreal) {
         const double v[4] = {r->x, r->y, r->z, r->w};
         int k;
         for (k = 0; k < pt_stage_infos[r->stage].nreal; k++)
-            o = json_num_at(t, key_at(o, r->stage, k), v[k]);
+            o = json_num_at(t, key_at(t, o, r->stage, k), v[k]);
     } else {                                /* viewport, framebuffer, index */
         const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
         int k;
         for (k = 0; k < pt_stage_infos[r->stage].nint; k++) {
-            o = key_at(o, r->stage, k);
-            o = pt_rec_has(r, k) ? int_at(o, n[k], 0) : str_at(o, "null");
+            o = key_at(t, o, r->stage, k);
+            o = pt_rec_has(r, k) ? int_at(t, o, n[k], 0) : str_at(o, "null");
         }
     }
     if (r->stage == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND))
@@ -672,7 +742,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         o = str_at(o, ",\"warning\":");
         o = names_json_at(o, r->warn, pt_warn_names, PT_NWARN);
         if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) {
-            o = str_at(o, ",\"digits_lost\":"); o = int_at(o, r->digits_lost, 0);
+            o = str_at(o, ",\"digits_lost\":"); o = int_at(t, o, r->digits_lost, 0);
         }
     }
     t->len = (size_t)(o - t->buf);
@@ -706,23 +776,30 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     const double v[4] = {r->x, r->y, r->z, r->w};
     char *o;
 
-    puts_(t, t->model->name);
-    o = room(t, PT_ROW_REST);
+    if (t->model != t->vx_model) vertex_prefix(t, t->model);
+    if (t->vx_len) {                        /* 'm1,': one fixed-size copy */
+        o = room(t, sizeof t->vx + PT_ROW_REST);
+        memcpy(o, t->vx, sizeof t->vx);
+        o += t->vx_len;
+    } else {
+        puts_(t, t->model->name);
+        o = room(t, PT_ROW_REST);
+        *o++ = ',';
+    }
+    if (!t->clipv) o = u64_at(t, o, t->v);
     *o++ = ',';
-    if (!t->clipv) o = u64_at(o, t->v);
-    *o++ = ',';
-    o = str_at(o, pt_stage_infos[r->stage].name);
+    o = frag_at(t, o, r->stage, 0);         /* the stage's name */
     for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
         *o++ = ',';
         if (k < dims) o = short_at(t, o, v[k]);
         else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
                  && pt_rec_has(r, k))
-            o = int_at(o, k ? r->iy : r->ix, 0);
+            o = int_at(t, o, k ? r->iy : r->ix, 0);
     }
     *o++ = ',';
     if (matrix) {                                       /* code,planes */
         if (r->stage == PT_STAGE_CVV) {
-            o = int_at(o, r->code, 0);
+            o = int_at(t, o, r->code, 0);
             *o++ = ',';
             o = names_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES, '|');
         } else {
@@ -736,16 +813,16 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
         if (r->stage == PT_STAGE_IMAGE) *o++ = r->flags & PT_REC_BEHIND ? '1' : '0';
         *o++ = ',';
     }
-    if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) o = int_at(o, r->i, 0);
+    if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) o = int_at(t, o, r->i, 0);
     *o++ = ',';
     if (matrix) {                                       /* segment,t */
-        if (t->clipv) { o = u64_at(o, t->seg); *o++ = ','; o = short_at(t, o, t->t_clip); }
+        if (t->clipv) { o = u64_at(t, o, t->seg); *o++ = ','; o = short_at(t, o, t->t_clip); }
         else *o++ = ',';
         *o++ = ',';
     }
     o = names_at(o, r->warn, pt_warn_names, PT_NWARN, '|');
     *o++ = ',';
-    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) o = int_at(o, r->digits_lost, 0);
+    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) o = int_at(t, o, r->digits_lost, 0);
     *o++ = '\n';
     t->len = (size_t)(o - t->buf);
 }
@@ -815,14 +892,14 @@ static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
         memcpy(o, t->pix, sizeof t->pix);
         o += t->pix_len;
         if (t->fmt == PT_FORMAT_TEXT) {
-            o = int_at(o, x_fb, 12);
-            o = int_at(str_at(o, "  y_fb = "), y_fb, 12);
-            o = int_at(str_at(o, "  idx = "), idx, 0);
+            o = int_at(t, o, x_fb, 12);
+            o = int_at(t, str_at(o, "  y_fb = "), y_fb, 12);
+            o = int_at(t, str_at(o, "  idx = "), idx, 0);
             *o++ = '\n';
         } else {
-            o = int_at(o, x_fb, 0);
-            o = int_at(str_at(o, ",\"y\":"), y_fb, 0);
-            o = int_at(str_at(o, ",\"i\":"), idx, 0);
+            o = int_at(t, o, x_fb, 0);
+            o = int_at(t, str_at(o, ",\"y\":"), y_fb, 0);
+            o = int_at(t, str_at(o, ",\"i\":"), idx, 0);
             o = str_at(o, "}\n");
         }
         t->len = (size_t)(o - t->buf);
@@ -973,6 +1050,10 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->pix_model = NULL;
     t->pix_seg = 0;
     t->pix_len = 0;
+    t->vx_model = NULL;
+    t->vx_len = 0;
+    pt_digits4_init(&t->digits);
+    frags_init(t);
     for (k = 0; k < sizeof t->nums / sizeof t->nums[0]; k++) {  /* each slot: +0 */
         t->nums[k].bits = 0;
         t->nums[k].len = (unsigned char)pt_fmt_shortest(b, 0.0);

@@ -72,6 +72,14 @@ typedef struct pt_trace {
     uint64_t pix_seg;            /*   (trace.c: pixel_prefix) */
     size_t pix_len;              /* how their records begin: pix[0..pix_len), */
     char pix[96];                /*   0 when that does not fit */
+    pt_digits4 digits;           /* 0000 .. 9999, for integers (trace.c: digits_at) */
+    const pt_model *vx_model;    /* the model whose vertex records begin so: */
+    size_t vx_len;               /*   vx[0..vx_len), 0 when it does not fit */
+    char vx[96];                 /*   (trace.c: vertex_prefix) */
+    struct pt_trace_frag {       /* a stage's pieces of a record, made once from */
+        unsigned char len;       /*   pt_stage_infos (trace.c: frags_init): */
+        char s[31];              /*   JSON ',"stage":"camera"', then ',"x":' ...; */
+    } frag[PT_NSTAGES_ALL][5];   /*   CSV the name, then nothing */
     struct pt_trace_num {        /* recent doubles, by their bits' hash, */
         uint64_t bits;           /*   spelled as pt_fmt_shortest() spells them */
         unsigned char len;       /*   (trace.c: short_at) */
