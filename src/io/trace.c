@@ -745,8 +745,14 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
             o = str_at(o, ",\"digits_lost\":"); o = int_at(t, o, r->digits_lost, 0);
         }
     }
+    if (!t->explain) {                      /* the usual case: close it in place */
+        *o++ = '}';
+        *o++ = '\n';
+        t->len = (size_t)(o - t->buf);
+        return;
+    }
     t->len = (size_t)(o - t->buf);
-    if (t->explain) put_explain(t, r);
+    put_explain(t, r);
     puts_(t, "}\n");
 }
 
