@@ -49,13 +49,15 @@ static const char digit_pairs[] =
 /* The number of decimal digits of x (1 for 0). */
 static int u64_len(uint64_t x)
 {
-    uint64_t p = UINT64_C(1000000000);
-    int n = 9;
+    const uint64_t e8 = 100000000;
 
     if (x < 10000) return x < 100 ? 1 + (x >= 10) : 3 + (x >= 1000);
-    if (x < 100000000) return x < 1000000 ? 5 + (x >= 100000) : 7 + (x >= 10000000);
-    for (; n < 20 && x >= p; n++) p *= 10;  /* no overflow: p <= 10^19 */
-    return n;
+    if (x < e8) return x < 1000000 ? 5 + (x >= 100000) : 7 + (x >= 10000000);
+    if (x < e8 * 10000)                     /* 9 .. 12 digits */
+        return x < e8 * 100 ? 9 + (x >= e8 * 10) : 11 + (x >= e8 * 1000);
+    if (x < e8 * e8)                        /* 13 .. 16: most doubles' digits */
+        return x < e8 * 1000000 ? 13 + (x >= e8 * 100000) : 15 + (x >= e8 * 10000000);
+    return x < e8 * e8 * 100 ? 17 + (x >= e8 * e8 * 10) : 19 + (x >= e8 * e8 * 1000);
 }
 
 /* x's u64_len(x) digits, written backwards to end just before end: two a
