@@ -214,5 +214,20 @@ check "out-14.4 ... its errors say <stdin>:LINE:COL" test "$?" = 2 -a \
 "$exe" step - --vertex 1 --all < "$tri" > "$tmp/out" 2>&1
 check "out-14.5 ... in the other commands too" grep -q "of model tri in <stdin>" "$tmp/out"
 
+# A CSV trace has no raster rows: drawing the image too (each model right
+# after its vertices, src/core/pipeline.c) must not change a byte of it.
+{ sed -n '/^framebuffer/,$p' docs/examples/lookat-near.scene; printf 'model two\nv 0.5 0.25 4\nv 0.5 0.25 -4\nl 1 2\n'; } \
+    > "$tmp/two-clipped.scene"      # the matrix camera clips while it draws
+for sc in docs/examples/two-models.scene docs/examples/builtin.scene docs/examples/clip.scene \
+          docs/examples/lookat-world.scene "$tmp/two-clipped.scene"; do
+    "$exe" "$sc" --format csv --trace "$tmp/a.csv" 2>/dev/null
+    "$exe" "$sc" --format csv --trace "$tmp/b.csv" --image "$tmp/b.ppm" 2>/dev/null
+    check "out-15 $(basename "$sc"): the CSV trace is the same with --image" cmp -s "$tmp/a.csv" "$tmp/b.csv"
+done
+# ... and the points clipping makes (no v) come after every model's vertices
+check "out-15.1 two clipped models: their clipping points after all vertices" \
+    awk -F, 'NR > 1 && $2 == "" { cut = 1 } NR > 1 && $2 != "" && cut { bad = 1 }
+             END { exit !(cut && !bad) }' "$tmp/b.csv"
+
 [ "$skipped" -gt 0 ] && echo "$skipped skipped (no O_TMPFILE, or no way to lock a directory here)"
 report

@@ -501,13 +501,16 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     /* Rasterize for an image, for a listener of pixel, clip, skip or summary
     ** records, or for the matrix camera's points clipping makes; else nobody
     ** listens (a CSV trace has no raster rows): skip it.  When nobody listens
-    ** to the vertices either, each model is drawn right after its vertices
+    ** to the vertices, or nobody to what drawing reports (a CSV trace with an
+    ** image, classic camera: the matrix camera's clipping makes vertex
+    ** records while it draws), each model is drawn right after its vertices
     ** ran ("in turn"), from one buffer the size of the largest model, which
-    ** stays in the cache: the records that remain (pixels, clip runs, skips)
-    ** come in the same order as when every model's vertices run first. */
+    ** stays in the cache: the records that remain come in the same order as
+    ** when every model's vertices run first (the summary comes last). */
     raster = o->rasterize && (fb || l->pixel || l->clip || l->skip || l->summary || s->matrix);
-    in_turn = raster && !l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin &&
-              !l->journey;
+    in_turn = raster &&
+              ((!l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin && !l->journey) ||
+               (!s->matrix && !l->pixel && !l->clip && !l->skip));
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
     n = s->nmodels ? s->nmodels : 1;
