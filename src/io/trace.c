@@ -862,8 +862,17 @@ static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint6
 ** come between its start and its end. */
 static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
 {
-    size_t start;
+    size_t start, mlen = 0;
 
+    if (t->fmt == PT_FORMAT_JSONL && m == t->pix_model && t->pix_len &&
+        t->pix_mlen + 32 <= sizeof t->pix) {
+        /* the next segment of the same model: only the number changes */
+        char *o = u64_at(t, t->pix + t->pix_mlen, seg);
+        memcpy(o, ",\"x\":", 5);
+        t->pix_seg = seg;
+        t->pix_len = (size_t)(o + 5 - t->pix);
+        return;
+    }
     t->pix_model = m;
     t->pix_seg = seg;
     t->pix_len = 0;
@@ -875,11 +884,13 @@ static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
         puts_(t, "pixel        x_fb = ");
     } else {
         put_seg_json(t, "pixel", m, seg);
+        mlen = t->len - start - pt_fmt_ulen(seg);   /* up to the segment's number */
         puts_(t, ",\"x\":");
     }
     assert(t->len >= start);
     if (t->len - start <= sizeof t->pix) {
         t->pix_len = t->len - start;
+        t->pix_mlen = mlen;
         memcpy(t->pix, t->buf + start, t->pix_len);
     }
     t->len = start;
@@ -1056,6 +1067,7 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->pix_model = NULL;
     t->pix_seg = 0;
     t->pix_len = 0;
+    t->pix_mlen = 0;
     t->vx_model = NULL;
     t->vx_len = 0;
     pt_digits4_init(&t->digits);

@@ -71,7 +71,8 @@ typedef struct pt_trace {
     const pt_model *pix_model;   /* the segment whose pixels are being written */
     uint64_t pix_seg;            /*   (trace.c: pixel_prefix) */
     size_t pix_len;              /* how their records begin: pix[0..pix_len), */
-    char pix[96];                /*   0 when that does not fit */
+    char pix[96];                /*   0 when that does not fit; */
+    size_t pix_mlen;             /*   JSON Lines: pix[0..pix_mlen) up to the segment */
     pt_digits4 digits;           /* 0000 .. 9999, for integers (trace.c: digits_at) */
     const pt_model *vx_model;    /* the model whose vertex records begin so: */
     size_t vx_len;               /*   vx[0..vx_len), 0 when it does not fit */
