@@ -6,10 +6,16 @@
 ** this file prints diagnostics or decides the exit status.
 */
 #define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE          /* sbrk, madvise: heap_in_huge_pages() */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#if defined(__linux__) && defined(__GLIBC__)
+#include <malloc.h>
+#include <sys/mman.h>
+#endif
 #include "tools/cli.h"
 #include "tools/commands.h"
 #include "io/outfile.h"
@@ -203,6 +209,32 @@ static int check_filters(const cli *c, const pt_scene *s)
 
 /* ===== main ===== */
 
+/* The scene's arrays (tens of MB for a large scene) in huge pages where
+** Linux and glibc allow it: on a virtual machine each page fault costs
+** microseconds, and a scene of 200,000 vertices took some 2,400 of them in
+** pages of 4 KiB.  The heap grows 256 MiB (of address space) at a time,
+** large arrays stay in it rather than in mappings of their own, and its top
+** is marked for huge pages: a scene of 3.2M vertices then takes some 300
+** faults.  Only speed depends on it.  Where malloc is not glibc's heap (a
+** sanitizer's, valgrind's), the block is not below the break and nothing is
+** marked. */
+static void heap_in_huge_pages(void)
+{
+#if defined(__linux__) && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
+    const uintptr_t huge = (uintptr_t)2 << 20, pad = (uintptr_t)256 << 20;
+    uintptr_t lo, hi;
+    void *p;
+
+    mallopt(M_MMAP_THRESHOLD, (int)pad);
+    mallopt(M_TOP_PAD, (int)pad);
+    if (!(p = malloc(1))) return;           /* the heap now reaches sbrk(0) */
+    lo = ((uintptr_t)p + huge - 1) & ~(huge - 1);
+    hi = (uintptr_t)sbrk(0) & ~(huge - 1);
+    if (hi > lo && hi - lo <= 2 * pad) madvise((void *)lo, hi - lo, MADV_HUGEPAGE);
+    free(p);
+#endif
+}
+
 int main(int argc, char **argv)
 {
     cli c;
@@ -217,6 +249,7 @@ int main(int argc, char **argv)
     char err[PT_ERRLEN];
     int rc, kraft;
 
+    heap_in_huge_pages();
     for (k = 0; argc > 1 && k < NCOMMANDS; k++)
         if (strcmp(argv[1], commands[k].name) == 0) return commands[k].run(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
