@@ -212,12 +212,12 @@ static int check_filters(const cli *c, const pt_scene *s)
 /* The scene's arrays (tens of MB for a large scene) in huge pages where
 ** Linux and glibc allow it: on a virtual machine each page fault costs
 ** microseconds, and drawing a scene of 200,000 vertices took some 2,400 of
-** them in pages of 4 KiB, most for the scene's arrays.  The heap grows 256 MiB (of address space) at a time,
-** large arrays stay in it rather than in mappings of their own, and its top
-** is marked for huge pages: the same scene then takes some 570 faults,
-** one of 3.2M vertices some 350.  Only speed depends on it.  Where malloc is not glibc's heap (a
-** sanitizer's, valgrind's), the block is not below the break and nothing is
-** marked. */
+** them in pages of 4 KiB, most for the scene's arrays.  The heap grows
+** 256 MiB (of address space) at a time, large arrays stay in it rather than
+** in mappings of their own, and its top is marked for huge pages: the same
+** scene then takes some 570 faults, one of 3.2M vertices some 350.  Only
+** speed depends on it.  Where malloc is not glibc's heap (a sanitizer's,
+** valgrind's), the block is not below the break and nothing is marked. */
 static void heap_in_huge_pages(void)
 {
 #if defined(__linux__) && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
