@@ -240,8 +240,7 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
 ** the color and the framebuffer's size would be loaded and stored again
 ** around every pixel. */
 typedef struct draw_ctx {
-    pt_fb fb;                    /* im->fb's size and pixels (rgb NULL: no image) */
-    int W, H;                    /* the framebuffer's size */
+    pt_fb fb;                    /* the framebuffer (rgb NULL: only its size) */
     int x_ul, y_ul;              /* the viewport's corner */
     int64_t npix;                /* W * H: the pixel array's length */
     unsigned char color[3];
@@ -258,7 +257,7 @@ static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x
 {
     pt_pix vp = {x_vp, y_vp, 1};
     pt_pix f = pt_viewport2fb(vp, c->x_ul, c->y_ul, NULL);
-    int64_t idx = pt_fb2index(f, c->W, c->H, NULL);
+    int64_t idx = pt_fb2index(f, c->fb.w, c->fb.h, NULL);
 
     c->pixels++;
     if (listened) c->listener(c->listener_ud, f.x, f.y, idx);
@@ -287,11 +286,9 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
     assert(!im->fb || (im->fb->w == im->W && im->fb->h == im->H));
     if (im->fb) c.fb = *im->fb;
     else { c.fb.w = im->W; c.fb.h = im->H; c.fb.rgb = NULL; }
-    c.W = im->W;
-    c.H = im->H;
     c.x_ul = im->x_ul;
     c.y_ul = im->y_ul;
-    c.npix = (int64_t)c.W * c.H;
+    c.npix = (int64_t)c.fb.w * c.fb.h;
     c.color[0] = im->color[0]; c.color[1] = im->color[1]; c.color[2] = im->color[2];
     c.pixels = 0;
     c.listener = im->pixel;

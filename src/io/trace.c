@@ -647,6 +647,22 @@ static void frags_init(pt_trace *t)
     }
 }
 
+/* What was written to the block since start, taken back out of it into
+** dst (cap bytes): its length, or 0 (and nothing kept) when it does not fit.
+** The record openings kept below are written so, by the code that writes
+** the records the long way, then copied for each record. */
+static size_t take_back(pt_trace *t, size_t start, char *dst, size_t cap)
+{
+    size_t n;
+
+    assert(t->len >= start);
+    n = t->len - start;
+    t->len = start;
+    if (n > cap) return 0;
+    memcpy(dst, t->buf + start, n);
+    return n;
+}
+
 /* How the vertex records of model m begin, up to v's digits:
 ** '{"type":"vertex","model":"m1","v":' (JSON Lines) or 'm1,' (CSV), written
 ** by the code that writes them otherwise (then taken back out of the block)
@@ -666,12 +682,7 @@ static void vertex_prefix(pt_trace *t, const pt_model *m)
         puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, m->name);
         puts_(t, ",\"v\":");
     }
-    assert(t->len >= start);
-    if (t->len - start <= sizeof t->vx) {
-        t->vx_len = t->len - start;
-        memcpy(t->vx, t->buf + start, t->vx_len);
-    }
-    t->len = start;
+    t->vx_len = take_back(t, start, t->vx, sizeof t->vx);
 }
 
 /* JSON: ["a","b"] at o, the names whose bits are set in bits. */
@@ -887,13 +898,8 @@ static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
         mlen = t->len - start - pt_fmt_ulen(seg);   /* up to the segment's number */
         puts_(t, ",\"x\":");
     }
-    assert(t->len >= start);
-    if (t->len - start <= sizeof t->pix) {
-        t->pix_len = t->len - start;
-        t->pix_mlen = mlen;
-        memcpy(t->pix, t->buf + start, t->pix_len);
-    }
-    t->len = start;
+    t->pix_len = take_back(t, start, t->pix, sizeof t->pix);
+    t->pix_mlen = mlen;
 }
 
 static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
