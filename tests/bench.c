@@ -15,7 +15,8 @@
 **   traces     `pipetrace SCENE --image OUT.ppm --format F --trace /dev/null`
 **              for JSON Lines, text and CSV, as MB/s and against the process
 **              without a trace;
-**   memory     the peak resident memory of the process at 800k vertices;
+**   memory     the peak resident memory of the process at 800k vertices, and
+**              the page faults of the process at 200k;
 **   scaling    the process's time per vertex at 200k, 800k and 3.2M vertices.
 ** Each time is CPU time (user and system), the least of 5 runs (of 3 for the
 ** large scenes of the scaling rows, of 15 for the renders in process).  All
@@ -46,6 +47,7 @@
 #define RENDERS 15               /* renders in process (tests/baseline.c too) */
 
 static const char *dir;          /* the build directory */
+static long faults;              /* page faults of the last process spawned */
 
 /* CPU time, not wall time: the machine may be shared, and a process that
 ** waits for the processor is not slower for it. */
@@ -112,6 +114,7 @@ static double spawn(char *const argv[], const char *out, long *maxrss, double *b
     }
     t = seconds(ru.ru_utime) + seconds(ru.ru_stime);
     if (maxrss) *maxrss = ru.ru_maxrss;
+    faults = ru.ru_minflt;
     return t;
 }
 
@@ -315,6 +318,8 @@ int main(int argc, char **argv)
         tbase = spawn_runs(b);
         row("whole process, image only", tproc, tbase, "s", "<= 1.3x");
         printf("  %-28s %s\n", "images", same_file(ppm, bppm) ? "identical" : "DIFFER");
+        spawn(a, "/dev/null", NULL, NULL);
+        printf("  %-28s %10ld\n", "page faults, whole process", faults);
     }
     printf("\ntraces of the same scene, whole process, to /dev/null\n");
     for (k = 0; k < 3; k++) {

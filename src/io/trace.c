@@ -7,6 +7,7 @@
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <string.h>
 #include "io/sbuf.h"
 #include "io/trace.h"
@@ -647,6 +648,17 @@ static void frags_init(pt_trace *t)
     }
 }
 
+/* Where a record opening for model m will start in the block, with room
+** made for it, or SIZE_MAX when m's name is too long to keep one: a name of
+** up to 40 bytes, each escaped to 6 at most, keeps the whole opening below
+** the room made, so no flush can come between its start and its end. */
+static size_t opening_start(pt_trace *t, const pt_model *m)
+{
+    if (strlen(m->name) > 40) return SIZE_MAX;
+    room(t, 512);
+    return t->len;
+}
+
 /* What was written to the block since start, taken back out of it into
 ** dst (cap bytes): its length, or 0 (and nothing kept) when it does not fit.
 ** The record openings kept below are written so, by the code that writes
@@ -673,9 +685,7 @@ static void vertex_prefix(pt_trace *t, const pt_model *m)
 
     t->vx_model = m;
     t->vx_len = 0;
-    if (strlen(m->name) > 40) return;
-    room(t, 512);
-    start = t->len;
+    if ((start = opening_start(t, m)) == SIZE_MAX) return;
     if (t->fmt == PT_FORMAT_CSV) {
         puts_(t, m->name); put(t, ",", 1);
     } else {
@@ -868,9 +878,7 @@ static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint6
 ** "m1 s7          pixel        x_fb = " (text), written by the code that
 ** writes every other record (then taken back out of the block) and kept in
 ** t->pix for the pixels of the segment, which come in a row; t->pix_len is
-** 0 when it does not fit.  A name of up to 40 bytes, each escaped to 6 at
-** most, keeps the whole prefix below the room made first: no flush can
-** come between its start and its end. */
+** 0 when it does not fit (opening_start). */
 static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
 {
     size_t start, mlen = 0;
@@ -887,9 +895,7 @@ static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
     t->pix_model = m;
     t->pix_seg = seg;
     t->pix_len = 0;
-    if (strlen(m->name) > 40) return;
-    room(t, 512);
-    start = t->len;
+    if ((start = opening_start(t, m)) == SIZE_MAX) return;
     if (t->fmt == PT_FORMAT_TEXT) {
         put_who(t, m->name, 's', seg);
         puts_(t, "pixel        x_fb = ");

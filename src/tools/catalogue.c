@@ -216,19 +216,25 @@ static void mk_vpw(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val 
     index_with(par, 1, par->w, in, out);
 }
 
+/* PT_PIXEL_DIVISOR as the mistakes' names spell it: "2.001". */
+#define SPELL_(x) #x
+#define SPELL(x) SPELL_(x)
+#define DIVISOR SPELL(PT_PIXEL_DIVISOR)
+
 const pt_mistake pt_mistakes[PT_NMISTAKES] = {
     {PT_STAGE_CAMERA, "translation subtracted",
      "x_c = x_m - x_t (likewise y, z) instead of x_m + x_t", 0, mk_subtract},
     {PT_STAGE_IMAGE, "projection divides by z_c instead of -z_c",
      "x_ip = x_c / z_c: the image comes out mirrored, x and y negated", 0, mk_divz},
-    {PT_STAGE_PIXEL, "2 instead of 2.001",
+    {PT_STAGE_PIXEL, "2 instead of " DIVISOR,
      "x_pp = 0.5 + w/2 * (x_ip + 1): every x_pp moves right by w/4002 * (x_ip + 1), "
      "and the right edge x_ip = 1 lands on w + 0.5, between two pixels", 0, mk_two},
-    {PT_STAGE_PIXEL, "2 instead of 2.001, with w/2 in integers",
+    {PT_STAGE_PIXEL, "2 instead of " DIVISOR ", with w/2 in integers",
      "x_pp = 0.5 + w/2 * (x_ip + 1) with w/2 in integer arithmetic (int w): besides the "
      "2, half a pixel of an odd size is lost", 1, mk_two_int},
     {PT_STAGE_PIXEL, "w and h swapped",
-     "x_pp = 0.5 + h/2.001 * (x_ip + 1), y_pp = 0.5 + w/2.001 * (y_ip + 1)", 0, mk_swap_wh},
+     "x_pp = 0.5 + h/" DIVISOR " * (x_ip + 1), y_pp = 0.5 + w/" DIVISOR " * (y_ip + 1)", 0,
+     mk_swap_wh},
     {PT_STAGE_VIEWPORT, "C round() instead of Java's Math.round",
      "round() and lround() take ties away from zero: round(-2.5) = -3, "
      "Math.round(-2.5) = -2", 0, mk_cround},
