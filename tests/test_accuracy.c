@@ -318,13 +318,16 @@ static void m_vertex(void *ud, const pt_vrec *r)
     g->have[g->cur * NALL + r->stage] = 1;
 }
 
-static void m_pixel(void *ud, const pt_model *m, uint64_t seg, int64_t x_fb, int64_t y_fb,
-                    int64_t idx)
+static void m_pixel(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                    size_t n)
 {
     mgot *g = ud;
+    size_t k;
 
-    (void)seg; (void)x_fb; (void)y_fb;
-    g->px[idx] = ((int64_t)m->color[0] << 16 | (int64_t)m->color[1] << 8 | m->color[2]) + 1;
+    (void)seg;
+    for (k = 0; k < n; k++)
+        g->px[px[k].idx] = ((int64_t)m->color[0] << 16 | (int64_t)m->color[1] << 8 |
+                            m->color[2]) + 1;
 }
 
 static int same4(const pt_dd *v, const pt_vrec *r)
@@ -414,7 +417,7 @@ static void check_matrix_scene(const char *path)
     memset(&l, 0, sizeof l);
     l.vertex_begin = m_begin;
     l.clipvertex_begin = m_clipvertex;
-    l.pixel = m_pixel;
+    l.pixels = m_pixel;
     l.sink.vertex = m_vertex;
     l.sink.ud = &g;
     l.ud = &g;

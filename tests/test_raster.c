@@ -241,10 +241,10 @@ static void test_long_segment(void)
 
 static void no_record(void *ud, const pt_vrec *r) { (void)ud; (void)r; }
 static void no_summary(void *ud, const pt_summary *sum) { (void)ud; (void)sum; }
-static void no_pixel(void *ud, const pt_model *m, uint64_t seg, int64_t x_fb, int64_t y_fb,
-                     int64_t idx)
+static void no_pixel(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                     size_t n)
 {
-    (void)ud; (void)m; (void)seg; (void)x_fb; (void)y_fb; (void)idx;
+    (void)ud; (void)m; (void)seg; (void)px; (void)n;
 }
 
 /* Run scene s with listener l into a fresh framebuffer; 0 when it ran. */
@@ -289,7 +289,7 @@ static void test_in_turn(void)
         for (i = 0; i < 3; i++) l[i].summary = no_summary;  /* warnings counted */
         l[1].sink.vertex = no_record;                        /* vertices first */
         l[2].sink.vertex = no_record;
-        l[2].pixel = no_pixel;                               /* through on_pixel */
+        l[2].pixels = no_pixel;                               /* through on_pixel */
         for (i = 0; i < 3; i++) {
             if (run_into(&s, &l[i], &fb[i], &sum[i]) != 0) { loaded = 0; break; }
             if (i == 0) continue;

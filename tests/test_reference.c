@@ -40,12 +40,13 @@ static void on_vertex(void *ud, const pt_vrec *r)
     g->have[g->cur * PT_NSTAGES + r->stage] = 1;
 }
 
-static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
-                     int64_t x_fb, int64_t y_fb, int64_t idx)
+static void on_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                      size_t n)
 {
     got *g = ud;
-    (void)m; (void)seg; (void)x_fb; (void)y_fb;
-    g->lit[idx] = 1;
+    size_t k;
+    (void)m; (void)seg;
+    for (k = 0; k < n; k++) g->lit[px[k].idx] = 1;
 }
 
 static int same_double(double a, double b)
@@ -135,7 +136,7 @@ static void run_case(const char *dir, const char *name)
     l.vertex_begin = on_begin;
     l.sink.vertex = on_vertex;
     l.sink.ud = &g;
-    l.pixel = on_pixel;
+    l.pixels = on_pixels;
     l.ud = &g;
     pt_run(&s, &p, &o, &l, NULL, &sum);
 

@@ -114,7 +114,9 @@ static int csv_numbers(void)
     return finish(&t, f, w, &got, &n, &want, &wn);
 }
 
-/* Pixels of two models, segments switching now and then, in fmt. */
+/* Pixels of two models, segments switching now and then, in fmt, handed
+** over in runs of 1 to PT_RASTER_RUN as the rasterizer hands them; x_fb
+** below 0 and indexes from 10^8 on now and then (a student's stages). */
 static int pixels(pt_format fmt)
 {
     static pt_trace t;
@@ -133,21 +135,29 @@ static int pixels(pt_format fmt)
     m[1].name = (char *)names[1];
     pt_trace_init(&t, f, fmt, 6);
     pt_trace_listener(&t, &l);
-    for (k = 0; k < NREC; k++) {
-        int64_t x = (int64_t)(next_random() % 4000) - 1000, y = (int64_t)(next_random() % 3000);
-        int64_t i = (int64_t)(next_random() % 100000000);
-        if (next_random() % 50 == 0) mk = !mk;
-        if (next_random() % 20 == 0) seg = next_random() % 100000 + 1;
-        l.pixel(l.ud, &m[mk], seg, x, y, i);
-        if (fmt == PT_FORMAT_JSONL) {
-            fprintf(w, "{\"type\":\"pixel\",\"model\":\"%s\",\"segment\":%" PRIu64
-                    ",\"x\":%" PRId64 ",\"y\":%" PRId64 ",\"i\":%" PRId64 "}\n",
-                    names[mk], seg, x, y, i);
-        } else {
-            snprintf(who, sizeof who, "%s s%" PRIu64, names[mk], seg);
-            fprintf(w, "%-13s pixel        x_fb = %12" PRId64 "  y_fb = %12" PRId64
-                    "  idx = %" PRId64 "\n", who, x, y, i);
+    for (k = 0; k < NREC; ) {
+        pt_fb_pixel px[PT_RASTER_RUN];
+        int run = 1 + (int)(next_random() % PT_RASTER_RUN), j;
+        if (run > NREC - k) run = NREC - k;
+        if (next_random() % 10 == 0) mk = !mk;
+        if (next_random() % 4 == 0) seg = next_random() % 100000 + 1;
+        for (j = 0; j < run; j++) {
+            int64_t x = (int64_t)(next_random() % 4000) - 1000, y = (int64_t)(next_random() % 3000);
+            int64_t i = (int64_t)(next_random() % 100000000);
+            if (next_random() % 100 == 0) i = (int64_t)(next_random() % 1000000000000);
+            px[j].x_fb = x; px[j].y_fb = y; px[j].idx = i;
+            if (fmt == PT_FORMAT_JSONL) {
+                fprintf(w, "{\"type\":\"pixel\",\"model\":\"%s\",\"segment\":%" PRIu64
+                        ",\"x\":%" PRId64 ",\"y\":%" PRId64 ",\"i\":%" PRId64 "}\n",
+                        names[mk], seg, x, y, i);
+            } else {
+                snprintf(who, sizeof who, "%s s%" PRIu64, names[mk], seg);
+                fprintf(w, "%-13s pixel        x_fb = %12" PRId64 "  y_fb = %12" PRId64
+                        "  idx = %" PRId64 "\n", who, x, y, i);
+            }
         }
+        l.pixels(l.ud, &m[mk], seg, px, (size_t)run);
+        k += run;
     }
     return finish(&t, f, w, &got, &n, &want, &wn);
 }

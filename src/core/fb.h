@@ -15,6 +15,13 @@ typedef struct pt_fb {
     unsigned char *rgb;          /* 3*w*h bytes; pixel idx at rgb[3*idx]; owned */
 } pt_fb;
 
+/* A pixel drawn, as the framebuffer and index stages name it: (x_fb, y_fb)
+** and its place in the pixel array, idx (none when outside 0 .. w*h - 1: a
+** student's stage can put it there). */
+typedef struct pt_fb_pixel {
+    int64_t x_fb, y_fb, idx;
+} pt_fb_pixel;
+
 /* Allocate a w x h framebuffer filled with bg.  Returns 0, or -1 when out of
 ** memory (then fb->rgb is NULL). */
 int pt_fb_init(pt_fb *fb, int w, int h, const unsigned char bg[3]);

@@ -337,7 +337,11 @@ static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
     int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
 
     rc->sum->pixels++;
-    if (rc->l && rc->l->pixel) rc->l->pixel(rc->l->ud, rc->m, rc->seg, f.x, f.y, idx);
+    if (rc->l && rc->l->pixels) {
+        pt_fb_pixel px;
+        px.x_fb = f.x; px.y_fb = f.y; px.idx = idx;
+        rc->l->pixels(rc->l->ud, rc->m, rc->seg, &px, 1);
+    }
     /* a student's framebuffer or index stage may name no pixel of the array
     ** (Java would throw); the trace shows it, the image is left alone */
     if (rc->fb && idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, rc->m->color);
@@ -425,11 +429,11 @@ typedef struct drawing {
 } drawing;
 
 /* The classic camera's pixels, to the listener (pt_raster_draw). */
-static void on_drawn(void *ud, int64_t x_fb, int64_t y_fb, int64_t idx)
+static void on_drawn(void *ud, const pt_fb_pixel *px, size_t n)
 {
     raster_ctx *rc = ud;
 
-    rc->l->pixel(rc->l->ud, rc->m, rc->seg, x_fb, y_fb, idx);
+    rc->l->pixels(rc->l->ud, rc->m, rc->seg, px, n);
 }
 
 static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *sum)
@@ -461,7 +465,7 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
 
     d->rc.m = m;
     d->rc.l = report ? l : NULL;
-    d->im.pixel = d->rc.l && d->rc.l->pixel ? on_drawn : NULL;
+    d->im.pixel = d->rc.l && d->rc.l->pixels ? on_drawn : NULL;
     draw = !s->matrix && (d->im.fb || d->im.pixel);
     d->im.color = m->color;
     for (j = 0; j < m->nseg; j++) {
@@ -507,10 +511,10 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     ** ran ("in turn"), from one buffer the size of the largest model, which
     ** stays in the cache: the records that remain come in the same order as
     ** when every model's vertices run first (the summary comes last). */
-    raster = o->rasterize && (fb || l->pixel || l->clip || l->skip || l->summary || s->matrix);
+    raster = o->rasterize && (fb || l->pixels || l->clip || l->skip || l->summary || s->matrix);
     in_turn = raster &&
               ((!l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin && !l->journey) ||
-               (!s->matrix && !l->pixel && !l->clip && !l->skip));
+               (!s->matrix && !l->pixels && !l->clip && !l->skip));
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
     n = s->nmodels ? s->nmodels : 1;

@@ -114,8 +114,11 @@ typedef struct pt_listener {
                           ** reach sink: v is the 1-based vertex, or 0 for a point
                           ** clipping made (after its clipvertex_begin).  NULL: no
                           ** journey is kept, which costs nothing */
-    void (*pixel)(void *ud, const pt_model *m, uint64_t seg,        /* 1-based seg */
-                  int64_t x_fb, int64_t y_fb, int64_t idx);
+    void (*pixels)(void *ud, const pt_model *m, uint64_t seg,       /* 1-based seg */
+                   const pt_fb_pixel *px, size_t n);
+                          /* pixels drawn, n >= 1 of them in step order: a
+                          ** segment's come in one or more calls, and a clip
+                          ** record of it comes after the pixels before it */
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
                  pt_pix first, pt_pix last);
     void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */

@@ -234,6 +234,31 @@ int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
     return segment(p0, p1, w, h, to_vp, out->pixel, out->ud, out);
 }
 
+/* The pixels drawn and not yet told to the listener (im->pixel), which
+** hears them a run at a time; a report of clipped steps goes to the
+** caller's out->clip only after the pixels before it. */
+typedef struct telling {
+    pt_raster_drawn *listener;   /* im->pixel */
+    void *listener_ud;
+    const pt_raster_out *out;    /* the caller's, for the clipped steps */
+    size_t n;                    /* pixels in px[] */
+    pt_fb_pixel px[PT_RASTER_RUN];
+} telling;
+
+static void tell(telling *t)
+{
+    if (t->n) t->listener(t->listener_ud, t->px, t->n);
+    t->n = 0;
+}
+
+static void tell_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
+{
+    telling *t = ud;
+
+    tell(t);
+    t->out->clip(t->out->ud, count, first, last);
+}
+
 /* What pt_raster_draw() draws with: a copy of the pt_raster_image in its own
 ** frame.  The framebuffer's bytes are chars, which may alias anything the
 ** compiler cannot see is local: from the caller's struct, the pixel count,
@@ -245,8 +270,7 @@ typedef struct draw_ctx {
     int64_t npix;                /* W * H: the pixel array's length */
     unsigned char color[3];
     uint64_t pixels;             /* pixels drawn */
-    pt_raster_drawn *listener;   /* im->pixel */
-    void *listener_ud;
+    telling *tell;               /* with a listener: its pixels, else NULL */
 } draw_ctx;
 
 /* A pixel inside the viewport through the framebuffer and index stages into
@@ -260,7 +284,12 @@ static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x
     int64_t idx = pt_fb2index(f, c->fb.w, c->fb.h, NULL);
 
     c->pixels++;
-    if (listened) c->listener(c->listener_ud, f.x, f.y, idx);
+    if (listened) {
+        telling *t = c->tell;
+        pt_fb_pixel *q = &t->px[t->n];
+        q->x_fb = f.x; q->y_fb = f.y; q->idx = idx;
+        if (++t->n == PT_RASTER_RUN) tell(t);
+    }
     if ((!listened || c->fb.rgb) && idx >= 0 && idx < c->npix)
         pt_fb_set(&c->fb, idx, c->color);
 }
@@ -279,6 +308,7 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
                            const pt_raster_out *out)
 {
     draw_ctx c;
+    telling t;
     int r;
 
     assert(w > 0 && h > 0 && im->W > 0 && im->H > 0);
@@ -291,10 +321,19 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
     c.npix = (int64_t)c.fb.w * c.fb.h;
     c.color[0] = im->color[0]; c.color[1] = im->color[1]; c.color[2] = im->color[2];
     c.pixels = 0;
-    c.listener = im->pixel;
-    c.listener_ud = im->pixel_ud;
-    if (c.listener) r = segment(p0, p1, w, h, pt_pixel2viewport, draw_listened, &c, out);
-    else            r = segment(p0, p1, w, h, pt_pixel2viewport, draw_quiet, &c, out);
+    c.tell = NULL;
+    if (im->pixel) {
+        pt_raster_out told = {NULL, tell_clip, &t};
+        t.listener = im->pixel;
+        t.listener_ud = im->pixel_ud;
+        t.out = out;
+        t.n = 0;
+        c.tell = &t;
+        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_listened, &c, &told);
+        tell(&t);
+    } else {
+        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_quiet, &c, out);
+    }
     im->pixels += c.pixels;
     return r;
 }

@@ -49,9 +49,13 @@ typedef pt_pix (*pt_raster_vp)(pt_vec2 pp, int w, int h, const pt_sink *sink);
 int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
                       const pt_raster_out *out);
 
-/* Told of each pixel pt_raster_draw() draws: its framebuffer pixel and its
-** index, as the framebuffer and index stages give them (idx < 0: none). */
-typedef void pt_raster_drawn(void *ud, int64_t x_fb, int64_t y_fb, int64_t idx);
+/* Told of the pixels pt_raster_draw() draws, in step order, a run of n at a
+** time (a segment's pixels can come in several runs: at most
+** PT_RASTER_RUN each, and one ends before each report of clipped steps to
+** out->clip, so the two stay in step order). */
+typedef void pt_raster_drawn(void *ud, const pt_fb_pixel *px, size_t n);
+
+#define PT_RASTER_RUN 64
 
 /* What the classic camera draws into (pt_raster_draw): an image, a listener
 ** of the pixels, or both. */
@@ -61,7 +65,7 @@ typedef struct pt_raster_image {
     int x_ul, y_ul;              /* the viewport's upper-left corner in it */
     const unsigned char *color;  /* the segment's color, RGB */
     uint64_t pixels;             /* pixels drawn (inside the viewport), added to */
-    pt_raster_drawn *pixel;      /* told of each pixel drawn, or NULL */
+    pt_raster_drawn *pixel;      /* told of the pixels drawn, or NULL */
     void *pixel_ud;              /* passed back to it unchanged */
 } pt_raster_image;
 

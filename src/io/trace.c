@@ -113,8 +113,12 @@ static char *short_at(pt_trace *t, char *o, double x)
 ** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign). */
 static char *json_num_at(pt_trace *t, char *o, double x)   /* PT_NUMLEN + 2 bytes */
 {
-    if (x == 0 && signbit(x)) { memcpy(o, "-0.0", 4); return o + 4; }
-    if (isfinite(x)) return short_at(t, o, x);
+    uint64_t bits;
+
+    memcpy(&bits, &x, sizeof bits);         /* one test for the usual case: */
+    if ((bits >> 52 & 0x7ff) != 0x7ff && bits != UINT64_C(1) << 63)   /* finite, not -0 */
+        return short_at(t, o, x);
+    if (x == 0) { memcpy(o, "-0.0", 4); return o + 4; }
     *o++ = '"';
     o += pt_fmt_shortest(o, x);
     *o++ = '"';
@@ -908,45 +912,89 @@ static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
     t->pix_mlen = mlen;
 }
 
-static void on_pixel(void *ud, const pt_model *m, uint64_t seg,
-                     int64_t x_fb, int64_t y_fb, int64_t idx)
+/* One pixel record, the long way: for a model whose name is too long to
+** keep its opening (pixel_prefix). */
+static void pixel_long(pt_trace *t, const pt_model *m, uint64_t seg, const pt_fb_pixel *p)
 {
-    pt_trace *t = ud;
-    char *o;
-
-    if (t->fmt != PT_FORMAT_TEXT && t->fmt != PT_FORMAT_JSONL) return;  /* CSV: none */
-    if (m != t->pix_model || seg != t->pix_seg) pixel_prefix(t, m, seg);
-    if (t->pix_len) {                       /* the usual case: one fixed-size copy */
-        o = room(t, sizeof t->pix + 100);   /* 20 + 9 + 20 + 8 + 20 + 1 bytes */
-        memcpy(o, t->pix, sizeof t->pix);
-        o += t->pix_len;
-        if (t->fmt == PT_FORMAT_TEXT) {
-            o = int_at(t, o, x_fb, 12);
-            o = int_at(t, str_at(o, "  y_fb = "), y_fb, 12);
-            o = int_at(t, str_at(o, "  idx = "), idx, 0);
-            *o++ = '\n';
-        } else {
-            o = int_at(t, o, x_fb, 0);
-            o = int_at(t, str_at(o, ",\"y\":"), y_fb, 0);
-            o = int_at(t, str_at(o, ",\"i\":"), idx, 0);
-            o = str_at(o, "}\n");
-        }
-        t->len = (size_t)(o - t->buf);
-        return;
-    }
     if (t->fmt == PT_FORMAT_TEXT) {
         put_who(t, m->name, 's', seg);
-        puts_(t, "pixel        x_fb = "); put_int_col(t, x_fb);
-        puts_(t, "  y_fb = "); put_int_col(t, y_fb);
-        puts_(t, "  idx = "); put_i64(t, idx);
+        puts_(t, "pixel        x_fb = "); put_int_col(t, p->x_fb);
+        puts_(t, "  y_fb = "); put_int_col(t, p->y_fb);
+        puts_(t, "  idx = "); put_i64(t, p->idx);
         put(t, "\n", 1);
         return;
     }
     put_seg_json(t, "pixel", m, seg);
-    puts_(t, ",\"x\":"); put_i64(t, x_fb);
-    puts_(t, ",\"y\":"); put_i64(t, y_fb);
-    puts_(t, ",\"i\":"); put_i64(t, idx);
+    puts_(t, ",\"x\":"); put_i64(t, p->x_fb);
+    puts_(t, ",\"y\":"); put_i64(t, p->y_fb);
+    puts_(t, ",\"i\":"); put_i64(t, p->idx);
     puts_(t, "}\n");
+}
+
+/* The rest of a JSON Lines pixel record after its kept opening, at o:
+** 'X,"y":Y,"i":I}\n'.  Every pixel of the array (coordinates and index
+** below 10^8) takes the digit table's copies; others int_at(). */
+static char *pixel_json_at(const pt_trace *t, char *o, const pt_fb_pixel *p)
+{
+    if ((uint64_t)p->x_fb < 100000000 && (uint64_t)p->y_fb < 100000000 &&
+        (uint64_t)p->idx < 100000000) {
+        o += pt_fmt_u32_tab(&t->digits, o, (uint32_t)p->x_fb);
+        memcpy(o, ",\"y\":", 5);
+        o += 5;
+        o += pt_fmt_u32_tab(&t->digits, o, (uint32_t)p->y_fb);
+        memcpy(o, ",\"i\":", 5);
+        o += 5;
+        o += pt_fmt_u32_tab(&t->digits, o, (uint32_t)p->idx);
+    } else {
+        o = int_at(t, o, p->x_fb, 0);
+        o = int_at(t, str_at(o, ",\"y\":"), p->y_fb, 0);
+        o = int_at(t, str_at(o, ",\"i\":"), p->idx, 0);
+    }
+    memcpy(o, "}\n", 2);
+    return o + 2;
+}
+
+/* The same for the text format: '  X  y_fb = Y  idx = I\n'. */
+static char *pixel_text_at(const pt_trace *t, char *o, const pt_fb_pixel *p)
+{
+    o = int_at(t, o, p->x_fb, 12);
+    o = int_at(t, str_at(o, "  y_fb = "), p->y_fb, 12);
+    o = int_at(t, str_at(o, "  idx = "), p->idx, 0);
+    *o++ = '\n';
+    return o;
+}
+
+/* The longest pixel record after its opening: three integers of 20 bytes,
+** padding to 12 columns, the keys between them, the line's end. */
+#define PT_PIXEL_REST 100
+
+static void on_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                      size_t n)
+{
+    pt_trace *t = ud;
+    size_t k;
+    char *o;
+
+    if (t->fmt != PT_FORMAT_TEXT && t->fmt != PT_FORMAT_JSONL) return;  /* CSV: none */
+    if (m != t->pix_model || seg != t->pix_seg) pixel_prefix(t, m, seg);
+    if (!t->pix_len) {
+        for (k = 0; k < n; k++) pixel_long(t, m, seg, &px[k]);
+        return;
+    }
+    assert(n <= PT_RASTER_RUN);             /* room for all n at once: */
+    o = room(t, n * (sizeof t->pix + PT_PIXEL_REST));   /* 12.5 KiB at most */
+    if (t->fmt == PT_FORMAT_JSONL) {
+        for (k = 0; k < n; k++) {           /* each: one fixed-size copy, the numbers */
+            memcpy(o, t->pix, sizeof t->pix);
+            o = pixel_json_at(t, o + t->pix_len, &px[k]);
+        }
+    } else {
+        for (k = 0; k < n; k++) {
+            memcpy(o, t->pix, sizeof t->pix);
+            o = pixel_text_at(t, o + t->pix_len, &px[k]);
+        }
+    }
+    t->len = (size_t)(o - t->buf);
 }
 
 static void put_pair_json(pt_trace *t, pt_pix p)
@@ -1098,13 +1146,13 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
     l->sink.vertex = on_vertex;
     l->clipvertex_begin = on_clipvertex_begin;
     l->sink.ud = t;
-    l->pixel = on_pixel;
+    l->pixels = on_pixels;
     l->clip = on_clip;
     l->journey = t->explain ? on_journey : NULL;   /* no cost without --explain */
     l->skip = on_skip;
     l->summary = on_summary;
     if (t->fmt == PT_FORMAT_CSV) {          /* no raster rows, no summary: */
-        l->pixel = NULL;                    /* nobody listens to the rasterizer */
+        l->pixels = NULL;                   /* nobody listens to the rasterizer */
         l->clip = NULL;
         l->skip = NULL;
         l->summary = NULL;

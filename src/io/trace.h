@@ -67,7 +67,9 @@ typedef struct pt_trace {
     int failed;                  /* after a write error: its errno value (EIO
                                  ** when none was set), else 0 */
     size_t len;                  /* bytes waiting in buf */
-    char buf[1 << 16];           /* output block */
+    char buf[1 << 18];           /* output block: 256 KiB, one write(2) with an
+                                 ** unbuffered f (fewer system calls; a larger
+                                 ** block no longer stays in the cache) */
     const pt_model *pix_model;   /* the segment whose pixels are being written */
     uint64_t pix_seg;            /*   (trace.c: pixel_prefix) */
     size_t pix_len;              /* how their records begin: pix[0..pix_len), */

@@ -280,6 +280,9 @@ int main(int argc, char **argv)
         if (!tr) { snprintf(err, sizeof err, "pipetrace: out of memory"); rc = 1; }
         else if (pt_outfile_open(&tout, c.trace, err, sizeof err) != 0) rc = 1;
         else {
+            /* the trace hands over blocks of 256 KiB: one write(2) each,
+            ** not stdio's split into its buffer's size and the rest */
+            setvbuf(tout.f, NULL, _IONBF, 0);
             pt_trace_init(tr, tout.f, c.fmt, c.precision);
             tr->explain = c.explain;
             tr->student = pt_student_files;
