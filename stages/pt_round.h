@@ -16,6 +16,7 @@
 #ifndef PT_ROUND_H
 #define PT_ROUND_H
 
+#include <assert.h>
 #include <math.h>
 #include <stdint.h>
 #include "pt_stage.h"
@@ -72,12 +73,15 @@ static inline pt_pix pt_pix_mark(pt_pix p, int has)
     return p;
 }
 
-/* 1 when (x, y) lies inside a w x h rectangle whose upper-left pixel is (0, 0):
-** a viewport pixel inside its viewport, or a framebuffer pixel inside the
-** framebuffer.  This function can't fail. */
+/* 1 when (x, y) lies inside a w x h rectangle whose upper-left pixel is (0, 0),
+** 0 <= x < w and 0 <= y < h: a viewport pixel inside its viewport, or a
+** framebuffer pixel inside the framebuffer.  w, h >= 1 (a scene's sizes
+** are), so each pair of tests is one unsigned comparison: a negative x
+** becomes a number above any w.  This function can't fail. */
 static inline int pt_inside(int64_t x, int64_t y, int w, int h)
 {
-    return x >= 0 && x < w && y >= 0 && y < h;
+    assert(w >= 1 && h >= 1);
+    return ((uint64_t)x < (uint64_t)w) & ((uint64_t)y < (uint64_t)h);
 }
 
 /* Report viewport pixel vp of a w x h viewport to sink, as both cameras'
