@@ -354,14 +354,16 @@ typedef struct bounds {
     int closed;                  /* R holds its ends (c even) */
 } bounds;
 
+/* The two tests, in & and | of 0s and 1s: which way they go follows the
+** digits, so branches on them would be mispredicted half the time. */
 static int above_low(const bounds *b, uint64_t n)   /* n >= yl (closed), n > yl */
 {
-    return n > b->fl || (n == b->fl && b->xl && b->closed);
+    return (n > b->fl) | ((n == b->fl) & b->xl & b->closed);
 }
 
 static int below_high(const bounds *b, uint64_t n)  /* n <= yr (closed), n < yr */
 {
-    return n < b->fr || (n == b->fr && (b->closed || !b->xr));
+    return (n < b->fr) | ((n == b->fr) & (b->closed | (b->xr == 0)));
 }
 
 /* floor(log10 width) for width 2^q (lop = 0) or 3/4 2^q (lop = 1), |q| <= 1100:
@@ -416,11 +418,10 @@ static void shortest(double x, uint64_t *d, int *e)
         ** binade edge, when s 10^k is more than 2^q/4 below v, then (s+1) 10^k
         ** is less than 10^k - 2^q/4 <= 3/4 2^q - 2^q/4 = 2^q/2 above it. */
         assert(u_in || w_in);
-        if (!w_in) *d = s;
-        else if (!u_in) *d = s + 1;
-        else if (f2 == 2 * s) *d = s;       /* 2 v/10^k < 2s + 1: s is nearer */
-        else if (!x2) *d = s + 1;           /* 2 v/10^k > 2s + 1 */
-        else *d = s + (s & 1);              /* a tie: the even one */
+        /* s + 1 when only it is in R, or both are and 2 v/10^k > 2s + 1 (f2
+        ** is 2s + 1 and not exact), or a tie (exact) and s is odd; without
+        ** a branch, as above */
+        *d = s + (uint64_t)((u_in == 0) | (w_in & (f2 != 2 * s) & ((x2 == 0) | (int)(s & 1))));
     }
 }
 
