@@ -132,11 +132,4 @@ void pt_warn_lost(pt_vrec *r, unsigned warn, int lost)
     r->digits_lost = pt_bits_to_digits(lost);
 }
 
-unsigned pt_warn_nonfinite(const double *v, int n)
-{
-    int k;
 
-    for (k = 0; k < n; k++)
-        if (!isfinite(v[k])) return PT_WARN_NONFINITE;
-    return 0;
-}

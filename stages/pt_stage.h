@@ -20,6 +20,7 @@
 #ifndef PT_STAGE_H
 #define PT_STAGE_H
 
+#include <math.h>
 #include <stdint.h>
 
 typedef struct pt_vec3 { double x, y, z; } pt_vec3;
@@ -204,7 +205,15 @@ int pt_bits_to_digits(int bits);
 ** r->digits_lost.  This function can't fail. */
 void pt_warn_lost(pt_vrec *r, unsigned warn, int lost);
 
-/* PT_WARN_NONFINITE when any of the n values is not finite, else 0. */
-unsigned pt_warn_nonfinite(const double *v, int n);
+/* PT_WARN_NONFINITE when any of the n values is not finite, else 0.  Inline:
+** every traced record of a stage with real values asks it. */
+static inline unsigned pt_warn_nonfinite(const double *v, int n)
+{
+    int k;
+
+    for (k = 0; k < n; k++)
+        if (!isfinite(v[k])) return PT_WARN_NONFINITE;
+    return 0;
+}
 
 #endif
