@@ -170,9 +170,11 @@ static void put_col(pt_trace *t, const char *s, size_t n, size_t width)
     put(t, s, n);
 }
 
-/* Room for n bytes (n <= PT_ROW_REST) at the end of the block, for the
-** writers below that write there by pointer and then move t->len past what
-** they wrote: one check for a whole record instead of one per piece. */
+/* Room for n bytes (at most a block; a vertex record asks for PT_ROW_REST,
+** a run of pixel records for PT_RASTER_RUN of theirs) at the end of the
+** block, for the writers below that write there by pointer and then move
+** t->len past what they wrote: one check for a whole record, or a whole
+** run, instead of one per piece. */
 /* The most a vertex record writes after the model's name (and before
 ** --explain's text): v or a segment (20 bytes), the stage's name and keys,
 ** five numbers of PT_NUMLEN + 2, integers, the plane and warning names
@@ -181,6 +183,7 @@ static void put_col(pt_trace *t, const char *s, size_t n, size_t width)
 
 static char *room(pt_trace *t, size_t n)
 {
+    assert(n <= sizeof t->buf);
     if (t->len + n > sizeof t->buf) flush(t);
     return t->buf + t->len;
 }
