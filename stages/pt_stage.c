@@ -131,5 +131,3 @@ void pt_warn_lost(pt_vrec *r, unsigned warn, int lost)
     r->warn |= warn;
     r->digits_lost = pt_bits_to_digits(lost);
 }
-
-

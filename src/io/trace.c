@@ -170,17 +170,17 @@ static void put_col(pt_trace *t, const char *s, size_t n, size_t width)
     put(t, s, n);
 }
 
-/* Room for n bytes (at most a block; a vertex record asks for PT_ROW_REST,
-** a run of pixel records for PT_RASTER_RUN of theirs) at the end of the
-** block, for the writers below that write there by pointer and then move
-** t->len past what they wrote: one check for a whole record, or a whole
-** run, instead of one per piece. */
 /* The most a vertex record writes after the model's name (and before
 ** --explain's text): v or a segment (20 bytes), the stage's name and keys,
 ** five numbers of PT_NUMLEN + 2, integers, the plane and warning names
 ** (pt_trace_init() checks that each list fits in 160 bytes), punctuation. */
 #define PT_ROW_REST (5 * (PT_NUMLEN + 2) + 8 * 24 + 2 * 160 + 256)
 
+/* Room for n bytes (at most a block; a vertex record asks for PT_ROW_REST,
+** a run of pixel records for PT_RASTER_RUN of theirs) at the end of the
+** block, for the writers below that write there by pointer and then move
+** t->len past what they wrote: one check for a whole record, or a whole
+** run, instead of one per piece. */
 static char *room(pt_trace *t, size_t n)
 {
     assert(n <= sizeof t->buf);
@@ -702,6 +702,20 @@ static void vertex_prefix(pt_trace *t, const pt_model *m)
     t->vx_len = take_back(t, start, t->vx, sizeof t->vx);
 }
 
+/* A vertex record of t->model begun at the end of the block from its kept
+** opening (one fixed-size copy), with room made for the rest: where it goes
+** on, or NULL when no opening is kept (a long name: the caller writes it). */
+static char *vertex_opening_at(pt_trace *t)
+{
+    char *o;
+
+    if (t->model != t->vx_model) vertex_prefix(t, t->model);
+    if (!t->vx_len) return NULL;
+    o = room(t, sizeof t->vx + PT_ROW_REST);
+    memcpy(o, t->vx, sizeof t->vx);
+    return o + t->vx_len;
+}
+
 /* JSON: ["a","b"] at o, the names whose bits are set in bits. */
 static char *names_json_at(char *o, unsigned bits, const char *const *names, int n)
 {
@@ -732,12 +746,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         o = str_at(o, ",\"to\":"); o = u64_at(t, o, t->to);
         o = str_at(o, ",\"t\":"); o = json_num_at(t, o, t->t_clip);
     } else {
-        if (t->model != t->vx_model) vertex_prefix(t, t->model);
-        if (t->vx_len) {                    /* the usual case: one fixed-size copy */
-            o = room(t, sizeof t->vx + PT_ROW_REST);
-            memcpy(o, t->vx, sizeof t->vx);
-            o += t->vx_len;
-        } else {
+        if (!(o = vertex_opening_at(t))) {
             puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
             o = room(t, PT_ROW_REST);
             o = str_at(o, ",\"v\":");
@@ -810,12 +819,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     const double v[4] = {r->x, r->y, r->z, r->w};
     char *o;
 
-    if (t->model != t->vx_model) vertex_prefix(t, t->model);
-    if (t->vx_len) {                        /* 'm1,': one fixed-size copy */
-        o = room(t, sizeof t->vx + PT_ROW_REST);
-        memcpy(o, t->vx, sizeof t->vx);
-        o += t->vx_len;
-    } else {
+    if (!(o = vertex_opening_at(t))) {      /* 'm1,' */
         puts_(t, t->model->name);
         o = room(t, PT_ROW_REST);
         *o++ = ',';
@@ -934,25 +938,23 @@ static void pixel_long(pt_trace *t, const pt_model *m, uint64_t seg, const pt_fb
     puts_(t, "}\n");
 }
 
+/* x at o as int_at(t, o, x, 0) writes it: a pixel of the array (0 to
+** 10^8 - 1) straight from the digit table, without the sign's test. */
+static inline char *pixel_int_at(const pt_trace *t, char *o, int64_t x)
+{
+    if ((uint64_t)x < 100000000) return o + pt_fmt_u32_tab(&t->digits, o, (uint32_t)x);
+    return int_at(t, o, x, 0);
+}
+
 /* The rest of a JSON Lines pixel record after its kept opening, at o:
-** 'X,"y":Y,"i":I}\n'.  Every pixel of the array (coordinates and index
-** below 10^8) takes the digit table's copies; others int_at(). */
+** 'X,"y":Y,"i":I}\n'. */
 static char *pixel_json_at(const pt_trace *t, char *o, const pt_fb_pixel *p)
 {
-    if ((uint64_t)p->x_fb < 100000000 && (uint64_t)p->y_fb < 100000000 &&
-        (uint64_t)p->idx < 100000000) {
-        o += pt_fmt_u32_tab(&t->digits, o, (uint32_t)p->x_fb);
-        memcpy(o, ",\"y\":", 5);
-        o += 5;
-        o += pt_fmt_u32_tab(&t->digits, o, (uint32_t)p->y_fb);
-        memcpy(o, ",\"i\":", 5);
-        o += 5;
-        o += pt_fmt_u32_tab(&t->digits, o, (uint32_t)p->idx);
-    } else {
-        o = int_at(t, o, p->x_fb, 0);
-        o = int_at(t, str_at(o, ",\"y\":"), p->y_fb, 0);
-        o = int_at(t, str_at(o, ",\"i\":"), p->idx, 0);
-    }
+    o = pixel_int_at(t, o, p->x_fb);
+    memcpy(o, ",\"y\":", 5);
+    o = pixel_int_at(t, o + 5, p->y_fb);
+    memcpy(o, ",\"i\":", 5);
+    o = pixel_int_at(t, o + 5, p->idx);
     memcpy(o, "}\n", 2);
     return o + 2;
 }
