@@ -15,7 +15,8 @@
 **   traces     `pipetrace SCENE --image OUT.ppm --format F --trace /dev/null`
 **              for JSON Lines, text and CSV, as MB/s and against the process
 **              without a trace;
-**   memory     the peak resident memory of the process at 800k vertices, and
+**   memory     the peak resident memory of the process at 800k vertices,
+**              without a trace and with a JSON Lines trace (to a pipe), and
 **              the page faults of the process at 200k;
 **   scaling    the process's time per vertex at 200k, 800k and 3.2M vertices.
 ** Each time is CPU time (user and system), the least of 5 runs (of 3 for the
@@ -336,9 +337,14 @@ int main(int argc, char **argv)
     {
         char *a[] = {pt, s800, "--image", ppm, NULL};
         char *b[] = {pt, s3200, "--image", ppm, NULL};
+        char *c[] = {pt, s800, "--image", ppm, "--format", "jsonl", "--trace", "-", NULL};
+        long trss;
         spawn(a, "/dev/null", &rss, NULL);
         printf("\npeak resident memory, 800,000 vertices: %.1f MiB   (target <= 60 MiB)\n",
                (double)rss / 1024);
+        spawn(c, NULL, &trss, &bytes);
+        printf("  with its JSON Lines trace (%.1f MB, to a pipe): %.1f MiB\n", bytes / 1e6,
+               (double)trss / 1024);
         t800 = spawn_least(a);
         t3200 = spawn_least(b);
         printf("\nscaling, whole process, image only:\n");
