@@ -289,7 +289,7 @@ static void test_in_turn(void)
         for (i = 0; i < 3; i++) l[i].summary = no_summary;  /* warnings counted */
         l[1].sink.vertex = no_record;                        /* vertices first */
         l[2].sink.vertex = no_record;
-        l[2].pixels = no_pixel;                               /* through on_pixel */
+        l[2].pixels = no_pixel;                              /* a pixel listener */
         for (i = 0; i < 3; i++) {
             if (run_into(&s, &l[i], &fb[i], &sum[i]) != 0) { loaded = 0; break; }
             if (i == 0) continue;

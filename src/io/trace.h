@@ -3,7 +3,7 @@
 ** See LICENSE for copyright and license.
 **
 ** The trace writer is a pt_listener: the pipeline hands it numbers, it formats
-** them into a 64 KiB buffer and writes whole blocks.  No allocation per record.
+** them into a 256 KiB buffer and writes whole blocks.  No allocation per record.
 ** Record kinds and their fields (docs/trace-format.md has the full table):
 **
 **   kind     field     meaning
