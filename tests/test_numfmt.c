@@ -389,6 +389,21 @@ int main(int argc, char **argv)
     }
     PT_CHECK("num-4.8 typical values: a/b*c, a*b+c of small decimals",
              group_done("num-4.8 a/b*c, a*b+c of small decimals"));
+    /* numfmt.c's short_decimal() path: decimals of 1 to 17 digits over its
+    ** range (about 2e-9 .. 1.4e14) and past both ends, with a neighbour each. */
+    for (k = 0; k < 300000; k++) {
+        uint64_t r = next_random(), d = next_random() % 100000000000000000ULL;
+        int digits = 1 + (int)(r % 17), exp10 = (int)(r >> 8 & 31) - 12;   /* -12 .. 19 */
+        char s[48];
+        double x;
+        for (j = digits; j < 17; j++) d /= 10;  /* d has at most that many digits */
+        snprintf(s, sizeof s, "%" PRIu64 "e%d", d, exp10 - digits + 1);
+        x = strtod(s, NULL);
+        agrees_pm(x);
+        agrees(nextafter(x, (double)INFINITY));
+    }
+    PT_CHECK("num-4.9 decimals of 1..17 digits from 1e-12 to 1e19, and their neighbours",
+             group_done("num-4.9 decimals of 1..17 digits, 1e-12 .. 1e19"));
 
     {
         uint64_t p = 1;

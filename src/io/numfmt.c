@@ -32,6 +32,7 @@
 ** Fixed decimals ("%.*f") are exact integer arithmetic too: see fixed().
 */
 #include <assert.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -376,6 +377,15 @@ static int floor_log10_width(int q, int lop)
     return (int)((t + ((int64_t)1 << 50)) >> 32) - (1 << 18);   /* t + 2^50 >= 0 */
 }
 
+/* d * 10^e with d's trailing zeros moved into e (d > 0): fewest divisions. */
+static void drop_zeros(uint64_t *d, int *e)
+{
+    while (*d % 100000000 == 0) { *d /= 100000000; *e += 8; }
+    if (*d % 10000 == 0) { *d /= 10000; *e += 4; }
+    if (*d % 100 == 0) { *d /= 100; *e += 2; }
+    if (*d % 10 == 0) { *d /= 10; ++*e; }
+}
+
 /* The shortest decimal that reads back to finite x > 0, nearest x: d * 10^e,
 ** d not a multiple of 10. */
 static void shortest(double x, uint64_t *d, int *e)
@@ -406,12 +416,7 @@ static void shortest(double x, uint64_t *d, int *e)
     if (above_low(&b, sp) || below_high(&b, sp + 10)) {
         *d = (above_low(&b, sp) ? sp : sp + 10) / 10;
         *e = k + 1;
-        if (*d % 10 == 0) {                 /* more trailing zeros: fewest divisions */
-            while (*d % 100000000 == 0) { *d /= 100000000; *e += 8; }
-            if (*d % 10000 == 0) { *d /= 10000; *e += 4; }
-            if (*d % 100 == 0) { *d /= 100; *e += 2; }
-            if (*d % 10 == 0) { *d /= 10; ++*e; }
-        }
+        if (*d % 10 == 0) drop_zeros(d, e);
     } else {                                /* s or s + 1: no multiple of 10 */
         int u_in = above_low(&b, s), w_in = below_high(&b, s + 1);
         /* One is in R: the nearer is within 10^k/2 <= width/2 of v.  At a
@@ -423,6 +428,54 @@ static void shortest(double x, uint64_t *d, int *e)
         ** a branch, as above */
         *d = s + (uint64_t)((u_in == 0) | (w_in & (f2 != 2 * s) & ((x2 == 0) | (int)(s & 1))));
     }
+}
+
+/* ===== short decimals: a scene's own numbers ===== */
+
+/* 10^0 .. 10^22, each exactly a double (5^22 < 2^53). */
+static const double pow10_dbl[23] = {
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+};
+
+/* shortest()'s answer for finite x > 0 when x is a decimal of at most 15
+** significant digits (1.873376, -0.098717: what a scene file says, and sums
+** of such), found with three double operations instead of the 128-bit ones;
+** returns 0 when it can't tell, and shortest() decides.  With
+** 2^be <= x < 2^(be+1) and e10 = floor(be log10 2), so that 10^e10 <= x <
+** 10^(e10+2):
+**     n = floor(x 10^k + 1/2),  k = 13 - e10  (0 <= k <= 22: 10^k is exact),
+** 10^13 <= x 10^k < 10^15, so n <= 10^15 < 2^53 is exact as a double.  When
+** n / 10^k, IEEE division, gives back x, the decimal n 10^-k reads back to
+** x: strtod rounds the same exact quotient the same way (to nearest, ties
+** to even).  No two decimals of at most 15 significant digits read back to
+** one normal double (DBL_DIG = 15), so n 10^-k is the only one in x's
+** interval R: the shortest, and the only candidate of its length.  A miss
+** (x needs 16 or 17 digits, or 15 and the product's rounding moved n)
+** costs the three operations; the digits are shortest()'s either way
+** (tests/test_numfmt.c, num-4.9).  Where doubles may be evaluated in a
+** wider format (FLT_EVAL_METHOD != 0: x87) the division could round twice,
+** so the path is left out there. */
+static int short_decimal(double x, uint64_t *d, int *e)
+{
+#if FLT_EVAL_METHOD == 0
+    uint64_t bits, n;
+    int be, k;
+
+    memcpy(&bits, &x, sizeof bits);
+    be = (int)(bits >> 52) - 1023;          /* 2^be <= x < 2^(be+1) */
+    if (be < -29 || be > 46) return 0;      /* else k would leave 0..22 */
+    k = 13 - floor_log10_width(be, 0);      /* e10 = floor(be log10 2) */
+    n = (uint64_t)(x * pow10_dbl[k] + 0.5); /* + 1/2 is exact: x 10^k < 2^50 */
+    if ((double)n / pow10_dbl[k] != x) return 0;
+    *d = n;
+    *e = -k;
+    drop_zeros(d, e);
+    return 1;
+#else
+    (void)x; (void)d; (void)e;
+    return 0;
+#endif
 }
 
 /* ===== spelling ===== */
@@ -506,7 +559,7 @@ size_t pt_fmt_shortest(char *buf, double x)
     if (!isfinite(x)) return nonfinite(buf, x);
     if (fabs(x) < 1e15 && x == (double)(int64_t)x)  /* an integer: its digits, */
         return int_digits(buf, x);                  /* as %.15g writes them */
-    shortest(fabs(x), &d, &e);
+    if (!short_decimal(fabs(x), &d, &e)) shortest(fabs(x), &d, &e);
     return g_style(buf, signbit(x) != 0, d, e);
 }
 
