@@ -617,10 +617,12 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
     if (t->explain) put_explain(t, r);
 }
 
-/* Piece k of stage st at o (t->frag: one fixed-size copy); returns the end. */
+/* Piece k of stage st at o; returns the end.  One copy of the whole slot,
+** 32 bytes with its length byte (two 16-byte moves, where s alone would be
+** five): the bytes past the end are written over next. */
 static char *frag_at(const pt_trace *t, char *o, pt_stage st, int k)
 {
-    memcpy(o, t->frag[st][k].s, sizeof t->frag[st][k].s);
+    memcpy(o, &t->frag[st][k], sizeof t->frag[st][k]);
     return o + t->frag[st][k].len;
 }
 
@@ -760,8 +762,8 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         o = names_json_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES);
     } else if (pt_stage_infos[r->stage].nreal) {
         const double v[4] = {r->x, r->y, r->z, r->w};
-        int k;
-        for (k = 0; k < pt_stage_infos[r->stage].nreal; k++)
+        int k, nreal = pt_stage_infos[r->stage].nreal;     /* read once: each byte */
+        for (k = 0; k < nreal; k++)                         /* stored may alias it */
             o = json_num_at(t, key_at(t, o, r->stage, k), v[k]);
     } else {                                /* viewport, framebuffer, index */
         const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};

@@ -80,9 +80,9 @@ typedef struct pt_trace {
     size_t vx_len;               /*   vx[0..vx_len), 0 when it does not fit */
     char vx[96];                 /*   (trace.c: vertex_prefix) */
     struct pt_trace_frag {       /* a stage's pieces of a record, made once from */
-        unsigned char len;       /*   pt_stage_infos (trace.c: frags_init): */
-        char s[31];              /*   JSON ',"stage":"camera"', then ',"x":' ...; */
-    } frag[PT_NSTAGES_ALL][5];   /*   CSV the name, then nothing */
+        char s[31];              /*   pt_stage_infos (trace.c: frags_init): JSON */
+        unsigned char len;       /*   ',"stage":"camera"', then ',"x":' ...; CSV */
+    } frag[PT_NSTAGES_ALL][5];   /*   the name, then nothing */
     struct pt_trace_num {        /* recent doubles, by their bits' hash, */
         uint64_t bits;           /*   spelled as pt_fmt_shortest() spells them */
         unsigned char len;       /*   (trace.c: short_at) */
