@@ -91,27 +91,32 @@ static void put_i64(pt_trace *t, int64_t x)
 ** image plane's z), so the spellings of recent ones are kept in t->nums,
 ** one slot for each hash of the bits; a slot holds the spelling of the
 ** bits it holds (pt_trace_init() fills each with +0's), so a hit is always
-** right.  The copy is of a fixed PT_SHORTLEN bytes, no library call. */
-static char *short_at(pt_trace *t, char *o, double x)
+** right.  The copy is of a fixed PT_SHORTLEN bytes, no library call.  A hit
+** (most of them) is inlined where a record is written; a miss spells x into
+** slot e by the call below. */
+static char *short_miss(struct pt_trace_num *e, char *o, double x, uint64_t bits)
 {
-    struct pt_trace_num *e;
-    uint64_t bits;
-
-    memcpy(&bits, &x, sizeof bits);
-    e = &t->nums[(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - PT_TRACE_NUMBITS)];
-    if (e->bits == bits) {
-        memcpy(o, e->s, PT_SHORTLEN);
-        return o + e->len;
-    }
     e->bits = bits;
     e->len = (unsigned char)pt_fmt_shortest(o, x);
     memcpy(e->s, o, PT_SHORTLEN);
     return o + e->len;
 }
 
+static inline char *short_at(pt_trace *t, char *o, double x)
+{
+    struct pt_trace_num *e;
+    uint64_t bits;
+
+    memcpy(&bits, &x, sizeof bits);
+    e = &t->nums[(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - PT_TRACE_NUMBITS)];
+    if (e->bits != bits) return short_miss(e, o, x, bits);
+    memcpy(o, e->s, PT_SHORTLEN);
+    return o + e->len;
+}
+
 /* A double in JSON: shortest round-trip, non-finite as a string, negative
 ** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign). */
-static char *json_num_at(pt_trace *t, char *o, double x)   /* PT_NUMLEN + 2 bytes */
+static inline char *json_num_at(pt_trace *t, char *o, double x)   /* PT_NUMLEN + 2 bytes */
 {
     uint64_t bits;
 
