@@ -772,8 +772,8 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
             o = json_num_at(t, key_at(t, o, r->stage, k), v[k]);
     } else {                                /* viewport, framebuffer, index */
         const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
-        int k;
-        for (k = 0; k < pt_stage_infos[r->stage].nint; k++) {
+        int k, nint = pt_stage_infos[r->stage].nint;      /* read once, as nreal */
+        for (k = 0; k < nint; k++) {
             o = key_at(t, o, r->stage, k);
             o = pt_rec_has(r, k) ? int_at(t, o, n[k], 0) : str_at(o, "null");
         }
