@@ -82,7 +82,8 @@ typedef struct pt_trace {
     struct pt_trace_frag {       /* a stage's pieces of a record, made once from */
         char s[31];              /*   pt_stage_infos (trace.c: frags_init): JSON */
         unsigned char len;       /*   ',"stage":"camera"', then ',"x":' ...; CSV */
-    } frag[PT_NSTAGES_ALL][5];   /*   the name, then nothing */
+    } frag[PT_NSTAGES_ALL][5];   /*   the name, then nothing.  len comes last:
+                                 **   frag_at() copies the whole 32-byte slot */
     struct pt_trace_num {        /* recent doubles, by their bits' hash, */
         uint64_t bits;           /*   spelled as pt_fmt_shortest() spells them */
         unsigned char len;       /*   (trace.c: short_at) */
