@@ -299,6 +299,21 @@ int main(int argc, char **argv)
     PT_CHECK("num-1.11 largest double", spells(DBL_MAX, "1.7976931348623157e+308"));
     PT_CHECK("num-1.16 the longest spelling is PT_SHORTLEN bytes",
              pt_fmt_shortest(b, -2.2250738585072014e-308) == PT_SHORTLEN);
+    {   /* every length 1..17 with the point at every place of the fixed
+        ** form, and on either side of it: digits 1..9 cycled, and all 9s */
+        static const char *const fill[] = {"12345678912345678", "98765432198765432",
+                                           "99999999999999999", "10000000000000001"};
+        char s[64];
+        int f;
+        for (f = 0; f < 4; f++)
+            for (k = 1; k <= 17; k++)
+                for (j = -7; j <= 18; j++) {
+                    snprintf(s, sizeof s, "%.*se%d", k, fill[f], j - k + 1);
+                    agrees_pm(strtod(s, NULL));
+                }
+        PT_CHECK("num-1.18 1..17 digits, the point before, in and after them",
+                 group_done("num-1.18 1..17 digits, every place of the point"));
+    }
     PT_CHECK("num-1.12 1e15 and 1e16 switch to exponent form",
              spells(1e15, "1e+15") && spells(1e16, "1e+16") && spells(999999999999999, "999999999999999"));
     PT_CHECK("num-1.13 exponent form below 1e-4",
