@@ -631,15 +631,17 @@ static char *frag_at(const pt_trace *t, char *o, pt_stage st, int k)
     return o + t->frag[st][k].len;
 }
 
-/* ',"x":' at o: the JSON key of value k of stage st (stages/pt_stage.h). */
+/* ',"y":' at o: the JSON key of value k >= 1 of stage st (stages/pt_stage.h);
+** the first comes with the stage's name. */
 static char *key_at(const pt_trace *t, char *o, pt_stage st, int k)
 {
-    return frag_at(t, o, st, 1 + k);
+    return frag_at(t, o, st, k);
 }
 
-/* The pieces of each stage's records: JSON Lines ',"stage":"NAME"' and the
-** keys ',"KEY":' of its values; CSV its name.  From pt_stage_infos; a piece
-** that would not fit (none does) is left empty and asserted. */
+/* The pieces of each stage's records: JSON Lines ',"stage":"NAME","KEY":'
+** (the first value's key; every stage has one) and the keys ',"KEY":' of the
+** others; CSV its name.  From pt_stage_infos; a piece that would not fit
+** (none does) is left empty and asserted. */
 static void frags_init(pt_trace *t)
 {
     int st, k;
@@ -653,9 +655,10 @@ static void frags_init(pt_trace *t)
             if (k == 0 && t->fmt == PT_FORMAT_CSV)
                 n = snprintf(f->s, sizeof f->s, "%s", in->name);
             else if (k == 0)
-                n = snprintf(f->s, sizeof f->s, ",\"stage\":\"%s\"", in->name);
-            else if (k - 1 < 4 && in->key[k - 1] && t->fmt != PT_FORMAT_CSV)
-                n = snprintf(f->s, sizeof f->s, ",\"%s\":", in->key[k - 1]);
+                n = snprintf(f->s, sizeof f->s, ",\"stage\":\"%s\",\"%s\":",
+                             in->name, in->key[0]);
+            else if (k < 4 && in->key[k] && t->fmt != PT_FORMAT_CSV)
+                n = snprintf(f->s, sizeof f->s, ",\"%s\":", in->key[k]);
             assert(n >= 0 && (size_t)n < sizeof f->s);
             f->len = (unsigned char)n;
         }
@@ -692,12 +695,14 @@ static size_t take_back(pt_trace *t, size_t start, char *dst, size_t cap)
 /* How the vertex records of model m begin, up to v's digits:
 ** '{"type":"vertex","model":"m1","v":' (JSON Lines) or 'm1,' (CSV), written
 ** by the code that writes them otherwise (then taken back out of the block)
-** and kept in t->vx; t->vx_len is 0 when it does not fit (as pixel_prefix). */
+** and kept in t->vx; t->vx_mlen is 0 when it does not fit with 20 bytes to
+** spare for v's digits (as pixel_prefix). */
 static void vertex_prefix(pt_trace *t, const pt_model *m)
 {
     size_t start;
 
     t->vx_model = m;
+    t->vx_mlen = 0;
     t->vx_len = 0;
     if ((start = opening_start(t, m)) == SIZE_MAX) return;
     if (t->fmt == PT_FORMAT_CSV) {
@@ -706,7 +711,7 @@ static void vertex_prefix(pt_trace *t, const pt_model *m)
         puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, m->name);
         puts_(t, ",\"v\":");
     }
-    t->vx_len = take_back(t, start, t->vx, sizeof t->vx);
+    t->vx_mlen = take_back(t, start, t->vx, sizeof t->vx - 20);
 }
 
 /* A vertex record of t->model begun at the end of the block from its kept
@@ -717,7 +722,24 @@ static char *vertex_opening_at(pt_trace *t)
     char *o;
 
     if (t->model != t->vx_model) vertex_prefix(t, t->model);
-    if (!t->vx_len) return NULL;
+    if (!t->vx_mlen) return NULL;
+    o = room(t, sizeof t->vx + PT_ROW_REST);
+    memcpy(o, t->vx, sizeof t->vx);
+    return o + t->vx_mlen;
+}
+
+/* The same, going on with t->v's digits: a vertex's records come in a row,
+** so the digits are kept with the opening, written once for all of them. */
+static inline char *vertex_v_opening_at(pt_trace *t)
+{
+    char *o;
+
+    if (t->model != t->vx_model) vertex_prefix(t, t->model);
+    if (!t->vx_mlen) return NULL;
+    if (!t->vx_len || t->vx_v != t->v) {
+        t->vx_len = (size_t)(u64_at(t, t->vx + t->vx_mlen, t->v) - t->vx);
+        t->vx_v = t->v;
+    }
     o = room(t, sizeof t->vx + PT_ROW_REST);
     memcpy(o, t->vx, sizeof t->vx);
     return o + t->vx_len;
@@ -753,28 +775,28 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         o = str_at(o, ",\"to\":"); o = u64_at(t, o, t->to);
         o = str_at(o, ",\"t\":"); o = json_num_at(t, o, t->t_clip);
     } else {
-        if (!(o = vertex_opening_at(t))) {
+        if (!(o = vertex_v_opening_at(t))) {
             puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
             o = room(t, PT_ROW_REST);
-            o = str_at(o, ",\"v\":");
+            o = u64_at(t, str_at(o, ",\"v\":"), t->v);
         }
-        o = u64_at(t, o, t->v);
     }
-    o = frag_at(t, o, r->stage, 0);         /* ,"stage":"camera" */
-    if (r->stage == PT_STAGE_CVV) {
-        o = str_at(o, ",\"code\":"); o = int_at(t, o, r->code, 0);
+    o = frag_at(t, o, r->stage, 0);         /* ,"stage":"camera","x": */
+    if (r->stage == PT_STAGE_CVV) {         /* ,"stage":"cvv","code": */
+        o = int_at(t, o, r->code, 0);
         o = str_at(o, ",\"planes\":");
         o = names_json_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES);
     } else if (pt_stage_infos[r->stage].nreal) {
         const double v[4] = {r->x, r->y, r->z, r->w};
         int k, nreal = pt_stage_infos[r->stage].nreal;     /* read once: each byte */
-        for (k = 0; k < nreal; k++)                         /* stored may alias it */
-            o = json_num_at(t, key_at(t, o, r->stage, k), v[k]);
+        o = json_num_at(t, o, v[0]);                        /* stored may alias it; */
+        for (k = 1; k < nreal; k++)                         /* the first key came */
+            o = json_num_at(t, key_at(t, o, r->stage, k), v[k]);  /* with the stage */
     } else {                                /* viewport, framebuffer, index */
         const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
         int k, nint = pt_stage_infos[r->stage].nint;      /* read once, as nreal */
         for (k = 0; k < nint; k++) {
-            o = key_at(t, o, r->stage, k);
+            if (k) o = key_at(t, o, r->stage, k);
             o = pt_rec_has(r, k) ? int_at(t, o, n[k], 0) : str_at(o, "null");
         }
     }
@@ -826,12 +848,13 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     const double v[4] = {r->x, r->y, r->z, r->w};
     char *o;
 
-    if (!(o = vertex_opening_at(t))) {      /* 'm1,' */
+    o = t->clipv ? vertex_opening_at(t) : vertex_v_opening_at(t);
+    if (!o) {                               /* 'm1,12' ('m1,' clipped) */
         puts_(t, t->model->name);
         o = room(t, PT_ROW_REST);
         *o++ = ',';
+        if (!t->clipv) o = u64_at(t, o, t->v);
     }
-    if (!t->clipv) o = u64_at(t, o, t->v);
     *o++ = ',';
     o = frag_at(t, o, r->stage, 0);         /* the stage's name */
     for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
@@ -1141,6 +1164,8 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->pix_len = 0;
     t->pix_mlen = 0;
     t->vx_model = NULL;
+    t->vx_mlen = 0;
+    t->vx_v = 0;
     t->vx_len = 0;
     pt_digits4_init(&t->digits);
     frags_init(t);

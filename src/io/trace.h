@@ -77,12 +77,14 @@ typedef struct pt_trace {
     size_t pix_mlen;             /*   JSON Lines: pix[0..pix_mlen) up to the segment */
     pt_digits4 digits;           /* 0000 .. 9999, for integers (trace.c: digits_at) */
     const pt_model *vx_model;    /* the model whose vertex records begin so: */
-    size_t vx_len;               /*   vx[0..vx_len), 0 when it does not fit */
-    char vx[96];                 /*   (trace.c: vertex_prefix) */
+    size_t vx_mlen;              /*   vx[0..vx_mlen), 0 when it does not fit; */
+    uint64_t vx_v;               /*   then the digits of vertex vx_v, up to */
+    size_t vx_len;               /*   vx_len (0: none yet) */
+    char vx[96];                 /*   (trace.c: vertex_prefix, vertex_opening_at) */
     struct pt_trace_frag {       /* a stage's pieces of a record, made once from */
         char s[31];              /*   pt_stage_infos (trace.c: frags_init): JSON */
-        unsigned char len;       /*   ',"stage":"camera"', then ',"x":' ...; CSV */
-    } frag[PT_NSTAGES_ALL][5];   /*   the name, then nothing.  len comes last:
+        unsigned char len;       /*   ',"stage":"camera","x":', then ',"y":' ...; */
+    } frag[PT_NSTAGES_ALL][5];   /*   CSV the name, then nothing.  len comes last:
                                  **   frag_at() copies the whole 32-byte slot */
     struct pt_trace_num {        /* recent doubles, by their bits' hash, */
         uint64_t bits;           /*   spelled as pt_fmt_shortest() spells them */
