@@ -102,27 +102,41 @@ static char *short_miss(struct pt_trace_num *e, char *o, double x, uint64_t bits
     return o + e->len;
 }
 
+static inline struct pt_trace_num *num_slot(pt_trace *t, uint64_t bits)
+{
+    return &t->nums[(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - PT_TRACE_NUMBITS)];
+}
+
 static inline char *short_at(pt_trace *t, char *o, double x)
 {
     struct pt_trace_num *e;
     uint64_t bits;
 
     memcpy(&bits, &x, sizeof bits);
-    e = &t->nums[(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - PT_TRACE_NUMBITS)];
+    e = num_slot(t, bits);
     if (e->bits != bits) return short_miss(e, o, x, bits);
     memcpy(o, e->s, PT_SHORTLEN);
     return o + e->len;
 }
 
 /* A double in JSON: shortest round-trip, non-finite as a string, negative
-** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign). */
+** zero as -0.0 (JSON readers take "-0" for the integer 0 and lose the sign).
+** The slots are looked at first: in a JSON Lines trace only this function
+** fills them (short_at() is CSV's), and only with finite doubles other than
+** -0, so a hit needs no more tests. */
 static inline char *json_num_at(pt_trace *t, char *o, double x)   /* PT_NUMLEN + 2 bytes */
 {
+    struct pt_trace_num *e;
     uint64_t bits;
 
-    memcpy(&bits, &x, sizeof bits);         /* one test for the usual case: */
+    memcpy(&bits, &x, sizeof bits);
+    e = num_slot(t, bits);
+    if (e->bits == bits) {
+        memcpy(o, e->s, PT_SHORTLEN);
+        return o + e->len;
+    }
     if ((bits >> 52 & 0x7ff) != 0x7ff && bits != UINT64_C(1) << 63)   /* finite, not -0 */
-        return short_at(t, o, x);
+        return short_miss(e, o, x, bits);
     if (x == 0) { memcpy(o, "-0.0", 4); return o + 4; }
     *o++ = '"';
     o += pt_fmt_shortest(o, x);
