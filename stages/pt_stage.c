@@ -111,12 +111,24 @@ const char *const pt_warn_names[PT_NWARN] = {
     "nonfinite", "cancellation", "ill_conditioned", "out_of_range", "outside_pixel_array",
 };
 
+/* ilogb(x) for finite x != 0: a normal double's exponent field less its
+** bias, read off its bits (no call); a subnormal's from ilogb(). */
+static int binary_exponent(double x)
+{
+    union { double d; uint64_t bits; } v;   /* C11 6.5.2.3: the bytes as bits */
+    int e;
+
+    v.d = x;
+    e = (int)(v.bits >> 52 & 0x7ff);
+    return e ? e - 1023 : ilogb(x);
+}
+
 int pt_bits_lost(double scale, double x)
 {
     int lost;
 
     if (x == 0 || !isfinite(x) || !isfinite(scale) || fabs(x) >= fabs(scale)) return 0;
-    lost = ilogb(scale) - ilogb(x);         /* exact: binary exponents */
+    lost = binary_exponent(scale) - binary_exponent(x);    /* exact: ilogb's */
     return lost > 53 ? 53 : lost;
 }
 

@@ -16,7 +16,7 @@ pt_vec3 pt_model2camera(pt_vec3 m, pt_vec3 t, const pt_sink *sink)
 {
     pt_vec3 c;
     double v[3];
-    int lost;
+    int lost, ly, lz;
 
     c.x = m.x + t.x;                        /* x_c = x_m + x_t */
     c.y = m.y + t.y;                        /* y_c = y_m + y_t */
@@ -26,9 +26,11 @@ pt_vec3 pt_model2camera(pt_vec3 m, pt_vec3 t, const pt_sink *sink)
     r.stage = PT_STAGE_CAMERA;
     r.x = v[0] = c.x; r.y = v[1] = c.y; r.z = v[2] = c.z;
     r.warn = pt_warn_nonfinite(v, 3);
-    lost = sum_bits_lost(m.x, t.x, c.x);
-    lost = (int)fmax(lost, sum_bits_lost(m.y, t.y, c.y));
-    lost = (int)fmax(lost, sum_bits_lost(m.z, t.z, c.z));
+    lost = sum_bits_lost(m.x, t.x, c.x);    /* the most any coordinate lost */
+    ly = sum_bits_lost(m.y, t.y, c.y);
+    lz = sum_bits_lost(m.z, t.z, c.z);
+    if (ly > lost) lost = ly;
+    if (lz > lost) lost = lz;
     pt_warn_lost(&r, PT_WARN_CANCEL, lost);
     pt_emit(sink, &r);
     return c;

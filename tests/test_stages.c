@@ -153,6 +153,33 @@ static void test_warnings(void)
     PT_CHECK("warn-6.1 x_fb = -1: outside_pixel_array", last.warn == PT_WARN_OUTSIDE);
     PT_CHECK("warn-7.1 digits from bits: 26 bits = 7 digits, 53 bits = 15 digits",
              pt_bits_to_digits(26) == 7 && pt_bits_to_digits(53) == 15);
+    {   /* pt_bits_lost reads exponents off the bits: as ilogb gives them, for
+        ** every kind of double (subnormals, zeros, infinities, NaN) */
+        static const double edge[] = {0.0, -0.0, 5e-324, -5e-324, 2.2250738585072009e-308,
+                                      2.2250738585072014e-308, 1e-300, 0.5, 1, 1.5, 2,
+                                      1e300, 1.7976931348623157e308, INFINITY, -INFINITY, NAN};
+        uint64_t r = 88172645463325252u;
+        int i, j, ok = 1, n = (int)(sizeof edge / sizeof edge[0]);
+        for (i = 0; i < 200000 + n * n; i++) {
+            double a, b;
+            int want;
+            if (i < n * n) { a = edge[i / n]; b = edge[i % n]; }
+            else {
+                uint64_t u[2];
+                for (j = 0; j < 2; j++) {   /* xorshift64; exponents 0 .. 2047 alike */
+                    r ^= r << 13; r ^= r >> 7; r ^= r << 17;
+                    u[j] = r;
+                }
+                memcpy(&a, &u[0], sizeof a);
+                memcpy(&b, &u[1], sizeof b);
+            }
+            want = b == 0 || !isfinite(b) || !isfinite(a) || fabs(b) >= fabs(a) ? 0
+                 : ilogb(a) - ilogb(b) > 53 ? 53 : ilogb(a) - ilogb(b);
+            ok &= pt_bits_lost(a, b) == want;
+        }
+        PT_CHECK("warn-7.2 bits lost: ilogb(scale) - ilogb(x), at most 53, for edge "
+                 "and random doubles", ok);
+    }
 }
 
 static void test_table(void)
