@@ -102,6 +102,8 @@ static char *short_miss(struct pt_trace_num *e, char *o, double x, uint64_t bits
     return o + e->len;
 }
 
+/* The slot of a double's bits: the top PT_TRACE_NUMBITS bits of their
+** product with 2^64 / golden ratio (Knuth's multiplicative hash). */
 static inline struct pt_trace_num *num_slot(pt_trace *t, uint64_t bits)
 {
     return &t->nums[(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - PT_TRACE_NUMBITS)];
