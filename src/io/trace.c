@@ -803,11 +803,13 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         o = str_at(o, ",\"planes\":");
         o = names_json_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES);
     } else if (pt_stage_infos[r->stage].nreal) {
+        /* nreal is read once (each byte stored may alias it); the first
+        ** value's key came with the stage's name */
         const double v[4] = {r->x, r->y, r->z, r->w};
-        int k, nreal = pt_stage_infos[r->stage].nreal;     /* read once: each byte */
-        o = json_num_at(t, o, v[0]);                        /* stored may alias it; */
-        for (k = 1; k < nreal; k++)                         /* the first key came */
-            o = json_num_at(t, key_at(t, o, r->stage, k), v[k]);  /* with the stage */
+        int k, nreal = pt_stage_infos[r->stage].nreal;
+        o = json_num_at(t, o, v[0]);
+        for (k = 1; k < nreal; k++)
+            o = json_num_at(t, key_at(t, o, r->stage, k), v[k]);
     } else {                                /* viewport, framebuffer, index */
         const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
         int k, nint = pt_stage_infos[r->stage].nint;      /* read once, as nreal */
