@@ -732,33 +732,23 @@ static void vertex_prefix(pt_trace *t, const pt_model *m)
 
 /* A vertex record of t->model begun at the end of the block from its kept
 ** opening (one fixed-size copy), with room made for the rest: where it goes
-** on, or NULL when no opening is kept (a long name: the caller writes it). */
-static char *vertex_opening_at(pt_trace *t)
+** on, or NULL when no opening is kept (a long name: the caller writes it).
+** With with_v the opening goes on with t->v's digits: a vertex's records
+** come in a row, so the digits are kept with the opening, written once for
+** all of them. */
+static inline char *vertex_opening_at(pt_trace *t, int with_v)
 {
     char *o;
 
     if (t->model != t->vx_model) vertex_prefix(t, t->model);
     if (!t->vx_mlen) return NULL;
-    o = room(t, sizeof t->vx + PT_ROW_REST);
-    memcpy(o, t->vx, sizeof t->vx);
-    return o + t->vx_mlen;
-}
-
-/* The same, going on with t->v's digits: a vertex's records come in a row,
-** so the digits are kept with the opening, written once for all of them. */
-static inline char *vertex_v_opening_at(pt_trace *t)
-{
-    char *o;
-
-    if (t->model != t->vx_model) vertex_prefix(t, t->model);
-    if (!t->vx_mlen) return NULL;
-    if (!t->vx_len || t->vx_v != t->v) {
+    if (with_v && (!t->vx_len || t->vx_v != t->v)) {
         t->vx_len = (size_t)(u64_at(t, t->vx + t->vx_mlen, t->v) - t->vx);
         t->vx_v = t->v;
     }
     o = room(t, sizeof t->vx + PT_ROW_REST);
     memcpy(o, t->vx, sizeof t->vx);
-    return o + t->vx_len;
+    return o + (with_v ? t->vx_len : t->vx_mlen);
 }
 
 /* JSON: ["a","b"] at o, the names whose bits are set in bits. */
@@ -791,7 +781,7 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         o = str_at(o, ",\"to\":"); o = u64_at(t, o, t->to);
         o = str_at(o, ",\"t\":"); o = json_num_at(t, o, t->t_clip);
     } else {
-        if (!(o = vertex_v_opening_at(t))) {
+        if (!(o = vertex_opening_at(t, 1))) {
             puts_(t, "{\"type\":\"vertex\",\"model\":"); put_json_str(t, t->model->name);
             o = room(t, PT_ROW_REST);
             o = u64_at(t, str_at(o, ",\"v\":"), t->v);
@@ -866,8 +856,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     const double v[4] = {r->x, r->y, r->z, r->w};
     char *o;
 
-    o = t->clipv ? vertex_opening_at(t) : vertex_v_opening_at(t);
-    if (!o) {                               /* 'm1,12' ('m1,' clipped) */
+    if (!(o = vertex_opening_at(t, !t->clipv))) {   /* 'm1,12' ('m1,' clipped) */
         puts_(t, t->model->name);
         o = room(t, PT_ROW_REST);
         *o++ = ',';
