@@ -419,6 +419,19 @@ int main(int argc, char **argv)
     }
     PT_CHECK("num-4.9 decimals of 1..17 digits from 1e-12 to 1e19, and their neighbours",
              group_done("num-4.9 decimals of 1..17 digits, 1e-12 .. 1e19"));
+    /* numfmt.c's fixed_form(): doubles of every binade from 2^-15 to 2^51
+    ** (0.000ddd and ddd.ddd, and both ends of each), and 64 ulps around the
+    ** powers of ten where the form or its leading zeros change. */
+    for (k = 0; k < 300000; k++) {
+        uint64_t r = next_random();
+        agrees_pm(ldexp(1 + (double)(r >> 11) * 0x1p-53, (int)(r % 67) - 15));
+    }
+    {
+        static const double edges[] = { 1e-4, 1e-3, 1e-2, 1e-1, 1, 10, 1e4, 1e15 };
+        for (k = 0; k < (int)(sizeof edges / sizeof edges[0]); k++) agrees_around(edges[k], 64);
+    }
+    PT_CHECK("num-4.10 the fixed forms: every binade from 2^-15 to 2^51, and where they change",
+             group_done("num-4.10 fixed forms, 2^-15 .. 2^51, their edges +- 64 ulps"));
 
     {
         uint64_t p = 1;

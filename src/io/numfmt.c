@@ -28,6 +28,9 @@
 ** digits (it is then x's 15-digit rounding: no two 15-digit decimals read back
 ** to one double, DBL_DIG = 15) and P = its 16 or 17 digits otherwise.
 ** Subnormals always take the exponent form, so P does not matter for them.
+** Most doubles of a trace take one of the two fixed forms with a point,
+** ddd.ddd or 0.000ddd: fixed_form() spells those from x's own comparisons
+** and sixteen digits at a time, g_style() the rest.
 **
 ** Fixed decimals ("%.*f") are exact integer arithmetic too: see fixed().
 */
@@ -38,6 +41,15 @@
 #include <stdio.h>
 #include <string.h>
 #include "io/numfmt.h"
+
+/* SSE2 (every x86-64) spells sixteen digits at once; elsewhere, and in
+** $B/test_numfmt_portable, two digits a step (sixteen_digits). */
+#if defined(__SSE2__) && !defined(PT_NUMFMT_PORTABLE)
+#include <emmintrin.h>
+#define PT_NUMFMT_SSE2 1
+#else
+#define PT_NUMFMT_SSE2 0
+#endif
 
 /* ===== integers ===== */
 
@@ -86,6 +98,30 @@ static void digits_back(char *end, uint64_t x)
     for (y = (uint32_t)x; y >= 100; y /= 100) { end -= 2; memcpy(end, digit_pairs + 2 * (y % 100), 2); }
     if (y >= 10) { end -= 2; memcpy(end, digit_pairs + 2 * y, 2); }
     else *--end = (char)('0' + y);
+}
+
+/* y < 10^16 as sixteen digits, zeros in front, at o.  SSE2: the four
+** groups of four digits in the 16-bit lanes 0, 2, 4, 6; each group g splits
+** into g / 100 = (g * 5243) >> 19 (exact below 43699) and g % 100, one to a
+** lane; each of those p into p / 10 = (p * 6554) >> 16 (exact below 16389)
+** and p % 10, one to a byte, tens first. */
+static void sixteen_digits(char *o, uint64_t y)
+{
+    uint32_t hi = (uint32_t)(y / 100000000), lo = (uint32_t)(y % 100000000);
+#if PT_NUMFMT_SSE2
+    __m128i g = _mm_set_epi32((int)(lo % 10000), (int)(lo / 10000),
+                              (int)(hi % 10000), (int)(hi / 10000));
+    __m128i q = _mm_srli_epi16(_mm_mulhi_epu16(g, _mm_set1_epi32(5243)), 3);
+    __m128i r = _mm_sub_epi16(g, _mm_mullo_epi16(q, _mm_set1_epi32(100)));
+    __m128i p = _mm_or_si128(q, _mm_slli_epi32(r, 16));        /* 8 lanes < 100 */
+    __m128i t = _mm_mulhi_epu16(p, _mm_set1_epi16(6554));
+    __m128i u = _mm_sub_epi16(p, _mm_mullo_epi16(t, _mm_set1_epi16(10)));
+    __m128i d = _mm_or_si128(t, _mm_slli_epi16(u, 8));          /* 16 bytes < 10 */
+    _mm_storeu_si128((__m128i *)(void *)o, _mm_add_epi8(d, _mm_set1_epi8('0')));
+#else
+    eight_digits(o, hi);
+    eight_digits(o + 8, lo);
+#endif
 }
 
 /* x < 10^4: its 1 to 4 digits at buf. */
@@ -517,7 +553,8 @@ static void digits_point(char *end, uint64_t d, int f)
 }
 
 /* Spell [-]d * 10^e (d > 0, not a multiple of 10) the way "%.*g" does with
-** precision P = max(15, digits of d); see the top of the file. */
+** precision P = max(15, digits of d); see the top of the file.  Not for
+** 10^-4 <= D < 1 (fixed_form() spells those). */
 static size_t g_style(char *buf, int neg, uint64_t d, int e)
 {
     char *o = buf + (neg != 0);
@@ -534,12 +571,8 @@ static size_t g_style(char *buf, int neg, uint64_t d, int e)
         if (a >= 100) *o++ = (char)('0' + a / 100);
         *o++ = (char)('0' + a / 10 % 10);
         *o++ = (char)('0' + a % 10);
-    } else if (exp10 < 0) {                 /* 0.000ddd */
-        *o++ = '0'; *o++ = '.';
-        for (i = -1; i > exp10; i--) *o++ = '0';
-        digits_back(o + n, d);
-        o += n;
-    } else if (n > exp10 + 1) {             /* ddd.ddd */
+    } else if (n > exp10 + 1) {             /* ddd.ddd (0.000ddd: fixed_form) */
+        assert(exp10 >= 0);
         o += n + 1;
         digits_point(o, d, n - exp10 - 1);
     } else {                                /* ddd000 */
@@ -551,21 +584,8 @@ static size_t g_style(char *buf, int neg, uint64_t d, int e)
     return (size_t)(o - buf);
 }
 
-size_t pt_fmt_shortest(char *buf, double x)
-{
-    uint64_t d;
-    int e;
-
-    if (!isfinite(x)) return nonfinite(buf, x);
-    if (fabs(x) < 1e15 && x == (double)(int64_t)x)  /* an integer: its digits, */
-        return int_digits(buf, x);                  /* as %.15g writes them */
-    if (!short_decimal(fabs(x), &d, &e)) shortest(fabs(x), &d, &e);
-    return g_style(buf, signbit(x) != 0, d, e);
-}
-
-/* ===== fixed decimals ===== */
-
-static const uint64_t pow10_tab[18] = {         /* 10^0 .. 10^17 */
+/* 10^0 .. 10^17. */
+static const uint64_t pow10_tab[18] = {
     UINT64_C(1), UINT64_C(10), UINT64_C(100), UINT64_C(1000), UINT64_C(10000),
     UINT64_C(100000), UINT64_C(1000000), UINT64_C(10000000), UINT64_C(100000000),
     UINT64_C(1000000000), UINT64_C(10000000000), UINT64_C(100000000000),
@@ -573,6 +593,63 @@ static const uint64_t pow10_tab[18] = {         /* 10^0 .. 10^17 */
     UINT64_C(1000000000000000), UINT64_C(10000000000000000),
     UINT64_C(100000000000000000),
 };
+
+/* g_style() for the two fixed forms most of a trace's doubles take, with a
+** point and digits after it: ddd.ddd for 1 <= |x| < 10^15 and 0.000ddd for
+** 10^-4 <= |x| < 1.  x is no integer here (those went to int_digits), and
+** the decimal D = d 10^e that reads back to x is none either: an integer N
+** in x's interval would be a double (|N| < 2^53) reading back to itself.
+** So e < 0, and comparisons of x decide what g_style() derives from D's
+** digits.  floor(D) = floor(|x|): no integer lies between the two.  D < 1
+** exactly when |x| < 1, and D >= 0.1 when |x| >= 0.1 (the double nearest
+** 0.1), as for 0.01, 0.001 and 10^-4: each such power lies inside the
+** interval of the double nearest it (it is no dyadic number, so no end of
+** one), and D and x lie on the same side of it.  The digits after the point
+** go out sixteen at a time (sixteen_digits), left-aligned, the bytes past
+** D's end to be overwritten (buf has PT_NUMLEN bytes).  Returns 0 for the
+** other forms, which g_style() spells. */
+static size_t fixed_form(char *buf, double x, uint64_t d, int e)
+{
+    double ax = fabs(x);
+    char *o = buf + (x < 0);
+    int f = -e;                             /* digits after the point */
+
+    buf[0] = '-';                           /* overwritten when x > 0 */
+    if (ax >= 1 && ax < 1e15) {             /* ddd.ddd, ip = floor(D) */
+        uint64_t ip = (uint64_t)ax;         /* d = ip 10^f + frac, f <= 16 */
+        size_t n = pt_fmt_u64(o, ip);
+        o[n] = '.';
+        sixteen_digits(o + n + 1, (d - ip * pow10_tab[f]) * pow10_tab[16 - f]);
+        o += n + 1 + f;
+    } else if (ax < 1 && ax >= 1e-4) {      /* 0.[z zeros]ddd, d of f - z digits */
+        int z = (ax < 0.1) + (ax < 0.01) + (ax < 0.001);
+        uint64_t dl = d * pow10_tab[17 - (f - z)];      /* 17 digits, 1 to 9 first */
+        memcpy(o, "0.000000", 8);
+        o[2 + z] = (char)('0' + dl / UINT64_C(10000000000000000));
+        sixteen_digits(o + 3 + z, dl % UINT64_C(10000000000000000));
+        o += 2 + f;
+    } else {
+        return 0;
+    }
+    *o = '\0';
+    return (size_t)(o - buf);
+}
+
+size_t pt_fmt_shortest(char *buf, double x)
+{
+    uint64_t d;
+    size_t n;
+    int e;
+
+    if (!isfinite(x)) return nonfinite(buf, x);
+    if (fabs(x) < 1e15 && x == (double)(int64_t)x)  /* an integer: its digits, */
+        return int_digits(buf, x);                  /* as %.15g writes them */
+    if (!short_decimal(fabs(x), &d, &e)) shortest(fabs(x), &d, &e);
+    if ((n = fixed_form(buf, x, d, e)) != 0) return n;
+    return g_style(buf, signbit(x) != 0, d, e);
+}
+
+/* ===== fixed decimals ===== */
 
 /* hi * 2^64 + lo shifted right by s, 0 <= s < 128; only the low 64 bits. */
 static uint64_t shr_128(uint64_t hi, uint64_t lo, int s)
