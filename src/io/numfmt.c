@@ -601,10 +601,10 @@ static const uint64_t pow10_tab[18] = {
 ** in x's interval would be a double (|N| < 2^53) reading back to itself.
 ** So e < 0, and comparisons of x decide what g_style() derives from D's
 ** digits.  floor(D) = floor(|x|): no integer lies between the two.  D < 1
-** exactly when |x| < 1, and D >= 0.1 when |x| >= 0.1 (the double nearest
-** 0.1), as for 0.01, 0.001 and 10^-4: each such power lies inside the
-** interval of the double nearest it (it is no dyadic number, so no end of
-** one), and D and x lie on the same side of it.  The digits after the point
+** exactly when |x| < 1, and D >= 0.1 exactly when |x| >= 0.1 (the double
+** nearest 0.1), as for 0.01, 0.001 and 10^-4: each such power lies inside
+** the interval of the double nearest it (it is no dyadic number, so no end
+** of one), and D and x lie on the same side of it.  The digits after the point
 ** go out sixteen at a time (sixteen_digits), left-aligned, the bytes past
 ** D's end to be overwritten (buf has PT_NUMLEN bytes).  Returns 0 for the
 ** other forms, which g_style() spells. */
@@ -618,12 +618,15 @@ static size_t fixed_form(char *buf, double x, uint64_t d, int e)
     if (ax >= 1 && ax < 1e15) {             /* ddd.ddd, ip = floor(D) */
         uint64_t ip = (uint64_t)ax;         /* d = ip 10^f + frac, f <= 16 */
         size_t n = pt_fmt_u64(o, ip);
+        assert(f >= 1 && f <= 16);
         o[n] = '.';
         sixteen_digits(o + n + 1, (d - ip * pow10_tab[f]) * pow10_tab[16 - f]);
         o += n + 1 + f;
     } else if (ax < 1 && ax >= 1e-4) {      /* 0.[z zeros]ddd, d of f - z digits */
         int z = (ax < 0.1) + (ax < 0.01) + (ax < 0.001);
-        uint64_t dl = d * pow10_tab[17 - (f - z)];      /* 17 digits, 1 to 9 first */
+        uint64_t dl;
+        assert(f - z >= 1 && f - z <= 17);
+        dl = d * pow10_tab[17 - (f - z)];   /* 17 digits, 1 to 9 first */
         memcpy(o, "0.000000", 8);
         o[2 + z] = (char)('0' + dl / UINT64_C(10000000000000000));
         sixteen_digits(o + 3 + z, dl % UINT64_C(10000000000000000));
