@@ -28,7 +28,7 @@ CFLAGS  ?= -O2 -g
 DEBUGFMT = -gdwarf-4
 # Includes name their layer: "stages/pt_stage.h", "core/pipetrace.h", "io/trace.h".
 ALLCFLAGS = -std=c11 $(WARN) $(FPFLAGS) -I. -Isrc $(DEBUGFMT) $(CFLAGS)
-LDLIBS  = -lm
+LDLIBS  = -lm -pthread
 B       = build
 
 # ===== student stages (docs/teaching.md) =====
@@ -104,7 +104,7 @@ CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjo
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
            $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o $B/png.o $B/outfile.o \
-           $B/trace_kraft.o
+           $B/trace_kraft.o $B/tlanes.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff
 # and step), the subcommands (diff, accuracy and journey in folders of their
 # own; diff's parts listed with the commands).
@@ -119,7 +119,7 @@ TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
            $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm \
-           $B/test_numfmt_portable $B/test_trace
+           $B/test_numfmt_portable $B/test_trace $B/test_lanes
 
 all: $B/pipetrace
 

@@ -39,6 +39,7 @@ catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
 tread       2 $B/test_tread
 trace       1 $B/test_trace
+lanes       2 sh tests/lanes.sh $B
 explain     1 $B/test_explain
 png         1 $B/test_png
 layers      1 sh tests/layers.sh

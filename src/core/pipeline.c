@@ -33,6 +33,9 @@ void pt_options_default(pt_options *o)
     o->stage_mask = (1u << PT_NSTAGES_ALL) - 1;
     o->trace_raster = 1;
     o->rasterize = 1;
+    o->piece_vertices = PT_PIECE_VERTICES;
+    o->piece_segments = PT_PIECE_SEGMENTS;
+    o->piece_pixels = PT_PIECE_PIXELS;
 }
 
 /* ===== plan ===== */
@@ -147,6 +150,9 @@ void pt_plan_free(pt_plan *p)
 
 /* ===== run the stages ===== */
 
+/* The sinks of a vertex that reports to nobody and is counted by nobody. */
+static const pt_sink *const no_sinks[PT_NSTAGES_ALL];
+
 /* A sink in front of the listener's: counts warnings, forwards when traced. */
 typedef struct counting_sink {
     pt_summary *sum;
@@ -259,12 +265,67 @@ typedef struct vtx_clip {
     unsigned code;               /* CVV outcode */
 } vtx_clip;
 
+/* The pieces of the trace (pt_listener.piece): the one records go to now,
+** and how much is in it so far.  Without l->piece, one piece, always taken. */
+typedef struct pieces {
+    const pt_listener *l;
+    uint64_t max_vertices, max_segments, max_pixels;    /* pt_options.piece_* */
+    uint64_t n;                  /* the piece the records go to */
+    uint64_t vertices, segments, pixels;    /* in it so far */
+    int segment_cuts;            /* 1: segments are cut (their records come here) */
+    int taken;                   /* 1: its records come to l */
+} pieces;
+
+static void pieces_start(pieces *pc, const pt_scene *s, const pt_options *o,
+                         const pt_listener *l)
+{
+    memset(pc, 0, sizeof *pc);
+    pc->l = l;
+    pc->max_vertices = o->piece_vertices ? o->piece_vertices : 1;
+    pc->max_segments = o->piece_segments ? o->piece_segments : 1;
+    pc->max_pixels = o->piece_pixels ? o->piece_pixels : 1;
+    pc->segment_cuts = l->pixels || l->clip || l->skip || s->matrix;
+    pc->taken = l->piece ? l->piece(l->ud, 0, 0) : 1;
+}
+
+/* Begin the next piece; the last is the summary's. */
+static void piece_next(pieces *pc, int last)
+{
+    pc->n++;
+    pc->vertices = pc->segments = pc->pixels = 0;
+    pc->taken = pc->l->piece(pc->l->ud, pc->n, last);
+}
+
+/* Count in the next vertex; returns 1 when its piece is taken. */
+static int piece_vertex(pieces *pc)
+{
+    if (!pc->l->piece) return 1;
+    if (pc->vertices >= pc->max_vertices) piece_next(pc, 0);
+    pc->vertices++;
+    return pc->taken;
+}
+
+/* The same for the next segment, a to b in the pixel plane of scene s. */
+static int piece_segment(pieces *pc, const pt_scene *s, pt_vec2 a, pt_vec2 b)
+{
+    double steps = fmax(fabs(b.x - a.x), fabs(b.y - a.y)), most = (double)s->vp_w + s->vp_h;
+
+    if (!pc->l->piece || !pc->segment_cuts) return 1;
+    if (pc->segments >= pc->max_segments || pc->pixels >= pc->max_pixels)
+        piece_next(pc, 0);
+    pc->segments++;
+    pc->pixels += 1 + (uint64_t)(steps < most ? steps : most);  /* NaN: most */
+    return pc->taken;
+}
+
 /* Run every vertex of model k that needs it; fill pp[] (and cl[] when not
 ** NULL) for the rasterizer.  fl: room for a journey (used when the listener
-** wants journeys). */
+** wants journeys).  The vertices of pieces not taken are counted into the
+** summary when there is one, else they run with no record. */
 static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
                       const pt_listener *l, size_t k, const model_sinks *ms,
-                      pt_vec2 *pp, vtx_clip *cl, filing *fl, pt_summary *sum)
+                      pt_vec2 *pp, vtx_clip *cl, filing *fl, pt_summary *sum,
+                      pieces *pc)
 {
     const pt_model *m = &s->models[k];
     const pt_model_plan *mp = &p->models[k];
@@ -274,16 +335,18 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
     pt_stage_params_of(&par, s, m);
     for (j = 0; j < m->nv; j++) {
         int traced = mp->selected && (!o->vertex || o->vertex == j + 1);
-        const pt_sink *const *sinks = traced ? ms->traced : ms->quiet;
+        int taken = piece_vertex(pc), report = taken && traced;
+        const pt_sink *const *sinks = report ? ms->traced
+                                    : taken || l->summary ? ms->quiet : no_sinks;
         int behind;
-        filing *f = traced && l->journey ? fl : NULL;
+        filing *f = report && l->journey ? fl : NULL;
         pt_vec2 pp_v;                       /* the pixel-plane point */
         pt_vec4 clip = {0, 0, 0, 0};        /* matrix camera: clip coordinates */
         unsigned code = 0;                  /* and the CVV outcode */
 
         if (!traced && !o->rasterize) continue;
         if (!mp->used[j] && !(traced && o->every_vertex)) continue;
-        if (traced && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
+        if (report && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
         if (f) {
             filing_start(f, s, p, k, sum);
             sinks = f->sinks;
@@ -455,24 +518,27 @@ static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *
 ** (and clip coordinates cl[], matrix camera). */
 static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt_options *o,
                        const pt_listener *l, size_t k, const model_sinks *ms, filing *fl,
-                       pt_summary *sum, const pt_vec2 *pp, const vtx_clip *cl)
+                       pt_summary *sum, const pt_vec2 *pp, const vtx_clip *cl,
+                       pieces *pc)
 {
     const pt_model *m = &s->models[k];
-    int traced = p->models[k].selected && !o->vertex;  /* its clip vertices */
-    int report = o->trace_raster && traced;             /* its raster records */
-    int draw;
+    int selected = p->models[k].selected && !o->vertex;
     size_t j;
 
     d->rc.m = m;
-    d->rc.l = report ? l : NULL;
-    d->im.pixel = d->rc.l && d->rc.l->pixels ? on_drawn : NULL;
-    draw = !s->matrix && (d->im.fb || d->im.pixel);
     d->im.color = m->color;
     for (j = 0; j < m->nseg; j++) {
         pt_vec2 a = pp[m->seg[j].a], b = pp[m->seg[j].b];
-        int r;
+        int taken = piece_segment(pc, s, a, b);
+        int traced = taken && selected;                 /* its clip vertices */
+        int report = traced && o->trace_raster;         /* its raster records */
+        int draw, r;
 
+        if (!taken && !d->im.fb && !l->summary) continue;   /* nothing to do */
         d->rc.seg = j + 1;
+        d->rc.l = report ? l : NULL;
+        d->im.pixel = report && l->pixels ? on_drawn : NULL;
+        draw = !s->matrix && (d->im.fb || d->im.pixel);
         if (s->matrix && !matrix_segment(s, p, k, j + 1, &cl[m->seg[j].a], &cl[m->seg[j].b],
                                          traced ? l : NULL, ms, fl, sum, &a, &b)) {
             sum->segments_culled++;
@@ -500,6 +566,7 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     model_sinks *ms;             /* ms[k]: model k's sinks */
     filing fl;                   /* a traced point's journey (l->journey) */
     drawing d;
+    pieces pc;
     int status = 0, raster, in_turn;
 
     /* Rasterize for an image, for a listener of pixel, clip, skip or summary
@@ -528,7 +595,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
         if (s->matrix) cls[0] = malloc(maxnv * sizeof **cls);
         if (!pps[0] || (s->matrix && !cls[0])) { status = -1; goto done; }
     }
-    if (l->header) l->header(l->ud, s, p);
+    pieces_start(&pc, s, o, l);
+    if (l->header && pc.taken) l->header(l->ud, s, p);
     if (raster) drawing_start(&d, s, fb, sum);
 
     for (k = 0; k < s->nmodels; k++) {      /* run the stages */
@@ -544,14 +612,15 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
             if (s->matrix) cls[k] = malloc((m->nv ? m->nv : 1) * sizeof **cls);
             if (!pps[k] || (s->matrix && !cls[k])) { status = -1; goto done; }
         }
-        run_model(s, p, o, l, k, &ms[k], pps[b], cls[b], &fl, sum);
-        if (in_turn) draw_model(&d, s, p, o, l, k, &ms[k], &fl, sum, pps[0], cls[0]);
+        run_model(s, p, o, l, k, &ms[k], pps[b], cls[b], &fl, sum, &pc);
+        if (in_turn) draw_model(&d, s, p, o, l, k, &ms[k], &fl, sum, pps[0], cls[0], &pc);
     }
     if (raster && !in_turn)                 /* every model's vertices ran: draw */
         for (k = 0; k < s->nmodels; k++)
-            draw_model(&d, s, p, o, l, k, &ms[k], &fl, sum, pps[k], cls[k]);
+            draw_model(&d, s, p, o, l, k, &ms[k], &fl, sum, pps[k], cls[k], &pc);
     if (raster) sum->pixels += d.im.pixels; /* those pt_raster_draw() drew */
-    if (l->summary) l->summary(l->ud, sum);
+    if (l->piece) piece_next(&pc, 1);
+    if (l->summary && pc.taken) l->summary(l->ud, sum);
 done:
     for (k = 0; k < n; k++) { free(pps[k]); free(cls[k]); }
     free(pps);

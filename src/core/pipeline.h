@@ -43,6 +43,9 @@ typedef struct pt_options {
     int raw_lookat;              /* 1: the seed's look-at matrix, up not re-derived */
     int every_vertex;            /* 1: trace the vertices no segment uses too (where
                                  ** they would land: step, quiz, why) */
+    uint64_t piece_vertices;     /* where a listener's pieces are cut (pt_listener */
+    uint64_t piece_segments;     /*   .piece): PT_PIECE_VERTICES etc. by default; */
+    uint64_t piece_pixels;       /*   smaller in the tests, for many cuts (>= 1) */
 } pt_options;
 
 /* Why a stage is left out of a model's trace. */
@@ -124,8 +127,31 @@ typedef struct pt_listener {
     void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */
                  uint64_t v, const char *why);      /* v: the endpoint at fault, 0: none */
     void (*summary)(void *ud, const pt_summary *sum);
+    int (*piece)(void *ud, uint64_t n, int last);
+                          /* NULL: every record comes to this listener.  Else
+                          ** pt_run cuts the records into pieces, in the order
+                          ** they come (PT_PIECE_*, below), and asks at the
+                          ** start of each (n = 0, 1, ...; last = 1 for the
+                          ** summary's, after the raster records) whether its
+                          ** records come here: 1 when they do.  Where the cuts
+                          ** fall depends on the scene and on which callbacks
+                          ** are set, never on the answers, so that runs with
+                          ** the same callbacks cut alike and can share a trace */
     void *ud;
 } pt_listener;
+
+/* Where pt_run cuts a trace into pieces (pt_listener.piece), by default
+** (pt_options.piece_*): after every PT_PIECE_VERTICES vertices of the scene
+** (used or not, traced or not), and among the segments, when their records
+** can come (a listener of pixels, clipped steps or skips, or the matrix
+** camera's clipping), once a piece's segments number PT_PIECE_SEGMENTS or
+** would draw PT_PIECE_PIXELS pixels or more (a segment as many as its longer
+** side in the pixel plane, at most the viewport's width plus height, plus
+** one); the summary is a piece of its own.  A vertex piece is some 250 KB of
+** JSON Lines; a segment piece, up to some 600 KB. */
+#define PT_PIECE_VERTICES 1024
+#define PT_PIECE_SEGMENTS 1024
+#define PT_PIECE_PIXELS   8192
 
 /* Fill *par with the numbers of scene s that the classic stages use for its
 ** model m.  This function can't fail. */
@@ -146,7 +172,10 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o);
 void pt_plan_free(pt_plan *p);
 
 /* Run the scene through the plan, drawing into fb when fb is not NULL and
-** o->rasterize is set.  Fills *sum.  Returns 0, or -1 when out of memory. */
+** o->rasterize is set.  Fills *sum.  Returns 0, or -1 when out of memory.
+** With l->piece, the pieces not taken still run what the rest needs: every
+** vertex, and every segment when there is fb or l->summary; *sum is the
+** scene's when l->summary is set, else it may count the pieces taken only. */
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
            const pt_listener *l, pt_fb *fb, pt_summary *sum);
 

@@ -37,6 +37,8 @@
 #include <assert.h>
 #include <float.h>
 #include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -271,16 +273,19 @@ static int exact_scaled(uint64_t n, int e, int k, uint64_t *hi, uint64_t *lo)
 **     g = ceil(10^-k 2^-beta) = ceil(5^-k 2^(-k-beta)),
 ** exact when -k-beta >= 0 and 5^-k < 2^127, that is for -54 <= k <= 0. */
 typedef struct tenpow {
-    uint64_t hi, lo;             /* g = hi * 2^64 + lo; hi = 0: not made yet */
+    uint64_t hi, lo;             /* g = hi * 2^64 + lo */
     int beta;                    /* the binary exponent */
     int exact;                   /* g equals 10^-k * 2^-beta */
 } tenpow;
 
-/* Made one by one as they are needed, like png.c's CRC table: pipetrace has
-** one thread.  Each costs a few microseconds of big-integer work, once. */
+/* Made one by one as they are needed, each with a few microseconds of
+** big-integer work, once.  Two threads may ask at once (tlanes.c): an entry is
+** read once its `made` says it is whole, and one thread at a time makes. */
 static tenpow tenpow_tab[K_MAX - K_MIN + 1];
+static atomic_uchar tenpow_made[K_MAX - K_MIN + 1];
+static pthread_mutex_t tenpow_lock = PTHREAD_MUTEX_INITIALIZER;
 
-static const tenpow *tenpow_make(tenpow *p, int k)
+static void tenpow_make(tenpow *p, int k)
 {
     big t;
     uint32_t top;
@@ -299,15 +304,23 @@ static const tenpow *tenpow_make(tenpow *p, int k)
                      : -bits - 126;         /* 10^-k in (2^-bits, 2^(1-bits)) */
     p->exact = exact_scaled(1, -p->beta, k, &p->hi, &p->lo);
     if (!p->exact && ++p->lo == 0) p->hi++; /* round up: g = floor(..) + 1 */
-    return p;
 }
 
 static const tenpow *tenpow_of(int k)
 {
     tenpow *p = &tenpow_tab[k - K_MIN];
+    atomic_uchar *made = &tenpow_made[k - K_MIN];
 
     assert(k >= K_MIN && k <= K_MAX);
-    return p->hi ? p : tenpow_make(p, k);
+    if (!atomic_load_explicit(made, memory_order_acquire)) {
+        pthread_mutex_lock(&tenpow_lock);
+        if (!atomic_load_explicit(made, memory_order_relaxed)) {
+            tenpow_make(p, k);
+            atomic_store_explicit(made, 1, memory_order_release);
+        }
+        pthread_mutex_unlock(&tenpow_lock);
+    }
+    return p;
 }
 
 /* ===== shortest digits ===== */

@@ -24,16 +24,23 @@ static void write_failed(pt_trace *t)
 
 static void flush(pt_trace *t)
 {
+    if (t->out) {                           /* it takes the block (tlanes.c) */
+        t->out(t->out_ud, t);
+        return;
+    }
     if (t->len && fwrite(t->buf, 1, t->len, t->f) != t->len) write_failed(t);
     t->len = 0;
 }
 
 static void put(pt_trace *t, const char *s, size_t n)
 {
-    if (t->len + n > sizeof t->buf) flush(t);
-    if (n > sizeof t->buf) {                /* longer than a block: write as is */
-        if (fwrite(s, 1, n, t->f) != n) write_failed(t);
-        return;
+    if (t->len + n > PT_TRACE_BLOCK) {
+        flush(t);
+        for (; n > PT_TRACE_BLOCK; s += PT_TRACE_BLOCK, n -= PT_TRACE_BLOCK) {
+            memcpy(t->buf, s, PT_TRACE_BLOCK);  /* longer than a block: */
+            t->len = PT_TRACE_BLOCK;            /*   a block at a time */
+            flush(t);
+        }
     }
     if (n <= 8) {                           /* most pieces: a comma, a key, a digit */
         char *o = t->buf + t->len;
@@ -204,8 +211,8 @@ static void put_col(pt_trace *t, const char *s, size_t n, size_t width)
 ** run, instead of one per piece. */
 static char *room(pt_trace *t, size_t n)
 {
-    assert(n <= sizeof t->buf);
-    if (t->len + n > sizeof t->buf) flush(t);
+    assert(n <= PT_TRACE_BLOCK);
+    if (t->len + n > PT_TRACE_BLOCK) flush(t);
     return t->buf + t->len;
 }
 
@@ -1166,6 +1173,9 @@ void pt_trace_init(pt_trace *t, FILE *f, pt_format fmt, int precision)
     t->plan = NULL;
     t->failed = 0;
     t->len = 0;
+    t->buf = t->block;
+    t->out = NULL;
+    t->out_ud = NULL;
     t->pix_model = NULL;
     t->pix_seg = 0;
     t->pix_len = 0;
@@ -1195,6 +1205,7 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
     l->journey = t->explain ? on_journey : NULL;   /* no cost without --explain */
     l->skip = on_skip;
     l->summary = on_summary;
+    l->piece = NULL;
     if (t->fmt == PT_FORMAT_CSV) {          /* no raster rows, no summary: */
         l->pixels = NULL;                   /* nobody listens to the rasterizer */
         l->clip = NULL;

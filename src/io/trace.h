@@ -36,6 +36,9 @@
 
 #define PT_TRACE_VERSION 1
 #define PT_TRACE_NUMBITS 8       /* log2 of the doubles whose spelling is kept */
+#define PT_TRACE_BLOCK (1 << 18) /* output block: 256 KiB, one write(2) with an
+                                 ** unbuffered f (fewer system calls; a larger
+                                 ** block no longer stays in the cache) */
 
 typedef enum pt_format { PT_FORMAT_TEXT, PT_FORMAT_JSONL, PT_FORMAT_CSV,
                          PT_FORMAT_KRAFT,          /* the course's debug log, and */
@@ -60,16 +63,18 @@ typedef struct pt_trace {
     const char *student;         /* a student build's stage files ("pixel=FILE#CKSUM
                                  ** ..."), written into the header; NULL or "" in
                                  ** the reference build.  Set after init */
-    const pt_scene *scene;       /* the scene and the plan, from the header */
-    const pt_plan *plan;         /*   (they outlive the run) */
+    const pt_scene *scene;       /* the scene and the plan, from the header (or */
+    const pt_plan *plan;         /*   set by hand: tlanes.c); they outlive the run */
     pt_journey journey;          /* with explain: the point's whole journey, */
     int journey_made;            /*   as pt_run() handed it over */
     int failed;                  /* after a write error: its errno value (EIO
                                  ** when none was set), else 0 */
     size_t len;                  /* bytes waiting in buf */
-    char buf[1 << 18];           /* output block: 256 KiB, one write(2) with an
-                                 ** unbuffered f (fewer system calls; a larger
-                                 ** block no longer stays in the cache) */
+    char *buf;                   /* the output block (PT_TRACE_BLOCK bytes): block */
+    void (*out)(void *ud, struct pt_trace *t);  /* NULL: a full block goes to f;
+                                 ** else out takes buf[0..len), points buf at a
+                                 ** block (this one or another) and sets len 0 */
+    void *out_ud;                /* passed back to out */
     const pt_model *pix_model;   /* the segment whose pixels are being written */
     uint64_t pix_seg;            /*   (trace.c: pixel_prefix) */
     size_t pix_len;              /* how their records begin: pix[0..pix_len), */
@@ -91,6 +96,7 @@ typedef struct pt_trace {
         unsigned char len;       /*   (trace.c: short_at) */
         char s[PT_SHORTLEN];
     } nums[1 << PT_TRACE_NUMBITS];
+    char block[PT_TRACE_BLOCK];  /* buf's, unless out has put another there */
 } pt_trace;
 
 /* Prepare t to write fmt to f.  This function can't fail. */

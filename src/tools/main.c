@@ -7,6 +7,7 @@
 */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE          /* sbrk, madvise: heap_in_huge_pages() */
+#define _GNU_SOURCE              /* sched_getaffinity: threads_wanted() */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +15,7 @@
 #include <unistd.h>
 #if defined(__linux__) && defined(__GLIBC__)
 #include <malloc.h>
+#include <sched.h>
 #include <sys/mman.h>
 #endif
 #include "tools/cli.h"
@@ -22,6 +24,7 @@
 #include "core/pipetrace.h"
 #include "io/png.h"
 #include "io/trace.h"
+#include "io/tlanes.h"
 #include "io/trace_kraft.h"
 
 #define PT_VERSION "0.1.0"
@@ -64,6 +67,8 @@ static const char usage[] =
 "                    seed's matrix) instead of making it perpendicular\n"
 "  --explain         under each vertex record, its formula with the numbers put in\n"
 "  --precision N     digits after the point in the text format (0-17, default 6)\n"
+"  --threads N       format the trace on N threads, 1 or 2 (default: 2 when\n"
+"                    there are two CPUs or more); the trace is the same\n"
 "  --help            show this help\n"
 "  --version         show the version\n"
 "\n"
@@ -93,6 +98,7 @@ typedef struct cli {
     int precision;
     int raster_chosen;           /* --stage raster given */
     int explain;                 /* --explain */
+    int threads;                 /* --threads, or 0: as many as CPUs, at most 2 */
     pt_options opt;
 } cli;
 
@@ -130,7 +136,7 @@ static int parse_args(cli *c, int argc, char **argv)
         int takes = !strcmp(a, "--image") || !strcmp(a, "--trace") ||
                     !strcmp(a, "--format") || !strcmp(a, "--vertex") ||
                     !strcmp(a, "--model") || !strcmp(a, "--stage") ||
-                    !strcmp(a, "--precision");
+                    !strcmp(a, "--precision") || !strcmp(a, "--threads");
 
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
         if (!strcmp(a, "--version")) {
@@ -160,6 +166,11 @@ static int parse_args(cli *c, int argc, char **argv)
             if (pt_cli_count(val, 0, 17, &p) != 0)
                 return usage_error("--precision takes 0 to 17, not '%s'", val);
             c->precision = (int)p;
+        } else if (!strcmp(a, "--threads")) {
+            uint64_t n;
+            if (pt_cli_count(val, 1, 2, &n) != 0)
+                return usage_error("--threads takes 1 or 2, not '%s'", val);
+            c->threads = (int)n;
         } else if (!strcmp(a, "--stage")) {
             int st = pt_stage_by_name(val);
             if (!staged) { c->opt.stage_mask = 0; staged = 1; }
@@ -235,6 +246,22 @@ static void heap_in_huge_pages(void)
 #endif
 }
 
+/* The threads the trace is formatted on (tlanes.h): --threads, else 2 when
+** this process may run on two CPUs or more (not under `taskset -c 1`). */
+static int threads_wanted(const cli *c)
+{
+    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+
+    if (c->threads) return c->threads;
+#if defined(__linux__) && defined(CPU_COUNT)
+    {
+        cpu_set_t set;
+        if (sched_getaffinity(0, sizeof set, &set) == 0) cpus = CPU_COUNT(&set);
+    }
+#endif
+    return cpus >= 2 ? 2 : 1;
+}
+
 int main(int argc, char **argv)
 {
     cli c;
@@ -293,7 +320,9 @@ int main(int argc, char **argv)
         snprintf(err, sizeof err, "pipetrace: out of memory");
         rc = 1;
     }
-    if (!rc && pt_run(&s, &plan, &c.opt, &l, c.image ? &fb : NULL, &sum) != 0) {
+    if (!rc && (tr && threads_wanted(&c) == 2
+                ? pt_tlanes_run(tr, &s, &plan, &c.opt, c.image ? &fb : NULL, &sum)
+                : pt_run(&s, &plan, &c.opt, &l, c.image ? &fb : NULL, &sum)) != 0) {
         snprintf(err, sizeof err, "pipetrace: out of memory");
         rc = 1;
     }
