@@ -226,9 +226,12 @@ static int check_filters(const cli *c, const pt_scene *s)
 ** them in pages of 4 KiB, most for the scene's arrays.  The heap grows
 ** 256 MiB (of address space) at a time, large arrays stay in it rather than
 ** in mappings of their own, and its top is marked for huge pages: the same
-** scene then takes some 570 faults, one of 3.2M vertices some 350.  Only
-** speed depends on it.  Where malloc is not glibc's heap (a sanitizer's,
-** valgrind's), the block is not below the break and nothing is marked. */
+** scene then takes some 570 faults, one of 3.2M vertices some 350.  The
+** trace's second thread (tlanes.c) allocates from this heap too, not from an
+** arena of its own in small pages (M_ARENA_MAX): it allocates little, and
+** only as its run begins.  Only speed depends on it.  Where malloc is not
+** glibc's heap (a sanitizer's, valgrind's), the block is not below the break
+** and nothing is marked. */
 static void heap_in_huge_pages(void)
 {
 #if defined(__linux__) && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
@@ -238,6 +241,7 @@ static void heap_in_huge_pages(void)
 
     mallopt(M_MMAP_THRESHOLD, (int)pad);
     mallopt(M_TOP_PAD, (int)pad);
+    mallopt(M_ARENA_MAX, 1);
     if (!(p = malloc(1))) return;           /* the heap now reaches sbrk(0) */
     lo = ((uintptr_t)p + huge - 1) & ~(huge - 1);
     hi = (uintptr_t)sbrk(0) & ~(huge - 1);
