@@ -8,8 +8,9 @@
 ** default size and with tiny ones (a cut after every vertex and every
 ** segment, or every few), so that the lanes take turns often and, each
 ** piece's text in a block of its own, run out of free blocks and wait for
-** each other.  Trace, image and summary must be the same (CSV has no
-** summary record: then pt_run counts what the command line needs).
+** each other; then each filter of the command line on its own.  Trace,
+** image and summary must be the same (CSV has no summary record: then
+** pt_run counts what the command line needs).
 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -87,6 +88,39 @@ static const uint64_t sizes[][3] = {
     {PT_PIECE_VERTICES, PT_PIECE_SEGMENTS, PT_PIECE_PIXELS}, {1, 1, 1}, {3, 2, 40},
 };
 
+/* The trace's filters, each on its own, in JSON Lines with tiny pieces and
+** an image: --vertex 2, --model (the last model), --stage raster alone,
+** --stage pixel (no raster records), --all-stages. */
+#define NFILTERS 5
+
+static void check_filtered(const pt_scene *s, const char *path, int filter)
+{
+    pt_options o;
+    result one, two;
+    char what[600];
+
+    pt_options_default(&o);
+    o.piece_vertices = 2;
+    o.piece_segments = 1;
+    o.piece_pixels = 16;
+    switch (filter) {
+    case 0: o.vertex = 2; break;
+    case 1: o.model = s->nmodels ? s->models[s->nmodels - 1].name : NULL; break;
+    case 2: o.stage_mask = 0; break;
+    case 3: o.stage_mask = 1u << PT_STAGE_PIXEL; o.trace_raster = 0; break;
+    default: o.all_stages = 1; break;
+    }
+    trace(&one, s, &o, PT_FORMAT_JSONL, 0, 0, 1);
+    trace(&two, s, &o, PT_FORMAT_JSONL, 0, 1, 1);
+    snprintf(what, sizeof what, "%s, jsonl, filter %d", path, filter);
+    PT_CHECK(what, one.rc == 0 && two.rc == 0 && one.text && two.text && one.len == two.len &&
+                   memcmp(one.text, two.text, one.len) == 0);
+    PT_CHECK(what, same_image(&one.fb, &two.fb));
+    PT_CHECK(what, memcmp(&one.sum, &two.sum, sizeof one.sum) == 0);
+    result_free(&one);
+    result_free(&two);
+}
+
 static void check_scene(const char *path)
 {
     static const struct { pt_format fmt; int explain; const char *name; } fmts[] = {
@@ -129,6 +163,7 @@ static void check_scene(const char *path)
                 result_free(&one);
                 result_free(&two);
             }
+    for (k = 0; k < NFILTERS; k++) check_filtered(&s, path, (int)k);
     pt_scene_free(&s);
 }
 
