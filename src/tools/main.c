@@ -67,8 +67,8 @@ static const char usage[] =
 "                    seed's matrix) instead of making it perpendicular\n"
 "  --explain         under each vertex record, its formula with the numbers put in\n"
 "  --precision N     digits after the point in the text format (0-17, default 6)\n"
-"  --threads N       format the trace on N threads, 1 or 2 (default: 2 when\n"
-"                    there are two CPUs or more); the trace is the same\n"
+"  --threads N       format the trace on N threads, 1 or 2 (default: 2 for a\n"
+"                    large scene with two CPUs or more); the trace is the same\n"
 "  --help            show this help\n"
 "  --version         show the version\n"
 "\n"
@@ -251,12 +251,18 @@ static void heap_in_huge_pages(void)
 }
 
 /* The threads the trace is formatted on (tlanes.h): --threads, else 2 when
-** this process may run on two CPUs or more (not under `taskset -c 1`). */
-static int threads_wanted(const cli *c)
+** this process may run on two CPUs or more (not under `taskset -c 1`) and
+** scene s has more vertices than one piece of the trace holds (a smaller
+** one's trace is a piece or two: a second thread would only wait). */
+static int threads_wanted(const cli *c, const pt_scene *s)
 {
     long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+    uint64_t nv = 0;
+    size_t k;
 
     if (c->threads) return c->threads;
+    for (k = 0; k < s->nmodels; k++) nv += s->models[k].nv;
+    if (nv <= PT_PIECE_VERTICES) return 1;
 #if defined(__linux__) && defined(CPU_COUNT)
     {
         cpu_set_t set;
@@ -324,7 +330,7 @@ int main(int argc, char **argv)
         snprintf(err, sizeof err, "pipetrace: out of memory");
         rc = 1;
     }
-    if (!rc && (tr && threads_wanted(&c) == 2
+    if (!rc && (tr && threads_wanted(&c, &s) == 2
                 ? pt_tlanes_run(tr, &s, &plan, &c.opt, c.image ? &fb : NULL, &sum)
                 : pt_run(&s, &plan, &c.opt, &l, c.image ? &fb : NULL, &sum)) != 0) {
         snprintf(err, sizeof err, "pipetrace: out of memory");
