@@ -65,4 +65,19 @@ vg "vg-22 the list of shapes" 0 shapes
 vg "vg-23 export java" 0 export java docs/examples/shapes/mixed.scene -o "$tmp/Mixed.java" --pixels
 vg "vg-24 diff: every mistake tested on every vertex, the verdict" 1 diff --verdict \
     tests/data/diff/selfcheck.jsonl tests/data/diff/selfcheck-trunc.jsonl
+# A scene of 2,400 vertices on two threads (tests/benchgen.c: a few pieces each
+# way); helgrind too, for races between them and locks out of order.
+b=${exe%/*}/benchgen
+if [ -x "$b" ]; then
+    "$b" 300 > "$tmp/b300.scene"
+    vg "vg-25 the trace on two threads, JSONL, image" 0 "$tmp/b300.scene" --format jsonl \
+        --threads 2 --image "$tmp/b300.ppm"
+    valgrind -q --tool=helgrind --error-exitcode=99 "$exe" "$tmp/b300.scene" --format jsonl \
+        --threads 2 --trace /dev/null </dev/null >/dev/null 2>"$tmp/err"
+    rc=$?
+    check "vg-26 helgrind: the two threads race for nothing (exit $rc)" test "$rc" = 0
+    grep -q '^==' "$tmp/err" && sed -n '1,12p' "$tmp/err"
+else
+    echo "  skipped: no $b to make a scene of several pieces"
+fi
 report
