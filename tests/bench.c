@@ -135,30 +135,22 @@ static double spawn(char *const argv[], const char *out, long *maxrss, double *b
 }
 
 /* The least CPU time of RUNS runs of each of the n programs argvs[i], output
-** to /dev/null, into t[i].  The runs take turns (one of each, RUNS times):
-** a machine that slows down for a while then slows them all alike, and
-** their ratios hold where times taken one program after another drift. */
-static void spawn_rounds(char *const *const argvs[], int n, double t[])
+** to /dev/null, into cpu[i]; or, with w not NULL, the least wall time into
+** w[i] and the CPU time of that run into cpu[i].  The runs take turns (one
+** of each, RUNS times): a machine that slows down for a while then slows
+** them all alike, and their ratios hold where times taken one program after
+** another drift. */
+static void spawn_rounds(char *const *const argvs[], int n, double cpu[], double w[])
 {
     int k, i;
 
     for (k = 0; k < RUNS; k++)
         for (i = 0; i < n; i++) {
             double u = spawn(argvs[i], "/dev/null", NULL, NULL);
-            if (k == 0 || u < t[i]) t[i] = u;
-        }
-}
-
-/* The least wall time of RUNS runs of each of the n programs argvs[i], in
-** turns as spawn_rounds(), into w[i], and the CPU time of that run into c[i]. */
-static void spawn_rounds_wall(char *const *const argvs[], int n, double w[], double c[])
-{
-    int k, i;
-
-    for (k = 0; k < RUNS; k++)
-        for (i = 0; i < n; i++) {
-            double u = spawn(argvs[i], "/dev/null", NULL, NULL);
-            if (k == 0 || wall < w[i]) { w[i] = wall; c[i] = u; }
+            if (k == 0 || (w ? wall < w[i] : u < cpu[i])) {
+                cpu[i] = u;
+                if (w) w[i] = wall;
+            }
         }
 }
 
@@ -401,7 +393,7 @@ int main(int argc, char **argv)
         all[1] = b;
         all[5] = vx;
         all[6] = rs;
-        spawn_rounds(all, 7, t);
+        spawn_rounds(all, 7, t, NULL);
         tproc = t[0];
         tbase = t[1];
         row("whole process, image only", tproc, tbase, "s", "<= 1.3x");
@@ -452,7 +444,7 @@ int main(int argc, char **argv)
         double w[3], c[3];
         long trss;
         int cpus = use_every_cpu(1);
-        spawn_rounds_wall(all, 3, w, c);
+        spawn_rounds(all, 3, c, w);
         spawn(m2, NULL, &trss, &bytes);
         use_every_cpu(0);
         printf("\nall %d CPUs: wall seconds, the least of %d (CPU seconds of that run)\n",

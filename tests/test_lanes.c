@@ -12,6 +12,7 @@
 ** image and summary must be the same (CSV has no summary record: then
 ** pt_run counts what the command line needs).
 */
+#define _POSIX_C_SOURCE 200809L       /* open_memstream */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,22 +20,6 @@
 #include "core/pipeline.h"
 #include "io/trace.h"
 #include "io/tlanes.h"
-
-/* The whole of f (rewound), NUL-terminated; *n its length. */
-static char *slurp(FILE *f, size_t *n)
-{
-    long len;
-    char *b;
-
-    fflush(f);
-    if (fseek(f, 0, SEEK_END) != 0 || (len = ftell(f)) < 0) return NULL;
-    rewind(f);
-    b = malloc((size_t)len + 1);
-    if (!b) return NULL;
-    *n = fread(b, 1, (size_t)len, f);
-    b[*n] = '\0';
-    return b;
-}
 
 typedef struct result {
     char *text;                  /* the trace */
@@ -51,11 +36,12 @@ static void trace(result *r, const pt_scene *s, const pt_options *o, pt_format f
 {
     pt_plan p;
     pt_trace *t = malloc(sizeof *t);
-    FILE *f = tmpfile();
     pt_listener l;
+    FILE *f;
 
     memset(r, 0, sizeof *r);
     r->rc = -1;
+    f = open_memstream(&r->text, &r->len);
     if (!t || !f || pt_plan_make(&p, s, o) != 0) { free(t); if (f) fclose(f); return; }
     if (image && pt_fb_init(&r->fb, s->fb_w, s->fb_h, s->background) != 0) r->fb.rgb = NULL;   /* no memory: compared as none */
     pt_trace_init(t, f, fmt, 6);
@@ -64,8 +50,7 @@ static void trace(result *r, const pt_scene *s, const pt_options *o, pt_format f
     r->rc = two ? pt_tlanes_run(t, s, &p, o, r->fb.rgb ? &r->fb : NULL, &r->sum)
                 : pt_run(s, &p, o, &l, r->fb.rgb ? &r->fb : NULL, &r->sum);
     if (pt_trace_finish(t) != 0) r->rc = -2;
-    r->text = slurp(f, &r->len);
-    fclose(f);
+    fclose(f);                              /* r->text, r->len: the trace */
     free(t);
     pt_plan_free(&p);
 }

@@ -308,9 +308,11 @@ static int piece_vertex(pieces *pc)
 /* The same for the next segment, a to b in the pixel plane of scene s. */
 static int piece_segment(pieces *pc, const pt_scene *s, pt_vec2 a, pt_vec2 b)
 {
-    double steps = fmax(fabs(b.x - a.x), fabs(b.y - a.y)), most = (double)s->vp_w + s->vp_h;
+    double steps, most;
 
     if (!pc->l->piece || !pc->segment_cuts) return 1;
+    steps = fmax(fabs(b.x - a.x), fabs(b.y - a.y));
+    most = (double)s->vp_w + s->vp_h;
     if (pc->segments >= pc->max_segments || pc->pixels >= pc->max_pixels)
         piece_next(pc, 0);
     pc->segments++;
