@@ -98,7 +98,7 @@ typedef struct cli {
     int precision;
     int raster_chosen;           /* --stage raster given */
     int explain;                 /* --explain */
-    int threads;                 /* --threads, or 0: as many as CPUs, at most 2 */
+    int threads;                 /* --threads, or 0: threads_wanted() decides */
     pt_options opt;
 } cli;
 
