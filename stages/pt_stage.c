@@ -69,18 +69,18 @@ const pt_stage_info pt_matrix_viewport_info = {
     0, 2, {"x_vp", "y_vp", NULL, NULL}, {"x", "y", NULL, NULL},
 };
 
-const pt_stage pt_classic_order[] = {
+const pt_stage pt_classic_order[PT_CLASSIC_NORDER] = {
     PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE, PT_STAGE_PIXEL,
     PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER, PT_STAGE_INDEX,
 };
-const int pt_classic_norder = sizeof pt_classic_order / sizeof pt_classic_order[0];
+const int pt_classic_norder = PT_CLASSIC_NORDER;
 
-const pt_stage pt_matrix_order[] = {
+const pt_stage pt_matrix_order[PT_MATRIX_NORDER] = {
     PT_STAGE_MODEL, PT_STAGE_WORLD, PT_STAGE_VIEW, PT_STAGE_CLIP, PT_STAGE_CVV,
     PT_STAGE_NDC, PT_STAGE_SCREEN, PT_STAGE_VIEWPORT, PT_STAGE_FRAMEBUFFER,
     PT_STAGE_INDEX,
 };
-const int pt_matrix_norder = sizeof pt_matrix_order / sizeof pt_matrix_order[0];
+const int pt_matrix_norder = PT_MATRIX_NORDER;
 
 const pt_stage pt_trace_order[PT_NSTAGES_ALL] = {
     PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE, PT_STAGE_PIXEL,  /* classic */

@@ -166,9 +166,11 @@ extern const pt_stage_info pt_stage_infos[PT_NSTAGES_ALL];
 extern const pt_stage_info pt_matrix_viewport_info;
 
 /* The stages of each camera in pipeline order, and how many. */
-extern const pt_stage pt_classic_order[];
+#define PT_CLASSIC_NORDER 7
+#define PT_MATRIX_NORDER 10
+extern const pt_stage pt_classic_order[PT_CLASSIC_NORDER];
 extern const int pt_classic_norder;
-extern const pt_stage pt_matrix_order[];
+extern const pt_stage pt_matrix_order[PT_MATRIX_NORDER];
 extern const int pt_matrix_norder;
 
 /* Every stage once, in the order a trace lists them: the classic camera's up

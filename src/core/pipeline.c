@@ -27,6 +27,138 @@ void pt_stage_params_of(pt_stage_params *par, const pt_scene *s, const pt_model 
     par->H = s->fb_h;
 }
 
+/* ===== the pipelines (core/pipelines.h) ===== */
+
+static void classic_in(pt_pipe_in *in, const pt_scene *s, const pt_plan *p, size_t k)
+{
+    (void)p;
+    pt_stage_params_of(&in->par, s, &s->models[k]);
+    in->mx.world = in->mx.view = in->mx.proj = NULL;
+}
+
+static void classic_vertex(const pt_pipe_in *in, pt_vec3 v_m,
+                           const pt_sink *const sinks[PT_NSTAGES_ALL], pt_vtx *out)
+{
+    double z_c;
+
+    out->pp = pt_classic_journey(&in->par, v_m, sinks, &z_c);
+    out->behind = in->par.perspective && z_c > 0;
+    out->code = 0;
+    out->norder = PT_CLASSIC_NORDER;
+}
+
+/* The matrix camera's View and Projection, and each model's World: its
+** `world` lines, then its translate.  The parser has already checked that the
+** camera can be built. */
+static void matrix_plan(pt_plan *p, const pt_scene *s, int raw_lookat)
+{
+    size_t k;
+    int skewed = 0;
+
+    pt_lookat(&p->view, s->eye, s->dir, s->up, raw_lookat, &skewed);
+    pt_perspective(&p->proj, s->fov, s->aspect, s->znear, s->zfar);
+    p->up_skewed = skewed;
+    p->up_adjusted = skewed && !raw_lookat;
+    for (k = 0; k < s->nmodels; k++) {
+        p->models[k].world = pt_matrix_world(&s->models[k].world, s->models[k].translate);
+    }
+}
+
+static void matrix_in(pt_pipe_in *in, const pt_scene *s, const pt_plan *p, size_t k)
+{
+    pt_stage_params_of(&in->par, s, &s->models[k]);
+    pt_matrices_of(&in->mx, p, k);
+}
+
+static void matrix_vertex(const pt_pipe_in *in, pt_vec3 v_m,
+                          const pt_sink *const sinks[PT_NSTAGES_ALL], pt_vtx *out)
+{
+    out->pp = pt_matrix_journey(&in->par, &in->mx, v_m, sinks, &out->h, &out->code);
+    out->behind = out->h.w < 0;
+    out->norder = pt_pipeline_norder(&pt_pipe_matrix, out->code);
+}
+
+/* The segment stage of the matrix camera: a segment with an end outside the
+** view volume is clipped in clip space (core/clip.h). */
+static pt_cut matrix_cut(const pt_vtx *a, const pt_vtx *b, pt_made made[2], int moved[2])
+{
+    double t[2];
+    pt_vec4 q[2];
+    int e;
+
+    if ((a->code | b->code) == 0) return PT_CUT_KEEP;       /* all inside */
+    if (!pt_clip_segment(a->h, b->h, &t[0], &t[1], &q[0], &q[1])) return PT_CUT_DROP;
+    moved[0] = a->code != 0;
+    moved[1] = b->code != 0;
+    for (e = 0; e < 2; e++) {
+        made[e].stage = PT_STAGE_CVV;
+        made[e].end = e;
+        made[e].t = t[e];
+        made[e].q = q[e];
+    }
+    return PT_CUT_NEW;
+}
+
+/* A point clipping made lies in the view volume: its journey starts with its
+** clip coordinates, at the clip and cvv stages (outcode 0: on a plane at
+** most). */
+static int matrix_seed(const pt_made *mp, pt_vrec rec[2])
+{
+    memset(rec, 0, 2 * sizeof *rec);
+    rec[0].stage = PT_STAGE_CLIP;
+    rec[0].x = mp->q.x; rec[0].y = mp->q.y; rec[0].z = mp->q.z; rec[0].w = mp->q.w;
+    rec[1] = rec[0];
+    rec[1].stage = PT_STAGE_CVV;
+    return 2;
+}
+
+static void matrix_made(const pt_pipe_in *in, const pt_made *mp,
+                        const pt_sink *const sinks[PT_NSTAGES_ALL], pt_vtx *out)
+{
+    out->pp = pt_matrix_tail(&in->par, mp->q, fabs(mp->q.w), sinks);
+    out->h = mp->q;
+    out->code = 0;
+    out->behind = 0;
+    out->norder = PT_MATRIX_NORDER;
+}
+
+static const pt_segstage matrix_segstages[] = {
+    { PT_STAGE_CVV, "clip the segment to the canonical view volume, in clip space",
+      "outside the view volume", matrix_cut },
+};
+
+const pt_pipeline pt_pipe_classic = {
+    PT_PIPE_CLASSIC, "classic", NULL, pt_classic_order, PT_CLASSIC_NORDER,
+    PT_STAGE_INDEX, &pt_stage_infos[PT_STAGE_VIEWPORT],
+    NULL, classic_in, classic_vertex, NULL, 0, NULL, NULL,
+    pt_pixel2viewport, 1,
+};
+
+const pt_pipeline pt_pipe_matrix = {
+    PT_PIPE_MATRIX, "matrix", "lookat", pt_matrix_order, PT_MATRIX_NORDER,
+    PT_STAGE_CVV, &pt_matrix_viewport_info,
+    matrix_plan, matrix_in, matrix_vertex,
+    matrix_segstages, (int)(sizeof matrix_segstages / sizeof matrix_segstages[0]),
+    matrix_seed, matrix_made,
+    pt_pixelplane2viewport, 0,
+};
+
+const pt_pipeline *const pt_pipelines[PT_NPIPES] = { &pt_pipe_classic, &pt_pipe_matrix };
+
+const pt_pipeline *pt_scene_pipeline(const pt_scene *s)
+{
+    return pt_pipelines[s->pipe];
+}
+
+const pt_pipeline *pt_pipeline_by_name(const char *name)
+{
+    int k;
+
+    for (k = 0; k < PT_NPIPES; k++)
+        if (strcmp(pt_pipelines[k]->name, name) == 0) return pt_pipelines[k];
+    return NULL;
+}
+
 void pt_options_default(pt_options *o)
 {
     memset(o, 0, sizeof *o);
@@ -72,23 +204,6 @@ static const char *identity_why(const pt_scene *s, const pt_plan *p, size_t k, i
     return NULL;
 }
 
-/* The matrix camera's View and Projection, and each model's World: its
-** `world` lines, then its translate.  The parser has already checked that the
-** camera can be built. */
-static void matrix_plan(pt_plan *p, const pt_scene *s, const pt_options *o)
-{
-    size_t k;
-    int skewed = 0;
-
-    pt_lookat(&p->view, s->eye, s->dir, s->up, o->raw_lookat, &skewed);
-    pt_perspective(&p->proj, s->fov, s->aspect, s->znear, s->zfar);
-    p->up_skewed = skewed;
-    p->up_adjusted = skewed && !o->raw_lookat;
-    for (k = 0; k < s->nmodels; k++) {
-        p->models[k].world = pt_matrix_world(&s->models[k].world, s->models[k].translate);
-    }
-}
-
 void pt_matrices_of(pt_matrices *mx, const pt_plan *p, size_t k)
 {
     mx->world = &p->models[k].world;
@@ -105,9 +220,10 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
     p->nmodels = s->nmodels;
     p->models = calloc(s->nmodels ? s->nmodels : 1, sizeof *p->models);
     if (!p->models) return -1;
-    p->order = s->matrix ? pt_matrix_order : pt_classic_order;
-    p->norder = s->matrix ? pt_matrix_norder : pt_classic_norder;
-    if (s->matrix) matrix_plan(p, s, o);
+    p->pipe = pt_scene_pipeline(s);
+    p->order = p->pipe->order;
+    p->norder = p->pipe->norder;
+    if (p->pipe->plan) p->pipe->plan(p, s, o->raw_lookat);
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
         pt_model_plan *mp = &p->models[k];
@@ -230,12 +346,11 @@ static void file_record(void *ud, const pt_vrec *r)
 static void filing_start(filing *f, const pt_scene *s, const pt_plan *p, size_t k,
                          pt_summary *sum)
 {
-    pt_stage_params par;
+    pt_pipe_in in;
     int st;
 
-    pt_stage_params_of(&par, s, &s->models[k]);
-    if (s->matrix) pt_journey_start(&f->j, &par, &p->models[k].world, &p->view, &p->proj);
-    else pt_journey_start(&f->j, &par, NULL, NULL, NULL);
+    p->pipe->model_in(&in, s, p, k);
+    pt_journey_start(&f->j, p->pipe, &in);
     f->sum = sum;
     f->ncame = 0;
     f->sink.vertex = file_record;
@@ -258,11 +373,12 @@ static void filing_end(filing *f, const pt_listener *l, const pt_model *m, uint6
 }
 
 /* What the rasterizer needs of a vertex: its pixel-plane point (pt_vec2,
-** for both cameras) and, for the matrix camera only, this.  Kept apart so
-** that the classic camera keeps 16 bytes a vertex, not 56 (peak memory). */
+** for every pipeline) and, for a pipeline with segment stages only, this.
+** Kept apart so that the classic camera keeps 16 bytes a vertex, not 56
+** (peak memory). */
 typedef struct vtx_clip {
-    pt_vec4 clip;                /* clip coordinates */
-    unsigned code;               /* CVV outcode */
+    pt_vec4 clip;                /* the coordinates segment stages cut in */
+    unsigned code;               /* the runner's code (matrix: CVV outcode) */
 } vtx_clip;
 
 /* The pieces of the trace (pt_listener.piece): the one records go to now,
@@ -284,7 +400,8 @@ static void pieces_start(pieces *pc, const pt_scene *s, const pt_options *o,
     pc->max_vertices = o->piece_vertices ? o->piece_vertices : 1;
     pc->max_segments = o->piece_segments ? o->piece_segments : 1;
     pc->max_pixels = o->piece_pixels ? o->piece_pixels : 1;
-    pc->segment_cuts = l->pixels || l->clip || l->skip || s->matrix;
+    pc->segment_cuts = l->pixels || l->clip || l->skip ||
+                       pt_scene_pipeline(s)->nsegstages > 0;
     pc->taken = l->piece ? l->piece(l->ud, 0, 0) : 1;
 }
 
@@ -331,20 +448,17 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
 {
     const pt_model *m = &s->models[k];
     const pt_model_plan *mp = &p->models[k];
-    pt_stage_params par;
+    pt_pipe_in in;
     size_t j;
 
-    pt_stage_params_of(&par, s, m);
+    p->pipe->model_in(&in, s, p, k);
     for (j = 0; j < m->nv; j++) {
         int traced = mp->selected && (!o->vertex || o->vertex == j + 1);
         int taken = piece_vertex(pc), report = taken && traced;
         const pt_sink *const *sinks = report ? ms->traced
                                     : taken || l->summary ? ms->quiet : no_sinks;
-        int behind;
         filing *f = report && l->journey ? fl : NULL;
-        pt_vec2 pp_v;                       /* the pixel-plane point */
-        pt_vec4 clip = {0, 0, 0, 0};        /* matrix camera: clip coordinates */
-        unsigned code = 0;                  /* and the CVV outcode */
+        pt_vtx out;
 
         if (!traced && !o->rasterize) continue;
         if (!mp->used[j] && !(traced && o->every_vertex)) continue;
@@ -353,28 +467,19 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
             filing_start(f, s, p, k, sum);
             sinks = f->sinks;
         }
-        if (s->matrix) {
-            pt_matrices mx;
-            pt_matrices_of(&mx, p, k);
-            pp_v = pt_matrix_journey(&par, &mx, m->v[j], sinks, &clip, &code);
-            behind = clip.w < 0;
-        } else {
-            double z_c;
-            pp_v = pt_classic_journey(&par, m->v[j], sinks, &z_c);
-            behind = s->perspective && z_c > 0;
-        }
+        p->pipe->run_vertex(&in, m->v[j], sinks, &out);
         if (f) {
-            /* from the camera, not from the records that came: a student's
+            /* from the runner, not from the records that came: a student's
             ** stage that does not report must not shorten the journey */
-            f->j.norder = pt_journey_norder(s->matrix, s->matrix ? code : 0);
+            f->j.norder = out.norder;
             filing_end(f, l, m, j + 1, mp);
         }
         if (traced) {
             sum->vertices_traced++;
-            sum->behind += behind;
+            sum->behind += out.behind;
         }
-        if (o->rasterize) pp[j] = pp_v;
-        if (o->rasterize && cl) { cl[j].clip = clip; cl[j].code = code; }
+        if (o->rasterize) pp[j] = out.pp;
+        if (o->rasterize && cl) { cl[j].clip = out.h; cl[j].code = out.code; }
     }
 }
 
@@ -436,52 +541,78 @@ static void skip_report(const pt_listener *l, const pt_model *m, uint64_t seg,
     l->skip(l->ud, m, seg, (a_bad ? sg->a : sg->b) + 1, why);
 }
 
-/* Run the tail for the point q clipping made at t on segment seg of model k
-** (traced when l is not NULL); returns its pixel-plane point. */
-static pt_vec2 clip_point(const pt_scene *s, const pt_plan *p, size_t k, uint64_t seg,
-                          double t, pt_vec4 q, const pt_listener *l,
-                          const model_sinks *ms, filing *fl, pt_summary *sum)
+/* Run point mp, which a segment stage made on segment seg of model k, on
+** through the rest of the pipeline (traced when l is not NULL); returns its
+** pixel-plane point. */
+static pt_vec2 made_point(const pt_scene *s, const pt_plan *p, size_t k, const pt_made *mp,
+                          const pt_listener *l, const model_sinks *ms, filing *fl,
+                          pt_summary *sum)
 {
     const pt_model *m = &s->models[k];
-    const pt_segment *sg = &m->seg[seg - 1];
-    pt_stage_params par;
-    pt_vrec r = {0};
-    pt_vec2 pp;
+    pt_pipe_in in;
+    pt_vrec seed[2];
+    pt_vtx out;
+    int i, n;
 
-    if (l && l->clipvertex_begin) l->clipvertex_begin(l->ud, m, seg, sg->a + 1, sg->b + 1, t, q);
-    pt_stage_params_of(&par, s, m);
-    if (!l || !l->journey) return pt_matrix_tail(&par, q, fabs(q.w), l ? ms->traced : ms->quiet);
+    if (l && l->clipvertex_begin)
+        l->clipvertex_begin(l->ud, m, mp->seg, mp->from, mp->to, mp->t, mp->q);
+    p->pipe->model_in(&in, s, p, k);
+    if (!l || !l->journey) {
+        p->pipe->run_made(&in, mp, l ? ms->traced : ms->quiet, &out);
+        return out.pp;
+    }
     filing_start(fl, s, p, k, sum);
-    r.stage = PT_STAGE_CLIP;                /* the point, where its journey starts */
-    r.x = q.x; r.y = q.y; r.z = q.z; r.w = q.w;
-    pt_journey_file(&fl->j, &r);
-    r.stage = PT_STAGE_CVV;                 /* inside: on a plane at most */
-    pt_journey_file(&fl->j, &r);
-    pp = pt_matrix_tail(&par, q, fabs(q.w), fl->sinks);
-    fl->j.norder = pt_matrix_norder;
+    n = p->pipe->seed(mp, seed);            /* where its journey starts */
+    for (i = 0; i < n; i++) pt_journey_file(&fl->j, &seed[i]);
+    p->pipe->run_made(&in, mp, fl->sinks, &out);
+    fl->j.norder = out.norder;
     filing_end(fl, l, m, 0, &p->models[k]);
-    return pp;
+    return out.pp;
 }
 
-/* Clip a matrix-camera segment of model k in clip space; the points clipping
-** makes run the rest of the pipeline (traced when l is not NULL).  Returns 0
-** when nothing of it is visible, else 1 with *a, *b the pixel-plane points to
-** draw between. */
-static int matrix_segment(const pt_scene *s, const pt_plan *p, size_t k, uint64_t seg,
-                          const vtx_clip *va, const vtx_clip *vb, const pt_listener *l,
-                          const model_sinks *ms, filing *fl, pt_summary *sum,
-                          pt_vec2 *a, pt_vec2 *b)
+/* Put segment seg of model k, whose ends' runners gave va and vb, through
+** the pipeline's segment stages; the points they make run the rest of the
+** pipeline (traced when l is not NULL).  Returns NULL when something of it
+** goes on to the rasterizer, with *a, *b the pixel-plane points to draw
+** between; else why it does not. */
+static const char *cut_segment(const pt_scene *s, const pt_plan *p, size_t k, uint64_t seg,
+                               const vtx_clip *va, const vtx_clip *vb, const pt_listener *l,
+                               const model_sinks *ms, filing *fl, pt_summary *sum,
+                               pt_vec2 *a, pt_vec2 *b)
 {
-    double t0, t1;
-    pt_vec4 q0, q1;
+    const pt_segment *sg = &s->models[k].seg[seg - 1];
+    pt_vtx end[2];
+    int i, e;
 
-    if ((va->code | vb->code) == 0) return 1;           /* all inside */
-    if (!pt_clip_segment(va->clip, vb->clip, &t0, &t1, &q0, &q1)) return 0;
-    if (va->code)                                       /* a new first end */
-        *a = clip_point(s, p, k, seg, t0, q0, l, ms, fl, sum);
-    if (vb->code)                                       /* a new last end */
-        *b = clip_point(s, p, k, seg, t1, q1, l, ms, fl, sum);
-    return 1;
+    memset(end, 0, sizeof end);
+    end[0].h = va->clip; end[0].code = va->code; end[0].pp = *a;
+    end[1].h = vb->clip; end[1].code = vb->code; end[1].pp = *b;
+    for (i = 0; i < p->pipe->nsegstages; i++) {
+        const pt_segstage *ss = &p->pipe->segstages[i];
+        pt_made made[2];
+        int moved[2] = {0, 0};
+
+        switch (ss->cut(&end[0], &end[1], made, moved)) {
+        case PT_CUT_DROP:
+            return ss->dropped;
+        case PT_CUT_KEEP:
+            break;
+        case PT_CUT_NEW:
+            for (e = 0; e < 2; e++) {
+                if (!moved[e]) continue;
+                made[e].seg = seg;
+                made[e].from = sg->a + 1;
+                made[e].to = sg->b + 1;
+                end[e].pp = made_point(s, p, k, &made[e], l, ms, fl, sum);
+                end[e].h = made[e].q;
+                end[e].code = 0;
+            }
+            break;
+        }
+    }
+    *a = end[0].pp;
+    *b = end[1].pp;
+    return NULL;
 }
 
 /* What drawing needs, the same for every model: the raster callbacks and
@@ -506,7 +637,7 @@ static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *
     d->out.pixel = on_pixel;
     d->out.clip = on_clip;
     d->out.ud = &d->rc;
-    d->to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
+    d->to_vp = pt_scene_pipeline(s)->to_viewport;
     d->rc.s = s; d->rc.fb = fb; d->rc.sum = sum;
     d->rc.npix = (int64_t)s->fb_w * s->fb_h;
     d->rc.x_ul = s->vp_x; d->rc.y_ul = s->vp_y; d->rc.W = s->fb_w; d->rc.H = s->fb_h;
@@ -534,20 +665,22 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
         int taken = piece_segment(pc, s, a, b);
         int traced = taken && selected;                 /* its clip vertices */
         int report = traced && o->trace_raster;         /* its raster records */
+        const char *dropped;
         int draw, r;
 
         if (!taken && !d->im.fb && !l->summary) continue;   /* nothing to do */
         d->rc.seg = j + 1;
         d->rc.l = report ? l : NULL;
         d->im.pixel = report && l->pixels ? on_drawn : NULL;
-        draw = !s->matrix && (d->im.fb || d->im.pixel);
-        if (s->matrix && !matrix_segment(s, p, k, j + 1, &cl[m->seg[j].a], &cl[m->seg[j].b],
-                                         traced ? l : NULL, ms, fl, sum, &a, &b)) {
+        draw = p->pipe->inlined_dda && (d->im.fb || d->im.pixel);
+        if (p->pipe->nsegstages &&
+            (dropped = cut_segment(s, p, k, j + 1, &cl[m->seg[j].a], &cl[m->seg[j].b],
+                                   traced ? l : NULL, ms, fl, sum, &a, &b)) != NULL) {
             sum->segments_culled++;
-            if (report && l->skip) l->skip(l->ud, m, j + 1, 0, "outside the view volume");
+            if (report && l->skip) l->skip(l->ud, m, j + 1, 0, dropped);
             continue;
         }
-        if (draw)                           /* the classic camera */
+        if (draw)                           /* the stages inlined in the DDA */
             r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &d->im, &d->out);
         else
             r = pt_raster_segment(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out);
@@ -570,20 +703,21 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     drawing d;
     pieces pc;
     int status = 0, raster, in_turn;
+    int cuts = p->pipe->nsegstages > 0;     /* segment stages: cl[] is kept */
 
     /* Rasterize for an image, for a listener of pixel, clip, skip or summary
     ** records, or for the matrix camera's points clipping makes; else nobody
     ** listens (a CSV trace has no raster rows): skip it.  When nobody listens
     ** to the vertices, or nobody to what drawing reports (a CSV trace with an
-    ** image, classic camera: the matrix camera's clipping makes vertex
+    ** image, no segment stages: the matrix camera's clipping makes vertex
     ** records while it draws), each model is drawn right after its vertices
     ** ran ("in turn"), from one buffer the size of the largest model, which
     ** stays in the cache: the records that remain come in the same order as
     ** when every model's vertices run first (the summary comes last). */
-    raster = o->rasterize && (fb || l->pixels || l->clip || l->skip || l->summary || s->matrix);
+    raster = o->rasterize && (fb || l->pixels || l->clip || l->skip || l->summary || cuts);
     in_turn = raster &&
               ((!l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin && !l->journey) ||
-               (!s->matrix && !l->pixels && !l->clip && !l->skip));
+               (!cuts && !l->pixels && !l->clip && !l->skip));
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
     n = s->nmodels ? s->nmodels : 1;
@@ -594,8 +728,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     if (in_turn) {
         for (k = 0; k < s->nmodels; k++) if (s->models[k].nv > maxnv) maxnv = s->models[k].nv;
         pps[0] = malloc(maxnv * sizeof **pps);
-        if (s->matrix) cls[0] = malloc(maxnv * sizeof **cls);
-        if (!pps[0] || (s->matrix && !cls[0])) { status = -1; goto done; }
+        if (cuts) cls[0] = malloc(maxnv * sizeof **cls);
+        if (!pps[0] || (cuts && !cls[0])) { status = -1; goto done; }
     }
     pieces_start(&pc, s, o, l);
     if (l->header && pc.taken) l->header(l->ud, s, p);
@@ -611,8 +745,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
         sinks_init(&ms[k], &p->models[k], l, sum);
         if (o->rasterize && !in_turn) {
             pps[k] = malloc((m->nv ? m->nv : 1) * sizeof **pps);
-            if (s->matrix) cls[k] = malloc((m->nv ? m->nv : 1) * sizeof **cls);
-            if (!pps[k] || (s->matrix && !cls[k])) { status = -1; goto done; }
+            if (cuts) cls[k] = malloc((m->nv ? m->nv : 1) * sizeof **cls);
+            if (!pps[k] || (cuts && !cls[k])) { status = -1; goto done; }
         }
         run_model(s, p, o, l, k, &ms[k], pps[b], cls[b], &fl, sum, &pc);
         if (in_turn) draw_model(&d, s, p, o, l, k, &ms[k], &fl, sum, pps[0], cls[0], &pc);

@@ -31,6 +31,7 @@
 #include "core/vjourney.h"
 #include "stages/pt_classic.h"
 #include "stages/pt_matrix.h"
+#include "core/pipelines.h"
 
 /* What to compute and what to report. */
 typedef struct pt_options {
@@ -68,9 +69,10 @@ typedef struct pt_model_plan {
 } pt_model_plan;
 
 typedef struct pt_plan {
+    const pt_pipeline *pipe;     /* the scene's pipeline */
     pt_model_plan *models;       /* one per scene model; owned */
     size_t nmodels;
-    const pt_stage *order;       /* the camera's stages in pipeline order */
+    const pt_stage *order;       /* the pipeline's stages in pipeline order */
     int norder;                  /* how many */
     pt_mat4 view, proj;          /* matrix camera: View and Projection */
     int up_skewed;               /* matrix camera: the given up was not
@@ -152,6 +154,15 @@ typedef struct pt_listener {
 #define PT_PIECE_VERTICES 1024
 #define PT_PIECE_SEGMENTS 1024
 #define PT_PIECE_PIXELS   8192
+
+/* The pipelines (core/pipelines.h), indexed by pt_pipe_id; the one scene s
+** names; the one named name ("classic", "matrix"), or NULL.  These functions
+** can't fail. */
+extern const pt_pipeline pt_pipe_classic;
+extern const pt_pipeline pt_pipe_matrix;
+extern const pt_pipeline *const pt_pipelines[PT_NPIPES];
+const pt_pipeline *pt_scene_pipeline(const pt_scene *s);
+const pt_pipeline *pt_pipeline_by_name(const char *name);
 
 /* Fill *par with the numbers of scene s that the classic stages use for its
 ** model m.  This function can't fail. */

@@ -782,6 +782,7 @@ static int do_camera(parser *ps, source *src, const token *dir, cursor *args)
                     tok_is(&a[0], "lookat") ? "direction" : "target", n - 1);
     if (parse_numbers(ps, src, a + 1, 9, "camera coordinate", v) < 0)
         return -1;
+    ps->s->pipe = PT_PIPE_MATRIX;
     ps->s->matrix = 1;
     ps->s->eye = (pt_vec3){v[0], v[1], v[2]};
     ps->s->dir = (pt_vec3){v[3], v[4], v[5]};

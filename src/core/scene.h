@@ -19,6 +19,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "stages/pt_mat4.h"
+#include "core/pipelines.h"
 
 #define PT_MAX_SIZE 16384        /* largest framebuffer width or height */
 #define PT_ERRLEN   1024         /* room for one error message */
@@ -45,7 +46,9 @@ typedef struct pt_scene {
     unsigned char background[3]; /* default 0 0 0 */
     int vp_x, vp_y, vp_w, vp_h;  /* viewport upper-left corner and size */
     int perspective;             /* 1: camera perspective (default), 0: orthographic */
-    int matrix;                  /* 1: the matrix camera (camera lookat + projection) */
+    pt_pipe_id pipe;             /* the pipeline: PT_PIPE_MATRIX with `camera
+                                 ** lookat` (+ projection), else PT_PIPE_CLASSIC */
+    int matrix;                  /* 1: pipe is PT_PIPE_MATRIX */
     pt_vec3 eye, dir, up;        /* matrix camera: position, direction, up vector */
     int target;                  /* 1: `camera lookat-target`: dir = at - eye */
     pt_vec3 at;                  /* with target: the point looked at */

@@ -5,17 +5,16 @@
 #include <string.h>
 #include "core/vjourney.h"
 
-void pt_journey_start(pt_journey *j, const pt_stage_params *par, const pt_mat4 *world,
-                      const pt_mat4 *view, const pt_mat4 *proj)
+void pt_journey_start(pt_journey *j, const pt_pipeline *pl, const pt_pipe_in *in)
 {
     memset(j, 0, sizeof *j);
-    j->par = *par;
-    j->order = world ? pt_matrix_order : pt_classic_order;
-    if (!world) return;
-    j->matrix = 1;
-    j->world = *world;
-    j->view = *view;
-    j->proj = *proj;
+    j->par = in->par;
+    j->pipe = pl;
+    j->order = pl->order;
+    j->matrix = pl->id == PT_PIPE_MATRIX;
+    if (in->mx.world) j->world = *in->mx.world;
+    if (in->mx.view) j->view = *in->mx.view;
+    if (in->mx.proj) j->proj = *in->mx.proj;
 }
 
 void pt_journey_file(pt_journey *j, const pt_vrec *r)
@@ -25,21 +24,9 @@ void pt_journey_file(pt_journey *j, const pt_vrec *r)
     j->reported |= 1u << r->stage;
 }
 
-int pt_journey_norder(int matrix, unsigned code)
-{
-    int i;
-
-    if (!matrix) return pt_classic_norder;
-    if (!code) return pt_matrix_norder;
-    for (i = 0; i < pt_matrix_norder; i++)  /* outside: it stops at the cvv */
-        if (pt_matrix_order[i] == PT_STAGE_CVV) return i + 1;
-    return pt_matrix_norder;
-}
-
 const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st)
 {
-    if (j->matrix && st == PT_STAGE_VIEWPORT) return &pt_matrix_viewport_info;
-    return &pt_stage_infos[st];
+    return pt_pipeline_info(j->pipe, st);
 }
 
 /* 1 when a and b hold the same numbers (bit for bit), flags and warnings. */

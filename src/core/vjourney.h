@@ -17,6 +17,7 @@
 
 #include "stages/pt_stage.h"
 #include "stages/pt_mat4.h"
+#include "core/pipelines.h"
 
 /* One point's journey.  rec[st] is the record stage st reported (model: the
 ** vertex itself); a stage the point did not reach holds zeros.  order[0 ..
@@ -32,28 +33,23 @@ typedef struct pt_journey {
     int norder;                  /*   in pipeline order, and how many */
     unsigned reported;           /* bit st: stage st reported its record (a
                                  ** student's stage may not: its rec is zeros) */
-    int matrix;                  /* 1: the matrix camera's journey */
+    const pt_pipeline *pipe;     /* the pipeline it went through */
+    int matrix;                  /* 1: pipe is the matrix camera's */
     pt_mat4 world, view, proj;   /* matrix camera: World, View, Projection */
 } pt_journey;
 
-/* Start an empty journey with par: the classic camera's when world is NULL,
-** else the matrix camera's with World, View and Projection copied; no
-** records yet, norder 0 (the caller sets it).  This function can't fail. */
-void pt_journey_start(pt_journey *j, const pt_stage_params *par, const pt_mat4 *world,
-                      const pt_mat4 *view, const pt_mat4 *proj);
+/* Start an empty journey through pipeline pl with the numbers in (its
+** matrices copied when it has them); no records yet, norder 0 (the caller
+** sets it).  This function can't fail. */
+void pt_journey_start(pt_journey *j, const pt_pipeline *pl, const pt_pipe_in *in);
 
 /* File record r under its stage in j and mark the stage reported (a stage
 ** past the last is ignored).  This function can't fail. */
 void pt_journey_file(pt_journey *j, const pt_vrec *r);
 
-/* The name, spaces and formula of stage st as j's camera has it (the matrix
-** camera's viewport stage floors instead of rounding).  Can't fail. */
+/* The name, spaces and formula of stage st as j's pipeline has it (the
+** matrix camera's viewport stage floors instead of rounding).  Can't fail. */
 const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st);
-
-/* How many stages of its camera's order a point goes through: the classic
-** camera's all; the matrix camera's all, or up to the cvv for a vertex outside
-** the view volume (outcode code != 0).  This function can't fail. */
-int pt_journey_norder(int matrix, unsigned code);
 
 /* 1 when r is the record of its stage in j, number for number (bit for bit,
 ** flags and all).  This function can't fail. */

@@ -221,6 +221,7 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
 
     if (s->matrix) {                        /* the classic camera, perspective */
         cs.matrix = 0;
+        cs.pipe = PT_PIPE_CLASSIC;
         cs.perspective = 1;
     }
     if (pt_run_journey(&jc, &cs, &cs.models[mi], v, raw) != 0) return PT_EXIT_INPUT;
@@ -237,6 +238,7 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
         }
         ms.models = models;
         ms.matrix = 1;
+        ms.pipe = PT_PIPE_MATRIX;
         ms.eye = (pt_vec3){0, 0, 0};
         ms.dir = (pt_vec3){0, 0, 1};
         ms.up = (pt_vec3){0, 1, 0};
