@@ -26,6 +26,11 @@
 typedef struct pt_vec3 { double x, y, z; } pt_vec3;
 typedef struct pt_vec2 { double x, y; } pt_vec2;
 
+/* A colour as the course's renderer carries it between stages: three floats
+** in 0 .. 1 (java.awt.Color's components), kept unrounded so that a colour
+** interpolated along a segment stays the float it was computed as. */
+typedef struct pt_rgb { float r, g, b; } pt_rgb;
+
 /* A pixel position.  ok == 0 means "no pixel": a coordinate was not finite or
 ** too large for rounding to an integer to mean anything (see
 ** s4_pixel2viewport.h).  The other coordinate may still have its value (x_pp
@@ -70,6 +75,7 @@ typedef enum pt_stage {
 #define PT_REC_NULL    0x04u   /* viewport, framebuffer, index: no value */
 #define PT_REC_HAS_X   0x08u   /* with NULL (viewport, framebuffer): x still */
 #define PT_REC_HAS_Y   0x10u   /*   has its value; y still has its value */
+#define PT_REC_COLOR   0x20u   /* the record carries the vertex's colour */
 
 /* Warnings a stage raises about the numbers it produced (docs/stability.md). */
 #define PT_WARN_NONFINITE   0x01u  /* a result is infinite or not a number */
@@ -100,6 +106,7 @@ typedef struct pt_vrec {
     unsigned code;             /* cvv: the outcode, PT_CVV_* bits */
     int64_t ix, iy;            /* viewport, framebuffer */
     int64_t i;                 /* index */
+    pt_rgb color;              /* with PT_REC_COLOR: the vertex's colour */
 } pt_vrec;
 
 /* 1 when integer value k (0: ix or i, 1: iy) of a record with these flags

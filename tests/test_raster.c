@@ -307,6 +307,93 @@ static void test_in_turn(void)
     PT_CHECK("raster-5.4 ... and the same summary", same_sum);
 }
 
+/* ===== pixel records carry the colour written and the coverage ===== */
+
+/* What a pixel listener saw against the image: every record's colour is the
+** framebuffer's at its index (the last segment to write a pixel wins, and the
+** records come in drawing order), with coverage 1. */
+typedef struct px_check {
+    const pt_fb *fb;             /* the image drawn so far, filled after */
+    unsigned char *seen;         /* 3 bytes a pixel: the last record's colour */
+    uint64_t n, full;            /* records, and those with coverage 1 */
+} px_check;
+
+static void px_record(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                      size_t n)
+{
+    px_check *c = ud;
+    size_t k;
+
+    (void)seg;
+    for (k = 0; k < n; k++) {
+        c->n++;
+        c->full += px[k].coverage == 1.0f;
+        if (memcmp(px[k].rgb, m->color, 3) != 0) c->full = 0;   /* not its model's */
+        if (px[k].idx >= 0 && px[k].idx < (int64_t)c->fb->w * c->fb->h)
+            memcpy(c->seen + 3 * px[k].idx, px[k].rgb, 3);
+    }
+}
+
+static void test_pixel_colours(void)
+{
+    static const char *const scenes[] = {
+        "docs/examples/two-models.scene", "docs/examples/lookat-cube.scene"};
+    int k, ok = 1, all_full = 1, same = 1;
+
+    for (k = 0; k < 2; k++) {
+        pt_listener l;
+        pt_summary sum;
+        pt_fb fb;
+        pt_scene s;
+        px_check c;
+        char err[PT_ERRLEN];
+        size_t i, npix;
+
+        if (pt_scene_load(&s, scenes[k], err, sizeof err) != 0) { ok = 0; continue; }
+        npix = (size_t)s.fb_w * s.fb_h;
+        memset(&l, 0, sizeof l);
+        memset(&c, 0, sizeof c);
+        c.fb = &fb;
+        c.seen = malloc(3 * npix);
+        l.pixels = px_record;
+        l.ud = &c;
+        if (!c.seen) { ok = 0; pt_scene_free(&s); continue; }
+        fb.w = s.fb_w; fb.h = s.fb_h;
+        for (i = 0; i < npix; i++) memcpy(c.seen + 3 * i, s.background, 3);
+        if (run_into(&s, &l, &fb, &sum) != 0) ok = 0;
+        else {
+            if (c.n == 0 || c.full != c.n) all_full = 0;
+            if (memcmp(c.seen, fb.rgb, 3 * npix) != 0) same = 0;
+            pt_fb_free(&fb);
+        }
+        free(c.seen);
+        pt_scene_free(&s);
+    }
+    PT_CHECK("raster-6.1 the scenes run with a pixel listener", ok);
+    PT_CHECK("raster-6.2 every pixel record has its model's colour and coverage 1", all_full);
+    PT_CHECK("raster-6.3 the records' colours, written in order, are the image", same);
+}
+
+static void test_blend(void)
+{
+    static const unsigned char bg[3] = {10, 20, 200}, red[3] = {255, 0, 0};
+    pt_fb fb;
+    int ok = pt_fb_init(&fb, 2, 1, bg) == 0;
+
+    if (!ok) { PT_CHECK("raster-7.0 a 2x1 framebuffer", 0); return; }
+    pt_fb_blend(&fb, 0, red, 1.0f);
+    PT_CHECK("raster-7.1 blend with coverage 1 writes the colour",
+             fb.rgb[0] == 255 && fb.rgb[1] == 0 && fb.rgb[2] == 0);
+    pt_fb_blend(&fb, 1, red, 0.0f);
+    PT_CHECK("raster-7.2 ... with coverage 0 leaves the pixel",
+             fb.rgb[3] == 10 && fb.rgb[4] == 20 && fb.rgb[5] == 200);
+    pt_fb_blend(&fb, 1, red, 0.25f);
+    /* 0.25 * 255 + 0.75 * 10 = 71.25 -> 71; 0.75 * 20 = 15; 0.75 * 200 = 150 */
+    PT_CHECK("raster-7.3 ... with coverage 0.25, a quarter of the way, rounded",
+             fb.rgb[3] == 71 && fb.rgb[4] == 15 && fb.rgb[5] == 150);
+    pt_fb_free(&fb);
+}
+
 int main(void)
 {
     test_pictures();
@@ -314,5 +401,7 @@ int main(void)
     test_advance();
     test_long_segment();
     test_in_turn();
+    test_pixel_colours();
+    test_blend();
     return pt_test_report();
 }

@@ -52,6 +52,20 @@ int pt_fb_init(pt_fb *fb, int w, int h, const unsigned char bg[3])
     return 0;
 }
 
+void pt_fb_blend(pt_fb *fb, int64_t idx, const unsigned char color[3], float coverage)
+{
+    unsigned char *p;
+    int k;
+
+    assert(idx >= 0 && idx < (int64_t)fb->w * fb->h);
+    assert(coverage >= 0.0f && coverage <= 1.0f);
+    p = fb->rgb + 3 * (size_t)idx;
+    for (k = 0; k < 3; k++) {
+        float c = coverage * color[k] + (1.0f - coverage) * p[k];  /* in 0 .. 255 */
+        p[k] = (unsigned char)(c + 0.5f);
+    }
+}
+
 int pt_fb_write_ppm(const pt_fb *fb, FILE *f)
 {
     size_t n = 3 * (size_t)fb->w * (size_t)fb->h;

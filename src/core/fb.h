@@ -17,9 +17,13 @@ typedef struct pt_fb {
 
 /* A pixel drawn, as the framebuffer and index stages name it: (x_fb, y_fb)
 ** and its place in the pixel array, idx (none when outside 0 .. w*h - 1: a
-** student's stage can put it there). */
+** student's stage can put it there); the colour written there and the share
+** of the pixel the segment covers (1: all of it; an anti-aliasing rasterizer
+** writes a pair of pixels whose coverages add up to 1). */
 typedef struct pt_fb_pixel {
     int64_t x_fb, y_fb, idx;
+    unsigned char rgb[3];        /* the colour written */
+    float coverage;              /* 0 .. 1 */
 } pt_fb_pixel;
 
 /* Allocate a w x h framebuffer filled with bg.  Returns 0, or -1 when out of
@@ -36,6 +40,13 @@ static inline void pt_fb_set(pt_fb *fb, int64_t idx, const unsigned char color[3
     p = fb->rgb + 3 * (size_t)idx;
     p[0] = color[0]; p[1] = color[1]; p[2] = color[2];
 }
+
+/* Blend color into pixel idx (0 <= idx < w*h) with weight coverage in 0 .. 1:
+** each component becomes round(coverage * color + (1 - coverage) * old), in
+** float arithmetic, halves up; coverage 1 writes color as pt_fb_set().  For a
+** rasterizer that blends with what is drawn (the course's renderers blend
+** with the background colour instead, and write).  This function can't fail. */
+void pt_fb_blend(pt_fb *fb, int64_t idx, const unsigned char color[3], float coverage);
 
 /* Write fb as binary PPM (P6) to the open stream f.  Returns 0 or -1 (errno). */
 int pt_fb_write_ppm(const pt_fb *fb, FILE *f);

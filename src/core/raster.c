@@ -288,6 +288,8 @@ static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x
         telling *t = c->tell;
         pt_fb_pixel *q = &t->px[t->n];
         q->x_fb = f.x; q->y_fb = f.y; q->idx = idx;
+        q->rgb[0] = c->color[0]; q->rgb[1] = c->color[1]; q->rgb[2] = c->color[2];
+        q->coverage = 1.0f;
         if (++t->n == PT_RASTER_RUN) tell(t);
     }
     if ((!listened || c->fb.rgb) && idx >= 0 && idx < c->npix)

@@ -36,7 +36,8 @@ static int same_rec(const pt_vrec *a, const pt_vrec *b)
            a->warn == b->warn && a->digits_lost == b->digits_lost &&
            memcmp(&a->x, &b->x, sizeof a->x) == 0 && memcmp(&a->y, &b->y, sizeof a->y) == 0 &&
            memcmp(&a->z, &b->z, sizeof a->z) == 0 && memcmp(&a->w, &b->w, sizeof a->w) == 0 &&
-           a->ix == b->ix && a->iy == b->iy && a->i == b->i;
+           a->ix == b->ix && a->iy == b->iy && a->i == b->i &&
+           memcmp(&a->color, &b->color, sizeof a->color) == 0;
 }
 
 int pt_journey_matches(const pt_journey *j, const pt_vrec *r)
