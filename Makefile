@@ -96,11 +96,11 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o
            $B/s3_image2pixel.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
-           $B/m7_screen2viewport.o $B/pt_matrix.o
+           $B/m7_screen2viewport.o $B/ms_clip_segment.o $B/pt_matrix.o
 # src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
 # pixelpath.o is the rasterizer with the stages s4, s5 and s6 (see below).
 CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjourney.o \
-           $B/pipeline.o $B/clip.o $B/pixelpath.o $B/fb.o
+           $B/pipeline.o $B/pixelpath.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
            $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o $B/png.o $B/outfile.o \

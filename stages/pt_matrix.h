@@ -11,7 +11,7 @@
 **
 ** A vertex outside the canonical view volume stops at the cvv: dividing by w
 ** would be wrong for a point behind the eye.  Its segments are clipped in clip
-** space (src/core/clip.h), and each point the clipping makes runs the tail,
+** space (ms_clip_segment.h), and each point the clipping makes runs the tail,
 ** m5 on, itself.  The rasterizer then draws between the two ends' points of
 ** the classic pixel plane (m7's pt_viewport2pixelplane()).
 */

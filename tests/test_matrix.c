@@ -14,7 +14,7 @@
 #include "stages/m6_ndc2screen.h"
 #include "stages/m7_screen2viewport.h"
 #include "stages/s4_pixel2viewport.h"
-#include "core/clip.h"
+#include "stages/ms_clip_segment.h"
 
 static pt_vrec last;
 static void keep(void *ud, const pt_vrec *r) { (void)ud; last = *r; }

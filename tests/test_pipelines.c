@@ -74,7 +74,7 @@ static void test_scene(void)
 static void test_cut(void)
 {
     const pt_segstage *ss = &pt_pipe_matrix.segstages[0];
-    pt_vtx a, b;
+    pt_segend a, b;
     pt_made made[2];
     int moved[2] = {0, 0};
     pt_vec4 in = {0, 0, 0.5, 1}, right = {3, 0, 0.5, 1}, far_right = {5, 0, 0.5, 1};
@@ -89,10 +89,13 @@ static void test_cut(void)
     a.h = right; a.code = 0x08; b.h = far_right; b.code = 0x08;
     PT_CHECK("pipe-3.3 both beyond x = w: dropped", ss->cut(&a, &b, made, moved) == PT_CUT_DROP);
     a.h = in; a.code = 0;
+    b.color.r = 1.0f; b.color.g = 0.5f;
     PT_CHECK("pipe-3.4 one end beyond: a new last end",
              ss->cut(&a, &b, made, moved) == PT_CUT_NEW && !moved[0] && moved[1] &&
              made[1].end == 1 && made[1].t == 0.2 && made[1].q.x == 1 &&
              made[1].stage == PT_STAGE_CVV);
+    PT_CHECK("pipe-3.5 ... with the colour at t, in float",
+             made[1].color.r == 0.2f && made[1].color.g == 0.1f && made[1].color.b == 0.0f);
 }
 
 /* A journey's records carry colours, and matching sees them. */

@@ -8,7 +8,7 @@
 #include <string.h>
 #include "core/pipeline.h"
 #include "core/raster.h"
-#include "core/clip.h"
+#include "stages/ms_clip_segment.h"
 #include "stages/pt_matrix.h"
 #include "stages/s4_pixel2viewport.h"
 #include "stages/m7_screen2viewport.h"
@@ -78,27 +78,6 @@ static void matrix_vertex(const pt_pipe_in *in, pt_vec3 v_m,
     out->norder = pt_pipeline_norder(&pt_pipe_matrix, out->code);
 }
 
-/* The segment stage of the matrix camera: a segment with an end outside the
-** view volume is clipped in clip space (core/clip.h). */
-static pt_cut matrix_cut(const pt_vtx *a, const pt_vtx *b, pt_made made[2], int moved[2])
-{
-    double t[2];
-    pt_vec4 q[2];
-    int e;
-
-    if ((a->code | b->code) == 0) return PT_CUT_KEEP;       /* all inside */
-    if (!pt_clip_segment(a->h, b->h, &t[0], &t[1], &q[0], &q[1])) return PT_CUT_DROP;
-    moved[0] = a->code != 0;
-    moved[1] = b->code != 0;
-    for (e = 0; e < 2; e++) {
-        made[e].stage = PT_STAGE_CVV;
-        made[e].end = e;
-        made[e].t = t[e];
-        made[e].q = q[e];
-    }
-    return PT_CUT_NEW;
-}
-
 /* A point clipping made lies in the view volume: its journey starts with its
 ** clip coordinates, at the clip and cvv stages (outcode 0: on a plane at
 ** most). */
@@ -124,7 +103,7 @@ static void matrix_made(const pt_pipe_in *in, const pt_made *mp,
 
 static const pt_segstage matrix_segstages[] = {
     { PT_STAGE_CVV, "clip the segment to the canonical view volume, in clip space",
-      "outside the view volume", matrix_cut },
+      "outside the view volume", pt_clip_cut },
 };
 
 const pt_pipeline pt_pipe_classic = {
@@ -582,13 +561,21 @@ static const char *cut_segment(const pt_scene *s, const pt_plan *p, size_t k, ui
                                const model_sinks *ms, filing *fl, pt_summary *sum,
                                pt_vec2 *a, pt_vec2 *b)
 {
-    const pt_segment *sg = &s->models[k].seg[seg - 1];
-    pt_vtx end[2];
+    const pt_model *m = &s->models[k];
+    const pt_segment *sg = &m->seg[seg - 1];
+    pt_segend end[2];
+    pt_vec2 pp[2];
     int i, e;
 
-    memset(end, 0, sizeof end);
-    end[0].h = va->clip; end[0].code = va->code; end[0].pp = *a;
-    end[1].h = vb->clip; end[1].code = vb->code; end[1].pp = *b;
+    pp[0] = *a;
+    pp[1] = *b;
+    end[0].h = va->clip; end[0].code = va->code;
+    end[1].h = vb->clip; end[1].code = vb->code;
+    for (e = 0; e < 2; e++) {               /* a model's one colour, as floats */
+        end[e].color.r = m->color[0] / 255.0f;
+        end[e].color.g = m->color[1] / 255.0f;
+        end[e].color.b = m->color[2] / 255.0f;
+    }
     for (i = 0; i < p->pipe->nsegstages; i++) {
         const pt_segstage *ss = &p->pipe->segstages[i];
         pt_made made[2];
@@ -605,15 +592,16 @@ static const char *cut_segment(const pt_scene *s, const pt_plan *p, size_t k, ui
                 made[e].seg = seg;
                 made[e].from = sg->a + 1;
                 made[e].to = sg->b + 1;
-                end[e].pp = made_point(s, p, k, &made[e], l, ms, fl, sum);
+                pp[e] = made_point(s, p, k, &made[e], l, ms, fl, sum);
                 end[e].h = made[e].q;
                 end[e].code = 0;
+                end[e].color = made[e].color;
             }
             break;
         }
     }
-    *a = end[0].pp;
-    *b = end[1].pp;
+    *a = pp[0];
+    *b = pp[1];
     return NULL;
 }
 

@@ -28,6 +28,7 @@
 #include <stdint.h>
 #include "stages/pt_stage.h"
 #include "stages/pt_matrix.h"
+#include "stages/pt_segment.h"
 #include "core/raster.h"
 
 struct pt_scene;
@@ -59,32 +60,13 @@ typedef struct pt_vtx {
     int norder;                  /* how many stages of the order it went through */
 } pt_vtx;
 
-/* A point a segment stage made: where it lies and where it came from. */
-typedef struct pt_made {
-    pt_stage stage;              /* the stage whose space it was made in */
-    uint64_t seg;                /* the segment's 1-based number in its model */
-    uint64_t from, to;           /* the segment's 1-based end vertices */
-    int end;                     /* 0: it replaces the first end, 1: the last */
-    double t;                    /* along the segment: P(t) = P0 + t (P1 - P0) */
-    pt_vec4 q;                   /* its coordinates in that space */
-} pt_made;
-
-/* What a segment stage does with a segment. */
-typedef enum pt_cut {
-    PT_CUT_DROP,                 /* nothing of it goes on */
-    PT_CUT_KEEP,                 /* it goes on as it is */
-    PT_CUT_NEW                   /* one or both ends are new points */
-} pt_cut;
-
-/* A segment stage: given the two ends' runner outputs, drop the segment, keep
-** it, or give it new ends (made[e] for each end e with moved[e] set; the
-** driver fills seg, from and to).  `dropped` says why, for the trace's skip
-** record. */
+/* A segment stage of a pipeline (its function in stages/, pt_segment.h). */
 typedef struct pt_segstage {
     pt_stage stage;              /* the space it cuts in */
     const char *what;            /* what it does, in a few words */
-    const char *dropped;         /* why a dropped segment is not drawn */
-    pt_cut (*cut)(const pt_vtx *a, const pt_vtx *b, pt_made made[2], int moved[2]);
+    const char *dropped;         /* why a dropped segment is not drawn (the
+                                 ** trace's skip record) */
+    pt_segstage_fn cut;          /* the stage */
 } pt_segstage;
 
 typedef struct pt_pipeline {

@@ -33,12 +33,13 @@
 #include "stages/m5_clip2ndc.h"
 #include "stages/m6_ndc2screen.h"
 #include "stages/m7_screen2viewport.h"
+#include "stages/pt_segment.h"          /* segment stages: keep, drop, new ends */
+#include "stages/ms_clip_segment.h"     /* the matrix camera's: clip to the CVV */
 #include "stages/wasm/pt_wasm_in.h"    /* the journey page's module: where its inputs go */
 #include "core/scene.h"                /* the scene, parsed */
 #include "core/shapes.h"                /* the course's models: `shape NAME ARGS` */
 #include "core/builtin.h"              /* the scene rendered when given none */
 #include "core/fb.h"                   /* the framebuffer */
-#include "core/clip.h"                 /* the matrix camera's clipping */
 #include "core/raster.h"               /* the DDA */
 #include "core/vjourney.h"             /* one point's records, every stage */
 #include "core/pipeline.h"             /* plan, run, listen */

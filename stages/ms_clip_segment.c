@@ -1,9 +1,9 @@
 /*
-** src/core/clip.c -- clip a segment against the canonical view volume, before the divide
+** stages/ms_clip_segment.c -- the matrix camera's segment stage: clip to the view volume
 ** See LICENSE for copyright and license.
 */
-#include "core/clip.h"
-#include "stages/m4_clip2cvv.h"
+#include "ms_clip_segment.h"
+#include "m4_clip2cvv.h"
 
 pt_vec4 pt_clip_lerp(pt_vec4 p0, pt_vec4 p1, double t)
 {
@@ -40,4 +40,35 @@ int pt_clip_segment(pt_vec4 p0, pt_vec4 p1, double *t0, double *t1,
     *q0 = enter == 0 ? p0 : pt_clip_lerp(p0, p1, enter);
     *q1 = leave == 1 ? p1 : pt_clip_lerp(p0, p1, leave);
     return 1;
+}
+
+pt_rgb pt_clip_color(pt_rgb c0, pt_rgb c1, double t)
+{
+    float t_ = (float)t;
+    pt_rgb c;
+
+    c.r = c0.r + t_ * (c1.r - c0.r);        /* c(t) = c0 + t (c1 - c0) */
+    c.g = c0.g + t_ * (c1.g - c0.g);
+    c.b = c0.b + t_ * (c1.b - c0.b);
+    return c;
+}
+
+pt_cut pt_clip_cut(const pt_segend *a, const pt_segend *b, pt_made made[2], int moved[2])
+{
+    double t[2];
+    pt_vec4 q[2];
+    int e;
+
+    if ((a->code | b->code) == 0) return PT_CUT_KEEP;       /* all inside */
+    if (!pt_clip_segment(a->h, b->h, &t[0], &t[1], &q[0], &q[1])) return PT_CUT_DROP;
+    moved[0] = a->code != 0;
+    moved[1] = b->code != 0;
+    for (e = 0; e < 2; e++) {
+        made[e].stage = PT_STAGE_CVV;
+        made[e].end = e;
+        made[e].t = t[e];
+        made[e].q = q[e];
+        made[e].color = pt_clip_color(a->color, b->color, t[e]);
+    }
+    return PT_CUT_NEW;
 }
