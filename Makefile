@@ -96,8 +96,14 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o
            $B/s3_image2pixel.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
-           $B/m7_screen2viewport.o $B/ms_clip_segment.o $B/pt_matrix.o
-# src/core/: scene, plan, run, clip, raster, framebuffer (one public header).
+           $B/m7_screen2viewport.o $B/ms_clip_segment.o $B/pt_matrix.o $(REF_O)
+# The reference copy of s1..s6, in every build (stages/pt_ref.h): each file
+# compiled again with stages/pt_ref_names.h in front, which renames its
+# function pt_x to ptref_x; in build-student/ these stay the reference while
+# the pt_ ones are the student's.  The tools call them for "the formula".
+REF_O    = $B/ref_s1_model2camera.o $B/ref_s2_camera2image.o $B/ref_s3_image2pixel.o \
+           $B/ref_s4_pixel2viewport.o $B/ref_s5_viewport2fb.o $B/ref_s6_fb2index.o $B/pt_ref.o
+# src/core/: scene, plan, run (the pipelines), raster, framebuffer (one public header).
 # pixelpath.o is the rasterizer with the stages s4, s5 and s6 (see below).
 CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjourney.o \
            $B/pipeline.o $B/pixelpath.o $B/fb.o
@@ -132,6 +138,8 @@ $B/libpipetrace.a: $(STAGES_O) $(CORE_O) $(IO_O) $(TOOLS_O)
 HDRS     = stages/*.h src/*/*.h src/tools/*/*.h
 $B/%.o: stages/%.c stages/*.h | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/ref_%.o: stages/%.c stages/*.h | $B
+	$(CC) $(ALLCFLAGS) -Istages -include stages/pt_ref_names.h -c -o $@ $<
 $B/%.o: src/core/%.c $(HDRS) | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
 $B/%.o: src/io/%.c $(HDRS) | $B

@@ -129,6 +129,54 @@ feed '' quiz $tri --vertex 1 --json
 check "class-3.17a --json without answers: nothing answered, exit 1" \
     test "$rc" = 1 -a -n "$(grep -F '"right":0,"answered":0,"of":7}' "$tmp/out")"
 
+# ---- a student build's teaching commands state the reference formula, with
+# true arithmetic, and say apart what the student's stage gave; quiz grades
+# against the reference.  Before the reference build (stages/pt_ref.h):
+# --explain printed y_vp = ... = 7 under a record saying y_vp = 2, step ended
+# the pixel equation with the student's 5.5 after the reference's operands,
+# and quiz marked the right viewport wrong.
+sh tests/student.sh s3_two2 "$tmp/s3_two2.c"
+mk STAGE_pixel="$tmp/s3_two2.c"
+"$tmp/sb/pipetrace" step $tri --vertex 1 --all >"$tmp/out" 2>&1
+check "class-5.1 step, student pixel stage: the formula's result ends the here line" \
+    grep -qxF "  here     x_pp = 0.5 + w/2.001 * (x_ip + 1) = 0.5 + 20/2.001 * (-0.5 + 1) = 5.497501249375313" "$tmp/out"
+check "class-5.2 ... then what the student's stage gave" \
+    grep -qxF "           your stage gave x_pp = 5.5" "$tmp/out"
+check "class-5.3 ... and the viewport computes from the student's x_pp, truly" \
+    grep -qxF "  here     x_vp = round(x_pp) - 1 = round(5.5) - 1 = 6 - 1 = 5" "$tmp/out"
+check "class-5.6 ... and no equation with the reference's operands and the student's result" \
+    test "$(grep -c '20/2.001 \* (-0.5 + 1) = 5.5$' "$tmp/out")" = 0
+sh tests/student.sh s4_noflip "$tmp/s4_noflip.c"
+mk STAGE_viewport="$tmp/s4_noflip.c"
+"$tmp/sb/pipetrace" $tri --vertex 1 --explain >"$tmp/out" 2>&1
+check "class-5.4 --explain, student viewport stage: the formula's 7, then the record's 2" \
+    grep -qF "= 10 - 3 = 7; your stage gave y_vp = 2" "$tmp/out"
+"$tmp/sb/pipetrace" step $tri --vertex 1 --all >"$tmp/out" 2>&1
+check "class-5.5 step: the viewport's here line as the pixel's: the formula's, then yours" \
+    test "$(grep -A1 'y_vp = h - round(y_pp) = ' "$tmp/out" | tr '\n' '|')" = \
+    "           y_vp = h - round(y_pp) = 10 - round(2.9987506246876565) = 10 - 3 = 7|           your stage gave y_vp = 2|"
+sh tests/student.sh s5_nooffset "$tmp/s5_nooffset.c"
+mk STAGE_framebuffer="$tmp/s5_nooffset.c"
+"$tmp/sb/pipetrace" step --model cube --vertex 7 --all >"$tmp/out" 2>&1
+check "class-5.7 step, student framebuffer stage: x_ul + x_vp added truly" \
+    test "$(grep -A1 'x_fb = x_ul + x_vp = ' "$tmp/out" | tr '\n' '|')" = \
+    "  here     x_fb = x_ul + x_vp = 40 + 139 = 179|           your stage gave x_fb = 139|"
+mk STAGE_viewport="$tmp/s4_noflip.c"
+feed "$right" quiz $tri --vertex 1
+mv "$tmp/out" "$tmp/ref.out"
+printf '%b' "$right" | "$tmp/sb/pipetrace" quiz $tri --vertex 1 >"$tmp/out" 2>&1; rc=$?
+check "class-5.8 quiz in a student build: the right answers are right (exit 0, 7/7)" \
+    test "$rc" = 0 -a -n "$(grep -x 'score: 7/7' "$tmp/out")"
+check "class-5.9 ... one line says it is a student build, graded against the reference" \
+    grep -qxF "student build: the viewport stage is yours (make STAGE_viewport=...); the answers are checked against the reference stages" "$tmp/out"
+check "class-5.10 ... otherwise the reference build's quiz, byte for byte" \
+    sh -c "grep -v '^student build: ' '$tmp/out' | cmp -s - '$tmp/ref.out'"
+printf -- '-1 -1 0\n-1 -1 -2\n-0.5 -0.5 -1\n5.497501249375313 2.9987506246876565\n4 2\n' |
+    "$tmp/sb/pipetrace" quiz $tri --vertex 1 >"$tmp/out" 2>&1
+check "class-5.11 ... the student's own y_vp is wrong, with the true equation and the right value" \
+    test "$(grep -A5 '^viewport: ' "$tmp/out" | tail -4 | tr '\n' '|')" = \
+    "  x_vp = round(x_pp) - 1, y_vp = h - round(y_pp)|    x_vp = round(x_pp) - 1 = round(5.497501249375313) - 1 = 5 - 1 = 4|    y_vp = h - round(y_pp) = 10 - round(2.9987506246876565) = 10 - 3 = 7|  go on with (x_vp, y_vp) = (4, 7)|"
+
 # ---- grading a folder of answer sheets
 mkdir -p "$tmp/sheets/sub"
 printf '%b' "$right" > "$tmp/sheets/alice.txt"

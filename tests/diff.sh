@@ -189,12 +189,12 @@ check "diff-1.19 docs/exercises/03-pixel-two.jsonl is today's student trace (els
     cmp "$tmp/ex3.jsonl" docs/exercises/03-pixel-two.jsonl
 
 # pipetrace step on a student build: says so, and shows where the student's
-# stage leaves the formula (the catalogue's, src/tools/catalogue.c)
+# stage leaves the formula (the reference stages', stages/pt_ref.h)
 "$tmp/sb/pipetrace" step docs/examples/triangle.scene --vertex 1 >"$tmp/step.out" 2>&1
 check "diff-10.1 step on a student build says so" \
     grep -qxF "student build: the pixel stage is yours (make STAGE_pixel=...)" "$tmp/step.out"
 check "diff-10.2 ... and where the pixel stage differs from the formula" \
-    grep -qxF "  check    your stage gave x_pp = 5.5; the formula gives 5.497501249375313" "$tmp/step.out"
+    sh -c "grep -A1 '^  here     x_pp = ' '$tmp/step.out' | tr '\n' '|' | grep -qxF '  here     x_pp = 0.5 + w/2.001 * (x_ip + 1) = 0.5 + 20/2.001 * (-0.5 + 1) = 5.497501249375313|           your stage gave x_pp = 5.5|'"
 check "diff-10.3 ... in the pixel stage only" test "$(grep -c 'your stage gave' "$tmp/step.out")" = 2
 check "diff-10.4 --version says so too" sh -c "'$tmp/sb/pipetrace' --version | grep -q 'student build: the pixel stage'"
 "$exe" step docs/examples/triangle.scene --vertex 1 >"$tmp/step.out" 2>&1

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "testhelp.h"
 #include "io/explain.h"
+#include "io/numfmt.h"
 
 /* The triangle of docs/examples/triangle.scene: 20 x 10, translate 0 0 -2. */
 static const char tri[] = "framebuffer 20 10\nmodel t\ntranslate 0 0 -2\n";
@@ -441,6 +442,91 @@ static void test_formulas_are_the_table(void)
     PT_CHECK("ex-9.1 explain's formulas are the stage table's, value by value", bad == 0 && n >= 20);
 }
 
+/* A student's stage (make STAGE_x=FILE.c) reports other numbers than the
+** formula: the text states the reference's result, true arithmetic with the
+** numbers put in, and says what the stage gave after it.  Before 2024's
+** reference build, --explain printed "y_vp = ... = 10 - 3 = 7" under a
+** record saying y_vp = 2 (tests/student.sh s4_noflip), and step ended the
+** pixel stage's equation with the student's x_pp = 5.5. */
+static void test_student_records(void)
+{
+    pt_journey j, ref;
+    unsigned differ = 0;
+    int i;
+
+    journey_at(&j, tri, (pt_vec3){-1, -1, 0});
+    j.rec[PT_STAGE_VIEWPORT].iy = 2;        /* y_vp = round(y_pp) - 1: no flip */
+    PT_CHECK("ex-7.1 viewport: the formula's result, then the stage's",
+             !strcmp(stage_text(&j, PT_STAGE_VIEWPORT),
+                     "x_vp = round(x_pp) - 1 = round(5.497501249375313) - 1 = 5 - 1 = 4 | "
+                     "y_vp = h - round(y_pp) = 10 - round(2.9987506246876565) = 10 - 3 = 7 | "
+                     "your stage gave y_vp = 2"));
+    j.rec[PT_STAGE_FRAMEBUFFER].iy = 2;     /* handed on: framebuffer's input */
+    PT_CHECK("ex-7.2 the next stage computes from the numbers it was handed",
+             !strcmp(stage_text(&j, PT_STAGE_FRAMEBUFFER),
+                     "x_fb = x_ul + x_vp = 0 + 4 = 4 | y_fb = y_ul + y_vp = 0 + 2 = 2"));
+    journey_at(&j, tri, (pt_vec3){-1, -1, 0});
+    j.rec[PT_STAGE_PIXEL].x = 5.5;          /* 2 for 2.001 */
+    PT_CHECK("ex-7.3 pixel: the same, for a real value",
+             !strcmp(stage_text(&j, PT_STAGE_PIXEL),
+                     "x_pp = 0.5 + w/2.001 * (x_ip + 1) = 0.5 + 20/2.001 * (-0.5 + 1) = 5.497501249375313"
+                     " | your stage gave x_pp = 5.5 | "
+                     "y_pp = 0.5 + h/2.001 * (y_ip + 1) = 0.5 + 10/2.001 * (-0.5 + 1) = 2.9987506246876565"));
+    j.rec[PT_STAGE_INDEX].flags = PT_REC_NULL;
+    j.rec[PT_STAGE_INDEX].i = -1;
+    PT_CHECK("ex-7.4 index: a value where the stage gave none",
+             !strcmp(stage_text(&j, PT_STAGE_INDEX),
+                     "idx = y_fb * W + x_fb = 7 * 20 + 4 = 144 | your stage gave idx = none"));
+    pt_explain_reference(&ref, &j);
+    PT_CHECK("ex-7.5 pt_explain_reference: the reference's values from the stage on",
+             ref.rec[PT_STAGE_PIXEL].x == 5.497501249375313 && ref.rec[PT_STAGE_INDEX].i == 144 &&
+             !(ref.rec[PT_STAGE_INDEX].flags & PT_REC_NULL) && ref.rec[PT_STAGE_VIEWPORT].ix == 4);
+    journey_at(&j, tri, (pt_vec3){-1, -1, 0});
+    pt_explain_reference(&ref, &j);
+    for (i = 0; i < j.norder; i++) differ |= pt_ref_differ(j.order[i], &ref.rec[j.order[i]],
+                                                           &j.rec[j.order[i]]);
+    PT_CHECK("ex-7.6 ... and the run's, value for value, when no stage is a student's", differ == 0);
+}
+
+/* The viewport's text writes round(x_pp) and the formula's "- 1" and "h -"
+** again; the result is the reference stage's.  Tied here: on ties, near
+** ties and the 2^62 limit, "round(X) - 1 = R - 1 = V" has R = pt_pix_round(X)
+** and V = R - 1 = ptref_pixel2viewport's x_vp, likewise y. */
+static void test_viewport_text_is_the_stage(void)
+{
+    static const double xs[] = {-2.5, -1.5, -0.5, 0.49999999999999994, 0.5, 2.5, 3.5, -79.46,
+                                1e6 + 0.5, -1e6 - 0.5};
+    pt_journey j;
+    size_t i;
+    int bad = 0;
+
+    journey_at(&j, tri, (pt_vec3){-1, -1, 0});
+    for (i = 0; i < sizeof xs / sizeof xs[0]; i++) {
+        pt_vec2 pp = {xs[i], -xs[i]};
+        pt_pix vp = ptref_pixel2viewport(pp, j.par.w, j.par.h, NULL);
+        int64_t rx, ry;
+        char want[PT_EXPLAINLEN], nx[PT_NUMLEN], ny[PT_NUMLEN];
+
+        j.rec[PT_STAGE_PIXEL].x = pp.x;
+        j.rec[PT_STAGE_PIXEL].y = pp.y;
+        j.rec[PT_STAGE_VIEWPORT].ix = vp.x;     /* as the run would have it */
+        j.rec[PT_STAGE_VIEWPORT].iy = vp.y;
+        pt_pix_round(pp.x, &rx);
+        pt_pix_round(pp.y, &ry);
+        pt_fmt_shortest(nx, pp.x);
+        pt_fmt_shortest(ny, pp.y);
+        snprintf(want, sizeof want, "x_vp = round(x_pp) - 1 = round(%s) - 1 = %lld - 1 = %lld | "
+                 "y_vp = h - round(y_pp) = 10 - round(%s) = 10 - %s%lld%s = %lld", nx,
+                 (long long)rx, (long long)(rx - 1), ny, ry < 0 ? "(" : "", (long long)ry,
+                 ry < 0 ? ")" : "", (long long)(10 - ry));
+        if (vp.x != rx - 1 || vp.y != 10 - ry || strcmp(stage_text(&j, PT_STAGE_VIEWPORT), want)) {
+            bad++;
+            printf("  x_pp = %s: %s\n  want %s\n", nx, b, want);
+        }
+    }
+    PT_CHECK("ex-7.7 the viewport's text: true arithmetic, ending in the stage's values", bad == 0);
+}
+
 int main(void)
 {
     test_triangle();
@@ -451,5 +537,7 @@ int main(void)
     test_matrix();
     test_java();
     test_formulas_are_the_table();
+    test_student_records();
+    test_viewport_text_is_the_stage();
     return pt_test_report();
 }

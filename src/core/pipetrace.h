@@ -20,6 +20,7 @@
 #include "stages/pt_mat4.h"            /* 4x4 matrices on row vectors */
 #include "stages/pt_classic.h"         /* the classic camera's stages, in order */
 #include "stages/pt_matrix.h"          /* the matrix camera's stages, in order */
+#include "stages/pt_ref.h"             /* the reference copy of s1..s6 (ptref_) */
 #include "stages/s1_model2camera.h"
 #include "stages/s2_camera2image.h"
 #include "stages/s3_image2pixel.h"

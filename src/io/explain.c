@@ -145,32 +145,31 @@ static void add_java(text *t, double x, int k)
     add(t, " here)");
 }
 
-static void explain_viewport(text *t, const pt_journey *j, int k)
+/* x_vp = round(x_pp) - 1, y_vp = h - round(y_pp): the rounding is
+** pt_pix_round()'s, the result cur's, the reference stage's record. */
+static void explain_viewport(text *t, const pt_journey *j, const pt_vrec *cur, int k)
 {
-    const pt_vrec *pp = &j->rec[PT_STAGE_PIXEL];
+    const pt_vrec *pp = &j->rec[prev_stage(j, PT_STAGE_VIEWPORT)];
     double x = comp(pp, k);
-    int64_t r, v;
+    int64_t r;
 
     add_lhs(t, PT_STAGE_VIEWPORT, k);
     add(t, k == 0 ? "round(x_pp) - 1 = round(" : "h - round(y_pp) = ");
     if (k == 1) { add_int(t, j->par.h, 0); add(t, " - round("); }
     add_num(t, x, 0);
     add(t, k == 0 ? ") - 1" : ")");
-    if (!pt_pix_round(x, &r)) {
+    if (!pt_pix_round(x, &r) || !pt_rec_has(cur, k)) {
         add(t, ": none, ");
         add(t, no_pixel_why(x));
         add_java(t, x, k);
         return;
     }
     add(t, " = ");
-    if (k == 0) { add_int(t, r, 0); add(t, " - 1 = "); v = r - 1; }  /* x_vp = round(x_pp) - 1 */
-    else {                                                          /* y_vp = h - round(y_pp) */
-        add_int(t, j->par.h, 0); add(t, " - "); add_int(t, r, 1); add(t, " = ");
-        v = j->par.h - r;
-    }
-    add_int(t, v, 0);
+    if (k == 0) { add_int(t, r, 0); add(t, " - 1 = "); }
+    else { add_int(t, j->par.h, 0); add(t, " - "); add_int(t, r, 1); add(t, " = "); }
+    add_int(t, k == 0 ? cur->ix : cur->iy, 0);
     if (r != (int64_t)pt_explain_java_int_round(x)) add_java(t, x, k);     /* past 32 bits */
-    if (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL) {   /* the other one has none */
+    if (cur->flags & PT_REC_NULL) {         /* the other one has none */
         add(t, ", but the viewport pixel has no value: ");
         add(t, pt_stage_infos[PT_STAGE_VIEWPORT].coord[1 - k]);
         add(t, " has none (");
@@ -202,63 +201,41 @@ static void explain_product(text *t, const pt_journey *j, pt_stage st, int k)
     add_num(t, comp(&j->rec[st], k), 0);
 }
 
-static void explain_matrix_stage(text *t, const pt_journey *j, pt_stage st, int k)
+/* The cvv stage's outcode and the planes it names. */
+static void explain_cvv(text *t, const pt_vrec *cur)
 {
-    const pt_vrec *prev = &j->rec[prev_stage(j, st)];
-    const pt_vrec *cur = &j->rec[st];
     int b, first = 1;
 
-    switch (st) {
-    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
-        explain_product(t, j, st, k);
-        break;
-    case PT_STAGE_CVV:                                      /* the outcode */
-        add(t, "code = ");
-        add_int(t, cur->code, 0);
-        if (!cur->code) { add(t, ": 0 <= z <= w, -w <= x <= w, -w <= y <= w"); break; }
-        add(t, ": outside");
-        for (b = 0; b < PT_CVV_NPLANES; b++) {
-            if (!(cur->code & (1u << b))) continue;
-            add(t, first ? " " : ", ");
-            first = 0;
-            add(t, pt_cvv_names[b]);
-        }
-        add(t, " (w_k = "); add_num(t, cur->w, 0); add(t, ")");
-        break;
-    case PT_STAGE_NDC:                                      /* x_n = x_k / w_k */
-        add_lhs(t, st, k);
-        add(t, k == 0 ? "x_k / w_k = " : k == 1 ? "y_k / w_k = " : "z_k / w_k = ");
-        add_num(t, comp(prev, k), 0); add(t, " / "); add_num(t, prev->w, 1);
-        add(t, " = "); add_num(t, comp(cur, k), 0);
-        break;
-    case PT_STAGE_SCREEN:
-        add_lhs(t, st, k);
-        if (k == 2) { add(t, "z_n = "); add_num(t, cur->z, 0); break; }
-        add(t, k == 0 ? "(x_n + 1) * w * 0.5 = (" : "(1 - y_n) * h * 0.5 = (1 - ");
-        add_num(t, comp(prev, k), k == 1);
-        add(t, k == 0 ? " + 1) * " : ") * ");
-        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, " * 0.5 = ");
-        add_num(t, comp(cur, k), 0);
-        break;
-    default:                                                /* viewport: floor */
-        add_lhs(t, st, k);
-        add(t, k == 0 ? "floor(x_s) = floor(" : "floor(y_s) = floor(");
-        add_num(t, comp(prev, k), 0); add(t, ")");
-        if (cur->flags & PT_REC_NULL) { add(t, ": none, "); add(t, no_pixel_why(comp(prev, k))); break; }
-        add(t, " = "); add_int(t, k == 0 ? cur->ix : cur->iy, 0);
-        break;
+    add(t, "code = ");
+    add_int(t, cur->code, 0);
+    if (!cur->code) { add(t, ": 0 <= z <= w, -w <= x <= w, -w <= y <= w"); return; }
+    add(t, ": outside");
+    for (b = 0; b < PT_CVV_NPLANES; b++) {
+        if (!(cur->code & (1u << b))) continue;
+        add(t, first ? " " : ", ");
+        first = 0;
+        add(t, pt_cvv_names[b]);
     }
+    add(t, " (w_k = "); add_num(t, cur->w, 0); add(t, ")");
 }
 
-static void explain_coord(text *t, const pt_journey *j, pt_stage st, int k)
+/* The matrix camera's viewport stage: x_vp = floor(x_s). */
+static void explain_floor(text *t, const pt_vrec *prev, const pt_vrec *cur, int k)
 {
-    const pt_vrec *prev = st > PT_STAGE_MODEL ? &j->rec[prev_stage(j, st)] : NULL;
-    const pt_vrec *cur = &j->rec[st];
+    add_lhs(t, PT_STAGE_VIEWPORT, k);
+    add(t, k == 0 ? "floor(x_s) = floor(" : "floor(y_s) = floor(");
+    add_num(t, comp(prev, k), 0); add(t, ")");
+    if (cur->flags & PT_REC_NULL) { add(t, ": none, "); add(t, no_pixel_why(comp(prev, k))); return; }
+    add(t, " = "); add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+}
 
-    if (st >= PT_NSTAGES || (j->matrix && st == PT_STAGE_VIEWPORT)) {
-        explain_matrix_stage(t, j, st, k);
-        return;
-    }
+/* Coordinate k of stage st: its formula, the numbers of the stage before
+** (the run's record) put in, and cur's result, the reference's record for
+** the stages it has (pt_ref_has), else the run's. */
+static void explain_coord(text *t, const pt_journey *j, pt_stage st, const pt_vrec *cur, int k)
+{
+    const pt_vrec *prev = &j->rec[prev_stage(j, st)];
+
     switch (st) {
     case PT_STAGE_MODEL:                                    /* as given */
         add_lhs(t, st, k);
@@ -298,7 +275,8 @@ static void explain_coord(text *t, const pt_journey *j, pt_stage st, int k)
         add_num(t, comp(cur, k), 0);
         break;
     case PT_STAGE_VIEWPORT:
-        explain_viewport(t, j, k);
+        if (j->matrix) explain_floor(t, prev, cur, k);
+        else explain_viewport(t, j, cur, k);
         break;
     case PT_STAGE_FRAMEBUFFER:                              /* x_fb = x_ul + x_vp */
         add_lhs(t, st, k);
@@ -312,7 +290,7 @@ static void explain_coord(text *t, const pt_journey *j, pt_stage st, int k)
         add_int(t, k == 0 ? prev->ix : prev->iy, 1); add(t, " = ");
         add_int(t, k == 0 ? cur->ix : cur->iy, 0);
         break;
-    default:                                                /* idx = y_fb * W + x_fb */
+    case PT_STAGE_INDEX:                                    /* idx = y_fb * W + x_fb */
         add(t, "idx = y_fb * W + x_fb");
         if (prev->flags & PT_REC_NULL) {
             add(t, ": none, the pixel has no value");
@@ -329,12 +307,47 @@ static void explain_coord(text *t, const pt_journey *j, pt_stage st, int k)
             add_int(t, cur->i, 0);
         }
         break;
+    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
+        explain_product(t, j, st, k);
+        break;
+    case PT_STAGE_CVV:                                      /* the outcode */
+        explain_cvv(t, cur);
+        break;
+    case PT_STAGE_NDC:                                      /* x_n = x_k / w_k */
+        add_lhs(t, st, k);
+        add(t, k == 0 ? "x_k / w_k = " : k == 1 ? "y_k / w_k = " : "z_k / w_k = ");
+        add_num(t, comp(prev, k), 0); add(t, " / "); add_num(t, prev->w, 1);
+        add(t, " = "); add_num(t, comp(cur, k), 0);
+        break;
+    case PT_STAGE_SCREEN:
+        add_lhs(t, st, k);
+        if (k == 2) { add(t, "z_n = "); add_num(t, cur->z, 0); break; }
+        add(t, k == 0 ? "(x_n + 1) * w * 0.5 = (" : "(1 - y_n) * h * 0.5 = (1 - ");
+        add_num(t, comp(prev, k), k == 1);
+        add(t, k == 0 ? " + 1) * " : ") * ");
+        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, " * 0.5 = ");
+        add_num(t, comp(cur, k), 0);
+        break;
+    case PT_NSTAGES_ALL:
+        break;
     }
+}
+
+/* "your stage gave x_vp = 2": value k of the run's record r of stage st. */
+static void add_yours(text *t, pt_stage st, const pt_vrec *r, int k)
+{
+    add(t, "your stage gave ");
+    add_lhs(t, st, k);
+    if (pt_stage_infos[st].nreal) add_num(t, comp(r, k), 0);
+    else if (!pt_rec_has(r, k)) add(t, "none");
+    else add_int(t, st == PT_STAGE_INDEX ? r->i : k ? r->iy : r->ix, 0);
 }
 
 size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
                         const char *sep)
 {
+    pt_vrec ref;
+    unsigned differ;
     text t;
     int k;
 
@@ -352,11 +365,28 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
         add(&t, " stage did not report its record: the numbers it handed on are not known");
         return t.len;
     }
+    if (!pt_ref_has(st, j->matrix)
+        || !pt_ref_stage(st, &j->par, &j->rec[prev_stage(j, st)], &ref)) ref = j->rec[st];
+    differ = pt_ref_differ(st, &j->rec[st], &ref);
     for (k = 0; k < pt_coord_count(st); k++) {
         if (k) add(&t, sep);
-        explain_coord(&t, j, st, k);
+        explain_coord(&t, j, st, &ref, k);
+        if (differ & 1u << k) { add(&t, sep); add_yours(&t, st, &j->rec[st], k); }
     }
     return t.len;
+}
+
+void pt_explain_reference(pt_journey *ref, const pt_journey *j)
+{
+    int i;
+
+    *ref = *j;
+    for (i = 1; i < j->norder; i++) {
+        pt_stage st = j->order[i];
+        if (!pt_ref_has(st, j->matrix)) continue;
+        pt_ref_stage(st, &j->par, &ref->rec[j->order[i - 1]], &ref->rec[st]);
+        ref->reported |= 1u << st;
+    }
 }
 
 /* ===== values as a tuple ===== */
@@ -566,7 +596,7 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
     case PT_STAGE_SCREEN:
         add(&t, "the viewport stage takes the pixel whose square contains (x_s, y_s): floor of each");
         break;
-    default:
+    case PT_STAGE_INDEX:
         if (r->flags & PT_REC_NULL)
             add(&t, "outside the framebuffer: no index, nothing is stored for this point");
         else {
@@ -576,6 +606,8 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
             if (!(j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
                 add(&t, " (never written: outside the viewport)");
         }
+        break;
+    case PT_NSTAGES_ALL:
         break;
     }
     return t.len;

@@ -44,9 +44,22 @@ const char *pt_coord_name(pt_stage st, int k);
 **   "x_c = x_m + x_t = -1 + (-1.5) = -2.5" sep "y_c = ..." sep "z_c = ..."
 ** Negative numbers after an operator are put in parentheses.  A result with no
 ** value says why ("none: (x_fb, y_fb) = (-2, 4) lies outside the 12 x 8
-** framebuffer").  Returns the length (see above).  This function can't fail. */
+** framebuffer").  Every equation is true arithmetic: the numbers put in are
+** the run's record of the stage before (what the stage was handed), the
+** result is the reference stage's (pt_ref_stage(), stages/pt_ref.h; the
+** matrix camera's own stages and the model are the run's).  Where the run's
+** record of st differs from it (a student's stage, make STAGE_x=FILE.c), the
+** coordinate's equation is followed by sep and "your stage gave y_vp = 2".
+** Returns the length (see above).  This function can't fail. */
 size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
                         const char *sep);
+
+/* j as the reference stages compute it, into *ref: a copy of j in which
+** each stage the reference has (pt_ref_has()) is computed again, in j's
+** order, from the reference's own record of the stage before; the model and
+** the matrix camera's own stages stay j's.  In a build without student
+** stages the values are j's.  This function can't fail. */
+void pt_explain_reference(pt_journey *ref, const pt_journey *j);
 
 /* Stage st's values in j as one tuple: "(x_c, y_c, z_c) = (-1, -1, -2)",
 ** "idx = 144", "(x_vp, y_vp) = none".  Returns the length.  Can't fail. */

@@ -2,9 +2,10 @@
 ** src/tools/catalogue.c -- the classic stages' right formulas and their known mistakes
 ** See LICENSE for copyright and license.
 **
-** Each formula is written in the order of operations of its stage in stages/
-** (tests/test_catalogue.c checks that they agree bit for bit); rounding and
-** the inside test are pt_round.h's own functions.
+** The right formulas are the reference stages themselves (pt_ref_stage(),
+** stages/pt_ref.h); each mistake is written in the order of operations of its
+** stage in stages/; rounding and the inside test are pt_round.h's own
+** functions.
 */
 #include <math.h>
 #include <string.h>
@@ -66,61 +67,38 @@ static void index_with(const pt_stage_params *par, int64_t mul_x, int64_t mul_y,
     out->n[0] = none ? 0 : y * mul_y + x * mul_x;
 }
 
-/* ===== the right formulas ===== */
+/* ===== the right formulas: the reference stages ===== */
+
+/* The record of stage st that holds v's values (pt_cat_val_of() backwards). */
+static void rec_of(pt_vrec *r, int st, const pt_cat_val *v)
+{
+    memset(r, 0, sizeof *r);
+    r->stage = (pt_stage)st;
+    r->flags = v->flags;
+    r->x = v->d[0]; r->y = v->d[1]; r->z = v->d[2];
+    if (st == PT_STAGE_INDEX) r->i = v->n[0];
+    else { r->ix = v->n[0]; r->iy = v->n[1]; }
+}
 
 int pt_cat_right(int st, const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
 {
-    const double t[3] = {par->translate.x, par->translate.y, par->translate.z};
-    int k;
+    pt_vrec a, b;
 
     memset(out, 0, sizeof *out);
-    switch (st) {
-    case PT_STAGE_CAMERA:                   /* x_c = x_m + x_t */
-        for (k = 0; k < 3; k++) out->d[k] = in->d[k] + t[k];
-        return 1;
-    case PT_STAGE_IMAGE:
-        if (par->perspective) {
-            out->d[0] = in->d[0] / -in->d[2];   /* x_ip = x_c / -z_c */
-            out->d[1] = in->d[1] / -in->d[2];
-            out->d[2] = -1.0;
-        } else {
-            out->d[0] = in->d[0];               /* x_ip = x_c */
-            out->d[1] = in->d[1];
-            out->d[2] = 0.0;
-        }
-        return 1;
-    case PT_STAGE_PIXEL:                    /* x_pp = 0.5 + w/2.001 * (x_ip + 1) */
-        out->d[0] = 0.5 + par->w / PT_PIXEL_DIVISOR * (in->d[0] + 1);
-        out->d[1] = 0.5 + par->h / PT_PIXEL_DIVISOR * (in->d[1] + 1);
-        return 1;
-    case PT_STAGE_VIEWPORT:                 /* x_vp = round(x_pp) - 1, y_vp = h - round(y_pp) */
-        viewport_with(NULL, -1, -1, par->h, in, out);
-        return 1;
-    case PT_STAGE_FRAMEBUFFER:              /* x_fb = x_ul + x_vp */
-        framebuffer_with(par->x_ul, par->y_ul, in, out);
-        return 1;
-    case PT_STAGE_INDEX:                    /* idx = y_fb * W + x_fb */
-        index_with(par, 1, par->W, in, out);
-        return 1;
-    default:
-        return 0;
-    }
+    if (st <= PT_STAGE_MODEL || st >= PT_NSTAGES) return 0;
+    rec_of(&a, st - 1, in);
+    if (!pt_ref_stage((pt_stage)st, par, &a, &b)) return 0;
+    pt_cat_val_of(out, &b);
+    return 1;
 }
 
 unsigned pt_cat_differ(int st, const pt_cat_val *a, const pt_cat_val *b)
 {
-    const pt_stage_info *in = &pt_stage_infos[st];
-    unsigned m = 0;
-    int k;
+    pt_vrec ra, rb;
 
-    for (k = 0; k < in->nreal; k++)
-        if (memcmp(&a->d[k], &b->d[k], sizeof a->d[k]) != 0 &&
-            !(isnan(a->d[k]) && isnan(b->d[k]))) m |= 1u << k;
-    for (k = 0; k < in->nint; k++) {
-        int has = pt_cat_has(a, k);
-        if (has != pt_cat_has(b, k) || (has && a->n[k] != b->n[k])) m |= 1u << k;
-    }
-    return m;
+    rec_of(&ra, st, a);
+    rec_of(&rb, st, b);
+    return pt_ref_differ((pt_stage)st, &ra, &rb);
 }
 
 /* ===== the known mistakes ===== */
@@ -156,7 +134,7 @@ static void mk_two_int(const pt_stage_params *par, const pt_cat_val *in, pt_cat_
 static void mk_swap_wh(const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
 {
     pt_vec3 ip = {in->d[0], in->d[1], in->d[2]};
-    pt_vec2 pp = pt_image2pixel(ip, par->h, par->w, NULL);
+    pt_vec2 pp = ptref_image2pixel(ip, par->h, par->w, NULL);
 
     out->d[0] = pp.x;
     out->d[1] = pp.y;

@@ -13,13 +13,14 @@
 **   raster     the rasterizer's rounding mistakes, as viewport stages with
 **              that rounding (pt_raster_vp), to hand to pt_raster_segment().
 **
-** The right formulas are written out here again on purpose: a student build
-** replaces a stage's .c file (make STAGE_pixel=FILE.c), and the tools must
-** still know the reference.  tests/test_catalogue.c ties them to stages/: on
-** every reference case each right formula gives the stage's record bit for
-** bit.  They round and test "inside" with stages/pt_round.h, which a student
-** does not replace.  A mistake that is the right formula with wrong inputs
-** (w and h swapped) calls the stage function with those inputs.
+** The right formulas are not written again here: a student build replaces a
+** stage's .c file (make STAGE_pixel=FILE.c), so they are the reference copy
+** of the stages that every build holds (ptref_*, pt_ref_stage(),
+** stages/pt_ref.h).  tests/test_catalogue.c checks, on every reference case,
+** that they give the stage's record bit for bit.  The mistakes round and test
+** "inside" with stages/pt_round.h, which a student does not replace; a mistake
+** that is the right formula with wrong inputs (w and h swapped) calls the
+** reference stage with those inputs.
 */
 #ifndef PT_CATALOGUE_H
 #define PT_CATALOGUE_H
@@ -48,7 +49,7 @@ void pt_cat_val_of(pt_cat_val *v, const pt_vrec *r);
 
 /* The right formula of classic stage st (camera .. index) applied to in, the
 ** previous stage's values, with the numbers of par; the result into *out,
-** computed as stages/ computes it, bit for bit.  Returns 1, or 0 (and *out
+** as the reference stage (pt_ref_stage()) computes it, in a student build too.  Returns 1, or 0 (and *out
 ** zeroed) when st has no formula here (model, the matrix camera's stages).
 ** Requires par->w, h, W, H >= 1.  This function can't fail. */
 int pt_cat_right(int st, const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out);

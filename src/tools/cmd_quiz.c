@@ -7,7 +7,9 @@
 **
 ** Asks for each stage's values in pipeline order, one line of standard input
 ** per stage ("camera: x_c y_c z_c = ? "), and checks each answer against the
-** pipeline's own numbers (src/io/explain.h).  Real numbers are right within 1e-6
+** reference stages' numbers (pt_explain_reference(), src/io/explain.h): in a
+** student build (make STAGE_x=FILE.c) the student's stage is not the answer
+** key, and a line under the first says so.  Real numbers are right within 1e-6
 ** absolute or 1e-6 relative; pixel coordinates and the index must be exact;
 ** "none" answers a value that does not exist.  A wrong answer gets the formula
 ** with the numbers put in, and the quiz goes on from the right value, so one
@@ -405,7 +407,7 @@ int pt_cmd_quiz(int argc, char **argv)
     unsigned long long v = 0, seed = 0;
     int k, seeded = 0, picked = 0, json = 0, inter = 0, rc = PT_EXIT_OK;
     const pt_model *m = NULL;
-    pt_journey j;
+    pt_journey run, j;                      /* the run's records, the reference's */
     pt_scene s;
     quiz q;
     uint64_t n;
@@ -479,11 +481,12 @@ int pt_cmd_quiz(int argc, char **argv)
         picked = 1;
     }
 
-    if (pt_run_journey(&j, &s, m, v, 0) != 0) {
+    if (pt_run_journey(&run, &s, m, v, 0) != 0) {
         fputs("pipetrace quiz: out of memory\n", stderr);
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
+    pt_explain_reference(&j, &run);         /* a student's stage is not the answer */
     memset(&q, 0, sizeof q);
     q.j = &j;
     q.first = 0;
@@ -516,6 +519,8 @@ int pt_cmd_quiz(int argc, char **argv)
         printf("pipetrace quiz: vertex %llu of model %s in %s", v, m->name, s.path);
         if (picked) printf(" (picked with --seed %llu)", seed);
         putchar('\n');
+        if (pt_cli_student_note(t, sizeof t))
+            printf("%s; the answers are checked against the reference stages\n", t);
         printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n",
                s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
                s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);

@@ -23,7 +23,6 @@
 #include "tools/cli.h"
 #include "io/explain.h"
 #include "io/numfmt.h"
-#include "tools/catalogue.h"
 #include "core/pipetrace.h"
 
 
@@ -75,42 +74,6 @@ static void para(const char *fmt, ...)
     fputs(b, term.f);
 }
 
-/* Value k of v (stage st) as text: the shortest double, the integer, "none". */
-static const char *value_text(char *b, size_t n, int st, const pt_cat_val *v, int k)
-{
-    if (pt_stage_infos[st].nreal) pt_fmt_shortest(b, v->d[k]);
-    else if (!pt_cat_has(v, k)) snprintf(b, n, "none");
-    else snprintf(b, n, "%lld", (long long)v->n[k]);
-    return b;
-}
-
-/* Stage i of journey j against the catalogue's right formula applied to the
-** stage before: in a student build (make STAGE_pixel=FILE.c) the stage is the
-** student's, the formula the reference.  Prints one line per value where they
-** differ, none where they agree (always, in the reference build:
-** tests/test_catalogue.c). */
-static void check_stage(const pt_journey *j, int i)
-{
-    pt_stage st = j->order[i];
-    pt_cat_val in, want, got;
-    unsigned m;
-    int k;
-
-    if (j->matrix || i == 0 || j->order[i - 1] != st - 1) return;
-    if ((j->reported & 3u << (st - 1)) != 3u << (st - 1)) return;   /* not reported */
-    pt_cat_val_of(&in, &j->rec[st - 1]);
-    pt_cat_val_of(&got, &j->rec[st]);
-    if (!pt_cat_right(st, &j->par, &in, &want)) return;
-    m = pt_cat_differ(st, &got, &want);
-    for (k = 0; k < pt_stage_nvalues(st); k++) {
-        char a[PT_NUMLEN], b[PT_NUMLEN];
-        if (!(m & 1u << k)) continue;
-        fprintf(term.f, "  check    your stage gave %s = %s; the formula gives %s\n",
-               pt_stage_infos[st].coord[k], value_text(a, sizeof a, st, &got, k),
-               value_text(b, sizeof b, st, &want, k));
-    }
-}
-
 /* Print stage st of journey j: name, spaces, what, formula, numbers, next. */
 static void show_stage(const pt_journey *j, int i)
 {
@@ -124,7 +87,6 @@ static void show_stage(const pt_journey *j, int i)
     fprintf(term.f, "  formula  %s\n", in->formula);
     pt_explain_stage(b, sizeof b, j, st, "\n           ");
     fprintf(term.f, "  here     %s\n", b);
-    check_stage(j, i);
     pt_explain_next(b, sizeof b, j, st);
     fprintf(term.f, "  next     %s\n", b);
 }

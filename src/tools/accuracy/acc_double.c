@@ -33,7 +33,7 @@ static void camera(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
 
     (void)v;
     m.x = j->m[0].hi; m.y = j->m[1].hi; m.z = j->m[2].hi;
-    cc = pt_model2camera(m, c->par.translate, NULL);
+    cc = ptref_model2camera(m, c->par.translate, NULL);
     j->c[0] = pt_acc_dd(cc.x); j->c[1] = pt_acc_dd(cc.y); j->c[2] = pt_acc_dd(cc.z);
 }
 
@@ -43,7 +43,7 @@ static void image(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
 
     (void)v;
     cc.x = j->c[0].hi; cc.y = j->c[1].hi; cc.z = j->c[2].hi;
-    ip = pt_camera2image(cc, fmax(fabs(j->m[2].hi), fabs(c->par.translate.z)),
+    ip = ptref_camera2image(cc, fmax(fabs(j->m[2].hi), fabs(c->par.translate.z)),
                          c->par.perspective, NULL);
     j->ip[0] = pt_acc_dd(ip.x); j->ip[1] = pt_acc_dd(ip.y);
 }
@@ -56,7 +56,7 @@ static void pixel(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
     (void)v;
     ip.x = j->ip[0].hi; ip.y = j->ip[1].hi; ip.z = 0.0;     /* z_ip: not used */
     pp = c->choices & PT_ACC_TWO ? image2pixel_two(ip, c->par.w, c->par.h)
-                                 : pt_image2pixel(ip, c->par.w, c->par.h, NULL);
+                                 : ptref_image2pixel(ip, c->par.w, c->par.h, NULL);
     j->pp[0] = pt_acc_dd(pp.x); j->pp[1] = pt_acc_dd(pp.y);
 }
 
@@ -66,19 +66,19 @@ static void viewport(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
 
     (void)v;
     pp.x = j->pp[0].hi; pp.y = j->pp[1].hi;
-    j->vp = pt_pixel2viewport(pp, c->par.w, c->par.h, NULL);
+    j->vp = ptref_pixel2viewport(pp, c->par.w, c->par.h, NULL);
 }
 
 static void framebuffer(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
 {
     (void)v;
-    j->fb = pt_viewport2fb(j->vp, c->par.x_ul, c->par.y_ul, NULL);
+    j->fb = ptref_viewport2fb(j->vp, c->par.x_ul, c->par.y_ul, NULL);
 }
 
 static void index_stage(const pt_acc_sctx *c, pt_vec3 v, pt_acc_journey *j)
 {
     (void)v;
-    j->idx = pt_fb2index(j->fb, c->par.W, c->par.H, NULL);
+    j->idx = ptref_fb2index(j->fb, c->par.W, c->par.H, NULL);
 }
 
 /* ===== the DDA ===== */
@@ -259,12 +259,12 @@ static void t_viewport(const pt_scene *s, pt_acc_mtail *t)
 
 static void t_framebuffer(const pt_scene *s, pt_acc_mtail *t)
 {
-    t->fb = pt_viewport2fb(t->vp, s->vp_x, s->vp_y, NULL);
+    t->fb = ptref_viewport2fb(t->vp, s->vp_x, s->vp_y, NULL);
 }
 
 static void t_index(const pt_scene *s, pt_acc_mtail *t)
 {
-    t->idx = pt_fb2index(t->fb, s->fb_w, s->fb_h, NULL);
+    t->idx = ptref_fb2index(t->fb, s->fb_w, s->fb_h, NULL);
 }
 
 static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,

@@ -142,7 +142,7 @@ typedef struct pt_acc_dda {
     void *ud;
     int w, h;                    /* the viewport */
     pt_raster_vp to_vp;          /* the viewport stage the double run's rasterizer
-                                 ** asks (src/core/raster.h): pt_pixel2viewport,
+                                 ** asks (src/core/raster.h): ptref_pixel2viewport,
                                  ** or pt_pixelplane2viewport (matrix camera) */
 } pt_acc_dda;
 

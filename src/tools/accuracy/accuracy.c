@@ -123,7 +123,7 @@ int pt_acc_raster_segment(pt_arith a, unsigned choices, pt_dd x0, pt_dd y0,
     pt_dd p0[2], p1[2];
 
     o.pixel = pixel; o.step = NULL; o.ud = ud; o.w = w; o.h = h;
-    o.to_vp = pt_pixel2viewport;
+    o.to_vp = ptref_pixel2viewport;
     p0[0] = x0; p0[1] = y0; p1[0] = x1; p1[1] = y1;
     return ops[a]->raster(p0, p1, a == PT_ARITH_DD ? 0 : choices, &o);
 }
@@ -413,7 +413,7 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     o.ud = &c;
     o.w = s->vp_w;
     o.h = s->vp_h;
-    o.to_vp = s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
+    o.to_vp = s->matrix ? pt_pixelplane2viewport : ptref_pixel2viewport;
     raster_scene(r, &o, &c.rgb, 1);
     if (c.oom) { free(c.px); pt_acc_run_free(r); return -1; }
     for (k = 0; s->matrix && k < s->nmodels; k++)
@@ -610,7 +610,7 @@ double pt_acc_raster_pass(const pt_acc_run *r, uint64_t *pixels)
     o.ud = &t;
     o.w = r->s->vp_w;
     o.h = r->s->vp_h;
-    o.to_vp = r->s->matrix ? pt_pixelplane2viewport : pt_pixel2viewport;
+    o.to_vp = r->s->matrix ? pt_pixelplane2viewport : ptref_pixel2viewport;
     raster_scene(r, &o, NULL, 0);
     *pixels = t.n;
     return (double)t.sum;
