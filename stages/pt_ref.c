@@ -20,13 +20,11 @@ static pt_pix pix_of(const pt_vrec *r)
     return pt_pix_mark(p, pt_rec_has(r, 0) | pt_rec_has(r, 1) << 1);
 }
 
-int pt_ref_has(pt_stage st, int matrix)
+int pt_ref_has(pt_stage st)
 {
     switch (st) {
     case PT_STAGE_CAMERA: case PT_STAGE_IMAGE: case PT_STAGE_PIXEL:
-    case PT_STAGE_VIEWPORT:
-        return !matrix;
-    case PT_STAGE_FRAMEBUFFER: case PT_STAGE_INDEX:
+    case PT_STAGE_VIEWPORT: case PT_STAGE_FRAMEBUFFER: case PT_STAGE_INDEX:
         return 1;
     case PT_STAGE_MODEL: case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
     case PT_STAGE_CVV: case PT_STAGE_NDC: case PT_STAGE_SCREEN: case PT_NSTAGES_ALL:

@@ -34,11 +34,10 @@ pt_pix ptref_pixel2viewport(pt_vec2 pp, int w, int h, const pt_sink *sink);
 pt_pix ptref_viewport2fb(pt_pix vp, int x_ul, int y_ul, const pt_sink *sink);
 int64_t ptref_fb2index(pt_pix fb, int W, int H, const pt_sink *sink);
 
-/* 1 when the reference computes stage st here: camera .. index of the
-** classic camera; of the matrix camera (matrix != 0) framebuffer and index
-** only, the stages it shares with the classic one (its own are no
-** student's).  This function can't fail. */
-int pt_ref_has(pt_stage st, int matrix);
+/* 1 when the reference has a copy of stage st: camera .. index (a pipeline
+** says which of its stages are these files: pt_pipeline.ref_stages).  This
+** function can't fail. */
+int pt_ref_has(pt_stage st);
 
 /* The record the reference stage st (pt_ref_has(st, 0)) reports when handed
 ** in, the record of the stage before it, with the numbers of par, into *out.

@@ -5,6 +5,7 @@
 #include <assert.h>
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 #include "core/pipeline.h"
 #include "core/raster.h"
@@ -107,15 +108,18 @@ static const pt_segstage matrix_segstages[] = {
 };
 
 const pt_pipeline pt_pipe_classic = {
-    PT_PIPE_CLASSIC, "classic", NULL, pt_classic_order, PT_CLASSIC_NORDER,
+    PT_PIPE_CLASSIC, "classic", "classic camera", NULL, pt_classic_order, PT_CLASSIC_NORDER,
     PT_STAGE_INDEX, &pt_stage_infos[PT_STAGE_VIEWPORT],
+    1u << PT_STAGE_CAMERA | 1u << PT_STAGE_IMAGE | 1u << PT_STAGE_PIXEL |
+    1u << PT_STAGE_VIEWPORT | 1u << PT_STAGE_FRAMEBUFFER | 1u << PT_STAGE_INDEX,
     NULL, classic_in, classic_vertex, NULL, 0, NULL, NULL,
     pt_pixel2viewport, 1,
 };
 
 const pt_pipeline pt_pipe_matrix = {
-    PT_PIPE_MATRIX, "matrix", "lookat", pt_matrix_order, PT_MATRIX_NORDER,
+    PT_PIPE_MATRIX, "matrix", "matrix camera", "lookat", pt_matrix_order, PT_MATRIX_NORDER,
     PT_STAGE_CVV, &pt_matrix_viewport_info,
+    1u << PT_STAGE_FRAMEBUFFER | 1u << PT_STAGE_INDEX,   /* the stages it shares */
     matrix_plan, matrix_in, matrix_vertex,
     matrix_segstages, (int)(sizeof matrix_segstages / sizeof matrix_segstages[0]),
     matrix_seed, matrix_made,
@@ -127,6 +131,33 @@ const pt_pipeline *const pt_pipelines[PT_NPIPES] = { &pt_pipe_classic, &pt_pipe_
 const pt_pipeline *pt_scene_pipeline(const pt_scene *s)
 {
     return pt_pipelines[s->pipe];
+}
+
+const char *pt_scene_camera_title(const pt_scene *s, char *buf, size_t len)
+{
+    const pt_pipeline *pl = pt_scene_pipeline(s);
+
+    if (!pl->camera) snprintf(buf, len, "%s", pt_scene_camera_word(s));
+    else snprintf(buf, len, "%s (%s)", pl->camera, pl->title);
+    return buf;
+}
+
+const char *pt_scene_camera_word(const pt_scene *s)
+{
+    const pt_pipeline *pl = pt_scene_pipeline(s);
+
+    return pl->camera ? pl->camera : s->perspective ? "perspective" : "orthographic";
+}
+
+const pt_pipeline *pt_pipeline_by_camera(const char *word)
+{
+    int k;
+
+    for (k = 0; k < PT_NPIPES; k++)
+        if (pt_pipelines[k]->camera && strcmp(pt_pipelines[k]->camera, word) == 0)
+            return pt_pipelines[k];
+    return strcmp(word, "perspective") == 0 || strcmp(word, "orthographic") == 0
+           ? &pt_pipe_classic : NULL;
 }
 
 const pt_pipeline *pt_pipeline_by_name(const char *name)

@@ -156,13 +156,24 @@ typedef struct pt_listener {
 #define PT_PIECE_PIXELS   8192
 
 /* The pipelines (core/pipelines.h), indexed by pt_pipe_id; the one scene s
-** names; the one named name ("classic", "matrix"), or NULL.  These functions
-** can't fail. */
+** names; the one named name ("classic", "matrix"), or NULL; the one a trace
+** header's camera word names ("perspective" and "orthographic": classic,
+** "lookat": matrix), or NULL.  These functions can't fail. */
 extern const pt_pipeline pt_pipe_classic;
 extern const pt_pipeline pt_pipe_matrix;
 extern const pt_pipeline *const pt_pipelines[PT_NPIPES];
 const pt_pipeline *pt_scene_pipeline(const pt_scene *s);
 const pt_pipeline *pt_pipeline_by_name(const char *name);
+const pt_pipeline *pt_pipeline_by_camera(const char *word);
+
+/* The word the trace's header gives scene s's camera: "perspective",
+** "orthographic" or "lookat"; and as the tools' headings name it, with the
+** pipeline's title where the word is the pipeline's own: "lookat (matrix
+** camera)", into buf (len bytes, at least PT_CAMERA_TITLE), which it returns.
+** These functions can't fail. */
+#define PT_CAMERA_TITLE 64
+const char *pt_scene_camera_word(const pt_scene *s);
+const char *pt_scene_camera_title(const pt_scene *s, char *buf, size_t len);
 
 /* Fill *par with the numbers of scene s that the classic stages use for its
 ** model m.  This function can't fail. */

@@ -72,6 +72,7 @@ typedef struct pt_segstage {
 typedef struct pt_pipeline {
     pt_pipe_id id;               /* its place in pt_pipelines[] */
     const char *name;            /* its name in the trace's header: "classic" */
+    const char *title;           /* what the tools call it: "matrix camera" */
     const char *camera;          /* the camera line's word for it: "lookat", or
                                  ** NULL where the projection names it */
     const pt_stage *order;       /* its stages in pipeline order, */
@@ -79,6 +80,10 @@ typedef struct pt_pipeline {
     pt_stage stops_at;           /* a point whose runner says code != 0 stops
                                  ** after this stage (matrix: the cvv) */
     const pt_stage_info *viewport_info;     /* its viewport stage's row */
+    unsigned ref_stages;         /* bit st: its stage st is computed by a file
+                                 ** of s1 .. s6 (a student's can replace it),
+                                 ** whose reference copy (stages/pt_ref.h)
+                                 ** says what it should give */
     void (*plan)(struct pt_plan *p, const struct pt_scene *s, int raw_lookat);
                                  /* what the plan holds for it (matrices), or NULL */
     void (*model_in)(pt_pipe_in *in, const struct pt_scene *s,
@@ -108,6 +113,24 @@ typedef struct pt_pipeline {
 static inline const pt_stage_info *pt_pipeline_info(const pt_pipeline *pl, pt_stage st)
 {
     return st == PT_STAGE_VIEWPORT ? pl->viewport_info : &pt_stage_infos[st];
+}
+
+/* 1 when pl's stage st is a file of s1 .. s6, with a reference copy.  This
+** function can't fail. */
+static inline int pt_pipeline_ref(const pt_pipeline *pl, pt_stage st)
+{
+    return (pl->ref_stages >> st) & 1u;
+}
+
+/* The stage before st in pl's order, or -1 (st is the first, or not pl's).
+** This function can't fail. */
+static inline int pt_pipeline_prev(const pt_pipeline *pl, pt_stage st)
+{
+    int i;
+
+    for (i = 1; i < pl->norder; i++)
+        if (pl->order[i] == st) return (int)pl->order[i - 1];
+    return -1;
 }
 
 /* 1 when stage st is one of pl's.  This function can't fail. */

@@ -231,7 +231,7 @@ static void explain_floor(text *t, const pt_vrec *prev, const pt_vrec *cur, int 
 
 /* Coordinate k of stage st: its formula, the numbers of the stage before
 ** (the run's record) put in, and cur's result, the reference's record for
-** the stages it has (pt_ref_has), else the run's. */
+** the pipeline's stages it has (pt_pipeline_ref), else the run's. */
 static void explain_coord(text *t, const pt_journey *j, pt_stage st, const pt_vrec *cur, int k)
 {
     const pt_vrec *prev = &j->rec[prev_stage(j, st)];
@@ -274,8 +274,8 @@ static void explain_coord(text *t, const pt_journey *j, pt_stage st, const pt_vr
         add_num(t, comp(prev, k), 0); add(t, " + 1) = ");
         add_num(t, comp(cur, k), 0);
         break;
-    case PT_STAGE_VIEWPORT:
-        if (j->matrix) explain_floor(t, prev, cur, k);
+    case PT_STAGE_VIEWPORT:             /* the pipeline's own viewport stage */
+        if (j->pipe->to_viewport == pt_pixelplane2viewport) explain_floor(t, prev, cur, k);
         else explain_viewport(t, j, cur, k);
         break;
     case PT_STAGE_FRAMEBUFFER:                              /* x_fb = x_ul + x_vp */
@@ -365,7 +365,7 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
         add(&t, " stage did not report its record: the numbers it handed on are not known");
         return t.len;
     }
-    if (!pt_ref_has(st, j->matrix)
+    if (!pt_pipeline_ref(j->pipe, st)
         || !pt_ref_stage(st, &j->par, &j->rec[prev_stage(j, st)], &ref)) ref = j->rec[st];
     differ = pt_ref_differ(st, &j->rec[st], &ref);
     for (k = 0; k < pt_coord_count(st); k++) {
@@ -383,7 +383,7 @@ void pt_explain_reference(pt_journey *ref, const pt_journey *j)
     *ref = *j;
     for (i = 1; i < j->norder; i++) {
         pt_stage st = j->order[i];
-        if (!pt_ref_has(st, j->matrix)) continue;
+        if (!pt_pipeline_ref(j->pipe, st)) continue;
         pt_ref_stage(st, &j->par, &ref->rec[j->order[i - 1]], &ref->rec[st]);
         ref->reported |= 1u << st;
     }
@@ -540,8 +540,8 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
         return t.len;
     }
     switch (st) {
-    case PT_STAGE_MODEL:
-        if (j->matrix)
+    case PT_STAGE_MODEL:                /* what the stage after it does */
+        if (j->norder > 1 && j->order[1] == PT_STAGE_WORLD)
             add(&t, "the world stage multiplies (x_m, y_m, z_m, 1) by the model's world matrix");
         else if (tr.x == 0 && tr.y == 0 && tr.z == 0)
             add(&t, "the translation is (0, 0, 0): the camera stage changes nothing");

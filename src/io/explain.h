@@ -55,7 +55,7 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
                         const char *sep);
 
 /* j as the reference stages compute it, into *ref: a copy of j in which
-** each stage the reference has (pt_ref_has()) is computed again, in j's
+** each of j's stages the reference has (pt_pipeline_ref()) is computed again, in j's
 ** order, from the reference's own record of the stage before; the model and
 ** the matrix camera's own stages stay j's.  In a build without student
 ** stages the values are j's.  This function can't fail. */

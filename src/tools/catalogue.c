@@ -83,10 +83,13 @@ static void rec_of(pt_vrec *r, int st, const pt_cat_val *v)
 int pt_cat_right(int st, const pt_stage_params *par, const pt_cat_val *in, pt_cat_val *out)
 {
     pt_vrec a, b;
+    int prev;
 
     memset(out, 0, sizeof *out);
-    if (st <= PT_STAGE_MODEL || st >= PT_NSTAGES) return 0;
-    rec_of(&a, st - 1, in);
+    if (st < 0 || st >= PT_NSTAGES_ALL || !pt_pipeline_ref(&pt_pipe_classic, (pt_stage)st))
+        return 0;
+    prev = pt_pipeline_prev(&pt_pipe_classic, (pt_stage)st);
+    rec_of(&a, prev, in);
     if (!pt_ref_stage((pt_stage)st, par, &a, &b)) return 0;
     pt_cat_val_of(out, &b);
     return 1;

@@ -513,7 +513,7 @@ int pt_cmd_quiz(int argc, char **argv)
     q.talk = !json;
     q.echo = q.talk && !isatty(STDIN_FILENO);
     if (q.talk) {
-        char t[PT_EXPLAINLEN];
+        char t[PT_EXPLAINLEN], cam[PT_CAMERA_TITLE];
         int right, answered, of = q.last - q.first + 1;
 
         printf("pipetrace quiz: vertex %llu of model %s in %s", v, m->name, s.path);
@@ -522,7 +522,7 @@ int pt_cmd_quiz(int argc, char **argv)
         if (pt_cli_student_note(t, sizeof t))
             printf("%s; the answers are checked against the reference stages\n", t);
         printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n",
-               s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
+               pt_scene_camera_title(&s, cam, sizeof cam),
                s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);
         pt_explain_next(t, sizeof t, &j, PT_STAGE_MODEL);
         printf("model %s: %s\n", m->name, t);

@@ -180,14 +180,14 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
     pt_model *models = NULL;
     size_t r, mi = (size_t)(m - s->models);
     int rc = 0, stacked;
+    int matrix = pt_scene_pipeline(s) == &pt_pipe_matrix;  /* these two, exactly */
 
-    if (s->matrix) {                        /* the classic camera, perspective */
-        cs.matrix = 0;
+    if (matrix) {                           /* the classic camera, perspective */
         cs.pipe = PT_PIPE_CLASSIC;
         cs.perspective = 1;
     }
     if (pt_run_journey(&jc, &cs, &cs.models[mi], v, raw) != 0) return PT_EXIT_INPUT;
-    if (!s->matrix) {                       /* the equivalent matrix camera */
+    if (!matrix) {                          /* the equivalent matrix camera */
         models = malloc(s->nmodels * sizeof *models);
         if (!models) return PT_EXIT_INPUT;
         memcpy(models, s->models, s->nmodels * sizeof *models);
@@ -199,7 +199,6 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
             models[r].translate.x = models[r].translate.y = models[r].translate.z = 0;
         }
         ms.models = models;
-        ms.matrix = 1;
         ms.pipe = PT_PIPE_MATRIX;
         ms.eye = (pt_vec3){0, 0, 0};
         ms.dir = (pt_vec3){0, 0, 1};
@@ -213,7 +212,7 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
 
     fprintf(term.f, "pipetrace step --compare-cameras: vertex %llu of model %s in %s\n",
            (unsigned long long)v, m->name, s->path);
-    if (!s->matrix) {
+    if (!matrix) {
         fprintf(term.f, "classic camera: %s, at the origin, looking down -z (right-handed)\n",
                s->perspective ? "perspective" : "orthographic");
         para("matrix camera:  the same view as look-at matrices: eye (0, 0, 0), direction\n"
@@ -277,7 +276,7 @@ int pt_cmd_step(int argc, char **argv)
     const pt_model *m = NULL;
     pt_journey j;
     pt_scene s;
-    char note[512];
+    char note[512], cam[PT_CAMERA_TITLE];
     pt_cli_args ca = {"step", usage, 1, NULL, NULL, 1};
 
     for (k = 1; k < argc; k++) {
@@ -321,8 +320,7 @@ int pt_cmd_step(int argc, char **argv)
     fprintf(term.f, "pipetrace step: vertex %llu of model %s in %s\n", (unsigned long long)v, m->name, s.path);
     if (pt_cli_student_note(note, sizeof note)) fprintf(term.f, "%s\n", note);
     fprintf(term.f, "camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n\n",
-           s.matrix ? "lookat (matrix camera)" : s.perspective ? "perspective" : "orthographic",
-           s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);
+           pt_scene_camera_title(&s, cam, sizeof cam), s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);
     if (!pt_vertex_used(m, v))
         para("note: no segment uses vertex %llu, so the renderer does not transform it;\n"
                "      here is the journey it would take.\n\n", (unsigned long long)v);
@@ -333,7 +331,7 @@ int pt_cmd_step(int argc, char **argv)
             if (k) fputc('\n', term.f);
             show_stage(&j, k);
         }
-    if (j.norder < (s.matrix ? pt_matrix_norder : PT_NSTAGES))
+    if (j.norder < j.pipe->norder)
         fprintf(term.f, "\n(the journey ends at the cvv: the vertex is outside the view volume)\n");
     pt_scene_free(&s);
     if (pt_cli_out_close(&term) != 0) {
