@@ -130,9 +130,10 @@ static pt_pix fb_to_vp(const pt_scene *s, int64_t x_fb, int64_t y_fb)
 ** give whole pixels only):
 **   x = x_ul + x_pp - 1        (x_vp = round(x_pp) - 1,  x_fb = x_ul + x_vp)
 **   y = y_ul + h - y_pp        (y_vp = h - round(y_pp),  y_fb = y_ul + y_vp)
-** tests/cli.sh ties it to the stages: each vertex's distance to its own
-** framebuffer pixel is at most half a pixel's diagonal, 0 when its pixel-plane
-** point is a whole pixel. */
+** tests/teach.sh (teach-5.29) ties it to the stages: in a viewport off the
+** framebuffer's corner, a point's distance to the centre of its own
+** framebuffer pixel (the trace's record) is its rounding's,
+** hypot(x_pp - round(x_pp), y_pp - round(y_pp)). */
 static void pp_in_fb(const pt_scene *s, const pt_vrec *pp, double *x, double *y)
 {
     *x = s->vp_x + pp->x - 1;                       /* x_ul + x_pp - 1 */
