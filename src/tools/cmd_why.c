@@ -311,8 +311,8 @@ static void show_reason(const pt_scene *s, const seg_eval *e, const pt_journey *
                                                                   : m->seg[e->si].b + 1ull;
     char num[PT_NUMLEN];
 
-    if (s->perspective && a->rec[PT_STAGE_CAMERA].z > 0) behind = a;
-    else if (s->perspective && b->rec[PT_STAGE_CAMERA].z > 0) behind = b;
+    if (a->rec[PT_STAGE_IMAGE].flags & PT_REC_BEHIND) behind = a;     /* the image stage says */
+    else if (b->rec[PT_STAGE_IMAGE].flags & PT_REC_BEHIND) behind = b;
 
     if (!target_inside && e->clip_hit == 1)
         fprintf(term.f, "lost at viewport: clipped by the viewport: one of its steps lands on "
