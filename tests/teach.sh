@@ -178,6 +178,41 @@ check "teach-5.25 ... with the vertex of it that lands nearest" \
 run why "$tmp/dots.scene" 9 5 --model dots
 check "teach-5.26 --model of a model without segments: said so" has "model dots has no segments: the renderer draws nothing of it (below)"
 
+# ---- why against the trace's records, in a viewport off the framebuffer's
+# corner (6,4), 19 x 9 in 31 x 17: its pixel, index and viewport pixel, and
+# the distance from a pixel-plane point (cmd_why.c, pp_in_fb: the viewport and
+# framebuffer stages without rounding) to the centre of its own framebuffer
+# pixel, which is hypot(x_pp - round(x_pp), y_pp - round(y_pp)) when the two
+# agree.  p's segments are points (v1 = v2, ...); --model a leaves them out,
+# so why lists them with their distances.
+printf 'framebuffer 31 17\nviewport 6 4 19 9\ncamera orthographic\nmodel a\nv -0.9 -0.9 0\nv -0.8 -0.9 0\nl 1 2\nmodel p\nv 0.3 0.2 0\nv 0.3 0.2 0\nv -0.41 0.77 0\nv -0.41 0.77 0\nv 0.66 -0.52 0\nv 0.66 -0.52 0\nl 1 2\nl 3 4\nl 5 6\n' > "$tmp/vpoff.scene"
+"$exe" "$tmp/vpoff.scene" --model p --format jsonl > "$tmp/vpoff.jsonl"
+# v X_FB Y_FB IDX X_VP Y_VP D for v1, v3, v5 (D: the distance, 2 decimals)
+awk -F'[:,]' '/"type":"vertex"/ {
+        v = $6; for (k = 1; k <= NF; k++) if ($k == "\"stage\"") st = $(k + 1)
+        for (k = 1; k <= NF; k++) { if ($k == "\"x\"") x = $(k + 1); if ($k == "\"y\"") y = $(k + 1); if ($k == "\"i\"") i = $(k + 1) }
+        if (v % 2 == 0) next
+        if (st == "\"pixel\"") { fx = x - int(x + 0.5); fy = y - int(y + 0.5); d[v] = sprintf("%.2f", sqrt(fx * fx + fy * fy)) }
+        if (st == "\"viewport\"") { vx[v] = x; vy[v] = y + 0 }
+        if (st == "\"framebuffer\"") { bx[v] = x; by[v] = y + 0 }
+        if (st == "\"index\"") { gsub(/}/, "", i); ix[v] = i }
+    }
+    END { for (v = 1; v <= 5; v += 2) print v, bx[v], by[v], ix[v], vx[v], vy[v], d[v] }' "$tmp/vpoff.jsonl" > "$tmp/vpoff.rec"
+check "teach-5.27 (the trace gives three points)" test "$(wc -l < "$tmp/vpoff.rec")" = 3
+while read -r v X Y I VX VY D; do
+    run why "$tmp/vpoff.scene" --model a "$X" "$Y"
+    check "teach-5.28 why at p v$v's pixel ($X, $Y): the trace's index and viewport pixel" \
+        grep -qxF "pixel (x_fb, y_fb) = ($X, $Y) of $tmp/vpoff.scene: idx = $I, inside the viewport at (x_vp, y_vp) = ($VX, $VY)" "$tmp/out"
+    check "teach-5.29 ... v$v's point is $D pixels from the pixel's centre" \
+        grep -qxF "  p s$(((v + 1) / 2)) (v$v -> v$((v + 1))): $D pixels away" "$tmp/out"
+done < "$tmp/vpoff.rec"
+run why "$tmp/vpoff.scene" --model a 21 9
+check "teach-5.30 the pixel a degenerate segment drew: the trace's framebuffer pixel of v5" \
+    grep -qF "drew that one pixel elsewhere, at (x_fb, y_fb) = ($(awk '$1 == 5 { print $2 ", " $3 }' "$tmp/vpoff.rec"))" "$tmp/out"
+run why "$tmp/vpoff.scene" 25 3
+check "teach-5.31 outside the viewport: its framebuffer pixels 6..24 x 4..12" \
+    grep -qF "outside the viewport (x_fb 6..24, y_fb 4..12): nothing is ever drawn there" "$tmp/out"
+
 # ---- --explain on the render command
 run $tri --vertex 1 --explain
 check "teach-6.1 --explain text: exit 0" test "$rc" = 0

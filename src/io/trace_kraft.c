@@ -84,6 +84,18 @@ static void put_pair(FILE *f, const char *name, double a, double b)
     fprintf(f, "(%s) = (%s, %s)\n", name, s, t);
 }
 
+/* "(NAME) = (%9.4f, %9.4f)" for the viewport pixel of the rounded endpoint
+** (x, y), from the viewport stage (pt_pixel2viewport): the course prints
+** x_vp = x - 1 and y_vp = h - y as doubles.  x and y are whole numbers within
+** the int range (seg_check), so the stage gives a pixel and its doubles are
+** exact. */
+static void put_vp_pair(FILE *f, const pt_scene *s, const char *name, double x, double y)
+{
+    pt_pix vp = pt_pixel2viewport((pt_vec2){x, y}, s->vp_w, s->vp_h, NULL);
+
+    put_pair(f, name, (double)vp.x, (double)vp.y);
+}
+
 /* One step's line.  xs, ys: the point as the course prints it ("%4d" for the
 ** stepped coordinate, "%9.4f" for the other); rgb the colour written. */
 static void put_pixel(FILE *f, const pt_scene *s, const char *xs, const char *ys,
@@ -187,8 +199,8 @@ static void kraft_segment(FILE *f, const pt_scene *s, const int64_t r[4],
         pt_jnum_dtoa(one, dc[i]);
         fprintf(f, "Slope %s = %s\n", chan[i], one);
     }
-    put_pair(f, "x0_vp, y0_vp", x0 - 1, (double)s->vp_h - y0);
-    put_pair(f, "x1_vp, y1_vp", x1 - 1, (double)s->vp_h - y1);
+    put_vp_pair(f, s, "x0_vp, y0_vp", x0, y0);
+    put_vp_pair(f, s, "x1_vp, y1_vp", x1, y1);
     acc = steep ? x0 : y0;
     for (st = s0; st <= s1; st++) {
         pt_vec2 p;

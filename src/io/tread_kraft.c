@@ -11,7 +11,9 @@
 **                        named by "====== Render model: NAME"; the log has no
 **                        viewport, framebuffer or index stage: left out
 **   "4. Rasterize: LineSegment"   the next segment (1-based, per model)
-**   "      fb_[...] ... (x_vp=X, y_vp=Y)"  a pixel record: (x_ul + X, y_ul + Y)
+**   "      fb_[...] ... (x_vp=X, y_vp=Y)"  a pixel record: its framebuffer
+**                        pixel and index from the stages (pt_viewport2fb,
+**                        pt_fb2index: -1 outside the framebuffer)
 **   "Clip: fb_[...]"     a step of a clip run (consecutive clipped steps)
 **   "3. Pixel-plane: LineSegment"  which vertices the segments use: the log
 **                        lists every vertex, a trace only those; the others'
@@ -202,11 +204,13 @@ static int pixel_line(pt_treader *r, kstate *k, cur *c, int clipped)
         return 0;
     } else {
         struct pt_tpix px;
+        pt_pix fb;
         if (flush_run(r, k)) return -1;
         memset(&px, 0, sizeof px);
-        px.x = v[2] + at.x;                          /* x_fb = x_ul + x_vp */
-        px.y = v[3] + at.y;                          /* y_fb = y_ul + y_vp */
-        px.i = px.y * v[0] + px.x;                   /* idx = y_fb * W + x_fb */
+        fb = pt_viewport2fb(at, k->vp_x, k->vp_y, NULL);
+        px.x = fb.x;
+        px.y = fb.y;
+        px.i = k->fb_w >= 1 && k->fb_h >= 1 ? pt_fb2index(fb, k->fb_w, k->fb_h, NULL) : -1;
         px.seg = k->seg;
         px.model = k->model;
         px.line = pt_tr_line32(r);

@@ -103,6 +103,45 @@ static uint64_t cheb(int64_t dx, int64_t dy)
     return ax > ay ? ax : ay;
 }
 
+/* ===== the stages' formulas, asked of the stages ===== */
+
+/* Viewport pixel (x_vp, y_vp) of s in framebuffer coordinates: the
+** framebuffer stage (pt_viewport2fb). */
+static pt_pix vp_to_fb(const pt_scene *s, int64_t x_vp, int64_t y_vp)
+{
+    pt_pix vp = {x_vp, y_vp, 1};
+
+    return pt_viewport2fb(vp, s->vp_x, s->vp_y, NULL);
+}
+
+/* Framebuffer pixel (x_fb, y_fb) of s in viewport coordinates: the way back
+** through the framebuffer stage, which offsets every pixel by the framebuffer
+** pixel of viewport pixel (0, 0). */
+static pt_pix fb_to_vp(const pt_scene *s, int64_t x_fb, int64_t y_fb)
+{
+    pt_pix ul = vp_to_fb(s, 0, 0), vp = {x_fb - ul.x, y_fb - ul.y, 1};
+
+    return vp;
+}
+
+/* Pixel-plane point (x_pp, y_pp) of s as a point of the framebuffer, whose pixel
+** centres sit at integer coordinates: the viewport and framebuffer stages
+** without the viewport stage's rounding, stated again on purpose (the stages
+** give whole pixels only):
+**   x = x_ul + x_pp - 1        (x_vp = round(x_pp) - 1,  x_fb = x_ul + x_vp)
+**   y = y_ul + h - y_pp        (y_vp = h - round(y_pp),  y_fb = y_ul + y_vp)
+** tests/teach.sh (teach-5.29) ties it to the stages: in a viewport off the
+** framebuffer's corner, a point's distance to the centre of its own
+** framebuffer pixel (the trace's record) is its rounding's,
+** hypot(x_pp - round(x_pp), y_pp - round(y_pp)). */
+static void pp_in_fb(const pt_scene *s, const pt_vrec *pp, double *x, double *y)
+{
+    *x = s->vp_x + pp->x - 1;                       /* x_ul + x_pp - 1 */
+    *y = s->vp_y + s->vp_h - pp->y;                 /* y_ul + h - y_pp */
+}
+
+/* ===== rasterizing a segment ===== */
+
 /* Pixels written: is it the target, is it the nearest so far? */
 static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
@@ -188,6 +227,8 @@ static void evaluate(const pt_scene *s, pt_journey *const *js, size_t mi, size_t
     pt_journey a, b;
     const pt_vrec *pa, *pb;
     pt_vec2 p0, p1;
+    pt_pix t = fb_to_vp(s, X, Y);
+    double ax, ay, bx, by;
     pt_raster_out out;
     look lk;
 
@@ -199,16 +240,16 @@ static void evaluate(const pt_scene *s, pt_journey *const *js, size_t mi, size_t
     pb = &b.rec[PT_STAGE_PIXEL];
     p0.x = pa->x; p0.y = pa->y;
     p1.x = pb->x; p1.y = pb->y;
-    lk.tx = X - s->vp_x;
-    lk.ty = Y - s->vp_y;
+    lk.tx = t.x;
+    lk.ty = t.y;
     lk.e = e;
     out.pixel = on_pixel;
     out.clip = on_clip;
     out.ud = &lk;
     e->result = pt_raster_segment(p0, p1, s->vp_w, s->vp_h, pt_pixel2viewport, &out);
-    e->dist = seg_dist((double)X, (double)Y,                 /* (x_ul + x_pp - 1, */
-                       s->vp_x + pa->x - 1, s->vp_y + s->vp_h - pa->y,   /* y_ul + h - y_pp) */
-                       s->vp_x + pb->x - 1, s->vp_y + s->vp_h - pb->y);
+    pp_in_fb(s, pa, &ax, &ay);
+    pp_in_fb(s, pb, &bx, &by);
+    e->dist = seg_dist((double)X, (double)Y, ax, ay, bx, by);
     e->dist_drawn = HUGE_VAL;
     if (e->result != PT_RASTER_SKIPPED)                     /* rounded: viewport pixels */
         e->dist_drawn = seg_dist((double)lk.tx, (double)lk.ty,
@@ -265,18 +306,19 @@ static void show_reason(const pt_scene *s, const seg_eval *e, const pt_journey *
 {
     const pt_model *m = &s->models[e->mi];
     const pt_journey *behind = NULL;
+    pt_pix t = fb_to_vp(s, X, Y), near = vp_to_fb(s, e->near_x, e->near_y);
     uint64_t vnull = a->rec[PT_STAGE_VIEWPORT].flags & PT_REC_NULL ? m->seg[e->si].a + 1ull
                                                                   : m->seg[e->si].b + 1ull;
     char num[PT_NUMLEN];
 
-    if (s->perspective && a->rec[PT_STAGE_CAMERA].z > 0) behind = a;
-    else if (s->perspective && b->rec[PT_STAGE_CAMERA].z > 0) behind = b;
+    if (a->rec[PT_STAGE_IMAGE].flags & PT_REC_BEHIND) behind = a;     /* the image stage says */
+    else if (b->rec[PT_STAGE_IMAGE].flags & PT_REC_BEHIND) behind = b;
 
     if (!target_inside && e->clip_hit == 1)
         fprintf(term.f, "lost at viewport: clipped by the viewport: one of its steps lands on "
                "this pixel, (x_vp, y_vp) = (%lld, %lld), but the pixel lies outside the "
                "viewport and steps there are not drawn\n",
-               (long long)(X - s->vp_x), (long long)(Y - s->vp_y));
+               (long long)t.x, (long long)t.y);
     else if (!target_inside && e->clip_hit == -1 && e->dist_drawn <= 0.5)
         fprintf(term.f, "lost at viewport: clipped by the viewport: it runs through this pixel "
                "(the line between its rounded endpoints passes within half a pixel of the "
@@ -297,7 +339,7 @@ static void show_reason(const pt_scene *s, const seg_eval *e, const pt_journey *
     } else if (e->result == PT_RASTER_DEGENERATE && e->npix)
         fprintf(term.f, "lost at raster: degenerate: both endpoints round to one pixel, and it "
                "drew that one pixel elsewhere, at (x_fb, y_fb) = (%lld, %lld)\n",
-               (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
+               (long long)near.x, (long long)near.y);
     else if (e->result == PT_RASTER_DEGENERATE)
         fprintf(term.f, "lost at viewport: degenerate and clipped: both endpoints round to one "
                "pixel, (x_vp, y_vp) = (%lld, %lld), outside the viewport\n",
@@ -309,11 +351,11 @@ static void show_reason(const pt_scene *s, const seg_eval *e, const pt_journey *
         fprintf(term.f, "lost at raster: endpoints rounded elsewhere: the segment passes through "
                "this pixel, but the DDA steps from the rounded endpoints and its nearest "
                "step lit the neighbouring pixel (x_fb, y_fb) = (%lld, %lld)\n",
-               (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
+               (long long)near.x, (long long)near.y);
     else
         fprintf(term.f, "not lost: it passes by; the nearest pixel it lit is (x_fb, y_fb) = "
                "(%lld, %lld)\n",
-               (long long)(e->near_x + s->vp_x), (long long)(e->near_y + s->vp_y));
+               (long long)near.x, (long long)near.y);
 }
 
 /* A whole number from s into *v; 0 on success. */
@@ -394,18 +436,14 @@ static void show_no_segments(const why_ctx *w)
 
     for (mi = 0; mi < s->nmodels; mi++) {
         const pt_model *m = &s->models[mi];
-        double dmin = HUGE_VAL;
+        double dmin = HUGE_VAL, x, y;
         size_t vmin = 0;
 
         if (m->nseg) continue;
         for (v = 0; v < m->nv; v++) {
-            const pt_journey *jv = &w->js[mi][v];       /* a point: a segment of length 0 */
             double dv;
-            dv = seg_dist((double)w->X, (double)w->Y,
-                          s->vp_x + jv->rec[PT_STAGE_PIXEL].x - 1,
-                          s->vp_y + s->vp_h - jv->rec[PT_STAGE_PIXEL].y,
-                          s->vp_x + jv->rec[PT_STAGE_PIXEL].x - 1,
-                          s->vp_y + s->vp_h - jv->rec[PT_STAGE_PIXEL].y);
+            pp_in_fb(s, &w->js[mi][v].rec[PT_STAGE_PIXEL], &x, &y);
+            dv = seg_dist((double)w->X, (double)w->Y, x, y, x, y);  /* a point */
             if (v == 0 || dv < dmin) { dmin = dv; vmin = v; }
         }
         memset(&e, 0, sizeof e);
@@ -542,6 +580,7 @@ int pt_cmd_why(int argc, char **argv)
     const char *pos[3], *model = NULL;
     int npos = 0, k;
     pt_scene s;
+    pt_pix fb, vp;
     why_ctx w;
 
     for (k = 1; k < argc; k++) {
@@ -590,14 +629,19 @@ int pt_cmd_why(int argc, char **argv)
     }
 
     pt_cli_out_open(&term);
-    w.inside = w.X >= s.vp_x && w.X < s.vp_x + s.vp_w && w.Y >= s.vp_y && w.Y < s.vp_y + s.vp_h;
+    fb.x = w.X; fb.y = w.Y; fb.ok = 1;
+    vp = fb_to_vp(&s, w.X, w.Y);
+    w.inside = pt_inside(vp.x, vp.y, s.vp_w, s.vp_h);
     fprintf(term.f, "pixel (x_fb, y_fb) = (%lld, %lld) of %s: idx = %lld, ", w.X, w.Y, s.path,
-           w.Y * s.fb_w + w.X);
+           (long long)pt_fb2index(fb, s.fb_w, s.fb_h, NULL));
     if (w.inside)
-        fprintf(term.f, "inside the viewport at (x_vp, y_vp) = (%lld, %lld)\n", w.X - s.vp_x, w.Y - s.vp_y);
-    else
-        fprintf(term.f, "outside the viewport (x_fb %d..%d, y_fb %d..%d): nothing is ever drawn there\n",
-               s.vp_x, s.vp_x + s.vp_w - 1, s.vp_y, s.vp_y + s.vp_h - 1);
+        fprintf(term.f, "inside the viewport at (x_vp, y_vp) = (%lld, %lld)\n", (long long)vp.x,
+                (long long)vp.y);
+    else {
+        pt_pix ul = vp_to_fb(&s, 0, 0), lr = vp_to_fb(&s, s.vp_w - 1, s.vp_h - 1);
+        fprintf(term.f, "outside the viewport (x_fb %lld..%lld, y_fb %lld..%lld): nothing is ever "
+                "drawn there\n", (long long)ul.x, (long long)lr.x, (long long)ul.y, (long long)lr.y);
+    }
     if (w.sel)
         fprintf(term.f, "--model %s: the trace of this model alone; the image still shows every "
                "model\n", w.sel->name);

@@ -194,6 +194,31 @@ static int plist_eq(const plist *a, const plist *b)
     return a->n == b->n && (a->n == 0 || memcmp(a->p, b->p, a->n * sizeof *a->p) == 0);
 }
 
+/* Framebuffer pixel (x_fb, y_fb) of the header hd in viewport coordinates:
+** the way back through the framebuffer stage, which offsets every pixel by
+** the framebuffer pixel of viewport pixel (0, 0) (pt_viewport2fb). */
+static pt_pix fb_to_vp(const pt_thdr *hd, int64_t x_fb, int64_t y_fb)
+{
+    pt_pix o = {0, 0, 1}, ul = pt_viewport2fb(o, hd->vp_x, hd->vp_y, NULL);
+    pt_pix vp = {x_fb - ul.x, y_fb - ul.y, 1};
+
+    return vp;
+}
+
+/* The logical pixel (x_pp, y_pp), ends[0] and ends[1], whose viewport pixel is
+** (x_vp, y_vp) in a viewport h high: the viewport stage backwards for whole
+** pixels, stated again on purpose (the stage has no way back):
+**   x_pp = x_vp + 1            (x_vp = round(x_pp) - 1)
+**   y_pp = h - y_vp            (y_vp = h - round(y_pp))
+** Tied to the stage twice: a rasterizer mistake is named only when the replay
+** from these endpoints gives EXPECTED's own pixels, and tests/diff.sh names
+** one on a viewport off the framebuffer's corner, h != H (diff-1.7a). */
+static void vp_to_pp(int64_t x_vp, int64_t y_vp, int h, int64_t ends[2])
+{
+    ends[0] = x_vp + 1;                     /* x_pp = x_vp + 1 */
+    ends[1] = h - y_vp;                     /* y_pp = h - y_vp */
+}
+
 /* Segment by segment: which differ, and which rounding mistake of the
 ** rasterizer reproduces ACTUAL's pixels from EXPECTED's endpoints. */
 int pt_diff_check_raster(dctx *c, rstat *rs)
@@ -228,8 +253,10 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
                 if (!q->clip) {
                     const pt_tpix *p = &c->t[side].px[q->k];
                     if (!pt_diff_small(p->x) || !pt_diff_small(p->y)) sane = 0;
-                    else if (plist_add(&pl[side], p->x - hd->vp_x, p->y - hd->vp_y) != 0)
-                        rc = -1;
+                    else {
+                        pt_pix vp = fb_to_vp(hd, p->x, p->y);
+                        if (plist_add(&pl[side], vp.x, vp.y) != 0) rc = -1;
+                    }
                 } else if (!pt_diff_small(c->t[side].cl[q->k].first[0]) ||
                            !pt_diff_small(c->t[side].cl[q->k].first[1]) ||
                            !pt_diff_small(c->t[side].cl[q->k].last[0]) ||
@@ -245,13 +272,13 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
         if (end[0] > beg[0] && sane && hd->vp_w >= 1 && hd->vp_h >= 1 &&
             hd->vp_w <= PT_MAX_SIZE && hd->vp_h <= PT_MAX_SIZE) {
             const skey *f = &s[0][beg[0]], *l = &s[0][end[0] - 1];
-            int64_t fx, fy, lx, ly;
-            if (f->clip) { fx = c->t[0].cl[f->k].first[0]; fy = c->t[0].cl[f->k].first[1]; }
-            else { fx = c->t[0].px[f->k].x - hd->vp_x; fy = c->t[0].px[f->k].y - hd->vp_y; }
-            if (l->clip) { lx = c->t[0].cl[l->k].last[0]; ly = c->t[0].cl[l->k].last[1]; }
-            else { lx = c->t[0].px[l->k].x - hd->vp_x; ly = c->t[0].px[l->k].y - hd->vp_y; }
-            ends[0] = fx + 1; ends[1] = hd->vp_h - fy;
-            ends[2] = lx + 1; ends[3] = hd->vp_h - ly;
+            pt_pix fv, lv;
+            if (f->clip) { fv.x = c->t[0].cl[f->k].first[0]; fv.y = c->t[0].cl[f->k].first[1]; }
+            else fv = fb_to_vp(hd, c->t[0].px[f->k].x, c->t[0].px[f->k].y);
+            if (l->clip) { lv.x = c->t[0].cl[l->k].last[0]; lv.y = c->t[0].cl[l->k].last[1]; }
+            else lv = fb_to_vp(hd, c->t[0].px[l->k].x, c->t[0].px[l->k].y);
+            vp_to_pp(fv.x, fv.y, hd->vp_h, &ends[0]);
+            vp_to_pp(lv.x, lv.y, hd->vp_h, &ends[2]);
             have_ends = 1;
             if (replay(ends, hd->vp_w, hd->vp_h, pt_pixel2viewport, &re))
                 rc = -1;
