@@ -108,9 +108,10 @@ REF_O    = $B/ref_s1_model2camera.o $B/ref_s2_camera2image.o $B/ref_s3_image2pix
 CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjourney.o \
            $B/pipeline.o $B/pixelpath.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
-IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace.o $B/tread.o $B/tread_text.o \
-           $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o $B/png.o $B/outfile.o \
-           $B/trace_kraft.o $B/tlanes.o
+IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace_buf.o $B/trace_head.o \
+           $B/trace_text.o $B/trace_jsonl.o $B/trace_csv.o $B/trace.o $B/tread.o \
+           $B/tread_util.o $B/tread_text.o $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o \
+           $B/png.o $B/outfile.o $B/trace_kraft.o $B/tlanes.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff
 # and step), the subcommands (diff, accuracy and journey in folders of their
 # own; diff's parts listed with the commands).
@@ -174,7 +175,7 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 	     END { print "    \"\";" }' $< > $@
 # ===== the journey page's stages in WebAssembly (docs/journey.md) =====
 # Both cameras' stage files (a student's when chosen), compiled by
-# clang for wasm32 without libc (stages/wasm/: the glue and the few libm
+# clang for wasm32 without libc (src/wasm/: the glue and the few libm
 # functions) and linked by wasm-ld into $B/stages.wasm, which the page
 # embeds as base64 ($B/stages_wasm.c).  WASM=yes when both tools are found
 # (Debian: clang, lld); `make WASM=no` builds the page without its sliders,
@@ -186,8 +187,8 @@ WASM_LD  = wasm-ld
 WASM    := $(if $(STAGE_GIVEN),no,$(if $(and $(shell command -v $(WASM_CC) 2>/dev/null),$(shell command -v $(WASM_LD) 2>/dev/null)),yes,no))
 # -mbulk-memory: a struct copy becomes memory.copy, not a call to libc's memcpy.
 WASM_CFLAGS = --target=wasm32 -ffreestanding -nostdlib -std=c11 $(WARN) $(FPFLAGS) -O2 \
-              -mbulk-memory -isystem stages/wasm -Istages
-WASM_SRC = stages/wasm/pt_wasm.c stages/wasm/pt_wasm_libm.c stages/pt_stage.c stages/pt_round.c \
+              -mbulk-memory -isystem src/wasm -I. -Isrc -Istages
+WASM_SRC = src/wasm/pt_wasm.c src/wasm/pt_wasm_libm.c stages/pt_stage.c stages/pt_round.c \
            $(or $(STAGE_camera),stages/s1_model2camera.c) \
            $(or $(STAGE_image),stages/s2_camera2image.c) \
            $(or $(STAGE_pixel),stages/s3_image2pixel.c) \
@@ -198,7 +199,7 @@ WASM_SRC = stages/wasm/pt_wasm.c stages/wasm/pt_wasm_libm.c stages/pt_stage.c st
            stages/m2_world2view.c stages/m3_view2clip.c stages/m4_clip2cvv.c stages/m5_clip2ndc.c \
            stages/m6_ndc2screen.c stages/m7_screen2viewport.c
 $(shell mkdir -p $B && { echo '$(WASM)' | cmp -s - $B/wasm-choice || echo '$(WASM)' > $B/wasm-choice; })
-$B/stages.wasm: $(WASM_SRC) stages/*.h stages/wasm/*.h $B/wasm-choice $(CHOSEN)
+$B/stages.wasm: $(WASM_SRC) stages/*.h stages/wasm/*.h src/wasm/*.h $B/wasm-choice $(CHOSEN)
 	rm -rf $B/wasm-obj && mkdir -p $B/wasm-obj
 	n=0; for f in $(WASM_SRC); do n=$$((n + 1)); \
 	    $(WASM_CC) $(WASM_CFLAGS) -c -o $B/wasm-obj/$$n.o $$f || exit 1; done
@@ -211,7 +212,7 @@ $B/stages_wasm.c: $B/wasm-choice $(if $(filter yes,$(WASM)),$B/stages.wasm)
 $B/stages_wasm.o: $B/stages_wasm.c src/tools/journey/journey_wasm.h
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
 # tests/test_wasm_libm.c includes the module's fmax and ilogb to compare them with libm.
-$B/test_wasm_libm: stages/wasm/pt_wasm_libm.c stages/wasm/pt_wasm_libm.h
+$B/test_wasm_libm: src/wasm/pt_wasm_libm.c src/wasm/pt_wasm_libm.h
 # tests/test_fuzz also replays the fuzz targets' regression corpus (tests/fuzz/).
 FUZZ_C   = tests/fuzz/fuzz_scene.c tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_trace.c \
            tests/fuzz/fuzz_image.c tests/fuzz/fuzz_common.c

@@ -11,6 +11,8 @@
 #   src/io/     includes core/pipetrace.h (the core's one public header) and
 #               src/io/ headers; no other core or stage header, no tool header
 #   src/tools/  includes core/pipetrace.h, src/io/ and src/tools/ headers
+#   src/wasm/   (the journey page's WebAssembly module, built without libc)
+#               includes stages/ and src/wasm/ headers; nothing includes it
 # and that every included file exists and no chain of includes comes back to
 # where it started; and that docs/architecture.md names every folder.  Prints
 # "N passed, N failed".
@@ -63,12 +65,17 @@ def allowed(path, name, target):
     """None when path may include target, else the rule it breaks."""
     lay = layer(path)
     tl = layer(target)
+    if tl == "wasm" and lay != "wasm":
+        return "only the WebAssembly module includes src/wasm/"
     if lay == "stages":
         return None if tl == "stages" and "/" not in name else \
             "a stage includes only stages/ headers, by plain name"
     if lay == "core":
         return None if tl in ("stages", "core") else \
             "the core includes nothing of io or tools"
+    if lay == "wasm":
+        return None if tl in ("stages", "wasm") else \
+            "the WebAssembly module includes only stages/ and src/wasm/ headers"
     if lay in ("io", "tools"):
         if target == "src/core/pipetrace.h":
             return None
@@ -77,7 +84,7 @@ def allowed(path, name, target):
         if lay == "io" and tl == "tools":
             return "io includes no tool header"
         return None
-    return "a file of src/ belongs to core, io or tools"
+    return "a file of src/ belongs to core, io, tools or wasm"
 
 
 graph = {}
@@ -140,6 +147,11 @@ check("layers-3.2 ... a tool reaching past core/pipetrace.h",
       allowed("src/tools/cmd_step.c", "core/raster.h", "src/core/raster.h") is not None)
 check("layers-3.3 ... a stage including src/",
       allowed("stages/s1_model2camera.c", "core/scene.h", "src/core/scene.h") is not None)
+check("layers-3.4 ... the WebAssembly module including the core",
+      allowed("src/wasm/pt_wasm.c", "core/pipetrace.h", "src/core/pipetrace.h") is not None)
+check("layers-3.5 ... a tool including the WebAssembly module",
+      allowed("src/tools/journey/journey_wasm.c", "wasm/pt_wasm_libm.h",
+              "src/wasm/pt_wasm_libm.h") is not None)
 
 # docs/architecture.md is the map: it names every folder of src/ and stages/
 arch = os.path.join(root, "docs", "architecture.md")

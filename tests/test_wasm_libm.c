@@ -1,8 +1,8 @@
 /*
-** tests/test_wasm_libm.c -- the journey page's fmax, ilogb, fmod, ldexp, frexp (stages/wasm/) against libm
+** tests/test_wasm_libm.c -- the journey page's fmax, ilogb, fmod, ldexp, frexp (src/wasm/) against libm
 ** See LICENSE for copyright and license.
 **
-** The stages compiled to WebAssembly have no libm; stages/wasm/pt_wasm_libm.c
+** The stages compiled to WebAssembly have no libm; src/wasm/pt_wasm_libm.c
 ** stands in for the functions that are not single instructions.  Compiled
 ** here natively, each must give libm's answer bit for bit: on zeros, NaN,
 ** infinities, subnormals, powers of two and their neighbours, and a million
@@ -13,7 +13,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
-#include "stages/wasm/pt_wasm_libm.c"
+#include "wasm/pt_wasm_libm.c"
 #include "testhelp.h"
 
 static uint64_t bits(double x)

@@ -5,7 +5,8 @@
 ** pt_tread_parse() (tread.c) reads the buffer one line at a time and hands
 ** each line to the reader of its format: pt_tr_json_line() (tread_jsonl.c)
 ** or pt_tr_text_line() (tread_text.c).  Both fill the same pt_tread through
-** the same pt_treader, with the record and number helpers below (tread.c).
+** the same pt_treader, with the record and number helpers below
+** (tread_util.c).
 ** The images (tread_image.c) share only the list of formats for messages.
 ** Nothing here is part of the public API: that is io/tread.h.
 */

@@ -3,7 +3,7 @@
 ** See LICENSE for copyright and license.
 **
 ** The journey page writes the matrix camera's inputs into the doubles at
-** pt_wasm_in() (stages/wasm/pt_wasm.c) before it calls pt_wasm_matrix_run():
+** pt_wasm_in() (src/wasm/pt_wasm.c) before it calls pt_wasm_matrix_run():
 ** the model's `world` lines' matrix (row by row), its translate, the eye,
 ** the direction (with `camera lookat-target`, the point looked at), up, fov,
 ** aspect (unused when auto), near, far and the vertex.  The page learns the

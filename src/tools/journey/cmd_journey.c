@@ -75,6 +75,7 @@ static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64
 {
     static const unsigned char red[3] = PT_JOURNEY_RED_RGB;
     pt_journey j;
+    pt_pix px = {0, 0, 1};
     int64_t x, y, dx, dy;
 
     if (pt_journey_render(fb, s) != 0) return -1;
@@ -88,7 +89,9 @@ static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64
             int ring = dx == -3 || dx == 3 || dy == -3 || dy == 3;
             if (!(ring || (dx == 0 && dy == 0))) continue;
             if (x + dx < 0 || x + dx >= s->fb_w || y + dy < 0 || y + dy >= s->fb_h) continue;
-            pt_fb_set(fb, (y + dy) * s->fb_w + (x + dx), red);    /* idx = y * W + x */
+            px.x = x + dx;
+            px.y = y + dy;
+            pt_fb_set(fb, pt_fb2index(px, s->fb_w, s->fb_h, NULL), red);   /* the index stage */
         }
     return 0;
 }

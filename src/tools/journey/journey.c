@@ -1341,6 +1341,25 @@ static void note_of(char *t, size_t n, const pt_jmodel *jm, const pt_journey *j,
     }
 }
 
+/* The first and the last element of row y (0 <= y < H) of the pixel array,
+** as the index stage gives them. */
+static int64_t row_start(const pt_stage_params *p, int64_t y)
+{
+    pt_pix fb = {0, 0, 1};
+
+    fb.y = y;
+    return pt_fb2index(fb, p->W, p->H, NULL);
+}
+
+static int64_t row_end(const pt_stage_params *p, int64_t y)
+{
+    pt_pix fb = {0, 0, 1};
+
+    fb.x = p->W - 1;
+    fb.y = y;
+    return pt_fb2index(fb, p->W, p->H, NULL);
+}
+
 /* The pixel array: the vertex's rows and its neighbours in the array. */
 static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k)
 {
@@ -1363,7 +1382,8 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
         snprintf(t, sizeof t, "(x_fb, y_fb) = (%s, %s) lies outside the framebuffer", a, b);
         text_at(sb, 200, 140, 11.5, "middle", "fill=\"" C_VTX "\"", t, 370);
         if (fabs((double)x) < PIXMAX && fabs((double)y) < PIXMAX) {
-            int64_t would = y * W + x;
+            int64_t would = y * W + x;      /* the formula without the stage's
+                                             ** bounds: written again on purpose */
             fmt_i64(a, sizeof a, would);
             if (would >= 0 && would < n) {
                 double wx = STRIP_X + STRIP_W * ((double)would + 0.5) / (double)n;
@@ -1385,7 +1405,7 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
     }
     i = ix->i;
     /* the whole strip: the vertex's row, and its element */
-    sx = STRIP_X + STRIP_W * ((double)y * (double)W) / (double)n;
+    sx = STRIP_X + STRIP_W * (double)row_start(p, y) / (double)n;
     rect(sb, sx, 68, fmax(STRIP_W / (double)H, 1.5), 18, C_CELL, "", "");
     ex = STRIP_X + STRIP_W * ((double)i + 0.5) / (double)n;
     line(sb, ex, 64, ex, 90, C_VTX, 2, "");
@@ -1396,9 +1416,9 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
     r1 = y + 1 < H ? y + 1 : y;
     nr = (int)(r1 - r0 + 1);
     bw = STRIP_W / nr;
-    line(sb, STRIP_X + STRIP_W * ((double)r0 * (double)W) / (double)n, 87, STRIP_X, 111,
+    line(sb, STRIP_X + STRIP_W * (double)row_start(p, r0) / (double)n, 87, STRIP_X, 111,
          C_GRID, 1, "");                     /* the fan stops above the rows' names */
-    line(sb, STRIP_X + STRIP_W * ((double)(r1 + 1) * (double)W) / (double)n, 87,
+    line(sb, STRIP_X + STRIP_W * (double)(row_end(p, r1) + 1) / (double)n, 87,
          STRIP_X + STRIP_W, 111, C_GRID, 1, "");
     for (r = r0; r <= r1; r++) {
         double bx = STRIP_X + bw * (double)(r - r0);
@@ -1406,10 +1426,10 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
         fmt_i64(a, sizeof a, r);
         snprintf(t, sizeof t, "row %s%s", a, r == y ? " = y_fb" : "");
         text_at(sb, bx + bw / 2, 123, 10, "middle", "fill=\"" C_NOTE "\"", t, bw - 4);
-        fmt_i64(a, sizeof a, r * W);
+        fmt_i64(a, sizeof a, row_start(p, r));
         text_at(sb, bx + 1, 160, 9, "start", "fill=\"" C_NOTE "\"", a, 0);
     }
-    fmt_i64(a, sizeof a, (r1 + 1) * W - 1);
+    fmt_i64(a, sizeof a, row_end(p, r1));
     text_at(sb, STRIP_X + STRIP_W, 160, 9, "end", "fill=\"" C_NOTE "\"", a, 0);
     /* the segments' pixels in these rows */
     memset(&cl, 0, sizeof cl);
@@ -1449,7 +1469,9 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
         double cxp = STRIP_X + bw * (double)c;
         int seg = 0;
         size_t q;
-        for (q = 0; q < cl.nx; q++)
+        for (q = 0; q < cl.nx; q++)         /* where the formula puts a pixel of the
+                                             ** rows (x may be off the frame: again
+                                             ** without the stage's bounds, on purpose) */
             if (cl.ys[q] * W + (int64_t)cl.xs[q] == e) seg = 1;
         rect(sb, cxp, 196, bw, 26, e == i ? C_VTX : seg ? C_CELL : "#fff", "#9aa1ab", "");
         fmt_i64(a, sizeof a, e % W);

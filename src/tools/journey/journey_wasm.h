@@ -8,7 +8,7 @@
 ** matrix camera also fov, eye (eye_x, eye_y, eye_z), near and far.  Moving
 ** one runs the chosen vertex through the camera's stages again, in the
 ** page, by calling the project's own stage files compiled to WebAssembly
-** (stages/wasm/pt_wasm.c, built into $B/stages.wasm by the Makefile and
+** (src/wasm/pt_wasm.c, built into $B/stages.wasm by the Makefile and
 ** embedded below as base64).  The page's script only moves numbers between
 ** the sliders and the module and prints them; it holds no formula.
 **

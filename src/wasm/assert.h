@@ -1,5 +1,5 @@
 /*
-** stages/wasm/assert.h -- <assert.h> for the stages compiled to WebAssembly (no libc)
+** src/wasm/assert.h -- <assert.h> for the stages compiled to WebAssembly (no libc)
 ** See LICENSE for copyright and license.
 **
 ** A failed assertion traps (WebAssembly's unreachable): the page's script

@@ -1,9 +1,9 @@
 /*
-** stages/wasm/pt_wasm_libm.c -- the libm the stages need in WebAssembly (see pt_wasm_libm.h)
+** src/wasm/pt_wasm_libm.c -- the libm the stages need in WebAssembly (see pt_wasm_libm.h)
 ** See LICENSE for copyright and license.
 */
 #include <stdint.h>
-#include "pt_wasm_libm.h"
+#include "wasm/pt_wasm_libm.h"
 
 double pt_wasm_fmax(double x, double y)
 {

@@ -1,5 +1,5 @@
 /*
-** stages/wasm/math.h -- <math.h> for the stages compiled to WebAssembly (no libc)
+** src/wasm/math.h -- <math.h> for the stages compiled to WebAssembly (no libc)
 ** See LICENSE for copyright and license.
 **
 ** Only what the stages use (stages/pt_stage.c, pt_round.c, s1..s6,
@@ -7,12 +7,12 @@
 ** and NAN as clang's builtins, fabs, floor and sqrt as WebAssembly's f64.abs,
 ** f64.floor and f64.sqrt, the rest from pt_wasm_libm.c (sin and cos: a
 ** table, see pt_wasm_libm.h).  Found first because the Makefile compiles
-** with -isystem stages/wasm for the wasm32 target only.
+** with -isystem src/wasm for the wasm32 target only.
 */
 #ifndef PT_WASM_MATH_H
 #define PT_WASM_MATH_H
 
-#include "pt_wasm_libm.h"
+#include "wasm/pt_wasm_libm.h"
 
 #define isnan(x)     __builtin_isnan(x)
 #define isinf(x)     __builtin_isinf(x)

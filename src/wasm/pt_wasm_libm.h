@@ -1,8 +1,8 @@
 /*
-** stages/wasm/pt_wasm_libm.h -- the few libm functions the stages call, for WebAssembly
+** src/wasm/pt_wasm_libm.h -- the few libm functions the stages call, for WebAssembly
 ** See LICENSE for copyright and license.
 **
-** The stages compiled to WebAssembly (stages/wasm/pt_wasm.c) have no libc and
+** The stages compiled to WebAssembly (src/wasm/pt_wasm.c) have no libc and
 ** no libm: clang --target=wasm32 -nostdlib.  They call fabs, floor, sqrt,
 ** fmax, ilogb, fmod, frexp, ldexp, sin and cos (and isnan, isinf, isfinite,
 ** which are clang builtins).  fabs, floor and sqrt are single WebAssembly
@@ -22,7 +22,7 @@
 #ifndef PT_WASM_LIBM_H
 #define PT_WASM_LIBM_H
 
-#include "pt_wasm_in.h"
+#include "stages/wasm/pt_wasm_in.h"
 
 /* fmax(x, y) as C99 defines it: the larger; y when x is NaN, x when y is
 ** NaN.  This function can't fail. */

@@ -1,5 +1,5 @@
 /*
-** stages/wasm/string.h -- <string.h> for the stages compiled to WebAssembly (no libc)
+** src/wasm/string.h -- <string.h> for the stages compiled to WebAssembly (no libc)
 ** See LICENSE for copyright and license.
 **
 ** stages/pt_stage.c's pt_stage_by_name() compares names with strcmp; the

@@ -1,5 +1,5 @@
 /*
-** stages/wasm/pt_wasm.c -- both cameras' stages as a WebAssembly module
+** src/wasm/pt_wasm.c -- both cameras' stages as a WebAssembly module
 ** See LICENSE for copyright and license.
 **
 ** Compiled with the stages' own files (pt_stage.c, pt_round.c, s1..s6,
@@ -25,11 +25,11 @@
 **   pt_wasm_has(st, k)      1 when value k of stage st has a value (null per value)
 **   pt_wasm_flags(st), pt_wasm_warn(st)   the record's PT_REC_*, PT_WARN_* bits
 */
-#include <string.h>                         /* stages/wasm/string.h: strcmp */
-#include "pt_classic.h"
-#include "pt_matrix.h"
-#include "pt_wasm_libm.h"                 /* the sin and cos table */
-#include "pt_wasm_in.h"
+#include <string.h>                         /* src/wasm/string.h: strcmp */
+#include "stages/pt_classic.h"
+#include "stages/pt_matrix.h"
+#include "wasm/pt_wasm_libm.h"            /* the sin and cos table */
+#include "stages/wasm/pt_wasm_in.h"
 
 #define EXPORT(name) __attribute__((export_name(name)))
 
@@ -196,7 +196,7 @@ unsigned pt_wasm_warn(int st)
     return rec(st)->warn;
 }
 
-/* strcmp for stages/pt_stage.c's pt_stage_by_name() (stages/wasm/string.h). */
+/* strcmp for stages/pt_stage.c's pt_stage_by_name() (src/wasm/string.h). */
 int strcmp(const char *a, const char *b)
 {
     while (*a && *a == *b) { a++; b++; }

@@ -1,0 +1,115 @@
+/*
+** src/io/trace_csv.c -- the trace as CSV: the vertex records only, a row each
+** See LICENSE for copyright and license.
+*/
+#include <stdint.h>
+#include <string.h>
+#include "io/trace.h"
+#include "io/trace_int.h"
+
+/* ===== header ===== */
+
+/* The CSV header rows; see vertex_csv(). */
+static const char csv_classic[] =
+    "model,v,stage,x,y,z,inside,behind,i,warning,digits_lost\n";
+static const char csv_matrix[] =
+    "model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning,digits_lost\n";
+
+static void header_csv(pt_trace *t, const pt_scene *s, const pt_plan *p)
+{
+    (void)p;
+    if (t->student && *t->student) {        /* a student build: which stage files */
+        puts_(t, "# student "); puts_(t, t->student); put(t, "\n", 1);
+    }
+    puts_(t, s->matrix ? csv_matrix : csv_classic);
+}
+
+/* ===== vertex records ===== */
+
+/* CSV rows, empty where a field does not apply, warning names joined by '|':
+**   classic camera: model,v,stage,x,y,z,inside,behind,i,warning,digits_lost
+**   matrix camera:  model,v,stage,x,y,z,w,code,planes,inside,i,segment,t,warning,
+**                   digits_lost
+** (planes joined by '|'; a point clipping made has no v, but its segment and t). */
+
+/* 'm1,': how the vertex records of model m begin (pt_trace_vertex_prefix). */
+static void vertex_opening(pt_trace *t, const pt_model *m)
+{
+    puts_(t, m->name); put(t, ",", 1);
+}
+
+/* Names whose bits are set in bits, joined by sep, at o; returns the end. */
+static char *names_at(char *o, unsigned bits, const char *const *names, int n, char sep)
+{
+    int k, first = 1;
+
+    for (k = 0; k < n; k++) {
+        if (!(bits & (1u << k))) continue;
+        if (!first) *o++ = sep;
+        first = 0;
+        o = str_at(o, names[k]);
+    }
+    return o;
+}
+
+static void vertex_csv(pt_trace *t, const pt_vrec *r)
+{
+    int matrix = t->scene && t->scene->matrix, k, dims = pt_stage_infos[r->stage].nreal;
+    const double v[4] = {r->x, r->y, r->z, r->w};
+    char *o;
+
+    if (!(o = vertex_opening_at(t, !t->clipv, vertex_opening))) {   /* 'm1,12' ('m1,' clipped) */
+        puts_(t, t->model->name);
+        o = room(t, PT_ROW_REST);
+        *o++ = ',';
+        if (!t->clipv) o = u64_at(t, o, t->v);
+    }
+    *o++ = ',';
+    o = frag_at(t, o, r->stage, 0);         /* the stage's name */
+    for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
+        *o++ = ',';
+        if (k < dims) o = short_at(t, o, v[k]);
+        else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
+                 && pt_rec_has(r, k))
+            o = int_at(t, o, k ? r->iy : r->ix, 0);
+    }
+    *o++ = ',';
+    if (matrix) {                                       /* code,planes */
+        if (r->stage == PT_STAGE_CVV) {
+            o = int_at(t, o, r->code, 0);
+            *o++ = ',';
+            o = names_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES, '|');
+        } else {
+            *o++ = ',';
+        }
+        *o++ = ',';
+    }
+    if (r->stage == PT_STAGE_VIEWPORT) *o++ = r->flags & PT_REC_INSIDE ? '1' : '0';
+    *o++ = ',';
+    if (!matrix) {                                      /* behind */
+        if (r->stage == PT_STAGE_IMAGE) *o++ = r->flags & PT_REC_BEHIND ? '1' : '0';
+        *o++ = ',';
+    }
+    if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) o = int_at(t, o, r->i, 0);
+    *o++ = ',';
+    if (matrix) {                                       /* segment,t */
+        if (t->clipv) { o = u64_at(t, o, t->seg); *o++ = ','; o = short_at(t, o, t->t_clip); }
+        else *o++ = ',';
+        *o++ = ',';
+    }
+    o = names_at(o, r->warn, pt_warn_names, PT_NWARN, '|');
+    *o++ = ',';
+    if (r->warn & (PT_WARN_CANCEL | PT_WARN_ILLCOND)) o = int_at(t, o, r->digits_lost, 0);
+    *o++ = '\n';
+    t->len = (size_t)(o - t->buf);
+}
+
+static void on_vertex(void *ud, const pt_vrec *r)
+{
+    vertex_csv(ud, r);
+}
+
+/* No raster records, no summary: nobody listens to the rasterizer. */
+const pt_trace_writer pt_trace_csv = {
+    header_csv, on_vertex, NULL, NULL, NULL, NULL
+};
