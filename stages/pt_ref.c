@@ -27,7 +27,7 @@ int pt_ref_has(pt_stage st)
     case PT_STAGE_VIEWPORT: case PT_STAGE_FRAMEBUFFER: case PT_STAGE_INDEX:
         return 1;
     case PT_STAGE_MODEL: case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
-    case PT_STAGE_CVV: case PT_STAGE_NDC: case PT_STAGE_SCREEN: case PT_NSTAGES_ALL:
+    case PT_STAGE_CVV: case PT_STAGE_NDC: case PT_STAGE_SCREEN:
         return 0;
     }
     return 0;
@@ -62,7 +62,7 @@ int pt_ref_stage(pt_stage st, const pt_stage_params *par, const pt_vrec *in, pt_
         ptref_fb2index(pix_of(in), par->W, par->H, &sink);
         return 1;
     case PT_STAGE_MODEL: case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
-    case PT_STAGE_CVV: case PT_STAGE_NDC: case PT_STAGE_SCREEN: case PT_NSTAGES_ALL:
+    case PT_STAGE_CVV: case PT_STAGE_NDC: case PT_STAGE_SCREEN:
         return 0;
     }
     return 0;

@@ -51,23 +51,29 @@ static inline int pt_pix_has(pt_pix p, int k)
     return p.ok || (mine != PT_PIX_NONE && other == PT_PIX_NONE);
 }
 
+/* The stages.  Their numbers name rows of the tables (pt_stage_infos[]) and
+** bits of masks, nothing more: which stages a pipeline has, and in which
+** order, is its order (pt_classic_order[], pt_matrix_order[]; the pipelines,
+** src/core/pipelines.h). */
 typedef enum pt_stage {
-    PT_STAGE_MODEL,
-    PT_STAGE_CAMERA,
-    PT_STAGE_IMAGE,
+    PT_STAGE_MODEL,              /* every pipeline's first */
+    PT_STAGE_CAMERA,             /* the classic camera's: model -> camera */
+    PT_STAGE_IMAGE,              /*   -> image -> pixel -> viewport */
     PT_STAGE_PIXEL,
-    PT_STAGE_VIEWPORT,
-    PT_STAGE_FRAMEBUFFER,
+    PT_STAGE_VIEWPORT,           /* both (their own viewport functions) */
+    PT_STAGE_FRAMEBUFFER,        /* both: -> framebuffer -> index */
     PT_STAGE_INDEX,
-    PT_NSTAGES,                  /* the classic camera's stages end here */
-    PT_STAGE_WORLD = PT_NSTAGES, /* the matrix camera's own stages: */
+    PT_STAGE_WORLD,              /* the matrix camera's own stages: */
     PT_STAGE_VIEW,               /*   model -> world -> view -> clip -> cvv */
     PT_STAGE_CLIP,               /*   -> ndc -> screen, then viewport, */
     PT_STAGE_CVV,                /*   framebuffer and index as above */
     PT_STAGE_NDC,
-    PT_STAGE_SCREEN,
-    PT_NSTAGES_ALL
+    PT_STAGE_SCREEN
 } pt_stage;
+
+/* How many stages there are (the tables' length): not a stage, so that a
+** switch over pt_stage lists exactly the stages (-Wswitch-enum). */
+#define PT_NSTAGES_ALL ((int)PT_STAGE_SCREEN + 1)
 
 /* Flags of a pt_vrec. */
 #define PT_REC_BEHIND  0x01u   /* image: z_c > 0 under a perspective camera */

@@ -109,7 +109,7 @@ static const pt_segstage matrix_segstages[] = {
 
 const pt_pipeline pt_pipe_classic = {
     PT_PIPE_CLASSIC, "classic", "classic camera", NULL, pt_classic_order, PT_CLASSIC_NORDER,
-    PT_STAGE_INDEX, &pt_stage_infos[PT_STAGE_VIEWPORT],
+    PT_STAGE_INDEX, &pt_stage_infos[PT_STAGE_VIEWPORT], 0,
     1u << PT_STAGE_CAMERA | 1u << PT_STAGE_IMAGE | 1u << PT_STAGE_PIXEL |
     1u << PT_STAGE_VIEWPORT | 1u << PT_STAGE_FRAMEBUFFER | 1u << PT_STAGE_INDEX,
     NULL, classic_in, classic_vertex, NULL, 0, NULL, NULL,
@@ -118,7 +118,7 @@ const pt_pipeline pt_pipe_classic = {
 
 const pt_pipeline pt_pipe_matrix = {
     PT_PIPE_MATRIX, "matrix", "matrix camera", "lookat", pt_matrix_order, PT_MATRIX_NORDER,
-    PT_STAGE_CVV, &pt_matrix_viewport_info,
+    PT_STAGE_CVV, &pt_matrix_viewport_info, 1,
     1u << PT_STAGE_FRAMEBUFFER | 1u << PT_STAGE_INDEX,   /* the stages it shares */
     matrix_plan, matrix_in, matrix_vertex,
     matrix_segstages, (int)(sizeof matrix_segstages / sizeof matrix_segstages[0]),
@@ -142,11 +142,14 @@ const char *pt_scene_camera_title(const pt_scene *s, char *buf, size_t len)
     return buf;
 }
 
+const char *pt_camera_word(const pt_pipeline *pl, int perspective)
+{
+    return pl->camera ? pl->camera : perspective ? "perspective" : "orthographic";
+}
+
 const char *pt_scene_camera_word(const pt_scene *s)
 {
-    const pt_pipeline *pl = pt_scene_pipeline(s);
-
-    return pl->camera ? pl->camera : s->perspective ? "perspective" : "orthographic";
+    return pt_camera_word(pt_scene_pipeline(s), s->perspective);
 }
 
 const pt_pipeline *pt_pipeline_by_camera(const char *word)

@@ -173,6 +173,7 @@ const pt_pipeline *pt_pipeline_by_camera(const char *word);
 ** These functions can't fail. */
 #define PT_CAMERA_TITLE 64
 const char *pt_scene_camera_word(const pt_scene *s);
+const char *pt_camera_word(const pt_pipeline *pl, int perspective);  /* the same */
 const char *pt_scene_camera_title(const pt_scene *s, char *buf, size_t len);
 
 /* Fill *par with the numbers of scene s that the classic stages use for its

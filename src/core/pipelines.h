@@ -37,9 +37,12 @@ struct pt_plan;
 /* The pipelines a scene can name. */
 typedef enum pt_pipe_id {
     PT_PIPE_CLASSIC,             /* the teaching renderer's (renderer 4's) */
-    PT_PIPE_MATRIX,              /* the matrix camera: `camera lookat` */
-    PT_NPIPES
+    PT_PIPE_MATRIX               /* the matrix camera: `camera lookat` */
 } pt_pipe_id;
+
+/* How many pipelines there are: not an id, so that a switch over pt_pipe_id
+** lists exactly the pipelines (-Wswitch-enum). */
+#define PT_NPIPES ((int)PT_PIPE_MATRIX + 1)
 
 /* The numbers one model's vertices go through the stages with. */
 typedef struct pt_pipe_in {
@@ -80,6 +83,8 @@ typedef struct pt_pipeline {
     pt_stage stops_at;           /* a point whose runner says code != 0 stops
                                  ** after this stage (matrix: the cvv) */
     const pt_stage_info *viewport_info;     /* its viewport stage's row */
+    int matrices;                /* 1: the plan holds its View, Projection and
+                                 ** each model's World (pt_plan, pipeline.h) */
     unsigned ref_stages;         /* bit st: its stage st is computed by a file
                                  ** of s1 .. s6 (a student's can replace it),
                                  ** whose reference copy (stages/pt_ref.h)
@@ -131,6 +136,17 @@ static inline int pt_pipeline_prev(const pt_pipeline *pl, pt_stage st)
     for (i = 1; i < pl->norder; i++)
         if (pl->order[i] == st) return (int)pl->order[i - 1];
     return -1;
+}
+
+/* The most real values a stage of pl has: 3, or 4 with a homogeneous w.
+** This function can't fail. */
+static inline int pt_pipeline_nreal(const pt_pipeline *pl)
+{
+    int i, n = 0;
+
+    for (i = 0; i < pl->norder; i++)
+        if (pt_stage_infos[pl->order[i]].nreal > n) n = pt_stage_infos[pl->order[i]].nreal;
+    return n;
 }
 
 /* 1 when stage st is one of pl's.  This function can't fail. */

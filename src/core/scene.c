@@ -783,7 +783,6 @@ static int do_camera(parser *ps, source *src, const token *dir, cursor *args)
     if (parse_numbers(ps, src, a + 1, 9, "camera coordinate", v) < 0)
         return -1;
     ps->s->pipe = PT_PIPE_MATRIX;
-    ps->s->matrix = 1;
     ps->s->eye = (pt_vec3){v[0], v[1], v[2]};
     ps->s->dir = (pt_vec3){v[3], v[4], v[5]};
     ps->s->up = (pt_vec3){v[6], v[7], v[8]};
@@ -1246,17 +1245,17 @@ static int finish_camera(parser *ps, const char *name)
     pt_cam_error e;
     int skewed;
 
-    if (s->matrix && ps->proj_line == 0)
+    if ((s->pipe == PT_PIPE_MATRIX) && ps->proj_line == 0)
         return fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
                        "'camera lookat' needs a 'projection perspective' line");
-    if (!s->matrix && ps->proj_line != 0)
+    if (!(s->pipe == PT_PIPE_MATRIX) && ps->proj_line != 0)
         return fail_at(ps->err, ps->errlen, name, ps->proj_line, ps->proj_col[0],
                        "'projection' needs a 'camera lookat' line");
-    if (!s->matrix && ps->world_line != 0)
+    if (!(s->pipe == PT_PIPE_MATRIX) && ps->world_line != 0)
         return fail_at(ps->err, ps->errlen, name, ps->world_line, ps->world_col,
                        "'world' needs the matrix camera ('camera lookat'); the "
                        "classic camera places a model with 'translate'");
-    if (!s->matrix)
+    if (!(s->pipe == PT_PIPE_MATRIX))
         return 0;
     if (s->aspect_auto)
         s->aspect = pt_aspect_auto(s->vp_w, s->vp_h);

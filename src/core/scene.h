@@ -48,7 +48,6 @@ typedef struct pt_scene {
     int perspective;             /* 1: camera perspective (default), 0: orthographic */
     pt_pipe_id pipe;             /* the pipeline: PT_PIPE_MATRIX with `camera
                                  ** lookat` (+ projection), else PT_PIPE_CLASSIC */
-    int matrix;                  /* 1: pipe is PT_PIPE_MATRIX */
     pt_vec3 eye, dir, up;        /* matrix camera: position, direction, up vector */
     int target;                  /* 1: `camera lookat-target`: dir = at - eye */
     pt_vec3 at;                  /* with target: the point looked at */

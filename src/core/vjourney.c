@@ -11,7 +11,6 @@ void pt_journey_start(pt_journey *j, const pt_pipeline *pl, const pt_pipe_in *in
     j->par = in->par;
     j->pipe = pl;
     j->order = pl->order;
-    j->matrix = pl->id == PT_PIPE_MATRIX;
     if (in->mx.world) j->world = *in->mx.world;
     if (in->mx.view) j->view = *in->mx.view;
     if (in->mx.proj) j->proj = *in->mx.proj;
@@ -27,6 +26,15 @@ void pt_journey_file(pt_journey *j, const pt_vrec *r)
 const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st)
 {
     return pt_pipeline_info(j->pipe, st);
+}
+
+int pt_journey_stopped(const pt_journey *j, pt_stage st)
+{
+    int i;
+
+    for (i = j->norder; i < j->pipe->norder; i++)
+        if (j->pipe->order[i] == st) return 1;
+    return 0;
 }
 
 /* 1 when a and b hold the same numbers (bit for bit), flags and warnings. */

@@ -34,7 +34,6 @@ typedef struct pt_journey {
     unsigned reported;           /* bit st: stage st reported its record (a
                                  ** student's stage may not: its rec is zeros) */
     const pt_pipeline *pipe;     /* the pipeline it went through */
-    int matrix;                  /* 1: pipe is the matrix camera's */
     pt_mat4 world, view, proj;   /* matrix camera: World, View, Projection */
 } pt_journey;
 
@@ -50,6 +49,11 @@ void pt_journey_file(pt_journey *j, const pt_vrec *r);
 /* The name, spaces and formula of stage st as j's pipeline has it (the
 ** matrix camera's viewport stage floors instead of rounding).  Can't fail. */
 const pt_stage_info *pt_journey_info(const pt_journey *j, pt_stage st);
+
+/* 1 when j's point stopped before stage st of its pipeline (a matrix camera
+** vertex outside the view volume stops at the cvv).  This function can't
+** fail. */
+int pt_journey_stopped(const pt_journey *j, pt_stage st);
 
 /* 1 when r is the record of its stage in j, number for number (bit for bit,
 ** flags and all).  This function can't fail. */

@@ -328,8 +328,6 @@ static void explain_coord(text *t, const pt_journey *j, pt_stage st, const pt_vr
         add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, " * 0.5 = ");
         add_num(t, comp(cur, k), 0);
         break;
-    case PT_NSTAGES_ALL:
-        break;
     }
 }
 
@@ -606,8 +604,6 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
             if (!(j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
                 add(&t, " (never written: outside the viewport)");
         }
-        break;
-    case PT_NSTAGES_ALL:
         break;
     }
     return t.len;

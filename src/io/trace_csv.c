@@ -17,11 +17,11 @@ static const char csv_matrix[] =
 
 static void header_csv(pt_trace *t, const pt_scene *s, const pt_plan *p)
 {
-    (void)p;
     if (t->student && *t->student) {        /* a student build: which stage files */
         puts_(t, "# student "); puts_(t, t->student); put(t, "\n", 1);
     }
-    puts_(t, s->matrix ? csv_matrix : csv_classic);
+    puts_(t, pt_scene_pipeline(s)->matrices ? csv_matrix : csv_classic);
+    (void)p;
 }
 
 /* ===== vertex records ===== */
@@ -54,7 +54,9 @@ static char *names_at(char *o, unsigned bits, const char *const *names, int n, c
 
 static void vertex_csv(pt_trace *t, const pt_vrec *r)
 {
-    int matrix = t->scene && t->scene->matrix, k, dims = pt_stage_infos[r->stage].nreal;
+    /* the matrix camera's columns: w, the outcode, a clipped point's segment */
+    int matrix = t->scene && pt_scene_pipeline(t->scene)->matrices;
+    int k, dims = pt_stage_infos[r->stage].nreal;
     const double v[4] = {r->x, r->y, r->z, r->w};
     char *o;
 

@@ -11,7 +11,7 @@
 /* See trace_int.h. */
 const char *pt_trace_camera_name(const pt_scene *s)
 {
-    return s->matrix ? "lookat" : s->perspective ? "perspective" : "orthographic";
+    return pt_scene_camera_word(s);
 }
 
 /* See trace_int.h. */

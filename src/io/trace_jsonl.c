@@ -28,7 +28,7 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
     puts_(t, ",\"w\":"); put_i64(t, s->vp_w);
     puts_(t, ",\"h\":"); put_i64(t, s->vp_h);
     puts_(t, "},\"camera\":\""); puts_(t, pt_trace_camera_name(s)); put(t, "\"", 1);
-    if (s->matrix) pt_trace_camera(t, s, p, 1);
+    if (p->pipe->matrices) pt_trace_camera(t, s, p, 1);
     if (s->from_obj) { puts_(t, ",\"obj_translate\":"); pt_trace_vec3_json(t, s->obj_translate); }
     puts_(t, ",\"models\":[");
     for (k = 0; k < s->nmodels; k++) {
@@ -45,7 +45,7 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
         puts_(t, ",\"color\":["); pt_trace_rgb(t, m->color, ",");
         puts_(t, "],\"traced\":");
         puts_(t, mp->selected ? "true" : "false");
-        if (s->matrix) { puts_(t, ",\"world\":"); pt_trace_mat(t, &mp->world, 1); }
+        if (p->pipe->matrices) { puts_(t, ",\"world\":"); pt_trace_mat(t, &mp->world, 1); }
         puts_(t, ",\"stages\":[");
         for (i = 0; i < p->norder; i++) {
             st = p->order[i];

@@ -326,10 +326,11 @@ int pt_kraft_write(FILE *f, const pt_scene *s, int pixels, char *err, size_t err
 {
     size_t k;
 
-    if (s->matrix) {
-        snprintf(err, errlen, "%s: error: the course's renderer has no matrix camera "
-                 "('camera lookat'), so there is no log of it to write: use --format "
-                 "text, jsonl or csv", s->path);
+    if (pt_scene_pipeline(s) != &pt_pipe_classic) {
+        snprintf(err, errlen, "%s: error: the course's renderer has no %s "
+                 "('camera %s'), so there is no log of it to write: use --format "
+                 "text, jsonl or csv", s->path, pt_scene_pipeline(s)->title,
+                 pt_scene_camera_word(s));
         return -1;
     }
     for (k = 0; pixels && k < s->nmodels; k++)   /* nothing written on error */

@@ -75,7 +75,7 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
     puts_(t, "\nviewport     "); put_i64(t, s->vp_w); puts_(t, " x "); put_i64(t, s->vp_h);
     puts_(t, " at (x_ul, y_ul) = ("); put_i64(t, s->vp_x); puts_(t, ", ");
     put_i64(t, s->vp_y); puts_(t, ")\ncamera       "); puts_(t, pt_trace_camera_name(s));
-    if (s->matrix) pt_trace_camera(t, s, p, 0);
+    if (p->pipe->matrices) pt_trace_camera(t, s, p, 0);
     if (s->from_obj) { puts_(t, "\nobj placed   translate "); put_xyz_text(t, s->obj_translate); }
     if (t->student && *t->student) {        /* a student build: which stage files */
         puts_(t, "\nstudent      "); puts_(t, t->student);
@@ -92,7 +92,7 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
         puts_(t, ", color "); pt_trace_rgb(t, m->color, " ");
         if (!mp->selected) puts_(t, ", not traced (--model)");
         put(t, "\n", 1);
-        if (s->matrix) {
+        if (p->pipe->matrices) {
             puts_(t, "  world      "); pt_trace_mat(t, &mp->world, 0); put(t, "\n", 1);
         }
         for (i = 0; i < p->norder; i++) {

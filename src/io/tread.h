@@ -107,8 +107,9 @@ typedef struct pt_thdr {
     int have;                    /* 1: the trace has a header */
     int fb_w, fb_h;              /* framebuffer size W x H */
     int vp_x, vp_y, vp_w, vp_h;  /* viewport corner (x_ul, y_ul), size w x h */
-    int perspective;             /* 1: perspective, 0: orthographic (the classic
-                                 ** camera), -1: the matrix camera (lookat) */
+    pt_pipe_id pipe;             /* the pipeline its camera word names */
+    int perspective;             /* the classic camera's projection: 1:
+                                 ** perspective, 0: orthographic (lookat: 1) */
     char student[256];           /* a student build's "student" line ("pixel=
                                  ** FILE#CKSUM ..."), cut to fit; "" otherwise */
     pt_tmodel *models;           /* in file order; owned */

@@ -121,6 +121,12 @@ int pt_tr_to_i64(const char *p, int64_t *out);
 /* 1 when p[0..n) spells s. */
 int pt_tr_is(const char *p, size_t n, const char *s);
 
+/* The header's camera word p[0..n) into h->pipe and h->perspective:
+** "perspective" and "orthographic" name the classic camera, a pipeline's own
+** word (pt_pipeline.camera: "lookat") that pipeline.  Returns 0, or -1 for
+** another word. */
+int pt_tr_camera(pt_thdr *h, const char *p, size_t n);
+
 /* A non-finite value as the traces spell it: nan, inf, -inf.  1 with *x when
 ** p[0..n) is one, else 0. */
 int pt_tr_nonfinite(const char *p, size_t n, double *x);

@@ -457,10 +457,8 @@ static int j_header(pt_treader *r, const jfield *f, int nf)
         jsize(r, g, ng, "w", &h->vp_w) || jsize(r, g, ng, "h", &h->vp_h))
         return -1;
     if (!(v = need(r, f, nf, "camera", "header"))) return -1;
-    if (v->kind == J_STR && pt_tr_is(v->p, (size_t)(v->e - v->p), "perspective")) h->perspective = 1;
-    else if (v->kind == J_STR && pt_tr_is(v->p, (size_t)(v->e - v->p), "orthographic")) h->perspective = 0;
-    else if (v->kind == J_STR && pt_tr_is(v->p, (size_t)(v->e - v->p), "lookat")) h->perspective = -1;
-    else return pt_tr_fail(r, v->p, "expected \"perspective\", \"orthographic\" or \"lookat\"");
+    if (v->kind != J_STR || pt_tr_camera(h, v->p, (size_t)(v->e - v->p)) != 0)
+        return pt_tr_fail(r, v->p, "expected \"perspective\", \"orthographic\" or \"lookat\"");
     if (!(v = need(r, f, nf, "models", "header"))) return -1;
     if (v->kind != J_ARR) return pt_tr_fail(r, v->p, "expected a list of models");
     while (j_item(r, v, &pos, &item)) {

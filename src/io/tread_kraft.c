@@ -294,7 +294,7 @@ static int kraft_line(pt_treader *r, kstate *k)
     c.e = r->eol;
     if (c.p == c.e) return 0;                        /* the empty first line */
     if (k->ended) return pt_tr_fail(r, c.p, "text after '== End Rendering of Scene =='");
-    for (st = 0; st < PT_NSTAGES; st++) {            /* "0. Model      : ..." */
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {        /* "0. Model      : ..." */
         const char *title = pt_stage_course[st];
         size_t n = title ? strlen(title) : 0;
         cur d = c;

@@ -306,10 +306,8 @@ static int text_header_line(pt_treader *r)
     }
     if (pt_tr_is(w, n, "camera")) {
         if (!word(&c, &w, &n)) return pt_tr_fail(r, w, "expected the camera");
-        if (pt_tr_is(w, n, "perspective")) h->perspective = 1;
-        else if (pt_tr_is(w, n, "orthographic")) h->perspective = 0;
-        else if (pt_tr_is(w, n, "lookat")) h->perspective = -1;
-        else return pt_tr_fail(r, w, "expected 'perspective', 'orthographic' or 'lookat'");
+        if (pt_tr_camera(h, w, n) != 0)
+            return pt_tr_fail(r, w, "expected 'perspective', 'orthographic' or 'lookat'");
         return 0;
     }
     if (pt_tr_is(w, n, "student")) {        /* a student build's stage files */

@@ -208,3 +208,19 @@ int pt_tr_nonfinite(const char *p, size_t n, double *x)
     if (pt_tr_is(p, n, "-inf")) { *x = -(double)INFINITY; return 1; }
     return 0;
 }
+
+int pt_tr_camera(pt_thdr *h, const char *p, size_t n)
+{
+    int k;
+
+    for (k = 0; k < PT_NPIPES; k++)
+        if (pt_pipelines[k]->camera && pt_tr_is(p, n, pt_pipelines[k]->camera)) {
+            h->pipe = pt_pipelines[k]->id;
+            h->perspective = 1;
+            return 0;
+        }
+    if (!pt_tr_is(p, n, "perspective") && !pt_tr_is(p, n, "orthographic")) return -1;
+    h->pipe = PT_PIPE_CLASSIC;
+    h->perspective = pt_tr_is(p, n, "perspective");
+    return 0;
+}

@@ -263,9 +263,10 @@ int pt_cmd_export(int argc, char **argv)
     }
     if (pt_cli_load(&s, path) != 0)
         return PT_EXIT_INPUT;
-    if (s.matrix) {
-        fprintf(stderr, "pipetrace export: %s uses the matrix camera (camera lookat), "
-                "which renderer 4 does not have\n", s.path);
+    if (pt_scene_pipeline(&s) != &pt_pipe_classic) {
+        fprintf(stderr, "pipetrace export: %s uses the %s (camera %s), "
+                "which renderer 4 does not have\n", s.path, pt_scene_pipeline(&s)->title,
+                pt_scene_camera_word(&s));
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }

@@ -136,14 +136,14 @@ static void interact(const pt_journey *j)
 /* Which stages of each camera answer the same question, row by row. */
 static const struct cmp_row {
     const char *what;
-    pt_stage classic[2], matrix[3];          /* PT_NSTAGES_ALL: none */
+    int classic[2], matrix[3];               /* -1: none */
 } cmp_rows[] = {
-    { "the vertex",      {PT_STAGE_MODEL, PT_NSTAGES_ALL}, {PT_STAGE_MODEL, PT_NSTAGES_ALL, PT_NSTAGES_ALL} },
-    { "seen from the camera", {PT_STAGE_CAMERA, PT_NSTAGES_ALL}, {PT_STAGE_WORLD, PT_STAGE_VIEW, PT_NSTAGES_ALL} },
-    { "projected",       {PT_STAGE_IMAGE, PT_NSTAGES_ALL}, {PT_STAGE_CLIP, PT_STAGE_CVV, PT_STAGE_NDC} },
-    { "on the viewport", {PT_STAGE_PIXEL, PT_STAGE_VIEWPORT}, {PT_STAGE_SCREEN, PT_STAGE_VIEWPORT, PT_NSTAGES_ALL} },
-    { "in the framebuffer", {PT_STAGE_FRAMEBUFFER, PT_NSTAGES_ALL}, {PT_STAGE_FRAMEBUFFER, PT_NSTAGES_ALL, PT_NSTAGES_ALL} },
-    { "in the pixel array", {PT_STAGE_INDEX, PT_NSTAGES_ALL}, {PT_STAGE_INDEX, PT_NSTAGES_ALL, PT_NSTAGES_ALL} },
+    { "the vertex",      {PT_STAGE_MODEL, -1}, {PT_STAGE_MODEL, -1, -1} },
+    { "seen from the camera", {PT_STAGE_CAMERA, -1}, {PT_STAGE_WORLD, PT_STAGE_VIEW, -1} },
+    { "projected",       {PT_STAGE_IMAGE, -1}, {PT_STAGE_CLIP, PT_STAGE_CVV, PT_STAGE_NDC} },
+    { "on the viewport", {PT_STAGE_PIXEL, PT_STAGE_VIEWPORT}, {PT_STAGE_SCREEN, PT_STAGE_VIEWPORT, -1} },
+    { "in the framebuffer", {PT_STAGE_FRAMEBUFFER, -1}, {PT_STAGE_FRAMEBUFFER, -1, -1} },
+    { "in the pixel array", {PT_STAGE_INDEX, -1}, {PT_STAGE_INDEX, -1, -1} },
 };
 
 /* 1 when stage st is part of journey j. */
@@ -156,14 +156,14 @@ static int in_journey(const pt_journey *j, pt_stage st)
 }
 
 /* One side of a row: "stage  values" per stage, each on its own line. */
-static int side_lines(const pt_journey *j, const pt_stage *sts, int n, char out[][PT_EXPLAINLEN + 16])
+static int side_lines(const pt_journey *j, const int *sts, int n, char out[][PT_EXPLAINLEN + 16])
 {
     int i, k = 0;
 
-    for (i = 0; i < n && sts[i] != PT_NSTAGES_ALL; i++) {
+    for (i = 0; i < n && sts[i] >= 0; i++) {
         char b[PT_EXPLAINLEN];
-        if (!in_journey(j, sts[i])) continue;
-        pt_explain_values(b, sizeof b, j, sts[i]);
+        if (!in_journey(j, (pt_stage)sts[i])) continue;
+        pt_explain_values(b, sizeof b, j, (pt_stage)sts[i]);
         snprintf(out[k++], PT_EXPLAINLEN + 16, "%-9s %s", pt_stage_infos[sts[i]].name, b);
     }
     return k;

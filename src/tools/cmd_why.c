@@ -266,18 +266,19 @@ static void evaluate(const pt_scene *s, pt_journey *const *js, size_t mi, size_t
 ** needs on the way (behind the camera, outside the viewport). */
 static void show_vertex(uint64_t v, const pt_journey *j)
 {
-    static const char *const lead[PT_NSTAGES] = {
+    static const char *const lead[PT_CLASSIC_NORDER] = {   /* the classic order's */
         "model ", " -> camera ", " -> image ", "\n        -> pixel ", " -> viewport ",
         "\n        -> framebuffer ", " -> index ",
     };
     char b[PT_EXPLAINLEN];
-    int st;
+    int i;
 
     fprintf(term.f, "    v%llu  ", (unsigned long long)v);
-    for (st = 0; st < PT_NSTAGES; st++) {
+    for (i = 0; i < PT_CLASSIC_NORDER; i++) {
+        pt_stage st = pt_classic_order[i];
         const pt_vrec *r = &j->rec[st];
-        pt_explain_tuple(b, sizeof b, j, (pt_stage)st);
-        fprintf(term.f, "%s%s", lead[st], b);
+        pt_explain_tuple(b, sizeof b, j, st);
+        fprintf(term.f, "%s%s", lead[i], b);
         if (st == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND)) fprintf(term.f, " behind the camera");
         if (st == PT_STAGE_VIEWPORT && !(r->flags & (PT_REC_INSIDE | PT_REC_NULL)))
             fprintf(term.f, " outside");
@@ -604,10 +605,10 @@ int pt_cmd_why(int argc, char **argv)
 
     if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return PT_EXIT_INPUT;
     w.s = &s;
-    if (s.matrix) {
-        fprintf(stderr, "pipetrace why: %s: %s\n", s.path,
-                "why follows the classic camera (model -> camera -> image -> pixel -> "
-                "viewport); this scene has the matrix camera: try 'pipetrace step'");
+    if (pt_scene_pipeline(&s) != &pt_pipe_classic) {
+        fprintf(stderr, "pipetrace why: %s: why follows the classic camera (model -> camera "
+                "-> image -> pixel -> viewport); this scene has the %s: try 'pipetrace "
+                "step'\n", s.path, pt_scene_pipeline(&s)->title);
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }

@@ -362,9 +362,9 @@ int main(int argc, char **argv)
         pt_outfile_abort(&iout);
         pt_outfile_abort(&tout);
     }
-    if (!rc && c.opt.raw_lookat && !s.matrix)
-        fputs("pipetrace: note: --raw-lookat changes nothing: the scene uses the "
-              "classic camera\n", stderr);
+    if (!rc && c.opt.raw_lookat && !pt_scene_pipeline(&s)->matrices)
+        fprintf(stderr, "pipetrace: note: --raw-lookat changes nothing: the scene uses the "
+                "%s\n", pt_scene_pipeline(&s)->title);
     if (!rc && c.opt.vertex && !c.image && sum.vertices_traced == 0)
         fprintf(stderr, "pipetrace: note: vertex %llu is used by no segment, so it "
                 "is not transformed\n", (unsigned long long)c.opt.vertex);

@@ -362,7 +362,7 @@ static int run_alloc(pt_acc_run *r)
 
     r->used = calloc(nm, sizeof *r->used);
     if (!r->used) return -1;
-    if (!s->matrix) {
+    if (!pt_scene_pipeline(s)->matrices) {
         r->j = calloc(nm, sizeof *r->j);
         for (k = 0; r->j && k < s->nmodels; k++)
             if ((r->j[k] = calloc(s->models[k].nv ? s->models[k].nv : 1, sizeof **r->j)) == NULL)
@@ -413,10 +413,11 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     o.ud = &c;
     o.w = s->vp_w;
     o.h = s->vp_h;
-    o.to_vp = s->matrix ? pt_pixelplane2viewport : ptref_pixel2viewport;
+    o.to_vp = pt_pipeline_ref(pt_scene_pipeline(s), PT_STAGE_VIEWPORT) ? ptref_pixel2viewport
+                                                                  : pt_scene_pipeline(s)->to_viewport;
     raster_scene(r, &o, &c.rgb, 1);
     if (c.oom) { free(c.px); pt_acc_run_free(r); return -1; }
-    for (k = 0; s->matrix && k < s->nmodels; k++)
+    for (k = 0; pt_scene_pipeline(s)->matrices && k < s->nmodels; k++)
         for (q = 0; q < s->models[k].nseg; q++) {
             r->made += (uint64_t)(r->seg[k][q].made[0] + r->seg[k][q].made[1]);
             r->culled += !r->seg[k][q].visible;
@@ -495,7 +496,7 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
     const pt_scene *s = r->s;
     pt_acc_work *w = calloc(1, sizeof *w);
     size_t k, v, n = r->nused ? (size_t)r->nused : 1, i = 0;
-    int tail = s->matrix && row >= PT_ACC_M_NDC;
+    int tail = pt_scene_pipeline(s)->matrices && row >= PT_ACC_M_NDC;
 
     if (!w) return NULL;
     w->arith = r->arith;
@@ -504,7 +505,7 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
     w->model = calloc(n, sizeof *w->model);
     w->v = calloc(n, sizeof *w->v);
     if (tail) w->t = calloc(n, sizeof *w->t);
-    else if (s->matrix) w->mj = calloc(n, sizeof *w->mj);
+    else if (pt_scene_pipeline(s)->matrices) w->mj = calloc(n, sizeof *w->mj);
     else w->j = calloc(n, sizeof *w->j);
     if (!w->ctx || !w->model || !w->v || !(w->t || w->mj || w->j)) {
         pt_acc_work_free(w);
@@ -520,7 +521,7 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
             w->model[i] = k;
             w->v[i] = m->v[v];
             if (tail) w->t[i] = r->mj[k][v].t;
-            else if (s->matrix) w->mj[i] = r->mj[k][v];
+            else if (pt_scene_pipeline(s)->matrices) w->mj[i] = r->mj[k][v];
             else w->j[i] = r->j[k][v];
             i++;
         }
@@ -610,7 +611,8 @@ double pt_acc_raster_pass(const pt_acc_run *r, uint64_t *pixels)
     o.ud = &t;
     o.w = r->s->vp_w;
     o.h = r->s->vp_h;
-    o.to_vp = r->s->matrix ? pt_pixelplane2viewport : ptref_pixel2viewport;
+    o.to_vp = pt_pipeline_ref(pt_scene_pipeline(r->s), PT_STAGE_VIEWPORT) ? ptref_pixel2viewport
+                                                                     : pt_scene_pipeline(r->s)->to_viewport;
     raster_scene(r, &o, NULL, 0);
     *pixels = t.n;
     return (double)t.sum;
@@ -688,7 +690,7 @@ static void vertex_err(pt_acc_err e[PT_ACC_MAXROWS], const pt_acc_run *ref,
     static const int nc[4] = {3, 3, 2, 2}, nm[4] = {3, 4, 4, 4};
     const pt_dd *va[4], *vb[4];
 
-    if (r->s->matrix) {
+    if (pt_scene_pipeline(r->s)->matrices) {
         const pt_acc_mjourney *a = &r->mj[k][v], *b = &ref->mj[k][v];
 
         va[0] = a->m; va[1] = a->w; va[2] = a->v; va[3] = a->k;
@@ -728,20 +730,20 @@ static void made_points(pt_acc_err e[PT_ACC_MAXROWS], const pt_acc_run *ref,
 void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS])
 {
     const pt_scene *s = r->s;
-    int raster = s->matrix ? PT_ACC_M_RASTER : PT_ACC_RASTER, row;
+    int raster = pt_scene_pipeline(s)->matrices ? PT_ACC_M_RASTER : PT_ACC_RASTER, row;
     size_t k, v;
 
     memset(e, 0, (size_t)(raster + 1) * sizeof *e);
     for (row = 0; row < raster; row++) {
-        e[row].real = s->matrix ? row <= PT_ACC_M_CLIP || row == PT_ACC_M_NDC
+        e[row].real = pt_scene_pipeline(s)->matrices ? row <= PT_ACC_M_CLIP || row == PT_ACC_M_NDC
                                   || row == PT_ACC_M_SCREEN
                                 : row <= PT_ACC_PIXEL;
-        e[row].of = s->matrix && row > PT_ACC_M_CVV ? 0 : r->nused;  /* matrix ndc ..: */
+        e[row].of = pt_scene_pipeline(s)->matrices && row > PT_ACC_M_CVV ? 0 : r->nused;  /* matrix ndc ..: */
     }                                                               /* counted as they come */
     for (k = 0; k < s->nmodels; k++) {
         for (v = 0; v < s->models[k].nv; v++)
             if (r->used[k][v]) vertex_err(e, ref, r, k, v);
-        if (s->matrix) made_points(e, ref, r, k);
+        if (pt_scene_pipeline(s)->matrices) made_points(e, ref, r, k);
     }
     e[raster] = r->line;
     e[raster].real = 1;

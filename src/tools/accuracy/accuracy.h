@@ -31,7 +31,7 @@
 ** rounded integer endpoints, the exact line (ties are exact while (s - s0) * dy
 ** < 2^53).  Errors are measured against the reference rounded to double.
 **
-** The matrix camera (s->matrix): each arithmetic builds View, Projection and
+** The matrix camera (its pipeline has matrices): each arithmetic builds View, Projection and
 ** every World itself, with stages/pt_mat4.c's formulas: float from the
 ** scene's numbers rounded to float (sqrtf, sinf, cosf), double by the
 ** pipeline's own plan (pt_lookat(), pt_perspective()), the reference in
@@ -54,7 +54,7 @@
 **   pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
 **   pt_acc_run_make(&r, &s, PT_ARITH_FLOAT, 0);
 **   pt_acc_compare(&ref, &r, e);                   e[row]: that stage's errors
-**                      (rows: pt_acc_row_names, or pt_acc_mrow_names when s.matrix)
+**                      (rows: pt_acc_row_names, or pt_acc_mrow_names when the pipeline has matrices)
 **   w = pt_acc_work_make(&r, row);  pt_acc_stage_pass(w, row);   one stage, timed
 **   pt_acc_work_free(w);  pt_acc_raster_pass(&r, &n);       the rasterizer, timed
 **   pt_acc_run_free(&r);  pt_acc_run_free(&ref);
@@ -146,7 +146,7 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
 void pt_acc_run_free(pt_acc_run *r);
 
 /* Compare run r with the reference ref (same scene): e[row] for each row of
-** the scene's camera (PT_ACC_NROWS, or PT_ACC_M_NROWS when s->matrix).  This
+** the scene's camera (PT_ACC_NROWS, or PT_ACC_M_NROWS when the pipeline has matrices).  This
 ** function can't fail. */
 void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS]);
 
@@ -218,7 +218,7 @@ void pt_acc_journey_of(pt_arith a, unsigned choices, const pt_scene *s,
 
 /* ===== the matrix camera ===== */
 
-/* View, Projection and each model's World of scene s (s->matrix) in arithmetic
+/* View, Projection and each model's World of scene s (its pipeline has matrices) in arithmetic
 ** a, as described at the top.  Returns NULL when out of memory.  s must outlive
 ** the result, which pt_acc_mcam_free() frees (NULL is fine). */
 pt_acc_mcam *pt_acc_mcam_make(const pt_scene *s, pt_arith a);

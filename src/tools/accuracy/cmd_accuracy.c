@@ -200,7 +200,8 @@ static void time_all(study *st, int repeat)
         unsigned rows = k == RUN_DD || k == RUN_FLOAT || k == RUN_DOUBLE ? all
                       : k == RUN_TWO ? (1u << PT_ACC_PIXEL | 1u << PT_ACC_VIEWPORT) : raster;
 
-        if (st->s->matrix && k == RUN_TWO) continue;    /* no 2.001 to replace */
+        if (!pt_pipeline_has(pt_scene_pipeline(st->s), PT_STAGE_PIXEL) && k == RUN_TWO)
+            continue;                                   /* no 2.001 to replace */
         time_run(st, &st->run[k], rows, repeat, &st->t[k]);
     }
     st->timed = 1;
@@ -295,7 +296,7 @@ static void print_header(const study *st)
     printf("scene       %zu models, %llu vertices used, %llu segments, %zu pixels in the "
            "reference image\n", s->nmodels, (unsigned long long)st->run[RUN_DD].nused,
            (unsigned long long)nseg, st->run[RUN_DD].nimg);
-    if (s->matrix) { print_matrix_header(st); return; }
+    if (pt_scene_pipeline(s)->matrices) { print_matrix_header(st); return; }
     printf("            viewport %d x %d, %s camera\n", s->vp_w, s->vp_h,
            s->perspective ? "perspective" : "orthographic");
     printf("reference   double-double, %d significant bits; measured: 1/3 within 2^-%d,\n"
@@ -335,7 +336,7 @@ static void print_arithmetics(const study *st)
     int k;
 
     printf("\narithmetic     bits %14s  viewport differ  pixels differ%s\n",
-           st->s->matrix ? "screen max err" : "pixel max err",
+           pt_scene_pipeline(st->s)->matrices ? "screen max err" : "pixel max err",
            st->timed ? "  ns/vertex  ns/pixel" : "");
     for (k = 0; k < 3; k++) {
         const pt_acc_err *e = st->err[runs[k]];
@@ -402,7 +403,7 @@ static void print_choices(const study *st)
     char b1[32], b2[48], b3[48], b4[32];
     int k;
 
-    if (st->s->matrix)
+    if (pt_scene_pipeline(st->s)->matrices)
         printf("\nchoice: 2.001 or 2.0 does not apply to the matrix camera: its screen stage,\n"
                "x_s = (x_n + 1) * w * 0.5, has no 2.001\n");
     else print_two(st);
@@ -475,7 +476,7 @@ static const char *const series_color[3] = { "#d95f02", "#1b61b8", "#1b9e77" };
 static int panel_of(const study *st, int row)
 {
     if (row == st->rows->raster) return P_RASTER;
-    if (st->s->matrix) {
+    if (pt_scene_pipeline(st->s)->matrices) {
         if (row == PT_ACC_M_CVV) return -1;
         if (row == PT_ACC_M_INDEX) return P_INDEX;
         return row <= PT_ACC_M_NDC ? P_COORD : P_PIXEL;
@@ -555,7 +556,7 @@ static int collect_points(const study *st, point *p)
                           arith_runs[k] == RUN_DD ? 0.0 : e->n ? e->max_abs : (double)NAN,
                           panel_of(st, row));
         }
-    if (!st->s->matrix)                             /* the choice 2.0 for 2.001 */
+    if (pt_pipeline_has(pt_scene_pipeline(st->s), PT_STAGE_PIXEL))   /* 2.0 for 2.001 */
         for (row = PT_ACC_PIXEL; row <= PT_ACC_VIEWPORT; row++) {
             const pt_acc_err *e = &st->err[RUN_TWO][row];
 
@@ -689,9 +690,9 @@ static void write_panel(FILE *f, const study *st, int panel, point *p, int n)
     place_labels(p, n, panel, &fr);
     fprintf(f, "<g class=\"panel\" data-unit=\"%s\">\n", panel_unit[panel]);
     snprintf(b, sizeof b, "%s%s", panel_title[panel],
-             panel == P_PIXEL ? (st->s->matrix ? ": screen, viewport, framebuffer"
+             panel == P_PIXEL ? (pt_scene_pipeline(st->s)->matrices ? ": screen, viewport, framebuffer"
                                                : ": pixel plane, viewport, framebuffer")
-             : panel == P_COORD ? (st->s->matrix ? ": model .. ndc" : ": model, camera, image")
+             : panel == P_COORD ? (pt_scene_pipeline(st->s)->matrices ? ": model .. ndc" : ": model, camera, image")
              : "");
     text_at(f, fr.l, fr.t - 10, 12, -1, NULL, "panel-title", b);
     for (k = (int)fr.x0; k <= (int)fr.x1; k++) {    /* x: every decade */
@@ -779,7 +780,7 @@ static void write_svg(FILE *f, const study *st)
         x += 10 + LABEL_EM * TEXT_FS * (double)strlen(b) + 30;
     }
     text_at(f, 20, 84, TEXT_FS, -1, "#555", "note",
-            st->s->matrix
+            pt_scene_pipeline(st->s)->matrices
             ? "0 (the reference's own errors, and exact results) lies on the dashed line "
               "marked 0, inf on the one marked inf; cvv (outcodes) has no error to plot."
             : "0 (the reference's own errors, and exact results) lies on the dashed line "
@@ -827,12 +828,13 @@ int pt_cmd_accuracy(int argc, char **argv)
     st = calloc(1, sizeof *st);
     if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return PT_EXIT_INPUT; }
     st->s = &s;
-    st->rows = s.matrix ? &matrix_rows : &classic_rows;
+    st->rows = pt_scene_pipeline(&s)->matrices ? &matrix_rows : &classic_rows;
     for (k = 0; k < NRUNS && rc == 0; k++) {
         int row;
 
         for (row = 0; row < PT_ACC_MAXROWS; row++) st->t[k].row[row] = (double)NAN;
-        if (s.matrix && k == RUN_TWO) continue;     /* no 2.001 to replace */
+        if (!pt_pipeline_has(pt_scene_pipeline(&s), PT_STAGE_PIXEL) && k == RUN_TWO)
+            continue;                               /* no 2.001 to replace */
         rc = pt_acc_run_make(&st->run[k], &s, run_of[k].arith, run_of[k].choices);
     }
     if (rc != 0) {
@@ -841,7 +843,7 @@ int pt_cmd_accuracy(int argc, char **argv)
         goto done;
     }
     for (k = 0; k < NRUNS; k++)
-        if (!(s.matrix && k == RUN_TWO)) pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
+        if (pt_pipeline_has(pt_scene_pipeline(&s), PT_STAGE_PIXEL) || k != RUN_TWO) pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
     if (!no_time) time_all(st, repeat);
 
     print_header(st);

@@ -168,7 +168,7 @@ static int hctx_of(const dctx *c, int ref, uint32_t model, hctx *h)
 {
     const pt_thdr *hd = &c->t[ref].hdr;
 
-    if (!hd->have || hd->perspective < 0 || hd->vp_w < 1 || hd->vp_h < 1) return 0;
+    if (!hd->have || hd->pipe != PT_PIPE_CLASSIC || hd->vp_w < 1 || hd->vp_h < 1) return 0;
     h->par.w = hd->vp_w; h->par.h = hd->vp_h;
     h->par.W = hd->fb_w; h->par.H = hd->fb_h;
     h->par.x_ul = hd->vp_x; h->par.y_ul = hd->vp_y;

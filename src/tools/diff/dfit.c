@@ -189,7 +189,7 @@ int pt_diff_fit(dctx *c)
     c->fit_differ = fs.differ;
     c->fit_agree = fs.agree;
     if (silent) fs.onesided++;              /* nothing explains a stage that did not report */
-    if (!hd->have || hd->perspective < 0 || hd->vp_w < 1 || hd->vp_h < 1 || !fs.differ) {
+    if (!hd->have || hd->pipe != PT_PIPE_CLASSIC || hd->vp_w < 1 || hd->vp_h < 1 || !fs.differ) {
         free(fs.first);
         return 0;
     }
@@ -210,10 +210,11 @@ int pt_diff_fit(dctx *c)
     /* diff's arguments in the wrong order: the hypotheses with ACTUAL as the
     ** reference (which must then be right, see pt_diff_hyp_vertex: so a
     ** mistake does not fit both ways round) */
-    for (k = 0; c->verdict < 0 && c->swapped < 0 && k < nbase + PT_NSTAGES; k++) {
+    for (k = 0; c->verdict < 0 && c->swapped < 0 && k < nbase + PT_CLASSIC_NORDER; k++) {
         dhyp h = k < nbase ? c->hy[k] : c->hy[0];
-        if (k >= nbase && (k - nbase < PT_STAGE_CAMERA ||
-                           !make_offset(c, &fs, (int)(k - nbase), 1, &h))) continue;
+        pt_stage off = k < nbase ? PT_STAGE_MODEL : pt_classic_order[k - nbase];
+        if (k >= nbase && (off == PT_STAGE_MODEL ||
+                           !make_offset(c, &fs, (int)off, 1, &h))) continue;
         if (h.kind == PT_DIFF_H_FLOAT && c->t[0].prec >= 0) continue;
         test_hyp(c, &fs, &h, 1);
         if (h.full) { c->swap_hy = h; c->swapped = (int)k; }

@@ -33,10 +33,11 @@ int pt_diff_compare_headers(const dctx *c)
                a->vp_w, a->vp_h, a->vp_x, a->vp_y, b->vp_w, b->vp_h, b->vp_x, b->vp_y);
         differ = 1;
     }
-    if (a->perspective != b->perspective) {
-        static const char *const cam[3] = {"lookat", "orthographic", "perspective"};
-        printf("header: camera %s in EXPECTED, %s in ACTUAL\n", cam[a->perspective + 1],
-               cam[b->perspective + 1]);
+    if (strcmp(pt_camera_word(pt_pipelines[a->pipe], a->perspective),
+               pt_camera_word(pt_pipelines[b->pipe], b->perspective)) != 0) {
+        printf("header: camera %s in EXPECTED, %s in ACTUAL\n",
+               pt_camera_word(pt_pipelines[a->pipe], a->perspective),
+               pt_camera_word(pt_pipelines[b->pipe], b->perspective));
         differ = 1;
     }
     for (k = 0; k < a->nmodels || k < b->nmodels; k++) {
@@ -105,7 +106,7 @@ static const char *stage_file(const dctx *c, int st)
         "stages/m3_view2clip.c", "stages/m4_clip2cvv.c", "stages/m5_clip2ndc.c",
         "stages/m6_ndc2screen.c",
     };
-    if (st == PT_STAGE_VIEWPORT && c->t[0].hdr.perspective < 0)
+    if (st == PT_STAGE_VIEWPORT && pt_pipelines[c->t[0].hdr.pipe]->matrices)
         return "stages/m7_screen2viewport.c";       /* the matrix camera floors */
     return file[st];
 }
@@ -296,7 +297,7 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                         "there, not in the %s stage.", pt_stage_infos[quiet].name,
                         pt_stage_infos[top].name);
         pt_diff_verdict(c, &s);
-        if (!c->nhy && c->t[0].hdr.perspective < 0)
+        if (!c->nhy && c->t[0].hdr.pipe != PT_PIPE_CLASSIC)
             pt_diff_add(&s, " The known mistakes are the classic camera's: none was checked.");
     }
     if (hdr_differ) pt_diff_add(&s, " The headers differ.");

@@ -402,7 +402,7 @@ static void journey_of(const pt_jmodel *jm, size_t k, pt_journey *j)
 ** no segment (wholly outside the view volume). */
 static int seg_ends(const pt_jmodel *jm, size_t s, pt_stage st, pt_journey *ja, pt_journey *jb)
 {
-    if (jm->s->matrix) return pt_jmatrix_ends(jm, s, st, ja, jb);
+    if (pt_scene_pipeline(jm->s)->matrices) return pt_jmatrix_ends(jm, s, st, ja, jb);
     journey_of(jm, jm->m->seg[s].a, ja);
     journey_of(jm, jm->m->seg[s].b, jb);
     return 1;
@@ -418,7 +418,7 @@ static int stage_xy(const pt_journey *j, pt_stage st, double *x, double *y)
     axes3 a;
 
     *x = *y = (double)NAN;
-    if (j->matrix && !(j->reported & 1u << st)) return 0;  /* stopped at the cvv */
+    if (pt_journey_stopped(j, st)) return 0;        /* stopped at the cvv */
     switch (st) {
     case PT_STAGE_MODEL:
     case PT_STAGE_CAMERA:
@@ -479,7 +479,7 @@ static void pad(double b[4], double frac, double least)
 int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame)
 {
     unsigned char *used = calloc(m->nv ? m->nv : 1, 1);
-    double b[PT_NSTAGES][4], lim[4], reach, big = 0, deep = 0;
+    double b[PT_NSTAGES_ALL][4], lim[4], reach, big = 0, deep = 0;
     pt_journey j;
     size_t k;
     int st;
@@ -508,7 +508,7 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt
     jm->axis_c = fmax(1, 0.2 * jm->depth);
 
     /* the bounding boxes, starting from what every panel shows */
-    for (st = 0; st < PT_NSTAGES; st++) {
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {
         b[st][0] = b[st][1] = (double)INFINITY;
         b[st][2] = b[st][3] = -(double)INFINITY;
     }
@@ -568,7 +568,7 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt
     for (st = 0; st <= PT_STAGE_FRAMEBUFFER; st++)
         view_fit(&jm->view[st], b[st][0], b[st][1], b[st][2], b[st][3], BOX_X, BOX_Y,
                  BOX_W, BOX_H, st >= PT_STAGE_VIEWPORT);
-    if (s->matrix && pt_jmatrix_init(jm) != 0) { pt_jmodel_free(jm); return -1; }
+    if (pt_scene_pipeline(s)->matrices && pt_jmatrix_init(jm) != 0) { pt_jmodel_free(jm); return -1; }
     if ((int64_t)s->fb_w * s->fb_h <= PT_JOURNEY_FRAMEMAX) {
         if (frame) jm->frame = frame;       /* rendered once for every model */
         else {
@@ -649,7 +649,7 @@ static const char *formula_of(const pt_jmodel *jm, pt_stage st)
     if (st == PT_STAGE_IMAGE)
         return jm->par.perspective ? "x_ip = x_c / -z_c, y_ip = y_c / -z_c, z_ip = -1"
                                    : "orthographic: x_ip = x_c, y_ip = y_c, z_ip = 0";
-    if (jm->s->matrix && st == PT_STAGE_VIEWPORT) return pt_matrix_viewport_info.formula;
+    if (st == PT_STAGE_VIEWPORT) return pt_scene_pipeline(jm->s)->viewport_info->formula;
     return pt_stage_infos[st].formula;
 }
 
@@ -983,7 +983,7 @@ void pt_journey_panel_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
     case PT_STAGE_INDEX: bg_index(sb, jm); break;
     case PT_STAGE_VIEWPORT: case PT_STAGE_FRAMEBUFFER: bg_plane(sb, jm, st); break;
     default:
-        if ((int)st >= PT_NSTAGES) pt_jmatrix_bg(sb, jm, st);    /* journey_matrix.c */
+        if (!pt_pipeline_has(&pt_pipe_classic, st)) pt_jmatrix_bg(sb, jm, st);  /* journey_matrix.c */
         else bg_plane(sb, jm, st);
         break;
     }
@@ -1081,7 +1081,7 @@ static void raster_segs(const pt_jmodel *jm, size_t k, void (*px)(void *, int64_
         pt_vec2 a, b;
         if (m->seg[s].a != k && m->seg[s].b != k) continue;
         if (!seg_ends(jm, s, PT_STAGE_VIEWPORT, &ja, &jb)) continue;
-        if (jm->s->matrix) {                 /* the rasterizer's points, as pt_run's */
+        if (pt_scene_pipeline(jm->s)->matrices) {   /* the rasterizer's points, as pt_run's */
             if (pt_jmatrix_pixelplane(&ja, jm->par.h, &a) != 0) continue;
             if (pt_jmatrix_pixelplane(&jb, jm->par.h, &b) != 0) continue;
             pt_raster_segment(a, b, jm->par.w, jm->par.h, pt_pixelplane2viewport, &out);
@@ -1292,7 +1292,7 @@ static void note_of(char *t, size_t n, const pt_jmodel *jm, const pt_journey *j,
     char a[32], b[32];
 
     t[0] = '\0';
-    if (j->matrix && pt_jmatrix_note(t, n, j, st)) return;
+    if (j->pipe->matrices && pt_jmatrix_note(t, n, j, st)) return;
     switch (st) {
     case PT_STAGE_MODEL:
         snprintf(t, n, "%s", used ? "the model's own coordinates, as in the scene"
@@ -1520,8 +1520,9 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
         used = jm->m->seg[s].a == k || jm->m->seg[s].b == k;
     journey_of(jm, k, &j);
     ok = stage_xy(&j, st, &x, &y);
-    switch (j.matrix && !(j.reported & 1u << st) ? PT_NSTAGES_ALL : st) {
-    case PT_NSTAGES_ALL:                     /* the matrix camera's own drawings */
+    if (pt_journey_stopped(&j, st))          /* the matrix camera's own drawings */
+        pt_jmatrix_fg(sb, jm, &j, k, st);
+    else switch (st) {
     case PT_STAGE_CLIP:
     case PT_STAGE_CVV:
         pt_jmatrix_fg(sb, jm, &j, k, st);
@@ -1574,7 +1575,7 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
     pt_jplace_run(&jm->place[st], put_label, sb);   /* the background's labels and ours */
     if (jm->place[st].failed) sb->failed = 1;
     pt_jplace_back(&jm->place[st], mark);
-    if (j.matrix && !(j.reported & 1u << st))
+    if (pt_journey_stopped(&j, st))
         pt_jmatrix_unreached(t, sizeof t, st);
     else pt_explain_values(t, sizeof t, &j, st);
     pt_sbuf_addf(sb, "<g data-stage=\"%s\">\n", pt_stage_infos[st].name);
@@ -1630,7 +1631,7 @@ static void legend(pt_sbuf *sb, const pt_jmodel *jm)
     text_at(sb, 12, y, 11, "start", "fill=\"" C_NOTE "\"", u.s ? u.s : "", 376);
     pt_sbuf_free(&u);
     snprintf(t, sizeof t, "camera %s; viewport w x h = %d x %d at (x_ul, y_ul) = (%d, %d)",
-             jm->s->matrix ? "lookat" : p->perspective ? "perspective" : "orthographic",
+             pt_scene_camera_word(jm->s),
              p->w, p->h, p->x_ul, p->y_ul);
     text_at(sb, 12, y + 17, 11, "start", "fill=\"" C_NOTE "\"", t, 376);
     snprintf(t, sizeof t, "framebuffer W x H = %d x %d; round() is Java's Math.round", p->W, p->H);
@@ -1645,8 +1646,8 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
 {
     pt_jmodel jm;
     pt_sbuf t;
-    int i, n = s->matrix ? pt_matrix_norder : pt_classic_norder;
-    const pt_stage *ord = s->matrix ? pt_matrix_order : pt_classic_order;
+    int i, n = pt_scene_pipeline(s)->norder;
+    const pt_stage *ord = pt_scene_pipeline(s)->order;
 
     if (pt_jmodel_init(&jm, s, m, NULL) != 0) return -1;
     pt_sbuf_add(sb, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");

@@ -238,10 +238,10 @@ static void texts(pt_sbuf *sb, const pt_jmodel *jm, const item *it, int kind)
 
     j = jm->js[it->v - 1];
     pt_sbuf_add(sb, "[");
-    for (i = 0; i < (j.matrix ? pt_matrix_norder : pt_classic_norder); i++) {
-        st = j.matrix ? pt_matrix_order[i] : pt_classic_order[i];
+    for (i = 0; i < j.pipe->norder; i++) {
+        st = j.pipe->order[i];
         if (i) pt_sbuf_add(sb, ",");
-        if (j.matrix && !(j.reported & 1u << st)) {
+        if (pt_journey_stopped(&j, st)) {
             if (kind == 0) pt_jmatrix_unreached(b, sizeof b, (pt_stage)st);
             else if (!pt_jmatrix_note(b, sizeof b, &j, (pt_stage)st) || kind == 2) b[0] = '\0';
         } else if (kind == 0) pt_explain_values(b, sizeof b, &j, (pt_stage)st);
@@ -262,8 +262,8 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     pt_sbuf t;
     const pt_fb *frame = NULL;
     int st, i, rc = -1, found = 0;
-    int n_st = s->matrix ? pt_matrix_norder : pt_classic_norder;
-    const pt_stage *ord = s->matrix ? pt_matrix_order : pt_classic_order;
+    int n_st = pt_scene_pipeline(s)->norder;
+    const pt_stage *ord = pt_scene_pipeline(s)->order;
 
     pt_sbuf_init(&t);
     if (!items || !jms || !has) goto done;
@@ -305,9 +305,11 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     pt_sbuf_add(sb, "<script type=\"application/json\" id=\"data\">\n{\"where\":");
     pt_sbuf_add(&t, "scene ");
     pt_sbuf_add(&t, s->path);
-    pt_sbuf_addf(&t, "; camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); "
-                 "framebuffer %d x %d", s->matrix ? "lookat (the matrix camera)"
-                 : s->perspective ? "perspective" : "orthographic",
+    pt_sbuf_addf(&t, "; camera %s%s%s%s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); "
+                 "framebuffer %d x %d", pt_scene_camera_word(s),
+                 pt_scene_pipeline(s)->camera ? " (the " : "",
+                 pt_scene_pipeline(s)->camera ? pt_scene_pipeline(s)->title : "",
+                 pt_scene_pipeline(s)->camera ? ")" : "",
                  s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h);
     pt_sbuf_add_json(sb, t.s ? t.s : "");
     pt_sbuf_addf(sb, ",\n\"panel\":[%d,%d],\"font\":", PT_JOURNEY_PW, PT_JOURNEY_PH);
@@ -316,8 +318,7 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
                  total > PT_JOURNEY_MAXV ? "true" : "false", (unsigned long long)total,
                  (unsigned long long)start);
     for (i = 0; i < n_st; i++) {
-        const pt_stage_info *in = s->matrix && ord[i] == PT_STAGE_VIEWPORT
-                                  ? &pt_matrix_viewport_info : &pt_stage_infos[ord[i]];
+        const pt_stage_info *in = pt_pipeline_info(pt_scene_pipeline(s), ord[i]);
         st = ord[i];
         pt_sbuf_add(sb, i ? ",\n{\"name\":" : "{\"name\":");
         pt_sbuf_add_json(sb, in->name);

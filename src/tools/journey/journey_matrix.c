@@ -268,8 +268,8 @@ int pt_jmatrix_pixelplane(const pt_journey *j, int h, pt_vec2 *pp)
 
 int pt_jmatrix_number(const pt_jmodel *jm, pt_stage st)
 {
-    const pt_stage *o = jm->s->matrix ? pt_matrix_order : pt_classic_order;
-    int k, n = jm->s->matrix ? pt_matrix_norder : pt_classic_norder;
+    const pt_stage *o = pt_scene_pipeline(jm->s)->order;
+    int k, n = pt_scene_pipeline(jm->s)->norder;
 
     for (k = 0; k < n; k++)
         if (o[k] == st) return k + 1;

@@ -308,8 +308,8 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
 {
     size_t mi, k;
     int i, st, c;
-    const pt_stage *ord = s->matrix ? pt_matrix_order : pt_classic_order;
-    int n_st = s->matrix ? pt_matrix_norder : pt_classic_norder;
+    const pt_stage *ord = pt_scene_pipeline(s)->order;
+    int n_st = pt_scene_pipeline(s)->norder;
 
     pt_sbuf_add(sb, style);
     if (!pt_journey_wasm_b64[0]) { pt_sbuf_add(sb, without); return; }
@@ -318,17 +318,16 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
     for (k = 0; pt_journey_wasm_b64[k]; k++) pt_sbuf_add(sb, pt_journey_wasm_b64[k]);
     pt_sbuf_addf(sb, "\",\n\"perspective\":%s,\"matrix\":%s,\"vp\":[%d,%d,%d,%d],\"fb\":[%d,%d],"
                  "\"max\":%d,\"maxv\":%d", s->perspective ? "true" : "false",
-                 s->matrix ? "true" : "false", s->vp_w, s->vp_h, s->vp_x, s->vp_y,
+                 pt_scene_pipeline(s)->matrices ? "true" : "false", s->vp_w, s->vp_h, s->vp_x, s->vp_y,
                  s->fb_w, s->fb_h, PT_MAX_SIZE, PT_JOURNEY_WASM_MAXV);
-    if (s->matrix) add_camera(sb, s);
+    if (pt_scene_pipeline(s)->matrices) add_camera(sb, s);
     pt_sbuf_add(sb, ",\n\"stages\":[");
     for (i = 0; i < n_st; i++) {            /* names and value names: the table's */
         char b[PT_EXPLAINLEN];
         const pt_stage_info *in;
 
         st = ord[i];
-        in = s->matrix && st == PT_STAGE_VIEWPORT ? &pt_matrix_viewport_info
-                                                  : &pt_stage_infos[st];
+        in = pt_pipeline_info(pt_scene_pipeline(s), st);
         pt_sbuf_add(sb, i ? ",\n{\"name\":" : "{\"name\":");
         pt_sbuf_add_json(sb, in->name);
         pt_sbuf_addf(sb, ",\"id\":%d,\"nreal\":%d,\"nint\":%d,\"coord\":[", st, in->nreal,
@@ -338,7 +337,7 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
             pt_sbuf_add_json(sb, in->coord[c]);
         }
         pt_sbuf_add(sb, "]");
-        if (s->matrix) {                    /* past the cvv of a vertex outside */
+        if (pt_scene_pipeline(s)->matrices) {                    /* past the cvv of a vertex outside */
             pt_jmatrix_unreached(b, sizeof b, (pt_stage)st);
             pt_sbuf_add(sb, ",\"unreached\":");
             pt_sbuf_add_json(sb, b);
@@ -350,7 +349,7 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
         const pt_model *m = &s->models[mi];
         pt_sbuf_add(sb, mi ? ",\n{\"t\":" : "\n{\"t\":");
         add_vec(sb, m->translate);
-        if (s->matrix) {                    /* its `world` lines, as the CLI computed them */
+        if (pt_scene_pipeline(s)->matrices) {                    /* its `world` lines, as the CLI computed them */
             pt_sbuf_add(sb, ",\"w\":[");
             for (c = 0; c < 16; c++) {
                 if (c) pt_sbuf_add(sb, ",");
