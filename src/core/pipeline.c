@@ -10,6 +10,7 @@
 #include "core/pipeline.h"
 #include "core/raster.h"
 #include "stages/ms_clip_segment.h"
+#include "stages/pt_classic.h"
 #include "stages/pt_matrix.h"
 #include "stages/s4_pixel2viewport.h"
 #include "stages/m7_screen2viewport.h"

@@ -29,7 +29,6 @@
 #include "core/scene.h"
 #include "core/fb.h"
 #include "core/vjourney.h"
-#include "stages/pt_classic.h"
 #include "stages/pt_matrix.h"
 #include "core/pipelines.h"
 

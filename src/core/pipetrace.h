@@ -9,20 +9,24 @@
 **
 ** Everything above the core (src/io: trace writers and readers, images,
 ** files, numbers as text; src/tools: the commands) includes this header and no
-** other header of src/core or stages/; tests/layers.py checks it.  USAGE is in
-** pipeline.h; the stages' formulas are at the top of each stages/ header.
+** other header of src/core or stages/; tests/layers.py checks it.  It names
+** only what they use: no runner (pt_classic.h, pt_matrix.h: pt_run() is the
+** one way through the stages), no stage the tools do not call themselves.
+** USAGE is in pipeline.h; the stages' formulas are at the top of each
+** stages/ header.
 */
 #ifndef PT_PIPETRACE_H
 #define PT_PIPETRACE_H
 
+/* the records, the stage table, numbers as Java rounds them, matrices */
 #include "stages/pt_stage.h"           /* vectors, stage ids, records, the table */
 #include "stages/pt_round.h"           /* Java's rounding, the inside tests */
 #include "stages/pt_mat4.h"            /* 4x4 matrices on row vectors */
-#include "stages/pt_classic.h"         /* the classic camera's stages, in order */
-#include "stages/pt_matrix.h"          /* the matrix camera's stages, in order */
+/* the stage functions the tools call themselves: the reference copies of
+** s1 .. s6 ("the formula"), the run's own viewport, framebuffer and index
+** (the pixels a run drew, read back), the matrix camera's stages (accuracy's
+** double run), its segment stage, and the pixel plane's divisor */
 #include "stages/pt_ref.h"             /* the reference copy of s1..s6 (ptref_) */
-#include "stages/s1_model2camera.h"
-#include "stages/s2_camera2image.h"
 #include "stages/s3_image2pixel.h"
 #include "stages/s4_pixel2viewport.h"
 #include "stages/s5_viewport2fb.h"
@@ -34,15 +38,16 @@
 #include "stages/m5_clip2ndc.h"
 #include "stages/m6_ndc2screen.h"
 #include "stages/m7_screen2viewport.h"
-#include "stages/pt_segment.h"          /* segment stages: keep, drop, new ends */
-#include "stages/ms_clip_segment.h"     /* the matrix camera's: clip to the CVV */
+#include "stages/ms_clip_segment.h"    /* the matrix camera's: clip to the CVV */
 #include "stages/wasm/pt_wasm_in.h"    /* the journey page's module: where its inputs go */
+/* the core: parse, plan, run, listen; the DDA; one point's journey */
 #include "core/scene.h"                /* the scene, parsed */
-#include "core/shapes.h"                /* the course's models: `shape NAME ARGS` */
+#include "core/shapes.h"               /* the course's models: `shape NAME ARGS` */
 #include "core/builtin.h"              /* the scene rendered when given none */
 #include "core/fb.h"                   /* the framebuffer */
-#include "core/raster.h"               /* the DDA */
+#include "core/raster.h"               /* the DDA (accuracy's double run) */
 #include "core/vjourney.h"             /* one point's records, every stage */
+#include "core/pipelines.h"            /* a pipeline as data */
 #include "core/pipeline.h"             /* plan, run, listen */
 
 #endif
