@@ -9,7 +9,7 @@
 # skip); then the line before the sum says "N skipped (GROUP: WHY, ...)".  The
 # groups run in two lanes at once (CI has two cores), the slowest ones split
 # between them; their reports are printed afterwards in the order listed below.
-# PT_RUN_GROUPS, when set, replaces the list (tests/runner.sh tests this script).
+# PT_RUN_GROUPS, when set, replaces the list (tests/repo/runner.sh tests this script).
 B=${1:-build}
 ref=tests/reference
 [ -d ../shared/reference ] && ref=../shared/reference
@@ -31,39 +31,39 @@ matrix      1 $B/test_matrix
 scene       1 $B/test_scene
 nameset     2 $B/test_nameset
 numparse    2 $B/test_numparse
-baseline    2 sh tests/baseline.sh $B
-stream      2 sh tests/stream.sh $B/pipetrace
+baseline    2 sh tests/bench/baseline.sh $B
+stream      2 sh tests/cli/stream.sh $B/pipetrace
 shapes      1 $B/test_shapes
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref
 fuzz        1 $B/test_fuzz
 tread       2 $B/test_tread
 trace       1 $B/test_trace
-lanes       2 sh tests/lanes.sh $B
+lanes       2 sh tests/formats/lanes.sh $B
 explain     1 $B/test_explain
 png         1 $B/test_png
-layers      1 sh tests/layers.sh
-runner      2 sh tests/runner.sh $B
-golden      1 sh tests/golden.sh $B/pipetrace
-shapes-cli  2 sh tests/shapes.sh $B/pipetrace
-install     2 sh tests/install.sh $B/pipetrace
-export      2 sh tests/export.sh $B/pipetrace
-cli         1 sh tests/cli.sh $B/pipetrace
-outputs     2 sh tests/outputs.sh $B/pipetrace
-diff        1 sh tests/diff.sh $B/pipetrace
-kraft       2 sh tests/kraft.sh $B/pipetrace $ref
-selfcheck   2 sh tests/selfcheck.sh $B/pipetrace
-extreme     1 sh tests/extreme.sh $B/pipetrace
-teach       1 sh tests/teach.sh $B/pipetrace
-classroom   2 sh tests/classroom.sh $B/pipetrace
-term        2 sh tests/term.sh $B/pipetrace
-accuracy    1 sh tests/accuracy.sh $B/pipetrace
-journey     1 sh tests/journey.sh $B/pipetrace
-browser     2 sh tests/journey_browser.sh $B/pipetrace
-wasm        1 sh tests/journey_wasm.sh $B/pipetrace
+layers      1 sh tests/repo/layers.sh
+runner      2 sh tests/repo/runner.sh $B
+golden      1 sh tests/formats/golden.sh $B/pipetrace
+shapes-cli  2 sh tests/cli/shapes.sh $B/pipetrace
+install     2 sh tests/cli/install.sh $B/pipetrace
+export      2 sh tests/cli/export.sh $B/pipetrace
+cli         1 sh tests/cli/cli.sh $B/pipetrace
+outputs     2 sh tests/cli/outputs.sh $B/pipetrace
+diff        1 sh tests/teach/diff.sh $B/pipetrace
+kraft       2 sh tests/formats/kraft.sh $B/pipetrace $ref
+selfcheck   2 sh tests/teach/selfcheck.sh $B/pipetrace
+extreme     1 sh tests/cli/extreme.sh $B/pipetrace
+teach       1 sh tests/teach/teach.sh $B/pipetrace
+classroom   2 sh tests/teach/classroom.sh $B/pipetrace
+term        2 sh tests/cli/term.sh $B/pipetrace
+accuracy    1 sh tests/cli/accuracy.sh $B/pipetrace
+journey     1 sh tests/journey/journey.sh $B/pipetrace
+browser     2 sh tests/journey/journey_browser.sh $B/pipetrace
+wasm        1 sh tests/journey/journey_wasm.sh $B/pipetrace
 wasm-libm   1 $B/test_wasm_libm
-docs        1 sh tests/docs.sh $B/pipetrace
-valgrind    1 sh tests/valgrind.sh $B/pipetrace"}
+docs        1 sh tests/repo/docs.sh $B/pipetrace
+valgrind    1 sh tests/cli/valgrind.sh $B/pipetrace"}
 
 lane() {    # lane N: run lane N's groups one after another, each into $out/NAME
     printf '%s\n' "$groups" | while read -r name l cmd; do
