@@ -232,7 +232,11 @@ run: $B/pipetrace
 	$B/pipetrace --image $B/builtin.ppm --trace -
 	@echo "image written to $B/builtin.ppm"
 
-test: $B/pipetrace $(TESTS) $B/benchgen $B/baseline
+# make test builds on two jobs unless given -j (CI has two cores), then runs
+# the groups in two lanes (tests/run.sh; tests/README.md maps tests/).
+TEST_J  = $(if $(findstring -j,$(MAKEFLAGS)),,-j2)
+test:
+	@$(MAKE) --no-print-directory $(TEST_J) $B/pipetrace $(TESTS) $B/benchgen $B/baseline
 	@sh tests/run.sh $B
 
 golden: $B/pipetrace
