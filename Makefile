@@ -24,7 +24,7 @@ WARN    = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
 FPFLAGS = -ffp-contract=off
 CFLAGS  ?= -O2 -g
 # Debug information as DWARF 4 with any compiler: valgrind 3.19 cannot read the
-# DWARF 5 clang 14 writes (tests/valgrind.sh).  CFLAGS=-g0 turns it off.
+# DWARF 5 clang 14 writes (tests/cli/valgrind.sh).  CFLAGS=-g0 turns it off.
 DEBUGFMT = -gdwarf-4
 # Includes name their layer: "stages/pt_stage.h", "core/pipetrace.h", "io/trace.h".
 ALLCFLAGS = -std=c11 $(WARN) $(FPFLAGS) -I. -Isrc $(DEBUGFMT) $(CFLAGS)
@@ -88,7 +88,7 @@ $B/buildinfo.c: Makefile $(CHOSEN) | $B
 	printf 'const char pt_student_files[] = "%s";\n' "$(strip $(foreach n,$(STUDENT),\
 	    $n=$(notdir $(STAGE_$n))#$$(cksum < '$(STAGE_$n)' | awk '{ printf "%08x", $$1 }')))" >> $@
 
-# The layers, bottom up (docs/architecture.md; tests/layers.py checks that
+# The layers, bottom up (docs/architecture.md; tests/repo/layers.py checks that
 # none includes a header of a layer above it).
 # stages/: the formulas, in pipeline order: what all share, the classic
 # camera's, then the matrix camera's own (it shares s5 and s6).
@@ -211,28 +211,28 @@ $B/stages_wasm.c: $B/wasm-choice $(if $(filter yes,$(WASM)),$B/stages.wasm)
 	  echo '    NULL'; echo '};'; } > $@
 $B/stages_wasm.o: $B/stages_wasm.c src/tools/journey/journey_wasm.h
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
-# tests/test_wasm_libm.c includes the module's fmax and ilogb to compare them with libm.
+# tests/unit/test_wasm_libm.c includes the module's fmax and ilogb to compare them with libm.
 $B/test_wasm_libm: src/wasm/pt_wasm_libm.c src/wasm/pt_wasm_libm.h
 # tests/test_fuzz also replays the fuzz targets' regression corpus (tests/fuzz/).
 FUZZ_C   = tests/fuzz/fuzz_scene.c tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_trace.c \
            tests/fuzz/fuzz_image.c tests/fuzz/fuzz_common.c
-$B/test_fuzz: tests/test_fuzz.c $(FUZZ_C) tests/fuzz/fuzz.h tests/testhelp.h $B/libpipetrace.a
-	$(CC) $(ALLCFLAGS) -o $@ tests/test_fuzz.c $(FUZZ_C) $B/libpipetrace.a $(LDLIBS)
-$B/test_tread: tests/test_tread.c tests/fuzz/fuzz_common.c tests/fuzz/fuzz.h tests/testhelp.h \
+$B/test_fuzz: tests/unit/test_fuzz.c $(FUZZ_C) tests/fuzz/fuzz.h tests/unit/testhelp.h $B/libpipetrace.a
+	$(CC) $(ALLCFLAGS) -o $@ tests/unit/test_fuzz.c $(FUZZ_C) $B/libpipetrace.a $(LDLIBS)
+$B/test_tread: tests/unit/test_tread.c tests/fuzz/fuzz_common.c tests/fuzz/fuzz.h tests/unit/testhelp.h \
                $B/libpipetrace.a
-	$(CC) $(ALLCFLAGS) -o $@ tests/test_tread.c tests/fuzz/fuzz_common.c $B/libpipetrace.a $(LDLIBS)
-# make bench: the benchmark (tests/bench.c), its scene generator and the
+	$(CC) $(ALLCFLAGS) -o $@ tests/unit/test_tread.c tests/fuzz/fuzz_common.c $B/libpipetrace.a $(LDLIBS)
+# make bench: the benchmark (tests/bench/bench.c), its scene generator and the
 # plain-C baseline it compares with (docs/bench.md).
-$B/bench: tests/bench.c $B/libpipetrace.a
+$B/bench: tests/bench/bench.c $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
-$B/benchgen: tests/benchgen.c | $B
+$B/benchgen: tests/bench/benchgen.c | $B
 	$(CC) $(ALLCFLAGS) -o $@ $<
-$B/baseline: tests/baseline.c | $B
+$B/baseline: tests/bench/baseline.c | $B
 	$(CC) $(ALLCFLAGS) -o $@ $< $(LDLIBS)
 # test_numfmt once more on numfmt.c's portable 64x64-bit product (no __int128).
-$B/test_numfmt_portable: tests/test_numfmt.c src/io/numfmt.c src/io/numfmt.h tests/testhelp.h | $B
-	$(CC) $(ALLCFLAGS) -DPT_NUMFMT_PORTABLE -o $@ tests/test_numfmt.c src/io/numfmt.c $(LDLIBS)
-$B/test_%: tests/test_%.c tests/testhelp.h tests/refcases.h $B/libpipetrace.a
+$B/test_numfmt_portable: tests/unit/test_numfmt.c src/io/numfmt.c src/io/numfmt.h tests/unit/testhelp.h | $B
+	$(CC) $(ALLCFLAGS) -DPT_NUMFMT_PORTABLE -o $@ tests/unit/test_numfmt.c src/io/numfmt.c $(LDLIBS)
+$B/test_%: tests/unit/test_%.c tests/unit/testhelp.h tests/unit/refcases.h $B/libpipetrace.a
 	$(CC) $(ALLCFLAGS) -o $@ $< $B/libpipetrace.a $(LDLIBS)
 $B:
 	mkdir -p $B
@@ -241,18 +241,22 @@ run: $B/pipetrace
 	$B/pipetrace --image $B/builtin.ppm --trace -
 	@echo "image written to $B/builtin.ppm"
 
-test: $B/pipetrace $(TESTS) $B/benchgen $B/baseline
+# make test builds on two jobs unless given -j (CI has two cores), then runs
+# the groups in two lanes (tests/run.sh; tests/README.md maps tests/).
+TEST_J  = $(if $(findstring -j,$(MAKEFLAGS)),,-j2)
+test:
+	@$(MAKE) --no-print-directory $(TEST_J) $B/pipetrace $(TESTS) $B/benchgen $B/baseline
 	@sh tests/run.sh $B
 
 golden: $B/pipetrace
-	sh tests/golden.sh $B/pipetrace --write
+	sh tests/formats/golden.sh $B/pipetrace --write
 
 docs: $B/pipetrace
-	COLUMNS= python3 tests/docs_write.py $B/pipetrace README.md docs/*.md docs/exercises/*.md
+	COLUMNS= python3 tests/repo/docs_write.py $B/pipetrace README.md docs/*.md docs/exercises/*.md
 
 screenshots: $B/pipetrace
 	$B/pipetrace journey --vertex 1 --svg docs/journey-builtin.svg
-	sh tests/journey_browser.sh $B/pipetrace $B/journey-shots
+	sh tests/journey/journey_browser.sh $B/pipetrace $B/journey-shots
 	cp $B/journey-shots/journey-builtin.png docs/journey-builtin.png
 	cp $B/journey-shots/journey-page-stage4.png docs/journey-page.png
 	cp $B/journey-shots/journey-present.png docs/journey-present.png

@@ -1,4 +1,4 @@
-// tests/data/JnumVectors.java -- test vectors for src/io/jnum.c (tests/test_jnum.c).
+// tests/data/JnumVectors.java -- test vectors for src/io/jnum.c (tests/unit/test_jnum.c).
 // See LICENSE for copyright and license.
 // Made with a JDK 19 or later (its Double.toString):
 //   java tests/data/JnumVectors.java > tests/data/jnum-vectors.txt

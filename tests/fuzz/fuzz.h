@@ -7,7 +7,7 @@
 ** it broke a promise (a silent or malformed refusal, a record out of place).
 ** A crash, a leak or undefined behaviour shows under the sanitizers.  Two drivers call them:
 ** libFuzzer (`make fuzz`, clang: each file's LLVMFuzzerTestOneInput() under
-** PT_LIBFUZZER) and tests/test_fuzz.c, which replays the regression corpus
+** PT_LIBFUZZER) and tests/unit/test_fuzz.c, which replays the regression corpus
 ** tests/fuzz/corpus/TARGET/ in `make test` with any compiler.
 */
 #ifndef PT_FUZZ_H

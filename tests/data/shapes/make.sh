@@ -8,7 +8,7 @@
 # format of ShapeDump.java, or "error MESSAGE" when the constructor refuses.
 # index lists the files in order.  The six cases of the course's own samples
 # (../shared/reference/shapes/) are among them, byte for byte the same.
-# tests/test_shapes.c compares `shape NAME ARGS` with every file here; the tests
+# tests/unit/test_shapes.c compares `shape NAME ARGS` with every file here; the tests
 # need neither Java nor the jar.
 set -e
 jar=${1:?usage: sh tests/data/shapes/make.sh RENDERER_4.JAR}

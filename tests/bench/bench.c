@@ -1,0 +1,463 @@
+/*
+** tests/bench/bench.c -- how fast pipetrace is, next to a plain C program of the same formulas
+** See LICENSE for copyright and license.
+**
+** `make bench` runs `build/bench build`.  It writes the benchmark scenes with
+** tests/bench/benchgen.c (25,000 octagons: 200,000 vertices and segments in a
+** 1920 x 1080 framebuffer; and 4 and 16 times as many), then times, in one
+** run on one machine:
+**   parse      pt_scene_load() in this process, against tests/bench/baseline.c's
+**              fgets + strtod loop (the baseline reports its own times);
+**   render     pt_run() with no listener into a framebuffer, warm, against the
+**              baseline's render loop;
+**   process    `pipetrace SCENE --image OUT.ppm` start to end, against
+**              `baseline SCENE OUT.ppm` (and whether the two images agree);
+**   traces     `pipetrace SCENE --image OUT.ppm --format F --trace /dev/null`
+**              for JSON Lines, text and CSV, as MB/s and against the process
+**              without a trace;
+**   memory     the peak resident memory of the process at 800k vertices,
+**              without a trace and with a JSON Lines trace (to a pipe), and
+**              the page faults of the process at 200k;
+**   scaling    the process's time per vertex at 200k, 800k and 3.2M vertices;
+**   two CPUs   the untraced process and the JSON Lines trace on one thread
+**              and on two (--threads 2, src/io/tlanes.c), in wall seconds.
+** Each time is CPU time (user and system), the least of 5 runs (of 3 for the
+** large scenes of the scaling rows, of 15 for the renders in process); the
+** programs timed as whole processes at 200k take turns (spawn_rounds), so
+** the ratios between them hold when the machine slows for a while.  All of
+** it but the last part runs on one CPU, the one that renders the scene
+** fastest: the cores of a virtual machine need not be alike (one may share
+** its physical core with another machine's work), and a ratio of two
+** programs timed on two different cores says little.  The last part is what
+** a user waits for with both CPUs free: wall time, every CPU allowed, the
+** least of 5 turns.  Figures depend on the machine: they are printed with
+** their ratios and the targets of docs/bench.md, never asserted (the tests
+** check results, not speed).
+*/
+#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE          /* wait4: the child's peak memory */
+#define _GNU_SOURCE              /* sched_setaffinity: one CPU for everything */
+#include <fcntl.h>
+#include <sched.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/time.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+#include "core/pipeline.h"
+
+#define RUNS 5
+#define RENDERS 15               /* renders in process (tests/bench/baseline.c too) */
+
+static const char *dir;          /* the build directory */
+static long faults;              /* page faults of the last process spawned */
+static double wall;              /* its wall seconds, from fork to its end */
+
+/* CPU time, not wall time: the machine may be shared, and a process that
+** waits for the processor is not slower for it. */
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static double seconds(struct timeval tv)
+{
+    return (double)tv.tv_sec + (double)tv.tv_usec * 1e-6;
+}
+
+/* The least of n times: what the code costs when nothing else gets in its
+** way (on a shared machine the median drifts with the load). */
+static double least(const double *t, int n)
+{
+    double m = t[0];
+    int k;
+
+    for (k = 1; k < n; k++) if (t[k] < m) m = t[k];
+    return m;
+}
+
+static void die(const char *what)
+{
+    fprintf(stderr, "bench: %s\n", what);
+    exit(1);
+}
+
+/* Run argv with standard output to out (a path, or NULL: a pipe whose bytes
+** are counted into *bytes); return its CPU time (user and system), and the
+** peak resident memory in KiB in *maxrss when not NULL. */
+static double spawn(char *const argv[], const char *out, long *maxrss, double *bytes)
+{
+    int fd[2] = {-1, -1}, status;
+    struct rusage ru;
+    double t, t0 = wall_now();
+    pid_t pid;
+
+    if (!out && pipe(fd) != 0) die("pipe");
+    pid = fork();
+    if (pid < 0) die("fork");
+    if (pid == 0) {
+        int o = out ? open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644) : fd[1];
+        if (o < 0 || dup2(o, 1) < 0) _exit(127);
+        if (fd[0] >= 0) close(fd[0]);
+        execv(argv[0], argv);
+        _exit(127);
+    }
+    if (!out) {
+        char buf[1 << 16];
+        ssize_t n;
+        close(fd[1]);
+        *bytes = 0;
+        while ((n = read(fd[0], buf, sizeof buf)) > 0) *bytes += (double)n;
+        close(fd[0]);
+    }
+    if (wait4(pid, &status, 0, &ru) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        fprintf(stderr, "bench: %s failed\n", argv[0]);
+        exit(1);
+    }
+    wall = wall_now() - t0;
+    t = seconds(ru.ru_utime) + seconds(ru.ru_stime);
+    if (maxrss) *maxrss = ru.ru_maxrss;
+    faults = ru.ru_minflt;
+    return t;
+}
+
+/* The least CPU time of RUNS runs of each of the n programs argvs[i], output
+** to /dev/null, into cpu[i]; or, with w not NULL, the least wall time into
+** w[i] and the CPU time of that run into cpu[i].  The runs take turns (one
+** of each, RUNS times): a machine that slows down for a while then slows
+** them all alike, and their ratios hold where times taken one program after
+** another drift. */
+static void spawn_rounds(char *const *const argvs[], int n, double cpu[], double w[])
+{
+    int k, i;
+
+    for (k = 0; k < RUNS; k++)
+        for (i = 0; i < n; i++) {
+            double u = spawn(argvs[i], "/dev/null", NULL, NULL);
+            if (k == 0 || (w ? wall < w[i] : u < cpu[i])) {
+                cpu[i] = u;
+                if (w) w[i] = wall;
+            }
+        }
+}
+
+/* The least CPU time of 3 runs of argv: for the large scenes (seconds each). */
+static double spawn_least(char *const argv[])
+{
+    double t = spawn(argv, "/dev/null", NULL, NULL), u;
+    int k;
+
+    for (k = 1; k < 3; k++) if ((u = spawn(argv, "/dev/null", NULL, NULL)) < t) t = u;
+    return t;
+}
+
+static char *path(const char *name)
+{
+    static char buf[32][512];   /* a path stays valid for 31 more calls */
+    static int next;
+    char *p = buf[next++ % 32];
+
+    snprintf(p, 512, "%s/%s", dir, name);
+    return p;
+}
+
+/* Write the scene of n octagons to B/bench-NAME.scene. */
+static char *make_scene(const char *name, const char *n)
+{
+    char *argv[3], *out = path(name);
+
+    argv[0] = path("benchgen");
+    argv[1] = (char *)n;
+    argv[2] = NULL;
+    spawn(argv, out, NULL, NULL);
+    return out;
+}
+
+/* The baseline's own figures: parse and render seconds. */
+static void baseline(const char *scene, double *parse, double *render)
+{
+    char cmd[1200];
+    FILE *p;
+
+    snprintf(cmd, sizeof cmd, "'%s' '%s'", path("baseline"), scene);
+    p = popen(cmd, "r");
+    if (!p || fscanf(p, "parse %lf render %lf", parse, render) != 2) die("baseline failed");
+    pclose(p);
+}
+
+/* One untraced pt_run() of s into a fresh framebuffer: its CPU seconds. */
+static double render_once(const pt_scene *s)
+{
+    pt_options o;
+    pt_plan p;
+    pt_listener l;
+    pt_summary sum;
+    pt_fb fb;
+    double t0, t;
+
+    pt_options_default(&o);
+    memset(&l, 0, sizeof l);
+    if (pt_plan_make(&p, s, &o) != 0 || pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) != 0)
+        die("out of memory");
+    t0 = now();
+    if (pt_run(s, &p, &o, &l, &fb, &sum) != 0) die("out of memory");
+    t = now() - t0;
+    pt_fb_free(&fb);
+    pt_plan_free(&p);
+    return t;
+}
+
+/* pt_scene_load() of path, the least of RUNS; the scene in *s. */
+static double load(pt_scene *s, const char *path)
+{
+    double tp[RUNS], t0;
+    char err[PT_ERRLEN];
+    int k;
+
+    for (k = 0; k < RUNS; k++) {
+        t0 = now();
+        if (pt_scene_load(s, path, err, sizeof err) != 0) die(err);
+        tp[k] = now() - t0;
+        if (k < RUNS - 1) pt_scene_free(s);
+    }
+    return least(tp, RUNS);
+}
+
+/* The untraced pt_run() of s in this process: the least of RENDERS, after
+** one to warm up. */
+static double render(const pt_scene *s)
+{
+    double tr[RENDERS];
+    int k;
+
+    render_once(s);
+    for (k = 0; k < RENDERS; k++) tr[k] = render_once(s);
+    return least(tr, RENDERS);
+}
+
+#ifdef __linux__
+static cpu_set_t every_cpu, one_cpu;    /* this process's CPUs at the start; */
+static int pinned;                      /*   the one pin_fastest() chose */
+#endif
+
+/* Let the processes spawned from now on run on every CPU this process had
+** at the start (on = 1), or on the one pin_fastest() chose (on = 0).
+** Returns how many CPUs that is. */
+static int use_every_cpu(int on)
+{
+#ifdef __linux__
+    if (pinned) {
+        sched_setaffinity(0, sizeof every_cpu, on ? &every_cpu : &one_cpu);
+        return on ? CPU_COUNT(&every_cpu) : 1;
+    }
+#endif
+    (void)on;
+    return (int)sysconf(_SC_NPROCESSORS_ONLN);
+}
+
+/* Run this process and its children on the CPU that renders scene fastest
+** (the least of 3 untraced renders on each); say which in *note.  Linux
+** only: elsewhere the scheduler decides. */
+static void pin_fastest(const pt_scene *s, char *note, size_t n)
+{
+    snprintf(note, n, "the scheduler's choice");
+#ifdef __linux__
+    {
+        cpu_set_t all, one;
+        double best = 0;
+        int c, k, fastest = -1, len = 0;
+
+        if (sched_getaffinity(0, sizeof all, &all) != 0) return;
+        for (c = 0; c < CPU_SETSIZE; c++) {
+            double t = 0, u;
+            if (!CPU_ISSET(c, &all)) continue;
+            CPU_ZERO(&one);
+            CPU_SET(c, &one);
+            if (sched_setaffinity(0, sizeof one, &one) != 0) continue;
+            for (k = 0; k < 3; k++) if ((u = render_once(s)) < t || k == 0) t = u;
+            if (len < (int)n - 40)
+                len += snprintf(note + len, n - (size_t)len, "%scpu %d %.1f ms", len ? ", " : "",
+                                c, t * 1e3);
+            if (fastest < 0 || t < best) { fastest = c; best = t; }
+        }
+        if (fastest < 0) { snprintf(note, n, "the scheduler's choice"); return; }
+        CPU_ZERO(&one);
+        CPU_SET(fastest, &one);
+        sched_setaffinity(0, sizeof one, &one);
+        every_cpu = all;
+        one_cpu = one;
+        pinned = 1;
+        if (len < (int)n - 40) snprintf(note + len, n - (size_t)len, ": all on cpu %d", fastest);
+    }
+#endif
+}
+
+static void row(const char *what, double ours, double theirs, const char *unit,
+                const char *target)
+{
+    printf("  %-28s %10.4f %-4s %10.4f %-4s %6.2fx   %s\n", what, ours, unit, theirs, unit,
+           ours / theirs, target);
+}
+
+static int same_file(const char *a, const char *b)
+{
+    FILE *f = fopen(a, "rb"), *g = fopen(b, "rb");
+    int c, d, same = f && g;
+
+    while (same) {                      /* both ends, or the first difference */
+        c = getc(f);
+        d = getc(g);
+        same = c == d;
+        if (c == EOF || d == EOF) break;
+    }
+    if (f) fclose(f);
+    if (g) fclose(g);
+    return same;
+}
+
+int main(int argc, char **argv)
+{
+    static const char *const fmts[] = {"jsonl", "text", "csv"};
+    char *s200, *s800, *s3200, *pt = NULL, *ppm, *bppm;
+    double bp, br, pp, pr, tproc, tbase, t800, t3200, bytes;
+    long rss;
+    char note[256];
+    pt_scene scene;
+    int k;
+
+    dir = argc > 1 ? argv[1] : "build";
+    printf("pipetrace bench: CPU seconds, the least of %d runs; figures depend on the machine\n",
+           RUNS);
+    s200 = make_scene("bench-200k.scene", "25000");
+    s800 = make_scene("bench-800k.scene", "100000");
+    s3200 = make_scene("bench-3200k.scene", "400000");
+    pt = path("pipetrace");
+    ppm = path("bench-pt.ppm");
+    bppm = path("bench-base.ppm");
+
+    load(&scene, s200);                         /* to choose the CPU with */
+    pin_fastest(&scene, note, sizeof note);
+    printf("one CPU for everything, the fastest at rendering (%s)\n", note);
+    pt_scene_free(&scene);
+    pp = load(&scene, s200);
+    pr = render(&scene);
+    pt_scene_free(&scene);
+    baseline(s200, &bp, &br);
+    printf("\nbenchmark scene %s: 200,000 vertices and segments, 1920 x 1080\n", s200);
+    printf("  %-28s %15s %15s %7s   %s\n", "", "pipetrace", "plain C", "ratio", "target");
+    row("parse, in process", pp, bp, "s", "<= 1.0x");
+    row("render, in process (warm)", pr, br, "s", "<= 1.5x");
+    {
+        char *a[] = {pt, s200, "--image", ppm, NULL};
+        char *b[] = {path("baseline"), s200, bppm, NULL};
+        char *tr[3][9];
+        /* JSON Lines in its two parts, for where its time goes: the vertex
+        ** records (--stage for each of the classic camera's stages, no raster
+        ** records) and the raster records (pixels and clipped steps) */
+        char *vx[8 + 2 * PT_CLASSIC_NORDER + 1] = {pt, s200, "--image", ppm, "--format", "jsonl",
+                                            "--trace", "-"};
+        char *rs[] = {pt, s200, "--image", ppm, "--format", "jsonl", "--trace", "-",
+                      "--stage", "raster", NULL};
+        char *const *all[7];
+        double t[7], tbytes[3], pbytes[2];
+        for (k = 0; k < 3; k++) {               /* the traces, to /dev/null: */
+            char *c[] = {pt, s200, "--image", ppm, "--format", (char *)fmts[k], "--trace",
+                         "-", NULL};
+            memcpy(tr[k], c, sizeof c);
+            spawn(tr[k], NULL, NULL, &tbytes[k]);   /* their bytes, counted once */
+            tr[k][7] = "/dev/null";
+            all[2 + k] = tr[k];
+        }
+        for (k = 0; k < PT_CLASSIC_NORDER; k++) {   /* every classic stage */
+            vx[8 + 2 * k] = "--stage";
+            vx[9 + 2 * k] = (char *)pt_stage_infos[pt_classic_order[k]].name;
+        }
+        vx[8 + 2 * PT_CLASSIC_NORDER] = NULL;
+        spawn(vx, NULL, NULL, &pbytes[0]);
+        spawn(rs, NULL, NULL, &pbytes[1]);
+        vx[7] = rs[7] = "/dev/null";
+        all[0] = a;
+        all[1] = b;
+        all[5] = vx;
+        all[6] = rs;
+        spawn_rounds(all, 7, t, NULL);
+        tproc = t[0];
+        tbase = t[1];
+        row("whole process, image only", tproc, tbase, "s", "<= 1.3x");
+        printf("  %-28s %s\n", "images", same_file(ppm, bppm) ? "identical" : "DIFFER");
+        spawn(a, "/dev/null", NULL, NULL);
+        printf("  %-28s %10ld\n", "page faults, whole process", faults);
+        printf("\ntraces of the same scene, whole process, to /dev/null\n");
+        for (k = 0; k < 3; k++)
+            printf("  %-6s %8.1f MB  %8.4f s  %8.1f MB/s  %6.2fx the untraced process%s\n",
+                   fmts[k], tbytes[k] / 1e6, t[2 + k], tbytes[k] / t[2 + k] / 1e6,
+                   t[2 + k] / tproc,
+                   k == 0 ? "   (one thread: two, below)" : k == 2 ? "   (target >= 400 MB/s)" : "");
+        printf("  jsonl in parts, each its own run (the header in both):\n");
+        for (k = 0; k < 2; k++)
+            printf("    %-17s %8.1f MB  %8.4f s  %8.1f MB/s  %6.2fx, %+.4f s over untraced\n",
+                   k == 0 ? "vertex records" : "raster records", pbytes[k] / 1e6, t[5 + k],
+                   pbytes[k] / t[5 + k] / 1e6, t[5 + k] / tproc, t[5 + k] - tproc);
+    }
+    {
+        char *a[] = {pt, s800, "--image", ppm, NULL};
+        char *b[] = {pt, s3200, "--image", ppm, NULL};
+        char *c[] = {pt, s800, "--image", ppm, "--format", "jsonl", "--trace", "-", NULL};
+        long trss;
+        spawn(a, "/dev/null", &rss, NULL);
+        printf("\npeak resident memory, 800,000 vertices: %.1f MiB   (target <= 60 MiB)\n",
+               (double)rss / 1024);
+        spawn(c, NULL, &trss, &bytes);
+        printf("  with its JSON Lines trace (%.1f MB, to a pipe): %.1f MiB\n", bytes / 1e6,
+               (double)trss / 1024);
+        t800 = spawn_least(a);
+        t3200 = spawn_least(b);
+        printf("\nscaling, whole process, image only:\n");
+        printf("  %9s vertices %8.4f s  %6.1f ns a vertex\n", "200,000", tproc, tproc / 2e5 * 1e9);
+        printf("  %9s vertices %8.4f s  %6.1f ns a vertex  (%.2fx the 200k rate)\n", "800,000",
+               t800, t800 / 8e5 * 1e9, (t800 / 8e5) / (tproc / 2e5));
+        printf("  %9s vertices %8.4f s  %6.1f ns a vertex  (%.2fx the 200k rate)\n", "3,200,000",
+               t3200, t3200 / 3.2e6 * 1e9, (t3200 / 3.2e6) / (tproc / 2e5));
+    }
+    {
+        char *a[] = {pt, s200, "--image", ppm, NULL};
+        char *j1[] = {pt, s200, "--image", ppm, "--format", "jsonl", "--trace", "/dev/null",
+                      "--threads", "1", NULL};
+        char *j2[] = {pt, s200, "--image", ppm, "--format", "jsonl", "--trace", "/dev/null",
+                      "--threads", "2", NULL};
+        char *m2[] = {pt, s800, "--image", ppm, "--format", "jsonl", "--trace", "-",
+                      "--threads", "2", NULL};
+        char *const *all[] = {a, j1, j2};
+        double w[3], c[3];
+        long trss;
+        int cpus = use_every_cpu(1);
+        spawn_rounds(all, 3, c, w);
+        spawn(m2, NULL, &trss, &bytes);
+        use_every_cpu(0);
+        printf("\nall %d CPUs: wall seconds, the least of %d (CPU seconds of that run)\n",
+               cpus, RUNS);
+        printf("  %-28s %8.4f s  (%.4f s)\n", "untraced process", w[0], c[0]);
+        printf("  %-28s %8.4f s  (%.4f s)  %6.2fx the untraced process\n",
+               "jsonl, --threads 1", w[1], c[1], w[1] / w[0]);
+        printf("  %-28s %8.4f s  (%.4f s)  %6.2fx the untraced process   (target <= 2.0x)\n",
+               "jsonl, --threads 2", w[2], c[2], w[2] / w[0]);
+        printf("  peak resident memory, 800,000 vertices, JSON Lines on two threads (to a\n"
+               "  pipe): %.1f MiB\n", (double)trss / 1024);
+    }
+    remove(ppm);
+    remove(bppm);
+    return 0;
+}

@@ -1,0 +1,193 @@
+#!/bin/sh
+# tests/cli/accuracy.sh -- pipetrace accuracy: tables, known answers, the plot, exit codes
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/cli/accuracy.sh PIPETRACE.  Run from the repository root.  Also
+# runs test_accuracy (the unit test of src/tools/accuracy/) from PIPETRACE's
+# directory and adds its counts.  Everything but two plots (one per camera)
+# runs with --no-time.
+exe=$1
+. tests/lib/testlib.sh
+dir=$(dirname "$exe")
+ref=tests/reference
+[ -d ../shared/reference ] && ref=../shared/reference
+
+acc() {     # acc ARGS...: run "$exe accuracy ARGS" (see testlib.sh's run)
+    run accuracy "$@"
+}
+
+field() {   # field ROW_PREFIX N: the Nth word of the first line starting with ROW_PREFIX
+    grep "^$1" "$tmp/out" | head -1 | awk -v n="$2" '{ print $n }'
+}
+
+# ---- the unit test of src/tools/accuracy/
+if [ -x "$dir/test_accuracy" ]; then
+    "$dir/test_accuracy" "$ref" > "$tmp/unit" 2>&1
+    grep '^FAIL' "$tmp/unit"
+    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/unit" | tail -1)
+    if [ -n "$last" ]; then
+        passed=$((passed + ${last%% passed*})); f=${last#*, }; failed=$((failed + ${f%% failed*}))
+    else
+        failed=$((failed + 1)); echo "FAIL test_accuracy crashed or printed no count"
+    fi
+else
+    failed=$((failed + 1)); echo "FAIL $dir/test_accuracy is not built"
+fi
+
+# ---- every example scene: the whole table, the same bytes every run
+for scene in docs/examples/*.scene; do
+    grep -q '^camera lookat' "$scene" && continue    # the matrix camera: below
+    name=${scene##*/}
+    acc "$scene" --no-time
+    cp "$tmp/out" "$tmp/first"
+    check "acc-sh-1.1 $name: exit 0" test "$rc" = 0
+    check "acc-sh-1.2 $name: every stage, float and double" \
+        test "$(grep -cE '^(model|camera|image|pixel|viewport|framebuffer|index|raster) +(float|double) ' "$tmp/out")" = 16
+    check "acc-sh-1.3 $name: the three arithmetics" \
+        test "$(grep -cE '^(float +24|double +53|double-double +106) ' "$tmp/out")" = 3
+    check "acc-sh-1.4 $name: the reference's precision" grep -q 'double-double, 106 significant bits' "$tmp/out"
+    check "acc-sh-1.5 $name: no time columns with --no-time" test "$(grep -c 'ns/' "$tmp/out")" = 0
+    check "acc-sh-1.6 $name: double's model and camera stages are exact" \
+        test "$(field 'model        double' 3)$(field 'camera       double' 3)" = 00
+    acc "$scene" --no-time
+    check "acc-sh-1.7 $name: the same output on a second run" cmp -s "$tmp/out" "$tmp/first"
+done
+acc --no-time
+check "acc-sh-1.8 the built-in scene by default" grep -q '^pipetrace accuracy: <builtin>$' "$tmp/out"
+
+# ---- every example scene of the matrix camera: its own stages
+for scene in docs/examples/*.scene; do
+    grep -q '^camera lookat' "$scene" || continue
+    name=${scene##*/}
+    acc "$scene" --no-time
+    cp "$tmp/out" "$tmp/first"
+    check "acc-sh-5.1 $name: exit 0" test "$rc" = 0
+    check "acc-sh-5.2 $name: every matrix stage, float and double" \
+        test "$(grep -cE '^(model|world|view|clip|cvv|ndc|screen|viewport|framebuffer|index|raster) +(float|double) ' "$tmp/out")" = 22
+    check "acc-sh-5.3 $name: no classic stage" \
+        test "$(grep -cE '^(camera|image|pixel) +(float|double) ' "$tmp/out")" = 0
+    check "acc-sh-5.4 $name: the three arithmetics" \
+        test "$(grep -cE '^(float +24|double +53|double-double +106) ' "$tmp/out")" = 3
+    check "acc-sh-5.5 $name: the matrix camera named in the header" grep -q 'matrix camera: look-at' "$tmp/out"
+    check "acc-sh-5.6 $name: 2.001 or 2.0 said not to apply, no table" \
+        test -n "$(grep 'does not apply to the matrix camera' "$tmp/out")" \
+             -a -z "$(grep '^constant ' "$tmp/out")"
+    check "acc-sh-5.7 $name: the DDA choice, float and double" \
+        test "$(grep -cE '^(float|double) +(y \+= m|recompute) ' "$tmp/out")" = 4
+    check "acc-sh-5.8 $name: double's model stage is exact" test "$(field 'model        double' 3)" = 0
+    check "acc-sh-5.9 $name: float has an error somewhere" \
+        test -n "$(grep -E '^[a-z]+ +float ' "$tmp/out" | awk '$3 != "0" && $3 != "-"')"
+    check "acc-sh-5.10 $name: no time columns with --no-time" test "$(grep -c 'ns/' "$tmp/out")" = 0
+    acc "$scene" --no-time
+    check "acc-sh-5.11 $name: the same output on a second run" cmp -s "$tmp/out" "$tmp/first"
+done
+acc docs/examples/lookat-near.scene --no-time
+check "acc-sh-5.12 lookat-near: the reference's clipping makes 2 points" \
+    grep -q '^ *2 points and culled 0 segments$' "$tmp/out"
+check "acc-sh-5.13 ... and every vertex keeps its outcode in float and double" \
+    test "$(field 'cvv          float' 6)$(field 'cvv          double' 6)" = 0/30/3
+check "acc-sh-5.14 ... ndc..index count the vertex inside and the 2 points" \
+    test "$(field 'viewport     double' 6)" = 0/3
+acc tests/data/near-tie.scene --no-time
+check "acc-sh-5.15 near-tie: double puts the near-plane vertex outside" \
+    test "$(field 'cvv          double' 6)" = 1/2
+check "acc-sh-5.16 ... float and the reference keep it inside" test "$(field 'cvv          float' 6)" = 0/2
+check "acc-sh-5.17 ... the point clipping makes lands on the same pixels" \
+    test "$(field 'raster       double' 6 | cut -d/ -f1)" = 0
+
+# ---- known answers
+acc tests/extreme/cancel-translate.scene --no-time
+check "acc-sh-2.1 cancel-translate: float's camera stage has an error" \
+    test "$(field 'camera       float' 3)" != 0
+check "acc-sh-2.2 ... double's has none (one exactly rounded addition)" \
+    test "$(field 'camera       double' 3)" = 0
+acc tests/extreme/corner-plus-one.scene --no-time
+check "acc-sh-2.3 corner-plus-one: with 2.001 no vertex leaves the viewport" \
+    test "$(field '2.001 ' 4)" = 0
+check "acc-sh-2.4 ... with 2.0 the corner x_ip = 1 does" test "$(field '2.0 ' 4)" = 1
+acc tests/data/drift.scene --no-time
+check "acc-sh-2.5 drift: double's y += m is a pixel or more off the exact line" \
+    awk -v e="$(field 'double      y += m' 5)" 'BEGIN { exit !(e + 0 >= 1) }'
+check "acc-sh-2.6 ... and lights other pixels than the reference" \
+    test "$(field 'double      y += m' 7 | cut -d/ -f1)" -gt 0
+check "acc-sh-2.7 ... recomputing y = y0 + m*(x - x0) lights the reference's" \
+    test "$(field 'double      recompute' 5 | cut -d/ -f1)" = 0
+
+# ---- timing and the plot (the only timed runs: one repeat each)
+stage_times() {  # stage_times N: the rows of the per-stage time table with N numbers > 0, finite
+    sed -n '/^time per stage alone/,/^$/p' "$tmp/out" | tail -n +3 | grep -v '^$' |
+        awk 'NF == 4 && $2 + 0 > 0 && $3 + 0 > 0 && $4 + 0 > 0 &&
+             $2 !~ /inf|nan/ && $3 !~ /inf|nan/ && $4 !~ /inf|nan/' | wc -l | tr -d ' '
+}
+svg_check() {    # svg_check ID FILE: panels, axes and label boxes (tests/cli/accuracy_svg.py)
+    if command -v python3 >/dev/null 2>&1; then
+        python3 tests/cli/accuracy_svg.py "$2" > "$tmp/svgcheck" 2>&1
+        check "$1 one panel per unit, axes named, no two texts overlap (accuracy_svg.py)" \
+            test $? = 0
+        grep '^FAIL' "$tmp/svgcheck" | head -5
+    fi
+}
+acc docs/examples/cube.scene --repeat 1 --svg "$tmp/plot.svg"
+check "acc-sh-3.1 --svg: exit 0" test "$rc" = 0
+check "acc-sh-3.2 timed: ns/vertex and ns/pixel columns" grep -q 'ns/vertex  ns/pixel' "$tmp/out"
+check "acc-sh-3.3 the plot is written" test -s "$tmp/plot.svg"
+if command -v xmllint >/dev/null 2>&1; then
+    check "acc-sh-3.4 the plot is well-formed XML (xmllint)" xmllint --noout "$tmp/plot.svg"
+elif command -v python3 >/dev/null 2>&1; then
+    check "acc-sh-3.4 the plot is well-formed XML (python3)" python3 -c '
+import sys, xml.etree.ElementTree as ET
+assert ET.parse(sys.argv[1]).getroot().tag == "{http://www.w3.org/2000/svg}svg"' "$tmp/plot.svg"
+fi
+check "acc-sh-3.5 the plot is self-contained (no links)" test "$(grep -c 'href' "$tmp/plot.svg")" = 0
+check "acc-sh-3.6 ... a point per stage and arithmetic (8 x 3), 4 choices, 4 in the legend" \
+    test "$(grep -c '<circle' "$tmp/plot.svg")" = 32
+check "acc-sh-3.7 ... says where errors of 0 are drawn" grep -q 'dashed line marked 0' "$tmp/plot.svg"
+check "acc-sh-3.11 every classic stage timed alone, in every arithmetic: > 0 and finite" \
+    test "$(stage_times)" = 8
+check "acc-sh-3.12 ... float's stages are not all at one time" \
+    test "$(grep 'fill="#d95f02" stroke="#d95f02"' "$tmp/plot.svg" | sed 's/.*cx="\([0-9.]*\)".*/\1/' | sort -u | wc -l)" -gt 3
+svg_check acc-sh-3.13 "$tmp/plot.svg"
+acc --repeat 1 --svg "$tmp/bplot.svg"
+svg_check acc-sh-3.14 "$tmp/bplot.svg"
+acc docs/examples/lookat-near.scene --repeat 1 --svg "$tmp/mplot.svg"
+check "acc-sh-3.8 matrix camera timed: exit 0, ns/vertex and ns/pixel columns" \
+    test "$rc" = 0 -a -n "$(grep 'ns/vertex  ns/pixel' "$tmp/out")"
+check "acc-sh-3.9 ... its plot has the matrix stages" grep -q '>ndc</text>' "$tmp/mplot.svg"
+check "acc-sh-3.10 ... a point per stage but the cvv (10 x 3), 2 choices, 4 in the legend" \
+    test "$(grep -c '<circle' "$tmp/mplot.svg")" = 36
+check "acc-sh-3.15 every matrix stage timed alone, in every arithmetic: > 0 and finite" \
+    test "$(stage_times)" = 11
+svg_check acc-sh-3.16 "$tmp/mplot.svg"
+acc docs/examples/lookat-cube.scene --repeat 1 --svg "$tmp/cplot.svg"
+svg_check acc-sh-3.17 "$tmp/cplot.svg"
+
+# ---- exit codes
+printf 'framebuffer 10 10\nmodel m\nv 1 2\n' > "$tmp/bad.scene"
+acc "$tmp/bad.scene" --no-time
+check "acc-sh-4.1 bad scene: exit 2" test "$rc" = 2
+check "acc-sh-4.2 ... with FILE:LINE:COL: error:" grep -q "^$tmp/bad.scene:3:[0-9]*: error: " "$tmp/err"
+acc "$tmp/missing.scene"
+check "acc-sh-4.3 missing scene: exit 2" test "$rc" = 2
+acc --frobnicate
+check "acc-sh-4.4 unknown option: exit 1" test "$rc" = 1
+acc --repeat 0
+check "acc-sh-4.5 --repeat 0: exit 1" test "$rc" = 1
+acc --repeat
+check "acc-sh-4.6 --repeat without a value: exit 1" test "$rc" = 1
+acc --no-time --svg "$tmp/x.svg"
+check "acc-sh-4.7 --svg with --no-time: exit 1" test "$rc" = 1 -a ! -e "$tmp/x.svg"
+acc a.scene b.scene
+check "acc-sh-4.8 two scenes: exit 1" test "$rc" = 1
+acc --help
+check "acc-sh-4.9 --help: exit 0, usage" test "$rc" = 0 -a -n "$(grep 'usage: pipetrace accuracy' "$tmp/out")"
+acc docs/examples/triangle.scene --repeat 1 --svg "$tmp/nodir/plot.svg"
+check "acc-sh-4.10 unwritable --svg path: exit 2" test "$rc" = 2
+
+# a direction of 1e200 and an up of 1e-310: every arithmetic scales them by a
+# power of two before normalising, so the reference is no NaN and double is close
+printf 'framebuffer 20 10\ncamera lookat 0 0 0 1e200 0 1e200 0 1e-310 0\nprojection perspective 60 1 1 10\nmodel m\nv 0 0 5\nv 1 0 5\nl 1 2\n' > "$tmp/tiny.scene"
+acc "$tmp/tiny.scene" --no-time
+check "acc-sh-5.1 extreme look-at vectors: double's view within 1 ulp of the reference" \
+    grep -qE '^view +double +[0-9.e+-]+ +[0-9.e+-]+ +1 ' "$tmp/out"
+
+report

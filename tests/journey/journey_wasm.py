@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+# tests/journey/journey_wasm.py -- the journey page's sliders against the command line, bit for bit
+# See LICENSE for copyright and license.
+#
+# Usage: python3 tests/journey/journey_wasm.py PIPETRACE DOM SCENE|- TMPDIR
+# DOM is tests/journey/journey_sliders.html's --dump-dom after moving the sliders of
+# a page made from SCENE ("-": the built-in scene, docs/examples/builtin.scene).
+# It writes SCENE again with the page's framebuffer, viewport and the vertex's
+# model's translation (the matrix camera: eye, fov, near and far too), runs `PIPETRACE NEW --format jsonl` for that vertex and
+# checks every stage's values against the page's (#livetable: reals as IEEE
+# bits, so equal means bit for bit), and #coords against the #coords the
+# command line's own page gives for NEW.  When the page says it has no camera,
+# pipetrace must refuse NEW with the same reason.  Prints "N passed, N failed".
+import html
+import json
+import os
+import re
+import struct
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+from checks import check, finish  # noqa: E402
+
+
+def rewrite(text, p, model):
+    """The scene with the page's framebuffer, viewport and model translation,
+    and for the matrix camera its eye, fov, near and far."""
+    out = ["framebuffer %s %s" % (p["W"], p["H"]),
+           "viewport %s %s %s %s" % (p["x_ul"], p["y_ul"], p["w"], p["h"])]
+    here = False
+    for line in text.splitlines():
+        words = line.split("#")[0].split()
+        d = words[0] if words else ""
+        if d in ("framebuffer", "viewport"):
+            continue
+        if d == "camera" and "fov" in p:       # camera lookat[-target] EYE ...
+            line = " ".join(words[:2] + [p["eye_x"], p["eye_y"], p["eye_z"]] + words[5:])
+        if d == "projection" and "fov" in p:   # projection perspective FOV ASPECT NEAR FAR
+            line = " ".join(words[:2] + [p["fov"], words[3], p["near"], p["far"]])
+        if d == "model":
+            here = len(words) > 1 and words[1] == model
+        if here and d == "translate":
+            continue
+        out.append(line)
+        if d == "model" and here:
+            out.append("translate %s %s %s" % (p["x_t"], p["y_t"], p["z_t"]))
+    return "\n".join(out) + "\n"
+
+
+def bits(x):
+    return struct.pack(">d", float(x)).hex()
+
+
+def main():
+    exe, dom, scene, tmp = sys.argv[1:5]
+    m = re.search(r'<pre id="sliders">(.*?)</pre>', open(dom, encoding="utf-8").read(), re.S)
+    check("slider-0 the harness reported", m is not None)
+    if not m:
+        return
+    lines = html.unescape(m.group(1)).splitlines()
+    check("slider-1 the harness moved every slider", lines[0] == "ok", lines[0])
+    p, page, info = {}, {}, {}
+    for ln in lines[1:]:
+        f = ln.split("\t")
+        if f[0] == "param":
+            p[f[1]] = f[2]
+        elif f[0] == "stage":
+            page[f[1]] = f[2].split(",")
+        else:
+            info[f[0]] = f[1:]
+    model, v = info["vertex"][0], info["vertex"][1]
+    src = "docs/examples/builtin.scene" if scene == "-" else scene
+    new = os.path.join(tmp, "moved.scene")
+    with open(new, "w", encoding="utf-8") as f:
+        f.write(rewrite(open(src, encoding="utf-8").read(), p, model))
+    r = subprocess.run([exe, new, "--model", model, "--vertex", v, "--all-stages",
+                        "--format", "jsonl", "--trace", "-"], capture_output=True, text=True)
+    note = info["note"][0]
+    if note.startswith("No camera: "):           # the page refuses: so must pipetrace
+        why = note[len("No camera: "):].split(" (")[0]
+        check("slider-6 %s: the command line refuses the camera too, saying why" % why,
+              r.returncode == 2 and why in r.stderr and not page, r.stderr)
+        return
+    check("slider-2 the command line reads the moved scene", r.returncode == 0, r.stderr)
+    cli = {}
+    for ln in r.stdout.splitlines():
+        rec = json.loads(ln)
+        if rec.get("type") == "vertex":
+            cli[rec["stage"]] = rec
+    reached = sorted(st for st, val in page.items() if val != ["unreached"])
+    check("slider-3 seven (classic) or ten (matrix) stages; the same reached on both sides",
+          len(page) == (10 if "fov" in p else 7) and sorted(cli) == reached,
+          "%s / %s" % (sorted(cli), sorted(page)))
+    ints = ("viewport", "framebuffer", "index", "cvv")
+    for st, rec in cli.items():
+        keys = ["i"] if st == "index" else ["code"] if st == "cvv" else ["x", "y"] if st in (
+            "pixel", "viewport", "framebuffer") else ["x", "y", "z", "w"] if st in (
+            "world", "view", "clip") else ["x", "y", "z"]
+        want = []
+        for k in keys:
+            val = rec.get(k)
+            if val is None:
+                want.append("none")
+            elif st in ints:
+                want.append(str(val))
+            else:
+                want.append(bits(val))
+        check("slider-4 %s %s v%s %s: the page's values are the command line's" % (
+            os.path.basename(src), model, v, st), page.get(st) == want,
+            "page %s, pipetrace %s (%s)" % (page.get(st), want, json.dumps(rec)))
+    h = os.path.join(tmp, "moved.html")
+    r = subprocess.run([exe, "journey", new, "--model", model, "--vertex", v, "--html", h],
+                       capture_output=True, text=True)
+    d = re.search(r'<script type="application/json" id="data">\n(.*?)\n</script>',
+                  open(h, encoding="utf-8").read(), re.S)
+    data = json.loads(d.group(1))
+    names = [s["name"] for s in data["stages"]]
+    x = [x for x in data["vertices"]
+         if data["models"][x["m"]]["name"] == model and str(x["v"]) == v][0]
+    shown = info["shown"][0]
+    check("slider-5 %s %s v%s %s: #coords is the command line's page's" % (
+        os.path.basename(src), model, v, shown),
+        info["coords"][0] == x["coords"][names.index(shown)],
+        "page %r, pipetrace %r" % (info["coords"][0], x["coords"][names.index(shown)]))
+
+
+main()
+finish()

@@ -1,9 +1,0 @@
-#!/bin/sh
-# tests/layers.sh -- run tests/layers.py (the include rules), or say it is skipped
-# See LICENSE for copyright and license.
-if ! command -v python3 >/dev/null 2>&1; then
-    echo "  skipped: python3 not installed"
-    echo "0 passed, 0 failed"
-    exit 0
-fi
-exec python3 tests/layers.py

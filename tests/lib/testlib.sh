@@ -1,0 +1,36 @@
+# tests/lib/testlib.sh -- what the shell tests share; sourced after setting $exe
+# See LICENSE for copyright and license.
+#
+# check DESCRIPTION COMMAND...  counts one check: COMMAND must succeed
+# run ARGS...                   runs $exe ARGS with no input; sets $out, $err, $rc
+#                               (also in $tmp/out and $tmp/err)
+# feed INPUT ARGS...            the same with INPUT (backslash escapes: printf %b)
+#                               on standard input
+# report                        prints "N passed, N failed"; fails if any failed
+unset COLUMNS                   # step and why wrap to it: tests set it themselves
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+
+check() {
+    d=$1; shift
+    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
+    else failed=$((failed + 1)); echo "FAIL $d"; fi
+}
+
+run() {
+    "$exe" "$@" >"$tmp/out" 2>"$tmp/err" </dev/null; rc=$?
+    out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
+}
+
+feed() {
+    input=$1; shift
+    printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
+    out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
+}
+
+report() {
+    echo "$passed passed, $failed failed"
+    [ "$failed" -eq 0 ]
+}

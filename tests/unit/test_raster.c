@@ -1,0 +1,407 @@
+/*
+** tests/unit/test_raster.c -- the DDA: pictures, symmetry, clipping, fast-forward
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testhelp.h"
+#include "core/raster.h"
+#include "core/pipeline.h"
+#include "stages/s4_pixel2viewport.h"
+
+/* ===== a collecting raster sink ===== */
+
+#define MAXW 64
+typedef struct canvas {
+    int w, h;
+    char cell[MAXW * MAXW];      /* '*' lit, '.' not */
+    uint64_t pixels, clipped, runs;
+    pt_pix first_clip, last_clip;
+} canvas;
+
+static void c_pixel(void *ud, int64_t x, int64_t y)
+{
+    canvas *c = ud;
+    c->cell[y * c->w + x] = '*';
+    c->pixels++;
+}
+
+static void c_clip(void *ud, uint64_t n, pt_pix first, pt_pix last)
+{
+    canvas *c = ud;
+    if (c->runs == 0) c->first_clip = first;
+    c->last_clip = last;
+    c->clipped += n;
+    c->runs++;
+}
+
+static void clear(canvas *c, int w, int h)
+{
+    memset(c, 0, sizeof *c);
+    c->w = w; c->h = h;
+    memset(c->cell, '.', sizeof c->cell);
+}
+
+static int draw(canvas *c, double x0, double y0, double x1, double y1)
+{
+    pt_raster_out out = {c_pixel, c_clip, NULL};
+    out.ud = c;
+    return pt_raster_segment((pt_vec2){x0, y0}, (pt_vec2){x1, y1}, c->w, c->h, pt_pixel2viewport, &out);
+}
+
+/* Compare the canvas with rows of '*' and '.', top row first. */
+static int looks_like(const canvas *c, const char *rows)
+{
+    int x, y;
+    for (y = 0; y < c->h; y++) {
+        for (x = 0; x < c->w; x++)
+            if (*rows++ != c->cell[y * c->w + x]) return 0;
+        if (*rows++ != '\n') return 0;
+    }
+    return *rows == '\0';
+}
+
+/* ===== pictures ===== */
+
+static void test_pictures(void)
+{
+    canvas c;
+
+    /* An "F" in a 6x5 viewport; logical pixel (m, n) is cell (m-1, 5-n). */
+    clear(&c, 6, 5);
+    draw(&c, 2, 1, 2, 5);                   /* the stem */
+    draw(&c, 2, 5, 5, 5);                   /* the top bar */
+    draw(&c, 2, 3, 4, 3);                   /* the middle bar */
+    PT_CHECK("raster-1.1 an F in a 6x5 viewport",
+             looks_like(&c, ".****.\n"
+                            ".*....\n"
+                            ".***..\n"
+                            ".*....\n"
+                            ".*....\n"));
+    clear(&c, 6, 5);
+    draw(&c, 1.2, 1.4, 6.3, 3.6);           /* rounds to (1,1)-(6,4): slope 3/5 */
+    PT_CHECK("raster-1.2 shallow line: y += 0.6 each step, rounded",
+             looks_like(&c, "......\n"
+                            ".....*\n"
+                            "...**.\n"
+                            ".**...\n"
+                            "*.....\n"));
+    clear(&c, 6, 5);
+    draw(&c, 2, 1, 4, 5);                   /* steep: x += 0.5 per row, ties up */
+    PT_CHECK("raster-1.3 steep line steps y, x ties at k+0.5 round up",
+             looks_like(&c, "...*..\n"
+                            "...*..\n"
+                            "..*...\n"
+                            "..*...\n"
+                            ".*....\n"));
+    PT_CHECK("raster-1.4 steep line lights one pixel per row", c.pixels == 5);
+    clear(&c, 6, 5);
+    PT_CHECK("raster-1.5 a segment that rounds to one point is one pixel",
+             draw(&c, 3.4, 2.6, 2.6, 3.4) == PT_RASTER_DEGENERATE && c.pixels == 1 &&
+             c.cell[2 * 6 + 2] == '*');
+    clear(&c, 6, 5);
+    PT_CHECK("raster-1.6 a degenerate segment outside is one clipped step",
+             draw(&c, 9, 9, 9.2, 9.1) == PT_RASTER_DEGENERATE && c.pixels == 0 &&
+             c.clipped == 1 && c.runs == 1);
+}
+
+/* ===== symmetry and clipping ===== */
+
+static double rnd(double lo, double hi)
+{
+    return lo + (hi - lo) * (rand() / (RAND_MAX + 1.0));
+}
+
+static void test_symmetry(void)
+{
+    canvas a, b;
+    int k, same = 1, counted = 1;
+
+    srand(7);
+    for (k = 0; k < 2000; k++) {
+        double x0 = rnd(-20, 60), y0 = rnd(-20, 60), x1 = rnd(-20, 60), y1 = rnd(-20, 60);
+        clear(&a, 40, 30);
+        clear(&b, 40, 30);
+        draw(&a, x0, y0, x1, y1);
+        draw(&b, x1, y1, x0, y0);
+        if (memcmp(a.cell, b.cell, sizeof a.cell) != 0) same = 0;
+        {
+            double dx = fabs(pt_java_round(x1) - pt_java_round(x0));
+            double dy = fabs(pt_java_round(y1) - pt_java_round(y0));
+            if (a.pixels + a.clipped != (uint64_t)(dx > dy ? dx : dy) + 1) counted = 0;
+        }
+    }
+    PT_CHECK("raster-2.1 (a,b) and (b,a) light the same pixels (2000 random)", same);
+    PT_CHECK("raster-2.2 pixels + clipped steps = max(|dx|,|dy|) + 1", counted);
+
+    clear(&a, 10, 10);
+    draw(&a, -4, 5, 14, 5);                 /* x = -4..14, inside for x = 1..10 */
+    PT_CHECK("raster-2.3 horizontal line through: 10 pixels, 9 clipped in 2 runs",
+             a.pixels == 10 && a.clipped == 9 && a.runs == 2);
+    PT_CHECK("raster-2.4 clip runs report viewport coordinates",
+             a.first_clip.x == -5 && a.first_clip.y == 5 && a.last_clip.x == 13);
+    clear(&a, 10, 10);
+    PT_CHECK("raster-2.5 a non-finite endpoint is skipped, nothing reported",
+             draw(&a, (double)NAN, 1, 3, 3) == PT_RASTER_SKIPPED && a.pixels == 0 && a.runs == 0);
+    PT_CHECK("raster-2.6 an endpoint at 1e300 is skipped",
+             draw(&a, 1, 1, 1e300, 3) == PT_RASTER_SKIPPED);
+}
+
+/* ===== exact fast-forward ===== */
+
+static double naive_advance(double y, double m, uint64_t k)
+{
+    while (k--) y += m;
+    return y;
+}
+
+static void test_advance(void)
+{
+    static const double ms[] = {0.6, -0.6, 1.0 / 3, -2.0 / 7, 0.5, 1.5, 1e-9, 3e-17,
+                                0.999999999, -1.0, 0.0, 0.1, 2.5, -0.75};
+    static const double ys[] = {0, 1, -1, 0.5, 1234.5, -99.25, 4503599627370496.0,
+                                9007199254740992.0, -9007199254740990.0, 1e15, 3.3};
+    size_t i, j;
+    int ok = 1;
+
+    for (i = 0; i < sizeof ms / sizeof ms[0]; i++)
+        for (j = 0; j < sizeof ys / sizeof ys[0]; j++) {
+            uint64_t k;
+            for (k = 0; k < 300000; k = k * 3 + 1) {
+                double a = pt_raster_advance(ys[j], ms[i], k), b = naive_advance(ys[j], ms[i], k);
+                if (a != b) {
+                    if (ok) printf("  advance(%.17g, %.17g, %llu): %.17g != %.17g\n",
+                                   ys[j], ms[i], (unsigned long long)k, a, b);
+                    ok = 0;
+                }
+            }
+        }
+    PT_CHECK("raster-3.1 fast-forward equals k additions, ties and binade edges included", ok);
+
+    ok = 1;
+    srand(11);
+    for (i = 0; i < 300; i++) {
+        double y = rnd(-1e6, 1e6), m = rnd(-3, 3);
+        uint64_t k = (uint64_t)rnd(0, 200000);
+        if (i % 3 == 0) m = ldexp(floor(rnd(-64, 64)) + 0.5, -(int)rnd(0, 40));
+        if (pt_raster_advance(y, m, k) != naive_advance(y, m, k)) ok = 0;
+    }
+    PT_CHECK("raster-3.2 fast-forward equals k additions (300 random, some ties)", ok);
+
+    /* 2026-11-22: m = 0 at y = 0 (a vertical line along the viewport's edge)
+    ** stepped one at a time: 10^13 steps hung (found with a scene like
+    ** tests/extreme/edge-line-1e13.scene). */
+    PT_CHECK("raster-3.3 m = 0: 10^15 steps at once; -0 becomes +0",
+             pt_raster_advance(0.0, 0.0, 1000000000000000ULL) == 0 &&
+             !signbit(pt_raster_advance(-0.0, 0.0, 5)) && signbit(pt_raster_advance(-0.0, 0.0, 0)));
+    PT_CHECK("raster-3.4 subnormal steps from 0 jump too (10^12 steps of 1e-310 would overflow into normals)",
+             pt_raster_advance(0.0, 4.9e-324, 1000000000000ULL) == 1000000000000.0 * 4.9e-324);
+    ok = 1;
+    {
+        static const double tiny[] = {4.9e-324, 1e-310, -3e-315, 2.2250738585072014e-308, 1e-300};
+        size_t a;
+        for (a = 0; a < sizeof tiny / sizeof tiny[0]; a++) {
+            uint64_t kk;
+            for (kk = 0; kk < 200000; kk = kk * 3 + 1)
+                if (pt_raster_advance(0.0, tiny[a], kk) != naive_advance(0.0, tiny[a], kk) ||
+                    pt_raster_advance(-1e-305, tiny[a], kk) != naive_advance(-1e-305, tiny[a], kk))
+                    ok = 0;
+        }
+    }
+    PT_CHECK("raster-3.5 near zero and among subnormals: equals k additions", ok);
+}
+
+/* A long segment drawn both ways: the rasterizer (which skips) and a plain
+** step-by-step loop written here from the rule in raster.h. */
+static void test_long_segment(void)
+{
+    canvas a, b;
+    double x0 = -30000000.3, y0 = -11100009.25, x1 = 70000000.2, y1 = 25900010.75;
+    double rx0 = pt_java_round(x0), ry0 = pt_java_round(y0);
+    double rx1 = pt_java_round(x1), ry1 = pt_java_round(y1);
+    double m = (ry1 - ry0) / (rx1 - rx0), y = ry0;
+    int64_t x;
+
+    clear(&a, 50, 40);
+    draw(&a, x0, y0, x1, y1);
+    clear(&b, 50, 40);
+    for (x = (int64_t)rx0; x <= (int64_t)rx1; x++, y += m) {
+        int64_t x_vp = x - 1, y_vp = 40 - (int64_t)pt_java_round(y);
+        if (x_vp >= 0 && x_vp < 50 && y_vp >= 0 && y_vp < 40) c_pixel(&b, x_vp, y_vp);
+        else b.clipped++;
+    }
+    PT_CHECK("raster-4.1 10^8-step segment: same pixels as the plain loop",
+             memcmp(a.cell, b.cell, sizeof a.cell) == 0 && a.pixels == b.pixels);
+    PT_CHECK("raster-4.2 10^8-step segment: same clipped count", a.clipped == b.clipped);
+    PT_CHECK("raster-4.3 the segment does cross the viewport", a.pixels > 0);
+}
+
+/* ===== whole scenes: drawn in turn or after every vertex ===== */
+
+static void no_record(void *ud, const pt_vrec *r) { (void)ud; (void)r; }
+static void no_summary(void *ud, const pt_summary *sum) { (void)ud; (void)sum; }
+static void no_pixel(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                     size_t n)
+{
+    (void)ud; (void)m; (void)seg; (void)px; (void)n;
+}
+
+/* Run scene s with listener l into a fresh framebuffer; 0 when it ran. */
+static int run_into(const pt_scene *s, const pt_listener *l, pt_fb *fb, pt_summary *sum)
+{
+    pt_options o;
+    pt_plan p;
+    int rc;
+
+    pt_options_default(&o);
+    if (pt_plan_make(&p, s, &o) != 0) return -1;
+    if (pt_fb_init(fb, s->fb_w, s->fb_h, s->background) != 0) { pt_plan_free(&p); return -1; }
+    rc = pt_run(s, &p, &o, l, fb, sum);
+    pt_plan_free(&p);
+    return rc;
+}
+
+/* pt_run draws each model right after its vertices when nobody listens to
+** the vertices (in turn), else after all of them: the same image and summary,
+** drawn by pt_raster_draw with and without a pixel listener (the classic
+** camera) or pt_raster_segment (the matrix camera). */
+static void test_in_turn(void)
+{
+    static const char *const scenes[] = {
+        "docs/examples/builtin.scene", "docs/examples/two-models.scene",
+        "docs/examples/clip.scene", "docs/examples/behind.scene",
+        "docs/examples/lookat-cube.scene", "docs/examples/lookat-near.scene",
+        "docs/examples/lookat-world.scene", "docs/examples/ortho.scene",
+        "docs/examples/selfcheck.scene", "docs/examples/compare-matrix.scene"};
+    int k, loaded = 1, same_image = 1, same_sum = 1, drew = 1;
+
+    for (k = 0; k < (int)(sizeof scenes / sizeof *scenes); k++) {
+        pt_listener l[3];
+        pt_summary sum[3];
+        pt_fb fb[3];
+        pt_scene s;
+        char err[PT_ERRLEN];
+        int i;
+
+        if (pt_scene_load(&s, scenes[k], err, sizeof err) != 0) { loaded = 0; continue; }
+        memset(l, 0, sizeof l);
+        for (i = 0; i < 3; i++) l[i].summary = no_summary;  /* warnings counted */
+        l[1].sink.vertex = no_record;                        /* vertices first */
+        l[2].sink.vertex = no_record;
+        l[2].pixels = no_pixel;                              /* a pixel listener */
+        for (i = 0; i < 3; i++) {
+            if (run_into(&s, &l[i], &fb[i], &sum[i]) != 0) { loaded = 0; break; }
+            if (i == 0) continue;
+            if (memcmp(fb[0].rgb, fb[i].rgb, 3 * (size_t)s.fb_w * s.fb_h) != 0)
+                same_image = 0;
+            if (memcmp(&sum[0], &sum[i], sizeof sum[0]) != 0) same_sum = 0;
+        }
+        if (i == 3 && sum[0].pixels == 0) drew = 0;
+        while (i-- > 0) pt_fb_free(&fb[i]);
+        pt_scene_free(&s);
+    }
+    PT_CHECK("raster-5.1 the example scenes load and run", loaded);
+    PT_CHECK("raster-5.2 each draws pixels", drew);
+    PT_CHECK("raster-5.3 drawn in turn or after every vertex: the same image", same_image);
+    PT_CHECK("raster-5.4 ... and the same summary", same_sum);
+}
+
+/* ===== pixel records carry the colour written and the coverage ===== */
+
+/* What a pixel listener saw against the image: every record's colour is the
+** framebuffer's at its index (the last segment to write a pixel wins, and the
+** records come in drawing order), with coverage 1. */
+typedef struct px_check {
+    const pt_fb *fb;             /* the image drawn so far, filled after */
+    unsigned char *seen;         /* 3 bytes a pixel: the last record's colour */
+    uint64_t n, full;            /* records, and those with coverage 1 */
+} px_check;
+
+static void px_record(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                      size_t n)
+{
+    px_check *c = ud;
+    size_t k;
+
+    (void)seg;
+    for (k = 0; k < n; k++) {
+        c->n++;
+        c->full += px[k].coverage == 1.0f;
+        if (memcmp(px[k].rgb, m->color, 3) != 0) c->full = 0;   /* not its model's */
+        if (px[k].idx >= 0 && px[k].idx < (int64_t)c->fb->w * c->fb->h)
+            memcpy(c->seen + 3 * px[k].idx, px[k].rgb, 3);
+    }
+}
+
+static void test_pixel_colours(void)
+{
+    static const char *const scenes[] = {
+        "docs/examples/two-models.scene", "docs/examples/lookat-cube.scene"};
+    int k, ok = 1, all_full = 1, same = 1;
+
+    for (k = 0; k < 2; k++) {
+        pt_listener l;
+        pt_summary sum;
+        pt_fb fb;
+        pt_scene s;
+        px_check c;
+        char err[PT_ERRLEN];
+        size_t i, npix;
+
+        if (pt_scene_load(&s, scenes[k], err, sizeof err) != 0) { ok = 0; continue; }
+        npix = (size_t)s.fb_w * s.fb_h;
+        memset(&l, 0, sizeof l);
+        memset(&c, 0, sizeof c);
+        c.fb = &fb;
+        c.seen = malloc(3 * npix);
+        l.pixels = px_record;
+        l.ud = &c;
+        if (!c.seen) { ok = 0; pt_scene_free(&s); continue; }
+        fb.w = s.fb_w; fb.h = s.fb_h;
+        for (i = 0; i < npix; i++) memcpy(c.seen + 3 * i, s.background, 3);
+        if (run_into(&s, &l, &fb, &sum) != 0) ok = 0;
+        else {
+            if (c.n == 0 || c.full != c.n) all_full = 0;
+            if (memcmp(c.seen, fb.rgb, 3 * npix) != 0) same = 0;
+            pt_fb_free(&fb);
+        }
+        free(c.seen);
+        pt_scene_free(&s);
+    }
+    PT_CHECK("raster-6.1 the scenes run with a pixel listener", ok);
+    PT_CHECK("raster-6.2 every pixel record has its model's colour and coverage 1", all_full);
+    PT_CHECK("raster-6.3 the records' colours, written in order, are the image", same);
+}
+
+static void test_blend(void)
+{
+    static const unsigned char bg[3] = {10, 20, 200}, red[3] = {255, 0, 0};
+    pt_fb fb;
+    int ok = pt_fb_init(&fb, 2, 1, bg) == 0;
+
+    if (!ok) { PT_CHECK("raster-7.0 a 2x1 framebuffer", 0); return; }
+    pt_fb_blend(&fb, 0, red, 1.0f);
+    PT_CHECK("raster-7.1 blend with coverage 1 writes the colour",
+             fb.rgb[0] == 255 && fb.rgb[1] == 0 && fb.rgb[2] == 0);
+    pt_fb_blend(&fb, 1, red, 0.0f);
+    PT_CHECK("raster-7.2 ... with coverage 0 leaves the pixel",
+             fb.rgb[3] == 10 && fb.rgb[4] == 20 && fb.rgb[5] == 200);
+    pt_fb_blend(&fb, 1, red, 0.25f);
+    /* 0.25 * 255 + 0.75 * 10 = 71.25 -> 71; 0.75 * 20 = 15; 0.75 * 200 = 150 */
+    PT_CHECK("raster-7.3 ... with coverage 0.25, a quarter of the way, rounded",
+             fb.rgb[3] == 71 && fb.rgb[4] == 15 && fb.rgb[5] == 150);
+    pt_fb_free(&fb);
+}
+
+int main(void)
+{
+    test_pictures();
+    test_symmetry();
+    test_advance();
+    test_long_segment();
+    test_in_turn();
+    test_pixel_colours();
+    test_blend();
+    return pt_test_report();
+}
