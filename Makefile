@@ -39,8 +39,9 @@ B       = build
 # (s5), STAGE_index (s6).  The names are not typed here: src/tools/stage_names.c
 # prints them from the stage table (the k-th is stages/sK_*.c's), and an
 # unknown STAGE_x stops make with the list.  FILE.c includes its stage's header
-# by name (-Istages); $B/choice remembers the files, so a new choice rebuilds
-# the stage objects (each depends on it), hence the library and the binary.
+# by name (-Istages); $B/choice remembers the files and $B/choice-NAME each
+# stage's, so a new choice rebuilds that stage's object (and what includes
+# the chosen files), hence the library and the binary.
 # The old $B/pipetrace is removed first, so a failed build leaves none that
 # does not match the files given.  The stage rules below must not become the
 # default goal: `make STAGE_x=F` with no target builds $B/pipetrace.
@@ -66,13 +67,18 @@ $(foreach n,$(STAGE_NAMES),$(if $(STAGE_$n),$(if $(wildcard $(STAGE_$n)),,\
     $(error STAGE_$n=$(STAGE_$n): no such file))))
 CHOICE  = $(foreach n,$(STAGE_NAMES),$n=$(STAGE_$n))
 $(shell echo '$(CHOICE)' | cmp -s - $B/choice || echo '$(CHOICE)' > $B/choice)
+# and $B/choice-NAME each stage's own, so that a build reusing another's
+# objects (tests/lib/studentlib.sh) compiles again only the stages whose file
+# changed, not all of them
+$(foreach n,$(STAGE_NAMES),$(shell echo '$(STAGE_$n)' | cmp -s - $B/choice-$n || \
+    echo '$(STAGE_$n)' > $B/choice-$n))
 STAGE_CC = $(CC) $(ALLCFLAGS) -Istages -c -o $@ $<
 STUDENT  = $(strip $(foreach n,$(STAGE_NAMES),$(if $(STAGE_$n),$n)))
 STUDENT_FILES = $(foreach n,$(STUDENT),$(STAGE_$n))
 CHOSEN   = $B/choice $(STUDENT_FILES)
 # stage_rule NAME FILE: $B/sK_*.o from the student's file for NAME, or from FILE
 define stage_rule
-$$B/$(notdir $(2:.c=.o)): $$(or $$(STAGE_$1),$2) stages/*.h $$B/choice; $$(STAGE_CC)
+$$B/$(notdir $(2:.c=.o)): $$(or $$(STAGE_$1),$2) stages/*.h $$B/choice-$1; $$(STAGE_CC)
 endef
 $(foreach p,$(join $(addsuffix :,$(STAGE_NAMES)),$(STAGE_FILES)),\
     $(eval $(call stage_rule,$(word 1,$(subst :, ,$p)),$(word 2,$(subst :, ,$p)))))
