@@ -28,6 +28,7 @@ numfmt-portable 1 $B/test_numfmt_portable
 jnum        2 $B/test_jnum
 raster      1 $B/test_raster
 pipelines   2 $B/test_pipelines
+journey-rows 2 $B/test_journey
 matrix      1 $B/test_matrix
 scene       1 $B/test_scene
 nameset     2 $B/test_nameset
