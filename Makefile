@@ -122,8 +122,8 @@ IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace_buf.o $B/trace_
 # and step), the subcommands (diff, accuracy and journey in folders of their
 # own; diff's parts listed with the commands).
 TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/dd.o $B/acc_shared.o $B/acc_float.o \
-           $B/acc_double.o $B/acc_dd.o $B/accuracy.o $B/journey.o $B/journey_html.o \
-           $B/journey_matrix.o $B/jplace.o \
+           $B/acc_double.o $B/acc_dd.o $B/accuracy.o $B/jdraw.o $B/jplace.o $B/jpanel.o \
+           $B/journey_classic.o $B/journey_matrix.o $B/jrows.o $B/journey.o $B/journey_html.o \
            $B/journey_wasm.o $B/stages_wasm.o
 CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/dfit.o \
            $B/dpixels.o $B/dsummary.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o \
@@ -132,7 +132,8 @@ TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
            $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm \
-           $B/test_numfmt_portable $B/test_trace $B/test_lanes $B/test_pipelines
+           $B/test_numfmt_portable $B/test_trace $B/test_lanes $B/test_pipelines \
+           $B/test_journey
 
 all: $B/pipetrace
 

@@ -35,6 +35,7 @@ numfmt-portable 10 $B/test_numfmt_portable
 jnum             1 $B/test_jnum
 raster           1 $B/test_raster
 pipelines        1 $B/test_pipelines
+journey-rows     1 $B/test_journey
 matrix           1 $B/test_matrix
 scene            1 $B/test_scene
 nameset          1 $B/test_nameset

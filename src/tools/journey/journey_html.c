@@ -241,9 +241,10 @@ static void texts(pt_sbuf *sb, const pt_jmodel *jm, const item *it, int kind)
     for (i = 0; i < j.pipe->norder; i++) {
         st = j.pipe->order[i];
         if (i) pt_sbuf_add(sb, ",");
-        if (pt_journey_stopped(&j, st)) {
-            if (kind == 0) pt_jmatrix_unreached(b, sizeof b, (pt_stage)st);
-            else if (!pt_jmatrix_note(b, sizeof b, &j, (pt_stage)st) || kind == 2) b[0] = '\0';
+        if (pt_journey_stopped(&j, st) && jm->rows->stopped_coords) {
+            if (kind == 0) jm->rows->stopped_coords(b, sizeof b, (pt_stage)st);
+            else if (kind == 1) jm->rows->stopped_note(b, sizeof b, &j, (pt_stage)st);
+            else b[0] = '\0';
         } else if (kind == 0) pt_explain_values(b, sizeof b, &j, (pt_stage)st);
         else if (kind == 1) pt_explain_stage(b, sizeof b, &j, (pt_stage)st, "\n");
         else pt_explain_next(b, sizeof b, &j, (pt_stage)st);

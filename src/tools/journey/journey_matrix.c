@@ -26,20 +26,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "tools/journey/journey.h"
+#include "tools/journey/journey_matrix.h"
+#include "tools/journey/journey_classic.h"
+#include "tools/journey/jpanel.h"
+#include "io/explain.h"
 #include "io/numfmt.h"
 #include "core/pipetrace.h"
 
-#define RED     "#d62728"        /* journey.c's colors: the vertex, */
-#define BLUE    "#1f6fd1"        /*   its segments, */
-#define EDGE    "#7f9cc6"        /*   a stage's area and planes, */
-#define GREY    "#5f6670"        /*   notes */
-#define LABEL   "fill=\"" GREY "\""
-
-#define BX      10.0             /* the plot box, as journey.c's */
-#define BY      42.0
-#define BW      380.0
-#define BH      248.0
+#define LABEL   "fill=\"" PT_JC_NOTE "\""
 #define BIGV    1e150            /* coordinates beyond this never widen a panel */
 
 /* ===== the points clipping made ===== */
@@ -163,7 +157,7 @@ static void frustum_corner(const pt_jmodel *jm, int c, double z, double p[3])
     p[2] = z;
 }
 
-int pt_jmatrix_init(pt_jmodel *jm)
+int pt_jmatrix_layout(pt_jmodel *jm)
 {
     const pt_model *m = jm->m;
     pt_options o;
@@ -175,6 +169,7 @@ int pt_jmatrix_init(pt_jmodel *jm)
     size_t k;
     int rc, i;
 
+    if (pt_jclassic_layout(jm) != 0) return -1;  /* model, viewport, framebuffer */
     jm->cutix = calloc(m->nseg ? 2 * m->nseg : 1, sizeof *jm->cutix);
     if (!jm->cutix) return -1;
     memset(&c, 0, sizeof c);
@@ -210,7 +205,7 @@ int pt_jmatrix_init(pt_jmodel *jm)
         if (pt_vertex_used(m, k + 1) && pt_jstage_xy(&jm->js[k], PT_STAGE_WORLD, &x, &y))
             grow(b, x, y);
     }
-    pad_fit(&jm->view[PT_STAGE_WORLD], b, 0, BX, BY, BW, BH);
+    pad_fit(&jm->view[PT_STAGE_WORLD], b, 0, PT_JBOX_X, PT_JBOX_Y, PT_JBOX_W, PT_JBOX_H);
     /* view: the eye, the frustum, the used vertices; ndc: the cube */
     D = view_depth(jm);
     bbox_start(b);
@@ -218,14 +213,14 @@ int pt_jmatrix_init(pt_jmodel *jm)
         frustum_corner(jm, i, jm->s->znear, pt); grow3(b, PT_STAGE_VIEW, pt[0], pt[1], pt[2]);
         frustum_corner(jm, i, D, pt); grow3(b, PT_STAGE_VIEW, pt[0], pt[1], pt[2]);
     }
-    pad_fit(&jm->view[PT_STAGE_VIEW], b, 0, BX, BY, BW, BH);
+    pad_fit(&jm->view[PT_STAGE_VIEW], b, 0, PT_JBOX_X, PT_JBOX_Y, PT_JBOX_W, PT_JBOX_H);
     bbox_start(b);
     for (i = 0; i < 8; i++)
         grow3(b, PT_STAGE_NDC, i & 1 ? 1.2 : -1.2, i & 2 ? 1.2 : -1.2, i & 4 ? 1.2 : 0);
-    pad_fit(&jm->view[PT_STAGE_NDC], b, 0, BX, BY, BW, BH);
+    pad_fit(&jm->view[PT_STAGE_NDC], b, 0, PT_JBOX_X, PT_JBOX_Y, PT_JBOX_W, PT_JBOX_H);
     /* screen: the rectangle, y down */
     b[0] = 0; b[1] = 0; b[2] = jm->par.w; b[3] = jm->par.h;
-    pad_fit(&jm->view[PT_STAGE_SCREEN], b, 1, BX, BY, BW, BH);
+    pad_fit(&jm->view[PT_STAGE_SCREEN], b, 1, PT_JBOX_X, PT_JBOX_Y, PT_JBOX_W, PT_JBOX_H);
     /* clip space: (w_k, x_k), (w_k, y_k), (w_k, z_k), each from w_k = 0 on */
     for (i = 0; i < 3; i++) {
         pt_jview *v = i == 0 ? &jm->view[PT_STAGE_CLIP] : i == 1 ? &jm->clip_y : &jm->clip_z;
@@ -235,7 +230,7 @@ int pt_jmatrix_init(pt_jmodel *jm)
             if (pt_vertex_used(m, k + 1)) grow(b, r->w, comp(r, i));
         }
         if (i < 2) { b[1] = fmin(b[1], -b[2]); b[3] = fmax(b[3], b[2]); }  /* the wedge */
-        pad_fit(v, b, 0, i == 1 ? BX + BW / 2 + 4 : BX, BY + 16, BW / 2 - 4, BH - 16);
+        pad_fit(v, b, 0, i == 1 ? PT_JBOX_X + PT_JBOX_W / 2 + 4 : PT_JBOX_X, PT_JBOX_Y + 16, PT_JBOX_W / 2 - 4, PT_JBOX_H - 16);
     }
     return 0;
 }
@@ -255,25 +250,15 @@ int pt_jmatrix_ends(const pt_jmodel *jm, size_t s, pt_stage st, pt_journey *ja, 
     return 1;
 }
 
-int pt_jmatrix_pixelplane(const pt_journey *j, int h, pt_vec2 *pp)
+int pt_jmatrix_pixelplane(const pt_jmodel *jm, const pt_journey *j, pt_vec2 *pp)
 {
     const pt_vrec *r = &j->rec[PT_STAGE_VIEWPORT];
     pt_pix vp;
 
     if (!(j->reported & 1u << PT_STAGE_VIEWPORT) || (r->flags & PT_REC_NULL)) return -1;
     vp.x = r->ix; vp.y = r->iy; vp.ok = 1;
-    *pp = pt_viewport2pixelplane(vp, h);
+    *pp = pt_viewport2pixelplane(vp, jm->par.h);
     return 0;
-}
-
-int pt_jmatrix_number(const pt_jmodel *jm, pt_stage st)
-{
-    const pt_stage *o = pt_scene_pipeline(jm->s)->order;
-    int k, n = pt_scene_pipeline(jm->s)->norder;
-
-    for (k = 0; k < n; k++)
-        if (o[k] == st) return k + 1;
-    return (int)st + 1;
 }
 
 /* ===== backgrounds ===== */
@@ -282,9 +267,9 @@ static void axes3(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st, double A, const
 {
     char t[16];
 
-    snprintf(t, sizeof t, "x_%s", sfx); pt_jaxis3(sb, jm, st, A, 0, 0, t);
-    snprintf(t, sizeof t, "y_%s", sfx); pt_jaxis3(sb, jm, st, 0, A, 0, t);
-    snprintf(t, sizeof t, "z_%s", sfx); pt_jaxis3(sb, jm, st, 0, 0, A, t);
+    snprintf(t, sizeof t, "x_%s", sfx); pt_jaxis3(sb, &jm->view[st], st, A, 0, 0, t);
+    snprintf(t, sizeof t, "y_%s", sfx); pt_jaxis3(sb, &jm->view[st], st, 0, A, 0, t);
+    snprintf(t, sizeof t, "z_%s", sfx); pt_jaxis3(sb, &jm->view[st], st, 0, 0, A, t);
 }
 
 /* A labelled point of a 3-D panel. */
@@ -297,14 +282,15 @@ static void point3(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st, const double *
     pt_jproj(st, p[0], p[1], p[2], &x, &y);
     if (!pt_jview_in(v, x, y)) return;
     pt_jcircle(sb, pt_jview_x(v, x), pt_jview_y(v, y), 4, "#333", "");
-    pt_jtext_label(sb, pt_jview_x(v, x) - 7, pt_jview_y(v, y) - 8, 11, "end", "fill=\"#333\"", label, 0);
+    pt_jlabel_at(sb, pt_jview_x(v, x) - 7, pt_jview_y(v, y) - 8, 11, "end", "fill=\"#333\"", label, 0, PT_JLAB_OTHER);
 }
 
-static void bg_world(pt_sbuf *sb, const pt_jmodel *jm)
+static void bg_world(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
     const pt_scene *s = jm->s;
     double A = world_axis(jm), e[3], d[3], u[3], nd, nu;
 
+    (void)st;
     axes3(sb, jm, PT_STAGE_WORLD, A, "w");
     pt_jwireframe(sb, jm, PT_STAGE_WORLD);
     e[0] = s->eye.x; e[1] = s->eye.y; e[2] = s->eye.z;
@@ -314,39 +300,40 @@ static void bg_world(pt_sbuf *sb, const pt_jmodel *jm)
     d[2] = e[2] + 0.4 * A * s->dir.z / nd;
     u[0] = e[0] + 0.25 * A * s->up.x / nu; u[1] = e[1] + 0.25 * A * s->up.y / nu;
     u[2] = e[2] + 0.25 * A * s->up.z / nu;
-    pt_jline3(sb, jm, PT_STAGE_WORLD, e, d, EDGE, 2, "");
-    pt_jline3(sb, jm, PT_STAGE_WORLD, e, u, EDGE, 1.5, "stroke-dasharray=\"4 2\"");
+    pt_jline3(sb, &jm->view[PT_STAGE_WORLD], PT_STAGE_WORLD, e, d, PT_JC_EDGE, 2, "");
+    pt_jline3(sb, &jm->view[PT_STAGE_WORLD], PT_STAGE_WORLD, e, u, PT_JC_EDGE, 1.5, "stroke-dasharray=\"4 2\"");
     point3(sb, jm, PT_STAGE_WORLD, d, "direction");
     point3(sb, jm, PT_STAGE_WORLD, u, "up");
     point3(sb, jm, PT_STAGE_WORLD, e, "eye");
 }
 
-static void bg_view(pt_sbuf *sb, const pt_jmodel *jm)
+static void bg_view(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
     double D = view_depth(jm), o[3] = {0, 0, 0}, n[4][3], f[4][3];
     char t[64 + PT_NUMLEN], a[PT_NUMLEN];
     int c;
 
+    (void)st;
     for (c = 0; c < 4; c++) {
         frustum_corner(jm, c, jm->s->znear, n[c]);
         frustum_corner(jm, c, D, f[c]);
     }
     for (c = 0; c < 4; c++) {
-        pt_jline3(sb, jm, PT_STAGE_VIEW, o, f[c], EDGE, 1, "stroke-dasharray=\"5 3\"");
-        pt_jline3(sb, jm, PT_STAGE_VIEW, f[c], f[(c + 1) % 4], EDGE,
+        pt_jline3(sb, &jm->view[PT_STAGE_VIEW], PT_STAGE_VIEW, o, f[c], PT_JC_EDGE, 1, "stroke-dasharray=\"5 3\"");
+        pt_jline3(sb, &jm->view[PT_STAGE_VIEW], PT_STAGE_VIEW, f[c], f[(c + 1) % 4], PT_JC_EDGE,
                   D < jm->s->zfar ? 1 : 2, D < jm->s->zfar ? "stroke-dasharray=\"5 3\"" : "");
-        pt_jline3(sb, jm, PT_STAGE_VIEW, n[c], n[(c + 1) % 4], EDGE, 2, "");
+        pt_jline3(sb, &jm->view[PT_STAGE_VIEW], PT_STAGE_VIEW, n[c], n[(c + 1) % 4], PT_JC_EDGE, 2, "");
     }
     axes3(sb, jm, PT_STAGE_VIEW, 0.6 * D, "v");
     pt_jwireframe(sb, jm, PT_STAGE_VIEW);
     point3(sb, jm, PT_STAGE_VIEW, o, "eye");
     pt_fmt_shortest(a, jm->s->znear);
     snprintf(t, sizeof t, "near plane z_v = %s", a);
-    pt_jtext_label(sb, BX + 6, BY + BH - 20, 10, "start", LABEL, "frustum: from the near plane",
-                   0);
-    pt_jtext_label(sb, BX + 6, BY + BH - 8, 10, "start", LABEL,
-                   D < jm->s->zfar ? "the far plane lies beyond" : "to the far plane", 0);
-    pt_jtext_label(sb, BX + 6, BY + 14, 10, "start", LABEL, t, 0);
+    pt_jlabel_at(sb, PT_JBOX_X + 6, PT_JBOX_Y + PT_JBOX_H - 20, 10, "start", LABEL, "frustum: from the near plane",
+                   0, PT_JLAB_OTHER);
+    pt_jlabel_at(sb, PT_JBOX_X + 6, PT_JBOX_Y + PT_JBOX_H - 8, 10, "start", LABEL,
+                   D < jm->s->zfar ? "the far plane lies beyond" : "to the far plane", 0, PT_JLAB_OTHER);
+    pt_jlabel_at(sb, PT_JBOX_X + 6, PT_JBOX_Y + 14, 10, "start", LABEL, t, 0, PT_JLAB_OTHER);
 }
 
 /* One clip-space plot: component c against w_k, with its two planes. */
@@ -363,8 +350,8 @@ static void bg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c)
 
     pt_jview_line(sb, v, v->x0, 0, v->x1, 0, "#6b7280", 0.8, "");
     pt_jview_line(sb, v, 0, v->y0, 0, v->y1, "#6b7280", 0.8, "");
-    pt_jview_line(sb, v, 0, 0, W, W, EDGE, 1.8, "");
-    pt_jview_line(sb, v, 0, 0, W, c == 2 ? 0 : -W, EDGE, 1.8, "");
+    pt_jview_line(sb, v, 0, 0, W, W, PT_JC_EDGE, 1.8, "");
+    pt_jview_line(sb, v, 0, 0, W, c == 2 ? 0 : -W, PT_JC_EDGE, 1.8, "");
     t = fmin(0.8 * W, v->y1 * 0.8);
     pt_jview_label(sb, v, t, t, -4, -4, "end", planes[c][0]);
     t = fmin(0.65 * W, -0.65 * v->y0);        /* below the line, with room under it */
@@ -379,45 +366,48 @@ static void bg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c)
     }
 }
 
-static void bg_cvv(pt_sbuf *sb, const pt_jmodel *jm)
+static void bg_cvv(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
     int b;
     char t[64];
 
+    (void)st;
     bg_wedge(sb, jm, &jm->clip_z, 2);
-    pt_jtext(sb, BX + BW / 2 + 8, BY + 12, 10.5, "start", "fill=\"#222\"",
+    pt_jtext(sb, PT_JBOX_X + PT_JBOX_W / 2 + 8, PT_JBOX_Y + 12, 10.5, "start", "fill=\"#222\"",
              "outside a plane: its bit is 1", 0);
     for (b = 0; b < PT_CVV_NPLANES; b++) {
         snprintf(t, sizeof t, "0x%02x %s", 1u << b, pt_cvv_names[b]);
-        pt_jtext(sb, BX + BW / 2 + 8, BY + 32 + 18 * b, 10.5, "start",
+        pt_jtext(sb, PT_JBOX_X + PT_JBOX_W / 2 + 8, PT_JBOX_Y + 32 + 18 * b, 10.5, "start",
                  "font-family=\"DejaVu Sans Mono, Menlo, Consolas, monospace\" " LABEL, t, 0);
     }
 }
 
-static void bg_ndc(pt_sbuf *sb, const pt_jmodel *jm)
+static void bg_ndc(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
     double p[8][3];
     int i, d;
 
+    (void)st;
     for (i = 0; i < 8; i++) {
         p[i][0] = i & 1 ? 1 : -1; p[i][1] = i & 2 ? 1 : -1; p[i][2] = i & 4 ? 1 : 0;
     }
     for (i = 0; i < 8; i++)                  /* each edge once: to a corner one bit up */
         for (d = 1; d < 8; d <<= 1)
-            if (!(i & d)) pt_jline3(sb, jm, PT_STAGE_NDC, p[i], p[i | d], EDGE, 1.5, "");
+            if (!(i & d)) pt_jline3(sb, &jm->view[PT_STAGE_NDC], PT_STAGE_NDC, p[i], p[i | d], PT_JC_EDGE, 1.5, "");
     axes3(sb, jm, PT_STAGE_NDC, 1.2, "n");
     pt_jwireframe(sb, jm, PT_STAGE_NDC);
-    pt_jtext(sb, BX + 6, BY + BH - 8, 10, "start", LABEL,
+    pt_jtext(sb, PT_JBOX_X + 6, PT_JBOX_Y + PT_JBOX_H - 8, 10, "start", LABEL,
              "the cube -1 <= x_n, y_n <= 1, 0 <= z_n <= 1", 0);
 }
 
-static void bg_screen(pt_sbuf *sb, const pt_jmodel *jm)
+static void bg_screen(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
     const pt_jview *v = &jm->view[PT_STAGE_SCREEN];
     double w = jm->par.w, h = jm->par.h, x0 = pt_jview_x(v, 0), y0 = pt_jview_y(v, 0);
     char t[64];
 
-    pt_jrect(sb, x0, y0, pt_jview_x(v, w) - x0, pt_jview_y(v, h) - y0, "#e6eefa", EDGE, "");
+    (void)st;
+    pt_jrect(sb, x0, y0, pt_jview_x(v, w) - x0, pt_jview_y(v, h) - y0, "#e6eefa", PT_JC_EDGE, "");
     pt_jview_label(sb, v, 0, 0, 0, -5, "start", "(0, 0)");
     snprintf(t, sizeof t, "(%d, %d)", jm->par.w, jm->par.h);
     pt_jview_label(sb, v, w, h, 0, 13, "end", t);
@@ -426,20 +416,11 @@ static void bg_screen(pt_sbuf *sb, const pt_jmodel *jm)
     pt_jwireframe(sb, jm, PT_STAGE_SCREEN);
 }
 
-void pt_jmatrix_bg(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
+static void bg_clip(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 {
-    switch (st) {
-    case PT_STAGE_WORLD: bg_world(sb, jm); break;
-    case PT_STAGE_VIEW: bg_view(sb, jm); break;
-    case PT_STAGE_CLIP:
-        bg_wedge(sb, jm, &jm->view[PT_STAGE_CLIP], 0);
-        bg_wedge(sb, jm, &jm->clip_y, 1);
-        break;
-    case PT_STAGE_CVV: bg_cvv(sb, jm); break;
-    case PT_STAGE_NDC: bg_ndc(sb, jm); break;
-    case PT_STAGE_SCREEN: bg_screen(sb, jm); break;
-    default: break;
-    }
+    (void)st;
+    bg_wedge(sb, jm, &jm->view[PT_STAGE_CLIP], 0);
+    bg_wedge(sb, jm, &jm->clip_y, 1);
 }
 
 /* ===== foregrounds ===== */
@@ -457,7 +438,7 @@ static void fg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c,
         const pt_vrec *ra = &jm->js[m->seg[s].a].rec[PT_STAGE_CLIP];
         const pt_vrec *rb = &jm->js[m->seg[s].b].rec[PT_STAGE_CLIP];
         if (m->seg[s].a != k && m->seg[s].b != k) continue;
-        pt_jview_line(sb, v, ra->w, comp(ra, c), rb->w, comp(rb, c), BLUE, 2,
+        pt_jview_line(sb, v, ra->w, comp(ra, c), rb->w, comp(rb, c), PT_JC_SEG, 2,
                       "stroke-linecap=\"round\"");
         for (e = 0; e < 2; e++) {            /* where clipping cut it */
             size_t i = jm->cutix[2 * s + e];
@@ -466,15 +447,16 @@ static void fg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c,
             q = &jm->cut[i - 1].rec[PT_STAGE_CLIP];
             if (!pt_jview_in(v, q->w, comp(q, c))) continue;
             pt_jrect(sb, pt_jview_x(v, q->w) - 4, pt_jview_y(v, comp(q, c)) - 4, 8, 8, "#fff",
-                     RED, "stroke-width=\"1.5\" class=\"cut\"");
-            pt_jtext_label(sb, pt_jview_x(v, q->w) + 6, pt_jview_y(v, comp(q, c)) + 12, 10, "start",
-                      "fill=\"" RED "\"", "cut", 0);
+                     PT_JC_VTX, "stroke-width=\"1.5\" class=\"cut\"");
+            pt_jlabel_at(sb, pt_jview_x(v, q->w) + 6, pt_jview_y(v, comp(q, c)) + 12, 10, "start",
+                      "fill=\"" PT_JC_VTX "\"", "cut", 0, PT_JLAB_OTHER);
         }
     }
-    pt_jmarker(sb, v, isfinite(r->w) && isfinite(comp(r, c)), r->w, comp(r, c), k + 1);
+    pt_jmarker(sb, v, isfinite(r->w) && isfinite(comp(r, c)), r->w, comp(r, c), k + 1, 0,
+               NULL, NULL);
 }
 
-void pt_jmatrix_cuts(pt_sbuf *sb, const pt_jmodel *jm, size_t k, pt_stage st)
+static void cuts(pt_sbuf *sb, const pt_jmodel *jm, size_t k, pt_stage st)
 {
     const pt_jview *v = &jm->view[st];
     const pt_model *m = jm->m;
@@ -488,7 +470,7 @@ void pt_jmatrix_cuts(pt_sbuf *sb, const pt_jmodel *jm, size_t k, pt_stage st)
             double x, y;
             if (i == 0 || i == PT_JOURNEY_CULLED) continue;
             if (!pt_jstage_xy(&jm->cut[i - 1], st, &x, &y) || !pt_jview_in(v, x, y)) continue;
-            pt_jrect(sb, pt_jview_x(v, x) - 4, pt_jview_y(v, y) - 4, 8, 8, "#fff", RED,
+            pt_jrect(sb, pt_jview_x(v, x) - 4, pt_jview_y(v, y) - 4, 8, 8, "#fff", PT_JC_VTX,
                      "stroke-width=\"1.5\" class=\"cut\"");
         }
     }
@@ -508,39 +490,61 @@ static void fg_code(pt_sbuf *sb, const pt_vrec *r)
         int out = (r->code >> b) & 1;
         pt_fmt_shortest(a, d[b]);
         snprintf(t, sizeof t, "%d  d = %s", out, a);
-        pt_jtext(sb, BX + BW / 2 + 84, BY + 32 + 18 * (double)b, 10.5, "start",
-                 out ? "font-weight=\"bold\" fill=\"" RED "\"" : LABEL, t, BW / 2 - 88);
+        pt_jtext(sb, PT_JBOX_X + PT_JBOX_W / 2 + 84, PT_JBOX_Y + 32 + 18 * (double)b, 10.5, "start",
+                 out ? "font-weight=\"bold\" fill=\"" PT_JC_VTX "\"" : LABEL, t, PT_JBOX_W / 2 - 88);
     }
     snprintf(t, sizeof t, "code = %u", r->code);
-    pt_jtext(sb, BX + BW / 2 + 8, BY + 32 + 18 * PT_CVV_NPLANES + 6, 13, "start",
-             "font-weight=\"bold\" fill=\"" RED "\"", t, 0);
-    pt_jtext(sb, BX + BW / 2 + 8, BY + 32 + 18 * PT_CVV_NPLANES + 24, 10, "start", LABEL,
+    pt_jtext(sb, PT_JBOX_X + PT_JBOX_W / 2 + 8, PT_JBOX_Y + 32 + 18 * PT_CVV_NPLANES + 6, 13, "start",
+             "font-weight=\"bold\" fill=\"" PT_JC_VTX "\"", t, 0);
+    pt_jtext(sb, PT_JBOX_X + PT_JBOX_W / 2 + 8, PT_JBOX_Y + 32 + 18 * PT_CVV_NPLANES + 24, 10, "start", LABEL,
              "d: the signed distance, inside >= 0", 0);
 }
 
-void pt_jmatrix_fg(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k, pt_stage st)
+void pt_jmatrix_stopped_fg(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k,
+                          pt_stage st)
 {
     char t[160];
 
-    if (!(j->reported & 1u << st)) {         /* the journey ended at the cvv */
-        if (st != PT_STAGE_INDEX) pt_jsegments(sb, jm, &jm->view[st], st, k);
-        if (st == PT_STAGE_NDC || st == PT_STAGE_SCREEN) pt_jmatrix_cuts(sb, jm, k, st);
-        snprintf(t, sizeof t, "v%llu stops at the cvv", (unsigned long long)(k + 1));
-        pt_jtext_label(sb, BX + BW / 2, BY + BH / 2, 12, "middle",
-                       "fill=\"" RED "\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\"",
-                       t, BW - 10);
-        pt_jtext_label(sb, BX + BW / 2, BY + BH / 2 + 17, 10.5, "middle",
-                       LABEL " stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\"",
-                       "its segments: from the cuts", BW - 10);
-        return;
-    }
-    if (st == PT_STAGE_CLIP) {
-        fg_wedge(sb, jm, &jm->view[PT_STAGE_CLIP], 0, k);
-        fg_wedge(sb, jm, &jm->clip_y, 1, k);
-    } else {
-        fg_wedge(sb, jm, &jm->clip_z, 2, k);
-        fg_code(sb, &j->rec[PT_STAGE_CVV]);
-    }
+    (void)j;
+    if (st != PT_STAGE_INDEX) pt_jsegments(sb, jm, &jm->view[st], st, k, 2);
+    if (st == PT_STAGE_NDC || st == PT_STAGE_SCREEN) cuts(sb, jm, k, st);
+    snprintf(t, sizeof t, "v%llu stops at the cvv", (unsigned long long)(k + 1));
+    pt_jlabel_at(sb, PT_JBOX_X + PT_JBOX_W / 2, PT_JBOX_Y + PT_JBOX_H / 2, 12, "middle",
+                 "fill=\"" PT_JC_VTX "\" " PT_JHALO, t, PT_JBOX_W - 10, PT_JLAB_OTHER);
+    pt_jlabel_at(sb, PT_JBOX_X + PT_JBOX_W / 2, PT_JBOX_Y + PT_JBOX_H / 2 + 17, 10.5, "middle",
+                 LABEL " " PT_JHALO, "its segments: from the cuts", PT_JBOX_W - 10, PT_JLAB_OTHER);
+}
+
+static void fg_clip(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k, pt_stage st)
+{
+    (void)j; (void)st;
+    fg_wedge(sb, jm, &jm->view[PT_STAGE_CLIP], 0, k);
+    fg_wedge(sb, jm, &jm->clip_y, 1, k);
+}
+
+static void fg_cvv(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k, pt_stage st)
+{
+    (void)st;
+    fg_wedge(sb, jm, &jm->clip_z, 2, k);
+    fg_code(sb, &j->rec[PT_STAGE_CVV]);
+}
+
+static void fg_world(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k, pt_stage st)
+{
+    pt_jfg_path(sb, jm, j, st);
+    pt_jfg_point(sb, jm, j, k, st);
+}
+
+/* NDC and screen: the segments from the cuts, the cuts marked, the vertex. */
+static void fg_cut(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k, pt_stage st)
+{
+    const pt_jview *v = &jm->view[st];
+    double x, y;
+    int ok = pt_jstage_xy(j, st, &x, &y);
+
+    pt_jsegments(sb, jm, v, st, k, 2);
+    cuts(sb, jm, k, st);
+    pt_jmarker(sb, v, ok, x, y, (uint64_t)k + 1, 0, NULL, NULL);
 }
 
 size_t pt_jmatrix_unreached(char *t, size_t n, pt_stage st)
@@ -556,37 +560,45 @@ size_t pt_jmatrix_unreached(char *t, size_t n, pt_stage st)
     return len;
 }
 
-int pt_jmatrix_note(char *t, size_t n, const pt_journey *j, pt_stage st)
+/* ===== notes ===== */
+
+void pt_jmatrix_stopped_note(char *t, size_t n, const pt_journey *j, pt_stage st)
+{
+    (void)st;
+    snprintf(t, n, "not reached: the vertex is outside the view volume (cvv code %u)",
+             j->rec[PT_STAGE_CVV].code);
+}
+
+/* What a stage's note says whatever the vertex, or NULL (note_of() says). */
+static const char *const said[PT_NSTAGES_ALL] = {
+    [PT_STAGE_WORLD] = "the model placed in the world: its world lines, then translate",
+    [PT_STAGE_CLIP] = "inside when -w_k <= x_k, y_k <= w_k and 0 <= z_k <= w_k",
+    [PT_STAGE_NDC] = "divided by w_k: inside the cube",
+    [PT_STAGE_SCREEN] = "y grows downward; pixel (i, j) covers i <= x_s < i + 1, j <= y_s < j + 1",
+};
+
+static void note_of(char *t, size_t n, const pt_jmodel *jm, const pt_journey *j, pt_stage st,
+                    int used)
 {
     const pt_vrec *r = &j->rec[st];
 
-    if (!(j->reported & 1u << st)) {
-        snprintf(t, n, "not reached: the vertex is outside the view volume (cvv code %u)",
-                 j->rec[PT_STAGE_CVV].code);
-        return 1;
-    }
-    switch (st) {
-    case PT_STAGE_WORLD:
-        snprintf(t, n, "the model placed in the world: its world lines, then translate");
-        return 1;
-    case PT_STAGE_VIEW:
+    (void)jm; (void)used;
+    if (said[st]) snprintf(t, n, "%s", said[st]);
+    else if (st == PT_STAGE_VIEW)
         snprintf(t, n, "%s", r->z > 0 ? "in front of the eye (z_v > 0)"
                  : "not in front of the eye (z_v <= 0): the near plane clips it");
-        return 1;
-    case PT_STAGE_CLIP:
-        snprintf(t, n, "inside when -w_k <= x_k, y_k <= w_k and 0 <= z_k <= w_k");
-        return 1;
-    case PT_STAGE_CVV:
+    else if (st == PT_STAGE_CVV)
         snprintf(t, n, "%s", r->code == 0 ? "inside the view volume: on to the divide by w_k"
                  : "outside: its segments are clipped before the divide");
-        return 1;
-    case PT_STAGE_NDC:
-        snprintf(t, n, "divided by w_k: inside the cube");
-        return 1;
-    case PT_STAGE_SCREEN:
-        snprintf(t, n, "y grows downward; pixel (i, j) covers i <= x_s < i + 1, j <= y_s < j + 1");
-        return 1;
-    default:
-        return 0;
-    }
 }
+
+/* ===== the rows (jrows.c) ===== */
+
+const pt_jstage_row pt_jmatrix_rows[PT_NSTAGES_ALL] = {
+    [PT_STAGE_WORLD]  = { bg_world, fg_world, note_of },
+    [PT_STAGE_VIEW]   = { bg_view, pt_jfg_point, note_of },
+    [PT_STAGE_CLIP]   = { bg_clip, fg_clip, note_of },
+    [PT_STAGE_CVV]    = { bg_cvv, fg_cvv, note_of },
+    [PT_STAGE_NDC]    = { bg_ndc, fg_cut, note_of },
+    [PT_STAGE_SCREEN] = { bg_screen, fg_cut, note_of },
+};

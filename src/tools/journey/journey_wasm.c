@@ -11,6 +11,7 @@
 #include <string.h>
 #include "tools/journey/journey.h"
 #include "tools/journey/journey_wasm.h"
+#include "tools/journey/jrows.h"
 
 #define PT_JOURNEY_WASM_MAXV 100000  /* a model's first this many vertices get sliders */
 
@@ -337,8 +338,8 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
             pt_sbuf_add_json(sb, in->coord[c]);
         }
         pt_sbuf_add(sb, "]");
-        if (pt_scene_pipeline(s)->matrices) {                    /* past the cvv of a vertex outside */
-            pt_jmatrix_unreached(b, sizeof b, (pt_stage)st);
+        if (pt_jpipes[pt_scene_pipeline(s)->id].stopped_coords) {   /* past where a point stops */
+            pt_jpipes[pt_scene_pipeline(s)->id].stopped_coords(b, sizeof b, (pt_stage)st);
             pt_sbuf_add(sb, ",\"unreached\":");
             pt_sbuf_add_json(sb, b);
         }

@@ -1,0 +1,124 @@
+/*
+** src/tools/journey/jpanel.c -- what every pipeline's panels share: points, segments, wireframe
+** See LICENSE for copyright and license.
+*/
+#include <math.h>
+#include "tools/journey/jpanel.h"
+
+int pt_jseg_ends(const pt_jmodel *jm, size_t s, pt_stage st, pt_journey *ja, pt_journey *jb)
+{
+    return jm->rows->ends(jm, s, st, ja, jb);
+}
+
+int pt_jstage_xy(const pt_journey *j, pt_stage st, double *x, double *y)
+{
+    const pt_vrec *r = &j->rec[st];
+
+    *x = *y = (double)NAN;
+    if (pt_journey_stopped(j, st)) return 0;        /* stopped at the cvv */
+    switch (pt_jlooks[st].kind) {
+    case PT_JKIND_SPACE:
+        if (!isfinite(r->x) || !isfinite(r->y) || !isfinite(r->z)) return 0;
+        pt_jproj(st, r->x, r->y, r->z, x, y);
+        break;
+    case PT_JKIND_PLANE:
+        *x = r->x; *y = r->y;
+        break;
+    case PT_JKIND_PIXELS:
+        if (r->flags & PT_REC_NULL) return 0;
+        *x = (double)r->ix + 0.5; *y = (double)r->iy + 0.5;
+        break;
+    case PT_JKIND_NONE:
+        return 0;
+    }
+    return isfinite(*x) && isfinite(*y);
+}
+
+void pt_jwireframe(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
+{
+    const pt_model *m = jm->m;
+    const pt_jview *v = &jm->view[st];
+    size_t k, n = m->nseg < PT_JOURNEY_MAXSEG ? m->nseg : PT_JOURNEY_MAXSEG;
+    pt_journey ja, jb;
+    double ax, ay, bx, by;
+    pt_jpath pw;
+
+    pt_jpath_start(&pw, sb);
+    for (k = 0; k < n; k++) {
+        if (!pt_jseg_ends(jm, k, st, &ja, &jb)) continue;
+        if (!pt_jstage_xy(&ja, st, &ax, &ay) || !pt_jstage_xy(&jb, st, &bx, &by)) continue;
+        if (!pt_jview_clip(v, &ax, &ay, &bx, &by)) continue;
+        pt_jpath_cmd(&pw, "M", 2, pt_jview_x(v, ax), pt_jview_y(v, ay));
+        pt_jpath_cmd(&pw, "L", 2, pt_jview_x(v, bx), pt_jview_y(v, by));
+    }
+    pt_jpath_end(&pw, "fill=\"none\" stroke=\"" PT_JC_FAINT "\" stroke-width=\"1\"");
+}
+
+static void no_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
+{
+    (void)ud; (void)count; (void)first; (void)last;
+}
+
+void pt_jraster_segs(const pt_jmodel *jm, size_t k, void (*px)(void *, int64_t, int64_t),
+                     void *ud)
+{
+    const pt_model *m = jm->m;
+    pt_raster_vp to_viewport = pt_scene_pipeline(jm->s)->to_viewport;
+    pt_raster_out out;
+    pt_journey ja, jb;
+    size_t s;
+
+    out.pixel = px;
+    out.clip = no_clip;
+    out.ud = ud;
+    for (s = 0; s < m->nseg; s++) {
+        pt_vec2 a, b;
+        if (m->seg[s].a != k && m->seg[s].b != k) continue;
+        if (!pt_jseg_ends(jm, s, PT_STAGE_VIEWPORT, &ja, &jb)) continue;
+        if (jm->rows->pixelplane(jm, &ja, &a) != 0) continue;   /* the rasterizer's */
+        if (jm->rows->pixelplane(jm, &jb, &b) != 0) continue;   /* points, as pt_run's */
+        pt_raster_segment(a, b, jm->par.w, jm->par.h, to_viewport, &out);
+    }
+}
+
+void pt_jsegments(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, pt_stage st, size_t k,
+                  double width)
+{
+    const pt_model *m = jm->m;
+    pt_journey ja, jb;
+    size_t s;
+
+    for (s = 0; s < m->nseg; s++) {
+        double ax, ay, bx, by;
+        if (m->seg[s].a != k && m->seg[s].b != k) continue;
+        if (!pt_jseg_ends(jm, s, st, &ja, &jb)) continue;
+        if (!pt_jstage_xy(&ja, st, &ax, &ay) || !pt_jstage_xy(&jb, st, &bx, &by)) continue;
+        pt_jview_line(sb, v, ax, ay, bx, by, PT_JC_SEG, width, "stroke-linecap=\"round\"");
+        if (m->seg[s].a == k) { ax = bx; ay = by; }       /* the other end */
+        if (pt_jview_in(v, ax, ay)) pt_jcircle(sb, pt_jview_x(v, ax), pt_jview_y(v, ay), 2.5, PT_JC_SEG, "");
+    }
+}
+
+void pt_jfg_path(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stage st)
+{
+    const pt_jview *v = &jm->view[st];
+    const pt_vrec *r = &j->rec[st];
+    double p0[3] = {0, 0, 0}, p1[3], p2[3], p3[3];
+
+    p1[0] = r->x; p1[1] = 0; p1[2] = 0;
+    p2[0] = r->x; p2[1] = r->y; p2[2] = 0;
+    p3[0] = r->x; p3[1] = r->y; p3[2] = r->z;
+    pt_jline3(sb, v, st, p0, p1, PT_JC_VTX, 1, "stroke-dasharray=\"3 3\"");
+    pt_jline3(sb, v, st, p1, p2, PT_JC_VTX, 1, "stroke-dasharray=\"3 3\"");
+    pt_jline3(sb, v, st, p2, p3, PT_JC_VTX, 1, "stroke-dasharray=\"3 3\"");
+}
+
+void pt_jfg_point(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t k, pt_stage st)
+{
+    const pt_jview *v = &jm->view[st];
+    double x, y;
+    int ok = pt_jstage_xy(j, st, &x, &y);
+
+    pt_jsegments(sb, jm, v, st, k, 2);
+    pt_jmarker(sb, v, ok, x, y, (uint64_t)k + 1, 0, NULL, NULL);
+}
