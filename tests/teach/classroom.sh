@@ -135,7 +135,7 @@ check "class-3.17a --json without answers: nothing answered, exit 1" \
 # --explain printed y_vp = ... = 7 under a record saying y_vp = 2, step ended
 # the pixel equation with the student's 5.5 after the reference's operands,
 # and quiz marked the right viewport wrong.
-sh tests/student.sh s3_two2 "$tmp/s3_two2.c"
+sh tests/teach/student.sh s3_two2 "$tmp/s3_two2.c"
 mk STAGE_pixel="$tmp/s3_two2.c"
 "$tmp/sb/pipetrace" step $tri --vertex 1 --all >"$tmp/out" 2>&1
 check "class-5.1 step, student pixel stage: the formula's result ends the here line" \
@@ -146,7 +146,7 @@ check "class-5.3 ... and the viewport computes from the student's x_pp, truly" \
     grep -qxF "  here     x_vp = round(x_pp) - 1 = round(5.5) - 1 = 6 - 1 = 5" "$tmp/out"
 check "class-5.6 ... and no equation with the reference's operands and the student's result" \
     test "$(grep -c '20/2.001 \* (-0.5 + 1) = 5.5$' "$tmp/out")" = 0
-sh tests/student.sh s4_noflip "$tmp/s4_noflip.c"
+sh tests/teach/student.sh s4_noflip "$tmp/s4_noflip.c"
 mk STAGE_viewport="$tmp/s4_noflip.c"
 "$tmp/sb/pipetrace" $tri --vertex 1 --explain >"$tmp/out" 2>&1
 check "class-5.4 --explain, student viewport stage: the formula's 7, then the record's 2" \
@@ -155,7 +155,7 @@ check "class-5.4 --explain, student viewport stage: the formula's 7, then the re
 check "class-5.5 step: the viewport's here line as the pixel's: the formula's, then yours" \
     test "$(grep -A1 'y_vp = h - round(y_pp) = ' "$tmp/out" | tr '\n' '|')" = \
     "           y_vp = h - round(y_pp) = 10 - round(2.9987506246876565) = 10 - 3 = 7|           your stage gave y_vp = 2|"
-sh tests/student.sh s5_nooffset "$tmp/s5_nooffset.c"
+sh tests/teach/student.sh s5_nooffset "$tmp/s5_nooffset.c"
 mk STAGE_framebuffer="$tmp/s5_nooffset.c"
 "$tmp/sb/pipetrace" step --model cube --vertex 7 --all >"$tmp/out" 2>&1
 check "class-5.7 step, student framebuffer stage: x_ul + x_vp added truly" \

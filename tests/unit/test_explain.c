@@ -447,7 +447,7 @@ static void test_formulas_are_the_table(void)
 ** formula: the text states the reference's result, true arithmetic with the
 ** numbers put in, and says what the stage gave after it.  Before 2024's
 ** reference build, --explain printed "y_vp = ... = 10 - 3 = 7" under a
-** record saying y_vp = 2 (tests/student.sh s4_noflip), and step ended the
+** record saying y_vp = 2 (tests/teach/student.sh s4_noflip), and step ended the
 ** pixel stage's equation with the student's x_pp = 5.5. */
 static void test_student_records(void)
 {
