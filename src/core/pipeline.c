@@ -818,6 +818,18 @@ done:
     return status;
 }
 
+int pt_run_plain(const pt_scene *s, const pt_options *o, const pt_listener *l)
+{
+    pt_plan p;
+    pt_summary sum;
+    int rc;
+
+    if (pt_plan_make(&p, s, o) != 0) return -1;
+    rc = pt_run(s, &p, o, l, NULL, &sum);
+    pt_plan_free(&p);
+    return rc;
+}
+
 /* ===== journeys ===== */
 
 /* What pt_run_journey() and pt_run_journeys() keep: the journeys of model m,
@@ -845,10 +857,7 @@ static int run_keeping(const pt_scene *s, const pt_model *m, uint64_t v, int raw
                        keeper *kp)
 {
     pt_options o;
-    pt_plan p;
     pt_listener l;
-    pt_summary sum;
-    int rc;
 
     pt_options_default(&o);
     o.model = m->name;           /* models of the same name: keep_journey picks m */
@@ -860,10 +869,7 @@ static int run_keeping(const pt_scene *s, const pt_model *m, uint64_t v, int raw
     memset(&l, 0, sizeof l);
     l.journey = keep_journey;
     l.ud = kp;
-    if (pt_plan_make(&p, s, &o) != 0) return -1;
-    rc = pt_run(s, &p, &o, &l, NULL, &sum);
-    pt_plan_free(&p);
-    return rc;
+    return pt_run_plain(s, &o, &l);
 }
 
 int pt_run_journey(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,

@@ -213,6 +213,10 @@ void pt_plan_free(pt_plan *p);
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
            const pt_listener *l, pt_fb *fb, pt_summary *sum);
 
+/* pt_run() of scene s with options o, planned here, drawing nothing, to
+** listener l.  Returns 0, or -1 when out of memory. */
+int pt_run_plain(const pt_scene *s, const pt_options *o, const pt_listener *l);
+
 /* The journey of 1-based vertex v (1 <= v <= m->nv) of model m of scene s, as
 ** pt_run() computes it (raw_lookat as its option), used by a segment or not:
 ** pt_run() traces v alone and hands its journey over.  Under the matrix camera

@@ -255,10 +255,7 @@ static void on_step(void *ud, const pt_model *m, uint64_t seg, const pt_raster_s
 static int kraft_run_model(kraft_run *kr, const pt_scene *s, const pt_model *m, int pixels)
 {
     pt_options o;
-    pt_plan p;
     pt_listener l;
-    pt_summary sum;
-    int rc;
 
     pt_options_default(&o);
     o.model = m->name;           /* models of the same name: the callbacks pick m */
@@ -269,10 +266,7 @@ static int kraft_run_model(kraft_run *kr, const pt_scene *s, const pt_model *m, 
     l.journey = on_journey;
     if (pixels) { l.setup = on_setup; l.step = on_step; }
     l.ud = kr;
-    if (pt_plan_make(&p, s, &o) != 0) return -1;
-    rc = pt_run(s, &p, &o, &l, NULL, &sum);
-    pt_plan_free(&p);
-    return rc;
+    return pt_run_plain(s, &o, &l);
 }
 
 static int kraft_model(FILE *f, const pt_scene *s, const pt_model *m, int pixels,
@@ -319,22 +313,17 @@ static int scene_check(const pt_scene *s, char *err, size_t errlen)
 {
     kraft_check kc;
     pt_options o;
-    pt_plan p;
     pt_listener l;
-    pt_summary sum;
-    int rc;
 
     kc.s = s; kc.err = err; kc.errlen = errlen; kc.rc = 0;
     pt_options_default(&o);
     memset(&l, 0, sizeof l);
     l.setup = check_setup;       /* the setups alone: the walk skips, as ever */
     l.ud = &kc;
-    if (pt_plan_make(&p, s, &o) != 0) rc = -1;
-    else {
-        rc = pt_run(s, &p, &o, &l, NULL, &sum);
-        pt_plan_free(&p);
+    if (pt_run_plain(s, &o, &l) != 0) {
+        snprintf(err, errlen, "pipetrace: out of memory");
+        return -1;
     }
-    if (rc != 0) { snprintf(err, errlen, "pipetrace: out of memory"); return -1; }
     return kc.rc;
 }
 
