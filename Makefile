@@ -98,7 +98,7 @@ $B/buildinfo.c: Makefile $(CHOSEN) | $B
 # none includes a header of a layer above it).
 # stages/: the formulas, in pipeline order: what all share, the classic
 # camera's, then the matrix camera's own (it shares s5 and s6).
-STAGES_O = $B/pt_stage.o $B/pt_round.o $B/s1_model2camera.o $B/s2_camera2image.o \
+STAGES_O = $B/pt_stage.o $B/pt_round.o $B/pt_color.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/s3_image2pixel.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \

@@ -12,6 +12,7 @@
 #include "stages/ms_clip_segment.h"
 #include "stages/pt_classic.h"
 #include "stages/pt_matrix.h"
+#include "stages/pt_color.h"
 #include "stages/s4_pixel2viewport.h"
 #include "stages/m7_screen2viewport.h"
 #include "stages/s5_viewport2fb.h"
@@ -414,7 +415,7 @@ static void pieces_start(pieces *pc, const pt_scene *s, const pt_options *o,
     pc->max_vertices = o->piece_vertices ? o->piece_vertices : 1;
     pc->max_segments = o->piece_segments ? o->piece_segments : 1;
     pc->max_pixels = o->piece_pixels ? o->piece_pixels : 1;
-    pc->segment_cuts = l->pixels || l->clip || l->skip ||
+    pc->segment_cuts = l->pixels || l->clip || l->skip || l->setup || l->step ||
                        pt_scene_pipeline(s)->nsegstages > 0;
     pc->taken = l->piece ? l->piece(l->ud, 0, 0) : 1;
 }
@@ -647,7 +648,23 @@ typedef struct drawing {
     pt_raster_vp to_vp;          /* the camera's viewport stage */
     raster_ctx rc;
     pt_raster_image im;          /* the classic camera's image and pixel listener */
+    pt_raster_steps ls;          /* the listener's setup and step, with rc */
 } drawing;
+
+/* The DDA's records, to the listener (pt_raster_walk). */
+static void on_setup(void *ud, const pt_raster_setup *su)
+{
+    raster_ctx *rc = ud;
+
+    if (rc->l->setup) rc->l->setup(rc->l->ud, rc->m, rc->seg, su);
+}
+
+static void on_step(void *ud, const pt_raster_step *st)
+{
+    raster_ctx *rc = ud;
+
+    if (rc->l->step) rc->l->step(rc->l->ud, rc->m, rc->seg, st);
+}
 
 /* The classic camera's pixels, to the listener (pt_raster_draw). */
 static void on_drawn(void *ud, const pt_fb_pixel *px, size_t n)
@@ -669,6 +686,9 @@ static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *
     d->im.fb = fb; d->im.W = s->fb_w; d->im.H = s->fb_h;
     d->im.x_ul = s->vp_x; d->im.y_ul = s->vp_y; d->im.pixels = 0;
     d->im.pixel_ud = &d->rc;
+    d->ls.setup = on_setup;
+    d->ls.step = on_step;
+    d->ls.ud = &d->rc;
     sum->rasterized = 1;
 }
 
@@ -681,10 +701,16 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
 {
     const pt_model *m = &s->models[k];
     int selected = p->models[k].selected && !o->vertex;
+    int steps = (l->setup || l->step) && selected && o->trace_raster;   /* DDA records */
+    int inlined = p->pipe->inlined_dda && !steps;   /* pt_raster_draw() may draw */
     size_t j;
 
     d->rc.m = m;
     d->im.color = m->color;
+    for (j = 0; j < 3; j++) {               /* a model's one colour, both ends */
+        d->ls.c0[j] = d->ls.c1[j] = pt_color_float(m->color[j]);
+        d->ls.rgb[j] = m->color[j];
+    }
     for (j = 0; j < m->nseg; j++) {
         pt_vec2 a = pp[m->seg[j].a], b = pp[m->seg[j].b];
         int taken = piece_segment(pc, s, a, b);
@@ -697,7 +723,7 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
         d->rc.seg = j + 1;
         d->rc.l = report ? l : NULL;
         d->im.pixel = report && l->pixels ? on_drawn : NULL;
-        draw = p->pipe->inlined_dda && (d->im.fb || d->im.pixel);
+        draw = inlined && (d->im.fb || d->im.pixel);
         if (p->pipe->nsegstages &&
             (dropped = cut_segment(s, p, k, j + 1, &cl[m->seg[j].a], &cl[m->seg[j].b],
                                    traced ? l : NULL, ms, fl, sum, &a, &b)) != NULL) {
@@ -707,6 +733,8 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
         }
         if (draw)                           /* the stages inlined in the DDA */
             r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &d->im, &d->out);
+        else if (steps && taken)            /* step by step, each told */
+            r = pt_raster_walk(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out, &d->ls);
         else
             r = pt_raster_segment(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out);
         if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
@@ -730,8 +758,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     int status = 0, raster, in_turn;
     int cuts = p->pipe->nsegstages > 0;     /* segment stages: cl[] is kept */
 
-    /* Rasterize for an image, for a listener of pixel, clip, skip or summary
-    ** records, or for the matrix camera's points clipping makes; else nobody
+    /* Rasterize for an image, for a listener of pixel, clip, skip, setup, step
+    ** or summary records, or for the matrix camera's points clipping makes; else nobody
     ** listens (a CSV trace has no raster rows): skip it.  When nobody listens
     ** to the vertices, or nobody to what drawing reports (a CSV trace with an
     ** image, no segment stages: the matrix camera's clipping makes vertex
@@ -739,10 +767,11 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     ** ran ("in turn"), from one buffer the size of the largest model, which
     ** stays in the cache: the records that remain come in the same order as
     ** when every model's vertices run first (the summary comes last). */
-    raster = o->rasterize && (fb || l->pixels || l->clip || l->skip || l->summary || cuts);
+    raster = o->rasterize && (fb || l->pixels || l->clip || l->skip || l->setup || l->step ||
+                              l->summary || cuts);
     in_turn = raster &&
               ((!l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin && !l->journey) ||
-               (!cuts && !l->pixels && !l->clip && !l->skip));
+               (!cuts && !l->pixels && !l->clip && !l->skip && !l->setup && !l->step));
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
     n = s->nmodels ? s->nmodels : 1;
@@ -790,6 +819,18 @@ done:
     return status;
 }
 
+int pt_run_plain(const pt_scene *s, const pt_options *o, const pt_listener *l)
+{
+    pt_plan p;
+    pt_summary sum;
+    int rc;
+
+    if (pt_plan_make(&p, s, o) != 0) return -1;
+    rc = pt_run(s, &p, o, l, NULL, &sum);
+    pt_plan_free(&p);
+    return rc;
+}
+
 /* ===== journeys ===== */
 
 /* What pt_run_journey() and pt_run_journeys() keep: the journeys of model m,
@@ -817,10 +858,7 @@ static int run_keeping(const pt_scene *s, const pt_model *m, uint64_t v, int raw
                        keeper *kp)
 {
     pt_options o;
-    pt_plan p;
     pt_listener l;
-    pt_summary sum;
-    int rc;
 
     pt_options_default(&o);
     o.model = m->name;           /* models of the same name: keep_journey picks m */
@@ -832,10 +870,7 @@ static int run_keeping(const pt_scene *s, const pt_model *m, uint64_t v, int raw
     memset(&l, 0, sizeof l);
     l.journey = keep_journey;
     l.ud = kp;
-    if (pt_plan_make(&p, s, &o) != 0) return -1;
-    rc = pt_run(s, &p, &o, &l, NULL, &sum);
-    pt_plan_free(&p);
-    return rc;
+    return pt_run_plain(s, &o, &l);
 }
 
 int pt_run_journey(pt_journey *j, const pt_scene *s, const pt_model *m, uint64_t v,

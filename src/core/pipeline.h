@@ -18,7 +18,9 @@
 ** order, the journey of each used vertex in vertex order (stage order within a
 ** vertex; a listener with a journey callback gets the whole pt_journey first,
 ** then the vertex's records); then for each model and segment, its pixel and
-** clip records in step order; then the summary.  Errors: only pt_scene_load() and pt_run()'s
+** clip records in step order (with a listener of steps, its setup record
+** first and a step record before each step's pixel or clip record); then the
+** summary.  Errors: only pt_scene_load() and pt_run()'s
 ** allocations can fail; they return -1 with a message, nothing here exits.
 */
 #ifndef PT_PIPELINE_H
@@ -29,6 +31,7 @@
 #include "core/scene.h"
 #include "core/fb.h"
 #include "core/vjourney.h"
+#include "core/raster.h"
 #include "stages/pt_matrix.h"
 #include "core/pipelines.h"
 
@@ -125,6 +128,14 @@ typedef struct pt_listener {
                           ** record of it comes after the pixels before it */
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
                  pt_pix first, pt_pix last);
+    void (*setup)(void *ud, const pt_model *m, uint64_t seg, const pt_raster_setup *su);
+    void (*step)(void *ud, const pt_model *m, uint64_t seg, const pt_raster_step *st);
+                          /* the DDA's records of segment seg (core/raster.h):
+                          ** its setup (also when it is skipped), then every
+                          ** step, clipped ones included, each before its
+                          ** pixels or clip record.  With either set, the
+                          ** segments are walked step by step, without the
+                          ** fast-forward past the viewport (pt_raster_walk) */
     void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */
                  uint64_t v, const char *why);      /* v: the endpoint at fault, 0: none */
     void (*summary)(void *ud, const pt_summary *sum);
@@ -200,6 +211,10 @@ void pt_plan_free(pt_plan *p);
 ** scene's when l->summary is set, else it may count the pieces taken only. */
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
            const pt_listener *l, pt_fb *fb, pt_summary *sum);
+
+/* pt_run() of scene s with options o, planned here, drawing nothing, to
+** listener l.  Returns 0, or -1 when out of memory. */
+int pt_run_plain(const pt_scene *s, const pt_options *o, const pt_listener *l);
 
 /* The journey of 1-based vertex v (1 <= v <= m->nv) of model m of scene s, as
 ** pt_run() computes it (raw_lookat as its option), used by a segment or not:

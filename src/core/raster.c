@@ -6,9 +6,11 @@
 #include <float.h>
 #include <limits.h>
 #include <stddef.h>
+#include <string.h>
 #include <math.h>
 #include "core/raster.h"
 #include "stages/pt_round.h"
+#include "stages/pt_color.h"
 #include "stages/s4_pixel2viewport.h"
 #include "stages/s5_viewport2fb.h"
 #include "stages/s6_fb2index.h"
@@ -109,6 +111,8 @@ typedef struct dda {
     pixel_fn *pixel;             /* where a pixel inside goes, */
     void *pixel_ud;              /* with this */
     const pt_raster_out *out;    /* where runs of clipped steps go */
+    const pt_raster_steps *ls;   /* the listener of steps, or NULL */
+    const pt_raster_setup *su;   /* with one: the segment's setup */
 } dda;
 
 /* The viewport pixel of step (s, acc): the point (s, acc), or (acc, s) when
@@ -123,17 +127,44 @@ static inline ALWAYS_INLINE pt_pix step_pixel(const dda *d, int transposed, doub
     return d->to_vp(p, d->w, d->h, NULL);
 }
 
+/* Tell the listener of steps of step (s, acc), whose pixel is p. */
+static void tell_step(const dda *d, int transposed, int si, double acc, pt_pix p,
+                      int inside)
+{
+    const pt_raster_steps *ls = d->ls;
+    const pt_raster_setup *su = d->su;
+    pt_raster_step st;
+    int i;
+
+    if (!ls->step) return;
+    st.s = si;
+    st.a = acc;
+    if (transposed) { st.pp.x = acc; st.pp.y = (double)si; }
+    else            { st.pp.x = (double)si; st.pp.y = acc; }
+    st.vp = p;
+    st.inside = inside;
+    for (i = 0; i < 3; i++)                         /* colour, then gamma */
+        st.color[i] = pt_gamma(pt_color_at(su->c0[i], su->dc[i], (double)si,
+                                           (double)su->s0));
+    st.rgb[0] = ls->rgb[0]; st.rgb[1] = ls->rgb[1]; st.rgb[2] = ls->rgb[2];
+    st.coverage = 1.0f;
+    ls->step(ls->ud, &st);
+}
+
 /* Step s from s0 to s1 with acc from acc0, acc += m: the steps in the band
 ** through the viewport stage, the others clipped and skipped.  Inline with
 ** transposed a constant, so that each of the two loops knows which
-** coordinate it steps. */
-static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int64_t s0, int64_t s1,
-                                      double acc0, double m)
+** coordinate it steps; and stepping, 1 for a listener of steps: when it
+** listens to steps, the band is every step within the range of an int, each
+** step told. */
+static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping,
+                                      int64_t s0, int64_t s1, double acc0, double m)
 {
     int64_t s = s0, band_lo, band_hi, margin, end;
     double acc = acc0;
     clip_run run = {0, {0, 0, 0}, {0, 0, 0}};
     pt_pix p;
+    int every;
 
     /* The steps the viewport stage is asked about: 1 <= s <= w (or h), where
     ** x_vp = s - 1 lies inside, widened by a margin of max(w, h) on each side
@@ -145,8 +176,9 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int64_t s0, 
     ** coordinate is whole and in range, and drops the viewport stage's
     ** rounding and range check of it. */
     margin = d->w > d->h ? d->w : d->h;
-    band_lo = 1 - margin;
-    band_hi = (transposed ? d->h : d->w) + margin;
+    every = stepping && d->ls->step;                /* each step told */
+    band_lo = every ? INT_MIN : 1 - margin;
+    band_hi = every ? INT_MAX - 1 : (transposed ? d->h : d->w) + margin;
     if (band_hi > INT_MAX - 1) band_hi = INT_MAX - 1;
 
     if (s < band_lo) {                              /* before the band: skip */
@@ -165,9 +197,11 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int64_t s0, 
         for (si = (int)s; si <= si_end; si++) {
             p = step_pixel(d, transposed, (double)si, acc);
             if (p.ok && pt_inside(p.x, p.y, d->w, d->h)) {
+                if (stepping) tell_step(d, transposed, si, acc, p, 1);
                 run_flush(&run, d->out);
                 d->pixel(d->pixel_ud, p.x, p.y);
             } else {
+                if (stepping) tell_step(d, transposed, si, acc, p, 0);
                 run_add(&run, 1, p, p);
             }
             acc += m;                               /* y += m */
@@ -187,27 +221,103 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int64_t s0, 
 ** to_vp and pixel are known functions whose code the compiler sees (the
 ** Makefile compiles this file with the chosen viewport, framebuffer and index
 ** stages), the calls in the loop become plain code. */
+/* The setup record of a drawn segment (stepping): su->x0 .. y1 and kind
+** set, the ends in stepping order s0, s1 (a0 the other coordinate at s0,
+** p0's end first unless swapped), the slope m. */
+static void tell_setup(const dda *d, pt_raster_setup *su, int transposed, int swapped,
+                       double s0, double s1, double a0, double a1, double m)
+{
+    const pt_raster_steps *ls = d->ls;
+    int i;
+
+    su->ymajor = transposed;
+    su->swapped = swapped;
+    su->s0 = (int64_t)s0;
+    su->s1 = (int64_t)s1;
+    su->a0 = a0;
+    su->m = m;
+    su->vp0 = step_pixel(d, transposed, s0, a0);
+    su->vp1 = step_pixel(d, transposed, s1, a1);
+    for (i = 0; i < 3; i++) {
+        su->c0[i] = swapped ? ls->c1[i] : ls->c0[i];
+        su->c1[i] = swapped ? ls->c0[i] : ls->c1[i];
+        su->dc[i] = pt_color_slope(su->c0[i], su->c1[i], s1 - s0);
+    }
+    if (ls->setup) ls->setup(ls->ud, su);
+}
+
+/* The one step of a degenerate segment at (x, y), pixel p, told to the
+** listener of steps: in the colour of p0, without gamma. */
+static void tell_degenerate(const dda *d, pt_raster_setup *su, double x, double y,
+                            pt_pix p, int inside)
+{
+    const pt_raster_steps *ls = d->ls;
+    pt_raster_step st;
+    int i;
+
+    su->s0 = su->s1 = (int64_t)x;
+    su->a0 = y;
+    su->vp0 = su->vp1 = p;
+    for (i = 0; i < 3; i++) { su->c0[i] = su->c1[i] = ls->c0[i]; su->dc[i] = 0.0; }
+    if (ls->setup) ls->setup(ls->ud, su);
+    if (!ls->step) return;
+    st.s = su->s0;
+    st.a = y;
+    st.pp.x = x; st.pp.y = y;
+    st.vp = p;
+    st.inside = inside;
+    for (i = 0; i < 3; i++) st.color[i] = ls->c0[i];
+    st.rgb[0] = ls->rgb[0]; st.rgb[1] = ls->rgb[1]; st.rgb[2] = ls->rgb[2];
+    st.coverage = 1.0f;
+    ls->step(ls->ud, &st);
+}
+
+/* The DDA, once for both entry points below: inline in each, so that where
+** to_vp and pixel are known functions whose code the compiler sees (the
+** Makefile compiles this file with the chosen viewport, framebuffer and index
+** stages), the calls in the loop become plain code.  stepping (a constant):
+** 1 tells ls of the setup and of every step (walk()). */
 static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
                                         pt_raster_vp to_vp, pixel_fn *pixel,
-                                        void *pixel_ud, const pt_raster_out *out)
+                                        void *pixel_ud, const pt_raster_out *out,
+                                        const pt_raster_steps *ls, int stepping)
 {
     int64_t ix0, iy0, ix1, iy1;
     double x0, y0, x1, y1, m;
-    int transposed;
+    int transposed, swapped = 0;
+    pt_raster_setup su;
     dda d;
     pt_pix p;
 
     if (!pt_pix_round(p0.x, &ix0) || !pt_pix_round(p0.y, &iy0) ||
-        !pt_pix_round(p1.x, &ix1) || !pt_pix_round(p1.y, &iy1))
+        !pt_pix_round(p1.x, &ix1) || !pt_pix_round(p1.y, &iy1)) {
+        if (stepping && ls->setup) {
+            memset(&su, 0, sizeof su);
+            su.kind = PT_RASTER_SKIPPED;
+            ls->setup(ls->ud, &su);
+        }
         return PT_RASTER_SKIPPED;
+    }
     x0 = (double)ix0; y0 = (double)iy0;             /* the rounded endpoints */
     x1 = (double)ix1; y1 = (double)iy1;
     d.w = w; d.h = h; d.to_vp = to_vp;
     d.pixel = pixel; d.pixel_ud = pixel_ud; d.out = out;
+    d.ls = ls;
+    d.su = &su;
+    if (stepping) {
+        memset(&su, 0, sizeof su);
+        su.x0 = ix0; su.y0 = iy0; su.x1 = ix1; su.y1 = iy1;
+    }
 
     if (x0 == x1 && y0 == y1) {                     /* degenerate: one pixel */
+        int in;
         p = step_pixel(&d, 0, x0, y0);
-        if (p.ok && pt_inside(p.x, p.y, w, h)) pixel(pixel_ud, p.x, p.y);
+        in = p.ok && pt_inside(p.x, p.y, w, h);
+        if (stepping) {
+            su.kind = PT_RASTER_DEGENERATE;
+            tell_degenerate(&d, &su, x0, y0, p, in);
+        }
+        if (in) pixel(pixel_ud, p.x, p.y);
         else out->clip(out->ud, 1, p, p);
         return PT_RASTER_DEGENERATE;
     }
@@ -221,17 +331,28 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
         double t;
         t = x0; x0 = x1; x1 = t;
         t = y0; y0 = y1; y1 = t;
+        swapped = 1;
     }
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
-    if (transposed) walk(&d, 1, (int64_t)x0, (int64_t)x1, y0, m);
-    else            walk(&d, 0, (int64_t)x0, (int64_t)x1, y0, m);
+    if (stepping) {
+        su.kind = PT_RASTER_DRAWN;
+        tell_setup(&d, &su, transposed, swapped, x0, x1, y0, y1, m);
+    }
+    if (transposed) walk(&d, 1, stepping, (int64_t)x0, (int64_t)x1, y0, m);
+    else            walk(&d, 0, stepping, (int64_t)x0, (int64_t)x1, y0, m);
     return PT_RASTER_DRAWN;
 }
 
 int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
                       const pt_raster_out *out)
 {
-    return segment(p0, p1, w, h, to_vp, out->pixel, out->ud, out);
+    return segment(p0, p1, w, h, to_vp, out->pixel, out->ud, out, NULL, 0);
+}
+
+int pt_raster_walk(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
+                   const pt_raster_out *out, const pt_raster_steps *ls)
+{
+    return segment(p0, p1, w, h, to_vp, out->pixel, out->ud, out, ls, 1);
 }
 
 /* The pixels drawn and not yet told to the listener (im->pixel), which
@@ -331,10 +452,10 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
         t.out = out;
         t.n = 0;
         c.tell = &t;
-        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_listened, &c, &told);
+        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_listened, &c, &told, NULL, 0);
         tell(&t);
     } else {
-        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_quiet, &c, out);
+        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_quiet, &c, out, NULL, 0);
     }
     im->pixels += c.pixels;
     return r;

@@ -26,6 +26,63 @@
 #include "stages/pt_stage.h"
 #include "core/fb.h"
 
+#define PT_RASTER_DRAWN       0    /* stepped from end to end */
+#define PT_RASTER_DEGENERATE  1    /* both ends round to one pixel: one step */
+#define PT_RASTER_SKIPPED   (-1)   /* an endpoint has no integer pixel */
+
+/* ===== the DDA's records (for a listener of steps) =====
+**
+** A listener of steps (pt_raster_walk()) hears, per segment, one setup
+** record, then one step record for every step in step order, clipped ones
+** included: the plain walk, without the fast-forward past the viewport's
+** band (steps whose stepped coordinate lies beyond the range of an int, which
+** the course's int loop never takes, are still skipped unreported).  The
+** colours are the course's (stages/pt_color.h): each step's, gamma-encoded,
+** is what the course's renderer writes and its log prints. */
+
+/* A segment as the DDA sets it up.  s is the stepped coordinate (x when
+** x-major, y when y-major), a the other one. */
+typedef struct pt_raster_setup {
+    int kind;                    /* PT_RASTER_DRAWN, _DEGENERATE or _SKIPPED (then
+                                 ** only kind is set, the rest is 0) */
+    int64_t x0, y0, x1, y1;      /* the endpoints rounded (Math.round), p0's and
+                                 ** p1's, in the order given */
+    int ymajor;                  /* 1: |y1 - y0| > |x1 - x0|, steps y; 0: steps x */
+    int swapped;                 /* 1: the ends were exchanged, to step toward
+                                 ** increasing s (then s0 is p1's) */
+    int64_t s0, s1;              /* the first and last step's s, s0 <= s1 */
+    double a0;                   /* a at s0 */
+    double m;                    /* a's change a step: dy/dx (x-major), dx/dy
+                                 ** (y-major); 0 when degenerate */
+    pt_pix vp0, vp1;             /* the viewport pixels of the ends in stepping
+                                 ** order, from the viewport stage */
+    float c0[3], c1[3];          /* the colours of the ends in stepping order */
+    double dc[3];                /* the colours' change a step (pt_color_slope) */
+} pt_raster_setup;
+
+/* One step of the DDA. */
+typedef struct pt_raster_step {
+    int64_t s;                   /* the stepped coordinate, a whole number */
+    double a;                    /* the other one, accumulated: a0 + m + m ... */
+    pt_vec2 pp;                  /* the step's point of the pixel plane: (s, a)
+                                 ** x-major, (a, s) y-major */
+    pt_pix vp;                   /* its viewport pixel, from the viewport stage */
+    int inside;                  /* 1: inside the viewport, drawn; 0: clipped */
+    float color[3];              /* the course's colour written, 0..1: gamma-
+                                 ** encoded (a degenerate segment's: c0, raw) */
+    unsigned char rgb[3];        /* the colour pipetrace writes (the segment's) */
+    float coverage;              /* the share of the pixel covered: 1 */
+} pt_raster_step;
+
+/* Who hears the DDA's records, and the colours they carry. */
+typedef struct pt_raster_steps {
+    void (*setup)(void *ud, const pt_raster_setup *su);    /* may be NULL */
+    void (*step)(void *ud, const pt_raster_step *st);      /* may be NULL */
+    void *ud;                                              /* passed back unchanged */
+    float c0[3], c1[3];          /* the colours of p0 and p1 (pt_color_float) */
+    unsigned char rgb[3];        /* the colour pipetrace writes */
+} pt_raster_steps;
+
 /* What the rasterizer reports, in step order. */
 typedef struct pt_raster_out {
     void (*pixel)(void *ud, int64_t x_vp, int64_t y_vp);   /* a pixel inside */
@@ -33,10 +90,6 @@ typedef struct pt_raster_out {
                  pt_pix first, pt_pix last);               /* steps, viewport coords */
     void *ud;                                              /* passed back unchanged */
 } pt_raster_out;
-
-#define PT_RASTER_DRAWN       0    /* stepped from end to end */
-#define PT_RASTER_DEGENERATE  1    /* both ends round to one pixel: one step */
-#define PT_RASTER_SKIPPED   (-1)   /* an endpoint has no integer pixel */
 
 /* A point of the pixel plane -> its viewport pixel, with the signature of the
 ** viewport stages (called with a NULL sink). */
@@ -48,6 +101,13 @@ typedef pt_pix (*pt_raster_vp)(pt_vec2 pp, int w, int h, const pt_sink *sink);
 ** an endpoint is not finite or beyond PT_PIX_LIMIT.  Requires w, h >= 1. */
 int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
                       const pt_raster_out *out);
+
+/* pt_raster_segment() telling ls of the DDA's records as well: the setup
+** record (also of a skipped segment), then each step's, before its pixel to
+** out->pixel or the clip record that counts it; the walk is the plain one,
+** step by step (above).  The same pixels and clip records, the same result. */
+int pt_raster_walk(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
+                   const pt_raster_out *out, const pt_raster_steps *ls);
 
 /* Told of the pixels pt_raster_draw() draws, in step order, a run of n at a
 ** time (a segment's pixels can come in several runs: at most

@@ -11,6 +11,7 @@
 ** which point the records are of, and its journey for --explain.
 */
 #include <stdint.h>
+#include <string.h>
 #include "io/trace.h"
 #include "io/trace_int.h"
 
@@ -75,6 +76,7 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
 {
     const pt_trace_writer *w = writer_of(t);
 
+    memset(l, 0, sizeof *l);                /* what a trace does not hear: NULL */
     l->header = on_header;
     l->vertex_begin = on_vertex_begin;
     l->sink.vertex = w->vertex;

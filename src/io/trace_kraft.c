@@ -24,14 +24,6 @@
 #include "io/jnum.h"
 #include "io/trace_kraft.h"
 
-/* The colour the course's renderer gives every vertex of m, as floats 0..1
-** (java.awt.Color.getRGBComponents: c / 255f). */
-static void color_floats(const pt_model *m, float rgb[3])
-{
-    int k;
-    for (k = 0; k < 3; k++) rgb[k] = (float)m->color[k] / 255.0f;
-}
-
 /* "% 10.5f  % 10.5f  % 10.5f": the three numbers of Vertex.toString and
 ** Vector.toString. */
 static void put_3(FILE *f, double x, double y, double z)
@@ -84,192 +76,87 @@ static void put_pair(FILE *f, const char *name, double a, double b)
     fprintf(f, "(%s) = (%s, %s)\n", name, s, t);
 }
 
-/* "(NAME) = (%9.4f, %9.4f)" for the viewport pixel of the rounded endpoint
-** (x, y), from the viewport stage (pt_pixel2viewport): the course prints
-** x_vp = x - 1 and y_vp = h - y as doubles.  x and y are whole numbers within
-** the int range (seg_check), so the stage gives a pixel and its doubles are
-** exact. */
-static void put_vp_pair(FILE *f, const pt_scene *s, const char *name, double x, double y)
-{
-    pt_pix vp = pt_pixel2viewport((pt_vec2){x, y}, s->vp_w, s->vp_h, NULL);
-
-    put_pair(f, name, (double)vp.x, (double)vp.y);
-}
-
 /* One step's line.  xs, ys: the point as the course prints it ("%4d" for the
-** stepped coordinate, "%9.4f" for the other); rgb the colour written. */
-static void put_pixel(FILE *f, const pt_scene *s, const char *xs, const char *ys,
-                      pt_pix vp, const double rgb[3])
+** stepped coordinate, "%9.4f" for the other). */
+static void put_step(FILE *f, const pt_scene *s, const char *xs, const char *ys,
+                     const pt_raster_step *st)
 {
     char r[PT_JNUM_LEN], g[PT_JNUM_LEN], b[PT_JNUM_LEN];
-    int in = vp.ok && pt_inside(vp.x, vp.y, s->vp_w, s->vp_h);
 
-    pt_jnum_f(r, rgb[0], 0, 4, 0);
-    pt_jnum_f(g, rgb[1], 0, 4, 0);
-    pt_jnum_f(b, rgb[2], 0, 4, 0);
+    pt_jnum_f(r, (double)st->color[0], 0, 4, 0);
+    pt_jnum_f(g, (double)st->color[1], 0, 4, 0);
+    pt_jnum_f(b, (double)st->color[2], 0, 4, 0);
     fprintf(f, "%sfb_[w=%d,h=%d] vp_[x=%4d, y=%4d, w=%d,h=%d]  (x_pp=%s, y_pp=%s)  "
-            "(x_vp=%4lld, y_vp=%4lld)  r=%s g=%s b=%s\n", in ? "      " : "Clip: ",
+            "(x_vp=%4lld, y_vp=%4lld)  r=%s g=%s b=%s\n", st->inside ? "      " : "Clip: ",
             s->fb_w, s->fb_h, s->vp_x, s->vp_y, s->vp_w, s->vp_h, xs, ys,
-            (long long)vp.x, (long long)vp.y, r, g, b);
+            (long long)st->vp.x, (long long)st->vp.y, r, g, b);
 }
 
-/* The course's gamma (2.2) on a colour channel, in its float arithmetic. */
-static double gamma_of(float c)
+/* The course's renderer can log segment seg of model m (setup su): its
+** endpoints round to ints and it has at most PT_KRAFT_MAX_STEPS steps.
+** Returns 0, or -1 with a message. */
+static int seg_check(const pt_scene *s, const pt_model *m, uint64_t seg,
+                     const pt_raster_setup *su, char *err, size_t errlen)
 {
-    return (double)(float)pow((double)c, 0.45454545454545453);
-}
+    int64_t n = su->s1 - su->s0;                     /* steps - 1 */
 
-/* Check that the course's renderer can log segment k of model m, from
-** pixel-plane point a to b: its endpoints round to ints (r[4]: x0 y0 x1 y1)
-** and it has at most PT_KRAFT_MAX_STEPS steps.  Returns 0, or -1 with a
-** message. */
-static int seg_check(const pt_scene *s, const pt_model *m, size_t k, pt_vec2 a,
-                     pt_vec2 b, int64_t r[4], char *err, size_t errlen)
-{
-    int64_t dx, dy;
-
-    if (!pt_pix_round(a.x, &r[0]) || !pt_pix_round(a.y, &r[1]) ||
-        !pt_pix_round(b.x, &r[2]) || !pt_pix_round(b.y, &r[3]) ||
-        llabs(r[0]) > INT32_MAX || llabs(r[1]) > INT32_MAX ||
-        llabs(r[2]) > INT32_MAX || llabs(r[3]) > INT32_MAX) {
-        snprintf(err, errlen, "%s: error: model '%s', segment %zu: an endpoint is beyond "
+    if (su->kind == PT_RASTER_SKIPPED ||
+        llabs(su->x0) > INT32_MAX || llabs(su->y0) > INT32_MAX ||
+        llabs(su->x1) > INT32_MAX || llabs(su->y1) > INT32_MAX) {
+        snprintf(err, errlen, "%s: error: model '%s', segment %llu: an endpoint is beyond "
                  "the int pixel range of the course's renderer (its log would not end)",
-                 s->path, m->name, k + 1);
+                 s->path, m->name, (unsigned long long)seg);
         return -1;
     }
-    dx = llabs(r[2] - r[0]);
-    dy = llabs(r[3] - r[1]);
-    if ((dx > dy ? dx : dy) >= PT_KRAFT_MAX_STEPS) {
-        snprintf(err, errlen, "%s: error: model '%s', segment %zu: %lld steps, more than "
-                 "the %ld lines a segment's pixel log may have", s->path, m->name, k + 1,
-                 (long long)(dx > dy ? dx : dy) + 1, PT_KRAFT_MAX_STEPS);
+    if (n >= PT_KRAFT_MAX_STEPS) {
+        snprintf(err, errlen, "%s: error: model '%s', segment %llu: %lld steps, more than "
+                 "the %ld lines a segment's pixel log may have", s->path, m->name,
+                 (unsigned long long)seg, (long long)n + 1, PT_KRAFT_MAX_STEPS);
         return -1;
     }
     return 0;
 }
 
-/* The DDA's lines for the segment from pixel-plane point a to b, colours
-** ca and cb; r: its endpoints rounded (seg_check).  This function can't fail. */
-static void kraft_segment(FILE *f, const pt_scene *s, const int64_t r[4],
-                          const float ca[3], const float cb[3])
+/* The rasterizer's lines before the steps: the rounded endpoints and, unless
+** the segment is one pixel, the slopes of position and colour and the ends'
+** viewport pixels. */
+static void put_setup(FILE *f, const pt_raster_setup *su)
 {
-    double x0, y0, x1, y1, sl, acc, rgb[3], dc[3];
-    float c0[3], c1[3];
-    int steep, i;
-    int64_t st, s0, s1;
     char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
     static const char *const chan[3] = {"mRed", "mGrn", "mBlu"};
+    int i;
 
-    x0 = (double)r[0]; y0 = (double)r[1];            /* Math.round, kept as doubles */
-    x1 = (double)r[2]; y1 = (double)r[3];
-    put_pair(f, "x0_pp, y0_pp", x0, y0);
-    put_pair(f, "x1_pp, y1_pp", x1, y1);
-    memcpy(c0, ca, sizeof c0);
-    memcpy(c1, cb, sizeof c1);
-    if (x0 == x1 && y0 == y1) {                      /* one pixel, no gamma */
-        pt_pix vp = pt_pixel2viewport((pt_vec2){x0, y0}, s->vp_w, s->vp_h, NULL);
-        for (i = 0; i < 3; i++) rgb[i] = (double)c0[i];
-        pt_jnum_f(one, x0, 9, 4, 0);
-        pt_jnum_f(two, y0, 9, 4, 0);
-        put_pixel(f, s, one, two, vp, rgb);
-        return;
-    }
-    steep = fabs(y1 - y0) > fabs(x1 - x0);
-    if (steep ? y1 < y0 : x1 < x0) {                 /* step toward increasing s */
-        double t;
-        t = x0; x0 = x1; x1 = t;
-        t = y0; y0 = y1; y1 = t;
-        memcpy(c0, cb, sizeof c0);
-        memcpy(c1, ca, sizeof c1);
-    }
-    if (!steep) { s0 = (int64_t)x0; s1 = (int64_t)x1; }
-    else        { s0 = (int64_t)y0; s1 = (int64_t)y1; }
-    if (!steep) {
-        sl = (y1 - y0) / (x1 - x0);                  /* m = dy / dx */
-        pt_jnum_dtoa(one, sl);
+    put_pair(f, "x0_pp, y0_pp", (double)su->x0, (double)su->y0);
+    put_pair(f, "x1_pp, y1_pp", (double)su->x1, (double)su->y1);
+    if (su->kind != PT_RASTER_DRAWN) return;
+    pt_jnum_dtoa(one, su->m);
+    if (!su->ymajor) {
         fprintf(f, "Slope m    = %s\n", one);
     } else {
-        sl = (x1 - x0) / (y1 - y0);                  /* m = dx / dy */
-        pt_jnum_dtoa(one, sl);
-        pt_jnum_dtoa(two, 1 / sl);
+        pt_jnum_dtoa(two, 1 / su->m);
         fprintf(f, "Slope m    = %s (so 1/m = %s)\n", one, two);
     }
-    for (i = 0; i < 3; i++) {                        /* colour slopes */
-        dc[i] = (double)(c1[i] - c0[i]) / (steep ? y1 - y0 : x1 - x0);
-        pt_jnum_dtoa(one, dc[i]);
+    for (i = 0; i < 3; i++) {
+        pt_jnum_dtoa(one, su->dc[i]);
         fprintf(f, "Slope %s = %s\n", chan[i], one);
     }
-    put_vp_pair(f, s, "x0_vp, y0_vp", x0, y0);
-    put_vp_pair(f, s, "x1_vp, y1_vp", x1, y1);
-    acc = steep ? x0 : y0;
-    for (st = s0; st <= s1; st++) {
-        pt_vec2 p;
-        pt_pix vp;
-        double from = steep ? y0 : x0;
-
-        for (i = 0; i < 3; i++) {                    /* colour, then gamma */
-            float c = (float)fabs((double)c0[i] + dc[i] * ((double)st - from));
-            rgb[i] = gamma_of(c);
-        }
-        if (!steep) { p.x = (double)st; p.y = acc; }
-        else        { p.x = acc; p.y = (double)st; }
-        vp = pt_pixel2viewport(p, s->vp_w, s->vp_h, NULL);
-        if (!steep) {
-            snprintf(one, sizeof one, "%4lld", (long long)st);
-            pt_jnum_f(two, acc, 9, 4, 0);
-        } else {
-            pt_jnum_f(one, acc, 9, 4, 0);
-            snprintf(two, sizeof two, "%4lld", (long long)st);
-        }
-        put_pixel(f, s, one, two, vp, rgb);
-        acc += sl;                                   /* y += m (x += m) */
-    }
+    put_pair(f, "x0_vp, y0_vp", (double)su->vp0.x, (double)su->vp0.y);
+    put_pair(f, "x1_vp, y1_vp", (double)su->vp1.x, (double)su->vp1.y);
 }
 
 /* ===== the log ===== */
 
-/* The pixel-plane points of segment sg's two ends, from the journeys js. */
-static void seg_ends(const pt_journey *js, const pt_segment *sg, pt_vec2 pp[2])
-{
-    pp[0].x = js[sg->a].rec[PT_STAGE_PIXEL].x;
-    pp[0].y = js[sg->a].rec[PT_STAGE_PIXEL].y;
-    pp[1].x = js[sg->b].rec[PT_STAGE_PIXEL].x;
-    pp[1].y = js[sg->b].rec[PT_STAGE_PIXEL].y;
-}
-
-/* Check every segment of m as seg_check() does.  Returns 0, or -1 with a
-** message. */
-static int model_check(const pt_scene *s, const pt_model *m, char *err, size_t errlen)
-{
-    pt_journey *js = pt_run_journeys(s, m, 0);
-    size_t k;
-    int rc = 0;
-
-    if (!js) { snprintf(err, errlen, "pipetrace: out of memory"); return -1; }
-    for (k = 0; k < m->nseg && rc == 0; k++) {
-        pt_vec2 pp[2];
-        int64_t r[4];
-
-        seg_ends(js, &m->seg[k], pp);
-        rc = seg_check(s, m, k, pp[0], pp[1], r, err, errlen);
-    }
-    free(js);
-    return rc;
-}
-
-static int kraft_model(FILE *f, const pt_scene *s, const pt_model *m, int pixels,
-                       char *err, size_t errlen)
+/* The lines of model m up to its segments' own: the translation, every
+** vertex stage by stage (journeys js), the segments and the colours. */
+static void put_model_head(FILE *f, const pt_model *m, const pt_journey *js)
 {
     static const pt_stage logged[4] = {PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE,
                                        PT_STAGE_PIXEL};
     const char *pixel_title = pt_stage_course[PT_STAGE_PIXEL];
-    pt_journey *js = pt_run_journeys(s, m, 0);
     double x, y, z;
-    float rgb[3];
     size_t v, k;
     int q;
 
-    if (!js) { snprintf(err, errlen, "pipetrace: out of memory"); return -1; }
     fprintf(f, "==== Render position: %s ====\n", m->name);
     fputs("---- Translation vector = [x,y,z] = [", f);
     put_3(f, m->translate.x, m->translate.y, m->translate.z);
@@ -288,38 +175,156 @@ static int kraft_model(FILE *f, const pt_scene *s, const pt_model *m, int pixels
         fprintf(f, "%s: cIndex = %3zu, ", pixel_title, v);
         put_color(f, m);
     }
-    color_floats(m, rgb);
-    for (k = 0; k < m->nseg; k++) {
-        const pt_segment *sg = &m->seg[k];
-        uint32_t ends[2];
-        pt_vec2 pp[2];
-        int64_t r[4];
-        int e;
+}
 
-        ends[0] = sg->a; ends[1] = sg->b;
-        put_segment(f, "4. Rasterize", sg);
-        for (e = 0; e < 2; e++) {
-            stage_xyz(&js[ends[e]], PT_STAGE_PIXEL, &x, &y, &z);
-            fprintf(f, "   vIndex = %3lu, ", (unsigned long)ends[e]);
-            put_xyz(f, x, y, z);
-            fputc('\n', f);
-        }
-        for (e = 0; e < 2; e++) {
-            fprintf(f, "   cIndex = %3lu, ", (unsigned long)ends[e]);
-            put_color(f, m);
-        }
-        seg_ends(js, sg, pp);
-        if (pixels && seg_check(s, m, k, pp[0], pp[1], r, err, errlen) == 0)
-            kraft_segment(f, s, r, rgb, rgb);
-        else if (pixels) {                /* model_check() saw it first */
-            free(js);
-            return -1;
-        }
+/* "4. Rasterize" and the two ends of segment k of model m (journeys js). */
+static void put_seg_head(FILE *f, const pt_model *m, const pt_journey *js, size_t k)
+{
+    const pt_segment *sg = &m->seg[k];
+    uint32_t ends[2];
+    double x, y, z;
+    int e;
+
+    ends[0] = sg->a; ends[1] = sg->b;
+    put_segment(f, "4. Rasterize", sg);
+    for (e = 0; e < 2; e++) {
+        stage_xyz(&js[ends[e]], PT_STAGE_PIXEL, &x, &y, &z);
+        fprintf(f, "   vIndex = %3lu, ", (unsigned long)ends[e]);
+        put_xyz(f, x, y, z);
+        fputc('\n', f);
     }
+    for (e = 0; e < 2; e++) {
+        fprintf(f, "   cIndex = %3lu, ", (unsigned long)ends[e]);
+        put_color(f, m);
+    }
+}
+
+/* One model's log with its rasterizer's lines, from one pt_run(): the
+** journeys of its vertices, then the DDA's records of its segments. */
+typedef struct kraft_run {
+    FILE *f;
+    const pt_scene *s;
+    const pt_model *m;           /* the model logged (others of its name are not) */
+    pt_journey *js;              /* js[v - 1]: vertex v's journey */
+    int head;                    /* 1: put_model_head() wrote its lines */
+    int ymajor, degenerate;      /* of the segment being stepped */
+} kraft_run;
+
+static void on_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
+{
+    kraft_run *kr = ud;
+
+    if (m == kr->m && v >= 1 && v <= m->nv) kr->js[v - 1] = *j;
+}
+
+static void on_setup(void *ud, const pt_model *m, uint64_t seg, const pt_raster_setup *su)
+{
+    kraft_run *kr = ud;
+
+    if (m != kr->m) return;
+    if (!kr->head) put_model_head(kr->f, m, kr->js);   /* every journey came first */
+    kr->head = 1;
+    put_seg_head(kr->f, m, kr->js, seg - 1);
+    put_setup(kr->f, su);
+    kr->ymajor = su->ymajor;
+    kr->degenerate = su->kind == PT_RASTER_DEGENERATE;
+}
+
+static void on_step(void *ud, const pt_model *m, uint64_t seg, const pt_raster_step *st)
+{
+    kraft_run *kr = ud;
+    char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
+
+    (void)seg;
+    if (m != kr->m) return;
+    if (kr->degenerate) {                            /* "%9.4f" both */
+        pt_jnum_f(one, st->pp.x, 9, 4, 0);
+        pt_jnum_f(two, st->pp.y, 9, 4, 0);
+    } else if (!kr->ymajor) {
+        snprintf(one, sizeof one, "%4lld", (long long)st->s);
+        pt_jnum_f(two, st->a, 9, 4, 0);
+    } else {
+        pt_jnum_f(one, st->a, 9, 4, 0);
+        snprintf(two, sizeof two, "%4lld", (long long)st->s);
+    }
+    put_step(kr->f, kr->s, one, two, st);
+}
+
+/* Run scene s for model m (its journeys, and with pixels its DDA's records)
+** into *kr.  Returns 0, or -1 when out of memory. */
+static int kraft_run_model(kraft_run *kr, const pt_scene *s, const pt_model *m, int pixels)
+{
+    pt_options o;
+    pt_listener l;
+
+    pt_options_default(&o);
+    o.model = m->name;           /* models of the same name: the callbacks pick m */
+    o.every_vertex = 1;
+    o.rasterize = pixels;
+    o.trace_raster = pixels;
+    memset(&l, 0, sizeof l);
+    l.journey = on_journey;
+    if (pixels) { l.setup = on_setup; l.step = on_step; }
+    l.ud = kr;
+    return pt_run_plain(s, &o, &l);
+}
+
+static int kraft_model(FILE *f, const pt_scene *s, const pt_model *m, int pixels,
+                       char *err, size_t errlen)
+{
+    kraft_run kr;
+    size_t k;
+
+    memset(&kr, 0, sizeof kr);
+    kr.f = f; kr.s = s; kr.m = m;
+    kr.js = calloc(m->nv ? m->nv : 1, sizeof *kr.js);
+    if (!kr.js || kraft_run_model(&kr, s, m, pixels) != 0) {
+        free(kr.js);
+        snprintf(err, errlen, "pipetrace: out of memory");
+        return -1;
+    }
+    if (!kr.head) put_model_head(f, m, kr.js);       /* no segment drawn */
+    for (k = 0; !pixels && k < m->nseg; k++) put_seg_head(f, m, kr.js, k);
     fprintf(f, "====== End model: %s ======\n", m->name);
     fprintf(f, "==== End position: %s ====\n", m->name);
-    free(js);
+    free(kr.js);
     return 0;
+}
+
+/* The first segment of the scene the course's renderer cannot log
+** (seg_check), from the setup records of one pt_run(). */
+typedef struct kraft_check {
+    const pt_scene *s;
+    char *err;
+    size_t errlen;
+    int rc;
+} kraft_check;
+
+static void check_setup(void *ud, const pt_model *m, uint64_t seg, const pt_raster_setup *su)
+{
+    kraft_check *kc = ud;
+
+    if (kc->rc == 0) kc->rc = seg_check(kc->s, m, seg, su, kc->err, kc->errlen);
+}
+
+/* Check every segment of s as seg_check() does.  Returns 0, or -1 with a
+** message. */
+static int scene_check(const pt_scene *s, char *err, size_t errlen)
+{
+    kraft_check kc;
+    pt_options o;
+    pt_listener l;
+
+    kc.s = s; kc.err = err; kc.errlen = errlen; kc.rc = 0;
+    pt_options_default(&o);
+    memset(&l, 0, sizeof l);
+    l.setup = check_setup;       /* the setups alone: the walk skips, as ever */
+    l.ud = &kc;
+    if (pt_run_plain(s, &o, &l) != 0) {
+        snprintf(err, errlen, "pipetrace: out of memory");
+        return -1;
+    }
+    return kc.rc;
 }
 
 int pt_kraft_write(FILE *f, const pt_scene *s, int pixels, char *err, size_t errlen)
@@ -333,8 +338,7 @@ int pt_kraft_write(FILE *f, const pt_scene *s, int pixels, char *err, size_t err
                  pt_scene_camera_word(s));
         return -1;
     }
-    for (k = 0; pixels && k < s->nmodels; k++)   /* nothing written on error */
-        if (model_check(s, &s->models[k], err, errlen) != 0) return -1;
+    if (pixels && scene_check(s, err, errlen) != 0) return -1;   /* nothing written */
     fputs("\n== Begin Rendering of Scene:  ==\n-- Current Camera:\nCamera: \n", f);
     fprintf(f, "perspective = %s\n", s->perspective ? "true" : "false");
     for (k = 0; k < s->nmodels; k++)

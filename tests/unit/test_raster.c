@@ -394,6 +394,144 @@ static void test_blend(void)
     pt_fb_free(&fb);
 }
 
+/* ===== the DDA's records (pt_raster_walk) ===== */
+
+/* A canvas that also collects the step records. */
+typedef struct stepped {
+    canvas c;                    /* the pixels and clip records */
+    pt_raster_setup su;          /* the last setup */
+    int setups;
+    uint64_t steps, inside, outside;
+    int in_order;                /* 1: every step's s is the one before's + 1 */
+    int pixels_match;            /* 1: every inside step's pixel is lit after it */
+    int64_t last_s;
+    double last_a;
+    int sane;                    /* 1: accumulated a = a0 + m + ... as stepped */
+    pt_pix px[4096];             /* the inside steps' pixels, in order */
+    float color[3];              /* the last step's colour */
+} stepped;
+
+static void s_setup(void *ud, const pt_raster_setup *su)
+{
+    stepped *t = ud;
+    t->su = *su;
+    t->setups++;
+    t->last_s = su->s0 - 1;
+    t->last_a = su->a0 - su->m;
+}
+
+static void s_step(void *ud, const pt_raster_step *st)
+{
+    stepped *t = ud;
+    if (st->s != t->last_s + 1) t->in_order = 0;
+    if (t->steps > 0 && st->a != t->last_a + t->su.m) t->sane = 0;
+    if (t->steps == 0 && st->a != t->su.a0) t->sane = 0;
+    t->last_s = st->s;
+    t->last_a = st->a;
+    if (st->inside) {
+        if (t->inside < 4096) t->px[t->inside] = st->vp;
+        t->inside++;
+    } else {
+        t->outside++;
+    }
+    memcpy(t->color, st->color, sizeof t->color);
+    t->steps++;
+}
+
+static int walk_into(stepped *t, int w, int h, double x0, double y0, double x1, double y1,
+                     const float c0[3], const float c1[3])
+{
+    pt_raster_out out = {c_pixel, c_clip, NULL};
+    pt_raster_steps ls;
+    int i;
+
+    memset(t, 0, sizeof *t);
+    clear(&t->c, w, h);
+    t->in_order = t->sane = 1;
+    out.ud = &t->c;
+    ls.setup = s_setup;
+    ls.step = s_step;
+    ls.ud = t;
+    for (i = 0; i < 3; i++) { ls.c0[i] = c0[i]; ls.c1[i] = c1[i]; ls.rgb[i] = 7; }
+    return pt_raster_walk((pt_vec2){x0, y0}, (pt_vec2){x1, y1}, w, h, pt_pixel2viewport,
+                          &out, &ls);
+}
+
+static void test_steps(void)
+{
+    static const float black[3] = {0, 0, 0}, white[3] = {1, 1, 1};
+    static const float grey[3] = {0.5f, 0.5f, 0.5f};
+    stepped *t = malloc(sizeof *t), *u = malloc(sizeof *u);
+    canvas c;
+    int r, k, same;
+
+    if (!t || !u) { PT_CHECK("steps-0 memory", 0); free(t); free(u); return; }
+    /* a segment inside: every step lit, the same pixels as pt_raster_segment */
+    r = walk_into(t, 8, 6, 1.2, 1.4, 7.6, 4.4, black, black);
+    clear(&c, 8, 6);
+    draw(&c, 1.2, 1.4, 7.6, 4.4);
+    PT_CHECK("steps-1.1 drawn, one setup", r == PT_RASTER_DRAWN && t->setups == 1);
+    PT_CHECK("steps-1.2 setup: rounded ends, x-major, not swapped",
+             t->su.x0 == 1 && t->su.y0 == 1 && t->su.x1 == 8 && t->su.y1 == 4 &&
+             !t->su.ymajor && !t->su.swapped && t->su.s0 == 1 && t->su.s1 == 8);
+    PT_CHECK("steps-1.3 slope m = 3/7", t->su.m == 3.0 / 7.0);
+    PT_CHECK("steps-1.4 a step for each s, in order, a accumulated",
+             t->steps == 8 && t->in_order && t->sane);
+    PT_CHECK("steps-1.5 the steps' pixels are the pixels drawn",
+             t->inside == t->c.pixels && memcmp(t->c.cell, c.cell, sizeof c.cell) == 0);
+    same = 1;
+    for (k = 0; k < (int)t->inside && k < 4096; k++)
+        if (t->c.cell[t->px[k].y * 8 + t->px[k].x] != '*') same = 0;
+    PT_CHECK("steps-1.6 ... each inside step's pixel is lit", same);
+
+    /* far outside: the plain walk, every clipped step told, counted as the
+    ** clip records count them */
+    r = walk_into(t, 5, 5, -300.2, 2.0, 400.4, 3.0, black, black);
+    PT_CHECK("steps-2.1 a long segment: every step told",
+             r == PT_RASTER_DRAWN && t->steps == 701 && t->in_order && t->sane);
+    PT_CHECK("steps-2.2 clipped steps = clip records' count", t->outside == t->c.clipped);
+    PT_CHECK("steps-2.3 inside steps = pixels", t->inside == t->c.pixels && t->inside == 5);
+    clear(&c, 5, 5);
+    draw(&c, -300.2, 2.0, 400.4, 3.0);
+    PT_CHECK("steps-2.4 the same pixels and clip records as the fast-forward",
+             memcmp(c.cell, t->c.cell, sizeof c.cell) == 0 && c.clipped == t->c.clipped &&
+             c.runs == t->c.runs);
+
+    /* endpoint symmetry: (a, b) and (b, a) step alike, swapped once */
+    walk_into(t, 9, 9, 2.0, 8.4, 5.2, 1.1, black, white);
+    walk_into(u, 9, 9, 5.2, 1.1, 2.0, 8.4, white, black);
+    PT_CHECK("steps-3.1 y-major, one of the two swapped",
+             t->su.ymajor && u->su.ymajor && t->su.swapped != u->su.swapped);
+    PT_CHECK("steps-3.2 the same steps, pixels and colours",
+             t->steps == u->steps && t->inside == u->inside &&
+             memcmp(t->px, u->px, t->inside * sizeof *t->px) == 0 &&
+             memcmp(t->c.cell, u->c.cell, sizeof t->c.cell) == 0 &&
+             memcmp(t->color, u->color, sizeof t->color) == 0);
+    PT_CHECK("steps-3.3 colours in stepping order, slope over the steps",
+             t->su.c0[0] == 1.0f && t->su.c1[0] == 0.0f && t->su.dc[0] == -1.0 / 7.0);
+    PT_CHECK("steps-3.4 the last step's colour: c1, gamma-encoded (0^(1/2.2) = 0)",
+             t->color[0] == 0.0f);
+
+    /* one pixel: degenerate, its colour c0 without gamma */
+    r = walk_into(t, 4, 4, 2.3, 2.2, 1.7, 1.9, grey, white);
+    PT_CHECK("steps-4.1 degenerate: one setup, one step",
+             r == PT_RASTER_DEGENERATE && t->setups == 1 &&
+             t->su.kind == PT_RASTER_DEGENERATE && t->steps == 1 && t->inside == 1);
+    PT_CHECK("steps-4.2 ... in c0, raw", t->color[0] == 0.5f);
+    r = walk_into(t, 4, 4, 2.0, 1.0, 3.0, 1.0, grey, grey);
+    PT_CHECK("steps-4.3 two steps, each gamma-encoded: (float)pow(0.5, 1/2.2)",
+             r == PT_RASTER_DRAWN && t->steps == 2 &&
+             t->color[0] == (float)pow(0.5, 1 / 2.2));
+
+    /* skipped: a setup that says so, no step */
+    r = walk_into(t, 4, 4, NAN, 1.0, 3.0, 1.0, grey, grey);
+    PT_CHECK("steps-5.1 skipped: one setup, kind skipped, no step",
+             r == PT_RASTER_SKIPPED && t->setups == 1 && t->su.kind == PT_RASTER_SKIPPED &&
+             t->steps == 0);
+    free(t);
+    free(u);
+}
+
 int main(void)
 {
     test_pictures();
@@ -403,5 +541,6 @@ int main(void)
     test_in_turn();
     test_pixel_colours();
     test_blend();
+    test_steps();
     return pt_test_report();
 }

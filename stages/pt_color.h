@@ -1,0 +1,42 @@
+/*
+** stages/pt_color.h -- the colour of a rasterizer step, and its gamma encoding
+** See LICENSE for copyright and license.
+**
+** The course's line rasterizer (renderer 4, NOTES.md 11.2 and 11.4) gives
+** each step of a segment a colour of its own, in float and double as Java
+** computes it, and writes it gamma-encoded:
+**   c        = byte / 255f                          (getRGBComponents)
+**   slope    = (double)(c1 - c0) / (s1 - s0)         (float subtraction, widened)
+**   c(s)     = (float)|c0 + slope * (s - s0)|        (in double)
+**   gamma(c) = (float)Math.pow(c, 1 / 2.2)          (1 / 2.2 = 0.45454545454545453)
+** s is the stepped coordinate (x for an x-major segment, y for a y-major
+** one), s0 .. s1 the segment's after its ends are put in stepping order, c0
+** and c1 the colours of those ends.  A degenerate segment (one pixel) is
+** written in c0, without gamma.  pipetrace's image keeps the model's colour
+** bytes; the course's log prints these (src/io/trace_kraft.c).
+*/
+#ifndef PT_COLOR_H
+#define PT_COLOR_H
+
+/* The course's 1 / 2.2 (Rasterize.GAMMA = 2.2; 1.0 / 2.2 in double). */
+#define PT_GAMMA_INV 0.45454545454545453
+
+/* Colour byte c (0..255) as the course's float component, c / 255f.  This
+** function can't fail. */
+float pt_color_float(unsigned char c);
+
+/* The change of a colour component per step, from c0 at the first end to
+** c1 at the last, over ds = s1 - s0 steps (ds != 0).  This function can't
+** fail. */
+double pt_color_slope(float c0, float c1, double ds);
+
+/* The component at step s of a segment whose first end s0 has c0, changing
+** by slope a step: (float)|c0 + slope * (s - s0)|.  This function can't
+** fail. */
+float pt_color_at(float c0, double slope, double s, double s0);
+
+/* The course's gamma encoding of component c (0..1): (float)pow(c, 1/2.2).
+** This function can't fail. */
+float pt_gamma(float c);
+
+#endif
