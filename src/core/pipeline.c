@@ -770,7 +770,8 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     raster = o->rasterize && (fb || l->pixels || l->clip || l->skip || l->setup || l->step ||
                               l->summary || cuts);
     in_turn = raster &&
-              ((!l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin && !l->journey) ||
+              (o->model_by_model ||
+               (!l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin && !l->journey) ||
                (!cuts && !l->pixels && !l->clip && !l->skip && !l->setup && !l->step));
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;

@@ -20,7 +20,8 @@
 ** then the vertex's records); then for each model and segment, its pixel and
 ** clip records in step order (with a listener of steps, its setup record
 ** first and a step record before each step's pixel or clip record); then the
-** summary.  Errors: only pt_scene_load() and pt_run()'s
+** summary.  With pt_options.model_by_model, each model's segment records come
+** right after its own vertices', model by model.  Errors: only pt_scene_load() and pt_run()'s
 ** allocations can fail; they return -1 with a message, nothing here exits.
 */
 #ifndef PT_PIPELINE_H
@@ -44,6 +45,9 @@ typedef struct pt_options {
     int trace_raster;            /* 1: report pixel and clip records */
     int rasterize;               /* 1: draw the segments (image or raster trace) */
     int raw_lookat;              /* 1: the seed's look-at matrix, up not re-derived */
+    int model_by_model;          /* 1: each model's raster records right after
+                                 ** its vertices' (the course's log), not every
+                                 ** model's vertices first */
     int every_vertex;            /* 1: trace the vertices no segment uses too (where
                                  ** they would land: step, quiz, why) */
     uint64_t piece_vertices;     /* where a listener's pieces are cut (pt_listener */

@@ -199,29 +199,74 @@ static void put_seg_head(FILE *f, const pt_model *m, const pt_journey *js, size_
     }
 }
 
-/* One model's log with its rasterizer's lines, from one pt_run(): the
-** journeys of its vertices, then the DDA's records of its segments. */
+/* The log of every model from one pt_run(), model by model
+** (pt_options.model_by_model): the journeys of a model's vertices, then, with
+** pixels, the DDA's records of its segments; a model's closing lines when the
+** next model's records begin, or at the end. */
 typedef struct kraft_run {
     FILE *f;
     const pt_scene *s;
-    const pt_model *m;           /* the model logged (others of its name are not) */
-    pt_journey *js;              /* js[v - 1]: vertex v's journey */
+    int pixels;                  /* 1: the rasterizer's lines too */
+    size_t k;                    /* the model being logged */
+    pt_journey *js;              /* js[v - 1]: its vertex v's journey */
+    size_t cap;                  /* room in js */
     int head;                    /* 1: put_model_head() wrote its lines */
     int ymajor, degenerate;      /* of the segment being stepped */
+    int failed;                  /* out of memory */
 } kraft_run;
+
+/* Close model kr->k: its head if no segment wrote it, the segments without
+** pixels, its last lines. */
+static void model_end(kraft_run *kr)
+{
+    const pt_model *m = &kr->s->models[kr->k];
+    size_t q;
+
+    if (!kr->head) put_model_head(kr->f, m, kr->js);       /* no segment drawn */
+    for (q = 0; !kr->pixels && q < m->nseg; q++) put_seg_head(kr->f, m, kr->js, q);
+    fprintf(kr->f, "====== End model: %s ======\n", m->name);
+    fprintf(kr->f, "==== End position: %s ====\n", m->name);
+}
+
+/* Begin model k: close those before it, make room for its journeys. */
+static void model_begin(kraft_run *kr, size_t k)
+{
+    const pt_model *m = &kr->s->models[k];
+    size_t need = m->nv ? m->nv : 1;
+
+    model_end(kr);
+    kr->k = k;
+    kr->head = 0;
+    if (need > kr->cap) {
+        pt_journey *js = realloc(kr->js, need * sizeof *js);
+        if (!js) { kr->failed = 1; kr->cap = 0; free(kr->js); kr->js = NULL; return; }
+        kr->js = js;
+        kr->cap = need;
+    }
+    memset(kr->js, 0, need * sizeof *kr->js);
+}
+
+/* Bring the log to model m: every model before it is closed. */
+static int kraft_at(kraft_run *kr, const pt_model *m)
+{
+    size_t k = (size_t)(m - kr->s->models);
+
+    while (!kr->failed && kr->k < k) model_begin(kr, kr->k + 1);
+    return !kr->failed;
+}
 
 static void on_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
 {
     kraft_run *kr = ud;
 
-    if (m == kr->m && v >= 1 && v <= m->nv) kr->js[v - 1] = *j;
+    if (kraft_at(kr, m) && v >= 1 && v <= m->nv) kr->js[v - 1] = *j;
 }
 
 static void on_setup(void *ud, const pt_model *m, uint64_t seg, const pt_raster_setup *su)
 {
     kraft_run *kr = ud;
 
-    if (m != kr->m) return;
+    if (!kraft_at(kr, m)) return;
     if (!kr->head) put_model_head(kr->f, m, kr->js);   /* every journey came first */
     kr->head = 1;
     put_seg_head(kr->f, m, kr->js, seg - 1);
@@ -236,7 +281,7 @@ static void on_step(void *ud, const pt_model *m, uint64_t seg, const pt_raster_s
     char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
 
     (void)seg;
-    if (m != kr->m) return;
+    if (!kraft_at(kr, m)) return;
     if (kr->degenerate) {                            /* "%9.4f" both */
         pt_jnum_f(one, st->pp.x, 9, 4, 0);
         pt_jnum_f(two, st->pp.y, 9, 4, 0);
@@ -250,44 +295,36 @@ static void on_step(void *ud, const pt_model *m, uint64_t seg, const pt_raster_s
     put_step(kr->f, kr->s, one, two, st);
 }
 
-/* Run scene s for model m (its journeys, and with pixels its DDA's records)
-** into *kr.  Returns 0, or -1 when out of memory. */
-static int kraft_run_model(kraft_run *kr, const pt_scene *s, const pt_model *m, int pixels)
+/* Log every model of s into f, from one run.  Returns 0, or -1 with a
+** message. */
+static int kraft_models(FILE *f, const pt_scene *s, int pixels, char *err, size_t errlen)
 {
+    kraft_run kr;
     pt_options o;
     pt_listener l;
+    int rc;
 
+    if (s->nmodels == 0) return 0;
+    memset(&kr, 0, sizeof kr);
+    kr.f = f; kr.s = s; kr.pixels = pixels;
+    kr.cap = s->models[0].nv ? s->models[0].nv : 1;
+    kr.js = calloc(kr.cap, sizeof *kr.js);
     pt_options_default(&o);
-    o.model = m->name;           /* models of the same name: the callbacks pick m */
     o.every_vertex = 1;
     o.rasterize = pixels;
     o.trace_raster = pixels;
+    o.model_by_model = 1;
     memset(&l, 0, sizeof l);
     l.journey = on_journey;
     if (pixels) { l.setup = on_setup; l.step = on_step; }
-    l.ud = kr;
-    return pt_run_plain(s, &o, &l);
-}
-
-static int kraft_model(FILE *f, const pt_scene *s, const pt_model *m, int pixels,
-                       char *err, size_t errlen)
-{
-    kraft_run kr;
-    size_t k;
-
-    memset(&kr, 0, sizeof kr);
-    kr.f = f; kr.s = s; kr.m = m;
-    kr.js = calloc(m->nv ? m->nv : 1, sizeof *kr.js);
-    if (!kr.js || kraft_run_model(&kr, s, m, pixels) != 0) {
-        free(kr.js);
+    l.ud = &kr;
+    rc = kr.js ? pt_run_plain(s, &o, &l) : -1;
+    if (rc == 0 && kraft_at(&kr, &s->models[s->nmodels - 1])) model_end(&kr);
+    free(kr.js);
+    if (rc != 0 || kr.failed) {
         snprintf(err, errlen, "pipetrace: out of memory");
         return -1;
     }
-    if (!kr.head) put_model_head(f, m, kr.js);       /* no segment drawn */
-    for (k = 0; !pixels && k < m->nseg; k++) put_seg_head(f, m, kr.js, k);
-    fprintf(f, "====== End model: %s ======\n", m->name);
-    fprintf(f, "==== End position: %s ====\n", m->name);
-    free(kr.js);
     return 0;
 }
 
@@ -329,8 +366,6 @@ static int scene_check(const pt_scene *s, char *err, size_t errlen)
 
 int pt_kraft_write(FILE *f, const pt_scene *s, int pixels, char *err, size_t errlen)
 {
-    size_t k;
-
     if (pt_scene_pipeline(s) != &pt_pipe_classic) {
         snprintf(err, errlen, "%s: error: the course's renderer has no %s "
                  "('camera %s'), so there is no log of it to write: use --format "
@@ -341,8 +376,7 @@ int pt_kraft_write(FILE *f, const pt_scene *s, int pixels, char *err, size_t err
     if (pixels && scene_check(s, err, errlen) != 0) return -1;   /* nothing written */
     fputs("\n== Begin Rendering of Scene:  ==\n-- Current Camera:\nCamera: \n", f);
     fprintf(f, "perspective = %s\n", s->perspective ? "true" : "false");
-    for (k = 0; k < s->nmodels; k++)
-        if (kraft_model(f, s, &s->models[k], pixels, err, errlen) != 0) return -1;
+    if (kraft_models(f, s, pixels, err, errlen) != 0) return -1;
     fputs("== End Rendering of Scene ==\n", f);
     return 0;
 }
