@@ -367,7 +367,7 @@ int main(int argc, char **argv)
         /* JSON Lines in its two parts, for where its time goes: the vertex
         ** records (--stage for each of the classic camera's stages, no raster
         ** records) and the raster records (pixels and clipped steps) */
-        char *vx[8 + 2 * PT_NSTAGES + 1] = {pt, s200, "--image", ppm, "--format", "jsonl",
+        char *vx[8 + 2 * PT_CLASSIC_NORDER + 1] = {pt, s200, "--image", ppm, "--format", "jsonl",
                                             "--trace", "-"};
         char *rs[] = {pt, s200, "--image", ppm, "--format", "jsonl", "--trace", "-",
                       "--stage", "raster", NULL};
@@ -381,11 +381,11 @@ int main(int argc, char **argv)
             tr[k][7] = "/dev/null";
             all[2 + k] = tr[k];
         }
-        for (k = 0; k < PT_NSTAGES; k++) {
+        for (k = 0; k < PT_CLASSIC_NORDER; k++) {   /* every classic stage */
             vx[8 + 2 * k] = "--stage";
-            vx[9 + 2 * k] = (char *)pt_stage_infos[k].name;
+            vx[9 + 2 * k] = (char *)pt_stage_infos[pt_classic_order[k]].name;
         }
-        vx[8 + 2 * PT_NSTAGES] = NULL;
+        vx[8 + 2 * PT_CLASSIC_NORDER] = NULL;
         spawn(vx, NULL, NULL, &pbytes[0]);
         spawn(rs, NULL, NULL, &pbytes[1]);
         vx[7] = rs[7] = "/dev/null";

@@ -180,9 +180,9 @@ static void on_vertex(void *ud, const pt_vrec *r)
 {
     got *g = ud;
 
-    if (r->stage >= PT_NSTAGES) return;
-    g->rec[g->cur * PT_NSTAGES + r->stage] = *r;
-    g->have[g->cur * PT_NSTAGES + r->stage] = 1;
+    if (!pt_pipeline_has(&pt_pipe_classic, r->stage)) return;
+    g->rec[g->cur * PT_NSTAGES_ALL + r->stage] = *r;
+    g->have[g->cur * PT_NSTAGES_ALL + r->stage] = 1;
 }
 
 static int same(double a, double b)             /* bit for bit, -0 is not 0 */
@@ -518,7 +518,7 @@ static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
     size_t k, v, q, nv = 0;
 
     if (pt_scene_load(&s, path, err, sizeof err) != 0) return;
-    if (s.matrix) { pt_scene_free(&s); check_matrix_scene(path); return; }
+    if ((s.pipe == PT_PIPE_MATRIX)) { pt_scene_free(&s); check_matrix_scene(path); return; }
     pt_options_default(&o);
     o.all_stages = 1;
     o.trace_raster = 0;
@@ -528,8 +528,8 @@ static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
     g.s = &s;
     g.base = calloc(s.nmodels + 1, sizeof *g.base);
     for (k = 0; k < s.nmodels; k++) { g.base[k] = nv; nv += s.models[k].nv; }
-    g.rec = calloc(nv * PT_NSTAGES + 1, sizeof *g.rec);
-    g.have = calloc(nv * PT_NSTAGES + 1, 1);
+    g.rec = calloc(nv * PT_NSTAGES_ALL + 1, sizeof *g.rec);
+    g.have = calloc(nv * PT_NSTAGES_ALL + 1, 1);
     memset(&l, 0, sizeof l);
     l.vertex_begin = on_begin;
     l.sink.vertex = on_vertex;
@@ -541,8 +541,8 @@ static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
         const pt_model *m = &s.models[k];
 
         for (v = 0; v < m->nv; v++) {
-            const pt_vrec *r = &g.rec[(g.base[k] + v) * PT_NSTAGES];
-            const unsigned char *have = &g.have[(g.base[k] + v) * PT_NSTAGES];
+            const pt_vrec *r = &g.rec[(g.base[k] + v) * PT_NSTAGES_ALL];
+            const unsigned char *have = &g.have[(g.base[k] + v) * PT_NSTAGES_ALL];
             pt_acc_journey j;
             int ok;
 
@@ -564,8 +564,8 @@ static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
             if (!ok) { (*bad_vertices)++; printf("  %s: model %s vertex %zu differs\n", path, m->name, v + 1); }
         }
         for (q = 0; q < m->nseg; q++) {
-            const pt_vrec *a = &g.rec[(g.base[k] + m->seg[q].a) * PT_NSTAGES + PT_STAGE_PIXEL];
-            const pt_vrec *b = &g.rec[(g.base[k] + m->seg[q].b) * PT_NSTAGES + PT_STAGE_PIXEL];
+            const pt_vrec *a = &g.rec[(g.base[k] + m->seg[q].a) * PT_NSTAGES_ALL + PT_STAGE_PIXEL];
+            const pt_vrec *b = &g.rec[(g.base[k] + m->seg[q].b) * PT_NSTAGES_ALL + PT_STAGE_PIXEL];
             pt_vec2 p0 = {a->x, a->y}, p1 = {b->x, b->y};
 
             (*nsegments)++;
@@ -904,7 +904,7 @@ static int stages_agree(const pt_acc_run *r, pt_acc_work *w, int first, int last
     for (k = 0; k < s->nmodels; k++)
         for (v = 0; v < s->models[k].nv; v++) {
             if (!r->used[k][v]) continue;
-            if (!s->matrix) ok &= same_journey(pt_acc_work_journey(w, i++), &r->j[k][v]);
+            if (!(s->pipe == PT_PIPE_MATRIX)) ok &= same_journey(pt_acc_work_journey(w, i++), &r->j[k][v]);
             else if (first < PT_ACC_M_NDC)
                 ok &= same_front(pt_acc_work_mjourney(w, i++), &r->mj[k][v]);
             else if (r->mj[k][v].code == 0)
@@ -935,9 +935,9 @@ static void test_work(void)
             int part, row, first, last;
 
             if (pt_acc_run_make(&r, &s, runs[ri].a, runs[ri].choices) != 0) { bad++; continue; }
-            for (part = 0; part < (s.matrix ? 2 : 1); part++) {
-                first = s.matrix && part ? PT_ACC_M_NDC : 0;
-                last = !s.matrix ? PT_ACC_INDEX : part ? PT_ACC_M_INDEX : PT_ACC_M_CVV;
+            for (part = 0; part < ((s.pipe == PT_PIPE_MATRIX) ? 2 : 1); part++) {
+                first = (s.pipe == PT_PIPE_MATRIX) && part ? PT_ACC_M_NDC : 0;
+                last = !(s.pipe == PT_PIPE_MATRIX) ? PT_ACC_INDEX : part ? PT_ACC_M_INDEX : PT_ACC_M_CVV;
                 {                       /* all the stages, one at a time, from garbage */
                     pt_acc_work *w = pt_acc_work_make(&r, first);
 
@@ -951,7 +951,7 @@ static void test_work(void)
                     pt_acc_work_free(w);
                 }
             }
-            if (s.matrix) matrix++; else classic++;
+            if ((s.pipe == PT_PIPE_MATRIX)) matrix++; else classic++;
             pt_acc_run_free(&r);
         }
         pt_scene_free(&s);

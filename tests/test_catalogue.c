@@ -26,8 +26,8 @@ typedef struct got {
     const pt_scene *s;
     const pt_model *m;           /* the vertex's model, or NULL before the first */
     uint64_t v;
-    pt_vrec rec[PT_NSTAGES];
-    unsigned char have[PT_NSTAGES];
+    pt_vrec rec[PT_NSTAGES_ALL];
+    unsigned char have[PT_NSTAGES_ALL];
     size_t nvertex, nstage;      /* vertices and stage records checked */
     const char *bad;             /* the first mismatch, or NULL */
     char where[512];
@@ -37,14 +37,16 @@ typedef struct got {
 static void check_vertex(got *g)
 {
     pt_stage_params par;
-    int st;
+    int st, i;
 
     if (!g->m) return;
     pt_stage_params_of(&par, g->s, g->m);
-    for (st = PT_STAGE_CAMERA; st < PT_NSTAGES; st++) {
+    for (i = 1; i < PT_CLASSIC_NORDER; i++) {
         pt_cat_val in, want, out;
-        if (!g->have[st] || !g->have[st - 1]) continue;
-        pt_cat_val_of(&in, &g->rec[st - 1]);
+        int prev = pt_classic_order[i - 1];
+        st = pt_classic_order[i];
+        if (!g->have[st] || !g->have[prev]) continue;
+        pt_cat_val_of(&in, &g->rec[prev]);
         pt_cat_val_of(&want, &g->rec[st]);
         if (!pt_cat_right(st, &par, &in, &out) || pt_cat_differ(st, &out, &want)) {
             if (!g->bad) {
@@ -70,7 +72,7 @@ static void on_begin(void *ud, const pt_model *m, uint64_t v)
 static void on_vertex(void *ud, const pt_vrec *r)
 {
     got *g = ud;
-    if (r->stage >= PT_NSTAGES) return;
+    if (!pt_pipeline_has(&pt_pipe_classic, r->stage)) return;
     g->rec[r->stage] = *r;
     g->have[r->stage] = 1;
 }
@@ -104,18 +106,18 @@ static void run_case(const char *dir, const char *name)
     snprintf(descr, sizeof descr, "cat %s: %zu vertices, %zu stage records from the "
              "previous stage's (%s%s%s)", name, g.nvertex, g.nstage,
              g.bad ? g.bad : "ok", g.bad ? " differs at " : "", g.bad ? g.where : "");
-    PT_CHECK(descr, g.bad == NULL && (s.matrix || g.nstage > 0));
+    PT_CHECK(descr, g.bad == NULL && ((s.pipe == PT_PIPE_MATRIX) || g.nstage > 0));
     pt_plan_free(&p);
     pt_scene_free(&s);
 }
 
 /* The last record each stage reported to keep_sink. */
-static pt_vrec kept[PT_NSTAGES];
+static pt_vrec kept[PT_NSTAGES_ALL];
 
 static void keep_rec(void *ud, const pt_vrec *r)
 {
     (void)ud;
-    if (r->stage < PT_NSTAGES) kept[r->stage] = *r;
+    if (pt_pipeline_has(&pt_pipe_classic, r->stage)) kept[r->stage] = *r;
 }
 
 static const pt_sink keep_sink = {keep_rec, NULL};
@@ -138,7 +140,7 @@ static pt_stage_params offset_params(void)
 static void hand_checks(void)
 {
     pt_stage_params par = offset_params();
-    pt_cat_val in[PT_NSTAGES], right, wrong;
+    pt_cat_val in[PT_NSTAGES_ALL], right, wrong;
     pt_vec2 pp;
     pt_pix a, b;
     size_t k;
@@ -184,7 +186,7 @@ static void hand_checks(void)
         size_t i, j, bad = 0, one = 0;
         for (i = 0; i < sizeof xs / sizeof xs[0]; i++)
             for (j = 0; j < sizeof xs / sizeof xs[0]; j++) {
-                pt_cat_val v[PT_NSTAGES];
+                pt_cat_val v[PT_NSTAGES_ALL];
                 pt_pix vp, fb;
                 int st;
                 memset(v, 0, sizeof v);

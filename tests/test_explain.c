@@ -28,7 +28,7 @@ static void journey_at(pt_journey *j, const char *head, pt_vec3 v_m)
         return;
     }
     PT_CHECK("ex-0.1 pt_run_journey", pt_run_journey(j, &s, &s.models[0], 1, 0) == 0 &&
-             j->norder == PT_NSTAGES && !j->matrix);
+             j->norder == PT_CLASSIC_NORDER && j->pipe == &pt_pipe_classic);
     pt_scene_free(&s);
 }
 
@@ -358,7 +358,7 @@ static void test_matrix(void)
     PT_CHECK("ex-5.0 lookat-near loads", ok);
     if (!ok) return;
     PT_CHECK("ex-5.1 vertex 1 (inside) goes through all 10 stages",
-             pt_run_journey(&j, &s, &s.models[0], 1, 0) == 0 && j.matrix && j.norder == 10);
+             pt_run_journey(&j, &s, &s.models[0], 1, 0) == 0 && j.pipe == &pt_pipe_matrix && j.norder == 10);
     pt_explain_stage(b, sizeof b, &j, PT_STAGE_NDC, "; ");
     PT_CHECK("ex-5.2 ndc: the divide with its numbers",
              !strcmp(b, "x_n = x_k / w_k = 0.375 / 4 = 0.09375; y_n = y_k / w_k = 0.25 / 4 = 0.0625; "
@@ -410,13 +410,14 @@ static void test_formulas_are_the_table(void)
         "framebuffer 20 10\nviewport 1 2 16 7\nmodel m\ntranslate 0.25 -0.5 -2\n",
         "framebuffer 20 10\ncamera orthographic\nmodel m\ntranslate 0.25 -0.5 -2\n",
     };
-    int h, st, k, bad = 0, n = 0;
+    int h, i, st, k, bad = 0, n = 0;
 
     for (h = 0; h < 2; h++) {
         pt_journey j;
         journey_at(&j, heads[h], (pt_vec3){0.5, 0.25, -1});
-        for (st = PT_STAGE_CAMERA; st < PT_NSTAGES; st++) {
+        for (i = 1; i < PT_CLASSIC_NORDER; i++) {
             char *part = b, *sep;
+            st = pt_classic_order[i];
             pt_explain_stage(b, sizeof b, &j, (pt_stage)st, "|");
             for (k = 0; k < pt_stage_nvalues((pt_stage)st); k++) {
                 char sym[PT_EXPLAINLEN], *eq, *paren;

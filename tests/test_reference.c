@@ -20,7 +20,7 @@
 /* What the pipeline produced for one case. */
 typedef struct got {
     const pt_scene *s;
-    pt_vrec *rec;                /* rec[(k-th vertex overall)*PT_NSTAGES + stage] */
+    pt_vrec *rec;                /* rec[(k-th vertex overall)*PT_NSTAGES_ALL + stage] */
     unsigned char *have;         /* same index: 1 when reported */
     size_t *base;                /* base[m]: index of model m's first vertex */
     size_t cur;                  /* vertex being traced */
@@ -36,8 +36,8 @@ static void on_begin(void *ud, const pt_model *m, uint64_t v)
 static void on_vertex(void *ud, const pt_vrec *r)
 {
     got *g = ud;
-    g->rec[g->cur * PT_NSTAGES + r->stage] = *r;
-    g->have[g->cur * PT_NSTAGES + r->stage] = 1;
+    g->rec[g->cur * PT_NSTAGES_ALL + r->stage] = *r;
+    g->have[g->cur * PT_NSTAGES_ALL + r->stage] = 1;
 }
 
 static void on_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
@@ -79,7 +79,7 @@ static const char *check_vertex_line(got *g, char *line, size_t *nlines)
     st = pt_stage_by_name(stage);
     if (mk == (size_t)-1 || st < 0 || v < 1 || v > g->s->models[mk].nv)
         return "unknown model, vertex or stage";
-    at = (g->base[mk] + v - 1) * PT_NSTAGES + (size_t)st;
+    at = (g->base[mk] + v - 1) * PT_NSTAGES_ALL + (size_t)st;
     if (!g->have[at]) return "vertex not traced";
     g->have[at] = 2;                        /* matched by a line */
     (*nlines)++;
@@ -128,8 +128,8 @@ static void run_case(const char *dir, const char *name)
     g.s = &s;
     g.base = calloc(s.nmodels + 1, sizeof *g.base);
     for (k = 0; k < s.nmodels; k++) { g.base[k] = nv; nv += s.models[k].nv; }
-    g.rec = calloc(nv * PT_NSTAGES + 1, sizeof *g.rec);
-    g.have = calloc(nv * PT_NSTAGES + 1, 1);
+    g.rec = calloc(nv * PT_NSTAGES_ALL + 1, sizeof *g.rec);
+    g.have = calloc(nv * PT_NSTAGES_ALL + 1, 1);
     g.lit = calloc((size_t)s.fb_w * s.fb_h, 1);
     want = calloc((size_t)s.fb_w * s.fb_h, 1);
     memset(&l, 0, sizeof l);
@@ -154,7 +154,7 @@ static void run_case(const char *dir, const char *name)
     }
     if (!f) bad = "no .expect file";
     else fclose(f);
-    for (k = 0; k < nv * PT_NSTAGES; k++) nhave += g.have[k] != 0;
+    for (k = 0; k < nv * PT_NSTAGES_ALL; k++) nhave += g.have[k] != 0;
     for (k = 0; !bad && k < (size_t)s.fb_w * s.fb_h; k++) {
         nlit += g.lit[k];
         if (g.lit[k] != want[k]) bad = "lit pixels differ";
