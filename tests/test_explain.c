@@ -528,8 +528,29 @@ static void test_viewport_text_is_the_stage(void)
     PT_CHECK("ex-7.7 the viewport's text: true arithmetic, ending in the stage's values", bad == 0);
 }
 
+/* Every stage of every pipeline has its rows in explain.c: its formula
+** (the pipeline's own viewport), what comes next, and after the first stage
+** what the second does.  A new stage or pipeline fails here until it has them. */
+static void test_every_stage_has_rows(void)
+{
+    int p, i, missing = 0;
+    char d[96];
+
+    for (p = 0; p < PT_NPIPES; p++)
+        for (i = 0; i < pt_pipelines[p]->norder; i++) {
+            pt_stage st = pt_pipelines[p]->order[i];
+            if (pt_explain_has_rows(pt_pipelines[p], st)) continue;
+            snprintf(d, sizeof d, "ex-9.1 %s: explain has the %s stage's rows",
+                     pt_pipelines[p]->name, pt_stage_infos[st].name);
+            PT_CHECK(d, 0);
+            missing++;
+        }
+    PT_CHECK("ex-9.2 every stage of every pipeline has explain's rows", missing == 0);
+}
+
 int main(void)
 {
+    test_every_stage_has_rows();
     test_triangle();
     test_outside();
     test_odd();
