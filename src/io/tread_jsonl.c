@@ -336,7 +336,7 @@ static int j_vertex(pt_treader *r, const jfield *f, int nf, int clipv)
         if (jint(r, v, &rec->u.n[k], (sh->flags & PT_REC_NULL) != 0, &nul) != 0) return -1;
         if (nul) nulls |= 1u << k;          /* null per value */
     }
-    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->nint);
+    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->flags);
     if ((sh->flags & PT_REC_BEHIND) && (v = j_get(f, nf, "behind")) != NULL) {
         if (v->kind != J_TRUE && v->kind != J_FALSE) return pt_tr_fail(r, v->p, "expected true or false");
         if (v->kind == J_TRUE) rec->flags |= PT_REC_BEHIND;

@@ -117,7 +117,7 @@ static int t_vertex(pt_treader *r, cur *c, uint32_t model, uint64_t vnum, int cl
             if (nul) nulls |= 1u << k;      /* null per value */
         }
     }
-    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->nint);
+    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->flags);
     while (word(c, &w, &n)) {               /* flags; then notes and warnings */
         if (pt_tr_is(w, n, "!") || w[0] == '(') break;
         if ((sh->flags & PT_REC_BEHIND) && pt_tr_is(w, n, "behind")) {
