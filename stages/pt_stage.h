@@ -156,11 +156,27 @@ static inline void pt_emit(const pt_sink *sink, const pt_vrec *r)
     if (sink) sink->vertex(sink->ud, r);
 }
 
+/* What a stage's values are, and where a pt_vrec keeps them: what the trace
+** writers print and the readers parse, how quiz grades an answer, how explain
+** writes a tuple.  A switch over it lists these four: a new kind of value is
+** a new case in each (the compiler names them, -Wswitch-enum). */
+typedef enum pt_value_kind {
+    PT_VAL_REAL,                 /* nreal doubles: x, y, z, w in that order */
+    PT_VAL_PIXEL,                /* two integers ix, iy; each may have no value
+                                 ** (PT_REC_NULL with PT_REC_HAS_X/Y) */
+    PT_VAL_INDEX,                /* one integer i, or none (PT_REC_NULL) */
+    PT_VAL_OUTCODE               /* one unsigned code, PT_CVV_* bits; always one */
+} pt_value_kind;
+
 /* Fixed facts about a stage: the one table that trace writers and readers,
 ** explain, diff, step and the docs ask.  A stage's values are nreal doubles
 ** (pt_vrec x, y, z, w in that order) or nint integers (ix, iy; i for the
-** index; code for the cvv), never both; coord[k] names value k in code, text
-** traces and docs ("x_pp"), key[k] in JSON Lines and CSV ("x"). */
+** index; code for the cvv), never both, as kind says; coord[k] names value k
+** in code, text traces and docs ("x_pp"), key[k] in JSON Lines and CSV
+** ("x").  flags are the PT_REC_* its records may carry besides PT_REC_COLOR:
+** a writer prints the behind and inside flags, and null values, only for a
+** stage that has them (a viewport record is "inside" or "outside", a camera
+** record neither), and a reader accepts them only there. */
 typedef struct pt_stage_info {
     const char *name;          /* trace name: "camera" */
     const char *from;          /* space it reads: "model" */
@@ -170,6 +186,8 @@ typedef struct pt_stage_info {
     int nreal, nint;           /* how many real and integer values */
     const char *coord[4];      /* value names: "x_pp", "y_pp" (NULL past the last) */
     const char *key[4];        /* JSON keys: "x", "y" */
+    pt_value_kind kind;        /* what its values are */
+    unsigned flags;            /* PT_REC_BEHIND, _INSIDE, _NULL, _HAS_X/Y it may set */
 } pt_stage_info;
 
 /* The table of all stages, indexed by pt_stage.  The viewport entry is the
@@ -195,6 +213,27 @@ extern const pt_stage pt_trace_order[PT_NSTAGES_ALL];
 ** "3. Pixel-plane"; src/io/trace_kraft.c writes it, tread_kraft.c reads it),
 ** or NULL for a stage it does not log. */
 extern const char *const pt_stage_course[PT_NSTAGES_ALL];
+
+/* Integer value k of r as its stage's kind keeps it: ix (k = 0) or iy of a
+** pixel, i of an index, code of an outcode; 0 for a real stage.  Whether it
+** has a value is pt_rec_has()'s question.  This function can't fail. */
+static inline int64_t pt_rec_int(const pt_vrec *r, int k)
+{
+    switch (pt_stage_infos[r->stage].kind) {
+    case PT_VAL_PIXEL: return k ? r->iy : r->ix;
+    case PT_VAL_INDEX: return r->i;
+    case PT_VAL_OUTCODE: return (int64_t)r->code;
+    case PT_VAL_REAL: break;
+    }
+    return 0;
+}
+
+/* 1 when stage st's integer values may have none (PT_REC_NULL): a pixel or
+** an index, not an outcode.  This function can't fail. */
+static inline int pt_stage_nullable(pt_stage st)
+{
+    return (pt_stage_infos[st].flags & PT_REC_NULL) != 0;
+}
 
 /* The number of values of stage st (nreal + nint).  This function can't fail. */
 int pt_stage_nvalues(pt_stage st);

@@ -116,7 +116,7 @@ static double tcomp(pt_vec3 v, int k)
     return k == 0 ? v.x : k == 1 ? v.y : v.z;
 }
 
-/* ===== one coordinate's formula ===== */
+/* ===== no pixel, and what Java would give ===== */
 
 /* Why pixel-plane coordinate x has no integer pixel. */
 static const char *no_pixel_why(double x)
@@ -145,11 +145,72 @@ static void add_java(text *t, double x, int k)
     add(t, " here)");
 }
 
-/* x_vp = round(x_pp) - 1, y_vp = h - round(y_pp): the rounding is
-** pt_pix_round()'s, the result cur's, the reference stage's record. */
-static void explain_viewport(text *t, const pt_journey *j, const pt_vrec *cur, int k)
+/* ===== one coordinate's formula: a function a stage ===== */
+
+/* Coordinate k of a stage: its formula, the numbers of prev (j's record of
+** the stage before, what the stage was handed) put in, and cur's result.
+** One function per stage, in stage_rows[] below; a stage's own function
+** names its coordinates (add_lhs) and knows its formula. */
+typedef void (*coord_fn)(text *t, const pt_journey *j, const pt_vrec *prev,
+                         const pt_vrec *cur, int k);
+
+static void coord_model(text *t, const pt_journey *j, const pt_vrec *prev,
+                        const pt_vrec *cur, int k)      /* as given */
 {
-    const pt_vrec *pp = &j->rec[prev_stage(j, PT_STAGE_VIEWPORT)];
+    (void)j; (void)prev;
+    add_lhs(t, PT_STAGE_MODEL, k);
+    add_num(t, comp(cur, k), 0);
+}
+
+static void coord_camera(text *t, const pt_journey *j, const pt_vrec *prev,
+                         const pt_vrec *cur, int k)     /* x_c = x_m + x_t */
+{
+    add_lhs(t, PT_STAGE_CAMERA, k);
+    add(t, pt_stage_infos[PT_STAGE_MODEL].coord[k]);
+    add(t, k == 0 ? " + x_t = " : k == 1 ? " + y_t = " : " + z_t = ");
+    add_num(t, comp(prev, k), 0); add(t, " + ");
+    add_num(t, tcomp(j->par.translate, k), 1); add(t, " = ");
+    add_num(t, comp(cur, k), 0);
+}
+
+static void coord_image(text *t, const pt_journey *j, const pt_vrec *prev,
+                        const pt_vrec *cur, int k)
+{
+    add_lhs(t, PT_STAGE_IMAGE, k);
+    if (k == 2) {                                       /* z_ip = -1 or 0 */
+        add_num(t, cur->z, 0);
+        add(t, j->par.perspective ? " (the image plane)" : " (orthographic)");
+    } else if (j->par.perspective) {                    /* x_ip = x_c / -z_c */
+        add(t, k == 0 ? "x_c / -z_c = " : "y_c / -z_c = ");
+        add_num(t, comp(prev, k), 0); add(t, " / -");
+        add_num(t, prev->z, 1); add(t, " = ");
+        add_num(t, comp(cur, k), 0);
+    } else {                                            /* x_ip = x_c */
+        add(t, k == 0 ? "x_c = " : "y_c = ");
+        add_num(t, comp(cur, k), 0);
+    }
+}
+
+/* s3_image2pixel.h, its divisor PT_PIXEL_DIVISOR */
+static void coord_pixel(text *t, const pt_journey *j, const pt_vrec *prev,
+                        const pt_vrec *cur, int k)
+{
+    add_lhs(t, PT_STAGE_PIXEL, k);
+    add(t, k == 0 ? "0.5 + w/" : "0.5 + h/");
+    add_num(t, PT_PIXEL_DIVISOR, 0);
+    add(t, k == 0 ? " * (x_ip + 1) = 0.5 + " : " * (y_ip + 1) = 0.5 + ");
+    add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, "/");
+    add_num(t, PT_PIXEL_DIVISOR, 0); add(t, " * (");
+    add_num(t, comp(prev, k), 0); add(t, " + 1) = ");
+    add_num(t, comp(cur, k), 0);
+}
+
+/* The classic camera's viewport stage, x_vp = round(x_pp) - 1, y_vp = h -
+** round(y_pp): the rounding is pt_pix_round()'s, the result cur's, the
+** reference stage's record. */
+static void coord_round(text *t, const pt_journey *j, const pt_vrec *pp,
+                        const pt_vrec *cur, int k)
+{
     double x = comp(pp, k);
     int64_t r;
 
@@ -173,24 +234,70 @@ static void explain_viewport(text *t, const pt_journey *j, const pt_vrec *cur, i
         add(t, ", but the viewport pixel has no value: ");
         add(t, pt_stage_infos[PT_STAGE_VIEWPORT].coord[1 - k]);
         add(t, " has none (");
-        add(t, pt_stage_infos[PT_STAGE_PIXEL].coord[1 - k]);
+        add(t, pt_stage_infos[prev_stage(j, PT_STAGE_VIEWPORT)].coord[1 - k]);
         add(t, isfinite(comp(pp, 1 - k)) ? " is beyond 2^62)" : " is not finite)");
     }
 }
 
-/* x' = x*m0k + y*m1k + z*m2k + w*m3k with the numbers, for the matrix stages. */
-static void explain_product(text *t, const pt_journey *j, pt_stage st, int k)
+/* The matrix camera's viewport stage: x_vp = floor(x_s). */
+static void coord_floor(text *t, const pt_journey *j, const pt_vrec *prev,
+                        const pt_vrec *cur, int k)
 {
-    const pt_vrec *prev = &j->rec[prev_stage(j, st)];
-    const pt_mat4 *m = st == PT_STAGE_WORLD ? &j->world : st == PT_STAGE_VIEW ? &j->view
-                                             : &j->proj;
-    const char *mname = st == PT_STAGE_WORLD ? "World" : st == PT_STAGE_VIEW ? "View"
-                                              : "Projection";
+    (void)j;
+    add_lhs(t, PT_STAGE_VIEWPORT, k);
+    add(t, k == 0 ? "floor(x_s) = floor(" : "floor(y_s) = floor(");
+    add_num(t, comp(prev, k), 0); add(t, ")");
+    if (cur->flags & PT_REC_NULL) { add(t, ": none, "); add(t, no_pixel_why(comp(prev, k))); return; }
+    add(t, " = "); add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+}
+
+static void coord_framebuffer(text *t, const pt_journey *j, const pt_vrec *prev,
+                              const pt_vrec *cur, int k)    /* x_fb = x_ul + x_vp */
+{
+    add_lhs(t, PT_STAGE_FRAMEBUFFER, k);
+    add(t, k == 0 ? "x_ul + x_vp" : "y_ul + y_vp");
+    if (prev->flags & PT_REC_NULL) {
+        add(t, ": none, the viewport pixel has no value");
+        return;
+    }
+    add(t, " = ");
+    add_int(t, k == 0 ? j->par.x_ul : j->par.y_ul, 0); add(t, " + ");
+    add_int(t, k == 0 ? prev->ix : prev->iy, 1); add(t, " = ");
+    add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+}
+
+static void coord_index(text *t, const pt_journey *j, const pt_vrec *prev,
+                        const pt_vrec *cur, int k)          /* idx = y_fb * W + x_fb */
+{
+    (void)k;
+    add(t, "idx = y_fb * W + x_fb");
+    if (prev->flags & PT_REC_NULL) {
+        add(t, ": none, the pixel has no value");
+    } else if (cur->flags & PT_REC_NULL) {
+        add(t, ": none, (x_fb, y_fb) = ");
+        add_pair(t, prev->ix, prev->iy);
+        add(t, " lies outside the ");
+        add_int(t, j->par.W, 0); add(t, " x "); add_int(t, j->par.H, 0);
+        add(t, " framebuffer");
+    } else {
+        add(t, " = ");
+        add_int(t, prev->iy, 0); add(t, " * "); add_int(t, j->par.W, 0);
+        add(t, " + "); add_int(t, prev->ix, 0); add(t, " = ");
+        add_int(t, cur->i, 0);
+    }
+}
+
+/* x' = x*m0k + y*m1k + z*m2k + w*m3k with the numbers, for the matrix
+** stages: value k of stage st is column k of matrix m (called mname) times
+** prev, a point (w = 1) when prev has no w. */
+static void product(text *t, pt_stage st, const pt_mat4 *m, const char *mname,
+                    const pt_vrec *prev, const pt_vrec *cur, int k)
+{
     double in[4];
     int r;
 
     in[0] = prev->x; in[1] = prev->y; in[2] = prev->z;
-    in[3] = prev->stage == PT_STAGE_MODEL ? 1.0 : prev->w;   /* a point: w = 1 */
+    in[3] = pt_stage_infos[prev->stage].nreal < 4 ? 1.0 : prev->w;
     add_lhs(t, st, k);
     add(t, "column "); add_int(t, k, 0); add(t, " of "); add(t, mname); add(t, ": ");
     for (r = 0; r < 4; r++) {
@@ -198,14 +305,34 @@ static void explain_product(text *t, const pt_journey *j, pt_stage st, int k)
         add_num(t, in[r], r > 0); add(t, "*"); add_num(t, m->m[r][k], 1);
     }
     add(t, " = ");
-    add_num(t, comp(&j->rec[st], k), 0);
+    add_num(t, comp(cur, k), 0);
+}
+
+static void coord_world(text *t, const pt_journey *j, const pt_vrec *prev,
+                        const pt_vrec *cur, int k)
+{
+    product(t, PT_STAGE_WORLD, &j->world, "World", prev, cur, k);
+}
+
+static void coord_view(text *t, const pt_journey *j, const pt_vrec *prev,
+                       const pt_vrec *cur, int k)
+{
+    product(t, PT_STAGE_VIEW, &j->view, "View", prev, cur, k);
+}
+
+static void coord_clip(text *t, const pt_journey *j, const pt_vrec *prev,
+                       const pt_vrec *cur, int k)
+{
+    product(t, PT_STAGE_CLIP, &j->proj, "Projection", prev, cur, k);
 }
 
 /* The cvv stage's outcode and the planes it names. */
-static void explain_cvv(text *t, const pt_vrec *cur)
+static void coord_cvv(text *t, const pt_journey *j, const pt_vrec *prev,
+                      const pt_vrec *cur, int k)
 {
     int b, first = 1;
 
+    (void)j; (void)prev; (void)k;
     add(t, "code = ");
     add_int(t, cur->code, 0);
     if (!cur->code) { add(t, ": 0 <= z <= w, -w <= x <= w, -w <= y <= w"); return; }
@@ -219,117 +346,31 @@ static void explain_cvv(text *t, const pt_vrec *cur)
     add(t, " (w_k = "); add_num(t, cur->w, 0); add(t, ")");
 }
 
-/* The matrix camera's viewport stage: x_vp = floor(x_s). */
-static void explain_floor(text *t, const pt_vrec *prev, const pt_vrec *cur, int k)
+static void coord_ndc(text *t, const pt_journey *j, const pt_vrec *prev,
+                      const pt_vrec *cur, int k)            /* x_n = x_k / w_k */
 {
-    add_lhs(t, PT_STAGE_VIEWPORT, k);
-    add(t, k == 0 ? "floor(x_s) = floor(" : "floor(y_s) = floor(");
-    add_num(t, comp(prev, k), 0); add(t, ")");
-    if (cur->flags & PT_REC_NULL) { add(t, ": none, "); add(t, no_pixel_why(comp(prev, k))); return; }
-    add(t, " = "); add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+    (void)j;
+    add_lhs(t, PT_STAGE_NDC, k);
+    add(t, k == 0 ? "x_k / w_k = " : k == 1 ? "y_k / w_k = " : "z_k / w_k = ");
+    add_num(t, comp(prev, k), 0); add(t, " / "); add_num(t, prev->w, 1);
+    add(t, " = "); add_num(t, comp(cur, k), 0);
 }
 
-/* Coordinate k of stage st: its formula, the numbers of the stage before
-** (the run's record) put in, and cur's result, the reference's record for
-** the pipeline's stages it has (pt_pipeline_ref), else the run's. */
-static void explain_coord(text *t, const pt_journey *j, pt_stage st, const pt_vrec *cur, int k)
+static void coord_screen(text *t, const pt_journey *j, const pt_vrec *prev,
+                         const pt_vrec *cur, int k)
 {
-    const pt_vrec *prev = &j->rec[prev_stage(j, st)];
-
-    switch (st) {
-    case PT_STAGE_MODEL:                                    /* as given */
-        add_lhs(t, st, k);
-        add_num(t, comp(cur, k), 0);
-        break;
-    case PT_STAGE_CAMERA:                                   /* x_c = x_m + x_t */
-        add_lhs(t, st, k);
-        add(t, pt_stage_infos[PT_STAGE_MODEL].coord[k]);
-        add(t, k == 0 ? " + x_t = " : k == 1 ? " + y_t = " : " + z_t = ");
-        add_num(t, comp(prev, k), 0); add(t, " + ");
-        add_num(t, tcomp(j->par.translate, k), 1); add(t, " = ");
-        add_num(t, comp(cur, k), 0);
-        break;
-    case PT_STAGE_IMAGE:
-        add_lhs(t, st, k);
-        if (k == 2) {                                       /* z_ip = -1 or 0 */
-            add_num(t, cur->z, 0);
-            add(t, j->par.perspective ? " (the image plane)" : " (orthographic)");
-        } else if (j->par.perspective) {                    /* x_ip = x_c / -z_c */
-            add(t, k == 0 ? "x_c / -z_c = " : "y_c / -z_c = ");
-            add_num(t, comp(prev, k), 0); add(t, " / -");
-            add_num(t, prev->z, 1); add(t, " = ");
-            add_num(t, comp(cur, k), 0);
-        } else {                                            /* x_ip = x_c */
-            add(t, k == 0 ? "x_c = " : "y_c = ");
-            add_num(t, comp(cur, k), 0);
-        }
-        break;
-    case PT_STAGE_PIXEL:                /* s3_image2pixel.h, its divisor PT_PIXEL_DIVISOR */
-        add_lhs(t, st, k);
-        add(t, k == 0 ? "0.5 + w/" : "0.5 + h/");
-        add_num(t, PT_PIXEL_DIVISOR, 0);
-        add(t, k == 0 ? " * (x_ip + 1) = 0.5 + " : " * (y_ip + 1) = 0.5 + ");
-        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, "/");
-        add_num(t, PT_PIXEL_DIVISOR, 0); add(t, " * (");
-        add_num(t, comp(prev, k), 0); add(t, " + 1) = ");
-        add_num(t, comp(cur, k), 0);
-        break;
-    case PT_STAGE_VIEWPORT:             /* the pipeline's own viewport stage */
-        if (j->pipe->to_viewport == pt_pixelplane2viewport) explain_floor(t, prev, cur, k);
-        else explain_viewport(t, j, cur, k);
-        break;
-    case PT_STAGE_FRAMEBUFFER:                              /* x_fb = x_ul + x_vp */
-        add_lhs(t, st, k);
-        add(t, k == 0 ? "x_ul + x_vp" : "y_ul + y_vp");
-        if (prev->flags & PT_REC_NULL) {
-            add(t, ": none, the viewport pixel has no value");
-            break;
-        }
-        add(t, " = ");
-        add_int(t, k == 0 ? j->par.x_ul : j->par.y_ul, 0); add(t, " + ");
-        add_int(t, k == 0 ? prev->ix : prev->iy, 1); add(t, " = ");
-        add_int(t, k == 0 ? cur->ix : cur->iy, 0);
-        break;
-    case PT_STAGE_INDEX:                                    /* idx = y_fb * W + x_fb */
-        add(t, "idx = y_fb * W + x_fb");
-        if (prev->flags & PT_REC_NULL) {
-            add(t, ": none, the pixel has no value");
-        } else if (cur->flags & PT_REC_NULL) {
-            add(t, ": none, (x_fb, y_fb) = ");
-            add_pair(t, prev->ix, prev->iy);
-            add(t, " lies outside the ");
-            add_int(t, j->par.W, 0); add(t, " x "); add_int(t, j->par.H, 0);
-            add(t, " framebuffer");
-        } else {
-            add(t, " = ");
-            add_int(t, prev->iy, 0); add(t, " * "); add_int(t, j->par.W, 0);
-            add(t, " + "); add_int(t, prev->ix, 0); add(t, " = ");
-            add_int(t, cur->i, 0);
-        }
-        break;
-    case PT_STAGE_WORLD: case PT_STAGE_VIEW: case PT_STAGE_CLIP:
-        explain_product(t, j, st, k);
-        break;
-    case PT_STAGE_CVV:                                      /* the outcode */
-        explain_cvv(t, cur);
-        break;
-    case PT_STAGE_NDC:                                      /* x_n = x_k / w_k */
-        add_lhs(t, st, k);
-        add(t, k == 0 ? "x_k / w_k = " : k == 1 ? "y_k / w_k = " : "z_k / w_k = ");
-        add_num(t, comp(prev, k), 0); add(t, " / "); add_num(t, prev->w, 1);
-        add(t, " = "); add_num(t, comp(cur, k), 0);
-        break;
-    case PT_STAGE_SCREEN:
-        add_lhs(t, st, k);
-        if (k == 2) { add(t, "z_n = "); add_num(t, cur->z, 0); break; }
-        add(t, k == 0 ? "(x_n + 1) * w * 0.5 = (" : "(1 - y_n) * h * 0.5 = (1 - ");
-        add_num(t, comp(prev, k), k == 1);
-        add(t, k == 0 ? " + 1) * " : ") * ");
-        add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, " * 0.5 = ");
-        add_num(t, comp(cur, k), 0);
-        break;
-    }
+    add_lhs(t, PT_STAGE_SCREEN, k);
+    if (k == 2) { add(t, "z_n = "); add_num(t, cur->z, 0); return; }
+    add(t, k == 0 ? "(x_n + 1) * w * 0.5 = (" : "(1 - y_n) * h * 0.5 = (1 - ");
+    add_num(t, comp(prev, k), k == 1);
+    add(t, k == 0 ? " + 1) * " : ") * ");
+    add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, " * 0.5 = ");
+    add_num(t, comp(cur, k), 0);
 }
+
+/* The formula of pipeline pl's stage st, or NULL when explain has none
+** (defined with the rows, below). */
+static coord_fn coord_row(const pt_pipeline *pl, pt_stage st);
 
 /* "your stage gave x_vp = 2": value k of the run's record r of stage st. */
 static void add_yours(text *t, pt_stage st, const pt_vrec *r, int k)
@@ -338,7 +379,7 @@ static void add_yours(text *t, pt_stage st, const pt_vrec *r, int k)
     add_lhs(t, st, k);
     if (pt_stage_infos[st].nreal) add_num(t, comp(r, k), 0);
     else if (!pt_rec_has(r, k)) add(t, "none");
-    else add_int(t, st == PT_STAGE_INDEX ? r->i : k ? r->iy : r->ix, 0);
+    else add_int(t, pt_rec_int(r, k), 0);
 }
 
 size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
@@ -346,11 +387,13 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
 {
     pt_vrec ref;
     unsigned differ;
+    coord_fn coord;
     text t;
     int k;
 
     text_init(&t, buf, len);
     if ((int)st >= PT_NSTAGES_ALL) return 0;
+    coord = coord_row(j->pipe, st);
     if (!(j->reported & 1u << st)) {        /* a student's stage without pt_emit */
         add(&t, "none: the ");
         add(&t, pt_stage_infos[st].name);
@@ -368,7 +411,7 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
     differ = pt_ref_differ(st, &j->rec[st], &ref);
     for (k = 0; k < pt_coord_count(st); k++) {
         if (k) add(&t, sep);
-        explain_coord(&t, j, st, &ref, k);
+        if (coord) coord(&t, j, &j->rec[prev_stage(j, st)], &ref, k);
         if (differ & 1u << k) { add(&t, sep); add_yours(&t, st, &j->rec[st], k); }
     }
     return t.len;
@@ -394,24 +437,30 @@ static void add_tuple(text *t, const pt_vrec *r, pt_stage st)
 {
     int k, n = pt_coord_count(st);
 
-    if (st == PT_STAGE_CVV) add_int(t, r->code, 0);
-    else if ((st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER)
-             && (pt_rec_has(r, 0) || pt_rec_has(r, 1))) {   /* null per value: */
-        add(t, "(");                                      /* "(none, 7)" */
+    switch (pt_stage_infos[st].kind) {
+    case PT_VAL_OUTCODE:
+        add_int(t, r->code, 0);
+        break;
+    case PT_VAL_PIXEL:                                  /* null per value: */
+        if (!pt_rec_has(r, 0) && !pt_rec_has(r, 1)) { add(t, "none"); break; }
+        add(t, "(");                                    /* "(none, 7)" */
         if (pt_rec_has(r, 0)) add_int(t, r->ix, 0); else add(t, "none");
         add(t, ", ");
         if (pt_rec_has(r, 1)) add_int(t, r->iy, 0); else add(t, "none");
         add(t, ")");
-    }
-    else if (r->flags & PT_REC_NULL) add(t, "none");
-    else if (st == PT_STAGE_INDEX) add_int(t, r->i, 0);
-    else {
+        break;
+    case PT_VAL_INDEX:
+        if (r->flags & PT_REC_NULL) add(t, "none");
+        else add_int(t, r->i, 0);
+        break;
+    case PT_VAL_REAL:
         add(t, "(");
         for (k = 0; k < n; k++) {
             if (k) add(t, ", ");
             add_num(t, comp(r, k), 0);
         }
         add(t, ")");
+        break;
     }
 }
 
@@ -422,9 +471,10 @@ size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st
 
     text_init(&t, buf, len);
     if ((int)st >= PT_NSTAGES_ALL) return 0;
-    if (st == PT_STAGE_CVV) add(&t, "code = ");
-    else if (n == 1) add(&t, "idx = ");
-    else {
+    if (n == 1) {                           /* "idx = ", "code = " */
+        add(&t, pt_stage_infos[st].coord[0]);
+        add(&t, " = ");
+    } else {
         add(&t, "(");
         for (k = 0; k < n; k++) {
             if (k) add(&t, ", ");
@@ -454,9 +504,49 @@ static void add_range(text *t, int lo_x, int hi_x, int lo_y, int hi_y)
     add_int(t, lo_y, 0); add(t, ".."); add_int(t, hi_y, 0);
 }
 
-static void next_camera(text *t, const pt_journey *j)
+/* What the result of a stage means for the stages after it: one function a
+** stage, in next_rows[] below.  r is j's record of the stage. */
+typedef void (*next_fn)(text *t, const pt_journey *j, const pt_vrec *r);
+
+/* What a pipeline's second stage does with the model's values (the model's
+** "next"), by that stage: in first_rows[] below. */
+typedef void (*first_fn)(text *t, const pt_journey *j);
+
+static void first_camera(text *t, const pt_journey *j)
 {
-    double z = j->rec[PT_STAGE_CAMERA].z;
+    pt_vec3 tr = j->par.translate;
+
+    if (tr.x == 0 && tr.y == 0 && tr.z == 0)
+        add(t, "the translation is (0, 0, 0): the camera stage changes nothing");
+    else {
+        add(t, "the camera stage adds the model's translation (x_t, y_t, z_t) = (");
+        add_num(t, tr.x, 0); add(t, ", "); add_num(t, tr.y, 0); add(t, ", ");
+        add_num(t, tr.z, 0); add(t, ")");
+    }
+}
+
+static void first_world(text *t, const pt_journey *j)
+{
+    (void)j;
+    add(t, "the world stage multiplies (x_m, y_m, z_m, 1) by the model's world matrix");
+}
+
+/* The stages a pipeline may have second, after the model.  A pipeline whose
+** second stage is new adds a row. */
+static const first_fn first_rows[PT_NSTAGES_ALL] = {
+    [PT_STAGE_CAMERA] = first_camera,
+    [PT_STAGE_WORLD] = first_world,
+};
+
+static void next_model(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    (void)r;
+    if (j->norder > 1 && first_rows[j->order[1]]) first_rows[j->order[1]](t, j);
+}
+
+static void next_camera(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    double z = r->z;
 
     if (!j->par.perspective)
         add(t, "orthographic camera: the image stage keeps x_c and y_c and drops the depth");
@@ -471,9 +561,8 @@ static void next_camera(text *t, const pt_journey *j)
         add(t, "z_c is not a number: so is its projection");
 }
 
-static void next_image(text *t, const pt_journey *j)
+static void next_image(text *t, const pt_journey *j, const pt_vrec *ip)
 {
-    const pt_vrec *ip = &j->rec[PT_STAGE_IMAGE];
     int vp_inside = (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE) != 0;
     int rect = fabs(ip->x) <= 1 && fabs(ip->y) <= 1;
 
@@ -492,9 +581,8 @@ static void next_image(text *t, const pt_journey *j)
         add(t, "outside the view rectangle [-1, 1] x [-1, 1]: the point lies outside the viewport");
 }
 
-static void next_pixel(text *t, const pt_journey *j)
+static void next_pixel(text *t, const pt_journey *j, const pt_vrec *pp)
 {
-    const pt_vrec *pp = &j->rec[PT_STAGE_PIXEL];
     const pt_vrec *vp = &j->rec[PT_STAGE_VIEWPORT];
     int64_t m, n;
 
@@ -512,10 +600,20 @@ static void next_pixel(text *t, const pt_journey *j)
         add(t, " (the view rectangle's pixels): the point lies outside the viewport");
 }
 
-static void next_framebuffer(text *t, const pt_journey *j)
+static void next_viewport(text *t, const pt_journey *j, const pt_vrec *r)
 {
-    const pt_vrec *fb = &j->rec[PT_STAGE_FRAMEBUFFER];
+    (void)j;
+    if (r->flags & PT_REC_NULL)
+        add(t, "no pixel: segments using this vertex are skipped");
+    else if (r->flags & PT_REC_INSIDE)
+        add(t, "inside the viewport: the rasterizer writes the pixels of its segments here");
+    else
+        add(t, "outside the viewport: its pixel is clipped (the rasterizer steps "
+               "there but writes nothing)");
+}
 
+static void next_framebuffer(text *t, const pt_journey *j, const pt_vrec *fb)
+{
     if (fb->flags & PT_REC_NULL) add(t, "no pixel: no index");
     else if (j->rec[PT_STAGE_INDEX].flags & PT_REC_NULL)
         add(t, "outside the framebuffer: no index");
@@ -525,10 +623,115 @@ static void next_framebuffer(text *t, const pt_journey *j)
     else add(t, "inside the framebuffer: the index stage numbers it");
 }
 
+static void next_index(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    if (r->flags & PT_REC_NULL)
+        add(t, "outside the framebuffer: no index, nothing is stored for this point");
+    else {
+        add(t, "the end of the journey: the pixel's color is element ");
+        add_int(t, r->i, 0);
+        add(t, " of the pixel array");
+        if (!(j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
+            add(t, " (never written: outside the viewport)");
+    }
+}
+
+static void next_world(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    (void)j; (void)r;
+    add(t, "the view stage moves the eye to the origin and turns the camera's axes onto x, y, z");
+}
+
+static void next_view(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    (void)j;
+    if (r->z > 0) {
+        add(t, "in front of the eye (z_v > 0): the clip stage sets w_k = z_v = ");
+        add_num(t, r->z, 0);
+    } else
+        add(t, "not in front of the eye (z_v <= 0): w_k will be <= 0, "
+               "outside the near plane");
+}
+
+static void next_clip(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    (void)j;
+    add(t, "the cvv stage compares x_k, y_k, z_k with w_k = ");
+    add_num(t, r->w, 0);
+    add(t, ", before any division");
+}
+
+static void next_cvv(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    (void)j;
+    if (r->code == 0)
+        add(t, "inside the view volume: the ndc stage divides by w_k");
+    else
+        add(t, "outside the view volume: this vertex is not divided (for w_k <= 0 that "
+               "would flip it into view); its segments are clipped at the planes in clip "
+               "space, and the points that makes go on from there");
+}
+
+static void next_ndc(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    (void)j;
+    add(t, fabs(r->x) <= 1 && fabs(r->y) <= 1 && r->z >= 0 && r->z <= 1
+           ? "inside the cube [-1, 1] x [-1, 1] x [0, 1]: the screen stage stretches it over the viewport"
+           : "on the cube's border (rounding): the screen stage stretches it over the viewport");
+}
+
+static void next_screen(text *t, const pt_journey *j, const pt_vrec *r)
+{
+    (void)j; (void)r;
+    add(t, "the viewport stage takes the pixel whose square contains (x_s, y_s): floor of each");
+}
+
+/* Explain's row of each stage: its formula with the numbers put in, and
+** what its result means for the stages after it.  A new stage adds its row
+** here (tests/test_explain.c fails until it has one); the viewport stage's
+** formula is its pipeline's (viewport_rows[]). */
+static const struct stage_row {
+    coord_fn coord;              /* one coordinate's formula */
+    next_fn next;                /* what comes next */
+} stage_rows[PT_NSTAGES_ALL] = {
+    [PT_STAGE_MODEL] = { coord_model, next_model },
+    [PT_STAGE_CAMERA] = { coord_camera, next_camera },
+    [PT_STAGE_IMAGE] = { coord_image, next_image },
+    [PT_STAGE_PIXEL] = { coord_pixel, next_pixel },
+    [PT_STAGE_VIEWPORT] = { NULL, next_viewport },          /* formula: viewport_rows[] */
+    [PT_STAGE_FRAMEBUFFER] = { coord_framebuffer, next_framebuffer },
+    [PT_STAGE_INDEX] = { coord_index, next_index },
+    [PT_STAGE_WORLD] = { coord_world, next_world },
+    [PT_STAGE_VIEW] = { coord_view, next_view },
+    [PT_STAGE_CLIP] = { coord_clip, next_clip },
+    [PT_STAGE_CVV] = { coord_cvv, next_cvv },
+    [PT_STAGE_NDC] = { coord_ndc, next_ndc },
+    [PT_STAGE_SCREEN] = { coord_screen, next_screen },
+};
+
+/* The viewport stages, keyed by a pipeline's viewport row (pt_pipeline.
+** viewport_info): a pipeline with a viewport stage of its own adds a row. */
+static const struct viewport_row {
+    const pt_stage_info *info;   /* the pipeline's viewport row */
+    coord_fn coord;              /* its formula */
+} viewport_rows[] = {
+    { &pt_stage_infos[PT_STAGE_VIEWPORT], coord_round },    /* classic */
+    { &pt_matrix_viewport_info, coord_floor },              /* matrix */
+};
+
+/* The formula of pl's stage st, or NULL when explain has none. */
+static coord_fn coord_row(const pt_pipeline *pl, pt_stage st)
+{
+    size_t i;
+
+    if (st != PT_STAGE_VIEWPORT) return stage_rows[st].coord;
+    for (i = 0; i < sizeof viewport_rows / sizeof viewport_rows[0]; i++)
+        if (viewport_rows[i].info == pt_pipeline_info(pl, st)) return viewport_rows[i].coord;
+    return NULL;
+}
+
 size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
 {
-    const pt_vrec *r = &j->rec[st];
-    pt_vec3 tr = j->par.translate;
     text t;
 
     text_init(&t, buf, len);
@@ -537,74 +740,12 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
         add(&t, "the next stage computes from numbers this stage did not report");
         return t.len;
     }
-    switch (st) {
-    case PT_STAGE_MODEL:                /* what the stage after it does */
-        if (j->norder > 1 && j->order[1] == PT_STAGE_WORLD)
-            add(&t, "the world stage multiplies (x_m, y_m, z_m, 1) by the model's world matrix");
-        else if (tr.x == 0 && tr.y == 0 && tr.z == 0)
-            add(&t, "the translation is (0, 0, 0): the camera stage changes nothing");
-        else {
-            add(&t, "the camera stage adds the model's translation (x_t, y_t, z_t) = (");
-            add_num(&t, tr.x, 0); add(&t, ", "); add_num(&t, tr.y, 0); add(&t, ", ");
-            add_num(&t, tr.z, 0); add(&t, ")");
-        }
-        break;
-    case PT_STAGE_CAMERA: next_camera(&t, j); break;
-    case PT_STAGE_IMAGE: next_image(&t, j); break;
-    case PT_STAGE_PIXEL: next_pixel(&t, j); break;
-    case PT_STAGE_VIEWPORT:
-        if (r->flags & PT_REC_NULL)
-            add(&t, "no pixel: segments using this vertex are skipped");
-        else if (r->flags & PT_REC_INSIDE)
-            add(&t, "inside the viewport: the rasterizer writes the pixels of its segments here");
-        else
-            add(&t, "outside the viewport: its pixel is clipped (the rasterizer steps "
-                    "there but writes nothing)");
-        break;
-    case PT_STAGE_FRAMEBUFFER: next_framebuffer(&t, j); break;
-    case PT_STAGE_WORLD:
-        add(&t, "the view stage moves the eye to the origin and turns the camera's axes onto x, y, z");
-        break;
-    case PT_STAGE_VIEW:
-        if (r->z > 0) {
-            add(&t, "in front of the eye (z_v > 0): the clip stage sets w_k = z_v = ");
-            add_num(&t, r->z, 0);
-        } else
-            add(&t, "not in front of the eye (z_v <= 0): w_k will be <= 0, "
-                    "outside the near plane");
-        break;
-    case PT_STAGE_CLIP:
-        add(&t, "the cvv stage compares x_k, y_k, z_k with w_k = ");
-        add_num(&t, r->w, 0);
-        add(&t, ", before any division");
-        break;
-    case PT_STAGE_CVV:
-        if (r->code == 0)
-            add(&t, "inside the view volume: the ndc stage divides by w_k");
-        else
-            add(&t, "outside the view volume: this vertex is not divided (for w_k <= 0 that "
-                    "would flip it into view); its segments are clipped at the planes in clip "
-                    "space, and the points that makes go on from there");
-        break;
-    case PT_STAGE_NDC:
-        add(&t, fabs(r->x) <= 1 && fabs(r->y) <= 1 && r->z >= 0 && r->z <= 1
-                ? "inside the cube [-1, 1] x [-1, 1] x [0, 1]: the screen stage stretches it over the viewport"
-                : "on the cube's border (rounding): the screen stage stretches it over the viewport");
-        break;
-    case PT_STAGE_SCREEN:
-        add(&t, "the viewport stage takes the pixel whose square contains (x_s, y_s): floor of each");
-        break;
-    case PT_STAGE_INDEX:
-        if (r->flags & PT_REC_NULL)
-            add(&t, "outside the framebuffer: no index, nothing is stored for this point");
-        else {
-            add(&t, "the end of the journey: the pixel's color is element ");
-            add_int(&t, r->i, 0);
-            add(&t, " of the pixel array");
-            if (!(j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
-                add(&t, " (never written: outside the viewport)");
-        }
-        break;
-    }
+    if (stage_rows[st].next) stage_rows[st].next(&t, j, &j->rec[st]);
     return t.len;
+}
+
+int pt_explain_has_rows(const pt_pipeline *pl, pt_stage st)
+{
+    if ((int)st >= PT_NSTAGES_ALL || !coord_row(pl, st) || !stage_rows[st].next) return 0;
+    return st != pl->order[0] || pl->norder < 2 || first_rows[pl->order[1]] != NULL;
 }

@@ -74,6 +74,14 @@ size_t pt_explain_tuple(char *buf, size_t len, const pt_journey *j, pt_stage st)
 ** 0): projected mirrored ...".  Returns the length.  This function can't fail. */
 size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st);
 
+/* 1 when explain has every row stage st of pipeline pl asks for: its formula
+** (for pl's own viewport stage, the one of pl's viewport row), what comes
+** after it, and for pl's first stage what pl's second stage does with it.
+** tests/test_explain.c asks it for every stage of every pipeline, so that a
+** new stage or pipeline without its rows fails there, not in a student's
+** hands.  This function can't fail. */
+int pt_explain_has_rows(const pt_pipeline *pl, pt_stage st);
+
 /* What the Java renderer's (int)Math.round(x) holds: Math.round returns a
 ** long, 0 for NaN and saturated at -2^63 and 2^63 - 1, and the int cast keeps
 ** its low 32 bits (two's complement).  So 1e300 gives -1, -1e300 gives 0, 3e9

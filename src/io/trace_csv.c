@@ -56,7 +56,11 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
 {
     /* the matrix camera's columns: w, the outcode, a clipped point's segment */
     int matrix = t->scene && pt_scene_pipeline(t->scene)->matrices;
-    int k, dims = pt_stage_infos[r->stage].nreal;
+    /* the stage's columns, read before any byte is stored (each may alias them) */
+    const pt_stage_info *in = &pt_stage_infos[r->stage];
+    const pt_value_kind kind = in->kind;
+    const unsigned sflags = in->flags;
+    int k, dims = in->nreal;
     const double v[4] = {r->x, r->y, r->z, r->w};
     char *o;
 
@@ -71,13 +75,12 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     for (k = 0; k < (matrix ? 4 : 3); k++) {            /* x,y,z[,w] */
         *o++ = ',';
         if (k < dims) o = short_at(t, o, v[k]);
-        else if (k < 2 && !dims && r->stage != PT_STAGE_INDEX && r->stage != PT_STAGE_CVV
-                 && pt_rec_has(r, k))
+        else if (k < 2 && kind == PT_VAL_PIXEL && pt_rec_has(r, k))
             o = int_at(t, o, k ? r->iy : r->ix, 0);
     }
     *o++ = ',';
     if (matrix) {                                       /* code,planes */
-        if (r->stage == PT_STAGE_CVV) {
+        if (kind == PT_VAL_OUTCODE) {
             o = int_at(t, o, r->code, 0);
             *o++ = ',';
             o = names_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES, '|');
@@ -86,13 +89,13 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
         }
         *o++ = ',';
     }
-    if (r->stage == PT_STAGE_VIEWPORT) *o++ = r->flags & PT_REC_INSIDE ? '1' : '0';
+    if (sflags & PT_REC_INSIDE) *o++ = r->flags & PT_REC_INSIDE ? '1' : '0';
     *o++ = ',';
     if (!matrix) {                                      /* behind */
-        if (r->stage == PT_STAGE_IMAGE) *o++ = r->flags & PT_REC_BEHIND ? '1' : '0';
+        if (sflags & PT_REC_BEHIND) *o++ = r->flags & PT_REC_BEHIND ? '1' : '0';
         *o++ = ',';
     }
-    if (r->stage == PT_STAGE_INDEX && !(r->flags & PT_REC_NULL)) o = int_at(t, o, r->i, 0);
+    if (kind == PT_VAL_INDEX && !(r->flags & PT_REC_NULL)) o = int_at(t, o, r->i, 0);
     *o++ = ',';
     if (matrix) {                                       /* segment,t */
         if (t->clipv) { o = u64_at(t, o, t->seg); *o++ = ','; o = short_at(t, o, t->t_clip); }

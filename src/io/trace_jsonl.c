@@ -112,6 +112,12 @@ static char *names_json_at(char *o, unsigned bits, const char *const *names, int
 
 static void vertex_json(pt_trace *t, const pt_vrec *r)
 {
+    /* the stage's columns are read once, before any byte is stored (each
+    ** may alias them) */
+    const pt_stage_info *in = &pt_stage_infos[r->stage];
+    const pt_value_kind kind = in->kind;
+    const unsigned sflags = in->flags;
+    const int nval = in->nreal + in->nint;
     char *o;
 
     if (t->clipv) {
@@ -129,29 +135,35 @@ static void vertex_json(pt_trace *t, const pt_vrec *r)
         }
     }
     o = frag_at(t, o, r->stage, 0);         /* ,"stage":"camera","x": */
-    if (r->stage == PT_STAGE_CVV) {         /* ,"stage":"cvv","code": */
+    switch (kind) {
+    case PT_VAL_OUTCODE:                    /* ,"stage":"cvv","code": */
         o = int_at(t, o, r->code, 0);
         o = str_at(o, ",\"planes\":");
         o = names_json_at(o, r->code, pt_cvv_names, PT_CVV_NPLANES);
-    } else if (pt_stage_infos[r->stage].nreal) {
-        /* nreal is read once (each byte stored may alias it); the first
-        ** value's key came with the stage's name */
+        break;
+    case PT_VAL_REAL: {
+        /* the first value's key came with the stage's name */
         const double v[4] = {r->x, r->y, r->z, r->w};
-        int k, nreal = pt_stage_infos[r->stage].nreal;
+        int k;
         o = json_num_at(t, o, v[0]);
-        for (k = 1; k < nreal; k++)
+        for (k = 1; k < nval; k++)
             o = json_num_at(t, key_at(t, o, r->stage, k), v[k]);
-    } else {                                /* viewport, framebuffer, index */
-        const int64_t n[2] = {r->stage == PT_STAGE_INDEX ? r->i : r->ix, r->iy};
-        int k, nint = pt_stage_infos[r->stage].nint;      /* read once, as nreal */
-        for (k = 0; k < nint; k++) {
+        break;
+    }
+    case PT_VAL_PIXEL:
+    case PT_VAL_INDEX: {                    /* viewport, framebuffer, index */
+        const int64_t n[2] = {kind == PT_VAL_INDEX ? r->i : r->ix, r->iy};
+        int k;
+        for (k = 0; k < nval; k++) {
             if (k) o = key_at(t, o, r->stage, k);
             o = pt_rec_has(r, k) ? int_at(t, o, n[k], 0) : str_at(o, "null");
         }
+        break;
     }
-    if (r->stage == PT_STAGE_IMAGE && (r->flags & PT_REC_BEHIND))
+    }
+    if (sflags & r->flags & PT_REC_BEHIND)
         o = str_at(o, ",\"behind\":true");
-    if (r->stage == PT_STAGE_VIEWPORT)
+    if (sflags & PT_REC_INSIDE)             /* a stage that says inside or not */
         o = str_at(o, r->flags & PT_REC_INSIDE ? ",\"inside\":true" : ",\"inside\":false");
     if (r->warn) {                          /* ,"warning":["cancellation"],"digits_lost":9 */
         o = str_at(o, ",\"warning\":");

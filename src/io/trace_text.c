@@ -163,12 +163,30 @@ static void put_planes_text(pt_trace *t, unsigned code)
     put(t, ")", 1);
 }
 
+/* The stage at which the trace of a point made by clipping begins: the one
+** after its pipeline's last segment stage (the matrix camera's ndc, after
+** the cvv), or -1 for a pipeline without segment stages.  Asked only for
+** such points. */
+static int made_first(const pt_trace *t)
+{
+    const pt_pipeline *pl = pt_scene_pipeline(t->scene);
+    int i;
+
+    if (!pl->nsegstages) return -1;
+    for (i = 0; i + 1 < pl->norder; i++)
+        if (pl->order[i] == pl->segstages[pl->nsegstages - 1].stage) return (int)pl->order[i + 1];
+    return -1;
+}
+
 static void vertex_text(pt_trace *t, const pt_vrec *r)
 {
+    const pt_stage_info *in = &pt_stage_infos[r->stage];
+
     if (t->clipv) put_who(t, t->model->name, 's', t->seg);
     else put_who(t, t->model->name, 'v', t->v);
-    put_stage_col(t, pt_stage_infos[r->stage].name);
-    if (r->stage == PT_STAGE_CVV) {             /* "code = 61 = 0b111101" */
+    put_stage_col(t, in->name);
+    switch (in->kind) {
+    case PT_VAL_OUTCODE: {                  /* "code = 61 = 0b111101" */
         char bits[PT_CVV_NPLANES + 1];
         int k;
         for (k = 0; k < PT_CVV_NPLANES; k++)
@@ -176,27 +194,33 @@ static void vertex_text(pt_trace *t, const pt_vrec *r)
         bits[PT_CVV_NPLANES] = '\0';
         put_lhs(t, r->stage, 0); put_i64(t, r->code); puts_(t, "  (0b"); puts_(t, bits);
         put_planes_text(t, r->code);
-    } else if (r->stage == PT_STAGE_INDEX) {
+        break;
+    }
+    case PT_VAL_INDEX:
         put_lhs(t, r->stage, 0);
         if (r->flags & PT_REC_NULL) put_col(t, "none", 4, 12);
         else put_int_col(t, r->i);
-    } else if (pt_stage_infos[r->stage].nreal) {
+        break;
+    case PT_VAL_REAL: {
         const double v[4] = {r->x, r->y, r->z, r->w};
         int k;
-        for (k = 0; k < pt_stage_infos[r->stage].nreal; k++) {
+        for (k = 0; k < in->nreal; k++) {
             if (k) puts_(t, "  ");
             put_lhs(t, r->stage, k); put_fixed_col(t, v[k], t->precision);
         }
-    } else {                                /* viewport, framebuffer: null per value */
+        break;
+    }
+    case PT_VAL_PIXEL:                      /* null per value */
         put_lhs(t, r->stage, 0);
         if (pt_rec_has(r, 0)) put_int_col(t, r->ix); else put_col(t, "none", 4, 12);
         puts_(t, "  "); put_lhs(t, r->stage, 1);
         if (pt_rec_has(r, 1)) put_int_col(t, r->iy); else put_col(t, "none", 4, 12);
+        break;
     }
     if (r->flags & PT_REC_BEHIND) puts_(t, "  behind the camera");
-    if (r->stage == PT_STAGE_VIEWPORT)
+    if (in->flags & PT_REC_INSIDE)          /* a stage that says inside or not */
         puts_(t, r->flags & PT_REC_INSIDE ? "  inside" : "  outside");
-    if (t->clipv && r->stage == PT_STAGE_NDC) {
+    if (t->clipv && (int)r->stage == made_first(t)) {
         puts_(t, "  (clipped v"); put_u64(t, t->from); puts_(t, "-v"); put_u64(t, t->to);
         puts_(t, " at t = "); put_short(t, t->t_clip); put(t, ")", 1);
     }

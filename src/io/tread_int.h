@@ -73,11 +73,12 @@ int pt_tr_grow(pt_treader *r, void **arr, size_t n, size_t *cap, size_t size);
 ** function can't fail. */
 uint32_t pt_tr_line32(const pt_treader *r);
 
-/* The flags of an integer record (viewport, framebuffer, index: nint values)
-** whose values k with bit k set in nulls are null: 0, or PT_REC_NULL with
-** PT_REC_HAS_X/Y for the coordinates that still have one (null is per
-** value).  This function can't fail. */
-unsigned pt_tr_null_flags(unsigned nulls, int nint);
+/* The flags of an integer record whose values k with bit k set in nulls are
+** null, for a stage whose records may carry sflags (pt_stage_info.flags): 0,
+** or PT_REC_NULL with PT_REC_HAS_X/Y, where the stage has them, for the
+** coordinates that still have one (a pixel's null is per value, an index's
+** whole).  This function can't fail. */
+unsigned pt_tr_null_flags(unsigned nulls, unsigned sflags);
 
 /* A new vertex record at the end of r->t->vx: vertex v of model at stage st
 ** on the current line, no flags, no values yet.  Returns it, or NULL (out of

@@ -333,16 +333,16 @@ static int j_vertex(pt_treader *r, const jfield *f, int nf, int clipv)
     }
     for (k = 0; k < sh->nint; k++) {
         if (!(v = need(r, f, nf, sh->key[k], what))) return -1;
-        if (jint(r, v, &rec->u.n[k], st != PT_STAGE_CVV, &nul) != 0) return -1;
+        if (jint(r, v, &rec->u.n[k], (sh->flags & PT_REC_NULL) != 0, &nul) != 0) return -1;
         if (nul) nulls |= 1u << k;          /* null per value */
     }
-    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->nint);
-    if (st == PT_STAGE_IMAGE && (v = j_get(f, nf, "behind")) != NULL) {
+    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->flags);
+    if ((sh->flags & PT_REC_BEHIND) && (v = j_get(f, nf, "behind")) != NULL) {
         if (v->kind != J_TRUE && v->kind != J_FALSE) return pt_tr_fail(r, v->p, "expected true or false");
         if (v->kind == J_TRUE) rec->flags |= PT_REC_BEHIND;
     }
-    if (st == PT_STAGE_VIEWPORT) {
-        if (!(v = need(r, f, nf, "inside", "viewport"))) return -1;
+    if (sh->flags & PT_REC_INSIDE) {           /* "inside": true or false */
+        if (!(v = need(r, f, nf, "inside", sh->name))) return -1;
         if (v->kind != J_TRUE && v->kind != J_FALSE) return pt_tr_fail(r, v->p, "expected true or false");
         if (v->kind == J_TRUE) rec->flags |= PT_REC_INSIDE;
     }

@@ -113,19 +113,19 @@ static int t_vertex(pt_treader *r, cur *c, uint32_t model, uint64_t vnum, int cl
         if (sh->nreal) {
             if (text_real(r, c, &rec->u.d[k]) != 0) return -1;
         } else {
-            if (text_int(r, c, &rec->u.n[k], st != PT_STAGE_CVV, &nul) != 0) return -1;
+            if (text_int(r, c, &rec->u.n[k], (sh->flags & PT_REC_NULL) != 0, &nul) != 0) return -1;
             if (nul) nulls |= 1u << k;      /* null per value */
         }
     }
-    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->nint);
+    rec->flags |= (unsigned char)pt_tr_null_flags(nulls, sh->flags);
     while (word(c, &w, &n)) {               /* flags; then notes and warnings */
         if (pt_tr_is(w, n, "!") || w[0] == '(') break;
-        if (st == PT_STAGE_IMAGE && pt_tr_is(w, n, "behind")) {
+        if ((sh->flags & PT_REC_BEHIND) && pt_tr_is(w, n, "behind")) {
             if (expect(r, c, "the") || expect(r, c, "camera")) return -1;
             rec->flags |= PT_REC_BEHIND;
-        } else if (st == PT_STAGE_VIEWPORT && pt_tr_is(w, n, "inside")) {
+        } else if ((sh->flags & PT_REC_INSIDE) && pt_tr_is(w, n, "inside")) {
             rec->flags |= PT_REC_INSIDE;
-        } else if (st == PT_STAGE_VIEWPORT && pt_tr_is(w, n, "outside")) {
+        } else if ((sh->flags & PT_REC_INSIDE) && pt_tr_is(w, n, "outside")) {
             ;
         } else {
             return pt_tr_fail(r, w, "unexpected '%.*s'", (int)(n > 40 ? 40 : n), w);

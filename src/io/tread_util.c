@@ -80,11 +80,11 @@ uint32_t pt_tr_line32(const pt_treader *r)
     return r->lineno > UINT32_MAX ? UINT32_MAX : (uint32_t)r->lineno;
 }
 
-unsigned pt_tr_null_flags(unsigned nulls, int nint)
+unsigned pt_tr_null_flags(unsigned nulls, unsigned sflags)
 {
     if (!nulls) return 0;
-    return PT_REC_NULL | (nint == 2 && !(nulls & 1u) ? PT_REC_HAS_X : 0u)
-                       | (nint == 2 && !(nulls & 2u) ? PT_REC_HAS_Y : 0u);
+    return PT_REC_NULL | (sflags & PT_REC_HAS_X && !(nulls & 1u) ? PT_REC_HAS_X : 0u)
+                       | (sflags & PT_REC_HAS_Y && !(nulls & 2u) ? PT_REC_HAS_Y : 0u);
 }
 
 pt_tvrec *pt_tr_new_vrec(pt_treader *r, uint32_t model, uint64_t v, int st)

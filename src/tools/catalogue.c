@@ -16,7 +16,7 @@ void pt_cat_val_of(pt_cat_val *v, const pt_vrec *r)
     memset(v, 0, sizeof *v);
     v->d[0] = r->x; v->d[1] = r->y; v->d[2] = r->z;
     v->flags = r->flags & (PT_REC_NULL | PT_REC_HAS_X | PT_REC_HAS_Y);
-    if (r->stage == PT_STAGE_INDEX) v->n[0] = r->i;
+    if (pt_stage_infos[r->stage].kind == PT_VAL_INDEX) v->n[0] = r->i;
     else { v->n[0] = r->ix; v->n[1] = r->iy; }
 }
 
@@ -76,7 +76,7 @@ static void rec_of(pt_vrec *r, int st, const pt_cat_val *v)
     r->stage = (pt_stage)st;
     r->flags = v->flags;
     r->x = v->d[0]; r->y = v->d[1]; r->z = v->d[2];
-    if (st == PT_STAGE_INDEX) r->i = v->n[0];
+    if (pt_stage_infos[st].kind == PT_VAL_INDEX) r->i = v->n[0];
     else { r->ix = v->n[0]; r->iy = v->n[1]; }
 }
 

@@ -114,11 +114,20 @@ static int close_enough(double a, double b)
     return fabs(a - b) <= TOL || fabs(a - b) <= TOL * fabs(b);
 }
 
+/* How an answer to a stage is graded, by the kind of its values (the stage
+** table's kind): integers must be exact, reals within the tolerance.
+** Whether "none" is an answer is the stage's (pt_stage_nullable()). */
+static const int exact_kind[] = {
+    [PT_VAL_REAL] = 0,           /* close_enough() */
+    [PT_VAL_PIXEL] = 1,          /* x y, each may be none */
+    [PT_VAL_INDEX] = 1,          /* idx, or none */
+    [PT_VAL_OUTCODE] = 1,        /* code */
+};
+
 /* 1 for the stages whose values are integers: they must be exact. */
 static int int_stage(pt_stage st)
 {
-    return st == PT_STAGE_VIEWPORT || st == PT_STAGE_FRAMEBUFFER ||
-           st == PT_STAGE_INDEX || st == PT_STAGE_CVV;
+    return exact_kind[pt_stage_infos[st].kind];
 }
 
 /* 1 when n answers (none[k]: "none") have the form of an answer to stage st:
@@ -130,7 +139,7 @@ static int readable(pt_stage st, const int *none, int n)
 
     for (k = 0; k < n && k < 4; k++) nones += none[k];     /* at most 4 values */
     if (n == pt_coord_count(st)) return 1;
-    return int_stage(st) && st != PT_STAGE_CVV && n >= 1 && n <= pt_coord_count(st) &&
+    return pt_stage_nullable(st) && n >= 1 && n <= pt_coord_count(st) &&
            nones == n;
 }
 
@@ -147,9 +156,7 @@ static int check(const pt_journey *j, pt_stage st, const double *v, const int *n
     }
     if (n != want) return 0;
     for (k = 0; k < n; k++) {
-        double e = st == PT_STAGE_INDEX ? (double)r->i
-                 : st == PT_STAGE_CVV ? (double)r->code
-                 : int_stage(st) ? (double)(k ? r->iy : r->ix)
+        double e = pt_stage_infos[st].nint ? (double)pt_rec_int(r, k)
                  : k == 0 ? r->x : k == 1 ? r->y : k == 2 ? r->z : r->w;
         if (none[k]) return 0;
         if (int_stage(st) ? v[k] != e : !close_enough(v[k], e)) return 0;
@@ -189,11 +196,11 @@ static void say_wrong(const pt_journey *j, pt_stage st, int n)
 
     if (n < 0)                              /* only an integer stage may have none */
         printf("  wrong: expected %d number%s%s\n", want, want > 1 ? "s" : "",
-               int_stage(st) && st != PT_STAGE_CVV ? ", or none" : "");
+               pt_stage_nullable(st) ? ", or none" : "");
     else if (n != want && !(j->rec[st].flags & PT_REC_NULL))
         printf("  wrong: expected %d number%s, found %d\n", want, want > 1 ? "s" : "", n);
     else printf("  wrong\n");
-    printf("  %s\n", st == PT_STAGE_MODEL ? "the scene gives:" : pt_journey_info(j, st)->formula);
+    printf("  %s\n", st == j->order[0] ? "the scene gives:" : pt_journey_info(j, st)->formula);
     pt_explain_stage(b, sizeof b, j, st, "\n    ");
     printf("    %s\n", b);
     pt_explain_values(b, sizeof b, j, st);
@@ -227,7 +234,7 @@ static void ask(quiz *q)
                 printf("  (not read: write %d number%s for", want, want > 1 ? "s" : "");
                 for (k = 0; k < want; k++) printf(" %s", pt_coord_name(st, k));
                 printf("%s, separated by spaces or commas; try again)\n",
-                       int_stage(st) && st != PT_STAGE_CVV ? ", or none" : "");
+                       pt_stage_nullable(st) ? ", or none" : "");
                 prompt(j, st);
             }
         }
@@ -524,7 +531,7 @@ int pt_cmd_quiz(int argc, char **argv)
         printf("camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n",
                pt_scene_camera_title(&s, cam, sizeof cam),
                s.vp_w, s.vp_h, s.vp_x, s.vp_y, s.fb_w, s.fb_h);
-        pt_explain_next(t, sizeof t, &j, PT_STAGE_MODEL);
+        pt_explain_next(t, sizeof t, &j, j.order[0]);     /* what the first stage hands on */
         printf("model %s: %s\n", m->name, t);
         if (q.first > 0) {
             pt_explain_values(t, sizeof t, &j, j.order[q.first - 1]);

@@ -528,8 +528,42 @@ static void test_viewport_text_is_the_stage(void)
     PT_CHECK("ex-7.7 the viewport's text: true arithmetic, ending in the stage's values", bad == 0);
 }
 
+/* Every stage of every pipeline has its rows in explain.c: its formula
+** (the pipeline's own viewport), what comes next, and after the first stage
+** what the second does.  A new stage or pipeline fails here until it has them. */
+static void test_every_stage_has_rows(void)
+{
+    int p, i, missing = 0;
+    char d[96];
+
+    for (p = 0; p < PT_NPIPES; p++)
+        for (i = 0; i < pt_pipelines[p]->norder; i++) {
+            pt_stage st = pt_pipelines[p]->order[i];
+            if (pt_explain_has_rows(pt_pipelines[p], st)) continue;
+            snprintf(d, sizeof d, "ex-9.1 %s: explain has the %s stage's rows",
+                     pt_pipelines[p]->name, pt_stage_infos[st].name);
+            PT_CHECK(d, 0);
+            missing++;
+        }
+    PT_CHECK("ex-9.2 every stage of every pipeline has explain's rows", missing == 0);
+    /* the kind and flags columns agree with the counts, and both viewport
+    ** rows hold the same values */
+    for (p = 0; p < PT_NPIPES; p++)
+        for (i = 0; i < pt_pipelines[p]->norder; i++) {
+            const pt_stage_info *in = pt_pipeline_info(pt_pipelines[p], pt_pipelines[p]->order[i]);
+            int ok = in->kind == PT_VAL_REAL ? in->nreal > 0 && in->flags == (in->flags & PT_REC_BEHIND)
+                   : in->kind == PT_VAL_PIXEL ? in->nint == 2 && (in->flags & PT_REC_HAS_Y)
+                   : in->kind == PT_VAL_INDEX ? in->nint == 1 && in->flags == PT_REC_NULL
+                   : in->nint == 1 && in->flags == 0;
+            snprintf(d, sizeof d, "ex-9.3 %s %s: kind and flags fit its values",
+                     pt_pipelines[p]->name, in->name);
+            PT_CHECK(d, ok);
+        }
+}
+
 int main(void)
 {
+    test_every_stage_has_rows();
     test_triangle();
     test_outside();
     test_odd();

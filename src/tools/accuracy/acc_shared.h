@@ -23,9 +23,12 @@
 typedef enum pt_arith {
     PT_ARITH_FLOAT,
     PT_ARITH_DOUBLE,
-    PT_ARITH_DD,                 /* the reference */
-    PT_NARITH
+    PT_ARITH_DD                  /* the reference */
 } pt_arith;
+
+/* How many arithmetics there are (the tables' length): not one of them, so
+** that a switch over pt_arith lists exactly the arithmetics (-Wswitch-enum). */
+#define PT_NARITH ((int)PT_ARITH_DD + 1)
 
 /* Algorithm choices, for float and double (the reference ignores them). */
 #define PT_ACC_TWO        0x01u  /* x_pp = 0.5 + w/2.0 * (x_ip + 1): 2 for 2.001 */

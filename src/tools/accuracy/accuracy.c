@@ -219,10 +219,11 @@ void pt_acc_mcam_matrices(const pt_acc_mcam *c, size_t k, pt_dd_mat4 *world,
         if (view) widen_mat_d(mx.view, view);
         if (proj) widen_mat_d(mx.proj, proj);
         break;
-    default:
+    case PT_ARITH_DD:
         if (world) *world = c->world_dd[k];
         if (view) *view = c->view_dd;
         if (proj) *proj = c->proj_dd;
+        break;
     }
 }
 
