@@ -34,6 +34,7 @@ nameset     2 $B/test_nameset
 numparse    2 $B/test_numparse
 baseline    2 sh tests/baseline.sh $B
 stream      2 sh tests/stream.sh $B/pipetrace
+hostile     1 sh tests/hostile.sh $B/pipetrace
 shapes      1 $B/test_shapes
 reference   1 $B/test_reference $ref
 catalogue   1 $B/test_catalogue $ref

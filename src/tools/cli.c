@@ -13,43 +13,10 @@
 #include "io/outfile.h"
 #include "core/pipetrace.h"
 
-/* Standard input as a scene named "<stdin>": read whole, up to the chunk
-** that holds a NUL byte (the parser reports the byte; stopping keeps a
-** stream of NULs from eating all memory).  Returns 0, or -1 with err set. */
-static int load_stdin(pt_scene *s, char *err, size_t errlen)
-{
-    char *text = NULL, *more;
-    size_t len = 0, cap = 0, got;
-    int rc;
-
-    memset(s, 0, sizeof *s);
-    do {
-        if (cap - len < 65536) {
-            more = cap < ((size_t)-1) / 2 ? realloc(text, cap = cap ? 2 * cap : 65536) : NULL;
-            if (!more) {
-                free(text);
-                snprintf(err, errlen, "<stdin>:1:1: error: out of memory");
-                return -1;
-            }
-            text = more;
-        }
-        got = fread(text + len, 1, cap - len, stdin);
-        len += got;
-    } while (got > 0 && !memchr(text + len - got, '\0', got));
-    if (ferror(stdin)) {
-        free(text);
-        snprintf(err, errlen, "<stdin>:1:1: error: cannot read standard input");
-        return -1;
-    }
-    rc = pt_scene_parse(s, "<stdin>", text, len, err, errlen);
-    free(text);
-    return rc;
-}
-
 int pt_cli_load(pt_scene *s, const char *path)
 {
     char err[PT_ERRLEN];
-    int rc = path && !strcmp(path, "-") ? load_stdin(s, err, sizeof err)
+    int rc = path && !strcmp(path, "-") ? pt_scene_read(s, stdin, "<stdin>", err, sizeof err)
            : path ? pt_scene_load(s, path, err, sizeof err)
                   : pt_scene_parse(s, "<builtin>", pt_builtin_scene,
                                    strlen(pt_builtin_scene), err, sizeof err);
