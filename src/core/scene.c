@@ -1133,6 +1133,22 @@ static void init_source(source *src, const char *name, const char *text,
     src->errnum = 0;
 }
 
+/* Add path (malloc'd) to s->objs, which takes it.  Returns 0, or -1 when
+** out of memory (path is not taken). */
+static int remember_obj(pt_scene *s, char *path)
+{
+    char **more;
+
+    if (s->nobjs >= SIZE_MAX / sizeof *more - 1)
+        return -1;
+    more = realloc(s->objs, (s->nobjs + 1) * sizeof *more);
+    if (more == NULL)
+        return -1;
+    s->objs = more;
+    s->objs[s->nobjs++] = path;
+    return 0;
+}
+
 /* obj PATH: the rest of the line, trimmed, names an OBJ file relative to the
 ** scene's directory (unless it is absolute).  Its v, l and f lines go to the
 ** current model, and its indices count from the model's vertex count now. */
@@ -1175,6 +1191,10 @@ static int do_obj(parser *ps, source *src, const token *dir, cursor *args)
         sub.included = 1;
         r = parse_source(ps, &sub);     /* OBJ mode: never comes back here */
         close_stream(&sub);
+        if (r == 0 && remember_obj(ps->s, path) < 0)
+            r = fail(ps, src, p, "out of memory");
+        else if (r == 0)
+            path = NULL;                /* the scene owns it now */
     }
     free(path);
     return r;
@@ -1618,6 +1638,9 @@ void pt_scene_free(pt_scene *s)
         free(s->models[i].seg);
     }
     free(s->models);
+    for (i = 0; i < s->nobjs; i++)
+        free(s->objs[i]);
+    free(s->objs);
     free(s->path);
     memset(s, 0, sizeof *s);
 }

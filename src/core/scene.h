@@ -60,6 +60,9 @@ typedef struct pt_scene {
     pt_vec3 obj_translate;       /* with from_obj: the translation chosen */
     pt_model *models;            /* in file order, owned */
     size_t nmodels, cap_models;  /* count and capacity of models */
+    char **objs;                 /* the paths `obj` lines read, in order, owned: an
+                                 ** output must not overwrite them */
+    size_t nobjs;                /* their count */
 } pt_scene;
 
 /* Load the scene in the file at path.  A name ending in ".obj" (any case) is read
