@@ -15,7 +15,7 @@
 ** x_vp = round(x_pp) - 1, y_vp = h - round(y_pp): the classic viewport
 ** stage's formula, kept here too so that a student's s4 (which the matrix
 ** camera does not trace) leaves the matrix camera's image alone
-** (tests/test_stages.c ties the two together).
+** (tests/unit/test_stages.c ties the two together).
 ** No value (PT_REC_NULL, out_of_range) when |x_s| or |y_s| >= 2^62 or is not a
 ** number.  docs/cameras.md#viewport.
 */

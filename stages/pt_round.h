@@ -44,7 +44,7 @@ double pt_java_round(double x);
 ** branch; it is there for the compiler: where x is (double) of an int, as
 ** the coordinate the rasterizer steps is, it sees that trunc(x) == x and that
 ** x is in range, and drops the rounding altogether.
-** tests/test_stages.c compares it with pt_java_round(). */
+** tests/unit/test_stages.c compares it with pt_java_round(). */
 static inline int pt_pix_round(double x, int64_t *out)
 {
     int64_t i;

@@ -52,12 +52,14 @@ lanes           31 sh tests/formats/lanes.sh $B
 explain          1 $B/test_explain
 png              1 $B/test_png
 layers           1 sh tests/repo/layers.sh
+paths            1 sh tests/repo/paths.sh
 runner           1 sh tests/repo/runner.sh $B
 golden           1 sh tests/formats/golden.sh $B/pipetrace
 shapes-cli       1 sh tests/cli/shapes.sh $B/pipetrace
 install          1 sh tests/cli/install.sh $B/pipetrace
 export           4 sh tests/cli/export.sh $B/pipetrace
 cli              1 sh tests/cli/cli.sh $B/pipetrace
+hostile          3 sh tests/cli/hostile.sh $B/pipetrace
 outputs          1 sh tests/cli/outputs.sh $B/pipetrace
 diff            32 sh tests/teach/diff.sh $B/pipetrace
 kraft            3 sh tests/formats/kraft.sh $B/pipetrace $ref

@@ -15,7 +15,7 @@
 **   every other number (more digits, larger powers, subnormals, halfway
 **     cases near them): strtod(), which is exact in glibc and musl.
 **
-** So the result is strtod()'s, bit for bit; tests/test_numparse.c compares the
+** So the result is strtod()'s, bit for bit; tests/unit/test_numparse.c compares the
 ** two on random and adversarial strings (a sample in `make test`, millions
 ** in `make bench`).  Needs FLT_EVAL_METHOD == 0 (SSE2 doubles, no x87 excess
 ** precision); elsewhere every number takes the strtod() path.

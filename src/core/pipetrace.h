@@ -9,7 +9,7 @@
 **
 ** Everything above the core (src/io: trace writers and readers, images,
 ** files, numbers as text; src/tools: the commands) includes this header and no
-** other header of src/core or stages/; tests/layers.py checks it.  It names
+** other header of src/core or stages/; tests/repo/layers.py checks it.  It names
 ** only what they use: no runner (pt_classic.h, pt_matrix.h: pt_run() is the
 ** one way through the stages), no stage the tools do not call themselves.
 ** USAGE is in pipeline.h; the stages' formulas are at the top of each

@@ -35,7 +35,7 @@
 ** sum, and jump j steps at once: y + j*d is exact (a multiple of u inside the
 ** binade, j*d/u < 2^53).  The jump stops short of the binade's edge by a margin
 ** of 4|m| + 4|d|; the edge is crossed by real steps and it all starts over.
-** tests/test_raster.c checks this against the plain loop, ties included.
+** tests/unit/test_raster.c checks this against the plain loop, ties included.
 */
 double pt_raster_advance(double y, double m, uint64_t k)
 {

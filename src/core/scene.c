@@ -25,12 +25,16 @@
 ** the caller's buffer; the -1 then travels straight up to the public function,
 ** which frees the half-built scene.  Nothing here prints or exits.
 */
+#define _POSIX_C_SOURCE 200809L        /* open, fstat, fcntl, fdopen: obj files */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/scene.h"
 #include "core/nameset.h"
@@ -64,6 +68,8 @@ typedef struct source {
     int obj;                    /* 1: OBJ mode (only v, l, f; other keywords ignored) */
     size_t base;                /* vertices the model had before this text began */
     FILE *f;                    /* a stream: the file; NULL: the text is in memory */
+    int own;                    /* 1: f was opened here and is closed here */
+    int included;               /* 1: an `obj` file: its text is quoted sparingly */
     char *buf;                  /* a stream: the window p..end lies in, owned */
     size_t cap;                 /* its size in bytes */
     int eof;                    /* 1: nothing more to read (always, in memory) */
@@ -988,28 +994,71 @@ static int do_face(parser *ps, source *src, const token *dir, cursor *args)
 
 /* ===== files, includes and OBJ ===== */
 
-/* Open the file at path as a stream src (name path, OBJ mode obj, base as in
-** init_source) and read its first window, skipping a UTF-8 byte-order mark.
-** Returns 0 (close it with close_stream); -1 when it cannot be opened or
-** read, with the errno value in *errnum (0 if none was set); -2 when out of
-** memory. */
-static int open_stream(source *src, const char *path, int obj, size_t base, int *errnum)
+/* What kind of file mode is, for "not a regular file (a FIFO)". */
+static const char *file_kind(mode_t mode)
+{
+    return S_ISFIFO(mode) ? "a FIFO" : S_ISSOCK(mode) ? "a socket"
+         : S_ISCHR(mode) ? "a character device" : S_ISBLK(mode) ? "a block device"
+         : S_ISDIR(mode) ? "a directory" : "not a plain file";
+}
+
+/* Open path for an `obj` line: only a regular file.  It is opened without
+** blocking (O_NONBLOCK: opening a FIFO with no writer returns at once), then
+** fstat() tells what was opened, so nothing can swap a FIFO in between a check
+** and the open; a regular file gets its blocking mode back.  Returns the
+** stream; NULL with *errnum set, or with *errnum 0 and *kind naming what the
+** file is when it is not a regular file. */
+static FILE *open_regular(const char *path, int *errnum, const char **kind)
+{
+    struct stat st;
+    FILE *f;
+    int fd, fl;
+
+    errno = 0;
+    fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) {
+        *errnum = errno;
+        return NULL;
+    }
+    if (fstat(fd, &st) != 0) {
+        *errnum = errno != 0 ? errno : EIO;
+        close(fd);
+        return NULL;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        *errnum = 0;
+        *kind = file_kind(st.st_mode);
+        close(fd);
+        return NULL;
+    }
+    if ((fl = fcntl(fd, F_GETFL)) < 0 || fcntl(fd, F_SETFL, fl & ~O_NONBLOCK) < 0
+        || (f = fdopen(fd, "rb")) == NULL) {
+        *errnum = errno != 0 ? errno : EIO;
+        close(fd);
+        return NULL;
+    }
+    return f;
+}
+
+/* Read the first window of the stream f as src (name, OBJ mode obj, base as in
+** init_source; own: close f in close_stream), skipping a UTF-8 byte-order
+** mark.  Returns 0; -1 on a read error, errno value in *errnum (0 if none
+** was set); -2 when out of memory.  On error f is closed when own. */
+static int start_stream(source *src, FILE *f, int own, const char *name, int obj,
+                        size_t base, int *errnum)
 {
     int r;
 
     memset(src, 0, sizeof *src);
-    src->name = path;
+    src->name = name;
     src->obj = obj;
     src->base = base;
-    errno = 0;
-    src->f = fopen(path, "rb");
-    if (src->f == NULL) {
-        *errnum = errno;
-        return -1;
-    }
+    src->f = f;
+    src->own = own;
     src->buf = malloc(CHUNK);
     if (src->buf == NULL) {
-        fclose(src->f);
+        if (own)
+            fclose(f);
         return -2;
     }
     src->cap = CHUNK;
@@ -1017,7 +1066,8 @@ static int open_stream(source *src, const char *path, int obj, size_t base, int 
     r = fill(src);
     if (r < 0) {
         *errnum = src->errnum;
-        fclose(src->f);
+        if (own)
+            fclose(f);
         free(src->buf);
         return r;
     }
@@ -1026,9 +1076,28 @@ static int open_stream(source *src, const char *path, int obj, size_t base, int 
     return 0;
 }
 
+/* Open the file at path as a stream src (name path, OBJ mode obj, base as in
+** init_source) and read its first window, skipping a UTF-8 byte-order mark.
+** Returns 0 (close it with close_stream); -1 when it cannot be opened or
+** read, with the errno value in *errnum (0 if none was set); -2 when out of
+** memory. */
+static int open_stream(source *src, const char *path, int obj, size_t base, int *errnum)
+{
+    FILE *f;
+
+    errno = 0;
+    f = fopen(path, "rb");
+    if (f == NULL) {
+        *errnum = errno;
+        return -1;
+    }
+    return start_stream(src, f, 1, path, obj, base, errnum);
+}
+
 static void close_stream(source *src)
 {
-    fclose(src->f);
+    if (src->own)
+        fclose(src->f);
     free(src->buf);
 }
 
@@ -1056,10 +1125,28 @@ static void init_source(source *src, const char *name, const char *text,
     src->obj = obj;
     src->base = base;
     src->f = NULL;
+    src->own = 0;
+    src->included = 0;
     src->buf = NULL;
     src->cap = 0;
     src->eof = 1;                       /* all of it is in memory */
     src->errnum = 0;
+}
+
+/* Add path (malloc'd) to s->objs, which takes it.  Returns 0, or -1 when
+** out of memory (path is not taken). */
+static int remember_obj(pt_scene *s, char *path)
+{
+    char **more;
+
+    if (s->nobjs >= SIZE_MAX / sizeof *more - 1)
+        return -1;
+    more = realloc(s->objs, (s->nobjs + 1) * sizeof *more);
+    if (more == NULL)
+        return -1;
+    s->objs = more;
+    s->objs[s->nobjs++] = path;
+    return 0;
 }
 
 /* obj PATH: the rest of the line, trimmed, names an OBJ file relative to the
@@ -1070,8 +1157,10 @@ static int do_obj(parser *ps, source *src, const token *dir, cursor *args)
     const char *p = args->p, *e = args->end;
     size_t n, dirlen = ps->dirlen;
     char *path;
+    const char *kind = NULL;
     int errnum = 0, r;
     source sub;
+    FILE *f;
 
     while (p < e && (*p == ' ' || *p == '\t'))
         p++;
@@ -1088,15 +1177,24 @@ static int do_obj(parser *ps, source *src, const token *dir, cursor *args)
         memcpy(path, ps->dir, dirlen);
     memcpy(path + dirlen, p, n);
     path[dirlen + n] = '\0';
-    r = open_stream(&sub, path, 1, cur_model(ps)->nv, &errnum);
-    if (r == -1)
+    f = open_regular(path, &errnum, &kind);
+    if (f == NULL && errnum == 0)
+        r = fail(ps, src, p, "cannot read '%s': it is %s, not a regular file", path, kind);
+    else if (f == NULL)
+        r = fail(ps, src, p, "cannot read '%s': %s", path, strerror(errnum));
+    else if ((r = start_stream(&sub, f, 1, path, 1, cur_model(ps)->nv, &errnum)) == -1)
         r = fail(ps, src, p, "cannot read '%s': %s", path,
                  errnum != 0 ? strerror(errnum) : "read error");
     else if (r == -2)
         r = fail(ps, src, p, "out of memory");
     else {
+        sub.included = 1;
         r = parse_source(ps, &sub);     /* OBJ mode: never comes back here */
         close_stream(&sub);
+        if (r == 0 && remember_obj(ps->s, path) < 0)
+            r = fail(ps, src, p, "out of memory");
+        else if (r == 0)
+            path = NULL;                /* the scene owns it now */
     }
     free(path);
     return r;
@@ -1179,6 +1277,22 @@ static const char *const obj_unused[] = {
     "shadow_obj", "trace_obj", "ctech", "stech", "maplib", "usemap", "call", "csh",
 };
 
+/* Does t look like an OBJ keyword (1 to 16 lowercase letters, digits and
+** '_', a letter first)?  An `obj` line may name any file (`obj /etc/passwd`):
+** a message about a line of it quotes only such a word, never other text. */
+static int keyword_like(const token *t)
+{
+    size_t i;
+
+    if (t->n == 0 || t->n > 16 || t->p[0] < 'a' || t->p[0] > 'z')
+        return 0;
+    for (i = 1; i < t->n; i++)
+        if (!((t->p[i] >= 'a' && t->p[i] <= 'z') || (t->p[i] >= '0' && t->p[i] <= '9')
+              || t->p[i] == '_'))
+            return 0;
+    return 1;
+}
+
 /* One line of an OBJ file: v, l and f count; the other OBJ statements are
 ** ignored; anything else is not OBJ, and an error, as in a scene. */
 static int obj_line(parser *ps, source *src, cursor *line)
@@ -1198,6 +1312,9 @@ static int obj_line(parser *ps, source *src, cursor *line)
     for (i = 0; i < sizeof obj_unused / sizeof obj_unused[0]; i++)
         if (tok_is(&d, obj_unused[i]))
             return 0;
+    if (src->included && !keyword_like(&d))     /* not OBJ: say so, quote none of it */
+        return fail(ps, src, d.p, "not an OBJ statement (an OBJ file has v, l and f "
+                    "lines; is this an OBJ file?)");
     return fail(ps, src, d.p, "unknown OBJ statement '%s'", shown(d.p, d.n, q));
 }
 
@@ -1481,6 +1598,23 @@ int pt_scene_load(pt_scene *s, const char *path, char *err, size_t errlen)
     return r;
 }
 
+int pt_scene_read(pt_scene *s, FILE *f, const char *name, char *err, size_t errlen)
+{
+    int errnum = 0, r;
+    source src;
+
+    memset(s, 0, sizeof *s);
+    r = start_stream(&src, f, 0, name, 0, 0, &errnum);
+    if (r == -1)
+        return fail_at(err, errlen, name, 1, 1, "cannot read: %s",
+                       errnum != 0 ? strerror(errnum) : "read error");
+    if (r == -2)
+        return fail_at(err, errlen, name, 1, 1, "out of memory");
+    r = parse_scene(s, name, 0, &src, err, errlen);
+    close_stream(&src);
+    return r;
+}
+
 int pt_scene_parse(pt_scene *s, const char *name, const char *text, size_t len,
                    char *err, size_t errlen)
 {
@@ -1504,6 +1638,9 @@ void pt_scene_free(pt_scene *s)
         free(s->models[i].seg);
     }
     free(s->models);
+    for (i = 0; i < s->nobjs; i++)
+        free(s->objs[i]);
+    free(s->objs);
     free(s->path);
     memset(s, 0, sizeof *s);
 }

@@ -17,6 +17,7 @@
 #define PT_SCENE_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <stdint.h>
 #include "stages/pt_mat4.h"
 #include "core/pipelines.h"
@@ -59,6 +60,9 @@ typedef struct pt_scene {
     pt_vec3 obj_translate;       /* with from_obj: the translation chosen */
     pt_model *models;            /* in file order, owned */
     size_t nmodels, cap_models;  /* count and capacity of models */
+    char **objs;                 /* the paths `obj` lines read, in order, owned: an
+                                 ** output must not overwrite them */
+    size_t nobjs;                /* their count */
 } pt_scene;
 
 /* Load the scene in the file at path.  A name ending in ".obj" (any case) is read
@@ -67,6 +71,11 @@ typedef struct pt_scene {
 ** frees with pt_scene_free().  On error returns -1, writes one message
 ** "FILE:LINE:COL: error: ..." (no newline) to err and leaves *s empty. */
 int pt_scene_load(pt_scene *s, const char *path, char *err, size_t errlen);
+
+/* Like pt_scene_load() for the open stream f, read as a stream as a file is
+** (never whole) and not closed; name is used in messages and as s->path, and
+** `obj` paths are relative to the current directory.  For standard input. */
+int pt_scene_read(pt_scene *s, FILE *f, const char *name, char *err, size_t errlen);
 
 /* Like pt_scene_load() for scene text already in memory (len bytes, need not be
 ** NUL-terminated); name is used in messages and as s->path, and `obj` paths are

@@ -14,7 +14,7 @@
 **
 ** Each coordinate is computed in IEEE double with the Java expression's order of
 ** operations.  Where the formula has Math.sin or Math.cos, libm's result may
-** differ from Java's in the last bit (tests/test_shapes.c counts such cases).
+** differ from Java's in the last bit (tests/unit/test_shapes.c counts such cases).
 */
 #ifndef PT_SHAPES_H
 #define PT_SHAPES_H

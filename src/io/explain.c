@@ -688,7 +688,7 @@ static void next_screen(text *t, const pt_journey *j, const pt_vrec *r)
 
 /* Explain's row of each stage: its formula with the numbers put in, and
 ** what its result means for the stages after it.  A new stage adds its row
-** here (tests/test_explain.c fails until it has one); the viewport stage's
+** here (tests/unit/test_explain.c fails until it has one); the viewport stage's
 ** formula is its pipeline's (viewport_rows[]). */
 static const struct stage_row {
     coord_fn coord;              /* one coordinate's formula */

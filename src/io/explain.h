@@ -77,7 +77,7 @@ size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st);
 /* 1 when explain has every row stage st of pipeline pl asks for: its formula
 ** (for pl's own viewport stage, the one of pl's viewport row), what comes
 ** after it, and for pl's first stage what pl's second stage does with it.
-** tests/test_explain.c asks it for every stage of every pipeline, so that a
+** tests/unit/test_explain.c asks it for every stage of every pipeline, so that a
 ** new stage or pipeline without its rows fails there, not in a student's
 ** hands.  This function can't fail. */
 int pt_explain_has_rows(const pt_pipeline *pl, pt_stage st);

@@ -22,7 +22,7 @@
 ** ten, so the digits are the true shortest (17 at most).
 **
 ** Spelling, as the printf-and-strtod search this replaced spelled it (kept in
-** tests/test_numfmt.c as the oracle, byte for byte): integers below 1e15 digit by
+** tests/unit/test_numfmt.c as the oracle, byte for byte): integers below 1e15 digit by
 ** digit; else "%.*g" style, trailing zeros dropped, exponent form when the
 ** decimal exponent is < -4 or >= P, where P = 15 when the answer has at most 15
 ** digits (it is then x's 15-digit rounding: no two 15-digit decimals read back
@@ -502,7 +502,7 @@ static const double pow10_dbl[23] = {
 ** interval R: the shortest, and the only candidate of its length.  A miss
 ** (x needs 16 or 17 digits, or 15 and the product's rounding moved n)
 ** costs the three operations; the digits are shortest()'s either way
-** (tests/test_numfmt.c, num-4.9).  Where doubles may be evaluated in a
+** (tests/unit/test_numfmt.c, num-4.9).  Where doubles may be evaluated in a
 ** wider format (FLT_EVAL_METHOD != 0: x87) the division could round twice,
 ** so the path is left out there. */
 static int short_decimal(double x, uint64_t *d, int *e)
@@ -684,7 +684,7 @@ static int low_bits(uint64_t hi, uint64_t lo, int s)
 
 /* "%.*f" for finite |x| < 1e15, 0 <= prec <= 17, exactly as glibc's printf
 ** rounds it in the default rounding mode, which pipetrace never changes: to
-** nearest, ties to even (0.125 -> "0.12", 2.5 -> "2"; tests/test_numfmt.c
+** nearest, ties to even (0.125 -> "0.12", 2.5 -> "2"; tests/unit/test_numfmt.c
 ** compares the two byte for byte).  |x| = c / 2^s (integer c < 2^53), s > 0,
 ** splits into
 **     ip = floor(|x|) = c >> s  (< 1e15)   and   f / 2^s,  f = c mod 2^s,

@@ -13,7 +13,7 @@
 ** The rasterizer's lines follow the course's DDA as it prints it: the rounded
 ** endpoints, the slopes of position and colour, then one line per step, each
 ** step's pixel from the viewport stage (pt_pixel2viewport), as src/core/raster.c
-** takes it.  tests/kraft.sh ties the two: the pixels of the log are the
+** takes it.  tests/formats/kraft.sh ties the two: the pixels of the log are the
 ** pixels pt_run() draws, for every reference scene.
 */
 #include <math.h>

@@ -16,7 +16,7 @@
 ** The right formulas are not written again here: a student build replaces a
 ** stage's .c file (make STAGE_pixel=FILE.c), so they are the reference copy
 ** of the stages that every build holds (ptref_*, pt_ref_stage(),
-** stages/pt_ref.h).  tests/test_catalogue.c checks, on every reference case,
+** stages/pt_ref.h).  tests/unit/test_catalogue.c checks, on every reference case,
 ** that they give the stage's record bit for bit.  The mistakes round and test
 ** "inside" with stages/pt_round.h, which a student does not replace; a mistake
 ** that is the right formula with wrong inputs (w and h swapped) calls the

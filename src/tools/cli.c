@@ -3,6 +3,7 @@
 ** See LICENSE for copyright and license.
 */
 #define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,43 +14,25 @@
 #include "io/outfile.h"
 #include "core/pipetrace.h"
 
-/* Standard input as a scene named "<stdin>": read whole, up to the chunk
-** that holds a NUL byte (the parser reports the byte; stopping keeps a
-** stream of NULs from eating all memory).  Returns 0, or -1 with err set. */
-static int load_stdin(pt_scene *s, char *err, size_t errlen)
+int pt_cli_stdout(const char *cmd, int rc)
 {
-    char *text = NULL, *more;
-    size_t len = 0, cap = 0, got;
-    int rc;
+    int e;
 
-    memset(s, 0, sizeof *s);
-    do {
-        if (cap - len < 65536) {
-            more = cap < ((size_t)-1) / 2 ? realloc(text, cap = cap ? 2 * cap : 65536) : NULL;
-            if (!more) {
-                free(text);
-                snprintf(err, errlen, "<stdin>:1:1: error: out of memory");
-                return -1;
-            }
-            text = more;
-        }
-        got = fread(text + len, 1, cap - len, stdin);
-        len += got;
-    } while (got > 0 && !memchr(text + len - got, '\0', got));
-    if (ferror(stdin)) {
-        free(text);
-        snprintf(err, errlen, "<stdin>:1:1: error: cannot read standard input");
-        return -1;
-    }
-    rc = pt_scene_parse(s, "<stdin>", text, len, err, errlen);
-    free(text);
-    return rc;
+    errno = 0;
+    if (fflush(stdout) == 0 && !ferror(stdout)) return rc;
+    e = errno;
+    if (e == 0 && fputc('\n', stdout) != EOF && fflush(stdout) != 0)
+        e = errno;                  /* the reason, from one more try */
+    if (rc == PT_EXIT_INPUT) return rc;     /* already told */
+    fprintf(stderr, "pipetrace%s%s: cannot write to standard output: %s\n", cmd ? " " : "",
+            cmd ? cmd : "", e != 0 ? strerror(e) : "write error");
+    return PT_EXIT_INPUT;
 }
 
 int pt_cli_load(pt_scene *s, const char *path)
 {
     char err[PT_ERRLEN];
-    int rc = path && !strcmp(path, "-") ? load_stdin(s, err, sizeof err)
+    int rc = path && !strcmp(path, "-") ? pt_scene_read(s, stdin, "<stdin>", err, sizeof err)
            : path ? pt_scene_load(s, path, err, sizeof err)
                   : pt_scene_parse(s, "<builtin>", pt_builtin_scene,
                                    strlen(pt_builtin_scene), err, sizeof err);
@@ -129,15 +112,33 @@ int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out)
     uint64_t v = 0;
     const char *p = text;
 
+    int big = 0;
+
     if (*p < '0' || *p > '9') return -1;
     for (; *p >= '0' && *p <= '9'; p++) {
         unsigned d = (unsigned)(*p - '0');
-        if (v > (UINT64_MAX - d) / 10) return -1;   /* would overflow */
-        v = v * 10 + d;
+        if (big || v > (UINT64_MAX - d) / 10) big = 1;  /* would overflow: too large */
+        else v = v * 10 + d;
     }
-    if (*p || v < lo || v > hi) return -1;
+    if (*p) return -1;
+    if (big || v < lo || v > hi) return -2;
     *out = v;
     return 0;
+}
+
+int pt_cli_vertex(const char *cmd, const char *val, uint64_t *out)
+{
+    int r = pt_cli_count(val, 1, PT_MAX_VERTEX, out);
+
+    if (r == 0) return 0;
+    if (r == -2 && strspn(val, "0") == strlen(val))
+        return pt_cli_usage(cmd, "--vertex %s is out of range: vertices are numbered from 1", val);
+    if (r == -2)
+        return pt_cli_usage(cmd, "--vertex %.40s%s is out of range: vertex numbers go from 1 "
+                            "to %u (indices are 32-bit)", val, strlen(val) > 40 ? "..." : "",
+                            PT_MAX_VERTEX);
+    return pt_cli_usage(cmd, "--vertex takes a vertex number from 1 to %u, not '%.40s%s'",
+                        PT_MAX_VERTEX, val, strlen(val) > 40 ? "..." : "");
 }
 
 int pt_cli_value(const char *cmd, int argc, char **argv, int *k, const char **val)
@@ -156,8 +157,8 @@ int pt_cli_arg(pt_cli_args *a, int argc, char **argv, int *k)
     if (a->takes_vertex && (!strcmp(o, "--vertex") || !strcmp(o, "--model"))) {
         if ((rc = pt_cli_value(a->cmd, argc, argv, k, &val)) >= 0) return rc;
         if (!strcmp(o, "--model")) a->model = val;
-        else if (pt_cli_count(val, 1, 4294967295u, &a->vertex) != 0)
-            return pt_cli_usage(a->cmd, "--vertex takes a vertex number >= 1, not %s", val);
+        else if (pt_cli_vertex(a->cmd, val, &a->vertex) != 0)
+            return PT_EXIT_USAGE;
         return -1;
     }
     if (o[0] == '-' && o[1] != '\0') return pt_cli_unknown(a->cmd, a->usage, o);

@@ -31,6 +31,14 @@
 ** MESSAGE", "Try 'pipetrace --help'.") and return PT_EXIT_USAGE. */
 int pt_cli_usage(const char *cmd, const char *fmt, ...) PT_PRINTF_LIKE(2, 3);
 
+/* What every command ends with: flush standard output and return rc, the
+** command's exit status; when something written to standard output was lost
+** (`pipetrace stages > /dev/full`), print "pipetrace CMD: cannot write to
+** standard output: REASON" (cmd NULL: the render command) and return
+** PT_EXIT_INPUT; when rc is PT_EXIT_INPUT already the command has said what
+** went wrong, and nothing more is printed. */
+int pt_cli_stdout(const char *cmd, int rc);
+
 /* Load the scene at path ("-": standard input, named "<stdin>" in messages
 ** and the trace), or the built-in scene when path is NULL.  Returns 0,
 ** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */
@@ -79,9 +87,18 @@ int pt_cli_arg(pt_cli_args *a, int argc, char **argv, int *k);
 ** or PT_EXIT_USAGE after printing "option needs a value" when it is last. */
 int pt_cli_value(const char *cmd, int argc, char **argv, int *k, const char **val);
 
-/* A whole decimal number in [lo, hi] from text into *out.  Returns 0, or -1
-** (no message) for anything else: signs, spaces, overflow.  Can't fail. */
+/* A whole decimal number in [lo, hi] from text into *out.  Returns 0; -1
+** (no message) when text is not digits only (signs, spaces); -2 when it is
+** but the number is outside [lo, hi] (however many digits).  Can't fail. */
 int pt_cli_count(const char *text, uint64_t lo, uint64_t hi, uint64_t *out);
+
+/* The largest vertex number: indices are 32-bit (docs/limits.md). */
+#define PT_MAX_VERTEX 4294967295u
+
+/* The value of --vertex, 1 .. PT_MAX_VERTEX, into *out.  Returns 0, or
+** PT_EXIT_USAGE after printing why not (out of range, or not a number, with
+** the range) as pt_cli_usage() does for cmd. */
+int pt_cli_vertex(const char *cmd, const char *val, uint64_t *out);
 
 /* The word of text nearest to arg, into out (n bytes): when arg starts with
 ** '-', the options ("--name") text mentions, else its words of letters.

@@ -18,7 +18,12 @@
 **
 ** Java limits a method to 64 KiB of bytecode and a class to 65535 constants,
 ** so vertices and segments go, CHUNK at a time, into small nested classes of
-** their own (each class file has its own constants).
+** their own (each class file has its own constants), and each model is built
+** by a nested class of its own (M1, M2, ...), which main calls: main grows by
+** a call a model, each model's class by a call a chunk.  Past MAX_MODELS
+** models or MAX_PARTS chunks in one model the program would not compile, and
+** is refused.  A string constant holds at most 65535 bytes of modified UTF-8:
+** a longer model name is joined at run time from pieces (String.join).
 */
 #include <stdio.h>
 #include <string.h>
@@ -29,6 +34,9 @@
 #include "core/pipetrace.h"
 
 #define CHUNK 400                /* addVertex or addPrimitive calls a class */
+#define MAX_MODELS 10000         /* main: 4 bytes of code, ~3 constants a model */
+#define MAX_PARTS 8000           /* a model's class: ~4 bytes, ~4 constants a chunk */
+#define PIECE 8000               /* characters of a long name a string constant */
 
 static const char usage[] =
 "usage: pipetrace export java [SCENE] [-o FILE.java] [--pixels]\n"
@@ -62,6 +70,31 @@ static const char *const taken[] = {
     "String", "Object", "System",
 };
 
+/* Is name[0..n) a class the program makes itself: MK, MKVerticesI or
+** MKSegmentsI (K, I digits)?  The outer class may not share its name. */
+static int generated(const char *name, size_t n)
+{
+    size_t i = 1, d;
+
+    if (n < 2 || name[0] != 'M')
+        return 0;
+    for (d = i; i < n && name[i] >= '0' && name[i] <= '9'; i++)
+        ;
+    if (i == d)
+        return 0;
+    if (i == n)
+        return 1;                               /* MK */
+    if (n - i > 8 && memcmp(name + i, "Vertices", 8) == 0)
+        i += 8;
+    else if (n - i > 8 && memcmp(name + i, "Segments", 8) == 0)
+        i += 8;
+    else
+        return 0;
+    for (d = i; i < n && name[i] >= '0' && name[i] <= '9'; i++)
+        ;
+    return i > d && i == n;
+}
+
 /* The class name for path: its base name without ".java", when that is a Java
 ** identifier (ASCII letters, digits, '_' and '$', not starting with a digit)
 ** that is not taken.  Returns its length (name starts at *name), or 0. */
@@ -85,6 +118,8 @@ static size_t class_name(const char *path, const char **name)
     for (i = 0; i < sizeof taken / sizeof taken[0]; i++)
         if (strlen(taken[i]) == n && memcmp(taken[i], base, n) == 0)
             return 0;
+    if (generated(base, n))
+        return 0;
     *name = base;
     return n;
 }
@@ -100,20 +135,19 @@ static void put_double(FILE *f, double x)
     fprintf(f, "%s%s", buf, strpbrk(buf, ".e") ? "" : ".0");
 }
 
-/* name as a Java string literal: printable ASCII as it is (names hold no '"'
-** or '\\'), everything else as \uXXXX escapes of its UTF-16 code units. */
-static void put_string(FILE *f, const char *name)
+/* The characters p[0..end) (whole UTF-8 characters) as a Java string literal:
+** printable ASCII as it is (names hold no '"' or '\\'), everything else as
+** \\uXXXX escapes of its UTF-16 code units. */
+static void put_literal(FILE *f, const unsigned char *p, const unsigned char *end)
 {
-    const unsigned char *p = (const unsigned char *)name;
-
     fputc('"', f);
-    while (*p) {
+    while (p < end) {
         unsigned long c = *p;
         int more = c >= 0xf0 ? 3 : c >= 0xe0 ? 2 : c >= 0xc0 ? 1 : 0;
 
         if (more)                /* the scene parser checked the UTF-8 */
             c &= 0x3fu >> more;
-        for (p++; more > 0 && *p; more--, p++)
+        for (p++; more > 0 && p < end; more--, p++)
             c = (c << 6) | (*p & 0x3fu);
         if (c >= 0x20 && c < 0x7f)
             fputc((int)c, f);
@@ -124,6 +158,34 @@ static void put_string(FILE *f, const char *name)
                     0xdc00 + ((c - 0x10000) & 0x3ff));
     }
     fputc('"', f);
+}
+
+/* name as a Java string: one literal when its modified UTF-8 (a class file's
+** string constants: 1 to 3 bytes a UTF-16 unit, 6 for a character past
+** U+FFFF, which UTF-8 writes in 4) fits in a constant's 65535 bytes, else
+** String.join("", ...) of literals of PIECE characters (at most 6 * PIECE
+** bytes each), which is no constant expression, so javac does not fold it. */
+static void put_string(FILE *f, const char *name)
+{
+    const unsigned char *p = (const unsigned char *)name, *end = p + strlen(name), *q;
+    size_t bytes = 0, k;
+
+    for (q = p; q < end; q++)
+        bytes += (*q & 0xc0) == 0x80 ? 0 : *q >= 0xf0 ? 6 : *q >= 0xe0 ? 3 : *q >= 0xc0 ? 2 : 1;
+    if (bytes <= 65535) {
+        put_literal(f, p, end);
+        return;
+    }
+    fputs("String.join(\"\"", f);
+    while (p < end) {
+        for (q = p, k = 0; q < end && k < PIECE; k++)
+            for (q++; q < end && (*q & 0xc0) == 0x80; q++)
+                ;
+        fputs(",\n         ", f);
+        put_literal(f, p, q);
+        p = q;
+    }
+    fputc(')', f);
 }
 
 /* The nested classes that fill model number k (mK): its vertices and its
@@ -186,26 +248,22 @@ static void put_java(FILE *f, const pt_scene *s, const char *cls, size_t ncls,
           "import renderer.pipeline.Pipeline;\n"
           "import renderer.pipeline.Rasterize;\n\n", f);
     fprintf(f, "public class %.*s\n{\n", (int)ncls, cls);
-    for (k = 0; k < s->nmodels; k++)
-        put_model_parts(f, &s->models[k], k + 1);
-    fputs("   public static void main(String[] args)\n   {\n", f);
-    fprintf(f, "      final Scene scene = new Scene(\"\", Camera.%s());\n",
-            s->perspective ? "projPerspective" : "projOrtho");
-    fputs("      scene.debug = true;\n", f);
-    fprintf(f, "      Rasterize.debug = %s;\n\n", pixels ? "true" : "false");
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
 
-        fprintf(f, "      final Model m%zu = new Model(", k + 1);
+        put_model_parts(f, m, k + 1);
+        fprintf(f, "   private static final class M%zu\n   {\n"
+                "      static void add(final Scene scene)\n      {\n", k + 1);
+        fputs("         final Model m = new Model(", f);
         put_string(f, m->name);
         fputs(");\n", f);
         for (i = 0; i < (m->nv + CHUNK - 1) / CHUNK; i++)
-            fprintf(f, "      M%zuVertices%zu.into(m%zu);\n", k + 1, i, k + 1);
+            fprintf(f, "         M%zuVertices%zu.into(m);\n", k + 1, i);
         for (i = 0; i < (m->nseg + CHUNK - 1) / CHUNK; i++)
-            fprintf(f, "      M%zuSegments%zu.into(m%zu);\n", k + 1, i, k + 1);
-        fprintf(f, "      ModelShading.setColor(m%zu, new Color(%d, %d, %d));\n", k + 1,
+            fprintf(f, "         M%zuSegments%zu.into(m);\n", k + 1, i);
+        fprintf(f, "         ModelShading.setColor(m, new Color(%d, %d, %d));\n",
                 m->color[0], m->color[1], m->color[2]);
-        fprintf(f, "      scene.addPosition(new Position(m%zu, ", k + 1);
+        fputs("         scene.addPosition(new Position(m, ", f);
         put_string(f, m->name);
         fputs(", new Vector(", f);
         put_double(f, m->translate.x);
@@ -213,8 +271,17 @@ static void put_java(FILE *f, const pt_scene *s, const char *cls, size_t ncls,
         put_double(f, m->translate.y);
         fputs(", ", f);
         put_double(f, m->translate.z);
-        fputs(")));\n\n", f);
+        fputs(")));\n      }\n   }\n\n", f);
     }
+    fputs("   public static void main(String[] args)\n   {\n", f);
+    fprintf(f, "      final Scene scene = new Scene(\"\", Camera.%s());\n",
+            s->perspective ? "projPerspective" : "projOrtho");
+    fputs("      scene.debug = true;\n", f);
+    fprintf(f, "      Rasterize.debug = %s;\n\n", pixels ? "true" : "false");
+    for (k = 0; k < s->nmodels; k++)
+        fprintf(f, "      M%zu.add(scene);\n", k + 1);
+    if (s->nmodels > 0)
+        fputs("\n", f);
     fprintf(f, "      final FrameBuffer fb = new FrameBuffer(%d, %d, new Color(%d, %d, %d));\n",
             s->fb_w, s->fb_h, s->background[0], s->background[1], s->background[2]);
     fprintf(f, "      fb.setViewport(%d, %d, %d, %d);\n", s->vp_x, s->vp_y, s->vp_w, s->vp_h);
@@ -223,6 +290,54 @@ static void put_java(FILE *f, const pt_scene *s, const char *cls, size_t ncls,
           "         fb.dumpFB2File(args[0]);\n"
           "   }\n"
           "}\n", f);
+}
+
+/* Refuse a scene whose program javac would refuse: more than MAX_MODELS
+** models, or a model of more than MAX_PARTS chunks.  Returns 0, or
+** PT_EXIT_INPUT after saying which. */
+static int too_large(const pt_scene *s)
+{
+    size_t k;
+
+    if (s->nmodels > MAX_MODELS) {
+        fprintf(stderr, "pipetrace export: %s has %zu models; a Java program of more than "
+                "%d would not compile (docs/limits.md)\n", s->path, s->nmodels, MAX_MODELS);
+        return PT_EXIT_INPUT;
+    }
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+
+        if ((m->nv + CHUNK - 1) / CHUNK + (m->nseg + CHUNK - 1) / CHUNK > MAX_PARTS) {
+            fprintf(stderr, "pipetrace export: model %zu of %s has %zu vertices and %zu "
+                    "segments; a Java program takes at most %d of both together in one "
+                    "model (docs/limits.md)\n", k + 1, s->path, m->nv, m->nseg,
+                    MAX_PARTS * CHUNK);
+            return PT_EXIT_INPUT;
+        }
+    }
+    return 0;
+}
+
+/* Refuse -o out when it is the scene (path; "-": what standard input reads)
+** or an OBJ file the scene read, by device and inode.  Returns 0, or
+** PT_EXIT_INPUT after saying which. */
+static int over_input(const pt_scene *s, const char *path, const char *out)
+{
+    const char *opt[1] = {"-o"}, *outs[1];
+    size_t k;
+
+    if (out == NULL)
+        return 0;
+    outs[0] = out;
+    if (pt_cli_outputs(path, outs, opt, 1) != 0)
+        return PT_EXIT_INPUT;
+    for (k = 0; k < s->nobjs; k++)
+        if (pt_outfile_same(out, s->objs[k])) {
+            fprintf(stderr, "%s: error: -o names '%s', an OBJ file the scene reads; "
+                    "writing it would destroy it\n", out, s->objs[k]);
+            return PT_EXIT_INPUT;
+        }
+    return 0;
 }
 
 int pt_cmd_export(int argc, char **argv)
@@ -269,6 +384,10 @@ int pt_cmd_export(int argc, char **argv)
                 pt_scene_camera_word(&s));
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
+    }
+    if ((rc = too_large(&s)) != 0 || (rc = over_input(&s, path, out)) != 0) {
+        pt_scene_free(&s);
+        return rc;
     }
     if (pt_outfile_open(&o, out ? out : "-", err, sizeof err) != 0) {
         fprintf(stderr, "pipetrace export: %s\n", err);

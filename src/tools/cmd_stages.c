@@ -74,5 +74,5 @@ int pt_cmd_stages(int argc, char **argv)
         put_stage(classic && matrix ? "both" : classic ? "classic" : "matrix",
                   &pt_stage_infos[st], want);
     }
-    return fflush(stdout) == 0 && !ferror(stdout) ? PT_EXIT_OK : PT_EXIT_INPUT;
+    return PT_EXIT_OK;              /* main() checks that standard output took it all */
 }

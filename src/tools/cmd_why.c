@@ -130,7 +130,7 @@ static pt_pix fb_to_vp(const pt_scene *s, int64_t x_fb, int64_t y_fb)
 ** give whole pixels only):
 **   x = x_ul + x_pp - 1        (x_vp = round(x_pp) - 1,  x_fb = x_ul + x_vp)
 **   y = y_ul + h - y_pp        (y_vp = h - round(y_pp),  y_fb = y_ul + y_vp)
-** tests/teach.sh (teach-5.29) ties it to the stages: in a viewport off the
+** tests/teach/teach.sh (teach-5.29) ties it to the stages: in a viewport off the
 ** framebuffer's corner, a point's distance to the centre of its own
 ** framebuffer pixel (the trace's record) is its rounding's,
 ** hypot(x_pp - round(x_pp), y_pp - round(y_pp)). */

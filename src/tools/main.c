@@ -8,6 +8,8 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE          /* sbrk, madvise: heap_in_huge_pages() */
 #define _GNU_SOURCE              /* sched_getaffinity: threads_wanted() */
+#include <errno.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -159,8 +161,7 @@ static int parse_args(cli *c, int argc, char **argv)
             else return usage_error("unknown format '%s' (text, jsonl, csv, kraft, "
                                     "kraft-pixels)", val);
         } else if (!strcmp(a, "--vertex")) {
-            if (pt_cli_count(val, 1, 4294967295u, &c->opt.vertex) != 0)
-                return usage_error("--vertex takes a vertex number >= 1, not '%s'", val);
+            if (pt_cli_vertex(NULL, val, &c->opt.vertex) != 0) return PT_EXIT_USAGE;
         } else if (!strcmp(a, "--precision")) {
             uint64_t p;
             if (pt_cli_count(val, 0, 17, &p) != 0)
@@ -272,7 +273,8 @@ static int threads_wanted(const cli *c, const pt_scene *s)
     return cpus >= 2 ? 2 : 1;
 }
 
-int main(int argc, char **argv)
+/* The render command, or the subcommand argv[1] names. */
+static int run(int argc, char **argv)
 {
     cli c;
     pt_scene s;
@@ -286,7 +288,6 @@ int main(int argc, char **argv)
     char err[PT_ERRLEN];
     int rc, kraft;
 
-    heap_in_huge_pages();
     for (k = 0; argc > 1 && k < NCOMMANDS; k++)
         if (strcmp(argv[1], commands[k].name) == 0) return commands[k].run(argc - 1, argv + 1);
     rc = parse_args(&c, argc, argv);
@@ -373,4 +374,28 @@ int main(int argc, char **argv)
     pt_plan_free(&plan);
     pt_scene_free(&s);
     return rc ? PT_EXIT_INPUT : 0;
+}
+
+/* Is name a subcommand? */
+static int command(const char *name)
+{
+    size_t k;
+
+    for (k = 0; k < NCOMMANDS; k++)
+        if (strcmp(name, commands[k].name) == 0) return 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    int rc;
+
+    /* A closed pipe ends the run at its first write, quietly, as SIGPIPE does
+    ** by default, even when the caller ignored the signal (which a child
+    ** inherits): else a whole trace would be formatted into a dead pipe,
+    ** each write failing with EPIPE (tests/cli/hostile.sh hostile-6). */
+    signal(SIGPIPE, SIG_DFL);
+    heap_in_huge_pages();
+    rc = run(argc, argv);
+    return pt_cli_stdout(argc > 1 && command(argv[1]) ? argv[1] : NULL, rc);
 }

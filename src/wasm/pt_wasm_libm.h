@@ -9,7 +9,7 @@
 ** instructions (f64.abs, f64.floor, f64.sqrt), exact or correctly rounded as
 ** libm's; fmax, ilogb, fmod, frexp and ldexp are written here with C99's
 ** meaning, and each is exact or correctly rounded, so there is nothing to
-** round differently: tests/test_wasm_libm.c compares them with the host's
+** round differently: tests/unit/test_wasm_libm.c compares them with the host's
 ** libm bit for bit.
 **
 ** sin and cos are not: glibc's are not correctly rounded, and no sin written

@@ -73,6 +73,44 @@ echo "l $(seq -s ' ' 1 1000)" >> "$tmp/big.scene"
 run export java "$tmp/big.scene" -o "$tmp/Big.java"
 check "export-1.19 1000 vertices go into classes of at most 400 calls" \
     [ "$(grep -c 'private static final class M1Vertices' "$tmp/Big.java")" -eq 3 ]
+# issue 31: outputs over inputs, names javac refuses
+cp "$tmp/odd.scene" "$tmp/S.java"
+run export java "$tmp/S.java" -o "$tmp/S.java"
+check "export-1.20 -o naming the scene: refused, exit 2" [ "$rc" -eq 2 ]
+check "export-1.21 ... the scene kept" cmp -s "$tmp/S.java" "$tmp/odd.scene"
+ln -s S.java "$tmp/L.java"
+run export java "$tmp/L.java" -o "$tmp/S.java"
+check "export-1.22 ... through a symbolic link too" [ "$rc" -eq 2 ]
+printf 'v 0 0 -2\nv 1 1 -2\nl 1 2\n' > "$tmp/Part.java"
+printf 'model m\nobj Part.java\n' > "$tmp/inc.scene"
+cp "$tmp/Part.java" "$tmp/part.keep"
+run export java "$tmp/inc.scene" -o "$tmp/Part.java"
+check "export-1.23 -o naming an OBJ file the scene reads: refused, exit 2" [ "$rc" -eq 2 ]
+check "export-1.24 ... saying so, the OBJ kept" \
+    sh -c "grep -q 'an OBJ file the scene reads' '$tmp/err' && cmp -s '$tmp/Part.java' '$tmp/part.keep'"
+for c in M1Vertices0 M1 M12Segments3; do
+    run export java "$tmp/odd.scene" -o "$tmp/$c.java"
+    check "export-1.25 -o $c.java, a class the program makes: a usage error" [ "$rc" -eq 1 ]
+done
+run export java "$tmp/odd.scene" -o "$tmp/M1Vertex.java"
+check "export-1.26 ... M1Vertex.java is not one" [ "$rc" -eq 0 ]
+i=0; while [ $i -lt 800 ]; do echo "model m$i"; echo "v $i 0 -2"; echo "v $i 1 -2"; echo "l 1 2"
+    i=$((i + 1)); done > "$tmp/many.scene"
+run export java "$tmp/many.scene" -o "$tmp/Many.java"
+check "export-1.27 800 models: written, a class each" \
+    [ "$rc" -eq 0 -a "$(grep -c 'static void add(final Scene scene)' "$tmp/Many.java")" -eq 800 ]
+awk 'BEGIN { printf "model "; for (i = 0; i < 70000; i++) printf "n"; print ""
+             printf "v 0 0 -1\nv 1 1 -1\nl 1 2\nmodel "
+             for (i = 0; i < 12000; i++) printf "\360\235\204\236"; print ""
+             printf "v 0 0 -1\nv 1 1 -1\nl 1 2\n" }' > "$tmp/longname.scene"
+run export java "$tmp/longname.scene" -o "$tmp/LongName.java"
+check "export-1.28 a 70,000-byte model name: joined from pieces" \
+    [ "$rc" -eq 0 -a "$(grep -c 'String.join' "$tmp/LongName.java")" -eq 4 ]
+i=0; while [ $i -lt 10001 ]; do echo "model m$i"; i=$((i + 1)); done > "$tmp/toomany.scene"
+run export java "$tmp/toomany.scene" -o "$tmp/TooMany.java"
+check "export-1.29 10,001 models: refused, exit 2, nothing written" \
+    [ "$rc" -eq 2 -a ! -e "$tmp/TooMany.java" ]
+check "export-1.30 ... saying the cap" grep -q 'more than 10000 would not compile' "$tmp/err"
 
 # ----------------------------------------------------------------- export-2
 if command -v javac > /dev/null 2>&1 && command -v java > /dev/null 2>&1; then
@@ -221,6 +259,15 @@ WANT
     cmp -s "$tmp/got" "$tmp/want" || diff "$tmp/want" "$tmp/got" | head -10
     javac -encoding UTF-8 -d "$tmp/classes" -cp "$tmp/classes" "$tmp/Big.java" > "$tmp/javac" 2>&1
     check "export-2.3 1000 vertices compile" [ $? -eq 0 ]
+    javac -encoding UTF-8 -d "$tmp/classes" -cp "$tmp/classes" "$tmp/Many.java" > "$tmp/javac" 2>&1
+    check "export-2.4 800 models compile" [ $? -eq 0 ]
+    grep -m3 error "$tmp/javac"
+    javac -encoding UTF-8 -d "$tmp/classes" -cp "$tmp/classes" "$tmp/LongName.java" > "$tmp/javac" 2>&1
+    check "export-2.5 model names of 70,000 bytes and 12,000 characters past U+FFFF compile" [ $? -eq 0 ]
+    grep -m3 error "$tmp/javac"
+    (cd "$tmp" && java -cp classes LongName > "$tmp/got" 2>&1)
+    check "export-2.6 ... and reach the renderer whole" \
+        [ "$(awk '$1 == "model" && $2 ~ /^n+$/ && length($2) == 70000' "$tmp/got" | wc -l)" -eq 1 ]
 else
     echo "skipped: export-2 (the program compiles against a stub of the API): no javac and java"
 fi

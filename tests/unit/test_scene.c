@@ -582,6 +582,31 @@ static void test_viewport(void)
         "t.scene:1:10: error:", "out of range");
 }
 
+/* An obj file of text that is no OBJ: the error is at its 1:1 and quotes
+** none of the text (the file could be /etc/passwd or a key). */
+static void obj_secret(const char *id, const char *text)
+{
+    FILE *f = fopen("/tmp/pt_test_scene_secret.obj", "w");
+    pt_scene s;
+    int r, ok;
+
+    if (f != NULL) {
+        fputs(text, f);
+        fclose(f);
+    }
+    err[0] = '\0';
+    r = parse(&s, "model m\nobj /tmp/pt_test_scene_secret.obj\n");
+    ok = r == -1 && strncmp(err, "/tmp/pt_test_scene_secret.obj:1:1: error: not an OBJ "
+                            "statement", 61) == 0
+        && strstr(err, "secret-first") == NULL && strstr(err, "secretsecret") == NULL
+        && strstr(err, "Word") == NULL && strstr(err, "root") == NULL;
+    PT_CHECK(id, ok);
+    if (!ok)
+        printf("    got %d: %s\n", r, err);
+    pt_scene_free(&s);
+    remove("/tmp/pt_test_scene_secret.obj");
+}
+
 static void test_obj_lines(void)
 {
     bad("scene-3.52 obj without a path", "model m\nobj\n",
@@ -593,8 +618,19 @@ static void test_obj_lines(void)
         "t.scene:2:6: error:", "cannot read 'tests/data/no_such.obj'");
     bad("scene-3.55 obj path is a directory", "model m\nobj tests/data\n",
         "t.scene:2:5: error:", "cannot read 'tests/data'");
-    bad("scene-3.56 endless obj file: reading stops at the first NUL byte",
-        "model m\nobj /dev/zero\n", "/dev/zero:1:1: error:", "NUL byte");
+    /* 2025 issue 31: `obj /dev/zero` was read until its first NUL, and an
+    ** obj FIFO blocked forever; obj reads regular files only (tests/cli/cli.sh
+    ** cli-7.1 has the FIFO). */
+    bad("scene-3.56 obj of a character device (/dev/zero) is refused at once",
+        "model m\nobj /dev/zero\n", "t.scene:2:5: error:",
+        "cannot read '/dev/zero': it is a character device, not a regular file");
+    bad("scene-3.57 ... and so is /dev/null", "model m\nobj /dev/null\n",
+        "t.scene:2:5: error:", "it is a character device, not a regular file");
+    /* 2025 issue 31: `obj /etc/passwd` printed its first line in the error. */
+    obj_secret("scene-3.58 a line of an obj file that is not OBJ is not quoted",
+               "root:x:0:0:secret-first-line\n");
+    obj_secret("scene-3.59 ... nor is a long word", "secretsecretsecretsecret\n");
+    obj_secret("scene-3.60 ... nor a word of other characters", "p4ss-Word!\n");
 }
 
 /* ------------------------------------------------------------ scene-4 */
@@ -692,9 +728,13 @@ static void test_files(void)
              && seg_is(&s.models[0], 2, 3, 1));
     pt_scene_free(&s);
 
-    r = pt_scene_load(&s, "tests/data/absolute.scene", err, sizeof err);
-    PT_CHECK("scene-5.8 absolute obj path used as is", r == 0 && s.models[0].nv == 0);
+    r = write_file("/tmp/pt_test_scene_abs.obj", "v 0 0 0\nv 1 1 1\nl 1 2\n");
+    r = r == 0 ? parse(&s, "model m\nobj /tmp/pt_test_scene_abs.obj\n") : -1;
+    PT_CHECK("scene-5.8 absolute obj path used as is", r == 0 && s.models[0].nv == 2);
     pt_scene_free(&s);
+    remove("/tmp/pt_test_scene_abs.obj");
+    bad_load("scene-5.8b ... /dev/null: not a regular file", "tests/data/absolute.scene",
+             "tests/data/absolute.scene:2:5: error:", "not a regular file");
 
     bad_load("scene-5.9 missing scene file", "tests/data/no_such.scene",
              "tests/data/no_such.scene:1:1: error: cannot read file:", "No such file");

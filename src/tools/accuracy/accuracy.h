@@ -12,7 +12,7 @@
 **                  reference copy, ptref_*, in a student build too),
 **                  src/core/clip.c and src/core/raster.c themselves
 **                  (acc_double.c), so their values are the reference
-**                  build's trace's (tests/test_accuracy.c checks it).
+**                  build's trace's (tests/unit/test_accuracy.c checks it).
 **   double-double  the reference: a value is hi + lo, two doubles, 106 bits
 **                  (dd.h).  Two-sum and two-product (with fma(), exactly
 **                  rounded) make add, mul and div accurate to about 2^-104

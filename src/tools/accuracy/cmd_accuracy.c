@@ -434,7 +434,7 @@ static void print_choices(const study *st)
 ** stage is a point at its own time.  Labels are placed by boxes: a label's
 ** box is its text's width at LABEL_EM of the font size a character, and it
 ** goes at the first place beside its point where its box meets no other
-** label, no point and stays inside the plot (tests/accuracy.sh checks the
+** label, no point and stays inside the plot (tests/cli/accuracy.sh checks the
 ** boxes of every text of the SVG).
 */
 

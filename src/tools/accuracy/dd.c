@@ -15,7 +15,7 @@
 */
 
 /* 2001/1000 = hi + lo, hi the double 2.001, lo = 2001/1000 - hi rounded:
-** within 2^-110 of 2001/1000 (tests/test_accuracy.c measures it). */
+** within 2^-110 of 2001/1000 (tests/unit/test_accuracy.c measures it). */
 const pt_dd pt_dd_2001 = { 0x1.0020c49ba5e35p+1, 0x1.fbe76c8b43958p-54 };
 
 static pt_dd two_sum(double a, double b)       /* a + b = hi + lo exactly */

@@ -211,7 +211,7 @@ static pt_pix fb_to_vp(const pt_thdr *hd, int64_t x_fb, int64_t y_fb)
 **   x_pp = x_vp + 1            (x_vp = round(x_pp) - 1)
 **   y_pp = h - y_vp            (y_vp = h - round(y_pp))
 ** Tied to the stage twice: a rasterizer mistake is named only when the replay
-** from these endpoints gives EXPECTED's own pixels, and tests/diff.sh names
+** from these endpoints gives EXPECTED's own pixels, and tests/teach/diff.sh names
 ** one on a viewport off the framebuffer's corner, h != H (diff-1.7a). */
 static void vp_to_pp(int64_t x_vp, int64_t y_vp, int h, int64_t ends[2])
 {

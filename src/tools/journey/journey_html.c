@@ -20,7 +20,7 @@
 **   #after            what the next stage will do with the result
 ** The URL fragment chooses what is shown first: #v=N&m=MODEL&stage=K (K is
 ** 1..7 or a stage name; m defaults to the model first shown).
-** tests/journey_clicks.html drives the page through these ids from outside.
+** tests/journey/journey_clicks.html drives the page through these ids from outside.
 */
 #include <stdlib.h>
 #include <string.h>

@@ -24,7 +24,7 @@
 ** (regular or bold) or 0.603 em for DejaVu Sans Mono, the fonts the panels
 ** ask for first;
 ** height from the font's ascent (0.928 em) to its descent (0.236 em), the box
-** a browser gives a line of text.  tests/journey_fontwidths.py checks the
+** a browser gives a line of text.  tests/journey/journey_fontwidths.py checks the
 ** table against the font files where they are installed.
 */
 #ifndef PT_JPLACE_H

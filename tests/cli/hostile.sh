@@ -1,0 +1,99 @@
+#!/bin/sh
+# tests/cli/hostile.sh -- input that is out to hurt: endless, blocking, secret, dead pipes
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/cli/hostile.sh PIPETRACE.  Run from the repository root.  Issue
+# 31 (a class folder is hostile input): each check here failed before its fix.
+# Nothing is timed: an endless input runs under a memory cap (ulimit -v) and
+# `timeout` only stops a hang, which is then a failure.
+exe=${1:-build/pipetrace}
+. tests/lib/testlib.sh
+
+# ---- obj PATH reads regular files only, at once
+mkfifo "$tmp/fifo"
+printf 'model m\nobj %s\n' "$tmp/fifo" > "$tmp/fifo.scene"
+timeout 20 "$exe" "$tmp/fifo.scene" > "$tmp/out" 2> "$tmp/err" < /dev/null; rc=$?
+check "hostile-1.1 obj of a FIFO with no writer is refused at once (exit $rc, not a hang)" test "$rc" = 2
+check "hostile-1.2 ... with one message that says why" \
+    test "$(cat "$tmp/err")" = "$tmp/fifo.scene:2:5: error: cannot read '$tmp/fifo': it is a FIFO, not a regular file"
+printf 'model m\nobj /etc/passwd\n' > "$tmp/passwd.scene"
+run "$tmp/passwd.scene"
+check "hostile-1.3 obj /etc/passwd: exit 2 at its line 1" grep -q '^/etc/passwd:1:1: error: not an OBJ statement' "$tmp/err"
+check "hostile-1.4 ... and none of its text in the message" sh -c "! grep -q root '$tmp/err'"
+
+# ---- standard input is a stream, as a file is
+# (each line of `yes` is valid until its end never comes, or the data fills memory)
+lim() {     # lim KIB COMMAND: run COMMAND under a memory cap, at most 60 s
+    ( ulimit -v "$1"; timeout 60 sh -c "$2" ) > "$tmp/out" 2> "$tmp/err"; rc=$?
+}
+lim 400000 "tr '\\000' ' ' < /dev/zero | '$exe' -"
+check "hostile-2.1 an endless line on standard input ends (exit $rc) under a 400 MB cap" test "$rc" = 2
+check "hostile-2.2 ... with one message: out of memory" test "$(cat "$tmp/err")" = "<stdin>:1:1: error: out of memory"
+lim 400000 "{ echo 'model m'; yes 'v 1 2 3'; } | '$exe' -"
+check "hostile-2.3 endless valid vertices on standard input end (exit $rc) under a 400 MB cap" test "$rc" = 2
+check "hostile-2.4 ... with one message: out of memory" grep -q '^<stdin>:[0-9]*:[0-9]*: error: out of memory$' "$tmp/err"
+lim 400000 "yes | '$exe' -"
+check "hostile-2.5 yes | pipetrace - stops at its first line (exit $rc)" test "$rc" = 2
+check "hostile-2.6 ... with its error" test "$(cat "$tmp/err")" = "<stdin>:1:1: error: unknown directive 'y'"
+lim 400000 "'$exe' - < /dev/zero"
+check "hostile-2.7 pipetrace - < /dev/zero: a NUL byte (exit $rc)" grep -q '^<stdin>:1:1: error: NUL byte$' "$tmp/err"
+printf 'model m\nv 0 0 -1\nv 1 1 -2\nl 1 2\n' > "$tmp/head.scene"
+lim 400000 "{ cat '$tmp/head.scene'; yes '# a comment of sixty bytes, repeated to make a large scene.' | head -c 600000000; } | '$exe' - --trace '$tmp/t.trace'"
+check "hostile-2.8 600 MB of scene on standard input is read under a 400 MB cap (exit $rc)" test "$rc" = 0
+check "hostile-2.9 ... and its model is traced" grep -q "segments 1 " "$tmp/t.trace"
+
+# ---- a write error on standard output is said, with its reason
+for c in stages shapes "stages --help" "shapes --help" --help "step --help" "why --help" \
+         "quiz --help" "journey --help" "accuracy --help" "diff --help" "export --help"; do
+    name=${c%--help}; name=${name% }; name=${name:+ $name}
+    $exe $c > /dev/full 2> "$tmp/err"; rc=$?
+    check "hostile-4.1 pipetrace $c > /dev/full: exit 2 (got $rc)" test "$rc" = 2
+    check "hostile-4.2 pipetrace $c > /dev/full: one line says why" \
+        test "$(cat "$tmp/err")" = "pipetrace$name: cannot write to standard output: No space left on device"
+done
+$exe docs/examples/triangle.scene > /dev/full 2> "$tmp/err"; rc=$?
+check "hostile-4.3 the render command's trace to a full standard output: exit 2 (got $rc)" test "$rc" = 2
+check "hostile-4.4 ... with the reason" grep -q 'No space left on device' "$tmp/err"
+
+# ---- --vertex N: a number past 2^32 - 1 is out of range, and says so
+run --vertex 4294967296
+check "hostile-5.1 --vertex 4294967296: a usage error" test "$rc" = 1
+check "hostile-5.2 ... out of range, with the range" \
+    grep -q "^pipetrace: --vertex 4294967296 is out of range: vertex numbers go from 1 to 4294967295" "$tmp/err"
+run step --vertex 18446744073709551616
+check "hostile-5.3 step --vertex 2^64: out of range too" \
+    grep -q "^pipetrace step: --vertex 18446744073709551616 is out of range: vertex numbers go from 1 to 4294967295" "$tmp/err"
+run step --vertex 0
+check "hostile-5.4 step --vertex 0: out of range, numbered from 1" \
+    grep -q "^pipetrace step: --vertex 0 is out of range: vertices are numbered from 1" "$tmp/err"
+run --vertex x1
+check "hostile-5.5 --vertex x1: not a number, with the range" \
+    grep -q "^pipetrace: --vertex takes a vertex number from 1 to 4294967295, not 'x1'" "$tmp/err"
+
+# ---- a closed pipe ends the run at its first write, even when SIGPIPE was ignored
+# A scene whose jsonl trace is some 19 GB (2,000 diagonals of a 16384 x 16384
+# framebuffer): formatting it all into a dead pipe takes minutes, so the run
+# must end on its own long before `timeout` (which would make it 124) and by
+# SIGPIPE (status 141), with nothing on standard error.
+{ printf 'framebuffer 16384 16384\nmodel m\nv -0.99 -0.99 -1\nv 0.99 0.99 -1\n'
+  yes 'l 1 2' | head -n 2000; } > "$tmp/huge.scene"
+{ (trap '' PIPE; timeout 60 "$exe" "$tmp/huge.scene" --format jsonl --threads 1 2> "$tmp/err"
+   echo $? > "$tmp/rc"); } | head -c 100 > "$tmp/head"
+rc=$(cat "$tmp/rc")
+check "hostile-6.1 a trace piped into head -c 100, SIGPIPE ignored: ends by SIGPIPE (status $rc)" test "$rc" = 141
+check "hostile-6.2 ... quietly" test ! -s "$tmp/err"
+check "hostile-6.3 ... after head had its 100 bytes" test "$(wc -c < "$tmp/head")" -eq 100
+{ (trap '' PIPE; timeout 60 "$exe" "$tmp/huge.scene" --format jsonl 2> "$tmp/err"
+   echo $? > "$tmp/rc"); } | head -c 100 > /dev/null
+rc=$(cat "$tmp/rc")
+check "hostile-6.4 ... and so with two threads (status $rc)" test "$rc" = 141
+if command -v strace > /dev/null 2>&1; then
+    { (trap '' PIPE; strace -f -qq -e trace=write -o "$tmp/strace" timeout 60 "$exe" \
+        "$tmp/huge.scene" --format jsonl --threads 1 2> /dev/null); } | head -c 100 > /dev/null
+    n=$(grep -c 'write(1,' "$tmp/strace")
+    check "hostile-6.5 ... after at most two writes to the pipe (strace counts $n)" test "$n" -le 2
+else
+    echo "  skipped: strace is not installed (hostile-6.5)"
+fi
+
+report
