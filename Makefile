@@ -18,7 +18,7 @@
 
 CC      ?= cc
 # Warnings (gcc and clang must both be silent):
-WARN    = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
+WARN    = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes -Wswitch-enum \
           -Wmissing-prototypes -Wdouble-promotion -Wundef
 # IEEE double in the formulas' order: no fused multiply-add, no fast-math.
 FPFLAGS = -ffp-contract=off

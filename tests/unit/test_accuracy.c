@@ -518,7 +518,7 @@ static void check_scene(const char *path, size_t *nvertices, size_t *nsegments,
     size_t k, v, q, nv = 0;
 
     if (pt_scene_load(&s, path, err, sizeof err) != 0) return;
-    if ((s.pipe == PT_PIPE_MATRIX)) { pt_scene_free(&s); check_matrix_scene(path); return; }
+    if (s.pipe == PT_PIPE_MATRIX) { pt_scene_free(&s); check_matrix_scene(path); return; }
     pt_options_default(&o);
     o.all_stages = 1;
     o.trace_raster = 0;
@@ -951,7 +951,7 @@ static void test_work(void)
                     pt_acc_work_free(w);
                 }
             }
-            if ((s.pipe == PT_PIPE_MATRIX)) matrix++; else classic++;
+            if (s.pipe == PT_PIPE_MATRIX) matrix++; else classic++;
             pt_acc_run_free(&r);
         }
         pt_scene_free(&s);

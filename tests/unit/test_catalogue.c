@@ -182,7 +182,7 @@ static void hand_checks(void)
     {
         static const double xs[] = {0.49999999999999994, -2.5, 2.5, -0.5, 1e300, -1e300,
                                     4611686018427387904.0, 4611686018427387903.0 / 2, 0.0,
-                                    NAN, INFINITY};
+                                    (double)NAN, (double)INFINITY};
         size_t i, j, bad = 0, one = 0;
         for (i = 0; i < sizeof xs / sizeof xs[0]; i++)
             for (j = 0; j < sizeof xs / sizeof xs[0]; j++) {

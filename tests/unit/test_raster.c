@@ -524,7 +524,7 @@ static void test_steps(void)
              t->color[0] == (float)pow(0.5, 1 / 2.2));
 
     /* skipped: a setup that says so, no step */
-    r = walk_into(t, 4, 4, NAN, 1.0, 3.0, 1.0, grey, grey);
+    r = walk_into(t, 4, 4, (double)NAN, 1.0, 3.0, 1.0, grey, grey);
     PT_CHECK("steps-5.1 skipped: one setup, kind skipped, no step",
              r == PT_RASTER_SKIPPED && t->setups == 1 && t->su.kind == PT_RASTER_SKIPPED &&
              t->steps == 0);
