@@ -20,10 +20,16 @@ typedef struct pt_fb {
 ** student's stage can put it there); the colour written there and the share
 ** of the pixel the segment covers (1: all of it; an anti-aliasing rasterizer
 ** writes a pair of pixels whose coverages add up to 1). */
-typedef struct pt_fb_pixel {
-    int64_t x_fb, y_fb, idx;
+typedef struct pt_fb_paint {
     unsigned char rgb[3];        /* the colour written */
     float coverage;              /* 0 .. 1 */
+} pt_fb_paint;
+
+typedef struct pt_fb_pixel {
+    int64_t x_fb, y_fb, idx;
+    pt_fb_paint paint;           /* what was written there (one 8-byte copy
+                                 ** for a rasterizer that writes a segment's
+                                 ** pixels alike) */
 } pt_fb_pixel;
 
 /* Allocate a w x h framebuffer filled with bg.  Returns 0, or -1 when out of

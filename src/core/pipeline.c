@@ -525,8 +525,8 @@ static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
     if (rc->l && rc->l->pixels) {
         pt_fb_pixel px;
         px.x_fb = f.x; px.y_fb = f.y; px.idx = idx;
-        memcpy(px.rgb, rc->m->color, sizeof px.rgb);
-        px.coverage = 1.0f;
+        memcpy(px.paint.rgb, rc->m->color, sizeof px.paint.rgb);
+        px.paint.coverage = 1.0f;
         rc->l->pixels(rc->l->ud, rc->m, rc->seg, &px, 1);
     }
     /* a student's framebuffer or index stage may name no pixel of the array

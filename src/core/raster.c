@@ -390,6 +390,7 @@ typedef struct draw_ctx {
     int x_ul, y_ul;              /* the viewport's corner */
     int64_t npix;                /* W * H: the pixel array's length */
     unsigned char color[3];
+    pt_fb_paint paint;           /* what a listener is told: color, coverage 1 */
     uint64_t pixels;             /* pixels drawn */
     telling *tell;               /* with a listener: its pixels, else NULL */
 } draw_ctx;
@@ -409,8 +410,7 @@ static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x
         telling *t = c->tell;
         pt_fb_pixel *q = &t->px[t->n];
         q->x_fb = f.x; q->y_fb = f.y; q->idx = idx;
-        q->rgb[0] = c->color[0]; q->rgb[1] = c->color[1]; q->rgb[2] = c->color[2];
-        q->coverage = 1.0f;
+        q->paint = c->paint;
         if (++t->n == PT_RASTER_RUN) tell(t);
     }
     if ((!listened || c->fb.rgb) && idx >= 0 && idx < c->npix)
@@ -443,6 +443,8 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
     c.y_ul = im->y_ul;
     c.npix = (int64_t)c.fb.w * c.fb.h;
     c.color[0] = im->color[0]; c.color[1] = im->color[1]; c.color[2] = im->color[2];
+    memcpy(c.paint.rgb, c.color, sizeof c.paint.rgb);  /* the segment's colour, */
+    c.paint.coverage = 1.0f;                            /* all of each pixel */
     c.pixels = 0;
     c.tell = NULL;
     if (im->pixel) {

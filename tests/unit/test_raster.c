@@ -327,10 +327,10 @@ static void px_record(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pix
     (void)seg;
     for (k = 0; k < n; k++) {
         c->n++;
-        c->full += px[k].coverage == 1.0f;
-        if (memcmp(px[k].rgb, m->color, 3) != 0) c->full = 0;   /* not its model's */
+        c->full += px[k].paint.coverage == 1.0f;
+        if (memcmp(px[k].paint.rgb, m->color, 3) != 0) c->full = 0;   /* not its model's */
         if (px[k].idx >= 0 && px[k].idx < (int64_t)c->fb->w * c->fb->h)
-            memcpy(c->seen + 3 * px[k].idx, px[k].rgb, 3);
+            memcpy(c->seen + 3 * px[k].idx, px[k].paint.rgb, 3);
     }
 }
 
