@@ -26,6 +26,7 @@ static void base_rect(const pt_jmodel *jm, pt_stage st, double b[4])
 {
     const pt_stage_params *p = &jm->par;
 
+    b[0] = 0; b[1] = 0; b[2] = p->W; b[3] = p->H;    /* the framebuffer's */
     switch (st) {
     case PT_STAGE_IMAGE: b[0] = -1; b[1] = -1; b[2] = 1; b[3] = 1; break;
     case PT_STAGE_PIXEL: b[0] = 0.5; b[1] = 0.5; b[2] = p->w + 0.5; b[3] = p->h + 0.5; break;
@@ -40,7 +41,7 @@ static void base_rect(const pt_jmodel *jm, pt_stage st, double b[4])
     case PT_STAGE_CVV:
     case PT_STAGE_NDC:
     case PT_STAGE_SCREEN:
-        b[0] = 0; b[1] = 0; b[2] = p->W; b[3] = p->H; break;
+        break;
     }
 }
 
