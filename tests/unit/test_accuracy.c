@@ -965,6 +965,37 @@ static void test_work(void)
     PT_CHECK(descr, badagain == 0 && nagain > n);
 }
 
+/* pt_acc_vp_of() is the reference viewport stage on whole numbers, and its
+** formula written out beyond 2^53 gives what exact integers give. */
+static void test_vp_of(void)
+{
+    static const int64_t e53 = (int64_t)1 << 53;
+    static const int64_t xs[] = {1, 0, -1, 2, 320, 321, 12345, -98765, ((int64_t)1 << 53) - 1,
+                                 -(((int64_t)1 << 53) - 1)};
+    pt_scene s;
+    size_t i, j;
+    int same = 1, beyond, none;
+
+    memset(&s, 0, sizeof s);
+    s.vp_w = 320;
+    s.vp_h = 240;
+    for (i = 0; i < sizeof xs / sizeof xs[0]; i++)
+        for (j = 0; j < sizeof xs / sizeof xs[0]; j++) {
+            pt_vec2 pp = {(double)xs[i], (double)xs[j]};
+            pt_pix a = pt_acc_vp_of(&s, 1, xs[i], xs[j]);
+            pt_pix b = ptref_pixel2viewport(pp, s.vp_w, s.vp_h, NULL);
+            same &= a.ok == b.ok && a.x == b.x && a.y == b.y;
+        }
+    PT_CHECK("acc-9.1 accuracy's viewport pixel is the reference stage's on whole numbers", same);
+    {
+        pt_pix a = pt_acc_vp_of(&s, 1, e53 + 1, -e53 - 3);
+        beyond = a.ok && a.x == e53 && a.y == 240 + e53 + 3;
+    }
+    PT_CHECK("acc-9.2 ... and beyond 2^53, exact: x_vp = rx - 1, y_vp = h - ry", beyond);
+    none = !pt_acc_vp_of(&s, 0, 5, 5).ok;
+    PT_CHECK("acc-9.3 ... and no pixel where round() gave none", none);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -976,6 +1007,7 @@ int main(int argc, char **argv)
     dirs[2] = "docs/examples";
     test_dd();
     test_dd_matrix();
+    test_vp_of();
     for (k = 0; k < 3; k++) check_dir(dirs[k], &nscenes, &nv, &ns, &bv, &bs);
     snprintf(descr, sizeof descr, "acc-3.1 the double journey is the stages' for all "
              "%zu vertices of %zu scenes", nv, nscenes);

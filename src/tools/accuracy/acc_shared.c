@@ -28,13 +28,19 @@ pt_pix pt_acc_fb_of(const pt_scene *s, pt_pix vp)
 
 pt_pix pt_acc_vp_of(const pt_scene *s, int ok, int64_t rx, int64_t ry)
 {
+    const int64_t exact = (int64_t)1 << 53;         /* doubles hold these */
     pt_pix vp = {0, 0, 0};
 
-    if (ok) {
-        vp.x = rx - 1;                              /* x_vp = round(x_pp) - 1 */
-        vp.y = s->vp_h - ry;                        /* y_vp = h - round(y_pp) */
-        vp.ok = 1;
+    if (!ok) return vp;
+    if (rx > -exact && rx < exact && ry > -exact && ry < exact) {
+        pt_vec2 pp;
+        pp.x = (double)rx;
+        pp.y = (double)ry;
+        return ptref_pixel2viewport(pp, s->vp_w, s->vp_h, NULL);
     }
+    vp.x = rx - 1;                                  /* x_vp = round(x_pp) - 1 */
+    vp.y = s->vp_h - ry;                            /* y_vp = h - round(y_pp) */
+    vp.ok = 1;
     return vp;
 }
 
@@ -42,11 +48,13 @@ void pt_acc_mtail_pp(const pt_scene *s, pt_acc_mtail *t, int exact)
 {
     pt_pix vp = t->vp;
 
-    if (vp.ok) {
-        t->pp[0] = exact ? pt_dd_from_i64(vp.x + 1)               /* x_pp = x_vp + 1 */
-                         : pt_acc_dd((double)(vp.x + 1));
-        t->pp[1] = exact ? pt_dd_from_i64(s->vp_h - vp.y)         /* y_pp = h - y_vp */
-                         : pt_acc_dd((double)(s->vp_h - vp.y));
+    if (vp.ok && !exact) {                  /* the stage's own way back, m7 */
+        pt_vec2 q = pt_viewport2pixelplane(vp, s->vp_h);
+        t->pp[0] = pt_acc_dd(q.x);
+        t->pp[1] = pt_acc_dd(q.y);
+    } else if (vp.ok) {                     /* the same in whole numbers, exact */
+        t->pp[0] = pt_dd_from_i64(vp.x + 1);                      /* x_pp = x_vp + 1 */
+        t->pp[1] = pt_dd_from_i64(s->vp_h - vp.y);                /* y_pp = h - y_vp */
     } else {
         t->pp[0] = t->pp[1] = pt_acc_dd((double)NAN);
     }

@@ -107,7 +107,11 @@ static inline pt_dd pt_acc_dd(double v)
 }
 
 /* Classic camera: the viewport pixel of the pixel (rx, ry) that round() gave
-** (ok == 0: none): x_vp = rx - 1, y_vp = h - ry.  This function can't fail. */
+** in another arithmetic (ok == 0: none): x_vp = rx - 1, y_vp = h - ry, by the
+** reference viewport stage, handed rx and ry as the doubles they are (a
+** whole number rounds to itself); beyond 2^53, where a double no longer
+** holds every whole number, by the formula written out (unit test
+** acc-9.x ties the two).  This function can't fail. */
 pt_pix pt_acc_vp_of(const pt_scene *s, int ok, int64_t rx, int64_t ry);
 
 /* x_fb = x_ul + x_vp, y_fb = y_ul + y_vp (s5_viewport2fb); none for none.
