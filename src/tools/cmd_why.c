@@ -4,17 +4,22 @@
 **
 **   pipetrace why [SCENE] X_FB Y_FB [--model NAME]
 **
-** Every segment of the scene is rasterized exactly as the renderer does it
-** (pt_raster_segment, with callbacks of our own), so "lit" means "the renderer
-** writes this pixel".  Each segment that lit it is shown with its two
-** vertices' journeys, model to index.  A pixel that nothing lit gets the
-** segments that come nearest, measured from the pixel's centre to the segment
-** between its two pixel-plane endpoints (before rounding), mapped to
+** One pt_run() of the scene, every model traced, gives each vertex's journey
+** and then each segment's pixel, clip and skip records, in file order: "lit"
+** means "the renderer writes this pixel", because these are the pixels it
+** writes.  Nothing walks a line again, and nothing keeps the pixels: per
+** segment, only the few numbers printed below (pixels and steps counted, the
+** pixel drawn nearest, whether a clipped step landed on the pixel), and a
+** degenerate segment is the one whose records add up to a single step.  Each
+** segment that lit it is shown with its two vertices' journeys, model to
+** index.  A pixel that nothing lit gets the segments that come nearest,
+** measured from the pixel's centre to the segment between its two
+** pixel-plane endpoints (before rounding), mapped to
 ** framebuffer coordinates: the logical pixel (x_pp, y_pp) is the point
 ** (x_ul + x_pp - 1, y_ul + h - y_pp) of the framebuffer, whose pixel centres
 ** sit at integer coordinates.  For each of them, the stage where the pixel was
 ** lost; the first that applies wins (the table below).  Whether a clipped step
-** landed on the pixel comes from the rasterizer's clip runs, which give only a
+** landed on the pixel comes from the run's clip records, which give only a
 ** run's first and last step: it is exact when the run pins the step down (one
 ** row or column, or one diagonal, or the pixel off the run's range), and
 ** otherwise decided by the segment between the rounded endpoints (the line the
@@ -140,14 +145,12 @@ static void pp_in_fb(const pt_scene *s, const pt_vrec *pp, double *x, double *y)
     *y = s->vp_y + s->vp_h - pp->y;                 /* y_ul + h - y_pp */
 }
 
-/* ===== rasterizing a segment ===== */
+/* ===== what the run drew of a segment ===== */
 
 /* Pixels written: is it the target, is it the nearest so far? */
-static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
+static void on_pixel(seg_eval *e, int64_t tx, int64_t ty, int64_t x_vp, int64_t y_vp)
 {
-    look *lk = ud;
-    seg_eval *e = lk->e;
-    int64_t dx = x_vp - lk->tx, dy = y_vp - lk->ty;
+    int64_t dx = x_vp - tx, dy = y_vp - ty;
 
     e->npix++;
     if (dx == 0 && dy == 0) e->lit = 1;
@@ -155,7 +158,7 @@ static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
         e->have_near = 1;
         e->near_x = x_vp; e->near_y = y_vp;
     } else {
-        int64_t ex = e->near_x - lk->tx, ey = e->near_y - lk->ty;
+        int64_t ex = e->near_x - tx, ey = e->near_y - ty;
         uint64_t c = cheb(dx, dy), ce = cheb(ex, ey);
         if (c < ce || (c == ce && dx * dx + dy * dy < ex * ex + ey * ey)) {
             e->near_x = x_vp; e->near_y = y_vp;
@@ -184,15 +187,15 @@ static int run_holds(uint64_t count, pt_pix f, pt_pix l, int64_t tx, int64_t ty)
     return -1;
 }
 
-static void on_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
+static void on_clip(seg_eval *e, int64_t tx, int64_t ty, uint64_t count, pt_pix first,
+                    pt_pix last)
 {
-    look *lk = ud;
-    int h = run_holds(count, first, last, lk->tx, lk->ty);
+    int h = run_holds(count, first, last, tx, ty);
 
-    lk->e->nclip += count;
-    lk->e->clip_x = first.x;
-    lk->e->clip_y = first.y;
-    if (h == 1 || (h == -1 && lk->e->clip_hit == 0)) lk->e->clip_hit = h;
+    e->nclip += count;
+    e->clip_x = first.x;
+    e->clip_y = first.y;
+    if (h == 1 || (h == -1 && e->clip_hit == 0)) e->clip_hit = h;
 }
 
 /* Distance from (px, py) to the segment a-b; +inf when not finite. */
@@ -210,7 +213,7 @@ static double seg_dist(double px, double py, double ax, double ay, double bx, do
 }
 
 /* The journeys of segment si of model mi's two endpoints, from js[mi]
-** (pt_run_journeys()). */
+** (one journey per vertex, from the run). */
 static void seg_journeys(const pt_scene *s, pt_journey *const *js, size_t mi, size_t si,
                          pt_journey *a, pt_journey *b)
 {
@@ -220,39 +223,31 @@ static void seg_journeys(const pt_scene *s, pt_journey *const *js, size_t mi, si
     *b = js[mi][m->seg[si].b];
 }
 
-/* Rasterize segment si of model mi and measure it against (X, Y). */
-static void evaluate(const pt_scene *s, pt_journey *const *js, size_t mi, size_t si,
-                     int64_t X, int64_t Y, seg_eval *e)
+/* Segment e (e->mi, e->si), whose pixel, clip and skip records the run gave
+** (e->npix, e->nclip, e->result == PT_RASTER_SKIPPED), measured against
+** (X, Y): what the DDA made of it and how far the segment passes.  Every step
+** of a segment drawn is a pixel or a clipped step, so one step in all is the
+** one step of a degenerate segment (two ends rounded apart make two steps or
+** more). */
+static void measure(const pt_scene *s, pt_journey *const *js, int64_t X, int64_t Y,
+                    seg_eval *e)
 {
     pt_journey a, b;
     const pt_vrec *pa, *pb;
-    pt_vec2 p0, p1;
     pt_pix t = fb_to_vp(s, X, Y);
     double ax, ay, bx, by;
-    pt_raster_out out;
-    look lk;
 
-    memset(e, 0, sizeof *e);
-    e->mi = mi;
-    e->si = si;
-    seg_journeys(s, js, mi, si, &a, &b);
+    seg_journeys(s, js, e->mi, e->si, &a, &b);
     pa = &a.rec[PT_STAGE_PIXEL];
     pb = &b.rec[PT_STAGE_PIXEL];
-    p0.x = pa->x; p0.y = pa->y;
-    p1.x = pb->x; p1.y = pb->y;
-    lk.tx = t.x;
-    lk.ty = t.y;
-    lk.e = e;
-    out.pixel = on_pixel;
-    out.clip = on_clip;
-    out.ud = &lk;
-    e->result = pt_raster_segment(p0, p1, s->vp_w, s->vp_h, pt_pixel2viewport, &out);
+    if (e->result != PT_RASTER_SKIPPED)
+        e->result = e->npix + e->nclip == 1 ? PT_RASTER_DEGENERATE : PT_RASTER_DRAWN;
     pp_in_fb(s, pa, &ax, &ay);
     pp_in_fb(s, pb, &bx, &by);
     e->dist = seg_dist((double)X, (double)Y, ax, ay, bx, by);
     e->dist_drawn = HUGE_VAL;
     if (e->result != PT_RASTER_SKIPPED)                     /* rounded: viewport pixels */
-        e->dist_drawn = seg_dist((double)lk.tx, (double)lk.ty,
+        e->dist_drawn = seg_dist((double)t.x, (double)t.y,
                                  (double)a.rec[PT_STAGE_VIEWPORT].ix,
                                  (double)a.rec[PT_STAGE_VIEWPORT].iy,
                                  (double)b.rec[PT_STAGE_VIEWPORT].ix,
@@ -392,7 +387,7 @@ static void keep_nearest(seg_eval best[NEAREST], int *n, const seg_eval *e)
 typedef struct why_ctx {
     const pt_scene *s;
     pt_journey **js;             /* js[mi][v]: model mi's vertex v + 1's journey,
-                                 ** from pt_run_journeys(); owned */
+                                 ** from the run; owned */
     const pt_model *sel;         /* --model's model, or NULL: every model counts */
     long long X, Y;              /* the pixel (x_fb, y_fb) */
     int inside;                  /* 1: it lies inside the viewport */
@@ -405,6 +400,9 @@ typedef struct why_ctx {
     int nbest;
     seg_eval best_sel;           /* --model: the nearest of its own segments */
     int have_sel;
+    seg_eval e;                  /* the segment whose records the run gives now */
+    int64_t tx, ty;              /* the pixel (x_vp, y_vp) */
+    pt_pix ul;                   /* the framebuffer pixel of viewport pixel (0, 0) */
 } why_ctx;
 
 /* "lost at model: its model left out" for a segment of a model --model left
@@ -469,41 +467,129 @@ static void show_no_segments(const why_ctx *w)
     }
 }
 
-/* Evaluate every segment against the pixel: print those that lit it (of the
-** counted models), keep the nearest of the others. */
-static void scan(why_ctx *w)
+/* Segment w->e, its records all heard: print it when it lit the pixel (of
+** a counted model), else keep it if it is among the nearest. */
+static void seg_done(why_ctx *w)
 {
     const pt_scene *s = w->s;
-    size_t mi, si;
-    seg_eval e;
+    seg_eval *e = &w->e;
+    size_t mi = e->mi, si = e->si;
+    int left_out = w->sel && &s->models[mi] != w->sel;
     pt_journey ja, jb;
 
-    for (mi = 0; mi < s->nmodels; mi++) {
-        int left_out = w->sel && &s->models[mi] != w->sel;
-        for (si = 0; si < s->models[mi].nseg; si++) {
-            evaluate(s, w->js, mi, si, w->X, w->Y, &e);
-            if (e.lit) {                    /* drawing order: the last one sets the color */
-                w->drawn = 1;
-                w->last_mi = mi;
-                w->last_si = si;
-            }
-            if (e.lit && !left_out) {
-                if (w->nlit++ == 0) fprintf(term.f, "lit by:\n");
-                show_segment(s, w->js, &e, "", &ja, &jb);
-                continue;
-            }
-            if (e.lit && w->nleft < 10) {
-                w->left_mi[w->nleft] = mi;
-                w->left_si[w->nleft] = si;
-            }
-            if (e.lit) w->nleft++;
-            keep_nearest(w->best, &w->nbest, &e);
-            if (w->sel && !left_out && (!w->have_sel || nearer(&e, &w->best_sel))) {
-                w->best_sel = e;
-                w->have_sel = 1;
-            }
-        }
+    measure(s, w->js, w->X, w->Y, e);
+    if (e->lit) {                           /* drawing order: the last one sets the color */
+        w->drawn = 1;
+        w->last_mi = mi;
+        w->last_si = si;
     }
+    if (e->lit && !left_out) {
+        if (w->nlit++ == 0) fprintf(term.f, "lit by:\n");
+        show_segment(s, w->js, e, "", &ja, &jb);
+        return;
+    }
+    if (e->lit && w->nleft < 10) {
+        w->left_mi[w->nleft] = mi;
+        w->left_si[w->nleft] = si;
+    }
+    if (e->lit) w->nleft++;
+    keep_nearest(w->best, &w->nbest, e);
+    if (w->sel && !left_out && (!w->have_sel || nearer(e, &w->best_sel))) {
+        w->best_sel = *e;
+        w->have_sel = 1;
+    }
+}
+
+/* Make w->e segment (mi, si), or the first segment after it in file order
+** ((s->nmodels, 0): none is left), with no record heard yet. */
+static void seg_start(why_ctx *w, size_t mi, size_t si)
+{
+    const pt_scene *s = w->s;
+
+    while (mi < s->nmodels && si >= s->models[mi].nseg) { mi++; si = 0; }
+    memset(&w->e, 0, sizeof w->e);
+    w->e.mi = mi;
+    w->e.si = si;
+}
+
+/* The run's records come segment by segment in file order: those of segment
+** seg (1-based) of model m come now, so every segment before it is done
+** (models_end: all are). */
+static void seg_reach(why_ctx *w, size_t mi, uint64_t seg)
+{
+    while (w->e.mi < mi || (w->e.mi == mi && w->e.si + 1 < seg)) {
+        seg_done(w);
+        seg_start(w, w->e.mi, w->e.si + 1);
+    }
+}
+
+static size_t model_index(const why_ctx *w, const pt_model *m)
+{
+    return (size_t)(m - w->s->models);
+}
+
+static void why_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
+{
+    why_ctx *w = ud;
+
+    if (v >= 1 && v <= m->nv) w->js[model_index(w, m)][v - 1] = *j;
+}
+
+static void why_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                       size_t n)
+{
+    why_ctx *w = ud;
+    size_t k;
+
+    seg_reach(w, model_index(w, m), seg);
+    for (k = 0; k < n; k++)                 /* back to viewport pixels */
+        on_pixel(&w->e, w->tx, w->ty, px[k].x_fb - w->ul.x, px[k].y_fb - w->ul.y);
+}
+
+static void why_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count, pt_pix first,
+                     pt_pix last)
+{
+    why_ctx *w = ud;
+
+    seg_reach(w, model_index(w, m), seg);
+    on_clip(&w->e, w->tx, w->ty, count, first, last);
+}
+
+static void why_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *why)
+{
+    why_ctx *w = ud;
+
+    (void)v; (void)why;
+    seg_reach(w, model_index(w, m), seg);
+    w->e.result = PT_RASTER_SKIPPED;
+}
+
+/* One pt_run() of the scene, every model traced and every vertex (a model
+** without segments too: where its vertices would land): keep each vertex's
+** journey, then measure each segment against the pixel from its pixel, clip
+** and skip records, printing those that lit it (of the counted models) and
+** keeping the nearest of the others.  Returns 0, or -1 when out of memory. */
+static int scan(why_ctx *w)
+{
+    pt_options o;
+    pt_listener l;
+    pt_pix t = fb_to_vp(w->s, w->X, w->Y);
+
+    w->tx = t.x;
+    w->ty = t.y;
+    w->ul = vp_to_fb(w->s, 0, 0);
+    seg_start(w, 0, 0);
+    pt_options_default(&o);
+    o.every_vertex = 1;
+    memset(&l, 0, sizeof l);
+    l.journey = why_journey;
+    l.pixels = why_pixels;
+    l.clip = why_clip;
+    l.skip = why_skip;
+    l.ud = w;
+    if (pt_run_plain(w->s, &o, &l) != 0) return -1;
+    seg_reach(w, w->s->nmodels, 0);         /* the last segment's records are in */
+    return 0;
 }
 
 /* Segments of left-out models that lit the pixel, as scan() found them:
@@ -560,16 +646,16 @@ static void journeys_free(pt_journey **js, size_t n)
     free(js);
 }
 
-/* Every vertex's journey, js[mi][v], as pt_run() computes it (a model without
-** segments too: where its vertices would land).  NULL when out of memory. */
-static pt_journey **journeys_of(const pt_scene *s)
+/* Room for every vertex's journey, js[mi][v], which scan() fills.  NULL when
+** out of memory. */
+static pt_journey **journeys_room(const pt_scene *s)
 {
     pt_journey **js = calloc(s->nmodels ? s->nmodels : 1, sizeof *js);
     size_t mi;
 
     if (!js) return NULL;
     for (mi = 0; mi < s->nmodels; mi++)
-        if (!(js[mi] = pt_run_journeys(s, &s->models[mi], 0))) {
+        if (!(js[mi] = calloc(s->models[mi].nv ? s->models[mi].nv : 1, sizeof *js[mi]))) {
             journeys_free(js, mi);
             return NULL;
         }
@@ -623,7 +709,7 @@ int pt_cmd_why(int argc, char **argv)
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
-    if (!(w.js = journeys_of(&s))) {
+    if (!(w.js = journeys_room(&s))) {
         fprintf(stderr, "pipetrace why: %s: out of memory\n", s.path);
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
@@ -647,7 +733,13 @@ int pt_cmd_why(int argc, char **argv)
         fprintf(term.f, "--model %s: the trace of this model alone; the image still shows every "
                "model\n", w.sel->name);
 
-    scan(&w);
+    if (scan(&w) != 0) {
+        fprintf(stderr, "pipetrace why: %s: out of memory\n", s.path);
+        journeys_free(w.js, s.nmodels);
+        pt_scene_free(&s);
+        pt_cli_out_close(&term);
+        return PT_EXIT_INPUT;
+    }
     if (w.nleft && w.nlit) show_also_lit(&w);
     if (!w.nlit) {
         if (!w.drawn)

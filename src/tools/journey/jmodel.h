@@ -31,6 +31,11 @@
 
 struct pt_jrows;
 
+/* A pixel the rasterizer drew, in viewport coordinates. */
+typedef struct pt_jpix {
+    int64_t x_vp, y_vp;
+} pt_jpix;
+
 /* The panels' geometry for one model: shared by all its vertices. */
 typedef struct pt_jmodel {
     const pt_scene *s;           /* the scene, not owned */
@@ -38,6 +43,11 @@ typedef struct pt_jmodel {
     const struct pt_jrows *rows; /* its pipeline's panels (jrows.h) */
     pt_stage_params par;         /* the numbers of the formulas */
     pt_journey *js;              /* js[k]: vertex k + 1's journey, from pt_run(); owned */
+    pt_jpix *pix;                /* the pixels drawn of the model's segments, from
+                                 ** the same pt_run()'s pixel records, in record
+                                 ** order; owned */
+    size_t *pixat;               /* segment s's: pix[pixat[s] .. pixat[s + 1]);
+                                 ** nseg + 1 of them; owned */
     pt_jview view[PT_NSTAGES_ALL];  /* each panel's main view (index: unused) */
     pt_jview clip_y, clip_z;     /* matrix: the (w_k, y_k) and (w_k, z_k) plots */
     pt_journey *cut;             /* matrix: the points clipping made, owned */

@@ -25,6 +25,82 @@
 
 /* ===== layout ===== */
 
+/* What run_model() keeps of the records of one pt_run(). */
+typedef struct keeper {
+    pt_jmodel *jm;
+    size_t npix, cap;            /* pixels in jm->pix, room for */
+    size_t nstart;               /* segments whose jm->pixat is set */
+    int oom;                     /* 1: out of memory */
+} keeper;
+
+static void keep_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
+{
+    keeper *kp = ud;
+
+    if (m == kp->jm->m && v >= 1 && v <= m->nv) kp->jm->js[v - 1] = *j;
+}
+
+/* Segments before seg (1-based) have all their pixels: mark where seg's
+** start. */
+static void seg_reach(keeper *kp, uint64_t seg)
+{
+    while (kp->nstart < seg) kp->jm->pixat[kp->nstart++] = kp->npix;
+}
+
+static void keep_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                        size_t n)
+{
+    keeper *kp = ud;
+    pt_jmodel *jm = kp->jm;
+    pt_pix ul = {0, 0, 1};
+    size_t k;
+
+    if (m != jm->m || kp->oom) return;
+    seg_reach(kp, seg);
+    if (kp->npix + n > kp->cap) {
+        size_t cap = kp->cap ? 2 * kp->cap : 1024;
+        pt_jpix *p;
+        while (cap < kp->npix + n) cap *= 2;
+        if (!(p = realloc(jm->pix, cap * sizeof *p))) { kp->oom = 1; return; }
+        jm->pix = p;
+        kp->cap = cap;
+    }
+    ul = pt_viewport2fb(ul, jm->s->vp_x, jm->s->vp_y, NULL);   /* viewport pixel (0, 0) */
+    for (k = 0; k < n; k++) {                                  /* back through the
+                                                               ** framebuffer stage */
+        jm->pix[kp->npix].x_vp = px[k].x_fb - ul.x;
+        jm->pix[kp->npix].y_vp = px[k].y_fb - ul.y;
+        kp->npix++;
+    }
+}
+
+/* One pt_run() of model jm->m (every vertex traced, used or not): each
+** vertex's journey into jm->js, the pixels drawn of each segment into
+** jm->pix and jm->pixat.  Returns 0, or -1 when out of memory. */
+static int run_model(pt_jmodel *jm)
+{
+    const pt_model *m = jm->m;
+    pt_options o;
+    pt_listener l;
+    keeper kp;
+
+    jm->js = calloc(m->nv ? m->nv : 1, sizeof *jm->js);
+    jm->pixat = calloc(m->nseg + 1, sizeof *jm->pixat);
+    if (!jm->js || !jm->pixat) return -1;
+    memset(&kp, 0, sizeof kp);
+    kp.jm = jm;
+    pt_options_default(&o);
+    o.model = m->name;           /* models of the same name: the callbacks pick m */
+    o.every_vertex = 1;
+    memset(&l, 0, sizeof l);
+    l.journey = keep_journey;
+    l.pixels = keep_pixels;
+    l.ud = &kp;
+    if (pt_run_plain(jm->s, &o, &l) != 0 || kp.oom) return -1;
+    seg_reach(&kp, m->nseg + 1);
+    return 0;
+}
+
 int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame)
 {
     double area[4] = { PT_JBOX_X, PT_JBOX_Y, PT_JBOX_X + PT_JBOX_W, PT_JBOX_Y + PT_JBOX_H };
@@ -35,7 +111,7 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt
     jm->m = m;
     jm->rows = &pt_jpipes[pt_scene_pipeline(s)->id];
     pt_stage_params_of(&jm->par, s, m);
-    if (!(jm->js = pt_run_journeys(s, m, 0))) return -1;
+    if (run_model(jm) != 0) { pt_jmodel_free(jm); return -1; }
     if (!(jm->place = calloc(PT_NSTAGES_ALL, sizeof *jm->place))) { pt_jmodel_free(jm); return -1; }
     for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_init(&jm->place[st], area);
     if (jm->rows->layout(jm) != 0) { pt_jmodel_free(jm); return -1; }
@@ -83,6 +159,10 @@ void pt_jmodel_free(pt_jmodel *jm)
     jm->place = NULL;
     free(jm->js);
     jm->js = NULL;
+    free(jm->pix);
+    free(jm->pixat);
+    jm->pix = NULL;
+    jm->pixat = NULL;
     free(jm->cut);
     free(jm->cutix);
     jm->cut = NULL;

@@ -1,6 +1,11 @@
 /*
 ** src/tools/journey/jpanel.c -- what every pipeline's panels share: points, segments, wireframe
 ** See LICENSE for copyright and license.
+**
+** The rasterized pixels the viewport and framebuffer panels draw are the
+** pixel records of the one pt_run() of the model that pt_jmodel_init()
+** makes (journey.c keeps them, per segment, in jm->pix): what the renderer
+** drew, never a segment walked again here.
 */
 #include <math.h>
 #include "tools/journey/jpanel.h"
@@ -54,30 +59,16 @@ void pt_jwireframe(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
     pt_jpath_end(&pw, "fill=\"none\" stroke=\"" PT_JC_FAINT "\" stroke-width=\"1\"");
 }
 
-static void no_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
-{
-    (void)ud; (void)count; (void)first; (void)last;
-}
-
 void pt_jraster_segs(const pt_jmodel *jm, size_t k, void (*px)(void *, int64_t, int64_t),
                      void *ud)
 {
     const pt_model *m = jm->m;
-    pt_raster_vp to_viewport = pt_scene_pipeline(jm->s)->to_viewport;
-    pt_raster_out out;
-    pt_journey ja, jb;
-    size_t s;
+    size_t s, i;
 
-    out.pixel = px;
-    out.clip = no_clip;
-    out.ud = ud;
     for (s = 0; s < m->nseg; s++) {
-        pt_vec2 a, b;
         if (m->seg[s].a != k && m->seg[s].b != k) continue;
-        if (!pt_jseg_ends(jm, s, PT_STAGE_VIEWPORT, &ja, &jb)) continue;
-        if (jm->rows->pixelplane(jm, &ja, &a) != 0) continue;   /* the rasterizer's */
-        if (jm->rows->pixelplane(jm, &jb, &b) != 0) continue;   /* points, as pt_run's */
-        pt_raster_segment(a, b, jm->par.w, jm->par.h, to_viewport, &out);
+        for (i = jm->pixat[s]; i < jm->pixat[s + 1]; i++)
+            px(ud, jm->pix[i].x_vp, jm->pix[i].y_vp);
     }
 }
 

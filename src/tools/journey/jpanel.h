@@ -7,7 +7,7 @@
 ** is shown), the ends of a segment as a stage sees them (the pipeline's
 ** hook: after the matrix camera's cvv, where clipping cut it), the faint
 ** wireframe, the vertex's segments and marker, and the pixels the rasterizer
-** lights for them.
+** lit for them (the run's pixel records, not a line walked again).
 */
 #ifndef PT_JPANEL_H
 #define PT_JPANEL_H
@@ -44,9 +44,9 @@ void pt_jfg_point(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t 
 ** point of stage st.  This function can't fail. */
 void pt_jfg_path(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stage st);
 
-/* Rasterize every segment that uses vertex k + 1 (as pt_run() does: from the
-** pipeline's pixel-plane points, through its viewport stage) into px(ud, x_vp,
-** y_vp).  This function can't fail. */
+/* The pixels pt_run() drew of every segment that uses vertex k + 1, from its
+** pixel records (jm->pix, kept by pt_jmodel_init's run), in segment and step
+** order into px(ud, x_vp, y_vp).  This function can't fail. */
 void pt_jraster_segs(const pt_jmodel *jm, size_t k, void (*px)(void *, int64_t, int64_t),
                      void *ud);
 
