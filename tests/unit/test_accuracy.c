@@ -996,6 +996,38 @@ static void test_vp_of(void)
     PT_CHECK("acc-9.3 ... and no pixel where round() gave none", none);
 }
 
+/* Every pipeline has a row table (pt_acc_rows_of[]) whose rows are its order,
+** stage for stage, then the rasterizer's: what accuracy knows of a pipeline
+** is that table. */
+static void test_rows(void)
+{
+    int p, i, have = 1, cover = 1, sane = 1;
+    char descr[160];
+
+    for (p = 0; p < PT_NPIPES; p++) {
+        const pt_pipeline *pl = pt_pipelines[p];
+        const pt_acc_rows *rows = &pt_acc_rows_of[pl->id];
+
+        if (!rows->row || rows->nrows < 1) { have = 0; continue; }
+        cover &= rows->nrows == pl->norder + 1 && rows->nrows <= PT_ACC_MAXROWS
+                 && rows->row[rows->nrows - 1].stage == -1
+                 && rows->row[rows->nrows - 1].fn == PT_ACC_FN_RASTER;
+        for (i = 0; i < pl->norder && i < rows->nrows; i++)
+            cover &= rows->row[i].stage == (int)pl->order[i]
+                     && rows->row[i].fn != PT_ACC_FN_RASTER;
+        for (i = 0; i < rows->nrows; i++)
+            sane &= rows->row[i].name && rows->row[i].panel >= -1
+                    && rows->row[i].panel < PT_ACC_NPANELS;
+        sane &= pt_acc_row_of(rows, PT_STAGE_VIEWPORT) >= 0 && pt_acc_last_real(rows) >= 0
+                && (pt_acc_row_varied(rows, PT_ACC_TWO) >= 0 || rows->no_two) && rows->no_plot;
+        for (i = 0; i < PT_ACC_NPANELS; i++) sane &= rows->panel_sub[i] != NULL;
+    }
+    snprintf(descr, sizeof descr, "acc-10.1 each of the %d pipelines has a row table", PT_NPIPES);
+    PT_CHECK(descr, have);
+    PT_CHECK("acc-10.2 ... whose rows are its order, stage for stage, then the rasterizer", cover);
+    PT_CHECK("acc-10.3 ... with names, panels, a viewport row and a last real row", sane);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -1005,6 +1037,7 @@ int main(int argc, char **argv)
     dirs[0] = argc > 1 ? argv[1] : "tests/reference";
     dirs[1] = "tests/extreme";
     dirs[2] = "docs/examples";
+    test_rows();
     test_dd();
     test_dd_matrix();
     test_vp_of();

@@ -25,13 +25,89 @@ static const pt_acc_ops *const ops[PT_NARITH] = {
 
 const char *const pt_arith_names[PT_NARITH] = { "float", "double", "double-double" };
 const int pt_arith_bits[PT_NARITH] = { 24, 53, PT_DD_BITS };
-const char *const pt_acc_row_names[PT_ACC_NROWS] = {
-    "model", "camera", "image", "pixel", "viewport", "framebuffer", "index", "raster"
+
+/* ===== the rows as data ===== */
+
+#define TWO  PT_ACC_TWO
+#define RE   PT_ACC_RECOMPUTE
+
+static const pt_acc_rowinfo classic_rows[PT_ACC_NROWS] = {
+    [PT_ACC_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
+    [PT_ACC_CAMERA]      = { PT_STAGE_CAMERA,      "camera",      1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
+    [PT_ACC_IMAGE]       = { PT_STAGE_IMAGE,       "image",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
+    [PT_ACC_PIXEL]       = { PT_STAGE_PIXEL,       "pixel",       1, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL },
+    [PT_ACC_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL },
+    [PT_ACC_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_PIXEL },
+    [PT_ACC_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_INDEX },
+    [PT_ACC_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE,  PT_ACC_PANEL_RASTER }
 };
-const char *const pt_acc_mrow_names[PT_ACC_M_NROWS] = {
-    "model", "world", "view", "clip", "cvv", "ndc", "screen", "viewport", "framebuffer",
-    "index", "raster"
+
+/* The cvv's row counts outcodes unlike the reference's: no error, no panel.
+** Rows ndc .. index take the vertices inside the view volume and the points
+** clipping makes (pt_acc_mtail). */
+static const pt_acc_rowinfo matrix_rows[PT_ACC_M_NROWS] = {
+    [PT_ACC_M_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
+    [PT_ACC_M_WORLD]       = { PT_STAGE_WORLD,       "world",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
+    [PT_ACC_M_VIEW]        = { PT_STAGE_VIEW,        "view",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
+    [PT_ACC_M_CLIP]        = { PT_STAGE_CLIP,        "clip",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
+    [PT_ACC_M_CVV]         = { PT_STAGE_CVV,         "cvv",         0, PT_ACC_FN_MSTAGE, 0,  -1 },
+    [PT_ACC_M_NDC]         = { PT_STAGE_NDC,         "ndc",         1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_COORD },
+    [PT_ACC_M_SCREEN]      = { PT_STAGE_SCREEN,      "screen",      1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
+    [PT_ACC_M_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
+    [PT_ACC_M_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
+    [PT_ACC_M_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_INDEX },
+    [PT_ACC_M_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE, PT_ACC_PANEL_RASTER }
 };
+
+#undef TWO
+#undef RE
+
+const pt_acc_rows pt_acc_rows_of[PT_NPIPES] = {
+    [PT_PIPE_CLASSIC] = {
+        classic_rows, PT_ACC_NROWS, 0,
+        { ": model, camera, image", ": pixel plane, viewport, framebuffer", "", "" },
+        "", NULL
+    },
+    [PT_PIPE_MATRIX] = {
+        matrix_rows, PT_ACC_M_NROWS, 1,
+        { ": model .. ndc", ": screen, viewport, framebuffer", "", "" },
+        "; cvv (outcodes) has no error to plot",
+        "choice: 2.001 or 2.0 does not apply to the matrix camera: its screen stage,\n"
+        "x_s = (x_n + 1) * w * 0.5, has no 2.001\n"
+    }
+};
+
+const pt_acc_rows *pt_acc_scene_rows(const pt_scene *s)
+{
+    return &pt_acc_rows_of[pt_scene_pipeline(s)->id];
+}
+
+int pt_acc_row_of(const pt_acc_rows *rows, int st)
+{
+    int row;
+
+    for (row = 0; row < rows->nrows; row++)
+        if (rows->row[row].stage == st) return row;
+    return -1;
+}
+
+int pt_acc_row_varied(const pt_acc_rows *rows, unsigned choices)
+{
+    int row;
+
+    for (row = 0; row < rows->nrows; row++)
+        if (rows->row[row].variants & choices) return row;
+    return -1;
+}
+
+int pt_acc_last_real(const pt_acc_rows *rows)
+{
+    int row, last = -1;
+
+    for (row = 0; row + 1 < rows->nrows; row++)
+        if (rows->row[row].real) last = row;
+    return last;
+}
 
 /* ===== one arithmetic ===== */
 
@@ -363,7 +439,7 @@ static int run_alloc(pt_acc_run *r)
 
     r->used = calloc(nm, sizeof *r->used);
     if (!r->used) return -1;
-    if (!pt_scene_pipeline(s)->matrices) {
+    if (!pt_acc_scene_rows(s)->mcam) {
         r->j = calloc(nm, sizeof *r->j);
         for (k = 0; r->j && k < s->nmodels; k++)
             if ((r->j[k] = calloc(s->models[k].nv ? s->models[k].nv : 1, sizeof **r->j)) == NULL)
@@ -418,7 +494,7 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
                                                                   : pt_scene_pipeline(s)->to_viewport;
     raster_scene(r, &o, &c.rgb, 1);
     if (c.oom) { free(c.px); pt_acc_run_free(r); return -1; }
-    for (k = 0; pt_scene_pipeline(s)->matrices && k < s->nmodels; k++)
+    for (k = 0; r->seg && k < s->nmodels; k++)
         for (q = 0; q < s->models[k].nseg; q++) {
             r->made += (uint64_t)(r->seg[k][q].made[0] + r->seg[k][q].made[1]);
             r->culled += !r->seg[k][q].visible;
@@ -497,7 +573,7 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
     const pt_scene *s = r->s;
     pt_acc_work *w = calloc(1, sizeof *w);
     size_t k, v, n = r->nused ? (size_t)r->nused : 1, i = 0;
-    int tail = pt_scene_pipeline(s)->matrices && row >= PT_ACC_M_NDC;
+    pt_acc_fn fn = pt_acc_scene_rows(s)->row[row].fn;
 
     if (!w) return NULL;
     w->arith = r->arith;
@@ -505,8 +581,8 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
     w->ctx = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->ctx);
     w->model = calloc(n, sizeof *w->model);
     w->v = calloc(n, sizeof *w->v);
-    if (tail) w->t = calloc(n, sizeof *w->t);
-    else if (pt_scene_pipeline(s)->matrices) w->mj = calloc(n, sizeof *w->mj);
+    if (fn == PT_ACC_FN_TAIL) w->t = calloc(n, sizeof *w->t);
+    else if (fn == PT_ACC_FN_MSTAGE) w->mj = calloc(n, sizeof *w->mj);
     else w->j = calloc(n, sizeof *w->j);
     if (!w->ctx || !w->model || !w->v || !(w->t || w->mj || w->j)) {
         pt_acc_work_free(w);
@@ -518,11 +594,11 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
         pt_acc_sctx_make(&w->ctx[k], s, m, r->choices);
         for (v = 0; v < m->nv; v++) {
             if (!r->used[k][v]) continue;
-            if (tail && r->mj[k][v].code != 0) continue;    /* stops at the cvv */
+            if (fn == PT_ACC_FN_TAIL && r->mj[k][v].code != 0) continue;    /* stops at the cvv */
             w->model[i] = k;
             w->v[i] = m->v[v];
-            if (tail) w->t[i] = r->mj[k][v].t;
-            else if (pt_scene_pipeline(s)->matrices) w->mj[i] = r->mj[k][v];
+            if (fn == PT_ACC_FN_TAIL) w->t[i] = r->mj[k][v].t;
+            else if (fn == PT_ACC_FN_MSTAGE) w->mj[i] = r->mj[k][v];
             else w->j[i] = r->j[k][v];
             i++;
         }
@@ -691,7 +767,7 @@ static void vertex_err(pt_acc_err e[PT_ACC_MAXROWS], const pt_acc_run *ref,
     static const int nc[4] = {3, 3, 2, 2}, nm[4] = {3, 4, 4, 4};
     const pt_dd *va[4], *vb[4];
 
-    if (pt_scene_pipeline(r->s)->matrices) {
+    if (r->mj) {
         const pt_acc_mjourney *a = &r->mj[k][v], *b = &ref->mj[k][v];
 
         va[0] = a->m; va[1] = a->w; va[2] = a->v; va[3] = a->k;
@@ -731,20 +807,19 @@ static void made_points(pt_acc_err e[PT_ACC_MAXROWS], const pt_acc_run *ref,
 void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS])
 {
     const pt_scene *s = r->s;
-    int raster = pt_scene_pipeline(s)->matrices ? PT_ACC_M_RASTER : PT_ACC_RASTER, row;
+    const pt_acc_rows *rows = pt_acc_scene_rows(s);
+    int raster = rows->nrows - 1, row;
     size_t k, v;
 
     memset(e, 0, (size_t)(raster + 1) * sizeof *e);
     for (row = 0; row < raster; row++) {
-        e[row].real = pt_scene_pipeline(s)->matrices ? row <= PT_ACC_M_CLIP || row == PT_ACC_M_NDC
-                                  || row == PT_ACC_M_SCREEN
-                                : row <= PT_ACC_PIXEL;
-        e[row].of = pt_scene_pipeline(s)->matrices && row > PT_ACC_M_CVV ? 0 : r->nused;  /* matrix ndc ..: */
+        e[row].real = rows->row[row].real;
+        e[row].of = rows->row[row].fn == PT_ACC_FN_TAIL ? 0 : r->nused;  /* tails: */
     }                                                               /* counted as they come */
     for (k = 0; k < s->nmodels; k++) {
         for (v = 0; v < s->models[k].nv; v++)
             if (r->used[k][v]) vertex_err(e, ref, r, k, v);
-        if (pt_scene_pipeline(s)->matrices) made_points(e, ref, r, k);
+        if (r->seg) made_points(e, ref, r, k);
     }
     e[raster] = r->line;
     e[raster].real = 1;

@@ -54,7 +54,7 @@
 **   pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
 **   pt_acc_run_make(&r, &s, PT_ARITH_FLOAT, 0);
 **   pt_acc_compare(&ref, &r, e);                   e[row]: that stage's errors
-**                      (rows: pt_acc_row_names, or pt_acc_mrow_names when the pipeline has matrices)
+**                      (rows: pt_acc_scene_rows(&s))
 **   w = pt_acc_work_make(&r, row);  pt_acc_stage_pass(w, row);   one stage, timed
 **   pt_acc_work_free(w);  pt_acc_raster_pass(&r, &n);       the rasterizer, timed
 **   pt_acc_run_free(&r);  pt_acc_run_free(&ref);
@@ -112,8 +112,76 @@ typedef enum pt_acc_mrow {
 
 #define PT_ACC_MAXROWS PT_ACC_M_NROWS    /* room for either camera's rows */
 
-extern const char *const pt_acc_row_names[PT_ACC_NROWS];  /* "model", ... "raster" */
-extern const char *const pt_acc_mrow_names[PT_ACC_M_NROWS];  /* "model", "world", ... */
+
+/* ===== the rows as data: one table per pipeline =====
+**
+** What accuracy needs of each stage of a pipeline, and of its rasterizer, is
+** a row of that pipeline's table (pt_acc_rows_of[], indexed by pt_pipe_id),
+** in the order of its error table: nothing else here or in cmd_accuracy.c
+** asks which pipeline a scene has.  A new pipeline adds its table beside
+** the others (accuracy.c), with its arithmetics' functions (acc_float.c,
+** acc_dd.c, acc_double.c); tests/unit/test_accuracy.c checks that every
+** pipeline has a table whose rows cover its order. */
+
+/* The panels of the plot, one per unit of error. */
+typedef enum pt_acc_panel {
+    PT_ACC_PANEL_COORD,          /* coordinates */
+    PT_ACC_PANEL_PIXEL,          /* pixels */
+    PT_ACC_PANEL_INDEX,          /* array places */
+    PT_ACC_PANEL_RASTER          /* the DDA's y, per pixel */
+} pt_acc_panel;
+
+#define PT_ACC_NPANELS ((int)PT_ACC_PANEL_RASTER + 1)
+
+/* Which table of an arithmetic's functions computes a row (acc_shared.h). */
+typedef enum pt_acc_fn {
+    PT_ACC_FN_STAGE,             /* pt_acc_stage_of: a pt_acc_journey's stage */
+    PT_ACC_FN_MSTAGE,            /* pt_acc_mstage_of: a pt_acc_mjourney's, up to the cvv */
+    PT_ACC_FN_TAIL,              /* pt_acc_tail_of: a pt_acc_mtail's, from clip
+                                 ** coordinates on (vertices and made points) */
+    PT_ACC_FN_RASTER             /* the rasterizer's pass */
+} pt_acc_fn;
+
+/* One row of the error table. */
+typedef struct pt_acc_rowinfo {
+    int stage;                   /* its pt_stage, or -1: the rasterizer */
+    const char *name;            /* "model", ..., "raster" */
+    int real;                    /* 1: real values (max_ulp means something);
+                                 ** 0: integers, or outcodes */
+    pt_acc_fn fn;                /* the functions that compute it */
+    unsigned variants;           /* the choices (PT_ACC_TWO, PT_ACC_RECOMPUTE)
+                                 ** that change it: their runs time it and plot it */
+    int panel;                   /* its pt_acc_panel, or -1: no error to plot */
+} pt_acc_rowinfo;
+
+/* A pipeline's rows. */
+typedef struct pt_acc_rows {
+    const pt_acc_rowinfo *row;   /* its stages in pipeline order, then the */
+    int nrows;                   /*   rasterizer, the last; and how many */
+    int mcam;                    /* 1: each arithmetic builds the pipeline's
+                                 ** matrices and clips its segments (pt_acc_mcam,
+                                 ** pt_acc_mjourney, pt_acc_mseg); 0: journeys are
+                                 ** pt_acc_journey */
+    const char *panel_sub[PT_ACC_NPANELS];  /* after a panel's title: ": model .. ndc" */
+    const char *no_plot;         /* the plot's note on rows with no panel, or "" */
+    const char *no_two;          /* what is said when no row has PT_ACC_TWO */
+} pt_acc_rows;
+
+extern const pt_acc_rows pt_acc_rows_of[PT_NPIPES];
+
+/* The rows of scene s's pipeline.  This function can't fail. */
+const pt_acc_rows *pt_acc_scene_rows(const pt_scene *s);
+
+/* The row of stage st in rows (-1: the rasterizer's), or -1 when it has none.
+** This function can't fail. */
+int pt_acc_row_of(const pt_acc_rows *rows, int st);
+
+/* The first row that choices change, or -1 when none.  This function can't fail. */
+int pt_acc_row_varied(const pt_acc_rows *rows, unsigned choices);
+
+/* The last real row before the rasterizer (classic: pixel; matrix: screen).
+** This function can't fail. */
+int pt_acc_last_real(const pt_acc_rows *rows);
 
 /* A scene run through the pipeline in one arithmetic.  Invariant: j[k][v]
 ** (matrix camera: mj[k][v]) is set for every used vertex v of model k;

@@ -75,25 +75,36 @@ static const struct { pt_arith arith; unsigned choices; } run_of[NRUNS] = {
 ** NAN: not measured. */
 typedef struct timing { double row[PT_ACC_MAXROWS]; } timing;
 
-/* The rows of one camera's table. */
+/* The rows of the scene's pipeline (pt_acc_scene_rows), and the rows the
+** tables single out, found in them. */
 typedef struct layout {
+    const pt_acc_rows *t;        /* the pipeline's rows */
     int nrows;                   /* its stages, then the rasterizer */
-    const char *const *names;    /* "model", ... "raster" */
     int last_real;               /* the last real stage: pixel, or screen */
     int viewport, raster;
+    int two;                     /* the first row PT_ACC_TWO changes, or -1 */
 } layout;
 
-static const layout classic_rows = {
-    PT_ACC_NROWS, pt_acc_row_names, PT_ACC_PIXEL, PT_ACC_VIEWPORT, PT_ACC_RASTER
-};
-static const layout matrix_rows = {
-    PT_ACC_M_NROWS, pt_acc_mrow_names, PT_ACC_M_SCREEN, PT_ACC_M_VIEWPORT, PT_ACC_M_RASTER
-};
+static void layout_of(layout *L, const pt_scene *s)
+{
+    L->t = pt_acc_scene_rows(s);
+    L->nrows = L->t->nrows;
+    L->last_real = pt_acc_last_real(L->t);
+    L->viewport = pt_acc_row_of(L->t, PT_STAGE_VIEWPORT);
+    L->raster = L->nrows - 1;
+    L->two = pt_acc_row_varied(L->t, PT_ACC_TWO);
+}
+
+/* 1 when run k's choices change a row of L (the plain runs: always). */
+static int run_applies(const layout *L, int k)
+{
+    return !run_of[k].choices || pt_acc_row_varied(L->t, run_of[k].choices) >= 0;
+}
 
 typedef struct study {
     const pt_scene *s;
-    const layout *rows;          /* the scene's camera's */
-    pt_acc_run run[NRUNS];       /* matrix camera: no RUN_TWO (all zero) */
+    layout rows;                 /* the scene's pipeline's */
+    pt_acc_run run[NRUNS];       /* no RUN_TWO (all zero) where no row has 2.001 */
     pt_acc_err err[NRUNS][PT_ACC_MAXROWS];
     timing t[NRUNS];             /* RUN_TWO: pixel and viewport; _RE runs: raster */
     int timed;
@@ -174,12 +185,12 @@ static void time_run(const study *st, const pt_acc_run *r, unsigned rows, int re
     int row;
 
     for (row = 0; row < PT_ACC_MAXROWS; row++) t->row[row] = (double)NAN;
-    for (row = 0; row <= st->rows->raster; row++) {
+    for (row = 0; row <= st->rows.raster; row++) {
         job jb = { NULL, row, r };
         uint64_t px = 0;
 
         if (!(rows & 1u << row)) continue;
-        if (row == st->rows->raster) {
+        if (row == st->rows.raster) {
             pt_acc_raster_pass(r, &px);
             t->row[row] = measure(&jb, (double)px, repeat);
             continue;
@@ -192,17 +203,17 @@ static void time_run(const study *st, const pt_acc_run *r, unsigned rows, int re
 
 static void time_all(study *st, int repeat)
 {
-    const layout *L = st->rows;
-    unsigned all = (2u << L->raster) - 1, raster = 1u << L->raster;
+    const layout *L = &st->rows;
     int k;
 
     for (k = 0; k < NRUNS; k++) {
-        unsigned rows = k == RUN_DD || k == RUN_FLOAT || k == RUN_DOUBLE ? all
-                      : k == RUN_TWO ? (1u << PT_ACC_PIXEL | 1u << PT_ACC_VIEWPORT) : raster;
+        unsigned rows = 0;
+        int row;
 
-        if (!pt_pipeline_has(pt_scene_pipeline(st->s), PT_STAGE_PIXEL) && k == RUN_TWO)
-            continue;                                   /* no 2.001 to replace */
-        time_run(st, &st->run[k], rows, repeat, &st->t[k]);
+        for (row = 0; row < L->nrows; row++)        /* the rows its choices change */
+            if (!run_of[k].choices || L->t->row[row].variants & run_of[k].choices)
+                rows |= 1u << row;
+        if (rows) time_run(st, &st->run[k], rows, repeat, &st->t[k]);
     }
     st->timed = 1;
 }
@@ -214,7 +225,7 @@ static double journey_time(const study *st, int run)
     double sum = (double)NAN;
     int row;
 
-    for (row = 0; row < st->rows->raster; row++)
+    for (row = 0; row < st->rows.raster; row++)
         if (!isnan(st->t[run].row[row])) sum = (isnan(sum) ? 0.0 : sum) + st->t[run].row[row];
     return sum;
 }
@@ -296,7 +307,7 @@ static void print_header(const study *st)
     printf("scene       %zu models, %llu vertices used, %llu segments, %zu pixels in the "
            "reference image\n", s->nmodels, (unsigned long long)st->run[RUN_DD].nused,
            (unsigned long long)nseg, st->run[RUN_DD].nimg);
-    if (pt_scene_pipeline(s)->matrices) { print_matrix_header(st); return; }
+    if (st->rows.t->mcam) { print_matrix_header(st); return; }
     printf("            viewport %d x %d, %s camera\n", s->vp_w, s->vp_h,
            s->perspective ? "perspective" : "orthographic");
     printf("reference   double-double, %d significant bits; measured: 1/3 within 2^-%d,\n"
@@ -313,30 +324,30 @@ static void print_errors(const study *st)
     int row, k;
 
     printf("\nstage        arithmetic  max abs err  mean abs err    max ulp  differ\n");
-    for (row = 0; row < st->rows->nrows; row++)
+    for (row = 0; row < st->rows.nrows; row++)
         for (k = 0; k < 2; k++) {
             const pt_acc_err *e = &st->err[runs[k]][row];
             double mean = e->n ? e->sum_abs / (double)e->n : (double)NAN;
 
-            printf("%-12s %-10s %12s %13s %10s  %s %s\n", st->rows->names[row],
+            printf("%-12s %-10s %12s %13s %10s  %s %s\n", st->rows.t->row[row].name,
                    pt_arith_names[run_of[runs[k]].arith],
                    num(b1, sizeof b1, e->n ? e->max_abs : (double)NAN),
                    num(b2, sizeof b2, mean),
                    num(b3, sizeof b3, e->n && e->real ? e->max_ulp : (double)NAN),
                    ratio(b4, sizeof b4, e->differ, e->of),
-                   row == st->rows->raster ? "pixels" : "vertices");
+                   row == st->rows.raster ? "pixels" : "vertices");
         }
 }
 
 static void print_arithmetics(const study *st)
 {
     static const int runs[] = { RUN_FLOAT, RUN_DOUBLE, RUN_DD };
-    const layout *L = st->rows;
+    const layout *L = &st->rows;
     char b1[32], b2[48], b3[48], b4[32], b5[32];
     int k;
 
-    printf("\narithmetic     bits %14s  viewport differ  pixels differ%s\n",
-           pt_scene_pipeline(st->s)->matrices ? "screen max err" : "pixel max err",
+    snprintf(b1, sizeof b1, "%s max err", L->t->row[L->last_real].name);
+    printf("\narithmetic     bits %14s  viewport differ  pixels differ%s\n", b1,
            st->timed ? "  ns/vertex  ns/pixel" : "");
     for (k = 0; k < 3; k++) {
         const pt_acc_err *e = st->err[runs[k]];
@@ -365,9 +376,9 @@ static void print_stage_times(const study *st, int repeat)
     if (!st->timed) return;
     printf("\ntime per stage alone, ns per vertex (raster: ns per pixel), median of %d\n"
            "stage             float     double  double-double\n", repeat);
-    for (row = 0; row < st->rows->nrows; row++) {
+    for (row = 0; row < st->rows.nrows; row++) {
         for (k = 0; k < 3; k++) num(b[k], sizeof b[k], st->t[runs[k]].row[row]);
-        printf("%-12s %10s %10s %14s\n", st->rows->names[row],
+        printf("%-12s %10s %10s %14s\n", st->rows.t->row[row].name,
                isnan(st->t[runs[0]].row[row]) ? "-" : b[0],
                isnan(st->t[runs[1]].row[row]) ? "-" : b[1],
                isnan(st->t[runs[2]].row[row]) ? "-" : b[2]);
@@ -378,6 +389,7 @@ static void print_stage_times(const study *st, int repeat)
 static void print_two(const study *st)
 {
     static const int two[] = { RUN_DOUBLE, RUN_TWO };
+    const layout *L = &st->rows;
     char b1[32], b2[48], b3[48], b4[32];
     int k;
 
@@ -388,11 +400,11 @@ static void print_two(const study *st)
         const pt_acc_err *e = st->err[two[k]];
 
         printf("%-8s %14s %16s %14llu %14s", k ? "2.0" : "2.001",
-               num(b1, sizeof b1, e[PT_ACC_PIXEL].n ? e[PT_ACC_PIXEL].max_abs : (double)NAN),
-               ratio(b2, sizeof b2, e[PT_ACC_VIEWPORT].differ, e[PT_ACC_VIEWPORT].of),
-               (unsigned long long)e[PT_ACC_VIEWPORT].left,
-               ratio(b3, sizeof b3, e[PT_ACC_RASTER].differ, e[PT_ACC_RASTER].of));
-        if (st->timed) printf(" %16s", num(b4, sizeof b4, st->t[two[k]].row[PT_ACC_PIXEL]));
+               num(b1, sizeof b1, e[L->two].n ? e[L->two].max_abs : (double)NAN),
+               ratio(b2, sizeof b2, e[L->viewport].differ, e[L->viewport].of),
+               (unsigned long long)e[L->viewport].left,
+               ratio(b3, sizeof b3, e[L->raster].differ, e[L->raster].of));
+        if (st->timed) printf(" %16s", num(b4, sizeof b4, st->t[two[k]].row[L->two]));
         putchar('\n');
     }
 }
@@ -403,23 +415,21 @@ static void print_choices(const study *st)
     char b1[32], b2[48], b3[48], b4[32];
     int k;
 
-    if (pt_scene_pipeline(st->s)->matrices)
-        printf("\nchoice: 2.001 or 2.0 does not apply to the matrix camera: its screen stage,\n"
-               "x_s = (x_n + 1) * w * 0.5, has no 2.001\n");
+    if (st->rows.two < 0) printf("\n%s", st->rows.t->no_two);
     else print_two(st);
 
     printf("\nchoice: the DDA's y += m or y = y0 + m*(x - x0), against the exact line\n");
     printf("arithmetic  DDA        max abs err  mean abs err  pixels differ%s\n",
            st->timed ? "  ns/pixel" : "");
     for (k = 0; k < 4; k++) {
-        const pt_acc_err *e = &st->err[dda[k]][st->rows->raster];
+        const pt_acc_err *e = &st->err[dda[k]][st->rows.raster];
 
         printf("%-11s %-10s %11s %13s %14s", pt_arith_names[run_of[dda[k]].arith],
                k % 2 ? "recompute" : "y += m",
                num(b1, sizeof b1, e->n ? e->max_abs : (double)NAN),
                num(b2, sizeof b2, e->n ? e->sum_abs / (double)e->n : (double)NAN),
                ratio(b3, sizeof b3, e->differ, e->of));
-        if (st->timed) printf(" %9s", num(b4, sizeof b4, st->t[dda[k]].row[st->rows->raster]));
+        if (st->timed) printf(" %9s", num(b4, sizeof b4, st->t[dda[k]].row[st->rows.raster]));
         putchar('\n');
     }
 }
@@ -453,19 +463,17 @@ static void print_choices(const study *st)
 #define MAXPTS   48
 #define MAXBOX   96
 
-enum { P_COORD, P_PIXEL, P_INDEX, P_RASTER, NPANELS };
-
-static const char *const panel_unit[NPANELS] = {
+static const char *const panel_unit[PT_ACC_NPANELS] = {
     "coordinates", "pixels", "array places", "raster"
 };
-static const char *const panel_title[NPANELS] = {
+static const char *const panel_title[PT_ACC_NPANELS] = {
     "coordinates", "pixels", "array index", "rasterizer"
 };
-static const char *const panel_ylabel[NPANELS] = {
+static const char *const panel_ylabel[PT_ACC_NPANELS] = {
     "max abs error (coordinates), log", "max abs error (pixels), log",
     "max abs error (array places), log", "max abs error of y (pixels), log"
 };
-static const char *const panel_xlabel[NPANELS] = {
+static const char *const panel_xlabel[PT_ACC_NPANELS] = {
     "ns per vertex, each stage alone, log", "ns per vertex, each stage alone, log",
     "ns per vertex, each stage alone, log", "ns per pixel, the DDA's pass, log"
 };
@@ -475,14 +483,7 @@ static const char *const series_color[3] = { "#d95f02", "#1b61b8", "#1b9e77" };
 /* The panel of a row: -1 for none (the cvv: outcodes, no error). */
 static int panel_of(const study *st, int row)
 {
-    if (row == st->rows->raster) return P_RASTER;
-    if (pt_scene_pipeline(st->s)->matrices) {
-        if (row == PT_ACC_M_CVV) return -1;
-        if (row == PT_ACC_M_INDEX) return P_INDEX;
-        return row <= PT_ACC_M_NDC ? P_COORD : P_PIXEL;
-    }
-    if (row == PT_ACC_INDEX) return P_INDEX;
-    return row <= PT_ACC_IMAGE ? P_COORD : P_PIXEL;
+    return st->rows.t->row[row].panel;
 }
 
 /* One point: a stage of one run at its own time. */
@@ -545,28 +546,28 @@ static int add_point(point *p, int n, int series, const char *choice, const char
 static int collect_points(const study *st, point *p)
 {
     static const int arith_runs[3] = { RUN_FLOAT, RUN_DOUBLE, RUN_DD };
-    const layout *L = st->rows;
+    const layout *L = &st->rows;
     int n = 0, k, row;
 
     for (k = 0; k < 3; k++)
         for (row = 0; row < L->nrows; row++) {
             const pt_acc_err *e = &st->err[arith_runs[k]][row];
 
-            n = add_point(p, n, k, NULL, L->names[row], st->t[arith_runs[k]].row[row],
+            n = add_point(p, n, k, NULL, L->t->row[row].name, st->t[arith_runs[k]].row[row],
                           arith_runs[k] == RUN_DD ? 0.0 : e->n ? e->max_abs : (double)NAN,
                           panel_of(st, row));
         }
-    if (pt_pipeline_has(pt_scene_pipeline(st->s), PT_STAGE_PIXEL))   /* 2.0 for 2.001 */
-        for (row = PT_ACC_PIXEL; row <= PT_ACC_VIEWPORT; row++) {
-            const pt_acc_err *e = &st->err[RUN_TWO][row];
+    for (row = 0; row < L->nrows; row++) {           /* 2.0 for 2.001 */
+        const pt_acc_err *e = &st->err[RUN_TWO][row];
 
-            n = add_point(p, n, 1, "2.0: ", L->names[row], st->t[RUN_TWO].row[row],
-                          e->n ? e->max_abs : (double)NAN, P_PIXEL);
-        }
+        if (!(L->t->row[row].variants & PT_ACC_TWO)) continue;
+        n = add_point(p, n, 1, "2.0: ", L->t->row[row].name, st->t[RUN_TWO].row[row],
+                      e->n ? e->max_abs : (double)NAN, panel_of(st, row));
+    }
     n = add_point(p, n, 0, "recompute y: ", "raster", st->t[RUN_FLOAT_RE].row[L->raster],
-                  st->err[RUN_FLOAT_RE][L->raster].max_abs, P_RASTER);
+                  st->err[RUN_FLOAT_RE][L->raster].max_abs, PT_ACC_PANEL_RASTER);
     n = add_point(p, n, 1, "recompute y: ", "raster", st->t[RUN_DOUBLE_RE].row[L->raster],
-                  st->err[RUN_DOUBLE_RE][L->raster].max_abs, P_RASTER);
+                  st->err[RUN_DOUBLE_RE][L->raster].max_abs, PT_ACC_PANEL_RASTER);
     return n;
 }
 
@@ -689,11 +690,7 @@ static void write_panel(FILE *f, const study *st, int panel, point *p, int n)
     frame_of(&fr, panel, p, n);
     place_labels(p, n, panel, &fr);
     fprintf(f, "<g class=\"panel\" data-unit=\"%s\">\n", panel_unit[panel]);
-    snprintf(b, sizeof b, "%s%s", panel_title[panel],
-             panel == P_PIXEL ? (pt_scene_pipeline(st->s)->matrices ? ": screen, viewport, framebuffer"
-                                               : ": pixel plane, viewport, framebuffer")
-             : panel == P_COORD ? (pt_scene_pipeline(st->s)->matrices ? ": model .. ndc" : ": model, camera, image")
-             : "");
+    snprintf(b, sizeof b, "%s%s", panel_title[panel], st->rows.t->panel_sub[panel]);
     text_at(f, fr.l, fr.t - 10, 12, -1, NULL, "panel-title", b);
     for (k = (int)fr.x0; k <= (int)fr.x1; k++) {    /* x: every decade */
         double x = axis_pos(k, fr.x0, fr.x1, fr.l, fr.r);
@@ -752,7 +749,7 @@ static void write_panel(FILE *f, const study *st, int panel, point *p, int n)
 static void write_svg(FILE *f, const study *st)
 {
     point p[MAXPTS];
-    char b[160];
+    char b[200];
     int n = collect_points(st, p), k;
     double x;
 
@@ -779,13 +776,10 @@ static void write_svg(FILE *f, const study *st)
         text_at(f, x + 10, 64, TEXT_FS, -1, NULL, "legend", b);
         x += 10 + LABEL_EM * TEXT_FS * (double)strlen(b) + 30;
     }
-    text_at(f, 20, 84, TEXT_FS, -1, "#555", "note",
-            pt_scene_pipeline(st->s)->matrices
-            ? "0 (the reference's own errors, and exact results) lies on the dashed line "
-              "marked 0, inf on the one marked inf; cvv (outcodes) has no error to plot."
-            : "0 (the reference's own errors, and exact results) lies on the dashed line "
-              "marked 0, inf on the one marked inf.");
-    for (k = 0; k < NPANELS; k++) write_panel(f, st, k, p, n);
+    snprintf(b, sizeof b, "0 (the reference's own errors, and exact results) lies on the "
+             "dashed line marked 0, inf on the one marked inf%s.", st->rows.t->no_plot);
+    text_at(f, 20, 84, TEXT_FS, -1, "#555", "note", b);
+    for (k = 0; k < PT_ACC_NPANELS; k++) write_panel(f, st, k, p, n);
     fprintf(f, "</svg>\n");
 }
 
@@ -828,13 +822,12 @@ int pt_cmd_accuracy(int argc, char **argv)
     st = calloc(1, sizeof *st);
     if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return PT_EXIT_INPUT; }
     st->s = &s;
-    st->rows = pt_scene_pipeline(&s)->matrices ? &matrix_rows : &classic_rows;
+    layout_of(&st->rows, &s);
     for (k = 0; k < NRUNS && rc == 0; k++) {
         int row;
 
         for (row = 0; row < PT_ACC_MAXROWS; row++) st->t[k].row[row] = (double)NAN;
-        if (!pt_pipeline_has(pt_scene_pipeline(&s), PT_STAGE_PIXEL) && k == RUN_TWO)
-            continue;                               /* no 2.001 to replace */
+        if (!run_applies(&st->rows, k)) continue;   /* no 2.001 to replace */
         rc = pt_acc_run_make(&st->run[k], &s, run_of[k].arith, run_of[k].choices);
     }
     if (rc != 0) {
@@ -843,7 +836,7 @@ int pt_cmd_accuracy(int argc, char **argv)
         goto done;
     }
     for (k = 0; k < NRUNS; k++)
-        if (pt_pipeline_has(pt_scene_pipeline(&s), PT_STAGE_PIXEL) || k != RUN_TWO) pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
+        if (run_applies(&st->rows, k)) pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
     if (!no_time) time_all(st, repeat);
 
     print_header(st);
