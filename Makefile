@@ -171,7 +171,10 @@ $B/buildinfo.o: $B/buildinfo.c src/tools/cli.h
 PIXEL_SRC = $(or $(STAGE_viewport),stages/s4_pixel2viewport.c) \
             $(or $(STAGE_framebuffer),stages/s5_viewport2fb.c) \
             $(or $(STAGE_index),stages/s6_fb2index.c) src/core/raster.c
-$B/pixelpath.c: Makefile $(CHOSEN) | $B
+# (in a student build, remade when the viewport, framebuffer or index file
+# chosen changes, not when another stage's does)
+PIXEL_CHOSEN = $(if $(STAGE_GIVEN),$(addprefix $B/choice-,viewport framebuffer index))
+$B/pixelpath.c: Makefile $(PIXEL_CHOSEN) | $B
 	printf '#include "%s"\n' $(abspath $(PIXEL_SRC)) > $@
 $B/pixelpath.o: $B/pixelpath.c $(PIXEL_SRC) $(HDRS)
 	$(CC) $(ALLCFLAGS) -Istages -c -o $@ $<
