@@ -155,6 +155,26 @@ void pt_sbuf_add_xml(pt_sbuf *sb, const char *t)
     add_escaped(sb, t, xml_escape);
 }
 
+int pt_sbuf_csv_plain(const char *t)
+{
+    return (*t == 0 || !strchr("=+-@\t\r", *t)) && !t[strcspn(t, ",\"\r\n")];
+}
+
+void pt_sbuf_add_csv(pt_sbuf *sb, const char *t)
+{
+    const char *q;
+
+    if (pt_sbuf_csv_plain(t)) { pt_sbuf_add(sb, t); return; }
+    pt_sbuf_add(sb, strchr("=+-@\t\r", *t) ? "\"'" : "\"");
+    while ((q = strchr(t, '"')) != NULL) {  /* "" for each " */
+        pt_sbuf_addn(sb, t, (size_t)(q - t) + 1);
+        pt_sbuf_add(sb, "\"");
+        t = q + 1;
+    }
+    pt_sbuf_add(sb, t);
+    pt_sbuf_add(sb, "\"");
+}
+
 void pt_sbuf_add_json(pt_sbuf *sb, const char *t)
 {
     pt_sbuf_add(sb, "\"");

@@ -54,4 +54,15 @@ void pt_sbuf_add_xml(pt_sbuf *sb, const char *t);
 ** UTF-8 becomes U+FFFD, as in pt_sbuf_add_xml(). */
 void pt_sbuf_add_json(pt_sbuf *sb, const char *t);
 
+/* 1 when text t goes into a CSV cell as it is: no comma, quote, CR or LF,
+** and no first character a spreadsheet reads as a formula (= + - @, tab,
+** CR).  This function can't fail. */
+int pt_sbuf_csv_plain(const char *t);
+
+/* Append t as one CSV cell (RFC 4180), the one quoting every CSV writer uses:
+** as it is when pt_sbuf_csv_plain(t); else between double quotes, each quote
+** doubled, and a formula's first character behind a single quote (the
+** spreadsheet tools' convention: '=1+1 is text). */
+void pt_sbuf_add_csv(pt_sbuf *sb, const char *t);
+
 #endif

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "io/trace.h"
 #include "io/trace_int.h"
+#include "io/sbuf.h"
 
 /* ===== header ===== */
 
@@ -32,10 +33,23 @@ static void header_csv(pt_trace *t, const pt_scene *s, const pt_plan *p)
 **                   digits_lost
 ** (planes joined by '|'; a point clipping made has no v, but its segment and t). */
 
+/* The model's name as a CSV cell (pt_sbuf_add_csv(): a name such as "=1+1"
+** or "a,b" is quoted, so no cell becomes a formula and no row is cut). */
+static void model_cell(pt_trace *t, const pt_model *m)
+{
+    pt_sbuf cell;
+
+    if (pt_sbuf_csv_plain(m->name)) { puts_(t, m->name); return; }
+    pt_sbuf_init(&cell);
+    pt_sbuf_add_csv(&cell, m->name);
+    if (cell.s) puts_(t, cell.s);
+    pt_sbuf_free(&cell);
+}
+
 /* 'm1,': how the vertex records of model m begin (pt_trace_vertex_prefix). */
 static void vertex_opening(pt_trace *t, const pt_model *m)
 {
-    puts_(t, m->name); put(t, ",", 1);
+    model_cell(t, m); put(t, ",", 1);
 }
 
 /* Names whose bits are set in bits, joined by sep, at o; returns the end. */
@@ -65,7 +79,7 @@ static void vertex_csv(pt_trace *t, const pt_vrec *r)
     char *o;
 
     if (!(o = vertex_opening_at(t, !t->clipv, vertex_opening))) {   /* 'm1,12' ('m1,' clipped) */
-        puts_(t, t->model->name);
+        model_cell(t, t->model);
         o = room(t, PT_ROW_REST);
         *o++ = ',';
         if (!t->clipv) o = u64_at(t, o, t->v);

@@ -283,15 +283,6 @@ static int by_name(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* A CSV field: as it is, or quoted with "" for " when it holds , " or a line break. */
-static void csv_field(pt_sbuf *sb, const char *t)
-{
-    if (!t[strcspn(t, ",\"\r\n")]) { pt_sbuf_add(sb, t); return; }
-    pt_sbuf_add(sb, "\"");
-    for (; *t; t++) pt_sbuf_addn(sb, t, 1 + (*t == '"'));
-    pt_sbuf_add(sb, "\"");
-}
-
 /* Grade every regular file in dir (not those starting with '.'), in name order,
 ** as answer sheets for q's stages, into a CSV written to out.  Returns the
 ** exit status. */
@@ -343,7 +334,7 @@ static int grade(quiz *q, const char *dir, const char *out)
             rc = PT_EXIT_INPUT;
         }
         fclose(q->in);
-        csv_field(&sb, names[k]);
+        pt_sbuf_add_csv(&sb, names[k]);
         for (i = q->first; i <= q->last; i++)
             pt_sbuf_add(&sb, q->result[i] < 0 ? "," : q->result[i] ? ",1" : ",0");
         right = score(q, &answered);

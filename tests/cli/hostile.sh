@@ -109,4 +109,34 @@ else
     echo "  skipped: strace is not installed (hostile-6.5)"
 fi
 
+# ---- CSV cells: one quoting (pt_sbuf_add_csv) for the grade sheet and the trace
+# (a sheet's name must not forge a row of grades, nor a name become a formula)
+mkdir "$tmp/sheets"
+nl='
+'
+forged="x\"$nl${nl}mallory,1,1,1,1,1,1,1,7,7${nl}y"
+printf 'nothing\n' > "$tmp/sheets/$forged"
+printf 'nothing\n' > "$tmp/sheets/=1+1"
+printf 'nothing\n' > "$tmp/sheets/end\""
+"$exe" quiz docs/examples/triangle.scene --vertex 1 --grade "$tmp/sheets" > "$tmp/grades.csv" 2> "$tmp/err"
+if command -v python3 > /dev/null 2>&1; then
+    rows=$(python3 -c 'import csv, sys
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+print(len(rows), sum(r[0] == "mallory" for r in rows), sum(r[0].startswith("x\"") for r in rows))' "$tmp/grades.csv")
+    check "hostile-7.1 a sheet named x\" + newlines + a row of grades: read as CSV, a header and 3 rows, none for mallory ($rows)" \
+        test "$rows" = "4 0 1"
+else
+    echo "  skipped: python3 is not installed (hostile-7.1)"
+fi
+check "hostile-7.2 ... its name one quoted cell, the quote doubled" \
+    grep -q '^"x""$' "$tmp/grades.csv"
+check "hostile-7.3 a sheet named =1+1: a text cell, not a formula" grep -q "^\"'=1+1\"," "$tmp/grades.csv"
+check "hostile-7.4 a name ending in a quote: doubled, and no NUL byte in the CSV" \
+    sh -c "grep -q '^\"end\"\"\",' '$tmp/grades.csv' && test \$(tr -d '\\000' < '$tmp/grades.csv' | wc -c) = \$(wc -c < '$tmp/grades.csv')"
+printf 'framebuffer 20 10\nmodel =1+1\ntranslate 0 0 -2\nv 0 0 0\nv 1 1 0\nl 1 2\nmodel @x\nv 0 0 -1\nv 1 0 -1\nl 1 2\n' > "$tmp/formula.scene"
+"$exe" "$tmp/formula.scene" --format csv > "$tmp/f.csv" 2> "$tmp/err"
+check "hostile-7.5 a model named =1+1 in a CSV trace: a text cell" \
+    test "$(grep -c "^\"'=1+1\"," "$tmp/f.csv")" -gt 0 -a "$(grep -c '^=' "$tmp/f.csv")" = 0
+check "hostile-7.6 ... and @x too" test "$(grep -c '^@' "$tmp/f.csv")" = 0 -a "$(grep -c "^\"'@x\"," "$tmp/f.csv")" -gt 0
+
 report
