@@ -21,6 +21,18 @@ check "run-1.2 ... the last line is the sum" sh -c 'tail -1 "$1" | grep -Eqx "[1
 check "run-1.3 ... and the line before it counts the skip and says why" \
     sh -c 'tail -2 "$1" | head -1 | grep -Fqx "1 skipped (valgrind: built with AddressSanitizer)"' _ "$tmp/out"
 
+# a binary valgrind cannot run (an instruction it does not know, as in a
+# -march=native build on a CPU with AVX-512): a script that dies of SIGILL
+# as such a binary does under it stands in for one
+if command -v valgrind > /dev/null 2>&1; then
+    printf '#!/bin/sh\necho "vex amd64->IR: unhandled instruction bytes" >&2\nkill -ILL $$\n' > "$tmp/sigill"
+    chmod +x "$tmp/sigill"
+    sh tests/cli/valgrind.sh "$tmp/sigill" > "$tmp/out" 2>&1
+    rc=$?
+    check "run-1.4 valgrind's group skips a binary it cannot run, says why (exit $rc)" \
+        sh -c 'test "$2" = 0 && grep -q "skipped: valgrind cannot run" "$1" && tail -1 "$1" | grep -qx "0 passed, 0 failed"' _ "$tmp/out" "$rc"
+fi
+
 PT_RUN_GROUPS="layers 1 sh tests/repo/layers.sh" sh tests/run.sh "$B" > "$tmp/out" 2>&1
 check "run-2.1 nothing skipped: no skip line" sh -c '! grep -q skipped "$1" && tail -1 "$1" | grep -Eqx "[1-9][0-9]* passed, 0 failed"' _ "$tmp/out"
 
