@@ -340,9 +340,13 @@ static int run(int argc, char **argv)
     if (!rc && c.trace && kraft &&
         pt_kraft_write(tout.f, &s, c.fmt == PT_FORMAT_KRAFT_PIXELS, err, sizeof err) != 0)
         rc = 1;
-    else if (!rc && c.trace && kraft && (fflush(tout.f) != 0 || ferror(tout.f))) {
-        snprintf(err, sizeof err, "cannot write the trace to '%s'", c.trace);
-        rc = 1;
+    else if (!rc && c.trace && kraft) {
+        errno = 0;                          /* what the last write said, if one failed */
+        if (fflush(tout.f) != 0 || ferror(tout.f)) {
+            snprintf(err, sizeof err, "cannot write the trace to '%s': %s", c.trace,
+                     errno ? strerror(errno) : "a write failed");
+            rc = 1;
+        }
     }
     if (!rc && tr && pt_trace_finish(tr) != 0) {
         snprintf(err, sizeof err, "cannot write the trace to '%s': %s", c.trace,

@@ -64,6 +64,11 @@ for c in stages shapes "stages --help" "shapes --help" --help "step --help" "why
     check "hostile-4.2 pipetrace $c > /dev/full: one line says why" \
         test "$(cat "$tmp/err")" = "pipetrace$name: cannot write to standard output: No space left on device"
 done
+for f in kraft kraft-pixels; do
+    $exe docs/examples/triangle.scene --format $f > /dev/full 2> "$tmp/err"; rc=$?
+    check "hostile-4.5 the course's log ($f) to a full standard output: exit 2 (got $rc), with the reason" \
+        sh -c 'test "$1" = 2 && grep -q "No space left on device" "$2"' _ "$rc" "$tmp/err"
+done
 $exe docs/examples/triangle.scene > /dev/full 2> "$tmp/err"; rc=$?
 check "hostile-4.3 the render command's trace to a full standard output: exit 2 (got $rc)" test "$rc" = 2
 check "hostile-4.4 ... with the reason" grep -q 'No space left on device' "$tmp/err"
