@@ -114,6 +114,11 @@ else
     echo "  skipped: strace is not installed (hostile-6.5)"
 fi
 
+run journey --vertex 4294967296 --svg "$tmp/j.svg"
+check "hostile-5.6 journey --vertex 4294967296: a usage error that gives the range" \
+    sh -c 'test "$1" = 1 && grep -q "is out of range: vertex numbers go from 1 to 4294967295" "$2"' _ "$rc" "$tmp/err"
+check "hostile-5.7 ... and no picture" test ! -e "$tmp/j.svg"
+
 # ---- CSV cells: one quoting (pt_sbuf_add_csv) for the grade sheet and the trace
 # (a sheet's name must not forge a row of grades, nor a name become a formula)
 mkdir "$tmp/sheets"

@@ -158,9 +158,13 @@ int pt_cmd_journey(int argc, char **argv)
             else image = val;
         } else if (!strcmp(o, "--vertex")) {
             if ((u = pt_cli_value("journey", argc, argv, &k, &val)) >= 0) return u;
-            if (vlist_parse(&vl, val) != 0)
+            if (vlist_parse(&vl, val) != 0) {
+                uint64_t one;                   /* a number out of range: say its range */
+                if (*val && !val[strspn(val, "0123456789")])
+                    return pt_cli_vertex("journey", val, &one);
                 return pt_cli_usage("journey", "--vertex takes a vertex number >= 1, a list "
                                     "such as 1,4-6 or 'all', not %s", val);
+            }
             listed = 1;
         } else if ((u = pt_cli_arg(&ca, argc, argv, &k)) >= 0) return u;  /* SCENE, --vertex, ... */
     }
