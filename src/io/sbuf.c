@@ -155,6 +155,57 @@ void pt_sbuf_add_xml(pt_sbuf *sb, const char *t)
     add_escaped(sb, t, xml_escape);
 }
 
+/* 0, or the code point of the UTF-8 character of len bytes at p when a
+** terminal must not get it raw (C1, bidirectional and invisible marks). */
+static unsigned long term_hidden(const unsigned char *p, int len)
+{
+    unsigned long c = len == 2 ? ((p[0] & 0x1fu) << 6 | (p[1] & 0x3fu))
+                    : len == 3 ? ((p[0] & 0x0fu) << 12 | (p[1] & 0x3fu) << 6 | (p[2] & 0x3fu))
+                    : 0;
+
+    if ((c >= 0x80 && c <= 0x9f) || c == 0x200e || c == 0x200f ||
+        (c >= 0x202a && c <= 0x202e) || (c >= 0x2066 && c <= 0x2069) || c == 0xfeff)
+        return c;
+    return 0;
+}
+
+int pt_sbuf_term_plain(const char *t, size_t n)
+{
+    const unsigned char *p = (const unsigned char *)t, *e = p + n;
+
+    while (p < e) {
+        int len = *p < 0x80 ? 1 : pt_sbuf_utf8_len(p);
+        if (len == 0 || len > e - p) return 0;
+        if (len == 1 && (*p < 0x20 || *p == 0x7f)) return 0;
+        if (len > 1 && term_hidden(p, len)) return 0;
+        p += len;
+    }
+    return 1;
+}
+
+void pt_sbuf_add_term(pt_sbuf *sb, const char *t, size_t n)
+{
+    const unsigned char *p = (const unsigned char *)t, *e = p + n;
+
+    if (pt_sbuf_term_plain(t, n)) { pt_sbuf_addn(sb, t, n); return; }
+    while (p < e) {
+        int len = *p < 0x80 ? 1 : pt_sbuf_utf8_len(p);
+        unsigned long c;
+
+        if (len == 0 || len > e - p || (len == 1 && (*p < 0x20 || *p == 0x7f))) {
+            pt_sbuf_addf(sb, "\\x%02x", *p);          /* a byte */
+            p++;
+        } else if (len > 1 && (c = term_hidden(p, len)) != 0) {
+            pt_sbuf_addf(sb, "\\u%04lx", c);          /* a character */
+            p += len;
+        } else {
+            if (*p == '\\') pt_sbuf_add(sb, "\\");  /* reads back */
+            pt_sbuf_addn(sb, (const char *)p, (size_t)len);
+            p += len;
+        }
+    }
+}
+
 int pt_sbuf_csv_plain(const char *t)
 {
     return (*t == 0 || !strchr("=+-@\t\r", *t)) && !t[strcspn(t, ",\"\r\n")];

@@ -54,6 +54,19 @@ void pt_sbuf_add_xml(pt_sbuf *sb, const char *t);
 ** UTF-8 becomes U+FFFD, as in pt_sbuf_add_xml(). */
 void pt_sbuf_add_json(pt_sbuf *sb, const char *t);
 
+/* 1 when t[0..n) may go to a terminal as it is: well-formed UTF-8 with no
+** control character (C0, DEL, C1: an escape sequence begins with one) and no
+** character that turns or hides text (the bidirectional controls U+202A ..
+** U+202E and U+2066 .. U+2069, U+200E, U+200F, U+FEFF).  This function
+** can't fail. */
+int pt_sbuf_term_plain(const char *t, size_t n);
+
+/* Append t[0..n) made safe for a terminal, the one function for text from an
+** untrusted file that reaches one: what pt_sbuf_term_plain() refuses is
+** written out visibly, a byte as \xHH, a character as \uHHHH; a backslash
+** as \\ where anything is written out, so the result reads back. */
+void pt_sbuf_add_term(pt_sbuf *sb, const char *t, size_t n);
+
 /* 1 when text t goes into a CSV cell as it is: no comma, quote, CR or LF,
 ** and no first character a spreadsheet reads as a formula (= + - @, tab,
 ** CR).  This function can't fail. */

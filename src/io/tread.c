@@ -66,6 +66,17 @@ int pt_names_intern(pt_names *nm, const char *s, size_t n, uint32_t *id)
 {
     size_t k;
 
+    if (!pt_sbuf_term_plain(s, n)) {        /* a name diff will print: made safe */
+        pt_sbuf safe;
+        int rc;
+
+        pt_sbuf_init(&safe);
+        pt_sbuf_add_term(&safe, s, n);
+        rc = safe.failed || !safe.s ? -1 : pt_names_intern(nm, safe.s, safe.len, id);
+        pt_sbuf_free(&safe);
+        return rc;
+    }
+
     if (2 * (nm->n + 1) >= nm->nslot &&
         names_rehash(nm, nm->nslot ? 2 * nm->nslot : 64) != 0) return -1;
     k = (size_t)hash_bytes(s, n) & (nm->nslot - 1);

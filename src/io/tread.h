@@ -42,8 +42,10 @@ typedef struct pt_names {
 
 #define PT_NAMES_INIT {NULL, 0, 0, NULL, 0, 0, NULL, 0}
 
-/* The id of s[0..n) in nm, adding it when new.  Returns 0, or -1 when out of
-** memory. */
+/* The id of s[0..n) in nm, adding it when new; a name a terminal must not get
+** raw (pt_sbuf_term_plain()) is kept as pt_sbuf_add_term() writes it, so no
+** name read from a trace can send escape sequences where diff prints it.
+** Returns 0, or -1 when out of memory. */
 int pt_names_intern(pt_names *nm, const char *s, size_t n, uint32_t *id);
 
 /* The name with id (id < nm->n), NUL-terminated.  Valid until the next intern. */

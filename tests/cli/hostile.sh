@@ -119,6 +119,18 @@ check "hostile-5.6 journey --vertex 4294967296: a usage error that gives the ran
     sh -c 'test "$1" = 1 && grep -q "is out of range: vertex numbers go from 1 to 4294967295" "$2"' _ "$rc" "$tmp/err"
 check "hostile-5.7 ... and no picture" test ! -e "$tmp/j.svg"
 
+# ---- a name read from an untrusted trace never reaches the terminal raw
+# (an escape sequence, a bidirectional control): diff prints it written out
+"$exe" docs/examples/two-models.scene --format jsonl --trace "$tmp/a.jsonl"
+sed 's/"arrow"/"arr\\u001b]0;pwned\\u0007\\u202eow"/g' "$tmp/a.jsonl" > "$tmp/b.jsonl"
+sed 's/"arrow"/"arr\\u001b]0;pwned\\u0007\\u202eow"/g; s/"x":1\.5/"x":1.75/' "$tmp/a.jsonl" > "$tmp/c.jsonl"
+"$exe" diff "$tmp/b.jsonl" "$tmp/c.jsonl" > "$tmp/out" 2>&1; rc=$?
+check "hostile-8.1 diff of traces whose model name holds ESC, BEL and U+202E: they differ (exit $rc)" test "$rc" = 1
+check "hostile-8.2 ... no ESC, BEL or U+202E in what it prints" \
+    sh -c "! grep -q \"\$(printf '\\033\\|\\007\\|\\342\\200\\256')\" '$tmp/out'"
+check "hostile-8.3 ... the name written out: arr\\x1b]0;pwned\\x07\\u202eow" \
+    grep -qF 'arr\x1b]0;pwned\x07\u202eow v4' "$tmp/out"
+
 # ---- CSV cells: one quoting (pt_sbuf_add_csv) for the grade sheet and the trace
 # (a sheet's name must not forge a row of grades, nor a name become a formula)
 mkdir "$tmp/sheets"
