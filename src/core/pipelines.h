@@ -8,7 +8,7 @@
 ** the segment stages that may drop a segment or give it new end points
 ** between the vertex stages and the rasterizer, the runner that takes such a
 ** new point on, and the viewport stage the rasterizer asks for every step.
-** The scene names one (pt_scene.pipeline); the plan, the run, a journey and
+** The scene names one (pt_scene.pipe); the plan, the run, a journey and
 ** the trace's header follow it, and nothing asks "which camera" any other way.
 **
 **   classic  model -> camera -> image -> pixel -> viewport -> framebuffer -> index
