@@ -32,7 +32,7 @@
 ** Everything is written into a pt_sbuf (no stdio); coordinates in panel units
 ** with one decimal, every text XML-escaped.
 **
-** The matrix camera (s->matrix) has ten panels, one per stage of
+** The matrix camera (pt_pipe_matrix) has ten panels, one per stage of
 ** pt_matrix_order: model, world, view (eye, frustum), clip space (the four
 ** side planes against w_k), the cvv (near and far, the outcode), the NDC cube,
 ** screen, then viewport, framebuffer and pixel array as above.  Its own
