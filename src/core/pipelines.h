@@ -138,17 +138,6 @@ static inline int pt_pipeline_prev(const pt_pipeline *pl, pt_stage st)
     return -1;
 }
 
-/* The most real values a stage of pl has: 3, or 4 with a homogeneous w.
-** This function can't fail. */
-static inline int pt_pipeline_nreal(const pt_pipeline *pl)
-{
-    int i, n = 0;
-
-    for (i = 0; i < pl->norder; i++)
-        if (pt_stage_infos[pl->order[i]].nreal > n) n = pt_stage_infos[pl->order[i]].nreal;
-    return n;
-}
-
 /* 1 when stage st is one of pl's.  This function can't fail. */
 static inline int pt_pipeline_has(const pt_pipeline *pl, pt_stage st)
 {

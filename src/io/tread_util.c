@@ -211,16 +211,14 @@ int pt_tr_nonfinite(const char *p, size_t n, double *x)
 
 int pt_tr_camera(pt_thdr *h, const char *p, size_t n)
 {
-    int k;
+    char word[32];                          /* longer than every camera word */
+    const pt_pipeline *pl;
 
-    for (k = 0; k < PT_NPIPES; k++)
-        if (pt_pipelines[k]->camera && pt_tr_is(p, n, pt_pipelines[k]->camera)) {
-            h->pipe = pt_pipelines[k]->id;
-            h->perspective = 1;
-            return 0;
-        }
-    if (!pt_tr_is(p, n, "perspective") && !pt_tr_is(p, n, "orthographic")) return -1;
-    h->pipe = PT_PIPE_CLASSIC;
-    h->perspective = pt_tr_is(p, n, "perspective");
+    if (n >= sizeof word) return -1;
+    memcpy(word, p, n);
+    word[n] = '\0';
+    if (!(pl = pt_pipeline_by_camera(word))) return -1;
+    h->pipe = pl->id;
+    h->perspective = pl->camera || strcmp(word, "perspective") == 0;
     return 0;
 }
