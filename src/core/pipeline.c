@@ -709,8 +709,9 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
     d->im.color = m->color;
     for (j = 0; j < 3; j++) {               /* a model's one colour, both ends */
         d->ls.c0[j] = d->ls.c1[j] = pt_color_float(m->color[j]);
-        d->ls.rgb[j] = m->color[j];
+        d->ls.paint.rgb[j] = m->color[j];
     }
+    d->ls.paint.coverage = 1.0f;
     for (j = 0; j < m->nseg; j++) {
         pt_vec2 a = pp[m->seg[j].a], b = pp[m->seg[j].b];
         int taken = piece_segment(pc, s, a, b);

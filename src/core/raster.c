@@ -146,8 +146,7 @@ static void tell_step(const dda *d, int transposed, int si, double acc, pt_pix p
     for (i = 0; i < 3; i++)                         /* colour, then gamma */
         st.color[i] = pt_gamma(pt_color_at(su->c0[i], su->dc[i], (double)si,
                                            (double)su->s0));
-    st.rgb[0] = ls->rgb[0]; st.rgb[1] = ls->rgb[1]; st.rgb[2] = ls->rgb[2];
-    st.coverage = 1.0f;
+    st.paint = ls->paint;
     ls->step(ls->ud, &st);
 }
 
@@ -267,8 +266,7 @@ static void tell_degenerate(const dda *d, pt_raster_setup *su, double x, double 
     st.vp = p;
     st.inside = inside;
     for (i = 0; i < 3; i++) st.color[i] = ls->c0[i];
-    st.rgb[0] = ls->rgb[0]; st.rgb[1] = ls->rgb[1]; st.rgb[2] = ls->rgb[2];
-    st.coverage = 1.0f;
+    st.paint = ls->paint;
     ls->step(ls->ud, &st);
 }
 

@@ -70,8 +70,8 @@ typedef struct pt_raster_step {
     int inside;                  /* 1: inside the viewport, drawn; 0: clipped */
     float color[3];              /* the course's colour written, 0..1: gamma-
                                  ** encoded (a degenerate segment's: c0, raw) */
-    unsigned char rgb[3];        /* the colour pipetrace writes (the segment's) */
-    float coverage;              /* the share of the pixel covered: 1 */
+    pt_fb_paint paint;           /* what pipetrace writes: the segment's colour,
+                                 ** all of the pixel */
 } pt_raster_step;
 
 /* Who hears the DDA's records, and the colours they carry. */
@@ -80,7 +80,7 @@ typedef struct pt_raster_steps {
     void (*step)(void *ud, const pt_raster_step *st);      /* may be NULL */
     void *ud;                                              /* passed back unchanged */
     float c0[3], c1[3];          /* the colours of p0 and p1 (pt_color_float) */
-    unsigned char rgb[3];        /* the colour pipetrace writes */
+    pt_fb_paint paint;           /* what pipetrace writes, told with each step */
 } pt_raster_steps;
 
 /* What the rasterizer reports, in step order. */
