@@ -8,7 +8,7 @@
 ** This is where the perspective happens: w_k = z_v, so dividing by it shrinks
 ** far points toward the centre.  Inside the CVV the result lies in the cube
 ** [-1,1] x [-1,1] x [0,1].  Points outside the CVV are clipped before they
-** reach this stage (src/core/clip.c), so w_k > 0 here.  w_scale is the magnitude
+** reach this stage (stages/ms_clip_segment.c), so w_k > 0 here.  w_scale is the magnitude
 ** w_k was computed from (stages/pt_matrix.c); when w_k is far smaller, it lost the
 ** digits of the difference, the quotients lost them too, and the record is
 ** flagged `ill_conditioned`, as in the classic projection.  docs/cameras.md#ndc.

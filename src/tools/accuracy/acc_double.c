@@ -278,7 +278,7 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     p[0].x = a->k[0].hi; p[0].y = a->k[1].hi; p[0].z = a->k[2].hi; p[0].w = a->k[3].hi;
     p[1].x = b->k[0].hi; p[1].y = b->k[1].hi; p[1].z = b->k[2].hi; p[1].w = b->k[3].hi;
     if (!pt_clip_segment(p[0], p[1], &t[0], &t[1], &q[0], &q[1]))
-        return 0;                           /* src/core/clip.c's, as the pipeline clips */
+        return 0;                           /* stages/ms_clip_segment.c's, as the pipeline clips */
     for (e = 0; e < 2; e++) {
         if (!g->made[e]) continue;
         g->t[e] = pt_acc_dd(t[e]);

@@ -6,7 +6,7 @@
 ** itself: the stage functions of stages/ (their reference copy, ptref_*,
 ** stages/pt_ref.h, so that a student build measures the formulas, not the
 ** student's stage), the pipeline's plan for the matrix camera's matrices,
-** src/core/clip.c's clipping and src/core/raster.c's rasterizer, called as
+** stages/ms_clip_segment.c's clipping and src/core/raster.c's rasterizer, called as
 ** they are, so its values are the reference build's trace's.  Only the
 ** two choices the pipeline does not make are written out here: 2 for 2.001
 ** (PT_ACC_TWO) and the DDA that recomputes y each step (PT_ACC_RECOMPUTE).

@@ -10,7 +10,7 @@
 **                  rounded to float first; that rounding is float's error too.
 **   double         binary64, 53 bits: the stages of stages/ (their
 **                  reference copy, ptref_*, in a student build too),
-**                  src/core/clip.c and src/core/raster.c themselves
+**                  stages/ms_clip_segment.c and src/core/raster.c themselves
 **                  (acc_double.c), so their values are the reference
 **                  build's trace's (tests/unit/test_accuracy.c checks it).
 **   double-double  the reference: a value is hi + lo, two doubles, 106 bits
@@ -40,7 +40,7 @@
 ** keeps only that product, multiplied out in double by the parser, so every
 ** arithmetic takes it as an input -- the reference as exact, float rounded --
 ** and its rotations' sines and cosines are double's.  Segments are clipped in
-** clip space in each arithmetic (src/core/clip.c's Liang-Barsky), and the points
+** clip space in each arithmetic (stages/ms_clip_segment.c's Liang-Barsky), and the points
 ** clipping makes go on through ndc .. index in that arithmetic.  Ties: the
 ** reference carries a bound on each value's rounding error (2^-100 of the
 ** magnitudes it comes from, first order) and takes a value within its bound of
