@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdint.h>
 #include "stages/pt_mat4.h"
+#include "stages/r9_matrix.h"
 #include "core/pipelines.h"
 
 #define PT_MAX_SIZE 16384        /* largest framebuffer width or height */
@@ -27,7 +28,18 @@
 
 typedef struct pt_segment {
     uint32_t a, b;               /* 0-based vertex indices into the model's v[] */
+    uint32_t ca, cb;             /* 0-based colour indices (`segment I J CI CJ`;
+                                 ** `l`, `f` and `segment I J`: a and b) */
 } pt_segment;
+
+/* A point (`point I [C [RADIUS]]`).  The course draws a model's primitives in
+** file order; a point drawn after the first `after` segments keeps it. */
+typedef struct pt_point {
+    uint32_t v;                  /* 0-based vertex index */
+    uint32_t c;                  /* 0-based colour index (default v) */
+    int radius;                  /* Point.radius, default 0; < 0 draws nothing */
+    size_t after;                /* how many of seg[] come before it in the file */
+} pt_point;
 
 typedef struct pt_model {
     char *name;                  /* unique, owned */
@@ -39,6 +51,22 @@ typedef struct pt_model {
     size_t nseg, cap_seg;        /* count and capacity of seg */
     pt_mat4 world;               /* product of the `world` lines, identity if none;
                                  ** the matrix camera appends `translate` */
+    /* the course's renderers (docs/renderers.md): */
+    char *position;              /* the Position's name (`model NAME POSITION`),
+                                 ** owned; NULL: the model's name */
+    pt_rgb *colors;              /* the colour list (`vcolor`, `vcolor-float`),
+                                 ** owned; empty: one `color` a vertex (white
+                                 ** by default, as the course adds it) */
+    size_t ncolors, cap_colors;
+    int colors_given;            /* 1: the model has `color` or `vcolor` lines
+                                 ** (else the course warns and adds white) */
+    pt_point *pts;               /* points in file order, owned */
+    size_t npts, cap_pts;
+    int hidden_position;         /* `hidden-position`: Position.visible = false */
+    int hidden_model;            /* `hidden-model`: Model.visible = false */
+    pt_matop *ops;               /* renderer 9: the position's matrix, as
+                                 ** operations in file order, owned */
+    size_t nops, cap_ops;
 } pt_model;
 
 typedef struct pt_scene {
@@ -60,6 +88,19 @@ typedef struct pt_scene {
     pt_vec3 obj_translate;       /* with from_obj: the translation chosen */
     pt_model *models;            /* in file order, owned */
     size_t nmodels, cap_models;  /* count and capacity of models */
+    /* the course's renderers (docs/renderers.md): */
+    int renderer;                /* 4 (default), 7 or 9 */
+    char *scene_name;            /* `scene NAME`, owned; NULL: "" */
+    unsigned char vp_background[3];  /* `viewport-background`, default background */
+    double cam_l, cam_r, cam_b, cam_t;  /* renderers 7, 9: the Camera's view
+                                 ** rectangle (l/f .. t/f; default -1 1 -1 1) */
+    double cam_n;                /* the z of its near plane: -0.1 perspective,
+                                 ** +1 orthographic, -N after `near N` */
+    pt_vec3 view;                /* renderer 9: `view X Y Z` (camera.translate) */
+    int nearclip;                /* NearClip.doNearClipping, default 1 */
+    int antialias;               /* Rasterize.doAntiAliasing, default 0 */
+    int gamma;                   /* Rasterize.doGamma, default 1 */
+    int pipeline2;               /* 1: renderer 9's Pipeline2 */
     char **objs;                 /* the paths `obj` lines read, in order, owned: an
                                  ** output must not overwrite them */
     size_t nobjs;                /* their count */

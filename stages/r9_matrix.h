@@ -1,0 +1,36 @@
+/*
+** stages/r9_matrix.h -- renderer 9's Matrix: a position's 4x4 matrix, built as its Java builds it
+** See LICENSE for copyright and license.
+**
+** A scene gives a position's matrix as a list of operations (the `matrix`,
+** `matrix-pre`, `matrix-set` and renderer 9's `translate` lines):
+**   POST  M = M.times(OP)     PRE  M = OP.times(M)     SET  M = OP
+** starting from Matrix.identity().  OP is one of Matrix's builders.
+*/
+#ifndef PT_R9_MATRIX_H
+#define PT_R9_MATRIX_H
+
+#include <stddef.h>
+
+typedef enum pt_matmul {
+    PT_MATMUL_POST,              /* matrix OP */
+    PT_MATMUL_PRE,               /* matrix-pre OP */
+    PT_MATMUL_SET                /* matrix-set OP, and renderer 9's translate */
+} pt_matmul;
+
+typedef enum pt_matop_kind {
+    PT_MATOP_IDENTITY,           /* Matrix.identity() */
+    PT_MATOP_TRANSLATE,          /* Matrix.translate(a0, a1, a2) */
+    PT_MATOP_SCALE,              /* Matrix.scale(a0, a1, a2) (`scale S`: S S S) */
+    PT_MATOP_ROTATE,             /* Matrix.rotate(a0 degrees, a1, a2, a3);
+                                 ** `rotate x DEG` is rotate(DEG, 1, 0, 0) */
+    PT_MATOP_ROWS                /* Matrix.buildFromRows(a0 .. a15, row by row) */
+} pt_matop_kind;
+
+typedef struct pt_matop {
+    pt_matmul mul;
+    pt_matop_kind kind;
+    double a[16];
+} pt_matop;
+
+#endif
