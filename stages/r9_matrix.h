@@ -11,6 +11,7 @@
 #define PT_R9_MATRIX_H
 
 #include <stddef.h>
+#include "stages/pt_mat4.h"
 
 typedef enum pt_matmul {
     PT_MATMUL_POST,              /* matrix OP */
@@ -32,5 +33,15 @@ typedef struct pt_matop {
     pt_matop_kind kind;
     double a[16];
 } pt_matop;
+
+/* A Matrix as renderer 9 keeps it: four column vectors. */
+typedef struct pt_jmat { pt_vec4 col[4]; } pt_jmat;
+
+/* The position's matrix: identity, then ops[0 .. n-1] in order. */
+pt_jmat pt_r9_position_matrix(const pt_matop *ops, size_t n);
+
+/* A.times(B) and A.times(v), summed as Matrix.java sums them. */
+pt_jmat pt_jmat_times(const pt_jmat *a, const pt_jmat *b);
+pt_vec4 pt_jmat_times_vec(const pt_jmat *a, pt_vec4 v);
 
 #endif

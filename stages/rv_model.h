@@ -42,4 +42,50 @@ typedef struct pt_rv_model {
     pt_rv_prim *p; size_t np, cap_p;
 } pt_rv_model;
 
+/* The Camera as renderers 7 and 9 keep it (scene/Camera.java): the view
+** rectangle l .. r, b .. t (already divided by the focal length), n the z of
+** the near plane (-near), and renderer 9's view vector (camera.translate). */
+typedef struct pt_rv_camera {
+    int perspective;             /* 1: projPerspective, 0: projOrtho */
+    double l, r, b, t, n;
+    pt_vec3 view;                /* renderer 9 only; 0 0 0 */
+} pt_rv_camera;
+
+/* One cut a clip stage makes (the course's debug lines print it). */
+typedef enum pt_rv_edge {
+    PT_RV_NEAR,                  /* the near plane z = n (NearClip) */
+    PT_RV_XPOS, PT_RV_XNEG,      /* the view rectangle's x = +1, x = -1, */
+    PT_RV_YPOS, PT_RV_YNEG       /*   y = +1, y = -1 (Clip) */
+} pt_rv_edge;
+
+typedef struct pt_rv_cut {
+    pt_rv_edge edge;
+    int off;                     /* the end cut off: 0 (v0) or 1 (v1) */
+    double plane;                /* n, or +-1 */
+    double t;                    /* the course's t (its formula in the stage) */
+    pt_vec4 p[3];                /* near: v0, v1, the new point;
+                                 ** rectangle: inside, outside, the new point */
+    pt_rgb c[3];                 /* their colours, in the same order */
+    uint32_t v_new, c_new;       /* the indices the new vertex and colour got */
+} pt_rv_cut;
+
+/* Who hears a clip stage, primitive by primitive (any callback may be NULL). */
+typedef struct pt_rv_clip_ls {
+    void (*begin)(void *ud, const pt_rv_model *m, const pt_rv_prim *p);
+    void (*trivial)(void *ud, int accept);          /* "Trivial accept." / "delete." */
+    void (*cut)(void *ud, const pt_rv_cut *c);
+    void (*end)(void *ud, const pt_rv_model *m, const pt_rv_prim *p, int accepted);
+                                 /* p: the primitive kept, or the original
+                                 ** when it was rejected */
+    void *ud;
+} pt_rv_clip_ls;
+
+/* Append to m's lists: 0, or -1 when out of memory (m unchanged). */
+int pt_rv_add_vertex(pt_rv_model *m, pt_vec4 v);
+int pt_rv_add_color(pt_rv_model *m, pt_rgb c);
+int pt_rv_add_prim(pt_rv_model *m, const pt_rv_prim *p);
+
+/* Free what m owns and leave it empty.  This function can't fail. */
+void pt_rv_model_free(pt_rv_model *m);
+
 #endif
