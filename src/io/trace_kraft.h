@@ -22,6 +22,16 @@
 #include <stdio.h>
 #include "core/pipetrace.h"
 
+/* The course's debug switches (--kraft-debug LIST): which of its flags the
+** course's program sets.  --format kraft is PT_KDBG_SCENE, kraft-pixels
+** PT_KDBG_SCENE | PT_KDBG_RASTERIZE. */
+#define PT_KDBG_SCENE      0x01u   /* scene.debug */
+#define PT_KDBG_POSITION   0x02u   /* every Position.debug */
+#define PT_KDBG_RASTERIZE  0x04u   /* Rasterize.debug */
+#define PT_KDBG_CLIP       0x08u   /* Clip.debug (both clippers' lines) */
+#define PT_KDBG_NEARCLIP   0x10u   /* NearClip.debug (read by no renderer) */
+#define PT_KDBG_ALL        0x1Fu
+
 /* Most steps of one segment the pixel log writes: a line each. */
 #define PT_KRAFT_MAX_STEPS (1L << 24)
 
