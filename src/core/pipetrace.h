@@ -49,5 +49,6 @@
 #include "core/vjourney.h"             /* one point's records, every stage */
 #include "core/pipelines.h"            /* a pipeline as data */
 #include "core/pipeline.h"             /* plan, run, listen */
+#include "core/course.h"               /* renderers 7 and 9: their driver */
 
 #endif

@@ -1,0 +1,31 @@
+/*
+** src/io/trace_course.h -- the course's debug log of renderers 7 and 9 (--format kraft)
+** See LICENSE for copyright and license.
+**
+** The course's renderers 7 and 9 print, on System.err, what their
+** PipelineLogger and stages log while Pipeline.render (or renderer 9's
+** Pipeline2.render) runs: the camera, each position's translation or
+** matrix, every stage's vertex, colour and primitive lists, each clip stage's
+** primitives one by one, each primitive the rasterizer draws, and the
+** warnings.  This module writes that log byte for byte, listening to the
+** driver (core/course.h).  Which lines appear follows the course's flags,
+** the PT_KDBG_* bits of io/trace_kraft.h:
+**   scene.debug or Position.debug   every line but those below (the
+**                                   warnings are printed always)
+**     + Clip.debug                  the clip stages' "-- ..." lines
+**     + Rasterize.debug             the rasterizer's lines (io/rv_log_raster.h)
+** Numbers are spelled as Java spells them (io/jnum.h).
+*/
+#ifndef PT_TRACE_COURSE_H
+#define PT_TRACE_COURSE_H
+
+#include <stdio.h>
+#include "core/pipetrace.h"
+
+/* Render s (renderer 7 or 9) into fb (s->fb_w x s->fb_h) and write its log
+** to f with the course's flags dbg (PT_KDBG_*).  Returns 0; or -1 with a
+** message in err when out of memory.  Write errors show in ferror(f). */
+int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
+                  char *err, size_t errlen);
+
+#endif
