@@ -28,6 +28,7 @@
 #include "io/trace.h"
 #include "io/tlanes.h"
 #include "io/trace_kraft.h"
+#include "io/trace_course.h"
 
 #define PT_VERSION "0.1.0"
 
@@ -69,6 +70,8 @@ static const char usage[] =
 "                    seed's matrix) instead of making it perpendicular\n"
 "  --explain         under each vertex record, its formula with the numbers put in\n"
 "  --precision N     digits after the point in the text format (0-17, default 6)\n"
+"  --kraft-debug L   the course's log with its debug flags L (a list of scene,\n"
+"                    position, rasterize, clip, nearclip; all; none)\n"
 "  --threads N       format the trace on N threads, 1 or 2 (default: 2 for a\n"
 "                    large scene with two CPUs or more); the trace is the same\n"
 "  --help            show this help\n"
@@ -101,6 +104,9 @@ typedef struct cli {
     int raster_chosen;           /* --stage raster given */
     int explain;                 /* --explain */
     int threads;                 /* --threads, or 0: threads_wanted() decides */
+    int staged;                  /* --stage given */
+    unsigned kdebug;             /* --kraft-debug: the course's flags (PT_KDBG_*) */
+    int kdebug_given;
     pt_options opt;
 } cli;
 
@@ -124,6 +130,30 @@ static int mistyped_command(const char *scene)
     return 1;
 }
 
+/* The course's debug flags of list ("scene,clip" or "scene clip"; all, none)
+** into *out.  0, or -1 for a word it does not know. */
+static int kraft_debug(const char *list, unsigned *out)
+{
+    static const struct { const char *name; unsigned bits; } words[] = {
+        {"scene", PT_KDBG_SCENE}, {"position", PT_KDBG_POSITION},
+        {"rasterize", PT_KDBG_RASTERIZE}, {"clip", PT_KDBG_CLIP},
+        {"nearclip", PT_KDBG_NEARCLIP}, {"all", PT_KDBG_ALL}, {"none", 0}};
+    const char *p = list;
+    unsigned bits = 0;
+
+    while (*p) {
+        size_t n = strcspn(p, ", "), k;
+        for (k = 0; k < sizeof words / sizeof words[0]; k++)
+            if (n > 0 && strlen(words[k].name) == n && !strncmp(p, words[k].name, n)) break;
+        if (n > 0 && k == sizeof words / sizeof words[0]) return -1;
+        if (n > 0) bits |= words[k].bits;
+        p += n;
+        if (*p) p++;
+    }
+    *out = bits;
+    return 0;
+}
+
 /* Fill *c from argv.  Returns -1 to go on, else the exit status. */
 static int parse_args(cli *c, int argc, char **argv)
 {
@@ -138,7 +168,8 @@ static int parse_args(cli *c, int argc, char **argv)
         int takes = !strcmp(a, "--image") || !strcmp(a, "--trace") ||
                     !strcmp(a, "--format") || !strcmp(a, "--vertex") ||
                     !strcmp(a, "--model") || !strcmp(a, "--stage") ||
-                    !strcmp(a, "--precision") || !strcmp(a, "--threads");
+                    !strcmp(a, "--precision") || !strcmp(a, "--threads") ||
+                    !strcmp(a, "--kraft-debug");
 
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
         if (!strcmp(a, "--version")) {
@@ -152,6 +183,12 @@ static int parse_args(cli *c, int argc, char **argv)
         if (!strcmp(a, "--image")) c->image = val;
         else if (!strcmp(a, "--trace")) c->trace = val;
         else if (!strcmp(a, "--model")) c->opt.model = val;
+        else if (!strcmp(a, "--kraft-debug")) {
+            if (kraft_debug(val, &c->kdebug) != 0)
+                return usage_error("--kraft-debug takes a list of scene, position, "
+                                   "rasterize, clip, nearclip, all, none, not '%s'", val);
+            c->kdebug_given = 1;
+        }
         else if (!strcmp(a, "--format")) {
             if (!strcmp(val, "text")) c->fmt = PT_FORMAT_TEXT;
             else if (!strcmp(val, "jsonl")) c->fmt = PT_FORMAT_JSONL;
@@ -193,6 +230,7 @@ static int parse_args(cli *c, int argc, char **argv)
         else if (mistyped_command(a)) return PT_EXIT_USAGE;
         else c->scene = a;
     }
+    c->staged = staged;
     if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
     if (c->explain && c->fmt == PT_FORMAT_CSV)
         return usage_error("--explain needs --format text or jsonl%s", "");
@@ -273,6 +311,67 @@ static int threads_wanted(const cli *c, const pt_scene *s)
     return cpus >= 2 ? 2 : 1;
 }
 
+/* The render command for a scene of the course's renderer 7 or 9
+** (core/course.h): its image, its log (--format kraft, kraft-pixels,
+** --kraft-debug) or pipetrace's trace of it. */
+static int run_course(const cli *c, const pt_scene *s)
+{
+    pt_fb fb = {0, 0, NULL};
+    pt_outfile tout = {NULL, NULL, NULL, NULL}, iout = {NULL, NULL, NULL, NULL};
+    char err[PT_ERRLEN];
+    int rc = 0, kraft = c->kdebug_given || c->fmt == PT_FORMAT_KRAFT ||
+                        c->fmt == PT_FORMAT_KRAFT_PIXELS;
+    unsigned dbg = c->kdebug_given ? c->kdebug
+                 : c->fmt == PT_FORMAT_KRAFT_PIXELS ? PT_KDBG_SCENE | PT_KDBG_RASTERIZE
+                 : PT_KDBG_SCENE;
+
+    if (c->staged || c->explain || c->opt.vertex || c->opt.model || c->opt.all_stages ||
+        c->opt.raw_lookat) {
+        fprintf(stderr, "pipetrace: %s: error: renderer %d scenes are traced whole: no "
+                "--vertex, --model, --stage, --all-stages, --explain, --raw-lookat\n",
+                s->path, s->renderer);
+        return PT_EXIT_INPUT;
+    }
+    if (pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) != 0) {
+        snprintf(err, sizeof err, "pipetrace: out of memory");
+        rc = 1;
+    }
+    if (!rc && c->trace) {
+        if (pt_outfile_open(&tout, c->trace, err, sizeof err) != 0) rc = 1;
+        else if ((kraft ? pt_course_log(tout.f, s, dbg, &fb, err, sizeof err)
+                        : pt_course_trace(tout.f, s, (int)c->fmt, c->precision, &fb, err,
+                                          sizeof err)) != 0)
+            rc = 1;
+        else {
+            errno = 0;                      /* what the last write said, if one failed */
+            if (fflush(tout.f) != 0 || ferror(tout.f)) {
+                snprintf(err, sizeof err, "cannot write the trace to '%s': %s", c->trace,
+                         errno ? strerror(errno) : "a write failed");
+                rc = 1;
+            }
+        }
+    } else if (!rc && pt_course_render(s, &fb, NULL) != 0) {
+        snprintf(err, sizeof err, "pipetrace: out of memory");
+        rc = 1;
+    }
+    if (!rc && c->image) {
+        if (pt_outfile_open(&iout, c->image, err, sizeof err) != 0) rc = 1;
+        else if ((pt_path_is_png(c->image) ? pt_fb_write_png(&fb, iout.f)
+                                           : pt_fb_write_ppm(&fb, iout.f)) != 0) {
+            snprintf(err, sizeof err, "cannot write '%s'", c->image);
+            rc = 1;
+        } else if (pt_outfile_commit(&iout, err, sizeof err) != 0) rc = 1;
+    }
+    if (!rc && c->trace && pt_outfile_commit(&tout, err, sizeof err) != 0) rc = 1;
+    if (rc) {
+        fprintf(stderr, "%s%s\n", strncmp(err, "pipetrace:", 10) ? "pipetrace: " : "", err);
+        pt_outfile_abort(&iout);
+        pt_outfile_abort(&tout);
+    }
+    pt_fb_free(&fb);
+    return rc ? PT_EXIT_INPUT : 0;
+}
+
 /* The render command, or the subcommand argv[1] names. */
 static int run(int argc, char **argv)
 {
@@ -298,6 +397,20 @@ static int run(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, c.scene) != 0) return PT_EXIT_INPUT;
+    if (s.renderer == 7 || s.renderer == 9) {
+        rc = run_course(&c, &s);
+        pt_scene_free(&s);
+        return rc;
+    }
+    if (c.kdebug_given && c.kdebug != (PT_KDBG_SCENE | PT_KDBG_RASTERIZE) &&
+        c.kdebug != PT_KDBG_SCENE) {
+        fprintf(stderr, "pipetrace: %s: error: --kraft-debug other than scene or "
+                "scene,rasterize needs a renderer 7 or 9 scene\n", s.path);
+        pt_scene_free(&s);
+        return PT_EXIT_INPUT;
+    }
+    if (c.kdebug_given)
+        c.fmt = c.kdebug & PT_KDBG_RASTERIZE ? PT_FORMAT_KRAFT_PIXELS : PT_FORMAT_KRAFT;
     if (s.nmodels == 0)
         fprintf(stderr, "pipetrace: warning: %s has no models: nothing to trace or draw\n", s.path);
     rc = check_filters(&c, &s);
