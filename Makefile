@@ -117,7 +117,8 @@ CORE_O   = $B/scene.o $B/scene_course.o $B/nameset.o $B/numparse.o $B/shapes.o $
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace_buf.o $B/trace_head.o \
            $B/trace_text.o $B/trace_jsonl.o $B/trace_csv.o $B/trace.o $B/tread.o \
            $B/tread_util.o $B/tread_text.o $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o \
-           $B/png.o $B/outfile.o $B/trace_kraft.o $B/tlanes.o $B/trace_course.o
+           $B/png.o $B/outfile.o $B/trace_kraft.o $B/tlanes.o $B/trace_course.o \
+           $B/trace_course_rec.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff
 # and step), the subcommands (diff, accuracy and journey in folders of their
 # own; diff's parts listed with the commands).
