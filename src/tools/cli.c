@@ -42,6 +42,16 @@ int pt_cli_load(pt_scene *s, const char *path)
     return PT_EXIT_INPUT;
 }
 
+int pt_cli_course(pt_scene *s, const char *cmd)
+{
+    if (s->renderer != 7 && s->renderer != 9) return 0;
+    fprintf(stderr, "pipetrace %s: %s: error: %s does not take scenes of the course's "
+            "renderer %d (render it with 'pipetrace %s': its image, log and trace)\n",
+            cmd, s->path, cmd, s->renderer, s->path);
+    pt_scene_free(s);
+    return PT_EXIT_INPUT;
+}
+
 int pt_cli_outputs(const char *scene, const char *const *out, const char *const *opt, int n)
 {
     const char *in = scene && !strcmp(scene, "-") ? "/dev/stdin" : scene;

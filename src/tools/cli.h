@@ -44,6 +44,11 @@ int pt_cli_stdout(const char *cmd, int rc);
 ** or PT_EXIT_INPUT after printing the FILE:LINE:COL message. */
 int pt_cli_load(pt_scene *s, const char *path);
 
+/* For a command that knows only renderer 4's scenes: when s is a scene of
+** the course's renderer 7 or 9, print "pipetrace CMD: FILE: error: ..."
+** (what renders it instead), free s and return PT_EXIT_INPUT; else 0. */
+int pt_cli_course(pt_scene *s, const char *cmd);
+
 /* Refuse outputs that would destroy an input or each other: out[k] (given
 ** as option opt[k]; NULL: not given) naming the scene file (a scene "-": the
 ** file standard input reads) or another output, as pt_outfile_same() tells.

@@ -378,6 +378,7 @@ int pt_cmd_export(int argc, char **argv)
     }
     if (pt_cli_load(&s, path) != 0)
         return PT_EXIT_INPUT;
+    if (pt_cli_course(&s, "export")) return PT_EXIT_INPUT;
     if (pt_scene_pipeline(&s) != &pt_pipe_classic) {
         fprintf(stderr, "pipetrace export: %s uses the %s (camera %s), "
                 "which renderer 4 does not have\n", s.path, pt_scene_pipeline(&s)->title,

@@ -452,6 +452,7 @@ int pt_cmd_quiz(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
+    if (pt_cli_course(&s, "quiz")) return PT_EXIT_INPUT;
     if (v) m = pt_cli_vertex_model(&s, "quiz", model, v);
     if ((v && !m) || (!v && model && !pt_cli_model(&s, "quiz", model))) {
         pt_scene_free(&s);

@@ -295,6 +295,7 @@ int pt_cmd_step(int argc, char **argv)
     if (all && inter) return pt_cli_usage("step", "--all and --interactive exclude each other");
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
+    if (pt_cli_course(&s, "step")) return PT_EXIT_INPUT;
     m = pt_cli_vertex_model(&s, "step", model, v);
     if (!m) {
         pt_scene_free(&s);

@@ -187,6 +187,7 @@ int pt_cmd_journey(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
+    if (pt_cli_course(&s, "journey")) return PT_EXIT_INPUT;
     if (!(m = pt_cli_vertex_model(&s, "journey", model, vl.max))) {
         pt_scene_free(&s);
         return PT_EXIT_INPUT;

@@ -1,0 +1,141 @@
+# tests/course79/check.py -- renderers 7 and 9 end to end against the course's own output
+# See LICENSE for copyright and license.
+#
+# Usage: python3 tests/course79/check.py PIPETRACE (from the repository root).
+# Each NAME.scene here is one of the course's cases written as a pipetrace
+# scene; NAME.log.gz is what the course's renderer printed with the switches
+# its first line names, NAME.deflog.log.gz (where there is one) with scene.debug
+# only, NAME.ppm.gz its framebuffer, NAME.stages.gz every stage's vertices at
+# full precision (README.md says where they come from).
+import glob
+import gzip
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+from checks import check, finish  # noqa: E402
+
+exe = sys.argv[1]
+here = os.path.dirname(os.path.abspath(__file__))
+tmp = tempfile.mkdtemp()
+
+
+def run(*args):
+    p = subprocess.run([exe] + list(args), stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    return p.returncode, p.stdout, p.stderr
+
+
+def gz(path):
+    with gzip.open(path, "rb") as f:
+        return f.read()
+
+
+def first_diff(a, b):
+    la, lb = a.split(b"\n"), b.split(b"\n")
+    for k in range(max(len(la), len(lb))):
+        x = la[k] if k < len(la) else b"<end>"
+        y = lb[k] if k < len(lb) else b"<end>"
+        if x != y:
+            return "line %d: expected %r, got %r" % (k + 1, x, y)
+    return ""
+
+
+# the course's stage names in its .stages dump, per pipetrace stage
+STAGES = {7: {"model": "0.model", "view": "1.view", "camera": "2.camera",
+              "nearclip": "3.nearclipped", "image": "4.projected", "clip": "5.clipped"},
+          9: {"model": "0.model", "world": "1.world", "view": "2.view", "camera": "3.camera",
+              "nearclip": "4.nearclipped", "image": "5.projected", "clip": "6.clipped"}}
+
+
+def stages_of(path):
+    """{(position, stage, index): (x, y, z[, w])} from a .stages dump."""
+    out, pos = {}, None
+    for line in gz(path).decode().splitlines():
+        t = line.split()
+        if t and t[0] == "position":
+            pos = t[1]
+        elif t and t[0] == "V":
+            out[(pos, t[1], int(t[2]))] = tuple(float(x) for x in t[3:])
+    return out
+
+
+scenes = sorted(glob.glob(os.path.join(here, "*.scene")))
+check("c79-0.1 the cases are here (16 of the course's, 6 more)", len(scenes) == 22, str(len(scenes)))
+for scene in scenes:
+    name = os.path.basename(scene)[:-6]
+    head = open(scene).readline()
+    m = re.search(r"--kraft-debug (\S+)", head)
+    dbg = m.group(1) if m else "all"
+    renderer = 9 if name.startswith("r9") else 7
+    log, ppm = os.path.join(tmp, "out.log"), os.path.join(tmp, "out.ppm")
+
+    # c79-1: the log with the case's switches and the image, byte for byte
+    rc, out, err = run(scene, "--kraft-debug", dbg, "--trace", log, "--image", ppm)
+    check("c79-1.1 %s: exit 0" % name, rc == 0, err.decode(errors="replace"))
+    if rc == 0:
+        want = gz(os.path.join(here, name + ".log.gz"))
+        got = open(log, "rb").read()
+        check("c79-1.2 %s: the log (--kraft-debug %s) byte for byte" % (name, dbg),
+              got == want, first_diff(want, got))
+        want = gz(os.path.join(here, name + ".ppm.gz"))
+        check("c79-1.3 %s: the image byte for byte" % name, open(ppm, "rb").read() == want)
+
+    # c79-2: scene.debug only (the course's default level), as --format kraft
+    dl = os.path.join(here, name + ".deflog.log.gz")
+    if os.path.exists(dl):
+        rc, out, err = run(scene, "--format", "kraft")
+        want = gz(dl)
+        check("c79-2.1 %s: --format kraft is the course's default log" % name,
+              rc == 0 and out == want, first_diff(want, out))
+
+    # c79-3: JSON Lines: every vertex record is the course's value at that stage
+    st = os.path.join(here, name + ".stages.gz")
+    if not os.path.exists(st) or "pos" in name or "posclip" in name:
+        continue
+    ref = stages_of(st)
+    rc, out, err = run(scene, "--format", "jsonl")
+    recs = [json.loads(x) for x in out.decode().splitlines()] if rc == 0 else []
+    verts = [r for r in recs if r["type"] == "vertex"]
+    bad, seen = [], set()
+    for r in verts:
+        key = (r["position"], STAGES[renderer][r["stage"]], r["v"] - 1)
+        want = ref.get(key)
+        got = (r["x"], r["y"], r["z"]) + ((r["w"],) if renderer == 9 else ())
+        got = tuple(float(x) for x in got)
+        if want is None or [repr(x) for x in want] != [repr(x) for x in got]:
+            bad.append("%s: want %s got %s" % (key, want, got))
+        seen.add(key)
+    check("c79-3.1 %s: jsonl: %d vertex records, each the course's value" % (name, len(verts)),
+          rc == 0 and verts and not bad, "; ".join(bad[:3]))
+    made = [r for r in verts if r["stage"] in ("nearclip", "clip")]
+    check("c79-3.2 %s: jsonl: a clip stage's vertices are the ones it made, each with "
+          "where it came from" % name,
+          all("from" in r and r["from"]["primitive"] >= 1 for r in made),
+          str(made[:1]))
+    check("c79-3.3 %s: jsonl: header first, summary last" % name,
+          recs and recs[0]["type"] == "header" and recs[-1]["type"] == "summary"
+          and recs[0]["renderer"] == renderer)
+    rc2, csv, _ = run(scene, "--format", "csv")
+    rows = csv.decode().splitlines()
+    check("c79-3.4 %s: csv: a row per vertex record" % name,
+          rc2 == 0 and rows[0].startswith("model,position,v,stage,")
+          and len(rows) - 1 == len(verts), "%d rows, %d records" % (len(rows) - 1, len(verts)))
+    rc3, text, _ = run(scene)
+    lines = text.decode().splitlines()
+    check("c79-3.5 %s: text: a line per vertex record" % name,
+          rc3 == 0 and sum(1 for x in lines if re.match(r"^\S+ v\d+ +\w+ +x =", x)) == len(verts))
+
+# c79-4: the teaching tools refuse such a scene with a clear message
+sc = os.path.join(here, "r7-near-01.scene")
+for tool in (["step", sc, "--all"], ["why", sc, "1", "1"], ["quiz", sc],
+             ["journey", sc, "--vertex", "1", "--svg", os.path.join(tmp, "j.svg")],
+             ["accuracy", sc, "--no-time"], [sc, "--vertex", "1"]):
+    rc, out, err = run(*tool)
+    check("c79-4.1 %s refuses a renderer 7 scene: exit 2, says why" % tool[0],
+          rc == 2 and b"renderer 7" in err and b"error" in err, err.decode(errors="replace")[:200])
+
+finish()
