@@ -30,9 +30,10 @@ typedef struct rec {
     uint64_t v;                  /* vertex: 1-based; prim: its number in the list */
     pt_vec4 p;                   /* vertex: x y z (w with renderer 9) */
     int has_color;
-    pt_rgb color;                /* vertex: the colour of its number */
+    pt_rgb color;                /* vertex: the colour of its number; a clip
+                                 ** stage's vertex: the colour it made */
     const char *from;            /* a clip stage's new vertex: the stage, */
-    uint64_t from_prim;          /*   the primitive's number (1-based), */
+    uint64_t from_prim;          /*   the segment's number in its list (1-based), */
     double t;                    /*   t, */
     const char *edge;            /*   the edge: "z=n", "x=+1", ... */
     const pt_rv_prim *prim;      /* prim: the primitive (0-based indices) */
@@ -48,7 +49,7 @@ typedef struct walker {
     uint64_t raster_no;          /* the primitive the rasterizer is on */
     const char *clip_stage;
     /* the clip stages' new vertices: where each came from, by number */
-    struct origin { uint32_t v; uint64_t prim; double t; pt_rv_edge edge; } *org;
+    struct origin { uint32_t v, c; uint64_t prim; double t; pt_rv_edge edge; } *org;
     size_t norg, cap_org;
     uint64_t nvrec, nprims, npixels;
 } walker;
@@ -131,7 +132,7 @@ static void fmt_json(walker *w, const rec *r)
         num_json(sb, (double)r->color.b); pt_sbuf_add(sb, "]");
     }
     if (r->from) {
-        pt_sbuf_addf(sb, ",\"from\":{\"stage\":\"%s\",\"primitive\":%llu,\"edge\":\"%s\",\"t\":",
+        pt_sbuf_addf(sb, ",\"from\":{\"stage\":\"%s\",\"segment\":%llu,\"edge\":\"%s\",\"t\":",
                      r->from, (unsigned long long)r->from_prim, r->edge);
         num_json(sb, r->t);
         pt_sbuf_add(sb, "}");
@@ -170,7 +171,7 @@ static void fmt_text(walker *w, const rec *r)
     if (r->from) {
         char b[PT_NUMLEN];
         pt_fmt_shortest(b, r->t);
-        pt_sbuf_addf(sb, "  from %s p%llu at %s, t = %s", r->from,
+        pt_sbuf_addf(sb, "  from %s of segment %llu at %s, t = %s", r->from,
                      (unsigned long long)r->from_prim, r->edge, b);
     }
     pt_sbuf_add(sb, "\n");
@@ -251,7 +252,8 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                 r.from_prim = o->prim;
                 r.t = o->t;
                 r.edge = edge_name(o->edge);
-                r.has_color = 0;
+                r.has_color = o->c < m->nc;
+                if (r.has_color) r.color = m->c[o->c];
             }
         }
         emit(w, &r);
@@ -281,6 +283,7 @@ static void clip_cut(void *ud, const pt_rv_cut *c)
         w->cap_org = cap;
     }
     w->org[w->norg].v = c->v_new;
+    w->org[w->norg].c = c->c_new;
     w->org[w->norg].prim = w->prim_no;
     w->org[w->norg].t = c->t;
     w->org[w->norg].edge = c->edge;
@@ -314,7 +317,7 @@ static void header(walker *w, const pt_course_cam *c)
     pt_sbuf *sb = &w->sb;
 
     if (w->fmt == PT_FORMAT_CSV) {
-        pt_sbuf_add(sb, "model,position,v,stage,x,y,z,w,r,g,b,from,primitive,edge,t\n");
+        pt_sbuf_add(sb, "model,position,v,stage,x,y,z,w,r,g,b,from,segment,edge,t\n");
     } else if (w->fmt == PT_FORMAT_JSONL) {
         pt_sbuf_addf(sb, "{\"type\":\"header\",\"version\":1,\"renderer\":%d,\"pipeline\":%d,"
                      "\"scene\":", s->renderer, s->pipeline2 ? 2 : 1);

@@ -114,7 +114,7 @@ for scene in scenes:
     made = [r for r in verts if r["stage"] in ("nearclip", "clip")]
     check("c79-3.2 %s: jsonl: a clip stage's vertices are the ones it made, each with "
           "where it came from" % name,
-          all("from" in r and r["from"]["primitive"] >= 1 for r in made),
+          all("from" in r and r["from"]["segment"] >= 1 and "color" in r for r in made),
           str(made[:1]))
     check("c79-3.3 %s: jsonl: header first, summary last" % name,
           recs and recs[0]["type"] == "header" and recs[-1]["type"] == "summary"
