@@ -80,6 +80,12 @@ void pt_diff_print_intro(const dctx *c)
         if (t->prec >= 0) printf(", %d decimals", t->prec);
         printf(": %zu vertex, %zu pixel records)\n", t->nvx, t->npx);
     }
+    for (s = 0; s < 2; s++)
+        if (c->t[s].unread)
+            printf("Note: %" PRIu64 " line%s of %s (the first: line %" PRIu64 ") %s not a kind "
+                   "of line diff reads (a program's own output, anti-aliased pixel lines): "
+                   "passed over, not compared.\n", c->t[s].unread, c->t[s].unread == 1 ? "" : "s",
+                   pt_diff_side[s], c->t[s].unread_line, c->t[s].unread == 1 ? "is" : "are");
     memset(&sb, 0, sizeof sb);
     printf("Integers must be equal; doubles a and b agree when\n"
            "  |a - b| <= max(%s, %s * max(|a|, |b|))\n", pt_diff_num(c->o->tol, b1), pt_diff_num(c->o->rel, b2));
