@@ -20,7 +20,7 @@
 static const char *const stage_names[PT_NCST] = {
     "model", "world", "view", "camera", "nearclip", "image", "clip"};
 
-typedef enum rkind { R_VERTEX, R_PRIM } rkind;
+typedef enum rkind { R_VERTEX, R_PRIM, R_WARN } rkind;
 
 /* One record. */
 typedef struct rec {
@@ -38,6 +38,7 @@ typedef struct rec {
     const char *edge;            /*   the edge: "z=n", "x=+1", ... */
     const pt_rv_prim *prim;      /* prim: the primitive (0-based indices) */
     uint64_t pixels;             /* prim: pixels written */
+    const char *warning;         /* warn: what the course warns of */
 } rec;
 
 typedef struct walker {
@@ -99,6 +100,14 @@ static void fmt_json(walker *w, const rec *r)
 {
     pt_sbuf *sb = &w->sb;
 
+    if (r->kind == R_WARN) {
+        pt_sbuf_add(sb, "{\"type\":\"warning\",\"model\":");
+        pt_sbuf_add_json(sb, r->model);
+        pt_sbuf_add(sb, ",\"position\":");
+        pt_sbuf_add_json(sb, r->position);
+        pt_sbuf_addf(sb, ",\"warning\":\"%s\"}\n", r->warning);
+        return;
+    }
     pt_sbuf_add(sb, r->kind == R_VERTEX ? "{\"type\":\"vertex\",\"model\":"
                                         : "{\"type\":\"primitive\",\"model\":");
     pt_sbuf_add_json(sb, r->model);
@@ -145,6 +154,10 @@ static void fmt_text(walker *w, const rec *r)
     pt_sbuf *sb = &w->sb;
 
     pt_sbuf_add_term(sb, r->model, strlen(r->model));
+    if (r->kind == R_WARN) {
+        pt_sbuf_addf(sb, " warning: %s\n", r->warning);
+        return;
+    }
     if (r->kind == R_PRIM) {
         const pt_rv_prim *p = r->prim;
         if (p->kind == PT_RV_POINT)
@@ -181,7 +194,7 @@ static void fmt_csv(walker *w, const rec *r)
 {
     pt_sbuf *sb = &w->sb;
 
-    if (r->kind == R_PRIM) return;               /* CSV: vertex rows only */
+    if (r->kind != R_VERTEX) return;             /* CSV: vertex rows only */
     pt_sbuf_add_csv(sb, r->model);
     pt_sbuf_add(sb, ",");
     pt_sbuf_add_csv(sb, r->position);
@@ -290,6 +303,27 @@ static void clip_cut(void *ud, const pt_rv_cut *c)
     w->norg++;
 }
 
+static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *pos,
+                    const pt_rv_model *m)
+{
+    walker *w = ud;
+    rec r;
+
+    (void)m;
+    memset(&r, 0, sizeof r);
+    r.kind = R_WARN;
+    r.model = pos->sm->name;
+    r.position = pos->pos_name;
+    switch (k) {
+    case PT_CWN_NO_VERTICES: r.warning = "no_vertices"; break;
+    case PT_CWN_NO_PRIMITIVES: r.warning = "no_primitives"; break;
+    case PT_CWN_NO_COLORS: r.warning = "no_colors"; break;
+    case PT_CWN_DUMP: return;
+    case PT_CWN_DEFAULT_COLOR: r.warning = "default_color"; break;
+    }
+    emit(w, &r);
+}
+
 static void on_drawn(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
                      const pt_rv_prim *p, uint64_t n)
 {
@@ -385,6 +419,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
     memset(&ls, 0, sizeof ls);
     ls.stage = on_stage;
     ls.drawn = on_drawn;
+    ls.warn = on_warn;
     ls.nearclip.begin = clip_begin;
     ls.nearclip.cut = clip_cut;
     ls.nearclip.ud = &w;

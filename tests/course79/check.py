@@ -129,6 +129,18 @@ for scene in scenes:
     check("c79-3.5 %s: text: a line per vertex record" % name,
           rc3 == 0 and sum(1 for x in lines if re.match(r"^\S+ v\d+ +\w+ +x =", x)) == len(verts))
 
+# c79-5: the course's warnings are records of the trace too
+rc, out, err = run(os.path.join(here, "r7-hidden-warn.scene"), "--format", "jsonl")
+warns = [(r["model"], r["warning"]) for r in map(json.loads, out.decode().splitlines())
+         if r["type"] == "warning"]
+check("c79-5.1 warnings: a model without colours, one without primitives",
+      warns == [("nocol", "no_colors"), ("nocol", "default_color"),
+                ("noprim", "no_primitives"), ("noprim", "no_colors"),
+                ("noprim", "default_color")], str(warns))
+models = {r["model"] for r in map(json.loads, out.decode().splitlines()) if r["type"] == "vertex"}
+check("c79-5.2 hidden position and hidden model: no records", models == {"vis", "nocol", "noprim"},
+      str(models))
+
 # c79-4: the teaching tools refuse such a scene with a clear message
 sc = os.path.join(here, "r7-near-01.scene")
 for tool in (["step", sc, "--all"], ["why", sc, "1", "1"], ["quiz", sc],
