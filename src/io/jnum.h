@@ -31,7 +31,7 @@
 ** "1.0E7".  buf has PT_JNUM_LEN bytes.  Returns the length.  Can't fail. */
 size_t pt_jnum_dtoa(char *buf, double x);
 
-/* Write String.format("%W.Pf", x) (width W >= 0, 0 <= P <= 17, flags
+/* Write String.format("%W.Pf", x) (width W >= 0, 0 <= P <= 30, flags
 ** PT_JNUM_*) as Java writes it, right-aligned in W characters; "NaN" and
 ** "Infinity" as Java spells them.  buf has PT_JNUM_LEN bytes.  Returns the
 ** length.  Can't fail. */
