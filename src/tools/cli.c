@@ -42,6 +42,26 @@ int pt_cli_load(pt_scene *s, const char *path)
     return PT_EXIT_INPUT;
 }
 
+int pt_cli_course_text(const char *path, const char *buf, size_t len, const char *cmd)
+{
+    char head[1024];
+    const char *p;
+    int r = 0;
+
+    memcpy(head, buf, len < sizeof head - 1 ? len : sizeof head - 1);
+    head[len < sizeof head - 1 ? len : sizeof head - 1] = '\0';
+    if ((p = strstr(head, "\"renderer\":")) != NULL) r = atoi(p + 11);      /* jsonl */
+    else if (!strncmp(head, "# pipetrace trace of a course renderer's scene", 46) &&
+             (p = strstr(head, "\nrenderer ")) != NULL) r = atoi(p + 10);    /* text */
+    else if (!strncmp(head, "model,position,v,stage,", 23)) r = 7;         /* csv */
+    else if (strstr(head, "Rendering of Scene (Pipeline ")) r = 9;         /* the logs */
+    else if (strstr(head, "\n-- Current Camera:\nCamera: \n  perspective = ")) r = 7;
+    if (r != 7 && r != 9) return 0;
+    fprintf(stderr, "pipetrace %s: %s: error: %s does not read the traces and logs of "
+            "scenes of the course's renderer 7 or 9\n", cmd, path, cmd);
+    return PT_EXIT_INPUT;
+}
+
 int pt_cli_course(pt_scene *s, const char *cmd)
 {
     if (s->renderer != 7 && s->renderer != 9) return 0;

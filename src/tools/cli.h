@@ -51,6 +51,11 @@ int pt_cli_load(pt_scene *s, const char *path);
 ** (what renders it instead), free s and return PT_EXIT_INPUT; else 0. */
 int pt_cli_course(pt_scene *s, const char *cmd);
 
+/* The same for a trace or log read whole (buf, len bytes): when it is the
+** course's log of a renderer 7 or 9 scene or pipetrace's trace of one,
+** print "pipetrace CMD: PATH: error: ..." and return PT_EXIT_INPUT; else 0. */
+int pt_cli_course_text(const char *path, const char *buf, size_t len, const char *cmd);
+
 /* Refuse outputs that would destroy an input or each other: out[k] (given
 ** as option opt[k]; NULL: not given) naming the scene file (a scene "-": the
 ** file standard input reads) or another output, as pt_outfile_same() tells.

@@ -150,4 +150,12 @@ for tool in (["step", sc, "--all"], ["why", sc, "1", "1"], ["quiz", sc],
     check("c79-4.1 %s refuses a renderer 7 scene: exit 2, says why" % tool[0],
           rc == 2 and b"renderer 7" in err and b"error" in err, err.decode(errors="replace")[:200])
 
+# c79-6: diff refuses the logs and traces of such scenes
+for fmt in ("kraft", "text", "jsonl", "csv"):
+    path = os.path.join(tmp, "t." + fmt)
+    run(sc, "--format", fmt, "--trace", path)
+    rc, out, err = run("diff", path, path)
+    check("c79-6.1 diff refuses a renderer 7 scene's %s: exit 2, says why" % fmt,
+          rc == 2 and b"renderer 7" in err and b"error" in err, err.decode(errors="replace")[:200])
+
 finish()

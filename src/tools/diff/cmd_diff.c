@@ -174,6 +174,7 @@ static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
         fprintf(stderr, "%s\n", err);
         return PT_EXIT_INPUT;
     }
+    if (pt_cli_course_text(c->o->path[s], *buf, *len, "diff")) return PT_EXIT_INPUT;
     *kind = pt_tread_kind(*buf, *len);
     if (*kind == PT_TK_CSV) {
         fprintf(stderr, "%s:1:1: error: a CSV trace has no header and no raster records; "
