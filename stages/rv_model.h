@@ -85,6 +85,18 @@ int pt_rv_add_vertex(pt_rv_model *m, pt_vec4 v);
 int pt_rv_add_color(pt_rv_model *m, pt_rgb c);
 int pt_rv_add_prim(pt_rv_model *m, const pt_rv_prim *p);
 
+/* Finish a cut that a clip stage filled in but for its new colour and
+** indices: c[2] = (1 - t_)*c[1] + t_*c[0] in float, t_ = (float)t (both
+** clippers' formula: c[1] is the end t runs from); append p[2] and c[2] to
+** m, set v_new and c_new, and tell ls->cut.  0; -1 when out of memory, -2
+** when java.awt.Color would refuse c[2] (the course's render throws); m is
+** unchanged then. */
+int pt_rv_cut_finish(pt_rv_model *m, pt_rv_cut *cut, const pt_rv_clip_ls *ls);
+
+/* 1 when java.awt.Color's float constructor takes c: each component in
+** 0 .. 1 or NaN (it throws otherwise).  This function can't fail. */
+int pt_rv_color_ok(pt_rgb c);
+
 /* Free what m owns and leave it empty.  This function can't fail. */
 void pt_rv_model_free(pt_rv_model *m);
 
