@@ -102,7 +102,8 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/pt_color.o $B/s1_model2camera.o $B/s2_
            $B/s3_image2pixel.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
-           $B/m7_screen2viewport.o $B/ms_clip_segment.o $B/pt_matrix.o $(REF_O)
+           $B/m7_screen2viewport.o $B/ms_clip_segment.o $B/pt_matrix.o $(REF_O) \
+           $B/rv_raster.o
 # The reference copy of s1..s6, in every build (stages/pt_ref.h): each file
 # compiled again with stages/pt_ref_names.h in front, which renames its
 # function pt_x to ptref_x; in build-student/ these stay the reference while
@@ -117,7 +118,8 @@ CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjo
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace_buf.o $B/trace_head.o \
            $B/trace_text.o $B/trace_jsonl.o $B/trace_csv.o $B/trace.o $B/tread.o \
            $B/tread_util.o $B/tread_text.o $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o \
-           $B/png.o $B/outfile.o $B/trace_kraft.o $B/tlanes.o
+           $B/png.o $B/outfile.o $B/trace_kraft.o $B/tlanes.o \
+           $B/rv_log_raster.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff
 # and step), the subcommands (diff, accuracy and journey in folders of their
 # own; diff's parts listed with the commands).
@@ -133,7 +135,8 @@ TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
            $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm \
            $B/test_numfmt_portable $B/test_trace $B/test_lanes $B/test_pipelines \
-           $B/test_journey
+           $B/test_journey \
+           $B/test_rv_raster
 
 all: $B/pipetrace
 
