@@ -49,8 +49,9 @@ int pt_rv_color_byte(float c)
     return jint((double)(c * 255.0f) + 0.5);        /* (int)((double)(c*255f) + 0.5) */
 }
 
-/* FrameBuffer.setPixelVP(x, y, c) -> setPixelFB(x_ul + x, y_ul + y, c). */
-static void put(draw *d, int x_vp, int y_vp, pt_rgb c)
+/* FrameBuffer.setPixelVP(x, y, c) -> setPixelFB(x_ul + x, y_ul + y, c):
+** the pixel's bytes b, or a "bad" report when the index is outside. */
+static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
 {
     const pt_rv_raster_par *par = d->par;
     int x = wrap32((int64_t)par->x_ul + x_vp);
@@ -63,10 +64,20 @@ static void put(draw *d, int x_vp, int y_vp, pt_rgb c)
         return;
     }
     o = d->rgb + (size_t)idx * 3;
-    o[0] = (unsigned char)pt_rv_color_byte(c.r);
-    o[1] = (unsigned char)pt_rv_color_byte(c.g);
-    o[2] = (unsigned char)pt_rv_color_byte(c.b);
+    o[0] = b[0];
+    o[1] = b[1];
+    o[2] = b[2];
     d->n++;
+}
+
+static void put(draw *d, int x_vp, int y_vp, pt_rgb c)
+{
+    unsigned char b[3];
+
+    b[0] = (unsigned char)pt_rv_color_byte(c.r);    /* new Color(r, g, b) */
+    b[1] = (unsigned char)pt_rv_color_byte(c.g);
+    b[2] = (unsigned char)pt_rv_color_byte(c.b);
+    put_bytes(d, x_vp, y_vp, b);
 }
 
 static void tell(const draw *d, pt_rv_pixel *px)
@@ -278,5 +289,21 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
     case PT_RV_LINE:  line(&d, m, p); break;
     case PT_RV_POINT: point(&d, m, p); break;
     }
+    return d.n;
+}
+
+uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
+                        const pt_rv_raster_ls *ls)
+{
+    draw d;
+    int x, y;
+
+    d.par = par;
+    d.rgb = rgb;
+    d.ls = ls;
+    d.n = 0;
+    for (y = 0; y < par->h; y++)                    /* Viewport.clearVP() */
+        for (x = 0; x < par->w; x++)
+            put_bytes(&d, x, y, par->bg);
     return d.n;
 }

@@ -107,6 +107,13 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,
                            const pt_rv_raster_ls *ls);
 
+/* Fill the viewport with its background as Viewport.clearVP() does: pixel
+** by pixel through setPixelVP, so a viewport reaching past the framebuffer
+** wraps and reports its "bad" pixels to ls (NULL: nobody).  Returns the
+** number of pixels written.  This function can't fail. */
+uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
+                        const pt_rv_raster_ls *ls);
+
 /* The byte java.awt.Color(float) makes of component c: (int)((double)(c*255f)
 ** + 0.5), (int) as Java's (NaN gives 0).  This function can't fail. */
 int pt_rv_color_byte(float c);
