@@ -68,18 +68,15 @@ void pt_course_camera(const pt_scene *s, pt_course_cam *out)
     }
 }
 
-/* new FrameBuffer(W, H, bg), then vp.clearVP(): setPixelFB drops an index
-** outside the pixel array and lets a row run on into the next. */
-static void clear_fb(const pt_scene *s, pt_fb *fb)
+/* new FrameBuffer(W, H, bg), then vp.clearVP() (its Bad pixel lines, if
+** any, to the rasterizer's listener). */
+static void clear_fb(const pt_scene *s, pt_fb *fb, const pt_rv_raster_par *par,
+                     const pt_course_ls *ls)
 {
-    int64_t x, y, n = (int64_t)fb->w * fb->h;
+    int64_t x, n = (int64_t)fb->w * fb->h;
 
     for (x = 0; x < n; x++) pt_fb_set(fb, x, s->background);
-    for (y = s->vp_y; y < (int64_t)s->vp_y + s->vp_h; y++)
-        for (x = s->vp_x; x < (int64_t)s->vp_x + s->vp_w; x++) {
-            int64_t idx = y * fb->w + x;
-            if (idx >= 0 && idx < n) pt_fb_set(fb, idx, s->vp_background);
-        }
+    pt_rv_clear_vp(par, fb->rgb, ls ? ls->raster_ls : NULL);
 }
 
 /* ===== the setup: the model as the course's client builds it ===== */
@@ -299,7 +296,7 @@ int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
     memcpy(r.par.bg, s->vp_background, 3);
     r.par.antialias = s->antialias;
     r.par.gamma = s->gamma;
-    clear_fb(s, fb);
+    clear_fb(s, fb, &r.par, ls);
 
     c = calloc(s->nmodels ? s->nmodels : 1, sizeof *c);
     if (!c) return -1;

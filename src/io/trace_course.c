@@ -13,6 +13,7 @@
 #include "io/trace_course.h"
 #include "io/trace_kraft.h"
 #include "io/jnum.h"
+#include "io/rv_log_raster.h"
 
 /* A stage's labels per driver: r7, r9 Pipeline, r9 Pipeline2; and which
 ** lists it prints (V vertices, C colours, P primitives). */
@@ -466,6 +467,7 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
 {
     clog w;
     pt_course_ls ls;
+    pt_rv_raster_ls rls;
 
     memset(&w, 0, sizeof w);
     w.f = f;
@@ -489,7 +491,11 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
     ls.clip.cut = clip_cut;
     ls.clip.end = clip_end;
     ls.clip.ud = &w;
-    ls.raster_ls = NULL;
+    /* the rasterizer's lines: Rasterize.debug under the scene's or the
+    ** positions' debug (the same for every position); Bad pixel lines always */
+    pt_rv_log_raster_ls(&rls, f, (dbg & PT_KDBG_RASTERIZE) &&
+                                 (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION)));
+    ls.raster_ls = &rls;
     ls.ud = &w;
     if (pt_course_render(s, fb, &ls) != 0) {
         snprintf(err, errlen, "pipetrace: out of memory");

@@ -20,7 +20,7 @@
 static const char *const stage_names[PT_NCST] = {
     "model", "world", "view", "camera", "nearclip", "image", "clip"};
 
-typedef enum rkind { R_VERTEX, R_PRIM, R_WARN } rkind;
+typedef enum rkind { R_VERTEX, R_PRIM, R_WARN, R_PIXEL } rkind;
 
 /* One record. */
 typedef struct rec {
@@ -39,6 +39,9 @@ typedef struct rec {
     const pt_rv_prim *prim;      /* prim: the primitive (0-based indices) */
     uint64_t pixels;             /* prim: pixels written */
     const char *warning;         /* warn: what the course warns of */
+    int64_t x_fb, y_fb;          /* pixel: the framebuffer pixel written, */
+    unsigned char rgb[3];        /*   the colour written there, */
+    float coverage;              /*   the share of it the primitive covers */
 } rec;
 
 typedef struct walker {
@@ -53,6 +56,7 @@ typedef struct walker {
     struct origin { uint32_t v, c; uint64_t prim; double t; pt_rv_edge edge; } *org;
     size_t norg, cap_org;
     uint64_t nvrec, nprims, npixels;
+    const pt_course_pos *pos;    /* the position the rasterizer draws */
 } walker;
 
 /* ===== numbers ===== */
@@ -100,6 +104,18 @@ static void fmt_json(walker *w, const rec *r)
 {
     pt_sbuf *sb = &w->sb;
 
+    if (r->kind == R_PIXEL) {
+        pt_sbuf_add(sb, "{\"type\":\"pixel\",\"model\":");
+        pt_sbuf_add_json(sb, r->model);
+        pt_sbuf_add(sb, ",\"position\":");
+        pt_sbuf_add_json(sb, r->position);
+        pt_sbuf_addf(sb, ",\"primitive\":%llu,\"x\":%lld,\"y\":%lld,\"rgb\":[%d,%d,%d],"
+                     "\"coverage\":", (unsigned long long)r->v, (long long)r->x_fb,
+                     (long long)r->y_fb, r->rgb[0], r->rgb[1], r->rgb[2]);
+        num_json(sb, (double)r->coverage);
+        pt_sbuf_add(sb, "}\n");
+        return;
+    }
     if (r->kind == R_WARN) {
         pt_sbuf_add(sb, "{\"type\":\"warning\",\"model\":");
         pt_sbuf_add_json(sb, r->model);
@@ -154,6 +170,12 @@ static void fmt_text(walker *w, const rec *r)
     pt_sbuf *sb = &w->sb;
 
     pt_sbuf_add_term(sb, r->model, strlen(r->model));
+    if (r->kind == R_PIXEL) {
+        pt_sbuf_addf(sb, " p%-6llu pixel        x_fb = %lld  y_fb = %lld  rgb = %d %d %d  "
+                     "coverage %.4f\n", (unsigned long long)r->v, (long long)r->x_fb,
+                     (long long)r->y_fb, r->rgb[0], r->rgb[1], r->rgb[2], (double)r->coverage);
+        return;
+    }
     if (r->kind == R_WARN) {
         pt_sbuf_addf(sb, " warning: %s\n", r->warning);
         return;
@@ -324,6 +346,64 @@ static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *pos,
     emit(w, &r);
 }
 
+/* One pixel record: (x_vp, y_vp) in the viewport, colour c, coverage f. */
+static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp, pt_rgb c,
+                      float f)
+{
+    rec r;
+
+    memset(&r, 0, sizeof r);
+    r.kind = R_PIXEL;
+    r.model = w->pos->sm->name;
+    r.position = w->pos->pos_name;
+    r.v = w->raster_no + 1;
+    r.x_fb = (int64_t)par->x_ul + x_vp;
+    r.y_fb = (int64_t)par->y_ul + y_vp;
+    r.rgb[0] = (unsigned char)pt_rv_color_byte(c.r);
+    r.rgb[1] = (unsigned char)pt_rv_color_byte(c.g);
+    r.rgb[2] = (unsigned char)pt_rv_color_byte(c.b);
+    r.coverage = f;
+    emit(w, &r);
+}
+
+/* The rasterizer's pixel lines as pixel records: an anti-aliased step is
+** two pixels, weighted 1 - f and f, f the fraction of the stepped y. */
+static void on_pixel(void *ud, const pt_rv_pixel *px)
+{
+    walker *w = ud;
+    const pt_rv_raster_par *par = px->par;
+
+    switch (px->kind) {
+    case PT_RV_PX_STEP:
+    case PT_RV_PX_END:
+        pixel_rec(w, par, px->x_vp, px->y_vp, px->c[0], 1.0f);
+        break;
+    case PT_RV_PX_POINT:
+        if (!px->clipped) pixel_rec(w, par, px->x_vp, px->y_vp, px->c[0], 1.0f);
+        break;
+    case PT_RV_PX_AA: {
+        double y = px->transposed ? px->x_pp : px->y_pp;
+        float f = (float)(y - (double)(int64_t)y);
+        if (px->transposed) {
+            pixel_rec(w, par, px->lo, px->y_vp, px->c[0], 1.0f - f);
+            pixel_rec(w, par, px->hi, px->y_vp, px->c[1], f);
+        } else {
+            pixel_rec(w, par, px->x_vp, px->lo, px->c[0], 1.0f - f);
+            pixel_rec(w, par, px->x_vp, px->hi, px->c[1], f);
+        }
+        break;
+    }
+    }
+}
+
+static void on_raster(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
+                      const pt_rv_prim *p)
+{
+    walker *w = ud;
+    (void)m; (void)p;
+    w->pos = pos;
+}
+
 static void on_drawn(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
                      const pt_rv_prim *p, uint64_t n)
 {
@@ -406,6 +486,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
 {
     walker w;
     pt_course_ls ls;
+    pt_rv_raster_ls rls;
     pt_course_cam cam;
     int rc;
 
@@ -416,9 +497,14 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
     w.precision = precision;
     w.w4 = s->renderer == 9;
     pt_sbuf_init(&w.sb);
+    memset(&rls, 0, sizeof rls);
+    rls.pixel = on_pixel;
+    rls.ud = &w;
     memset(&ls, 0, sizeof ls);
     ls.stage = on_stage;
     ls.drawn = on_drawn;
+    ls.raster = on_raster;
+    ls.raster_ls = &rls;
     ls.warn = on_warn;
     ls.nearclip.begin = clip_begin;
     ls.nearclip.cut = clip_cut;

@@ -119,6 +119,17 @@ for scene in scenes:
     check("c79-3.3 %s: jsonl: header first, summary last" % name,
           recs and recs[0]["type"] == "header" and recs[-1]["type"] == "summary"
           and recs[0]["renderer"] == renderer)
+    # the pixel records, applied in order, give the course's image where they write
+    img = gz(os.path.join(here, name + ".ppm.gz"))
+    W, H = (int(x) for x in img.split(b"\n")[1].split())
+    body = img[len(img) - 3 * W * H:]
+    last = {}
+    for r in recs:
+        if r["type"] == "pixel" and 0 <= r["y"] * W + r["x"] < W * H:
+            last[r["y"] * W + r["x"]] = bytes(r["rgb"])
+    wrong = [i for i, c in last.items() if body[3 * i:3 * i + 3] != c]
+    check("c79-3.6 %s: jsonl: %d pixels written, each as the course's image has it"
+          % (name, len(last)), last and not wrong, str(wrong[:5]))
     rc2, csv, _ = run(scene, "--format", "csv")
     rows = csv.decode().splitlines()
     check("c79-3.4 %s: csv: a row per vertex record" % name,

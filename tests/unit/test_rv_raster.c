@@ -1,0 +1,208 @@
+/*
+** tests/unit/test_rv_raster.c -- renderers 7 and 9's rasterizer against the course's Java
+** See LICENSE for copyright and license.
+**
+** Each case of tests/data/course-raster/cases (made by extract.py there from
+** the course's harness: its clipped models, its image, its log) is drawn
+** primitive by primitive into a framebuffer cleared as the harness clears
+** it; the image must equal the course's byte for byte and the lines
+** rv_log_raster writes must equal the log's rasterizer lines.  Usage:
+** test_rv_raster [DIR] (default tests/data/course-raster).
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "testhelp.h"
+#include "stages/rv_raster.h"
+#include "io/rv_log_raster.h"
+
+#define MAXN 4096                /* vertices, colours, primitives a position */
+
+typedef struct tcase {
+    pt_rv_raster_par par;
+    unsigned char fbg[3];        /* the framebuffer's background */
+    int debug;                   /* the log has Rasterize.debug's lines */
+} tcase;
+
+/* All of f from where it stands, NUL-terminated (NULL on error). */
+static char *slurp_stream(FILE *f, size_t *len)
+{
+    size_t n = 0, cap = 4096, r;
+    char *buf = malloc(cap), *nb;
+
+    while (buf && (r = fread(buf + n, 1, cap - n - 1, f)) > 0) {
+        n += r;
+        if (cap - n - 1 == 0) {
+            nb = realloc(buf, cap *= 2);
+            if (!nb) { free(buf); return NULL; }
+            buf = nb;
+        }
+    }
+    if (buf) { buf[n] = '\0'; *len = n; }
+    return buf;
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+
+    if (!f) return NULL;
+    buf = slurp_stream(f, len);
+    fclose(f);
+    return buf;
+}
+
+/* The first line where a and b differ, printed; 1 when they are equal. */
+static int same_text(const char *name, const char *a, size_t na, const char *b, size_t nb)
+{
+    size_t i = 0, line = 1, start = 0;
+
+    while (i < na && i < nb && a[i] == b[i]) {
+        if (a[i] == '\n') { line++; start = i + 1; }
+        i++;
+    }
+    if (i == na && i == nb) return 1;
+    printf("%s: log line %zu differs\n  got : %.200s\n  want: %.200s\n", name, line,
+           a + start, b + start);
+    return 0;
+}
+
+/* Draw the positions of the .raster file f into rgb, logging to lg. */
+static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, int *nbad)
+{
+    static pt_vec4 v[MAXN];
+    static pt_rgb c[MAXN];
+    static pt_rv_prim p[MAXN];
+    pt_rv_model m;
+    pt_rv_raster_ls ls;
+    char line[512], word[32];
+    size_t k;
+    int pending = 0;
+
+    pt_rv_log_raster_ls(&ls, lg, tc->debug);
+    memset(&m, 0, sizeof m);
+    m.v = v; m.c = c; m.p = p;
+    for (;;) {
+        int eof = !fgets(line, sizeof line, f);
+        if (eof || strncmp(line, "position", 8) == 0) {
+            if (pending)
+                for (k = 0; k < m.np; k++) pt_rv_raster_prim(&m, &p[k], &tc->par, rgb, &ls);
+            if (eof) return 0;
+            m.nv = m.nc = m.np = 0;
+            pending = 1;
+            continue;
+        }
+        if (sscanf(line, "%31s", word) != 1 || word[0] == '#') continue;
+        if (strcmp(word, "v") == 0 && m.nv < MAXN) {
+            pt_vec4 *q = &v[m.nv++];
+            if (sscanf(line, "v %lf %lf %lf", &q->x, &q->y, &q->z) != 3) return -1;
+            q->w = 1.0;
+        } else if (strcmp(word, "c") == 0 && m.nc < MAXN) {
+            unsigned hex;
+            pt_rgb *q = &c[m.nc++];
+            if (sscanf(line, "c %f %f %f %x", &q->r, &q->g, &q->b, &hex) != 4) return -1;
+            if ((unsigned)(pt_rv_color_byte(q->r) << 16 | pt_rv_color_byte(q->g) << 8 |
+                           pt_rv_color_byte(q->b)) != hex) (*nbad)++;
+        } else if (strcmp(word, "l") == 0 && m.np < MAXN) {
+            pt_rv_prim *q = &p[m.np++];
+            memset(q, 0, sizeof *q);
+            q->kind = PT_RV_LINE;
+            if (sscanf(line, "l %u %u %u %u", &q->v[0], &q->v[1], &q->c[0], &q->c[1]) != 4)
+                return -1;
+        } else if (strcmp(word, "p") == 0 && m.np < MAXN) {
+            pt_rv_prim *q = &p[m.np++];
+            memset(q, 0, sizeof *q);
+            q->kind = PT_RV_POINT;
+            if (sscanf(line, "p %u %u %d", &q->v[0], &q->c[0], &q->radius) != 3) return -1;
+        } else if (strcmp(word, "fb") == 0) {
+            pt_rv_raster_par *r = &tc->par;
+            if (sscanf(line, "fb %d %d %hhu %hhu %hhu", &r->W, &r->H, &tc->fbg[0], &tc->fbg[1],
+                       &tc->fbg[2]) != 5) return -1;
+        } else if (strcmp(word, "vp") == 0) {
+            pt_rv_raster_par *r = &tc->par;
+            size_t i, n = (size_t)r->W * (size_t)r->H;
+            if (sscanf(line, "vp %d %d %d %d %hhu %hhu %hhu", &r->x_ul, &r->y_ul, &r->w, &r->h,
+                       &r->bg[0], &r->bg[1], &r->bg[2]) != 7) return -1;
+            for (i = 0; i < n; i++) memcpy(rgb + 3 * i, tc->fbg, 3);   /* new FrameBuffer */
+            pt_rv_clear_vp(r, rgb, &ls);                                /* fb.vp.clearVP() */
+        } else if (strcmp(word, "aa") == 0) {
+            if (sscanf(line, "aa %d", &tc->par.antialias) != 1) return -1;
+        } else if (strcmp(word, "gamma") == 0) {
+            if (sscanf(line, "gamma %d", &tc->par.gamma) != 1) return -1;
+        } else if (strcmp(word, "debug") == 0) {
+            if (sscanf(line, "debug %d", &tc->debug) != 1) return -1;
+            pt_rv_log_raster_ls(&ls, lg, tc->debug);
+        } else {
+            return -1;
+        }
+    }
+}
+
+/* One case: its image and its log. */
+static void run_case(const char *dir, const char *name)
+{
+    char path[1024], head[320];
+    size_t nppm = 0, nlog = 0, ngot = 0;
+    char *ppm, *want, *got;
+    unsigned char *rgb = NULL;
+    tcase tc;
+    FILE *f, *lg;
+    int W = 0, H = 0, hl = 0, nbad = 0, ok;
+
+    memset(&tc, 0, sizeof tc);
+    snprintf(path, sizeof path, "%s/%s.ppm", dir, name);
+    ppm = slurp(path, &nppm);
+    snprintf(path, sizeof path, "%s/%s.rlog", dir, name);
+    want = slurp(path, &nlog);
+    snprintf(path, sizeof path, "%s/%s.raster", dir, name);
+    f = fopen(path, "r");
+    lg = tmpfile();
+    PT_CHECK(name, ppm && want && f && lg);
+    if (!ppm || !want || !f || !lg) goto done;
+    PT_CHECK("ppm header", sscanf(ppm, "P6 %d %d 255%n", &W, &H, &hl) == 2 && hl > 0);
+    if (W <= 0 || H <= 0 || (size_t)hl + 1 + (size_t)W * H * 3 != nppm) {
+        PT_CHECK("ppm size", 0);
+        goto done;
+    }
+    rgb = calloc((size_t)W * H, 3);
+    ok = rgb && draw_case(f, &tc, rgb, lg, &nbad) == 0;
+    snprintf(head, sizeof head, "%s: parsed", name);
+    PT_CHECK(head, ok && tc.par.W == W && tc.par.H == H);
+    if (!ok) goto done;
+    snprintf(head, sizeof head, "%s: colour bytes", name);
+    PT_CHECK(head, nbad == 0);
+    snprintf(head, sizeof head, "%s: image", name);
+    PT_CHECK(head, memcmp(rgb, ppm + hl + 1, (size_t)W * H * 3) == 0);
+    rewind(lg);
+    got = slurp_stream(lg, &ngot);
+    snprintf(head, sizeof head, "%s: log", name);
+    PT_CHECK(head, got && same_text(name, got, ngot, want, nlog));
+    free(got);
+done:
+    if (f) fclose(f);
+    if (lg) fclose(lg);
+    free(rgb);
+    free(ppm);
+    free(want);
+}
+
+int main(int argc, char **argv)
+{
+    const char *dir = argc > 1 ? argv[1] : "tests/data/course-raster";
+    char path[1024], name[256];
+    FILE *list;
+    int n = 0;
+
+    snprintf(path, sizeof path, "%s/cases", dir);
+    list = fopen(path, "r");
+    PT_CHECK("the list of cases", list != NULL);
+    while (list && fscanf(list, "%255s", name) == 1) {
+        run_case(dir, name);
+        n++;
+    }
+    if (list) fclose(list);
+    PT_CHECK("at least 16 cases", n >= 16);
+    return pt_test_report();
+}
