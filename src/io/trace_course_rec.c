@@ -251,6 +251,15 @@ static void emit(walker *w, const rec *r)
 
 /* ===== the walker ===== */
 
+/* Start a record of kind k about position pos. */
+static void rec_init(rec *r, rkind k, const pt_course_pos *pos)
+{
+    memset(r, 0, sizeof *r);
+    r->kind = k;
+    r->model = pos->sm->name;
+    r->position = pos->pos_name;
+}
+
 static const struct origin *origin_of(const walker *w, uint32_t v)
 {
     size_t k;
@@ -272,10 +281,7 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
             if (w->org[k].v < from) from = w->org[k].v;
     }
     for (k = from; k < m->nv; k++) {
-        memset(&r, 0, sizeof r);
-        r.kind = R_VERTEX;
-        r.model = pos->sm->name;
-        r.position = pos->pos_name;
+        rec_init(&r, R_VERTEX, pos);
         r.stage = stage_names[st];
         r.v = (uint64_t)k + 1;
         r.p = m->v[k];
@@ -332,10 +338,7 @@ static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *pos,
     rec r;
 
     (void)m;
-    memset(&r, 0, sizeof r);
-    r.kind = R_WARN;
-    r.model = pos->sm->name;
-    r.position = pos->pos_name;
+    rec_init(&r, R_WARN, pos);
     switch (k) {
     case PT_CWN_NO_VERTICES: r.warning = "no_vertices"; break;
     case PT_CWN_NO_PRIMITIVES: r.warning = "no_primitives"; break;
@@ -352,10 +355,7 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
 {
     rec r;
 
-    memset(&r, 0, sizeof r);
-    r.kind = R_PIXEL;
-    r.model = w->pos->sm->name;
-    r.position = w->pos->pos_name;
+    rec_init(&r, R_PIXEL, w->pos);
     r.v = w->raster_no + 1;
     r.x_fb = (int64_t)par->x_ul + x_vp;
     r.y_fb = (int64_t)par->y_ul + y_vp;
@@ -411,10 +411,7 @@ static void on_drawn(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
     rec r;
 
     (void)m;
-    memset(&r, 0, sizeof r);
-    r.kind = R_PRIM;
-    r.model = pos->sm->name;
-    r.position = pos->pos_name;
+    rec_init(&r, R_PRIM, pos);
     r.v = ++w->raster_no;
     r.prim = p;
     r.pixels = n;
