@@ -2,8 +2,8 @@
 ** src/io/rv_log_raster.c -- renderers 7 and 9: the rasterizer's lines of the course's debug log
 ** See LICENSE for copyright and license.
 */
-#include "rv_log_raster.h"
-#include "jnum.h"
+#include "io/rv_log_raster.h"
+#include "io/jnum.h"
 
 /* "LABEL = (%9.4f, %9.4f)" */
 static void put_pair(FILE *f, const char *label, double a, double b)

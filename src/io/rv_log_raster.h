@@ -15,7 +15,7 @@
 #ifndef PT_RV_LOG_RASTER_H
 #define PT_RV_LOG_RASTER_H
 #include <stdio.h>
-#include "stages/rv_raster.h"
+#include "core/pipetrace.h"
 
 /* Fill *ls to write to f: with debug (Rasterize.debug, and the scene's or
 ** position's debug on) every line, else only the Bad pixel coordinate lines,

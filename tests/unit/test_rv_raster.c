@@ -69,8 +69,40 @@ static int same_text(const char *name, const char *a, size_t na, const char *b, 
     return 0;
 }
 
-/* Draw the positions of the .raster file f into rgb, logging to lg. */
-static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, int *nbad)
+/* A listener that counts: the writes its pixel lines announce, the bad ones. */
+typedef struct tally {
+    uint64_t said, bad, ret;     /* ret: what pt_rv_raster_prim() returned, summed */
+} tally;
+
+static void count_pixel(void *ud, const pt_rv_pixel *px)
+{
+    tally *t = ud;
+    switch (px->kind) {
+    case PT_RV_PX_STEP:
+    case PT_RV_PX_END:   t->said += 1; break;
+    case PT_RV_PX_AA:    t->said += 2; break;
+    case PT_RV_PX_POINT: t->said += !px->clipped; break;
+    }
+}
+
+static void count_bad(void *ud, int x, int y, int W, int H)
+{
+    (void)x; (void)y; (void)W; (void)H;
+    ((tally *)ud)->bad++;
+}
+
+static void set_ls(pt_rv_raster_ls *ls, FILE *lg, tally *t, int debug)
+{
+    memset(ls, 0, sizeof *ls);
+    if (lg) { pt_rv_log_raster_ls(ls, lg, debug); return; }
+    ls->pixel = count_pixel;
+    ls->bad = count_bad;
+    ls->ud = t;
+}
+
+/* Draw the positions of the .raster file f into rgb, logging to lg, or
+** counting in *t when lg is NULL. */
+static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, tally *t, int *nbad)
 {
     static pt_vec4 v[MAXN];
     static pt_rgb c[MAXN];
@@ -81,14 +113,15 @@ static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, int *nbad
     size_t k;
     int pending = 0;
 
-    pt_rv_log_raster_ls(&ls, lg, tc->debug);
+    set_ls(&ls, lg, t, tc->debug);
     memset(&m, 0, sizeof m);
     m.v = v; m.c = c; m.p = p;
     for (;;) {
         int eof = !fgets(line, sizeof line, f);
         if (eof || strncmp(line, "position", 8) == 0) {
             if (pending)
-                for (k = 0; k < m.np; k++) pt_rv_raster_prim(&m, &p[k], &tc->par, rgb, &ls);
+                for (k = 0; k < m.np; k++)
+                    t->ret += pt_rv_raster_prim(&m, &p[k], &tc->par, rgb, &ls);
             if (eof) return 0;
             m.nv = m.nc = m.np = 0;
             pending = 1;
@@ -126,14 +159,14 @@ static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, int *nbad
             if (sscanf(line, "vp %d %d %d %d %hhu %hhu %hhu", &r->x_ul, &r->y_ul, &r->w, &r->h,
                        &r->bg[0], &r->bg[1], &r->bg[2]) != 7) return -1;
             for (i = 0; i < n; i++) memcpy(rgb + 3 * i, tc->fbg, 3);   /* new FrameBuffer */
-            pt_rv_clear_vp(r, rgb, &ls);                                /* fb.vp.clearVP() */
+            pt_rv_clear_vp(r, rgb, lg ? &ls : NULL);                    /* fb.vp.clearVP() */
         } else if (strcmp(word, "aa") == 0) {
             if (sscanf(line, "aa %d", &tc->par.antialias) != 1) return -1;
         } else if (strcmp(word, "gamma") == 0) {
             if (sscanf(line, "gamma %d", &tc->par.gamma) != 1) return -1;
         } else if (strcmp(word, "debug") == 0) {
             if (sscanf(line, "debug %d", &tc->debug) != 1) return -1;
-            pt_rv_log_raster_ls(&ls, lg, tc->debug);
+            set_ls(&ls, lg, t, tc->debug);
         } else {
             return -1;
         }
@@ -146,7 +179,8 @@ static void run_case(const char *dir, const char *name)
     char path[1024], head[320];
     size_t nppm = 0, nlog = 0, ngot = 0;
     char *ppm, *want, *got;
-    unsigned char *rgb = NULL;
+    unsigned char *rgb = NULL, *again = NULL;
+    tally t1, t2;
     tcase tc;
     FILE *f, *lg;
     int W = 0, H = 0, hl = 0, nbad = 0, ok;
@@ -166,8 +200,13 @@ static void run_case(const char *dir, const char *name)
         PT_CHECK("ppm size", 0);
         goto done;
     }
+    memset(&t1, 0, sizeof t1);
+    memset(&t2, 0, sizeof t2);
     rgb = calloc((size_t)W * H, 3);
-    ok = rgb && draw_case(f, &tc, rgb, lg, &nbad) == 0;
+    again = calloc((size_t)W * H, 3);
+    ok = rgb && again && draw_case(f, &tc, rgb, lg, &t1, &nbad) == 0;
+    rewind(f);
+    ok = ok && draw_case(f, &tc, again, NULL, &t2, &nbad) == 0;
     snprintf(head, sizeof head, "%s: parsed", name);
     PT_CHECK(head, ok && tc.par.W == W && tc.par.H == H);
     if (!ok) goto done;
@@ -175,6 +214,10 @@ static void run_case(const char *dir, const char *name)
     PT_CHECK(head, nbad == 0);
     snprintf(head, sizeof head, "%s: image", name);
     PT_CHECK(head, memcmp(rgb, ppm + hl + 1, (size_t)W * H * 3) == 0);
+    snprintf(head, sizeof head, "%s: the same image, listened to or not", name);
+    PT_CHECK(head, memcmp(rgb, again, (size_t)W * H * 3) == 0 && t1.ret == t2.ret);
+    snprintf(head, sizeof head, "%s: pixels written = pixels logged - bad ones", name);
+    PT_CHECK(head, t2.ret == t2.said - t2.bad && t2.said > 0);
     rewind(lg);
     got = slurp_stream(lg, &ngot);
     snprintf(head, sizeof head, "%s: log", name);
@@ -184,6 +227,7 @@ done:
     if (f) fclose(f);
     if (lg) fclose(lg);
     free(rgb);
+    free(again);
     free(ppm);
     free(want);
 }
@@ -203,6 +247,13 @@ int main(int argc, char **argv)
         n++;
     }
     if (list) fclose(list);
+    /* java.awt.Color(float): the float product, then + 0.5 in double (NOTES 9.4) */
+    PT_CHECK("rv-1.1 Color byte of 0.50392157f is 129 (widened first: 128)",
+             pt_rv_color_byte(0.50392157f) == 129 &&
+             (int)((double)0.50392157f * 255.0 + 0.5) == 128);
+    PT_CHECK("rv-1.2 Color byte of NaN is 0, of 1 is 255, of 0 is 0",
+             pt_rv_color_byte(nanf("")) == 0 && pt_rv_color_byte(1.0f) == 255 &&
+             pt_rv_color_byte(0.0f) == 0);
     PT_CHECK("at least 16 cases", n >= 16);
     return pt_test_report();
 }
