@@ -60,6 +60,9 @@ static const char usage[] =
 "  --trace FILE      write the trace to FILE ('-': standard output)\n"
 "  --format F        trace format: text (default), jsonl, csv; kraft: the\n"
 "                    course renderer's debug log, kraft-pixels: with its pixels\n"
+"  --kraft-debug L   the course's debug switches for its log, comma-separated:\n"
+"                    scene, position, rasterize, clip, nearclip, all, none\n"
+"                    (kraft: scene; kraft-pixels: scene,rasterize)\n"
 "  --vertex N        trace only vertex N (1-based) of each model\n"
 "  --model NAME      trace only the model NAME\n"
 "  --stage NAME      trace only this stage (repeatable): model, camera, image,\n"
@@ -70,8 +73,6 @@ static const char usage[] =
 "                    seed's matrix) instead of making it perpendicular\n"
 "  --explain         under each vertex record, its formula with the numbers put in\n"
 "  --precision N     digits after the point in the text format (0-17, default 6)\n"
-"  --kraft-debug L   the course's log with its debug flags L (a list of scene,\n"
-"                    position, rasterize, clip, nearclip; all; none)\n"
 "  --threads N       format the trace on N threads, 1 or 2 (default: 2 for a\n"
 "                    large scene with two CPUs or more); the trace is the same\n"
 "  --help            show this help\n"
@@ -105,8 +106,9 @@ typedef struct cli {
     int explain;                 /* --explain */
     int threads;                 /* --threads, or 0: threads_wanted() decides */
     int staged;                  /* --stage given */
-    unsigned kdebug;             /* --kraft-debug: the course's flags (PT_KDBG_*) */
-    int kdebug_given;
+    int fmt_given;               /* 1: --format given */
+    int kdbg_given;              /* 1: --kraft-debug given */
+    unsigned kdbg;               /* the course's debug switches (PT_KDBG_*) */
     pt_options opt;
 } cli;
 
@@ -184,12 +186,14 @@ static int parse_args(cli *c, int argc, char **argv)
         else if (!strcmp(a, "--trace")) c->trace = val;
         else if (!strcmp(a, "--model")) c->opt.model = val;
         else if (!strcmp(a, "--kraft-debug")) {
-            if (kraft_debug(val, &c->kdebug) != 0)
-                return usage_error("--kraft-debug takes a list of scene, position, "
-                                   "rasterize, clip, nearclip, all, none, not '%s'", val);
-            c->kdebug_given = 1;
+            if (kraft_debug(val, &c->kdbg) != 0)
+                return usage_error("--kraft-debug takes a comma-separated list of scene, "
+                                   "position, rasterize, clip, nearclip, all, none, not '%s'",
+                                   val);
+            c->kdbg_given = 1;
         }
         else if (!strcmp(a, "--format")) {
+            c->fmt_given = 1;
             if (!strcmp(val, "text")) c->fmt = PT_FORMAT_TEXT;
             else if (!strcmp(val, "jsonl")) c->fmt = PT_FORMAT_JSONL;
             else if (!strcmp(val, "csv")) c->fmt = PT_FORMAT_CSV;
@@ -232,6 +236,15 @@ static int parse_args(cli *c, int argc, char **argv)
     }
     c->staged = staged;
     if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
+    if (c->kdbg_given && !c->fmt_given) c->fmt = PT_FORMAT_KRAFT;
+    if (c->kdbg_given && c->fmt != PT_FORMAT_KRAFT && c->fmt != PT_FORMAT_KRAFT_PIXELS)
+        return usage_error("--kraft-debug sets the switches of the course's log: "
+                           "--format kraft or kraft-pixels, not %s",
+                           c->fmt == PT_FORMAT_CSV ? "csv" :
+                           c->fmt == PT_FORMAT_JSONL ? "jsonl" : "text");
+    if (!c->kdbg_given)                     /* kraft: scene; kraft-pixels: + rasterize */
+        c->kdbg = c->fmt == PT_FORMAT_KRAFT_PIXELS ? PT_KDBG_SCENE | PT_KDBG_RASTERIZE
+                                                   : PT_KDBG_SCENE;
     if (c->explain && c->fmt == PT_FORMAT_CSV)
         return usage_error("--explain needs --format text or jsonl%s", "");
     if ((c->fmt == PT_FORMAT_KRAFT || c->fmt == PT_FORMAT_KRAFT_PIXELS) &&
@@ -319,11 +332,7 @@ static int run_course(const cli *c, const pt_scene *s)
     pt_fb fb = {0, 0, NULL};
     pt_outfile tout = {NULL, NULL, NULL, NULL}, iout = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
-    int rc = 0, kraft = c->kdebug_given || c->fmt == PT_FORMAT_KRAFT ||
-                        c->fmt == PT_FORMAT_KRAFT_PIXELS;
-    unsigned dbg = c->kdebug_given ? c->kdebug
-                 : c->fmt == PT_FORMAT_KRAFT_PIXELS ? PT_KDBG_SCENE | PT_KDBG_RASTERIZE
-                 : PT_KDBG_SCENE;
+    int rc = 0, kraft = c->fmt == PT_FORMAT_KRAFT || c->fmt == PT_FORMAT_KRAFT_PIXELS;
 
     if (c->staged || c->explain || c->opt.vertex || c->opt.model || c->opt.all_stages ||
         c->opt.raw_lookat) {
@@ -338,7 +347,7 @@ static int run_course(const cli *c, const pt_scene *s)
     }
     if (!rc && c->trace) {
         if (pt_outfile_open(&tout, c->trace, err, sizeof err) != 0) rc = 1;
-        else if ((kraft ? pt_course_log(tout.f, s, dbg, &fb, err, sizeof err)
+        else if ((kraft ? pt_course_log(tout.f, s, c->kdbg, &fb, err, sizeof err)
                         : pt_course_trace(tout.f, s, (int)c->fmt, c->precision, &fb, err,
                                           sizeof err)) != 0)
             rc = 1;
@@ -402,15 +411,6 @@ static int run(int argc, char **argv)
         pt_scene_free(&s);
         return rc;
     }
-    if (c.kdebug_given && c.kdebug != (PT_KDBG_SCENE | PT_KDBG_RASTERIZE) &&
-        c.kdebug != PT_KDBG_SCENE) {
-        fprintf(stderr, "pipetrace: %s: error: --kraft-debug other than scene or "
-                "scene,rasterize needs a renderer 7 or 9 scene\n", s.path);
-        pt_scene_free(&s);
-        return PT_EXIT_INPUT;
-    }
-    if (c.kdebug_given)
-        c.fmt = c.kdebug & PT_KDBG_RASTERIZE ? PT_FORMAT_KRAFT_PIXELS : PT_FORMAT_KRAFT;
     if (s.nmodels == 0)
         fprintf(stderr, "pipetrace: warning: %s has no models: nothing to trace or draw\n", s.path);
     rc = check_filters(&c, &s);
