@@ -191,8 +191,7 @@ static int parse_args(cli *c, int argc, char **argv)
                                    "position, rasterize, clip, nearclip, all, none, not '%s'",
                                    val);
             c->kdbg_given = 1;
-        }
-        else if (!strcmp(a, "--format")) {
+        } else if (!strcmp(a, "--format")) {
             c->fmt_given = 1;
             if (!strcmp(val, "text")) c->fmt = PT_FORMAT_TEXT;
             else if (!strcmp(val, "jsonl")) c->fmt = PT_FORMAT_JSONL;
