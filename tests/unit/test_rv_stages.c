@@ -30,7 +30,7 @@
 #include "testhelp.h"
 
 #define MAXOPS 64
-#define MAXPOS 16
+#define MAXPOS 64
 
 static char where[512];                 /* case, position, stage: for messages */
 static int libm_cases;                  /* matrices off by Java's sin/cos only */
@@ -502,7 +502,7 @@ static void run_case(const char *dir, const char *rn, const char *name)
                     if (cp && cp->rotates) {
                         printf("note: %s: the matrix differs from Java's in the last bits (Math.sin/cos vs libm)\n", where);
                         libm_cases++;
-                    } else PT_CHECK("position matrix", 0);
+                    } else PT_CHECK(where, 0);
                     mat = want_m;
                 } else PT_CHECK(where, 1);
                 for (j = 0; j < in.nv; j++) out[j] = pt_r9_model2world(in.v[j], &mat);
