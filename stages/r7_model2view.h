@@ -18,7 +18,7 @@
 */
 #ifndef PT_R7_MODEL2VIEW_H
 #define PT_R7_MODEL2VIEW_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 /* v_m + t, as above.  This function can't fail. */
 pt_vec4 pt_r7_model2view(pt_vec4 v_m, pt_vec3 t);
 #endif

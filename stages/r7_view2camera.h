@@ -24,7 +24,7 @@
 */
 #ifndef PT_R7_VIEW2CAMERA_H
 #define PT_R7_VIEW2CAMERA_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 /* v in camera coordinates for cam (its perspective, l, r, b, t); w = 1.
 ** This function can't fail (a flat rectangle gives infinities or NaN, as in Java). */
 pt_vec4 pt_r7_view2camera(pt_vec4 v, const pt_rv_camera *cam);

@@ -18,8 +18,8 @@
 */
 #ifndef PT_R9_VIEW2CAMERA_H
 #define PT_R9_VIEW2CAMERA_H
-#include "stages/rv_model.h"
-#include "stages/r9_matrix.h"
+#include "rv_model.h"
+#include "r9_matrix.h"
 /* N for cam (its perspective, l, r, b, t).  This function can't fail. */
 pt_jmat pt_r9_normalize_matrix(const pt_rv_camera *cam);
 /* norm times v.  This function can't fail. */

@@ -21,7 +21,7 @@
 */
 #ifndef PT_RV_CLIP_H
 #define PT_RV_CLIP_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 /* Clip m's primitives to the square in place (vertices and colours appended,
 ** primitive list replaced); ls (may be NULL) hears each primitive, each cut
 ** and the final verdict.  0; -1 when out of memory, -2 when a new colour is

@@ -21,7 +21,7 @@
 */
 #ifndef PT_RV_NEARCLIP_H
 #define PT_RV_NEARCLIP_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 /* Clip m's primitives at z = n in place: new vertices and colours appended,
 ** the primitive list replaced; ls (may be NULL) hears each primitive, each
 ** trivial verdict and each cut.  0; -1 when out of memory, -2 when a new

@@ -17,7 +17,7 @@
 */
 #ifndef PT_RV_PROJECT_H
 #define PT_RV_PROJECT_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 /* v projected, as above; w = 1.  This function can't fail. */
 pt_vec4 pt_rv_project(pt_vec4 v, int perspective);
 #endif
