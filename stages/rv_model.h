@@ -15,6 +15,8 @@
 ** give a new primitive list.  Indices here are 0-based; the log and the trace
 ** print them as the course does (0-based in its log, 1-based in pipetrace's
 ** trace: the scene's numbering).
+** Every index a primitive holds must be in range (the scene parser checks
+** them); the stages do not check again.
 */
 #ifndef PT_RV_MODEL_H
 #define PT_RV_MODEL_H
@@ -84,6 +86,18 @@ typedef struct pt_rv_clip_ls {
 int pt_rv_add_vertex(pt_rv_model *m, pt_vec4 v);
 int pt_rv_add_color(pt_rv_model *m, pt_rgb c);
 int pt_rv_add_prim(pt_rv_model *m, const pt_rv_prim *p);
+
+/* Finish a cut that a clip stage filled in but for its new colour and
+** indices: c[2] = (1 - t_)*c[1] + t_*c[0] in float, t_ = (float)t (both
+** clippers' formula: c[1] is the end t runs from); append p[2] and c[2] to
+** m, set v_new and c_new, and tell ls->cut.  0; -1 when out of memory, -2
+** when java.awt.Color would refuse c[2] (the course's render throws); m is
+** unchanged then. */
+int pt_rv_cut_finish(pt_rv_model *m, pt_rv_cut *cut, const pt_rv_clip_ls *ls);
+
+/* 1 when java.awt.Color's float constructor takes c: each component in
+** 0 .. 1 or NaN (it throws otherwise).  This function can't fail. */
+int pt_rv_color_ok(pt_rgb c);
 
 /* Free what m owns and leave it empty.  This function can't fail. */
 void pt_rv_model_free(pt_rv_model *m);

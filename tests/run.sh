@@ -37,6 +37,7 @@ raster           1 $B/test_raster
 pipelines        1 $B/test_pipelines
 journey-rows     1 $B/test_journey
 matrix           1 $B/test_matrix
+rv-stages        1 $B/test_rv_stages tests/data/course
 scene            1 $B/test_scene
 nameset          1 $B/test_nameset
 numparse         1 $B/test_numparse
