@@ -5,7 +5,21 @@
 ** A scene gives a position's matrix as a list of operations (the `matrix`,
 ** `matrix-pre`, `matrix-set` and renderer 9's `translate` lines):
 **   POST  M = M.times(OP)     PRE  M = OP.times(M)     SET  M = OP
-** starting from Matrix.identity().  OP is one of Matrix's builders.
+** starting from Matrix.identity().  OP is one of Matrix's builders, as
+** Matrix.java builds them (a Matrix is four column vectors):
+**   identity = scale(1, 1, 1);  translate: column 4 = (x, y, z, 1);
+**   scale: diag(x, y, z, 1);  buildFromRows: row i's entries become the
+**   columns' i-th components (a transpose);
+**   rotate(theta, x, y, z): norm = sqrt(x*x + y*y + z*z), u = (x, y, z)/norm,
+**   c = cos((PI/180.0)*theta), s = sin(...), column 1 =
+**   (ux*ux*(1-c)+c, uy*ux*(1-c)+(uz*s), uz*ux*(1-c)-(uy*s), 0), column 2 =
+**   (ux*uy*(1-c)-(uz*s), uy*uy*(1-c)+c, uz*uy*(1-c)+(ux*s), 0), column 3 =
+**   (ux*uz*(1-c)+(uy*s), uy*uz*(1-c)-(ux*s), uz*uz*(1-c)+c, 0) (Rodrigues:
+**   R = c I + (1-c) u u^T + s [u]x); rotateX(theta) is rotate(theta, 1, 0, 0),
+**   so its M00 = 1*1*(1-c)+c, not always 1.0.  Java's Math.sin/cos differ
+**   from libm's in the last bit for about 0.2% of angles.
+** A.times(v): x = (A00*v.x) + (A01*v.y) + (A02*v.z) + (A03*v.w), each row
+** left to right, all four products; A.times(B) = A times each column of B.
 */
 #ifndef PT_R9_MATRIX_H
 #define PT_R9_MATRIX_H
@@ -37,10 +51,12 @@ typedef struct pt_matop {
 /* A Matrix as renderer 9 keeps it: four column vectors. */
 typedef struct pt_jmat { pt_vec4 col[4]; } pt_jmat;
 
-/* The position's matrix: identity, then ops[0 .. n-1] in order. */
+/* The position's matrix: identity, then ops[0 .. n-1] in order (ops may be
+** NULL when n is 0).  This function can't fail. */
 pt_jmat pt_r9_position_matrix(const pt_matop *ops, size_t n);
 
-/* A.times(B) and A.times(v), summed as Matrix.java sums them. */
+/* A.times(B) and A.times(v), summed as Matrix.java sums them.  These
+** functions can't fail. */
 pt_jmat pt_jmat_times(const pt_jmat *a, const pt_jmat *b);
 pt_vec4 pt_jmat_times_vec(const pt_jmat *a, pt_vec4 v);
 

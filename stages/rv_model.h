@@ -15,6 +15,8 @@
 ** give a new primitive list.  Indices here are 0-based; the log and the trace
 ** print them as the course does (0-based in its log, 1-based in pipetrace's
 ** trace: the scene's numbering).
+** Every index a primitive holds must be in range (the scene parser checks
+** them); the stages do not check again.
 */
 #ifndef PT_RV_MODEL_H
 #define PT_RV_MODEL_H

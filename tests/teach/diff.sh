@@ -150,7 +150,7 @@ check "diff-11.8 a forgotten viewport offset: named" \
 check "diff-11.9 ... the pixels: a shift by (-40, -30)" \
     grep -qF "Lit pixels: 1243 in EXPECTED, 1243 in ACTUAL: ACTUAL's are EXPECTED's moved by (-40, -30)." "$tmp/flat"
 check "diff-11.10 ... not 1217 missing and 1217 extra" test "$(grep -c 'missing in ACTUAL' "$tmp/out")" = 0
-check "diff-11.11 ... in the summary too" grep -qF "The lit pixels differ too: all of them moved by (-40, -30), as a consequence." "$tmp/summary"
+check "diff-11.11 ... in the summary too, the consequence checked" grep -qF "The lit pixels differ too: all of them moved by (-40, -30), as a consequence: from ACTUAL's own end pixels the reference rasterizer draws ACTUAL's pixels in every segment that differs." "$tmp/summary"
 "$exe" diff "$tmp/bi-want.ppm" "$tmp/bi-got.ppm" --image-out "$tmp/hl.png" >"$tmp/out" 2>&1
 check "diff-11.12 the two images: a shift by (-40, -30)" \
     grep -qxF "ACTUAL is EXPECTED moved by (-40, -30): the same picture, shifted." "$tmp/out"
@@ -452,6 +452,23 @@ check "diff-6.19 ... saying what is read and what to do" \
 head -c 60 "$tmp/bi.png" > "$tmp/cut.png"
 "$exe" diff "$tmp/cut.png" "$tmp/bi.png" >/dev/null 2>"$tmp/err"
 check "diff-6.20 a cut-short PNG: exit 2" test $? = 2
+
+# ---- a consequence is claimed only when it is one: two mistakes, the index
+# stage's (the vertices differ) and the viewport stage's floor(x + 0.5) (the
+# rasterizer asks it each step: one step of data/floor.scene moves)
+sh tests/teach/student.sh s6_xh "$tmp/s6_xh.c" >/dev/null 2>&1
+sh tests/teach/student.sh s4_floor "$tmp/s4_floor.c" >/dev/null 2>&1
+rm -f "$tmp/sb/pipetrace"
+MAKEFLAGS= MFLAGS= MAKELEVEL= make -s -j2 B="$tmp/sb" STAGE_index="$tmp/s6_xh.c" \
+    STAGE_viewport="$tmp/s4_floor.c" "$tmp/sb/pipetrace" >"$tmp/make.log" 2>&1
+"$exe" $data/floor.scene --format jsonl --trace "$tmp/want.jsonl"
+"$tmp/sb/pipetrace" $data/floor.scene --format jsonl --trace "$tmp/got.jsonl"
+"$exe" diff "$tmp/want.jsonl" "$tmp/got.jsonl" >"$tmp/out" 2>&1
+summary
+check "diff-13.1 two mistakes: the pixels are not called a consequence" \
+    sh -c '! grep -qF ", as a consequence:" "$1" && grep -qF "and not only as a consequence" "$1"' _ "$tmp/summary"
+check "diff-13.2 ... the second mistake said, where it starts" \
+    grep -qF "so the rasterizer (or the viewport stage it asks each step) goes wrong there too: a second mistake." "$tmp/summary"
 
 # ---- no verdict without evidence: PASS only when every stage and the pixels
 # were compared (exit 3 and what was not, otherwise)

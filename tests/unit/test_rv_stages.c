@@ -30,7 +30,7 @@
 #include "testhelp.h"
 
 #define MAXOPS 64
-#define MAXPOS 16
+#define MAXPOS 64
 
 static char where[512];                 /* case, position, stage: for messages */
 static int libm_cases;                  /* matrices off by Java's sin/cos only */
@@ -319,6 +319,23 @@ static int same_m(const pt_jmat *a, const pt_jmat *b)
     return 1;
 }
 
+/* Every entry within 2^-50 of the dump's, relative to 1 or the entry: what a
+** last-bit difference of Math.sin or Math.cos leaves in Rodrigues' formula. */
+static int near_m(const pt_jmat *a, const pt_jmat *b)
+{
+    double x[16], y[16];
+    int k;
+
+    if (sizeof *a != sizeof x) return 0;
+    memcpy(x, a, sizeof x);
+    memcpy(y, b, sizeof y);
+    for (k = 0; k < 16; k++) {
+        double s = fabs(y[k]) > 1 ? fabs(y[k]) : 1;
+        if (!(fabs(x[k] - y[k]) <= s * 0x1p-50)) return 0;
+    }
+    return 1;
+}
+
 /* ---- the clippers' debug lines ---- */
 
 typedef struct logcheck {
@@ -499,10 +516,10 @@ static void run_case(const char *dir, const char *rn, const char *name)
                 pt_jmat want_m = mline ? rows_matrix(mline) : pt_r9_position_matrix(NULL, 0);
                 mat = pt_r9_position_matrix(cp ? cp->ops : NULL, cp ? cp->nops : 0);
                 if (!same_m(&mat, &want_m)) {
-                    if (cp && cp->rotates) {
+                    if (cp && cp->rotates && near_m(&mat, &want_m)) {
                         printf("note: %s: the matrix differs from Java's in the last bits (Math.sin/cos vs libm)\n", where);
                         libm_cases++;
-                    } else PT_CHECK("position matrix", 0);
+                    } else PT_CHECK(where, 0);
                     mat = want_m;
                 } else PT_CHECK(where, 1);
                 for (j = 0; j < in.nv; j++) out[j] = pt_r9_model2world(in.v[j], &mat);
@@ -615,7 +632,7 @@ int main(int argc, char **argv)
         char rn[8], name[256];
         if (sscanf(l[i], "%7s %255s", rn, name) == 2 && rn[0] == 'r') run_case(dir, rn, name);
     }
-    printf("%d case(s) with a rotation matrix off by Java's Math.sin/cos\n", libm_cases);
+    printf("%d position matrix(es) off in the last bits by Java's Math.sin/cos (noted, not failed)\n", libm_cases);
     free(l);
     free(s);
     return pt_test_report();

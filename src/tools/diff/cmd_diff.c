@@ -144,10 +144,10 @@ static int trace_diff(dctx *c)
     pixels_compared = (c->t[0].npx || c->t[0].ncl) && (c->t[1].npx || c->t[1].ncl);
     if (pixels_compared) {
         if (pt_diff_compare_pixels(c, &nmiss, &nextra, nlit) != 0) return -1;
-        if ((nmiss || nextra) && !c->differ && !c->only[0] && !c->only[1] && !pt_diff_silent_any(c) &&
-            c->t[0].hdr.have) {
+        if ((nmiss || nextra) && c->t[0].hdr.have) {
             if (pt_diff_check_raster(c, &rs) != 0) return -1;
-            pt_diff_report_raster(c, &rs);
+            if (!c->differ && !c->only[0] && !c->only[1] && !pt_diff_silent_any(c))
+                pt_diff_report_raster(c, &rs);
         }
         if (nmiss || nextra) printf("\n");
     } else if (c->t[0].npx + c->t[0].ncl + c->t[1].npx + c->t[1].ncl) {

@@ -123,6 +123,11 @@ typedef struct rstat {
     uint64_t first_seg;
     int64_t ends[4];             /* its rounded endpoints X0 Y0 X1 Y1 */
     int ends_ok;                 /* 1: ends verified by replaying EXPECTED */
+    size_t own_tried;            /* differing segments replayed from ACTUAL's
+                                 ** own end pixels by the reference rasterizer */
+    size_t own_bad;              /* ... whose pixels it does not give */
+    uint32_t own_model;          /* the first of those */
+    uint64_t own_seg;
 } rstat;
 
 /* 1 when stage st holds doubles, 0 when integers. */

@@ -194,6 +194,21 @@ static int plist_eq(const plist *a, const plist *b)
     return a->n == b->n && (a->n == 0 || memcmp(a->p, b->p, a->n * sizeof *a->p) == 0);
 }
 
+/* 1 when the replayed viewport pixels re are ACTUAL's pixels act (taken to
+** viewport pixels with the reference's offset, fb_to_vp) once its own offset
+** d is taken off instead. */
+static int own_eq(const plist *re, const plist *act, const pt_thdr *hd, const int64_t d[2])
+{
+    pt_pix o = {0, 0, 1}, ul = pt_viewport2fb(o, hd->vp_x, hd->vp_y, NULL);
+    size_t q;
+
+    if (re->n != act->n) return 0;
+    for (q = 0; q < re->n; q++)
+        if (re->p[q][0] != act->p[q][0] + ul.x - d[0] || re->p[q][1] != act->p[q][1] + ul.y - d[1])
+            return 0;
+    return 1;
+}
+
 /* Framebuffer pixel (x_fb, y_fb) of the header hd in viewport coordinates:
 ** the way back through the framebuffer stage, which offsets every pixel by
 ** the framebuffer pixel of viewport pixel (0, 0) (pt_viewport2fb). */
@@ -219,6 +234,41 @@ static void vp_to_pp(int64_t x_vp, int64_t y_vp, int h, int64_t ends[2])
     ends[1] = h - y_vp;                     /* y_pp = h - y_vp */
 }
 
+/* The offset ACTUAL's framebuffer stage gives its viewport pixels, read off
+** its vertices: 1 and *d when every vertex with both records has
+** (x_fb, y_fb) = (x_vp, y_vp) + d (without such a vertex, the reference's
+** offset for hd's corner), else 0.  Its pixel records less d are then
+** viewport pixels, as its clip records are. */
+static int actual_offset(const dctx *c, const pt_thdr *hd, int64_t d[2])
+{
+    pt_pix o = {0, 0, 1}, ul = pt_viewport2fb(o, hd->vp_x, hd->vp_y, NULL);
+    int seen = 0;
+    size_t k;
+
+    d[0] = ul.x;
+    d[1] = ul.y;
+    for (k = 0; k < c->vt.n; k++) {
+        uint32_t iv = c->vt.e[k].rec[1][PT_STAGE_VIEWPORT];
+        uint32_t ifb = c->vt.e[k].rec[1][PT_STAGE_FRAMEBUFFER];
+        const pt_tvrec *v, *f;
+
+        if (iv == PT_DIFF_NONE || ifb == PT_DIFF_NONE) continue;
+        v = &c->t[1].vx[iv];
+        f = &c->t[1].vx[ifb];
+        if ((v->flags | f->flags) & PT_REC_NULL) continue;
+        if (!pt_diff_small(v->u.n[0]) || !pt_diff_small(v->u.n[1]) ||
+            !pt_diff_small(f->u.n[0]) || !pt_diff_small(f->u.n[1])) continue;
+        if (!seen) {
+            d[0] = f->u.n[0] - v->u.n[0];
+            d[1] = f->u.n[1] - v->u.n[1];
+            seen = 1;
+        } else if (f->u.n[0] - v->u.n[0] != d[0] || f->u.n[1] - v->u.n[1] != d[1]) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* Segment by segment: which differ, and which rounding mistake of the
 ** rasterizer reproduces ACTUAL's pixels from EXPECTED's endpoints. */
 int pt_diff_check_raster(dctx *c, rstat *rs)
@@ -227,7 +277,8 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
     size_t n[2], k[2] = {0, 0}, j;
     skey *s[2];
     plist pl[2] = {{NULL, 0, 0, 0}, {NULL, 0, 0, 0}}, re = {NULL, 0, 0, 0};
-    int side, rc = 0;
+    int64_t d[2];
+    int side, rc = 0, one_space = actual_offset(c, hd, d);
 
     memset(rs, 0, sizeof *rs);
     s[0] = sorted_steps(&c->t[0], &n[0]);
@@ -292,6 +343,28 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
             rs->ends_ok = ok;
         }
         rs->segs_differ++;
+        if (end[1] > beg[1] && sane && rc == 0 && one_space &&
+            hd->vp_w >= 1 && hd->vp_h >= 1 && hd->vp_w <= PT_MAX_SIZE && hd->vp_h <= PT_MAX_SIZE) {
+            /* ACTUAL's pixels a consequence of its vertices?  The reference
+            ** rasterizer from ACTUAL's own first and last step must give
+            ** them.  Its clip records are viewport pixels, its pixel records
+            ** framebuffer ones, which its own offset d takes back */
+            const skey *f = &s[1][beg[1]], *l = &s[1][end[1] - 1];
+            int64_t own[4];
+            pt_pix fv, lv;
+            if (f->clip) { fv.x = c->t[1].cl[f->k].first[0]; fv.y = c->t[1].cl[f->k].first[1]; }
+            else { fv.x = c->t[1].px[f->k].x - d[0]; fv.y = c->t[1].px[f->k].y - d[1]; }
+            if (l->clip) { lv.x = c->t[1].cl[l->k].last[0]; lv.y = c->t[1].cl[l->k].last[1]; }
+            else { lv.x = c->t[1].px[l->k].x - d[0]; lv.y = c->t[1].px[l->k].y - d[1]; }
+            vp_to_pp(fv.x, fv.y, hd->vp_h, &own[0]);
+            vp_to_pp(lv.x, lv.y, hd->vp_h, &own[2]);
+            rs->own_tried++;
+            if (replay(own, hd->vp_w, hd->vp_h, pt_pixel2viewport, &re)) rc = -1;
+            else if (!own_eq(&re, &pl[1], hd, d) && rs->own_bad++ == 0) {
+                rs->own_model = model;
+                rs->own_seg = seg;
+            }
+        }
         for (j = 0; ok && rc == 0 && j < PT_NRASTER_MISTAKES; j++) {
             if (replay(ends, hd->vp_w, hd->vp_h, pt_raster_mistakes[j].to_vp, &re)) rc = -1;
             else if (plist_eq(&re, &pl[1])) rs->hits[j]++;

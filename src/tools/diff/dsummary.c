@@ -366,7 +366,27 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
             pt_diff_add(&s, " %s lit pixels differ%s: %zu in EXPECTED, %zu in ACTUAL (%zu missing, "
                         "%zu extra)", vertices_differ ? "The" : "But the", vertices_differ ? " too" : "",
                         nlit[0], nlit[1], nmiss, nextra);
-        if (vertices_differ) pt_diff_add(&s, ", as a consequence.");
+        if (vertices_differ && rs->own_tried && rs->own_tried == rs->segs_differ && !rs->own_bad)
+            pt_diff_add(&s, ", as a consequence: from ACTUAL's own end pixels the reference "
+                        "rasterizer draws ACTUAL's pixels in every segment that differs.");
+        else if (vertices_differ && rs->own_bad)
+            pt_diff_add(&s, ", and not only as a consequence: from ACTUAL's own end pixels the "
+                        "reference rasterizer does not draw ACTUAL's pixels in %zu of the %zu "
+                        "segments that differ (the first: %s segment %" PRIu64 "), so the "
+                        "rasterizer (or the viewport stage it asks each step) goes wrong there "
+                        "too: a second mistake.", rs->own_bad, rs->segs_differ,
+                        pt_names_get(&c->nm, rs->own_model), rs->own_seg);
+        else if (vertices_differ && rs->own_tried)
+            pt_diff_add(&s, ", which may be a consequence: from ACTUAL's own end pixels the "
+                        "reference rasterizer draws ACTUAL's pixels in the %zu segment%s it "
+                        "could replay; the other %zu were not checked.",
+                        rs->own_tried, rs->own_tried == 1 ? "" : "s",
+                        rs->segs_differ - rs->own_tried);
+        else if (vertices_differ)
+            pt_diff_add(&s, "; whether only as a consequence was not checked (%s).",
+                        c->t[0].hdr.have ? "ACTUAL's framebuffer stage offsets its vertices in more "
+                        "than one way"
+                        : "EXPECTED has no header with the viewport");
         else if (rs->segs_differ) {
             size_t best = PT_NRASTER_MISTAKES;
             pt_diff_add(&s, ", so the rasterizer differs, in %zu segment%s.",
