@@ -235,7 +235,7 @@ done:
 /* Primitives no course case has: coordinates far outside the view, NaN. */
 static void extremes(void)
 {
-    pt_vec4 v[3] = {{1e12, 1e12, 0.0, 1.0}, {NAN, NAN, 0.0, 1.0}, {-1.0, -1.0, 0.0, 1.0}};
+    pt_vec4 v[3] = {{1e12, 1e12, 0.0, 1.0}, {(double)NAN, (double)NAN, 0.0, 1.0}, {-1.0, -1.0, 0.0, 1.0}};
     pt_rgb c[1] = {{1.0f, 0.5f, 0.25f}};
     pt_rv_prim pt = {PT_RV_POINT, {0, 0}, {0, 0}, 0};
     pt_rv_prim nan_seg = {PT_RV_LINE, {1, 1}, {0, 0}, 0};
