@@ -102,6 +102,9 @@ typedef struct pt_rv_raster_ls pt_rv_raster_ls;
 ** telling ls (NULL: nobody).  p's indices must be valid for m.  The loops
 ** run as Java's do, over Java ints: a NaN coordinate rounds to 0; a point's
 ** rows and columns stop at INT_MAX where Java's would wrap around forever.
+** The work is the segment's length in pixels, or (2 radius + 1)^2: bounded
+** by the viewport for the clipped model the course gives it (|x|, |y| <= 1
+** or NaN), up to 2^32 steps for coordinates far outside it, as in Java.
 ** Returns the number of pixels written.  This function can't fail. */
 uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,

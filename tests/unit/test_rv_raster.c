@@ -232,6 +232,43 @@ done:
     free(want);
 }
 
+/* Primitives no course case has: coordinates far outside the view, NaN. */
+static void extremes(void)
+{
+    pt_vec4 v[3] = {{1e12, 1e12, 0.0, 1.0}, {(double)NAN, (double)NAN, 0.0, 1.0}, {-1.0, -1.0, 0.0, 1.0}};
+    pt_rgb c[1] = {{1.0f, 0.5f, 0.25f}};
+    pt_rv_prim pt = {PT_RV_POINT, {0, 0}, {0, 0}, 0};
+    pt_rv_prim nan_seg = {PT_RV_LINE, {1, 1}, {0, 0}, 0};
+    pt_rv_prim corner = {PT_RV_POINT, {2, 0}, {0, 0}, 1};
+    pt_rv_model m;
+    pt_rv_raster_par par;
+    pt_rv_raster_ls ls;
+    unsigned char rgb[4 * 3 * 3];
+    tally t;
+
+    memset(&m, 0, sizeof m);
+    m.v = v; m.nv = 3; m.c = c; m.nc = 1;
+    memset(&par, 0, sizeof par);
+    par.w = par.W = 4;
+    par.h = par.H = 3;
+    par.gamma = 0;
+    memset(rgb, 0, sizeof rgb);
+    memset(&t, 0, sizeof t);
+    set_ls(&ls, NULL, &t, 0);
+    /* Java's loop of a radius-0 point at (int) 2^31 - 1 never ends (++ wraps) */
+    PT_CHECK("rv-2.1 a point at 1e12 (Java: an endless loop): clipped, nothing written",
+             pt_rv_raster_prim(&m, &pt, &par, rgb, &ls) == 0 && t.said == 0 && t.bad == 0);
+    /* NaN rounds to 0: pixel (-1, h), index h*W - 1, the row above's last pixel */
+    PT_CHECK("rv-2.2 a NaN segment is one pixel at (-1, h): the framebuffer's last byte",
+             pt_rv_raster_prim(&m, &nan_seg, &par, rgb, &ls) == 1 &&
+             rgb[sizeof rgb - 3] == 255 && rgb[sizeof rgb - 2] == 128 && rgb[sizeof rgb - 1] == 64);
+    memset(rgb, 0, sizeof rgb);
+    /* (-1, -1) maps to pixel-plane (0.5, 0.5), rounded (1, 1): viewport (0, h-1) */
+    PT_CHECK("rv-2.3 a radius-1 point at the lower-left corner: 4 of its 9 pixels",
+             pt_rv_raster_prim(&m, &corner, &par, rgb, &ls) == 4 &&
+             rgb[(2 * 4 + 0) * 3] == 255 && rgb[(1 * 4 + 1) * 3] == 255 && rgb[(2 * 4 + 2) * 3] == 0);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : "tests/data/course-raster";
@@ -247,6 +284,7 @@ int main(int argc, char **argv)
         n++;
     }
     if (list) fclose(list);
+    extremes();
     /* java.awt.Color(float): the float product, then + 0.5 in double (NOTES 9.4) */
     PT_CHECK("rv-1.1 Color byte of 0.50392157f is 129 (widened first: 128)",
              pt_rv_color_byte(0.50392157f) == 129 &&
