@@ -103,10 +103,10 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/pt_color.o $B/s1_model2camera.o $B/s2_
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
            $B/m7_screen2viewport.o $B/ms_clip_segment.o $B/pt_matrix.o $(RV_O) $(REF_O)
-# The course's renderers 7 and 9 (stages/rv_model.h): their geometric stages.
+# The course's renderers 7 and 9 (stages/rv_model.h): their stages.
 RV_O     = $B/rv_model.o $B/r7_model2view.o $B/r7_view2camera.o $B/r9_matrix.o \
            $B/r9_model2world.o $B/r9_world2view.o $B/r9_view2camera.o $B/rv_nearclip.o \
-           $B/rv_project.o $B/rv_clip.o
+           $B/rv_project.o $B/rv_clip.o $B/rv_raster.o
 # The reference copy of s1..s6, in every build (stages/pt_ref.h): each file
 # compiled again with stages/pt_ref_names.h in front, which renames its
 # function pt_x to ptref_x; in build-student/ these stay the reference while
@@ -121,7 +121,8 @@ CORE_O   = $B/scene.o $B/scene_course.o $B/nameset.o $B/numparse.o $B/shapes.o $
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace_buf.o $B/trace_head.o \
            $B/trace_text.o $B/trace_jsonl.o $B/trace_csv.o $B/trace.o $B/tread.o \
            $B/tread_util.o $B/tread_text.o $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o \
-           $B/png.o $B/outfile.o $B/trace_kraft.o $B/tlanes.o
+           $B/png.o $B/outfile.o $B/trace_kraft.o $B/tlanes.o \
+           $B/rv_log_raster.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff
 # and step), the subcommands (diff, accuracy and journey in folders of their
 # own; diff's parts listed with the commands).
@@ -137,7 +138,7 @@ TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
            $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm \
            $B/test_numfmt_portable $B/test_trace $B/test_lanes $B/test_pipelines \
-           $B/test_journey $B/test_rv_stages
+           $B/test_journey $B/test_rv_stages $B/test_rv_raster
 
 all: $B/pipetrace
 

@@ -1,6 +1,35 @@
 /*
 ** stages/rv_raster.h -- renderers 7 and 9: rasterize a clipped primitive into the viewport
-** See LICENSE for copyright and license.  (Formula and derivation: to be written by its owner.)
+** See LICENSE for copyright and license.
+**
+** in : (x_p, y_p)   image plane, clipped to [-1,1] x [-1,1] (NaN passes the clip)
+** out: pixels of the framebuffer, written as FrameBuffer.setPixelVP writes them
+**   x_pp = 0.5 + w/2.001 * (x_p + 1)      (w/2.001 first; Blinn p.142)
+**   y_pp = 0.5 + h/2.001 * (y_p + 1)
+**   x_pp, y_pp = Math.round(...)          (a line's ends, a point's centre)
+**   x_vp = x_pp - 1,  y_vp = h - y_pp      (pixel plane: y up; viewport: y down)
+**   index = (y_ul + y_vp)*W + (x_ul + x_vp)   (Java int arithmetic; x past W
+**                                             wraps to the next row, an index
+**                                             outside W*H is "Bad pixel coordinate")
+** A line (a DDA): transposed iff |dy| > |dx|, ends swapped so x0 <= x1, then
+**   m = (y1 - y0)/(x1 - x0),  slope_c = (double)(c1 - c0 in float)/(x1 - x0)
+**   for x = x0 .. x1-1:  y += m (accumulated),  c = (float)|c0 + slope_c*(x - x0)|
+**     AA off: pixel (x, Math.round(y)), gamma(c)
+**     AA on : pixels (x, (int)y) and (x, (int)y + 1) (the second = the first when
+**             y == h, or w transposed: the edge rule), weight f = (float)(y - (int)y),
+**             low = (1-f)*c + f*bg, hi = f*c + (1-f)*bg in float, gamma on all six
+**   last pixel (x1, y1) and a one-pixel segment: the raw colour, no gamma, no AA.
+** A point: gamma(c) on rows (int)y - r .. (int)y + r (outer), columns likewise,
+**   each written iff 0 < x <= w and 0 < y <= h (pixel plane).
+**   gamma(c) = (float)Math.pow(c, 1/2.2);  byte = (int)((double)(c*255f) + 0.5)
+** Why: the 2.001 keeps x_p = 1 inside the viewport (w/2.001*2 < w), Math.round
+** picks the logical pixel, transposing makes every step move one pixel in x.
+** (NOTES.md of the course's reference, sections 3 to 6.)
+**
+**    y_pp                      viewport row 0
+**     ^  . . . .                +--------> x_vp
+**     |  . . . .    ==>         | . . . .
+**     +--------> x_pp           v y_vp
 */
 #ifndef PT_RV_RASTER_H
 #define PT_RV_RASTER_H
@@ -15,13 +44,80 @@ typedef struct pt_rv_raster_par {
     int antialias, gamma;        /* Rasterize.doAntiAliasing, doGamma */
 } pt_rv_raster_par;
 
-/* Who hears the rasterizer (its log lines' numbers; owner defines the records). */
+/* The forms of the course's pixel log lines. */
+typedef enum pt_rv_px_kind {
+    PT_RV_PX_STEP,               /* a loop pixel, AA off */
+    PT_RV_PX_AA,                 /* a loop pixel's two AA pixels */
+    PT_RV_PX_END,                /* the last pixel, or a one-pixel segment's */
+    PT_RV_PX_POINT               /* a pixel of a point */
+} pt_rv_px_kind;
+
+/* One pixel line.  x_pp and y_pp are as the log prints them: a STEP or AA
+** line of a segment that is not transposed has an int x_pp (the step), a
+** transposed one an int y_pp; END has the rounded ends, POINT the rounded
+** centre (not the pixel).  STEP, END, POINT: the pixel (x_vp, y_vp).  AA not
+** transposed: column x_vp, rows lo = h - y_low, hi = h - y_hi; transposed:
+** row y_vp, columns lo = y_low - 1, hi = y_hi - 1.  c[0] the colour written
+** (gamma-encoded where gamma applies), c[1] AA's second pixel's. */
+typedef struct pt_rv_pixel {
+    pt_rv_px_kind kind;
+    int transposed;              /* STEP, AA: the segment is transposed */
+    double x_pp, y_pp;
+    int x_vp, y_vp;
+    int lo, hi;                  /* AA: the pair's varying coordinates */
+    pt_rgb c[2];
+    int clipped;                 /* POINT: outside the viewport (not written) */
+    const pt_rv_raster_par *par; /* the viewport and framebuffer (the log's prefix) */
+} pt_rv_pixel;
+
+/* A segment's slopes, after transposing and ordering its ends. */
+typedef struct pt_rv_slopes {
+    double m;                    /* dy/dx (transposed coordinates) */
+    int transposed;
+    double mc[3];                /* red, green, blue per step */
+    double x0_vp, y0_vp;         /* x0 - 1, h - y0 (transposed coordinates) */
+    double x1_vp, y1_vp;
+} pt_rv_slopes;
+
+/* Who hears the rasterizer: every number the course's debug log prints for
+** a primitive, in its order (any callback may be NULL).
+**   ends   a segment's ends in the pixel plane, before rounding
+**   slopes a segment that is not one pixel
+**   point  a point's centre in the pixel plane, before rounding
+**   pixel  each pixel line, before its write(s)
+**   bad    a write whose index is outside the framebuffer (dropped): its
+**          framebuffer coordinates, after the pixel line it belongs to */
+struct pt_rv_raster_ls {
+    void (*ends)(void *ud, double x0_pp, double y0_pp, double x1_pp, double y1_pp);
+    void (*slopes)(void *ud, const pt_rv_slopes *s);
+    void (*point)(void *ud, double x_pp, double y_pp);
+    void (*pixel)(void *ud, const pt_rv_pixel *px);
+    void (*bad)(void *ud, int x_fb, int y_fb, int W, int H);
+    void *ud;
+};
 typedef struct pt_rv_raster_ls pt_rv_raster_ls;
 
 /* Draw primitive p of m into rgb (the framebuffer, W x H, 3 bytes a pixel,
-** written as FrameBuffer.setPixelVP writes), telling ls (NULL: nobody).
-** Returns the number of pixels written. */
+** row-major, top row first), written as FrameBuffer.setPixelVP writes,
+** telling ls (NULL: nobody).  p's indices must be valid for m.  The loops
+** run as Java's do, over Java ints: a NaN coordinate rounds to 0; a point's
+** rows and columns stop at INT_MAX where Java's would wrap around forever.
+** The work is the segment's length in pixels, or (2 radius + 1)^2: bounded
+** by the viewport for the clipped model the course gives it (|x|, |y| <= 1
+** or NaN), up to 2^32 steps for coordinates far outside it, as in Java.
+** Returns the number of pixels written.  This function can't fail. */
 uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,
                            const pt_rv_raster_ls *ls);
+
+/* Fill the viewport with its background as Viewport.clearVP() does: pixel
+** by pixel through setPixelVP, so a viewport reaching past the framebuffer
+** wraps and reports its "bad" pixels to ls (NULL: nobody).  Returns the
+** number of pixels written.  This function can't fail. */
+uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
+                        const pt_rv_raster_ls *ls);
+
+/* The byte java.awt.Color(float) makes of component c: (int)((double)(c*255f)
+** + 0.5), (int) as Java's (NaN gives 0).  This function can't fail. */
+int pt_rv_color_byte(float c);
 #endif

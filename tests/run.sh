@@ -34,6 +34,7 @@ numfmt          10 $B/test_numfmt
 numfmt-portable 10 $B/test_numfmt_portable
 jnum             1 $B/test_jnum
 raster           1 $B/test_raster
+rv-raster        1 $B/test_rv_raster
 pipelines        1 $B/test_pipelines
 journey-rows     1 $B/test_journey
 matrix           1 $B/test_matrix

@@ -1,0 +1,309 @@
+/*
+** stages/rv_raster.c -- renderers 7 and 9: rasterize a clipped primitive into the viewport
+** See LICENSE for copyright and license.
+**
+** Java's int arithmetic wraps and its (int) of a double saturates (NaN is
+** 0): both are spelled out below (jint, wrap32), as C leaves them undefined.
+** Float expressions stay float (FLT_EVAL_METHOD 0, -ffp-contract=off).
+*/
+#include <math.h>
+#include <stdint.h>
+#include "rv_raster.h"
+#include "pt_color.h"
+#include "pt_round.h"
+
+typedef struct draw {
+    const pt_rv_raster_par *par;
+    unsigned char *rgb;
+    const pt_rv_raster_ls *ls;
+    uint64_t n;                  /* pixels written */
+} draw;
+
+/* Java's (int) of a double: toward zero, NaN 0, saturated. */
+static int jint(double x)
+{
+    if (x != x) return 0;
+    if (x >= 2147483647.0) return INT32_MAX;
+    if (x <= -2147483648.0) return INT32_MIN;
+    return (int)x;
+}
+
+/* The low 32 bits of v as a Java int (two's complement). */
+static int wrap32(int64_t v)
+{
+    uint32_t u = (uint32_t)(uint64_t)v;
+    return u <= (uint32_t)INT32_MAX ? (int)u : (int)(int32_t)(u - 2147483648u) + INT32_MIN;
+}
+
+/* Java's Math.round: a long, NaN 0, saturated at the long's ends. */
+static int64_t jround(double x)
+{
+    double r = pt_java_round(x);
+    if (r >= 9223372036854775807.0) return INT64_MAX;
+    if (r <= -9223372036854775808.0) return INT64_MIN;
+    return (int64_t)r;
+}
+
+int pt_rv_color_byte(float c)
+{
+    return jint((double)(c * 255.0f) + 0.5);        /* (int)((double)(c*255f) + 0.5) */
+}
+
+/* FrameBuffer.setPixelVP(x, y, c) -> setPixelFB(x_ul + x, y_ul + y, c):
+** the pixel's bytes b, or a "bad" report when the index is outside. */
+static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
+{
+    const pt_rv_raster_par *par = d->par;
+    int x = wrap32((int64_t)par->x_ul + x_vp);
+    int y = wrap32((int64_t)par->y_ul + y_vp);
+    int idx = wrap32((int64_t)wrap32((int64_t)y * par->W) + x);    /* y*width + x */
+    unsigned char *o;
+
+    if (idx < 0 || (int64_t)idx >= (int64_t)par->W * par->H) {
+        if (d->ls && d->ls->bad) d->ls->bad(d->ls->ud, x, y, par->W, par->H);
+        return;
+    }
+    o = d->rgb + (size_t)idx * 3;
+    o[0] = b[0];
+    o[1] = b[1];
+    o[2] = b[2];
+    d->n++;
+}
+
+static void put(draw *d, int x_vp, int y_vp, pt_rgb c)
+{
+    unsigned char b[3];
+
+    b[0] = (unsigned char)pt_rv_color_byte(c.r);    /* new Color(r, g, b) */
+    b[1] = (unsigned char)pt_rv_color_byte(c.g);
+    b[2] = (unsigned char)pt_rv_color_byte(c.b);
+    put_bytes(d, x_vp, y_vp, b);
+}
+
+static void tell(const draw *d, pt_rv_pixel *px)
+{
+    px->par = d->par;
+    if (d->ls && d->ls->pixel) d->ls->pixel(d->ls->ud, px);
+}
+
+static pt_rgb gamma3(pt_rgb c)
+{
+    pt_rgb g;
+    g.r = pt_gamma(c.r);                            /* (float)Math.pow(c, 1/2.2) */
+    g.g = pt_gamma(c.g);
+    g.b = pt_gamma(c.b);
+    return g;
+}
+
+/* The pixel-plane map, w/2.001 first. */
+static double to_pp(int w, double x_p)
+{
+    return 0.5 + (double)w / 2.001 * (x_p + 1.0);   /* 0.5 + w/2.001*(x_p + 1) */
+}
+
+/* The end pixel (x_pp, y_pp rounded, in the viewport's orientation): raw colour. */
+static void end_pixel(draw *d, double x_pp, double y_pp, pt_rgb c)
+{
+    pt_rv_pixel px = {0};
+    px.kind = PT_RV_PX_END;
+    px.x_pp = x_pp;
+    px.y_pp = y_pp;
+    px.x_vp = wrap32((int64_t)jint(x_pp) - 1);     /* (int)x - 1 */
+    px.y_vp = wrap32((int64_t)d->par->h - jint(y_pp));  /* h - (int)y */
+    px.c[0] = c;
+    tell(d, &px);
+    put(d, px.x_vp, px.y_vp, c);
+}
+
+/* One loop step with AA: y between rows (int)y and (int)y + 1. */
+static void step_aa(draw *d, int x, double y, int tr, pt_rgb c)
+{
+    const pt_rv_raster_par *par = d->par;
+    int y_low = jint(y);
+    int y_hi = wrap32((int64_t)y_low + 1);
+    float f, bg[3], in[3], lo[3], hi[3];
+    pt_rv_pixel px = {0};
+    int k;
+
+    if (!tr && y == (double)par->h) y_hi = par->h;  /* the top edge */
+    if (tr && y == (double)par->w) y_hi = par->w;   /* the right edge */
+    f = (float)(y - (double)y_low);                 /* weight = fraction of y */
+    in[0] = c.r; in[1] = c.g; in[2] = c.b;
+    for (k = 0; k < 3; k++) {
+        bg[k] = pt_color_float(par->bg[k]);         /* bg / 255f */
+        lo[k] = (1.0f - f) * in[k] + f * bg[k];     /* (1-f)*c + f*bg */
+        hi[k] = f * in[k] + (1.0f - f) * bg[k];     /* f*c + (1-f)*bg */
+    }
+    px.c[0].r = lo[0]; px.c[0].g = lo[1]; px.c[0].b = lo[2];
+    px.c[1].r = hi[0]; px.c[1].g = hi[1]; px.c[1].b = hi[2];
+    if (par->gamma) {
+        px.c[0] = gamma3(px.c[0]);
+        px.c[1] = gamma3(px.c[1]);
+    }
+    px.kind = PT_RV_PX_AA;
+    px.transposed = tr;
+    if (!tr) {
+        px.x_pp = (double)x;
+        px.y_pp = y;
+        px.x_vp = wrap32((int64_t)x - 1);           /* x - 1 */
+        px.lo = wrap32((int64_t)par->h - y_low);    /* h - y_low */
+        px.hi = wrap32((int64_t)par->h - y_hi);
+        tell(d, &px);
+        put(d, px.x_vp, px.lo, px.c[0]);
+        put(d, px.x_vp, px.hi, px.c[1]);
+    } else {
+        px.x_pp = y;
+        px.y_pp = (double)x;
+        px.y_vp = wrap32((int64_t)par->h - x);      /* h - x */
+        px.lo = wrap32((int64_t)y_low - 1);         /* y_low - 1 */
+        px.hi = wrap32((int64_t)y_hi - 1);
+        tell(d, &px);
+        put(d, px.lo, px.y_vp, px.c[0]);
+        put(d, px.hi, px.y_vp, px.c[1]);
+    }
+}
+
+/* One loop step without AA: the row Math.round(y). */
+static void step_plain(draw *d, int x, double y, int tr, pt_rgb c)
+{
+    int ry = wrap32(jround(y));                     /* (int)Math.round(y): low 32 bits */
+    pt_rv_pixel px = {0};
+
+    px.kind = PT_RV_PX_STEP;
+    px.transposed = tr;
+    px.c[0] = d->par->gamma ? gamma3(c) : c;
+    if (!tr) {
+        px.x_pp = (double)x;
+        px.y_pp = y;
+        px.x_vp = wrap32((int64_t)x - 1);           /* x - 1 */
+        px.y_vp = wrap32((int64_t)d->par->h - ry);  /* h - round(y) */
+    } else {
+        px.x_pp = y;
+        px.y_pp = (double)x;
+        px.x_vp = wrap32((int64_t)ry - 1);          /* round(y) - 1 */
+        px.y_vp = wrap32((int64_t)d->par->h - x);   /* h - x */
+    }
+    tell(d, &px);
+    put(d, px.x_vp, px.y_vp, px.c[0]);
+}
+
+static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
+{
+    const pt_rv_raster_par *par = d->par;
+    pt_vec4 v0 = m->v[p->v[0]], v1 = m->v[p->v[1]];
+    pt_rgb c0 = m->c[p->c[0]], c1 = m->c[p->c[1]], c;
+    double x0 = to_pp(par->w, v0.x), y0 = to_pp(par->h, v0.y);
+    double x1 = to_pp(par->w, v1.x), y1 = to_pp(par->h, v1.y);
+    double t, y;
+    pt_rv_slopes s = {0};
+    int x, xe, tr = 0;
+
+    if (d->ls && d->ls->ends) d->ls->ends(d->ls->ud, x0, y0, x1, y1);
+    x0 = (double)jround(x0);                        /* Math.round, kept in a double */
+    y0 = (double)jround(y0);
+    x1 = (double)jround(x1);
+    y1 = (double)jround(y1);
+    if (x0 == x1 && y0 == y1) {                     /* one pixel: v0's colour */
+        end_pixel(d, x0, y0, c0);
+        return;
+    }
+    if (fabs(y1 - y0) > fabs(x1 - x0)) {            /* |slope| > 1: transpose */
+        t = x0; x0 = y0; y0 = t;
+        t = x1; x1 = y1; y1 = t;
+        tr = 1;
+    }
+    if (x1 < x0) {                                  /* step in increasing x */
+        t = x0; x0 = x1; x1 = t;
+        t = y0; y0 = y1; y1 = t;
+        c = c0; c0 = c1; c1 = c;
+    }
+    s.m = (y1 - y0) / (x1 - x0);                    /* m = dy/dx */
+    s.transposed = tr;
+    s.mc[0] = pt_color_slope(c0.r, c1.r, x1 - x0);  /* (float)(c1 - c0) / dx */
+    s.mc[1] = pt_color_slope(c0.g, c1.g, x1 - x0);
+    s.mc[2] = pt_color_slope(c0.b, c1.b, x1 - x0);
+    s.x0_vp = x0 - 1.0;
+    s.y0_vp = (double)par->h - y0;
+    s.x1_vp = x1 - 1.0;
+    s.y1_vp = (double)par->h - y1;
+    if (d->ls && d->ls->slopes) d->ls->slopes(d->ls->ud, &s);
+
+    y = y0;
+    xe = jint(x1);
+    for (x = jint(x0); x < xe; x++, y += s.m) {     /* y accumulated: y += m */
+        c.r = pt_color_at(c0.r, s.mc[0], (double)x, x0);  /* |c0 + mc*(x - x0)| */
+        c.g = pt_color_at(c0.g, s.mc[1], (double)x, x0);
+        c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
+        if (par->antialias) step_aa(d, x, y, tr, c);
+        else step_plain(d, x, y, tr, c);
+    }
+    if (!tr) end_pixel(d, x1, y1, c1);              /* the last pixel: raw colour */
+    else end_pixel(d, y1, x1, c1);
+}
+
+static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
+{
+    const pt_rv_raster_par *par = d->par;
+    pt_vec4 v = m->v[p->v[0]];
+    pt_rgb c = m->c[p->c[0]];
+    double x = to_pp(par->w, v.x), y = to_pp(par->h, v.y);
+    int ix, iy;
+    int64_t xs, ys, xlo, xhi, ylo, yhi;
+    pt_rv_pixel px = {0};
+
+    if (par->gamma) c = gamma3(c);
+    if (d->ls && d->ls->point) d->ls->point(d->ls->ud, x, y);
+    x = (double)jround(x);
+    y = (double)jround(y);
+    ix = jint(x);
+    iy = jint(y);
+    ylo = wrap32((int64_t)iy - p->radius);          /* (int)y - radius .. + radius */
+    yhi = wrap32((int64_t)iy + p->radius);
+    xlo = wrap32((int64_t)ix - p->radius);
+    xhi = wrap32((int64_t)ix + p->radius);
+    px.kind = PT_RV_PX_POINT;
+    px.x_pp = x;
+    px.y_pp = y;
+    px.c[0] = c;
+    for (ys = ylo; ys <= yhi; ys++)                 /* rows outer, bottom first */
+        for (xs = xlo; xs <= xhi; xs++) {
+            px.clipped = !(xs > 0 && xs <= par->w && ys > 0 && ys <= par->h);
+            px.x_vp = wrap32(xs - 1);               /* x_ - 1 */
+            px.y_vp = wrap32((int64_t)par->h - ys); /* h - y_ */
+            tell(d, &px);
+            if (!px.clipped) put(d, px.x_vp, px.y_vp, c);
+        }
+}
+
+uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
+                           const pt_rv_raster_par *par, unsigned char *rgb,
+                           const pt_rv_raster_ls *ls)
+{
+    draw d;
+
+    d.par = par;
+    d.rgb = rgb;
+    d.ls = ls;
+    d.n = 0;
+    switch (p->kind) {
+    case PT_RV_LINE:  line(&d, m, p); break;
+    case PT_RV_POINT: point(&d, m, p); break;
+    }
+    return d.n;
+}
+
+uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
+                        const pt_rv_raster_ls *ls)
+{
+    draw d;
+    int x, y;
+
+    d.par = par;
+    d.rgb = rgb;
+    d.ls = ls;
+    d.n = 0;
+    for (y = 0; y < par->h; y++)                    /* Viewport.clearVP() */
+        for (x = 0; x < par->w; x++)
+            put_bytes(&d, x, y, par->bg);
+    return d.n;
+}

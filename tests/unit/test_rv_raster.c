@@ -1,0 +1,297 @@
+/*
+** tests/unit/test_rv_raster.c -- renderers 7 and 9's rasterizer against the course's Java
+** See LICENSE for copyright and license.
+**
+** Each case of tests/data/course-raster/cases (made by extract.py there from
+** the course's harness: its clipped models, its image, its log) is drawn
+** primitive by primitive into a framebuffer cleared as the harness clears
+** it; the image must equal the course's byte for byte and the lines
+** rv_log_raster writes must equal the log's rasterizer lines.  Usage:
+** test_rv_raster [DIR] (default tests/data/course-raster).
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "testhelp.h"
+#include "stages/rv_raster.h"
+#include "io/rv_log_raster.h"
+
+#define MAXN 4096                /* vertices, colours, primitives a position */
+
+typedef struct tcase {
+    pt_rv_raster_par par;
+    unsigned char fbg[3];        /* the framebuffer's background */
+    int debug;                   /* the log has Rasterize.debug's lines */
+} tcase;
+
+/* All of f from where it stands, NUL-terminated (NULL on error). */
+static char *slurp_stream(FILE *f, size_t *len)
+{
+    size_t n = 0, cap = 4096, r;
+    char *buf = malloc(cap), *nb;
+
+    while (buf && (r = fread(buf + n, 1, cap - n - 1, f)) > 0) {
+        n += r;
+        if (cap - n - 1 == 0) {
+            nb = realloc(buf, cap *= 2);
+            if (!nb) { free(buf); return NULL; }
+            buf = nb;
+        }
+    }
+    if (buf) { buf[n] = '\0'; *len = n; }
+    return buf;
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+
+    if (!f) return NULL;
+    buf = slurp_stream(f, len);
+    fclose(f);
+    return buf;
+}
+
+/* The first line where a and b differ, printed; 1 when they are equal. */
+static int same_text(const char *name, const char *a, size_t na, const char *b, size_t nb)
+{
+    size_t i = 0, line = 1, start = 0;
+
+    while (i < na && i < nb && a[i] == b[i]) {
+        if (a[i] == '\n') { line++; start = i + 1; }
+        i++;
+    }
+    if (i == na && i == nb) return 1;
+    printf("%s: log line %zu differs\n  got : %.200s\n  want: %.200s\n", name, line,
+           a + start, b + start);
+    return 0;
+}
+
+/* A listener that counts: the writes its pixel lines announce, the bad ones. */
+typedef struct tally {
+    uint64_t said, bad, ret;     /* ret: what pt_rv_raster_prim() returned, summed */
+} tally;
+
+static void count_pixel(void *ud, const pt_rv_pixel *px)
+{
+    tally *t = ud;
+    switch (px->kind) {
+    case PT_RV_PX_STEP:
+    case PT_RV_PX_END:   t->said += 1; break;
+    case PT_RV_PX_AA:    t->said += 2; break;
+    case PT_RV_PX_POINT: t->said += !px->clipped; break;
+    }
+}
+
+static void count_bad(void *ud, int x, int y, int W, int H)
+{
+    (void)x; (void)y; (void)W; (void)H;
+    ((tally *)ud)->bad++;
+}
+
+static void set_ls(pt_rv_raster_ls *ls, FILE *lg, tally *t, int debug)
+{
+    memset(ls, 0, sizeof *ls);
+    if (lg) { pt_rv_log_raster_ls(ls, lg, debug); return; }
+    ls->pixel = count_pixel;
+    ls->bad = count_bad;
+    ls->ud = t;
+}
+
+/* Draw the positions of the .raster file f into rgb, logging to lg, or
+** counting in *t when lg is NULL. */
+static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, tally *t, int *nbad)
+{
+    static pt_vec4 v[MAXN];
+    static pt_rgb c[MAXN];
+    static pt_rv_prim p[MAXN];
+    pt_rv_model m;
+    pt_rv_raster_ls ls;
+    char line[512], word[32];
+    size_t k;
+    int pending = 0;
+
+    set_ls(&ls, lg, t, tc->debug);
+    memset(&m, 0, sizeof m);
+    m.v = v; m.c = c; m.p = p;
+    for (;;) {
+        int eof = !fgets(line, sizeof line, f);
+        if (eof || strncmp(line, "position", 8) == 0) {
+            if (pending)
+                for (k = 0; k < m.np; k++)
+                    t->ret += pt_rv_raster_prim(&m, &p[k], &tc->par, rgb, &ls);
+            if (eof) return 0;
+            m.nv = m.nc = m.np = 0;
+            pending = 1;
+            continue;
+        }
+        if (sscanf(line, "%31s", word) != 1 || word[0] == '#') continue;
+        if (strcmp(word, "v") == 0 && m.nv < MAXN) {
+            pt_vec4 *q = &v[m.nv++];
+            if (sscanf(line, "v %lf %lf %lf", &q->x, &q->y, &q->z) != 3) return -1;
+            q->w = 1.0;
+        } else if (strcmp(word, "c") == 0 && m.nc < MAXN) {
+            unsigned hex;
+            pt_rgb *q = &c[m.nc++];
+            if (sscanf(line, "c %f %f %f %x", &q->r, &q->g, &q->b, &hex) != 4) return -1;
+            if ((unsigned)(pt_rv_color_byte(q->r) << 16 | pt_rv_color_byte(q->g) << 8 |
+                           pt_rv_color_byte(q->b)) != hex) (*nbad)++;
+        } else if (strcmp(word, "l") == 0 && m.np < MAXN) {
+            pt_rv_prim *q = &p[m.np++];
+            memset(q, 0, sizeof *q);
+            q->kind = PT_RV_LINE;
+            if (sscanf(line, "l %u %u %u %u", &q->v[0], &q->v[1], &q->c[0], &q->c[1]) != 4)
+                return -1;
+        } else if (strcmp(word, "p") == 0 && m.np < MAXN) {
+            pt_rv_prim *q = &p[m.np++];
+            memset(q, 0, sizeof *q);
+            q->kind = PT_RV_POINT;
+            if (sscanf(line, "p %u %u %d", &q->v[0], &q->c[0], &q->radius) != 3) return -1;
+        } else if (strcmp(word, "fb") == 0) {
+            pt_rv_raster_par *r = &tc->par;
+            if (sscanf(line, "fb %d %d %hhu %hhu %hhu", &r->W, &r->H, &tc->fbg[0], &tc->fbg[1],
+                       &tc->fbg[2]) != 5) return -1;
+        } else if (strcmp(word, "vp") == 0) {
+            pt_rv_raster_par *r = &tc->par;
+            size_t i, n = (size_t)r->W * (size_t)r->H;
+            if (sscanf(line, "vp %d %d %d %d %hhu %hhu %hhu", &r->x_ul, &r->y_ul, &r->w, &r->h,
+                       &r->bg[0], &r->bg[1], &r->bg[2]) != 7) return -1;
+            for (i = 0; i < n; i++) memcpy(rgb + 3 * i, tc->fbg, 3);   /* new FrameBuffer */
+            pt_rv_clear_vp(r, rgb, lg ? &ls : NULL);                    /* fb.vp.clearVP() */
+        } else if (strcmp(word, "aa") == 0) {
+            if (sscanf(line, "aa %d", &tc->par.antialias) != 1) return -1;
+        } else if (strcmp(word, "gamma") == 0) {
+            if (sscanf(line, "gamma %d", &tc->par.gamma) != 1) return -1;
+        } else if (strcmp(word, "debug") == 0) {
+            if (sscanf(line, "debug %d", &tc->debug) != 1) return -1;
+            set_ls(&ls, lg, t, tc->debug);
+        } else {
+            return -1;
+        }
+    }
+}
+
+/* One case: its image and its log. */
+static void run_case(const char *dir, const char *name)
+{
+    char path[1024], head[320];
+    size_t nppm = 0, nlog = 0, ngot = 0;
+    char *ppm, *want, *got;
+    unsigned char *rgb = NULL, *again = NULL;
+    tally t1, t2;
+    tcase tc;
+    FILE *f, *lg;
+    int W = 0, H = 0, hl = 0, nbad = 0, ok;
+
+    memset(&tc, 0, sizeof tc);
+    snprintf(path, sizeof path, "%s/%s.ppm", dir, name);
+    ppm = slurp(path, &nppm);
+    snprintf(path, sizeof path, "%s/%s.rlog", dir, name);
+    want = slurp(path, &nlog);
+    snprintf(path, sizeof path, "%s/%s.raster", dir, name);
+    f = fopen(path, "r");
+    lg = tmpfile();
+    PT_CHECK(name, ppm && want && f && lg);
+    if (!ppm || !want || !f || !lg) goto done;
+    PT_CHECK("ppm header", sscanf(ppm, "P6 %d %d 255%n", &W, &H, &hl) == 2 && hl > 0);
+    if (W <= 0 || H <= 0 || (size_t)hl + 1 + (size_t)W * H * 3 != nppm) {
+        PT_CHECK("ppm size", 0);
+        goto done;
+    }
+    memset(&t1, 0, sizeof t1);
+    memset(&t2, 0, sizeof t2);
+    rgb = calloc((size_t)W * H, 3);
+    again = calloc((size_t)W * H, 3);
+    ok = rgb && again && draw_case(f, &tc, rgb, lg, &t1, &nbad) == 0;
+    rewind(f);
+    ok = ok && draw_case(f, &tc, again, NULL, &t2, &nbad) == 0;
+    snprintf(head, sizeof head, "%s: parsed", name);
+    PT_CHECK(head, ok && tc.par.W == W && tc.par.H == H);
+    if (!ok) goto done;
+    snprintf(head, sizeof head, "%s: colour bytes", name);
+    PT_CHECK(head, nbad == 0);
+    snprintf(head, sizeof head, "%s: image", name);
+    PT_CHECK(head, memcmp(rgb, ppm + hl + 1, (size_t)W * H * 3) == 0);
+    snprintf(head, sizeof head, "%s: the same image, listened to or not", name);
+    PT_CHECK(head, memcmp(rgb, again, (size_t)W * H * 3) == 0 && t1.ret == t2.ret);
+    snprintf(head, sizeof head, "%s: pixels written = pixels logged - bad ones", name);
+    PT_CHECK(head, t2.ret == t2.said - t2.bad && t2.said > 0);
+    rewind(lg);
+    got = slurp_stream(lg, &ngot);
+    snprintf(head, sizeof head, "%s: log", name);
+    PT_CHECK(head, got && same_text(name, got, ngot, want, nlog));
+    free(got);
+done:
+    if (f) fclose(f);
+    if (lg) fclose(lg);
+    free(rgb);
+    free(again);
+    free(ppm);
+    free(want);
+}
+
+/* Primitives no course case has: coordinates far outside the view, NaN. */
+static void extremes(void)
+{
+    pt_vec4 v[3] = {{1e12, 1e12, 0.0, 1.0}, {(double)NAN, (double)NAN, 0.0, 1.0}, {-1.0, -1.0, 0.0, 1.0}};
+    pt_rgb c[1] = {{1.0f, 0.5f, 0.25f}};
+    pt_rv_prim pt = {PT_RV_POINT, {0, 0}, {0, 0}, 0};
+    pt_rv_prim nan_seg = {PT_RV_LINE, {1, 1}, {0, 0}, 0};
+    pt_rv_prim corner = {PT_RV_POINT, {2, 0}, {0, 0}, 1};
+    pt_rv_model m;
+    pt_rv_raster_par par;
+    pt_rv_raster_ls ls;
+    unsigned char rgb[4 * 3 * 3];
+    tally t;
+
+    memset(&m, 0, sizeof m);
+    m.v = v; m.nv = 3; m.c = c; m.nc = 1;
+    memset(&par, 0, sizeof par);
+    par.w = par.W = 4;
+    par.h = par.H = 3;
+    par.gamma = 0;
+    memset(rgb, 0, sizeof rgb);
+    memset(&t, 0, sizeof t);
+    set_ls(&ls, NULL, &t, 0);
+    /* Java's loop of a radius-0 point at (int) 2^31 - 1 never ends (++ wraps) */
+    PT_CHECK("rv-2.1 a point at 1e12 (Java: an endless loop): clipped, nothing written",
+             pt_rv_raster_prim(&m, &pt, &par, rgb, &ls) == 0 && t.said == 0 && t.bad == 0);
+    /* NaN rounds to 0: pixel (-1, h), index h*W - 1, the row above's last pixel */
+    PT_CHECK("rv-2.2 a NaN segment is one pixel at (-1, h): the framebuffer's last byte",
+             pt_rv_raster_prim(&m, &nan_seg, &par, rgb, &ls) == 1 &&
+             rgb[sizeof rgb - 3] == 255 && rgb[sizeof rgb - 2] == 128 && rgb[sizeof rgb - 1] == 64);
+    memset(rgb, 0, sizeof rgb);
+    /* (-1, -1) maps to pixel-plane (0.5, 0.5), rounded (1, 1): viewport (0, h-1) */
+    PT_CHECK("rv-2.3 a radius-1 point at the lower-left corner: 4 of its 9 pixels",
+             pt_rv_raster_prim(&m, &corner, &par, rgb, &ls) == 4 &&
+             rgb[(2 * 4 + 0) * 3] == 255 && rgb[(1 * 4 + 1) * 3] == 255 && rgb[(2 * 4 + 2) * 3] == 0);
+}
+
+int main(int argc, char **argv)
+{
+    const char *dir = argc > 1 ? argv[1] : "tests/data/course-raster";
+    char path[1024], name[256];
+    FILE *list;
+    int n = 0;
+
+    snprintf(path, sizeof path, "%s/cases", dir);
+    list = fopen(path, "r");
+    PT_CHECK("the list of cases", list != NULL);
+    while (list && fscanf(list, "%255s", name) == 1) {
+        run_case(dir, name);
+        n++;
+    }
+    if (list) fclose(list);
+    extremes();
+    /* java.awt.Color(float): the float product, then + 0.5 in double (NOTES 9.4) */
+    PT_CHECK("rv-1.1 Color byte of 0.50392157f is 129 (widened first: 128)",
+             pt_rv_color_byte(0.50392157f) == 129 &&
+             (int)((double)0.50392157f * 255.0 + 0.5) == 128);
+    PT_CHECK("rv-1.2 Color byte of NaN is 0, of 1 is 255, of 0 is 0",
+             pt_rv_color_byte(nanf("")) == 0 && pt_rv_color_byte(1.0f) == 255 &&
+             pt_rv_color_byte(0.0f) == 0);
+    PT_CHECK("at least 16 cases", n >= 16);
+    return pt_test_report();
+}
