@@ -102,12 +102,11 @@ STAGES_O = $B/pt_stage.o $B/pt_round.o $B/pt_color.o $B/s1_model2camera.o $B/s2_
            $B/s3_image2pixel.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
-           $B/m7_screen2viewport.o $B/ms_clip_segment.o $B/pt_matrix.o $(RV_O) $(REF_O) \
-           $B/rv_raster.o
-# The course's renderers 7 and 9 (stages/rv_model.h): their geometric stages.
+           $B/m7_screen2viewport.o $B/ms_clip_segment.o $B/pt_matrix.o $(RV_O) $(REF_O)
+# The course's renderers 7 and 9 (stages/rv_model.h): their stages.
 RV_O     = $B/rv_model.o $B/r7_model2view.o $B/r7_view2camera.o $B/r9_matrix.o \
            $B/r9_model2world.o $B/r9_world2view.o $B/r9_view2camera.o $B/rv_nearclip.o \
-           $B/rv_project.o $B/rv_clip.o
+           $B/rv_project.o $B/rv_clip.o $B/rv_raster.o
 # The reference copy of s1..s6, in every build (stages/pt_ref.h): each file
 # compiled again with stages/pt_ref_names.h in front, which renames its
 # function pt_x to ptref_x; in build-student/ these stay the reference while
@@ -139,8 +138,7 @@ TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
            $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm \
            $B/test_numfmt_portable $B/test_trace $B/test_lanes $B/test_pipelines \
-           $B/test_journey $B/test_rv_stages \
-           $B/test_rv_raster
+           $B/test_journey $B/test_rv_stages $B/test_rv_raster
 
 all: $B/pipetrace
 
