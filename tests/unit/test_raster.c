@@ -452,8 +452,10 @@ static int walk_into(stepped *t, int w, int h, double x0, double y0, double x1, 
     ls.setup = s_setup;
     ls.step = s_step;
     ls.ud = t;
-    for (i = 0; i < 3; i++) { ls.c0[i] = c0[i]; ls.c1[i] = c1[i]; ls.paint.rgb[i] = 7; }
-    ls.paint.coverage = 1.0f;
+    memset(&ls.col, 0, sizeof ls.col);
+    ls.paint = NULL;
+    ls.col.gamma = 1;
+    for (i = 0; i < 3; i++) { ls.col.c0[i] = c0[i]; ls.col.c1[i] = c1[i]; }
     return pt_raster_walk((pt_vec2){x0, y0}, (pt_vec2){x1, y1}, w, h, pt_pixel2viewport,
                           &out, &ls);
 }
