@@ -716,9 +716,7 @@ static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *
     sum->rasterized = 1;
 }
 
-/* Component i of colour ci of model m as the course's float (0..1): its
-** colour list, or its one `color` for every vertex when the list is empty. */
-static float model_color(const pt_model *m, uint32_t ci, int i)
+float pt_model_color(const pt_model *m, uint32_t ci, int i)
 {
     if (m->ncolors) {
         const pt_rgb *c = &m->colors[ci < m->ncolors ? ci : m->ncolors - 1];
@@ -753,16 +751,17 @@ static void draw_points(drawing *d, const pt_scene *s, const pt_model *m,
 {
     for (; *next < m->npts && m->pts[*next].after <= upto; (*next)++) {
         const pt_point *pt = &m->pts[*next];
+        pt_raster_dot dt;
         dot_ctx dc;
         int i;
 
         if (!d->rc.fb) continue;
         dc.rc = &d->rc;
         for (i = 0; i < 3; i++) {               /* gamma first (NOTES.md 11.3) */
-            float c = model_color(m, pt->c, i);
+            float c = pt_model_color(m, pt->c, i);
             dc.rgb[i] = pt_color_byte(s->gamma ? pt_gamma(c) : c);
         }
-        pt_raster_point(pp[pt->v], pt->radius, s->vp_w, s->vp_h, 0, 0, on_dot, &dc);
+        pt_raster_point(pp[pt->v], pt->radius, s->vp_w, s->vp_h, 0, 0, &dt, on_dot, &dc);
     }
 }
 
@@ -777,8 +776,8 @@ static void segment_colors(pt_raster_colors *col, const pt_scene *s, const pt_mo
     col->gamma = course && s->gamma;
     col->aa = course && s->antialias;
     for (i = 0; i < 3; i++) {
-        col->c0[i] = course ? model_color(m, sg->ca, i) : pt_color_float(m->color[i]);
-        col->c1[i] = course ? model_color(m, sg->cb, i) : pt_color_float(m->color[i]);
+        col->c0[i] = course ? pt_model_color(m, sg->ca, i) : pt_color_float(m->color[i]);
+        col->c1[i] = course ? pt_model_color(m, sg->cb, i) : pt_color_float(m->color[i]);
         col->bg[i] = pt_color_float(s->vp_background[i]);
     }
 }

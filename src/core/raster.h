@@ -24,6 +24,7 @@
 
 #include <stdint.h>
 #include "stages/pt_stage.h"
+#include "stages/pt_color.h"
 #include "core/fb.h"
 
 #define PT_RASTER_DRAWN       0    /* stepped from end to end */
@@ -179,13 +180,14 @@ typedef struct pt_raster_dot {
 typedef void pt_raster_dot_fn(void *ud, const pt_raster_dot *dt);
 
 /* Visit the pixels of the point at pp of radius r in a w x h viewport, in
-** the course's order: all (2r + 1)^2 of them when every (its log; at most
-** `most` visited, the count returned either way), else only those inside
-** (the image).  Returns the number of pixels the course's loop visits (0 for
-** r < 0), or -1 when the centre is not finite (the course's loop would
-** not end).  This function can't fail otherwise. */
+** the course's order, each told to fn in *dt: all (2r + 1)^2 of them when
+** every (its log; at most `most` visited, the count returned either way),
+** else only those inside (the image).  dt's centre is set in any case.
+** Returns the number of pixels the course's loop visits (0 for r < 0), or -1
+** when the centre is not finite or its loop would leave the int range (the
+** course's would not end or wrap).  This function can't fail otherwise. */
 int64_t pt_raster_point(pt_vec2 pp, int r, int w, int h, int every, int64_t most,
-                        pt_raster_dot_fn *fn, void *ud);
+                        pt_raster_dot *dt, pt_raster_dot_fn *fn, void *ud);
 
 /* y after k steps of y += m, exactly as k additions in double would leave it.
 ** Costs O(number of binades crossed), not O(k).  This function can't fail. */

@@ -25,41 +25,40 @@ static int64_t java_int_round(double x)
 }
 
 int64_t pt_raster_point(pt_vec2 pp, int r, int w, int h, int every, int64_t most,
-                        pt_raster_dot_fn *fn, void *ud)
+                        pt_raster_dot *d, pt_raster_dot_fn *fn, void *ud)
 {
     pt_vec3 ip;
     pt_vec2 q;
-    pt_raster_dot dt;
     int64_t ylo, yhi, xlo, xhi, n;
 
     ip.x = pp.x; ip.y = pp.y; ip.z = 0.0;
     q = pt_image2pixel(ip, w, h, NULL);             /* x = 0.5 + w/2.001 * (x_pp + 1) */
+    d->x_pp = q.x;
+    d->y_pp = q.y;
     if (!isfinite(q.x) || !isfinite(q.y)) return -1;
-    dt.x_pp = q.x;
-    dt.y_pp = q.y;
-    dt.cx = java_int_round(q.x);
-    dt.cy = java_int_round(q.y);
+    d->cx = java_int_round(q.x);
+    d->cy = java_int_round(q.y);
     if (r < 0) return 0;
-    if (dt.cx + r > INT_MAX - 1 || dt.cy + r > INT_MAX - 1 ||
-        dt.cx - r < INT_MIN || dt.cy - r < INT_MIN)
+    if (d->cx + r > INT_MAX - 1 || d->cy + r > INT_MAX - 1 ||
+        d->cx - r < INT_MIN || d->cy - r < INT_MIN)
         return -1;                                  /* the int loop would wrap */
     n = (2 * (int64_t)r + 1) * (2 * (int64_t)r + 1);
-    ylo = dt.cy - r; yhi = dt.cy + r;
-    xlo = dt.cx - r; xhi = dt.cx + r;
+    ylo = d->cy - r; yhi = d->cy + r;
+    xlo = d->cx - r; xhi = d->cx + r;
     if (!every) {                                   /* the pixels inside only */
         if (ylo < 1) ylo = 1;
         if (yhi > h) yhi = h;
         if (xlo < 1) xlo = 1;
         if (xhi > w) xhi = w;
     }
-    for (dt.y_ = ylo; dt.y_ <= yhi; dt.y_++)
-        for (dt.x_ = xlo; dt.x_ <= xhi; dt.x_++) {
+    for (d->y_ = ylo; d->y_ <= yhi; d->y_++)
+        for (d->x_ = xlo; d->x_ <= xhi; d->x_++) {
             if (every && most-- <= 0) return n;
-            dt.vp.x = dt.x_ - 1;                    /* (x_ - 1, h - y_) */
-            dt.vp.y = h - dt.y_;
-            dt.vp.ok = 1;
-            dt.inside = dt.x_ > 0 && dt.x_ <= w && dt.y_ > 0 && dt.y_ <= h;
-            fn(ud, &dt);
+            d->vp.x = d->x_ - 1;                    /* (x_ - 1, h - y_) */
+            d->vp.y = h - d->y_;
+            d->vp.ok = 1;
+            d->inside = d->x_ > 0 && d->x_ <= w && d->y_ > 0 && d->y_ <= h;
+            fn(ud, d);
         }
     return n;
 }

@@ -48,6 +48,8 @@ typedef struct kstate {
     int fb_w, fb_h, vp_x, vp_y, vp_w, vp_h;  /*   these */
     int ended;                   /* 1: "== End Rendering of Scene ==" was read */
     size_t vx0;                  /* index in vx of the model's first record */
+    int in_point;                /* 1: after "4. Rasterize: Point:", whose pixel
+                                 ** lines are not a segment's (not kept) */
     uint64_t *used;              /* vIndex + 1 of each segment end of the model */
     size_t nused, cap_used;      /*   (owned), how many, room */
 } kstate;
@@ -276,12 +278,16 @@ static int skipped_line(cur *c)
         "== Begin Rendering of Scene:", "-- Current Camera:", "Camera:",
         "(x0_pp, y0_pp) = (", "(x1_pp, y1_pp) = (", "(x0_vp, y0_vp) = (",
         "(x1_vp, y1_vp) = (", "Slope m", "   vIndex = ", "   cIndex = ",
-        "***WARNING: Added default color to model:"};
+        "***WARNING: Added default color to model:", "***WARNING: This model does not",
+        "Model: ", "This Model's visibility is: ", "Model has ", "(x_pp, y_pp) = (",
+        "==== Hidden position: ", "====== Hidden model: "};
+    const char *p = c->p;
     size_t i;
 
     for (i = 0; i < sizeof lines / sizeof lines[0]; i++)
         if (lit(c, lines[i])) return 1;
-    return 0;
+    while (p < c->e && *p >= '0' && *p <= '9') p++;  /* "N: ..." of Model.toString */
+    return p > c->p && c->e - p >= 2 && p[0] == ':' && p[1] == ' ';
 }
 
 static int kraft_line(pt_treader *r, kstate *k)
@@ -347,7 +353,25 @@ static int kraft_line(pt_treader *r, kstate *k)
         if (!k->have_model) return pt_tr_fail(r, r->line, "a segment outside a model");
         if (flush_run(r, k)) return -1;
         k->seg++;
+        k->in_point = 0;
         return 0;
+    }
+    if (lit(&c, "4. Rasterize: Point:")) {
+        if (!k->have_model) return pt_tr_fail(r, r->line, "a point outside a model");
+        if (flush_run(r, k)) return -1;
+        k->in_point = 1;
+        return 0;
+    }
+    {   /* a point's pixels and anti-aliased pairs are not kept (docs/renderer4.md) */
+        cur d = c;
+        const char *q;
+        for (q = d.p; q + 7 <= d.e; q++)
+            if (!memcmp(q, "{y_low=", 7) || !memcmp(q, "{x_low=", 7)) break;
+        if ((lit(&d, "Clip: ") || lit(&d, "      fb_[")) && (k->in_point || q + 7 <= d.e)) {
+            if (!k->have_model || (k->seg == 0 && !k->in_point))
+                return pt_tr_fail(r, r->line, "a pixel outside a segment");
+            return 0;
+        }
     }
     if (lit(&c, "Clip: ")) return pixel_line(r, k, &c, 1);
     if (lit(&c, "      fb_[")) { c.p -= 4; return pixel_line(r, k, &c, 0); }
@@ -356,6 +380,7 @@ static int kraft_line(pt_treader *r, kstate *k)
         if (flush_run(r, k)) return -1;
         drop_unused(r, k);
         k->have_model = 0;
+        k->in_point = 0;
         return 0;
     }
     if (lit(&c, "==== End position: ")) return 0;

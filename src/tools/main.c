@@ -59,6 +59,9 @@ static const char usage[] =
 "  --trace FILE      write the trace to FILE ('-': standard output)\n"
 "  --format F        trace format: text (default), jsonl, csv; kraft: the\n"
 "                    course renderer's debug log, kraft-pixels: with its pixels\n"
+"  --kraft-debug L   the course's debug switches for its log, comma-separated:\n"
+"                    scene, position, rasterize, clip, nearclip, all, none\n"
+"                    (kraft: scene; kraft-pixels: scene,rasterize)\n"
 "  --vertex N        trace only vertex N (1-based) of each model\n"
 "  --model NAME      trace only the model NAME\n"
 "  --stage NAME      trace only this stage (repeatable): model, camera, image,\n"
@@ -100,6 +103,9 @@ typedef struct cli {
     int precision;
     int raster_chosen;           /* --stage raster given */
     int explain;                 /* --explain */
+    int fmt_given;               /* 1: --format given */
+    int kdbg_given;              /* 1: --kraft-debug given */
+    unsigned kdbg;               /* the course's debug switches (PT_KDBG_*) */
     int threads;                 /* --threads, or 0: threads_wanted() decides */
     pt_options opt;
 } cli;
@@ -138,7 +144,8 @@ static int parse_args(cli *c, int argc, char **argv)
         int takes = !strcmp(a, "--image") || !strcmp(a, "--trace") ||
                     !strcmp(a, "--format") || !strcmp(a, "--vertex") ||
                     !strcmp(a, "--model") || !strcmp(a, "--stage") ||
-                    !strcmp(a, "--precision") || !strcmp(a, "--threads");
+                    !strcmp(a, "--precision") || !strcmp(a, "--threads") ||
+                    !strcmp(a, "--kraft-debug");
 
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); return 0; }
         if (!strcmp(a, "--version")) {
@@ -152,7 +159,14 @@ static int parse_args(cli *c, int argc, char **argv)
         if (!strcmp(a, "--image")) c->image = val;
         else if (!strcmp(a, "--trace")) c->trace = val;
         else if (!strcmp(a, "--model")) c->opt.model = val;
-        else if (!strcmp(a, "--format")) {
+        else if (!strcmp(a, "--kraft-debug")) {
+            if (pt_kraft_debug_parse(val, &c->kdbg) != 0)
+                return usage_error("--kraft-debug takes a comma-separated list of scene, "
+                                   "position, rasterize, clip, nearclip, all, none, not '%s'",
+                                   val);
+            c->kdbg_given = 1;
+        } else if (!strcmp(a, "--format")) {
+            c->fmt_given = 1;
             if (!strcmp(val, "text")) c->fmt = PT_FORMAT_TEXT;
             else if (!strcmp(val, "jsonl")) c->fmt = PT_FORMAT_JSONL;
             else if (!strcmp(val, "csv")) c->fmt = PT_FORMAT_CSV;
@@ -194,6 +208,15 @@ static int parse_args(cli *c, int argc, char **argv)
         else c->scene = a;
     }
     if (staged && !c->raster_chosen) c->opt.trace_raster = 0;
+    if (c->kdbg_given && !c->fmt_given) c->fmt = PT_FORMAT_KRAFT;
+    if (c->kdbg_given && c->fmt != PT_FORMAT_KRAFT && c->fmt != PT_FORMAT_KRAFT_PIXELS)
+        return usage_error("--kraft-debug sets the switches of the course's log: "
+                           "--format kraft or kraft-pixels, not %s",
+                           c->fmt == PT_FORMAT_CSV ? "csv" :
+                           c->fmt == PT_FORMAT_JSONL ? "jsonl" : "text");
+    if (!c->kdbg_given)                     /* kraft: scene; kraft-pixels: + rasterize */
+        c->kdbg = c->fmt == PT_FORMAT_KRAFT_PIXELS ? PT_KDBG_SCENE | PT_KDBG_RASTERIZE
+                                                   : PT_KDBG_SCENE;
     if (c->explain && c->fmt == PT_FORMAT_CSV)
         return usage_error("--explain needs --format text or jsonl%s", "");
     if ((c->fmt == PT_FORMAT_KRAFT || c->fmt == PT_FORMAT_KRAFT_PIXELS) &&
@@ -338,7 +361,7 @@ static int run(int argc, char **argv)
         rc = 1;
     }
     if (!rc && c.trace && kraft &&
-        pt_kraft_write(tout.f, &s, c.fmt == PT_FORMAT_KRAFT_PIXELS, err, sizeof err) != 0)
+        pt_kraft_write(tout.f, &s, c.kdbg, err, sizeof err) != 0)
         rc = 1;
     else if (!rc && c.trace && kraft) {
         errno = 0;                          /* what the last write said, if one failed */
