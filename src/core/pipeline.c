@@ -250,6 +250,7 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
             mp->used[m->seg[j].a] = 1;
             mp->used[m->seg[j].b] = 1;
         }
+        for (j = 0; j < m->npts; j++) mp->used[m->pts[j].v] = 1;   /* the course's points */
         for (j = 0; j < m->nv; j++) mp->nused += mp->used[j];
         for (st = 0; st < PT_NSTAGES_ALL; st++) mp->why[st] = PT_WHY_OTHER_CAMERA;
         for (i = 0; i < p->norder; i++) {
@@ -710,6 +711,8 @@ static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *
     d->ls.step = on_step;
     d->ls.ud = &d->rc;
     d->ls.paint = pt_scene_pipeline(s) == &pt_pipe_classic ? on_paint : NULL;
+    if (fb && d->ls.paint && memcmp(s->vp_background, s->background, 3) != 0)
+        pt_fb_fill(fb, s->vp_x, s->vp_y, s->vp_w, s->vp_h, s->vp_background);   /* clearVP */
     memset(&d->quiet, 0, sizeof d->quiet);
     d->quiet.paint = d->ls.paint;
     d->quiet.ud = &d->rc;
