@@ -535,6 +535,95 @@ static void test_steps(void)
     free(u);
 }
 
+/* ===== the course's colours (renderer 4): bytes, and one image either way ===== */
+
+/* An image the walked DDA paints (pt_raster_walk with a paint callback). */
+typedef struct painted {
+    pt_fb fb;
+    uint64_t n;
+} painted;
+
+static void p_paint(void *ud, int64_t x, int64_t y, const pt_fb_paint *pa)
+{
+    painted *pt = ud;
+    pt_fb_set(&pt->fb, y * pt->fb.w + x, pa->rgb);
+    pt->n++;
+}
+
+static void p_pixel(void *ud, int64_t x, int64_t y)
+{
+    (void)ud; (void)x; (void)y;
+}
+
+static void p_clip(void *ud, uint64_t n, pt_pix first, pt_pix last)
+{
+    (void)ud; (void)n; (void)first; (void)last;
+}
+
+static void test_course_colors(void)
+{
+    static const unsigned char black[3] = {0, 0, 0};
+    int b, ok = 1, k, same = 1, pairs = 1;
+    unsigned seed = 12345;
+
+    for (b = 0; b < 256; b++) ok &= pt_color_byte(pt_color_float((unsigned char)b)) == b;
+    PT_CHECK("course-1.1 an int colour's byte comes back through c / 255f", ok);
+    /* NOTES.md 9.4: the midpoint of 128 and 129 rounds up only in float */
+    PT_CHECK("course-1.2 0.50392157f is 129 (widened first: 128)", pt_color_byte(0.50392157f) == 129);
+    PT_CHECK("course-1.3 NaN is 0, as Java's (int)", pt_color_byte(nanf("")) == 0);
+    PT_CHECK("course-1.4 1.0f is 255", pt_color_byte(1.0f) == 255);
+    {
+        float lo, hi;
+        pt_aa_blend(0.5f, 1.0f, 0.25f, &lo, &hi);
+        PT_CHECK("course-1.5 anti-aliasing shares: low (1-w)c + w bg, hi w c + (1-w) bg",
+                 lo == 0.75f * 0.5f + 0.25f && hi == 0.25f * 0.5f + 0.75f);
+        PT_CHECK("course-1.6 the weight is the fraction, in float",
+                 pt_aa_weight(3.25, 3.0) == 0.25f);
+    }
+    /* The inlined DDA (pt_raster_draw) and the walked one (pt_raster_walk)
+    ** paint the same image, for segments of one colour and of two, with and
+    ** without gamma and anti-aliasing, inside the viewport and across it. */
+    for (k = 0; k < 400; k++) {
+        pt_fb a, bb;
+        pt_raster_image im;
+        pt_raster_steps ls;
+        pt_raster_out out = {p_pixel, p_clip, NULL};
+        painted pt;
+        pt_vec2 p0, p1;
+        int i;
+
+        pt_fb_init(&a, 30, 20, black);
+        pt_fb_init(&bb, 30, 20, black);
+        memset(&im, 0, sizeof im);
+        memset(&ls, 0, sizeof ls);
+        im.fb = &a; im.W = 30; im.H = 20; im.x_ul = 0; im.y_ul = 0;
+        im.col.gamma = k & 1;
+        im.col.aa = (k >> 1) & 1;
+        for (i = 0; i < 3; i++) {
+            seed = seed * 1103515245u + 12345u;
+            im.col.c0[i] = pt_color_float((unsigned char)(seed >> 16));
+            im.col.c1[i] = (k >> 2) & 1 ? im.col.c0[i] : pt_color_float((unsigned char)(seed >> 8));
+            im.col.bg[i] = pt_color_float((unsigned char)(40 * i));
+        }
+        seed = seed * 1103515245u + 12345u;
+        p0.x = (double)(seed >> 16 & 63) - 16.0; p0.y = (double)(seed >> 8 & 31) - 6.0;
+        seed = seed * 1103515245u + 12345u;
+        p1.x = (double)(seed >> 16 & 63) - 16.0 + 0.3; p1.y = (double)(seed >> 8 & 31) - 6.0;
+        pt_raster_draw(p0, p1, 30, 20, &im, &out);
+        ls.col = im.col;
+        ls.paint = p_paint;
+        pt.fb = bb; pt.n = 0;
+        ls.ud = &pt;
+        pt_raster_walk(p0, p1, 30, 20, pt_pixel2viewport, &out, &ls);
+        same &= memcmp(a.rgb, bb.rgb, 3 * 30 * 20) == 0;
+        pairs &= pt.n == im.pixels;
+        pt_fb_free(&a);
+        pt_fb_free(&bb);
+    }
+    PT_CHECK("course-2.1 pt_raster_draw and pt_raster_walk paint the same images", same);
+    PT_CHECK("course-2.2 ... the same number of pixels", pairs);
+}
+
 int main(void)
 {
     test_pictures();
@@ -545,5 +634,6 @@ int main(void)
     test_pixel_colours();
     test_blend();
     test_steps();
+    test_course_colors();
     return pt_test_report();
 }
