@@ -13,7 +13,11 @@
 **      student's stage reaches the image as it reaches the trace), giving
 **      (x - 1, h - round(y)) with the reference formula;
 **   5. write a pixel only when it lies inside the viewport; the others are
-**      clipped and reported as runs of consecutive clipped steps.
+**      clipped and reported as runs of consecutive clipped steps;
+**   6. the classic camera (the course's renderer 4) writes each step in its
+**      own colour (stages/pt_color.h: interpolated, gamma-encoded, a
+**      degenerate segment raw), or with anti-aliasing a pair of pixels
+**      blended with the viewport's background; raster_point.c its points.
 ** Steps far outside the viewport's band are clipped without asking to_vp and
 ** skipped with an exact fast-forward of the accumulated sum (see raster.c):
 ** drawing costs time in proportion to the steps near the viewport, never to
