@@ -729,7 +729,9 @@ float pt_model_color(const pt_model *m, uint32_t ci, int i)
 }
 
 /* A pixel of a point (the course's Rasterize_Clip_Point), inside the
-** viewport: through the framebuffer and index stages into the image. */
+** viewport: through the framebuffer and index stages into the image.  The
+** image alone: a point's pixels are in no trace record nor in the summary's
+** count (the course's log shows them: src/io/trace_kraft.c). */
 typedef struct dot_ctx {
     raster_ctx *rc;
     unsigned char rgb[3];        /* the point's colour, gamma-encoded */
@@ -742,7 +744,6 @@ static void on_dot(void *ud, const pt_raster_dot *dt)
     pt_pix f = pt_viewport2fb(dt->vp, rc->x_ul, rc->y_ul, NULL);
     int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
 
-    rc->sum->pixels++;
     if (idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, dc->rgb);
 }
 

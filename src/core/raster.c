@@ -230,7 +230,9 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping
     int64_t s = s0, band_lo, band_hi, margin, end;
     double acc = acc0;
     clip_run run = {0, {0, 0, 0}, {0, 0, 0}};
-    uint64_t per = d->aa ? 2 : 1;                   /* pixels a step */
+    const int aa = d->aa, shade = d->shade;         /* kept in registers: the image's
+                                                    ** bytes may alias *d */
+    uint64_t per = aa ? 2 : 1;                      /* pixels a step */
     pt_pix p;
     int every;
 
@@ -263,14 +265,14 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping
         int si, si_end = (int)end;
 
         for (si = (int)s; si <= si_end; si++) {
-            if (d->aa) {
+            if (aa) {
                 aa_step(d, transposed, stepping, si, acc, &run);
                 acc += m;
                 continue;
             }
             p = step_pixel(d, transposed, (double)si, acc);
             if (p.ok && pt_inside(p.x, p.y, d->w, d->h)) {
-                if (d->shade || stepping) {
+                if (shade || stepping) {
                     float c[3];
                     unsigned char rgb[3];
                     step_raw(d, (double)si, c);
