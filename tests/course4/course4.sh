@@ -52,4 +52,17 @@ run "$dir/aa-edges.scene" --image "$tmp/a.ppm" --format kraft-pixels --trace "$t
 check "course4-4.1 an image drawn beside the pixel log is the same" cmp -s "$tmp/a.ppm" "$tmp/aa-edges.ppm"
 run "$dir/colors-int.scene" --image "$tmp/c.ppm" --format jsonl --trace "$tmp/c.jsonl"
 check "course4-4.2 ... and beside a trace of every pixel" cmp -s "$tmp/c.ppm" "$tmp/colors-int.ppm"
+
+# ---- course4-5: pipetrace diff reads the course's log: anti-aliased pairs as
+# two pixels each, points' vertices as used, their pixels passed over
+for name in aa-edges points; do
+    run "$dir/$name.scene" --trace "$tmp/$name.txt"
+    gzip -dc "$dir/$name.all.log.gz" > "$tmp/$name.log"
+    run diff "$tmp/$name.txt" "$tmp/$name.log"
+    check "course4-5.1 $name: the trace and the course's log agree" test "$rc" = 0
+    check "course4-5.2 ... on every pixel" grep -q "The traces agree" "$tmp/out"
+done
+sed 's/{y_hi = *-*[0-9]*/{y_hi =  -7/' "$tmp/aa-edges.log" > "$tmp/moved.log"
+run diff "$tmp/aa-edges.txt" "$tmp/moved.log"
+check "course4-5.3 a pair's upper pixel moved: the pixels differ" test "$rc" = 1
 report
