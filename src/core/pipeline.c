@@ -777,6 +777,7 @@ static void segment_colors(pt_raster_colors *col, const pt_scene *s, const pt_mo
 {
     int i;
 
+    memset(col, 0, sizeof *col);
     col->gamma = course && s->gamma;
     col->aa = course && s->antialias;
     for (i = 0; i < 3; i++) {
@@ -784,6 +785,7 @@ static void segment_colors(pt_raster_colors *col, const pt_scene *s, const pt_mo
         col->c1[i] = course ? pt_model_color(m, sg->cb, i) : pt_color_float(m->color[i]);
         col->bg[i] = pt_color_float(s->vp_background[i]);
     }
+    pt_raster_colors_prepare(col);
 }
 
 /* Draw the segments of model k, whose vertices' pixel-plane points are pp[]
@@ -813,8 +815,10 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
         int draw, r;
 
         if (course) draw_points(d, s, m, pp, &next, j);
-        segment_colors(&d->im.col, s, m, &m->seg[j], course);
-        d->ls.col = d->quiet.col = d->im.col;
+        if (j == 0 || m->ncolors) {                 /* no list: one colour, once */
+            segment_colors(&d->im.col, s, m, &m->seg[j], course);
+            d->ls.col = d->quiet.col = d->im.col;
+        }
         if (!taken && !d->im.fb && !l->summary) continue;   /* nothing to do */
         d->rc.seg = j + 1;
         d->rc.l = report ? l : NULL;

@@ -116,6 +116,12 @@ typedef struct dda {
     const pt_raster_out *out;    /* where runs of clipped steps go */
     const pt_raster_steps *ls;   /* the listener of steps, or NULL */
     const pt_raster_setup *su;   /* with one: the segment's setup */
+    const struct tint *t;        /* its colours */
+} dda;
+
+/* The colours of the segment being stepped, apart from the dda: kept small,
+** the dda's function pointers stay known constants to the compiler. */
+typedef struct tint {
     int shade;                   /* 1: each step's colour is its own */
     int gamma, aa;               /* the course's switches (pt_raster_colors) */
     float bg[3];                 /* with aa: the viewport's background */
@@ -124,7 +130,7 @@ typedef struct dda {
     double s0;                   /* the first step's s */
     float c[3];                  /* shade 0: every step's colour, gamma-encoded, */
     unsigned char rgb[3];        /* and its bytes */
-} dda;
+} tint;
 
 /* The viewport pixel of step (s, acc): the point (s, acc), or (acc, s) when
 ** transposed, through the viewport stage.  s is a whole number. */
@@ -139,20 +145,20 @@ static inline ALWAYS_INLINE pt_pix step_pixel(const dda *d, int transposed, doub
 }
 
 /* The colour of step s before gamma (pt_color_at). */
-static void step_raw(const dda *d, double s, float c[3])
+static inline ALWAYS_INLINE void step_raw(const tint *t, double s, float c[3])
 {
     int i;
 
-    for (i = 0; i < 3; i++) c[i] = pt_color_at(d->c0[i], d->dc[i], s, d->s0);
+    for (i = 0; i < 3; i++) c[i] = pt_color_at(t->c0[i], t->dc[i], s, t->s0);
 }
 
 /* c gamma-encoded when the segment's switch says so, and as bytes. */
-static void encode(const dda *d, float c[3], unsigned char rgb[3])
+static inline ALWAYS_INLINE void encode(const tint *t, float c[3], unsigned char rgb[3])
 {
     int i;
 
     for (i = 0; i < 3; i++) {
-        if (d->gamma) c[i] = pt_gamma(c[i]);
+        if (t->gamma) c[i] = pt_gamma(c[i]);
         rgb[i] = pt_color_byte(c[i]);
     }
 }
@@ -183,9 +189,11 @@ static void tell_step(const dda *d, int transposed, int si, double acc, pt_pix p
 
 /* One anti-aliased step (si, acc): the pixels at floor(acc) and floor(acc) + 1
 ** of the other coordinate, the step's colour blended with the background by
-** the weight (stages/pt_color.h), each pixel clip-tested on its own. */
-static void aa_step(const dda *d, int transposed, int stepping, int si, double acc,
-                    clip_run *run)
+** the weight (stages/pt_color.h), each pixel clip-tested on its own.  These
+** helpers are inline: a call that took d's address would keep the compiler
+** from seeing that to_vp and pixel stay the stages it inlines. */
+static inline ALWAYS_INLINE void aa_step(const dda *d, int transposed, int stepping, int si,
+                                          double acc, clip_run *run)
 {
     double lo = floor(acc);                         /* a_low = floor(a) */
     float w = pt_aa_weight(acc, lo), c[3], cl[3];
@@ -198,10 +206,10 @@ static void aa_step(const dda *d, int transposed, int stepping, int si, double a
     hi.weight = w;
     hi.vp_hi = step_pixel(d, transposed, (double)si, lo + 1.0);   /* a_hi = a_low + 1 */
     hi.inside_hi = hi.vp_hi.ok && pt_inside(hi.vp_hi.x, hi.vp_hi.y, d->w, d->h);
-    step_raw(d, (double)si, c);
-    for (i = 0; i < 3; i++) pt_aa_blend(c[i], d->bg[i], w, &cl[i], &hi.color_hi[i]);
-    encode(d, cl, bl);
-    encode(d, hi.color_hi, hi.rgb_hi);
+    step_raw(d->t, (double)si, c);
+    for (i = 0; i < 3; i++) pt_aa_blend(c[i], d->t->bg[i], w, &cl[i], &hi.color_hi[i]);
+    encode(d->t, cl, bl);
+    encode(d->t, hi.color_hi, hi.rgb_hi);
     if (stepping) tell_step(d, transposed, si, acc, p, in, cl, bl, &hi);
     if (in) {
         run_flush(run, d->out);
@@ -223,15 +231,16 @@ static void aa_step(const dda *d, int transposed, int stepping, int si, double a
 ** coordinate it steps; and stepping, 1 for a listener of steps: when it
 ** listens to steps, the band is every step within the range of an int, each
 ** step told.  A segment of one colour without anti-aliasing has that colour
-** at hand (d->rgb); the others compute each step's. */
+** at hand (d->t->rgb); the others compute each step's. */
 static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping,
                                       int64_t s0, int64_t s1, double acc0, double m)
 {
     int64_t s = s0, band_lo, band_hi, margin, end;
     double acc = acc0;
     clip_run run = {0, {0, 0, 0}, {0, 0, 0}};
-    const int aa = d->aa, shade = d->shade;         /* kept in registers: the image's
-                                                    ** bytes may alias *d */
+    const int aa = d->t->aa, shade = d->t->shade;   /* kept in registers: the image's
+                                                    ** bytes may alias *d->t */
+    const unsigned char *rgb1 = d->t->rgb;          /* shade 0: the one colour */
     uint64_t per = aa ? 2 : 1;                      /* pixels a step */
     pt_pix p;
     int every;
@@ -275,21 +284,21 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping
                 if (shade || stepping) {
                     float c[3];
                     unsigned char rgb[3];
-                    step_raw(d, (double)si, c);
-                    encode(d, c, rgb);
+                    step_raw(d->t, (double)si, c);
+                    encode(d->t, c, rgb);
                     if (stepping) tell_step(d, transposed, si, acc, p, 1, c, rgb, NULL);
                     run_flush(&run, d->out);
                     d->pixel(d->pixel_ud, p.x, p.y, rgb, 1.0f);
                 } else {
                     run_flush(&run, d->out);
-                    d->pixel(d->pixel_ud, p.x, p.y, d->rgb, 1.0f);
+                    d->pixel(d->pixel_ud, p.x, p.y, rgb1, 1.0f);
                 }
             } else {
                 if (stepping) {
                     float c[3];
                     unsigned char rgb[3];
-                    step_raw(d, (double)si, c);
-                    encode(d, c, rgb);
+                    step_raw(d->t, (double)si, c);
+                    encode(d->t, c, rgb);
                     tell_step(d, transposed, si, acc, p, 0, c, rgb, NULL);
                 }
                 run_add(&run, 1, p, p);
@@ -309,29 +318,46 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping
 
 /* The segment's colours in stepping order into d (swapped: p1's first), over
 ** the steps s0 .. s1; col NULL: none (black, pt_raster_segment). */
-static void colors_start(dda *d, const pt_raster_colors *col, int swapped, double s0,
-                         double s1)
+static inline ALWAYS_INLINE void colors_start(tint *t, const pt_raster_colors *col,
+                                               int swapped, double s0, double s1)
 {
     int i, same = 1;
 
-    memset(d->bg, 0, sizeof d->bg);
-    d->gamma = d->aa = 0;
-    d->s0 = s0;
+    memset(t->bg, 0, sizeof t->bg);
+    t->gamma = t->aa = 0;
+    t->s0 = s0;
     for (i = 0; i < 3; i++) {
         float a = col ? (swapped ? col->c1[i] : col->c0[i]) : 0.0f;
         float b = col ? (swapped ? col->c0[i] : col->c1[i]) : 0.0f;
-        d->c0[i] = a;
-        d->dc[i] = s1 > s0 ? pt_color_slope(a, b, s1 - s0) : 0.0;
+        t->c0[i] = a;
+        t->dc[i] = s1 > s0 ? pt_color_slope(a, b, s1 - s0) : 0.0;
         same &= a == b;
     }
     if (col) {
-        d->gamma = col->gamma;
-        d->aa = col->aa;
-        memcpy(d->bg, col->bg, sizeof d->bg);
+        t->gamma = col->gamma;
+        t->aa = col->aa;
+        memcpy(t->bg, col->bg, sizeof t->bg);
     }
-    d->shade = !same;                               /* one colour: gamma it once */
-    step_raw(d, s0, d->c);
-    encode(d, d->c, d->rgb);
+    t->shade = !same;                               /* one colour: gamma it once */
+    if (col && col->one) {                          /* done by the caller */
+        memcpy(t->c, col->c, sizeof t->c);
+        memcpy(t->rgb, col->rgb, sizeof t->rgb);
+        return;
+    }
+    step_raw(t, s0, t->c);
+    encode(t, t->c, t->rgb);
+}
+
+void pt_raster_colors_prepare(pt_raster_colors *col)
+{
+    int i;
+
+    col->one = col->c0[0] == col->c1[0] && col->c0[1] == col->c1[1] &&
+               col->c0[2] == col->c1[2];
+    for (i = 0; col->one && i < 3; i++) {
+        col->c[i] = col->gamma ? pt_gamma(col->c0[i]) : col->c0[i];   /* |c0 + 0| = c0 */
+        col->rgb[i] = pt_color_byte(col->c[i]);
+    }
 }
 
 /* The setup record of a drawn segment (stepping): su->x0 .. y1 and kind
@@ -355,7 +381,7 @@ static void tell_setup(const dda *d, pt_raster_setup *su, int transposed, int sw
     for (i = 0; i < 3; i++) {
         su->c0[i] = swapped ? col->c1[i] : col->c0[i];
         su->c1[i] = swapped ? col->c0[i] : col->c1[i];
-        su->dc[i] = d->dc[i];
+        su->dc[i] = d->t->dc[i];
     }
     if (ls->setup) ls->setup(ls->ud, su);
 }
@@ -406,6 +432,7 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
     int transposed, swapped = 0;
     pt_raster_setup su;
     dda d;
+    tint tn;
     pt_pix p;
 
     if (!pt_pix_round(p0.x, &ix0) || !pt_pix_round(p0.y, &iy0) ||
@@ -423,6 +450,7 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
     d.pixel = pixel; d.pixel_ud = pixel_ud; d.out = out;
     d.ls = ls;
     d.su = &su;
+    d.t = &tn;
     if (stepping) {
         memset(&su, 0, sizeof su);
         su.kind = PT_RASTER_DRAWN;
@@ -457,7 +485,7 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
         swapped = 1;
     }
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
-    colors_start(&d, col, swapped, x0, x1);
+    colors_start(&tn, col, swapped, x0, x1);
     if (stepping) tell_setup(&d, &su, transposed, swapped, x0, x1, y0, y1, m);
     if (transposed) walk(&d, 1, stepping, (int64_t)x0, (int64_t)x1, y0, m);
     else            walk(&d, 0, stepping, (int64_t)x0, (int64_t)x1, y0, m);
@@ -571,14 +599,14 @@ static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x
         pt_fb_set(&c->fb, idx, rgb);
 }
 
-static void draw_quiet(void *ud, int64_t x_vp, int64_t y_vp, const unsigned char rgb[3],
-                       float cov)
+static inline ALWAYS_INLINE void draw_quiet(void *ud, int64_t x_vp, int64_t y_vp,
+                                             const unsigned char rgb[3], float cov)
 {
     draw_pixel(ud, 0, x_vp, y_vp, rgb, cov);
 }
 
-static void draw_listened(void *ud, int64_t x_vp, int64_t y_vp, const unsigned char rgb[3],
-                          float cov)
+static inline ALWAYS_INLINE void draw_listened(void *ud, int64_t x_vp, int64_t y_vp,
+                                                const unsigned char rgb[3], float cov)
 {
     draw_pixel(ud, 1, x_vp, y_vp, rgb, cov);
 }

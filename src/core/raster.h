@@ -54,7 +54,17 @@ typedef struct pt_raster_colors {
     int gamma;                   /* 1: gamma-encode (Rasterize.doGamma) */
     int aa;                      /* 1: anti-alias (Rasterize.doAntiAliasing) */
     float bg[3];                 /* with aa: the viewport's background, 0..1 */
+    int one;                     /* 1: c0 == c1, and c, rgb hold that colour
+                                 ** gamma-encoded (pt_raster_colors_prepare) */
+    float c[3];                  /* with one: the colour of every step */
+    unsigned char rgb[3];        /* with one: its bytes */
 } pt_raster_colors;
+
+/* Set col->one, and with it col->c and col->rgb, from c0, c1 and gamma: a
+** caller whose segments share their colours prepares them once, and the
+** rasterizer does not compute them again per segment.  This function can't
+** fail. */
+void pt_raster_colors_prepare(pt_raster_colors *col);
 
 /* A segment as the DDA sets it up.  s is the stepped coordinate (x when
 ** x-major, y when y-major), a the other one. */
