@@ -49,10 +49,15 @@
 ** show in ferror(f). */
 int pt_kraft_write(FILE *f, const pt_scene *s, unsigned dbg, char *err, size_t errlen);
 
+/* The course's renderer can log the pixels of every segment and point of s:
+** ends and centres in its int range, at most PT_KRAFT_MAX_STEPS lines each
+** (trace_kraft_check.c).  Returns 0, or -1 with a message in err. */
+int pt_kraft_check(const pt_scene *s, char *err, size_t errlen);
+
 /* The switches of LIST (--kraft-debug: scene, position, rasterize, clip,
 ** nearclip, all, none, comma-separated) into *dbg.  Returns 0, or -1 when an
 ** item is none of them (then *dbg is unchanged).  This function can't fail
-** otherwise. */
+** otherwise (trace_kraft_check.c). */
 int pt_kraft_debug_parse(const char *list, unsigned *dbg);
 
 #endif
