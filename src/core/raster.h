@@ -198,8 +198,8 @@ typedef void pt_raster_dot_fn(void *ud, const pt_raster_dot *dt);
 ** every (its log; at most `most` visited, the count returned either way),
 ** else only those inside (the image).  dt's centre is set in any case.
 ** Returns the number of pixels the course's loop visits (0 for r < 0), or -1
-** when the centre is not finite or its loop would leave the int range (the
-** course's would not end or wrap).  This function can't fail otherwise. */
+** when the centre is infinite or its loop would leave the int range (the
+** course's would not end or wrap); a NaN centre rounds to 0, as in Java.  This function can't fail otherwise. */
 int64_t pt_raster_point(pt_vec2 pp, int r, int w, int h, int every, int64_t most,
                         pt_raster_dot *dt, pt_raster_dot_fn *fn, void *ud);
 

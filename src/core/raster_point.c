@@ -35,7 +35,7 @@ int64_t pt_raster_point(pt_vec2 pp, int r, int w, int h, int every, int64_t most
     q = pt_image2pixel(ip, w, h, NULL);             /* x = 0.5 + w/2.001 * (x_pp + 1) */
     d->x_pp = q.x;
     d->y_pp = q.y;
-    if (!isfinite(q.x) || !isfinite(q.y)) return -1;
+    if (isinf(q.x) || isinf(q.y)) return -1;        /* NaN rounds to 0, as in Java */
     d->cx = java_int_round(q.x);
     d->cy = java_int_round(q.y);
     if (r < 0) return 0;

@@ -28,7 +28,7 @@ for scene in "$dir"/*.scene; do
         n=$((n + 1))
     done
 done
-check "course4-2.2 16 logs" test "$n" = 16
+check "course4-2.2 17 logs" test "$n" = 17
 
 # ---- course4-3: the switches' spellings
 run "$dir/switches.scene" --kraft-debug scene,bogus
