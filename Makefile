@@ -116,13 +116,14 @@ REF_O    = $B/ref_s1_model2camera.o $B/ref_s2_camera2image.o $B/ref_s3_image2pix
 # src/core/: scene, plan, run (the pipelines), raster, framebuffer (one public header).
 # pixelpath.o is the rasterizer with the stages s4, s5 and s6 (see below).
 CORE_O   = $B/scene.o $B/scene_course.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjourney.o \
-           $B/pipeline.o $B/pixelpath.o $B/fb.o $B/course.o
+           $B/pipeline.o $B/pixelpath.o $B/raster_advance.o $B/raster_point.o $B/fb.o \
+           $B/course.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace_buf.o $B/trace_head.o \
            $B/trace_text.o $B/trace_jsonl.o $B/trace_csv.o $B/trace.o $B/tread.o \
            $B/tread_util.o $B/tread_text.o $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o \
-           $B/png.o $B/outfile.o $B/trace_kraft.o $B/tlanes.o $B/trace_course.o \
-           $B/trace_course_rec.o $B/rv_log_raster.o
+           $B/png.o $B/outfile.o $B/trace_kraft.o $B/trace_kraft_check.o $B/tlanes.o \
+           $B/trace_course.o $B/trace_course_rec.o $B/rv_log_raster.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff
 # and step), the subcommands (diff, accuracy and journey in folders of their
 # own; diff's parts listed with the commands).

@@ -12,8 +12,13 @@
 ** s is the stepped coordinate (x for an x-major segment, y for a y-major
 ** one), s0 .. s1 the segment's after its ends are put in stepping order, c0
 ** and c1 the colours of those ends.  A degenerate segment (one pixel) is
-** written in c0, without gamma.  pipetrace's image keeps the model's colour
-** bytes; the course's log prints these (src/io/trace_kraft.c).
+** written in c0, without gamma.  Anti-aliasing (11.2 step 7) splits a step
+** between the two pixels that bracket a = the other coordinate, blending
+** with the viewport's background bg in float:
+**   a_low    = floor(a),  weight = (float)(a - a_low)
+**   low      = (1 - weight)*c + weight*bg,   hi = weight*c + (1 - weight)*bg
+** then gamma on both.  A component is written as java.awt.Color(float) keeps
+** it: byte = (int)((double)(c * 255f) + 0.5) (NOTES.md 4).
 */
 #ifndef PT_COLOR_H
 #define PT_COLOR_H
@@ -38,5 +43,20 @@ float pt_color_at(float c0, double slope, double s, double s0);
 /* The course's gamma encoding of component c (0..1): (float)pow(c, 1/2.2).
 ** This function can't fail. */
 float pt_gamma(float c);
+
+/* Component c (0..1) as the byte java.awt.Color(float) stores:
+** (int)((double)(c*255f) + 0.5), the product in float; NaN gives 0 (Java's
+** (int)NaN), and beyond 1 gives 255 (Java would refuse it).  This function
+** can't fail. */
+unsigned char pt_color_byte(float c);
+
+/* The anti-aliasing weight of a step whose other coordinate is a, its lower
+** pixel a_low = floor(a): (float)(a - a_low).  This function can't fail. */
+float pt_aa_weight(double a, double a_low);
+
+/* The two shares of component c at weight w with background component bg:
+** *low = (1 - w)*c + w*bg, *hi = w*c + (1 - w)*bg, in float.  This function
+** can't fail. */
+void pt_aa_blend(float c, float bg, float w, float *low, float *hi);
 
 #endif

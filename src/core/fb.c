@@ -66,6 +66,17 @@ void pt_fb_blend(pt_fb *fb, int64_t idx, const unsigned char color[3], float cov
     }
 }
 
+void pt_fb_fill(pt_fb *fb, int x, int y, int w, int h, const unsigned char color[3])
+{
+    int64_t x0 = x < 0 ? 0 : x, y0 = y < 0 ? 0 : y;
+    int64_t x1 = (int64_t)x + w, y1 = (int64_t)y + h, i, j;
+
+    if (x1 > fb->w) x1 = fb->w;
+    if (y1 > fb->h) y1 = fb->h;
+    for (j = y0; j < y1; j++)
+        for (i = x0; i < x1; i++) pt_fb_set(fb, j * fb->w + i, color);
+}
+
 int pt_fb_write_ppm(const pt_fb *fb, FILE *f)
 {
     size_t n = 3 * (size_t)fb->w * (size_t)fb->h;

@@ -54,6 +54,11 @@ static inline void pt_fb_set(pt_fb *fb, int64_t idx, const unsigned char color[3
 ** with the background colour instead, and write).  This function can't fail. */
 void pt_fb_blend(pt_fb *fb, int64_t idx, const unsigned char color[3], float coverage);
 
+/* Fill the w x h rectangle whose upper-left corner is (x, y) with color, the
+** part of it inside fb (the course's Viewport.clearVP).  This function can't
+** fail. */
+void pt_fb_fill(pt_fb *fb, int x, int y, int w, int h, const unsigned char color[3]);
+
 /* Write fb as binary PPM (P6) to the open stream f.  Returns 0 or -1 (errno). */
 int pt_fb_write_ppm(const pt_fb *fb, FILE *f);
 

@@ -250,6 +250,7 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
             mp->used[m->seg[j].a] = 1;
             mp->used[m->seg[j].b] = 1;
         }
+        for (j = 0; j < m->npts; j++) mp->used[m->pts[j].v] = 1;   /* the course's points */
         for (j = 0; j < m->nv; j++) mp->nused += mp->used[j];
         for (st = 0; st < PT_NSTAGES_ALL; st++) mp->why[st] = PT_WHY_OTHER_CAMERA;
         for (i = 0; i < p->norder; i++) {
@@ -534,6 +535,25 @@ static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
     if (rc->fb && idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, rc->m->color);
 }
 
+/* A pixel of the classic camera's segments walked step by step
+** (pt_raster_walk), in the course's colour of its step. */
+static void on_paint(void *ud, int64_t x_vp, int64_t y_vp, const pt_fb_paint *pa)
+{
+    raster_ctx *rc = ud;
+    pt_pix vp = {x_vp, y_vp, 1};
+    pt_pix f = pt_viewport2fb(vp, rc->x_ul, rc->y_ul, NULL);
+    int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
+
+    rc->sum->pixels++;
+    if (rc->l && rc->l->pixels) {
+        pt_fb_pixel px;
+        px.x_fb = f.x; px.y_fb = f.y; px.idx = idx;
+        px.paint = *pa;
+        rc->l->pixels(rc->l->ud, rc->m, rc->seg, &px, 1);
+    }
+    if (rc->fb && idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, pa->rgb);
+}
+
 static void on_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
 {
     raster_ctx *rc = ud;
@@ -649,6 +669,7 @@ typedef struct drawing {
     raster_ctx rc;
     pt_raster_image im;          /* the classic camera's image and pixel listener */
     pt_raster_steps ls;          /* the listener's setup and step, with rc */
+    pt_raster_steps quiet;       /* no setup or step: the colours alone */
 } drawing;
 
 /* The DDA's records, to the listener (pt_raster_walk). */
@@ -689,11 +710,88 @@ static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *
     d->ls.setup = on_setup;
     d->ls.step = on_step;
     d->ls.ud = &d->rc;
+    d->ls.paint = pt_scene_pipeline(s) == &pt_pipe_classic ? on_paint : NULL;
+    if (fb && d->ls.paint && memcmp(s->vp_background, s->background, 3) != 0)
+        pt_fb_fill(fb, s->vp_x, s->vp_y, s->vp_w, s->vp_h, s->vp_background);   /* clearVP */
+    memset(&d->quiet, 0, sizeof d->quiet);
+    d->quiet.paint = d->ls.paint;
+    d->quiet.ud = &d->rc;
     sum->rasterized = 1;
 }
 
+float pt_model_color(const pt_model *m, uint32_t ci, int i)
+{
+    if (m->ncolors) {
+        const pt_rgb *c = &m->colors[ci < m->ncolors ? ci : m->ncolors - 1];
+        return i == 0 ? c->r : i == 1 ? c->g : c->b;
+    }
+    return pt_color_float(m->color[i]);
+}
+
+/* A pixel of a point (the course's Rasterize_Clip_Point), inside the
+** viewport: through the framebuffer and index stages into the image.  The
+** image alone: a point's pixels are in no trace record nor in the summary's
+** count (the course's log shows them: src/io/trace_kraft.c). */
+typedef struct dot_ctx {
+    raster_ctx *rc;
+    unsigned char rgb[3];        /* the point's colour, gamma-encoded */
+} dot_ctx;
+
+static void on_dot(void *ud, const pt_raster_dot *dt)
+{
+    dot_ctx *dc = ud;
+    raster_ctx *rc = dc->rc;
+    pt_pix f = pt_viewport2fb(dt->vp, rc->x_ul, rc->y_ul, NULL);
+    int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
+
+    if (idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, dc->rgb);
+}
+
+/* Draw the points of model m from *next on whose `after` is at most upto
+** (the segments drawn so far), in file order, into the image: the course's
+** renderer 4 (classic camera) only. */
+static void draw_points(drawing *d, const pt_scene *s, const pt_model *m,
+                        const pt_vec2 *pp, size_t *next, size_t upto)
+{
+    for (; *next < m->npts && m->pts[*next].after <= upto; (*next)++) {
+        const pt_point *pt = &m->pts[*next];
+        pt_raster_dot dt;
+        dot_ctx dc;
+        int i;
+
+        if (!d->rc.fb) continue;
+        dc.rc = &d->rc;
+        for (i = 0; i < 3; i++) {               /* gamma first (NOTES.md 11.3) */
+            float c = pt_model_color(m, pt->c, i);
+            dc.rgb[i] = pt_color_byte(s->gamma ? pt_gamma(c) : c);
+        }
+        pt_raster_point(pp[pt->v], pt->radius, s->vp_w, s->vp_h, 0, 0, &dt, on_dot, &dc);
+    }
+}
+
+/* The colours of segment sg of model m into col: the course's (renderer 4:
+** its colour list, gamma, anti-aliasing) for the classic camera, the model's
+** one colour as it is for the others. */
+static void segment_colors(pt_raster_colors *col, const pt_scene *s, const pt_model *m,
+                           const pt_segment *sg, int course)
+{
+    int i;
+
+    memset(col, 0, sizeof *col);
+    col->gamma = course && s->gamma;
+    col->aa = course && s->antialias;
+    for (i = 0; i < 3; i++) {
+        col->c0[i] = course ? pt_model_color(m, sg->ca, i) : pt_color_float(m->color[i]);
+        col->c1[i] = course ? pt_model_color(m, sg->cb, i) : pt_color_float(m->color[i]);
+        col->bg[i] = pt_color_float(s->vp_background[i]);
+    }
+    pt_raster_colors_prepare(col);
+}
+
 /* Draw the segments of model k, whose vertices' pixel-plane points are pp[]
-** (and clip coordinates cl[], matrix camera). */
+** (and clip coordinates cl[], matrix camera), and, with the classic camera,
+** its points among them in file order.  A hidden position or model (the
+** course's `visible = false`) draws nothing with the classic camera. */
 static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt_options *o,
                        const pt_listener *l, size_t k, const model_sinks *ms, filing *fl,
                        pt_summary *sum, const pt_vec2 *pp, const vtx_clip *cl,
@@ -703,15 +801,11 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
     int selected = p->models[k].selected && !o->vertex;
     int steps = (l->setup || l->step) && selected && o->trace_raster;   /* DDA records */
     int inlined = p->pipe->inlined_dda && !steps;   /* pt_raster_draw() may draw */
-    size_t j;
+    int course = p->pipe == &pt_pipe_classic;       /* the course's renderer 4 */
+    size_t j, next = 0;
 
+    if (course && (m->hidden_position || m->hidden_model)) return;
     d->rc.m = m;
-    d->im.color = m->color;
-    for (j = 0; j < 3; j++) {               /* a model's one colour, both ends */
-        d->ls.c0[j] = d->ls.c1[j] = pt_color_float(m->color[j]);
-        d->ls.paint.rgb[j] = m->color[j];
-    }
-    d->ls.paint.coverage = 1.0f;
     for (j = 0; j < m->nseg; j++) {
         pt_vec2 a = pp[m->seg[j].a], b = pp[m->seg[j].b];
         int taken = piece_segment(pc, s, a, b);
@@ -720,6 +814,11 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
         const char *dropped;
         int draw, r;
 
+        if (course) draw_points(d, s, m, pp, &next, j);
+        if (j == 0 || m->ncolors) {                 /* no list: one colour, once */
+            segment_colors(&d->im.col, s, m, &m->seg[j], course);
+            d->ls.col = d->quiet.col = d->im.col;
+        }
         if (!taken && !d->im.fb && !l->summary) continue;   /* nothing to do */
         d->rc.seg = j + 1;
         d->rc.l = report ? l : NULL;
@@ -736,6 +835,8 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
             r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &d->im, &d->out);
         else if (steps && taken)            /* step by step, each told */
             r = pt_raster_walk(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out, &d->ls);
+        else if (course)                    /* in its colours, nobody told */
+            r = pt_raster_walk(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out, &d->quiet);
         else
             r = pt_raster_segment(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out);
         if (r == PT_RASTER_DEGENERATE) sum->segments_degenerate++;
@@ -744,6 +845,7 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
             if (report && l->skip) skip_report(l, m, j + 1, a, b);
         }
     }
+    if (course) draw_points(d, s, m, pp, &next, m->nseg);
 }
 
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,

@@ -208,6 +208,11 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o);
 /* Free what *p owns.  This function can't fail. */
 void pt_plan_free(pt_plan *p);
 
+/* Component i (0 red, 1 green, 2 blue) of colour ci of model m as the
+** course's float, 0..1: its colour list (`vcolor`), or, when that is empty,
+** its one `color` for every vertex (byte / 255f).  This function can't fail. */
+float pt_model_color(const pt_model *m, uint32_t ci, int i);
+
 /* Run the scene through the plan, drawing into fb when fb is not NULL and
 ** o->rasterize is set.  Fills *sum.  Returns 0, or -1 when out of memory.
 ** With l->piece, the pieces not taken still run what the rest needs: every

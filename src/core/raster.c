@@ -23,59 +23,6 @@
 #define FLATTEN
 #endif
 
-/* ===== exact fast-forward of y += m ===== */
-
-/*
-** Inside one binade [2^(e-1), 2^e) every double is a multiple of u = 2^(e-53).
-** While the exact sum y + m stays inside the binade, fl(y + m) = y + d where d is
-** m rounded to a multiple of u.  d is the same for every y, except when m is an
-** odd multiple of u/2 (a tie): round-to-even then leaves y/u even after a step,
-** and from there on d is the same every step.  So: take two real steps (the
-** second inside one binade, which settles the parity), measure d with a third
-** sum, and jump j steps at once: y + j*d is exact (a multiple of u inside the
-** binade, j*d/u < 2^53).  The jump stops short of the binade's edge by a margin
-** of 4|m| + 4|d|; the edge is crossed by real steps and it all starts over.
-** tests/unit/test_raster.c checks this against the plain loop, ties included.
-*/
-double pt_raster_advance(double y, double m, uint64_t k)
-{
-    if (m == 0.0) return k ? y + m : y;     /* y + 0 turns -0 into +0, once */
-    while (k > 0) {
-        double y1, y2, d, lo, hi, room;
-        int e1, e2;
-        uint64_t jump;
-
-        if (k < 3) { y += m; k--; continue; }
-        y1 = y + m;                                 /* two real steps */
-        y2 = y1 + m;
-        k -= 2;
-        y = y2;
-        if (!isfinite(y2) || y1 == 0.0 || y2 == 0.0) continue;
-        if ((y1 > 0) != (y2 > 0)) continue;         /* crossing zero */
-        if (fabs(y1) < DBL_MIN && fabs(y2) < DBL_MIN) {
-            lo = 0;                                 /* the subnormals: one grid, */
-            hi = DBL_MIN;                           /* spacing 2^-1074 */
-        } else {
-            frexp(y1, &e1);
-            frexp(y2, &e2);                         /* |y2| in [2^(e2-1), 2^e2) */
-            if (e1 != e2 || fabs(y1) < DBL_MIN) continue;
-            lo = ldexp(1.0, e2 - 1);
-            hi = 2 * lo;
-        }
-        d = (y2 + m) - y2;                          /* the constant increment */
-        if (d == 0.0) return y2;                    /* m too small: y stays put */
-        if ((y2 > 0) == (d > 0)) room = hi - fabs(y2);   /* moving outward */
-        else room = fabs(y2) - lo;                       /* moving inward */
-        room -= 4 * fabs(m) + 4 * fabs(d);
-        if (room <= 0) continue;
-        jump = (uint64_t)fmin(room / fabs(d), 0x1p62);
-        if (jump > k) jump = k;
-        y = y2 + (double)jump * d;                  /* exact, see above */
-        k -= jump;
-    }
-    return y;
-}
-
 /* ===== the DDA ===== */
 
 /* A run of clipped steps being gathered, reported when it ends. */
@@ -99,12 +46,15 @@ static void run_flush(clip_run *run, const pt_raster_out *out)
     }
 }
 
-/* Where a pixel inside goes: out->pixel (pt_raster_segment), or straight
-** through the framebuffer and index stages into an image (pt_raster_draw). */
-typedef void pixel_fn(void *ud, int64_t x_vp, int64_t y_vp);
+/* Where a pixel inside goes, in colour rgb covering share cov of it:
+** out->pixel (pt_raster_segment, which has no colours), or straight through
+** the framebuffer and index stages into an image (pt_raster_draw). */
+typedef void pixel_fn(void *ud, int64_t x_vp, int64_t y_vp, const unsigned char rgb[3],
+                      float cov);
 
 /* The segment being stepped: s is the stepped coordinate (x, or y when
-** transposed), acc the other one, accumulated. */
+** transposed), acc the other one, accumulated.  Its colours are in stepping
+** order (stages/pt_color.h). */
 typedef struct dda {
     int w, h;                    /* the viewport */
     pt_raster_vp to_vp;          /* pixel plane -> viewport pixel */
@@ -113,7 +63,21 @@ typedef struct dda {
     const pt_raster_out *out;    /* where runs of clipped steps go */
     const pt_raster_steps *ls;   /* the listener of steps, or NULL */
     const pt_raster_setup *su;   /* with one: the segment's setup */
+    const struct tint *t;        /* its colours */
 } dda;
+
+/* The colours of the segment being stepped, apart from the dda: kept small,
+** the dda's function pointers stay known constants to the compiler. */
+typedef struct tint {
+    int shade;                   /* 1: each step's colour is its own */
+    int gamma, aa;               /* the course's switches (pt_raster_colors) */
+    float bg[3];                 /* with aa: the viewport's background */
+    float c0[3];                 /* the colour at s0, */
+    double dc[3];                /* its change a step (pt_color_slope) */
+    double s0;                   /* the first step's s */
+    float c[3];                  /* shade 0: every step's colour, gamma-encoded, */
+    unsigned char rgb[3];        /* and its bytes */
+} tint;
 
 /* The viewport pixel of step (s, acc): the point (s, acc), or (acc, s) when
 ** transposed, through the viewport stage.  s is a whole number. */
@@ -127,27 +91,85 @@ static inline ALWAYS_INLINE pt_pix step_pixel(const dda *d, int transposed, doub
     return d->to_vp(p, d->w, d->h, NULL);
 }
 
-/* Tell the listener of steps of step (s, acc), whose pixel is p. */
-static void tell_step(const dda *d, int transposed, int si, double acc, pt_pix p,
-                      int inside)
+/* The colour of step s before gamma (pt_color_at). */
+static inline ALWAYS_INLINE void step_raw(const tint *t, double s, float c[3])
 {
-    const pt_raster_steps *ls = d->ls;
-    const pt_raster_setup *su = d->su;
-    pt_raster_step st;
     int i;
 
+    for (i = 0; i < 3; i++) c[i] = pt_color_at(t->c0[i], t->dc[i], s, t->s0);
+}
+
+/* c gamma-encoded when the segment's switch says so, and as bytes. */
+static inline ALWAYS_INLINE void encode(const tint *t, float c[3], unsigned char rgb[3])
+{
+    int i;
+
+    for (i = 0; i < 3; i++) {
+        if (t->gamma) c[i] = pt_gamma(c[i]);
+        rgb[i] = pt_color_byte(c[i]);
+    }
+}
+
+/* The step record of step (si, acc): its pixel p, its colour c and bytes rgb;
+** with hi (anti-aliasing) the upper pixel's too, the step's weight w. */
+static void tell_step(const dda *d, int transposed, int si, double acc, pt_pix p,
+                      int inside, const float c[3], const unsigned char rgb[3],
+                      const pt_raster_step *hi)
+{
+    const pt_raster_steps *ls = d->ls;
+    pt_raster_step st;
+
     if (!ls->step) return;
+    if (hi) st = *hi;
+    else st.aa = 0;
     st.s = si;
     st.a = acc;
     if (transposed) { st.pp.x = acc; st.pp.y = (double)si; }
     else            { st.pp.x = (double)si; st.pp.y = acc; }
     st.vp = p;
     st.inside = inside;
-    for (i = 0; i < 3; i++)                         /* colour, then gamma */
-        st.color[i] = pt_gamma(pt_color_at(su->c0[i], su->dc[i], (double)si,
-                                           (double)su->s0));
-    st.paint = ls->paint;
+    memcpy(st.color, c, sizeof st.color);
+    memcpy(st.paint.rgb, rgb, sizeof st.paint.rgb);
+    st.paint.coverage = hi ? 1.0f - hi->weight : 1.0f;
     ls->step(ls->ud, &st);
+}
+
+/* One anti-aliased step (si, acc): the pixels at floor(acc) and floor(acc) + 1
+** of the other coordinate, the step's colour blended with the background by
+** the weight (stages/pt_color.h), each pixel clip-tested on its own.  These
+** helpers are inline: a call that took d's address would keep the compiler
+** from seeing that to_vp and pixel stay the stages it inlines. */
+static inline ALWAYS_INLINE void aa_step(const dda *d, int transposed, int stepping, int si,
+                                          double acc, clip_run *run)
+{
+    double lo = floor(acc);                         /* a_low = floor(a) */
+    float w = pt_aa_weight(acc, lo), c[3], cl[3];
+    unsigned char bl[3];
+    pt_raster_step hi;
+    pt_pix p = step_pixel(d, transposed, (double)si, lo);
+    int in = p.ok && pt_inside(p.x, p.y, d->w, d->h), i;
+
+    hi.aa = 1;
+    hi.weight = w;
+    hi.vp_hi = step_pixel(d, transposed, (double)si, lo + 1.0);   /* a_hi = a_low + 1 */
+    hi.inside_hi = hi.vp_hi.ok && pt_inside(hi.vp_hi.x, hi.vp_hi.y, d->w, d->h);
+    step_raw(d->t, (double)si, c);
+    for (i = 0; i < 3; i++) pt_aa_blend(c[i], d->t->bg[i], w, &cl[i], &hi.color_hi[i]);
+    encode(d->t, cl, bl);
+    encode(d->t, hi.color_hi, hi.rgb_hi);
+    if (stepping) tell_step(d, transposed, si, acc, p, in, cl, bl, &hi);
+    if (in) {
+        run_flush(run, d->out);
+        d->pixel(d->pixel_ud, p.x, p.y, bl, 1.0f - w);
+    } else {
+        run_add(run, 1, p, p);
+    }
+    if (hi.inside_hi) {
+        run_flush(run, d->out);
+        d->pixel(d->pixel_ud, hi.vp_hi.x, hi.vp_hi.y, hi.rgb_hi, w);
+    } else {
+        run_add(run, 1, hi.vp_hi, hi.vp_hi);
+    }
 }
 
 /* Step s from s0 to s1 with acc from acc0, acc += m: the steps in the band
@@ -155,13 +177,18 @@ static void tell_step(const dda *d, int transposed, int si, double acc, pt_pix p
 ** transposed a constant, so that each of the two loops knows which
 ** coordinate it steps; and stepping, 1 for a listener of steps: when it
 ** listens to steps, the band is every step within the range of an int, each
-** step told. */
+** step told.  A segment of one colour without anti-aliasing has that colour
+** at hand (d->t->rgb); the others compute each step's. */
 static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping,
                                       int64_t s0, int64_t s1, double acc0, double m)
 {
     int64_t s = s0, band_lo, band_hi, margin, end;
     double acc = acc0;
     clip_run run = {0, {0, 0, 0}, {0, 0, 0}};
+    const int aa = d->t->aa, shade = d->t->shade;   /* kept in registers: the image's
+                                                    ** bytes may alias *d->t */
+    const unsigned char *rgb1 = d->t->rgb;          /* shade 0: the one colour */
+    uint64_t per = aa ? 2 : 1;                      /* pixels a step */
     pt_pix p;
     int every;
 
@@ -184,7 +211,7 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping
         int64_t last = s1 < band_lo - 1 ? s1 : band_lo - 1;
         uint64_t n = (uint64_t)(last - s) + 1;
         double acc_last = pt_raster_advance(acc, m, n - 1);
-        run_add(&run, n, step_pixel(d, transposed, (double)s, acc),
+        run_add(&run, per * n, step_pixel(d, transposed, (double)s, acc),
                 step_pixel(d, transposed, (double)last, acc_last));
         acc = acc_last + m;
         s = last + 1;
@@ -194,13 +221,33 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping
         int si, si_end = (int)end;
 
         for (si = (int)s; si <= si_end; si++) {
+            if (aa) {
+                aa_step(d, transposed, stepping, si, acc, &run);
+                acc += m;
+                continue;
+            }
             p = step_pixel(d, transposed, (double)si, acc);
             if (p.ok && pt_inside(p.x, p.y, d->w, d->h)) {
-                if (stepping) tell_step(d, transposed, si, acc, p, 1);
-                run_flush(&run, d->out);
-                d->pixel(d->pixel_ud, p.x, p.y);
+                if (shade || stepping) {
+                    float c[3];
+                    unsigned char rgb[3];
+                    step_raw(d->t, (double)si, c);
+                    encode(d->t, c, rgb);
+                    if (stepping) tell_step(d, transposed, si, acc, p, 1, c, rgb, NULL);
+                    run_flush(&run, d->out);
+                    d->pixel(d->pixel_ud, p.x, p.y, rgb, 1.0f);
+                } else {
+                    run_flush(&run, d->out);
+                    d->pixel(d->pixel_ud, p.x, p.y, rgb1, 1.0f);
+                }
             } else {
-                if (stepping) tell_step(d, transposed, si, acc, p, 0);
+                if (stepping) {
+                    float c[3];
+                    unsigned char rgb[3];
+                    step_raw(d->t, (double)si, c);
+                    encode(d->t, c, rgb);
+                    tell_step(d, transposed, si, acc, p, 0, c, rgb, NULL);
+                }
                 run_add(&run, 1, p, p);
             }
             acc += m;                               /* y += m */
@@ -210,16 +257,56 @@ static inline ALWAYS_INLINE void walk(const dda *d, int transposed, int stepping
     if (s <= s1) {                                  /* after the band: skip */
         uint64_t n = (uint64_t)(s1 - s) + 1;
         double acc_last = pt_raster_advance(acc, m, n - 1);
-        run_add(&run, n, step_pixel(d, transposed, (double)s, acc),
+        run_add(&run, per * n, step_pixel(d, transposed, (double)s, acc),
                 step_pixel(d, transposed, (double)s1, acc_last));
     }
     run_flush(&run, d->out);
 }
 
-/* The DDA, once for both entry points below: inline in each, so that where
-** to_vp and pixel are known functions whose code the compiler sees (the
-** Makefile compiles this file with the chosen viewport, framebuffer and index
-** stages), the calls in the loop become plain code. */
+/* The segment's colours in stepping order into d (swapped: p1's first), over
+** the steps s0 .. s1; col NULL: none (black, pt_raster_segment). */
+static inline ALWAYS_INLINE void colors_start(tint *t, const pt_raster_colors *col,
+                                               int swapped, double s0, double s1)
+{
+    int i, same = 1;
+
+    memset(t->bg, 0, sizeof t->bg);
+    t->gamma = t->aa = 0;
+    t->s0 = s0;
+    for (i = 0; i < 3; i++) {
+        float a = col ? (swapped ? col->c1[i] : col->c0[i]) : 0.0f;
+        float b = col ? (swapped ? col->c0[i] : col->c1[i]) : 0.0f;
+        t->c0[i] = a;
+        t->dc[i] = s1 > s0 ? pt_color_slope(a, b, s1 - s0) : 0.0;
+        same &= a == b;
+    }
+    if (col) {
+        t->gamma = col->gamma;
+        t->aa = col->aa;
+        memcpy(t->bg, col->bg, sizeof t->bg);
+    }
+    t->shade = !same;                               /* one colour: gamma it once */
+    if (col && col->one) {                          /* done by the caller */
+        memcpy(t->c, col->c, sizeof t->c);
+        memcpy(t->rgb, col->rgb, sizeof t->rgb);
+        return;
+    }
+    step_raw(t, s0, t->c);
+    encode(t, t->c, t->rgb);
+}
+
+void pt_raster_colors_prepare(pt_raster_colors *col)
+{
+    int i;
+
+    col->one = col->c0[0] == col->c1[0] && col->c0[1] == col->c1[1] &&
+               col->c0[2] == col->c1[2];
+    for (i = 0; col->one && i < 3; i++) {
+        col->c[i] = col->gamma ? pt_gamma(col->c0[i]) : col->c0[i];   /* |c0 + 0| = c0 */
+        col->rgb[i] = pt_color_byte(col->c[i]);
+    }
+}
+
 /* The setup record of a drawn segment (stepping): su->x0 .. y1 and kind
 ** set, the ends in stepping order s0, s1 (a0 the other coordinate at s0,
 ** p0's end first unless swapped), the slope m. */
@@ -227,6 +314,7 @@ static void tell_setup(const dda *d, pt_raster_setup *su, int transposed, int sw
                        double s0, double s1, double a0, double a1, double m)
 {
     const pt_raster_steps *ls = d->ls;
+    const pt_raster_colors *col = &ls->col;
     int i;
 
     su->ymajor = transposed;
@@ -238,9 +326,9 @@ static void tell_setup(const dda *d, pt_raster_setup *su, int transposed, int sw
     su->vp0 = step_pixel(d, transposed, s0, a0);
     su->vp1 = step_pixel(d, transposed, s1, a1);
     for (i = 0; i < 3; i++) {
-        su->c0[i] = swapped ? ls->c1[i] : ls->c0[i];
-        su->c1[i] = swapped ? ls->c0[i] : ls->c1[i];
-        su->dc[i] = pt_color_slope(su->c0[i], su->c1[i], s1 - s0);
+        su->c0[i] = swapped ? col->c1[i] : col->c0[i];
+        su->c1[i] = swapped ? col->c0[i] : col->c1[i];
+        su->dc[i] = d->t->dc[i];
     }
     if (ls->setup) ls->setup(ls->ud, su);
 }
@@ -257,7 +345,7 @@ static void tell_degenerate(const dda *d, pt_raster_setup *su, double x, double 
     su->s0 = su->s1 = (int64_t)x;
     su->a0 = y;
     su->vp0 = su->vp1 = p;
-    for (i = 0; i < 3; i++) { su->c0[i] = su->c1[i] = ls->c0[i]; su->dc[i] = 0.0; }
+    for (i = 0; i < 3; i++) { su->c0[i] = su->c1[i] = ls->col.c0[i]; su->dc[i] = 0.0; }
     if (ls->setup) ls->setup(ls->ud, su);
     if (!ls->step) return;
     st.s = su->s0;
@@ -265,8 +353,12 @@ static void tell_degenerate(const dda *d, pt_raster_setup *su, double x, double 
     st.pp.x = x; st.pp.y = y;
     st.vp = p;
     st.inside = inside;
-    for (i = 0; i < 3; i++) st.color[i] = ls->c0[i];
-    st.paint = ls->paint;
+    st.aa = 0;
+    for (i = 0; i < 3; i++) {
+        st.color[i] = ls->col.c0[i];
+        st.paint.rgb[i] = pt_color_byte(ls->col.c0[i]);
+    }
+    st.paint.coverage = 1.0f;
     ls->step(ls->ud, &st);
 }
 
@@ -274,17 +366,20 @@ static void tell_degenerate(const dda *d, pt_raster_setup *su, double x, double 
 ** to_vp and pixel are known functions whose code the compiler sees (the
 ** Makefile compiles this file with the chosen viewport, framebuffer and index
 ** stages), the calls in the loop become plain code.  stepping (a constant):
-** 1 tells ls of the setup and of every step (walk()). */
+** 1 tells ls of the setup and of every step (walk()).  col: the colours
+** (NULL: none). */
 static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
                                         pt_raster_vp to_vp, pixel_fn *pixel,
                                         void *pixel_ud, const pt_raster_out *out,
-                                        const pt_raster_steps *ls, int stepping)
+                                        const pt_raster_steps *ls, int stepping,
+                                        const pt_raster_colors *col)
 {
     int64_t ix0, iy0, ix1, iy1;
     double x0, y0, x1, y1, m;
     int transposed, swapped = 0;
     pt_raster_setup su;
     dda d;
+    tint tn;
     pt_pix p;
 
     if (!pt_pix_round(p0.x, &ix0) || !pt_pix_round(p0.y, &iy0) ||
@@ -302,20 +397,25 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
     d.pixel = pixel; d.pixel_ud = pixel_ud; d.out = out;
     d.ls = ls;
     d.su = &su;
+    d.t = &tn;
     if (stepping) {
         memset(&su, 0, sizeof su);
+        su.kind = PT_RASTER_DRAWN;
         su.x0 = ix0; su.y0 = iy0; su.x1 = ix1; su.y1 = iy1;
     }
 
     if (x0 == x1 && y0 == y1) {                     /* degenerate: one pixel */
-        int in;
+        int in, i;
+        unsigned char rgb[3];
         p = step_pixel(&d, 0, x0, y0);
         in = p.ok && pt_inside(p.x, p.y, w, h);
         if (stepping) {
             su.kind = PT_RASTER_DEGENERATE;
             tell_degenerate(&d, &su, x0, y0, p, in);
         }
-        if (in) pixel(pixel_ud, p.x, p.y);
+        for (i = 0; i < 3; i++)                     /* c0, raw: no gamma, no AA */
+            rgb[i] = pt_color_byte(col ? col->c0[i] : 0.0f);
+        if (in) pixel(pixel_ud, p.x, p.y, rgb, 1.0f);
         else out->clip(out->ud, 1, p, p);
         return PT_RASTER_DEGENERATE;
     }
@@ -332,25 +432,56 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
         swapped = 1;
     }
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
-    if (stepping) {
-        su.kind = PT_RASTER_DRAWN;
-        tell_setup(&d, &su, transposed, swapped, x0, x1, y0, y1, m);
-    }
+    colors_start(&tn, col, swapped, x0, x1);
+    if (stepping) tell_setup(&d, &su, transposed, swapped, x0, x1, y0, y1, m);
     if (transposed) walk(&d, 1, stepping, (int64_t)x0, (int64_t)x1, y0, m);
     else            walk(&d, 0, stepping, (int64_t)x0, (int64_t)x1, y0, m);
     return PT_RASTER_DRAWN;
 }
 
+/* out->pixel, which takes no colour (pt_raster_segment). */
+static void plain_pixel(void *ud, int64_t x_vp, int64_t y_vp, const unsigned char rgb[3],
+                        float cov)
+{
+    const pt_raster_out *out = ud;
+
+    (void)rgb; (void)cov;
+    out->pixel(out->ud, x_vp, y_vp);
+}
+
+/* Where pt_raster_walk() sends a pixel: ls->paint with the colour, or
+** out->pixel. */
+typedef struct painter {
+    const pt_raster_out *out;
+    const pt_raster_steps *ls;
+} painter;
+
+static void paint_pixel(void *ud, int64_t x_vp, int64_t y_vp, const unsigned char rgb[3],
+                        float cov)
+{
+    const painter *pn = ud;
+    pt_fb_paint pa;
+
+    if (!pn->ls->paint) { pn->out->pixel(pn->out->ud, x_vp, y_vp); return; }
+    memcpy(pa.rgb, rgb, sizeof pa.rgb);
+    pa.coverage = cov;
+    pn->ls->paint(pn->ls->ud, x_vp, y_vp, &pa);
+}
+
 int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
                       const pt_raster_out *out)
 {
-    return segment(p0, p1, w, h, to_vp, out->pixel, out->ud, out, NULL, 0);
+    return segment(p0, p1, w, h, to_vp, plain_pixel, (void *)out, out, NULL, 0, NULL);
 }
 
 int pt_raster_walk(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
                    const pt_raster_out *out, const pt_raster_steps *ls)
 {
-    return segment(p0, p1, w, h, to_vp, out->pixel, out->ud, out, ls, 1);
+    painter pn;
+
+    pn.out = out;
+    pn.ls = ls;
+    return segment(p0, p1, w, h, to_vp, paint_pixel, &pn, out, ls, 1, &ls->col);
 }
 
 /* The pixels drawn and not yet told to the listener (im->pixel), which
@@ -380,15 +511,13 @@ static void tell_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
 
 /* What pt_raster_draw() draws with: a copy of the pt_raster_image in its own
 ** frame.  The framebuffer's bytes are chars, which may alias anything the
-** compiler cannot see is local: from the caller's struct, the pixel count,
-** the color and the framebuffer's size would be loaded and stored again
-** around every pixel. */
+** compiler cannot see is local: from the caller's struct, the pixel count
+** and the framebuffer's size would be loaded and stored again around every
+** pixel. */
 typedef struct draw_ctx {
     pt_fb fb;                    /* the framebuffer (rgb NULL: only its size) */
     int x_ul, y_ul;              /* the viewport's corner */
     int64_t npix;                /* W * H: the pixel array's length */
-    unsigned char color[3];
-    pt_fb_paint paint;           /* what a listener is told: color, coverage 1 */
     uint64_t pixels;             /* pixels drawn */
     telling *tell;               /* with a listener: its pixels, else NULL */
 } draw_ctx;
@@ -397,7 +526,8 @@ typedef struct draw_ctx {
 ** the image, and to the listener when `listened`; one the stages put outside
 ** the pixel array is not drawn (a student's stage can: Java would throw). */
 static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x_vp,
-                                            int64_t y_vp)
+                                            int64_t y_vp, const unsigned char rgb[3],
+                                            float cov)
 {
     pt_pix vp = {x_vp, y_vp, 1};
     pt_pix f = pt_viewport2fb(vp, c->x_ul, c->y_ul, NULL);
@@ -408,21 +538,24 @@ static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x
         telling *t = c->tell;
         pt_fb_pixel *q = &t->px[t->n];
         q->x_fb = f.x; q->y_fb = f.y; q->idx = idx;
-        q->paint = c->paint;
+        memcpy(q->paint.rgb, rgb, sizeof q->paint.rgb);
+        q->paint.coverage = cov;
         if (++t->n == PT_RASTER_RUN) tell(t);
     }
     if ((!listened || c->fb.rgb) && idx >= 0 && idx < c->npix)
-        pt_fb_set(&c->fb, idx, c->color);
+        pt_fb_set(&c->fb, idx, rgb);
 }
 
-static void draw_quiet(void *ud, int64_t x_vp, int64_t y_vp)
+static inline ALWAYS_INLINE void draw_quiet(void *ud, int64_t x_vp, int64_t y_vp,
+                                             const unsigned char rgb[3], float cov)
 {
-    draw_pixel(ud, 0, x_vp, y_vp);
+    draw_pixel(ud, 0, x_vp, y_vp, rgb, cov);
 }
 
-static void draw_listened(void *ud, int64_t x_vp, int64_t y_vp)
+static inline ALWAYS_INLINE void draw_listened(void *ud, int64_t x_vp, int64_t y_vp,
+                                                const unsigned char rgb[3], float cov)
 {
-    draw_pixel(ud, 1, x_vp, y_vp);
+    draw_pixel(ud, 1, x_vp, y_vp, rgb, cov);
 }
 
 FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image *im,
@@ -440,9 +573,6 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
     c.x_ul = im->x_ul;
     c.y_ul = im->y_ul;
     c.npix = (int64_t)c.fb.w * c.fb.h;
-    c.color[0] = im->color[0]; c.color[1] = im->color[1]; c.color[2] = im->color[2];
-    memcpy(c.paint.rgb, c.color, sizeof c.paint.rgb);  /* the segment's colour, */
-    c.paint.coverage = 1.0f;                            /* all of each pixel */
     c.pixels = 0;
     c.tell = NULL;
     if (im->pixel) {
@@ -452,10 +582,11 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
         t.out = out;
         t.n = 0;
         c.tell = &t;
-        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_listened, &c, &told, NULL, 0);
+        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_listened, &c, &told, NULL, 0,
+                    &im->col);
         tell(&t);
     } else {
-        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_quiet, &c, out, NULL, 0);
+        r = segment(p0, p1, w, h, pt_pixel2viewport, draw_quiet, &c, out, NULL, 0, &im->col);
     }
     im->pixels += c.pixels;
     return r;

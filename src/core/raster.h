@@ -13,7 +13,11 @@
 **      student's stage reaches the image as it reaches the trace), giving
 **      (x - 1, h - round(y)) with the reference formula;
 **   5. write a pixel only when it lies inside the viewport; the others are
-**      clipped and reported as runs of consecutive clipped steps.
+**      clipped and reported as runs of consecutive clipped steps;
+**   6. the classic camera (the course's renderer 4) writes each step in its
+**      own colour (stages/pt_color.h: interpolated, gamma-encoded, a
+**      degenerate segment raw), or with anti-aliasing a pair of pixels
+**      blended with the viewport's background; raster_point.c its points.
 ** Steps far outside the viewport's band are clipped without asking to_vp and
 ** skipped with an exact fast-forward of the accumulated sum (see raster.c):
 ** drawing costs time in proportion to the steps near the viewport, never to
@@ -24,6 +28,7 @@
 
 #include <stdint.h>
 #include "stages/pt_stage.h"
+#include "stages/pt_color.h"
 #include "core/fb.h"
 
 #define PT_RASTER_DRAWN       0    /* stepped from end to end */
@@ -37,8 +42,29 @@
 ** included: the plain walk, without the fast-forward past the viewport's
 ** band (steps whose stepped coordinate lies beyond the range of an int, which
 ** the course's int loop never takes, are still skipped unreported).  The
-** colours are the course's (stages/pt_color.h): each step's, gamma-encoded,
-** is what the course's renderer writes and its log prints. */
+** colours are the course's (stages/pt_color.h): each step's, gamma-encoded
+** when the switch says so, is what the course's renderer writes and its log
+** prints; with anti-aliasing a step is a pair of pixels. */
+
+/* The course's colours of a segment and its rasterizer's switches (renderer
+** 4, NOTES.md 11.2 and 11.4). */
+typedef struct pt_raster_colors {
+    float c0[3], c1[3];          /* the colours of p0 and p1, 0..1 (pt_color_float,
+                                 ** or a `vcolor-float` as given) */
+    int gamma;                   /* 1: gamma-encode (Rasterize.doGamma) */
+    int aa;                      /* 1: anti-alias (Rasterize.doAntiAliasing) */
+    float bg[3];                 /* with aa: the viewport's background, 0..1 */
+    int one;                     /* 1: c0 == c1, and c, rgb hold that colour
+                                 ** gamma-encoded (pt_raster_colors_prepare) */
+    float c[3];                  /* with one: the colour of every step */
+    unsigned char rgb[3];        /* with one: its bytes */
+} pt_raster_colors;
+
+/* Set col->one, and with it col->c and col->rgb, from c0, c1 and gamma: a
+** caller whose segments share their colours prepares them once, and the
+** rasterizer does not compute them again per segment.  This function can't
+** fail. */
+void pt_raster_colors_prepare(pt_raster_colors *col);
 
 /* A segment as the DDA sets it up.  s is the stepped coordinate (x when
 ** x-major, y when y-major), a the other one. */
@@ -70,8 +96,15 @@ typedef struct pt_raster_step {
     int inside;                  /* 1: inside the viewport, drawn; 0: clipped */
     float color[3];              /* the course's colour written, 0..1: gamma-
                                  ** encoded (a degenerate segment's: c0, raw) */
-    pt_fb_paint paint;           /* what pipetrace writes: the segment's colour,
-                                 ** all of the pixel */
+    pt_fb_paint paint;           /* what pipetrace writes: those bytes, and
+                                 ** the share of the pixel covered */
+    int aa;                      /* 1: anti-aliased: vp .. paint are the lower
+                                 ** pixel's (floor(a)), the rest the upper's */
+    float weight;                /* with aa: (float)(a - floor(a)) */
+    pt_pix vp_hi;                /* with aa: the upper pixel (floor(a) + 1), */
+    int inside_hi;               /* inside, */
+    float color_hi[3];           /* its colour, */
+    unsigned char rgb_hi[3];     /* and its bytes */
 } pt_raster_step;
 
 /* Who hears the DDA's records, and the colours they carry. */
@@ -79,8 +112,10 @@ typedef struct pt_raster_steps {
     void (*setup)(void *ud, const pt_raster_setup *su);    /* may be NULL */
     void (*step)(void *ud, const pt_raster_step *st);      /* may be NULL */
     void *ud;                                              /* passed back unchanged */
-    float c0[3], c1[3];          /* the colours of p0 and p1 (pt_color_float) */
-    pt_fb_paint paint;           /* what pipetrace writes, told with each step */
+    void (*paint)(void *ud, int64_t x_vp, int64_t y_vp,    /* a pixel inside in its */
+                  const pt_fb_paint *pa);                  /* colour, with ud, instead
+                                                           ** of out->pixel; may be NULL */
+    pt_raster_colors col;        /* the segment's colours and switches */
 } pt_raster_steps;
 
 /* What the rasterizer reports, in step order. */
@@ -123,7 +158,7 @@ typedef struct pt_raster_image {
     pt_fb *fb;                   /* the framebuffer (W x H), or NULL: no image */
     int W, H;                    /* the framebuffer's size */
     int x_ul, y_ul;              /* the viewport's upper-left corner in it */
-    const unsigned char *color;  /* the segment's color, RGB */
+    pt_raster_colors col;        /* the segment's colours and switches */
     uint64_t pixels;             /* pixels drawn (inside the viewport), added to */
     pt_raster_drawn *pixel;      /* told of the pixels drawn, or NULL */
     void *pixel_ud;              /* passed back to it unchanged */
@@ -134,9 +169,39 @@ typedef struct pt_raster_image {
 ** pt_fb2index() into im->fb (unless the stages put it outside the pixel
 ** array) and to im->pixel, counted in im->pixels; runs of clipped steps
 ** still go to out->clip (out->pixel is not used).  The same pixels, with the
-** three stages inlined into the loop: the classic camera's render. */
+** three stages inlined into the loop, each in the course's colour of its
+** step (im->col: a segment of one colour without anti-aliasing computes it
+** once); with anti-aliasing two pixels a step.  The classic camera's render. */
 int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image *im,
                    const pt_raster_out *out);
+
+/* ===== points (raster_point.c) ===== */
+
+/* A point as the course's renderer 4 rasterizes it (NOTES.md 11.3): the
+** pixel-plane vertex pp goes through the 2.001 map (pt_image2pixel) a second
+** time, giving (x_pp, y_pp), rounded (Math.round) to the centre (cx, cy);
+** then the pixels x_ = cx - r .. cx + r in rows y_ = cy - r .. cy + r, each
+** at viewport pixel (x_ - 1, h - y_) and drawn iff 0 < x_ <= w and
+** 0 < y_ <= h.  A negative radius has no pixels. */
+typedef struct pt_raster_dot {
+    double x_pp, y_pp;           /* the twice-mapped centre */
+    int64_t cx, cy;              /* rounded, as Java's (int)Math.round */
+    int64_t x_, y_;              /* the pixel at hand */
+    pt_pix vp;                   /* its viewport pixel (x_ - 1, h - y_) */
+    int inside;                  /* 1: drawn (the course's clip test) */
+} pt_raster_dot;
+
+typedef void pt_raster_dot_fn(void *ud, const pt_raster_dot *dt);
+
+/* Visit the pixels of the point at pp of radius r in a w x h viewport, in
+** the course's order, each told to fn in *dt: all (2r + 1)^2 of them when
+** every (its log; at most `most` visited, the count returned either way),
+** else only those inside (the image).  dt's centre is set in any case.
+** Returns the number of pixels the course's loop visits (0 for r < 0), or -1
+** when the centre is infinite or its loop would leave the int range (the
+** course's would not end or wrap); a NaN centre rounds to 0, as in Java.  This function can't fail otherwise. */
+int64_t pt_raster_point(pt_vec2 pp, int r, int w, int h, int every, int64_t most,
+                        pt_raster_dot *dt, pt_raster_dot_fn *fn, void *ud);
 
 /* y after k steps of y += m, exactly as k additions in double would leave it.
 ** Costs O(number of binades crossed), not O(k).  This function can't fail. */

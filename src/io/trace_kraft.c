@@ -53,15 +53,75 @@ static void stage_xyz(const pt_journey *j, pt_stage st, double *x, double *y, do
     *z = st == PT_STAGE_PIXEL ? 0.0 : j->rec[st].z;
 }
 
-static void put_color(FILE *f, const pt_model *m)
+/* "java.awt.Color[r=R,g=G,b=B]": Color.toString of colour ci of model m,
+** the bytes java.awt.Color keeps of its floats. */
+static void put_color(FILE *f, const pt_model *m, uint32_t ci)
 {
-    fprintf(f, "java.awt.Color[r=%d,g=%d,b=%d]\n", m->color[0], m->color[1], m->color[2]);
+    fprintf(f, "java.awt.Color[r=%d,g=%d,b=%d]\n", pt_color_byte(pt_model_color(m, ci, 0)),
+            pt_color_byte(pt_model_color(m, ci, 1)), pt_color_byte(pt_model_color(m, ci, 2)));
 }
 
 static void put_segment(FILE *f, const char *title, const pt_segment *sg)
 {
     fprintf(f, "%s: LineSegment: ([%lu, %lu], [%lu, %lu])\n", title, (unsigned long)sg->a,
-            (unsigned long)sg->b, (unsigned long)sg->a, (unsigned long)sg->b);
+            (unsigned long)sg->b, (unsigned long)sg->ca, (unsigned long)sg->cb);
+}
+
+static void put_point(FILE *f, const char *title, const pt_point *pt)
+{
+    fprintf(f, "%s: Point: ([%lu], [%lu]) radius = %d\n", title, (unsigned long)pt->v,
+            (unsigned long)pt->c, pt->radius);
+}
+
+/* The length of model m's colour list as the course has it before it adds
+** its default: `vcolor` lines, or one `color` a vertex, or none. */
+static size_t ncolors_given(const pt_model *m)
+{
+    if (m->ncolors) return m->ncolors;
+    return m->colors_given ? m->nv : 0;
+}
+
+/* The warnings the course prints whatever its debug switches
+** (CheckModel.check, then the default colours), with Model.toString when a
+** check fails. */
+static void put_warnings(FILE *f, const pt_model *m, const pt_journey *js)
+{
+    size_t nprim = m->nseg + m->npts, ncol = ncolors_given(m), i, k, q;
+    int error = 0;
+
+    if (m->nv == 0 && nprim > 0) {
+        fputs("***WARNING: This model does not have any vertices.\n", f);
+        error = 1;
+    }
+    if (m->nv > 0 && nprim == 0) {
+        fputs("***WARNING: This model does not have any geometric primitives.\n", f);
+        error = 1;
+    }
+    if (m->nv > 0 && ncol == 0) fputs("***WARNING: This model does not have any colors.\n", f);
+    if (error) {
+        fprintf(f, "Model: %s\nThis Model's visibility is: true\nModel has %zu vertices.\n"
+                "Model has %zu colors.\nModel has %zu primitives.\n", m->name, m->nv, ncol,
+                nprim);
+        for (i = 0; i < m->nv; i++) {
+            fprintf(f, "%zu: ", i);
+            put_xyz(f, js[i].rec[PT_STAGE_MODEL].x, js[i].rec[PT_STAGE_MODEL].y,
+                    js[i].rec[PT_STAGE_MODEL].z);
+            fputc('\n', f);
+        }
+        for (i = 0; i < ncol; i++) {
+            fprintf(f, "%zu: ", i);
+            put_color(f, m, (uint32_t)i);
+        }
+        for (i = 0, k = 0, q = 0; k < m->nseg || q < m->npts; i++) {
+            char num[32];
+            snprintf(num, sizeof num, "%zu", i);
+            if (q < m->npts && m->pts[q].after <= k) put_point(f, num, &m->pts[q++]);
+            else put_segment(f, num, &m->seg[k++]);
+        }
+        fputc('\n', f);
+    }
+    if (m->nv > 0 && ncol == 0)
+        fprintf(f, "***WARNING: Added default color to model: %s.\n", m->name);
 }
 
 /* ===== the rasterizer's lines ===== */
@@ -76,45 +136,50 @@ static void put_pair(FILE *f, const char *name, double a, double b)
     fprintf(f, "(%s) = (%s, %s)\n", name, s, t);
 }
 
-/* One step's line.  xs, ys: the point as the course prints it ("%4d" for the
-** stepped coordinate, "%9.4f" for the other). */
-static void put_step(FILE *f, const pt_scene *s, const char *xs, const char *ys,
-                     const pt_raster_step *st)
+/* The start of a pixel line: "Clip: " or six blanks, the framebuffer and
+** viewport, the point (xs, ys as the course prints them: "%4d" for a whole
+** coordinate, "%9.4f" for the other). */
+static void put_where(FILE *f, const pt_scene *s, int inside, const char *xs,
+                      const char *ys)
+{
+    fprintf(f, "%sfb_[w=%d,h=%d] vp_[x=%4d, y=%4d, w=%d,h=%d]  (x_pp=%s, y_pp=%s)  ",
+            inside ? "      " : "Clip: ", s->fb_w, s->fb_h, s->vp_x, s->vp_y, s->vp_w,
+            s->vp_h, xs, ys);
+}
+
+/* "r=%.4f g=%.4f b=%.4f" of a colour written. */
+static void put_rgb(FILE *f, const float c[3])
 {
     char r[PT_JNUM_LEN], g[PT_JNUM_LEN], b[PT_JNUM_LEN];
 
-    pt_jnum_f(r, (double)st->color[0], 0, 4, 0);
-    pt_jnum_f(g, (double)st->color[1], 0, 4, 0);
-    pt_jnum_f(b, (double)st->color[2], 0, 4, 0);
-    fprintf(f, "%sfb_[w=%d,h=%d] vp_[x=%4d, y=%4d, w=%d,h=%d]  (x_pp=%s, y_pp=%s)  "
-            "(x_vp=%4lld, y_vp=%4lld)  r=%s g=%s b=%s\n", st->inside ? "      " : "Clip: ",
-            s->fb_w, s->fb_h, s->vp_x, s->vp_y, s->vp_w, s->vp_h, xs, ys,
-            (long long)st->vp.x, (long long)st->vp.y, r, g, b);
+    pt_jnum_f(r, (double)c[0], 0, 4, 0);
+    pt_jnum_f(g, (double)c[1], 0, 4, 0);
+    pt_jnum_f(b, (double)c[2], 0, 4, 0);
+    fprintf(f, "r=%s g=%s b=%s", r, g, b);
 }
 
-/* The course's renderer can log segment seg of model m (setup su): its
-** endpoints round to ints and it has at most PT_KRAFT_MAX_STEPS steps.
-** Returns 0, or -1 with a message. */
-static int seg_check(const pt_scene *s, const pt_model *m, uint64_t seg,
-                     const pt_raster_setup *su, char *err, size_t errlen)
+/* One step's line (logPixel), or with anti-aliasing its pair's
+** (logPixelsAA: "Clip: " unless both are inside). */
+static void put_step(FILE *f, const pt_scene *s, const char *xs, const char *ys,
+                     int ymajor, const pt_raster_step *st)
 {
-    int64_t n = su->s1 - su->s0;                     /* steps - 1 */
-
-    if (su->kind == PT_RASTER_SKIPPED ||
-        llabs(su->x0) > INT32_MAX || llabs(su->y0) > INT32_MAX ||
-        llabs(su->x1) > INT32_MAX || llabs(su->y1) > INT32_MAX) {
-        snprintf(err, errlen, "%s: error: model '%s', segment %llu: an endpoint is beyond "
-                 "the int pixel range of the course's renderer (its log would not end)",
-                 s->path, m->name, (unsigned long long)seg);
-        return -1;
+    if (!st->aa) {
+        put_where(f, s, st->inside, xs, ys);
+        fprintf(f, "(x_vp=%4lld, y_vp=%4lld)  ", (long long)st->vp.x, (long long)st->vp.y);
+        put_rgb(f, st->color);
+        fputc('\n', f);
+        return;
     }
-    if (n >= PT_KRAFT_MAX_STEPS) {
-        snprintf(err, errlen, "%s: error: model '%s', segment %llu: %lld steps, more than "
-                 "the %ld lines a segment's pixel log may have", s->path, m->name,
-                 (unsigned long long)seg, (long long)n + 1, PT_KRAFT_MAX_STEPS);
-        return -1;
-    }
-    return 0;
+    put_where(f, s, st->inside && st->inside_hi, xs, ys);
+    if (!ymajor)
+        fprintf(f, "x_vp=%4lld {y_low=%4lld ", (long long)st->vp.x, (long long)st->vp.y);
+    else
+        fprintf(f, "y_vp=%4lld {x_low=%4lld ", (long long)st->vp.y, (long long)st->vp.x);
+    put_rgb(f, st->color);
+    fprintf(f, "} {%s =%4lld ", ymajor ? "x_hi" : "y_hi",
+            (long long)(ymajor ? st->vp_hi.x : st->vp_hi.y));
+    put_rgb(f, st->color_hi);
+    fputs("}\n", f);
 }
 
 /* The rasterizer's lines before the steps: the rounded endpoints and, unless
@@ -146,63 +211,11 @@ static void put_setup(FILE *f, const pt_raster_setup *su)
 
 /* ===== the log ===== */
 
-/* The lines of model m up to its segments' own: the translation, every
-** vertex stage by stage (journeys js), the segments and the colours. */
-static void put_model_head(FILE *f, const pt_model *m, const pt_journey *js)
-{
-    static const pt_stage logged[4] = {PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE,
-                                       PT_STAGE_PIXEL};
-    const char *pixel_title = pt_stage_course[PT_STAGE_PIXEL];
-    double x, y, z;
-    size_t v, k;
-    int q;
-
-    fprintf(f, "==== Render position: %s ====\n", m->name);
-    fputs("---- Translation vector = [x,y,z] = [", f);
-    put_3(f, m->translate.x, m->translate.y, m->translate.z);
-    fputs("]\n", f);
-    fprintf(f, "====== Render model: %s ======\n", m->name);
-    for (q = 0; q < 4; q++)
-        for (v = 0; v < m->nv; v++) {
-            stage_xyz(&js[v], logged[q], &x, &y, &z);
-            fprintf(f, "%-14s: vIndex = %3zu, ", pt_stage_course[logged[q]], v);
-            put_xyz(f, x, y, z);
-            fputc('\n', f);
-        }
-    if (m->nseg == 0) fprintf(f, "%s: []\n", pixel_title);
-    for (k = 0; k < m->nseg; k++) put_segment(f, pixel_title, &m->seg[k]);
-    for (v = 0; v < m->nv; v++) {
-        fprintf(f, "%s: cIndex = %3zu, ", pixel_title, v);
-        put_color(f, m);
-    }
-}
-
-/* "4. Rasterize" and the two ends of segment k of model m (journeys js). */
-static void put_seg_head(FILE *f, const pt_model *m, const pt_journey *js, size_t k)
-{
-    const pt_segment *sg = &m->seg[k];
-    uint32_t ends[2];
-    double x, y, z;
-    int e;
-
-    ends[0] = sg->a; ends[1] = sg->b;
-    put_segment(f, "4. Rasterize", sg);
-    for (e = 0; e < 2; e++) {
-        stage_xyz(&js[ends[e]], PT_STAGE_PIXEL, &x, &y, &z);
-        fprintf(f, "   vIndex = %3lu, ", (unsigned long)ends[e]);
-        put_xyz(f, x, y, z);
-        fputc('\n', f);
-    }
-    for (e = 0; e < 2; e++) {
-        fprintf(f, "   cIndex = %3lu, ", (unsigned long)ends[e]);
-        put_color(f, m);
-    }
-}
-
 /* The log of every model from one pt_run(), model by model
 ** (pt_options.model_by_model): the journeys of a model's vertices, then, with
 ** pixels, the DDA's records of its segments; a model's closing lines when the
-** next model's records begin, or at the end. */
+** next model's records begin, or at the end.  Its points are logged here
+** (pt_raster_point), each before the segment that follows it in the file. */
 typedef struct kraft_run {
     FILE *f;
     const pt_scene *s;
@@ -211,21 +224,167 @@ typedef struct kraft_run {
     pt_journey *js;              /* js[v - 1]: its vertex v's journey */
     size_t cap;                  /* room in js */
     int head;                    /* 1: put_model_head() wrote its lines */
+    size_t next_pt;              /* its points logged so far */
     int ymajor, degenerate;      /* of the segment being stepped */
     int failed;                  /* out of memory */
 } kraft_run;
 
-/* Close model kr->k: its head if no segment wrote it, the segments without
-** pixels, its last lines. */
+/* The Position's name of model m (`model NAME POSITION`). */
+static const char *position_of(const pt_model *m)
+{
+    return m->position ? m->position : m->name;
+}
+
+/* The lines of model m up to its segments' own: the position and its
+** translation, the model, the course's warnings, every vertex stage by
+** stage (journeys js), the primitives in file order and the colours.  A
+** hidden model: its position's lines and the hidden line. */
+static void put_model_head(FILE *f, const pt_model *m, const pt_journey *js)
+{
+    static const pt_stage logged[4] = {PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE,
+                                       PT_STAGE_PIXEL};
+    const char *pixel_title = pt_stage_course[PT_STAGE_PIXEL];
+    double x, y, z;
+    size_t v, k, q, nc;
+    int i;
+
+    fprintf(f, "==== Render position: %s ====\n", position_of(m));
+    fputs("---- Translation vector = [x,y,z] = [", f);
+    put_3(f, m->translate.x, m->translate.y, m->translate.z);
+    fputs("]\n", f);
+    if (m->hidden_model) {
+        fprintf(f, "====== Hidden model: %s ======\n", m->name);
+        return;
+    }
+    fprintf(f, "====== Render model: %s ======\n", m->name);
+    put_warnings(f, m, js);
+    for (i = 0; i < 4; i++)
+        for (v = 0; v < m->nv; v++) {
+            stage_xyz(&js[v], logged[i], &x, &y, &z);
+            fprintf(f, "%-14s: vIndex = %3zu, ", pt_stage_course[logged[i]], v);
+            put_xyz(f, x, y, z);
+            fputc('\n', f);
+        }
+    if (m->nseg == 0 && m->npts == 0) fprintf(f, "%s: []\n", pixel_title);
+    for (k = 0, q = 0; k < m->nseg || q < m->npts; )
+        if (q < m->npts && m->pts[q].after <= k) put_point(f, pixel_title, &m->pts[q++]);
+        else put_segment(f, pixel_title, &m->seg[k++]);
+    nc = m->ncolors ? m->ncolors : m->nv;           /* the default: one a vertex */
+    for (v = 0; v < nc; v++) {
+        fprintf(f, "%s: cIndex = %3zu, ", pixel_title, v);
+        put_color(f, m, (uint32_t)v);
+    }
+}
+
+/* The "   vIndex = ..." line of vertex v in the pixel plane (journeys js) and
+** the "   cIndex = ..." line of colour c. */
+static void put_end(FILE *f, const pt_journey *js, uint32_t v)
+{
+    double x, y, z;
+
+    stage_xyz(&js[v], PT_STAGE_PIXEL, &x, &y, &z);
+    fprintf(f, "   vIndex = %3lu, ", (unsigned long)v);
+    put_xyz(f, x, y, z);
+    fputc('\n', f);
+}
+
+static void put_cend(FILE *f, const pt_model *m, uint32_t c)
+{
+    fprintf(f, "   cIndex = %3lu, ", (unsigned long)c);
+    put_color(f, m, c);
+}
+
+/* "4. Rasterize" and the two ends of segment k of model m (journeys js). */
+static void put_seg_head(FILE *f, const pt_model *m, const pt_journey *js, size_t k)
+{
+    const pt_segment *sg = &m->seg[k];
+
+    put_segment(f, "4. Rasterize", sg);
+    put_end(f, js, sg->a);
+    put_end(f, js, sg->b);
+    put_cend(f, m, sg->ca);
+    put_cend(f, m, sg->cb);
+}
+
+/* A pixel line of a point (logPixel with the rounded centre). */
+typedef struct dot_log {
+    FILE *f;
+    const pt_scene *s;
+    float c[3];                  /* its colour, gamma-encoded when on */
+} dot_log;
+
+static void on_dot(void *ud, const pt_raster_dot *dt)
+{
+    dot_log *dl = ud;
+    char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
+
+    pt_jnum_f(one, (double)dt->cx, 9, 4, 0);
+    pt_jnum_f(two, (double)dt->cy, 9, 4, 0);
+    put_where(dl->f, dl->s, dt->inside, one, two);
+    fprintf(dl->f, "(x_vp=%4lld, y_vp=%4lld)  ", (long long)dt->vp.x, (long long)dt->vp.y);
+    put_rgb(dl->f, dl->c);
+    fputc('\n', dl->f);
+}
+
+/* "4. Rasterize" of point q of model m, and with pixels its rasterizer's
+** lines: the twice-mapped centre, then every pixel (NOTES.md 11.3). */
+static void put_point_log(const kraft_run *kr, const pt_model *m, size_t q)
+{
+    const pt_point *pt = &m->pts[q];
+    const pt_scene *s = kr->s;
+    pt_raster_dot dt;
+    dot_log dl;
+    pt_vec2 pp;
+    int i;
+
+    put_point(kr->f, "4. Rasterize", pt);
+    put_end(kr->f, kr->js, pt->v);
+    put_cend(kr->f, m, pt->c);
+    if (!kr->pixels) return;
+    dl.f = kr->f;
+    dl.s = s;
+    for (i = 0; i < 3; i++) {
+        float c = pt_model_color(m, pt->c, i);
+        dl.c[i] = s->gamma ? pt_gamma(c) : c;
+    }
+    pp.x = kr->js[pt->v].rec[PT_STAGE_PIXEL].x;
+    pp.y = kr->js[pt->v].rec[PT_STAGE_PIXEL].y;
+    if (pt_raster_point(pp, -1, s->vp_w, s->vp_h, 1, 0, &dt, on_dot, &dl) < 0) return;
+    put_pair(kr->f, "x_pp, y_pp", dt.x_pp, dt.y_pp);
+    pt_raster_point(pp, pt->radius, s->vp_w, s->vp_h, 1, PT_KRAFT_MAX_STEPS, &dt, on_dot,
+                    &dl);
+}
+
+/* Log the points of model kr->k up to those after the first upto segments. */
+static void points_upto(kraft_run *kr, size_t upto)
+{
+    const pt_model *m = &kr->s->models[kr->k];
+
+    for (; kr->next_pt < m->npts && m->pts[kr->next_pt].after <= upto; kr->next_pt++)
+        put_point_log(kr, m, kr->next_pt);
+}
+
+/* Close model kr->k: its head if no segment wrote it, the primitives not yet
+** logged, its last lines; a hidden position's one line. */
 static void model_end(kraft_run *kr)
 {
     const pt_model *m = &kr->s->models[kr->k];
     size_t q;
 
+    if (m->hidden_position) {
+        fprintf(kr->f, "==== Hidden position: %s ====\n", position_of(m));
+        return;
+    }
     if (!kr->head) put_model_head(kr->f, m, kr->js);       /* no segment drawn */
-    for (q = 0; !kr->pixels && q < m->nseg; q++) put_seg_head(kr->f, m, kr->js, q);
-    fprintf(kr->f, "====== End model: %s ======\n", m->name);
-    fprintf(kr->f, "==== End position: %s ====\n", m->name);
+    if (!m->hidden_model) {
+        for (q = 0; !kr->pixels && q < m->nseg; q++) {
+            points_upto(kr, q);
+            put_seg_head(kr->f, m, kr->js, q);
+        }
+        points_upto(kr, m->nseg);
+        fprintf(kr->f, "====== End model: %s ======\n", m->name);
+    }
+    fprintf(kr->f, "==== End position: %s ====\n", position_of(m));
 }
 
 /* Begin model k: close those before it, make room for its journeys. */
@@ -237,6 +396,7 @@ static void model_begin(kraft_run *kr, size_t k)
     model_end(kr);
     kr->k = k;
     kr->head = 0;
+    kr->next_pt = 0;
     if (need > kr->cap) {
         pt_journey *js = realloc(kr->js, need * sizeof *js);
         if (!js) { kr->failed = 1; kr->cap = 0; free(kr->js); kr->js = NULL; return; }
@@ -269,6 +429,7 @@ static void on_setup(void *ud, const pt_model *m, uint64_t seg, const pt_raster_
     if (!kraft_at(kr, m)) return;
     if (!kr->head) put_model_head(kr->f, m, kr->js);   /* every journey came first */
     kr->head = 1;
+    points_upto(kr, seg - 1);
     put_seg_head(kr->f, m, kr->js, seg - 1);
     put_setup(kr->f, su);
     kr->ymajor = su->ymajor;
@@ -292,7 +453,7 @@ static void on_step(void *ud, const pt_model *m, uint64_t seg, const pt_raster_s
         pt_jnum_f(one, st->a, 9, 4, 0);
         snprintf(two, sizeof two, "%4lld", (long long)st->s);
     }
-    put_step(kr->f, kr->s, one, two, st);
+    put_step(kr->f, kr->s, one, two, kr->ymajor, st);
 }
 
 /* Log every model of s into f, from one run.  Returns 0, or -1 with a
@@ -328,44 +489,33 @@ static int kraft_models(FILE *f, const pt_scene *s, int pixels, char *err, size_
     return 0;
 }
 
-/* The first segment of the scene the course's renderer cannot log
-** (seg_check), from the setup records of one pt_run(). */
-typedef struct kraft_check {
-    const pt_scene *s;
-    char *err;
-    size_t errlen;
-    int rc;
-} kraft_check;
-
-static void check_setup(void *ud, const pt_model *m, uint64_t seg, const pt_raster_setup *su)
+/* The course's unconditional lines alone (its debug switches scene and
+** position off): each shown model's warnings. */
+static int kraft_warnings(FILE *f, const pt_scene *s, char *err, size_t errlen)
 {
-    kraft_check *kc = ud;
+    size_t k;
 
-    if (kc->rc == 0) kc->rc = seg_check(kc->s, m, seg, su, kc->err, kc->errlen);
-}
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+        pt_journey *js;
 
-/* Check every segment of s as seg_check() does.  Returns 0, or -1 with a
-** message. */
-static int scene_check(const pt_scene *s, char *err, size_t errlen)
-{
-    kraft_check kc;
-    pt_options o;
-    pt_listener l;
-
-    kc.s = s; kc.err = err; kc.errlen = errlen; kc.rc = 0;
-    pt_options_default(&o);
-    memset(&l, 0, sizeof l);
-    l.setup = check_setup;       /* the setups alone: the walk skips, as ever */
-    l.ud = &kc;
-    if (pt_run_plain(s, &o, &l) != 0) {
-        snprintf(err, errlen, "pipetrace: out of memory");
-        return -1;
+        if (m->hidden_position || m->hidden_model) continue;
+        js = pt_run_journeys(s, m, 0);
+        if (!js) {
+            snprintf(err, errlen, "pipetrace: out of memory");
+            return -1;
+        }
+        put_warnings(f, m, js);
+        free(js);
     }
-    return kc.rc;
+    return 0;
 }
 
-int pt_kraft_write(FILE *f, const pt_scene *s, int pixels, char *err, size_t errlen)
+int pt_kraft_write(FILE *f, const pt_scene *s, unsigned dbg, char *err, size_t errlen)
 {
+    int shown = (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION)) != 0;   /* logMessage's test */
+    int pixels = shown && (dbg & PT_KDBG_RASTERIZE);
+
     if (pt_scene_pipeline(s) != &pt_pipe_classic) {
         snprintf(err, errlen, "%s: error: the course's renderer has no %s "
                  "('camera %s'), so there is no log of it to write: use --format "
@@ -373,10 +523,16 @@ int pt_kraft_write(FILE *f, const pt_scene *s, int pixels, char *err, size_t err
                  pt_scene_camera_word(s));
         return -1;
     }
-    if (pixels && scene_check(s, err, errlen) != 0) return -1;   /* nothing written */
-    fputs("\n== Begin Rendering of Scene:  ==\n-- Current Camera:\nCamera: \n", f);
-    fprintf(f, "perspective = %s\n", s->perspective ? "true" : "false");
+    if (pixels && pt_kraft_check(s, err, errlen) != 0) return -1;   /* nothing written */
+    if (!shown) return kraft_warnings(f, s, err, errlen);
+    if (dbg & PT_KDBG_SCENE) {   /* debugPosition is still false: the scene's alone */
+        fprintf(f, "\n== Begin Rendering of Scene: %s ==\n-- Current Camera:\nCamera: \n",
+                s->scene_name ? s->scene_name : "");
+        fprintf(f, "perspective = %s\n", s->perspective ? "true" : "false");
+    }
     if (kraft_models(f, s, pixels, err, errlen) != 0) return -1;
-    fputs("== End Rendering of Scene ==\n", f);
+    if ((dbg & PT_KDBG_SCENE) || s->nmodels > 0)    /* the last position's flag */
+        fputs("== End Rendering of Scene ==\n", f);
     return 0;
 }
+

@@ -15,9 +15,13 @@
 **                        pixel and index from the stages (pt_viewport2fb,
 **                        pt_fb2index: -1 outside the framebuffer)
 **   "Clip: fb_[...]"     a step of a clip run (consecutive clipped steps)
-**   "3. Pixel-plane: LineSegment"  which vertices the segments use: the log
-**                        lists every vertex, a trace only those; the others'
-**                        records are dropped
+**   "... x_vp=X {y_low=Y0 ...} {y_hi =Y1 ...}"  an anti-aliased pair: two
+**                        pixels (or clipped steps), each tested on its own
+**   "3. Pixel-plane: LineSegment" / "Point"  which vertices the primitives
+**                        use: the log lists every vertex, a trace only those;
+**                        the others' records are dropped
+**   "4. Rasterize: Point" and its pixel lines: passed over (a trace has no
+**                        record of a point's pixels)
 ** Its numbers have 5 decimals: prec is 5, so diff allows half a unit of the
 ** fifth decimal, as for a text trace.  The framebuffer and the viewport are
 ** known only from pixel lines: without them the header is not there
@@ -50,6 +54,8 @@ typedef struct kstate {
     int fb_w, fb_h, vp_x, vp_y, vp_w, vp_h;  /*   these */
     int ended;                   /* 1: "== End Rendering of Scene ==" was read */
     size_t vx0;                  /* index in vx of the model's first record */
+    int in_point;                /* 1: after "4. Rasterize: Point:", whose pixel
+                                 ** lines are not a segment's (not kept) */
     uint64_t *used;              /* vIndex + 1 of each segment end of the model */
     size_t nused, cap_used;      /*   (owned), how many, room */
 } kstate;
@@ -162,37 +168,10 @@ static int vertex_line(pt_treader *r, kstate *k, cur *c, int st)
 }
 
 /* A pixel line, c after "Clip: " or the six spaces; clipped: 1 for "Clip: ". */
-static int pixel_line(pt_treader *r, kstate *k, cur *c, int clipped)
+/* Keep the pixel at (viewport) as a pixel record, or count it into the clip
+** run being gathered when clipped. */
+static int take_pixel(pt_treader *r, kstate *k, pt_pix at, int clipped)
 {
-    int64_t v[8];
-    double d;
-    pt_pix at;
-    int i;
-    static const char *const lead[6] = {"fb_[w=", ",h=", "] vp_[x=", ", y=", ", w=", ",h="};
-
-    if (!k->have_model || k->seg == 0) return pt_tr_fail(r, r->line, "a pixel outside a segment");
-    for (i = 0; i < 6; i++)
-        if (!lit(c, lead[i]) || integer(r, c, &v[i])) return pt_tr_fail(r, c->p, "expected '%s'", lead[i]);
-    if (!lit(c, "]") || !lit(c, "(x_pp=") || num(r, c, &d) || !lit(c, ", y_pp=") ||
-        num(r, c, &d) || !lit(c, ")") || !lit(c, "(x_vp=") || integer(r, c, &v[6]) ||
-        !lit(c, ", y_vp=") || integer(r, c, &v[7]) || !lit(c, ")") || !lit(c, "r=") ||
-        num(r, c, &d) || !lit(c, "g=") || num(r, c, &d) || !lit(c, "b=") || num(r, c, &d))
-        return pt_tr_fail(r, c->p, "expected the rest of a pixel line");
-    if (end(r, c)) return -1;
-    for (i = 0; i < 6; i++)
-        if (v[i] < 0 || v[i] > INT32_MAX) return pt_tr_fail(r, r->line, "size out of range");
-    if (v[6] < INT32_MIN || v[6] > INT32_MAX || v[7] < INT32_MIN || v[7] > INT32_MAX)
-        return pt_tr_fail(r, r->line, "pixel out of range");
-    if (!k->have_fb) {
-        k->have_fb = 1;
-        k->fb_w = (int)v[0]; k->fb_h = (int)v[1];
-        k->vp_x = (int)v[2]; k->vp_y = (int)v[3]; k->vp_w = (int)v[4]; k->vp_h = (int)v[5];
-    } else if (v[0] != k->fb_w || v[1] != k->fb_h || v[2] != k->vp_x || v[3] != k->vp_y ||
-               v[4] != k->vp_w || v[5] != k->vp_h) {
-        return pt_tr_fail(r, r->line, "another framebuffer or viewport than on the log's "
-                          "first pixel line");
-    }
-    at.x = v[6]; at.y = v[7]; at.ok = 1;
     if (clipped) {
         if (k->run.count == 0) {
             memset(&k->run, 0, sizeof k->run);
@@ -220,15 +199,93 @@ static int pixel_line(pt_treader *r, kstate *k, cur *c, int clipped)
     }
 }
 
+/* " r=%.4f g=%.4f b=%.4f" */
+static int colour(pt_treader *r, cur *c)
+{
+    double d;
+
+    return !lit(c, "r=") || num(r, c, &d) || !lit(c, "g=") || num(r, c, &d) ||
+           !lit(c, "b=") || num(r, c, &d);
+}
+
+/* The rest of an anti-aliased pair's line, c after "(x_pp=.., y_pp=..)":
+** "x_vp=X {y_low=Y0 r g b} {y_hi =Y1 r g b}" (or y_vp, x_low, x_hi): the
+** two pixels in the order the course writes them, each clipped on its own
+** (the line's "Clip: " says only that one of them is). */
+static int pair_line(pt_treader *r, kstate *k, cur *c)
+{
+    int64_t at, lo, hi;
+    int ymajor;
+    pt_pix p;
+
+    if (lit(c, "x_vp=")) ymajor = 0;
+    else if (lit(c, "y_vp=")) ymajor = 1;
+    else return pt_tr_fail(r, c->p, "expected '(x_vp=', 'x_vp=' or 'y_vp='");
+    if (integer(r, c, &at) || !lit(c, ymajor ? "{x_low=" : "{y_low=") || integer(r, c, &lo) ||
+        colour(r, c) || !lit(c, "}") || !lit(c, ymajor ? "{x_hi =" : "{y_hi =") ||
+        integer(r, c, &hi) || colour(r, c) || !lit(c, "}"))
+        return pt_tr_fail(r, c->p, "expected the rest of an anti-aliased pair's line");
+    if (end(r, c)) return -1;
+    if (at < INT32_MIN || at > INT32_MAX || lo < INT32_MIN || lo > INT32_MAX ||
+        hi < INT32_MIN || hi > INT32_MAX)
+        return pt_tr_fail(r, r->line, "pixel out of range");
+    p.ok = 1;
+    p.x = ymajor ? lo : at; p.y = ymajor ? at : lo;
+    if (take_pixel(r, k, p, !pt_inside(p.x, p.y, k->vp_w, k->vp_h))) return -1;
+    p.x = ymajor ? hi : at; p.y = ymajor ? at : hi;
+    return take_pixel(r, k, p, !pt_inside(p.x, p.y, k->vp_w, k->vp_h));
+}
+
+static int pixel_line(pt_treader *r, kstate *k, cur *c, int clipped)
+{
+    int64_t v[8];
+    double d;
+    pt_pix at;
+    int i;
+    static const char *const lead[6] = {"fb_[w=", ",h=", "] vp_[x=", ", y=", ", w=", ",h="};
+
+    if (!k->have_model || k->seg == 0) return pt_tr_fail(r, r->line, "a pixel outside a segment");
+    for (i = 0; i < 6; i++)
+        if (!lit(c, lead[i]) || integer(r, c, &v[i])) return pt_tr_fail(r, c->p, "expected '%s'", lead[i]);
+    if (!lit(c, "]") || !lit(c, "(x_pp=") || num(r, c, &d) || !lit(c, ", y_pp=") ||
+        num(r, c, &d) || !lit(c, ")"))
+        return pt_tr_fail(r, c->p, "expected the rest of a pixel line");
+    for (i = 0; i < 6; i++)
+        if (v[i] < 0 || v[i] > INT32_MAX) return pt_tr_fail(r, r->line, "size out of range");
+    if (!k->have_fb) {
+        k->have_fb = 1;
+        k->fb_w = (int)v[0]; k->fb_h = (int)v[1];
+        k->vp_x = (int)v[2]; k->vp_y = (int)v[3]; k->vp_w = (int)v[4]; k->vp_h = (int)v[5];
+    } else if (v[0] != k->fb_w || v[1] != k->fb_h || v[2] != k->vp_x || v[3] != k->vp_y ||
+               v[4] != k->vp_w || v[5] != k->vp_h) {
+        return pt_tr_fail(r, r->line, "another framebuffer or viewport than on the log's "
+                          "first pixel line");
+    }
+    if (!lit(c, "(x_vp=")) return pair_line(r, k, c);
+    if (integer(r, c, &v[6]) || !lit(c, ", y_vp=") || integer(r, c, &v[7]) || !lit(c, ")") ||
+        colour(r, c))
+        return pt_tr_fail(r, c->p, "expected the rest of a pixel line");
+    if (end(r, c)) return -1;
+    if (v[6] < INT32_MIN || v[6] > INT32_MAX || v[7] < INT32_MIN || v[7] > INT32_MAX)
+        return pt_tr_fail(r, r->line, "pixel out of range");
+    at.x = v[6]; at.y = v[7]; at.ok = 1;
+    return take_pixel(r, k, at, clipped);
+}
+
 /* "3. Pixel-plane: LineSegment: ([a, b], [a, b])", c after "LineSegment:":
 ** note that a and b are used. */
-static int segment_line(pt_treader *r, kstate *k, cur *c)
+static int segment_line(pt_treader *r, kstate *k, cur *c, int point)
 {
     int64_t a, b;
     int e;
 
     if (!k->have_model) return pt_tr_fail(r, r->line, "a segment outside a model");
-    if (!lit(c, "([") || integer(r, c, &a) || !lit(c, ",") || integer(r, c, &b) || !lit(c, "]"))
+    if (point) {                                     /* "Point: ([v], [c]) ...": v */
+        if (!lit(c, "([") || integer(r, c, &a) || !lit(c, "]"))
+            return pt_tr_fail(r, c->p, "expected '([v]'");
+        b = a;
+    } else if (!lit(c, "([") || integer(r, c, &a) || !lit(c, ",") || integer(r, c, &b) ||
+               !lit(c, "]"))
         return pt_tr_fail(r, c->p, "expected '([a, b]'");
     if (a < 0 || b < 0 || a >= INT64_MAX || b >= INT64_MAX)
         return pt_tr_fail(r, r->line, "vIndex out of range");
@@ -245,7 +302,7 @@ static int cmp_u64(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* At the end of a model: drop the records of its vertices no segment uses,
+/* At the end of a model: drop the records of its vertices no segment or point uses,
 ** which a trace does not transform either (the log lists every vertex). */
 static void drop_unused(pt_treader *r, kstate *k)
 {
@@ -278,12 +335,16 @@ static int skipped_line(cur *c)
         "== Begin Rendering of Scene:", "-- Current Camera:", "Camera:",
         "(x0_pp, y0_pp) = (", "(x1_pp, y1_pp) = (", "(x0_vp, y0_vp) = (",
         "(x1_vp, y1_vp) = (", "Slope m", "   vIndex = ", "   cIndex = ",
-        "***WARNING:", "FrameBuffer: Bad pixel coordinate", "Incorrect primitive:"};
+        "***WARNING:", "FrameBuffer: Bad pixel coordinate", "Incorrect primitive:",
+        "Model: ", "This Model's visibility is: ", "Model has ", "(x_pp, y_pp) = (",
+        "==== Hidden position: ", "====== Hidden model: "};
+    const char *p = c->p;
     size_t i;
 
     for (i = 0; i < sizeof lines / sizeof lines[0]; i++)
         if (lit(c, lines[i])) return 1;
-    return 0;
+    while (p < c->e && *p >= '0' && *p <= '9') p++;  /* "N: ..." of Model.toString */
+    return p > c->p && c->e - p >= 2 && p[0] == ':' && p[1] == ' ';
 }
 
 /* 1 when the text p..e holds w. */
@@ -326,7 +387,8 @@ static int kraft_line(pt_treader *r, kstate *k)
             cur peek = d;
             if (lit(&peek, "vIndex")) return vertex_line(r, k, &d, st);
         }
-        if (st == PT_STAGE_PIXEL && lit(&d, "LineSegment:")) return segment_line(r, k, &d);
+        if (st == PT_STAGE_PIXEL && lit(&d, "LineSegment:")) return segment_line(r, k, &d, 0);
+        if (st == PT_STAGE_PIXEL && lit(&d, "Point:")) return segment_line(r, k, &d, 1);
         if (st == PT_STAGE_PIXEL) return 0;           /* its colours, "[]" */
         return pt_tr_fail(r, d.p, "expected 'vIndex ='");
     }
@@ -366,7 +428,18 @@ static int kraft_line(pt_treader *r, kstate *k)
         if (!k->have_model) return pt_tr_fail(r, r->line, "a segment outside a model");
         if (flush_run(r, k)) return -1;
         k->seg++;
+        k->in_point = 0;
         return 0;
+    }
+    if (lit(&c, "4. Rasterize: Point:")) {
+        if (!k->have_model) return pt_tr_fail(r, r->line, "a point outside a model");
+        if (flush_run(r, k)) return -1;
+        k->in_point = 1;
+        return 0;
+    }
+    {   /* a point's pixels are not kept: a trace has none (docs/renderer4.md) */
+        cur d = c;
+        if ((lit(&d, "Clip: ") || lit(&d, "      fb_[")) && k->in_point) return 0;
     }
     if (memmem_lit(c.p, c.e, "{y_low=") || memmem_lit(c.p, c.e, "{x_low="))
         return unread(r);                            /* anti-aliased: not compared */
@@ -377,6 +450,7 @@ static int kraft_line(pt_treader *r, kstate *k)
         if (flush_run(r, k)) return -1;
         drop_unused(r, k);
         k->have_model = 0;
+        k->in_point = 0;
         return 0;
     }
     if (lit(&c, "==== End position: ")) return 0;

@@ -104,11 +104,11 @@ typedef struct cli {
     int precision;
     int raster_chosen;           /* --stage raster given */
     int explain;                 /* --explain */
-    int threads;                 /* --threads, or 0: threads_wanted() decides */
-    int staged;                  /* --stage given */
     int fmt_given;               /* 1: --format given */
     int kdbg_given;              /* 1: --kraft-debug given */
     unsigned kdbg;               /* the course's debug switches (PT_KDBG_*) */
+    int threads;                 /* --threads, or 0: threads_wanted() decides */
+    int staged;                  /* --stage given */
     pt_options opt;
 } cli;
 
@@ -130,30 +130,6 @@ static int mistyped_command(const char *scene)
     if (!pt_cli_nearest(scene, names, near, sizeof near)) return 0;
     pt_cli_usage(NULL, "no command or scene file '%s' (did you mean '%s'?)", scene, near);
     return 1;
-}
-
-/* The course's debug flags of list ("scene,clip" or "scene clip"; all, none)
-** into *out.  0, or -1 for a word it does not know. */
-static int kraft_debug(const char *list, unsigned *out)
-{
-    static const struct { const char *name; unsigned bits; } words[] = {
-        {"scene", PT_KDBG_SCENE}, {"position", PT_KDBG_POSITION},
-        {"rasterize", PT_KDBG_RASTERIZE}, {"clip", PT_KDBG_CLIP},
-        {"nearclip", PT_KDBG_NEARCLIP}, {"all", PT_KDBG_ALL}, {"none", 0}};
-    const char *p = list;
-    unsigned bits = 0;
-
-    while (*p) {
-        size_t n = strcspn(p, ", "), k;
-        for (k = 0; k < sizeof words / sizeof words[0]; k++)
-            if (n > 0 && strlen(words[k].name) == n && !strncmp(p, words[k].name, n)) break;
-        if (n > 0 && k == sizeof words / sizeof words[0]) return -1;
-        if (n > 0) bits |= words[k].bits;
-        p += n;
-        if (*p) p++;
-    }
-    *out = bits;
-    return 0;
 }
 
 /* Fill *c from argv.  Returns -1 to go on, else the exit status. */
@@ -186,7 +162,7 @@ static int parse_args(cli *c, int argc, char **argv)
         else if (!strcmp(a, "--trace")) c->trace = val;
         else if (!strcmp(a, "--model")) c->opt.model = val;
         else if (!strcmp(a, "--kraft-debug")) {
-            if (kraft_debug(val, &c->kdbg) != 0)
+            if (pt_kraft_debug_parse(val, &c->kdbg) != 0)
                 return usage_error("--kraft-debug takes a comma-separated list of scene, "
                                    "position, rasterize, clip, nearclip, all, none, not '%s'",
                                    val);
@@ -450,7 +426,7 @@ static int run(int argc, char **argv)
         rc = 1;
     }
     if (!rc && c.trace && kraft &&
-        pt_kraft_write(tout.f, &s, c.fmt == PT_FORMAT_KRAFT_PIXELS, err, sizeof err) != 0)
+        pt_kraft_write(tout.f, &s, c.kdbg, err, sizeof err) != 0)
         rc = 1;
     else if (!rc && c.trace && kraft) {
         errno = 0;                          /* what the last write said, if one failed */

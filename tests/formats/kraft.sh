@@ -2,12 +2,13 @@
 # tests/formats/kraft.sh -- the course renderer's debug log: --format kraft, kraft-pixels
 # See LICENSE for copyright and license.
 #
-# Usage: sh tests/formats/kraft.sh PIPETRACE [REFERENCE_DIR].  Run from the repository
-# root.  REFERENCE_DIR (default tests/reference) holds the 39 reference scenes
+# Usage: sh tests/formats/kraft.sh PIPETRACE.  Run from the repository
+# root.  tests/reference holds the 39 reference scenes
 # and kraftlog/, the course renderer's own logs of them (kraftlog/README.md):
 # every log must come out byte for byte.
 exe=$1
-ref=${2:-tests/reference}
+ref=tests/reference          # the logs of this version (a second argument, an older
+                             # copy of the reference cases, is not used)
 . tests/lib/testlib.sh
 
 # ---- kraft-1: the course's logs, byte for byte
