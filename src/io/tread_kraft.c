@@ -27,7 +27,7 @@
 ** known only from pixel lines: without them the header is not there
 ** (hdr.have 0) and the other trace's is used.  Every other line of the log
 ** is checked for its form.  A line of a kind the log's reader does not know
-** (a student's own output, the anti-aliased pixel lines, text after the end)
+** (a student's own output, text after the end)
 ** is not read, only counted (pt_tread.unread): a log as a student's program
 ** prints it is never refused for it.
 */
@@ -347,16 +347,6 @@ static int skipped_line(cur *c)
     return p > c->p && c->e - p >= 2 && p[0] == ':' && p[1] == ' ';
 }
 
-/* 1 when the text p..e holds w. */
-static int memmem_lit(const char *p, const char *e, const char *w)
-{
-    size_t n = strlen(w);
-
-    for (; (size_t)(e - p) >= n; p++)
-        if (*p == *w && memcmp(p, w, n) == 0) return 1;
-    return 0;
-}
-
 /* A line not read: counted, and the first one's number kept. */
 static int unread(pt_treader *r)
 {
@@ -441,8 +431,6 @@ static int kraft_line(pt_treader *r, kstate *k)
         cur d = c;
         if ((lit(&d, "Clip: ") || lit(&d, "      fb_[")) && k->in_point) return 0;
     }
-    if (memmem_lit(c.p, c.e, "{y_low=") || memmem_lit(c.p, c.e, "{x_low="))
-        return unread(r);                            /* anti-aliased: not compared */
     if (lit(&c, "Clip: ")) return pixel_line(r, k, &c, 1);
     if (lit(&c, "      fb_[")) { c.p -= 4; return pixel_line(r, k, &c, 0); }
     if (lit(&c, "====== End model: ")) {

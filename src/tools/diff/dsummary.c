@@ -83,7 +83,7 @@ void pt_diff_print_intro(const dctx *c)
     for (s = 0; s < 2; s++)
         if (c->t[s].unread)
             printf("Note: %" PRIu64 " line%s of %s (the first: line %" PRIu64 ") %s not a kind "
-                   "of line diff reads (a program's own output, anti-aliased pixel lines): "
+                   "of line diff reads (a program's own output): "
                    "passed over, not compared.\n", c->t[s].unread, c->t[s].unread == 1 ? "" : "s",
                    pt_diff_side[s], c->t[s].unread_line, c->t[s].unread == 1 ? "is" : "are");
     memset(&sb, 0, sizeof sb);
