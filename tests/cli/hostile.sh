@@ -161,4 +161,35 @@ check "hostile-7.5 a model named =1+1 in a CSV trace: a text cell" \
     test "$(grep -c "^\"'=1+1\"," "$tmp/f.csv")" -gt 0 -a "$(grep -c '^=' "$tmp/f.csv")" = 0
 check "hostile-7.6 ... and @x too" test "$(grep -c '^@' "$tmp/f.csv")" = 0 -a "$(grep -c "^\"'@x\"," "$tmp/f.csv")" -gt 0
 
+# ---- SVG and HTML: one escaping (pt_sbuf_add_xml) for every untrusted text
+# A model name with U+FFFE and U+FFFF (XML forbids both) in a folder whose
+# name holds a control byte and a byte that is not UTF-8: every picture must
+# still be well-formed XML, the characters written as U+FFFD (in the page's
+# JSON as \ufffe, the same character in ASCII).
+bad="$tmp/p$(printf '\001')q$(printf '\033')"
+mkdir "$bad"
+printf 'framebuffer 20 10\nmodel a\357\277\276b\357\277\277c\ntranslate 0 0 -2\nv 0 0 0\nv 1 1 0\nl 1 2\n' \
+    > "$bad/x$(printf '\377').scene"
+"$exe" journey "$bad/x$(printf '\377').scene" --vertex 1 --svg "$tmp/j9.svg" --html "$tmp/j9.html" 2> "$tmp/err"; rc=$?
+check "hostile-9.1 journey of a model named with U+FFFE, U+FFFF from a path with \\x01, ESC, \\xff: exit 0 ($rc)" test "$rc" = 0
+noraw() {   # noraw FILE: none of U+FFFE, U+FFFF, \x01, ESC, or a \xff byte in FILE
+    ! grep -q "$(printf '\357\277\276\|\357\277\277\|\001\|\033\|\377')" "$1"
+}
+check "hostile-9.2 ... the SVG holds none of them raw" noraw "$tmp/j9.svg"
+check "hostile-9.3 ... nor the HTML page" noraw "$tmp/j9.html"
+check "hostile-9.4 ... the name in the SVG with U+FFFD for each" \
+    grep -q "a$(printf '\357\277\275')b$(printf '\357\277\275')c" "$tmp/j9.svg"
+check "hostile-9.5 ... and in the page's data as \\ufffe, \\uffff" grep -qF 'a\ufffeb\uffffc' "$tmp/j9.html"
+"$exe" accuracy "$bad/x$(printf '\377').scene" --svg "$tmp/a9.svg" > /dev/null 2> "$tmp/err"; rc=$?
+check "hostile-9.6 accuracy --svg of that scene: exit 0 ($rc)" test "$rc" = 0
+check "hostile-9.7 ... the SVG holds no control byte or bad UTF-8 from the path" noraw "$tmp/a9.svg"
+if command -v python3 > /dev/null 2>&1; then
+    for f in j9.svg a9.svg; do
+        check "hostile-9.8 $f is well-formed XML" python3 -c 'import sys, xml.dom.minidom
+xml.dom.minidom.parse(sys.argv[1])' "$tmp/$f"
+    done
+else
+    echo "  skipped: python3 is not installed (hostile-9.8)"
+fi
+
 report

@@ -36,6 +36,7 @@
 #include "tools/cli.h"
 #include "tools/commands.h"
 #include "io/outfile.h"
+#include "io/sbuf.h"
 #include "core/pipetrace.h"
 
 
@@ -519,17 +520,21 @@ static box text_box(double x, double y, size_t n, double fs, int anchor)
     return b;
 }
 
-/* s with &, <, >, " escaped for XML text and attributes. */
+/* s made safe for XML text and attributes by pt_sbuf_add_xml(): the scene's
+** path may hold any byte.  Should its few bytes not be allocated, each byte
+** but [A-Za-z0-9 ./_-] is written as '?': less, but still well-formed. */
 static void xml_text(FILE *f, const char *s)
 {
-    for (; *s; s++)
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default: fputc(*s, f);
-        }
+    pt_sbuf b;
+
+    pt_sbuf_init(&b);
+    pt_sbuf_add_xml(&b, s);
+    if (!b.failed) fputs(b.s ? b.s : "", f);
+    else
+        for (; *s; s++)
+            fputc(strchr(" ./_-", *s) || (*s >= '0' && *s <= '9') || (*s >= 'a' && *s <= 'z')
+                  || (*s >= 'A' && *s <= 'Z') ? *s : '?', f);
+    pt_sbuf_free(&b);
 }
 
 static int add_point(point *p, int n, int series, const char *choice, const char *name,
