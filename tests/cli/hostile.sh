@@ -192,4 +192,23 @@ else
     echo "  skipped: python3 is not installed (hostile-9.8)"
 fi
 
+# ---- a model name holds no format character: one that turns or hides text
+# (a name that shows as "cube" must be "cube"), each said at its column
+for c in '342 200 256:202E' '342 200 216:200E' '342 200 217:200F' '342 201 246:2066' \
+         '342 201 251:2069' '357 273 277:FEFF' '342 200 213:200B' '302 255:00AD' '363 240 200 201:E0001'; do
+    bytes=$(printf '\%s' ${c%%:*})
+    printf 'model ab%s\nv 0 0 -1\n' "$(printf "$bytes")" > "$tmp/cf.scene"
+    run "$tmp/cf.scene"
+    check "hostile-10.1 model name with U+${c#*:}: exit 2 (got $rc)" test "$rc" = 2
+    check "hostile-10.2 ... one message at its column" \
+        test "$err" = "$tmp/cf.scene:1:9: error: a model name may not contain U+${c#*:}, a format character (it turns or hides text)"
+done
+printf 'model caf\303\251_\316\273\nv 0 0 -1\n' > "$tmp/cf.scene"
+run "$tmp/cf.scene"
+check "hostile-10.3 other non-ASCII letters stay allowed (exit $rc)" test "$rc" = 0
+cp docs/examples/tetra.obj "$tmp/a$(printf '\342\200\256')b.obj"
+run "$tmp/a$(printf '\342\200\256')b.obj"
+check "hostile-10.4 a plain OBJ file whose name holds U+202E: model 'obj', not its file name" \
+    grep -q '^model        obj: ' "$tmp/out"
+
 report
