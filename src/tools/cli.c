@@ -64,6 +64,22 @@ int pt_cli_outputs(const char *scene, const char *const *out, const char *const 
     return 0;
 }
 
+int pt_cli_outputs_objs(const pt_scene *s, const char *const *out, const char *const *opt,
+                        int n)
+{
+    const char *const *objs = (const char *const *)s->objs;
+    size_t j;
+    int k;
+
+    for (k = 0; k < n; k++)
+        if (out[k] && (j = pt_outfile_among(out[k], objs, s->nobjs)) < s->nobjs) {
+            fprintf(stderr, "%s: error: %s names '%s', an OBJ file the scene reads; "
+                    "writing it would destroy it\n", out[k], opt[k], objs[j]);
+            return PT_EXIT_INPUT;
+        }
+    return 0;
+}
+
 const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *name)
 {
     size_t k;

@@ -50,6 +50,12 @@ int pt_cli_load(pt_scene *s, const char *path);
 ** Prints "OUT: error: ..." and returns PT_EXIT_INPUT, else returns 0. */
 int pt_cli_outputs(const char *scene, const char *const *out, const char *const *opt, int n);
 
+/* The same, once the scene s is read, for the OBJ files it read (device and
+** inode, links followed).  Prints "OUT: error: OPT names 'OBJ', an OBJ file
+** the scene reads; ..." and returns PT_EXIT_INPUT, else returns 0. */
+int pt_cli_outputs_objs(const pt_scene *s, const char *const *out, const char *const *opt,
+                        int n);
+
 /* The model called name.  Prints "pipetrace CMD: --model NAME: ..." (cmd
 ** NULL: "pipetrace: --model ...") with the scene's model names and returns NULL
 ** when there is none. */

@@ -211,4 +211,30 @@ run "$tmp/a$(printf '\342\200\256')b.obj"
 check "hostile-10.4 a plain OBJ file whose name holds U+202E: model 'obj', not its file name" \
     grep -q '^model        obj: ' "$tmp/out"
 
+# ---- no output over an input of the run: the OBJ files the scene reads
+# (by device and inode, through a link too), for every command that writes one
+mkdir "$tmp/inc"
+cp docs/examples/obj-include.scene docs/examples/tetra.obj "$tmp/inc/"
+cp "$tmp/inc/tetra.obj" "$tmp/tetra.orig"
+ln -s tetra.obj "$tmp/inc/link.obj"
+for c in "--image $tmp/inc/tetra.obj:--image" "--trace $tmp/inc/tetra.obj:--trace" \
+         "--trace $tmp/inc/link.obj:--trace" "--image $tmp/inc/link.obj --trace $tmp/inc/t.txt:--image" \
+         "journey --vertex 1 --svg $tmp/inc/tetra.obj:--svg" \
+         "journey --vertex 1 --html $tmp/inc/link.obj:--html" \
+         "journey --vertex 1 --image $tmp/inc/tetra.obj:--image" \
+         "accuracy --repeat 1 --svg $tmp/inc/tetra.obj:--svg"; do
+    args=${c%:*}; opt=${c##*:}
+    case $args in journey*|accuracy*) set -- ${args%% *} "$tmp/inc/obj-include.scene" ${args#* } ;;
+                  *) set -- "$tmp/inc/obj-include.scene" $args ;; esac
+    "$exe" "$@" > "$tmp/out" 2> "$tmp/err"; rc=$?
+    check "hostile-11.1 pipetrace $args: refused over the scene's OBJ file (exit $rc)" test "$rc" = 2
+    check "hostile-11.2 ... one message naming $opt and the OBJ file" \
+        grep -q "error: $opt names '.*tetra.obj', an OBJ file the scene reads; writing it would destroy it" "$tmp/err"
+    check "hostile-11.3 ... the OBJ file kept" cmp -s "$tmp/tetra.orig" "$tmp/inc/tetra.obj"
+done
+check "hostile-11.4 ... and no other output written" test ! -e "$tmp/inc/t.txt"
+run "$tmp/inc/obj-include.scene" --image "$tmp/inc/other.obj"
+check "hostile-11.5 an output beside the OBJ file, not one of the scene's: written (exit $rc)" \
+    sh -c 'test "$1" = 0 && test -s "$2"' _ "$rc" "$tmp/inc/other.obj"
+
 report

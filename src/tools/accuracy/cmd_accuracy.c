@@ -824,6 +824,10 @@ int pt_cmd_accuracy(int argc, char **argv)
     if (pt_cli_outputs(path, &svg, (const char *const[]){"--svg"}, 1) != 0) return PT_EXIT_INPUT;
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
+    if (pt_cli_outputs_objs(&s, &svg, (const char *const[]){"--svg"}, 1) != 0) {
+        pt_scene_free(&s);
+        return PT_EXIT_INPUT;
+    }
     st = calloc(1, sizeof *st);
     if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return PT_EXIT_INPUT; }
     st->s = &s;
