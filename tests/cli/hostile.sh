@@ -237,4 +237,18 @@ run "$tmp/inc/obj-include.scene" --image "$tmp/inc/other.obj"
 check "hostile-11.5 an output beside the OBJ file, not one of the scene's: written (exit $rc)" \
     sh -c 'test "$1" = 0 && test -s "$2"' _ "$rc" "$tmp/inc/other.obj"
 
+# ---- the scene fuzz target reads no file of the host: an `obj PATH` line
+# reads one of its own private folder (tests/fuzz/fuzz_scene.c); its corpus
+# holds obj /etc/passwd, /dev/zero, paths out of the tree
+fuzz=$(dirname "$exe")/test_fuzz
+if [ -x "$fuzz" ] && command -v strace > /dev/null 2>&1; then
+    strace -f -qq -e trace=open,openat -o "$tmp/fstrace" "$fuzz" > "$tmp/fout" 2>&1; rc=$?
+    check "hostile-12.1 the scene fuzz target replays obj /etc/passwd and /dev/zero as correct refusals (exit $rc)" \
+        test "$rc" = 0
+    check "hostile-12.2 ... and opens neither" sh -c "! grep -q '\"/etc/passwd\"\\|\"/dev/zero\"\\|\\.\\./etc/passwd' '$tmp/fstrace'"
+    check "hostile-12.3 ... its obj lines read its own folder" grep -q 'pt-fuzz-scene-.*/good.obj' "$tmp/fstrace"
+else
+    echo "  skipped: $fuzz is not built or strace is not installed (hostile-12.1 .. 12.3)"
+fi
+
 report
