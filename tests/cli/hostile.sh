@@ -251,4 +251,25 @@ else
     echo "  skipped: $fuzz is not built or strace is not installed (hostile-12.1 .. 12.3)"
 fi
 
+# ---- tests that see a change (make mutate, tests/mutate/): diff's edges
+# A text trace prints 1e15 as 1.000000e+15 ("%.Ne" from 1e15 up): half a unit
+# of its last digit is 5e8, so an exact 1000000100000000 agrees with it.
+printf 'framebuffer 20 10\nmodel m\nv 1e15 0 -1\nv 0 0 -1\nl 1 2\n' > "$tmp/e15.scene"
+"$exe" "$tmp/e15.scene" --all-stages --trace "$tmp/e15.trace"
+"$exe" "$tmp/e15.scene" --all-stages --format jsonl --trace "$tmp/e15.jsonl"
+for x in 1000000100000000:0 1000000600000000:1; do
+    sed "s/\"v\":1,\"stage\":\"model\",\"x\":1e+15/\"v\":1,\"stage\":\"model\",\"x\":${x%:*}/" \
+        "$tmp/e15.jsonl" > "$tmp/e15b.jsonl"
+    "$exe" diff "$tmp/e15.trace" "$tmp/e15b.jsonl" > "$tmp/out" 2>&1; rc=$?
+    check "hostile-13.1 diff: x_m = 1.000000e+15 printed against ${x%:*} exact: exit ${x#*:} (got $rc)" \
+        test "$rc" = "${x#*:}"
+done
+# the picture moved one pixel right: its last column leaves the framebuffer
+# at x = W exactly, and the rest is still a shift
+printf 'P3\n4 2\n255\n0 0 0  255 255 255  0 0 0  255 255 255\n0 0 0  0 0 0  0 0 0  0 0 0\n' > "$tmp/e.ppm"
+printf 'P3\n4 2\n255\n0 0 0  0 0 0  255 255 255  0 0 0\n0 0 0  0 0 0  0 0 0  0 0 0\n' > "$tmp/a.ppm"
+"$exe" diff "$tmp/e.ppm" "$tmp/a.ppm" > "$tmp/out" 2>&1; rc=$?
+check "hostile-13.2 diff: a picture moved right by one whose pixel leaves at x = W: a shift (exit $rc)" \
+    sh -c 'test "$1" = 1 && grep -q "ACTUAL is EXPECTED moved by (1, 0)" "$2"' _ "$rc" "$tmp/out"
+
 report
