@@ -56,6 +56,19 @@ int pt_cli_outputs(const char *scene, const char *const *out, const char *const 
 int pt_cli_outputs_objs(const pt_scene *s, const char *const *out, const char *const *opt,
                         int n);
 
+/* The most vertices and segments, each summed over a scene's models, that
+** the commands keeping every vertex's journey in memory take (journey, why,
+** accuracy: some 2 KB a vertex, so about 200 MB at the cap); beyond, they
+** refuse the scene at once (docs/limits.md).  The render command has no such
+** cap: it keeps no journey.  (journey and accuracy also keep the pixels a
+** run draws: PT_JOURNEY_MAXPIX, PT_ACC_MAXPIX.) */
+#define PT_CLI_KEEP_VERTICES 100000
+#define PT_CLI_KEEP_SEGMENTS 400000
+
+/* Refuse s when it holds more than the caps above: prints "pipetrace CMD:
+** SCENE has N vertices; ..." and returns PT_EXIT_INPUT, else returns 0. */
+int pt_cli_keep_cap(const pt_scene *s, const char *cmd);
+
 /* The model called name.  Prints "pipetrace CMD: --model NAME: ..." (cmd
 ** NULL: "pipetrace: --model ...") with the scene's model names and returns NULL
 ** when there is none. */

@@ -264,12 +264,47 @@ for x in 1000000100000000:0 1000000600000000:1; do
     check "hostile-13.1 diff: x_m = 1.000000e+15 printed against ${x%:*} exact: exit ${x#*:} (got $rc)" \
         test "$rc" = "${x#*:}"
 done
-# the picture moved one pixel right: its last column leaves the framebuffer
-# at x = W exactly, and the rest is still a shift
-printf 'P3\n4 2\n255\n0 0 0  255 255 255  0 0 0  255 255 255\n0 0 0  0 0 0  0 0 0  0 0 0\n' > "$tmp/e.ppm"
-printf 'P3\n4 2\n255\n0 0 0  0 0 0  255 255 255  0 0 0\n0 0 0  0 0 0  0 0 0  0 0 0\n' > "$tmp/a.ppm"
-"$exe" diff "$tmp/e.ppm" "$tmp/a.ppm" > "$tmp/out" 2>&1; rc=$?
-check "hostile-13.2 diff: a picture moved right by one whose pixel leaves at x = W: a shift (exit $rc)" \
-    sh -c 'test "$1" = 1 && grep -q "ACTUAL is EXPECTED moved by (1, 0)" "$2"' _ "$rc" "$tmp/out"
+# a trace's pixels moved by (1, 1): the last of its row leaves the
+# framebuffer at x = W exactly, and the rest is still a shift
+printf 'framebuffer 10 4\nmodel m\nv -0.999 0 -1\nv 0.999 0 -1\nl 1 2\n' > "$tmp/row.scene"
+"$exe" "$tmp/row.scene" --format jsonl --image /dev/null --trace "$tmp/row.jsonl"
+awk -F'"x":' '/"type":"pixel"/ { split($2, a, ","); x = a[1] + 1; if (x >= 10) next
+    sub(/"x":[0-9]+,"y":2,"i":[0-9]+/, "\"x\":" x ",\"y\":3,\"i\":" (30 + x)) } { print }' \
+    "$tmp/row.jsonl" > "$tmp/row2.jsonl"
+"$exe" diff "$tmp/row.jsonl" "$tmp/row2.jsonl" > "$tmp/out" 2>&1; rc=$?
+check "hostile-13.2 diff: a row of pixels x = 0 .. 9 moved by (1, 1) in a 10-wide framebuffer: a shift (exit $rc)" \
+    sh -c 'test "$1" = 1 && grep -q "all of them moved by (1, 1)" "$2"' _ "$rc" "$tmp/out"
+check "hostile-13.3 ... one of them out of the framebuffer" \
+    sh -c 'tr "\n" " " < "$1" | grep -q "1 of them out of the *framebuffer"' _ "$tmp/out"
+
+# ---- journey, why and accuracy keep every vertex's journey: a cap on the
+# scene (PT_CLI_KEEP_VERTICES, _SEGMENTS) and on the pixels kept, each said
+# at once (one `shape sphere 1 1400 1400` line took 3 GB before)
+printf 'model s\nshape sphere 1 1400 1400\ntranslate 0 0 -3\n' > "$tmp/sphere.scene"
+for c in "journey --vertex 1 --svg $tmp/sph.svg" "why 200 150" "accuracy --no-time"; do
+    cmd=${c%% *}
+    lim "${cap:-unlimited}" "'$exe' $cmd '$tmp/sphere.scene' ${c#* }"
+    check "hostile-14.1 $cmd of a 1,960,002-vertex sphere: refused (exit $rc), under a 400 MB cap" test "$rc" = 2
+    check "hostile-14.2 ... saying the cap" test "$(cat "$tmp/err")" = \
+        "pipetrace $cmd: $tmp/sphere.scene has 1960002 vertices; $cmd keeps every vertex's journey in memory and takes at most 100000 vertices and 400000 segments (docs/limits.md)"
+done
+check "hostile-14.3 ... and no picture" test ! -e "$tmp/sph.svg"
+{ echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'l 1 2'; } > "$tmp/cap.scene"
+run why "$tmp/cap.scene" 1 1
+check "hostile-14.4 why of 100,000 vertices (the cap): done (exit $rc)" test "$rc" = 0
+{ echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'model n'; echo 'v 0 0 -1'; } > "$tmp/cap1.scene"
+run why "$tmp/cap1.scene" 1 1
+check "hostile-14.5 ... 100,001 in two models: refused" \
+    sh -c 'test "$1" = 2 && grep -q "has 100001 vertices" "$2"' _ "$rc" "$tmp/err"
+{ echo 'model m'; echo 'v 0 0 -1'; yes 'l 1 1' | head -n 400001; } > "$tmp/cap2.scene"
+run journey "$tmp/cap2.scene" --vertex 1 --svg "$tmp/c2.svg"
+check "hostile-14.6 journey of 400,001 segments: refused" \
+    sh -c 'test "$1" = 2 && grep -q "has 400001 segments" "$2"' _ "$rc" "$tmp/err"
+{ printf 'framebuffer 16384 16384\nmodel m\nv -0.99 -0.99 -1\nv 0.99 0.99 -1\n'
+  yes 'l 1 2' | head -n 600; } > "$tmp/px.scene"
+lim "${cap:-unlimited}" "'$exe' journey '$tmp/px.scene' --vertex 1 --svg '$tmp/px.svg'"
+check "hostile-14.7 journey of 600 diagonals of a 16384 x 16384 framebuffer (9.8 M pixels): refused (exit $rc)" \
+    test "$rc" = 2
+check "hostile-14.8 ... saying the pixel cap" grep -q "^pipetrace journey: a model of .* draws more than 8000000 pixels; journey keeps them in memory and takes at most that many (docs/limits.md)$" "$tmp/err"
 
 report

@@ -19,11 +19,12 @@ scratch=$(mktemp -d "${TMPDIR:-/tmp}/pipetrace-mutate-XXXXXX") || exit 2
 trap 'rm -rf "$scratch"' EXIT
 trap 'exit 130' INT TERM HUP
 tar -cf - --exclude=./.git --exclude='./build-*' . | tar -xf - -C "$scratch" || exit 2
+rm -f "$scratch/build/pixelpath.c"      # it names the sources by absolute path
 
 # the lines of the list: ID FILE EXPR GROUPS, one a line, tab-separated
 sed -e '/^#/d' -e '/^[[:space:]]*$/d' \
     -e 's/[[:space:]]*::[[:space:]]*/	/g' "$list" > "$scratch/.mutations"
-wanted() { [ $# -eq 0 ] && return 0; w=$1; shift; for i; do [ "$i" = "$w" ] && return 0; done; return 1; }
+wanted() { w=$1; shift; [ $# -eq 0 ] && return 0; for i; do [ "$i" = "$w" ] && return 0; done; return 1; }
 build() { make -C "$scratch" -j2 $progs > "$scratch/.build.log" 2>&1; }
 groups=$(cut -f4 "$scratch/.mutations" | tr ' ' '\n' | sort -u | tr '\n' ' ')
 

@@ -824,7 +824,8 @@ int pt_cmd_accuracy(int argc, char **argv)
     if (pt_cli_outputs(path, &svg, (const char *const[]){"--svg"}, 1) != 0) return PT_EXIT_INPUT;
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (pt_cli_outputs_objs(&s, &svg, (const char *const[]){"--svg"}, 1) != 0) {
+    if (pt_cli_outputs_objs(&s, &svg, (const char *const[]){"--svg"}, 1) != 0
+        || pt_cli_keep_cap(&s, "accuracy") != 0) {
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
@@ -839,8 +840,13 @@ int pt_cmd_accuracy(int argc, char **argv)
         if (!run_applies(&st->rows, k)) continue;   /* no 2.001 to replace */
         rc = pt_acc_run_make(&st->run[k], &s, run_of[k].arith, run_of[k].choices);
     }
-    if (rc != 0) {
+    if (rc == -2)
+        fprintf(stderr, "pipetrace accuracy: %s writes more than %d pixels; accuracy keeps "
+                "them in memory and takes at most that many (docs/limits.md)\n", s.path,
+                PT_ACC_MAXPIX);
+    else if (rc != 0)
         fputs("pipetrace accuracy: out of memory\n", stderr);
+    if (rc != 0) {
         rc = PT_EXIT_INPUT;
         goto done;
     }
