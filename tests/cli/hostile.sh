@@ -210,6 +210,10 @@ cp docs/examples/tetra.obj "$tmp/a$(printf '\342\200\256')b.obj"
 run "$tmp/a$(printf '\342\200\256')b.obj"
 check "hostile-10.4 a plain OBJ file whose name holds U+202E: model 'obj', not its file name" \
     grep -q '^model        obj: ' "$tmp/out"
+printf 'model m p\342\200\256q\nv 0 0 -1\n' > "$tmp/cf.scene"
+run "$tmp/cf.scene"
+check "hostile-10.5 a position name (model NAME POSITION) with U+202E: refused at its column" \
+    test "$err" = "$tmp/cf.scene:1:10: error: a position name may not contain U+202E, a format character (it turns or hides text)"
 
 # ---- no output over an input of the run: the OBJ files the scene reads
 # (by device and inode, through a link too), for every command that writes one
