@@ -1,5 +1,6 @@
 #!/bin/sh
-# tests/cli/hostile.sh -- input that is out to hurt: endless, blocking, secret, dead pipes
+# tests/cli/hostile.sh -- input that is out to hurt: endless, blocking, secret, dead pipes,
+# names and paths that forge or break output, outputs over inputs, scenes too large to keep
 # See LICENSE for copyright and license.
 #
 # Usage: sh tests/cli/hostile.sh PIPETRACE.  Run from the repository root.  Issue
