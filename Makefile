@@ -10,6 +10,7 @@
 #   make sanitize  run the tests under -fsanitize=address,undefined
 #   make bench     time parsing, stages, rasterizer and trace output
 #   make fuzz      build the libFuzzer targets (clang) and run each FUZZ_SECONDS
+#   make mutate    apply each listed mutation alone; its tests must fail
 #   make install   copy the program, its man page and docs under PREFIX
 #                  (default /usr/local; DESTDIR is put in front, for packages)
 #   make uninstall remove what make install copied
@@ -319,6 +320,12 @@ fuzz-build:
 	        tests/fuzz/fuzz_common.c build-fuzz/libpipetrace.a $(LDLIBS) || exit 1; \
 	done
 
+# ===== mutation tests (tests/mutate/) =====
+# Each mutation of tests/mutate/mutations alone, in a scratch copy: its test
+# groups must fail.  Minutes, so not part of `make test`.  MUTANTS=ID... for some.
+mutate: $B/pipetrace $(TESTS)
+	sh tests/mutate/mutate.sh "$(TESTS:$B/%=build/%) build/pipetrace" $(MUTANTS)
+
 # ===== install =====
 # bin/pipetrace, share/man/man1/pipetrace.1, and share/doc/pipetrace/ holding
 # README.md, LICENSE and docs/ (so that README's links work there too).
@@ -341,5 +348,5 @@ uninstall:
 clean:
 	rm -rf build build-san build-student build-fuzz
 
-.PHONY: all run test golden docs screenshots bench sanitize fuzz fuzz-build clean install uninstall \
+.PHONY: all run test golden docs screenshots bench sanitize fuzz fuzz-build mutate clean install uninstall \
         check-stage

@@ -61,7 +61,7 @@ shapes-cli       1 sh tests/cli/shapes.sh $B/pipetrace
 install          1 sh tests/cli/install.sh $B/pipetrace
 export           4 sh tests/cli/export.sh $B/pipetrace
 cli              1 sh tests/cli/cli.sh $B/pipetrace
-hostile          3 sh tests/cli/hostile.sh $B/pipetrace
+hostile          6 sh tests/cli/hostile.sh $B/pipetrace
 outputs          1 sh tests/cli/outputs.sh $B/pipetrace
 diff            32 sh tests/teach/diff.sh $B/pipetrace
 kraft            3 sh tests/formats/kraft.sh $B/pipetrace $ref

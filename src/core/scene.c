@@ -823,10 +823,62 @@ static int do_world(parser *ps, source *src, const token *dir, cursor *args)
     return 0;
 }
 
-/* model NAME [POSITION]: a new current model (and its Position's name).  Names are unique and go into JSON, CSV
-** and text output, so '"', '\' and ',' are kept out of them.  (Spaces, '#'
-** and control characters cannot reach here.)  The duplicate check asks a hash
-** table (core/nameset.h): a scene of many models is read in linear time. */
+/* The code point of the valid UTF-8 character at p (n = 2..4 bytes) when it
+** is a format character (Unicode's category Cf: the bidirectional controls
+** U+202A .. U+202E and U+2066 .. U+2069, U+200E, U+200F, the invisible
+** U+200B .. U+200D, U+2060 .. U+2064, U+FEFF, U+00AD, ...) or a line or
+** paragraph separator (U+2028, U+2029); else 0.  Such a character in a name
+** turns or hides the text around it, so a name that shows as "cube" need not
+** be "cube" (Trojan Source, CVE-2021-42574).  Unicode 15's list. */
+static unsigned long name_format_char(const unsigned char *p, size_t n)
+{
+    static const unsigned long cf[][2] = {
+        { 0xAD, 0xAD }, { 0x600, 0x605 }, { 0x61C, 0x61C }, { 0x6DD, 0x6DD },
+        { 0x70F, 0x70F }, { 0x890, 0x891 }, { 0x8E2, 0x8E2 }, { 0x180E, 0x180E },
+        { 0x200B, 0x200F }, { 0x2028, 0x202E }, { 0x2060, 0x2064 },
+        { 0x2066, 0x206F }, { 0xFEFF, 0xFEFF }, { 0xFFF9, 0xFFFB },
+        { 0x110BD, 0x110BD }, { 0x110CD, 0x110CD }, { 0x13430, 0x1343F },
+        { 0x1BCA0, 0x1BCA3 }, { 0x1D173, 0x1D17A }, { 0xE0001, 0xE0001 },
+        { 0xE0020, 0xE007F },
+    };
+    unsigned long c = p[0] & (n == 2 ? 0x1Fu : n == 3 ? 0x0Fu : 0x07u);
+    size_t i;
+
+    for (i = 1; i < n; i++)
+        c = (c << 6) | (p[i] & 0x3Fu);
+    for (i = 0; i < sizeof cf / sizeof cf[0]; i++)
+        if (c >= cf[i][0] && c <= cf[i][1])
+            return c;
+    return 0;
+}
+
+/* Refuse a name t (what: "model", "position") that holds a format character
+** (name_format_char()).  Returns 0, or -1 after the error at its column. */
+static int name_chars(parser *ps, source *src, const token *t, const char *what)
+{
+    const char *why;
+    unsigned long c;
+    size_t i, k;
+
+    for (i = 0; i < t->n; i += k) {
+        const unsigned char *u = (const unsigned char *)t->p + i;
+
+        k = u[0] < 0x80 ? 1 : utf8_len(u, t->n - i, &why);
+        if (k > 1 && (c = name_format_char(u, k)) != 0)
+            return pt_sc_fail(ps, src, t->p + i, "a %s name may not contain U+%04lX, a "
+                              "format character (it turns or hides text)", what, c);
+        if (k == 0)
+            k = 1;                      /* cannot be: the line was checked */
+    }
+    return 0;
+}
+
+/* model NAME [POSITION]: a new current model (and its Position's name).
+** Names are unique and go into JSON, CSV and text output, so '"', '\' and
+** ',' are kept out of them, and onto terminals and pages, so format
+** characters are (name_chars()).  (Spaces, '#', control characters and bad
+** UTF-8 cannot reach here.)  The duplicate check asks a hash table
+** (core/nameset.h): a scene of many models is read in linear time. */
 static int do_model(parser *ps, source *src, const token *dir, cursor *args)
 {
     pt_scene *s = ps->s;
@@ -846,6 +898,9 @@ static int do_model(parser *ps, source *src, const token *dir, cursor *args)
         if (a.p[i] == '"' || a.p[i] == '\\' || a.p[i] == ',')
             return pt_sc_fail(ps, src, a.p + i, "model name '%s' may not contain '%c'",
                         pt_sc_shown(a.p, a.n, q), a.p[i]);
+    if (name_chars(ps, src, &a, "model") < 0
+        || (n == 2 && name_chars(ps, src, &b[1], "position") < 0))
+        return -1;
     if ((i = pt_nameset_find(&ps->names, a.p, a.n)) != SIZE_MAX)
         return pt_sc_fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",
                     pt_sc_shown(a.p, a.n, q), ps->model_line[i]);
@@ -1417,8 +1472,8 @@ static int parse_scene(pt_scene *s, const char *name, size_t dirlen, source *src
 
 /* The model name for a plain OBJ file: its base name without ".obj"; or "obj"
 ** when that is empty or would not be a valid model name (a file name may hold
-** any byte; a model name is one token of valid UTF-8 without control
-** characters, '"', '\', ',' or '#').  path ends in ".obj", any case. */
+** any byte; a model name is one token of valid UTF-8 without control or
+** format characters, '"', '\', ',' or '#').  path ends in ".obj", any case. */
 static void obj_model_name(const char *path, const char **name, size_t *n)
 {
     const char *base = strrchr(path, '/');
@@ -1437,7 +1492,7 @@ static void obj_model_name(const char *path, const char **name, size_t *n)
     while (p < e) {
         if (*p >= 0x80) {
             k = utf8_len(p, (size_t)(e - p), &why);
-            if (k == 0 || is_c1_control(p, k))
+            if (k == 0 || is_c1_control(p, k) || name_format_char(p, k) != 0)
                 return;
             p += k;
         } else if (*p <= ' ' || *p == 0x7f || strchr("\"\\,#", *p) != NULL) {

@@ -467,3 +467,12 @@ int pt_outfile_same(const char *a, const char *b)
     free(pb);
     return same;
 }
+
+size_t pt_outfile_among(const char *out, const char *const *in, size_t n)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++)
+        if (pt_outfile_same(out, in[k])) break;
+    return k;
+}

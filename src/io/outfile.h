@@ -69,4 +69,10 @@ int pt_outfile_finish(pt_outfile *o, int bad, const char *who);
 ** This function can't fail. */
 int pt_outfile_same(const char *a, const char *b);
 
+/* The index of the first of the n paths in[] that out names, as
+** pt_outfile_same() tells, or n when it names none: for refusing an output
+** over an input of the run (the OBJ files a scene reads).  This function
+** can't fail. */
+size_t pt_outfile_among(const char *out, const char *const *in, size_t n);
+
 #endif

@@ -92,37 +92,48 @@ int pt_sbuf_utf8_len(const unsigned char *p)
 
 #define REPLACEMENT "\xef\xbf\xbd"    /* U+FFFD in UTF-8 */
 
-/* Append the UTF-8 character at *pp (or U+FFFD for a bad byte); advance. */
-static void add_utf8(pt_sbuf *sb, const unsigned char **pp)
+/* The code point of the well-formed UTF-8 character of n bytes at p. */
+static unsigned long utf8_code(const unsigned char *p, int n)
 {
-    int n = pt_sbuf_utf8_len(*pp);
+    static const unsigned char lead[5] = { 0, 0x7f, 0x1f, 0x0f, 0x07 };
+    unsigned long c = p[0] & lead[n];
+    int k;
 
-    if (n == 0) { pt_sbuf_add(sb, REPLACEMENT); *pp += 1; return; }
-    pt_sbuf_addn(sb, (const char *)*pp, (size_t)n);
-    *pp += n;
+    for (k = 1; k < n; k++) c = (c << 6) | (p[k] & 0x3fu);
+    return c;
 }
 
-/* What an escaper writes for the byte at p: its replacement, or NULL to copy
-** the UTF-8 character that starts there (U+FFFD when it is not one).  buf
-** has room for a replacement made up on the spot. */
-typedef const char *escaper(const unsigned char *p, char buf[8]);
-
-static const char *xml_escape(const unsigned char *p, char buf[8])
+/* Is c a character no XML or HTML document may hold raw?  XML 1.0 (section
+** 2.2) forbids C0 controls but tab, LF and CR, and U+FFFE, U+FFFF; HTML
+** (13.2.3.5) calls DEL, the C1 controls and every noncharacter (U+FDD0 ..
+** U+FDEF, the last two of each plane) parse errors.  CR is refused too: a
+** parser turns it into LF. */
+static int markup_refused(unsigned long c)
 {
-    (void)buf;
-    switch (*p) {
+    return (c < 0x20 && c != '\t' && c != '\n') || (c >= 0x7f && c <= 0x9f) ||
+           (c >= 0xfdd0 && c <= 0xfdef) || (c & 0xfffeu) == 0xfffeu;
+}
+
+/* What an escaper writes for the character c that begins at p: its
+** replacement, or NULL to copy it.  buf has room for one made on the spot. */
+typedef const char *escaper(const unsigned char *p, unsigned long c, char buf[16]);
+
+static const char *xml_escape(const unsigned char *p, unsigned long c, char buf[16])
+{
+    (void)p; (void)buf;
+    switch (c) {
     case '&':  return "&amp;";
     case '<':  return "&lt;";
     case '>':  return "&gt;";
     case '"':  return "&quot;";
     case '\'': return "&apos;";
-    default:   return *p < 0x20 && *p != '\t' && *p != '\n' ? REPLACEMENT : NULL;
+    default:   return markup_refused(c) ? REPLACEMENT : NULL;
     }
 }
 
-static const char *json_escape(const unsigned char *p, char buf[8])
+static const char *json_escape(const unsigned char *p, unsigned long c, char buf[16])
 {
-    switch (*p) {
+    switch (c) {
     case '"':  return "\\\"";
     case '\\': return "\\\\";
     case '\n': return "\\n";
@@ -130,23 +141,29 @@ static const char *json_escape(const unsigned char *p, char buf[8])
     case '<':                /* "</script" or "<!--" would end the element */
         return p[1] == '/' || p[1] == '!' ? "\\u003c" : "<";
     default:
-        if (*p >= 0x20) return NULL;
-        snprintf(buf, 8, "\\u%04x", (unsigned)*p);
+        if (!markup_refused(c)) return NULL;
+        if (c < 0x10000) snprintf(buf, 16, "\\u%04x", (unsigned)c);  /* the same */
+        else snprintf(buf, 16, "\\u%04x\\u%04x",      /* character; a surrogate pair */
+                      (unsigned)(0xd800 + ((c - 0x10000) >> 10)),
+                      (unsigned)(0xdc00 + ((c - 0x10000) & 0x3ff)));
         return buf;
     }
 }
 
-/* Append t with each byte escaped as esc says. */
+/* Append t with each character escaped as esc says; a byte that does not
+** begin a well-formed UTF-8 character becomes U+FFFD. */
 static void add_escaped(pt_sbuf *sb, const char *t, escaper *esc)
 {
     const unsigned char *p = (const unsigned char *)t;
-    char buf[8];
+    char buf[16];
     const char *r;
+    int n;
 
     while (*p) {
-        if ((r = esc(p, buf)) == NULL) { add_utf8(sb, &p); continue; }
-        pt_sbuf_add(sb, r);
-        p++;
+        if ((n = pt_sbuf_utf8_len(p)) == 0) { pt_sbuf_add(sb, REPLACEMENT); p++; continue; }
+        if ((r = esc(p, utf8_code(p, n), buf)) != NULL) pt_sbuf_add(sb, r);
+        else pt_sbuf_addn(sb, (const char *)p, (size_t)n);
+        p += n;
     }
 }
 
@@ -159,9 +176,7 @@ void pt_sbuf_add_xml(pt_sbuf *sb, const char *t)
 ** terminal must not get it raw (C1, bidirectional and invisible marks). */
 static unsigned long term_hidden(const unsigned char *p, int len)
 {
-    unsigned long c = len == 2 ? ((p[0] & 0x1fu) << 6 | (p[1] & 0x3fu))
-                    : len == 3 ? ((p[0] & 0x0fu) << 12 | (p[1] & 0x3fu) << 6 | (p[2] & 0x3fu))
-                    : 0;
+    unsigned long c = utf8_code(p, len);
 
     if ((c >= 0x80 && c <= 0x9f) || c == 0x200e || c == 0x200f ||
         (c >= 0x202a && c <= 0x202e) || (c >= 0x2066 && c <= 0x2069) || c == 0xfeff)

@@ -42,16 +42,19 @@ void pt_sbuf_addf(pt_sbuf *sb, const char *fmt, ...)
 ** it is not one.  This function can't fail. */
 int pt_sbuf_utf8_len(const unsigned char *p);
 
-/* Append t as XML character data or attribute value: & < > " ' become
-** entities; well-formed UTF-8 passes through unchanged; a byte that is not
-** part of one, and control characters other than tab and newline (XML 1.0
-** forbids them), become U+FFFD. */
+/* Append t as XML or HTML character data or attribute value, the one
+** function for untrusted text in every SVG and HTML writer: & < > " ' become
+** entities; well-formed UTF-8 passes through unchanged but for what XML 1.0
+** or HTML forbids raw (control characters other than tab and newline, DEL,
+** C1, U+FFFE, U+FFFF and the other noncharacters), which, as a byte that is
+** not part of a well-formed character, becomes U+FFFD. */
 void pt_sbuf_add_xml(pt_sbuf *sb, const char *t);
 
 /* Append t as a JSON string, quotes included.  Besides " \ and control
 ** characters, a '<' before '/' or '!' is written \u003c, so the string can sit
-** inside an HTML <script> element ("</script" or "<!--" would end it).  Bad
-** UTF-8 becomes U+FFFD, as in pt_sbuf_add_xml(). */
+** inside an HTML <script> element ("</script" or "<!--" would end it); what
+** pt_sbuf_add_xml() refuses is written as \uXXXX (the same character, in
+** ASCII).  Bad UTF-8 becomes U+FFFD. */
 void pt_sbuf_add_json(pt_sbuf *sb, const char *t);
 
 /* 1 when t[0..n) may go to a terminal as it is: well-formed UTF-8 with no

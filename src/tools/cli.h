@@ -62,6 +62,25 @@ int pt_cli_course_text(const char *path, const char *buf, size_t len, const char
 ** Prints "OUT: error: ..." and returns PT_EXIT_INPUT, else returns 0. */
 int pt_cli_outputs(const char *scene, const char *const *out, const char *const *opt, int n);
 
+/* The same, once the scene s is read, for the OBJ files it read (device and
+** inode, links followed).  Prints "OUT: error: OPT names 'OBJ', an OBJ file
+** the scene reads; ..." and returns PT_EXIT_INPUT, else returns 0. */
+int pt_cli_outputs_objs(const pt_scene *s, const char *const *out, const char *const *opt,
+                        int n);
+
+/* The most vertices and segments, each summed over a scene's models, that
+** the commands keeping every vertex's journey in memory take (journey, why,
+** accuracy: some 2 KB a vertex, so about 200 MB at the cap); beyond, they
+** refuse the scene at once (docs/limits.md).  The render command has no such
+** cap: it keeps no journey.  (journey and accuracy also keep the pixels a
+** run draws: PT_JOURNEY_MAXPIX, PT_ACC_MAXPIX.) */
+#define PT_CLI_KEEP_VERTICES 100000
+#define PT_CLI_KEEP_SEGMENTS 400000
+
+/* Refuse s when it holds more than the caps above: prints "pipetrace CMD:
+** SCENE has N vertices; ..." and returns PT_EXIT_INPUT, else returns 0. */
+int pt_cli_keep_cap(const pt_scene *s, const char *cmd);
+
 /* The model called name.  Prints "pipetrace CMD: --model NAME: ..." (cmd
 ** NULL: "pipetrace: --model ...") with the scene's model names and returns NULL
 ** when there is none. */

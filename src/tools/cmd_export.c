@@ -324,19 +324,12 @@ static int too_large(const pt_scene *s)
 static int over_input(const pt_scene *s, const char *path, const char *out)
 {
     const char *opt[1] = {"-o"}, *outs[1];
-    size_t k;
 
     if (out == NULL)
         return 0;
     outs[0] = out;
-    if (pt_cli_outputs(path, outs, opt, 1) != 0)
+    if (pt_cli_outputs(path, outs, opt, 1) != 0 || pt_cli_outputs_objs(s, outs, opt, 1) != 0)
         return PT_EXIT_INPUT;
-    for (k = 0; k < s->nobjs; k++)
-        if (pt_outfile_same(out, s->objs[k])) {
-            fprintf(stderr, "%s: error: -o names '%s', an OBJ file the scene reads; "
-                    "writing it would destroy it\n", out, s->objs[k]);
-            return PT_EXIT_INPUT;
-        }
     return 0;
 }
 

@@ -691,6 +691,7 @@ int pt_cmd_why(int argc, char **argv)
 
     if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return PT_EXIT_INPUT;
     if (pt_cli_course(&s, "why")) return PT_EXIT_INPUT;
+    if (pt_cli_keep_cap(&s, "why") != 0) { pt_scene_free(&s); return PT_EXIT_INPUT; }
     w.s = &s;
     if (pt_scene_pipeline(&s) != &pt_pipe_classic) {
         fprintf(stderr, "pipetrace why: %s: why follows the classic camera (model -> camera "

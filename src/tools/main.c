@@ -381,6 +381,10 @@ static int run(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, c.scene) != 0) return PT_EXIT_INPUT;
+    {
+        const char *out[2] = {c.trace, c.image}, *opt[2] = {"--trace", "--image"};
+        if (pt_cli_outputs_objs(&s, out, opt, 2) != 0) { pt_scene_free(&s); return PT_EXIT_INPUT; }
+    }
     if (s.renderer == 7 || s.renderer == 9) {
         rc = run_course(&c, &s);
         pt_scene_free(&s);

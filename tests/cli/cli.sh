@@ -115,7 +115,10 @@ run docs/examples/cube.scene --format jsonl --vertex 3
 check "cli-5.6 --vertex 3: one journey" test "$(grep -c '"type":"vertex","model":"cube","v":3,' "$tmp/out")" -gt 0 -a "$(grep '"type":"vertex"' "$tmp/out" | grep -vc '"v":3,')" = 0
 check "cli-5.7 --vertex without --image: no raster records, a summary" test "$(grep -c '"type":"pixel"' "$tmp/out")" = 0 -a "$(grep -c '"type":"summary"' "$tmp/out")" = 1
 run docs/examples/cube.scene --format jsonl --stage pixel --stage index
-check "cli-5.8 --stage keeps only the stages named" test "$(grep '"type":"vertex"' "$tmp/out" | grep -Evc '"stage":"(pixel|index)"')" = 0
+check "cli-5.8 --stage keeps only the stages named, and keeps them" \
+    test "$(grep '"type":"vertex"' "$tmp/out" | grep -Evc '"stage":"(pixel|index)"')" = 0 \
+    -a "$(grep -c '"type":"vertex",.*"stage":"pixel"' "$tmp/out")" -gt 0 \
+    -a "$(grep -c '"type":"vertex",.*"stage":"index"' "$tmp/out")" -gt 0
 run docs/examples/behind.scene --format jsonl
 check "cli-5.9 a vertex behind the camera is flagged" grep -q '"v":2,"stage":"image",.*"behind":true' "$tmp/out"
 run docs/examples/behind.scene

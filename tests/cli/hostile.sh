@@ -1,5 +1,6 @@
 #!/bin/sh
-# tests/cli/hostile.sh -- input that is out to hurt: endless, blocking, secret, dead pipes
+# tests/cli/hostile.sh -- input that is out to hurt: endless, blocking, secret, dead pipes,
+# names and paths that forge or break output, outputs over inputs, scenes too large to keep
 # See LICENSE for copyright and license.
 #
 # Usage: sh tests/cli/hostile.sh PIPETRACE.  Run from the repository root.  Issue
@@ -160,5 +161,155 @@ printf 'framebuffer 20 10\nmodel =1+1\ntranslate 0 0 -2\nv 0 0 0\nv 1 1 0\nl 1 2
 check "hostile-7.5 a model named =1+1 in a CSV trace: a text cell" \
     test "$(grep -c "^\"'=1+1\"," "$tmp/f.csv")" -gt 0 -a "$(grep -c '^=' "$tmp/f.csv")" = 0
 check "hostile-7.6 ... and @x too" test "$(grep -c '^@' "$tmp/f.csv")" = 0 -a "$(grep -c "^\"'@x\"," "$tmp/f.csv")" -gt 0
+
+# ---- SVG and HTML: one escaping (pt_sbuf_add_xml) for every untrusted text
+# A model name with U+FFFE and U+FFFF (XML forbids both) in a folder whose
+# name holds a control byte and a byte that is not UTF-8: every picture must
+# still be well-formed XML, the characters written as U+FFFD (in the page's
+# JSON as \ufffe, the same character in ASCII).
+bad="$tmp/p$(printf '\001')q$(printf '\033')"
+mkdir "$bad"
+printf 'framebuffer 20 10\nmodel a\357\277\276b\357\277\277c\ntranslate 0 0 -2\nv 0 0 0\nv 1 1 0\nl 1 2\n' \
+    > "$bad/x$(printf '\377').scene"
+"$exe" journey "$bad/x$(printf '\377').scene" --vertex 1 --svg "$tmp/j9.svg" --html "$tmp/j9.html" 2> "$tmp/err"; rc=$?
+check "hostile-9.1 journey of a model named with U+FFFE, U+FFFF from a path with \\x01, ESC, \\xff: exit 0 ($rc)" test "$rc" = 0
+noraw() {   # noraw FILE: none of U+FFFE, U+FFFF, \x01, ESC, or a \xff byte in FILE
+    ! grep -q "$(printf '\357\277\276\|\357\277\277\|\001\|\033\|\377')" "$1"
+}
+check "hostile-9.2 ... the SVG holds none of them raw" noraw "$tmp/j9.svg"
+check "hostile-9.3 ... nor the HTML page" noraw "$tmp/j9.html"
+check "hostile-9.4 ... the name in the SVG with U+FFFD for each" \
+    grep -q "a$(printf '\357\277\275')b$(printf '\357\277\275')c" "$tmp/j9.svg"
+check "hostile-9.5 ... and in the page's data as \\ufffe, \\uffff" grep -qF 'a\ufffeb\uffffc' "$tmp/j9.html"
+"$exe" accuracy "$bad/x$(printf '\377').scene" --repeat 1 --svg "$tmp/a9.svg" > /dev/null 2> "$tmp/err"; rc=$?
+check "hostile-9.6 accuracy --svg of that scene: exit 0 ($rc)" test "$rc" = 0
+check "hostile-9.7 ... the SVG holds no control byte or bad UTF-8 from the path" noraw "$tmp/a9.svg"
+if command -v python3 > /dev/null 2>&1; then
+    for f in j9.svg a9.svg; do
+        check "hostile-9.8 $f is well-formed XML" python3 -c 'import sys, xml.dom.minidom
+xml.dom.minidom.parse(sys.argv[1])' "$tmp/$f"
+    done
+else
+    echo "  skipped: python3 is not installed (hostile-9.8)"
+fi
+
+# ---- a model name holds no format character: one that turns or hides text
+# (a name that shows as "cube" must be "cube"), each said at its column
+for c in '342 200 256:202E' '342 200 216:200E' '342 200 217:200F' '342 201 246:2066' \
+         '342 201 251:2069' '357 273 277:FEFF' '342 200 213:200B' '302 255:00AD' '363 240 200 201:E0001'; do
+    bytes=$(printf '\%s' ${c%%:*})
+    printf 'model ab%s\nv 0 0 -1\n' "$(printf "$bytes")" > "$tmp/cf.scene"
+    run "$tmp/cf.scene"
+    check "hostile-10.1 model name with U+${c#*:}: exit 2 (got $rc)" test "$rc" = 2
+    check "hostile-10.2 ... one message at its column" \
+        test "$err" = "$tmp/cf.scene:1:9: error: a model name may not contain U+${c#*:}, a format character (it turns or hides text)"
+done
+printf 'model caf\303\251_\316\273\nv 0 0 -1\n' > "$tmp/cf.scene"
+run "$tmp/cf.scene"
+check "hostile-10.3 other non-ASCII letters stay allowed (exit $rc)" test "$rc" = 0
+cp docs/examples/tetra.obj "$tmp/a$(printf '\342\200\256')b.obj"
+run "$tmp/a$(printf '\342\200\256')b.obj"
+check "hostile-10.4 a plain OBJ file whose name holds U+202E: model 'obj', not its file name" \
+    grep -q '^model        obj: ' "$tmp/out"
+printf 'model m p\342\200\256q\nv 0 0 -1\n' > "$tmp/cf.scene"
+run "$tmp/cf.scene"
+check "hostile-10.5 a position name (model NAME POSITION) with U+202E: refused at its column" \
+    test "$err" = "$tmp/cf.scene:1:10: error: a position name may not contain U+202E, a format character (it turns or hides text)"
+
+# ---- no output over an input of the run: the OBJ files the scene reads
+# (by device and inode, through a link too), for every command that writes one
+mkdir "$tmp/inc"
+cp docs/examples/obj-include.scene docs/examples/tetra.obj "$tmp/inc/"
+cp "$tmp/inc/tetra.obj" "$tmp/tetra.orig"
+ln -s tetra.obj "$tmp/inc/link.obj"
+for c in "--image $tmp/inc/tetra.obj:--image" "--trace $tmp/inc/tetra.obj:--trace" \
+         "--trace $tmp/inc/link.obj:--trace" "--image $tmp/inc/link.obj --trace $tmp/inc/t.txt:--image" \
+         "journey --vertex 1 --svg $tmp/inc/tetra.obj:--svg" \
+         "journey --vertex 1 --html $tmp/inc/link.obj:--html" \
+         "journey --vertex 1 --image $tmp/inc/tetra.obj:--image" \
+         "accuracy --repeat 1 --svg $tmp/inc/tetra.obj:--svg"; do
+    args=${c%:*}; opt=${c##*:}
+    case $args in journey*|accuracy*) set -- ${args%% *} "$tmp/inc/obj-include.scene" ${args#* } ;;
+                  *) set -- "$tmp/inc/obj-include.scene" $args ;; esac
+    "$exe" "$@" > "$tmp/out" 2> "$tmp/err"; rc=$?
+    check "hostile-11.1 pipetrace $args: refused over the scene's OBJ file (exit $rc)" test "$rc" = 2
+    check "hostile-11.2 ... one message naming $opt and the OBJ file" \
+        grep -q "error: $opt names '.*tetra.obj', an OBJ file the scene reads; writing it would destroy it" "$tmp/err"
+    check "hostile-11.3 ... the OBJ file kept" cmp -s "$tmp/tetra.orig" "$tmp/inc/tetra.obj"
+done
+check "hostile-11.4 ... and no other output written" test ! -e "$tmp/inc/t.txt"
+run "$tmp/inc/obj-include.scene" --image "$tmp/inc/other.obj"
+check "hostile-11.5 an output beside the OBJ file, not one of the scene's: written (exit $rc)" \
+    sh -c 'test "$1" = 0 && test -s "$2"' _ "$rc" "$tmp/inc/other.obj"
+
+# ---- the scene fuzz target reads no file of the host: an `obj PATH` line
+# reads one of its own private folder (tests/fuzz/fuzz_scene.c); its corpus
+# holds obj /etc/passwd, /dev/zero, paths out of the tree
+fuzz=$(dirname "$exe")/test_fuzz
+if [ -x "$fuzz" ] && command -v strace > /dev/null 2>&1; then
+    strace -f -qq -e trace=open,openat -o "$tmp/fstrace" "$fuzz" > "$tmp/fout" 2>&1; rc=$?
+    check "hostile-12.1 the scene fuzz target replays obj /etc/passwd and /dev/zero as correct refusals (exit $rc)" \
+        test "$rc" = 0
+    check "hostile-12.2 ... and opens neither" sh -c "! grep -q '\"/etc/passwd\"\\|\"/dev/zero\"\\|\\.\\./etc/passwd' '$tmp/fstrace'"
+    check "hostile-12.3 ... its obj lines read its own folder" grep -q 'pt-fuzz-scene-.*/good.obj' "$tmp/fstrace"
+else
+    echo "  skipped: $fuzz is not built or strace is not installed (hostile-12.1 .. 12.3)"
+fi
+
+# ---- tests that see a change (make mutate, tests/mutate/): diff's edges
+# A text trace prints 1e15 as 1.000000e+15 ("%.Ne" from 1e15 up): half a unit
+# of its last digit is 5e8, so an exact 1000000100000000 agrees with it.
+printf 'framebuffer 20 10\nmodel m\nv 1e15 0 -1\nv 0 0 -1\nl 1 2\n' > "$tmp/e15.scene"
+"$exe" "$tmp/e15.scene" --all-stages --trace "$tmp/e15.trace"
+"$exe" "$tmp/e15.scene" --all-stages --format jsonl --trace "$tmp/e15.jsonl"
+for x in 1000000100000000:0 1000000600000000:1; do
+    sed "s/\"v\":1,\"stage\":\"model\",\"x\":1e+15/\"v\":1,\"stage\":\"model\",\"x\":${x%:*}/" \
+        "$tmp/e15.jsonl" > "$tmp/e15b.jsonl"
+    "$exe" diff "$tmp/e15.trace" "$tmp/e15b.jsonl" > "$tmp/out" 2>&1; rc=$?
+    check "hostile-13.1 diff: x_m = 1.000000e+15 printed against ${x%:*} exact: exit ${x#*:} (got $rc)" \
+        test "$rc" = "${x#*:}"
+done
+# a trace's pixels moved by (1, 1): the last of its row leaves the
+# framebuffer at x = W exactly, and the rest is still a shift
+printf 'framebuffer 10 4\nmodel m\nv -0.999 0 -1\nv 0.999 0 -1\nl 1 2\n' > "$tmp/row.scene"
+"$exe" "$tmp/row.scene" --format jsonl --image /dev/null --trace "$tmp/row.jsonl"
+awk -F'"x":' '/"type":"pixel"/ { split($2, a, ","); x = a[1] + 1; if (x >= 10) next
+    sub(/"x":[0-9]+,"y":2,"i":[0-9]+/, "\"x\":" x ",\"y\":3,\"i\":" (30 + x)) } { print }' \
+    "$tmp/row.jsonl" > "$tmp/row2.jsonl"
+"$exe" diff "$tmp/row.jsonl" "$tmp/row2.jsonl" > "$tmp/out" 2>&1; rc=$?
+check "hostile-13.2 diff: a row of pixels x = 0 .. 9 moved by (1, 1) in a 10-wide framebuffer: a shift (exit $rc)" \
+    sh -c 'test "$1" = 1 && grep -q "all of them moved by (1, 1)" "$2"' _ "$rc" "$tmp/out"
+check "hostile-13.3 ... one of them out of the framebuffer" \
+    sh -c 'tr "\n" " " < "$1" | grep -q "1 of them out of the *framebuffer"' _ "$tmp/out"
+
+# ---- journey, why and accuracy keep every vertex's journey: a cap on the
+# scene (PT_CLI_KEEP_VERTICES, _SEGMENTS) and on the pixels kept, each said
+# at once (one `shape sphere 1 1400 1400` line took 3 GB before)
+printf 'model s\nshape sphere 1 1400 1400\ntranslate 0 0 -3\n' > "$tmp/sphere.scene"
+for c in "journey --vertex 1 --svg $tmp/sph.svg" "why 200 150" "accuracy --no-time"; do
+    cmd=${c%% *}
+    lim "${cap:-unlimited}" "'$exe' $cmd '$tmp/sphere.scene' ${c#* }"
+    check "hostile-14.1 $cmd of a 1,960,002-vertex sphere: refused (exit $rc), under a 400 MB cap" test "$rc" = 2
+    check "hostile-14.2 ... saying the cap" test "$(cat "$tmp/err")" = \
+        "pipetrace $cmd: $tmp/sphere.scene has 1960002 vertices; $cmd keeps every vertex's journey in memory and takes at most 100000 vertices and 400000 segments (docs/limits.md)"
+done
+check "hostile-14.3 ... and no picture" test ! -e "$tmp/sph.svg"
+{ echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'l 1 2'; } > "$tmp/cap.scene"
+run why "$tmp/cap.scene" 1 1
+check "hostile-14.4 why of 100,000 vertices (the cap): done (exit $rc)" test "$rc" = 0
+{ echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'model n'; echo 'v 0 0 -1'; } > "$tmp/cap1.scene"
+run why "$tmp/cap1.scene" 1 1
+check "hostile-14.5 ... 100,001 in two models: refused" \
+    sh -c 'test "$1" = 2 && grep -q "has 100001 vertices" "$2"' _ "$rc" "$tmp/err"
+{ echo 'model m'; echo 'v 0 0 -1'; yes 'l 1 1' | head -n 400001; } > "$tmp/cap2.scene"
+run journey "$tmp/cap2.scene" --vertex 1 --svg "$tmp/c2.svg"
+check "hostile-14.6 journey of 400,001 segments: refused" \
+    sh -c 'test "$1" = 2 && grep -q "has 400001 segments" "$2"' _ "$rc" "$tmp/err"
+{ printf 'framebuffer 16384 16384\nmodel m\nv -0.99 -0.99 -1\nv 0.99 0.99 -1\n'
+  yes 'l 1 2' | head -n 600; } > "$tmp/px.scene"
+lim "${cap:-unlimited}" "'$exe' journey '$tmp/px.scene' --vertex 1 --svg '$tmp/px.svg'"
+check "hostile-14.7 journey of 600 diagonals of a 16384 x 16384 framebuffer (9.8 M pixels): refused (exit $rc)" \
+    test "$rc" = 2
+check "hostile-14.8 ... saying the pixel cap" grep -q "^pipetrace journey: a model of .* draws more than 8000000 pixels; journey keeps them in memory and takes at most that many (docs/limits.md)$" "$tmp/err"
 
 report

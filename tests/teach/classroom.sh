@@ -74,8 +74,11 @@ cp "$tmp/out" "$tmp/st.csv"
 check "class-2.4a ... and it is still read as a CSV trace" grep -qF "$tmp/st.csv:1:1: error: a CSV trace has no header" "$tmp/err"
 "$exe" $tri --vertex 1 --format jsonl --trace "$tmp/ref.jsonl"
 "$exe" $tri --vertex 1 --format csv --trace "$tmp/ref.csv"
-check "class-2.5 the reference build writes no student line" \
-    test "$(cat "$tmp/ref.jsonl" "$tmp/ref.csv" | grep -c student)" = 0
+check "class-2.5 the reference build writes no student line, and writes its traces" \
+    test "$(cat "$tmp/ref.jsonl" "$tmp/ref.csv" | grep -c student)" = 0 \
+    -a "$(grep -c '"type":"vertex"' "$tmp/ref.jsonl")" -gt 0 \
+    -a "$(head -1 "$tmp/ref.csv")" = "model,v,stage,x,y,z,inside,behind,i,warning,digits_lost" \
+    -a "$(grep -c '^tri,1,' "$tmp/ref.csv")" -gt 0
 sh tests/teach/student.sh s3_two "$tmp/s3_two.c" && echo '/* changed */' >> "$tmp/s3_two.c"
 mk STAGE_pixel="$tmp/s3_two.c"
 run_sb $tri --vertex 1

@@ -210,6 +210,50 @@ static void test_advance(void)
         }
     }
     PT_CHECK("raster-3.5 near zero and among subnormals: equals k additions", ok);
+
+    /* 2026-11-28: a jump that lands on the binade's lower edge exactly (y
+    ** moving inward, |m| a little above |d|): the next real step rounds on
+    ** the finer grid below it.  The jump's margin keeps it short of the edge;
+    ** without one (make mutate, tests/mutate/) the sum ends an ulp off. */
+    {
+        double m = -(0x1p-10 + 3 * 0x1p-55);
+        uint64_t kk;
+        ok = 1;
+        for (kk = 508; kk < 520; kk++)
+            if (pt_raster_advance(1.5, m, kk) != naive_advance(1.5, m, kk)) ok = 0;
+        PT_CHECK("raster-3.6 a jump onto the binade's lower edge: equals k additions", ok);
+    }
+}
+
+/* A student's viewport stage that moves each pixel 30 to the left: a
+** viewport 40 x 10 gets the steps 31 .. 70. */
+static pt_pix shift30(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    pt_pix p = pt_pixel2viewport(pp, w, h, sink);
+    p.x -= 30;
+    return p;
+}
+
+/* The band of steps the viewport stage is asked about reaches max(w, h)
+** beyond the viewport on each side (docs/teaching.md): a stage that moves
+** pixels by less still has all its pixels drawn, as the plain walk does. */
+static void test_band(void)
+{
+    pt_raster_out out = {c_pixel, c_clip, NULL};
+    canvas *c = malloc(sizeof *c);
+
+    if (!c) return;
+    clear(c, 40, 10);
+    out.ud = c;
+    pt_raster_segment((pt_vec2){1.0, 5.0}, (pt_vec2){70.0, 5.0}, 40, 10, shift30, &out);
+    PT_CHECK("raster-6.1 a stage moving pixels by 30 (between min and max of 40 x 10): "
+             "the 40 pixels of steps 31 .. 70 drawn", c->pixels == 40 && c->clipped == 30);
+    clear(c, 10, 40);
+    out.ud = c;
+    pt_raster_segment((pt_vec2){1.0, 5.0}, (pt_vec2){70.0, 5.0}, 10, 40, shift30, &out);
+    PT_CHECK("raster-6.2 ... in a viewport 10 x 40: steps 31 .. 40, 10 pixels",
+             c->pixels == 10 && c->clipped == 60);
+    free(c);
 }
 
 /* A long segment drawn both ways: the rasterizer (which skips) and a plain
@@ -639,6 +683,7 @@ int main(void)
     test_pictures();
     test_symmetry();
     test_advance();
+    test_band();
     test_long_segment();
     test_in_turn();
     test_pixel_colours();

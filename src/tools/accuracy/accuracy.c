@@ -373,7 +373,7 @@ typedef struct collect {
     const pt_scene *s;
     struct written { int64_t idx; uint64_t seq; uint32_t rgb; } *px;
     size_t n, cap;
-    int oom;
+    int oom;                     /* 1: out of memory; 2: past PT_ACC_MAXPIX pixels */
     pt_acc_err *line;
 } collect;
 
@@ -381,6 +381,8 @@ static void collect_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
     collect *c = ud;
 
+    if (c->oom) return;
+    if (c->n == PT_ACC_MAXPIX) { c->oom = 2; return; }
     if (c->n == c->cap) {
         size_t cap = c->cap ? 2 * c->cap : 1024;
         struct written *px = c->oom ? NULL : realloc(c->px, cap * sizeof *px);
@@ -493,7 +495,7 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     o.to_vp = pt_pipeline_ref(pt_scene_pipeline(s), PT_STAGE_VIEWPORT) ? ptref_pixel2viewport
                                                                   : pt_scene_pipeline(s)->to_viewport;
     raster_scene(r, &o, &c.rgb, 1);
-    if (c.oom) { free(c.px); pt_acc_run_free(r); return -1; }
+    if (c.oom) { free(c.px); pt_acc_run_free(r); return c.oom == 2 ? -2 : -1; }
     for (k = 0; r->seg && k < s->nmodels; k++)
         for (q = 0; q < s->models[k].nseg; q++) {
             r->made += (uint64_t)(r->seg[k][q].made[0] + r->seg[k][q].made[1]);

@@ -206,8 +206,10 @@ typedef struct pt_acc_run {
 
 /* Run scene s in arithmetic a with choices: every used vertex's journey, then
 ** (matrix camera: each segment clipped) the rasterizer into the image.  The
-** matrix camera ignores PT_ACC_TWO.  Returns 0, or -1 when out of memory (then
-** *r is empty). */
+** matrix camera ignores PT_ACC_TWO.  Returns 0, or -1 when out of memory, -2
+** when the rasterizer writes more than PT_ACC_MAXPIX pixels (then *r is
+** empty). */
+#define PT_ACC_MAXPIX 8000000
 int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices);
 
 /* Free what *r owns.  This function can't fail. */

@@ -36,6 +36,7 @@
 #include "tools/cli.h"
 #include "tools/commands.h"
 #include "io/outfile.h"
+#include "io/sbuf.h"
 #include "core/pipetrace.h"
 
 
@@ -519,17 +520,21 @@ static box text_box(double x, double y, size_t n, double fs, int anchor)
     return b;
 }
 
-/* s with &, <, >, " escaped for XML text and attributes. */
+/* s made safe for XML text and attributes by pt_sbuf_add_xml(): the scene's
+** path may hold any byte.  Should its few bytes not be allocated, each byte
+** but [A-Za-z0-9 ./_-] is written as '?': less, but still well-formed. */
 static void xml_text(FILE *f, const char *s)
 {
-    for (; *s; s++)
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default: fputc(*s, f);
-        }
+    pt_sbuf b;
+
+    pt_sbuf_init(&b);
+    pt_sbuf_add_xml(&b, s);
+    if (!b.failed) fputs(b.s ? b.s : "", f);
+    else
+        for (; *s; s++)
+            fputc(strchr(" ./_-", *s) || (*s >= '0' && *s <= '9') || (*s >= 'a' && *s <= 'z')
+                  || (*s >= 'A' && *s <= 'Z') ? *s : '?', f);
+    pt_sbuf_free(&b);
 }
 
 static int add_point(point *p, int n, int series, const char *choice, const char *name,
@@ -820,6 +825,11 @@ int pt_cmd_accuracy(int argc, char **argv)
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     if (pt_cli_course(&s, "accuracy")) return PT_EXIT_INPUT;
+    if (pt_cli_outputs_objs(&s, &svg, (const char *const[]){"--svg"}, 1) != 0
+        || pt_cli_keep_cap(&s, "accuracy") != 0) {
+        pt_scene_free(&s);
+        return PT_EXIT_INPUT;
+    }
     st = calloc(1, sizeof *st);
     if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return PT_EXIT_INPUT; }
     st->s = &s;
@@ -831,8 +841,13 @@ int pt_cmd_accuracy(int argc, char **argv)
         if (!run_applies(&st->rows, k)) continue;   /* no 2.001 to replace */
         rc = pt_acc_run_make(&st->run[k], &s, run_of[k].arith, run_of[k].choices);
     }
-    if (rc != 0) {
+    if (rc == -2)
+        fprintf(stderr, "pipetrace accuracy: %s writes more than %d pixels; accuracy keeps "
+                "them in memory and takes at most that many (docs/limits.md)\n", s.path,
+                PT_ACC_MAXPIX);
+    else if (rc != 0)
         fputs("pipetrace accuracy: out of memory\n", stderr);
+    if (rc != 0) {
         rc = PT_EXIT_INPUT;
         goto done;
     }

@@ -188,6 +188,13 @@ int pt_cmd_journey(int argc, char **argv)
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     if (pt_cli_course(&s, "journey")) return PT_EXIT_INPUT;
+    {
+        const char *out[3] = {svg, html, image}, *opt[3] = {"--svg", "--html", "--image"};
+        if (pt_cli_outputs_objs(&s, out, opt, 3) != 0 || pt_cli_keep_cap(&s, "journey") != 0) {
+            pt_scene_free(&s);
+            return PT_EXIT_INPUT;
+        }
+    }
     if (!(m = pt_cli_vertex_model(&s, "journey", model, vl.max))) {
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
@@ -208,11 +215,15 @@ int pt_cmd_journey(int argc, char **argv)
     pt_sbuf_init(&a);
     pt_sbuf_init(&b);
     rc = 0;
-    if (svg && pt_journey_svg(&a, &s, m, v) != 0) rc = -1;
-    if (!rc && html && pt_journey_html(&b, &s, m, v, pick) != 0) rc = -1;
+    if (svg) rc = pt_journey_svg(&a, &s, m, v);
+    if (!rc && html) rc = pt_journey_html(&b, &s, m, v, pick);
     if (!rc && image && render_marked(&fb, &s, m, v) != 0) rc = -1;
     have_fb = !rc && image;
-    if (rc) fputs("pipetrace journey: out of memory\n", stderr);
+    if (rc == -2)
+        fprintf(stderr, "pipetrace journey: a model of %s draws more than %d pixels; journey "
+                "keeps them in memory and takes at most that many (docs/limits.md)\n", s.path,
+                PT_JOURNEY_MAXPIX);
+    else if (rc) fputs("pipetrace journey: out of memory\n", stderr);
     /* every output is complete before any file is touched */
     if (!rc && svg && write_file(svg, &a, NULL) != 0) rc = -1;
     if (!rc && html && write_file(html, &b, NULL) != 0) rc = -1;

@@ -24,6 +24,8 @@
                                  ** stage's rectangle in each direction */
 #define PT_JOURNEY_MAXSEG  5000  /* faint wireframe: the first this many segments */
 #define PT_JOURNEY_MAXV    2000  /* the HTML page: at most this many vertices */
+#define PT_JOURNEY_MAXPIX  8000000  /* pixels a model's run draws, kept (16 bytes
+                                     ** each): past it, journey stops, -2 */
 #define PT_JOURNEY_FRAMEMAX 16777216  /* framebuffer panel: the whole frame drawn
                                       ** up to this many pixels (W x H) */
 #define PT_JOURNEY_RED_RGB {214, 39, 40}    /* the vertex's red, "#d62728" in the

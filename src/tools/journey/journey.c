@@ -30,7 +30,7 @@ typedef struct keeper {
     pt_jmodel *jm;
     size_t npix, cap;            /* pixels in jm->pix, room for */
     size_t nstart;               /* segments whose jm->pixat is set */
-    int oom;                     /* 1: out of memory */
+    int oom;                     /* 1: out of memory; 2: past PT_JOURNEY_MAXPIX */
 } keeper;
 
 static void keep_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
@@ -57,6 +57,7 @@ static void keep_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_p
 
     if (m != jm->m || kp->oom) return;
     seg_reach(kp, seg);
+    if (n > PT_JOURNEY_MAXPIX - kp->npix) { kp->oom = 2; return; }
     if (kp->npix + n > kp->cap) {
         size_t cap = kp->cap ? 2 * kp->cap : 1024;
         pt_jpix *p;
@@ -76,7 +77,8 @@ static void keep_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_p
 
 /* One pt_run() of model jm->m (every vertex traced, used or not): each
 ** vertex's journey into jm->js, the pixels drawn of each segment into
-** jm->pix and jm->pixat.  Returns 0, or -1 when out of memory. */
+** jm->pix and jm->pixat.  Returns 0, or -1 when out of memory, -2 past
+** PT_JOURNEY_MAXPIX pixels. */
 static int run_model(pt_jmodel *jm)
 {
     const pt_model *m = jm->m;
@@ -96,7 +98,8 @@ static int run_model(pt_jmodel *jm)
     l.journey = keep_journey;
     l.pixels = keep_pixels;
     l.ud = &kp;
-    if (pt_run_plain(jm->s, &o, &l) != 0 || kp.oom) return -1;
+    if (pt_run_plain(jm->s, &o, &l) != 0) return -1;
+    if (kp.oom) return -kp.oom;
     seg_reach(&kp, m->nseg + 1);
     return 0;
 }
@@ -104,14 +107,14 @@ static int run_model(pt_jmodel *jm)
 int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame)
 {
     double area[4] = { PT_JBOX_X, PT_JBOX_Y, PT_JBOX_X + PT_JBOX_W, PT_JBOX_Y + PT_JBOX_H };
-    int st;
+    int st, rc;
 
     memset(jm, 0, sizeof *jm);
     jm->s = s;
     jm->m = m;
     jm->rows = &pt_jpipes[pt_scene_pipeline(s)->id];
     pt_stage_params_of(&jm->par, s, m);
-    if (run_model(jm) != 0) { pt_jmodel_free(jm); return -1; }
+    if ((rc = run_model(jm)) != 0) { pt_jmodel_free(jm); return rc; }
     if (!(jm->place = calloc(PT_NSTAGES_ALL, sizeof *jm->place))) { pt_jmodel_free(jm); return -1; }
     for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_init(&jm->place[st], area);
     if (jm->rows->layout(jm) != 0) { pt_jmodel_free(jm); return -1; }
@@ -340,10 +343,10 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
 {
     pt_jmodel jm;
     pt_sbuf t;
-    int i, n = pt_scene_pipeline(s)->norder;
+    int i, rc, n = pt_scene_pipeline(s)->norder;
     const pt_stage *ord = pt_scene_pipeline(s)->order;
 
-    if (pt_jmodel_init(&jm, s, m, NULL) != 0) return -1;
+    if ((rc = pt_jmodel_init(&jm, s, m, NULL)) != 0) return rc;
     pt_sbuf_add(sb, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     pt_sbuf_addf(sb, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %d %d\" "
                  "width=\"100%%\" font-family=\"%s\">\n", DOC_W, DOC_H(n), PT_JFONT);

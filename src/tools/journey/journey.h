@@ -52,8 +52,9 @@
 /* Lay out the panels of model m of scene s (its pipeline's, jrows.c),
 ** running the scene for the journeys of its vertices.  frame: the scene
 ** rendered by another model's pt_jmodel (its ->frame, kept until this one is
-** freed), or NULL to render it here.  Returns 0, or -1 when out of memory
-** (then nothing is left to free). */
+** freed), or NULL to render it here.  Returns 0, or -1 when out of memory,
+** -2 when the model draws more than PT_JOURNEY_MAXPIX pixels (then nothing is
+** left to free). */
 int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame);
 
 /* Free what *jm owns (a zeroed or freed jm too).  This function can't fail. */
@@ -79,14 +80,15 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t v, pt_stage 
 
 /* Append a whole SVG document: every panel for vertex v of model m, a header
 ** and a legend.  The root has a viewBox and width="100%", so it scales.
-** Returns 0, or -1 when out of memory. */
+** Returns 0, or -1 when out of memory, -2 past PT_JOURNEY_MAXPIX pixels. */
 int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v);
 
 /* Append a self-contained HTML page (journey_html.c): one panel at a time with
 ** its formula and numbers, Prev/Next buttons and a choice of vertex; data for
 ** up to PT_JOURNEY_MAXV used vertices of the scene, or, pick not NULL, for the
 ** vertices k + 1 of m with pick[k] set (used or not); vertex v of m first
-** shown.  Returns 0, or -1 when out of memory. */
+** shown.  Returns 0, or -1 when out of memory, -2 past PT_JOURNEY_MAXPIX
+** pixels. */
 int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v,
                     const unsigned char *pick);
 

@@ -289,7 +289,10 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     }
     for (mi = 0; mi < s->nmodels; mi++) {
         if (!has[mi]) continue;
-        if (pt_jmodel_init(&jms[mi], s, &s->models[mi], frame) != 0) goto done;
+        if ((i = pt_jmodel_init(&jms[mi], s, &s->models[mi], frame)) != 0) {
+            rc = i;
+            goto done;
+        }
         if (!frame) frame = jms[mi].frame;  /* the scene rendered once for every model */
     }
 
