@@ -854,7 +854,7 @@ static unsigned long name_format_char(const unsigned char *p, size_t n)
 
 /* Refuse a name t (what: "model", "position") that holds a format character
 ** (name_format_char()).  Returns 0, or -1 after the error at its column. */
-static int name_chars(parser *ps, source *src, const token *t, const char *what)
+int pt_sc_name_chars(parser *ps, source *src, const token *t, const char *what)
 {
     const char *why;
     unsigned long c;
@@ -876,7 +876,7 @@ static int name_chars(parser *ps, source *src, const token *t, const char *what)
 /* model NAME [POSITION]: a new current model (and its Position's name).
 ** Names are unique and go into JSON, CSV and text output, so '"', '\' and
 ** ',' are kept out of them, and onto terminals and pages, so format
-** characters are (name_chars()).  (Spaces, '#', control characters and bad
+** characters are (pt_sc_name_chars()).  (Spaces, '#', control characters and bad
 ** UTF-8 cannot reach here.)  The duplicate check asks a hash table
 ** (core/nameset.h): a scene of many models is read in linear time. */
 static int do_model(parser *ps, source *src, const token *dir, cursor *args)
@@ -898,8 +898,8 @@ static int do_model(parser *ps, source *src, const token *dir, cursor *args)
         if (a.p[i] == '"' || a.p[i] == '\\' || a.p[i] == ',')
             return pt_sc_fail(ps, src, a.p + i, "model name '%s' may not contain '%c'",
                         pt_sc_shown(a.p, a.n, q), a.p[i]);
-    if (name_chars(ps, src, &a, "model") < 0
-        || (n == 2 && name_chars(ps, src, &b[1], "position") < 0))
+    if (pt_sc_name_chars(ps, src, &a, "model") < 0
+        || (n == 2 && pt_sc_name_chars(ps, src, &b[1], "position") < 0))
         return -1;
     if ((i = pt_nameset_find(&ps->names, a.p, a.n)) != SIZE_MAX)
         return pt_sc_fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",

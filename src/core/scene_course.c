@@ -80,13 +80,15 @@ int pt_sc_renderer(parser *ps, source *src, const token *dir, cursor *args)
     return 0;
 }
 
-/* scene NAME: one word, checked like every byte of a line (UTF-8, no controls). */
+/* scene NAME: one word, checked like every byte of a line (UTF-8, no controls)
+** and like a model name for format characters (it reaches terminals). */
 int pt_sc_scene_name(parser *ps, source *src, const token *dir, cursor *args)
 {
     token a;
 
     if (once_at(ps, src, dir, &ps->course.scene) < 0
-        || pt_sc_take_args(ps, src, dir, args, &a, 1, 1, "name", NULL) < 0)
+        || pt_sc_take_args(ps, src, dir, args, &a, 1, 1, "name", NULL) < 0
+        || pt_sc_name_chars(ps, src, &a, "scene") < 0)
         return -1;
     if ((ps->s->scene_name = copy_token(&a)) == NULL)
         return pt_sc_fail(ps, src, dir->p, "out of memory");

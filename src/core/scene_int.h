@@ -126,6 +126,9 @@ struct pt_model *pt_sc_model(parser *ps);
 int pt_sc_room(parser *ps, const source *src, const char *at, void **arr,
                size_t n, size_t *cap, size_t size, size_t max, const char *what);
 void *pt_sc_grow(void *p, size_t *cap, size_t size, size_t max);
+/* Refuse a name t (what: "model", "position", "scene") with a format
+** character (bidirectional and other invisible ones).  0, or -1. */
+int pt_sc_name_chars(parser *ps, source *src, const token *t, const char *what);
 
 /* The course's directives (scene_course.c). */
 int pt_sc_renderer(parser *ps, source *src, const token *dir, cursor *args);
