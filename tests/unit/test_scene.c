@@ -987,7 +987,7 @@ static void test_course(void)
     bad("scene-4.27 a point under the matrix camera", "camera lookat 0 0 0 0 0 -1 0 1 0\n"
         "projection perspective 60 1 1 10\nmodel a\nv 0 0 0\npoint 1\n",
         "t.scene:5:1: error:", "course renderer");
-    bad("scene-4.29 a scene name with U+202E", "scene a\xe2\x80\xaeb\n", "t.scene:1:8: error:",
+    bad("scene-4.29 a scene name with U+202E", "scene a\xe2\x80\xae" "b\n", "t.scene:1:8: error:",
         "U+202E");
     bad("scene-4.28 perspective-fov without its numbers", "renderer 7\ncamera perspective-fov"
         " 60\n", "t.scene:2:8: error:", "FOVY ASPECT");
