@@ -177,11 +177,16 @@ static char *path(const char *name)
 /* Write the scene of n octagons to B/bench-NAME.scene. */
 static char *make_scene(const char *name, const char *n)
 {
-    char *argv[3], *out = path(name);
+    char *argv[5], *out = path(name);
 
     argv[0] = path("benchgen");
     argv[1] = (char *)n;
     argv[2] = NULL;
+    if (!strcmp(name, "bench-r9.scene")) {  /* renderer 9, anti-aliased */
+        argv[2] = "1000";
+        argv[3] = "9";
+        argv[4] = NULL;
+    }
     spawn(argv, out, NULL, NULL);
     return out;
 }
@@ -331,7 +336,7 @@ static int same_file(const char *a, const char *b)
 int main(int argc, char **argv)
 {
     static const char *const fmts[] = {"jsonl", "text", "csv"};
-    char *s200, *s800, *s3200, *pt = NULL, *ppm, *bppm;
+    char *s200, *s800, *s3200, *s9, *pt = NULL, *ppm, *bppm;
     double bp, br, pp, pr, tproc, tbase, t800, t3200, bytes;
     long rss;
     char note[256];
@@ -344,6 +349,7 @@ int main(int argc, char **argv)
     s200 = make_scene("bench-200k.scene", "25000");
     s800 = make_scene("bench-800k.scene", "100000");
     s3200 = make_scene("bench-3200k.scene", "400000");
+    s9 = make_scene("bench-r9.scene", "25000");
     pt = path("pipetrace");
     ppm = path("bench-pt.ppm");
     bppm = path("bench-base.ppm");
@@ -411,6 +417,24 @@ int main(int argc, char **argv)
             printf("    %-17s %8.1f MB  %8.4f s  %8.1f MB/s  %6.2fx, %+.4f s over untraced\n",
                    k == 0 ? "vertex records" : "raster records", pbytes[k] / 1e6, t[5 + k],
                    pbytes[k] / t[5 + k] / 1e6, t[5 + k] / tproc, t[5 + k] - tproc);
+    }
+    {   /* the course's renderer 9 on the same octagons, anti-aliased, gamma on */
+        char *a[] = {pt, s200, "--image", ppm, NULL};
+        char *r[] = {pt, s9, "--image", ppm, NULL};
+        char *j[] = {pt, s9, "--image", ppm, "--format", "jsonl", "--trace", "-", NULL};
+        char *const *all[2];
+        double t[2], jt, jbytes;
+        spawn(j, NULL, NULL, &jbytes);
+        j[7] = "/dev/null";
+        all[0] = a;
+        all[1] = r;
+        spawn_rounds(all, 2, t, NULL);
+        jt = spawn_least(j);
+        printf("\nrenderer 9, anti-aliased, the same octagons (%s), whole process\n", s9);
+        printf("  %-28s %8.4f s  %6.2fx renderer 4's, %6.2fx the plain C one's\n",
+               "image only", t[1], t[1] / t[0], t[1] / tbase);
+        printf("  %-28s %8.4f s  %6.2fx its untraced process, %8.1f MB/s\n",
+               "jsonl trace", jt, jt / t[1], jbytes / jt / 1e6);
     }
     {
         char *a[] = {pt, s800, "--image", ppm, NULL};

@@ -2,13 +2,15 @@
 ** tests/bench/benchgen.c -- write the benchmark scene: N closed 8-gons, 1920 x 1080
 ** See LICENSE for copyright and license.
 **
-** Usage: benchgen [N [PER_MODEL]]  (defaults 25000 and 1000).  Writes to
+** Usage: benchgen [N [PER_MODEL [RENDERER]]]  (defaults 25000, 1000, 4).  Writes to
 ** standard output a perspective scene of N octagons (8 vertices and one `f`
 ** line each, so 8 segments), PER_MODEL of them a model, scattered over the
 ** view by a fixed linear congruential generator: the same N gives the same
 ** bytes on every machine.  Coordinates have six decimals, as an exporter
 ** writes them.  N = 25000 is 200,000 vertices and segments, about 2.3 million
 ** pixels; `make bench` times pipetrace and tests/bench/baseline.c on it.
+** RENDERER 9 writes the same octagons for the course's renderer 9 with
+** anti-aliasing (each model placed by `matrix translate`), gamma on.
 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,20 +32,24 @@ int main(int argc, char **argv)
         {-1, 0}, {-0.70710678, -0.70710678}, {0, -1}, {0.70710678, -0.70710678}};
     long n = argc > 1 ? atol(argv[1]) : 25000;
     long per = argc > 2 ? atol(argv[2]) : 1000;
+    long renderer = argc > 3 ? atol(argv[3]) : 4;
     long i, k;
 
-    if (n < 1 || per < 1) {
-        fprintf(stderr, "usage: benchgen [N [PER_MODEL]]\n");
+    if (n < 1 || per < 1 || (renderer != 4 && renderer != 9)) {
+        fprintf(stderr, "usage: benchgen [N [PER_MODEL [4|9]]]\n");
         return 1;
     }
     printf("# the benchmark scene: %ld octagons (tests/bench/benchgen.c)\n", n);
     printf("framebuffer 1920 1080\ncamera perspective\n");
+    if (renderer == 9)
+        printf("renderer 9\nantialias on\n");
     for (i = 0; i < n; i++) {
         double cx = 7.6 * uniform() - 3.8, cy = 4.2 * uniform() - 2.1;
         double cz = 0.8 * uniform() - 0.4, r = 0.03 + 0.09 * uniform();
 
         if (i % per == 0)
-            printf("model m%ld\ntranslate 0 0 -4\n", i / per + 1);
+            printf("model m%ld\n%s\n", i / per + 1, renderer == 9
+                   ? "matrix translate 0 0 -4\ncolor 255 255 255" : "translate 0 0 -4");
         for (k = 0; k < 8; k++)
             printf("v %.6f %.6f %.6f\n", cx + r * ring[k][0], cy + r * ring[k][1], cz);
         printf("f -8 -7 -6 -5 -4 -3 -2 -1\n");
