@@ -111,7 +111,7 @@ REF_O    = $B/ref_s1_model2camera.o $B/ref_s2_camera2image.o $B/ref_s3_image2pix
            $B/ref_s4_pixel2viewport.o $B/ref_s5_viewport2fb.o $B/ref_s6_fb2index.o $B/pt_ref.o
 # src/core/: scene, plan, run (the pipelines), raster, framebuffer (one public header).
 # pixelpath.o is the rasterizer with the stages s4, s5 and s6 (see below).
-CORE_O   = $B/scene.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjourney.o \
+CORE_O   = $B/scene.o $B/scene_course.o $B/nameset.o $B/numparse.o $B/shapes.o $B/builtin.o $B/vjourney.o \
            $B/pipeline.o $B/pixelpath.o $B/fb.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
 IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace_buf.o $B/trace_head.o \

@@ -4,6 +4,6 @@
 */
 #ifndef PT_R7_MODEL2VIEW_H
 #define PT_R7_MODEL2VIEW_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 pt_vec4 pt_r7_model2view(pt_vec4 v_m, pt_vec3 t);
 #endif

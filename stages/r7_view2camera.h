@@ -4,6 +4,6 @@
 */
 #ifndef PT_R7_VIEW2CAMERA_H
 #define PT_R7_VIEW2CAMERA_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 pt_vec4 pt_r7_view2camera(pt_vec4 v, const pt_rv_camera *cam);
 #endif

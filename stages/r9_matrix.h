@@ -11,7 +11,7 @@
 #define PT_R9_MATRIX_H
 
 #include <stddef.h>
-#include "stages/pt_mat4.h"
+#include "pt_mat4.h"
 
 typedef enum pt_matmul {
     PT_MATMUL_POST,              /* matrix OP */

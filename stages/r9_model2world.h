@@ -4,7 +4,7 @@
 */
 #ifndef PT_R9_MODEL2WORLD_H
 #define PT_R9_MODEL2WORLD_H
-#include "stages/rv_model.h"
-#include "stages/r9_matrix.h"
+#include "rv_model.h"
+#include "r9_matrix.h"
 pt_vec4 pt_r9_model2world(pt_vec4 v_m, const pt_jmat *m);
 #endif

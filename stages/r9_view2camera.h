@@ -4,8 +4,8 @@
 */
 #ifndef PT_R9_VIEW2CAMERA_H
 #define PT_R9_VIEW2CAMERA_H
-#include "stages/rv_model.h"
-#include "stages/r9_matrix.h"
+#include "rv_model.h"
+#include "r9_matrix.h"
 pt_jmat pt_r9_normalize_matrix(const pt_rv_camera *cam);
 pt_vec4 pt_r9_view2camera(pt_vec4 v, const pt_jmat *norm);
 #endif

@@ -4,6 +4,6 @@
 */
 #ifndef PT_R9_WORLD2VIEW_H
 #define PT_R9_WORLD2VIEW_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 pt_vec4 pt_r9_world2view(pt_vec4 v, pt_vec3 view);
 #endif

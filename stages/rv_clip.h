@@ -4,7 +4,7 @@
 */
 #ifndef PT_RV_CLIP_H
 #define PT_RV_CLIP_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 /* Clip m's primitives to the square in place (vertices and colours appended,
 ** primitive list replaced).  0, or -1 when out of memory. */
 int pt_rv_clip(pt_rv_model *m, const pt_rv_clip_ls *ls);

@@ -21,8 +21,8 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "stages/pt_stage.h"
-#include "stages/pt_mat4.h"
+#include "pt_stage.h"
+#include "pt_mat4.h"
 
 typedef enum pt_rv_kind {
     PT_RV_LINE,                  /* LineSegment(v0, v1, c0, c1) */

@@ -4,7 +4,7 @@
 */
 #ifndef PT_RV_NEARCLIP_H
 #define PT_RV_NEARCLIP_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 /* Clip m's primitives at z = n in place: new vertices and colours appended,
 ** the primitive list replaced.  0, or -1 when out of memory. */
 int pt_rv_nearclip(pt_rv_model *m, double n, const pt_rv_clip_ls *ls);

@@ -4,6 +4,6 @@
 */
 #ifndef PT_RV_PROJECT_H
 #define PT_RV_PROJECT_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 pt_vec4 pt_rv_project(pt_vec4 v, int perspective);
 #endif

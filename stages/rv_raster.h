@@ -4,7 +4,7 @@
 */
 #ifndef PT_RV_RASTER_H
 #define PT_RV_RASTER_H
-#include "stages/rv_model.h"
+#include "rv_model.h"
 
 /* The viewport and framebuffer a primitive is drawn into, and the switches. */
 typedef struct pt_rv_raster_par {

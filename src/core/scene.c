@@ -8,7 +8,7 @@
 ** (pt_scene_parse) is walked the same way, all of it one window.
 ** next_line() finds the end of a line and checks every byte on the way (valid
 ** UTF-8, no control characters, CR only as part of CRLF), so everything after
-** it sees clean text.  next_token() splits a line at spaces and tabs and hands
+** it sees clean text.  pt_sc_next_token() splits a line at spaces and tabs and hands
 ** out (pointer, length) pairs into the buffer: tokens are never copied, except
 ** a number that takes strtod()'s path, which needs it NUL-terminated
 ** (core/numparse.h).
@@ -37,76 +37,14 @@
 #include <unistd.h>
 
 #include "core/scene.h"
+#include "core/scene_int.h"
 #include "core/nameset.h"
 #include "core/numparse.h"
 #include "core/shapes.h"
 
-#define MAX_VERTS  0x7fffffffu  /* per model: indices must fit in a uint32_t */
-#define MAX_SEGS   0x7fffffffu  /* per model: a matching limit for segments */
-#define QUOTE_MAX  40           /* bytes of a token quoted in a message */
-#define QUOTE_BUF  (QUOTE_MAX + 4)
-#define INT_CAP    INT64_C(100000000000000000)  /* integers saturate at +-1e17 */
-
-/* A token: n bytes at p, inside the text buffer (not NUL-terminated). */
-typedef struct token {
-    const char *p;
-    size_t n;
-} token;
-
-/* The unread part of one line: from p up to end, where end is the line end
-** or the first '#', whichever comes first. */
-typedef struct cursor {
-    const char *p, *end;
-} cursor;
-
-/* One text being read: a .scene file, or an OBJ file (included or not). */
-typedef struct source {
-    const char *name;           /* file name for messages */
-    const char *p, *end;        /* the unread text */
-    const char *line;           /* start of the current line; columns count from here */
-    size_t lineno;              /* number of the current line, 1-based */
-    int obj;                    /* 1: OBJ mode (only v, l, f; other keywords ignored) */
-    size_t base;                /* vertices the model had before this text began */
-    FILE *f;                    /* a stream: the file; NULL: the text is in memory */
-    int own;                    /* 1: f was opened here and is closed here */
-    int included;               /* 1: an `obj` file: its text is quoted sparingly */
-    char *buf;                  /* a stream: the window p..end lies in, owned */
-    size_t cap;                 /* its size in bytes */
-    int eof;                    /* 1: nothing more to read (always, in memory) */
-    int errnum;                 /* errno of a read error, else 0 */
-} source;
-
-#define CHUNK 65536             /* a stream's window, at least */
-
-/* What the parse of one scene remembers between lines. */
-typedef struct parser {
-    pt_scene *s;                /* the scene being filled */
-    const char *dir;            /* obj paths are relative to dir[0..dirlen) */
-    size_t dirlen;
-    char *err;                  /* the caller's message buffer */
-    size_t errlen;
-    size_t fb_line, bg_line;    /* line of each once-per-scene directive, 0: none yet */
-    size_t vp_line, cam_line;
-    size_t proj_line;           /* line of `projection`, 0: none */
-    size_t world_line;          /* line and column of the first `world`, 0: none */
-    size_t world_col;
-    size_t cam_col;             /* column of the camera's kind, for late checks */
-    size_t proj_col[5];         /* columns of `projection`, fov, aspect, near, far */
-    size_t vp_col;              /* column of `viewport`, for the late fit check */
-    size_t translate_line;      /* once-per-model directives of the current model */
-    size_t color_line;
-    size_t *model_line;         /* model_line[i]: line of the `model` of s->models[i] */
-    size_t cap_model_line;
-    pt_nameset names;             /* the models' names -> their index in s->models */
-} parser;
 
 /* ---------------------------------------------------------------- messages */
 
-#if defined(__GNUC__)
-#define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
-#else
-#define PRINTF_LIKE(f, a)
-#endif
 
 /* ===== errors: FILE:LINE:COL messages ===== */
 
@@ -132,9 +70,7 @@ static int vfail(char *err, size_t errlen, const char *name, size_t line,
 }
 
 /* An error at an explicit file, line and column. */
-static int fail_at(char *err, size_t errlen, const char *name, size_t line,
-                   size_t col, const char *fmt, ...) PRINTF_LIKE(6, 7);
-static int fail_at(char *err, size_t errlen, const char *name, size_t line,
+int pt_sc_fail_at(char *err, size_t errlen, const char *name, size_t line,
                    size_t col, const char *fmt, ...)
 {
     va_list ap;
@@ -146,9 +82,7 @@ static int fail_at(char *err, size_t errlen, const char *name, size_t line,
 }
 
 /* An error at the byte `at` of the current line of src. */
-static int fail(parser *ps, const source *src, const char *at,
-                const char *fmt, ...) PRINTF_LIKE(4, 5);
-static int fail(parser *ps, const source *src, const char *at,
+int pt_sc_fail(parser *ps, const source *src, const char *at,
                 const char *fmt, ...)
 {
     va_list ap;
@@ -164,7 +98,7 @@ static int fail(parser *ps, const source *src, const char *at,
 
 /* Copy p[0..n) into buf (QUOTE_BUF bytes) for a message.  Text longer than
 ** QUOTE_MAX bytes is cut, at a character boundary, and "..." appended. */
-static const char *shown(const char *p, size_t n, char *buf)
+const char *pt_sc_shown(const char *p, size_t n, char *buf)
 {
     size_t k = n;
 
@@ -237,19 +171,19 @@ static size_t check_char(parser *ps, const source *src, const unsigned char *p,
     if (p[0] == '\r') {
         if (p + 1 < end && p[1] == '\n')
             return 1;
-        fail(ps, src, at, "carriage return not followed by a line feed");
+        pt_sc_fail(ps, src, at, "carriage return not followed by a line feed");
     } else if (p[0] == 0) {
-        fail(ps, src, at, "NUL byte");
+        pt_sc_fail(ps, src, at, "NUL byte");
     } else if (p[0] < 0x80) {
-        fail(ps, src, at, "control character 0x%02x", p[0]);
+        pt_sc_fail(ps, src, at, "control character 0x%02x", p[0]);
     } else if ((n = utf8_len(p, (size_t)(end - p), &why)) == 0) {
         if (why == NULL)
-            fail(ps, src, at, "invalid UTF-8 byte 0x%02x", p[0]);
+            pt_sc_fail(ps, src, at, "invalid UTF-8 byte 0x%02x", p[0]);
         else
-            fail(ps, src, at, "invalid UTF-8 sequence starting with byte 0x%02x (%s)",
+            pt_sc_fail(ps, src, at, "invalid UTF-8 sequence starting with byte 0x%02x (%s)",
                  p[0], why);
     } else if (is_c1_control(p, n)) {
-        fail(ps, src, at, "control character U+%04X", (unsigned)p[1]);
+        pt_sc_fail(ps, src, at, "control character U+%04X", (unsigned)p[1]);
     } else {
         return n;
     }
@@ -261,7 +195,6 @@ static size_t check_char(parser *ps, const source *src, const unsigned char *p,
 ** it.  After a chunk with a NUL byte nothing more is read: the parser
 ** reports the byte anyway, and `obj /dev/zero` must not eat all memory.
 ** Returns 0; -1 on a read error (errno in src->errnum); -2 when out of memory. */
-static void *grow(void *p, size_t *cap, size_t size, size_t max);
 
 static int fill(source *src)
 {
@@ -270,7 +203,7 @@ static int fill(source *src)
 
     memmove(src->buf, src->p, keep);
     if (keep > src->cap / 2) {
-        p = grow(src->buf, &src->cap, 1, SIZE_MAX);
+        p = pt_sc_grow(src->buf, &src->cap, 1, SIZE_MAX);
         if (p == NULL)
             return -2;
         src->buf = p;
@@ -306,7 +239,7 @@ static int next_line(parser *ps, source *src, cursor *line)
 
     while (!src->eof && memchr(src->p, '\n', (size_t)(src->end - src->p)) == NULL)
         if ((r = fill(src)) < 0)        /* a stream: read on to the line's end */
-            return fail_at(ps->err, ps->errlen, src->name, src->lineno + 1, 1, "%s",
+            return pt_sc_fail_at(ps->err, ps->errlen, src->name, src->lineno + 1, 1, "%s",
                            r == -2 ? "out of memory" : strerror(src->errnum));
     p = (const unsigned char *)src->p;
     end = (const unsigned char *)src->end;
@@ -344,7 +277,7 @@ static int next_line(parser *ps, source *src, cursor *line)
 /* ===== tokens and numbers ===== */
 
 /* Take the next token from c into *t.  Returns 1, or 0 when none is left. */
-static int next_token(cursor *c, token *t)
+int pt_sc_next_token(cursor *c, token *t)
 {
     const char *p = c->p;
 
@@ -363,7 +296,7 @@ static int next_token(cursor *c, token *t)
 }
 
 /* Is t the word w? */
-static int tok_is(const token *t, const char *w)
+int pt_sc_tok_is(const token *t, const char *w)
 {
     size_t n = strlen(w);
 
@@ -419,7 +352,7 @@ static int scan_integer(const char *p, size_t n, int64_t *out)
 ** pt_parse_decimal() checks the form [+-]?(digits[.digits*]|.digits)
 ** ([eE][+-]?digits)? (no hex, inf, nan, "1f", "1,5") and converts in one
 ** pass, exactly as strtod() would (core/numparse.h). */
-static int parse_number(parser *ps, const source *src, const token *t,
+int pt_sc_number(parser *ps, const source *src, const token *t,
                         const char *what, double *out)
 {
     char q[QUOTE_BUF];
@@ -427,30 +360,30 @@ static int parse_number(parser *ps, const source *src, const token *t,
     int r = pt_parse_decimal(t->p, t->n, &x);
 
     if (r == -1)
-        return fail(ps, src, t->p, "'%s' is not a decimal number",
-                    shown(t->p, t->n, q));
+        return pt_sc_fail(ps, src, t->p, "'%s' is not a decimal number",
+                    pt_sc_shown(t->p, t->n, q));
     if (r == -2)
-        return fail(ps, src, t->p, "out of memory");
+        return pt_sc_fail(ps, src, t->p, "out of memory");
     if (!isfinite(x))
-        return fail(ps, src, t->p, "%s '%s' is not finite", what,
-                    shown(t->p, t->n, q));
+        return pt_sc_fail(ps, src, t->p, "%s '%s' is not finite", what,
+                    pt_sc_shown(t->p, t->n, q));
     *out = x;
     return 0;
 }
 
 /* Parse t as an integer in lo..hi into *out; what names it in messages. */
-static int parse_int(parser *ps, const source *src, const token *t,
+int pt_sc_int(parser *ps, const source *src, const token *t,
                      const char *what, int lo, int hi, int *out)
 {
     char q[QUOTE_BUF];
     int64_t v;
 
     if (scan_integer(t->p, t->n, &v) < 0)
-        return fail(ps, src, t->p, "%s '%s' is not an integer", what,
-                    shown(t->p, t->n, q));
+        return pt_sc_fail(ps, src, t->p, "%s '%s' is not an integer", what,
+                    pt_sc_shown(t->p, t->n, q));
     if (v < lo || v > hi)
-        return fail(ps, src, t->p, "%s %s is out of range (%d..%d)", what,
-                    shown(t->p, t->n, q), lo, hi);
+        return pt_sc_fail(ps, src, t->p, "%s %s is out of range (%d..%d)", what,
+                    pt_sc_shown(t->p, t->n, q), lo, hi);
     *out = (int)v;                      /* lo <= v <= hi: the cast is exact */
     return 0;
 }
@@ -462,7 +395,7 @@ static int parse_int(parser *ps, const source *src, const token *t,
 /* Grow the array p of *cap elements of size bytes, doubling (from 16) but
 ** never beyond max elements nor SIZE_MAX bytes.  Returns the new array and
 ** updates *cap, or returns NULL, p untouched, when it cannot grow. */
-static void *grow(void *p, size_t *cap, size_t size, size_t max)
+void *pt_sc_grow(void *p, size_t *cap, size_t size, size_t max)
 {
     size_t n;
 
@@ -480,7 +413,7 @@ static void *grow(void *p, size_t *cap, size_t size, size_t max)
 }
 
 /* The current model.  Callers make sure there is one. */
-static pt_model *cur_model(parser *ps)
+pt_model *pt_sc_model(parser *ps)
 {
     return &ps->s->models[ps->s->nmodels - 1];
 }
@@ -495,7 +428,7 @@ static int new_model(parser *ps, const char *name, size_t n, size_t lineno)
     void *p;
 
     if (s->nmodels == s->cap_models) {
-        p = grow(s->models, &s->cap_models, sizeof *s->models, SIZE_MAX);
+        p = pt_sc_grow(s->models, &s->cap_models, sizeof *s->models, SIZE_MAX);
         if (p == NULL)
             return -1;
         s->models = p;
@@ -522,23 +455,25 @@ static int new_model(parser *ps, const char *name, size_t n, size_t lineno)
     m->color[0] = m->color[1] = m->color[2] = 255;
     m->world = pt_mat4_identity();
     ps->translate_line = ps->color_line = 0;
+    ps->course.cindex_max = 0;
+    ps->course.vcolor_line = ps->course.hidepos_line = ps->course.hidemodel_line = 0;
     return 0;
 }
 
 /* Room in *arr (n items of size bytes, room for *cap) for one more, at most
 ** max of them in one model: `what` names them in the message, at is where
 ** to point an error.  Returns 0, or -1 after the error. */
-static int room_for_one(parser *ps, const source *src, const char *at, void **arr,
+int pt_sc_room(parser *ps, const source *src, const char *at, void **arr,
                         size_t n, size_t *cap, size_t size, size_t max, const char *what)
 {
     void *p;
 
     if (n != *cap) return 0;
     if (n >= max)
-        return fail(ps, src, at, "more than %lu %s in one model", (unsigned long)max, what);
-    p = grow(*arr, cap, size, max);
+        return pt_sc_fail(ps, src, at, "more than %lu %s in one model", (unsigned long)max, what);
+    p = pt_sc_grow(*arr, cap, size, max);
     if (p == NULL)
-        return fail(ps, src, at, "out of memory");
+        return pt_sc_fail(ps, src, at, "out of memory");
     *arr = p;
     return 0;
 }
@@ -546,9 +481,9 @@ static int room_for_one(parser *ps, const source *src, const char *at, void **ar
 /* Append vertex v to the current model; at is where to point an error. */
 static int add_vertex(parser *ps, const source *src, const char *at, pt_vec3 v)
 {
-    pt_model *m = cur_model(ps);
+    pt_model *m = pt_sc_model(ps);
 
-    if (room_for_one(ps, src, at, (void **)&m->v, m->nv, &m->cap_v, sizeof *m->v,
+    if (pt_sc_room(ps, src, at, (void **)&m->v, m->nv, &m->cap_v, sizeof *m->v,
                      MAX_VERTS, "vertices") != 0)
         return -1;
     m->v[m->nv++] = v;
@@ -559,13 +494,13 @@ static int add_vertex(parser *ps, const source *src, const char *at, pt_vec3 v)
 static int add_segment(parser *ps, const source *src, const char *at,
                        uint32_t a, uint32_t b)
 {
-    pt_model *m = cur_model(ps);
+    pt_model *m = pt_sc_model(ps);
 
-    if (room_for_one(ps, src, at, (void **)&m->seg, m->nseg, &m->cap_seg, sizeof *m->seg,
+    if (pt_sc_room(ps, src, at, (void **)&m->seg, m->nseg, &m->cap_seg, sizeof *m->seg,
                      MAX_SEGS, "segments") != 0)
         return -1;
-    m->seg[m->nseg].a = a;
-    m->seg[m->nseg].b = b;
+    m->seg[m->nseg].a = m->seg[m->nseg].ca = a;
+    m->seg[m->nseg].b = m->seg[m->nseg].cb = b;
     m->nseg++;
     return 0;
 }
@@ -604,10 +539,10 @@ static int vertex_ref(const token *t, token *vpart)
 ** source began (an OBJ file counts its own vertices from 1):
 **     k > 0:  the k-th vertex in scope          (k <= count)
 **     k < 0:  the |k|-th vertex counting back   (|k| <= count, -1 = the last) */
-static int resolve_index(parser *ps, const source *src, const token *t,
+int pt_sc_index(parser *ps, const source *src, const token *t,
                          uint32_t *out)
 {
-    size_t nv = cur_model(ps)->nv;
+    size_t nv = pt_sc_model(ps)->nv;
     size_t count = nv - src->base;      /* vertices in scope, <= MAX_VERTS */
     const char *scope = src->obj ? " in this file" : "";
     const char *noun = count == 1 ? "vertex" : "vertices";
@@ -616,18 +551,18 @@ static int resolve_index(parser *ps, const source *src, const token *t,
     int64_t k;
 
     if (vertex_ref(t, &vp) < 0 || scan_integer(vp.p, vp.n, &k) < 0)
-        return fail(ps, src, t->p,
+        return pt_sc_fail(ps, src, t->p,
                     "'%s' is not a vertex index (expected I, I/T, I//N or I/T/N)",
-                    shown(t->p, t->n, q));
+                    pt_sc_shown(t->p, t->n, q));
     if (k == 0)
-        return fail(ps, src, t->p, "index 0 is not valid (indices start at 1)");
+        return pt_sc_fail(ps, src, t->p, "index 0 is not valid (indices start at 1)");
     if (k > 0 && (uint64_t)k > count)
-        return fail(ps, src, t->p, "index %s refers past the %zu %s defined so far%s",
-                    shown(vp.p, vp.n, q), count, noun, scope);
+        return pt_sc_fail(ps, src, t->p, "index %s refers past the %zu %s defined so far%s",
+                    pt_sc_shown(vp.p, vp.n, q), count, noun, scope);
     if (k < 0 && (uint64_t)-k > count)
-        return fail(ps, src, t->p,
+        return pt_sc_fail(ps, src, t->p,
                     "index %s refers before the first of the %zu %s defined so far%s",
-                    shown(vp.p, vp.n, q), count, noun, scope);
+                    pt_sc_shown(vp.p, vp.n, q), count, noun, scope);
     /* Both results are < nv <= MAX_VERTS, so they fit in a uint32_t. */
     *out = (uint32_t)(k > 0 ? src->base + (size_t)k - 1 : nv - (size_t)-k);
     return 0;
@@ -645,7 +580,7 @@ typedef int handler(parser *ps, source *src, const token *dir, cursor *args);
 ** into arg[] and their number into *count (if not NULL); noun says what they
 ** are ("numbers").  Missing arguments are reported at the directive, extra
 ** ones at the first extra argument. */
-static int take_args(parser *ps, const source *src, const token *dir,
+int pt_sc_take_args(parser *ps, const source *src, const token *dir,
                      cursor *args, token *arg, size_t lo, size_t hi,
                      const char *noun, size_t *count)
 {
@@ -654,7 +589,7 @@ static int take_args(parser *ps, const source *src, const token *dir,
     size_t n = 0;
     token t;
 
-    while (next_token(args, &t)) {
+    while (pt_sc_next_token(args, &t)) {
         if (n < hi)
             arg[n] = t;
         else if (extra == NULL)
@@ -662,14 +597,14 @@ static int take_args(parser *ps, const source *src, const token *dir,
         n++;
     }
     if (n < lo)
-        return fail(ps, src, dir->p, "expected %zu %s after '%s', found %zu",
-                    lo, noun, shown(dir->p, dir->n, q), n);
+        return pt_sc_fail(ps, src, dir->p, "expected %zu %s after '%s', found %zu",
+                    lo, noun, pt_sc_shown(dir->p, dir->n, q), n);
     if (n > hi && lo == hi)
-        return fail(ps, src, extra, "expected %zu %s after '%s', found %zu",
-                    lo, noun, shown(dir->p, dir->n, q), n);
+        return pt_sc_fail(ps, src, extra, "expected %zu %s after '%s', found %zu",
+                    lo, noun, pt_sc_shown(dir->p, dir->n, q), n);
     if (n > hi)
-        return fail(ps, src, extra, "expected at most %zu %s after '%s', found %zu",
-                    hi, noun, shown(dir->p, dir->n, q), n);
+        return pt_sc_fail(ps, src, extra, "expected at most %zu %s after '%s', found %zu",
+                    hi, noun, pt_sc_shown(dir->p, dir->n, q), n);
     if (count != NULL)
         *count = n;
     return 0;
@@ -677,28 +612,28 @@ static int take_args(parser *ps, const source *src, const token *dir,
 
 /* A directive allowed once (per scene or per model): remember its line in
 ** *seen, or fail when *seen already holds one. */
-static int once(parser *ps, const source *src, const token *dir, size_t *seen)
+int pt_sc_once(parser *ps, const source *src, const token *dir, size_t *seen)
 {
     char q[QUOTE_BUF];
 
     if (*seen != 0)
-        return fail(ps, src, dir->p, "duplicate '%s' (first at line %zu)",
-                    shown(dir->p, dir->n, q), *seen);
+        return pt_sc_fail(ps, src, dir->p, "duplicate '%s' (first at line %zu)",
+                    pt_sc_shown(dir->p, dir->n, q), *seen);
     *seen = src->lineno;
     return 0;
 }
 
 /* Three integers 0..255 into rgb[]: for `background` and `color`. */
-static int parse_rgb(parser *ps, const source *src, const token *dir,
+int pt_sc_rgb(parser *ps, const source *src, const token *dir,
                      cursor *args, const char *what, unsigned char rgb[3])
 {
     token a[3];
     int c[3], i;
 
-    if (take_args(ps, src, dir, args, a, 3, 3, "integers", NULL) < 0)
+    if (pt_sc_take_args(ps, src, dir, args, a, 3, 3, "integers", NULL) < 0)
         return -1;
     for (i = 0; i < 3; i++)
-        if (parse_int(ps, src, &a[i], what, 0, 255, &c[i]) < 0)
+        if (pt_sc_int(ps, src, &a[i], what, 0, 255, &c[i]) < 0)
             return -1;
     for (i = 0; i < 3; i++)
         rgb[i] = (unsigned char)c[i];   /* 0..255: exact */
@@ -710,11 +645,11 @@ static int do_framebuffer(parser *ps, source *src, const token *dir, cursor *arg
 {
     token a[2];
 
-    if (once(ps, src, dir, &ps->fb_line) < 0
-        || take_args(ps, src, dir, args, a, 2, 2, "integers", NULL) < 0
-        || parse_int(ps, src, &a[0], "framebuffer width", 1, PT_MAX_SIZE,
+    if (pt_sc_once(ps, src, dir, &ps->fb_line) < 0
+        || pt_sc_take_args(ps, src, dir, args, a, 2, 2, "integers", NULL) < 0
+        || pt_sc_int(ps, src, &a[0], "framebuffer width", 1, PT_MAX_SIZE,
                      &ps->s->fb_w) < 0
-        || parse_int(ps, src, &a[1], "framebuffer height", 1, PT_MAX_SIZE,
+        || pt_sc_int(ps, src, &a[1], "framebuffer height", 1, PT_MAX_SIZE,
                      &ps->s->fb_h) < 0)
         return -1;
     return 0;
@@ -723,9 +658,9 @@ static int do_framebuffer(parser *ps, source *src, const token *dir, cursor *arg
 /* background R G B */
 static int do_background(parser *ps, source *src, const token *dir, cursor *args)
 {
-    if (once(ps, src, dir, &ps->bg_line) < 0)
+    if (pt_sc_once(ps, src, dir, &ps->bg_line) < 0)
         return -1;
-    return parse_rgb(ps, src, dir, args, "background component",
+    return pt_sc_rgb(ps, src, dir, args, "background component",
                      ps->s->background);
 }
 
@@ -736,25 +671,25 @@ static int do_viewport(parser *ps, source *src, const token *dir, cursor *args)
     pt_scene *s = ps->s;
     token a[4];
 
-    if (once(ps, src, dir, &ps->vp_line) < 0
-        || take_args(ps, src, dir, args, a, 4, 4, "integers", NULL) < 0
-        || parse_int(ps, src, &a[0], "viewport x", 0, PT_MAX_SIZE - 1, &s->vp_x) < 0
-        || parse_int(ps, src, &a[1], "viewport y", 0, PT_MAX_SIZE - 1, &s->vp_y) < 0
-        || parse_int(ps, src, &a[2], "viewport width", 1, PT_MAX_SIZE, &s->vp_w) < 0
-        || parse_int(ps, src, &a[3], "viewport height", 1, PT_MAX_SIZE, &s->vp_h) < 0)
+    if (pt_sc_once(ps, src, dir, &ps->vp_line) < 0
+        || pt_sc_take_args(ps, src, dir, args, a, 4, 4, "integers", NULL) < 0
+        || pt_sc_int(ps, src, &a[0], "viewport x", 0, PT_MAX_SIZE - 1, &s->vp_x) < 0
+        || pt_sc_int(ps, src, &a[1], "viewport y", 0, PT_MAX_SIZE - 1, &s->vp_y) < 0
+        || pt_sc_int(ps, src, &a[2], "viewport width", 1, PT_MAX_SIZE, &s->vp_w) < 0
+        || pt_sc_int(ps, src, &a[3], "viewport height", 1, PT_MAX_SIZE, &s->vp_h) < 0)
         return -1;
     ps->vp_col = (size_t)(dir->p - src->line) + 1;
     return 0;
 }
 
 /* Numbers a[0..n) into v[]; what names them in messages. */
-static int parse_numbers(parser *ps, const source *src, const token *a, size_t n,
+int pt_sc_numbers(parser *ps, const source *src, const token *a, size_t n,
                          const char *what, double *v)
 {
     size_t i;
 
     for (i = 0; i < n; i++)
-        if (parse_number(ps, src, &a[i], what, &v[i]) < 0)
+        if (pt_sc_number(ps, src, &a[i], what, &v[i]) < 0)
             return -1;
     return 0;
 }
@@ -769,30 +704,33 @@ static int do_camera(parser *ps, source *src, const token *dir, cursor *args)
     double v[9];
     size_t n;
 
-    if (once(ps, src, dir, &ps->cam_line) < 0
-        || take_args(ps, src, dir, args, a, 1, 10, "word", &n) < 0)
+    if (pt_sc_once(ps, src, dir, &ps->cam_line) < 0
+        || pt_sc_take_args(ps, src, dir, args, a, 1, 10, "word", &n) < 0)
         return -1;
     ps->cam_col = (size_t)(a[0].p - src->line) + 1;
-    if (tok_is(&a[0], "perspective") || tok_is(&a[0], "orthographic")) {
-        if (n != 1)
-            return fail(ps, src, a[1].p, "expected 1 word after 'camera', found %zu", n);
-        ps->s->perspective = tok_is(&a[0], "perspective");
-        return 0;
+    if (pt_sc_tok_is(&a[0], "perspective") || pt_sc_tok_is(&a[0], "orthographic")) {
+        ps->s->perspective = pt_sc_tok_is(&a[0], "perspective");
+        return n == 1 ? 0 : pt_sc_camera_volume(ps, src, a, n);
     }
-    if (!tok_is(&a[0], "lookat") && !tok_is(&a[0], "lookat-target"))
-        return fail(ps, src, a[0].p, "unknown camera '%s' (expected perspective, "
-                    "orthographic, lookat or lookat-target)", shown(a[0].p, a[0].n, q));
+    if (pt_sc_tok_is(&a[0], "perspective-fov") || pt_sc_tok_is(&a[0], "orthographic-fov")) {
+        ps->s->perspective = pt_sc_tok_is(&a[0], "perspective-fov");
+        return pt_sc_camera_volume(ps, src, a, n);
+    }
+    if (!pt_sc_tok_is(&a[0], "lookat") && !pt_sc_tok_is(&a[0], "lookat-target"))
+        return pt_sc_fail(ps, src, a[0].p, "unknown camera '%s' (expected perspective, "
+                    "orthographic, perspective-fov, orthographic-fov, lookat or lookat-target)",
+                    pt_sc_shown(a[0].p, a[0].n, q));
     if (n != 10)
-        return fail(ps, src, a[0].p, "expected 9 numbers after 'camera %s' "
-                    "(eye, %s, up), found %zu", shown(a[0].p, a[0].n, q),
-                    tok_is(&a[0], "lookat") ? "direction" : "target", n - 1);
-    if (parse_numbers(ps, src, a + 1, 9, "camera coordinate", v) < 0)
+        return pt_sc_fail(ps, src, a[0].p, "expected 9 numbers after 'camera %s' "
+                    "(eye, %s, up), found %zu", pt_sc_shown(a[0].p, a[0].n, q),
+                    pt_sc_tok_is(&a[0], "lookat") ? "direction" : "target", n - 1);
+    if (pt_sc_numbers(ps, src, a + 1, 9, "camera coordinate", v) < 0)
         return -1;
     ps->s->pipe = PT_PIPE_MATRIX;
     ps->s->eye = (pt_vec3){v[0], v[1], v[2]};
     ps->s->dir = (pt_vec3){v[3], v[4], v[5]};
     ps->s->up = (pt_vec3){v[6], v[7], v[8]};
-    ps->s->target = tok_is(&a[0], "lookat-target");
+    ps->s->target = pt_sc_tok_is(&a[0], "lookat-target");
     if (ps->s->target) {
         ps->s->at = ps->s->dir;
         ps->s->dir = pt_lookat_dir(ps->s->eye, ps->s->at);
@@ -808,26 +746,26 @@ static int do_projection(parser *ps, source *src, const token *dir, cursor *args
     token a[5];
     size_t n;
 
-    if (once(ps, src, dir, &ps->proj_line) < 0
-        || take_args(ps, src, dir, args, a, 5, 5, "words", NULL) < 0)
+    if (pt_sc_once(ps, src, dir, &ps->proj_line) < 0
+        || pt_sc_take_args(ps, src, dir, args, a, 5, 5, "words", NULL) < 0)
         return -1;
     ps->proj_col[0] = (size_t)(dir->p - src->line) + 1;
     for (n = 1; n < 5; n++)
         ps->proj_col[n] = (size_t)(a[n].p - src->line) + 1;
-    if (!tok_is(&a[0], "perspective"))
-        return fail(ps, src, a[0].p, "unknown projection '%s' (expected perspective)",
-                    shown(a[0].p, a[0].n, q));
-    if (parse_number(ps, src, &a[1], "field of view", &s->fov) < 0)
+    if (!pt_sc_tok_is(&a[0], "perspective"))
+        return pt_sc_fail(ps, src, a[0].p, "unknown projection '%s' (expected perspective)",
+                    pt_sc_shown(a[0].p, a[0].n, q));
+    if (pt_sc_number(ps, src, &a[1], "field of view", &s->fov) < 0)
         return -1;
-    s->aspect_auto = tok_is(&a[2], "auto");
+    s->aspect_auto = pt_sc_tok_is(&a[2], "auto");
     if (s->aspect_auto)
         s->aspect = 0;                  /* filled in by finish_camera() */
-    else if (parse_number(ps, src, &a[2], "aspect ratio", &s->aspect) < 0)
+    else if (pt_sc_number(ps, src, &a[2], "aspect ratio", &s->aspect) < 0)
         return -1;
     else if (!(s->aspect > 0))
-        return fail(ps, src, a[2].p, "projection: aspect ratio must be > 0");
-    if (parse_number(ps, src, &a[3], "near distance", &s->znear) < 0
-        || parse_number(ps, src, &a[4], "far distance", &s->zfar) < 0)
+        return pt_sc_fail(ps, src, a[2].p, "projection: aspect ratio must be > 0");
+    if (pt_sc_number(ps, src, &a[3], "near distance", &s->znear) < 0
+        || pt_sc_number(ps, src, &a[4], "far distance", &s->zfar) < 0)
         return -1;
     return 0;
 }
@@ -836,7 +774,7 @@ static int do_projection(parser *ps, source *src, const token *dir, cursor *args
 ** | world rotate x|y|z DEGREES: appended to the model's world matrix. */
 static int do_world(parser *ps, source *src, const token *dir, cursor *args)
 {
-    pt_model *m = cur_model(ps);
+    pt_model *m = pt_sc_model(ps);
     char q[QUOTE_BUF];
     token a[4];
     double v[3];
@@ -844,39 +782,39 @@ static int do_world(parser *ps, source *src, const token *dir, cursor *args)
     pt_mat4 t;
     int axis;
 
-    if (take_args(ps, src, dir, args, a, 2, 4, "words", &n) < 0)
+    if (pt_sc_take_args(ps, src, dir, args, a, 2, 4, "words", &n) < 0)
         return -1;
-    if (tok_is(&a[0], "translate") || tok_is(&a[0], "scale")) {
-        int scale = tok_is(&a[0], "scale");
+    if (pt_sc_tok_is(&a[0], "translate") || pt_sc_tok_is(&a[0], "scale")) {
+        int scale = pt_sc_tok_is(&a[0], "scale");
         if (n != 4 && !(scale && n == 2))
-            return fail(ps, src, a[0].p, "expected %s after 'world %s', found %zu",
+            return pt_sc_fail(ps, src, a[0].p, "expected %s after 'world %s', found %zu",
                         scale ? "1 or 3 numbers" : "3 numbers",
-                        shown(a[0].p, a[0].n, q), n - 1);
-        if (parse_numbers(ps, src, a + 1, n - 1, "world number", v) < 0)
+                        pt_sc_shown(a[0].p, a[0].n, q), n - 1);
+        if (pt_sc_numbers(ps, src, a + 1, n - 1, "world number", v) < 0)
             return -1;
         if (n == 2) v[1] = v[2] = v[0];
         t = scale ? pt_mat4_scale(v[0], v[1], v[2]) : pt_mat4_translate(v[0], v[1], v[2]);
-    } else if (tok_is(&a[0], "rotate")) {
+    } else if (pt_sc_tok_is(&a[0], "rotate")) {
         const char *axes = "xyz", *at;
         if (n != 3)
-            return fail(ps, src, a[0].p, "expected an axis and an angle after "
+            return pt_sc_fail(ps, src, a[0].p, "expected an axis and an angle after "
                         "'world rotate', found %zu words", n - 1);
         at = a[1].n == 1 ? strchr(axes, a[1].p[0]) : NULL;
         if (at == NULL || *at == '\0')
-            return fail(ps, src, a[1].p, "unknown axis '%s' (expected x, y or z)",
-                        shown(a[1].p, a[1].n, q));
-        if (parse_number(ps, src, &a[2], "angle", &v[0]) < 0)
+            return pt_sc_fail(ps, src, a[1].p, "unknown axis '%s' (expected x, y or z)",
+                        pt_sc_shown(a[1].p, a[1].n, q));
+        if (pt_sc_number(ps, src, &a[2], "angle", &v[0]) < 0)
             return -1;
         axis = (int)(at - axes);
         t = pt_mat4_rotate(axis, v[0]);
     } else {
-        return fail(ps, src, a[0].p, "unknown world transformation '%s' "
-                    "(expected translate, scale or rotate)", shown(a[0].p, a[0].n, q));
+        return pt_sc_fail(ps, src, a[0].p, "unknown world transformation '%s' "
+                    "(expected translate, scale or rotate)", pt_sc_shown(a[0].p, a[0].n, q));
     }
     m->world = pt_mat4_mul(&m->world, &t);  /* row vectors: earlier lines act first */
     for (n = 0; n < 16; n++)
         if (!isfinite(m->world.m[n / 4][n % 4]))
-            return fail(ps, src, dir->p, "the world matrix overflows: entry (%zu, %zu) "
+            return pt_sc_fail(ps, src, dir->p, "the world matrix overflows: entry (%zu, %zu) "
                         "is not finite", n / 4 + 1, n % 4 + 1);
     if (ps->world_line == 0) {
         ps->world_line = src->lineno;
@@ -885,7 +823,7 @@ static int do_world(parser *ps, source *src, const token *dir, cursor *args)
     return 0;
 }
 
-/* model NAME: a new current model.  Names are unique and go into JSON, CSV
+/* model NAME [POSITION]: a new current model (and its Position's name).  Names are unique and go into JSON, CSV
 ** and text output, so '"', '\' and ',' are kept out of them.  (Spaces, '#'
 ** and control characters cannot reach here.)  The duplicate check asks a hash
 ** table (core/nameset.h): a scene of many models is read in linear time. */
@@ -894,21 +832,27 @@ static int do_model(parser *ps, source *src, const token *dir, cursor *args)
     pt_scene *s = ps->s;
     char q[QUOTE_BUF];
     size_t i;
-    token a;
+    token a, b[2];
+    size_t n;
 
-    if (take_args(ps, src, dir, args, &a, 1, 1, "name", NULL) < 0)
+    if (pt_sc_take_args(ps, src, dir, args, b, 0, 2, "names", &n) < 0)
         return -1;
+    if (n == 0)
+        return pt_sc_fail(ps, src, dir->p, "expected 1 name after 'model', found 0");
+    if (s->nmodels > 0 && pt_sc_end_model(ps, src->name) < 0)
+        return -1;
+    a = b[0];
     for (i = 0; i < a.n; i++)
         if (a.p[i] == '"' || a.p[i] == '\\' || a.p[i] == ',')
-            return fail(ps, src, a.p + i, "model name '%s' may not contain '%c'",
-                        shown(a.p, a.n, q), a.p[i]);
+            return pt_sc_fail(ps, src, a.p + i, "model name '%s' may not contain '%c'",
+                        pt_sc_shown(a.p, a.n, q), a.p[i]);
     if ((i = pt_nameset_find(&ps->names, a.p, a.n)) != SIZE_MAX)
-        return fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",
-                    shown(a.p, a.n, q), ps->model_line[i]);
+        return pt_sc_fail(ps, src, a.p, "duplicate model name '%s' (first at line %zu)",
+                    pt_sc_shown(a.p, a.n, q), ps->model_line[i]);
     if (new_model(ps, a.p, a.n, src->lineno) < 0
-        || pt_nameset_add(&ps->names, cur_model(ps)->name, a.n, s->nmodels - 1) < 0)
-        return fail(ps, src, dir->p, "out of memory");
-    return 0;
+        || pt_nameset_add(&ps->names, pt_sc_model(ps)->name, a.n, s->nmodels - 1) < 0)
+        return pt_sc_fail(ps, src, dir->p, "out of memory");
+    return n == 2 ? pt_sc_position(ps, src, &b[1]) : 0;
 }
 
 /* translate X Y Z */
@@ -917,22 +861,26 @@ static int do_translate(parser *ps, source *src, const token *dir, cursor *args)
     pt_vec3 t;
     token a[3];
 
-    if (once(ps, src, dir, &ps->translate_line) < 0
-        || take_args(ps, src, dir, args, a, 3, 3, "numbers", NULL) < 0
-        || parse_number(ps, src, &a[0], "translation", &t.x) < 0
-        || parse_number(ps, src, &a[1], "translation", &t.y) < 0
-        || parse_number(ps, src, &a[2], "translation", &t.z) < 0)
+    if (pt_sc_once(ps, src, dir, &ps->translate_line) < 0
+        || pt_sc_take_args(ps, src, dir, args, a, 3, 3, "numbers", NULL) < 0
+        || pt_sc_number(ps, src, &a[0], "translation", &t.x) < 0
+        || pt_sc_number(ps, src, &a[1], "translation", &t.y) < 0
+        || pt_sc_number(ps, src, &a[2], "translation", &t.z) < 0)
         return -1;
-    cur_model(ps)->translate = t;
-    return 0;
+    pt_sc_model(ps)->translate = t;
+    return pt_sc_translate_op(ps, src, dir, t);
 }
 
 /* color R G B */
 static int do_color(parser *ps, source *src, const token *dir, cursor *args)
 {
-    if (once(ps, src, dir, &ps->color_line) < 0)
+    if (pt_sc_once(ps, src, dir, &ps->color_line) < 0)
         return -1;
-    return parse_rgb(ps, src, dir, args, "color component", cur_model(ps)->color);
+    if (ps->course.vcolor_line != 0)
+        return pt_sc_fail(ps, src, dir->p, "a model has 'color' or 'vcolor' lines, not both "
+                          "('vcolor' at line %zu)", ps->course.vcolor_line);
+    pt_sc_model(ps)->colors_given = 1;
+    return pt_sc_rgb(ps, src, dir, args, "color component", pt_sc_model(ps)->color);
 }
 
 /* v X Y Z [W]: W is checked like the others, then ignored. */
@@ -943,11 +891,11 @@ static int do_vertex(parser *ps, source *src, const token *dir, cursor *args)
     size_t n;
     token a[4];
 
-    if (take_args(ps, src, dir, args, a, 3, 4, "numbers", &n) < 0
-        || parse_number(ps, src, &a[0], "coordinate", &v.x) < 0
-        || parse_number(ps, src, &a[1], "coordinate", &v.y) < 0
-        || parse_number(ps, src, &a[2], "coordinate", &v.z) < 0
-        || (n == 4 && parse_number(ps, src, &a[3], "coordinate", &w) < 0))
+    if (pt_sc_take_args(ps, src, dir, args, a, 3, 4, "numbers", &n) < 0
+        || pt_sc_number(ps, src, &a[0], "coordinate", &v.x) < 0
+        || pt_sc_number(ps, src, &a[1], "coordinate", &v.y) < 0
+        || pt_sc_number(ps, src, &a[2], "coordinate", &v.z) < 0
+        || (n == 4 && pt_sc_number(ps, src, &a[3], "coordinate", &w) < 0))
         return -1;
     return add_vertex(ps, src, dir->p, v);
 }
@@ -963,8 +911,8 @@ static int polyline(parser *ps, source *src, const token *dir, cursor *args,
     char q[QUOTE_BUF];
     token t;
 
-    while (next_token(args, &t)) {
-        if (resolve_index(ps, src, &t, &cur) < 0)
+    while (pt_sc_next_token(args, &t)) {
+        if (pt_sc_index(ps, src, &t, &cur) < 0)
             return -1;
         if (count == 0)
             first = cur;
@@ -974,9 +922,9 @@ static int polyline(parser *ps, source *src, const token *dir, cursor *args,
         count++;
     }
     if (count < need)
-        return fail(ps, src, dir->p,
+        return pt_sc_fail(ps, src, dir->p,
                     "expected at least %zu indices after '%s', found %zu",
-                    need, shown(dir->p, dir->n, q), count);
+                    need, pt_sc_shown(dir->p, dir->n, q), count);
     if (closed)
         return add_segment(ps, src, dir->p, prev, first);
     return 0;
@@ -1167,32 +1115,32 @@ static int do_obj(parser *ps, source *src, const token *dir, cursor *args)
     while (e > p && (e[-1] == ' ' || e[-1] == '\t'))
         e--;
     if (p == e)
-        return fail(ps, src, dir->p, "expected a file name after 'obj'");
+        return pt_sc_fail(ps, src, dir->p, "expected a file name after 'obj'");
     n = (size_t)(e - p);
     if (p[0] == '/')
         dirlen = 0;                     /* absolute: the directory plays no part */
     if (n > SIZE_MAX - dirlen - 1 || (path = malloc(dirlen + n + 1)) == NULL)
-        return fail(ps, src, p, "out of memory");
+        return pt_sc_fail(ps, src, p, "out of memory");
     if (dirlen > 0)
         memcpy(path, ps->dir, dirlen);
     memcpy(path + dirlen, p, n);
     path[dirlen + n] = '\0';
     f = open_regular(path, &errnum, &kind);
     if (f == NULL && errnum == 0)
-        r = fail(ps, src, p, "cannot read '%s': it is %s, not a regular file", path, kind);
+        r = pt_sc_fail(ps, src, p, "cannot read '%s': it is %s, not a regular file", path, kind);
     else if (f == NULL)
-        r = fail(ps, src, p, "cannot read '%s': %s", path, strerror(errnum));
-    else if ((r = start_stream(&sub, f, 1, path, 1, cur_model(ps)->nv, &errnum)) == -1)
-        r = fail(ps, src, p, "cannot read '%s': %s", path,
+        r = pt_sc_fail(ps, src, p, "cannot read '%s': %s", path, strerror(errnum));
+    else if ((r = start_stream(&sub, f, 1, path, 1, pt_sc_model(ps)->nv, &errnum)) == -1)
+        r = pt_sc_fail(ps, src, p, "cannot read '%s': %s", path,
                  errnum != 0 ? strerror(errnum) : "read error");
     else if (r == -2)
-        r = fail(ps, src, p, "out of memory");
+        r = pt_sc_fail(ps, src, p, "out of memory");
     else {
         sub.included = 1;
         r = parse_source(ps, &sub);     /* OBJ mode: never comes back here */
         close_stream(&sub);
         if (r == 0 && remember_obj(ps->s, path) < 0)
-            r = fail(ps, src, p, "out of memory");
+            r = pt_sc_fail(ps, src, p, "out of memory");
         else if (r == 0)
             path = NULL;                /* the scene owns it now */
     }
@@ -1206,12 +1154,12 @@ static int do_shape(parser *ps, source *src, const token *dir, cursor *args)
 {
     const char *at = dir->p;
     char msg[PT_ERRLEN];
-    size_t base = cur_model(ps)->nv, i;
+    size_t base = pt_sc_model(ps)->nv, i;
     pt_shape sh;
     int r = 0;
 
     if (pt_shape_make(&sh, args->p, args->end, &at, msg, sizeof msg) < 0)
-        return fail(ps, src, at, "%s", msg);
+        return pt_sc_fail(ps, src, at, "%s", msg);
     for (i = 0; i < sh.nv && r == 0; i++)
         r = add_vertex(ps, src, dir->p, sh.v[i]);
     for (i = 0; i < sh.nseg && r == 0; i++)     /* base + index < nv <= MAX_VERTS */
@@ -1244,6 +1192,25 @@ static const struct directive {
     { "camera",      do_camera,      0 },
     { "projection",  do_projection,  0 },
     { "world",       do_world,       1 },
+    /* the course's renderers (scene_course.c) */
+    { "segment",     pt_sc_segment,  1 },
+    { "point",       pt_sc_point,    1 },
+    { "vcolor",      pt_sc_vcolor,   1 },
+    { "vcolor-float", pt_sc_vcolor,  1 },
+    { "matrix",      pt_sc_matrix,   1 },
+    { "matrix-pre",  pt_sc_matrix,   1 },
+    { "matrix-set",  pt_sc_matrix,   1 },
+    { "hidden-position", pt_sc_hidden, 1 },
+    { "hidden-model", pt_sc_hidden,  1 },
+    { "renderer",    pt_sc_renderer, 0 },
+    { "scene",       pt_sc_scene_name, 0 },
+    { "viewport-background", pt_sc_vp_background, 0 },
+    { "near",        pt_sc_near,     0 },
+    { "view",        pt_sc_view,     0 },
+    { "nearclip",    pt_sc_switch,   0 },
+    { "antialias",   pt_sc_switch,   0 },
+    { "gamma",       pt_sc_switch,   0 },
+    { "pipeline2",   pt_sc_pipeline2, 0 },
 };
 
 /* ===== the parse loop ===== */
@@ -1255,16 +1222,16 @@ static int scene_line(parser *ps, source *src, cursor *line)
     size_t i;
     token d;
 
-    if (!next_token(line, &d))
+    if (!pt_sc_next_token(line, &d))
         return 0;                       /* blank, or only a comment */
     for (i = 0; i < sizeof directives / sizeof directives[0]; i++) {
-        if (!tok_is(&d, directives[i].name))
+        if (!pt_sc_tok_is(&d, directives[i].name))
             continue;
         if (directives[i].in_model && ps->s->nmodels == 0)
-            return fail(ps, src, d.p, "'%s' before any 'model'", directives[i].name);
+            return pt_sc_fail(ps, src, d.p, "'%s' before any 'model'", directives[i].name);
         return directives[i].fn(ps, src, &d, line);
     }
-    return fail(ps, src, d.p, "unknown directive '%s'", shown(d.p, d.n, q));
+    return pt_sc_fail(ps, src, d.p, "unknown directive '%s'", pt_sc_shown(d.p, d.n, q));
 }
 
 /* The statements of the Wavefront OBJ format (its specification, version
@@ -1301,21 +1268,21 @@ static int obj_line(parser *ps, source *src, cursor *line)
     size_t i;
     token d;
 
-    if (!next_token(line, &d))
+    if (!pt_sc_next_token(line, &d))
         return 0;
-    if (tok_is(&d, "v"))
+    if (pt_sc_tok_is(&d, "v"))
         return do_vertex(ps, src, &d, line);
-    if (tok_is(&d, "l"))
+    if (pt_sc_tok_is(&d, "l"))
         return do_line(ps, src, &d, line);
-    if (tok_is(&d, "f"))
+    if (pt_sc_tok_is(&d, "f"))
         return do_face(ps, src, &d, line);
     for (i = 0; i < sizeof obj_unused / sizeof obj_unused[0]; i++)
-        if (tok_is(&d, obj_unused[i]))
+        if (pt_sc_tok_is(&d, obj_unused[i]))
             return 0;
     if (src->included && !keyword_like(&d))     /* not OBJ: say so, quote none of it */
-        return fail(ps, src, d.p, "not an OBJ statement (an OBJ file has v, l and f "
+        return pt_sc_fail(ps, src, d.p, "not an OBJ statement (an OBJ file has v, l and f "
                     "lines; is this an OBJ file?)");
-    return fail(ps, src, d.p, "unknown OBJ statement '%s'", shown(d.p, d.n, q));
+    return pt_sc_fail(ps, src, d.p, "unknown OBJ statement '%s'", pt_sc_shown(d.p, d.n, q));
 }
 
 /* Parse every line of src.  Returns 0 or -1. */
@@ -1346,7 +1313,7 @@ static int finish_viewport(parser *ps, const char *name)
         return 0;
     }
     if (s->vp_x + s->vp_w > s->fb_w || s->vp_y + s->vp_h > s->fb_h)
-        return fail_at(ps->err, ps->errlen, name, ps->vp_line, ps->vp_col,
+        return pt_sc_fail_at(ps->err, ps->errlen, name, ps->vp_line, ps->vp_col,
                        "viewport %d %d %d %d does not fit in the %dx%d framebuffer",
                        s->vp_x, s->vp_y, s->vp_w, s->vp_h, s->fb_w, s->fb_h);
     return 0;
@@ -1363,13 +1330,13 @@ static int finish_camera(parser *ps, const char *name)
     int skewed;
 
     if ((s->pipe == PT_PIPE_MATRIX) && ps->proj_line == 0)
-        return fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
+        return pt_sc_fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
                        "'camera lookat' needs a 'projection perspective' line");
     if (!(s->pipe == PT_PIPE_MATRIX) && ps->proj_line != 0)
-        return fail_at(ps->err, ps->errlen, name, ps->proj_line, ps->proj_col[0],
+        return pt_sc_fail_at(ps->err, ps->errlen, name, ps->proj_line, ps->proj_col[0],
                        "'projection' needs a 'camera lookat' line");
     if (!(s->pipe == PT_PIPE_MATRIX) && ps->world_line != 0)
-        return fail_at(ps->err, ps->errlen, name, ps->world_line, ps->world_col,
+        return pt_sc_fail_at(ps->err, ps->errlen, name, ps->world_line, ps->world_col,
                        "'world' needs the matrix camera ('camera lookat'); the "
                        "classic camera places a model with 'translate'");
     if (!(s->pipe == PT_PIPE_MATRIX))
@@ -1378,11 +1345,11 @@ static int finish_camera(parser *ps, const char *name)
         s->aspect = pt_aspect_auto(s->vp_w, s->vp_h);
     e = pt_lookat(&m, s->eye, s->dir, s->up, 0, &skewed);
     if (e != PT_CAM_OK)
-        return fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
+        return pt_sc_fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
                        "camera: %s", pt_cam_error_text(e));
     e = pt_perspective(&m, s->fov, s->aspect, s->znear, s->zfar);
     if (e != PT_CAM_OK)                 /* point at the number at fault */
-        return fail_at(ps->err, ps->errlen, name, ps->proj_line,
+        return pt_sc_fail_at(ps->err, ps->errlen, name, ps->proj_line,
                        ps->proj_col[e == PT_CAM_FOV || e == PT_CAM_FOV_RANGE ? 1
                                     : e == PT_CAM_ASPECT || e == PT_CAM_ASPECT_RANGE ? 2
                                     : e == PT_CAM_NEAR ? 3 : 4],
@@ -1406,6 +1373,7 @@ static int start_scene(pt_scene *s, const char *name)
     s->fb_w = 800;
     s->fb_h = 600;
     s->perspective = 1;
+    pt_sc_start_course(s);
     return 0;                           /* the viewport: see finish_viewport() */
 }
 
@@ -1429,11 +1397,15 @@ static int parse_scene(pt_scene *s, const char *name, size_t dirlen, source *src
     int r;
 
     if (start_scene(s, name) < 0)
-        return fail_at(err, errlen, name, 1, 1, "out of memory");
+        return pt_sc_fail_at(err, errlen, name, 1, 1, "out of memory");
     init_parser(&ps, s, name, dirlen, err, errlen);
     r = parse_source(&ps, src);
+    if (r == 0 && s->nmodels > 0)
+        r = pt_sc_end_model(&ps, name);
     if (r == 0)
         r = finish_viewport(&ps, name);
+    if (r == 0)
+        r = pt_sc_finish_course(&ps, name);
     if (r == 0)
         r = finish_camera(&ps, name);
     free(ps.model_line);
@@ -1534,16 +1506,16 @@ static int load_obj(pt_scene *s, const char *path, source *src, char *err, size_
     int r;
 
     if (start_scene(s, path) < 0)
-        return fail_at(err, errlen, path, 1, 1, "out of memory");
+        return pt_sc_fail_at(err, errlen, path, 1, 1, "out of memory");
     init_parser(&ps, s, "", 0, err, errlen);
     obj_model_name(path, &name, &n);
     if (new_model(&ps, name, n, 1) < 0) {
-        r = fail_at(err, errlen, path, 1, 1, "out of memory");
+        r = pt_sc_fail_at(err, errlen, path, 1, 1, "out of memory");
     } else {
         r = parse_source(&ps, src);
     }
     if (r == 0 && frame_obj(&s->models[0], &t) < 0)
-        r = fail_at(err, errlen, path, 1, 1,
+        r = pt_sc_fail_at(err, errlen, path, 1, 1,
                     "coordinates too large to place the model in view");
     if (r == 0) {
         s->from_obj = 1;
@@ -1583,10 +1555,10 @@ int pt_scene_load(pt_scene *s, const char *path, char *err, size_t errlen)
     memset(s, 0, sizeof *s);
     r = open_stream(&src, path, ends_with_obj(path), 0, &errnum);
     if (r == -1)
-        return fail_at(err, errlen, path, 1, 1, "cannot read file: %s",
+        return pt_sc_fail_at(err, errlen, path, 1, 1, "cannot read file: %s",
                        errnum != 0 ? strerror(errnum) : "read error");
     if (r == -2)
-        return fail_at(err, errlen, path, 1, 1, "out of memory");
+        return pt_sc_fail_at(err, errlen, path, 1, 1, "out of memory");
     if (src.obj) {
         r = load_obj(s, path, &src, err, errlen);
     } else {
@@ -1606,10 +1578,10 @@ int pt_scene_read(pt_scene *s, FILE *f, const char *name, char *err, size_t errl
     memset(s, 0, sizeof *s);
     r = start_stream(&src, f, 0, name, 0, 0, &errnum);
     if (r == -1)
-        return fail_at(err, errlen, name, 1, 1, "cannot read: %s",
+        return pt_sc_fail_at(err, errlen, name, 1, 1, "cannot read: %s",
                        errnum != 0 ? strerror(errnum) : "read error");
     if (r == -2)
-        return fail_at(err, errlen, name, 1, 1, "out of memory");
+        return pt_sc_fail_at(err, errlen, name, 1, 1, "out of memory");
     r = parse_scene(s, name, 0, &src, err, errlen);
     close_stream(&src);
     return r;
@@ -1636,7 +1608,9 @@ void pt_scene_free(pt_scene *s)
         free(s->models[i].name);
         free(s->models[i].v);
         free(s->models[i].seg);
+        pt_sc_free_model(&s->models[i]);
     }
+    free(s->scene_name);
     free(s->models);
     for (i = 0; i < s->nobjs; i++)
         free(s->objs[i]);

@@ -18,13 +18,19 @@
 ** stage's numbers is asked again, neither counted nor answered; from a file
 ** it counts as wrong for that stage only, and lines starting with '#' are
 ** skipped.  --grade DIR grades every answer sheet in DIR (one answer a line,
-** as above) and writes a CSV of scores.  Exit status: 0 all right, 1 some
+** as above; a byte-order mark, CRLF, blank lines and comments passed over)
+** and writes a CSV of scores, a row a sheet; on a sheet, a wrong answer that
+** the reference stage gives from the sheet's own answer before it "follows"
+** and counts, so one slip costs one stage there too; a file that is not a
+** sheet (not UTF-8 text, over SHEET_MAX, a broken link) gets a row and a note.  Exit status: 0 all right, 1 some
 ** wrong or unanswered, 2 trouble (bad input, an unreadable sheet, a write error).
 ** Without --vertex a used vertex is picked at random: --seed S makes the pick
 ** repeatable (xorshift64*, below); without it the seed is the time.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,6 +46,8 @@
 #include "core/pipetrace.h"
 
 #define TOL        1e-6          /* absolute and relative tolerance for doubles */
+#define FOLLOWS    2             /* a result: follows from the answer before */
+#define SHEET_MAX  (1L << 20)    /* an answer sheet's size, at most (bytes) */
 
 static const char usage[] =
 "usage: pipetrace quiz [SCENE] [--vertex N | --seed S] [--model NAME] [--stage S]\n"
@@ -58,7 +66,9 @@ static const char usage[] =
 "                   wrong for that stage; lines starting with # are skipped)\n"
 "  --grade DIR      grade every answer sheet in DIR (one answer a line) and\n"
 "                   write a CSV of scores, a row per sheet (needs --vertex or\n"
-"                   --seed, so that every sheet answers the same vertex)\n"
+"                   --seed, so that every sheet answers the same vertex);\n"
+"                   an answer that follows from the sheet's own wrong answer\n"
+"                   before it is marked follows and counts\n"
 "  --out FILE       where --grade writes the CSV (default: standard output)\n"
 "\n"
 "Exit status: 0 all right, 1 some answer wrong or missing, 2 trouble (bad\n"
@@ -143,10 +153,9 @@ static int readable(pt_stage st, const int *none, int n)
            nones == n;
 }
 
-/* 1 when the n answers are stage st's values in j. */
-static int check(const pt_journey *j, pt_stage st, const double *v, const int *none, int n)
+/* 1 when the n answers are the values of r, stage st's record. */
+static int check_rec(const pt_vrec *r, pt_stage st, const double *v, const int *none, int n)
 {
-    const pt_vrec *r = &j->rec[st];
     int k, want = pt_coord_count(st);
 
     if (int_stage(st) && (r->flags & PT_REC_NULL)) {
@@ -164,15 +173,58 @@ static int check(const pt_journey *j, pt_stage st, const double *v, const int *n
     return 1;
 }
 
+/* 1 when the n answers are stage st's values in j. */
+static int check(const pt_journey *j, pt_stage st, const double *v, const int *none, int n)
+{
+    return check_rec(&j->rec[st], st, v, none, n);
+}
+
+/* The record of stage st that the n answers v (none[k]: "none") say, for the
+** reference stage after it to take in.  0 when they are not its form. */
+static int answer_rec(pt_stage st, const double *v, const int *none, int n, pt_vrec *r)
+{
+    const pt_stage_info *in = &pt_stage_infos[st];
+    int k;
+
+    if (!readable(st, none, n)) return 0;
+    memset(r, 0, sizeof *r);
+    r->stage = st;
+    if (in->kind == PT_VAL_REAL) {
+        for (k = 0; k < n; k++) if (none[k]) return 0;
+        r->x = v[0]; r->y = n > 1 ? v[1] : 0; r->z = n > 2 ? v[2] : 0; r->w = n > 3 ? v[3] : 0;
+        return 1;
+    }
+    for (k = 0; k < n; k++)             /* whole numbers only, or none */
+        if (!none[k] && (v[k] != floor(v[k]) || fabs(v[k]) > 9e15)) return 0;
+    if (in->kind == PT_VAL_PIXEL) {
+        r->ix = none[0] ? 0 : (int64_t)v[0];
+        r->iy = n < 2 || none[1] ? 0 : (int64_t)v[1];
+        if (n < 2 || none[0] || none[1])
+            r->flags = PT_REC_NULL | (n >= 2 && !none[0] ? PT_REC_HAS_X : 0u)
+                                   | (n >= 2 && !none[1] ? PT_REC_HAS_Y : 0u);
+    } else if (in->kind == PT_VAL_INDEX) {
+        r->i = none[0] ? 0 : (int64_t)v[0];
+        if (none[0]) r->flags = PT_REC_NULL;
+    } else {
+        r->code = (unsigned)v[0];
+    }
+    return 1;
+}
+
 /* One quiz: which stages are asked, how, and what came of each. */
 typedef struct quiz {
     const pt_journey *j;
     int first, last;             /* the stages asked: j->order[first..last] */
     FILE *in;                    /* the answers */
     int interactive;             /* ask again what cannot be read */
+    int grading;                 /* a sheet: a wrong answer that follows from
+                                 ** the sheet's own answer before it counts */
     int talk;                    /* print questions and verdicts (else silent) */
     int echo;                    /* print each answer read (input not a terminal) */
-    int result[PT_NSTAGES_ALL];  /* by order index: 1 right, 0 wrong, -1 unanswered */
+    int result[PT_NSTAGES_ALL];  /* by order index: 1 right, 0 wrong, -1
+                                 ** unanswered, FOLLOWS: wrong, but what the
+                                 ** stage gives from the sheet's own answer
+                                 ** before it (one slip costs one stage) */
 } quiz;
 
 /* "camera: x_c y_c z_c = ? " */
@@ -212,7 +264,8 @@ static void ask(quiz *q)
 {
     const pt_journey *j = q->j;
     char line[1024], b[PT_EXPLAINLEN];
-    int i;
+    double pv[4] = {0, 0, 0, 0};            /* the answer before, as read */
+    int pnone[4] = {0, 0, 0, 0}, pn = -1, i;
 
     for (i = 0; i < j->norder; i++) q->result[i] = -1;
     for (i = q->first; i <= q->last; i++) {
@@ -239,6 +292,16 @@ static void ask(quiz *q)
             }
         }
         ok = n >= 0 && check(j, st, v, none, n);
+        if (!ok && q->grading && n >= 0 && i > 0 && q->result[i - 1] != 1
+            && q->result[i - 1] >= 0 && pt_pipeline_ref(j->pipe, st)) {
+            pt_vrec in, out;                /* a slip carried forward is no new slip */
+            if (answer_rec(j->order[i - 1], pv, pnone, pn, &in)
+                && pt_ref_stage(st, &j->par, &in, &out) && check_rec(&out, st, v, none, n))
+                ok = FOLLOWS;
+        }
+        memcpy(pv, v, sizeof pv);
+        memcpy(pnone, none, sizeof pnone);
+        pn = n;
         q->result[i] = ok;
         if (!q->talk) continue;
         if (ok) {
@@ -256,7 +319,7 @@ static int score(const quiz *q, int *answered)
     *answered = 0;
     for (i = q->first; i <= q->last; i++) {
         *answered += q->result[i] >= 0;
-        right += q->result[i] == 1;
+        right += q->result[i] == 1 || q->result[i] == FOLLOWS;
     }
     return right;
 }
@@ -283,26 +346,132 @@ static int by_name(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* Grade every regular file in dir (not those starting with '.'), in name order,
-** as answer sheets for q's stages, into a CSV written to out.  Returns the
-** exit status. */
+/* A sheet as text: its bytes checked and cleaned, an answer a line.  A
+** byte-order mark, CR before LF, blank lines and comments ('#' to the end of
+** the line) are dropped, as a teacher reading the sheet would skip them.
+** Returns NULL, or why the sheet cannot be read as text. */
+static const char *clean_sheet(const char *t, size_t n, pt_sbuf *out)
+{
+    size_t i = 0, k;
+
+    for (k = 0; k < n; k++)
+        if (t[k] == '\0') return "not a text file (a word processor's? save it as plain text)";
+    for (k = 0; k < n; ) {
+        int len = (unsigned char)t[k] < 0x80 ? 1 : pt_sbuf_utf8_len((const unsigned char *)t + k);
+        if (len == 0 || k + (size_t)len > n) return "not UTF-8 text";
+        k += (size_t)len;
+    }
+    if (n >= 3 && !memcmp(t, "\xEF\xBB\xBF", 3)) i = 3;
+    while (i < n) {
+        size_t e = i, end;
+        while (e < n && t[e] != '\n') e++;
+        end = e;
+        for (k = i; k < end; k++) if (t[k] == '#') { end = k; break; }
+        while (end > i && (t[end - 1] == '\r' || t[end - 1] == ' ' || t[end - 1] == '\t')) end--;
+        while (i < end && (t[i] == ' ' || t[i] == '\t')) i++;
+        if (end > i) {
+            pt_sbuf_addn(out, t + i, end - i);
+            pt_sbuf_add(out, "\n");
+        }
+        i = e + 1;
+    }
+    return NULL;
+}
+
+/* Read the answer sheet at path (a folder entry; a link is followed) into
+** *text, cleaned.  Returns NULL, or why it cannot be graded ("" for an entry
+** that is not a sheet at all: a folder). */
+static const char *read_sheet(const char *path, pt_sbuf *text)
+{
+    static char why[160];
+    struct stat st;
+    char *buf;
+    ssize_t got;
+    size_t len = 0;
+    const char *bad;
+    int fd;
+
+    if (lstat(path, &st) != 0) return strerror(errno);
+    if (S_ISLNK(st.st_mode) && stat(path, &st) != 0)
+        return errno == ELOOP ? "a symbolic link that loops" : errno == ENOENT
+               ? "a broken symbolic link (its target is missing)" : strerror(errno);
+    if (S_ISDIR(st.st_mode)) return "";
+    if (!S_ISREG(st.st_mode)) return "not a regular file";
+    if ((fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY)) < 0) return strerror(errno);
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) { close(fd); return "not a regular file"; }
+    if (st.st_size > SHEET_MAX) {
+        close(fd);
+        snprintf(why, sizeof why, "larger than %ld bytes: not an answer sheet", SHEET_MAX);
+        return why;
+    }
+    if (!(buf = malloc((size_t)SHEET_MAX + 1))) { close(fd); return "out of memory"; }
+    while (len <= (size_t)SHEET_MAX &&
+           (got = read(fd, buf + len, (size_t)SHEET_MAX + 1 - len)) != 0) {
+        if (got < 0) {
+            if (errno == EINTR) continue;
+            snprintf(why, sizeof why, "%s", strerror(errno));
+            free(buf);
+            close(fd);
+            return why;
+        }
+        len += (size_t)got;
+    }
+    close(fd);
+    if (len > (size_t)SHEET_MAX) {      /* it grew while read */
+        free(buf);
+        snprintf(why, sizeof why, "larger than %ld bytes: not an answer sheet", SHEET_MAX);
+        return why;
+    }
+    bad = clean_sheet(buf, len, text);
+    free(buf);
+    return bad ? bad : text->failed ? "out of memory" : NULL;
+}
+
+/* Grade the cleaned sheet text[0..n) into q->result. */
+static void grade_text(quiz *q, const char *text, size_t n)
+{
+    int i;
+
+    for (i = 0; i < q->j->norder; i++) q->result[i] = -1;
+    if (n == 0) return;                 /* nothing answered */
+    if (!(q->in = fmemopen((void *)text, n, "r"))) return;
+    ask(q);
+    fclose(q->in);
+}
+
+/* "pipetrace quiz: SHEET: WHY" on standard error, the sheet's name safe for
+** a terminal (a student chose it). */
+static void sheet_message(const char *name, const char *why)
+{
+    pt_sbuf m;
+
+    pt_sbuf_init(&m);
+    pt_sbuf_add(&m, "pipetrace quiz: ");
+    pt_sbuf_add_term(&m, name, strlen(name));
+    pt_sbuf_addf(&m, ": %s\n", why);
+    if (!m.failed) fputs(m.s, stderr);
+    pt_sbuf_free(&m);
+}
+
+/* Grade every entry of dir (not those starting with '.'), in name order, as
+** answer sheets for q's stages, into a CSV written to out: a row a sheet,
+** 1, 0, "follows" or empty (unanswered) a stage, the score, and a note that
+** says why a sheet could not be graded.  Folders are passed over.  Returns
+** the exit status. */
 static int grade(quiz *q, const char *dir, const char *out)
 {
     DIR *d = opendir(dir);
     struct dirent *e;
     char **names = NULL, path[4096];
     size_t n = 0, cap = 0, k;
-    int i, rc = PT_EXIT_OK, bad = 0;
-    pt_sbuf sb;
+    int i, rc = PT_EXIT_OK, bad = 0, of = q->last - q->first + 1;
+    pt_sbuf sb, text;
     pt_outfile o = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
 
     if (!d) { fprintf(stderr, "pipetrace quiz: --grade %s: cannot read the folder\n", dir); return PT_EXIT_INPUT; }
     while ((e = readdir(d)) != NULL) {
-        struct stat st;
         if (e->d_name[0] == '.') continue;
-        if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, e->d_name) >= sizeof path ||
-            stat(path, &st) != 0 || !S_ISREG(st.st_mode)) continue;
         if (n == cap) {
             char **nn = realloc(names, (cap = cap ? 2 * cap : 16) * sizeof *names);
             if (!nn) { bad = 1; break; }
@@ -313,33 +482,57 @@ static int grade(quiz *q, const char *dir, const char *out)
     }
     closedir(d);
     if (!bad && n) qsort(names, n, sizeof *names, by_name);
+    for (k = 0; k < n && !bad && strcmp(out, "-") != 0; k++) {
+        struct stat so, si;             /* the scores must not overwrite a sheet */
+        if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, names[k]) < sizeof path
+            && stat(out, &so) == 0 && stat(path, &si) == 0
+            && so.st_dev == si.st_dev && so.st_ino == si.st_ino) {
+            sheet_message(out, "--out would overwrite an answer sheet of the folder it grades");
+            bad = 2;
+        }
+    }
+    if (bad == 2) {
+        for (k = 0; k < n; k++) free(names[k]);
+        free(names);
+        return PT_EXIT_INPUT;
+    }
     pt_sbuf_init(&sb);
     pt_sbuf_add(&sb, "sheet");
     for (i = q->first; i <= q->last; i++) {
         pt_sbuf_add(&sb, ",");
         pt_sbuf_add(&sb, pt_stage_infos[q->j->order[i]].name);
     }
-    pt_sbuf_add(&sb, ",right,of\n");
+    pt_sbuf_add(&sb, ",right,of,note\n");
+    q->grading = 1;
     for (k = 0; k < n && !bad; k++) {
+        const char *why;
         int right, answered;
-        snprintf(path, sizeof path, "%s/%s", dir, names[k]);
-        if (!(q->in = fopen(path, "r"))) {
-            fprintf(stderr, "pipetrace quiz: %s: cannot read the answer sheet\n", path);
+
+        if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, names[k]) >= sizeof path)
+            why = "its path is too long";
+        else {
+            pt_sbuf_init(&text);
+            why = read_sheet(path, &text);
+            if (!why) grade_text(q, text.s ? text.s : "", text.len);
+            pt_sbuf_free(&text);
+        }
+        if (why && !*why) continue;     /* a folder: not a sheet */
+        pt_sbuf_add_csv(&sb, names[k]);
+        if (why) {
+            for (i = q->first; i <= q->last; i++) pt_sbuf_add(&sb, ",");
+            pt_sbuf_addf(&sb, ",0,%d,", of);
+            pt_sbuf_add_csv(&sb, why);
+            pt_sbuf_add(&sb, "\n");
+            sheet_message(names[k], why);
             rc = PT_EXIT_INPUT;
             continue;
         }
-        ask(q);
-        if (ferror(q->in)) {
-            fprintf(stderr, "pipetrace quiz: %s: cannot read the answer sheet\n", path);
-            rc = PT_EXIT_INPUT;
-        }
-        fclose(q->in);
-        pt_sbuf_add_csv(&sb, names[k]);
         for (i = q->first; i <= q->last; i++)
-            pt_sbuf_add(&sb, q->result[i] < 0 ? "," : q->result[i] ? ",1" : ",0");
+            pt_sbuf_add(&sb, q->result[i] < 0 ? "," : q->result[i] == FOLLOWS ? ",follows"
+                             : q->result[i] ? ",1" : ",0");
         right = score(q, &answered);
-        pt_sbuf_addf(&sb, ",%d,%d\n", right, q->last - q->first + 1);
-        if (rc == PT_EXIT_OK && right < q->last - q->first + 1) rc = PT_EXIT_DIFFER;
+        pt_sbuf_addf(&sb, ",%d,%d,\n", right, of);
+        if (rc == PT_EXIT_OK && right < of) rc = PT_EXIT_DIFFER;
     }
     for (k = 0; k < n; k++) free(names[k]);
     free(names);

@@ -185,15 +185,54 @@ printf 'x\n' > "$tmp/sheets/.hidden"
 run quiz $tri --vertex 1 --grade "$tmp/sheets" --out "$tmp/scores.csv"
 check "class-4.1 --grade: exit 1 (a sheet has a wrong answer)" test "$rc" = 1
 check "class-4.2 ... a CSV, a row per sheet in name order, 1/0 per stage, empty unanswered" \
-    test "$(tr '\n' '|' < "$tmp/scores.csv")" = 'sheet,model,camera,image,pixel,viewport,framebuffer,index,right,of|alice.txt,1,1,1,1,1,1,1,7,7|"bob, b.txt",1,0,1,0,1,1,,4,7|'
+    test "$(tr '\n' '|' < "$tmp/scores.csv")" = 'sheet,model,camera,image,pixel,viewport,framebuffer,index,right,of,note|alice.txt,1,1,1,1,1,1,1,7,7,|"bob, b.txt",1,0,1,0,1,1,,4,7,|'
 rm "$tmp/sheets/bob, b.txt"
 run quiz $tri --vertex 1 --grade "$tmp/sheets"
 check "class-4.3 all sheets right: exit 0, the CSV on standard output" \
-    test "$rc" = 0 -a "$(sed -n 2p "$tmp/out")" = "alice.txt,1,1,1,1,1,1,1,7,7"
+    test "$rc" = 0 -a "$(sed -n 2p "$tmp/out")" = "alice.txt,1,1,1,1,1,1,1,7,7,"
 run quiz $tri --grade "$tmp/sheets"
 check "class-4.4 --grade without --vertex or --seed: exit 1" test "$rc" = 1
 run quiz $tri --vertex 1 --grade "$tmp/nosuch"
 check "class-4.5 --grade of a missing folder: exit 2" test "$rc" = 2
 run quiz $tri --vertex 1 --stage index --grade "$tmp/sheets"
-check "class-4.6 --grade with --stage: that stage's column only" test "$(sed -n 1p "$tmp/out")" = "sheet,index,right,of"
+check "class-4.6 --grade with --stage: that stage's column only" test "$(sed -n 1p "$tmp/out")" = "sheet,index,right,of,note"
+
+# ---- grading like a teacher: what a sheet holds besides answers, a slip
+# carried forward, files that are no sheets
+rm -rf "$tmp/sheets"; mkdir -p "$tmp/sheets/sub"
+printf '\357\273\277-1 -1 0\r\n\r\n# camera next\r\n-1 -1 -2   # mine\r\n-0.5 -0.5 -1\r\n5.497501249375313 2.9987506246876565\r\n\n4 7\r\n4 7\r\n144\r\n' > "$tmp/sheets/a-bom.txt"
+printf -- '-1 -1 0\n-1 -1 -2\n-0.5 -0.5 -1\n5.6 3.6\n5 6\n5 6\n125\n' > "$tmp/sheets/b-slip.txt"
+printf -- '-1 -1 0\n-1 -1 -2\n-0.5 -0.5 -1\n5.6 3.6\n5 6\n6 6\n126\n' > "$tmp/sheets/c-two.txt"
+printf 'PK\003\004\000\000junk' > "$tmp/sheets/d-essay.docx"
+printf -- '-1 -1 0\n\377\376\n' > "$tmp/sheets/e-latin1.txt"
+ln -s nowhere "$tmp/sheets/f-broken"
+ln -s f-loop "$tmp/sheets/f-loop"
+head -c 1048577 /dev/zero | tr '\000' '1' > "$tmp/sheets/g-big.txt"
+run quiz $tri --vertex 1 --grade "$tmp/sheets" --out "$tmp/grades.csv"
+row() { grep "^$1," "$tmp/grades.csv"; }
+check "class-4.7 a sheet with a byte-order mark, CRLF, blank lines and comments: 7/7" \
+    test "$(row a-bom.txt)" = "a-bom.txt,1,1,1,1,1,1,1,7,7,"
+check "class-4.8 one slip carried forward: the stages after it follow, one stage lost" \
+    test "$(row b-slip.txt)" = "b-slip.txt,1,1,1,0,follows,follows,follows,6,7,"
+check "class-4.9 ... a second slip is wrong, and what follows from it follows" \
+    test "$(row c-two.txt)" = "c-two.txt,1,1,1,0,follows,0,follows,5,7,"
+check "class-4.10 a word processor's file: a row that says so" \
+    sh -c 'grep -q "^d-essay.docx,,,,,,,,0,7,not a text file" "$1"' _ "$tmp/grades.csv"
+check "class-4.11 ... text that is not UTF-8: a row that says so" \
+    sh -c 'grep -q "^e-latin1.txt,,,,,,,,0,7,not UTF-8 text" "$1"' _ "$tmp/grades.csv"
+check "class-4.12 a broken symbolic link and a loop: rows that say so" \
+    sh -c 'grep -q "^f-broken,.*,a broken symbolic link" "$1" && grep -q "^f-loop,.*,a symbolic link that loops" "$1"' _ "$tmp/grades.csv"
+check "class-4.13 a sheet over 1 MiB: not read, a row that says so" \
+    sh -c 'grep -q "^g-big.txt,,,,,,,,0,7,larger than 1048576 bytes" "$1"' _ "$tmp/grades.csv"
+check "class-4.14 ... exit 2, each named on standard error, the folder passed over" \
+    sh -c 'test "$1" = 2 && test "$(grep -c "^pipetrace quiz: [d-g]-" "$2")" = 5 && ! grep -q "^sub," "$3"' _ "$rc" "$tmp/err" "$tmp/grades.csv"
+esc=$(printf 'h-\033]0;owned\007')
+printf 'PK\000' > "$tmp/sheets/$esc"
+run quiz $tri --vertex 1 --grade "$tmp/sheets" --out "$tmp/grades.csv"
+check "class-4.15 a sheet's name goes to the terminal with its escapes written out" \
+    sh -c '! grep -q "$(printf "\\033")" "$1" && grep -Fq "h-\\x1b]0;owned\\x07: not a text file" "$1"' _ "$tmp/err"
+cp "$tmp/sheets/a-bom.txt" "$tmp/keep"
+run quiz $tri --vertex 1 --grade "$tmp/sheets" --out "$tmp/sheets/a-bom.txt"
+check "class-4.16 --out over a sheet of the folder: refused, exit 2, the sheet kept" \
+    sh -c 'test "$1" = 2 && cmp -s "$2" "$3" && grep -q "would overwrite an answer sheet" "$4"' _ "$rc" "$tmp/keep" "$tmp/sheets/a-bom.txt" "$tmp/err"
 report

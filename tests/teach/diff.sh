@@ -396,6 +396,7 @@ check "diff-6.1 an image against itself: exit 0" test $? = 0
 check "diff-6.2 two pixels differ: exit 1" test $? = 1
 check "diff-6.3 ... counted, with their box" \
     grep -q "^2 of 8 pixels differ, all within the box (x, y) = (1, 0) .. (2, 1)\.\$" "$tmp/out"
+check "diff-6.3a ... and never called the same" sh -c '! grep -q "images are the same" "$1"' _ "$tmp/out"
 check "diff-6.4 ... listed with both colors" grep -q "^  (1, 0)  expected   0   0   0  actual 255 255 255\$" "$tmp/out"
 check "diff-6.5 the highlight is a 4 x 2 PPM" test "$(head -c 11 "$tmp/hl.ppm" | tr '\n' ' ')" = "P6 4 2 255 "
 check "diff-6.6 ... differing pixels red, the rest dimmed" \
@@ -405,6 +406,7 @@ cat "$tmp/zero" "$tmp/zero" | head -c 30 >> "$tmp/c.ppm"
 "$exe" diff "$tmp/a.ppm" "$tmp/c.ppm" >"$tmp/out" 2>&1
 check "diff-6.7 different sizes: exit 1" test $? = 1
 check "diff-6.8 ... the extra column counts as different" grep -q "^2 of 10 pixels differ" "$tmp/out"
+check "diff-6.8a ... and the images are not called the same" sh -c '! grep -q "the same" "$1"' _ "$tmp/out"
 head -c 20 "$tmp/a.ppm" > "$tmp/short.ppm"
 "$exe" diff "$tmp/a.ppm" "$tmp/short.ppm" >/dev/null 2>"$tmp/err"
 check "diff-6.9 a cut-short image: exit 2" test $? = 2

@@ -484,8 +484,8 @@ static void test_directives(void)
 
     bad("scene-3.15 model without a name", "model\n",
         "t.scene:1:1: error:", "expected 1 name after 'model', found 0");
-    bad("scene-3.16 model name of two words", "model a b\n",
-        "t.scene:1:9: error:", "expected 1 name after 'model', found 2");
+    bad("scene-3.16 model name and position, then a third word", "model a b c\n",
+        "t.scene:1:11: error:", "expected at most 2 names after 'model', found 3");
     bad("scene-3.17 framebuffer with 1 number", "framebuffer 800\n",
         "t.scene:1:1: error:", "expected 2 integers after 'framebuffer', found 1");
     bad("scene-3.18 framebuffer with 3 numbers", "framebuffer 8 6 4\n",
@@ -509,7 +509,7 @@ static void test_directives(void)
     bad("scene-3.27 color with 4 numbers", "model m\ncolor 1 2 3 4\n",
         "t.scene:2:13: error:", "expected 3 integers after 'color', found 4");
     bad("scene-3.28 camera with 2 words", "camera perspective orthographic\n",
-        "t.scene:1:20: error:", "found 2");
+        "t.scene:1:8: error:", "expected L R B T [FOCAL] after 'camera perspective', found 1");
 }
 
 static void test_indices(void)
@@ -888,6 +888,109 @@ static void test_api(void)
     pt_scene_free(&s);
 }
 
+/* ===== the course's renderers' directives (scene_course.c) ===== */
+
+static void test_course(void)
+{
+    static const char full[] =
+        "renderer 9\nscene Demo\nframebuffer 40 30\nbackground 1 2 3\n"
+        "viewport-background 10 20 30\ncamera perspective -1.5 1 -0.7 1.3 2\nnear 0.5\n"
+        "view 0 0 1\nantialias on\ngamma off\nnearclip off\npipeline2\n"
+        "model cube P1\nmatrix translate 0 0 -3\nmatrix-pre rotate y 30\n"
+        "matrix-set rotate 45 1 1 0\nmatrix rows 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16\n"
+        "translate 1 2 3\nmatrix scale 2\n"
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nvcolor 255 0 51\nvcolor-float 0.5 0.25 1\n"
+        "vcolor 0 0 0\nsegment 1 2 1 2\nsegment 2 3\npoint 1 2 3\nl 3 1\npoint -1\n"
+        "hidden-model\nhidden-position\nmodel two\nv 0 0 -1\n";
+    pt_scene s;
+    const pt_model *m;
+    int r = parse(&s, full);
+
+    PT_CHECK("scene-4.1 every course directive parses", r == 0);
+    if (r != 0) { printf("    %s\n", err); return; }
+    m = &s.models[0];
+    PT_CHECK("scene-4.2 renderer, scene name, switches",
+             s.renderer == 9 && strcmp(s.scene_name, "Demo") == 0 && s.antialias == 1
+             && s.gamma == 0 && s.nearclip == 0 && s.pipeline2 == 1);
+    PT_CHECK("scene-4.3 viewport background and view vector",
+             s.vp_background[0] == 10 && s.vp_background[2] == 30
+             && vec_is(s.view, 0, 0, 1));
+    PT_CHECK("scene-4.4 camera perspective L R B T F: each divided by F, n = -near",
+             s.cam_l == -1.5 / 2 && s.cam_r == 1.0 / 2 && s.cam_b == -0.7 / 2
+             && s.cam_t == 1.3 / 2 && s.cam_n == -0.5 && s.perspective == 1);
+    PT_CHECK("scene-4.5 the position's name; the second model's defaults to none",
+             strcmp(m->position, "P1") == 0 && s.models[1].position == NULL);
+    PT_CHECK("scene-4.6 matrix operations in file order, translate as a SET",
+             m->nops == 6 && m->ops[0].mul == PT_MATMUL_POST
+             && m->ops[0].kind == PT_MATOP_TRANSLATE && m->ops[0].a[2] == -3
+             && m->ops[1].mul == PT_MATMUL_PRE && m->ops[1].kind == PT_MATOP_ROTATE
+             && m->ops[1].a[0] == 30 && m->ops[1].a[2] == 1 && m->ops[1].a[1] == 0
+             && m->ops[2].mul == PT_MATMUL_SET && m->ops[2].a[3] == 0
+             && m->ops[3].kind == PT_MATOP_ROWS && m->ops[3].a[15] == 16
+             && m->ops[4].mul == PT_MATMUL_SET && m->ops[4].a[1] == 2
+             && m->ops[5].kind == PT_MATOP_SCALE && m->ops[5].a[2] == 2);
+    PT_CHECK("scene-4.7 colours: ints as c / 255f, floats kept",
+             m->ncolors == 3 && m->colors[0].r == 1.0f && m->colors[0].b == 51.0f / 255.0f
+             && m->colors[1].g == 0.25f && m->colors_given == 1);
+    PT_CHECK("scene-4.8 segments with colour indices; l takes the vertices'",
+             m->nseg == 3 && m->seg[0].ca == 0 && m->seg[0].cb == 1 && m->seg[1].ca == 1
+             && m->seg[1].cb == 2 && m->seg[2].a == 2 && m->seg[2].ca == 2 && m->seg[2].cb == 0);
+    PT_CHECK("scene-4.9 points: colour, radius and their place among the segments",
+             m->npts == 2 && m->pts[0].v == 0 && m->pts[0].c == 1 && m->pts[0].radius == 3
+             && m->pts[0].after == 2 && m->pts[1].v == 2 && m->pts[1].c == 2
+             && m->pts[1].after == 3);
+    PT_CHECK("scene-4.10 hidden flags; a model without colours says so",
+             m->hidden_model && m->hidden_position && !s.models[1].hidden_model
+             && s.models[1].colors_given == 0);
+    pt_scene_free(&s);
+
+    r = parse(&s, "renderer 7\ncamera orthographic-fov 90 2\nmodel a\ncolor 1 2 3\n");
+    PT_CHECK("scene-4.11 orthographic-fov: t = tan(fovy/2), r = t * aspect, n = +1",
+             r == 0 && s.perspective == 0 && s.cam_t == tan(((3.141592653589793 / 180.0) * 90)
+             / 2.0) && s.cam_r == s.cam_t * 2 && s.cam_l == -s.cam_r && s.cam_n == 1.0
+             && s.models[0].colors_given == 1 && s.vp_background[0] == 0);
+    pt_scene_free(&s);
+    r = parse(&s, "background 5 6 7\nmodel a\n");
+    PT_CHECK("scene-4.12 renderer 4 by default: gamma and near clipping on, no AA, "
+             "viewport background = background",
+             r == 0 && s.renderer == 4 && s.gamma == 1 && s.nearclip == 1 && !s.antialias
+             && s.vp_background[1] == 6 && s.cam_n == -0.1);
+    pt_scene_free(&s);
+
+    bad("scene-4.13 a colour index past the colours", "model a\nv 0 0 0\nv 1 1 1\n"
+        "vcolor 1 2 3\nsegment 1 2 1 2\n", "t.scene:5:15: error:", "past the 1 color");
+    bad("scene-4.14 l's colour past a colour list", "model a\nv 0 0 0\nv 1 1 1\n"
+        "vcolor 1 2 3\nl 1 2\nmodel b\n", "t.scene:1:1: error:", "takes color 2");
+    bad("scene-4.15 a float colour above 1", "model a\nvcolor-float 0 1.0000001 0\n",
+        "t.scene:2:16: error:", "outside 0..1");
+    bad("scene-4.16 color and vcolor", "model a\ncolor 1 2 3\nvcolor 1 2 3\n",
+        "t.scene:3:1: error:", "not both");
+    bad("scene-4.17 near in renderer 4", "model a\nnear 1\n", "t.scene:2:1: error:",
+        "renderer 7 or 9");
+    bad("scene-4.18 a view volume in renderer 4", "camera perspective -1 1 -1 1\n",
+        "t.scene:1:8: error:", "renderer 7 or 9");
+    bad("scene-4.19 view in renderer 7", "renderer 7\nview 0 0 1\n", "t.scene:2:1: error:",
+        "renderer 9");
+    bad("scene-4.20 matrix in renderer 7", "renderer 7\nmodel a\nmatrix identity\n",
+        "t.scene:3:1: error:", "renderer 9");
+    bad("scene-4.21 renderer 5", "renderer 5\n", "t.scene:1:10: error:", "4, 7 or 9");
+    bad("scene-4.22 camera lookat in renderer 9", "renderer 9\ncamera lookat 0 0 0 0 0 -1 "
+        "0 1 0\nprojection perspective 60 1 1 10\n", "t.scene:2:8: error:", "matrix camera");
+    bad("scene-4.23 a bad matrix operation", "renderer 9\nmodel a\nmatrix rotate w 3\n",
+        "t.scene:3:15: error:", "unknown axis");
+    bad("scene-4.24 segment with 3 indices", "model a\nv 0 0 0\nsegment 1 1 1\n",
+        "t.scene:3:13: error:", "0 or 2 color");
+    bad("scene-4.25 a radius too large", "model a\nv 0 0 0\npoint 1 1 5000\n",
+        "t.scene:3:11: error:", "radius");
+    bad("scene-4.26 a switch that is not on or off", "gamma yes\n", "t.scene:1:7: error:",
+        "on or off");
+    bad("scene-4.27 a point under the matrix camera", "camera lookat 0 0 0 0 0 -1 0 1 0\n"
+        "projection perspective 60 1 1 10\nmodel a\nv 0 0 0\npoint 1\n",
+        "t.scene:5:1: error:", "course renderer");
+    bad("scene-4.28 perspective-fov without its numbers", "renderer 7\ncamera perspective-fov"
+        " 60\n", "t.scene:2:8: error:", "FOVY ASPECT");
+}
+
 int main(void)
 {
     test_defaults();
@@ -905,5 +1008,6 @@ int main(void)
     test_files();
     test_plain_obj();
     test_api();
+    test_course();
     return pt_test_report();
 }

@@ -145,7 +145,9 @@ int pt_diff_images(const dopts *o, const pt_ppm img[2])
                ndiff, (size_t)w * (size_t)h, x0, y0, x1, y1);
     if (ndiff && image_shift(a, b, &x, &y))
         printf("ACTUAL is EXPECTED moved by (%d, %d): the same picture, shifted.\n", x, y);
-    else
+    else if (!ndiff && a->maxval != b->maxval)
+        printf("The color bytes are the same: %d x %d pixels; the maxvals differ.\n", w, h);
+    else if (!ndiff)
         printf("The images are the same: %d x %d pixels.\n", w, h);
     if (o->image_out) {
         if (write_highlight(o->image_out, a, b, w, h) != 0) return PT_EXIT_INPUT;
