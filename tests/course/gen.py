@@ -636,7 +636,7 @@ def fam_err(rng, r, name, k):
     return sc
 
 
-ALL, R79, R9, R49 = (4, 7, 9), (7, 9), (9,), (4, 9)
+ALL, R79, R9 = (4, 7, 9), (7, 9), (9,)
 FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("basic", ALL, 12, lambda g, r, n, k: fam_basic(g, r, n)),
     ("clip-edge-left", ALL, 8, lambda g, r, n, k: fam_clip_edge(g, r, n, "left")),
@@ -660,7 +660,7 @@ FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("tie", ALL, 12, lambda g, r, n, k: fam_tie(g, r, n)),
     ("slope", ALL, 10, lambda g, r, n, k: fam_slope(g, r, n)),
     ("hidden", ALL, 8, lambda g, r, n, k: fam_hidden(g, r, n)),
-    ("pipeline2", R49, 10, lambda g, r, n, k: fam_pipeline2(g, r, n)),
+    ("pipeline2", R9, 10, lambda g, r, n, k: fam_pipeline2(g, r, n)),
     ("multi", ALL, 8, lambda g, r, n, k: fam_multi(g, r, n)),
     ("deflog", ALL, 6, lambda g, r, n, k: fam_deflog(g, r, n)),
     ("err", ALL, 3, fam_err),
