@@ -63,6 +63,7 @@ hostile          3 sh tests/cli/hostile.sh $B/pipetrace
 outputs          1 sh tests/cli/outputs.sh $B/pipetrace
 diff            32 sh tests/teach/diff.sh $B/pipetrace
 kraft            3 sh tests/formats/kraft.sh $B/pipetrace $ref
+course          20 python3 tests/course/check.py $B/pipetrace
 selfcheck       31 sh tests/teach/selfcheck.sh $B/pipetrace
 extreme          1 sh tests/cli/extreme.sh $B/pipetrace
 teach            1 sh tests/teach/teach.sh $B/pipetrace
