@@ -141,6 +141,9 @@ typedef struct pt_tread {
     pt_tvrec *vx; size_t nvx, cap_vx;    /* vertex records, file order; owned */
     pt_tpix *px; size_t npx, cap_px;     /* pixel records, file order; owned */
     pt_tclip *cl; size_t ncl, cap_cl;    /* clip records, file order; owned */
+    uint64_t unread;             /* a course log: lines not read (a student's
+                                 ** own output, lines of a kind not compared) */
+    uint64_t unread_line;        /*   the first of them, 1-based (0: none) */
 } pt_tread;
 
 /* The largest file pt_tread_file() reads (1 GiB): more than the largest image

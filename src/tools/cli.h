@@ -19,6 +19,8 @@
 #define PT_EXIT_USAGE  1         /* a usage error */
 #define PT_EXIT_INPUT  2         /* bad input, or an output that cannot be written */
 #define PT_EXIT_TROUBLE 2        /* diff: trouble, a usage error too (as diff(1)) */
+#define PT_EXIT_UNPROVEN 3       /* diff --verdict: no difference, but not every
+                                 ** stage or the pixels were compared */
 
 #if defined(__GNUC__) || defined(__clang__)
 #define PT_PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))

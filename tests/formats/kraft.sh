@@ -123,9 +123,16 @@ check "kraft-7.2 ... FILE:LINE:COL: error" grep -q "^$tmp/bad.log:3:15: error: e
 head -20 "$ref/kraftlog/basic-two-models.log" > "$tmp/cut.log"
 run diff "$tmp/cut.log" "$tmp/want.txt"
 check "kraft-7.3 a log cut short: exit 2" test "$rc" = 2 -a -n "$(grep 'ends before' "$tmp/err")"
-sed '5s/.*/hello from my renderer/' "$ref/kraftlog/basic-two-models.log" > "$tmp/chatty.log"
+# a log as a student's program prints it: its own lines, the renderer's
+# messages, lines after the end are passed over and counted, never refused
+sed -e '5i hello from my renderer' -e '$a done, 16 vertices' "$ref/kraftlog/basic-two-models.log" |
+    sed '7i FrameBuffer: Bad pixel coordinate (-1, 5) [w=20, h=10]' > "$tmp/chatty.log"
 run diff "$tmp/chatty.log" "$tmp/want.txt"
-check "kraft-7.4 a line the renderer does not print: exit 2, its line" grep -q "chatty.log:5:1: error: not a line of the course renderer's debug log" "$tmp/err"
+check "kraft-7.4 a student's own lines in the log: read, exit 0 ($rc)" test "$rc" = 0
+check "kraft-7.5 ... the lines passed over counted in a note, with the first one's number" \
+    grep -q "^Note: 2 lines of EXPECTED (the first: line 5) are not a kind of line diff reads" "$tmp/out"
+check "kraft-7.6 ... the renderer's own message is understood, not counted" \
+    sh -c '! grep -q "Note: 3 lines" "$1"' _ "$tmp/out"
 
 # ---- kraft-8: a log cut anywhere is refused with a message, never a crash
 log=$ref/kraftlog/basic-clip-edges.pixels.log

@@ -453,4 +453,22 @@ head -c 60 "$tmp/bi.png" > "$tmp/cut.png"
 "$exe" diff "$tmp/cut.png" "$tmp/bi.png" >/dev/null 2>"$tmp/err"
 check "diff-6.20 a cut-short PNG: exit 2" test $? = 2
 
+# ---- no verdict without evidence: PASS only when every stage and the pixels
+# were compared (exit 3 and what was not, otherwise)
+"$exe" docs/examples/triangle.scene --format kraft --trace "$tmp/v.log"
+"$exe" diff --verdict "$tmp/v.log" "$tmp/v.log" >"$tmp/out" 2>&1; rc=$?
+check "diff-12.1 a course log against itself: not proven, exit 3 ($rc)" \
+    sh -c 'test "$1" = 3 && grep -q "^Verdict: NOT PROVEN" "$2" && ! grep -q PASS "$2"' _ "$rc" "$tmp/out"
+check "diff-12.2 ... it names the stages and the pixels not compared" \
+    sh -c 'tr "\n" " " < "$1" | grep -q "the viewport stage (in neither trace), the framebuffer stage (in neither trace), the index stage (in neither trace), the lit pixels (neither trace has raster records)"' _ "$tmp/out"
+"$exe" docs/examples/triangle.scene --all-stages --format jsonl --trace "$tmp/v.jsonl"
+"$exe" diff --verdict "$tmp/v.jsonl" "$tmp/v.jsonl" >"$tmp/out" 2>&1; rc=$?
+check "diff-12.3 every stage, but the viewport at (0, 0): the offset is not proven (exit $rc)" \
+    sh -c 'test "$1" = 3 && tr "\n" " " < "$2" | grep -q "the framebuffer stage.s offset"' _ "$rc" "$tmp/out"
+"$exe" diff "$tmp/v.log" "$tmp/v.log" >/dev/null 2>&1; rc=$?
+check "diff-12.4 without --verdict: agreement is exit 0, as diff(1)" test "$rc" = 0
+"$exe" docs/examples/selfcheck.scene --format jsonl --trace "$tmp/v2.jsonl"
+"$exe" diff --verdict "$tmp/v2.jsonl" "$tmp/v2.jsonl" >"$tmp/out" 2>&1; rc=$?
+check "diff-12.5 the self-check scene exercises every stage: PASS, exit 0 ($rc)" \
+    sh -c 'test "$1" = 0 && grep -q "^Verdict: PASS" "$2"' _ "$rc" "$tmp/out"
 report

@@ -42,7 +42,9 @@ static const char diff_usage[] =
 "                    with the differing pixels red, the others EXPECTED's dimmed\n"
 "\n"
 "Exit status, as diff(1): 0 same, 1 different, 2 trouble (unreadable input\n"
-"or a usage error).\n"
+"or a usage error); with --verdict, 3 when nothing differs but not every\n"
+"stage, or not the pixels, could be compared (the verdict says which): no\n"
+"PASS without the evidence for it.\n"
 "Docs: docs/teaching.md\n";
 
 /* A usage error: the message, and diff's exit status for trouble (2, as

@@ -80,6 +80,12 @@ void pt_diff_print_intro(const dctx *c)
         if (t->prec >= 0) printf(", %d decimals", t->prec);
         printf(": %zu vertex, %zu pixel records)\n", t->nvx, t->npx);
     }
+    for (s = 0; s < 2; s++)
+        if (c->t[s].unread)
+            printf("Note: %" PRIu64 " line%s of %s (the first: line %" PRIu64 ") %s not a kind "
+                   "of line diff reads (a program's own output, anti-aliased pixel lines): "
+                   "passed over, not compared.\n", c->t[s].unread, c->t[s].unread == 1 ? "" : "s",
+                   pt_diff_side[s], c->t[s].unread_line, c->t[s].unread == 1 ? "is" : "are");
     memset(&sb, 0, sizeof sb);
     printf("Integers must be equal; doubles a and b agree when\n"
            "  |a - b| <= max(%s, %s * max(|a|, |b|))\n", pt_diff_num(c->o->tol, b1), pt_diff_num(c->o->rel, b2));
@@ -239,6 +245,44 @@ static void points(pbuf *s, const dctx *c, int parts)
         pt_diff_add(s, "points (%zu vertices, %zu clip points)", nv, nclip);
 }
 
+/* What the agreement does not cover, as "the framebuffer stage (in neither
+** trace), the lit pixels (...)": each stage of EXPECTED's pipeline that no
+** vertex of both traces holds, and the pixels unless both have raster
+** records.  Returns how many gaps. */
+static int gaps(const dctx *c, int pixels_compared, pbuf *s)
+{
+    const pt_pipeline *pl = pt_pipelines[c->t[0].hdr.pipe];
+    int i, n = 0;
+    size_t k;
+
+    for (i = 0; i < pl->norder; i++) {
+        pt_stage st = pl->order[i];
+        int held[2] = {0, 0}, both = 0;
+        for (k = 0; k < c->vt.n && !both; k++) {
+            const vent *e = &c->vt.e[k];
+            held[0] |= e->rec[0][st] != PT_DIFF_NONE;
+            held[1] |= e->rec[1][st] != PT_DIFF_NONE;
+            both = e->rec[0][st] != PT_DIFF_NONE && e->rec[1][st] != PT_DIFF_NONE;
+        }
+        if (both && st == PT_STAGE_FRAMEBUFFER && c->t[0].hdr.have && c->t[0].hdr.vp_x == 0
+            && c->t[0].hdr.vp_y == 0) {     /* compared, but x_ul + x_vp = x_vp */
+            pt_diff_add(s, "%sthe framebuffer stage's offset (the viewport's corner is (0, 0) "
+                        "here, so a stage that leaves it out agrees)", n++ ? ", " : "");
+            continue;
+        }
+        if (both) continue;
+        pt_diff_add(s, "%sthe %s stage (%s)", n++ ? ", " : "", pt_stage_infos[st].name,
+                    held[0] ? "only in EXPECTED" : held[1] ? "only in ACTUAL" : "in neither trace");
+    }
+    if (!pixels_compared) {
+        int r0 = c->t[0].npx || c->t[0].ncl, r1 = c->t[1].npx || c->t[1].ncl;
+        pt_diff_add(s, "%sthe lit pixels (%s)", n++ ? ", " : "",
+                    r0 ? "only EXPECTED has raster records" : r1 ? "only ACTUAL has raster "
+                    "records" : "neither trace has raster records");
+    }
+    return n;
+}
+
 /* The summary paragraph; returns the exit status. */
 int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                              const size_t nlit[2], int pixels_compared, const rstat *rs)
@@ -258,7 +302,18 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         else pt_diff_add(&s, ".");
         pt_diff_para("", s.b);
         if (c->o->verdict) {
+            pbuf g;
+            memset(&g, 0, sizeof g);
             printf("\n");
+            if (gaps(c, pixels_compared, &g)) {
+                memset(&s, 0, sizeof s);
+                pt_diff_add(&s, "Verdict: NOT PROVEN. ACTUAL agrees with EXPECTED wherever both "
+                            "were compared, but not compared were: %s. Trace both with "
+                            "--all-stages --format jsonl (raster records included) on a scene "
+                            "that exercises them; exit status 3.", g.b);
+                pt_diff_para("", s.b);
+                return PT_EXIT_UNPROVEN;
+            }
             pt_diff_print_verdict(c, 0, -1, 0, rs);
         }
         return PT_EXIT_OK;
