@@ -22,8 +22,8 @@
 # then per renderer and check a summary and one test line (tests/lib/checks.py).
 # known.txt lists expected mismatches (CASE CHECK REASON): they are counted,
 # not failed; any other mismatch fails.  A renderer that pipetrace refuses
-# (`renderer N` is a parse error) is skipped, as is the log check when
-# pipetrace has no --kraft-debug: "  skipped: WHY".
+# (`renderer N` is a parse error) or does not have yet (PROBES) is skipped,
+# as is the log check when pipetrace has no --kraft-debug: "  skipped: WHY".
 import fnmatch
 import glob
 import gzip
@@ -188,15 +188,41 @@ def stages_diff(dump, trace):
 
 # ----------------------------------------------------------------- driver
 
+# What pipetrace must show to have renderer N (else its cases are skipped):
+# renderer 4 draws a segment in its colour list's colour (the classic
+# pipeline draws every model white); renderers 7 and 9 trace a stage of
+# their own (View2Camera's view, Model2World's world).
+PROBES = {
+    4: ("renderer 4\nframebuffer 8 8\ncamera orthographic\ngamma off\nmodel m\n"
+        "v -0.5 0 0\nv 0.5 0 0\nvcolor 255 0 0\nvcolor 255 0 0\nsegment 1 2\n",
+        "its image has no pixel of the segment's vcolor", None),
+    7: ("renderer 7\nframebuffer 8 8\nmodel m\nv 0 0 -2\nv 0.5 0 -2\nsegment 1 2\n",
+        "its trace has no stage 'view'", "view"),
+    9: ("renderer 9\nframebuffer 8 8\nmodel m\nv 0 0 -2\nv 0.5 0 -2\nsegment 1 2\n",
+        "its trace has no stage 'world'", "world"),
+}
+
+
 def probe(exe, tmp, r):
-    """None when pipetrace takes `renderer r`, else why not."""
+    """None when pipetrace has renderer r, else why not."""
+    text, why, stage = PROBES[r]
     path = os.path.join(tmp, "probe%d.scene" % r)
     with open(path, "w") as f:
-        f.write("renderer %d\nframebuffer 4 4\n" % r)
-    rc, _, err = run(exe, [path, "--image", os.path.join(tmp, "probe.ppm")])
+        f.write(text)
+    img = os.path.join(tmp, "probe.ppm")
+    rc, out, err = run(exe, [path, "--image", img, "--format", "jsonl", "--all-stages",
+                             "--trace", "-"])
     if rc == 2 and ":1:" in err:
         return "pipetrace has no renderer %d (%s)" % (r, err.strip().split(": error: ")[-1])
-    return None
+    if rc != 0:
+        return None             # a failure the checks will show
+    if stage is None:
+        p = ppm(open(img, "rb").read()) if os.path.exists(img) else None
+        ok = p is not None and any(p[2][i:i + 3] == b"\xff\x00\x00"
+                                   for i in range(0, len(p[2]), 3))
+    else:
+        ok = ('"stage":"%s"' % stage).encode() in out
+    return None if ok else "pipetrace has no renderer %d yet: %s" % (r, why)
 
 
 def main():
