@@ -188,6 +188,46 @@ def stages_diff(dump, trace):
 
 # ----------------------------------------------------------------- driver
 
+def selftest(top):
+    """The comparisons find what they must; every stored case is whole."""
+    img = b"P6\n2 2\n255\n" + bytes(range(12))
+    bad = bytearray(img)
+    bad[-1] ^= 1
+    check("course-0.1 an image differing in one byte: pixel (1, 1) named",
+          image_diff(img, bytes(bad)) == "1 pixels differ, the first (1, 1): expected "
+          "(9, 10, 11), got (9, 10, 10)", image_diff(img, bytes(bad)))
+    check("course-0.2 ... the same image: no difference", image_diff(img, img) is None)
+    d = first_line_diff(b"a\nb\nc\n", b"a\nb\nd\n")
+    check("course-0.3 a log differing in line 3: line 3 named", d is not None and
+          d.startswith("line 3: "), d)
+    dump = b"position p visible=true model=m\nV 1.camera 0 0.1 -0.0 -2.0\n"
+    good = b'{"type":"vertex","model":"m","v":1,"stage":"camera","x":0.1,"y":-0,"z":-2}\n'
+    check("course-0.4 stage values equal to the bit: 3 values, no difference",
+          stages_diff(dump, good) == (3, None), stages_diff(dump, good))
+    n, d = stages_diff(dump, good.replace(b'"y":-0', b'"y":0'))
+    check("course-0.5 ... 0 for -0.0 is a difference", d is not None and " y: " in d, d)
+    n, d = stages_diff(dump, good.replace(b"0.1", b"0.10000000000000002"))
+    check("course-0.6 ... so is the last bit", d is not None and " x: " in d, d)
+    sys.path.insert(0, HERE)
+    import scene2case
+    missing, unconverted, total = [], [], 0
+    for scene in sorted(glob.glob(os.path.join(top, "r[479]", "*.scene"))):
+        base = scene[:-6]
+        total += 1
+        if not os.path.exists(base + ".error") and not all(
+                os.path.exists(base + e) for e in (".ppm.gz", ".log.gz", ".deflog.gz",
+                                                   ".stages.gz")):
+            missing.append(os.path.basename(base))
+        try:
+            scene2case.convert(open(scene).read())
+        except (scene2case.Bad, ValueError, IndexError, KeyError):
+            unconverted.append(os.path.basename(base))
+    check("course-0.7 every stored scene has its image, logs and stages, or its error",
+          total > 0 and not missing, "%d scenes; incomplete: %s" % (total, missing[:5]))
+    check("course-0.8 scene2case.py converts every stored scene", not unconverted,
+          str(unconverted[:5]))
+
+
 # What pipetrace must show to have renderer N (else its cases are skipped):
 # renderer 4 draws a segment in its colour list's colour (the classic
 # pipeline draws every model white); renderers 7 and 9 trace a stage of
@@ -254,6 +294,7 @@ def main():
     tmp = tempfile.mkdtemp(prefix="pt-course-")
     out_ppm = os.path.join(tmp, "out.ppm")
     try:
+        selftest(top)
         plain = os.path.join(tmp, "plain.scene")
         with open(plain, "w") as f:
             f.write("framebuffer 4 4\n")
