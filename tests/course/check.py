@@ -11,7 +11,7 @@
 #   image   --image F.ppm                              with NAME.ppm.gz
 #   log     --format kraft --kraft-debug all           with NAME.log.gz
 #   deflog  --format kraft                             with NAME.deflog.gz
-#   stages  --format jsonl --all-stages: each vertex record's x y z (w) with the
+#   stages  --format jsonl (--all-stages where taken): each vertex record's x y z (w) with the
 #           dump's V lines (NAME.stages.gz) of the same stage, model and index:
 #           model camera image pixel (renderer 4: 0..3), model view|world
 #           camera nearclip image clip (renderers 7, 9); stages and vertices
@@ -243,15 +243,19 @@ PROBES = {
 }
 
 
-def probe(exe, tmp, r):
-    """None when pipetrace has renderer r, else why not."""
+def probe(exe, tmp, r, flags):
+    """None when pipetrace has renderer r, else why not.  Sets flags[r] to
+    the trace's options: with --all-stages where pipetrace takes it."""
     text, why, stage = PROBES[r]
     path = os.path.join(tmp, "probe%d.scene" % r)
     with open(path, "w") as f:
         f.write(text)
     img = os.path.join(tmp, "probe.ppm")
-    rc, out, err = run(exe, [path, "--image", img, "--format", "jsonl", "--all-stages",
-                             "--trace", "-"])
+    flags[r] = ["--format", "jsonl", "--all-stages", "--trace", "-"]
+    rc, out, err = run(exe, [path, "--image", img] + flags[r])
+    if rc != 0:
+        flags[r] = ["--format", "jsonl", "--trace", "-"]
+        rc, out, err = run(exe, [path, "--image", img] + flags[r])
     if rc == 2 and ":1:" in err:
         return "pipetrace has no renderer %d (%s)" % (r, err.strip().split(": error: ")[-1])
     if rc != 0:
@@ -291,6 +295,7 @@ def main():
         i += 1
     known = load_known(os.path.join(HERE, "known.txt"))
     used = set()
+    flags = {}
     tmp = tempfile.mkdtemp(prefix="pt-course-")
     out_ppm = os.path.join(tmp, "out.ppm")
     try:
@@ -302,7 +307,7 @@ def main():
         for r in rends:
             cases = sorted(glob.glob(os.path.join(top, "r%d" % r, "*.scene")))
             cases = [c for c in cases if fnmatch.fnmatch(os.path.basename(c)[:-6], pattern)]
-            why = probe(exe, tmp, r)
+            why = probe(exe, tmp, r, flags)
             if why:
                 print("  skipped: renderer %d (%d cases): %s" % (r, len(cases), why))
                 continue
@@ -325,8 +330,7 @@ def main():
                     if "image" in checks or "stages" in checks:
                         if os.path.exists(out_ppm):
                             os.unlink(out_ppm)
-                        rc, out, err = run(exe, [scene, "--image", out_ppm, "--format", "jsonl",
-                                                 "--all-stages", "--trace", "-"])
+                        rc, out, err = run(exe, [scene, "--image", out_ppm] + flags[r])
                         got = open(out_ppm, "rb").read() if os.path.exists(out_ppm) else b""
                         if "image" in checks:
                             results["image"] = ("exit %d: %s" % (rc, err.strip()[:200]) if rc
