@@ -620,6 +620,48 @@ def fam_deflog(rng, r, name):
     return sc
 
 
+def fam_face(rng, r, name):
+    """`f` faces (closed outlines) and `l` polylines: a pyramid."""
+    w, h = fbsize(rng)
+    sc = Scene(r, name, w, h)
+    sc.add(camera_line(rng, r, "persp"))
+    switches(sc, rng)
+    verts = [(-1.0, -1.0, -1.0), (1.0, -1.0, -1.0), (1.0, -1.0, 1.0), (-1.0, -1.0, 1.0),
+             (0.0, 1.0, 0.0)]
+    sc.add("model pyramid")
+    sc.add("translate %s %s %s" % (num(rng.uniform(-0.5, 0.5)), num(rng.uniform(-0.5, 0.5)),
+                                   num(-rng.uniform(3.5, 5.0))))
+    for v in verts:
+        sc.add("v %s" % " ".join(num(t) for t in v))
+    for _ in verts:
+        c = rand_color(rng, 0.3)
+        sc.add("vcolor %d %d %d" % c[1:] if c[0] == "c" else
+               "vcolor-float %s" % " ".join(num(t) for t in c[1:]))
+    sc.add("f 1 2 3 4")
+    sc.add("f 1 2 5" if rng.random() < 0.5 else "f -5 -4 -1")
+    sc.add("l 3 5 4")
+    return sc
+
+
+def fam_near_edge(rng, r, name, k):
+    """near 0 (n = -0.0: the camera plane itself) and a negative near (the
+    plane behind the camera): the course accepts both."""
+    w, h = fbsize(rng)
+    sc = Scene(r, name, w, h)
+    sc.add(camera_line(rng, r, "persp" if k % 3 else "ortho"))
+    near = [0.0, -0.5, 0.0, -1.0][k % 4]
+    sc.add("near %s" % num(near))
+    switches(sc, rng, nearclip=k < 4)
+    verts = [(0.5, 0.25, -2.0), (rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), 0.0),
+             (-0.5, 0.5, -1.0), (0.25, -0.5, 0.5), (rng.uniform(-1, 1), 0.5, -near)]
+    colors = [rand_color(rng) for _ in verts]
+    prims = [("s", 0, 2), ("s", 0, 3), ("s", 2, 4), ("p", 2, 2, 1)]
+    if k % 2:
+        prims.append(("s", 1, 2))       # an end on the camera plane: Infinity
+    emit_model(sc, "edge", verts, colors, prims)
+    return sc
+
+
 def fam_err(rng, r, name, k):
     """What the course's renderer throws on: a colour index past the colour list."""
     sc = Scene(r, name, 16, 12)
@@ -663,6 +705,8 @@ FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("pipeline2", R9, 10, lambda g, r, n, k: fam_pipeline2(g, r, n)),
     ("multi", ALL, 8, lambda g, r, n, k: fam_multi(g, r, n)),
     ("deflog", ALL, 6, lambda g, r, n, k: fam_deflog(g, r, n)),
+    ("face", ALL, 4, lambda g, r, n, k: fam_face(g, r, n)),
+    ("near-edge", R79, 6, fam_near_edge),
     ("err", ALL, 3, fam_err),
 ]
 

@@ -17,6 +17,8 @@
 # A case the harness refuses (exit 2), or that does not end within the time
 # limit (renderer 4 loops on an infinite pixel), is a generator's mistake: its
 # scene is removed and named on standard output.
+# PT_CORPUS_CASES='GLOB ...' (e.g. 'face-* near-edge-*') runs only the cases
+# whose names match, and keeps the others as they are.
 set -u
 course=${1:-../shared/reference/course}
 [ $# -gt 0 ] && shift
@@ -31,14 +33,32 @@ python3 "$here/gen.py" "$tmp/gen" || exit 1
 for r in $which; do
     n=${r#r}
     mkdir -p "$here/$r"
-    rm -f "$here/$r"/*.scene "$here/$r"/*.gz "$here/$r"/*.error
-    cp "$tmp/gen/$r"/*.scene "$here/$r/"
+    if [ -z "${PT_CORPUS_CASES:-}" ]; then
+        rm -f "$here/$r"/*.scene "$here/$r"/*.gz "$here/$r"/*.error
+        cp "$tmp/gen/$r"/*.scene "$here/$r/"
+    else
+        for g in $PT_CORPUS_CASES; do
+            for f in "$tmp/gen/$r"/$g.scene; do
+                [ -e "$f" ] || continue
+                b=$(basename "$f" .scene)
+                rm -f "$here/$r/$b".*
+                cp "$f" "$here/$r/"
+            done
+        done
+    fi
     jar=$(ls "$course/renderer$n"/*.jar | head -1)
     mkdir -p "$tmp/k$n"
     javac -nowarn -cp "$jar" -d "$tmp/k$n" "$course/renderer$n/Kraft$n.java" || exit 1
     ok=0 err=0 drop=0
     for scene in "$here/$r"/*.scene; do
         name=${scene%.scene}
+        if [ -n "${PT_CORPUS_CASES:-}" ]; then
+            m=0
+            for g in $PT_CORPUS_CASES; do
+                case ${name##*/} in $g) m=1 ;; esac
+            done
+            [ "$m" = 1 ] || continue
+        fi
         python3 "$here/scene2case.py" "$scene" all > "$tmp/c.case" || { rm -f "$scene"; drop=$((drop + 1)); continue; }
         timeout "$limit" java $jopts -cp "$jar:$tmp/k$n" "Kraft$n" "$tmp/c.case" \
             "$tmp/o.ppm" "$tmp/o.log" "$tmp/o.stages" > "$tmp/out" 2>&1
