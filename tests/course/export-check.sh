@@ -11,7 +11,8 @@
 # `pipetrace export java NAME.scene --debug all`, compiled against renderer
 # N's jar and run; its standard error must be NAME.log.gz (the harness's log
 # with every debug switch) and its image NAME.ppm.gz, byte for byte.  Prints
-# a line a difference and "N passed, N failed".
+# a line a difference and "N passed, N failed".  PT_CORPUS_CASES='GLOB ...'
+# checks only the cases whose names match.
 set -u
 exe=${1:-build/pipetrace}
 course=${2:-../shared/reference/course}
@@ -32,6 +33,13 @@ for r in $which; do
     for scene in "$here/$r"/*.scene; do
         name=$(basename "$scene" .scene)
         [ -e "$here/$r/$name.error" ] && continue
+        if [ -n "${PT_CORPUS_CASES:-}" ]; then
+            m=0
+            for g in $PT_CORPUS_CASES; do
+                case $name in $g) m=1 ;; esac
+            done
+            [ "$m" = 1 ] || continue
+        fi
         cls=C_$(echo "$name" | tr -c 'A-Za-z0-9\n' _)
         "$exe" export java "$scene" --debug all -o "$d/$cls.java" 2> "$tmp/err" ||
             fail "$r/$name: export: $(head -1 "$tmp/err")"
