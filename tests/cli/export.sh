@@ -103,7 +103,7 @@ run export java "$tmp/inc.scene" -o "$tmp/Part.java"
 check "export-1.23 -o naming an OBJ file the scene reads: refused, exit 2" [ "$rc" -eq 2 ]
 check "export-1.24 ... saying so, the OBJ kept" \
     sh -c "grep -q 'an OBJ file the scene reads' '$tmp/err' && cmp -s '$tmp/Part.java' '$tmp/part.keep'"
-for c in M1Vertices0 M1 M12Segments3; do
+for c in M1Vertices0 M1 M12Segments3 M1Colors0 M2Matrices1; do
     run export java "$tmp/odd.scene" -o "$tmp/$c.java"
     check "export-1.25 -o $c.java, a class the program makes: a usage error" [ "$rc" -eq 1 ]
 done
