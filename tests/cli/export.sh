@@ -459,6 +459,12 @@ WANT
         grep -qx 'camera ortho(-1.9999999999999998,1.9999999999999998,-0.9999999999999999,0.9999999999999999).near(0.5) cleared nearclip true aa false gamma true clipdebug false nearclipdebug false' "$tmp/got"
     check "export-2.11 ... the position's translation a Vector, no colours (the course adds white)" \
         grep -qx 'model m colors 0' "$tmp/got"
+    # near 0 is changeNear(0.0): n = -0.0, the camera plane (tests/course/r7/near-edge-00)
+    sed 's/^near 0.5$/near 0/' "$tmp/r7.scene" > "$tmp/r7zero.scene"
+    run export java "$tmp/r7zero.scene" -o "$tmp/Zero.java"
+    javac -encoding UTF-8 -d "$tmp/classes" -cp "$tmp/classes" "$tmp/Zero.java" > "$tmp/javac" 2>&1
+    (cd "$tmp" && java -Dstub.full=1 -cp classes Zero out.ppm > "$tmp/got" 2>&1)
+    check "export-2.12 near 0: changeNear(0.0), not changeNear(-0.0)" grep -q '\.near(0\.0) ' "$tmp/got"
 else
     echo "skipped: export-2 (the program compiles against a stub of the API): no javac and java"
 fi
