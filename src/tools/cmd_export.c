@@ -151,7 +151,8 @@ static int debug_flags(const char *list, unsigned *dbg)
     for (;;) {
         n = strcspn(p, ",");
         if (n == 3 && !memcmp(p, "all", 3))
-            bits |= PT_JDBG_SCENE | PT_JDBG_POSITION | PT_JDBG_RASTERIZE | PT_JDBG_CLIP | PT_JDBG_NEARCLIP;
+            bits |= PT_JDBG_SCENE | PT_JDBG_POSITION | PT_JDBG_RASTERIZE | PT_JDBG_CLIP
+                  | PT_JDBG_NEARCLIP;
         else if (!(n == 4 && !memcmp(p, "none", 4))) {
             for (i = 0; i < sizeof switches / sizeof switches[0]; i++)
                 if (strlen(switches[i].name) == n && !memcmp(switches[i].name, p, n))

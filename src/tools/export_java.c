@@ -83,12 +83,13 @@ static void put_string(FILE *f, const char *name)
     fputc(')', f);
 }
 
-static void put_vec(FILE *f, const char *sep, const double *a, int n)
+/* a[0 .. n) as Java double literals, separated by commas. */
+static void put_vec(FILE *f, const double *a, int n)
 {
     int i;
 
     for (i = 0; i < n; i++) {
-        fputs(i ? ", " : sep, f);
+        fputs(i ? ", " : "", f);
         put_double(f, a[i]);
     }
 }
@@ -128,21 +129,21 @@ static void put_matop(FILE *f, const pt_matop *op)
         return;
     case PT_MATOP_TRANSLATE:
         fputs("Matrix.translate(", f);
-        put_vec(f, "", op->a, 3);
+        put_vec(f, op->a, 3);
         break;
     case PT_MATOP_SCALE:
         fputs("Matrix.scale(", f);
-        put_vec(f, "", op->a, 3);
+        put_vec(f, op->a, 3);
         break;
     case PT_MATOP_ROTATE:
         fputs("Matrix.rotate(", f);
-        put_vec(f, "", op->a, 4);
+        put_vec(f, op->a, 4);
         break;
     case PT_MATOP_ROWS:
         fputs("Matrix.buildFromRows(", f);
         for (i = 0; i < 4; i++) {
             fputs(i ? "),\n               new Vector(" : "new Vector(", f);
-            put_vec(f, "", op->a + 4 * i, 4);
+            put_vec(f, op->a + 4 * i, 4);
         }
         fputc(')', f);
         break;
@@ -150,29 +151,14 @@ static void put_matop(FILE *f, const pt_matop *op)
     fputc(')', f);
 }
 
-/* Primitive i of model m in file order (its segments with its points among
-** them, each point after the `after` segments before it): 0 a segment, 1 a
-** point, with its index in *k. */
-static int primitive(const pt_model *m, size_t i, size_t *k)
+/* Primitive i of model m in file order, its segments with its points among
+** them (a point after the `after` segments before it); *np counts the points
+** written so far (so i - *np the segments). */
+static void put_primitive(FILE *f, const pt_model *m, size_t i, size_t *np)
 {
-    size_t p = 0;
+    size_t k = i - *np;
 
-    /* points before i: those whose after + their rank <= i */
-    while (p < m->npts && m->pts[p].after + p < i)
-        p++;
-    if (p < m->npts && m->pts[p].after + p == i) {
-        *k = p;
-        return 1;
-    }
-    *k = i - p;
-    return 0;
-}
-
-static void put_primitive(FILE *f, const pt_model *m, size_t i)
-{
-    size_t k;
-
-    if (!primitive(m, i, &k)) {
+    if (*np >= m->npts || m->pts[*np].after > k) {
         const pt_segment *g = &m->seg[k];
 
         if (g->ca == g->a && g->cb == g->b)
@@ -183,7 +169,7 @@ static void put_primitive(FILE *f, const pt_model *m, size_t i)
                     (unsigned long)g->a, (unsigned long)g->b, (unsigned long)g->ca,
                     (unsigned long)g->cb);
     } else {
-        const pt_point *q = &m->pts[k];
+        const pt_point *q = &m->pts[(*np)++];
 
         if (q->radius == 0 && q->c == q->v)
             fprintf(f, "         m.addPrimitive(new Point(%lu));\n", (unsigned long)q->v);
@@ -197,8 +183,9 @@ static void put_primitive(FILE *f, const pt_model *m, size_t i)
     }
 }
 
-/* Of model m, part kind's item i: a vertex, colour, primitive or matrix op. */
-static void put_item(FILE *f, const pt_model *m, int kind, size_t i)
+/* Of model m, part kind's item i: a vertex, colour, primitive (np: see
+** put_primitive) or matrix op. */
+static void put_item(FILE *f, const pt_model *m, int kind, size_t i, size_t *np)
 {
     static const char *const mul[] = {
         "         p.transform(p.getMatrix().times(", "         p.transform((",
@@ -209,7 +196,7 @@ static void put_item(FILE *f, const pt_model *m, int kind, size_t i)
     case PART_VERTICES:
         v[0] = m->v[i].x, v[1] = m->v[i].y, v[2] = m->v[i].z;
         fputs("         m.addVertex(new Vertex(", f);
-        put_vec(f, "", v, 3);
+        put_vec(f, v, 3);
         fputs("));\n", f);
         break;
     case PART_COLORS:
@@ -218,7 +205,7 @@ static void put_item(FILE *f, const pt_model *m, int kind, size_t i)
         fputs(");\n", f);
         break;
     case PART_SEGMENTS:
-        put_primitive(f, m, i);
+        put_primitive(f, m, i, np);
         break;
     case PART_MATRICES:
         fputs(mul[m->ops[i].mul], f);
@@ -228,6 +215,7 @@ static void put_item(FILE *f, const pt_model *m, int kind, size_t i)
     }
 }
 
+/* (export_java.h) */
 size_t pt_export_count(const pt_model *m, int kind, int renderer)
 {
     return kind == PART_VERTICES ? m->nv : kind == PART_COLORS ? m->ncolors
@@ -235,8 +223,8 @@ size_t pt_export_count(const pt_model *m, int kind, int renderer)
 }
 
 /* The nested classes that fill model number k (mK, at position p): its
-** vertices, colours, primitives and (renderer 9) matrix operations, PT_EXPORT_CHUNK
-** calls a class (M{k}.add calls them). */
+** vertices, colours, primitives and (renderer 9) matrix operations,
+** PT_EXPORT_CHUNK calls a class (M{k}.add calls them). */
 static void put_model_parts(FILE *f, const pt_model *m, size_t k, int renderer)
 {
     static const char open[] = "   private static final class M%zu%s%zu\n   {\n"
@@ -244,7 +232,7 @@ static void put_model_parts(FILE *f, const pt_model *m, size_t k, int renderer)
                                "      {\n";
     static const char close[] = "      }\n   }\n\n";
     int kind;
-    size_t i, n;
+    size_t i, n, np = 0;
 
     for (kind = 0; kind < PT_EXPORT_NPARTS; kind++) {
         n = pt_export_count(m, kind, renderer);
@@ -253,7 +241,7 @@ static void put_model_parts(FILE *f, const pt_model *m, size_t k, int renderer)
                 fputs(i ? close : "", f);
                 fprintf(f, open, k, pt_export_parts[kind], i / PT_EXPORT_CHUNK);
             }
-            put_item(f, m, kind, i);
+            put_item(f, m, kind, i, &np);
         }
         if (n > 0)
             fputs(close, f);
@@ -271,7 +259,7 @@ static void put_camera(FILE *f, const pt_scene *s)
         return;
     }
     fprintf(f, "Camera.%s(", s->perspective ? "projPerspective" : "projOrtho");
-    put_vec(f, "", v, 4);
+    put_vec(f, v, 4);
     fputc(')', f);
     if (memcmp(&s->cam_n, &n0, sizeof n0) != 0) {     /* changeNear(near): n = -near */
         fputs("\n                            .changeNear(", f);
@@ -283,7 +271,7 @@ static void put_camera(FILE *f, const pt_scene *s)
         const double w[3] = {s->view.x, s->view.y, s->view.z};
 
         fputs("\n                            .translate(", f);
-        put_vec(f, "", w, 3);
+        put_vec(f, w, 3);
         fputc(')', f);
     }
 }
@@ -305,12 +293,12 @@ static void put_model(FILE *f, const pt_scene *s, const pt_model *m, size_t k)
         const double t[3] = {m->translate.x, m->translate.y, m->translate.z};
 
         fputs(", new Vector(", f);
-        put_vec(f, "", t, 3);
+        put_vec(f, t, 3);
         fputc(')', f);
     }
     fputs(");\n", f);
     for (kind = 0; kind < PT_EXPORT_NPARTS; kind++)
-        for (i = 0; i < (pt_export_count(m, kind, s->renderer) + PT_EXPORT_CHUNK - 1) / PT_EXPORT_CHUNK; i++)
+        for (i = 0; i * PT_EXPORT_CHUNK < pt_export_count(m, kind, s->renderer); i++)
             fprintf(f, "         M%zu%s%zu.into(m, p);\n", k, pt_export_parts[kind], i);
     if (m->ncolors == 0 && m->colors_given)
         fprintf(f, "         ModelShading.setColor(m, new Color(%d, %d, %d));\n",
