@@ -67,6 +67,7 @@ diff            32 sh tests/teach/diff.sh $B/pipetrace
 kraft            3 sh tests/formats/kraft.sh $B/pipetrace $ref
 course79         2 sh tests/course79/course79.sh $B/pipetrace
 course4          2 sh tests/course4/course4.sh $B/pipetrace
+course          20 python3 tests/course/check.py $B/pipetrace
 selfcheck       31 sh tests/teach/selfcheck.sh $B/pipetrace
 extreme          1 sh tests/cli/extreme.sh $B/pipetrace
 teach            1 sh tests/teach/teach.sh $B/pipetrace

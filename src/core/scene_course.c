@@ -472,7 +472,7 @@ int pt_sc_finish_course(parser *ps, const char *name)
 
     if (c->vpbg.line == 0)
         memcpy(s->vp_background, s->background, 3);
-    s->cam_n = c->near.line != 0 ? 0.0 - c->near_value : s->perspective ? -0.1 : 1.0;
+    s->cam_n = c->near.line != 0 ? -c->near_value : s->perspective ? -0.1 : 1.0;
     if (s->renderer != 4 && s->pipe == PT_PIPE_MATRIX)
         return pt_sc_fail_at(ps->err, ps->errlen, name, ps->cam_line, ps->cam_col,
                              "'camera lookat' is the matrix camera, not renderer %d's "

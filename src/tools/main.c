@@ -47,7 +47,7 @@ static const char usage[] =
 "                         [--image FILE]\n"
 "       pipetrace stages [--camera classic|matrix]\n"
 "       pipetrace shapes [NAME]\n"
-"       pipetrace export java [SCENE] [-o FILE.java] [--pixels]\n"
+"       pipetrace export java [SCENE] [-o FILE.java] [--pixels] [--debug LIST]\n"
 "Render SCENE (a .scene file or a plain .obj file; -: standard input; none:\n"
 "the built-in scene) through the classic teaching pipeline and trace every\n"
 "vertex at every stage:\n"

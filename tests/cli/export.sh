@@ -4,9 +4,14 @@
 #
 # Usage: sh tests/cli/export.sh PIPETRACE
 #   export-1  arguments, class names, errors, files written whole or not at all
-#   export-2  (with a JDK) the program compiles against a stub of renderer 4's
-#             API that this script writes, and hands the stub exactly the
-#             scene's doubles, names, indices, colors and sizes
+#   export-2  (with a JDK) the program compiles against a stub of the course
+#             renderers' API (4, 7 and 9 together) that this script writes,
+#             and hands the stub exactly the scene's doubles, names, indices,
+#             colors and sizes; for renderers 7 and 9 the camera's parameters,
+#             near, view, the switches and debug flags, Pipeline2, the
+#             position's matrix operations in order, colour lists, points
+#             and hidden flags (tests/course/export-check.sh runs the
+#             programs of the course corpus against the real jars)
 #   export-3  (with the course's jar: PIPETRACE_RENDERER4_JAR=renderer_4.jar, and
 #             the course's logs in tests/reference/kraftlog or, failing that,
 #             ../shared/reference/kraftlog) every reference
@@ -73,6 +78,16 @@ echo "l $(seq -s ' ' 1 1000)" >> "$tmp/big.scene"
 run export java "$tmp/big.scene" -o "$tmp/Big.java"
 check "export-1.19 1000 vertices go into classes of at most 400 calls" \
     [ "$(grep -c 'private static final class M1Vertices' "$tmp/Big.java")" -eq 3 ]
+run export java "$tmp/odd.scene" --debug scene,bogus
+check "export-1.31 --debug with a name that is no switch: usage error" [ "$rc" -eq 1 ]
+check "export-1.31 ... naming the switches" grep -q 'scene, position, rasterize, clip, nearclip' "$tmp/err"
+run export java "$tmp/odd.scene" --debug none
+check "export-1.32 --debug none: scene.debug off" grep -qF 'scene.debug = false;' "$tmp/out"
+run export java "$tmp/odd.scene" --debug position,rasterize
+check "export-1.33 --debug position,rasterize: every Position.debug" \
+    grep -qF 'for (final Position p : scene.positionList) p.debug = true;' "$tmp/out"
+check "export-1.33 ... and Rasterize.debug, renderer 4: no NearClip" \
+    sh -c "grep -qF 'Rasterize.debug = true;' '$tmp/out' && ! grep -q NearClip '$tmp/out'"
 # issue 31: outputs over inputs, names javac refuses
 cp "$tmp/odd.scene" "$tmp/S.java"
 run export java "$tmp/S.java" -o "$tmp/S.java"
@@ -88,7 +103,7 @@ run export java "$tmp/inc.scene" -o "$tmp/Part.java"
 check "export-1.23 -o naming an OBJ file the scene reads: refused, exit 2" [ "$rc" -eq 2 ]
 check "export-1.24 ... saying so, the OBJ kept" \
     sh -c "grep -q 'an OBJ file the scene reads' '$tmp/err' && cmp -s '$tmp/Part.java' '$tmp/part.keep'"
-for c in M1Vertices0 M1 M12Segments3; do
+for c in M1Vertices0 M1 M12Segments3 M1Colors0 M2Matrices1; do
     run export java "$tmp/odd.scene" -o "$tmp/$c.java"
     check "export-1.25 -o $c.java, a class the program makes: a usage error" [ "$rc" -eq 1 ]
 done
@@ -131,10 +146,14 @@ JAVA
     cat > "$s/renderer/scene/Camera.java" <<'JAVA'
 package renderer.scene;
 public final class Camera {
-   public final boolean perspective;
-   private Camera(boolean p) { perspective = p; }
-   public static Camera projPerspective() { return new Camera(true); }
-   public static Camera projOrtho() { return new Camera(false); }
+   public final boolean perspective; public final String d;
+   private Camera(boolean p, String d) { perspective = p; this.d = d; }
+   public static Camera projPerspective() { return new Camera(true, "persp()"); }
+   public static Camera projOrtho() { return new Camera(false, "ortho()"); }
+   public static Camera projPerspective(double l, double r, double b, double t) { return new Camera(true, "persp(" + l + "," + r + "," + b + "," + t + ")"); }
+   public static Camera projOrtho(double l, double r, double b, double t) { return new Camera(false, "ortho(" + l + "," + r + "," + b + "," + t + ")"); }
+   public Camera changeNear(double n) { return new Camera(perspective, d + ".near(" + n + ")"); }
+   public Camera translate(double x, double y, double z) { return new Camera(perspective, d + ".view(" + x + "," + y + "," + z + ")"); }
 }
 JAVA
     cat > "$s/renderer/scene/Vertex.java" <<'JAVA'
@@ -144,7 +163,14 @@ public final class Vertex {
    public Vertex(double x, double y, double z) { this.x = x; this.y = y; this.z = z; }
 }
 JAVA
-    sed 's/Vertex/Vector/g' "$s/renderer/scene/Vertex.java" > "$s/renderer/scene/Vector.java"
+    cat > "$s/renderer/scene/Vector.java" <<'JAVA'
+package renderer.scene;
+public final class Vector {
+   public final double x, y, z, w;
+   public Vector(double x, double y, double z) { this(x, y, z, 0.0); }
+   public Vector(double x, double y, double z, double w) { this.x = x; this.y = y; this.z = z; this.w = w; }
+}
+JAVA
     cat > "$s/renderer/scene/Model.java" <<'JAVA'
 package renderer.scene;
 import java.util.*;
@@ -154,7 +180,9 @@ public class Model {
    public final List<Vertex> vertexList = new ArrayList<>();
    public final List<Primitive> primitiveList = new ArrayList<>();
    public final List<java.awt.Color> colorList = new ArrayList<>();
+   public boolean visible = true;
    public Model(String name) { this.name = name; }
+   public final void addColor(java.awt.Color... cs) { colorList.addAll(Arrays.asList(cs)); }
    public final void addVertex(Vertex... vs) { vertexList.addAll(Arrays.asList(vs)); }
    public final void addPrimitive(Primitive... ps) { primitiveList.addAll(Arrays.asList(ps)); }
 }
@@ -163,18 +191,53 @@ JAVA
 package renderer.scene;
 public final class Position {
    public final String name; public final Model model; public final Vector t;
+   public boolean visible = true, debug; private Matrix matrix = Matrix.identity();
    public Position(Model m, String name, Vector t) { this.model = m; this.name = name; this.t = t; }
+   public Position(Model m, String name) { this(m, name, new Vector(0, 0, 0)); }
+   public Matrix getMatrix() { return matrix; }
+   public Position transform(Matrix m) { matrix = m; return this; }
 }
 JAVA
     cat > "$s/renderer/scene/primitives/Primitive.java" <<'JAVA'
 package renderer.scene.primitives;
 import java.util.*;
-public abstract class Primitive { public final List<Integer> vIndexList = new ArrayList<>(); }
+public abstract class Primitive {
+   public final List<Integer> vIndexList = new ArrayList<>(), cIndexList = new ArrayList<>();
+}
 JAVA
     cat > "$s/renderer/scene/primitives/LineSegment.java" <<'JAVA'
 package renderer.scene.primitives;
 public class LineSegment extends Primitive {
-   public LineSegment(int a, int b) { vIndexList.add(a); vIndexList.add(b); }
+   public LineSegment(int a, int b) { this(a, b, a, b); }
+   public LineSegment(int a, int b, int c, int d) {
+      vIndexList.add(a); vIndexList.add(b); cIndexList.add(c); cIndexList.add(d);
+   }
+}
+JAVA
+    cat > "$s/renderer/scene/primitives/Point.java" <<'JAVA'
+package renderer.scene.primitives;
+public class Point extends Primitive {
+   public int radius = 0;
+   public Point(int v) { this(v, v); }
+   public Point(int v, int c) { vIndexList.add(v); cIndexList.add(c); }
+}
+JAVA
+    # renderers 7 and 9: the camera's parameters, Matrix; each records what built it
+    cat > "$s/renderer/scene/Matrix.java" <<'JAVA'
+package renderer.scene;
+public final class Matrix {
+   final String d;
+   Matrix(String d) { this.d = d; }
+   static String b(double x) { return Long.toHexString(Double.doubleToRawLongBits(x)); }
+   public static Matrix identity() { return new Matrix("I"); }
+   public static Matrix translate(double x, double y, double z) { return new Matrix("T(" + b(x) + "," + b(y) + "," + b(z) + ")"); }
+   public static Matrix scale(double x, double y, double z) { return new Matrix("S(" + x + "," + y + "," + z + ")"); }
+   public static Matrix rotate(double t, double x, double y, double z) { return new Matrix("R(" + t + "," + x + "," + y + "," + z + ")"); }
+   public static Matrix buildFromRows(Vector a, Vector b, Vector c, Vector e) {
+      return new Matrix("Rows(" + a.w + "," + b.x + "," + c.y + "," + e.z + "," + e.w + ")");
+   }
+   public Matrix times(Matrix m) { return new Matrix("(" + d + "*" + m.d + ")"); }
+   public String toString() { return d; }
 }
 JAVA
     cat > "$s/renderer/scene/util/ModelShading.java" <<'JAVA'
@@ -190,7 +253,7 @@ JAVA
 package renderer.framebuffer;
 import java.awt.Color;
 public final class FrameBuffer {
-   public final int width, height; public Color bgColorFB; public final Viewport vp;
+   public final int width, height; public Color bgColorFB; public final Viewport vp; public String bgVP = "";
    public FrameBuffer(int w, int h, Color c) { width = w; height = h; bgColorFB = c; vp = new Viewport(); }
    public void setViewport(int x, int y, int w, int h) { vp.setViewport(x, y, w, h); }
    public void dumpFB2File(String f) { System.out.println("dump " + f); }
@@ -200,12 +263,31 @@ public final class FrameBuffer {
          vp_ul_x = x; vp_ul_y = y; vp_lr_x = x + w - 1; vp_lr_y = y + h - 1;
       }
       public FrameBuffer getFrameBuffer() { return FrameBuffer.this; }
+      public void setBackgroundColorVP(Color c) { bgVP += " bgVP " + c.getRGB(); }
+      public void clearVP() { bgVP += " cleared"; }
    }
 }
 JAVA
     cat > "$s/renderer/pipeline/Rasterize.java" <<'JAVA'
 package renderer.pipeline;
-public class Rasterize { public static boolean debug; }
+public class Rasterize { public static boolean debug, doAntiAliasing, doGamma = true; }
+JAVA
+    cat > "$s/renderer/pipeline/NearClip.java" <<'JAVA'
+package renderer.pipeline;
+public class NearClip { public static boolean debug, doNearClipping = true; }
+JAVA
+    cat > "$s/renderer/pipeline/Clip.java" <<'JAVA'
+package renderer.pipeline;
+public class Clip { public static boolean debug; }
+JAVA
+    cat > "$s/renderer/pipeline/Pipeline2.java" <<'JAVA'
+package renderer.pipeline;
+public final class Pipeline2 {
+   public static void render(renderer.scene.Scene s, renderer.framebuffer.FrameBuffer.Viewport vp) {
+      System.out.println("Pipeline2");
+      Pipeline.render(s, vp);
+   }
+}
 JAVA
     cat > "$s/renderer/pipeline/Pipeline.java" <<'JAVA'
 package renderer.pipeline;
@@ -230,6 +312,24 @@ public final class Pipeline {
       }
       System.out.println("fb " + fb.width + " " + fb.height + " " + c(fb.bgColorFB) + " vp "
                          + vp.vp_ul_x + " " + vp.vp_ul_y + " " + vp.vp_lr_x + " " + vp.vp_lr_y);
+      if (System.getProperty("stub.full") == null)
+         return;
+      System.out.println("camera " + s.camera.d + fb.bgVP + " nearclip " + NearClip.doNearClipping
+                         + " aa " + Rasterize.doAntiAliasing + " gamma " + Rasterize.doGamma
+                         + " clipdebug " + Clip.debug + " nearclipdebug " + NearClip.debug);
+      for (Position p : s.positionList) {
+         Model m = p.model;
+         System.out.println("position " + p.name + " matrix " + p.getMatrix() + " visible " + p.visible
+                            + " " + m.visible + " debug " + p.debug);
+         for (Color k : m.colorList) {
+            float[] f = k.getRGBComponents(null);
+            System.out.println("c " + Integer.toHexString(k.getRGB()) + " " + f[0] + " " + f[1] + " " + f[2]);
+         }
+         for (Primitive q : m.primitiveList)
+            System.out.println((q instanceof renderer.scene.primitives.Point
+                                ? "p radius " + ((renderer.scene.primitives.Point)q).radius + " " : "l ")
+                               + q.vIndexList + " " + q.cIndexList);
+      }
    }
 }
 JAVA
@@ -268,6 +368,103 @@ WANT
     (cd "$tmp" && java -cp classes LongName > "$tmp/got" 2>&1)
     check "export-2.6 ... and reach the renderer whole" \
         [ "$(awk '$1 == "model" && $2 ~ /^n+$/ && length($2) == 70000' "$tmp/got" | wc -l)" -eq 1 ]
+    # the course's renderers 7 and 9: every directive reaches the API
+    cat > "$tmp/r9.scene" <<'SCENE'
+renderer 9
+scene nine
+framebuffer 30 20
+background 1 2 3
+viewport 2 3 20 10
+viewport-background 7 8 9
+camera perspective -2 1 -0.5 1.5 2
+near 0.5
+view 0.25 -0.5 1
+nearclip off
+antialias on
+gamma off
+pipeline2
+model cube pos
+translate 0.5 0 -3
+matrix rotate y 30
+matrix-pre scale 2
+matrix scale 1 2 0.5
+matrix rotate 45 0 0 1
+matrix rows 1 0 0 0.5  0 1 0 0  0 0 1 0  0.25 0 0 2
+v 0 0 0
+v 1 1 1
+v 0.5 0.25 -1
+vcolor 10 20 30
+vcolor-float 0.3 0.6 0.9
+vcolor 255 0 128
+segment 1 2
+point 3 2 2
+segment 2 3 3 1
+point 1
+l 1 3
+hidden-position
+model two
+color 4 5 6
+v 0 0 -1
+point 1 1 -1
+hidden-model
+SCENE
+    cat > "$tmp/want9" <<'WANT'
+Pipeline2
+scene 'nine' perspective true debug true pixels true
+position pos 0000000000000000 0000000000000000 0000000000000000
+model cube colors 3 10 20 30
+v 0000000000000000 0000000000000000 0000000000000000
+v 3ff0000000000000 3ff0000000000000 3ff0000000000000
+v 3fe0000000000000 3fd0000000000000 bff0000000000000
+l [0, 1]
+l [2]
+l [1, 2]
+l [0]
+l [0, 2]
+position two 0000000000000000 0000000000000000 0000000000000000
+model two colors 1 4 5 6
+v 0000000000000000 0000000000000000 bff0000000000000
+l [0]
+fb 30 20 1 2 3 vp 2 3 21 12
+camera persp(-1.0,0.5,-0.25,0.75).near(0.5).view(0.25,-0.5,1.0) bgVP -16316407 cleared nearclip false aa true gamma false clipdebug true nearclipdebug true
+position pos matrix ((((S(2.0,2.0,2.0)*(T(3fe0000000000000,0,c008000000000000)*R(30.0,0.0,1.0,0.0)))*S(1.0,2.0,0.5))*R(45.0,0.0,0.0,1.0))*Rows(0.5,0.0,0.0,0.0,2.0)) visible false true debug true
+c ff0a141e 0.039215688 0.078431375 0.11764706
+c ff4d99e6 0.3 0.6 0.9
+c ffff0080 1.0 0.0 0.5019608
+l [0, 1] [0, 1]
+p radius 2 [2] [1]
+l [1, 2] [2, 0]
+p radius 0 [0] [0]
+l [0, 2] [0, 2]
+position two matrix I visible true false debug true
+c ff040506 0.015686275 0.019607844 0.023529412
+p radius -1 [0] [0]
+dump out.ppm
+WANT
+    run export java "$tmp/r9.scene" --debug all -o "$tmp/Nine.java"
+    check "export-2.7 renderer 9, --debug all: written" [ "$rc" -eq 0 ]
+    javac -encoding UTF-8 -d "$tmp/classes" -cp "$tmp/classes" "$tmp/Nine.java" > "$tmp/javac" 2>&1
+    check "export-2.7 ... compiles" [ $? -eq 0 ]
+    grep -m3 error "$tmp/javac"
+    (cd "$tmp" && java -Dstub.full=1 -cp classes Nine out.ppm > "$tmp/got" 2>&1)
+    check "export-2.8 ... and builds the scene: camera, near, view, switches, debug flags, Pipeline2, matrices in order, colour lists, primitives in file order, hidden flags" \
+        cmp -s "$tmp/got" "$tmp/want9"
+    cmp -s "$tmp/got" "$tmp/want9" || diff "$tmp/want9" "$tmp/got" | head -10
+    printf 'renderer 7\nframebuffer 8 8\ncamera orthographic-fov 90 2\nnear 0.5\nmodel m\nv 0 0 -1\nv 1 0 -1\nsegment 1 2\n' > "$tmp/r7.scene"
+    run export java "$tmp/r7.scene" -o "$tmp/Seven.java"
+    javac -encoding UTF-8 -d "$tmp/classes" -cp "$tmp/classes" "$tmp/Seven.java" > "$tmp/javac" 2>&1
+    check "export-2.9 renderer 7: compiles" [ $? -eq 0 ]
+    (cd "$tmp" && java -Dstub.full=1 -cp classes Seven out.ppm > "$tmp/got" 2>&1)
+    check "export-2.10 ... the fov camera as its view rectangle, near as changeNear, no matrix" \
+        grep -qx 'camera ortho(-1.9999999999999998,1.9999999999999998,-0.9999999999999999,0.9999999999999999).near(0.5) cleared nearclip true aa false gamma true clipdebug false nearclipdebug false' "$tmp/got"
+    check "export-2.11 ... the position's translation a Vector, no colours (the course adds white)" \
+        grep -qx 'model m colors 0' "$tmp/got"
+    # near 0 is changeNear(0.0): n = -0.0, the camera plane (tests/course/r7/near-edge-00)
+    sed 's/^near 0.5$/near 0/' "$tmp/r7.scene" > "$tmp/r7zero.scene"
+    run export java "$tmp/r7zero.scene" -o "$tmp/Zero.java"
+    javac -encoding UTF-8 -d "$tmp/classes" -cp "$tmp/classes" "$tmp/Zero.java" > "$tmp/javac" 2>&1
+    (cd "$tmp" && java -Dstub.full=1 -cp classes Zero out.ppm > "$tmp/got" 2>&1)
+    check "export-2.12 near 0: changeNear(0.0), not changeNear(-0.0)" grep -q '\.near(0\.0) ' "$tmp/got"
 else
     echo "skipped: export-2 (the program compiles against a stub of the API): no javac and java"
 fi
