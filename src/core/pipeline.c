@@ -513,30 +513,10 @@ typedef struct raster_ctx {
     int x_ul, y_ul, W, H;        /* the scene's, at hand for every pixel */
 } raster_ctx;
 
-/* A pixel of the matrix camera's segments (pt_raster_segment); the classic
-** camera's are drawn by pt_raster_draw(), its stages inlined. */
-static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
-{
-    raster_ctx *rc = ud;
-    pt_pix vp = {x_vp, y_vp, 1};
-    pt_pix f = pt_viewport2fb(vp, rc->x_ul, rc->y_ul, NULL);
-    int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
-
-    rc->sum->pixels++;
-    if (rc->l && rc->l->pixels) {
-        pt_fb_pixel px;
-        px.x_fb = f.x; px.y_fb = f.y; px.idx = idx;
-        memcpy(px.paint.rgb, rc->m->color, sizeof px.paint.rgb);
-        px.paint.coverage = 1.0f;
-        rc->l->pixels(rc->l->ud, rc->m, rc->seg, &px, 1);
-    }
-    /* a student's framebuffer or index stage may name no pixel of the array
-    ** (Java would throw); the trace shows it, the image is left alone */
-    if (rc->fb && idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, rc->m->color);
-}
-
 /* A pixel of the classic camera's segments walked step by step
-** (pt_raster_walk), in the course's colour of its step. */
+** (pt_raster_walk), in the course's colour of its step.  A student's
+** framebuffer or index stage may name no pixel of the array (Java would
+** throw): the trace shows it, the image is left alone. */
 static void on_paint(void *ud, int64_t x_vp, int64_t y_vp, const pt_fb_paint *pa)
 {
     raster_ctx *rc = ud;
@@ -552,6 +532,19 @@ static void on_paint(void *ud, int64_t x_vp, int64_t y_vp, const pt_fb_paint *pa
         rc->l->pixels(rc->l->ud, rc->m, rc->seg, &px, 1);
     }
     if (rc->fb && idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, pa->rgb);
+}
+
+/* A pixel of the matrix camera's segments (pt_raster_segment): the model's
+** one colour, all of the pixel; the classic camera's are drawn by
+** pt_raster_draw(), its stages inlined. */
+static void on_pixel(void *ud, int64_t x_vp, int64_t y_vp)
+{
+    const raster_ctx *rc = ud;
+    pt_fb_paint pa;
+
+    memcpy(pa.rgb, rc->m->color, sizeof pa.rgb);
+    pa.coverage = 1.0f;
+    on_paint(ud, x_vp, y_vp, &pa);
 }
 
 static void on_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
