@@ -7,6 +7,7 @@
 ** Float expressions stay float (FLT_EVAL_METHOD 0, -ffp-contract=off).
 */
 #include <math.h>
+#include <string.h>
 #include <stdint.h>
 #include "rv_raster.h"
 #include "pt_color.h"
@@ -17,6 +18,11 @@ typedef struct draw {
     unsigned char *rgb;
     const pt_rv_raster_ls *ls;
     uint64_t n;                  /* pixels written */
+    int flat;                    /* 1: the segment's colour is the same at every
+                                 ** step (its slopes are 0): computed once */
+    pt_rgb flat_c;               /*   that colour, */
+    pt_rgb flat_g;               /*   as written (gamma-encoded when on), */
+    unsigned char flat_b[3];     /*   and its bytes */
 } draw;
 
 /* Java's (int) of a double: toward zero, NaN 0, saturated. */
@@ -171,7 +177,7 @@ static void step_plain(draw *d, int x, double y, int tr, pt_rgb c)
 
     px.kind = PT_RV_PX_STEP;
     px.transposed = tr;
-    px.c[0] = d->par->gamma ? gamma3(c) : c;
+    px.c[0] = d->flat ? d->flat_g : d->par->gamma ? gamma3(c) : c;
     if (!tr) {
         px.x_pp = (double)x;
         px.y_pp = y;
@@ -184,7 +190,8 @@ static void step_plain(draw *d, int x, double y, int tr, pt_rgb c)
         px.y_vp = wrap32((int64_t)d->par->h - x);   /* h - x */
     }
     tell(d, &px);
-    put(d, px.x_vp, px.y_vp, px.c[0]);
+    if (d->flat) put_bytes(d, px.x_vp, px.y_vp, d->flat_b);
+    else put(d, px.x_vp, px.y_vp, px.c[0]);
 }
 
 static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
@@ -230,13 +237,29 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
 
     y = y0;
     xe = jint(x1);
+    /* slopes of 0: |c0 + 0 * (x - x0)| is |c0| at every step (x - x0 finite) */
+    d->flat = s.mc[0] == 0.0 && s.mc[1] == 0.0 && s.mc[2] == 0.0;
+    if (d->flat) {
+        d->flat_c.r = pt_color_at(c0.r, 0.0, x0, x0);
+        d->flat_c.g = pt_color_at(c0.g, 0.0, x0, x0);
+        d->flat_c.b = pt_color_at(c0.b, 0.0, x0, x0);
+        d->flat_g = par->gamma ? gamma3(d->flat_c) : d->flat_c;
+        d->flat_b[0] = (unsigned char)pt_rv_color_byte(d->flat_g.r);
+        d->flat_b[1] = (unsigned char)pt_rv_color_byte(d->flat_g.g);
+        d->flat_b[2] = (unsigned char)pt_rv_color_byte(d->flat_g.b);
+    }
     for (x = jint(x0); x < xe; x++, y += s.m) {     /* y accumulated: y += m */
-        c.r = pt_color_at(c0.r, s.mc[0], (double)x, x0);  /* |c0 + mc*(x - x0)| */
-        c.g = pt_color_at(c0.g, s.mc[1], (double)x, x0);
-        c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
+        if (d->flat) {
+            c = d->flat_c;
+        } else {
+            c.r = pt_color_at(c0.r, s.mc[0], (double)x, x0);  /* |c0 + mc*(x - x0)| */
+            c.g = pt_color_at(c0.g, s.mc[1], (double)x, x0);
+            c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
+        }
         if (par->antialias) step_aa(d, x, y, tr, c);
         else step_plain(d, x, y, tr, c);
     }
+    d->flat = 0;
     if (!tr) end_pixel(d, x1, y1, c1);              /* the last pixel: raw colour */
     else end_pixel(d, y1, x1, c1);
 }
@@ -281,10 +304,10 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
 {
     draw d;
 
+    memset(&d, 0, sizeof d);
     d.par = par;
     d.rgb = rgb;
     d.ls = ls;
-    d.n = 0;
     switch (p->kind) {
     case PT_RV_LINE:  line(&d, m, p); break;
     case PT_RV_POINT: point(&d, m, p); break;
@@ -298,10 +321,10 @@ uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
     draw d;
     int x, y;
 
+    memset(&d, 0, sizeof d);
     d.par = par;
     d.rgb = rgb;
     d.ls = ls;
-    d.n = 0;
     for (y = 0; y < par->h; y++)                    /* Viewport.clearVP() */
         for (x = 0; x < par->w; x++)
             put_bytes(&d, x, y, par->bg);
