@@ -288,6 +288,15 @@ static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     px.x_pp = x;
     px.y_pp = y;
     px.c[0] = c;
+    if (!(d->ls && d->ls->pixel && d->ls->clipped_points)) {
+        /* nobody hears the clipped pixels: only rows 1..h and columns 1..w
+        ** are written, so the loops run over those alone (a radius of
+        ** thousands costs the viewport, not (2r + 1)^2) */
+        if (ylo < 1) ylo = 1;
+        if (yhi > par->h) yhi = par->h;
+        if (xlo < 1) xlo = 1;
+        if (xhi > par->w) xhi = par->w;
+    }
     for (ys = ylo; ys <= yhi; ys++)                 /* rows outer, bottom first */
         for (xs = xlo; xs <= xhi; xs++) {
             px.clipped = !(xs > 0 && xs <= par->w && ys > 0 && ys <= par->h);

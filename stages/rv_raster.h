@@ -94,6 +94,10 @@ struct pt_rv_raster_ls {
     void (*pixel)(void *ud, const pt_rv_pixel *px);
     void (*bad)(void *ud, int x_fb, int y_fb, int W, int H);
     void *ud;
+    int clipped_points;          /* 1: pixel hears a point's clipped pixels too
+                                 ** (the log prints them); 0: only the written
+                                 ** ones, and a point's loops are cut to the
+                                 ** viewport (the same pixels, in the same order) */
 };
 typedef struct pt_rv_raster_ls pt_rv_raster_ls;
 

@@ -111,4 +111,5 @@ void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, FILE *f, int debug)
     ls->pixel = debug ? on_pixel : NULL;
     ls->bad = on_bad;
     ls->ud = f;
+    ls->clipped_points = debug;
 }

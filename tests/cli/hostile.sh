@@ -314,4 +314,15 @@ check "hostile-14.7 journey of 600 diagonals of a 16384 x 16384 framebuffer (9.8
     test "$rc" = 2
 check "hostile-14.8 ... saying the pixel cap" grep -q "^pipetrace journey: a model of .* draws more than 8000000 pixels; journey keeps them in memory and takes at most that many (docs/limits.md)$" "$tmp/err"
 
+# ---- a point's radius costs the viewport, not (2r + 1)^2: 200 points of
+# radius 4096 in renderer 7 (about 25 s of CPU when every one of their 67
+# million pixels was tested) end at once; the image is the same
+{ printf 'renderer 7\nframebuffer 100 100\nmodel a\n'
+  i=0; while [ $i -lt 200 ]; do echo 'v 0 0 -1'; i=$((i + 1)); done
+  i=1; while [ $i -le 200 ]; do echo "point $i 1 4096"; i=$((i + 1)); done; } > "$tmp/points.scene"
+( ulimit -t 10; "$exe" "$tmp/points.scene" --image "$tmp/points.ppm" ) > "$tmp/out" 2> "$tmp/err"; rc=$?
+check "hostile-15.1 200 points of radius 4096: drawn within 10 s of CPU (exit $rc)" test "$rc" = 0
+check "hostile-15.2 ... the viewport filled with the points' colour" \
+    sh -c 'test "$(tail -c 30000 "$1" | od -An -tu1 -v | tr -s " \n" "\n" | grep -c "^255$")" = 30000' _ "$tmp/points.ppm"
+
 report

@@ -98,6 +98,7 @@ static void set_ls(pt_rv_raster_ls *ls, FILE *lg, tally *t, int debug)
     ls->pixel = count_pixel;
     ls->bad = count_bad;
     ls->ud = t;
+    ls->clipped_points = 1;
 }
 
 /* Draw the positions of the .raster file f into rgb, logging to lg, or
