@@ -12,6 +12,7 @@
 #include "rv_raster.h"
 #include "pt_color.h"
 #include "pt_round.h"
+#include "pt_ref.h"
 
 typedef struct draw {
     const pt_rv_raster_par *par;
@@ -50,11 +51,6 @@ static int64_t jround(double x)
     return (int64_t)r;
 }
 
-int pt_rv_color_byte(float c)
-{
-    return jint((double)(c * 255.0f) + 0.5);        /* (int)((double)(c*255f) + 0.5) */
-}
-
 /* FrameBuffer.setPixelVP(x, y, c) -> setPixelFB(x_ul + x, y_ul + y, c):
 ** the pixel's bytes b, or a "bad" report when the index is outside. */
 static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
@@ -80,9 +76,9 @@ static void put(draw *d, int x_vp, int y_vp, pt_rgb c)
 {
     unsigned char b[3];
 
-    b[0] = (unsigned char)pt_rv_color_byte(c.r);    /* new Color(r, g, b) */
-    b[1] = (unsigned char)pt_rv_color_byte(c.g);
-    b[2] = (unsigned char)pt_rv_color_byte(c.b);
+    b[0] = pt_color_byte(c.r);                      /* new Color(r, g, b) */
+    b[1] = pt_color_byte(c.g);
+    b[2] = pt_color_byte(c.b);
     put_bytes(d, x_vp, y_vp, b);
 }
 
@@ -101,10 +97,13 @@ static pt_rgb gamma3(pt_rgb c)
     return g;
 }
 
-/* The pixel-plane map, w/2.001 first. */
-static double to_pp(int w, double x_p)
+/* The pixel-plane map of v: renderer 4's pixel stage, 0.5 + w/2.001 * (x + 1)
+** (its reference copy, which a student's stage file does not replace). */
+static pt_vec2 to_pp(const pt_rv_raster_par *par, pt_vec4 v)
 {
-    return 0.5 + (double)w / 2.001 * (x_p + 1.0);   /* 0.5 + w/2.001*(x_p + 1) */
+    pt_vec3 ip = {v.x, v.y, 0.0};
+
+    return ptref_image2pixel(ip, par->w, par->h, NULL);
 }
 
 /* The end pixel (x_pp, y_pp rounded, in the viewport's orientation): raw colour. */
@@ -199,8 +198,8 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     const pt_rv_raster_par *par = d->par;
     pt_vec4 v0 = m->v[p->v[0]], v1 = m->v[p->v[1]];
     pt_rgb c0 = m->c[p->c[0]], c1 = m->c[p->c[1]], c;
-    double x0 = to_pp(par->w, v0.x), y0 = to_pp(par->h, v0.y);
-    double x1 = to_pp(par->w, v1.x), y1 = to_pp(par->h, v1.y);
+    pt_vec2 p0 = to_pp(par, v0), p1 = to_pp(par, v1);
+    double x0 = p0.x, y0 = p0.y, x1 = p1.x, y1 = p1.y;
     double t, y;
     pt_rv_slopes s = {0};
     int x, xe, tr = 0;
@@ -244,9 +243,9 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
         d->flat_c.g = pt_color_at(c0.g, 0.0, x0, x0);
         d->flat_c.b = pt_color_at(c0.b, 0.0, x0, x0);
         d->flat_g = par->gamma ? gamma3(d->flat_c) : d->flat_c;
-        d->flat_b[0] = (unsigned char)pt_rv_color_byte(d->flat_g.r);
-        d->flat_b[1] = (unsigned char)pt_rv_color_byte(d->flat_g.g);
-        d->flat_b[2] = (unsigned char)pt_rv_color_byte(d->flat_g.b);
+        d->flat_b[0] = pt_color_byte(d->flat_g.r);
+        d->flat_b[1] = pt_color_byte(d->flat_g.g);
+        d->flat_b[2] = pt_color_byte(d->flat_g.b);
     }
     for (x = jint(x0); x < xe; x++, y += s.m) {     /* y accumulated: y += m */
         if (d->flat) {
@@ -269,7 +268,8 @@ static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     const pt_rv_raster_par *par = d->par;
     pt_vec4 v = m->v[p->v[0]];
     pt_rgb c = m->c[p->c[0]];
-    double x = to_pp(par->w, v.x), y = to_pp(par->h, v.y);
+    pt_vec2 q = to_pp(par, v);
+    double x = q.x, y = q.y;
     int ix, iy;
     int64_t xs, ys, xlo, xhi, ylo, yhi;
     pt_rv_pixel px = {0};

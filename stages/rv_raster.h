@@ -121,7 +121,4 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
 uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
                         const pt_rv_raster_ls *ls);
 
-/* The byte java.awt.Color(float) makes of component c: (int)((double)(c*255f)
-** + 0.5), (int) as Java's (NaN gives 0).  This function can't fail. */
-int pt_rv_color_byte(float c);
 #endif

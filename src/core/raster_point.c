@@ -32,7 +32,7 @@ int64_t pt_raster_point(pt_vec2 pp, int r, int w, int h, int every, int64_t most
     int64_t ylo, yhi, xlo, xhi, n;
 
     ip.x = pp.x; ip.y = pp.y; ip.z = 0.0;
-    q = pt_image2pixel(ip, w, h, NULL);             /* x = 0.5 + w/2.001 * (x_pp + 1) */
+    q = pt_image2pixel(ip, w, h, NULL);             /* the pixel stage again, on x_pp */
     d->x_pp = q.x;
     d->y_pp = q.y;
     if (isinf(q.x) || isinf(q.y)) return -1;        /* NaN rounds to 0, as in Java */

@@ -5,8 +5,7 @@
 #include "io/rv_log_raster.h"
 #include "io/jnum.h"
 
-/* "LABEL = (%9.4f, %9.4f)" */
-static void put_pair(FILE *f, const char *label, double a, double b)
+void pt_klog_pair(FILE *f, const char *label, double a, double b)
 {
     char sa[PT_JNUM_LEN], sb[PT_JNUM_LEN];
 
@@ -15,48 +14,58 @@ static void put_pair(FILE *f, const char *label, double a, double b)
     fprintf(f, "(%s) = (%s, %s)\n", label, sa, sb);
 }
 
+void pt_klog_rgb(FILE *f, float r, float g, float b)
+{
+    char sr[PT_JNUM_LEN], sg[PT_JNUM_LEN], sb[PT_JNUM_LEN];
+
+    pt_jnum_f(sr, (double)r, 0, 4, 0);
+    pt_jnum_f(sg, (double)g, 0, 4, 0);
+    pt_jnum_f(sb, (double)b, 0, 4, 0);
+    fprintf(f, "r=%s g=%s b=%s", sr, sg, sb);
+}
+
+void pt_klog_slopes(FILE *f, double m, const char *so, const double mc[3],
+                    double x0_vp, double y0_vp, double x1_vp, double y1_vp)
+{
+    static const char *const chan[3] = {"mRed", "mGrn", "mBlu"};
+    char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
+    int i;
+
+    pt_jnum_dtoa(one, m);
+    if (!so) {
+        fprintf(f, "Slope m    = %s\n", one);
+    } else {
+        pt_jnum_dtoa(two, 1 / m);
+        fprintf(f, "Slope m    = %s (%s 1/m = %s)\n", one, so, two);
+    }
+    for (i = 0; i < 3; i++) {
+        pt_jnum_dtoa(one, mc[i]);
+        fprintf(f, "Slope %s = %s\n", chan[i], one);
+    }
+    pt_klog_pair(f, "x0_vp, y0_vp", x0_vp, y0_vp);
+    pt_klog_pair(f, "x1_vp, y1_vp", x1_vp, y1_vp);
+}
+
 static void on_ends(void *ud, double x0, double y0, double x1, double y1)
 {
-    put_pair((FILE *)ud, "x0_pp, y0_pp", x0, y0);
-    put_pair((FILE *)ud, "x1_pp, y1_pp", x1, y1);
+    pt_klog_pair((FILE *)ud, "x0_pp, y0_pp", x0, y0);
+    pt_klog_pair((FILE *)ud, "x1_pp, y1_pp", x1, y1);
 }
 
 static void on_slopes(void *ud, const pt_rv_slopes *s)
 {
-    static const char *const chan[3] = {"mRed", "mGrn", "mBlu"};
-    FILE *f = ud;
-    char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
-    int i;
-
-    pt_jnum_dtoa(one, s->m);
-    if (!s->transposed) {
-        fprintf(f, "Slope m    = %s\n", one);
-    } else {
-        pt_jnum_dtoa(two, 1 / s->m);
-        fprintf(f, "Slope m    = %s (transposed, so 1/m = %s)\n", one, two);
-    }
-    for (i = 0; i < 3; i++) {
-        pt_jnum_dtoa(one, s->mc[i]);
-        fprintf(f, "Slope %s = %s\n", chan[i], one);
-    }
-    put_pair(f, "x0_vp, y0_vp", s->x0_vp, s->y0_vp);
-    put_pair(f, "x1_vp, y1_vp", s->x1_vp, s->y1_vp);
+    pt_klog_slopes((FILE *)ud, s->m, s->transposed ? "transposed, so" : NULL, s->mc,
+                   s->x0_vp, s->y0_vp, s->x1_vp, s->y1_vp);
 }
 
 static void on_point(void *ud, double x, double y)
 {
-    put_pair((FILE *)ud, "x_pp, y_pp", x, y);
+    pt_klog_pair((FILE *)ud, "x_pp, y_pp", x, y);
 }
 
-/* "r=%.4f g=%.4f b=%.4f" of c (floats widened, as Java's format does). */
 static void put_rgb(FILE *f, pt_rgb c)
 {
-    char r[PT_JNUM_LEN], g[PT_JNUM_LEN], b[PT_JNUM_LEN];
-
-    pt_jnum_f(r, (double)c.r, 0, 4, 0);
-    pt_jnum_f(g, (double)c.g, 0, 4, 0);
-    pt_jnum_f(b, (double)c.b, 0, 4, 0);
-    fprintf(f, "r=%s g=%s b=%s", r, g, b);
+    pt_klog_rgb(f, c.r, c.g, c.b);
 }
 
 /* "(x_pp=..., y_pp=...)": %4d for the stepped coordinate, else %9.4f. */

@@ -22,4 +22,17 @@
 ** which the course prints always.  f must outlive ls's use.  This function
 ** can't fail (write errors show in ferror(f)). */
 void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, FILE *f, int debug);
+
+/* The lines every renderer's rasterizer prints alike (renderer 4's log,
+** src/io/trace_kraft.c, writes them too).  These functions can't fail.
+**   pt_klog_pair    "(LABEL) = (%9.4f, %9.4f)"
+**   pt_klog_rgb     "r=%.4f g=%.4f b=%.4f" (floats widened, as Java does)
+**   pt_klog_slopes  "Slope m    = M" (with " (SO 1/m = X)" when stepped in y;
+**                   SO: renderer 4 "so", renderers 7 and 9 "transposed, so"),
+**                   "Slope mRed/mGrn/mBlu = ..." by Double.toString, and the
+**                   ends' "(x0_vp, y0_vp)", "(x1_vp, y1_vp)" */
+void pt_klog_pair(FILE *f, const char *label, double a, double b);
+void pt_klog_rgb(FILE *f, float r, float g, float b);
+void pt_klog_slopes(FILE *f, double m, const char *so, const double mc[3],
+                    double x0_vp, double y0_vp, double x1_vp, double y1_vp);
 #endif

@@ -90,17 +90,9 @@ static void vertex(const clog *w, pt_vec4 v)
     jf(w, v.w, 10, 5, PT_JNUM_SPACE); fputs(")", w->f);
 }
 
-/* new Color(float ...)'s int component: (int)((double)(c*255f) + 0.5),
-** NaN 0 (the range 0 .. 1 is the parser's and the stages' to keep). */
-static int cbyte(float c)
-{
-    double d = (double)(c * 255.0f) + 0.5;
-    return d >= 0.0 && d < 256.0 ? (int)d : 0;
-}
-
 static void color(const clog *w, pt_rgb c)
 {
-    fprintf(w->f, "java.awt.Color[r=%d,g=%d,b=%d]", cbyte(c.r), cbyte(c.g), cbyte(c.b));
+    fprintf(w->f, "java.awt.Color[r=%d,g=%d,b=%d]", pt_color_byte(c.r), pt_color_byte(c.g), pt_color_byte(c.b));
 }
 
 static void prim(const clog *w, const pt_rv_prim *p)

@@ -359,9 +359,9 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
     r.v = w->raster_no + 1;
     r.x_fb = (int64_t)par->x_ul + x_vp;
     r.y_fb = (int64_t)par->y_ul + y_vp;
-    r.rgb[0] = (unsigned char)pt_rv_color_byte(c.r);
-    r.rgb[1] = (unsigned char)pt_rv_color_byte(c.g);
-    r.rgb[2] = (unsigned char)pt_rv_color_byte(c.b);
+    r.rgb[0] = pt_color_byte(c.r);
+    r.rgb[1] = pt_color_byte(c.g);
+    r.rgb[2] = pt_color_byte(c.b);
     r.coverage = f;
     emit(w, &r);
 }

@@ -23,6 +23,7 @@
 #include <string.h>
 #include "io/jnum.h"
 #include "io/trace_kraft.h"
+#include "io/rv_log_raster.h"
 
 /* "% 10.5f  % 10.5f  % 10.5f": the three numbers of Vertex.toString and
 ** Vector.toString. */
@@ -126,16 +127,6 @@ static void put_warnings(FILE *f, const pt_model *m, const pt_journey *js)
 
 /* ===== the rasterizer's lines ===== */
 
-/* "(NAME) = (%9.4f, %9.4f)" */
-static void put_pair(FILE *f, const char *name, double a, double b)
-{
-    char s[PT_JNUM_LEN], t[PT_JNUM_LEN];
-
-    pt_jnum_f(s, a, 9, 4, 0);
-    pt_jnum_f(t, b, 9, 4, 0);
-    fprintf(f, "(%s) = (%s, %s)\n", name, s, t);
-}
-
 /* The start of a pixel line: "Clip: " or six blanks, the framebuffer and
 ** viewport, the point (xs, ys as the course prints them: "%4d" for a whole
 ** coordinate, "%9.4f" for the other). */
@@ -147,15 +138,9 @@ static void put_where(FILE *f, const pt_scene *s, int inside, const char *xs,
             s->vp_h, xs, ys);
 }
 
-/* "r=%.4f g=%.4f b=%.4f" of a colour written. */
 static void put_rgb(FILE *f, const float c[3])
 {
-    char r[PT_JNUM_LEN], g[PT_JNUM_LEN], b[PT_JNUM_LEN];
-
-    pt_jnum_f(r, (double)c[0], 0, 4, 0);
-    pt_jnum_f(g, (double)c[1], 0, 4, 0);
-    pt_jnum_f(b, (double)c[2], 0, 4, 0);
-    fprintf(f, "r=%s g=%s b=%s", r, g, b);
+    pt_klog_rgb(f, c[0], c[1], c[2]);
 }
 
 /* One step's line (logPixel), or with anti-aliasing its pair's
@@ -187,26 +172,11 @@ static void put_step(FILE *f, const pt_scene *s, const char *xs, const char *ys,
 ** viewport pixels. */
 static void put_setup(FILE *f, const pt_raster_setup *su)
 {
-    char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
-    static const char *const chan[3] = {"mRed", "mGrn", "mBlu"};
-    int i;
-
-    put_pair(f, "x0_pp, y0_pp", (double)su->x0, (double)su->y0);
-    put_pair(f, "x1_pp, y1_pp", (double)su->x1, (double)su->y1);
+    pt_klog_pair(f, "x0_pp, y0_pp", (double)su->x0, (double)su->y0);
+    pt_klog_pair(f, "x1_pp, y1_pp", (double)su->x1, (double)su->y1);
     if (su->kind != PT_RASTER_DRAWN) return;
-    pt_jnum_dtoa(one, su->m);
-    if (!su->ymajor) {
-        fprintf(f, "Slope m    = %s\n", one);
-    } else {
-        pt_jnum_dtoa(two, 1 / su->m);
-        fprintf(f, "Slope m    = %s (so 1/m = %s)\n", one, two);
-    }
-    for (i = 0; i < 3; i++) {
-        pt_jnum_dtoa(one, su->dc[i]);
-        fprintf(f, "Slope %s = %s\n", chan[i], one);
-    }
-    put_pair(f, "x0_vp, y0_vp", (double)su->vp0.x, (double)su->vp0.y);
-    put_pair(f, "x1_vp, y1_vp", (double)su->vp1.x, (double)su->vp1.y);
+    pt_klog_slopes(f, su->m, su->ymajor ? "so" : NULL, su->dc, (double)su->vp0.x,
+                   (double)su->vp0.y, (double)su->vp1.x, (double)su->vp1.y);
 }
 
 /* ===== the log ===== */
@@ -350,7 +320,7 @@ static void put_point_log(const kraft_run *kr, const pt_model *m, size_t q)
     pp.x = kr->js[pt->v].rec[PT_STAGE_PIXEL].x;
     pp.y = kr->js[pt->v].rec[PT_STAGE_PIXEL].y;
     if (pt_raster_point(pp, -1, s->vp_w, s->vp_h, 1, 0, &dt, on_dot, &dl) < 0) return;
-    put_pair(kr->f, "x_pp, y_pp", dt.x_pp, dt.y_pp);
+    pt_klog_pair(kr->f, "x_pp, y_pp", dt.x_pp, dt.y_pp);
     pt_raster_point(pp, pt->radius, s->vp_w, s->vp_h, 1, PT_KRAFT_MAX_STEPS, &dt, on_dot,
                     &dl);
 }

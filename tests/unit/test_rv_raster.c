@@ -137,8 +137,8 @@ static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, tally *t,
             unsigned hex;
             pt_rgb *q = &c[m.nc++];
             if (sscanf(line, "c %f %f %f %x", &q->r, &q->g, &q->b, &hex) != 4) return -1;
-            if ((unsigned)(pt_rv_color_byte(q->r) << 16 | pt_rv_color_byte(q->g) << 8 |
-                           pt_rv_color_byte(q->b)) != hex) (*nbad)++;
+            if ((unsigned)(pt_color_byte(q->r) << 16 | pt_color_byte(q->g) << 8 |
+                           pt_color_byte(q->b)) != hex) (*nbad)++;
         } else if (strcmp(word, "l") == 0 && m.np < MAXN) {
             pt_rv_prim *q = &p[m.np++];
             memset(q, 0, sizeof *q);
@@ -288,11 +288,11 @@ int main(int argc, char **argv)
     extremes();
     /* java.awt.Color(float): the float product, then + 0.5 in double (NOTES 9.4) */
     PT_CHECK("rv-1.1 Color byte of 0.50392157f is 129 (widened first: 128)",
-             pt_rv_color_byte(0.50392157f) == 129 &&
+             pt_color_byte(0.50392157f) == 129 &&
              (int)((double)0.50392157f * 255.0 + 0.5) == 128);
     PT_CHECK("rv-1.2 Color byte of NaN is 0, of 1 is 255, of 0 is 0",
-             pt_rv_color_byte(nanf("")) == 0 && pt_rv_color_byte(1.0f) == 255 &&
-             pt_rv_color_byte(0.0f) == 0);
+             pt_color_byte(nanf("")) == 0 && pt_color_byte(1.0f) == 255 &&
+             pt_color_byte(0.0f) == 0);
     PT_CHECK("at least 16 cases", n >= 16);
     return pt_test_report();
 }
