@@ -174,19 +174,16 @@ static char *path(const char *name)
     return p;
 }
 
-/* Write the scene of n octagons to B/bench-NAME.scene. */
-static char *make_scene(const char *name, const char *n)
+/* Write the scene of n octagons for renderer 4 or 9 (benchgen) to B/NAME. */
+static char *make_scene(const char *name, const char *n, const char *renderer)
 {
     char *argv[5], *out = path(name);
 
     argv[0] = path("benchgen");
     argv[1] = (char *)n;
-    argv[2] = NULL;
-    if (!strcmp(name, "bench-r9.scene")) {  /* renderer 9, anti-aliased */
-        argv[2] = "1000";
-        argv[3] = "9";
-        argv[4] = NULL;
-    }
+    argv[2] = "1000";                           /* octagons a model */
+    argv[3] = (char *)renderer;
+    argv[4] = NULL;
     spawn(argv, out, NULL, NULL);
     return out;
 }
@@ -346,10 +343,10 @@ int main(int argc, char **argv)
     dir = argc > 1 ? argv[1] : "build";
     printf("pipetrace bench: CPU seconds, the least of %d runs; figures depend on the machine\n",
            RUNS);
-    s200 = make_scene("bench-200k.scene", "25000");
-    s800 = make_scene("bench-800k.scene", "100000");
-    s3200 = make_scene("bench-3200k.scene", "400000");
-    s9 = make_scene("bench-r9.scene", "25000");
+    s200 = make_scene("bench-200k.scene", "25000", "4");
+    s800 = make_scene("bench-800k.scene", "100000", "4");
+    s3200 = make_scene("bench-3200k.scene", "400000", "4");
+    s9 = make_scene("bench-r9.scene", "25000", "9");
     pt = path("pipetrace");
     ppm = path("bench-pt.ppm");
     bppm = path("bench-base.ppm");
