@@ -376,7 +376,6 @@ int pt_sc_segment(parser *ps, source *src, const token *dir, cursor *args)
     if (n == 4 && (colour_index(ps, src, &a[2], &sg.ca) < 0
                    || colour_index(ps, src, &a[3], &sg.cb) < 0))
         return -1;
-    mark(&ps->course.segment, src, dir);
     if (pt_sc_room(ps, src, dir->p, (void **)&m->seg, m->nseg, &m->cap_seg, sizeof *m->seg,
                    MAX_SEGS, "segments") != 0)
         return -1;

@@ -35,7 +35,7 @@ typedef struct pt_sc_course {
     pt_sc_at pipeline2;
     pt_sc_at cam_params;        /* a camera line with a view volume */
     pt_sc_at matrix;            /* the first `matrix` line */
-    pt_sc_at point, segment;    /* the first `point` and `segment` lines */
+    pt_sc_at point;             /* the first `point` line */
     pt_sc_at cindex;            /* the current model's highest colour index, */
     uint32_t cindex_max;        /*   its value + 1 (0: none) */
     size_t vcolor_line;         /* the current model's first `vcolor` line */
