@@ -22,7 +22,8 @@ for path in files:
             got = subprocess.run(["sh", "-c", cmd], stdout=subprocess.PIPE,
                                  stderr=subprocess.STDOUT).stdout.decode("utf-8")
             out.append(line)
-            out.extend(got.split("\n")[:-1] if got.endswith("\n") else got.split("\n"))
+            if got:         # a command that prints nothing has no lines under it
+                out.extend(got.split("\n")[:-1] if got.endswith("\n") else got.split("\n"))
             skipping = True
             continue
         elif block and skipping:

@@ -32,7 +32,9 @@ s6_xh       s6_fb2index     index       1 idx = x_fb * H + y_fb: column by colum
 s6_vpw      s6_fb2index     index       1 idx = y_fb * 24 + x_fb: the viewport width (24 in tests/data/diff/offset.scene)
 u_s2_ynodiv s2_camera2image projection  1 y_ip = y_c: y not divided (no mistake of the catalogue)
 u_s3_ww     s3_image2pixel  pixel       1 y_pp = 0.5 + w/2.001 * (y_ip + 1): w for h in y only (none)
-u_s6_wm1    s6_fb2index     index       1 idx = y_fb * (W - 1) + x_fb (none)'
+u_s6_wm1    s6_fb2index     index       1 idx = y_fb * (W - 1) + x_fb (none)
+u_s6_xle    s6_fb2index     index       1 inside when x_fb <= W: the bounds test off by one (none)
+u_s6_xm1    s6_fb2index     index       1 inside when -1 <= x_fb: the bounds test off by one (none)'
 
 edit() {    # edit NAME: the sed program of mistake NAME
     case $1 in
@@ -56,6 +58,8 @@ edit() {    # edit NAME: the sed program of mistake NAME
     u_s2_ynodiv) printf '%s\n' 's|ip\.y = c\.y / -c\.z;|ip.y = c.y;|' ;;
     u_s3_ww)     printf '%s\n' 's|0\.5 + h / 2\.001 \* (ip\.y|0.5 + w / 2.001 * (ip.y|' ;;
     u_s6_wm1)    printf '%s\n' 's|fb\.y \* (int64_t)W + fb\.x;|fb.y * (int64_t)(W - 1) + fb.x;|' ;;
+    u_s6_xle)    printf '%s\n' 's|pt_inside(fb\.x, fb\.y, W, H)|fb.x >= 0 \&\& fb.x <= W \&\& fb.y >= 0 \&\& fb.y < H|' ;;
+    u_s6_xm1)    printf '%s\n' 's|pt_inside(fb\.x, fb\.y, W, H)|fb.x >= -1 \&\& fb.x < W \&\& fb.y >= 0 \&\& fb.y < H|' ;;
     s6_xh)       printf '%s\n' 's|fb\.y \* (int64_t)W + fb\.x;|fb.x * (int64_t)H + fb.y;|' ;;
     s6_vpw)      printf '%s\n' 's|fb\.y \* (int64_t)W + fb\.x;|fb.y * (int64_t)24 + fb.x;|' ;;
     esac
