@@ -135,7 +135,7 @@ TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/dd.o $B/acc_shared.o $B/acc
 CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/dfit.o \
            $B/dpixels.o $B/dsummary.o $B/cmd_step.o $B/cmd_why.o $B/cmd_quiz.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o $B/cmd_shapes.o $B/cmd_export.o \
-           $B/export_java.o
+           $B/export_java.o $B/cmd_class.o $B/class_report.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
@@ -165,6 +165,8 @@ $B/%.o: src/tools/%.c $(HDRS) | $B
 $B/%.o: src/tools/diff/%.c $(HDRS) | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
 $B/%.o: src/tools/accuracy/%.c $(HDRS) | $B
+	$(CC) $(ALLCFLAGS) -c -o $@ $<
+$B/%.o: src/tools/class/%.c $(HDRS) | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
 $B/%.o: src/tools/journey/%.c $(HDRS) | $B
 	$(CC) $(ALLCFLAGS) -c -o $@ $<

@@ -19,5 +19,6 @@ int pt_cmd_journey(int argc, char **argv);   /* draw one vertex's journey: SVG, 
 int pt_cmd_stages(int argc, char **argv);    /* the table of stages */
 int pt_cmd_shapes(int argc, char **argv);    /* the course's models for `shape` */
 int pt_cmd_export(int argc, char **argv);    /* the scene as a Java client of renderer 4 */
+int pt_cmd_class(int argc, char **argv);     /* a folder of students against EXPECTED */
 
 #endif

@@ -48,6 +48,7 @@ static const char usage[] =
 "       pipetrace stages [--camera classic|matrix]\n"
 "       pipetrace shapes [NAME]\n"
 "       pipetrace export java [SCENE] [-o FILE.java] [--pixels] [--debug LIST]\n"
+"       pipetrace class EXPECTED DIR [--csv FILE] [--html FILE] [--jobs N]\n"
 "Render SCENE (a .scene file or a plain .obj file; -: standard input; none:\n"
 "the built-in scene) through the classic teaching pipeline and trace every\n"
 "vertex at every stage:\n"
@@ -91,6 +92,7 @@ static const struct command {
     {"diff", pt_cmd_diff}, {"step", pt_cmd_step}, {"why", pt_cmd_why},
     {"quiz", pt_cmd_quiz}, {"accuracy", pt_cmd_accuracy}, {"journey", pt_cmd_journey},
     {"stages", pt_cmd_stages}, {"shapes", pt_cmd_shapes}, {"export", pt_cmd_export},
+    {"class", pt_cmd_class},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 

@@ -150,10 +150,16 @@ static int trace_diff(dctx *c)
                 pt_diff_report_raster(c, &rs);
         }
         if (nmiss || nextra) printf("\n");
+        c->o->out->px_compared = 1;
+        c->o->out->px_missing = nmiss;
+        c->o->out->px_extra = nextra;
     } else if (c->t[0].npx + c->t[0].ncl + c->t[1].npx + c->t[1].ncl) {
         printf("Not compared: lit pixels (only %s has raster records).\n\n",
                c->t[0].npx + c->t[0].ncl ? "EXPECTED" : "ACTUAL");
     }
+    c->o->out->vertices = c->agree + c->differ;
+    c->o->out->differ = c->differ;
+    c->o->out->only = c->only[0] + c->only[1];
     return pt_diff_summarize(c, hdr_differ, nmiss, nextra, nlit, pixels_compared, &rs);
 }
 
@@ -197,6 +203,12 @@ static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
 
 int pt_cmd_diff(int argc, char **argv)
 {
+    pt_diff_outcome out;
+    return pt_diff_run(argc, argv, &out);
+}
+
+int pt_diff_run(int argc, char **argv, pt_diff_outcome *out)
+{
     dopts o;
     char *buf[2] = {NULL, NULL};
     size_t len[2];
@@ -205,16 +217,18 @@ int pt_cmd_diff(int argc, char **argv)
     dctx *c;
     int rc, s;
 
+    memset(out, 0, sizeof *out);
     rc = parse_args(&o, argc, argv);
-    if (rc >= 0) return rc;
+    o.out = out;
+    if (rc >= 0) return out->status = rc;
     for (s = 0; s < 2 && o.image_out; s++)      /* --image-out over an input: no */
         if (pt_outfile_same(o.image_out, !strcmp(o.path[s], "-") ? "/dev/stdin" : o.path[s])) {
             fprintf(stderr, "%s: error: --image-out names %s, %s; writing it would destroy it\n",
                     o.image_out, s ? "ACTUAL" : "EXPECTED", o.path[s]);
-            return PT_EXIT_TROUBLE;
+            return out->status = PT_EXIT_TROUBLE;
         }
     c = calloc(1, sizeof *c);
-    if (!c) { fputs("pipetrace: out of memory\n", stderr); return PT_EXIT_INPUT; }
+    if (!c) { fputs("pipetrace: out of memory\n", stderr); return out->status = PT_EXIT_INPUT; }
     c->o = &o;
     for (s = 0; s < 2; s++)
         if ((rc = load(c, s, &buf[s], &len[s], &kind[s])) != 0) goto done;
@@ -258,5 +272,5 @@ done:
     free(c);
     free(buf[0]);
     free(buf[1]);
-    return rc;
+    return out->status = rc;
 }

@@ -29,6 +29,7 @@
 #include "io/tread.h"
 #include "tools/cli.h"
 #include "tools/catalogue.h"
+#include "tools/diff/doutcome.h"
 
 #define PT_DIFF_NONE UINT32_MAX          /* no record */
 
@@ -39,6 +40,7 @@ typedef struct dopts {
     const char *image_out;       /* --image-out, or NULL */
     size_t show;                 /* vertices and pixels listed */
     int verdict;                 /* --verdict: end with a verdict paragraph */
+    pt_diff_outcome *out;        /* the findings as data (pt_diff_run), never NULL */
 } dopts;
 
 /* A growing string for paragraphs. */

@@ -138,6 +138,9 @@ int pt_diff_images(const dopts *o, const pt_ppm img[2])
             }
         }
     }
+    o->out->images = 1;
+    o->out->img_differ = ndiff;
+    o->out->img_total = (size_t)w * (size_t)h;
     if (ndiff > shown) printf("  ... and %zu more\n", ndiff - shown);
     printf("\n");
     if (ndiff)
