@@ -38,13 +38,13 @@ mkdir "$dir/sub"
 printf 'x\n' > "$dir/.hidden"
 cp "$dir/ann.jsonl" "$dir/=SUM(A1)\"q.jsonl"
 cp "$dir/ok.txt" "$dir/$(printf 'esc\033]0;pwned\007')x.txt"
-( cd "$dir" && ls -la --time-style=+%s . && find . -type f -exec cksum {} + ) > "$tmp/before"
+( cd "$dir" && ls -lA --time-style=+%s . && find . -type f -exec cksum {} + ) > "$tmp/before"
 
 timeout 60 "$exe" class $scene "$dir" --csv "$tmp/c.csv" --html "$tmp/c.html" >"$tmp/out" 2>"$tmp/err"
 rc=$?
 check "class-1.1 exit 0" test "$rc" = 0
 check "class-1.2 nothing on standard error" test ! -s "$tmp/err"
-( cd "$dir" && ls -la --time-style=+%s . && find . -type f -exec cksum {} + ) > "$tmp/after"
+( cd "$dir" && ls -lA --time-style=+%s . && find . -type f -exec cksum {} + ) > "$tmp/after"
 check "class-1.3 nothing in the folder written (a FIFO neither opened nor blocking)" \
     cmp "$tmp/before" "$tmp/after"
 
