@@ -525,12 +525,12 @@ static void sheet_error(const char *path, long line, long col, const char *why)
 static const char *grade79(quiz *q, const char *path, char *text, int *trouble)
 {
     static char note[200];
-    const char *lines[PT_Q79_MAX + 1];
+    const char *lines[PT_Q79_MAX + 1], *byq[PT_Q79_MAX];
     long at[PT_Q79_MAX + 1][2];
-    int i, n = 0, nq = pt_q79_count(q->z);
+    int i, n = 0, nq = q->last - q->first + 1;
     char *p = text, *why = NULL;
 
-    for (i = 0; i < nq; i++) q->result[i] = -1;
+    for (i = 0; i < pt_q79_count(q->z); i++) { q->result[i] = -1; byq[i] = NULL; }
     while (*p && n <= nq) {                 /* one more than asked: too many */
         char *e = strchr(p, '\n'), *tab = strchr(p, '\t');
         *e = '\0';
@@ -543,7 +543,8 @@ static const char *grade79(quiz *q, const char *path, char *text, int *trouble)
         size_t len = 0;
         len += (size_t)snprintf(note + len, sizeof note - len, "a sheet of renderer 4's quiz "
                                 "(model, camera, image, pixel, viewport, framebuffer, index); "
-                                "this scene's renderer asks");
+                                "this scene is the course's renderer %d, whose quiz asks",
+                                pt_q79_renderer(q->z));
         for (i = 0; i < nq && len < sizeof note; i++)
             len += (size_t)snprintf(note + len, sizeof note - len, "%s %s", i ? "," : "",
                                     pt_q79_name(q->z, i));
@@ -551,21 +552,22 @@ static const char *grade79(quiz *q, const char *path, char *text, int *trouble)
         *trouble = 1;
         return note;
     }
-    for (i = 0; i < n && i < nq; i++) {
-        int col;
+    for (i = 0; i < n && i < nq; i++) {     /* line i answers question first + i */
+        int col, k = q->first + i;
         const char *bad;
-        q->result[i] = pt_q79_grade(q->z, i, lines[i], q->result, lines, &col, &bad);
-        if (q->result[i] < 0) {
+        byq[k] = lines[i];
+        q->result[k] = pt_q79_grade(q->z, k, lines[i], q->result, byq, &col, &bad);
+        if (q->result[k] < 0) {
             char m[160];
-            snprintf(m, sizeof m, "%s (%s): %s", pt_q79_name(q->z, i), pt_q79_values(q->z, i), bad);
+            snprintf(m, sizeof m, "%s (%s): %s", pt_q79_name(q->z, k), pt_q79_values(q->z, k), bad);
             sheet_error(path, at[i][0], at[i][1] + col - 1, m);
             if (!why) {
                 snprintf(note, sizeof note, "line %ld: %s (%s): %s", at[i][0],
-                         pt_q79_name(q->z, i), pt_q79_values(q->z, i), bad);
+                         pt_q79_name(q->z, k), pt_q79_values(q->z, k), bad);
                 why = note;
             }
-            q->result[i] = 0;
-            lines[i] = NULL;                /* nothing follows from it */
+            q->result[k] = 0;
+            byq[k] = NULL;                  /* nothing follows from it */
             *trouble = 1;
         }
     }

@@ -579,3 +579,5 @@ int pt_q79_stage_name(const char *name)
     }
     return 0;
 }
+
+int pt_q79_renderer(const pt_q79 *z) { return z->s->renderer; }

@@ -43,6 +43,9 @@ int pt_q79_count(const pt_q79 *q);
 const char *pt_q79_name(const pt_q79 *q, int k);
 const char *pt_q79_values(const pt_q79 *q, int k);
 
+/* The scene's renderer: 7 or 9. */
+int pt_q79_renderer(const pt_q79 *q);
+
 /* Which primitive the questions follow, as a sentence, into b. */
 void pt_q79_describe(const pt_q79 *q, char *b, size_t n);
 
