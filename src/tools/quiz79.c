@@ -476,16 +476,16 @@ static int follows(const pt_q79 *z, int k, int form, const double *v, const int 
                    const char *const *lines)
 {
     const qa *a = &z->q[k];
-    int j = k - 1, pf, c;
+    int j = k - 1, pf, c, slip = 0;
     double pv[4];
     const char *why;
 
-    if (k == 0 || res[k - 1] == 1 || res[k - 1] < 0 || !lines) return 0;
+    if (k == 0 || !lines) return 0;
     if (a->kind == QK_VIEWPORT) {           /* the rounding of the sheet's pixel */
         pt_vec2 pp;
         pt_pix vp;
         qa b = *a;
-        if (z->q[j].kind != QK_PIXEL || !lines[j] ||
+        if (z->q[j].kind != QK_PIXEL || !lines[j] || res[j] == 1 || res[j] < 0 ||
             parse(QK_PIXEL, lines[j], &pf, pv, &c, &why) != 0 || pf != A_VAL) return 0;
         pp.x = pv[0];
         pp.y = pv[1];
@@ -496,16 +496,19 @@ static int follows(const pt_q79 *z, int k, int form, const double *v, const int 
         return same(&b, form, v);
     }
     if (!a->first || a->kind == QK_MODEL || a->kind == QK_COLOR) return 0;
-    for (;;) {                              /* the sheet's last point for V's end */
+    for (;;) {                              /* the sheet's last point for V's end
+                                            ** (a cut that does not happen passes it on) */
         pt_vec4 p;
         pt_rv_model m;
         qa out[PT_Q79_MAX];
         int n = 0, i, r = 0;
 
-        if (j < 0 || !lines[j] || parse(z->q[j].kind, lines[j], &pf, pv, &c, &why) != 0)
+        if (j < 0 || !lines[j] || res[j] < 0 || parse(z->q[j].kind, lines[j], &pf, pv, &c, &why) != 0)
             return 0;
+        slip |= res[j] != 1;
         if (pf == A_NONE && (z->q[j].kind == QK_NEAR || z->q[j].kind == QK_CLIP)) { j--; continue; }
-        if (pf != A_VAL || !answer_point(z->q[j].kind, pv, &p)) return 0;
+        if (pf != A_VAL || !slip || !answer_point(z->q[j].kind, pv, &p))
+            return 0;                       /* right answers: no slip to carry */
         if (copy_model(&m, &z->snap[a->step]) != 0) return 0;
         if (m.nv == 0) { pt_rv_model_free(&m); return 0; }
         if (z->q[j].kind == QK_CLIP) p.z = m.v[vend(z, &m)].z;

@@ -79,6 +79,10 @@ key "$tmp/pixel" $r9 --vertex 1
 check "quiz79-3.5 the viewport is the reference pixel stage's rounding of the pixel" \
     sh -c "\"$exe\" stages >/dev/null && test \"\$(sed -n 9p '$tmp/pixel')\" = \"\$(awk 'NR == 8 { x = int(\$1 + 0.5); y = int(\$2 + 0.5); print x - 1, 30 - y }' '$tmp/pixel')\""
 
+run quiz docs/exercises/11-asym.scene --vertex 1 --grade docs/exercises/11-sheets
+check "quiz79-3.6 a slip at camera, no near cut (none, right): the image follows past it" \
+    grep -qx "no-skew.txt,1,1,0,1,follows,,,,,4,9," "$tmp/out"
+
 # ---- a corner: two cuts, two questions; near clip: dropped; none
 key "$tmp/corner" $corner --vertex 2
 check "quiz79-4.1 a corner: clip at x=+1" grep -qx "x=+1 0.3333333333333333 1 1.2000000000000002" "$tmp/corner"
