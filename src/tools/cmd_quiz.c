@@ -735,6 +735,17 @@ static void stage_list(char *buf, size_t n, const pt_journey *j)
                                 pt_stage_infos[j->order[i]].name);
 }
 
+/* q to read its answers from standard input: asked again when unreadable
+** at a terminal or with --interactive (inter), silent but for the score with
+** --json, each answer echoed when the input is no terminal. */
+static void from_stdin(quiz *q, int inter, int json)
+{
+    q->in = stdin;
+    q->interactive = inter || isatty(STDIN_FILENO);
+    q->talk = !json;
+    q->echo = q->talk && !isatty(STDIN_FILENO);
+}
+
 /* The quiz of renderers 7 and 9 for vertex v of m (seed: the one it was
 ** picked with, or NULL), as pt_cmd_quiz() runs renderer 4's.  Returns the
 ** exit status. */
@@ -773,10 +784,7 @@ static int quiz79(const pt_scene *s, const pt_model *m, unsigned long long v,
         pt_q79_free(z);
         return rc;
     }
-    q.in = stdin;
-    q.interactive = inter || isatty(STDIN_FILENO);
-    q.talk = !json;
-    q.echo = q.talk && !isatty(STDIN_FILENO);
+    from_stdin(&q, inter, json);
     if (q.talk) {
         char cam[PT_CAMERA_TITLE];
         printf("pipetrace quiz: vertex %llu of model %s in %s (renderer %d)", v, m->name,
@@ -933,10 +941,7 @@ int pt_cmd_quiz(int argc, char **argv)
         pt_scene_free(&s);
         return rc;
     }
-    q.in = stdin;
-    q.interactive = inter || isatty(STDIN_FILENO);
-    q.talk = !json;
-    q.echo = q.talk && !isatty(STDIN_FILENO);
+    from_stdin(&q, inter, json);
     if (q.talk) {
         char t[PT_EXPLAINLEN], cam[PT_CAMERA_TITLE];
         int right, answered, of = q.last - q.first + 1;
