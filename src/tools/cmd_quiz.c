@@ -26,6 +26,10 @@
 ** wrong or unanswered, 2 trouble (bad input, an unreadable sheet, a write error).
 ** Without --vertex a used vertex is picked at random: --seed S makes the pick
 ** repeatable (xorshift64*, below); without it the seed is the time.
+** A scene of the course's renderer 7 or 9 has questions of its own
+** (tools/quiz79.h), asked by ask79() and graded by grade79() (a sheet's
+** unreadable line is a FILE:LINE:COL error there); the folder, the CSV
+** and the score are shared.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -59,6 +63,11 @@ static const char usage[] =
 "coordinates and the index must be exact; write 'none' for a value that does\n"
 "not exist.  Without --vertex a used vertex is picked at random (--seed S:\n"
 "repeatably).  SCENE defaults to the built-in scene.\n"
+"A scene of the course's renderer 7 or 9 asks for the vertex's end of its\n"
+"first segment: model, (world,) view, camera, nearclip (t x y z, none or\n"
+"dropped), image, clip (edge t x y: x=+1, x=-1, y=+1 or y=-1; a line a cut;\n"
+"none or dropped), pixel, viewport and color (the bytes the segment leaves\n"
+"there); an answer sheet's line it cannot read is a FILE:LINE:COL error.\n"
 "\n"
 "  --stage S        ask for stage S only (given the stage before it)\n"
 "  --json           print only the score, per stage, as one JSON line\n"

@@ -97,16 +97,18 @@ static void on_point(void *ud, double x, double y)
     k->have_pp = 1;
 }
 
-/* dst = a copy of src.  0 or -1 (out of memory). */
+/* dst = a copy of src.  0, or -1 when out of memory (dst then empty). */
 static int copy_model(pt_rv_model *dst, const pt_rv_model *src)
 {
     size_t k;
+    int bad = 0;
 
     memset(dst, 0, sizeof *dst);
-    for (k = 0; k < src->nv; k++) if (pt_rv_add_vertex(dst, src->v[k]) != 0) return -1;
-    for (k = 0; k < src->nc; k++) if (pt_rv_add_color(dst, src->c[k]) != 0) return -1;
-    for (k = 0; k < src->np; k++) if (pt_rv_add_prim(dst, &src->p[k]) != 0) return -1;
-    return 0;
+    for (k = 0; k < src->nv && !bad; k++) bad = pt_rv_add_vertex(dst, src->v[k]) != 0;
+    for (k = 0; k < src->nc && !bad; k++) bad = pt_rv_add_color(dst, src->c[k]) != 0;
+    for (k = 0; k < src->np && !bad; k++) bad = pt_rv_add_prim(dst, &src->p[k]) != 0;
+    if (bad) pt_rv_model_free(dst);
+    return bad ? -1 : 0;
 }
 
 /* The vertex standing for V's end in m. */

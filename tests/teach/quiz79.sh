@@ -141,4 +141,12 @@ check "quiz79-7.2 a hidden model: said, exit 2" test "$rc" = 2 -a -n "$(grep 'is
 feed '\n' quiz $near --seed 5
 check "quiz79-7.3 --seed picks a vertex of renderer 7" grep -q "(picked with --seed 5)" "$tmp/out"
 
+feed 'banana\n1.5 1.8 0\n' quiz $corner --vertex 2 --interactive
+check "quiz79-7.4 --interactive: an unreadable answer is asked again, with its column" \
+    grep -q "(not read: column 1: not a number; write x_m y_m z_m," "$tmp/out"
+check "quiz79-7.5 ... and costs nothing" grep -qx "score: 1/1 (input ended after 1 of 10 stages)" "$tmp/out"
+feed '1.5 1.8 0\n1 1 1 1\n' quiz $corner --vertex 2
+check "quiz79-7.6 from a file: an unreadable answer is wrong for its stage, with its column" \
+    grep -qx "  wrong: column 7: more values than the stage has" "$tmp/out"
+
 report
