@@ -9,7 +9,8 @@
 ** kept model and running the same stages again.  No formula is computed
 ** here: the numbers are the stages' (and the pixel-to-viewport rounding is
 ** the reference pixel stage's, ptref_pixel2viewport, the same rounding the
-** rasterizer does to a segment's ends; tests/teach/quiz79.sh ties the two).
+** rasterizer does to a segment's ends: tests/teach/quiz79.sh checks the
+** two give the same pixel).
 */
 #include <math.h>
 #include <stdlib.h>
