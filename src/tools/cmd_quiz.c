@@ -401,6 +401,8 @@ static int by_name(const void *a, const void *b)
 /* A sheet as text: its bytes checked and cleaned, an answer a line.  A
 ** byte-order mark, CR before LF, blank lines and comments ('#' to the end of
 ** the line) are dropped, as a teacher reading the sheet would skip them.
+** numbered: each line kept starts with where it was in the sheet, "LINE
+** COL\t" (its first character's), for errors that name the place.
 ** Returns NULL, or why the sheet cannot be read as text. */
 static const char *clean_sheet(const char *t, size_t n, pt_sbuf *out, int numbered)
 {
@@ -434,7 +436,7 @@ static const char *clean_sheet(const char *t, size_t n, pt_sbuf *out, int number
 }
 
 /* Read the answer sheet at path (a folder entry; a link is followed) into
-** *text, cleaned.  Returns NULL, or why it cannot be graded ("" for an entry
+** *text, cleaned (numbered: as clean_sheet() says).  Returns NULL, or why it cannot be graded ("" for an entry
 ** that is not a sheet at all: a folder). */
 static const char *read_sheet(const char *path, pt_sbuf *text, int numbered)
 {
