@@ -227,6 +227,25 @@ static int do_step(const run *r, step st, cpos *c)
 
 /* ===== the drivers ===== */
 
+/* r ready for s's steps into fb, told to ls. */
+static void start(run *r, const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
+{
+    memset(r, 0, sizeof *r);
+    r->s = s;
+    r->ls = ls;
+    r->fb = fb;
+    pt_course_camera(s, &r->cam);
+    r->par.w = s->vp_w;
+    r->par.h = s->vp_h;
+    r->par.x_ul = s->vp_x;
+    r->par.y_ul = s->vp_y;
+    r->par.W = fb->w;
+    r->par.H = fb->h;
+    memcpy(r->par.bg, s->vp_background, 3);
+    r->par.antialias = s->antialias;
+    r->par.gamma = s->gamma;
+}
+
 /* Pipeline.render: each position through every step. */
 static int pipeline1(const run *r, cpos *c, size_t nc, const step *sts, size_t nst)
 {
@@ -282,20 +301,7 @@ int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
     const step *sts;
     int rc;
 
-    memset(&r, 0, sizeof r);
-    r.s = s;
-    r.ls = ls;
-    r.fb = fb;
-    pt_course_camera(s, &r.cam);
-    r.par.w = s->vp_w;
-    r.par.h = s->vp_h;
-    r.par.x_ul = s->vp_x;
-    r.par.y_ul = s->vp_y;
-    r.par.W = fb->w;
-    r.par.H = fb->h;
-    memcpy(r.par.bg, s->vp_background, 3);
-    r.par.antialias = s->antialias;
-    r.par.gamma = s->gamma;
+    start(&r, s, fb, ls);
     clear_fb(s, fb, &r.par, ls);
 
     c = calloc(s->nmodels ? s->nmodels : 1, sizeof *c);
@@ -316,5 +322,29 @@ int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
     if (rc == 0) mark(&r, PT_CMK_END, NULL);
     for (k = 0; k < s->nmodels; k++) pt_rv_model_free(&c[k].m);
     free(c);
+    return rc;
+}
+
+/* ===== one step on a model of one's own ===== */
+
+int pt_course_step(const pt_scene *s, const pt_course_pos *pos, int st, pt_rv_model *m,
+                   pt_fb *fb, const pt_course_ls *ls)
+{
+    static const step by_stage[PT_NCST + 1] = {
+        [PT_CST_MODEL] = ST_RASTER, [PT_CST_WORLD] = ST_WORLD, [PT_CST_VIEW] = ST_VIEW,
+        [PT_CST_CAMERA] = ST_CAMERA, [PT_CST_NEARCLIP] = ST_NEARCLIP,
+        [PT_CST_IMAGE] = ST_IMAGE, [PT_CST_CLIP] = ST_CLIP, [PT_CST_RASTER] = ST_RASTER};
+    run r;
+    cpos c;
+    int rc;
+
+    if (st <= PT_CST_MODEL || st > PT_CST_RASTER) return -1;
+    start(&r, s, fb, ls);
+    memset(&c, 0, sizeof c);
+    c.pos = *pos;
+    c.m = *m;
+    c.live = 1;
+    rc = do_step(&r, by_stage[st], &c);
+    *m = c.m;
     return rc;
 }

@@ -115,4 +115,14 @@ void pt_course_camera(const pt_scene *s, pt_course_cam *out);
 ** Returns 0, or -1 when out of memory (fb then holds part of the image). */
 int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls);
 
+/* Run one stage st (PT_CST_WORLD .. PT_CST_CLIP, or PT_CST_RASTER: the
+** rasterizer, every primitive of m into fb) on m as s's render runs it for
+** position pos, telling ls (NULL: nobody).  For a tool that follows a few
+** vertices of its own through the stages (the quiz): m may hold any
+** vertices, colours and primitives.  0; -1 when st is no stage or out of
+** memory (then m holds what the stage kept so far). */
+#define PT_CST_RASTER PT_NCST
+int pt_course_step(const pt_scene *s, const pt_course_pos *pos, int st, pt_rv_model *m,
+                   pt_fb *fb, const pt_course_ls *ls);
+
 #endif

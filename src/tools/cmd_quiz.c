@@ -26,6 +26,10 @@
 ** wrong or unanswered, 2 trouble (bad input, an unreadable sheet, a write error).
 ** Without --vertex a used vertex is picked at random: --seed S makes the pick
 ** repeatable (xorshift64*, below); without it the seed is the time.
+** A scene of the course's renderer 7 or 9 has questions of its own
+** (tools/quiz79.h), asked by ask79() and graded by grade79() (a sheet's
+** unreadable line is a FILE:LINE:COL error there); the folder, the CSV
+** and the score are shared.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -40,6 +44,7 @@
 #include <unistd.h>
 #include "tools/commands.h"
 #include "tools/cli.h"
+#include "tools/quiz79.h"
 #include "io/explain.h"
 #include "io/outfile.h"
 #include "io/sbuf.h"
@@ -58,6 +63,11 @@ static const char usage[] =
 "coordinates and the index must be exact; write 'none' for a value that does\n"
 "not exist.  Without --vertex a used vertex is picked at random (--seed S:\n"
 "repeatably).  SCENE defaults to the built-in scene.\n"
+"A scene of the course's renderer 7 or 9 asks for the vertex's end of its\n"
+"first segment: model, (world,) view, camera, nearclip (t x y z, none or\n"
+"dropped), image, clip (edge t x y: x=+1, x=-1, y=+1 or y=-1; a line a cut;\n"
+"none or dropped), pixel, viewport and color (the bytes the segment leaves\n"
+"there); an answer sheet's line it cannot read is a FILE:LINE:COL error.\n"
 "\n"
 "  --stage S        ask for stage S only (given the stage before it)\n"
 "  --json           print only the score, per stage, as one JSON line\n"
@@ -221,7 +231,8 @@ typedef struct quiz {
                                  ** the sheet's own answer before it counts */
     int talk;                    /* print questions and verdicts (else silent) */
     int echo;                    /* print each answer read (input not a terminal) */
-    int result[PT_NSTAGES_ALL];  /* by order index: 1 right, 0 wrong, -1
+    const pt_q79 *z;             /* renderers 7 and 9: their questions (else NULL) */
+    int result[PT_NSTAGES_ALL + PT_Q79_MAX];  /* by order index: 1 right, 0 wrong, -1
                                  ** unanswered, FOLLOWS: wrong, but what the
                                  ** stage gives from the sheet's own answer
                                  ** before it (one slip costs one stage) */
@@ -311,6 +322,47 @@ static void ask(quiz *q)
     }
 }
 
+/* Ask q's questions of renderers 7 and 9 in turn, filling q->result: as
+** ask() does, the right answer given after a wrong one. */
+static void ask79(quiz *q)
+{
+    char line[1024], b[512];
+    int i;
+
+    for (i = 0; i < pt_q79_count(q->z); i++) q->result[i] = -1;
+    for (i = q->first; i <= q->last; i++) {
+        int r, col = 0;
+        const char *why = NULL;
+
+        if (q->talk) printf("\n%s: %s = ? ", pt_q79_name(q->z, i), pt_q79_values(q->z, i));
+        fflush(stdout);
+        for (;;) {
+            if (pt_cli_read_line_from(q->in, line, sizeof line, q->echo) != 0) {
+                if (q->talk) printf("\n(end of input)\n");
+                return;
+            }
+            if (!q->interactive && line[0] == '#') continue;    /* a note on a sheet */
+            r = pt_q79_grade(q->z, i, line, q->result, NULL, &col, &why);
+            if (r >= 0 || !q->interactive) break;
+            if (q->talk) {                  /* not counted */
+                printf("  (not read: column %d: %s; write %s, separated by spaces or "
+                       "commas; try again)\n", col, why, pt_q79_values(q->z, i));
+                printf("\n%s: %s = ? ", pt_q79_name(q->z, i), pt_q79_values(q->z, i));
+                fflush(stdout);
+            }
+        }
+        q->result[i] = r > 0;
+        if (!q->talk) continue;
+        pt_q79_answer(q->z, i, b, sizeof b);
+        if (r > 0) printf("  correct: %s\n", b);
+        else {
+            if (r < 0) printf("  wrong: column %d: %s\n", col, why);
+            else printf("  wrong\n");
+            printf("  go on with %s = %s\n", pt_q79_values(q->z, i), b);
+        }
+    }
+}
+
 /* How many of q's stages were answered, and how many right. */
 static int score(const quiz *q, int *answered)
 {
@@ -349,10 +401,12 @@ static int by_name(const void *a, const void *b)
 /* A sheet as text: its bytes checked and cleaned, an answer a line.  A
 ** byte-order mark, CR before LF, blank lines and comments ('#' to the end of
 ** the line) are dropped, as a teacher reading the sheet would skip them.
+** numbered: each line kept starts with where it was in the sheet, "LINE
+** COL\t" (its first character's), for errors that name the place.
 ** Returns NULL, or why the sheet cannot be read as text. */
-static const char *clean_sheet(const char *t, size_t n, pt_sbuf *out)
+static const char *clean_sheet(const char *t, size_t n, pt_sbuf *out, int numbered)
 {
-    size_t i = 0, k;
+    size_t i = 0, k, line = 1;
 
     for (k = 0; k < n; k++)
         if (t[k] == '\0') return "not a text file (a word processor's? save it as plain text)";
@@ -363,25 +417,28 @@ static const char *clean_sheet(const char *t, size_t n, pt_sbuf *out)
     }
     if (n >= 3 && !memcmp(t, "\xEF\xBB\xBF", 3)) i = 3;
     while (i < n) {
-        size_t e = i, end;
+        size_t e = i, end, start = i;
         while (e < n && t[e] != '\n') e++;
         end = e;
         for (k = i; k < end; k++) if (t[k] == '#') { end = k; break; }
         while (end > i && (t[end - 1] == '\r' || t[end - 1] == ' ' || t[end - 1] == '\t')) end--;
         while (i < end && (t[i] == ' ' || t[i] == '\t')) i++;
         if (end > i) {
+            if (numbered)               /* where it was: "LINE COL\t" */
+                pt_sbuf_addf(out, "%zu %zu\t", line, i - start + 1);
             pt_sbuf_addn(out, t + i, end - i);
             pt_sbuf_add(out, "\n");
         }
         i = e + 1;
+        line++;
     }
     return NULL;
 }
 
 /* Read the answer sheet at path (a folder entry; a link is followed) into
-** *text, cleaned.  Returns NULL, or why it cannot be graded ("" for an entry
+** *text, cleaned (numbered: as clean_sheet() says).  Returns NULL, or why it cannot be graded ("" for an entry
 ** that is not a sheet at all: a folder). */
-static const char *read_sheet(const char *path, pt_sbuf *text)
+static const char *read_sheet(const char *path, pt_sbuf *text, int numbered)
 {
     static char why[160];
     struct stat st;
@@ -422,7 +479,7 @@ static const char *read_sheet(const char *path, pt_sbuf *text)
         snprintf(why, sizeof why, "larger than %ld bytes: not an answer sheet", SHEET_MAX);
         return why;
     }
-    bad = clean_sheet(buf, len, text);
+    bad = clean_sheet(buf, len, text, numbered);
     free(buf);
     return bad ? bad : text->failed ? "out of memory" : NULL;
 }
@@ -451,6 +508,91 @@ static void sheet_message(const char *name, const char *why)
     pt_sbuf_addf(&m, ": %s\n", why);
     if (!m.failed) fputs(m.s, stderr);
     pt_sbuf_free(&m);
+}
+
+/* The name of q's question i. */
+static const char *stage_name(const quiz *q, int i)
+{
+    return q->z ? pt_q79_name(q->z, i) : pt_stage_infos[q->j->order[i]].name;
+}
+
+/* "PATH:LINE:COL: error: WHY" on standard error, the path safe for a terminal. */
+static void sheet_error(const char *path, long line, long col, const char *why)
+{
+    pt_sbuf m;
+
+    pt_sbuf_init(&m);
+    pt_sbuf_add_term(&m, path, strlen(path));
+    if (line > 0) pt_sbuf_addf(&m, ":%ld:%ld", line, col);
+    pt_sbuf_addf(&m, ": error: %s\n", why);
+    if (!m.failed) fputs(m.s, stderr);
+    pt_sbuf_free(&m);
+}
+
+/* Grade the sheet at path of renderers 7 and 9, its text cleaned with
+** numbered lines ("LINE COL\tanswer"), into q->result.  Returns NULL, or
+** the note for its row; *trouble is 1 when an answer could not be read (an
+** error on standard error for each, FILE:LINE:COL). */
+static const char *grade79(quiz *q, const char *path, char *text, int *trouble)
+{
+    static char note[200];
+    const char *lines[PT_Q79_MAX + 1], *byq[PT_Q79_MAX];
+    long at[PT_Q79_MAX + 1][2];
+    int i, n = 0, nq = q->last - q->first + 1;
+    char *p = text, *why = NULL;
+
+    for (i = 0; i < pt_q79_count(q->z); i++) { q->result[i] = -1; byq[i] = NULL; }
+    while (*p && n <= nq) {                 /* one more than asked: too many */
+        char *e = strchr(p, '\n'), *tab = strchr(p, '\t');
+        *e = '\0';
+        at[n][0] = strtol(p, NULL, 10);
+        at[n][1] = strtol(strchr(p, ' ') + 1, NULL, 10);
+        lines[n++] = tab + 1;
+        p = e + 1;
+    }
+    if (pt_q79_r4_sheet(q->z, lines, n)) {
+        size_t len = 0;
+        len += (size_t)snprintf(note + len, sizeof note - len, "a sheet of renderer 4's quiz "
+                                "(model, camera, image, pixel, viewport, framebuffer, index); "
+                                "this scene is the course's renderer %d, whose quiz asks",
+                                pt_q79_renderer(q->z));
+        for (i = 0; i < nq && len < sizeof note; i++)
+            len += (size_t)snprintf(note + len, sizeof note - len, "%s %s", i ? "," : "",
+                                    pt_q79_name(q->z, i));
+        sheet_error(path, 0, 0, note);
+        *trouble = 1;
+        return note;
+    }
+    for (i = 0; i < n && i < nq; i++) {     /* line i answers question first + i */
+        int col, k = q->first + i;
+        const char *bad;
+        byq[k] = lines[i];
+        q->result[k] = pt_q79_grade(q->z, k, lines[i], q->result, byq, &col, &bad);
+        if (q->result[k] < 0) {
+            char m[160];
+            snprintf(m, sizeof m, "%s (%s): %s", pt_q79_name(q->z, k), pt_q79_values(q->z, k), bad);
+            sheet_error(path, at[i][0], at[i][1] + col - 1, m);
+            if (!why) {
+                snprintf(note, sizeof note, "line %ld: %s (%s): %s", at[i][0],
+                         pt_q79_name(q->z, k), pt_q79_values(q->z, k), bad);
+                why = note;
+            }
+            q->result[k] = 0;
+            byq[k] = NULL;                  /* nothing follows from it */
+            *trouble = 1;
+        }
+    }
+    if (n > nq) {
+        char m[120];
+        snprintf(m, sizeof m, "more answers than the quiz's %d questions", nq);
+        sheet_error(path, at[nq][0], at[nq][1], m);
+        if (!why) {
+            snprintf(note, sizeof note, "line %ld: %s", at[nq][0], m);
+            why = note;
+        }
+        *trouble = 1;
+    }
+    return why;
 }
 
 /* Grade every entry of dir (not those starting with '.'), in name order, as
@@ -500,24 +642,36 @@ static int grade(quiz *q, const char *dir, const char *out)
     pt_sbuf_add(&sb, "sheet");
     for (i = q->first; i <= q->last; i++) {
         pt_sbuf_add(&sb, ",");
-        pt_sbuf_add(&sb, pt_stage_infos[q->j->order[i]].name);
+        pt_sbuf_add(&sb, stage_name(q, i));
     }
     pt_sbuf_add(&sb, ",right,of,note\n");
     q->grading = 1;
     for (k = 0; k < n && !bad; k++) {
         const char *why;
-        int right, answered;
+        int right, answered, trouble = 0;
 
         if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, names[k]) >= sizeof path)
             why = "its path is too long";
         else {
             pt_sbuf_init(&text);
-            why = read_sheet(path, &text);
-            if (!why) grade_text(q, text.s ? text.s : "", text.len);
+            why = read_sheet(path, &text, q->z != NULL);
+            if (!why && q->z) why = grade79(q, path, text.s ? text.s : "", &trouble);
+            else if (!why) grade_text(q, text.s ? text.s : "", text.len);
             pt_sbuf_free(&text);
         }
         if (why && !*why) continue;     /* a folder: not a sheet */
         pt_sbuf_add_csv(&sb, names[k]);
+        if (trouble) rc = PT_EXIT_INPUT;
+        if (why && trouble) {           /* graded, with answers it could not read */
+            for (i = q->first; i <= q->last; i++)
+                pt_sbuf_add(&sb, q->result[i] < 0 ? "," : q->result[i] == FOLLOWS ? ",follows"
+                                 : q->result[i] ? ",1" : ",0");
+            right = score(q, &answered);
+            pt_sbuf_addf(&sb, ",%d,%d,", right, of);
+            pt_sbuf_add_csv(&sb, why);
+            pt_sbuf_add(&sb, "\n");
+            continue;
+        }
         if (why) {
             for (i = q->first; i <= q->last; i++) pt_sbuf_add(&sb, ",");
             pt_sbuf_addf(&sb, ",0,%d,", of);
@@ -570,7 +724,7 @@ static void print_json(const quiz *q, const pt_scene *s, const pt_model *m,
     pt_sbuf_addf(&sb, ",\"vertex\":%llu,\"stages\":[", v);
     for (i = q->first; i <= q->last; i++)
         pt_sbuf_addf(&sb, "%s{\"stage\":\"%s\",\"score\":%s}", i > q->first ? "," : "",
-                     pt_stage_infos[q->j->order[i]].name,
+                     stage_name(q, i),
                      q->result[i] < 0 ? "null" : q->result[i] ? "1" : "0");
     right = score(q, &answered);
     pt_sbuf_addf(&sb, "],\"right\":%d,\"answered\":%d,\"of\":%d}\n", right, answered,
@@ -590,6 +744,95 @@ static void stage_list(char *buf, size_t n, const pt_journey *j)
     for (i = 0; i < j->norder && len < n; i++)
         len += (size_t)snprintf(buf + len, n - len, "%s%s", i ? ", " : "",
                                 pt_stage_infos[j->order[i]].name);
+}
+
+/* q to read its answers from standard input: asked again when unreadable
+** at a terminal or with --interactive (inter), silent but for the score with
+** --json, each answer echoed when the input is no terminal. */
+static void from_stdin(quiz *q, int inter, int json)
+{
+    q->in = stdin;
+    q->interactive = inter || isatty(STDIN_FILENO);
+    q->talk = !json;
+    q->echo = q->talk && !isatty(STDIN_FILENO);
+}
+
+/* The quiz of renderers 7 and 9 for vertex v of m (seed: the one it was
+** picked with, or NULL), as pt_cmd_quiz() runs renderer 4's.  Returns the
+** exit status. */
+static int quiz79(const pt_scene *s, const pt_model *m, unsigned long long v,
+                  const unsigned long long *seed, const char *stage, const char *dir,
+                  const char *out, int json, int inter)
+{
+    pt_q79 *z = pt_q79_make(s, m, v);
+    char b[512];
+    quiz q;
+    int k, n, rc = PT_EXIT_OK, right, answered, of;
+
+    if (!z) return PT_EXIT_INPUT;
+    n = pt_q79_count(z);
+    memset(&q, 0, sizeof q);
+    q.z = z;
+    q.first = 0;
+    q.last = n - 1;
+    if (stage) {
+        size_t len = 0;
+        for (k = 0; k < n && strcmp(pt_q79_name(z, k), stage); k++) ;
+        if (k == n || k == 0) {
+            for (k = 0; k < n && len < sizeof b; k++)
+                len += (size_t)snprintf(b + len, sizeof b - len, "%s%s", k ? ", " : "",
+                                        pt_q79_name(z, k));
+            fprintf(stderr, "pipetrace quiz: --stage %s: vertex %llu of model %s has no such "
+                    "question after the first (its questions: %s)\n", stage, v, m->name, b);
+            pt_q79_free(z);
+            return PT_EXIT_INPUT;
+        }
+        q.first = q.last = k;
+    }
+    of = q.last - q.first + 1;
+    if (dir) {
+        rc = grade(&q, dir, out ? out : "-");
+        pt_q79_free(z);
+        return rc;
+    }
+    from_stdin(&q, inter, json);
+    if (q.talk) {
+        char cam[PT_CAMERA_TITLE];
+        printf("pipetrace quiz: vertex %llu of model %s in %s (renderer %d)", v, m->name,
+               s->path, s->renderer);
+        if (seed) printf(" (picked with --seed %llu)", *seed);
+        putchar('\n');
+        printf("camera %s; nearclip %s, antialias %s, gamma %s\n",
+               pt_scene_camera_title(s, cam, sizeof cam), s->nearclip ? "on" : "off",
+               s->antialias ? "on" : "off", s->gamma ? "on" : "off");
+        printf("viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d\n",
+               s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h);
+        pt_q79_describe(z, b, sizeof b);
+        printf("%s\n", b);
+        if (q.first > 0) {
+            pt_q79_answer(z, q.first - 1, b, sizeof b);
+            printf("given: %s: %s = %s\n", pt_q79_name(z, q.first - 1),
+                   pt_q79_values(z, q.first - 1), b);
+        }
+        printf("Answer each stage with its values on one line, separated by spaces or commas.\n"
+               "Real numbers are right within 1e-6 absolute or 1e-6 relative; pixel\n"
+               "coordinates and colour bytes must be exact; a clip's edge is x=+1, x=-1,\n"
+               "y=+1 or y=-1; write none for a cut that does not happen, dropped for a\n"
+               "segment the stage deletes.\n");
+    }
+    ask79(&q);
+    right = score(&q, &answered);
+    if (!q.talk) print_json(&q, s, m, v);
+    else if (answered == of) printf("\nscore: %d/%d\n", right, of);
+    else printf("\nscore: %d/%d (input ended after %d of %d stages)\n", right, answered,
+                answered, of);
+    if (right < of) rc = PT_EXIT_DIFFER;
+    pt_q79_free(z);
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fputs("pipetrace quiz: cannot write to standard output\n", stderr);
+        return PT_EXIT_INPUT;
+    }
+    return rc;
 }
 
 int pt_cmd_quiz(int argc, char **argv)
@@ -635,7 +878,7 @@ int pt_cmd_quiz(int argc, char **argv)
         return pt_cli_usage("quiz", "--grade needs --vertex N or --seed S: every sheet answers the same vertex");
     if (dir && (json || inter)) return pt_cli_usage("quiz", "--grade writes a CSV: no --json, no --interactive");
     if (out && !dir) return pt_cli_usage("quiz", "--out is where --grade writes its CSV: give --grade DIR");
-    if (stage && pt_stage_by_name(stage) < 0) {
+    if (stage && pt_stage_by_name(stage) < 0 && !pt_q79_stage_name(stage)) {
         int i;
         size_t len = 0;
         for (i = 0; i < PT_NSTAGES_ALL && len < sizeof list; i++)
@@ -645,7 +888,11 @@ int pt_cmd_quiz(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (pt_cli_course(&s, "quiz")) return PT_EXIT_INPUT;
+    if (stage && pt_stage_by_name(stage) < 0 && s.renderer != 7 && s.renderer != 9) {
+        pt_scene_free(&s);
+        return pt_cli_usage("quiz", "unknown stage '%s' (renderer 4's stages: model, camera, "
+                            "image, pixel, viewport, framebuffer, index)", stage);
+    }
     if (v) m = pt_cli_vertex_model(&s, "quiz", model, v);
     if ((v && !m) || (!v && model && !pt_cli_model(&s, "quiz", model))) {
         pt_scene_free(&s);
@@ -673,6 +920,11 @@ int pt_cmd_quiz(int argc, char **argv)
         picked = 1;
     }
 
+    if (s.renderer == 7 || s.renderer == 9) {
+        rc = quiz79(&s, m, v, picked ? &seed : NULL, stage, dir, out, json, inter);
+        pt_scene_free(&s);
+        return rc;
+    }
     if (pt_run_journey(&run, &s, m, v, 0) != 0) {
         fputs("pipetrace quiz: out of memory\n", stderr);
         pt_scene_free(&s);
@@ -700,10 +952,7 @@ int pt_cmd_quiz(int argc, char **argv)
         pt_scene_free(&s);
         return rc;
     }
-    q.in = stdin;
-    q.interactive = inter || isatty(STDIN_FILENO);
-    q.talk = !json;
-    q.echo = q.talk && !isatty(STDIN_FILENO);
+    from_stdin(&q, inter, json);
     if (q.talk) {
         char t[PT_EXPLAINLEN], cam[PT_CAMERA_TITLE];
         int right, answered, of = q.last - q.first + 1;

@@ -1,0 +1,150 @@
+#!/bin/sh
+# tests/teach/quiz79.sh -- pipetrace quiz on scenes of the course's renderers 7 and 9
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/teach/quiz79.sh PIPETRACE.  Run from the repository root.
+# The answer keys are the quiz's own "go on with" lines for a sheet of zeros;
+# each check then changes one answer, or moves a vertex in a copy of the scene
+# to make the answers a slip carries forward.
+exe=$1
+. tests/lib/testlib.sh
+near=tests/course79/r7-near-01.scene
+corner=docs/exercises/13-corner.scene
+r9=docs/exercises/16-r9-whole.scene
+
+key() {     # key FILE ARGS...: the right answers, one a line, into FILE
+    f=$1; shift
+    yes 0 | head -20 | "$exe" quiz "$@" 2>/dev/null | sed -n 's/^  go on with [^=]*= //p' > "$f"
+}
+
+# ---- a right sheet scores full, on standard input and graded
+key "$tmp/near7" $near --vertex 7
+check "quiz79-1.1 renderer 7, vertex 7: nine questions" test "$(wc -l < "$tmp/near7")" = 9
+feed "$(cat "$tmp/near7")\n" quiz $near --vertex 7
+check "quiz79-1.2 the key on standard input: exit 0" test "$rc" = 0
+check "quiz79-1.3 ... score 9/9" grep -qx "score: 9/9" "$tmp/out"
+check "quiz79-1.4 ... the near clip's t and point" grep -qx "  correct: 0.9259114139691406 0.057315176907822764 0.3276442556526084 -0.1" "$tmp/out"
+check "quiz79-1.5 ... the clip's edge" grep -qx "  correct: y=+1 0.6788668532392984 0.3014224170801599 1" "$tmp/out"
+check "quiz79-1.6 ... the colour is the trace's pixel there" \
+    sh -c "\"$exe\" $near | grep -q 'x_fb = 40  y_fb = 0  rgb = 182 145 213'"
+check "quiz79-1.7 ... and the quiz's" grep -qx "  correct: 182 145 213" "$tmp/out"
+mkdir "$tmp/g1"
+cp "$tmp/near7" "$tmp/g1/right.txt"
+run quiz $near --vertex 7 --grade "$tmp/g1"
+check "quiz79-1.8 graded: full score, exit 0" test "$rc" = 0
+check "quiz79-1.9 ... the row" grep -qx "right.txt,1,1,1,1,1,1,1,1,1,9,9," "$tmp/out"
+check "quiz79-1.10 ... the header names the stages" grep -qx "sheet,model,view,camera,nearclip,image,clip,pixel,viewport,color,right,of,note" "$tmp/out"
+
+# ---- each wrong answer costs its stage, and only it
+mkdir "$tmp/g2"
+i=1
+while [ $i -le 9 ]; do
+    awk -v k=$i 'NR == k { if ($1 ~ /^[xy]=/) $1 = ($1 == "x=+1" ? "x=-1" : "x=+1"); else $NF = $NF + 3 } { print }' "$tmp/near7" > "$tmp/g2/wrong$i.txt"
+    i=$((i + 1))
+done
+run quiz $near --vertex 7 --grade "$tmp/g2"
+check "quiz79-2.1 one wrong answer a sheet: exit 1" test "$rc" = 1
+i=1; ok=1
+while [ $i -le 9 ]; do
+    row=$(grep "^wrong$i.txt," "$tmp/out")
+    want=$(awk -v k=$i 'BEGIN { s = ""; for (j = 1; j <= 9; j++) s = s "," (j == k ? "0" : "1"); print s ",8,9," }')
+    [ "$row" = "wrong$i.txt$want" ] || { ok=0; echo "  $row"; }
+    i=$((i + 1))
+done
+check "quiz79-2.2 ... each costs its own stage: 8 of 9" test $ok = 1
+
+# ---- follows: a slip carried forward costs one stage
+sed 's/^v 0.01524416825611219 /v 0.02 /' $near > "$tmp/slip.scene"
+key "$tmp/slip" "$tmp/slip.scene" --vertex 7
+mkdir "$tmp/g3"
+{ sed -n 1,2p "$tmp/near7"; sed -n 3,9p "$tmp/slip"; } > "$tmp/g3/slip.txt"
+run quiz $near --vertex 7 --grade "$tmp/g3"
+check "quiz79-3.1 a slip at camera: nearclip, image, clip and pixel follow" \
+    grep -qx "slip.txt,1,1,0,follows,follows,follows,follows,1,1,8,9," "$tmp/out"
+key "$tmp/r9" $r9 --vertex 1
+check "quiz79-3.2 renderer 9: ten questions, world first" test "$(wc -l < "$tmp/r9")" = 10
+sed 's/^matrix translate 0 0.25 -3$/matrix translate 0 0.5 -3/' $r9 > "$tmp/slip9.scene"
+key "$tmp/slip9" "$tmp/slip9.scene" --vertex 1
+mkdir "$tmp/g4"
+{ sed -n 1p "$tmp/r9"; sed -n 2,5p "$tmp/slip9"; } > "$tmp/g4/world.txt"
+run quiz $r9 --vertex 1 --grade "$tmp/g4"
+check "quiz79-3.3 renderer 9: a slip at world, view and camera follow" \
+    grep -qx "world.txt,1,0,follows,follows,1,,,,,,4,10," "$tmp/out"
+mkdir "$tmp/g5"
+awk 'NR == 8 { $1 = $1 + 0.6 } NR == 9 { $1 = $1 + 1 } { print }' "$tmp/r9" > "$tmp/g5/pixel.txt"
+run quiz $r9 --vertex 1 --grade "$tmp/g5"
+check "quiz79-3.4 a slip at pixel: the viewport follows by Java's rounding" \
+    grep -qx "pixel.txt,1,1,1,1,1,1,1,0,follows,1,9,10," "$tmp/out"
+key "$tmp/end" $r9 --vertex 2
+"$exe" $r9 | grep ' pixel ' | tail -1 > "$tmp/last"
+check "quiz79-3.5 the viewport (the reference pixel stage's rounding) is the rasterizer's end pixel" \
+    test "$(sed -n 9p "$tmp/end")" = "39 27" -a -n "$(grep -F 'x_fb = 43  y_fb = 30  rgb = 144 144 128' "$tmp/last")"
+check "quiz79-3.6 ... with the raw colour the quiz gives" test "$(sed -n 10p "$tmp/end")" = "144 144 128"
+
+# ---- a corner: two cuts, two questions; near clip: dropped; none
+key "$tmp/corner" $corner --vertex 2
+check "quiz79-4.1 a corner: clip at x=+1" grep -qx "x=+1 0.3333333333333333 1 1.2000000000000002" "$tmp/corner"
+check "quiz79-4.2 ... then clip2 at y=+1" grep -q "^y=+1 0.16666666666666" "$tmp/corner"
+run quiz $corner --vertex 2 --grade "$tmp/g1"
+check "quiz79-4.3 ... its header has clip2" grep -q "^sheet,model,view,camera,nearclip,image,clip,clip2,pixel," "$tmp/out"
+key "$tmp/drop" $near --vertex 3
+check "quiz79-4.4 a segment behind the near plane: dropped, and no more questions" \
+    test "$(tail -1 "$tmp/drop")" = dropped -a "$(wc -l < "$tmp/drop")" = 4
+key "$tmp/none" $corner --vertex 1
+check "quiz79-4.5 an end the cuts leave: none" test "$(sed -n 4p "$tmp/none")" = none
+feed "$(cat "$tmp/corner")\n" quiz $corner --vertex 2 --json
+check "quiz79-4.6 --json" grep -q '"stage":"clip2","score":1}.*"right":10,"answered":10,"of":10}' "$tmp/out"
+feed "$(sed -n 6p "$tmp/corner")\n" quiz $corner --vertex 2 --stage clip2
+check "quiz79-4.7 --stage clip2, given clip" grep -q "^given: clip: edge t x y = x=+1 " "$tmp/out"
+check "quiz79-4.8 ... wrong answer: exit 1" test "$rc" = 1
+run quiz $corner --vertex 2 --stage index
+check "quiz79-4.9 --stage of renderer 4 on renderer 7: its questions listed" \
+    grep -q "no such question.*(its questions: model, view, camera, nearclip, image, clip, clip2, pixel, viewport, color)" "$tmp/err"
+run quiz docs/examples/triangle.scene --vertex 1 --stage nearclip
+check "quiz79-4.10 --stage nearclip on renderer 4: usage error" test "$rc" = 1
+
+# ---- bad sheets: FILE:LINE:COL
+mkdir "$tmp/g6"
+printf '# my answers\n\n%s\n  %s\n0 0 zero\n' "$(sed -n 1p "$tmp/near7")" "$(sed -n 2p "$tmp/near7")" > "$tmp/g6/bad.txt"
+run quiz $near --vertex 7 --grade "$tmp/g6"
+check "quiz79-5.1 an unreadable answer: exit 2" test "$rc" = 2
+check "quiz79-5.2 ... FILE:LINE:COL: error" grep -qx "$tmp/g6/bad.txt:5:5: error: camera (x_c y_c z_c): not a number" "$tmp/err"
+check "quiz79-5.3 ... the row, with the note" grep -qx "bad.txt,1,1,0,,,,,,,2,9,line 5: camera (x_c y_c z_c): not a number" "$tmp/out"
+rm "$tmp/g6/bad.txt"
+{ cat "$tmp/corner"; echo "1 2 3"; } > "$tmp/g6/long.txt"
+printf 'x=+1 1 2\n' > "$tmp/g6/short.txt"
+run quiz $corner --vertex 2 --grade "$tmp/g6"
+check "quiz79-5.4 too many answers: said at the extra line" grep -q "long.txt:11:1: error: more answers than the quiz's 10 questions" "$tmp/err"
+check "quiz79-5.5 an edge where a number goes" grep -q "short.txt:1:1: error: model (x_m y_m z_m): not a number" "$tmp/err"
+mkdir "$tmp/g7"
+printf '%s\n' "$(sed -n 6p "$tmp/corner" | cut -d' ' -f1-3)" > "$tmp/g7/few.txt"
+run quiz $corner --vertex 2 --stage clip --grade "$tmp/g7"
+check "quiz79-5.6 too few values: the column after the last" grep -q "few.txt:1:.*: error: clip (edge t x y): fewer values than the stage has" "$tmp/err"
+
+# ---- a sheet of renderer 4's quiz on a renderer 9 scene
+mkdir "$tmp/g8"
+printf -- '-1 -1 0\n-1 -1 -2\n-0.5 -0.5 -1\n5.4975 2.9988\n4 7\n4 7\n144\n' > "$tmp/g8/r4.txt"
+run quiz $r9 --vertex 1 --grade "$tmp/g8"
+check "quiz79-6.1 a renderer 4 sheet on a renderer 9 scene: exit 2" test "$rc" = 2
+check "quiz79-6.2 ... told clearly" grep -q "r4.txt: error: a sheet of renderer 4's quiz (model, camera, image, pixel, viewport, framebuffer, index); this scene is the course's renderer 9, whose quiz asks model, world, view," "$tmp/err"
+check "quiz79-6.3 ... its row scores nothing" grep -q "^r4.txt,,,,,,,,,,,0,10," "$tmp/out"
+
+# ---- what stays: renderer 4's quiz, an unused vertex, a hidden model
+printf 'renderer 7\nframebuffer 10 10\nmodel m\nv 0 0 -1\nv 1 0 -1\nv 0 1 -1\nsegment 1 2\n' > "$tmp/u.scene"
+key "$tmp/u" "$tmp/u.scene" --vertex 3
+check "quiz79-7.1 a vertex no segment uses: model to image, four questions" test "$(wc -l < "$tmp/u")" = 4
+printf 'renderer 7\nframebuffer 10 10\nmodel m\nhidden-model\nv 0 0 -1\nv 1 0 -1\nsegment 1 2\n' > "$tmp/h.scene"
+run quiz "$tmp/h.scene" --vertex 1
+check "quiz79-7.2 a hidden model: said, exit 2" test "$rc" = 2 -a -n "$(grep 'is hidden' "$tmp/err")"
+feed '\n' quiz $near --seed 5
+check "quiz79-7.3 --seed picks a vertex of renderer 7" grep -q "(picked with --seed 5)" "$tmp/out"
+
+feed 'banana\n1.5 1.8 0\n' quiz $corner --vertex 2 --interactive
+check "quiz79-7.4 --interactive: an unreadable answer is asked again, with its column" \
+    grep -q "(not read: column 1: not a number; write x_m y_m z_m," "$tmp/out"
+check "quiz79-7.5 ... and costs nothing" grep -qx "score: 1/1 (input ended after 1 of 10 stages)" "$tmp/out"
+feed '1.5 1.8 0\n1 1 1 1\n' quiz $corner --vertex 2
+check "quiz79-7.6 from a file: an unreadable answer is wrong for its stage, with its column" \
+    grep -qx "  wrong: column 7: more values than the stage has" "$tmp/out"
+
+report
