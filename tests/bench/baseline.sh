@@ -1,10 +1,11 @@
 #!/bin/sh
-# tests/bench/baseline.sh -- the benchmark's plain-C baseline draws what pipetrace draws
+# tests/bench/baseline.sh -- the benchmark's plain-C baselines draw what pipetrace draws
 # See LICENSE for copyright and license.
 #
 # Usage: sh tests/bench/baseline.sh BUILD_DIR.  `make bench` compares pipetrace's
 # speed with tests/bench/baseline.c, a second copy of the classic formulas and the
-# DDA; this ties the copy to the original: on scenes of tests/bench/benchgen.c both
+# DDA, and with tests/bench/baseline79.c, one of the course's renderers 7 and 9;
+# this ties the copies to the originals: on scenes of tests/bench/benchgen.c both
 # must write the same image, byte for byte (floor(x + 0.5) and Java's round
 # differ only on inputs these scenes do not have).
 B=${1:-build}
@@ -23,4 +24,29 @@ for s in a b; do
         cmp -s "$tmp/$s.ppm" "$tmp/$s-base.ppm"
 done
 check "baseline-1.4 it counts pixels" grep -q "pixels [1-9]" "$tmp/a-base.out"
+
+# renderers 7 and 9 (anti-aliasing off and on); "near": renderer 9's octagons
+# turned 80 degrees about x and moved to z = -0.3, where some cross the near
+# plane and many leave the view rectangle
+"$B/benchgen" 2000 300 7 > "$tmp/r7.scene"
+"$B/benchgen" 2000 300 7 aa > "$tmp/r7aa.scene"
+"$B/benchgen" 2000 300 9 > "$tmp/r9.scene"
+"$B/benchgen" 2000 300 9 aa > "$tmp/r9aa.scene"
+sed 's/^matrix translate 0 0 -4$/matrix translate 0 0 -0.3\nmatrix rotate x 80/' "$tmp/r9aa.scene" > "$tmp/r9near.scene"
+check "baseline-2.1 the renderer 9 scene says so, with anti-aliasing" \
+    grep -q "^antialias on" "$tmp/r9aa.scene"
+check "baseline-2.2 the near scenes differ from theirs" \
+    sh -c "! cmp -s '$tmp/r9aa.scene' '$tmp/r9near.scene'"
+for s in r7 r7aa r9 r9aa r9near; do
+    "$B/baseline79" "$tmp/$s.scene" "$tmp/$s-base.ppm" > "$tmp/$s-base.out"
+    run "$tmp/$s.scene" --image "$tmp/$s.ppm"
+    check "baseline-2.3 $s.scene: pipetrace draws it" test "$rc" = 0
+    check "baseline-2.4 $s.scene: baseline79 draws the same image" \
+        cmp -s "$tmp/$s.ppm" "$tmp/$s-base.ppm"
+    check "baseline-2.5 $s.scene: baseline79 counts pixels" grep -q "pixels [1-9]" "$tmp/$s-base.out"
+done
+check "baseline-2.6 anti-aliasing changes the image" \
+    sh -c "! cmp -s '$tmp/r9.ppm' '$tmp/r9aa.ppm'"
+check "baseline-2.7 renderer 4's baseline does not draw renderer 9's image" \
+    sh -c "'$B/baseline' '$tmp/r9aa.scene' '$tmp/r9aa-4.ppm' >/dev/null && ! cmp -s '$tmp/r9aa.ppm' '$tmp/r9aa-4.ppm'"
 report
