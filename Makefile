@@ -247,8 +247,6 @@ $B/benchgen: tests/bench/benchgen.c | $B
 	$(CC) $(ALLCFLAGS) -o $@ $<
 $B/baseline: tests/bench/baseline.c | $B
 	$(CC) $(ALLCFLAGS) -o $@ $< $(LDLIBS)
-$B/baseline79: tests/bench/baseline79.c | $B
-	$(CC) $(ALLCFLAGS) -o $@ $< $(LDLIBS)
 # test_numfmt once more on numfmt.c's portable 64x64-bit product (no __int128).
 $B/test_numfmt_portable: tests/unit/test_numfmt.c src/io/numfmt.c src/io/numfmt.h tests/unit/testhelp.h | $B
 	$(CC) $(ALLCFLAGS) -DPT_NUMFMT_PORTABLE -o $@ tests/unit/test_numfmt.c src/io/numfmt.c $(LDLIBS)
@@ -265,7 +263,7 @@ run: $B/pipetrace
 # the groups in two lanes (tests/run.sh; tests/README.md maps tests/).
 TEST_J  = $(if $(findstring -j,$(MAKEFLAGS)),,-j2)
 test:
-	@$(MAKE) --no-print-directory $(TEST_J) $B/pipetrace $(TESTS) $B/benchgen $B/baseline $B/baseline79
+	@$(MAKE) --no-print-directory $(TEST_J) $B/pipetrace $(TESTS) $B/benchgen $B/baseline
 	@sh tests/run.sh $B
 
 golden: $B/pipetrace
@@ -284,7 +282,7 @@ screenshots: $B/pipetrace
 	$B/pipetrace accuracy --svg docs/accuracy.svg > /dev/null
 	$B/pipetrace accuracy docs/examples/lookat-cube.scene --svg docs/accuracy-lookat.svg > /dev/null
 
-bench: $B/bench $B/benchgen $B/baseline $B/baseline79 $B/pipetrace $B/test_numparse
+bench: $B/bench $B/benchgen $B/baseline $B/pipetrace $B/test_numparse
 	$B/test_numparse 2000000
 	$B/bench $B
 
