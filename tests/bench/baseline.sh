@@ -47,4 +47,9 @@ for s in r7 r7aa r9 r9aa r9near; do
 done
 check "baseline-2.6 anti-aliasing changes the image" \
     sh -c "! cmp -s '$tmp/r9.ppm' '$tmp/r9aa.ppm'"
+
+# the JSON Lines records of renderers 7 and 9 are spelt in place, their names
+# made once a position (src/io/trace_course_rec.c): the trace they spelt before
+check "baseline-3.1 a renderer 9 trace of two models, one named beyond ASCII: the stored one" \
+    sh -c "'$exe' tests/bench/r9-names.scene --format jsonl --trace - | cmp -s - tests/bench/r9-names.jsonl"
 report
