@@ -545,7 +545,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
     ls.stage = on_stage;
     ls.drawn = on_drawn;
     ls.raster = on_raster;
-    ls.raster_ls = &rls;
+    ls.raster_ls = fmt == PT_FORMAT_CSV ? NULL : &rls;   /* CSV: no pixel rows */
     ls.warn = on_warn;
     ls.nearclip.begin = clip_begin;
     ls.nearclip.cut = clip_cut;

@@ -49,7 +49,10 @@ check "baseline-2.6 anti-aliasing changes the image" \
     sh -c "! cmp -s '$tmp/r9.ppm' '$tmp/r9aa.ppm'"
 
 # the JSON Lines records of renderers 7 and 9 are spelt in place, their names
-# made once a position (src/io/trace_course_rec.c): the trace they spelt before
+# made once a position, and a CSV trace (no pixel rows) draws with nobody
+# listening (src/io/trace_course_rec.c): the traces they wrote before
 check "baseline-3.1 a renderer 9 trace of two models, one named beyond ASCII: the stored one" \
     sh -c "'$exe' tests/bench/r9-names.scene --format jsonl --trace - | cmp -s - tests/bench/r9-names.jsonl"
+check "baseline-3.2 its CSV trace and image: the stored trace, the untraced image" \
+    sh -c "'$exe' tests/bench/r9-names.scene --format csv --trace - --image '$tmp/n.ppm' | cmp -s - tests/bench/r9-names.csv && '$exe' tests/bench/r9-names.scene --image '$tmp/m.ppm' && cmp -s '$tmp/n.ppm' '$tmp/m.ppm'"
 report

@@ -401,7 +401,7 @@ static void course_rows(figures *f, const figures *r4)
     spawn_rounds(all, 2 + NFMT, t, NULL);
     f->proc = t[0];
     f->base_proc = t[1];
-    printf("\n%s of the course, the same octagons (%s)\n", f->title, f->scene);
+    printf("\nthe course's %s, the same octagons (%s)\n", f->title, f->scene);
     printf("  %-28s %15s %15s %7s   %s\n", "", "pipetrace", "plain C", "ratio",
            "target (renderer 4's)");
     snprintf(target, sizeof target, "<= 1.5x (%.2fx)", r4->render / r4->base_render);
@@ -511,7 +511,7 @@ int main(int argc, char **argv)
     static figures fig[4] = {{"renderer 4", "4", "", NULL, 0, 0, 0, 0, {0}},
                              {"renderer 7", "7", "", NULL, 0, 0, 0, 0, {0}},
                              {"renderer 9", "9", "", NULL, 0, 0, 0, 0, {0}},
-                             {"renderer 9, anti-aliased", "9", "aa", NULL, 0, 0, 0, 0, {0}}};
+                             {"renderer 9 with anti-aliasing", "9", "aa", NULL, 0, 0, 0, 0, {0}}};
     char *s200, *s800, *s3200, *pt = NULL, *ppm, *bppm;
     double bp, br, pp, pr, tproc, tbase, t800, t3200, bytes;
     long rss;
@@ -520,6 +520,7 @@ int main(int argc, char **argv)
     int k;
 
     dir = argc > 1 ? argv[1] : "build";
+    setvbuf(stdout, NULL, _IOLBF, 0);           /* each line as it comes (minutes in all) */
     printf("pipetrace bench: CPU seconds, the least of %d runs; figures depend on the machine\n",
            RUNS);
     s200 = make_scene("bench-200k.scene", "25000", "4", "");
