@@ -188,7 +188,7 @@ static char *path(const char *name)
 
 /* Write the scene of n octagons for renderer 4, 7 or 9 (benchgen) to
 ** B/NAME; flags "aa" (anti-aliasing), "case" (the course harness's case
-** file), "aa case" or "". */
+** file), "aa case" or "".  Returns the path (allocated: it lives to the end). */
 static char *make_scene(const char *name, const char *n, const char *renderer, const char *flags)
 {
     char *argv[7], *out = path(name);
@@ -202,6 +202,7 @@ static char *make_scene(const char *name, const char *n, const char *renderer, c
     if (strstr(flags, "case")) argv[k++] = "case";
     argv[k] = NULL;
     spawn(argv, out, NULL, NULL);
+    if (!(out = strdup(out))) die("out of memory");     /* path()'s buffers are reused */
     return out;
 }
 
