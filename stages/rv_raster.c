@@ -58,6 +58,7 @@ static int64_t jround(double x)
     return (int64_t)r;
 }
 
+/* The state a primitive (or the viewport's clearing) starts from. */
 static void start(draw *d, const pt_rv_raster_par *par, unsigned char *rgb,
                   const pt_rv_raster_ls *ls)
 {
