@@ -287,6 +287,7 @@ screenshots: $B/pipetrace
 bench: $B/bench $B/benchgen $B/baseline $B/pipetrace $B/test_numparse
 	$B/test_numparse 2000000
 	$B/bench $B
+	sh tests/bench/class_bench.sh $B
 
 # The self-check of a student stage (docs/teaching.md): `make check-stage
 # STAGE_pixel=FILE.c` builds the student build and the reference (build/),

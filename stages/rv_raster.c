@@ -19,6 +19,13 @@ typedef struct draw {
     unsigned char *rgb;
     const pt_rv_raster_ls *ls;
     uint64_t n;                  /* pixels written */
+    int quiet;                   /* 1: nobody listens (ls NULL): the quiet
+                                 ** steps write bytes, with par->lut */
+    unsigned char *vp0;          /* the viewport's pixel (0, 0) in rgb, */
+    unsigned vw, vh;             /*   and its size when it lies inside the
+                                 ** framebuffer (else 0 0): a pixel inside it
+                                 ** needs none of Java's int arithmetic */
+    float bg[3];                 /* the viewport's background, byte / 255f */
     int flat;                    /* 1: the segment's colour is the same at every
                                  ** step (its slopes are 0): computed once */
     pt_rgb flat_c;               /*   that colour, */
@@ -51,15 +58,45 @@ static int64_t jround(double x)
     return (int64_t)r;
 }
 
+/* The state a primitive (or the viewport's clearing) starts from. */
+static void start(draw *d, const pt_rv_raster_par *par, unsigned char *rgb,
+                  const pt_rv_raster_ls *ls)
+{
+    int k;
+
+    memset(d, 0, sizeof *d);
+    d->par = par;
+    d->rgb = rgb;
+    d->ls = ls;
+    d->quiet = ls == NULL;
+    if (par->x_ul >= 0 && par->y_ul >= 0 && par->w >= 0 && par->h >= 0 &&
+        (int64_t)par->x_ul + par->w <= par->W && (int64_t)par->y_ul + par->h <= par->H) {
+        d->vp0 = rgb + 3 * ((size_t)par->y_ul * (size_t)par->W + (size_t)par->x_ul);
+        d->vw = (unsigned)par->w;
+        d->vh = (unsigned)par->h;
+    }
+    for (k = 0; k < 3; k++) d->bg[k] = pt_color_float(par->bg[k]);   /* bg / 255f */
+}
+
 /* FrameBuffer.setPixelVP(x, y, c) -> setPixelFB(x_ul + x, y_ul + y, c):
 ** the pixel's bytes b, or a "bad" report when the index is outside. */
 static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
 {
     const pt_rv_raster_par *par = d->par;
-    int x = wrap32((int64_t)par->x_ul + x_vp);
-    int y = wrap32((int64_t)par->y_ul + y_vp);
-    int idx = wrap32((int64_t)wrap32((int64_t)y * par->W) + x);    /* y*width + x */
     unsigned char *o;
+    int x, y, idx;
+
+    if ((unsigned)x_vp < d->vw && (unsigned)y_vp < d->vh) {    /* no wrapping, inside */
+        o = d->vp0 + 3 * ((size_t)y_vp * (size_t)par->W + (size_t)x_vp);
+        o[0] = b[0];
+        o[1] = b[1];
+        o[2] = b[2];
+        d->n++;
+        return;
+    }
+    x = wrap32((int64_t)par->x_ul + x_vp);
+    y = wrap32((int64_t)par->y_ul + y_vp);
+    idx = wrap32((int64_t)wrap32((int64_t)y * par->W) + x);        /* y*width + x */
 
     if (idx < 0 || (int64_t)idx >= (int64_t)par->W * par->H) {
         if (d->ls && d->ls->bad) d->ls->bad(d->ls->ud, x, y, par->W, par->H);
@@ -120,28 +157,60 @@ static void end_pixel(draw *d, double x_pp, double y_pp, pt_rgb c)
     put(d, px.x_vp, px.y_vp, c);
 }
 
-/* One loop step with AA: y between rows (int)y and (int)y + 1. */
-static void step_aa(draw *d, int x, double y, int tr, pt_rgb c)
+static inline unsigned char lut_byte(const pt_rv_gamma_lut *lut, float c);
+
+/* The byte of component c as written: gamma-encoded when on (through the
+** table when there is one), as java.awt.Color(float) keeps it. */
+static unsigned char out_byte(const draw *d, float c)
+{
+    return d->par->gamma ? lut_byte(d->par->lut, c) : pt_color_byte(c);
+}
+
+/* One AA step's pair of pixels: y between rows (int)y and (int)y + 1 (in
+** transposed coordinates), each blended with the background. */
+typedef struct aa_pair {
+    int y_low, y_hi;
+    int x_vp[2], y_vp[2];        /* the low pixel, the high one */
+    float lo[3], hi[3];          /* their colours, before gamma */
+} aa_pair;
+
+static void aa_blend(const draw *d, int x, double y, int tr, pt_rgb c, aa_pair *a)
 {
     const pt_rv_raster_par *par = d->par;
-    int y_low = jint(y);
-    int y_hi = wrap32((int64_t)y_low + 1);
-    float f, bg[3], in[3], lo[3], hi[3];
-    pt_rv_pixel px = {0};
+    float f, in[3];
     int k;
 
-    if (!tr && y == (double)par->h) y_hi = par->h;  /* the top edge */
-    if (tr && y == (double)par->w) y_hi = par->w;   /* the right edge */
-    f = (float)(y - (double)y_low);                 /* weight = fraction of y */
+    a->y_low = jint(y);
+    a->y_hi = wrap32((int64_t)a->y_low + 1);
+    if (!tr && y == (double)par->h) a->y_hi = par->h;   /* the top edge */
+    if (tr && y == (double)par->w) a->y_hi = par->w;    /* the right edge */
+    f = (float)(y - (double)a->y_low);                  /* weight = fraction of y */
     in[0] = c.r; in[1] = c.g; in[2] = c.b;
     for (k = 0; k < 3; k++) {
-        bg[k] = pt_color_float(par->bg[k]);         /* bg / 255f */
-        lo[k] = (1.0f - f) * in[k] + f * bg[k];     /* (1-f)*c + f*bg */
-        hi[k] = f * in[k] + (1.0f - f) * bg[k];     /* f*c + (1-f)*bg */
+        a->lo[k] = (1.0f - f) * in[k] + f * d->bg[k];   /* (1-f)*c + f*bg */
+        a->hi[k] = f * in[k] + (1.0f - f) * d->bg[k];   /* f*c + (1-f)*bg */
     }
-    px.c[0].r = lo[0]; px.c[0].g = lo[1]; px.c[0].b = lo[2];
-    px.c[1].r = hi[0]; px.c[1].g = hi[1]; px.c[1].b = hi[2];
-    if (par->gamma) {
+    if (!tr) {
+        a->x_vp[0] = a->x_vp[1] = wrap32((int64_t)x - 1);       /* x - 1 */
+        a->y_vp[0] = wrap32((int64_t)par->h - a->y_low);        /* h - y_low */
+        a->y_vp[1] = wrap32((int64_t)par->h - a->y_hi);
+    } else {
+        a->y_vp[0] = a->y_vp[1] = wrap32((int64_t)par->h - x);  /* h - x */
+        a->x_vp[0] = wrap32((int64_t)a->y_low - 1);             /* y_low - 1 */
+        a->x_vp[1] = wrap32((int64_t)a->y_hi - 1);
+    }
+}
+
+/* One loop step with AA, told to the listener. */
+static void step_aa(draw *d, int x, double y, int tr, pt_rgb c)
+{
+    aa_pair a;
+    pt_rv_pixel px = {0};
+
+    aa_blend(d, x, y, tr, c, &a);
+    px.c[0].r = a.lo[0]; px.c[0].g = a.lo[1]; px.c[0].b = a.lo[2];
+    px.c[1].r = a.hi[0]; px.c[1].g = a.hi[1]; px.c[1].b = a.hi[2];
+    if (d->par->gamma) {
         px.c[0] = gamma3(px.c[0]);
         px.c[1] = gamma3(px.c[1]);
     }
@@ -150,47 +219,82 @@ static void step_aa(draw *d, int x, double y, int tr, pt_rgb c)
     if (!tr) {
         px.x_pp = (double)x;
         px.y_pp = y;
-        px.x_vp = wrap32((int64_t)x - 1);           /* x - 1 */
-        px.lo = wrap32((int64_t)par->h - y_low);    /* h - y_low */
-        px.hi = wrap32((int64_t)par->h - y_hi);
-        tell(d, &px);
-        put(d, px.x_vp, px.lo, px.c[0]);
-        put(d, px.x_vp, px.hi, px.c[1]);
+        px.x_vp = a.x_vp[0];
+        px.lo = a.y_vp[0];
+        px.hi = a.y_vp[1];
     } else {
         px.x_pp = y;
         px.y_pp = (double)x;
-        px.y_vp = wrap32((int64_t)par->h - x);      /* h - x */
-        px.lo = wrap32((int64_t)y_low - 1);         /* y_low - 1 */
-        px.hi = wrap32((int64_t)y_hi - 1);
-        tell(d, &px);
-        put(d, px.lo, px.y_vp, px.c[0]);
-        put(d, px.hi, px.y_vp, px.c[1]);
+        px.y_vp = a.y_vp[0];
+        px.lo = a.x_vp[0];
+        px.hi = a.x_vp[1];
+    }
+    tell(d, &px);
+    put(d, a.x_vp[0], a.y_vp[0], px.c[0]);
+    put(d, a.x_vp[1], a.y_vp[1], px.c[1]);
+}
+
+/* One loop step with AA when nobody listens: the same bytes, gamma by table. */
+static void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c)
+{
+    aa_pair a;
+    unsigned char lo[3], hi[3];
+    int k;
+
+    aa_blend(d, x, y, tr, c, &a);
+    for (k = 0; k < 3; k++) {
+        lo[k] = out_byte(d, a.lo[k]);
+        hi[k] = out_byte(d, a.hi[k]);
+    }
+    put_bytes(d, a.x_vp[0], a.y_vp[0], lo);
+    put_bytes(d, a.x_vp[1], a.y_vp[1], hi);
+}
+
+/* A loop step's pixel without AA: the row Math.round(y) (in transposed
+** coordinates). */
+static void plain_pixel(const draw *d, int x, double y, int tr, int *x_vp, int *y_vp)
+{
+    int64_t r;                                      /* (int)Math.round(y): low 32 bits */
+    int ry = wrap32(pt_pix_round(y, &r) ? r : jround(y));   /* inline below 2^62 */
+
+    if (!tr) {
+        *x_vp = wrap32((int64_t)x - 1);             /* x - 1 */
+        *y_vp = wrap32((int64_t)d->par->h - ry);    /* h - round(y) */
+    } else {
+        *x_vp = wrap32((int64_t)ry - 1);            /* round(y) - 1 */
+        *y_vp = wrap32((int64_t)d->par->h - x);     /* h - x */
     }
 }
 
-/* One loop step without AA: the row Math.round(y). */
+/* One loop step without AA, told to the listener. */
 static void step_plain(draw *d, int x, double y, int tr, pt_rgb c)
 {
-    int ry = wrap32(jround(y));                     /* (int)Math.round(y): low 32 bits */
     pt_rv_pixel px = {0};
 
     px.kind = PT_RV_PX_STEP;
     px.transposed = tr;
     px.c[0] = d->flat ? d->flat_g : d->par->gamma ? gamma3(c) : c;
-    if (!tr) {
-        px.x_pp = (double)x;
-        px.y_pp = y;
-        px.x_vp = wrap32((int64_t)x - 1);           /* x - 1 */
-        px.y_vp = wrap32((int64_t)d->par->h - ry);  /* h - round(y) */
-    } else {
-        px.x_pp = y;
-        px.y_pp = (double)x;
-        px.x_vp = wrap32((int64_t)ry - 1);          /* round(y) - 1 */
-        px.y_vp = wrap32((int64_t)d->par->h - x);   /* h - x */
-    }
+    px.x_pp = tr ? y : (double)x;
+    px.y_pp = tr ? (double)x : y;
+    plain_pixel(d, x, y, tr, &px.x_vp, &px.y_vp);
     tell(d, &px);
     if (d->flat) put_bytes(d, px.x_vp, px.y_vp, d->flat_b);
     else put(d, px.x_vp, px.y_vp, px.c[0]);
+}
+
+/* One loop step without AA when nobody listens: the same bytes. */
+static void step_plain_quiet(draw *d, int x, double y, int tr, pt_rgb c)
+{
+    unsigned char b[3];
+    int x_vp, y_vp;
+
+    plain_pixel(d, x, y, tr, &x_vp, &y_vp);
+    if (!d->flat) {
+        b[0] = out_byte(d, c.r);
+        b[1] = out_byte(d, c.g);
+        b[2] = out_byte(d, c.b);
+    }
+    put_bytes(d, x_vp, y_vp, d->flat ? d->flat_b : b);
 }
 
 static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
@@ -242,10 +346,16 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
         d->flat_c.r = pt_color_at(c0.r, 0.0, x0, x0);
         d->flat_c.g = pt_color_at(c0.g, 0.0, x0, x0);
         d->flat_c.b = pt_color_at(c0.b, 0.0, x0, x0);
-        d->flat_g = par->gamma ? gamma3(d->flat_c) : d->flat_c;
-        d->flat_b[0] = pt_color_byte(d->flat_g.r);
-        d->flat_b[1] = pt_color_byte(d->flat_g.g);
-        d->flat_b[2] = pt_color_byte(d->flat_g.b);
+        if (d->quiet) {                             /* the bytes alone */
+            d->flat_b[0] = out_byte(d, d->flat_c.r);
+            d->flat_b[1] = out_byte(d, d->flat_c.g);
+            d->flat_b[2] = out_byte(d, d->flat_c.b);
+        } else {
+            d->flat_g = par->gamma ? gamma3(d->flat_c) : d->flat_c;
+            d->flat_b[0] = pt_color_byte(d->flat_g.r);
+            d->flat_b[1] = pt_color_byte(d->flat_g.g);
+            d->flat_b[2] = pt_color_byte(d->flat_g.b);
+        }
     }
     for (x = jint(x0); x < xe; x++, y += s.m) {     /* y accumulated: y += m */
         if (d->flat) {
@@ -255,8 +365,14 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
             c.g = pt_color_at(c0.g, s.mc[1], (double)x, x0);
             c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
         }
-        if (par->antialias) step_aa(d, x, y, tr, c);
-        else step_plain(d, x, y, tr, c);
+        if (d->quiet) {
+            if (par->antialias) step_aa_quiet(d, x, y, tr, c);
+            else step_plain_quiet(d, x, y, tr, c);
+        } else if (par->antialias) {
+            step_aa(d, x, y, tr, c);
+        } else {
+            step_plain(d, x, y, tr, c);
+        }
     }
     d->flat = 0;
     if (!tr) end_pixel(d, x1, y1, c1);              /* the last pixel: raw colour */
@@ -313,10 +429,7 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
 {
     draw d;
 
-    memset(&d, 0, sizeof d);
-    d.par = par;
-    d.rgb = rgb;
-    d.ls = ls;
+    start(&d, par, rgb, ls);
     switch (p->kind) {
     case PT_RV_LINE:  line(&d, m, p); break;
     case PT_RV_POINT: point(&d, m, p); break;
@@ -330,12 +443,79 @@ uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
     draw d;
     int x, y;
 
-    memset(&d, 0, sizeof d);
-    d.par = par;
-    d.rgb = rgb;
-    d.ls = ls;
+    start(&d, par, rgb, ls);
+    if (d.vw > 0 && d.vh > 0) {                     /* inside: row 0, copied */
+        for (x = 0; x < par->w; x++) put_bytes(&d, x, 0, par->bg);
+        for (y = 1; y < par->h; y++)
+            memcpy(d.vp0 + 3 * (size_t)y * (size_t)par->W, d.vp0, 3 * (size_t)par->w);
+        return (uint64_t)par->w * (uint64_t)par->h;
+    }
     for (y = 0; y < par->h; y++)                    /* Viewport.clearVP() */
         for (x = 0; x < par->w; x++)
             put_bytes(&d, x, y, par->bg);
     return d.n;
+}
+
+/* ===== byte(gamma(c)) by table (rv_raster.h) ===== */
+
+#define LUT_LO  0x35800000u      /* the bits of 2^-20 */
+#define LUT_ONE 0x3F800000u      /* of 1.0f */
+#define LUT_INF 0x7F800000u      /* of +infinity */
+
+static float from_bits(uint32_t b)
+{
+    float c;
+    memcpy(&c, &b, sizeof c);
+    return c;
+}
+
+static unsigned char gamma_byte(float c)
+{
+    return pt_color_byte(pt_gamma(c));              /* byte((float)pow(c, 1/2.2)) */
+}
+
+void pt_rv_gamma_lut_init(pt_rv_gamma_lut *lut)
+{
+    unsigned char last = 0;
+    int k;
+
+    lut->ok = gamma_byte(0.0f) == 0 && gamma_byte(from_bits(LUT_LO - 1)) == 0 &&
+              gamma_byte(1.0f) == 255 && gamma_byte(from_bits(LUT_INF)) == 255;
+    for (k = 0; k < PT_RV_LUT_N; k++) {
+        uint32_t a = LUT_LO + ((uint32_t)k << 16), b = a + 0xffffu;
+        unsigned char lo = gamma_byte(from_bits(a)), hi = gamma_byte(from_bits(b));
+
+        lut->lo[k] = lo;
+        lut->step[k] = b + 1;                       /* no step in this range */
+        if (lo < last || hi < lo || hi > lo + 1) lut->ok = 0;
+        last = hi;
+        if (hi == lo) continue;
+        while (b - a > 1) {                         /* byte(a) = lo, byte(b) = lo + 1 */
+            uint32_t m = a + (b - a) / 2;
+            if (gamma_byte(from_bits(m)) == lo) a = m;
+            else b = m;
+        }
+        lut->step[k] = b;
+    }
+}
+
+static inline unsigned char lut_byte(const pt_rv_gamma_lut *lut, float c)
+{
+    uint32_t b;
+
+    memcpy(&b, &c, sizeof b);
+    if (lut && lut->ok) {
+        if (b - LUT_LO < LUT_ONE - LUT_LO) {        /* 2^-20 <= c < 1 */
+            uint32_t k = (b - LUT_LO) >> 16;
+            return (unsigned char)(lut->lo[k] + (b >= lut->step[k]));
+        }
+        if (b < LUT_LO) return 0;                   /* 0 <= c < 2^-20 */
+        if (b <= LUT_INF) return 255;               /* 1 <= c <= infinity */
+    }
+    return gamma_byte(c);                           /* negative, NaN; no table */
+}
+
+unsigned char pt_rv_gamma_byte(const pt_rv_gamma_lut *lut, float c)
+{
+    return lut_byte(lut, c);
 }

@@ -35,6 +35,25 @@
 #define PT_RV_RASTER_H
 #include "rv_model.h"
 
+/* The byte a gamma-encoded component is written as, byte(gamma(c)) =
+** pt_color_byte(pt_gamma(c)), by table instead of pow().  Every float c has
+** a bigger gamma(c) than the float below it (floats are 2^-24 apart, and
+** gamma(c + dc) - gamma(c) = (1/2.2) gamma(c) dc/c is millions of times
+** pow's error), so byte(gamma(c)) only steps up as c grows: below 2^-20 it
+** is byte(gamma(0)) = 0, from 1 up 255, and in between each of the ranges
+** of 2^16 floats with the same exponent and top 7 bits of mantissa holds at
+** most one step (gamma changes by less than 0.0035 of itself across one:
+** under one byte's step) -- found by bisection at init.  Negative c and NaN
+** take pow() (pt_rv_gamma_byte). */
+#define PT_RV_LUT_N 2560         /* 20 exponents (2^-20 .. 2^-1) x 128 ranges */
+typedef struct pt_rv_gamma_lut {
+    uint32_t step[PT_RV_LUT_N];  /* the bits of range k's first float of byte
+                                 ** lo[k] + 1 (past the range: no step) */
+    unsigned char lo[PT_RV_LUT_N];   /* byte(gamma(c)) at range k's first float */
+    int ok;                      /* 0: the table did not come out monotone
+                                 ** (a broken pow): not used */
+} pt_rv_gamma_lut;
+
 /* The viewport and framebuffer a primitive is drawn into, and the switches. */
 typedef struct pt_rv_raster_par {
     int w, h;                    /* the viewport's size */
@@ -42,6 +61,8 @@ typedef struct pt_rv_raster_par {
     int W, H;                    /* the framebuffer's size */
     unsigned char bg[3];         /* the viewport's background (AA blends with it) */
     int antialias, gamma;        /* Rasterize.doAntiAliasing, doGamma */
+    const pt_rv_gamma_lut *lut;  /* NULL, or a table for the pixels nobody
+                                 ** listens to (pt_rv_gamma_lut_init) */
 } pt_rv_raster_par;
 
 /* The forms of the course's pixel log lines. */
@@ -120,5 +141,13 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
 ** number of pixels written.  This function can't fail. */
 uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
                         const pt_rv_raster_ls *ls);
+
+/* Fill lut with the steps of byte(gamma(c)) (some 6,000 calls of pow).
+** This function can't fail (lut->ok says whether the table is usable). */
+void pt_rv_gamma_lut_init(pt_rv_gamma_lut *lut);
+
+/* byte(gamma(c)) = pt_color_byte(pt_gamma(c)), through lut when it can.
+** This function can't fail. */
+unsigned char pt_rv_gamma_byte(const pt_rv_gamma_lut *lut, float c);
 
 #endif

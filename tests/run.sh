@@ -42,7 +42,7 @@ rv-stages        1 $B/test_rv_stages tests/data/course
 scene            1 $B/test_scene
 nameset          1 $B/test_nameset
 numparse         1 $B/test_numparse
-baseline         1 sh tests/bench/baseline.sh $B
+baseline         2 sh tests/bench/baseline.sh $B
 stream           1 sh tests/cli/stream.sh $B/pipetrace
 shapes           1 $B/test_shapes
 reference        1 $B/test_reference $ref

@@ -69,13 +69,15 @@ void pt_course_camera(const pt_scene *s, pt_course_cam *out)
 }
 
 /* new FrameBuffer(W, H, bg), then vp.clearVP() (its Bad pixel lines, if
-** any, to the rasterizer's listener). */
+** any, to the rasterizer's listener).  The background goes into the first
+** pixel and is copied on, a doubling block at a time. */
 static void clear_fb(const pt_scene *s, pt_fb *fb, const pt_rv_raster_par *par,
                      const pt_course_ls *ls)
 {
-    int64_t x, n = (int64_t)fb->w * fb->h;
+    size_t n = 3 * (size_t)fb->w * (size_t)fb->h, k;
 
-    for (x = 0; x < n; x++) pt_fb_set(fb, x, s->background);
+    if (n > 0) memcpy(fb->rgb, s->background, 3);
+    for (k = 3; k < n; k *= 2) memcpy(fb->rgb + k, fb->rgb, k < n - k ? k : n - k);
     pt_rv_clear_vp(par, fb->rgb, ls ? ls->raster_ls : NULL);
 }
 
@@ -295,6 +297,7 @@ static int pipeline2(const run *r, cpos *c, size_t nc, const step *sts, size_t n
 
 int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
 {
+    pt_rv_gamma_lut lut;
     run r;
     cpos *c;
     size_t k, nst;
@@ -302,6 +305,10 @@ int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
     int rc;
 
     start(&r, s, fb, ls);
+    if (s->gamma && (!ls || !ls->raster_ls)) {  /* nobody hears the pixels: */
+        pt_rv_gamma_lut_init(&lut);              /*   gamma's bytes by table */
+        r.par.lut = &lut;
+    }
     clear_fb(s, fb, &r.par, ls);
 
     c = calloc(s->nmodels ? s->nmodels : 1, sizeof *c);

@@ -57,6 +57,10 @@ typedef struct walker {
     size_t norg, cap_org;
     uint64_t nvrec, nprims, npixels;
     const pt_course_pos *pos;    /* the position the rasterizer draws */
+    pt_sbuf names;               /* JSON: ,"model":M,"position":P for the
+                                 ** names below (made once: every record of a
+                                 ** position has it) */
+    const char *names_model, *names_position;
 } walker;
 
 /* ===== numbers ===== */
@@ -100,35 +104,67 @@ static const char *edge_name(pt_rv_edge e)
 
 /* ===== the three formatters ===== */
 
+/* t at q (no NUL); returns the end. */
+static char *put_str(char *q, const char *t)
+{
+    size_t n = strlen(t);
+    memcpy(q, t, n);
+    return q + n;
+}
+
+/* x in decimal at q (no NUL), as %lld; returns the end. */
+static char *put_i64(char *q, int64_t x)
+{
+    if (x < 0) *q++ = '-';
+    return q + pt_fmt_u64(q, x < 0 ? 0u - (uint64_t)x : (uint64_t)x);
+}
+
+/* Make w->names say r's model and position, unless it does.  0 when out of
+** memory (then the record is not written: the trace's buffer says so). */
+static int names(walker *w, const rec *r)
+{
+    if (!w->names.s || r->model != w->names_model || r->position != w->names_position) {
+        w->names.len = 0;
+        pt_sbuf_add(&w->names, ",\"model\":");
+        pt_sbuf_add_json(&w->names, r->model);
+        pt_sbuf_add(&w->names, ",\"position\":");
+        pt_sbuf_add_json(&w->names, r->position);
+        w->names_model = r->model;
+        w->names_position = r->position;
+    }
+    if (w->names.failed) w->sb.failed = 1;
+    return !w->names.failed;
+}
+
 static void fmt_json(walker *w, const rec *r)
 {
     pt_sbuf *sb = &w->sb;
 
-    if (r->kind == R_PIXEL) {
-        pt_sbuf_add(sb, "{\"type\":\"pixel\",\"model\":");
-        pt_sbuf_add_json(sb, r->model);
-        pt_sbuf_add(sb, ",\"position\":");
-        pt_sbuf_add_json(sb, r->position);
-        pt_sbuf_addf(sb, ",\"primitive\":%llu,\"x\":%lld,\"y\":%lld,\"rgb\":[%d,%d,%d],"
-                     "\"coverage\":", (unsigned long long)r->v, (long long)r->x_fb,
-                     (long long)r->y_fb, r->rgb[0], r->rgb[1], r->rgb[2]);
+    if (!names(w, r)) return;
+    if (r->kind == R_PIXEL) {                   /* one a pixel: spelt in place */
+        char b[160], *q = b;
+        pt_sbuf_add(sb, "{\"type\":\"pixel\"");
+        pt_sbuf_addn(sb, w->names.s, w->names.len);
+        q = put_i64(put_str(q, ",\"primitive\":"), (int64_t)r->v);
+        q = put_i64(put_str(q, ",\"x\":"), r->x_fb);
+        q = put_i64(put_str(q, ",\"y\":"), r->y_fb);
+        q = put_i64(put_str(q, ",\"rgb\":["), r->rgb[0]);
+        q = put_i64(put_str(q, ","), r->rgb[1]);
+        q = put_i64(put_str(q, ","), r->rgb[2]);
+        q = put_str(q, "],\"coverage\":");
+        pt_sbuf_addn(sb, b, (size_t)(q - b));
         num_json(sb, (double)r->coverage);
         pt_sbuf_add(sb, "}\n");
         return;
     }
     if (r->kind == R_WARN) {
-        pt_sbuf_add(sb, "{\"type\":\"warning\",\"model\":");
-        pt_sbuf_add_json(sb, r->model);
-        pt_sbuf_add(sb, ",\"position\":");
-        pt_sbuf_add_json(sb, r->position);
+        pt_sbuf_add(sb, "{\"type\":\"warning\"");
+        pt_sbuf_addn(sb, w->names.s, w->names.len);
         pt_sbuf_addf(sb, ",\"warning\":\"%s\"}\n", r->warning);
         return;
     }
-    pt_sbuf_add(sb, r->kind == R_VERTEX ? "{\"type\":\"vertex\",\"model\":"
-                                        : "{\"type\":\"primitive\",\"model\":");
-    pt_sbuf_add_json(sb, r->model);
-    pt_sbuf_add(sb, ",\"position\":");
-    pt_sbuf_add_json(sb, r->position);
+    pt_sbuf_add(sb, r->kind == R_VERTEX ? "{\"type\":\"vertex\"" : "{\"type\":\"primitive\"");
+    pt_sbuf_addn(sb, w->names.s, w->names.len);
     if (r->kind == R_PRIM) {
         const pt_rv_prim *p = r->prim;
         pt_sbuf_addf(sb, ",\"primitive\":%llu,\"kind\":\"%s\"", (unsigned long long)r->v,
@@ -143,7 +179,14 @@ static void fmt_json(walker *w, const rec *r)
         pt_sbuf_addf(sb, ",\"pixels\":%llu}\n", (unsigned long long)r->pixels);
         return;
     }
-    pt_sbuf_addf(sb, ",\"v\":%llu,\"stage\":\"%s\",\"x\":", (unsigned long long)r->v, r->stage);
+    {
+        char b[64], *q = put_i64(b, (int64_t)r->v);
+        pt_sbuf_add(sb, ",\"v\":");
+        pt_sbuf_addn(sb, b, (size_t)(q - b));
+        pt_sbuf_add(sb, ",\"stage\":\"");
+        pt_sbuf_add(sb, r->stage);
+        pt_sbuf_add(sb, "\",\"x\":");
+    }
     num_json(sb, r->p.x);
     pt_sbuf_add(sb, ",\"y\":");
     num_json(sb, r->p.y);
@@ -494,6 +537,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
     w.precision = precision;
     w.w4 = s->renderer == 9;
     pt_sbuf_init(&w.sb);
+    pt_sbuf_init(&w.names);
     memset(&rls, 0, sizeof rls);
     rls.pixel = on_pixel;
     rls.ud = &w;
@@ -501,7 +545,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
     ls.stage = on_stage;
     ls.drawn = on_drawn;
     ls.raster = on_raster;
-    ls.raster_ls = &rls;
+    ls.raster_ls = fmt == PT_FORMAT_CSV ? NULL : &rls;   /* CSV: no pixel rows */
     ls.warn = on_warn;
     ls.nearclip.begin = clip_begin;
     ls.nearclip.cut = clip_cut;
@@ -515,6 +559,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
     if (rc != 0 || w.sb.failed) snprintf(err, errlen, "pipetrace: out of memory");
     rc = rc != 0 || w.sb.failed ? -1 : 0;
     pt_sbuf_free(&w.sb);
+    pt_sbuf_free(&w.names);
     free(w.org);
     return rc;
 }

@@ -20,7 +20,18 @@
 **              the page faults of the process at 200k;
 **   scaling    the process's time per vertex at 200k, 800k and 3.2M vertices;
 **   two CPUs   the untraced process and the JSON Lines trace on one thread
-**              and on two (--threads 2, src/io/tlanes.c), in wall seconds.
+**              and on two (--threads 2, src/io/tlanes.c), in wall seconds;
+**   course     the same octagons through the course's renderers 7 and 9
+**              (9 with anti-aliasing and without): render in process and
+**              whole process against the baseline's renderers 7 and 9, and
+**              the traces (JSON Lines, text, CSV, the course's log) against
+**              the untraced process, beside renderer 4's ratios;
+**   Java       when `java` and `javac` are on the PATH and the course's jars
+**              are in PT_COURSE_DIR (default ../shared/reference/course:
+**              rendererN/KraftN.java and its jar), the course's own Java
+**              renderers 4, 7 and 9 on the same scenes: the whole process
+**              (the harness KraftN, no log) and the render in the JVM
+**              (tests/bench/BenchKraft.java), and pipetrace's ratio to each.
 ** Each time is CPU time (user and system), the least of 5 runs (of 3 for the
 ** large scenes of the scaling rows, of 15 for the renders in process); the
 ** programs timed as whole processes at 200k take turns (spawn_rounds), so
@@ -48,6 +59,7 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#include "core/course.h"
 #include "core/pipeline.h"
 
 #define RUNS 5
@@ -174,17 +186,23 @@ static char *path(const char *name)
     return p;
 }
 
-/* Write the scene of n octagons for renderer 4 or 9 (benchgen) to B/NAME. */
-static char *make_scene(const char *name, const char *n, const char *renderer)
+/* Write the scene of n octagons for renderer 4, 7 or 9 (benchgen) to
+** B/NAME; flags "aa" (anti-aliasing), "case" (the course harness's case
+** file), "aa case" or "".  Returns the path (allocated: it lives to the end). */
+static char *make_scene(const char *name, const char *n, const char *renderer, const char *flags)
 {
-    char *argv[5], *out = path(name);
+    char *argv[7], *out = path(name);
+    int k = 4;
 
     argv[0] = path("benchgen");
     argv[1] = (char *)n;
     argv[2] = "1000";                           /* octagons a model */
     argv[3] = (char *)renderer;
-    argv[4] = NULL;
+    if (strstr(flags, "aa")) argv[k++] = "aa";
+    if (strstr(flags, "case")) argv[k++] = "case";
+    argv[k] = NULL;
     spawn(argv, out, NULL, NULL);
+    if (!(out = strdup(out))) die("out of memory");     /* path()'s buffers are reused */
     return out;
 }
 
@@ -200,7 +218,8 @@ static void baseline(const char *scene, double *parse, double *render)
     pclose(p);
 }
 
-/* One untraced pt_run() of s into a fresh framebuffer: its CPU seconds. */
+/* One untraced pt_run() of s into a fresh framebuffer (pt_course_render()
+** for a scene of renderer 7 or 9): its CPU seconds. */
 static double render_once(const pt_scene *s)
 {
     pt_options o;
@@ -210,6 +229,14 @@ static double render_once(const pt_scene *s)
     pt_fb fb;
     double t0, t;
 
+    if (s->renderer == 7 || s->renderer == 9) {     /* the course's renderers */
+        if (pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) != 0) die("out of memory");
+        t0 = now();
+        if (pt_course_render(s, &fb, NULL) != 0) die("out of memory");
+        t = now() - t0;
+        pt_fb_free(&fb);
+        return t;
+    }
     pt_options_default(&o);
     memset(&l, 0, sizeof l);
     if (pt_plan_make(&p, s, &o) != 0 || pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) != 0)
@@ -307,6 +334,20 @@ static void pin_fastest(const pt_scene *s, char *note, size_t n)
 #endif
 }
 
+#define NFMT 4
+static const char *const fmts[NFMT] = {"jsonl", "text", "csv", "kraft"};
+
+/* One scene's figures, for the rows of the course's renderers and Java's. */
+typedef struct figures {
+    const char *title;           /* "renderer 4", ... */
+    const char *renderer;        /* "4", "7" or "9" */
+    const char *flags;           /* benchgen's: "" or "aa" */
+    char *scene;                 /* the scene */
+    double render, proc;         /* pipetrace: render in process, whole process */
+    double base_render, base_proc;   /* the plain C baseline's */
+    double trace[NFMT];          /* each trace's time over the untraced process's */
+} figures;
+
 static void row(const char *what, double ours, double theirs, const char *unit,
                 const char *target)
 {
@@ -330,10 +371,149 @@ static int same_file(const char *a, const char *b)
     return same;
 }
 
+/* The rows of a scene of the course's renderer 7 or 9: render in process
+** and whole process against the baseline, images, the traces against the
+** untraced process; each beside renderer 4's ratio (r4). */
+static void course_rows(figures *f, const figures *r4)
+{
+    char *pt = path("pipetrace"), *ppm = path("bench-pt.ppm"), *bppm = path("bench-base.ppm");
+    char *a[] = {pt, f->scene, "--image", ppm, NULL};
+    char *b[] = {path("baseline"), f->scene, bppm, NULL};
+    char *tr[NFMT][9], target[64];
+    char *const *all[2 + NFMT];
+    double t[2 + NFMT], bytes[NFMT], bp;
+    pt_scene s;
+    int k;
+
+    load(&s, f->scene);
+    f->render = render(&s);
+    pt_scene_free(&s);
+    baseline(f->scene, &bp, &f->base_render);
+    for (k = 0; k < NFMT; k++) {                /* the traces, to /dev/null: */
+        char *c[] = {pt, f->scene, "--image", ppm, "--format", (char *)fmts[k], "--trace",
+                     "-", NULL};
+        memcpy(tr[k], c, sizeof c);
+        spawn(tr[k], NULL, NULL, &bytes[k]);    /* their bytes, counted once */
+        tr[k][7] = "/dev/null";
+        all[2 + k] = tr[k];
+    }
+    all[0] = a;
+    all[1] = b;
+    spawn_rounds(all, 2 + NFMT, t, NULL);
+    f->proc = t[0];
+    f->base_proc = t[1];
+    printf("\nthe course's %s, the same octagons (%s)\n", f->title, f->scene);
+    printf("  %-28s %15s %15s %7s   %s\n", "", "pipetrace", "plain C", "ratio",
+           "target (renderer 4's)");
+    snprintf(target, sizeof target, "<= 1.5x (%.2fx)", r4->render / r4->base_render);
+    row("render, in process (warm)", f->render, f->base_render, "s", target);
+    snprintf(target, sizeof target, "<= 1.3x (%.2fx)", r4->proc / r4->base_proc);
+    row("whole process, image only", f->proc, f->base_proc, "s", target);
+    printf("  %-28s %s\n", "images", same_file(ppm, bppm) ? "identical" : "DIFFER");
+    for (k = 0; k < NFMT; k++) {
+        f->trace[k] = t[2 + k] / f->proc;
+        printf("  %-6s %8.1f MB  %8.4f s  %8.1f MB/s  %6.2fx the untraced process"
+               "   (renderer 4: %.2fx)\n", fmts[k], bytes[k] / 1e6, t[2 + k],
+               bytes[k] / t[2 + k] / 1e6, f->trace[k], r4->trace[k]);
+    }
+}
+
+/* The full path of program name on the PATH, or NULL. */
+static char *on_path(const char *name)
+{
+    static char buf[2][1024];
+    static int next;
+    const char *p = getenv("PATH");
+    char *out = buf[next++ % 2];
+
+    while (p && *p) {
+        size_t n = strcspn(p, ":");
+        snprintf(out, sizeof buf[0], "%.*s/%s", (int)n, p, name);
+        if (n > 0 && access(out, X_OK) == 0) return out;
+        p += n + (p[n] == ':');
+    }
+    return NULL;
+}
+
+/* The course's Java renderers on the scenes of fig[0..n-1], beside
+** pipetrace's figures of the same scenes; skipped, with a line that says
+** why, without java, javac or the course's jars. */
+static void java_rows(const figures *fig, int n)
+{
+    const char *course = getenv("PT_COURSE_DIR");
+    char *java = on_path("java"), *javac = on_path("javac");
+    int k;
+
+    if (!course || !*course) course = "../shared/reference/course";
+    printf("\nthe course's Java renderers, the same octagons (%s): CPU seconds, the whole\n"
+           "process the least of 3, the render in the JVM the least of %d\n", course, RENDERS);
+    if (!java || !javac) {
+        printf("  skipped: no java and javac on the PATH\n");
+        return;
+    }
+    printf("  %-26s %10s %10s %7s   %10s %10s %7s   %s\n", "", "Java", "pipetrace", "ratio",
+           "Java", "pipetrace", "ratio", "images");
+    printf("  %-26s %10s %10s %7s   %10s %10s\n", "", "process", "process", "", "render",
+           "render");
+    for (k = 0; k < n; k++) {
+        const figures *f = &fig[k];
+        char jar[600], harness[600], classes[600], cp[1300], cmd[4000], name[64], cls[16];
+        char flags[16], *kase, *jppm = path("bench-java.ppm"), *ppm = path("bench-pt.ppm");
+        char *pt = path("pipetrace");
+        char *img[] = {pt, f->scene, "--image", ppm, NULL};
+        double tj, rj = -1;
+        FILE *p;
+
+        snprintf(jar, sizeof jar, "%s/renderer%s/renderer%s%s.jar", course, f->renderer,
+                 f->renderer[0] == '4' ? "" : "_", f->renderer);
+        snprintf(harness, sizeof harness, "%s/renderer%s/Kraft%s.java", course, f->renderer,
+                 f->renderer);
+        if (access(jar, R_OK) != 0 || access(harness, R_OK) != 0) {
+            printf("  %-26s skipped: no %s (PT_COURSE_DIR names the course's folder)\n",
+                   f->title, access(jar, R_OK) != 0 ? jar : harness);
+            continue;
+        }
+        snprintf(name, sizeof name, "bench-java%s", f->renderer);
+        snprintf(classes, sizeof classes, "%s", path(name));
+        snprintf(cmd, sizeof cmd, "mkdir -p '%s' && '%s' -nowarn -cp '%s' -d '%s' '%s' "
+                 "tests/bench/BenchKraft.java > /dev/null 2>&1", classes, javac, jar, classes,
+                 harness);
+        if (system(cmd) != 0) {
+            printf("  %-26s skipped: javac could not compile %s with tests/bench/BenchKraft.java\n",
+                   f->title, harness);
+            continue;
+        }
+        snprintf(cp, sizeof cp, "%s:%s", jar, classes);
+        snprintf(name, sizeof name, "bench-r%s%s.case", f->renderer, f->flags);
+        snprintf(flags, sizeof flags, "%s case", f->flags);
+        kase = make_scene(name, "25000", f->renderer, flags);
+        snprintf(cls, sizeof cls, "Kraft%s", f->renderer);
+        {
+            char *argv[] = {java, "-cp", cp, cls, kase, jppm, path("bench-java.log"),
+                            "debug=none", NULL};
+            tj = spawn_least(argv);
+        }
+        spawn(img, "/dev/null", NULL, NULL);
+        snprintf(cmd, sizeof cmd, "'%s' -cp '%s' BenchKraft '%s' %d", java, cp, kase, RENDERS);
+        p = popen(cmd, "r");
+        if (!p || fscanf(p, "render %lf", &rj) != 1) rj = -1;
+        if (p) pclose(p);
+        printf("  %-26s %10.4f %10.4f %6.2fx   ", f->title, tj, f->proc, f->proc / tj);
+        if (rj > 0) printf("%10.4f %10.4f %6.2fx", rj, f->render, f->render / rj);
+        else printf("%10s %10.4f %7s", "failed", f->render, "");
+        printf("   %s\n", same_file(ppm, jppm) ? "identical" : "DIFFER");
+        remove(jppm);
+        remove(path("bench-java.log"));
+    }
+}
+
 int main(int argc, char **argv)
 {
-    static const char *const fmts[] = {"jsonl", "text", "csv"};
-    char *s200, *s800, *s3200, *s9, *pt = NULL, *ppm, *bppm;
+    static figures fig[4] = {{"renderer 4", "4", "", NULL, 0, 0, 0, 0, {0}},
+                             {"renderer 7", "7", "", NULL, 0, 0, 0, 0, {0}},
+                             {"renderer 9", "9", "", NULL, 0, 0, 0, 0, {0}},
+                             {"renderer 9 with anti-aliasing", "9", "aa", NULL, 0, 0, 0, 0, {0}}};
+    char *s200, *s800, *s3200, *pt = NULL, *ppm, *bppm;
     double bp, br, pp, pr, tproc, tbase, t800, t3200, bytes;
     long rss;
     char note[256];
@@ -341,12 +521,16 @@ int main(int argc, char **argv)
     int k;
 
     dir = argc > 1 ? argv[1] : "build";
+    setvbuf(stdout, NULL, _IOLBF, 0);           /* each line as it comes (minutes in all) */
     printf("pipetrace bench: CPU seconds, the least of %d runs; figures depend on the machine\n",
            RUNS);
-    s200 = make_scene("bench-200k.scene", "25000", "4");
-    s800 = make_scene("bench-800k.scene", "100000", "4");
-    s3200 = make_scene("bench-3200k.scene", "400000", "4");
-    s9 = make_scene("bench-r9.scene", "25000", "9");
+    s200 = make_scene("bench-200k.scene", "25000", "4", "");
+    s800 = make_scene("bench-800k.scene", "100000", "4", "");
+    s3200 = make_scene("bench-3200k.scene", "400000", "4", "");
+    fig[0].scene = s200;
+    fig[1].scene = make_scene("bench-r7.scene", "25000", "7", "");
+    fig[2].scene = make_scene("bench-r9.scene", "25000", "9", "");
+    fig[3].scene = make_scene("bench-r9aa.scene", "25000", "9", "aa");
     pt = path("pipetrace");
     ppm = path("bench-pt.ppm");
     bppm = path("bench-base.ppm");
@@ -366,7 +550,7 @@ int main(int argc, char **argv)
     {
         char *a[] = {pt, s200, "--image", ppm, NULL};
         char *b[] = {path("baseline"), s200, bppm, NULL};
-        char *tr[3][9];
+        char *tr[NFMT][9];
         /* JSON Lines in its two parts, for where its time goes: the vertex
         ** records (--stage for each of the classic camera's stages, no raster
         ** records) and the raster records (pixels and clipped steps) */
@@ -374,9 +558,9 @@ int main(int argc, char **argv)
                                             "--trace", "-"};
         char *rs[] = {pt, s200, "--image", ppm, "--format", "jsonl", "--trace", "-",
                       "--stage", "raster", NULL};
-        char *const *all[7];
-        double t[7], tbytes[3], pbytes[2];
-        for (k = 0; k < 3; k++) {               /* the traces, to /dev/null: */
+        char *const *all[4 + NFMT];
+        double t[4 + NFMT], tbytes[NFMT], pbytes[2];
+        for (k = 0; k < NFMT; k++) {            /* the traces, to /dev/null: */
             char *c[] = {pt, s200, "--image", ppm, "--format", (char *)fmts[k], "--trace",
                          "-", NULL};
             memcpy(tr[k], c, sizeof c);
@@ -394,9 +578,9 @@ int main(int argc, char **argv)
         vx[7] = rs[7] = "/dev/null";
         all[0] = a;
         all[1] = b;
-        all[5] = vx;
-        all[6] = rs;
-        spawn_rounds(all, 7, t, NULL);
+        all[2 + NFMT] = vx;
+        all[3 + NFMT] = rs;
+        spawn_rounds(all, 4 + NFMT, t, NULL);
         tproc = t[0];
         tbase = t[1];
         row("whole process, image only", tproc, tbase, "s", "<= 1.3x");
@@ -404,35 +588,25 @@ int main(int argc, char **argv)
         spawn(a, "/dev/null", NULL, NULL);
         printf("  %-28s %10ld\n", "page faults, whole process", faults);
         printf("\ntraces of the same scene, whole process, to /dev/null\n");
-        for (k = 0; k < 3; k++)
+        for (k = 0; k < NFMT; k++) {
             printf("  %-6s %8.1f MB  %8.4f s  %8.1f MB/s  %6.2fx the untraced process%s\n",
                    fmts[k], tbytes[k] / 1e6, t[2 + k], tbytes[k] / t[2 + k] / 1e6,
                    t[2 + k] / tproc,
                    k == 0 ? "   (one thread: two, below)" : k == 2 ? "   (target >= 400 MB/s)" : "");
+            fig[0].trace[k] = t[2 + k] / tproc;
+        }
         printf("  jsonl in parts, each its own run (the header in both):\n");
         for (k = 0; k < 2; k++)
             printf("    %-17s %8.1f MB  %8.4f s  %8.1f MB/s  %6.2fx, %+.4f s over untraced\n",
-                   k == 0 ? "vertex records" : "raster records", pbytes[k] / 1e6, t[5 + k],
-                   pbytes[k] / t[5 + k] / 1e6, t[5 + k] / tproc, t[5 + k] - tproc);
+                   k == 0 ? "vertex records" : "raster records", pbytes[k] / 1e6,
+                   t[2 + NFMT + k], pbytes[k] / t[2 + NFMT + k] / 1e6, t[2 + NFMT + k] / tproc,
+                   t[2 + NFMT + k] - tproc);
+        fig[0].render = pr;
+        fig[0].base_render = br;
+        fig[0].proc = tproc;
+        fig[0].base_proc = tbase;
     }
-    {   /* the course's renderer 9 on the same octagons, anti-aliased, gamma on */
-        char *a[] = {pt, s200, "--image", ppm, NULL};
-        char *r[] = {pt, s9, "--image", ppm, NULL};
-        char *j[] = {pt, s9, "--image", ppm, "--format", "jsonl", "--trace", "-", NULL};
-        char *const *all[2];
-        double t[2], jt, jbytes;
-        spawn(j, NULL, NULL, &jbytes);
-        j[7] = "/dev/null";
-        all[0] = a;
-        all[1] = r;
-        spawn_rounds(all, 2, t, NULL);
-        jt = spawn_least(j);
-        printf("\nrenderer 9, anti-aliased, the same octagons (%s), whole process\n", s9);
-        printf("  %-28s %8.4f s  %6.2fx renderer 4's, %6.2fx the plain C one's\n",
-               "image only", t[1], t[1] / t[0], t[1] / tbase);
-        printf("  %-28s %8.4f s  %6.2fx its untraced process, %8.1f MB/s\n",
-               "jsonl trace", jt, jt / t[1], jbytes / jt / 1e6);
-    }
+    for (k = 1; k < 4; k++) course_rows(&fig[k], &fig[0]);
     {
         char *a[] = {pt, s800, "--image", ppm, NULL};
         char *b[] = {pt, s3200, "--image", ppm, NULL};
@@ -478,6 +652,7 @@ int main(int argc, char **argv)
         printf("  peak resident memory, 800,000 vertices, JSON Lines on two threads (to a\n"
                "  pipe): %.1f MiB\n", (double)trss / 1024);
     }
+    java_rows(fig, 4);
     remove(ppm);
     remove(bppm);
     return 0;

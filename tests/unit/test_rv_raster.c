@@ -6,7 +6,9 @@
 ** the course's harness: its clipped models, its image, its log) is drawn
 ** primitive by primitive into a framebuffer cleared as the harness clears
 ** it; the image must equal the course's byte for byte and the lines
-** rv_log_raster writes must equal the log's rasterizer lines.  Usage:
+** rv_log_raster writes must equal the log's rasterizer lines; drawn again
+** with nobody listening (the quiet steps, gamma's bytes by table) the image
+** must be the same.  Usage:
 ** test_rv_raster [DIR] (default tests/data/course-raster).
 */
 #include <stdio.h>
@@ -101,8 +103,11 @@ static void set_ls(pt_rv_raster_ls *ls, FILE *lg, tally *t, int debug)
     ls->clipped_points = 1;
 }
 
+static pt_rv_gamma_lut lut;      /* for the draws nobody listens to */
+
 /* Draw the positions of the .raster file f into rgb, logging to lg, or
-** counting in *t when lg is NULL. */
+** counting in *t when lg is NULL, or with nobody listening (and the gamma
+** table) when both are NULL. */
 static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, tally *t, int *nbad)
 {
     static pt_vec4 v[MAXN];
@@ -115,14 +120,18 @@ static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, tally *t,
     int pending = 0;
 
     set_ls(&ls, lg, t, tc->debug);
+    tc->par.lut = lg || t ? NULL : &lut;
     memset(&m, 0, sizeof m);
     m.v = v; m.c = c; m.p = p;
     for (;;) {
         int eof = !fgets(line, sizeof line, f);
         if (eof || strncmp(line, "position", 8) == 0) {
             if (pending)
-                for (k = 0; k < m.np; k++)
-                    t->ret += pt_rv_raster_prim(&m, &p[k], &tc->par, rgb, &ls);
+                for (k = 0; k < m.np; k++) {
+                    uint64_t n = pt_rv_raster_prim(&m, &p[k], &tc->par, rgb,
+                                                   lg || t ? &ls : NULL);
+                    if (t) t->ret += n;
+                }
             if (eof) return 0;
             m.nv = m.nc = m.np = 0;
             pending = 1;
@@ -180,7 +189,7 @@ static void run_case(const char *dir, const char *name)
     char path[1024], head[320];
     size_t nppm = 0, nlog = 0, ngot = 0;
     char *ppm, *want, *got;
-    unsigned char *rgb = NULL, *again = NULL;
+    unsigned char *rgb = NULL, *again = NULL, *quiet = NULL;
     tally t1, t2;
     tcase tc;
     FILE *f, *lg;
@@ -205,9 +214,12 @@ static void run_case(const char *dir, const char *name)
     memset(&t2, 0, sizeof t2);
     rgb = calloc((size_t)W * H, 3);
     again = calloc((size_t)W * H, 3);
-    ok = rgb && again && draw_case(f, &tc, rgb, lg, &t1, &nbad) == 0;
+    quiet = calloc((size_t)W * H, 3);
+    ok = rgb && again && quiet && draw_case(f, &tc, rgb, lg, &t1, &nbad) == 0;
     rewind(f);
     ok = ok && draw_case(f, &tc, again, NULL, &t2, &nbad) == 0;
+    rewind(f);
+    ok = ok && draw_case(f, &tc, quiet, NULL, NULL, &nbad) == 0;
     snprintf(head, sizeof head, "%s: parsed", name);
     PT_CHECK(head, ok && tc.par.W == W && tc.par.H == H);
     if (!ok) goto done;
@@ -217,6 +229,8 @@ static void run_case(const char *dir, const char *name)
     PT_CHECK(head, memcmp(rgb, ppm + hl + 1, (size_t)W * H * 3) == 0);
     snprintf(head, sizeof head, "%s: the same image, listened to or not", name);
     PT_CHECK(head, memcmp(rgb, again, (size_t)W * H * 3) == 0 && t1.ret == t2.ret);
+    snprintf(head, sizeof head, "%s: the same image with nobody listening", name);
+    PT_CHECK(head, memcmp(rgb, quiet, (size_t)W * H * 3) == 0);
     snprintf(head, sizeof head, "%s: pixels written = pixels logged - bad ones", name);
     PT_CHECK(head, t2.ret == t2.said - t2.bad && t2.said > 0);
     rewind(lg);
@@ -229,6 +243,7 @@ done:
     if (lg) fclose(lg);
     free(rgb);
     free(again);
+    free(quiet);
     free(ppm);
     free(want);
 }
@@ -270,6 +285,47 @@ static void extremes(void)
              rgb[(2 * 4 + 0) * 3] == 255 && rgb[(1 * 4 + 1) * 3] == 255 && rgb[(2 * 4 + 2) * 3] == 0);
 }
 
+/* The gamma table against the formula: at each range's ends and step (and
+** the floats beside them), and on many floats from 0 to beyond 1, negative,
+** NaN. */
+static void gamma_table(void)
+{
+    unsigned long long state = 88172645463325252ULL;
+    int k, bad = 0, steps = 0;
+    long i;
+
+    PT_CHECK("rv-3.1 the gamma table comes out monotone", lut.ok);
+    for (k = 0; k < PT_RV_LUT_N; k++) {
+        uint32_t a = 0x35800000u + ((uint32_t)k << 16), at[6], j;
+        at[0] = a; at[1] = a + 0xffffu; at[2] = lut.step[k] - 1; at[3] = lut.step[k];
+        at[4] = lut.step[k] + 1; at[5] = a - 1;
+        steps += lut.step[k] <= a + 0xffffu;
+        for (j = 0; j < 6; j++) {
+            float c;
+            memcpy(&c, &at[j], sizeof c);
+            bad += pt_rv_gamma_byte(&lut, c) != pt_color_byte(pt_gamma(c));
+        }
+    }
+    PT_CHECK("rv-3.2 byte(gamma(c)) by table at every range's ends and step", bad == 0);
+    PT_CHECK("rv-3.3 the table steps once to each byte from 1 to 255", steps == 255);
+    for (i = 0, bad = 0; i < 400000; i++) {
+        uint32_t b;
+        float c;
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        b = (uint32_t)(state >> 33);                /* 0 .. 2^31: every positive float, NaN */
+        if (i % 4 == 0) b = (uint32_t)(state >> 40) + 0x3f000000u;   /* 0.5 .. 2 */
+        if (i % 7 == 0) b |= 0x80000000u;           /* negative */
+        memcpy(&c, &b, sizeof c);
+        bad += pt_rv_gamma_byte(&lut, c) != pt_color_byte(pt_gamma(c));
+    }
+    PT_CHECK("rv-3.4 byte(gamma(c)) by table on 400,000 floats", bad == 0);
+    PT_CHECK("rv-3.5 0, 1, infinity, NaN, -0.25",
+             pt_rv_gamma_byte(&lut, 0.0f) == 0 && pt_rv_gamma_byte(&lut, 1.0f) == 255 &&
+             pt_rv_gamma_byte(&lut, (float)INFINITY) == 255 &&
+             pt_rv_gamma_byte(&lut, nanf("")) == 0 && pt_rv_gamma_byte(&lut, -0.25f) == 0 &&
+             pt_rv_gamma_byte(NULL, 0.5f) == pt_color_byte(pt_gamma(0.5f)));
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : "tests/data/course-raster";
@@ -277,6 +333,8 @@ int main(int argc, char **argv)
     FILE *list;
     int n = 0;
 
+    pt_rv_gamma_lut_init(&lut);
+    gamma_table();
     snprintf(path, sizeof path, "%s/cases", dir);
     list = fopen(path, "r");
     PT_CHECK("the list of cases", list != NULL);
