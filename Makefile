@@ -120,7 +120,7 @@ CORE_O   = $B/scene.o $B/scene_course.o $B/nameset.o $B/numparse.o $B/shapes.o $
            $B/pipeline.o $B/pixelpath.o $B/raster_advance.o $B/raster_point.o $B/fb.o \
            $B/course.o
 # src/io/: numbers as text, trace writers and readers, images, output files.
-IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/trace_buf.o $B/trace_head.o \
+IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/explain_course.o $B/trace_buf.o $B/trace_head.o \
            $B/trace_text.o $B/trace_jsonl.o $B/trace_csv.o $B/trace.o $B/tread.o \
            $B/tread_util.o $B/tread_text.o $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o \
            $B/png.o $B/outfile.o $B/trace_kraft.o $B/trace_kraft_check.o $B/tlanes.o \
