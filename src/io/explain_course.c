@@ -216,7 +216,7 @@ static const pt_cx_row rows[PT_NCXS] = {
       "(x_m, y_m, z_m) as given", "(x_m, y_m, z_m, w_m = 1) as given" },
     { "world", "model", "world", "the position's matrix M: v_w = M v_m",
       NULL, "x_w = (M00*x_m) + (M01*y_m) + (M02*z_m) + (M03*w_m), y_w, z_w, w_w likewise" },
-    { "view", "model", "view", "r7: add the position's translation; r9: subtract the "
+    { "view", "model / world", "view", "r7: add the position's translation; r9: subtract the "
       "camera's translation (its view vector)",
       "x_v = t_x + x_m, y_v = t_y + y_m, z_v = t_z + z_m",
       "x_v = (-1*v_x) + x_w, y_v = (-1*v_y) + y_w, z_v = (-1*v_z) + z_w, w = 1" },
@@ -361,7 +361,7 @@ static void product(pt_xt *t, const char *mname, const pt_jmat *m, const char *f
     for (c = 0; c < 4; c++) {
         if (c) pt_xt_add(t, " + ");
         pt_xt_add(t, "("); pt_xt_num(t, vcomp(m->col[c], k), 0); pt_xt_add(t, "*");
-        pt_xt_num(t, vcomp(in, c), 0); pt_xt_add(t, ")");
+        pt_xt_num(t, vcomp(in, c), 1); pt_xt_add(t, ")");
     }
     pt_xt_add(t, " = ");
     pt_xt_num(t, vcomp(out, k), 0);

@@ -286,8 +286,10 @@ static void show_course(const void *jv, int i)
     const pt_cx_row *in = pt_cx_row_of(j->steps[i]);
     static char b[16384];
 
-    fprintf(term.f, "stage %d of %d: %s (%s -> %s)\n", i + 1, j->nsteps, in->name, in->from,
-            in->to);
+    const char *from = in->from;
+
+    if (j->steps[i] == PT_CXS_VIEW) from = j->renderer == 9 ? "world" : "model";
+    fprintf(term.f, "stage %d of %d: %s (%s -> %s)\n", i + 1, j->nsteps, in->name, from, in->to);
     fprintf(term.f, "  what     %s\n", in->what);
     fprintf(term.f, "  formula  %s\n", j->renderer == 9 ? in->formula9 : in->formula7);
     pt_cx_stage(b, sizeof b, j, j->steps[i], "\n           ");
