@@ -218,7 +218,7 @@ static const pt_cx_row rows[PT_NCXS] = {
       NULL, "x_w = (M00*x_m) + (M01*y_m) + (M02*z_m) + (M03*w_m), y_w, z_w, w_w likewise" },
     { "view", "model / world", "view", "r7: add the position's translation; r9: subtract the "
       "camera's translation (its view vector)",
-      "x_v = t_x + x_m, y_v = t_y + y_m, z_v = t_z + z_m",
+      "x_v = x_t + x_m, y_v = y_t + y_m, z_v = z_t + z_m",
       "x_v = (-1*v_x) + x_w, y_v = (-1*v_y) + y_w, z_v = (-1*v_z) + z_w, w = 1" },
     { "camera", "view", "camera", "normalize the view volume: its rectangle l..r, b..t "
       "becomes -1..1 (perspective: skew, orthographic: shift, then scale)",

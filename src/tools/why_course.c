@@ -17,6 +17,7 @@
 #include "core/pipetrace.h"
 
 #define MAXCUT 4                 /* rectangle cuts kept per primitive */
+#define MAXWRITE 4               /* writes on the pixel kept per primitive */
 
 /* One primitive of a position, followed through the stages. */
 typedef struct cprim {
@@ -31,9 +32,11 @@ typedef struct cprim {
     uint64_t npix;               /* pixels it wrote */
     int nlit;                    /* pixel writes on the pixel asked about */
     uint64_t lit_order;          /* the last of them, in the render's order */
-    pt_rv_px_kind kind;          /*   its kind, */
-    float coverage;              /*   coverage, */
-    unsigned char b[3];          /*   and bytes */
+    struct write {               /* the first MAXWRITE of them: */
+        pt_rv_px_kind kind;      /*   the pixel line's kind, */
+        float coverage;          /*   the coverage, */
+        unsigned char b[3];      /*   the bytes written */
+    } w[MAXWRITE];
 } cprim;
 
 typedef struct cpos {
@@ -184,13 +187,16 @@ static void hit(whyc *w, const pt_rv_pixel *px, int x_vp, int y_vp, pt_rgb col, 
 
     if ((int64_t)px->par->x_ul + x_vp != w->X || (int64_t)px->par->y_ul + y_vp != w->Y) return;
     p = &w->pos[w->cur].p[w->r_prim];
-    p->nlit++;
     p->lit_order = ++w->order;
-    p->kind = px->kind;
-    p->coverage = f;
-    p->b[0] = pt_color_byte(col.r);
-    p->b[1] = pt_color_byte(col.g);
-    p->b[2] = pt_color_byte(col.b);
+    if (p->nlit < MAXWRITE) {
+        struct write *o = &p->w[p->nlit];
+        o->kind = px->kind;
+        o->coverage = f;
+        o->b[0] = pt_color_byte(col.r);
+        o->b[1] = pt_color_byte(col.g);
+        o->b[2] = pt_color_byte(col.b);
+    }
+    p->nlit++;
 }
 
 static void on_pixel(void *ud, const pt_rv_pixel *px)
@@ -276,6 +282,25 @@ static void show_clips(FILE *f, const whyc *w, const cprim *p)
                 p->p.kind == PT_RV_POINT ? "it lies" : "both ends lie beyond one edge");
 }
 
+/* The writes of p on the pixel, in order: kind, coverage, bytes. */
+static void show_writes(FILE *f, const pt_scene *s, const cprim *p)
+{
+    int k;
+
+    for (k = 0; k < p->nlit && k < MAXWRITE; k++) {
+        const struct write *o = &p->w[k];
+        if (k) fputs("; then ", f);
+        fputs(o->kind == PT_RV_PX_END ? "its last pixel (the end's colour as it is, no gamma)"
+              : o->kind == PT_RV_PX_AA ? "an anti-aliased step"
+              : o->kind == PT_RV_PX_POINT ? "a pixel of the point" : "a step", f);
+        fputs(", coverage ", f);
+        num(f, (double)o->coverage);
+        fprintf(f, ", bytes %d %d %d%s", o->b[0], o->b[1], o->b[2],
+                o->kind != PT_RV_PX_END && s->gamma ? " (gamma-encoded)" : "");
+    }
+    if (p->nlit > MAXWRITE) fprintf(f, "; %d writes here in all", p->nlit);
+}
+
 int pt_whyc_report(FILE *f, const pt_scene *s, int X, int Y, const pt_model *sel)
 {
     pt_rv_raster_ls rls;
@@ -332,14 +357,8 @@ int pt_whyc_report(FILE *f, const pt_scene *s, int X, int Y, const pt_model *sel
             if (!nlit++) fputs("lit by, in drawing order (the last write wins):\n", f);
             fputs("  ", f);
             prim_name(f, s, mi, k, p);
-            fprintf(f, ", drawn as primitive %llu: %s, coverage ", (unsigned long long)p->raster_no,
-                    p->kind == PT_RV_PX_END ? "its last pixel (the end's colour as it is, no "
-                    "gamma)" : p->kind == PT_RV_PX_AA ? "an anti-aliased step" : p->kind ==
-                    PT_RV_PX_POINT ? "a pixel of the point" : "a step");
-            num(f, (double)p->coverage);
-            fprintf(f, ", bytes %d %d %d%s", p->b[0], p->b[1], p->b[2],
-                    p->kind != PT_RV_PX_END && s->gamma ? " (gamma-encoded)" : "");
-            if (p->nlit > 1) fprintf(f, ", %d writes here", p->nlit);
+            fprintf(f, ", drawn as primitive %llu: ", (unsigned long long)p->raster_no);
+            show_writes(f, s, p);
             show_clips(f, &w, p);
             fputc('\n', f);
             if (p->lit_order > last) { last = p->lit_order; last_mi = mi; last_k = k; }
