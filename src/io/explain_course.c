@@ -214,8 +214,8 @@ int pt_cx_run(pt_cx_journey *j, const pt_scene *s, size_t mi, uint64_t v)
 static const pt_cx_row rows[PT_NCXS] = {
     { "model", "scene", "model", "the vertex as the scene gives it, and its colour",
       "(x_m, y_m, z_m) as given", "(x_m, y_m, z_m, w_m = 1) as given" },
-    { "world", "model", "world", "the position's matrix M: v_w = M v_m",
-      NULL, "x_w = (M00*x_m) + (M01*y_m) + (M02*z_m) + (M03*w_m), y_w, z_w, w_w likewise" },
+    { "world", "model", "world", "the position's matrix M: v_w = M v_m (renderer 9)",
+      "", "x_w = (M00*x_m) + (M01*y_m) + (M02*z_m) + (M03*w_m), y_w, z_w, w_w likewise" },
     { "view", "model / world", "view", "r7: add the position's translation; r9: subtract the "
       "camera's translation (its view vector)",
       "x_v = x_t + x_m, y_v = y_t + y_m, z_v = z_t + z_m",
@@ -230,34 +230,30 @@ static const pt_cx_row rows[PT_NCXS] = {
       "beyond it (z > n) is replaced by the point where the segment crosses it",
       "both z <= n: kept; both z > n: dropped; else t = (n - z1)/(z0 - z1), "
       "x = (1 - t)*x1 + t*x0, y likewise, z = n, colour (1 - t_)*c1 + t_*c0, t_ = (float)t",
-      "both z <= n: kept; both z > n: dropped; else t = (n - z1)/(z0 - z1), "
-      "x = (1 - t)*x1 + t*x0, y likewise, z = n, colour (1 - t_)*c1 + t_*c0, t_ = (float)t" },
+      NULL },
     { "image", "camera", "image plane", "project onto the image plane z = -1: divide by the "
       "distance -z_c (orthographic: drop z)",
       "x_p = x_c / -z_c, y_p = y_c / -z_c, z_p = -1 (orthographic: x_p = x_c, y_p = y_c, z_p = 0)",
-      "x_p = x_c / -z_c, y_p = y_c / -z_c, z_p = -1 (orthographic: x_p = x_c, y_p = y_c, z_p = 0)" },
+      NULL },
     { "clip", "image plane", "image plane", "clip each segment to the view rectangle "
       "-1..1, one edge at a time (x = +1, x = -1, y = +1, y = -1)",
       "t = (e - x_o)/(x_i - x_o), x = e, y = (1 - t)*y_o + t*y_i (edge x = e; y = e "
       "likewise), z = 0, colour (1 - t_)*c_o + t_*c_i",
-      "t = (e - x_o)/(x_i - x_o), x = e, y = (1 - t)*y_o + t*y_i (edge x = e; y = e "
-      "likewise), z = 0, colour (1 - t_)*c_o + t_*c_i" },
+      NULL },
     { "pixel", "image plane", "pixel plane", "stretch the view rectangle over the "
       "viewport's logical pixels (the rasterizer's first step)",
       "x_pp = 0.5 + w/2.001 * (x_p + 1), y_pp = 0.5 + h/2.001 * (y_p + 1)",
-      "x_pp = 0.5 + w/2.001 * (x_p + 1), y_pp = 0.5 + h/2.001 * (y_p + 1)" },
+      NULL },
     { "viewport", "pixel plane", "viewport", "round to the logical pixel with Java's "
       "Math.round, count from 0 and from the top row down, then place in the framebuffer",
       "x_vp = Math.round(x_pp) - 1, y_vp = h - Math.round(y_pp); x_fb = x_ul + x_vp, "
       "y_fb = y_ul + y_vp; index = y_fb*W + x_fb",
-      "x_vp = Math.round(x_pp) - 1, y_vp = h - Math.round(y_pp); x_fb = x_ul + x_vp, "
-      "y_fb = y_ul + y_vp; index = y_fb*W + x_fb" },
+      NULL },
     { "raster", "viewport", "framebuffer", "the colour bytes the rasterizer writes at the "
       "vertex's pixel: anti-aliasing's weight and gamma where they apply",
       "weight f = (float)(y - floor(y)); low = (1 - f)*c + f*bg; g = (float)Math.pow(c, 1/2.2); "
       "byte = (int)((double)(g*255f) + 0.5)",
-      "weight f = (float)(y - floor(y)); low = (1 - f)*c + f*bg; g = (float)Math.pow(c, 1/2.2); "
-      "byte = (int)((double)(g*255f) + 0.5)" },
+      NULL },
 };
 
 const pt_cx_row *pt_cx_row_of(pt_cx_step st)
@@ -265,10 +261,18 @@ const pt_cx_row *pt_cx_row_of(pt_cx_step st)
     return &rows[st];
 }
 
+const char *pt_cx_formula(int renderer, pt_cx_step st)
+{
+    const pt_cx_row *r = &rows[st];
+
+    if (st == PT_CXS_WORLD) return renderer == 9 ? r->formula9 : NULL;
+    return renderer == 9 && r->formula9 ? r->formula9 : r->formula7;
+}
+
 int pt_cx_has_rows(int renderer, pt_cx_step st)
 {
     const pt_cx_row *r = &rows[st];
-    const char *f = renderer == 9 ? r->formula9 : r->formula7;
+    const char *f = pt_cx_formula(renderer, st);
 
     return r->name && r->from && r->to && r->what && f && *f;
 }

@@ -96,13 +96,17 @@ typedef struct pt_cx_journey {
 int pt_cx_run(pt_cx_journey *j, const pt_scene *s, size_t mi, uint64_t v);
 
 /* Step st's name ("camera"), the spaces it maps between, what it does and
-** its formula for renderer r (7 or 9; perspective or not).  NULL for a step
-** renderer r does not have.  Can't fail. */
+** its formula.  Can't fail. */
 typedef struct pt_cx_row {
     const char *name, *from, *to, *what;
-    const char *formula7, *formula9;     /* NULL: the renderer has no such stage */
+    const char *formula7;        /* renderer 7's (and 9's, without formula9) */
+    const char *formula9;        /* NULL: renderer 9's is renderer 7's */
 } pt_cx_row;
 const pt_cx_row *pt_cx_row_of(pt_cx_step st);
+
+/* Step st's formula for renderer 7 or 9; NULL for the world stage of
+** renderer 7, which has none.  Can't fail. */
+const char *pt_cx_formula(int renderer, pt_cx_step st);
 
 /* 1 when explain has rows (name, what, a formula) for step st of renderer r.
 ** tests/unit/test_explain.c asks it for every stage course.c drives.  Can't fail. */

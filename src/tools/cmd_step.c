@@ -291,7 +291,7 @@ static void show_course(const void *jv, int i)
     if (j->steps[i] == PT_CXS_VIEW) from = j->renderer == 9 ? "world" : "model";
     fprintf(term.f, "stage %d of %d: %s (%s -> %s)\n", i + 1, j->nsteps, in->name, from, in->to);
     fprintf(term.f, "  what     %s\n", in->what);
-    fprintf(term.f, "  formula  %s\n", j->renderer == 9 ? in->formula9 : in->formula7);
+    fprintf(term.f, "  formula  %s\n", pt_cx_formula(j->renderer, j->steps[i]));
     pt_cx_stage(b, sizeof b, j, j->steps[i], "\n           ");
     fprintf(term.f, "  here     %s\n", b);
 }
