@@ -157,19 +157,11 @@ static void on_pixel(void *ud, const pt_rv_pixel *px)
     j->npx++;
 }
 
-int pt_cx_run(pt_cx_journey *j, const pt_scene *s, size_t mi, uint64_t v)
+/* Start j for scene s: renderer, switches, viewport and framebuffer. */
+static void begin(pt_cx_journey *j, const pt_scene *s)
 {
-    pt_rv_raster_ls rls;
-    pt_course_ls ls;
-    pt_fb fb;
-    int rc, i;
-    pt_course_stage cs;
-
     memset(j, 0, sizeof *j);
     j->renderer = s->renderer;
-    j->mi = mi;
-    j->v = v;
-    j->nv = s->models[mi].nv;
     j->nearclip = s->nearclip;
     j->born = PT_CST_MODEL;
     j->par.w = s->vp_w;  j->par.h = s->vp_h;
@@ -179,6 +171,20 @@ int pt_cx_run(pt_cx_journey *j, const pt_scene *s, size_t mi, uint64_t v)
     j->par.antialias = s->antialias;
     j->par.gamma = s->gamma;
     j->cur = (size_t)-1;
+}
+
+int pt_cx_run(pt_cx_journey *j, const pt_scene *s, size_t mi, uint64_t v)
+{
+    pt_rv_raster_ls rls;
+    pt_course_ls ls;
+    pt_fb fb;
+    int rc, i;
+    pt_course_stage cs;
+
+    begin(j, s);
+    j->mi = mi;
+    j->v = v;
+    j->nv = s->models[mi].nv;
 
     memset(&rls, 0, sizeof rls);
     rls.pixel = on_pixel;
@@ -801,4 +807,27 @@ size_t pt_cx_stage(char *buf, size_t len, const pt_cx_journey *j, pt_cx_step st,
     case PT_CXS_RASTER:   step_raster(&t, j, sep); break;
     }
     return t.len;
+}
+
+size_t pt_cx_explain_rec(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
+                         const pt_cx_rec *r, const char *sep)
+{
+    static const pt_course_stage before[PT_NCST] = {PT_CST_MODEL, PT_CST_MODEL, PT_CST_WORLD,
+        PT_CST_VIEW, PT_CST_CAMERA, PT_CST_NEARCLIP, PT_CST_IMAGE};
+    pt_course_stage pre = r->st == PT_CST_VIEW && s->renderer != 9 ? PT_CST_MODEL : before[r->st];
+    pt_cx_journey j;
+
+    begin(&j, s);
+    j.cam = *cam;
+    j.translate = r->pos->translate;
+    j.matrix = r->pos->matrix;
+    j.at[pre] = r->prev;
+    j.at[r->st] = r->cur;
+    if (r->color) { j.has_col[r->st] = 1; j.col[r->st] = *r->color; }
+    if (r->cut) {
+        j.born = r->st;
+        j.cut = *r->cut;
+        j.cut_prim = r->cut_prim;
+    }
+    return pt_cx_stage(buf, len, &j, pt_cx_step_of(r->st), sep);
 }

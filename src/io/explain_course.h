@@ -121,4 +121,23 @@ pt_cx_step pt_cx_step_of(pt_course_stage cs);
 size_t pt_cx_stage(char *buf, size_t len, const pt_cx_journey *j, pt_cx_step st,
                    const char *sep);
 
+/* One vertex record of a trace of a renderer 7 or 9 scene (--explain). */
+typedef struct pt_cx_rec {
+    pt_course_stage st;          /* the stage whose record it is */
+    const pt_course_pos *pos;    /* its position */
+    pt_vec4 prev;                /* the vertex after the stage before (not
+                                 ** read for the model stage nor for a cut) */
+    pt_vec4 cur;                 /* the vertex after st */
+    const pt_rgb *color;         /* its colour, or NULL */
+    const pt_rv_cut *cut;        /* a clip stage's new vertex: the cut that
+                                 ** made it, else NULL */
+    uint64_t cut_prim;           /*   of that stage's primitive cut_prim (1-based) */
+} pt_cx_rec;
+
+/* Record r of scene s (camera cam), its stage's formula with its numbers put
+** in, as pt_cx_stage() writes it for step.  Returns the length (>= len: cut
+** short).  Can't fail. */
+size_t pt_cx_explain_rec(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
+                         const pt_cx_rec *r, const char *sep);
+
 #endif

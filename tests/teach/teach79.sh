@@ -220,6 +220,35 @@ while IFS= read -r rec; do
         grep -q "^color $last: the last write" "$tmp/out"
 done < "$tmp/px"
 
+# ---- teach79-9: --explain on the trace: step's text, under each vertex record
+# here STAGE: step's "here" block of STAGE in $tmp/out, its lines joined by "; "
+here() {
+    awk -v st="$1" '/^stage [0-9]+ of [0-9]+: / { on = ($5 == st) } on && /^  here / { p = 1 }
+        on && p && /^ *$/ { exit } on && p { sub(/^  here +|^ +/, ""); s = s (n++ ? "; " : "") $0 }
+        END { print s }' "$tmp/out"
+}
+for s in $c/r7-asym-03.scene $c/r9-mat-07-order-TRS.scene; do
+    run $s --explain
+    check "teach79-9.1 --explain $(basename $s): every vertex record has its line" \
+        test "$(grep -c '^[^ ].* v[0-9]* *[a-z]* *x = ' "$tmp/out")" = "$(grep -c '^              [a-zA-Z]' "$tmp/out")" -a "$rc" = 0
+    tr ';' '\n' < "$tmp/out" | sed 's/^ *//' > "$tmp/lines"
+    cp "$tmp/lines" "$tmp/out"
+    true_eqs "teach79-9.2 ... its equations" 40
+    run step $s --vertex 1
+    for st in model view camera image; do
+        want=$(here $st)
+        got=$("$exe" $s --explain --format jsonl | grep -F '"v":1,"stage":"'$st'"' | head -1 |
+              sed 's/.*"explain":"\(.*\)"}$/\1/')
+        check "teach79-9.3 ... jsonl $st of v1 explains as step does" test -n "$want" -a "$got" = "$want"
+    done
+done
+run $c/r9-near-05.scene --explain --format jsonl
+check "teach79-9.4 ... a near-clipped vertex: its cut" grep -q '"v":13,"stage":"nearclip".*"explain":"made by the near clip of segment 3: z0 = ' "$tmp/out"
+run $c/r7-clip-08-corner-ur.scene --explain
+check "teach79-9.5 ... a rectangle-clipped vertex: its cut" grep -q '^              made by the clip of segment 1 at the edge x = +1: ' "$tmp/out"
+run $c/r7-clip-08-corner-ur.scene --explain --format csv
+check "teach79-9.6 ... not with csv: a usage error" test "$rc" = 1
+
 # ---- teach79-8: what step refuses, and one stage at a time
 run step $c/r7-asym-03.scene --vertex 99
 check "teach79-8.1 no vertex 99: exit 2, said" test "$rc" = 2 -a -n "$(grep 'no position of .* has a vertex 99, not even after the clips' "$tmp/err")"
