@@ -687,11 +687,12 @@ static pt_rgb gamma_text(pt_xt *t, pt_rgb c, int on, const char *sep)
     return g;
 }
 
-/* "bytes = (int)((double)(c*255f) + 0.5) = (a, b, c)" and the check against
-** what the rasterizer wrote. */
-static void bytes_text(pt_xt *t, pt_rgb c, pt_rgb written, const char *sep)
+/* "bytes = (int)((double)(c*255f) + 0.5) of (...) = (a, b, c)", the colour
+** called cn, and the check against what the rasterizer wrote. */
+static void bytes_text(pt_xt *t, const char *cn, pt_rgb c, pt_rgb written, const char *sep)
 {
-    pt_xt_add(t, sep); pt_xt_add(t, "bytes = (int)((double)(c*255f) + 0.5) of ");
+    pt_xt_add(t, sep); pt_xt_add(t, "bytes = (int)((double)(");
+    pt_xt_add(t, cn); pt_xt_add(t, "*255f) + 0.5) of ");
     rgb(t, c); pt_xt_add(t, " = "); bytes(t, c);
     if (memcmp(&c, &written, sizeof c) != 0) {
         pt_xt_add(t, " (the rasterizer wrote "); bytes(t, written); pt_xt_add(t, ")");
@@ -710,7 +711,7 @@ static void pixel_line(pt_xt *t, const pt_cx_journey *j, const pt_cx_px *p, cons
         pt_xt_add(t, " (rasterized): its last pixel, coverage 1, in the end's colour as it is "
                      "(no gamma, no anti-aliasing): c = ");
         rgb(t, c);
-        bytes_text(t, c, px->c[0], sep);
+        bytes_text(t, "c", c, px->c[0], sep);
         return;
     case PT_RV_PX_POINT:
     case PT_RV_PX_STEP:
@@ -719,7 +720,7 @@ static void pixel_line(pt_xt *t, const pt_cx_journey *j, const pt_cx_px *p, cons
                     "the end's, c = (float)|c0 + slope*0| = ");
         rgb(t, c);
         g = gamma_text(t, c, j->par.gamma, sep);
-        bytes_text(t, g, px->c[0], sep);
+        bytes_text(t, j->par.gamma ? "c'" : "c", g, px->c[0], sep);
         return;
     case PT_RV_PX_AA: {
         double a = px->transposed ? px->x_pp : px->y_pp;
@@ -757,7 +758,7 @@ static void pixel_line(pt_xt *t, const pt_cx_journey *j, const pt_cx_px *p, cons
         }
         mix.r = lower ? lo[0] : hi[0]; mix.g = lower ? lo[1] : hi[1]; mix.b = lower ? lo[2] : hi[2];
         g = gamma_text(t, mix, j->par.gamma, sep);
-        bytes_text(t, g, px->c[lower ? 0 : 1], sep);
+        bytes_text(t, j->par.gamma ? "c'" : "c", g, px->c[lower ? 0 : 1], sep);
         return;
     }
     }
