@@ -13,6 +13,7 @@
 #include <string.h>
 #include "io/explain_course.h"
 #include "io/explain_text.h"
+#include "io/explain.h"
 #include "core/pipetrace.h"
 
 /* ===== listening to the render ===== */
@@ -76,8 +77,15 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
     }
     if (st == PT_CST_CLIP) {
         pt_vec2 pp = pixel_plane(j);
-        j->px_x = (int)(pt_java_round(pp.x) - 1);
-        j->px_y = (int)(j->par.h - pt_java_round(pp.y));
+        pt_vec4 p = j->at[PT_CST_CLIP];
+        /* the rasterizer maps only what the clip keeps: |x|, |y| <= 1 (or NaN,
+        ** which every comparison lets through), so x_pp is within the
+        ** viewport and Math.round fits an int */
+        j->mapped = !(fabs(p.x) > 1 || fabs(p.y) > 1);
+        if (j->mapped) {
+            j->px_x = (int64_t)pt_explain_java_int_round(pp.x) - 1;
+            j->px_y = (int64_t)j->par.h - pt_explain_java_int_round(pp.y);
+        }
     }
 }
 
@@ -642,6 +650,12 @@ static void step_viewport(pt_xt *t, const pt_cx_journey *j, const char *sep)
     double rx = pt_java_round(pp.x), ry = pt_java_round(pp.y);
     int64_t x_fb = (int64_t)j->par.x_ul + j->px_x, y_fb = (int64_t)j->par.y_ul + j->px_y;
 
+    if (!j->mapped) {
+        pt_xt_add(t, "none: the vertex lies outside the view rectangle, and the rasterizer "
+                     "maps only what the clip keeps (the clipped segments' ends)");
+        return;
+    }
+
     pt_xt_add(t, "x_vp = Math.round(x_pp) - 1 = Math.round("); pt_xt_num(t, pp.x, 0);
     pt_xt_add(t, ") - 1 = "); pt_xt_num(t, rx, 0); pt_xt_add(t, " - 1 = ");
     pt_xt_int(t, j->px_x, 0);
@@ -768,6 +782,10 @@ static void step_raster(pt_xt *t, const pt_cx_journey *j, const char *sep)
 {
     size_t k;
 
+    if (!j->mapped) {
+        pt_xt_add(t, "no pixel: the vertex lies outside the view rectangle");
+        return;
+    }
     if (!j->nends) {
         pt_xt_add(t, "no primitive the rasterizer draws has an end at vertex ");
         pt_xt_int(t, (int64_t)j->v, 0);

@@ -86,7 +86,8 @@ typedef struct pt_cx_journey {
     pt_rv_prim clip_prim;        /* the clip stage's primitive, cut so far */
     int end_here;                /* the primitive being drawn ends at v, */
     pt_rgb end_c;                /*   in this colour */
-    int px_x, px_y;              /* the vertex's viewport pixel (after clip) */
+    int mapped;                  /* 1: inside the view rectangle after the clip, */
+    int64_t px_x, px_y;          /*   its viewport pixel */
 } pt_cx_journey;
 
 /* Render s (renderer 7 or 9) and keep vertex v (1-based; past the model's

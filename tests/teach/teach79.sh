@@ -126,6 +126,7 @@ check "teach79-2.9 ... image: x_p = x_c" grep -q "^  here     x_p = x_c = " "$tm
 run step $s --vertex 2
 check "teach79-2.10 the end cut off: its segment, t, the new vertex" grep -q "^           segment 1 is cut at x = +1, t = 0.4444444444444445: its end here is replaced by vertex 3" "$tmp/out"
 true_eqs "teach79-2.11 r7 orthographic" 8
+check "teach79-2.12 ... outside the view rectangle: no pixel of its own" has "  here     none: the vertex lies outside the view rectangle, and the rasterizer maps only what the clip keeps (the clipped segments' ends)"
 
 # ---- teach79-3: renderer 9, a vertex the near clip made
 s=$c/r9-near-05.scene
