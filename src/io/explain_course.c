@@ -18,34 +18,20 @@
 
 /* ===== listening to the render ===== */
 
+/* The camera, and the position being worked on: the one a POSITION
+** (Pipeline) or STEP (Pipeline2) mark names. */
 static void on_mark(void *ud, pt_course_mark k, const pt_course_cam *cam,
                     const pt_course_pos *pos)
 {
     pt_cx_journey *j = ud;
 
-    switch (k) {
-    case PT_CMK_BEGIN:
-        j->cam = *cam;
-        break;
-    case PT_CMK_POSITION:
-    case PT_CMK_STEP:
-        j->cur = pos->index;
-        j->prim_no = 0;
-        if (pos->index == j->mi) {
-            j->translate = pos->translate;
-            j->matrix = pos->matrix;
-        }
-        break;
-    case PT_CMK_MODEL:
-    case PT_CMK_MODEL_END:
-    case PT_CMK_MODEL_HIDDEN:
-    case PT_CMK_POSITION_END:
-    case PT_CMK_POSITION_HIDDEN:
-    case PT_CMK_END:
-    case PT_CMK_PHASE:
-    case PT_CMK_STEP_END:
-    case PT_CMK_PHASE_END:
-        break;
+    if (k == PT_CMK_BEGIN) j->cam = *cam;
+    if (k != PT_CMK_POSITION && k != PT_CMK_STEP) return;
+    j->cur = pos->index;
+    j->prim_no = 0;
+    if (pos->index == j->mi) {
+        j->translate = pos->translate;
+        j->matrix = pos->matrix;
     }
 }
 

@@ -63,30 +63,15 @@ typedef struct whyc {
     int failed;
 } whyc;
 
+/* The position being worked on: the one a POSITION (Pipeline) or STEP
+** (Pipeline2) mark names. */
 static void on_mark(void *ud, pt_course_mark k, const pt_course_cam *cam,
                     const pt_course_pos *pos)
 {
     whyc *w = ud;
 
-    switch (k) {
-    case PT_CMK_BEGIN:
-        w->n = cam->cam.n;
-        break;
-    case PT_CMK_POSITION:
-    case PT_CMK_STEP:
-        w->cur = pos->index;
-        break;
-    case PT_CMK_MODEL:
-    case PT_CMK_MODEL_END:
-    case PT_CMK_MODEL_HIDDEN:
-    case PT_CMK_POSITION_END:
-    case PT_CMK_POSITION_HIDDEN:
-    case PT_CMK_END:
-    case PT_CMK_PHASE:
-    case PT_CMK_STEP_END:
-    case PT_CMK_PHASE_END:
-        break;
-    }
+    if (k == PT_CMK_BEGIN) w->n = cam->cam.n;
+    if (k == PT_CMK_POSITION || k == PT_CMK_STEP) w->cur = pos->index;
 }
 
 static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
