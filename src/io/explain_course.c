@@ -10,6 +10,7 @@
 ** the colour bytes are stages/pt_color.h's functions.
 */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "io/explain_course.h"
 #include "io/explain_text.h"
@@ -206,6 +207,43 @@ int pt_cx_run(pt_cx_journey *j, const pt_scene *s, size_t mi, uint64_t v)
     j->steps[j->nsteps++] = PT_CXS_PIXEL;
     j->steps[j->nsteps++] = PT_CXS_VIEWPORT;
     j->steps[j->nsteps++] = PT_CXS_RASTER;
+    return 0;
+}
+
+/* pt_cx_find's listener: the most vertices each position's model had. */
+typedef struct finder { size_t *most; } finder;
+
+static void find_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
+                       const pt_rv_model *m)
+{
+    finder *f = ud;
+
+    (void)st;
+    if (m->nv > f->most[pos->index]) f->most[pos->index] = m->nv;
+}
+
+int pt_cx_find(const pt_scene *s, uint64_t v, size_t *mi)
+{
+    pt_course_ls ls;
+    finder f;
+    pt_fb fb;
+    size_t k;
+    int rc;
+
+    f.most = calloc(s->nmodels ? s->nmodels : 1, sizeof *f.most);
+    if (!f.most) return -1;
+    memset(&ls, 0, sizeof ls);
+    ls.stage = find_stage;
+    ls.ud = &f;
+    if (pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) != 0) { free(f.most); return -1; }
+    rc = pt_course_render(s, &fb, &ls);
+    pt_fb_free(&fb);
+    for (k = 0; rc == 0 && k < s->nmodels; k++)
+        if (f.most[k] >= v) break;
+    free(f.most);
+    if (rc != 0) return -1;
+    if (k == s->nmodels) return 1;
+    *mi = k;
     return 0;
 }
 

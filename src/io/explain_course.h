@@ -96,6 +96,11 @@ typedef struct pt_cx_journey {
 ** large); -1 when out of memory.  s is not changed. */
 int pt_cx_run(pt_cx_journey *j, const pt_scene *s, size_t mi, uint64_t v);
 
+/* The first position (in file order) whose model has a vertex v after some
+** stage (its own, or one a clip stage made), into *mi: one render.
+** Returns 0; 1 when none has; -1 when out of memory.  */
+int pt_cx_find(const pt_scene *s, uint64_t v, size_t *mi);
+
 /* Step st's name ("camera"), the spaces it maps between, what it does and
 ** its formula.  Can't fail. */
 typedef struct pt_cx_row {

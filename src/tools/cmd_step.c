@@ -312,11 +312,8 @@ static int course_step(const pt_scene *s, const char *model, uint64_t v, int all
         if (!m) return PT_EXIT_INPUT;
         mi = (size_t)(m - s->models);
         rc = pt_cx_run(&j, s, mi, v);
-    } else {
-        for (k = 0; k < s->nmodels && rc == 1; k++)
-            if (s->models[k].nv >= v) rc = pt_cx_run(&j, s, mi = k, v);
-        for (k = 0; k < s->nmodels && rc == 1; k++)
-            rc = pt_cx_run(&j, s, mi = k, v);
+    } else if ((rc = pt_cx_find(s, v, &mi)) == 0) {
+        rc = pt_cx_run(&j, s, mi, v);
     }
     if (rc < 0) {
         fprintf(stderr, "pipetrace step: %s: out of memory\n", s->path);

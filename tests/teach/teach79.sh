@@ -259,5 +259,9 @@ feed '\n\nb\nq\n' step $c/r9-near-05.scene --vertex 13 --interactive
 check "teach79-8.3 interactive: Enter, Enter, b, q shows stages 1 2 3 2" test "$(grep '^stage' "$tmp/out" | cut -c7 | tr -d '\n')" = 1232
 run step $c/r9-near-05.scene --vertex 1 --model nosuch
 check "teach79-8.4 --model unknown: exit 2" test "$rc" = 2
+run step $c/r9-near-05.scene --vertex 16
+check "teach79-8.5 without --model, a vertex only a clip made: its position is found" grep -q "^pipetrace step: vertex 16 of model near (position near) in " "$tmp/out"
+run step $c/r9-pipe2-two-models.scene --vertex 2
+check "teach79-8.6 without --model: the first position with that vertex" grep -q "^pipetrace step: vertex 2 of model a (position a) in " "$tmp/out"
 
 report
