@@ -262,10 +262,10 @@ check "teach79-8.4 --model unknown: exit 2" test "$rc" = 2
 run step $c/r9-near-05.scene --vertex 16
 check "teach79-8.5 without --model, a vertex only a clip made: its position is found" grep -q "^pipetrace step: vertex 16 of model near (position near) in " "$tmp/out"
 run step $c/r9-pipe2-two-models.scene --vertex 2
+check "teach79-8.6 without --model: the first position with that vertex" grep -q "^pipetrace step: vertex 2 of model a (position a) in " "$tmp/out"
 run step $c/r9-hidden-warn-p2.scene --vertex 1 --model hp
 check "teach79-8.7 a hidden position: exit 2, says it is hidden" test "$rc" = 2 -a -n "$(grep 'no vertex 1 (it has 0 after the clips; it is hidden)' "$tmp/err")"
 run why $c/r9-hidden-warn-p2.scene 5 5
 check "teach79-8.8 why: hidden models are named, nothing of them drawn" grep -q "^  model hm: hidden, nothing of it is drawn" "$tmp/out"
-check "teach79-8.6 without --model: the first position with that vertex" grep -q "^pipetrace step: vertex 2 of model a (position a) in " "$tmp/out"
 
 report
