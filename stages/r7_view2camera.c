@@ -4,7 +4,7 @@
 */
 #include "r7_view2camera.h"
 
-pt_vec4 pt_r7_view2camera(pt_vec4 v, const pt_rv_camera *cam)
+pt_vec4 pt_r7_view2camera_shift(pt_vec4 v, const pt_rv_camera *cam)
 {
     double l = cam->l, r = cam->r, b = cam->b, t = cam->t;
     pt_vec4 c;
@@ -16,6 +16,16 @@ pt_vec4 pt_r7_view2camera(pt_vec4 v, const pt_rv_camera *cam)
         c.x = v.x - (r + l)/2.0;            /* translate: x - (r+l)/2 */
         c.y = v.y - (t + b)/2.0;
     }
+    c.z = v.z;
+    c.w = 1.0;
+    return c;
+}
+
+pt_vec4 pt_r7_view2camera(pt_vec4 v, const pt_rv_camera *cam)
+{
+    double l = cam->l, r = cam->r, b = cam->b, t = cam->t;
+    pt_vec4 c = pt_r7_view2camera_shift(v, cam);
+
     c.x = (2.0 * c.x)/(r - l);              /* scale: 2x/(r-l) */
     c.y = (2.0 * c.y)/(t - b);
     c.z = v.z;

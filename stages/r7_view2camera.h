@@ -28,4 +28,8 @@
 /* v in camera coordinates for cam (its perspective, l, r, b, t); w = 1.
 ** This function can't fail (a flat rectangle gives infinities or NaN, as in Java). */
 pt_vec4 pt_r7_view2camera(pt_vec4 v, const pt_rv_camera *cam);
+/* Its first half, the x and y before the scaling: the skew (perspective) or
+** the translation (orthographic); z and w as the result's.  pipetrace step
+** shows it.  This function can't fail. */
+pt_vec4 pt_r7_view2camera_shift(pt_vec4 v, const pt_rv_camera *cam);
 #endif

@@ -71,6 +71,7 @@ course          20 python3 tests/course/check.py $B/pipetrace
 selfcheck       31 sh tests/teach/selfcheck.sh $B/pipetrace
 extreme          1 sh tests/cli/extreme.sh $B/pipetrace
 teach            1 sh tests/teach/teach.sh $B/pipetrace
+teach79          2 sh tests/teach/teach79.sh $B/pipetrace
 classroom        6 sh tests/teach/classroom.sh $B/pipetrace
 class           14 sh tests/teach/class.sh $B/pipetrace
 quiz79           2 sh tests/teach/quiz79.sh $B/pipetrace

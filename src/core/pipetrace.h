@@ -40,6 +40,7 @@
 #include "stages/m7_screen2viewport.h"
 #include "stages/ms_clip_segment.h"    /* the matrix camera's: clip to the CVV */
 #include "stages/rv_raster.h"          /* renderers 7 and 9: the rasterizer */
+#include "stages/r7_view2camera.h"     /* renderer 7's camera (step shows its halves) */
 #include "stages/wasm/pt_wasm_in.h"    /* the journey page's module: where its inputs go */
 /* the core: parse, plan, run, listen; the DDA; one point's journey */
 #include "core/scene.h"                /* the scene, parsed */

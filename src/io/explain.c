@@ -9,6 +9,7 @@
 #include <math.h>
 #include <string.h>
 #include "io/explain.h"
+#include "io/explain_text.h"
 #include "core/pipetrace.h"
 #include "io/numfmt.h"
 
@@ -38,13 +39,7 @@ const char *pt_coord_name(pt_stage st, int k)
 
 /* ===== the text appender ===== */
 
-/* Text being written into buf[0..cap); len counts what would have been written. */
-typedef struct text {
-    char *buf;
-    size_t cap, len;
-} text;
-
-static void text_init(text *t, char *buf, size_t cap)
+void pt_xt_init(pt_xt *t, char *buf, size_t cap)
 {
     t->buf = buf;
     t->cap = cap;
@@ -52,25 +47,23 @@ static void text_init(text *t, char *buf, size_t cap)
     if (cap) buf[0] = '\0';
 }
 
-static void add(text *t, const char *s)
+void pt_xt_add(pt_xt *t, const char *s)
 {
     for (; *s; s++, t->len++)
         if (t->len + 1 < t->cap) t->buf[t->len] = *s;
     if (t->cap) t->buf[t->len < t->cap ? t->len : t->cap - 1] = '\0';
 }
 
-/* A number as written by pt_fmt_shortest; in parentheses when paren is set
-** and the number is negative ("-1 + (-1.5)"). */
-static void add_num(text *t, double x, int paren)
+void pt_xt_num(pt_xt *t, double x, int paren)
 {
     char b[PT_NUMLEN];
 
     pt_fmt_shortest(b, x);
-    if (paren && b[0] == '-') { add(t, "("); add(t, b); add(t, ")"); }
-    else add(t, b);
+    if (paren && b[0] == '-') { pt_xt_add(t, "("); pt_xt_add(t, b); pt_xt_add(t, ")"); }
+    else pt_xt_add(t, b);
 }
 
-static void add_int(text *t, int64_t x, int paren)
+void pt_xt_int(pt_xt *t, int64_t x, int paren)
 {
     char b[24], *o = b + sizeof b - 1;
     uint64_t u = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
@@ -78,21 +71,21 @@ static void add_int(text *t, int64_t x, int paren)
     *o = '\0';
     do { *--o = (char)('0' + u % 10); u /= 10; } while (u);
     if (x < 0) *--o = '-';
-    if (paren && x < 0) { add(t, "("); add(t, o); add(t, ")"); }
-    else add(t, o);
+    if (paren && x < 0) { pt_xt_add(t, "("); pt_xt_add(t, o); pt_xt_add(t, ")"); }
+    else pt_xt_add(t, o);
 }
 
 /* "(a, b)" of two integers */
-static void add_pair(text *t, int64_t a, int64_t b)
+static void add_pair(pt_xt *t, int64_t a, int64_t b)
 {
-    add(t, "("); add_int(t, a, 0); add(t, ", "); add_int(t, b, 0); add(t, ")");
+    pt_xt_add(t, "("); pt_xt_int(t, a, 0); pt_xt_add(t, ", "); pt_xt_int(t, b, 0); pt_xt_add(t, ")");
 }
 
 /* "name = " */
-static void add_lhs(text *t, pt_stage st, int k)
+static void add_lhs(pt_xt *t, pt_stage st, int k)
 {
-    add(t, pt_stage_infos[st].coord[k]);
-    add(t, " = ");
+    pt_xt_add(t, pt_stage_infos[st].coord[k]);
+    pt_xt_add(t, " = ");
 }
 
 /* Component k of a real-valued record. */
@@ -137,12 +130,12 @@ int32_t pt_explain_java_int_round(double x)
 
 /* Where Java parts from pipetrace: " (the Java renderer's (int)Math.round(x_pp)
 ** gives -1 here)". */
-static void add_java(text *t, double x, int k)
+static void add_java(pt_xt *t, double x, int k)
 {
-    add(t, k == 0 ? " (the Java renderer's (int)Math.round(x_pp) gives "
+    pt_xt_add(t, k == 0 ? " (the Java renderer's (int)Math.round(x_pp) gives "
                   : " (the Java renderer's (int)Math.round(y_pp) gives ");
-    add_int(t, pt_explain_java_int_round(x), 0);
-    add(t, " here)");
+    pt_xt_int(t, pt_explain_java_int_round(x), 0);
+    pt_xt_add(t, " here)");
 }
 
 /* ===== one coordinate's formula: a function a stage ===== */
@@ -151,146 +144,146 @@ static void add_java(text *t, double x, int k)
 ** the stage before, what the stage was handed) put in, and cur's result.
 ** One function per stage, in stage_rows[] below; a stage's own function
 ** names its coordinates (add_lhs) and knows its formula. */
-typedef void (*coord_fn)(text *t, const pt_journey *j, const pt_vrec *prev,
+typedef void (*coord_fn)(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                          const pt_vrec *cur, int k);
 
-static void coord_model(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_model(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                         const pt_vrec *cur, int k)      /* as given */
 {
     (void)j; (void)prev;
     add_lhs(t, PT_STAGE_MODEL, k);
-    add_num(t, comp(cur, k), 0);
+    pt_xt_num(t, comp(cur, k), 0);
 }
 
-static void coord_camera(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_camera(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                          const pt_vrec *cur, int k)     /* x_c = x_m + x_t */
 {
     add_lhs(t, PT_STAGE_CAMERA, k);
-    add(t, pt_stage_infos[PT_STAGE_MODEL].coord[k]);
-    add(t, k == 0 ? " + x_t = " : k == 1 ? " + y_t = " : " + z_t = ");
-    add_num(t, comp(prev, k), 0); add(t, " + ");
-    add_num(t, tcomp(j->par.translate, k), 1); add(t, " = ");
-    add_num(t, comp(cur, k), 0);
+    pt_xt_add(t, pt_stage_infos[PT_STAGE_MODEL].coord[k]);
+    pt_xt_add(t, k == 0 ? " + x_t = " : k == 1 ? " + y_t = " : " + z_t = ");
+    pt_xt_num(t, comp(prev, k), 0); pt_xt_add(t, " + ");
+    pt_xt_num(t, tcomp(j->par.translate, k), 1); pt_xt_add(t, " = ");
+    pt_xt_num(t, comp(cur, k), 0);
 }
 
-static void coord_image(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_image(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                         const pt_vrec *cur, int k)
 {
     add_lhs(t, PT_STAGE_IMAGE, k);
     if (k == 2) {                                       /* z_ip = -1 or 0 */
-        add_num(t, cur->z, 0);
-        add(t, j->par.perspective ? " (the image plane)" : " (orthographic)");
+        pt_xt_num(t, cur->z, 0);
+        pt_xt_add(t, j->par.perspective ? " (the image plane)" : " (orthographic)");
     } else if (j->par.perspective) {                    /* x_ip = x_c / -z_c */
-        add(t, k == 0 ? "x_c / -z_c = " : "y_c / -z_c = ");
-        add_num(t, comp(prev, k), 0); add(t, " / -");
-        add_num(t, prev->z, 1); add(t, " = ");
-        add_num(t, comp(cur, k), 0);
+        pt_xt_add(t, k == 0 ? "x_c / -z_c = " : "y_c / -z_c = ");
+        pt_xt_num(t, comp(prev, k), 0); pt_xt_add(t, " / -");
+        pt_xt_num(t, prev->z, 1); pt_xt_add(t, " = ");
+        pt_xt_num(t, comp(cur, k), 0);
     } else {                                            /* x_ip = x_c */
-        add(t, k == 0 ? "x_c = " : "y_c = ");
-        add_num(t, comp(cur, k), 0);
+        pt_xt_add(t, k == 0 ? "x_c = " : "y_c = ");
+        pt_xt_num(t, comp(cur, k), 0);
     }
 }
 
 /* s3_image2pixel.h, its divisor PT_PIXEL_DIVISOR */
-static void coord_pixel(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_pixel(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                         const pt_vrec *cur, int k)
 {
     add_lhs(t, PT_STAGE_PIXEL, k);
-    add(t, k == 0 ? "0.5 + w/" : "0.5 + h/");
-    add_num(t, PT_PIXEL_DIVISOR, 0);
-    add(t, k == 0 ? " * (x_ip + 1) = 0.5 + " : " * (y_ip + 1) = 0.5 + ");
-    add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, "/");
-    add_num(t, PT_PIXEL_DIVISOR, 0); add(t, " * (");
-    add_num(t, comp(prev, k), 0); add(t, " + 1) = ");
-    add_num(t, comp(cur, k), 0);
+    pt_xt_add(t, k == 0 ? "0.5 + w/" : "0.5 + h/");
+    pt_xt_num(t, PT_PIXEL_DIVISOR, 0);
+    pt_xt_add(t, k == 0 ? " * (x_ip + 1) = 0.5 + " : " * (y_ip + 1) = 0.5 + ");
+    pt_xt_int(t, k == 0 ? j->par.w : j->par.h, 0); pt_xt_add(t, "/");
+    pt_xt_num(t, PT_PIXEL_DIVISOR, 0); pt_xt_add(t, " * (");
+    pt_xt_num(t, comp(prev, k), 0); pt_xt_add(t, " + 1) = ");
+    pt_xt_num(t, comp(cur, k), 0);
 }
 
 /* The classic camera's viewport stage, x_vp = round(x_pp) - 1, y_vp = h -
 ** round(y_pp): the rounding is pt_pix_round()'s, the result cur's, the
 ** reference stage's record. */
-static void coord_round(text *t, const pt_journey *j, const pt_vrec *pp,
+static void coord_round(pt_xt *t, const pt_journey *j, const pt_vrec *pp,
                         const pt_vrec *cur, int k)
 {
     double x = comp(pp, k);
     int64_t r;
 
     add_lhs(t, PT_STAGE_VIEWPORT, k);
-    add(t, k == 0 ? "round(x_pp) - 1 = round(" : "h - round(y_pp) = ");
-    if (k == 1) { add_int(t, j->par.h, 0); add(t, " - round("); }
-    add_num(t, x, 0);
-    add(t, k == 0 ? ") - 1" : ")");
+    pt_xt_add(t, k == 0 ? "round(x_pp) - 1 = round(" : "h - round(y_pp) = ");
+    if (k == 1) { pt_xt_int(t, j->par.h, 0); pt_xt_add(t, " - round("); }
+    pt_xt_num(t, x, 0);
+    pt_xt_add(t, k == 0 ? ") - 1" : ")");
     if (!pt_pix_round(x, &r) || !pt_rec_has(cur, k)) {
-        add(t, ": none, ");
-        add(t, no_pixel_why(x));
+        pt_xt_add(t, ": none, ");
+        pt_xt_add(t, no_pixel_why(x));
         add_java(t, x, k);
         return;
     }
-    add(t, " = ");
-    if (k == 0) { add_int(t, r, 0); add(t, " - 1 = "); }
-    else { add_int(t, j->par.h, 0); add(t, " - "); add_int(t, r, 1); add(t, " = "); }
-    add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+    pt_xt_add(t, " = ");
+    if (k == 0) { pt_xt_int(t, r, 0); pt_xt_add(t, " - 1 = "); }
+    else { pt_xt_int(t, j->par.h, 0); pt_xt_add(t, " - "); pt_xt_int(t, r, 1); pt_xt_add(t, " = "); }
+    pt_xt_int(t, k == 0 ? cur->ix : cur->iy, 0);
     if (r != (int64_t)pt_explain_java_int_round(x)) add_java(t, x, k);     /* past 32 bits */
     if (cur->flags & PT_REC_NULL) {         /* the other one has none */
-        add(t, ", but the viewport pixel has no value: ");
-        add(t, pt_stage_infos[PT_STAGE_VIEWPORT].coord[1 - k]);
-        add(t, " has none (");
-        add(t, pt_stage_infos[prev_stage(j, PT_STAGE_VIEWPORT)].coord[1 - k]);
-        add(t, isfinite(comp(pp, 1 - k)) ? " is beyond 2^62)" : " is not finite)");
+        pt_xt_add(t, ", but the viewport pixel has no value: ");
+        pt_xt_add(t, pt_stage_infos[PT_STAGE_VIEWPORT].coord[1 - k]);
+        pt_xt_add(t, " has none (");
+        pt_xt_add(t, pt_stage_infos[prev_stage(j, PT_STAGE_VIEWPORT)].coord[1 - k]);
+        pt_xt_add(t, isfinite(comp(pp, 1 - k)) ? " is beyond 2^62)" : " is not finite)");
     }
 }
 
 /* The matrix camera's viewport stage: x_vp = floor(x_s). */
-static void coord_floor(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_floor(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                         const pt_vrec *cur, int k)
 {
     (void)j;
     add_lhs(t, PT_STAGE_VIEWPORT, k);
-    add(t, k == 0 ? "floor(x_s) = floor(" : "floor(y_s) = floor(");
-    add_num(t, comp(prev, k), 0); add(t, ")");
-    if (cur->flags & PT_REC_NULL) { add(t, ": none, "); add(t, no_pixel_why(comp(prev, k))); return; }
-    add(t, " = "); add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+    pt_xt_add(t, k == 0 ? "floor(x_s) = floor(" : "floor(y_s) = floor(");
+    pt_xt_num(t, comp(prev, k), 0); pt_xt_add(t, ")");
+    if (cur->flags & PT_REC_NULL) { pt_xt_add(t, ": none, "); pt_xt_add(t, no_pixel_why(comp(prev, k))); return; }
+    pt_xt_add(t, " = "); pt_xt_int(t, k == 0 ? cur->ix : cur->iy, 0);
 }
 
-static void coord_framebuffer(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_framebuffer(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                               const pt_vrec *cur, int k)    /* x_fb = x_ul + x_vp */
 {
     add_lhs(t, PT_STAGE_FRAMEBUFFER, k);
-    add(t, k == 0 ? "x_ul + x_vp" : "y_ul + y_vp");
+    pt_xt_add(t, k == 0 ? "x_ul + x_vp" : "y_ul + y_vp");
     if (prev->flags & PT_REC_NULL) {
-        add(t, ": none, the viewport pixel has no value");
+        pt_xt_add(t, ": none, the viewport pixel has no value");
         return;
     }
-    add(t, " = ");
-    add_int(t, k == 0 ? j->par.x_ul : j->par.y_ul, 0); add(t, " + ");
-    add_int(t, k == 0 ? prev->ix : prev->iy, 1); add(t, " = ");
-    add_int(t, k == 0 ? cur->ix : cur->iy, 0);
+    pt_xt_add(t, " = ");
+    pt_xt_int(t, k == 0 ? j->par.x_ul : j->par.y_ul, 0); pt_xt_add(t, " + ");
+    pt_xt_int(t, k == 0 ? prev->ix : prev->iy, 1); pt_xt_add(t, " = ");
+    pt_xt_int(t, k == 0 ? cur->ix : cur->iy, 0);
 }
 
-static void coord_index(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_index(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                         const pt_vrec *cur, int k)          /* idx = y_fb * W + x_fb */
 {
     (void)k;
-    add(t, "idx = y_fb * W + x_fb");
+    pt_xt_add(t, "idx = y_fb * W + x_fb");
     if (prev->flags & PT_REC_NULL) {
-        add(t, ": none, the pixel has no value");
+        pt_xt_add(t, ": none, the pixel has no value");
     } else if (cur->flags & PT_REC_NULL) {
-        add(t, ": none, (x_fb, y_fb) = ");
+        pt_xt_add(t, ": none, (x_fb, y_fb) = ");
         add_pair(t, prev->ix, prev->iy);
-        add(t, " lies outside the ");
-        add_int(t, j->par.W, 0); add(t, " x "); add_int(t, j->par.H, 0);
-        add(t, " framebuffer");
+        pt_xt_add(t, " lies outside the ");
+        pt_xt_int(t, j->par.W, 0); pt_xt_add(t, " x "); pt_xt_int(t, j->par.H, 0);
+        pt_xt_add(t, " framebuffer");
     } else {
-        add(t, " = ");
-        add_int(t, prev->iy, 0); add(t, " * "); add_int(t, j->par.W, 0);
-        add(t, " + "); add_int(t, prev->ix, 0); add(t, " = ");
-        add_int(t, cur->i, 0);
+        pt_xt_add(t, " = ");
+        pt_xt_int(t, prev->iy, 0); pt_xt_add(t, " * "); pt_xt_int(t, j->par.W, 0);
+        pt_xt_add(t, " + "); pt_xt_int(t, prev->ix, 0); pt_xt_add(t, " = ");
+        pt_xt_int(t, cur->i, 0);
     }
 }
 
 /* x' = x*m0k + y*m1k + z*m2k + w*m3k with the numbers, for the matrix
 ** stages: value k of stage st is column k of matrix m (called mname) times
 ** prev, a point (w = 1) when prev has no w. */
-static void product(text *t, pt_stage st, const pt_mat4 *m, const char *mname,
+static void product(pt_xt *t, pt_stage st, const pt_mat4 *m, const char *mname,
                     const pt_vrec *prev, const pt_vrec *cur, int k)
 {
     double in[4];
@@ -299,73 +292,73 @@ static void product(text *t, pt_stage st, const pt_mat4 *m, const char *mname,
     in[0] = prev->x; in[1] = prev->y; in[2] = prev->z;
     in[3] = pt_stage_infos[prev->stage].nreal < 4 ? 1.0 : prev->w;
     add_lhs(t, st, k);
-    add(t, "column "); add_int(t, k, 0); add(t, " of "); add(t, mname); add(t, ": ");
+    pt_xt_add(t, "column "); pt_xt_int(t, k, 0); pt_xt_add(t, " of "); pt_xt_add(t, mname); pt_xt_add(t, ": ");
     for (r = 0; r < 4; r++) {
-        if (r) add(t, " + ");
-        add_num(t, in[r], r > 0); add(t, "*"); add_num(t, m->m[r][k], 1);
+        if (r) pt_xt_add(t, " + ");
+        pt_xt_num(t, in[r], r > 0); pt_xt_add(t, "*"); pt_xt_num(t, m->m[r][k], 1);
     }
-    add(t, " = ");
-    add_num(t, comp(cur, k), 0);
+    pt_xt_add(t, " = ");
+    pt_xt_num(t, comp(cur, k), 0);
 }
 
-static void coord_world(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_world(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                         const pt_vrec *cur, int k)
 {
     product(t, PT_STAGE_WORLD, &j->world, "World", prev, cur, k);
 }
 
-static void coord_view(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_view(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                        const pt_vrec *cur, int k)
 {
     product(t, PT_STAGE_VIEW, &j->view, "View", prev, cur, k);
 }
 
-static void coord_clip(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_clip(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                        const pt_vrec *cur, int k)
 {
     product(t, PT_STAGE_CLIP, &j->proj, "Projection", prev, cur, k);
 }
 
 /* The cvv stage's outcode and the planes it names. */
-static void coord_cvv(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_cvv(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                       const pt_vrec *cur, int k)
 {
     int b, first = 1;
 
     (void)j; (void)prev; (void)k;
-    add(t, "code = ");
-    add_int(t, cur->code, 0);
-    if (!cur->code) { add(t, ": 0 <= z <= w, -w <= x <= w, -w <= y <= w"); return; }
-    add(t, ": outside");
+    pt_xt_add(t, "code = ");
+    pt_xt_int(t, cur->code, 0);
+    if (!cur->code) { pt_xt_add(t, ": 0 <= z <= w, -w <= x <= w, -w <= y <= w"); return; }
+    pt_xt_add(t, ": outside");
     for (b = 0; b < PT_CVV_NPLANES; b++) {
         if (!(cur->code & (1u << b))) continue;
-        add(t, first ? " " : ", ");
+        pt_xt_add(t, first ? " " : ", ");
         first = 0;
-        add(t, pt_cvv_names[b]);
+        pt_xt_add(t, pt_cvv_names[b]);
     }
-    add(t, " (w_k = "); add_num(t, cur->w, 0); add(t, ")");
+    pt_xt_add(t, " (w_k = "); pt_xt_num(t, cur->w, 0); pt_xt_add(t, ")");
 }
 
-static void coord_ndc(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_ndc(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                       const pt_vrec *cur, int k)            /* x_n = x_k / w_k */
 {
     (void)j;
     add_lhs(t, PT_STAGE_NDC, k);
-    add(t, k == 0 ? "x_k / w_k = " : k == 1 ? "y_k / w_k = " : "z_k / w_k = ");
-    add_num(t, comp(prev, k), 0); add(t, " / "); add_num(t, prev->w, 1);
-    add(t, " = "); add_num(t, comp(cur, k), 0);
+    pt_xt_add(t, k == 0 ? "x_k / w_k = " : k == 1 ? "y_k / w_k = " : "z_k / w_k = ");
+    pt_xt_num(t, comp(prev, k), 0); pt_xt_add(t, " / "); pt_xt_num(t, prev->w, 1);
+    pt_xt_add(t, " = "); pt_xt_num(t, comp(cur, k), 0);
 }
 
-static void coord_screen(text *t, const pt_journey *j, const pt_vrec *prev,
+static void coord_screen(pt_xt *t, const pt_journey *j, const pt_vrec *prev,
                          const pt_vrec *cur, int k)
 {
     add_lhs(t, PT_STAGE_SCREEN, k);
-    if (k == 2) { add(t, "z_n = "); add_num(t, cur->z, 0); return; }
-    add(t, k == 0 ? "(x_n + 1) * w * 0.5 = (" : "(1 - y_n) * h * 0.5 = (1 - ");
-    add_num(t, comp(prev, k), k == 1);
-    add(t, k == 0 ? " + 1) * " : ") * ");
-    add_int(t, k == 0 ? j->par.w : j->par.h, 0); add(t, " * 0.5 = ");
-    add_num(t, comp(cur, k), 0);
+    if (k == 2) { pt_xt_add(t, "z_n = "); pt_xt_num(t, cur->z, 0); return; }
+    pt_xt_add(t, k == 0 ? "(x_n + 1) * w * 0.5 = (" : "(1 - y_n) * h * 0.5 = (1 - ");
+    pt_xt_num(t, comp(prev, k), k == 1);
+    pt_xt_add(t, k == 0 ? " + 1) * " : ") * ");
+    pt_xt_int(t, k == 0 ? j->par.w : j->par.h, 0); pt_xt_add(t, " * 0.5 = ");
+    pt_xt_num(t, comp(cur, k), 0);
 }
 
 /* The formula of pipeline pl's stage st, or NULL when explain has none
@@ -373,13 +366,13 @@ static void coord_screen(text *t, const pt_journey *j, const pt_vrec *prev,
 static coord_fn coord_row(const pt_pipeline *pl, pt_stage st);
 
 /* "your stage gave x_vp = 2": value k of the run's record r of stage st. */
-static void add_yours(text *t, pt_stage st, const pt_vrec *r, int k)
+static void add_yours(pt_xt *t, pt_stage st, const pt_vrec *r, int k)
 {
-    add(t, "your stage gave ");
+    pt_xt_add(t, "your stage gave ");
     add_lhs(t, st, k);
-    if (pt_stage_infos[st].nreal) add_num(t, comp(r, k), 0);
-    else if (!pt_rec_has(r, k)) add(t, "none");
-    else add_int(t, pt_rec_int(r, k), 0);
+    if (pt_stage_infos[st].nreal) pt_xt_num(t, comp(r, k), 0);
+    else if (!pt_rec_has(r, k)) pt_xt_add(t, "none");
+    else pt_xt_int(t, pt_rec_int(r, k), 0);
 }
 
 size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
@@ -388,31 +381,31 @@ size_t pt_explain_stage(char *buf, size_t len, const pt_journey *j, pt_stage st,
     pt_vrec ref;
     unsigned differ;
     coord_fn coord;
-    text t;
+    pt_xt t;
     int k;
 
-    text_init(&t, buf, len);
+    pt_xt_init(&t, buf, len);
     if ((int)st >= PT_NSTAGES_ALL) return 0;
     coord = coord_row(j->pipe, st);
     if (!(j->reported & 1u << st)) {        /* a student's stage without pt_emit */
-        add(&t, "none: the ");
-        add(&t, pt_stage_infos[st].name);
-        add(&t, " stage did not report its record (no pt_emit(sink, &r))");
+        pt_xt_add(&t, "none: the ");
+        pt_xt_add(&t, pt_stage_infos[st].name);
+        pt_xt_add(&t, " stage did not report its record (no pt_emit(sink, &r))");
         return t.len;
     }
     if (!(j->reported & 1u << prev_stage(j, st))) {
-        add(&t, "the ");
-        add(&t, pt_stage_infos[prev_stage(j, st)].name);
-        add(&t, " stage did not report its record: the numbers it handed on are not known");
+        pt_xt_add(&t, "the ");
+        pt_xt_add(&t, pt_stage_infos[prev_stage(j, st)].name);
+        pt_xt_add(&t, " stage did not report its record: the numbers it handed on are not known");
         return t.len;
     }
     if (!pt_pipeline_ref(j->pipe, st)
         || !pt_ref_stage(st, &j->par, &j->rec[prev_stage(j, st)], &ref)) ref = j->rec[st];
     differ = pt_ref_differ(st, &j->rec[st], &ref);
     for (k = 0; k < pt_coord_count(st); k++) {
-        if (k) add(&t, sep);
+        if (k) pt_xt_add(&t, sep);
         if (coord) coord(&t, j, &j->rec[prev_stage(j, st)], &ref, k);
-        if (differ & 1u << k) { add(&t, sep); add_yours(&t, st, &j->rec[st], k); }
+        if (differ & 1u << k) { pt_xt_add(&t, sep); add_yours(&t, st, &j->rec[st], k); }
     }
     return t.len;
 }
@@ -433,54 +426,54 @@ void pt_explain_reference(pt_journey *ref, const pt_journey *j)
 /* ===== values as a tuple ===== */
 
 /* The numbers of r (stage st) alone: "(-1, -1, -2)", "144", "none". */
-static void add_tuple(text *t, const pt_vrec *r, pt_stage st)
+static void add_tuple(pt_xt *t, const pt_vrec *r, pt_stage st)
 {
     int k, n = pt_coord_count(st);
 
     switch (pt_stage_infos[st].kind) {
     case PT_VAL_OUTCODE:
-        add_int(t, r->code, 0);
+        pt_xt_int(t, r->code, 0);
         break;
     case PT_VAL_PIXEL:                                  /* null per value: */
-        if (!pt_rec_has(r, 0) && !pt_rec_has(r, 1)) { add(t, "none"); break; }
-        add(t, "(");                                    /* "(none, 7)" */
-        if (pt_rec_has(r, 0)) add_int(t, r->ix, 0); else add(t, "none");
-        add(t, ", ");
-        if (pt_rec_has(r, 1)) add_int(t, r->iy, 0); else add(t, "none");
-        add(t, ")");
+        if (!pt_rec_has(r, 0) && !pt_rec_has(r, 1)) { pt_xt_add(t, "none"); break; }
+        pt_xt_add(t, "(");                                    /* "(none, 7)" */
+        if (pt_rec_has(r, 0)) pt_xt_int(t, r->ix, 0); else pt_xt_add(t, "none");
+        pt_xt_add(t, ", ");
+        if (pt_rec_has(r, 1)) pt_xt_int(t, r->iy, 0); else pt_xt_add(t, "none");
+        pt_xt_add(t, ")");
         break;
     case PT_VAL_INDEX:
-        if (r->flags & PT_REC_NULL) add(t, "none");
-        else add_int(t, r->i, 0);
+        if (r->flags & PT_REC_NULL) pt_xt_add(t, "none");
+        else pt_xt_int(t, r->i, 0);
         break;
     case PT_VAL_REAL:
-        add(t, "(");
+        pt_xt_add(t, "(");
         for (k = 0; k < n; k++) {
-            if (k) add(t, ", ");
-            add_num(t, comp(r, k), 0);
+            if (k) pt_xt_add(t, ", ");
+            pt_xt_num(t, comp(r, k), 0);
         }
-        add(t, ")");
+        pt_xt_add(t, ")");
         break;
     }
 }
 
 size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st)
 {
-    text t;
+    pt_xt t;
     int k, n = pt_coord_count(st);
 
-    text_init(&t, buf, len);
+    pt_xt_init(&t, buf, len);
     if ((int)st >= PT_NSTAGES_ALL) return 0;
     if (n == 1) {                           /* "idx = ", "code = " */
-        add(&t, pt_stage_infos[st].coord[0]);
-        add(&t, " = ");
+        pt_xt_add(&t, pt_stage_infos[st].coord[0]);
+        pt_xt_add(&t, " = ");
     } else {
-        add(&t, "(");
+        pt_xt_add(&t, "(");
         for (k = 0; k < n; k++) {
-            if (k) add(&t, ", ");
-            add(&t, pt_stage_infos[st].coord[k]);
+            if (k) pt_xt_add(&t, ", ");
+            pt_xt_add(&t, pt_stage_infos[st].coord[k]);
         }
-        add(&t, ") = ");
+        pt_xt_add(&t, ") = ");
     }
     add_tuple(&t, &j->rec[st], st);
     return t.len;
@@ -488,9 +481,9 @@ size_t pt_explain_values(char *buf, size_t len, const pt_journey *j, pt_stage st
 
 size_t pt_explain_tuple(char *buf, size_t len, const pt_journey *j, pt_stage st)
 {
-    text t;
+    pt_xt t;
 
-    text_init(&t, buf, len);
+    pt_xt_init(&t, buf, len);
     if ((int)st < PT_NSTAGES_ALL) add_tuple(&t, &j->rec[st], st);
     return t.len;
 }
@@ -498,37 +491,37 @@ size_t pt_explain_tuple(char *buf, size_t len, const pt_journey *j, pt_stage st)
 /* ===== what comes next ===== */
 
 /* "1..w x 1..h"-style range */
-static void add_range(text *t, int lo_x, int hi_x, int lo_y, int hi_y)
+static void add_range(pt_xt *t, int lo_x, int hi_x, int lo_y, int hi_y)
 {
-    add_int(t, lo_x, 0); add(t, ".."); add_int(t, hi_x, 0); add(t, " x ");
-    add_int(t, lo_y, 0); add(t, ".."); add_int(t, hi_y, 0);
+    pt_xt_int(t, lo_x, 0); pt_xt_add(t, ".."); pt_xt_int(t, hi_x, 0); pt_xt_add(t, " x ");
+    pt_xt_int(t, lo_y, 0); pt_xt_add(t, ".."); pt_xt_int(t, hi_y, 0);
 }
 
 /* What the result of a stage means for the stages after it: one function a
 ** stage, in next_rows[] below.  r is j's record of the stage. */
-typedef void (*next_fn)(text *t, const pt_journey *j, const pt_vrec *r);
+typedef void (*next_fn)(pt_xt *t, const pt_journey *j, const pt_vrec *r);
 
 /* What a pipeline's second stage does with the model's values (the model's
 ** "next"), by that stage: in first_rows[] below. */
-typedef void (*first_fn)(text *t, const pt_journey *j);
+typedef void (*first_fn)(pt_xt *t, const pt_journey *j);
 
-static void first_camera(text *t, const pt_journey *j)
+static void first_camera(pt_xt *t, const pt_journey *j)
 {
     pt_vec3 tr = j->par.translate;
 
     if (tr.x == 0 && tr.y == 0 && tr.z == 0)
-        add(t, "the translation is (0, 0, 0): the camera stage changes nothing");
+        pt_xt_add(t, "the translation is (0, 0, 0): the camera stage changes nothing");
     else {
-        add(t, "the camera stage adds the model's translation (x_t, y_t, z_t) = (");
-        add_num(t, tr.x, 0); add(t, ", "); add_num(t, tr.y, 0); add(t, ", ");
-        add_num(t, tr.z, 0); add(t, ")");
+        pt_xt_add(t, "the camera stage adds the model's translation (x_t, y_t, z_t) = (");
+        pt_xt_num(t, tr.x, 0); pt_xt_add(t, ", "); pt_xt_num(t, tr.y, 0); pt_xt_add(t, ", ");
+        pt_xt_num(t, tr.z, 0); pt_xt_add(t, ")");
     }
 }
 
-static void first_world(text *t, const pt_journey *j)
+static void first_world(pt_xt *t, const pt_journey *j)
 {
     (void)j;
-    add(t, "the world stage multiplies (x_m, y_m, z_m, 1) by the model's world matrix");
+    pt_xt_add(t, "the world stage multiplies (x_m, y_m, z_m, 1) by the model's world matrix");
 }
 
 /* The stages a pipeline may have second, after the model.  A pipeline whose
@@ -538,152 +531,152 @@ static const first_fn first_rows[PT_NSTAGES_ALL] = {
     [PT_STAGE_WORLD] = first_world,
 };
 
-static void next_model(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_model(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     (void)r;
     if (j->norder > 1 && first_rows[j->order[1]]) first_rows[j->order[1]](t, j);
 }
 
-static void next_camera(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_camera(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     double z = r->z;
 
     if (!j->par.perspective)
-        add(t, "orthographic camera: the image stage keeps x_c and y_c and drops the depth");
+        pt_xt_add(t, "orthographic camera: the image stage keeps x_c and y_c and drops the depth");
     else if (z < 0) {
-        add(t, "in front of the camera (z_c < 0): the image stage divides by its distance -z_c = ");
-        add_num(t, -z, 0);
+        pt_xt_add(t, "in front of the camera (z_c < 0): the image stage divides by its distance -z_c = ");
+        pt_xt_num(t, -z, 0);
     } else if (z > 0)
-        add(t, "behind the camera (z_c > 0): the image stage projects it mirrored through the origin");
+        pt_xt_add(t, "behind the camera (z_c > 0): the image stage projects it mirrored through the origin");
     else if (z == 0)
-        add(t, "in the camera's plane (z_c = 0): the image stage divides by zero");
+        pt_xt_add(t, "in the camera's plane (z_c = 0): the image stage divides by zero");
     else
-        add(t, "z_c is not a number: so is its projection");
+        pt_xt_add(t, "z_c is not a number: so is its projection");
 }
 
-static void next_image(text *t, const pt_journey *j, const pt_vrec *ip)
+static void next_image(pt_xt *t, const pt_journey *j, const pt_vrec *ip)
 {
     int vp_inside = (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE) != 0;
     int rect = fabs(ip->x) <= 1 && fabs(ip->y) <= 1;
 
     if (ip->flags & PT_REC_BEHIND)
-        add(t, "behind the camera (z_c > 0): projected mirrored through the origin; ");
+        pt_xt_add(t, "behind the camera (z_c > 0): projected mirrored through the origin; ");
     if (!isfinite(ip->x) || !isfinite(ip->y))
-        add(t, "not finite: it will have no pixel, and segments using it are skipped");
+        pt_xt_add(t, "not finite: it will have no pixel, and segments using it are skipped");
     else if (rect)
-        add(t, "inside the view rectangle [-1, 1] x [-1, 1]: the point lies inside the viewport");
+        pt_xt_add(t, "inside the view rectangle [-1, 1] x [-1, 1]: the point lies inside the viewport");
     else if (vp_inside) {
-        add(t, "just outside the view rectangle [-1, 1] x [-1, 1], but the pixel stage's ");
-        add_num(t, PT_PIXEL_DIVISOR, 0);
-        add(t, " leaves room: it still rounds to a pixel inside the viewport");
+        pt_xt_add(t, "just outside the view rectangle [-1, 1] x [-1, 1], but the pixel stage's ");
+        pt_xt_num(t, PT_PIXEL_DIVISOR, 0);
+        pt_xt_add(t, " leaves room: it still rounds to a pixel inside the viewport");
     }
     else
-        add(t, "outside the view rectangle [-1, 1] x [-1, 1]: the point lies outside the viewport");
+        pt_xt_add(t, "outside the view rectangle [-1, 1] x [-1, 1]: the point lies outside the viewport");
 }
 
-static void next_pixel(text *t, const pt_journey *j, const pt_vrec *pp)
+static void next_pixel(pt_xt *t, const pt_journey *j, const pt_vrec *pp)
 {
     const pt_vrec *vp = &j->rec[PT_STAGE_VIEWPORT];
     int64_t m, n;
 
     if (vp->flags & PT_REC_NULL) {
-        add(t, "no integer pixel (not finite, or beyond 2^62): segments using it are skipped");
+        pt_xt_add(t, "no integer pixel (not finite, or beyond 2^62): segments using it are skipped");
         return;
     }
     pt_pix_round(pp->x, &m);
     pt_pix_round(pp->y, &n);
-    add(t, "the viewport stage rounds it to the logical pixel ");
+    pt_xt_add(t, "the viewport stage rounds it to the logical pixel ");
     add_pair(t, m, n);
-    add(t, vp->flags & PT_REC_INSIDE ? ", inside " : ", outside ");
+    pt_xt_add(t, vp->flags & PT_REC_INSIDE ? ", inside " : ", outside ");
     add_range(t, 1, j->par.w, 1, j->par.h);
     if (!(vp->flags & PT_REC_INSIDE))
-        add(t, " (the view rectangle's pixels): the point lies outside the viewport");
+        pt_xt_add(t, " (the view rectangle's pixels): the point lies outside the viewport");
 }
 
-static void next_viewport(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_viewport(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     (void)j;
     if (r->flags & PT_REC_NULL)
-        add(t, "no pixel: segments using this vertex are skipped");
+        pt_xt_add(t, "no pixel: segments using this vertex are skipped");
     else if (r->flags & PT_REC_INSIDE)
-        add(t, "inside the viewport: the rasterizer writes the pixels of its segments here");
+        pt_xt_add(t, "inside the viewport: the rasterizer writes the pixels of its segments here");
     else
-        add(t, "outside the viewport: its pixel is clipped (the rasterizer steps "
+        pt_xt_add(t, "outside the viewport: its pixel is clipped (the rasterizer steps "
                "there but writes nothing)");
 }
 
-static void next_framebuffer(text *t, const pt_journey *j, const pt_vrec *fb)
+static void next_framebuffer(pt_xt *t, const pt_journey *j, const pt_vrec *fb)
 {
-    if (fb->flags & PT_REC_NULL) add(t, "no pixel: no index");
+    if (fb->flags & PT_REC_NULL) pt_xt_add(t, "no pixel: no index");
     else if (j->rec[PT_STAGE_INDEX].flags & PT_REC_NULL)
-        add(t, "outside the framebuffer: no index");
+        pt_xt_add(t, "outside the framebuffer: no index");
     else if (!(j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
-        add(t, "inside the framebuffer but outside the viewport: it has an index, "
+        pt_xt_add(t, "inside the framebuffer but outside the viewport: it has an index, "
                "but the rasterizer never writes there");
-    else add(t, "inside the framebuffer: the index stage numbers it");
+    else pt_xt_add(t, "inside the framebuffer: the index stage numbers it");
 }
 
-static void next_index(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_index(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     if (r->flags & PT_REC_NULL)
-        add(t, "outside the framebuffer: no index, nothing is stored for this point");
+        pt_xt_add(t, "outside the framebuffer: no index, nothing is stored for this point");
     else {
-        add(t, "the end of the journey: the pixel's color is element ");
-        add_int(t, r->i, 0);
-        add(t, " of the pixel array");
+        pt_xt_add(t, "the end of the journey: the pixel's color is element ");
+        pt_xt_int(t, r->i, 0);
+        pt_xt_add(t, " of the pixel array");
         if (!(j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
-            add(t, " (never written: outside the viewport)");
+            pt_xt_add(t, " (never written: outside the viewport)");
     }
 }
 
-static void next_world(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_world(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     (void)j; (void)r;
-    add(t, "the view stage moves the eye to the origin and turns the camera's axes onto x, y, z");
+    pt_xt_add(t, "the view stage moves the eye to the origin and turns the camera's axes onto x, y, z");
 }
 
-static void next_view(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_view(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     (void)j;
     if (r->z > 0) {
-        add(t, "in front of the eye (z_v > 0): the clip stage sets w_k = z_v = ");
-        add_num(t, r->z, 0);
+        pt_xt_add(t, "in front of the eye (z_v > 0): the clip stage sets w_k = z_v = ");
+        pt_xt_num(t, r->z, 0);
     } else
-        add(t, "not in front of the eye (z_v <= 0): w_k will be <= 0, "
+        pt_xt_add(t, "not in front of the eye (z_v <= 0): w_k will be <= 0, "
                "outside the near plane");
 }
 
-static void next_clip(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_clip(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     (void)j;
-    add(t, "the cvv stage compares x_k, y_k, z_k with w_k = ");
-    add_num(t, r->w, 0);
-    add(t, ", before any division");
+    pt_xt_add(t, "the cvv stage compares x_k, y_k, z_k with w_k = ");
+    pt_xt_num(t, r->w, 0);
+    pt_xt_add(t, ", before any division");
 }
 
-static void next_cvv(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_cvv(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     (void)j;
     if (r->code == 0)
-        add(t, "inside the view volume: the ndc stage divides by w_k");
+        pt_xt_add(t, "inside the view volume: the ndc stage divides by w_k");
     else
-        add(t, "outside the view volume: this vertex is not divided (for w_k <= 0 that "
+        pt_xt_add(t, "outside the view volume: this vertex is not divided (for w_k <= 0 that "
                "would flip it into view); its segments are clipped at the planes in clip "
                "space, and the points that makes go on from there");
 }
 
-static void next_ndc(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_ndc(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     (void)j;
-    add(t, fabs(r->x) <= 1 && fabs(r->y) <= 1 && r->z >= 0 && r->z <= 1
+    pt_xt_add(t, fabs(r->x) <= 1 && fabs(r->y) <= 1 && r->z >= 0 && r->z <= 1
            ? "inside the cube [-1, 1] x [-1, 1] x [0, 1]: the screen stage stretches it over the viewport"
            : "on the cube's border (rounding): the screen stage stretches it over the viewport");
 }
 
-static void next_screen(text *t, const pt_journey *j, const pt_vrec *r)
+static void next_screen(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
     (void)j; (void)r;
-    add(t, "the viewport stage takes the pixel whose square contains (x_s, y_s): floor of each");
+    pt_xt_add(t, "the viewport stage takes the pixel whose square contains (x_s, y_s): floor of each");
 }
 
 /* Explain's row of each stage: its formula with the numbers put in, and
@@ -732,12 +725,12 @@ static coord_fn coord_row(const pt_pipeline *pl, pt_stage st)
 
 size_t pt_explain_next(char *buf, size_t len, const pt_journey *j, pt_stage st)
 {
-    text t;
+    pt_xt t;
 
-    text_init(&t, buf, len);
+    pt_xt_init(&t, buf, len);
     if ((int)st >= PT_NSTAGES_ALL) return 0;
     if (!(j->reported & 1u << st)) {
-        add(&t, "the next stage computes from numbers this stage did not report");
+        pt_xt_add(&t, "the next stage computes from numbers this stage did not report");
         return t.len;
     }
     if (stage_rows[st].next) stage_rows[st].next(&t, j, &j->rec[st]);

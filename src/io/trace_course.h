@@ -31,10 +31,11 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
 /* Render s (renderer 7 or 9) into fb and write pipetrace's trace of it to f
 ** in format fmt (PT_FORMAT_TEXT, _JSONL or _CSV; text with precision digits
 ** after the point): each stage's vertices, the clip stages' new vertices
-** with where they came from, the pixels (docs/trace-format.md).  Returns 0;
-** or -1 with a message in err when out of memory.  Write errors show in
-** ferror(f). */
-int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *fb,
-                    char *err, size_t errlen);
+** with where they came from, the pixels (docs/trace-format.md).  With
+** explain (text and jsonl), each vertex record also gets its stage's formula
+** with its numbers put in (io/explain_course.h).  Returns 0; or -1 with a
+** message in err when out of memory.  Write errors show in ferror(f). */
+int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int explain,
+                    pt_fb *fb, char *err, size_t errlen);
 
 #endif

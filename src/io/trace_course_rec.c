@@ -14,6 +14,7 @@
 #include <string.h>
 #include "io/trace_course.h"
 #include "io/trace.h"
+#include "io/explain_course.h"
 #include "io/numfmt.h"
 #include "io/sbuf.h"
 
@@ -42,6 +43,7 @@ typedef struct rec {
     int64_t x_fb, y_fb;          /* pixel: the framebuffer pixel written, */
     unsigned char rgb[3];        /*   the colour written there, */
     float coverage;              /*   the share of it the primitive covers */
+    const char *explain;         /* vertex, --explain: its formula with its numbers */
 } rec;
 
 typedef struct walker {
@@ -53,7 +55,7 @@ typedef struct walker {
     uint64_t raster_no;          /* the primitive the rasterizer is on */
     const char *clip_stage;
     /* the clip stages' new vertices: where each came from, by number */
-    struct origin { uint32_t v, c; uint64_t prim; double t; pt_rv_edge edge; } *org;
+    struct origin { uint32_t v, c; uint64_t prim; double t; pt_rv_edge edge; pt_rv_cut cut; } *org;
     size_t norg, cap_org;
     uint64_t nvrec, nprims, npixels;
     const pt_course_pos *pos;    /* the position the rasterizer draws */
@@ -61,6 +63,11 @@ typedef struct walker {
                                  ** names below (made once: every record of a
                                  ** position has it) */
     const char *names_model, *names_position;
+    int explain;                 /* --explain: each vertex record's formula */
+    pt_course_cam cam;           /*   the camera, */
+    struct prev { pt_vec4 *v; size_t n; } *prev;  /* each position's vertices
+                                 ** after the stage reported last */
+    char xbuf[8192];             /*   and the text of one record */
 } walker;
 
 /* ===== numbers ===== */
@@ -205,6 +212,10 @@ static void fmt_json(walker *w, const rec *r)
         num_json(sb, r->t);
         pt_sbuf_add(sb, "}");
     }
+    if (r->explain) {
+        pt_sbuf_add(sb, ",\"explain\":");
+        pt_sbuf_add_json(sb, r->explain);
+    }
     pt_sbuf_add(sb, "}\n");
 }
 
@@ -253,6 +264,11 @@ static void fmt_text(walker *w, const rec *r)
                      (unsigned long long)r->from_prim, r->edge, b);
     }
     pt_sbuf_add(sb, "\n");
+    if (r->explain) {                       /* under the record, as renderer 4's */
+        pt_sbuf_add(sb, "              ");
+        pt_sbuf_add(sb, r->explain);
+        pt_sbuf_add(sb, "\n");
+    }
 }
 
 static void fmt_csv(walker *w, const rec *r)
@@ -311,11 +327,44 @@ static const struct origin *origin_of(const walker *w, uint32_t v)
     return NULL;
 }
 
+/* --explain: record r's formula with its numbers (pt_cx_explain_rec), from
+** the position's vertices after the stage before; o: where a clip stage's
+** new vertex came from. */
+static void explain(walker *w, rec *r, pt_course_stage st, const pt_course_pos *pos, size_t k,
+                    const struct origin *o)
+{
+    const struct prev *pv = &w->prev[pos->index];
+    pt_cx_rec x;
+
+    memset(&x, 0, sizeof x);
+    x.st = st;
+    x.pos = pos;
+    x.cur = r->p;
+    if (k < pv->n) x.prev = pv->v[k];
+    x.color = r->has_color ? &r->color : NULL;
+    if (o) { x.cut = &o->cut; x.cut_prim = o->prim; }
+    pt_cx_explain_rec(w->xbuf, sizeof w->xbuf, w->s, &w->cam, &x, "; ");
+    r->explain = w->xbuf;
+}
+
+/* --explain: keep the position's vertices after stage st for the next. */
+static void keep_prev(walker *w, const pt_course_pos *pos, const pt_rv_model *m)
+{
+    struct prev *pv = &w->prev[pos->index];
+    pt_vec4 *v = realloc(pv->v, (m->nv ? m->nv : 1) * sizeof *v);
+
+    if (!v) { w->sb.failed = 1; return; }
+    if (m->nv) memcpy(v, m->v, m->nv * sizeof *v);
+    pv->v = v;
+    pv->n = m->nv;
+}
+
 static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                      const pt_rv_model *m)
 {
     walker *w = ud;
     size_t k, from = 0;
+    const struct origin *o;
     rec r;
 
     if (st == PT_CST_NEARCLIP || st == PT_CST_CLIP) {   /* only the vertices it made */
@@ -329,8 +378,9 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
         r.v = (uint64_t)k + 1;
         r.p = m->v[k];
         if (k < m->nc) { r.has_color = 1; r.color = m->c[k]; }
+        o = NULL;
         if (st == PT_CST_NEARCLIP || st == PT_CST_CLIP) {
-            const struct origin *o = origin_of(w, (uint32_t)k);
+            o = origin_of(w, (uint32_t)k);
             if (o) {
                 r.from = stage_names[st];
                 r.from_prim = o->prim;
@@ -340,9 +390,11 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                 if (r.has_color) r.color = m->c[o->c];
             }
         }
+        if (w->explain) explain(w, &r, st, pos, k, o);
         emit(w, &r);
         w->nvrec++;
     }
+    if (w->explain) keep_prev(w, pos, m);
     w->prim_no = 0;
     w->norg = 0;
     w->raster_no = 0;
@@ -371,6 +423,7 @@ static void clip_cut(void *ud, const pt_rv_cut *c)
     w->org[w->norg].prim = w->prim_no;
     w->org[w->norg].t = c->t;
     w->org[w->norg].edge = c->edge;
+    w->org[w->norg].cut = *c;
     w->norg++;
 }
 
@@ -521,8 +574,8 @@ static void summary(walker *w)
                 (unsigned long long)w->nprims, (unsigned long long)w->npixels);
 }
 
-int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *fb,
-                    char *err, size_t errlen)
+int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int explain,
+                    pt_fb *fb, char *err, size_t errlen)
 {
     walker w;
     pt_course_ls ls;
@@ -553,6 +606,13 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
     ls.clip = ls.nearclip;
     ls.ud = &w;
     pt_course_camera(s, &cam);
+    w.cam = cam;
+    w.explain = explain;
+    if (explain && !(w.prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w.prev))) {
+        snprintf(err, errlen, "pipetrace: out of memory");
+        pt_sbuf_free(&w.sb);
+        return -1;
+    }
     header(&w, &cam);
     rc = pt_course_render(s, fb, &ls);
     if (rc == 0 && !w.sb.failed) summary(&w);
@@ -561,5 +621,10 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, pt_fb *f
     pt_sbuf_free(&w.sb);
     pt_sbuf_free(&w.names);
     free(w.org);
+    if (w.prev) {
+        size_t k;
+        for (k = 0; k < s->nmodels; k++) free(w.prev[k].v);
+        free(w.prev);
+    }
     return rc;
 }

@@ -22,6 +22,7 @@
 #include "tools/commands.h"
 #include "tools/cli.h"
 #include "io/explain.h"
+#include "io/explain_course.h"
 #include "io/numfmt.h"
 #include "core/pipetrace.h"
 
@@ -38,7 +39,9 @@ static const char usage[] =
 "that has a vertex N) from model coordinates to its pixel-array index, one\n"
 "stage at a time: the formula, the formula with the vertex's numbers, the\n"
 "result, and what the next stage will do with it.  SCENE defaults to the\n"
-"built-in scene.\n"
+"built-in scene.  A scene of the course's renderer 7 or 9 is followed through\n"
+"its stages (view volume, near clip, clip, pixel); N past the model's vertices\n"
+"is a vertex a clip stage made, numbered as the trace numbers it.\n"
 "\n"
 "  --all            print every stage at once (the default unless standard\n"
 "                   input and output are both terminals)\n"
@@ -91,19 +94,27 @@ static void show_stage(const pt_journey *j, int i)
     fprintf(term.f, "  next     %s\n", b);
 }
 
-/* Enter, a stage number, b, q: walk the stages until q, end of input, or
-** Enter after the last. */
-static void interact(const pt_journey *j)
+/* Show stage i of a journey (renderer 4's or a course renderer's). */
+typedef void (*show_fn)(const void *j, int i);
+
+static void show_r4(const void *j, int i)
+{
+    show_stage(j, i);
+}
+
+/* Enter, a stage number, b, q: walk the n stages of j until q, end of input,
+** or Enter after the last. */
+static void interact(const void *j, int n, show_fn show_at)
 {
     int st = 0, show = 1, echo = !isatty(STDIN_FILENO);
     char line[256];
     uint64_t to;
 
     for (;;) {
-        if (show) show_stage(j, st);
+        if (show) show_at(j, st);
         show = 1;
         fprintf(term.f, "[Enter] %s, 1-%d go to a stage, b back, q quit: ",
-                st + 1 < j->norder ? "next stage" : "done", j->norder);
+                st + 1 < n ? "next stage" : "done", n);
         pt_cli_out_flush(&term);
         if (pt_cli_read_line(line, sizeof line, echo) != 0) {
             fprintf(term.f, "\n(end of input: step ends)\n");
@@ -118,12 +129,12 @@ static void interact(const pt_journey *j)
             }
             st--;
         } else if (line[0] == '\0') {
-            if (st + 1 == j->norder) break;
+            if (st + 1 == n) break;
             st++;
-        } else if (pt_cli_count(line, 1, (uint64_t)j->norder, &to) == 0) {
+        } else if (pt_cli_count(line, 1, (uint64_t)n, &to) == 0) {
             st = (int)to - 1;
         } else {
-            fprintf(term.f, "(Enter: next stage, 1-%d: that stage, b: back, q: quit)\n", j->norder);
+            fprintf(term.f, "(Enter: next stage, 1-%d: that stage, b: back, q: quit)\n", n);
             show = 0;
             continue;
         }
@@ -268,6 +279,87 @@ static int compare_cameras(const pt_scene *s, const pt_model *m, uint64_t v, int
     return rc;
 }
 
+/* ===== renderers 7 and 9 ===== */
+
+/* Stage i of a course renderer's journey: name, spaces, what, formula, numbers. */
+static void show_course(const void *jv, int i)
+{
+    const pt_cx_journey *j = jv;
+    const pt_cx_row *in = pt_cx_row_of(j->steps[i]);
+    static char b[16384];
+
+    const char *from = in->from;
+
+    if (j->steps[i] == PT_CXS_VIEW) from = j->renderer == 9 ? "world" : "model";
+    fprintf(term.f, "stage %d of %d: %s (%s -> %s)\n", i + 1, j->nsteps, in->name, from, in->to);
+    fprintf(term.f, "  what     %s\n", in->what);
+    fprintf(term.f, "  formula  %s\n", pt_cx_formula(j->renderer, j->steps[i]));
+    pt_cx_stage(b, sizeof b, j, j->steps[i], "\n           ");
+    fprintf(term.f, "  here     %s\n", b);
+}
+
+/* step on a scene of the course's renderer 7 or 9: the vertex is found in
+** one render (pt_cx_run); a vertex past the model's own is one a clip made. */
+static int course_step(const pt_scene *s, const char *model, uint64_t v, int all, int inter)
+{
+    static pt_cx_journey j;
+    size_t mi = 0, k;
+    int rc = 1;
+    char cam[PT_CAMERA_TITLE];
+
+    if (model) {
+        const pt_model *m = pt_cli_model(s, "step", model);
+        if (!m) return PT_EXIT_INPUT;
+        mi = (size_t)(m - s->models);
+        rc = pt_cx_run(&j, s, mi, v);
+    } else if ((rc = pt_cx_find(s, v, &mi)) == 0) {
+        rc = pt_cx_run(&j, s, mi, v);
+    }
+    if (rc < 0) {
+        fprintf(stderr, "pipetrace step: %s: out of memory\n", s->path);
+        return PT_EXIT_INPUT;
+    }
+    if (rc == 1) {
+        if (model)
+            fprintf(stderr, "pipetrace step: --vertex %llu: the position of model %s of %s has "
+                    "no vertex %llu (it has %zu after the clips%s)\n", (unsigned long long)v,
+                    model, s->path, (unsigned long long)v, j.nv_last,
+                    s->models[mi].hidden_model || s->models[mi].hidden_position
+                    ? "; it is hidden" : "");
+        else
+            fprintf(stderr, "pipetrace step: --vertex %llu: no position of %s has a vertex "
+                    "%llu, not even after the clips\n", (unsigned long long)v, s->path,
+                    (unsigned long long)v);
+        return PT_EXIT_INPUT;
+    }
+    pt_cli_out_open(&term);
+    fprintf(term.f, "pipetrace step: vertex %llu of model %s (position %s) in %s, renderer %d%s\n",
+            (unsigned long long)v, s->models[mi].name,
+            s->models[mi].position ? s->models[mi].position : s->models[mi].name, s->path,
+            s->renderer, s->renderer == 9 && s->pipeline2 ? " (pipeline2)" : "");
+    fprintf(term.f, "camera %s; viewport %d x %d at (x_ul, y_ul) = (%d, %d); framebuffer %d x %d;"
+            " nearclip %s, antialias %s, gamma %s\n",
+            pt_scene_camera_title(s, cam, sizeof cam), s->vp_w, s->vp_h, s->vp_x, s->vp_y,
+            s->fb_w, s->fb_h, s->nearclip ? "on" : "off", s->antialias ? "on" : "off",
+            s->gamma ? "on" : "off");
+    if (v > j.nv)
+        fprintf(term.f, "vertex %llu is not the scene's: the model has %zu, a clip stage made "
+                "this one\n", (unsigned long long)v, j.nv);
+    fputc('\n', term.f);
+    if (inter || (!all && isatty(STDIN_FILENO) && isatty(STDOUT_FILENO)))
+        interact(&j, j.nsteps, show_course);
+    else
+        for (k = 0; k < (size_t)j.nsteps; k++) {
+            if (k) fputc('\n', term.f);
+            show_course(&j, (int)k);
+        }
+    if (pt_cli_out_close(&term) != 0) {
+        fputs("pipetrace step: cannot write to standard output\n", stderr);
+        return PT_EXIT_INPUT;
+    }
+    return 0;
+}
+
 int pt_cmd_step(int argc, char **argv)
 {
     const char *path = NULL, *model = NULL;
@@ -295,7 +387,17 @@ int pt_cmd_step(int argc, char **argv)
     if (all && inter) return pt_cli_usage("step", "--all and --interactive exclude each other");
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (pt_cli_course(&s, "step")) return PT_EXIT_INPUT;
+    if (s.renderer == 7 || s.renderer == 9) {
+        if (compare || raw) {
+            int r = s.renderer;
+            pt_scene_free(&s);
+            return pt_cli_usage("step", "renderer %d has no classic and matrix camera: no "
+                                "--compare-cameras, --raw-lookat", r);
+        }
+        rc = course_step(&s, model, v, all, inter);
+        pt_scene_free(&s);
+        return rc;
+    }
     m = pt_cli_vertex_model(&s, "step", model, v);
     if (!m) {
         pt_scene_free(&s);
@@ -326,7 +428,7 @@ int pt_cmd_step(int argc, char **argv)
         para("note: no segment uses vertex %llu, so the renderer does not transform it;\n"
                "      here is the journey it would take.\n\n", (unsigned long long)v);
     if (inter || (!all && isatty(STDIN_FILENO) && isatty(STDOUT_FILENO)))
-        interact(&j);
+        interact(&j, j.norder, show_r4);
     else
         for (k = 0; k < j.norder; k++) {
             if (k) fputc('\n', term.f);

@@ -56,6 +56,7 @@
 #include <string.h>
 #include "tools/commands.h"
 #include "tools/cli.h"
+#include "tools/why_course.h"
 #include "io/explain.h"
 #include "io/numfmt.h"
 #include "core/pipetrace.h"
@@ -74,7 +75,9 @@ static const char usage[] =
 "When none did, list the nearest segments and the stage where each lost it:\n"
 "its model left out, outside the viewport, clipped, skipped, behind the\n"
 "camera, degenerate, or endpoints rounded elsewhere; and the models without\n"
-"segments, which are never drawn.\n"
+"segments, which are never drawn.  On a scene of the course's renderer 7 or\n"
+"9: the primitives that wrote the pixel, each write's coverage and colour\n"
+"bytes, and what the near clip and the clip did to the others.\n"
 "\n"
 "  --model NAME   ask about the trace of 'pipetrace SCENE --model NAME': only\n"
 "                 NAME's segments count; the others are drawn into the image\n"
@@ -662,6 +665,33 @@ static pt_journey **journeys_room(const pt_scene *s)
     return js;
 }
 
+/* why on a scene of the course's renderer 7 or 9 (tools/why_course.h); frees s. */
+static int course_why(pt_scene *s, long long X, long long Y, const char *model)
+{
+    const pt_model *sel = NULL;
+    int rc;
+
+    if (X < 0 || X >= s->fb_w || Y < 0 || Y >= s->fb_h) {
+        fprintf(stderr, "pipetrace why: X_FB Y_FB = %lld %lld: the pixel lies outside the "
+                "%d x %d framebuffer of %s (x_fb 0..%d, y_fb 0..%d)\n", X, Y, s->fb_w,
+                s->fb_h, s->path, s->fb_w - 1, s->fb_h - 1);
+        pt_scene_free(s);
+        return PT_EXIT_INPUT;
+    }
+    if (model && !(sel = pt_cli_model(s, "why", model))) {
+        pt_scene_free(s);
+        return PT_EXIT_INPUT;
+    }
+    pt_cli_out_open(&term);
+    rc = pt_whyc_report(term.f, s, (int)X, (int)Y, sel);
+    pt_scene_free(s);
+    if (pt_cli_out_close(&term) != 0) {
+        fputs("pipetrace why: cannot write to standard output\n", stderr);
+        return PT_EXIT_INPUT;
+    }
+    return rc ? PT_EXIT_INPUT : 0;
+}
+
 int pt_cmd_why(int argc, char **argv)
 {
     const char *pos[3], *model = NULL;
@@ -690,7 +720,7 @@ int pt_cmd_why(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return PT_EXIT_INPUT;
-    if (pt_cli_course(&s, "why")) return PT_EXIT_INPUT;
+    if (s.renderer == 7 || s.renderer == 9) return course_why(&s, w.X, w.Y, model);
     if (pt_cli_keep_cap(&s, "why") != 0) { pt_scene_free(&s); return PT_EXIT_INPUT; }
     w.s = &s;
     if (pt_scene_pipeline(&s) != &pt_pipe_classic) {

@@ -311,10 +311,10 @@ static int run_course(const cli *c, const pt_scene *s)
     char err[PT_ERRLEN];
     int rc = 0, kraft = c->fmt == PT_FORMAT_KRAFT || c->fmt == PT_FORMAT_KRAFT_PIXELS;
 
-    if (c->staged || c->explain || c->opt.vertex || c->opt.model || c->opt.all_stages ||
+    if (c->staged || c->opt.vertex || c->opt.model || c->opt.all_stages ||
         c->opt.raw_lookat) {
         fprintf(stderr, "pipetrace: %s: error: renderer %d scenes are traced whole: no "
-                "--vertex, --model, --stage, --all-stages, --explain, --raw-lookat\n",
+                "--vertex, --model, --stage, --all-stages, --raw-lookat\n",
                 s->path, s->renderer);
         return PT_EXIT_INPUT;
     }
@@ -325,8 +325,8 @@ static int run_course(const cli *c, const pt_scene *s)
     if (!rc && c->trace) {
         if (pt_outfile_open(&tout, c->trace, err, sizeof err) != 0) rc = 1;
         else if ((kraft ? pt_course_log(tout.f, s, c->kdbg, &fb, err, sizeof err)
-                        : pt_course_trace(tout.f, s, (int)c->fmt, c->precision, &fb, err,
-                                          sizeof err)) != 0)
+                        : pt_course_trace(tout.f, s, (int)c->fmt, c->precision, c->explain,
+                                          &fb, err, sizeof err)) != 0)
             rc = 1;
         else {
             errno = 0;                      /* what the last write said, if one failed */

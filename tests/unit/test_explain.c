@@ -7,6 +7,8 @@
 #include <string.h>
 #include "testhelp.h"
 #include "io/explain.h"
+#include "io/explain_course.h"
+#include "stages/rv_nearclip.h"
 #include "io/numfmt.h"
 
 /* The triangle of docs/examples/triangle.scene: 20 x 10, translate 0 0 -2. */
@@ -561,8 +563,105 @@ static void test_every_stage_has_rows(void)
         }
 }
 
+/* Renderers 7 and 9: every stage course.c drives, and the pixel stages
+** after them, have explain_course.c's rows. */
+static void test_course_rows(void)
+{
+    int r, i, missing = 0;
+    char d[96];
+
+    for (r = 7; r <= 9; r += 2)
+        for (i = 0; i < PT_NCST + 3; i++) {
+            pt_cx_step st = i < PT_NCST ? pt_cx_step_of((pt_course_stage)i)
+                          : i == PT_NCST ? PT_CXS_PIXEL : i == PT_NCST + 1 ? PT_CXS_VIEWPORT
+                          : PT_CXS_RASTER;
+            if (r == 7 && i == PT_CST_WORLD) continue;
+            if (pt_cx_has_rows(r, st)) continue;
+            snprintf(d, sizeof d, "ex-9.4 renderer %d: explain has the %s stage's rows", r,
+                     pt_cx_row_of(st)->name);
+            PT_CHECK(d, 0);
+            missing++;
+        }
+    PT_CHECK("ex-9.5 every stage of renderers 7 and 9 has explain's rows", missing == 0);
+    PT_CHECK("ex-9.6 renderer 7 has no world stage", !pt_cx_has_rows(7, PT_CXS_WORLD));
+}
+
+/* Parse a course scene. */
+static int course_scene(pt_scene *s, const char *text)
+{
+    char err[PT_ERRLEN];
+
+    if (pt_scene_parse(s, "test", text, strlen(text), err, sizeof err) == 0) return 0;
+    PT_CHECK(err, 0);
+    return -1;
+}
+
+/* A renderer 7 segment from in front of the near plane to behind it and past
+** the view rectangle's right edge: the journey's numbers are the stages'. */
+static void test_course_journey(void)
+{
+    static const char text[] =
+        "renderer 7\nframebuffer 40 30\ncamera perspective\nantialias off\ngamma off\n"
+        "model m\ntranslate 0.25 0 -1\nv 0 0 -2\nv 3 0.5 2\nsegment 1 2\n";
+    pt_scene s;
+    pt_cx_journey j;
+    pt_rv_model m;
+    pt_vec4 c;
+    pt_rv_camera cam;
+    int rc;
+
+    if (course_scene(&s, text) != 0) return;
+    rc = pt_cx_run(&j, &s, 0, 1);
+    PT_CHECK("ex-10.1 pt_cx_run: vertex 1, nine stages", rc == 0 && j.nsteps == 9 &&
+             j.steps[0] == PT_CXS_MODEL && j.steps[8] == PT_CXS_RASTER);
+    cam = j.cam.cam;
+    PT_CHECK("ex-10.2 view: the stage's x_t + x_m",
+             !strcmp((pt_cx_stage(b, sizeof b, &j, PT_CXS_VIEW, " | "), b),
+                     "x_v = x_t + x_m = 0.25 + 0 = 0.25 | y_v = y_t + y_m = 0 + 0 = 0 | "
+                     "z_v = z_t + z_m = -1 + (-2) = -3"));
+    c = pt_r7_view2camera(j.at[PT_CST_VIEW], &cam);
+    PT_CHECK("ex-10.3 camera: the run's record is the stage's",
+             memcmp(&c, &j.at[PT_CST_CAMERA], sizeof c) == 0);
+    {   /* the shift shown, then the scaling, is the stage */
+        pt_vec4 mid = pt_r7_view2camera_shift(j.at[PT_CST_VIEW], &cam);
+        double x = (2.0 * mid.x)/(cam.r - cam.l);
+        PT_CHECK("ex-10.4 camera: shift then scale is pt_r7_view2camera", x == c.x);
+    }
+    pt_cx_stage(b, sizeof b, &j, PT_CXS_NEARCLIP, " | ");
+    PT_CHECK("ex-10.5 nearclip of the kept end: the test and the cut that replaces the other",
+             strstr(b, "z_c = -3 <= n = -0.1: on the visible side") == b);
+    rc = pt_cx_run(&j, &s, 0, 3);
+    PT_CHECK("ex-10.6 vertex 3 is the near clip's", rc == 0 && j.born == PT_CST_NEARCLIP &&
+             j.nsteps == 6 && j.steps[0] == PT_CXS_NEARCLIP && j.cut_prim == 1);
+    memset(&m, 0, sizeof m);
+    {   /* the same cut, by the stage alone */
+        pt_vec4 a = j.cut.p[0], e = j.cut.p[1];
+        pt_rgb w = {1, 1, 1};
+        pt_rv_prim p = {PT_RV_LINE, {0, 1}, {0, 1}, 0};
+        rc = pt_rv_add_vertex(&m, a) | pt_rv_add_vertex(&m, e) | pt_rv_add_color(&m, w) |
+             pt_rv_add_color(&m, w) | pt_rv_add_prim(&m, &p) | pt_rv_nearclip(&m, cam.n, NULL);
+        PT_CHECK("ex-10.7 the journey's new vertex is the near clip stage's",
+                 rc == 0 && m.nv == 3 && memcmp(&m.v[2], &j.at[PT_CST_NEARCLIP], sizeof m.v[2]) == 0);
+        pt_rv_model_free(&m);
+    }
+    pt_cx_stage(b, sizeof b, &j, PT_CXS_NEARCLIP, " | ");
+    PT_CHECK("ex-10.8 the cut's text: t and the new point", strstr(b, "made by the near clip of "
+             "segment 1: z0 = -3, z1 = 1, n = -0.1: v1 lies beyond the near plane | t = (n - z1)/"
+             "(z0 - z1) = (-0.1 - 1)/(-3 - 1) = ") == b);
+    rc = pt_cx_run(&j, &s, 0, 4);
+    PT_CHECK("ex-10.9 vertex 4 is the clip's, at x = +1", rc == 0 && j.born == PT_CST_CLIP &&
+             j.cut.edge == PT_RV_XPOS && j.at[PT_CST_CLIP].x == 1 && j.nsteps == 4);
+    pt_cx_stage(b, sizeof b, &j, PT_CXS_RASTER, " | ");
+    PT_CHECK("ex-10.10 its pixel: the segment's end, raw colour, gamma off",
+             strstr(b, "its last pixel, coverage 1") != NULL || strstr(b, "its first step") != NULL);
+    PT_CHECK("ex-10.11 no vertex 5", pt_cx_run(&j, &s, 0, 5) == 1);
+    pt_scene_free(&s);
+}
+
 int main(void)
 {
+    test_course_rows();
+    test_course_journey();
     test_every_stage_has_rows();
     test_triangle();
     test_outside();
