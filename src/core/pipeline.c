@@ -571,6 +571,49 @@ static void skip_report(const pt_listener *l, const pt_model *m, uint64_t seg,
     l->skip(l->ud, m, seg, (a_bad ? sg->a : sg->b) + 1, why);
 }
 
+/* A number of the pixel plane as a note shows it: nan, inf, -inf, or %.17g. */
+static void note_num(char *buf, size_t len, double x)
+{
+    if (x != x) snprintf(buf, len, "nan");
+    else if (isinf(x)) snprintf(buf, len, x > 0 ? "inf" : "-inf");
+    else snprintf(buf, len, "%.17g", x);
+}
+
+/* Java's Math.round(x), a long, in buf. */
+static void note_round(char *buf, size_t len, double x)
+{
+    double r = pt_raster_java_round(x);
+
+    if (r >= 0x1p63) snprintf(buf, len, "9223372036854775807");   /* Long.MAX_VALUE */
+    else snprintf(buf, len, "%lld", (long long)r);
+}
+
+/* Tell l what the course's renderer 4 does with segment seg of model m
+** (ends a, b in the pixel plane) that its ends do not say: an end without an
+** integer pixel (NaN, or beyond PT_PIX_LIMIT) rounded as Java rounds it, a
+** loop that would not end (core/raster.h). */
+static void course_notes(const pt_listener *l, const pt_model *m, uint64_t seg,
+                         pt_vec2 a, pt_vec2 b)
+{
+    const pt_segment *sg = &m->seg[seg - 1];
+    char what[256], x[32], y[32], rx[24], ry[24];
+    int e;
+
+    for (e = 0; e < 2; e++) {
+        pt_vec2 p = e ? b : a;
+        if (fabs(p.x) < PT_PIX_LIMIT && fabs(p.y) < PT_PIX_LIMIT) continue;
+        note_num(x, sizeof x, p.x); note_num(y, sizeof y, p.y);
+        note_round(rx, sizeof rx, p.x); note_round(ry, sizeof ry, p.y);
+        snprintf(what, sizeof what, "endpoint (x_pp, y_pp) = (%s, %s) has no integer pixel; "
+                 "the course's Math.round makes it (%s, %s) (NaN 0, beyond a long saturated) "
+                 "and draws on", x, y, rx, ry);
+        l->note(l->ud, m, seg, (e ? sg->b : sg->a) + 1, what);
+    }
+    if (pt_raster_endless(a, b))
+        l->note(l->ud, m, seg, 0, "the course's loop never ends: its last step is the "
+                "largest int, 2147483647, and its int step wraps; pipetrace stops after that step");
+}
+
 /* Run point mp, which a segment stage made on segment seg of model k, on
 ** through the rest of the pipeline (traced when l is not NULL); returns its
 ** pixel-plane point. */
@@ -773,6 +816,7 @@ static void segment_colors(pt_raster_colors *col, const pt_scene *s, const pt_mo
     memset(col, 0, sizeof *col);
     col->gamma = course && s->gamma;
     col->aa = course && s->antialias;
+    col->java = course;                         /* Java's rounding of the ends */
     for (i = 0; i < 3; i++) {
         col->c0[i] = course ? pt_model_color(m, sg->ca, i) : pt_color_float(m->color[i]);
         col->c1[i] = course ? pt_model_color(m, sg->cb, i) : pt_color_float(m->color[i]);
@@ -824,11 +868,13 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
             if (report && l->skip) l->skip(l->ud, m, j + 1, 0, dropped);
             continue;
         }
+        if (course && report && l->note) course_notes(l, m, j + 1, a, b);
         if (draw)                           /* the stages inlined in the DDA */
             r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &d->im, &d->out);
-        else if (steps && taken)            /* step by step, each told */
+        else if (steps && taken) {          /* step by step, each told */
+            d->ls.step = l->step ? on_step : NULL;  /* no step listener: the band */
             r = pt_raster_walk(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out, &d->ls);
-        else if (course)                    /* in its colours, nobody told */
+        } else if (course)                    /* in its colours, nobody told */
             r = pt_raster_walk(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out, &d->quiet);
         else
             r = pt_raster_segment(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out);

@@ -142,6 +142,12 @@ typedef struct pt_listener {
                           ** fast-forward past the viewport (pt_raster_walk) */
     void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */
                  uint64_t v, const char *why);      /* v: the endpoint at fault, 0: none */
+    void (*note)(void *ud, const pt_model *m, uint64_t seg,      /* drawn, but not as */
+                 uint64_t v, const char *what);     /* its ends say: the course's renderer
+                                                    ** 4 rounded endpoint v (0: none) from
+                                                    ** NaN or beyond the long range, or its
+                                                    ** loop would not end (what says which);
+                                                    ** before the segment's pixels */
     void (*summary)(void *ud, const pt_summary *sum);
     int (*piece)(void *ud, uint64_t n, int last);
                           /* NULL: every record comes to this listener.  Else

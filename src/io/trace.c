@@ -86,6 +86,7 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
     l->clip = w->clip;                      /*   nobody listens to the rasterizer */
     l->journey = t->explain ? on_journey : NULL;   /* no cost without --explain */
     l->skip = w->skip;
+    l->note = w->note;
     l->summary = w->summary;
     l->piece = NULL;
     l->ud = t;

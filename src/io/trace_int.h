@@ -37,7 +37,7 @@
 
 /* A format's record writers, as pt_listener takes them (ud: the pt_trace);
 ** pt_trace_listener() (trace.c) puts the format's in the listener.  pixels,
-** clip, skip and summary are NULL for a format without those records (CSV):
+** clip, skip, note and summary are NULL for a format without those records (CSV):
 ** nobody listens to the rasterizer then. */
 typedef struct pt_trace_writer {
     void (*header)(pt_trace *t, const pt_scene *s, const pt_plan *p);  /* t->scene
@@ -48,6 +48,7 @@ typedef struct pt_trace_writer {
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
                  pt_pix first, pt_pix last);
     void (*skip)(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *why);
+    void (*note)(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *what);
     void (*summary)(void *ud, const pt_summary *sum);
 } pt_trace_writer;
 

@@ -279,14 +279,23 @@ static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
     puts_(t, "}\n");
 }
 
-static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
-                    const char *why)
+/* A segment's remark of type TYPE, its text under KEY. */
+static void remark(pt_trace *t, const pt_model *m, uint64_t seg, const char *type,
+                   uint64_t v, const char *key, const char *text)
 {
-    pt_trace *t = ud;
-
-    put_seg_json(t, "skip", m, seg);
+    put_seg_json(t, type, m, seg);
     if (v) { puts_(t, ",\"v\":"); put_u64(t, v); }
-    puts_(t, ",\"why\":"); put_json_str(t, why); puts_(t, "}\n");
+    puts_(t, key); put_json_str(t, text); puts_(t, "}\n");
+}
+
+static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *why)
+{
+    remark(ud, m, seg, "skip", v, ",\"why\":", why);
+}
+
+static void on_note(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *what)
+{
+    remark(ud, m, seg, "note", v, ",\"what\":", what);
 }
 
 /* ===== summary ===== */
@@ -313,5 +322,5 @@ static void on_summary(void *ud, const pt_summary *sum)
 }
 
 const pt_trace_writer pt_trace_jsonl = {
-    header_json, on_vertex, on_pixels, on_clip, on_skip, on_summary
+    header_json, on_vertex, on_pixels, on_clip, on_skip, on_note, on_summary
 };

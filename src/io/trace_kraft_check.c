@@ -8,26 +8,41 @@
 #include <string.h>
 #include "io/trace_kraft.h"
 
+/* 1 when x is beyond Java's int. */
+static int out_of_int(int64_t x)
+{
+    return x < INT32_MIN || x > INT32_MAX;
+}
+
 /* The course's renderer can log segment seg of model m (setup su): its
-** endpoints round to ints and it has at most PT_KRAFT_MAX_STEPS steps.
+** its loop ends, its endpoints round to ints and it has at most
+** PT_KRAFT_MAX_STEPS steps.
 ** Returns 0, or -1 with a message. */
 static int seg_check(const pt_scene *s, const pt_model *m, uint64_t seg,
                      const pt_raster_setup *su, char *err, size_t errlen)
 {
     int64_t n = su->s1 - su->s0;                     /* steps - 1 */
 
-    if (su->kind == PT_RASTER_SKIPPED ||
-        llabs(su->x0) > INT32_MAX || llabs(su->y0) > INT32_MAX ||
-        llabs(su->x1) > INT32_MAX || llabs(su->y1) > INT32_MAX) {
+    if (su->kind != PT_RASTER_DEGENERATE && su->s1 >= INT32_MAX) {
+        snprintf(err, errlen, "%s: error: model '%s', segment %llu: its last step is "
+                 "(int) %lld, the largest int: the course's renderer steps on forever "
+                 "(its int wraps), and so would its log (docs/renderer4.md)",
+                 s->path, m->name, (unsigned long long)seg, (long long)su->s1);
+        return -1;
+    }
+    if (su->kind != PT_RASTER_SKIPPED) {
+        if (n >= PT_KRAFT_MAX_STEPS) {
+            snprintf(err, errlen, "%s: error: model '%s', segment %llu: %lld steps, more than "
+                     "the %ld lines a segment's pixel log may have", s->path, m->name,
+                     (unsigned long long)seg, (long long)n + 1, PT_KRAFT_MAX_STEPS);
+            return -1;
+        }
+    }
+    if (su->kind == PT_RASTER_SKIPPED || out_of_int(su->x0) || out_of_int(su->y0) ||
+        out_of_int(su->x1) || out_of_int(su->y1)) {
         snprintf(err, errlen, "%s: error: model '%s', segment %llu: an endpoint is beyond "
                  "the int pixel range of the course's renderer (its log would not end)",
                  s->path, m->name, (unsigned long long)seg);
-        return -1;
-    }
-    if (n >= PT_KRAFT_MAX_STEPS) {
-        snprintf(err, errlen, "%s: error: model '%s', segment %llu: %lld steps, more than "
-                 "the %ld lines a segment's pixel log may have", s->path, m->name,
-                 (unsigned long long)seg, (long long)n + 1, PT_KRAFT_MAX_STEPS);
         return -1;
     }
     return 0;

@@ -296,15 +296,24 @@ static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
     put(t, "\n", 1);
 }
 
-static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
-                    const char *why)
+/* A segment's remark, KIND ("skipped     ", "note        "): "NAME sN KIND vV: TEXT". */
+static void remark(pt_trace *t, const pt_model *m, uint64_t seg, const char *kind,
+                   uint64_t v, const char *text)
 {
-    pt_trace *t = ud;
-
     put_who(t, m->name, 's', seg);
-    puts_(t, "skipped      ");
+    puts_(t, kind);
     if (v) { put(t, "v", 1); put_u64(t, v); puts_(t, ": "); }
-    puts_(t, why); put(t, "\n", 1);
+    puts_(t, text); put(t, "\n", 1);
+}
+
+static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *why)
+{
+    remark(ud, m, seg, "skipped      ", v, why);
+}
+
+static void on_note(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *what)
+{
+    remark(ud, m, seg, "note         ", v, what);
 }
 
 /* ===== summary ===== */
@@ -331,5 +340,5 @@ static void on_summary(void *ud, const pt_summary *sum)
 }
 
 const pt_trace_writer pt_trace_text = {
-    header_text, on_vertex, on_pixels, on_clip, on_skip, on_summary
+    header_text, on_vertex, on_pixels, on_clip, on_skip, on_note, on_summary
 };

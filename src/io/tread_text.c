@@ -191,7 +191,7 @@ static int t_clip(pt_treader *r, cur *c, uint32_t model, uint64_t seg)
     return pt_tr_add_clip(r, &cl);
 }
 
-/* A record line: "NAME vN STAGE ..." or "NAME sN pixel|clipped|skipped ...". */
+/* A record line: "NAME vN STAGE ..." or "NAME sN pixel|clipped|skipped|note ...". */
 static int text_record(pt_treader *r)
 {
     cur c = {r->line, r->eol};
@@ -209,7 +209,7 @@ static int text_record(pt_treader *r)
     if (id[0] == 'v') return t_vertex(r, &c, model, num, 0, kind, nk);
     if (pt_tr_is(kind, nk, "pixel")) return t_pixel(r, &c, model, num);
     if (pt_tr_is(kind, nk, "clipped")) return t_clip(r, &c, model, num);
-    if (pt_tr_is(kind, nk, "skipped")) return 0;
+    if (pt_tr_is(kind, nk, "skipped") || pt_tr_is(kind, nk, "note")) return 0;
     if (pt_tr_stage_named(kind, nk) >= 0) return t_vertex(r, &c, model, num, 1, kind, nk);
     return pt_tr_fail(r, kind, "unknown record '%.*s'", (int)(nk > 40 ? 40 : nk), kind);
 }

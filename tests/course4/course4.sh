@@ -28,7 +28,7 @@ for scene in "$dir"/*.scene; do
         n=$((n + 1))
     done
 done
-check "course4-2.2 17 logs" test "$n" = 17
+check "course4-2.2 20 logs" test "$n" = 20
 
 # ---- course4-3: the switches' spellings
 run "$dir/switches.scene" --kraft-debug scene,bogus
@@ -65,4 +65,30 @@ done
 sed 's/{y_hi = *-*[0-9]*/{y_hi =  -7/' "$tmp/aa-edges.log" > "$tmp/moved.log"
 run diff "$tmp/aa-edges.txt" "$tmp/moved.log"
 check "course4-5.3 a pair's upper pixel moved: the pixels differ" test "$rc" = 1
+# ---- course4-6: segments with an end that has no integer pixel (NaN, an
+# infinity): the course rounds it as Math.round does and draws on; the
+# traces say so in a note record before the segment's pixels
+run "$dir/nan-segment.scene" --trace "$tmp/nan.txt"
+check "course4-6.1 NaN ends: exit 0" test "$rc" = 0
+check "course4-6.2 ... the text trace's note on v1, rounded to (0, 0)" grep -q "^m s1 *note *v1: endpoint (x_pp, y_pp) = (nan, nan) .* makes it (0, 0)" "$tmp/nan.txt"
+check "course4-6.3 ... no segment skipped" grep -q "segments_skipped 0" "$tmp/nan.txt"
+check "course4-6.4 ... the note before the segment's pixels" test "$(grep -m1 -n ' s1 ' "$tmp/nan.txt" | cut -d: -f2 | grep -c note)" = 1
+run "$dir/nan-segment.scene" --format jsonl
+check "course4-6.5 ... the JSON Lines trace's note" grep -q '"type":"note","model":"m","segment":2,"v":1,"what":"endpoint (x_pp, y_pp) = (nan, nan)' "$tmp/out"
+gzip -dc "$dir/nan-segment.all.log.gz" > "$tmp/nan.log"
+run diff "$tmp/nan.txt" "$tmp/nan.log"
+check "course4-6.6 ... the trace and the course's log agree on every pixel" grep -q "The traces agree" "$tmp/out"
+run "$dir/inf-segment.scene" --kraft-debug all
+check "course4-6.7 an infinite start: the pixel log refused (2^31 lines)" grep -q "2147483669 steps, more than the 16777216 lines" "$tmp/err"
+check "course4-6.8 ... exit 2, nothing written" test "$rc" = 2 -a ! -s "$tmp/out"
+run "$dir/inf-segment.scene"
+check "course4-6.9 ... its trace's note: -inf rounded to Long.MIN_VALUE" grep -q "(-inf, -inf) .* makes it (-9223372036854775808, -9223372036854775808)" "$tmp/out"
+check "course4-6.10 ... 2^31 + 21 steps clipped" grep -q "clipped *2147483669 steps" "$tmp/out"
+sed 's/^v 1 0.5 0$/v -1 0.5 0/' "$dir/inf-segment.scene" > "$tmp/endless.scene"
+run "$tmp/endless.scene" --image "$tmp/endless.ppm"
+check "course4-6.11 an infinite end: the course's loop never ends, pipetrace's does" test "$rc" = 0 -a -s "$tmp/endless.ppm"
+run "$tmp/endless.scene"
+check "course4-6.12 ... and its trace says so" grep -q "note *the course's loop never ends: its last step is the largest int" "$tmp/out"
+run "$tmp/endless.scene" --kraft-debug all
+check "course4-6.13 ... its pixel log refused: the course's would never end" grep -q "segment 1: its last step is (int) 2147483647, the largest int" "$tmp/err"
 report
