@@ -64,6 +64,18 @@ static void check_setup(void *ud, const pt_model *m, uint64_t seg, const pt_rast
     if (kc->rc == 0) kc->rc = seg_check(kc->s, m, seg, su, kc->err, kc->errlen);
 }
 
+int pt_kraft_point_check(const pt_scene *s, const char *model, int radius, char *err,
+                         size_t errlen)
+{
+    int64_t n = (2 * (int64_t)radius + 1) * (2 * (int64_t)radius + 1);
+
+    if (radius < 0 || n <= PT_KRAFT_MAX_STEPS) return 0;
+    snprintf(err, errlen, "%s: error: model '%s': a point of radius %d has %lld pixels, more "
+             "than the %ld lines a point's pixel log may have", s->path, model, radius,
+             (long long)n, PT_KRAFT_MAX_STEPS);
+    return -1;
+}
+
 /* The course's renderer can log the points of model m: their centres are
 ** finite and in the int range, and each has at most PT_KRAFT_MAX_STEPS
 ** pixels.  Returns 0, or -1 with a message. */
@@ -87,12 +99,13 @@ static int points_check(const pt_scene *s, const pt_model *m, char *err, size_t 
         pp.x = js[m->pts[q].v].rec[PT_STAGE_PIXEL].x;
         pp.y = js[m->pts[q].v].rec[PT_STAGE_PIXEL].y;
         n = pt_raster_point(pp, m->pts[q].radius, s->vp_w, s->vp_h, 1, 0, &dt, NULL, NULL);
-        if (n < 0 || n > PT_KRAFT_MAX_STEPS) {
-            snprintf(err, errlen, "%s: error: model '%s', point %zu: %s", s->path, m->name,
-                     q + 1, n < 0 ? "its centre is beyond the int pixel range of the "
-                     "course's renderer (its log would not end)" : "more pixels than a "
-                     "point's pixel log may have");
+        if (n < 0) {
+            snprintf(err, errlen, "%s: error: model '%s', point %zu: its centre is beyond the "
+                     "int pixel range of the course's renderer (its log would not end)",
+                     s->path, m->name, q + 1);
             rc = -1;
+        } else {
+            rc = pt_kraft_point_check(s, m->name, m->pts[q].radius, err, errlen);
         }
     }
     free(js);
