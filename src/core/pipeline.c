@@ -244,6 +244,7 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
         pt_model_plan *mp = &p->models[k];
 
         mp->selected = !o->model || strcmp(o->model, m->name) == 0;
+        mp->hidden = p->pipe == &pt_pipe_classic && (m->hidden_position || m->hidden_model);
         mp->used = calloc(m->nv ? m->nv : 1, 1);
         if (!mp->used) { pt_plan_free(p); return -1; }
         for (j = 0; j < m->nseg; j++) {
@@ -476,6 +477,7 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
         filing *f = report && l->journey ? fl : NULL;
         pt_vtx out;
 
+        if (mp->hidden) continue;           /* the course runs none of it */
         if (!traced && !o->rasterize) continue;
         if (!mp->used[j] && !(traced && o->every_vertex)) continue;
         if (report && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
@@ -841,7 +843,7 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
     int course = p->pipe == &pt_pipe_classic;       /* the course's renderer 4 */
     size_t j, next = 0;
 
-    if (course && (m->hidden_position || m->hidden_model)) return;
+    if (p->models[k].hidden) return;
     d->rc.m = m;
     for (j = 0; j < m->nseg; j++) {
         pt_vec2 a = pp[m->seg[j].a], b = pp[m->seg[j].b];

@@ -72,6 +72,10 @@ typedef struct pt_model_plan {
     unsigned char *used;         /* used[v]: some segment uses vertex v; owned */
     size_t nused;                /* number of used vertices */
     int selected;                /* 1: passes the --model filter */
+    int hidden;                  /* 1: the course's renderer 4 (classic camera)
+                                 ** skips it whole (hidden-position, hidden-model:
+                                 ** Pipeline.render runs no stage of it): no vertex
+                                 ** runs, no record, nothing drawn */
 } pt_model_plan;
 
 typedef struct pt_plan {

@@ -44,7 +44,7 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
         puts_(t, ",\"translate\":"); pt_trace_vec3_json(t, m->translate);
         puts_(t, ",\"color\":["); pt_trace_rgb(t, m->color, ",");
         puts_(t, "],\"traced\":");
-        puts_(t, mp->selected ? "true" : "false");
+        puts_(t, mp->selected && !mp->hidden ? "true" : "false");
         if (p->pipe->matrices) { puts_(t, ",\"world\":"); pt_trace_mat(t, &mp->world, 1); }
         puts_(t, ",\"stages\":[");
         for (i = 0; i < p->norder; i++) {

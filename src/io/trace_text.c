@@ -90,7 +90,9 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
         put_u64(t, mp->nused); puts_(t, " used), "); put_u64(t, m->nseg);
         puts_(t, " segments, translate "); put_xyz_text(t, m->translate);
         puts_(t, ", color "); pt_trace_rgb(t, m->color, " ");
-        if (!mp->selected) puts_(t, ", not traced (--model)");
+        if (mp->hidden) puts_(t, m->hidden_position ? ", hidden (hidden-position): not drawn, "
+                                  "not traced" : ", hidden (hidden-model): not drawn, not traced");
+        else if (!mp->selected) puts_(t, ", not traced (--model)");
         put(t, "\n", 1);
         if (p->pipe->matrices) {
             puts_(t, "  world      "); pt_trace_mat(t, &mp->world, 0); put(t, "\n", 1);

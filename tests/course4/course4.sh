@@ -91,4 +91,17 @@ run "$tmp/endless.scene"
 check "course4-6.12 ... and its trace says so" grep -q "note *the course's loop never ends: its last step is the largest int" "$tmp/out"
 run "$tmp/endless.scene" --kraft-debug all
 check "course4-6.13 ... its pixel log refused: the course's would never end" grep -q "segment 1: its last step is (int) 2147483647, the largest int" "$tmp/err"
+# ---- course4-7: hidden models: the course's Pipeline.render runs no stage of
+# a hidden position or model (nor logs its vertices), and pipetrace's traces
+# leave them out alike, saying so in the header
+printf 'framebuffer 20 20\ncamera perspective\nmodel a\nv 0 0 -1\nv 0.5 0.5 -1\nsegment 1 2\nmodel b\nhidden-model\nv 0.1 0 -1\nv 0.5 0.2 -1\nsegment 1 2\nmodel c\nhidden-position\nv 0.2 0 -1\nv 0.5 0.3 -1\nsegment 1 2\n' > "$tmp/hid.scene"
+run "$tmp/hid.scene"
+check "course4-7.1 a hidden model's vertices are not traced" test "$(grep -c '^[bc] v' "$tmp/out")" = 0
+check "course4-7.2 ... the visible one's are" test "$(grep -c '^a v' "$tmp/out")" = 10
+check "course4-7.3 ... the header says which and why" sh -c 'grep -q "^model        b: .*, hidden (hidden-model): not drawn, not traced$" "$1" && grep -q "^model        c: .*, hidden (hidden-position): not drawn, not traced$" "$1"' _ "$tmp/out"
+check "course4-7.4 ... vertices_traced counts the visible ones" grep -q "vertices_traced 2$" "$tmp/out"
+run "$tmp/hid.scene" --format jsonl
+check "course4-7.5 JSON Lines: no vertex record of b or c, both traced false" sh -c '! grep -q "\"type\":\"vertex\",\"model\":\"[bc]\"" "$1" && test "$(grep -o "\"traced\":false" "$1" | wc -l)" = 2' _ "$tmp/out"
+run "$tmp/hid.scene" --kraft-debug all
+check "course4-7.6 the course's log: b and c hidden, their vertices not logged" sh -c 'grep -q "Hidden model: b" "$1" && grep -q "Hidden position: c" "$1" && test "$(grep -c "^[0-9]. .*: vIndex" "$1")" = 8' _ "$tmp/out"
 report
