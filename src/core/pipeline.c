@@ -417,7 +417,8 @@ static void pieces_start(pieces *pc, const pt_scene *s, const pt_options *o,
     pc->max_vertices = o->piece_vertices ? o->piece_vertices : 1;
     pc->max_segments = o->piece_segments ? o->piece_segments : 1;
     pc->max_pixels = o->piece_pixels ? o->piece_pixels : 1;
-    pc->segment_cuts = l->pixels || l->clip || l->skip || l->setup || l->step ||
+    pc->segment_cuts = l->pixels || l->point_pixels || l->clip || l->skip || l->setup ||
+                       l->step ||
                        pt_scene_pipeline(s)->nsegstages > 0;
     pc->taken = l->piece ? l->piece(l->ud, 0, 0) : 1;
 }
@@ -767,13 +768,23 @@ float pt_model_color(const pt_model *m, uint32_t ci, int i)
 }
 
 /* A pixel of a point (the course's Rasterize_Clip_Point), inside the
-** viewport: through the framebuffer and index stages into the image.  The
-** image alone: a point's pixels are in no trace record nor in the summary's
-** count (the course's log shows them: src/io/trace_kraft.c). */
+** viewport: through the framebuffer and index stages into the image, and to
+** the listener's point_pixels, a run at a time (not in the summary's count;
+** the course's log shows them too: src/io/trace_kraft.c). */
 typedef struct dot_ctx {
     raster_ctx *rc;
     unsigned char rgb[3];        /* the point's colour, gamma-encoded */
+    const pt_listener *l;        /* told of the pixels, or NULL */
+    uint64_t pt;                 /* the point, 1-based */
+    size_t n;                    /* pixels in px[] */
+    pt_fb_pixel px[PT_RASTER_RUN];
 } dot_ctx;
+
+static void dots_tell(dot_ctx *dc)
+{
+    if (dc->n) dc->l->point_pixels(dc->l->ud, dc->rc->m, dc->pt, dc->px, dc->n);
+    dc->n = 0;
+}
 
 static void on_dot(void *ud, const pt_raster_dot *dt)
 {
@@ -782,14 +793,22 @@ static void on_dot(void *ud, const pt_raster_dot *dt)
     pt_pix f = pt_viewport2fb(dt->vp, rc->x_ul, rc->y_ul, NULL);
     int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
 
-    if (idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, dc->rgb);
+    if (dc->l) {
+        pt_fb_pixel *q = &dc->px[dc->n];
+        q->x_fb = f.x; q->y_fb = f.y; q->idx = idx;
+        memcpy(q->paint.rgb, dc->rgb, sizeof q->paint.rgb);
+        q->paint.coverage = 1.0f;
+        if (++dc->n == PT_RASTER_RUN) dots_tell(dc);
+    }
+    if (rc->fb && idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, dc->rgb);
 }
 
 /* Draw the points of model m from *next on whose `after` is at most upto
-** (the segments drawn so far), in file order, into the image: the course's
-** renderer 4 (classic camera) only. */
+** (the segments drawn so far), in file order, into the image and to l's
+** point_pixels (l NULL: nobody listens): the course's renderer 4 (classic
+** camera) only. */
 static void draw_points(drawing *d, const pt_scene *s, const pt_model *m,
-                        const pt_vec2 *pp, size_t *next, size_t upto)
+                        const pt_vec2 *pp, size_t *next, size_t upto, const pt_listener *l)
 {
     for (; *next < m->npts && m->pts[*next].after <= upto; (*next)++) {
         const pt_point *pt = &m->pts[*next];
@@ -797,13 +816,17 @@ static void draw_points(drawing *d, const pt_scene *s, const pt_model *m,
         dot_ctx dc;
         int i;
 
-        if (!d->rc.fb) continue;
+        if (!d->rc.fb && !l) continue;
         dc.rc = &d->rc;
+        dc.l = l;
+        dc.pt = *next + 1;
+        dc.n = 0;
         for (i = 0; i < 3; i++) {               /* gamma first (NOTES.md 11.3) */
             float c = pt_model_color(m, pt->c, i);
             dc.rgb[i] = pt_color_byte(s->gamma ? pt_gamma(c) : c);
         }
         pt_raster_point(pp[pt->v], pt->radius, s->vp_w, s->vp_h, 0, 0, &dt, on_dot, &dc);
+        if (l) dots_tell(&dc);
     }
 }
 
@@ -841,6 +864,7 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
     int steps = (l->setup || l->step) && selected && o->trace_raster;   /* DDA records */
     int inlined = p->pipe->inlined_dda && !steps;   /* pt_raster_draw() may draw */
     int course = p->pipe == &pt_pipe_classic;       /* the course's renderer 4 */
+    int points = selected && o->trace_raster && l->point_pixels;   /* their records */
     size_t j, next = 0;
 
     if (p->models[k].hidden) return;
@@ -853,7 +877,7 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
         const char *dropped;
         int draw, r;
 
-        if (course) draw_points(d, s, m, pp, &next, j);
+        if (course) draw_points(d, s, m, pp, &next, j, points && taken ? l : NULL);
         if (j == 0 || m->ncolors) {                 /* no list: one colour, once */
             segment_colors(&d->im.col, s, m, &m->seg[j], course);
             d->ls.col = d->quiet.col = d->im.col;
@@ -886,7 +910,9 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
             if (report && l->skip) skip_report(l, m, j + 1, a, b);
         }
     }
-    if (course) draw_points(d, s, m, pp, &next, m->nseg);
+    if (course)
+        draw_points(d, s, m, pp, &next, m->nseg,
+                    points && pc->taken ? l : NULL);
 }
 
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
@@ -911,12 +937,14 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     ** ran ("in turn"), from one buffer the size of the largest model, which
     ** stays in the cache: the records that remain come in the same order as
     ** when every model's vertices run first (the summary comes last). */
-    raster = o->rasterize && (fb || l->pixels || l->clip || l->skip || l->setup || l->step ||
+    raster = o->rasterize && (fb || l->pixels || l->point_pixels || l->clip || l->skip ||
+                              l->setup || l->step ||
                               l->summary || cuts);
     in_turn = raster &&
               (o->model_by_model ||
                (!l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin && !l->journey) ||
-               (!cuts && !l->pixels && !l->clip && !l->skip && !l->setup && !l->step));
+               (!cuts && !l->pixels && !l->point_pixels && !l->clip && !l->skip && !l->setup &&
+                !l->step));
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
     n = s->nmodels ? s->nmodels : 1;

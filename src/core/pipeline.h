@@ -136,6 +136,14 @@ typedef struct pt_listener {
                           ** record of it comes after the pixels before it */
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
                  pt_pix first, pt_pix last);
+    void (*point_pixels)(void *ud, const pt_model *m, uint64_t pt,
+                         const pt_fb_pixel *px, size_t n);
+                          /* the classic camera (the course's renderer 4): the
+                          ** pixels point pt (1-based, the model's points in
+                          ** file order) draws, in the course's order, n >= 1 at
+                          ** a time; between the segments' records where the
+                          ** course draws the point.  Not in the summary's
+                          ** pixel count */
     void (*setup)(void *ud, const pt_model *m, uint64_t seg, const pt_raster_setup *su);
     void (*step)(void *ud, const pt_model *m, uint64_t seg, const pt_raster_step *st);
                           /* the DDA's records of segment seg (core/raster.h):

@@ -252,15 +252,22 @@ static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
     pt_trace_pixel_prefix(t, m, seg, pixel_opening);
 }
 
-/* One pixel record, the long way: for a model whose name is too long to
-** keep its opening. */
-static void pixel_long(pt_trace *t, const pt_model *m, uint64_t seg, const pt_fb_pixel *p)
+/* One pixel record of segment or point ('s', 'p') n, the long way. */
+static void pixel_line(pt_trace *t, const pt_model *m, char kind, uint64_t n,
+                       const pt_fb_pixel *p)
 {
-    put_who(t, m->name, 's', seg);
+    put_who(t, m->name, kind, n);
     puts_(t, "pixel        x_fb = "); put_int_col(t, p->x_fb);
     puts_(t, "  y_fb = "); put_int_col(t, p->y_fb);
     puts_(t, "  idx = "); put_i64(t, p->idx);
     put(t, "\n", 1);
+}
+
+/* A segment's pixel record, the long way: for a model whose name is too long
+** to keep its opening. */
+static void pixel_long(pt_trace *t, const pt_model *m, uint64_t seg, const pt_fb_pixel *p)
+{
+    pixel_line(t, m, 's', seg, p);
 }
 
 /* The rest of a pixel record after its kept opening, at o:
@@ -278,6 +285,16 @@ static void on_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pix
                       size_t n)
 {
     pixels_put(ud, m, seg, px, n, pixel_prefix, pixel_long, pixel_text_at);
+}
+
+/* A point's pixels: "NAME pN pixel        x_fb = X  y_fb = Y  idx = I", the
+** plain way (a point has few pixels inside the viewport). */
+static void on_point_pixels(void *ud, const pt_model *m, uint64_t pt, const pt_fb_pixel *px,
+                            size_t n)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++) pixel_line(ud, m, 'p', pt, &px[k]);
 }
 
 static void put_pair_text(pt_trace *t, pt_pix p)
@@ -342,5 +359,5 @@ static void on_summary(void *ud, const pt_summary *sum)
 }
 
 const pt_trace_writer pt_trace_text = {
-    header_text, on_vertex, on_pixels, on_clip, on_skip, on_note, on_summary
+    header_text, on_vertex, on_pixels, on_clip, on_point_pixels, on_skip, on_note, on_summary
 };

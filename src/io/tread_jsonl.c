@@ -374,6 +374,9 @@ static int j_pixel(pt_treader *r, const jfield *f, int nf)
     pt_tpix px;
 
     memset(&px, 0, sizeof px);
+    if (!j_get(f, nf, "segment") && j_get(f, nf, "point"))
+        return 0;                           /* a point's: passed over, as the course's
+                                            ** log's are (tread_kraft.c) */
     if (jmodel(r, f, nf, "pixel", &px.model) != 0 ||
         need_count(r, f, nf, "segment", "pixel", &px.seg) || need_int(r, f, nf, "x", "pixel", &px.x) ||
         need_int(r, f, nf, "y", "pixel", &px.y) || need_int(r, f, nf, "i", "pixel", &px.i))

@@ -104,4 +104,16 @@ run "$tmp/hid.scene" --format jsonl
 check "course4-7.5 JSON Lines: no vertex record of b or c, both traced false" sh -c '! grep -q "\"type\":\"vertex\",\"model\":\"[bc]\"" "$1" && test "$(grep -o "\"traced\":false" "$1" | wc -l)" = 2' _ "$tmp/out"
 run "$tmp/hid.scene" --kraft-debug all
 check "course4-7.6 the course's log: b and c hidden, their vertices not logged" sh -c 'grep -q "Hidden model: b" "$1" && grep -q "Hidden position: c" "$1" && test "$(grep -c "^[0-9]. .*: vIndex" "$1")" = 8' _ "$tmp/out"
+# ---- course4-8: a point's pixels are in the traces (pixel records of "pN"),
+# in the order the course draws them among the segments; why finds them
+run "$dir/points.scene"
+check "course4-8.1 point 1's pixel in the text trace" grep -q "^dots p1 *pixel *x_fb = *6  y_fb = *27  idx = 1086$" "$tmp/out"
+check "course4-8.2 ... in drawing order: p1 p2 s1 p3 p4 p5 s2 p7 p10" test "$(grep -o "^dots [sp][0-9]*" "$tmp/out" | uniq | cut -d' ' -f2 | tr '\n' ' ')" = "p1 p2 s1 p3 p4 p5 s2 p7 p10 "
+check "course4-8.3 ... 134 of them, 54 of the segments'" test "$(grep -c "^dots p[0-9]* *pixel" "$tmp/out")" = 134 -a "$(grep -c "^dots s[0-9]* *pixel" "$tmp/out")" = 54
+run "$dir/points.scene" --format jsonl
+check "course4-8.4 JSON Lines: the same 134, keyed by point" test "$(grep -c '^{"type":"pixel","model":"dots","point":[0-9]*,"x":' "$tmp/out")" = 134
+check "course4-8.5 ... point 1's" grep -q '^{"type":"pixel","model":"dots","point":1,"x":6,"y":27,"i":1086}$' "$tmp/out"
+run why "$dir/points.scene" 6 27
+check "course4-8.6 why: lit by point 1, in its color" grep -q "^  dots p1 (point 1: v1, radius 0): a pixel of its square, in color 131 137 142" "$tmp/out"
+check "course4-8.7 ... the last drawn there" grep -q "^color 131 137 142: dots p1 is the last point drawn there$" "$tmp/out"
 report
