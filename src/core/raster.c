@@ -54,12 +54,20 @@ static int ymajor(double x0, double y0, double x1, double y1)
     return fabs(y1 - y0) > fabs(x1 - x0);
 }
 
+/* 1 when an end of p0-p1 has no integer pixel (not finite, or |x| >= 2^62):
+** the course's rounding takes over (pt_raster_java_round). */
+static int no_pixel(pt_vec2 p0, pt_vec2 p1)
+{
+    return !(fabs(p0.x) < PT_PIX_LIMIT && fabs(p0.y) < PT_PIX_LIMIT &&
+             fabs(p1.x) < PT_PIX_LIMIT && fabs(p1.y) < PT_PIX_LIMIT);
+}
+
 int pt_raster_endless(pt_vec2 p0, pt_vec2 p1)
 {
     double x0 = pt_raster_java_round(p0.x), y0 = pt_raster_java_round(p0.y);
     double x1 = pt_raster_java_round(p1.x), y1 = pt_raster_java_round(p1.y);
 
-    if (x0 == x1 && y0 == y1) return 0;             /* degenerate: no loop */
+    if (!no_pixel(p0, p1) || (x0 == x1 && y0 == y1)) return 0;   /* int64 steps; one pixel */
     if (ymajor(x0, y0, x1, y1)) return pt_raster_java_int(fmax(y0, y1)) == INT_MAX;
     return pt_raster_java_int(fmax(x0, x1)) == INT_MAX;
 }
@@ -417,13 +425,13 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
 {
     int64_t ix0, iy0, ix1, iy1, s0, s1;
     double x0, y0, x1, y1, m;
-    int transposed, swapped = 0;
+    int transposed, swapped = 0, java = col && col->java && no_pixel(p0, p1);
     pt_raster_setup su;
     dda d;
     tint tn;
     pt_pix p;
 
-    if (col && col->java) {                         /* the course: never skipped */
+    if (java) {                                     /* the course's rounding, not skipped */
         x0 = pt_raster_java_round(p0.x); y0 = pt_raster_java_round(p0.y);
         x1 = pt_raster_java_round(p1.x); y1 = pt_raster_java_round(p1.y);
         ix0 = sat64(x0); iy0 = sat64(y0);
@@ -480,7 +488,7 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
     }
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
     colors_start(&tn, col, swapped, x0, x1);
-    if (col && col->java) {                         /* for (int x = (int)x0; x <= (int)x1; ...) */
+    if (java) {                                     /* for (int x = (int)x0; x <= (int)x1; ...) */
         s0 = pt_raster_java_int(x0);
         s1 = pt_raster_java_int(x1);
     } else {

@@ -23,7 +23,7 @@ static int seg_check(const pt_scene *s, const pt_model *m, uint64_t seg,
 {
     int64_t n = su->s1 - su->s0;                     /* steps - 1 */
 
-    if (su->kind != PT_RASTER_DEGENERATE && su->s1 >= INT32_MAX) {
+    if (su->kind == PT_RASTER_DRAWN && su->s1 == INT32_MAX) {
         snprintf(err, errlen, "%s: error: model '%s', segment %llu: its last step is "
                  "(int) %lld, the largest int: the course's renderer steps on forever "
                  "(its int wraps), and so would its log (docs/renderer4.md)",
