@@ -219,6 +219,7 @@ static int do_step(const run *r, step st, cpos *c)
         for (k = 0; k < m->np; k++) {
             uint64_t n;
             if (ls && ls->raster) ls->raster(ls->ud, &c->pos, m, &m->p[k]);
+            if (ls && ls->measure) continue;
             n = pt_rv_raster_prim(m, &m->p[k], &r->par, r->fb->rgb, ls ? ls->raster_ls : NULL);
             if (ls && ls->drawn) ls->drawn(ls->ud, &c->pos, m, &m->p[k], n);
         }

@@ -104,6 +104,9 @@ typedef struct pt_course_ls {
     pt_rv_clip_ls nearclip;      /* handed to pt_rv_nearclip() */
     pt_rv_clip_ls clip;          /* handed to pt_rv_clip() */
     const pt_rv_raster_ls *raster_ls;   /* handed to pt_rv_raster_prim() */
+    int measure;                 /* 1: the rasterizer is not run: raster hears each
+                                 ** primitive it would draw, drawn nothing (a
+                                 ** look at what would be drawn, before drawing) */
     void *ud;
 } pt_course_ls;
 

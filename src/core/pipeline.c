@@ -244,6 +244,7 @@ int pt_plan_make(pt_plan *p, const pt_scene *s, const pt_options *o)
         pt_model_plan *mp = &p->models[k];
 
         mp->selected = !o->model || strcmp(o->model, m->name) == 0;
+        mp->hidden = p->pipe == &pt_pipe_classic && (m->hidden_position || m->hidden_model);
         mp->used = calloc(m->nv ? m->nv : 1, 1);
         if (!mp->used) { pt_plan_free(p); return -1; }
         for (j = 0; j < m->nseg; j++) {
@@ -416,7 +417,8 @@ static void pieces_start(pieces *pc, const pt_scene *s, const pt_options *o,
     pc->max_vertices = o->piece_vertices ? o->piece_vertices : 1;
     pc->max_segments = o->piece_segments ? o->piece_segments : 1;
     pc->max_pixels = o->piece_pixels ? o->piece_pixels : 1;
-    pc->segment_cuts = l->pixels || l->clip || l->skip || l->setup || l->step ||
+    pc->segment_cuts = l->pixels || l->point_pixels || l->clip || l->skip || l->setup ||
+                       l->step ||
                        pt_scene_pipeline(s)->nsegstages > 0;
     pc->taken = l->piece ? l->piece(l->ud, 0, 0) : 1;
 }
@@ -476,6 +478,7 @@ static void run_model(const pt_scene *s, const pt_plan *p, const pt_options *o,
         filing *f = report && l->journey ? fl : NULL;
         pt_vtx out;
 
+        if (mp->hidden) continue;           /* the course runs none of it */
         if (!traced && !o->rasterize) continue;
         if (!mp->used[j] && !(traced && o->every_vertex)) continue;
         if (report && l->vertex_begin) l->vertex_begin(l->ud, m, j + 1);
@@ -569,6 +572,49 @@ static void skip_report(const pt_listener *l, const pt_model *m, uint64_t seg,
         : "endpoint not finite in the pixel plane";
 
     l->skip(l->ud, m, seg, (a_bad ? sg->a : sg->b) + 1, why);
+}
+
+/* A number of the pixel plane as a note shows it: nan, inf, -inf, or %.17g. */
+static void note_num(char *buf, size_t len, double x)
+{
+    if (x != x) snprintf(buf, len, "nan");
+    else if (isinf(x)) snprintf(buf, len, x > 0 ? "inf" : "-inf");
+    else snprintf(buf, len, "%.17g", x);
+}
+
+/* Java's Math.round(x), a long, in buf. */
+static void note_round(char *buf, size_t len, double x)
+{
+    double r = pt_raster_java_round(x);
+
+    if (r >= 0x1p63) snprintf(buf, len, "9223372036854775807");   /* Long.MAX_VALUE */
+    else snprintf(buf, len, "%lld", (long long)r);
+}
+
+/* Tell l what the course's renderer 4 does with segment seg of model m
+** (ends a, b in the pixel plane) that its ends do not say: an end without an
+** integer pixel (NaN, or beyond PT_PIX_LIMIT) rounded as Java rounds it, a
+** loop that would not end (core/raster.h). */
+static void course_notes(const pt_listener *l, const pt_model *m, uint64_t seg,
+                         pt_vec2 a, pt_vec2 b)
+{
+    const pt_segment *sg = &m->seg[seg - 1];
+    char what[256], x[32], y[32], rx[24], ry[24];
+    int e;
+
+    for (e = 0; e < 2; e++) {
+        pt_vec2 p = e ? b : a;
+        if (fabs(p.x) < PT_PIX_LIMIT && fabs(p.y) < PT_PIX_LIMIT) continue;
+        note_num(x, sizeof x, p.x); note_num(y, sizeof y, p.y);
+        note_round(rx, sizeof rx, p.x); note_round(ry, sizeof ry, p.y);
+        snprintf(what, sizeof what, "endpoint (x_pp, y_pp) = (%s, %s) has no integer pixel; "
+                 "the course's Math.round makes it (%s, %s) (NaN 0, beyond a long saturated) "
+                 "and draws on", x, y, rx, ry);
+        l->note(l->ud, m, seg, (e ? sg->b : sg->a) + 1, what);
+    }
+    if (pt_raster_endless(a, b))
+        l->note(l->ud, m, seg, 0, "the course's loop never ends: its last step is the "
+                "largest int, 2147483647, and its int step wraps; pipetrace stops after that step");
 }
 
 /* Run point mp, which a segment stage made on segment seg of model k, on
@@ -722,13 +768,23 @@ float pt_model_color(const pt_model *m, uint32_t ci, int i)
 }
 
 /* A pixel of a point (the course's Rasterize_Clip_Point), inside the
-** viewport: through the framebuffer and index stages into the image.  The
-** image alone: a point's pixels are in no trace record nor in the summary's
-** count (the course's log shows them: src/io/trace_kraft.c). */
+** viewport: through the framebuffer and index stages into the image, and to
+** the listener's point_pixels, a run at a time (not in the summary's count;
+** the course's log shows them too: src/io/trace_kraft.c). */
 typedef struct dot_ctx {
     raster_ctx *rc;
     unsigned char rgb[3];        /* the point's colour, gamma-encoded */
+    const pt_listener *l;        /* told of the pixels, or NULL */
+    uint64_t pt;                 /* the point, 1-based */
+    size_t n;                    /* pixels in px[] */
+    pt_fb_pixel px[PT_RASTER_RUN];
 } dot_ctx;
+
+static void dots_tell(dot_ctx *dc)
+{
+    if (dc->n) dc->l->point_pixels(dc->l->ud, dc->rc->m, dc->pt, dc->px, dc->n);
+    dc->n = 0;
+}
 
 static void on_dot(void *ud, const pt_raster_dot *dt)
 {
@@ -737,14 +793,22 @@ static void on_dot(void *ud, const pt_raster_dot *dt)
     pt_pix f = pt_viewport2fb(dt->vp, rc->x_ul, rc->y_ul, NULL);
     int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
 
-    if (idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, dc->rgb);
+    if (dc->l) {
+        pt_fb_pixel *q = &dc->px[dc->n];
+        q->x_fb = f.x; q->y_fb = f.y; q->idx = idx;
+        memcpy(q->paint.rgb, dc->rgb, sizeof q->paint.rgb);
+        q->paint.coverage = 1.0f;
+        if (++dc->n == PT_RASTER_RUN) dots_tell(dc);
+    }
+    if (rc->fb && idx >= 0 && idx < rc->npix) pt_fb_set(rc->fb, idx, dc->rgb);
 }
 
 /* Draw the points of model m from *next on whose `after` is at most upto
-** (the segments drawn so far), in file order, into the image: the course's
-** renderer 4 (classic camera) only. */
+** (the segments drawn so far), in file order, into the image and to l's
+** point_pixels (l NULL: nobody listens): the course's renderer 4 (classic
+** camera) only. */
 static void draw_points(drawing *d, const pt_scene *s, const pt_model *m,
-                        const pt_vec2 *pp, size_t *next, size_t upto)
+                        const pt_vec2 *pp, size_t *next, size_t upto, const pt_listener *l)
 {
     for (; *next < m->npts && m->pts[*next].after <= upto; (*next)++) {
         const pt_point *pt = &m->pts[*next];
@@ -752,13 +816,17 @@ static void draw_points(drawing *d, const pt_scene *s, const pt_model *m,
         dot_ctx dc;
         int i;
 
-        if (!d->rc.fb) continue;
+        if (!d->rc.fb && !l) continue;
         dc.rc = &d->rc;
+        dc.l = l;
+        dc.pt = *next + 1;
+        dc.n = 0;
         for (i = 0; i < 3; i++) {               /* gamma first (NOTES.md 11.3) */
             float c = pt_model_color(m, pt->c, i);
             dc.rgb[i] = pt_color_byte(s->gamma ? pt_gamma(c) : c);
         }
         pt_raster_point(pp[pt->v], pt->radius, s->vp_w, s->vp_h, 0, 0, &dt, on_dot, &dc);
+        if (l) dots_tell(&dc);
     }
 }
 
@@ -773,6 +841,7 @@ static void segment_colors(pt_raster_colors *col, const pt_scene *s, const pt_mo
     memset(col, 0, sizeof *col);
     col->gamma = course && s->gamma;
     col->aa = course && s->antialias;
+    col->java = course;                         /* Java's rounding of the ends */
     for (i = 0; i < 3; i++) {
         col->c0[i] = course ? pt_model_color(m, sg->ca, i) : pt_color_float(m->color[i]);
         col->c1[i] = course ? pt_model_color(m, sg->cb, i) : pt_color_float(m->color[i]);
@@ -795,9 +864,10 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
     int steps = (l->setup || l->step) && selected && o->trace_raster;   /* DDA records */
     int inlined = p->pipe->inlined_dda && !steps;   /* pt_raster_draw() may draw */
     int course = p->pipe == &pt_pipe_classic;       /* the course's renderer 4 */
+    int points = selected && o->trace_raster && l->point_pixels;   /* their records */
     size_t j, next = 0;
 
-    if (course && (m->hidden_position || m->hidden_model)) return;
+    if (p->models[k].hidden) return;
     d->rc.m = m;
     for (j = 0; j < m->nseg; j++) {
         pt_vec2 a = pp[m->seg[j].a], b = pp[m->seg[j].b];
@@ -807,7 +877,7 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
         const char *dropped;
         int draw, r;
 
-        if (course) draw_points(d, s, m, pp, &next, j);
+        if (course) draw_points(d, s, m, pp, &next, j, points && taken ? l : NULL);
         if (j == 0 || m->ncolors) {                 /* no list: one colour, once */
             segment_colors(&d->im.col, s, m, &m->seg[j], course);
             d->ls.col = d->quiet.col = d->im.col;
@@ -824,11 +894,13 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
             if (report && l->skip) l->skip(l->ud, m, j + 1, 0, dropped);
             continue;
         }
+        if (course && report && l->note) course_notes(l, m, j + 1, a, b);
         if (draw)                           /* the stages inlined in the DDA */
             r = pt_raster_draw(a, b, s->vp_w, s->vp_h, &d->im, &d->out);
-        else if (steps && taken)            /* step by step, each told */
+        else if (steps && taken) {          /* step by step, each told */
+            d->ls.step = l->step ? on_step : NULL;  /* no step listener: the band */
             r = pt_raster_walk(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out, &d->ls);
-        else if (course)                    /* in its colours, nobody told */
+        } else if (course)                    /* in its colours, nobody told */
             r = pt_raster_walk(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out, &d->quiet);
         else
             r = pt_raster_segment(a, b, s->vp_w, s->vp_h, d->to_vp, &d->out);
@@ -838,7 +910,9 @@ static void draw_model(drawing *d, const pt_scene *s, const pt_plan *p, const pt
             if (report && l->skip) skip_report(l, m, j + 1, a, b);
         }
     }
-    if (course) draw_points(d, s, m, pp, &next, m->nseg);
+    if (course)
+        draw_points(d, s, m, pp, &next, m->nseg,
+                    points && pc->taken ? l : NULL);
 }
 
 int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
@@ -863,12 +937,14 @@ int pt_run(const pt_scene *s, const pt_plan *p, const pt_options *o,
     ** ran ("in turn"), from one buffer the size of the largest model, which
     ** stays in the cache: the records that remain come in the same order as
     ** when every model's vertices run first (the summary comes last). */
-    raster = o->rasterize && (fb || l->pixels || l->clip || l->skip || l->setup || l->step ||
+    raster = o->rasterize && (fb || l->pixels || l->point_pixels || l->clip || l->skip ||
+                              l->setup || l->step ||
                               l->summary || cuts);
     in_turn = raster &&
               (o->model_by_model ||
                (!l->vertex_begin && !l->sink.vertex && !l->clipvertex_begin && !l->journey) ||
-               (!cuts && !l->pixels && !l->clip && !l->skip && !l->setup && !l->step));
+               (!cuts && !l->pixels && !l->point_pixels && !l->clip && !l->skip && !l->setup &&
+                !l->step));
     memset(sum, 0, sizeof *sum);
     sum->models = s->nmodels;
     n = s->nmodels ? s->nmodels : 1;

@@ -72,6 +72,10 @@ typedef struct pt_model_plan {
     unsigned char *used;         /* used[v]: some segment uses vertex v; owned */
     size_t nused;                /* number of used vertices */
     int selected;                /* 1: passes the --model filter */
+    int hidden;                  /* 1: the course's renderer 4 (classic camera)
+                                 ** skips it whole (hidden-position, hidden-model:
+                                 ** Pipeline.render runs no stage of it): no vertex
+                                 ** runs, no record, nothing drawn */
 } pt_model_plan;
 
 typedef struct pt_plan {
@@ -132,6 +136,14 @@ typedef struct pt_listener {
                           ** record of it comes after the pixels before it */
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
                  pt_pix first, pt_pix last);
+    void (*point_pixels)(void *ud, const pt_model *m, uint64_t pt,
+                         const pt_fb_pixel *px, size_t n);
+                          /* the classic camera (the course's renderer 4): the
+                          ** pixels point pt (1-based, the model's points in
+                          ** file order) draws, in the course's order, n >= 1 at
+                          ** a time; between the segments' records where the
+                          ** course draws the point.  Not in the summary's
+                          ** pixel count */
     void (*setup)(void *ud, const pt_model *m, uint64_t seg, const pt_raster_setup *su);
     void (*step)(void *ud, const pt_model *m, uint64_t seg, const pt_raster_step *st);
                           /* the DDA's records of segment seg (core/raster.h):
@@ -142,6 +154,12 @@ typedef struct pt_listener {
                           ** fast-forward past the viewport (pt_raster_walk) */
     void (*skip)(void *ud, const pt_model *m, uint64_t seg,      /* not drawn: */
                  uint64_t v, const char *why);      /* v: the endpoint at fault, 0: none */
+    void (*note)(void *ud, const pt_model *m, uint64_t seg,      /* drawn, but not as */
+                 uint64_t v, const char *what);     /* its ends say: the course's renderer
+                                                    ** 4 rounded endpoint v (0: none) from
+                                                    ** NaN or beyond the long range, or its
+                                                    ** loop would not end (what says which);
+                                                    ** before the segment's pixels */
     void (*summary)(void *ud, const pt_summary *sum);
     int (*piece)(void *ud, uint64_t n, int last);
                           /* NULL: every record comes to this listener.  Else

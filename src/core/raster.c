@@ -23,6 +23,55 @@
 #define FLATTEN
 #endif
 
+/* ===== Java's rounding of the ends (the course's renderer 4) ===== */
+
+double pt_raster_java_round(double x)
+{
+    if (x != x) return 0.0;                         /* Math.round(NaN) = 0 */
+    if (x >= 0x1p63) return 0x1p63;                 /* Long.MAX_VALUE, as a double */
+    if (x <= -0x1p63) return -0x1p63;               /* Long.MIN_VALUE */
+    return pt_java_round(x);
+}
+
+int64_t pt_raster_java_int(double d)
+{
+    if (d >= (double)INT_MAX) return INT_MAX;       /* (int) saturates */
+    if (d <= (double)INT_MIN) return INT_MIN;
+    return (int64_t)d;
+}
+
+/* d, a whole number or +-2^63, as an int64_t, saturated. */
+static int64_t sat64(double d)
+{
+    if (d >= 0x1p63) return INT64_MAX;
+    if (d <= -0x1p63) return INT64_MIN;
+    return (int64_t)d;
+}
+
+/* 1 when the segment (x0, y0) - (x1, y1) steps in y: |slope| > 1. */
+static int ymajor(double x0, double y0, double x1, double y1)
+{
+    return fabs(y1 - y0) > fabs(x1 - x0);
+}
+
+/* 1 when an end of p0-p1 has no integer pixel (not finite, or |x| >= 2^62):
+** the course's rounding takes over (pt_raster_java_round). */
+static int no_pixel(pt_vec2 p0, pt_vec2 p1)
+{
+    return !(fabs(p0.x) < PT_PIX_LIMIT && fabs(p0.y) < PT_PIX_LIMIT &&
+             fabs(p1.x) < PT_PIX_LIMIT && fabs(p1.y) < PT_PIX_LIMIT);
+}
+
+int pt_raster_endless(pt_vec2 p0, pt_vec2 p1)
+{
+    double x0 = pt_raster_java_round(p0.x), y0 = pt_raster_java_round(p0.y);
+    double x1 = pt_raster_java_round(p1.x), y1 = pt_raster_java_round(p1.y);
+
+    if (!no_pixel(p0, p1) || (x0 == x1 && y0 == y1)) return 0;   /* int64 steps; one pixel */
+    if (ymajor(x0, y0, x1, y1)) return pt_raster_java_int(fmax(y0, y1)) == INT_MAX;
+    return pt_raster_java_int(fmax(x0, x1)) == INT_MAX;
+}
+
 /* ===== the DDA ===== */
 
 /* A run of clipped steps being gathered, reported when it ends. */
@@ -311,7 +360,7 @@ void pt_raster_colors_prepare(pt_raster_colors *col)
 ** set, the ends in stepping order s0, s1 (a0 the other coordinate at s0,
 ** p0's end first unless swapped), the slope m. */
 static void tell_setup(const dda *d, pt_raster_setup *su, int transposed, int swapped,
-                       double s0, double s1, double a0, double a1, double m)
+                       int64_t s0, int64_t s1, double a0, double a1, double m)
 {
     const pt_raster_steps *ls = d->ls;
     const pt_raster_colors *col = &ls->col;
@@ -319,12 +368,12 @@ static void tell_setup(const dda *d, pt_raster_setup *su, int transposed, int sw
 
     su->ymajor = transposed;
     su->swapped = swapped;
-    su->s0 = (int64_t)s0;
-    su->s1 = (int64_t)s1;
+    su->s0 = s0;
+    su->s1 = s1;
     su->a0 = a0;
     su->m = m;
-    su->vp0 = step_pixel(d, transposed, s0, a0);
-    su->vp1 = step_pixel(d, transposed, s1, a1);
+    su->vp0 = step_pixel(d, transposed, (double)s0, a0);
+    su->vp1 = step_pixel(d, transposed, (double)s1, a1);
     for (i = 0; i < 3; i++) {
         su->c0[i] = swapped ? col->c1[i] : col->c0[i];
         su->c1[i] = swapped ? col->c0[i] : col->c1[i];
@@ -342,7 +391,7 @@ static void tell_degenerate(const dda *d, pt_raster_setup *su, double x, double 
     pt_raster_step st;
     int i;
 
-    su->s0 = su->s1 = (int64_t)x;
+    su->s0 = su->s1 = sat64(x);
     su->a0 = y;
     su->vp0 = su->vp1 = p;
     for (i = 0; i < 3; i++) { su->c0[i] = su->c1[i] = ls->col.c0[i]; su->dc[i] = 0.0; }
@@ -374,25 +423,31 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
                                         const pt_raster_steps *ls, int stepping,
                                         const pt_raster_colors *col)
 {
-    int64_t ix0, iy0, ix1, iy1;
+    int64_t ix0, iy0, ix1, iy1, s0, s1;
     double x0, y0, x1, y1, m;
-    int transposed, swapped = 0;
+    int transposed, swapped = 0, java = col && col->java && no_pixel(p0, p1);
     pt_raster_setup su;
     dda d;
     tint tn;
     pt_pix p;
 
-    if (!pt_pix_round(p0.x, &ix0) || !pt_pix_round(p0.y, &iy0) ||
-        !pt_pix_round(p1.x, &ix1) || !pt_pix_round(p1.y, &iy1)) {
+    if (java) {                                     /* the course's rounding, not skipped */
+        x0 = pt_raster_java_round(p0.x); y0 = pt_raster_java_round(p0.y);
+        x1 = pt_raster_java_round(p1.x); y1 = pt_raster_java_round(p1.y);
+        ix0 = sat64(x0); iy0 = sat64(y0);
+        ix1 = sat64(x1); iy1 = sat64(y1);
+    } else if (!pt_pix_round(p0.x, &ix0) || !pt_pix_round(p0.y, &iy0) ||
+               !pt_pix_round(p1.x, &ix1) || !pt_pix_round(p1.y, &iy1)) {
         if (stepping && ls->setup) {
             memset(&su, 0, sizeof su);
             su.kind = PT_RASTER_SKIPPED;
             ls->setup(ls->ud, &su);
         }
         return PT_RASTER_SKIPPED;
+    } else {
+        x0 = (double)ix0; y0 = (double)iy0;         /* the rounded endpoints */
+        x1 = (double)ix1; y1 = (double)iy1;
     }
-    x0 = (double)ix0; y0 = (double)iy0;             /* the rounded endpoints */
-    x1 = (double)ix1; y1 = (double)iy1;
     d.w = w; d.h = h; d.to_vp = to_vp;
     d.pixel = pixel; d.pixel_ud = pixel_ud; d.out = out;
     d.ls = ls;
@@ -419,7 +474,7 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
         else out->clip(out->ud, 1, p, p);
         return PT_RASTER_DEGENERATE;
     }
-    transposed = fabs(y1 - y0) > fabs(x1 - x0);     /* |slope| > 1: step in y */
+    transposed = ymajor(x0, y0, x1, y1);
     if (transposed) {
         double t;
         t = x0; x0 = y0; y0 = t;
@@ -433,9 +488,16 @@ static inline ALWAYS_INLINE int segment(pt_vec2 p0, pt_vec2 p1, int w, int h,
     }
     m = (y1 - y0) / (x1 - x0);                      /* m = dy / dx */
     colors_start(&tn, col, swapped, x0, x1);
-    if (stepping) tell_setup(&d, &su, transposed, swapped, x0, x1, y0, y1, m);
-    if (transposed) walk(&d, 1, stepping, (int64_t)x0, (int64_t)x1, y0, m);
-    else            walk(&d, 0, stepping, (int64_t)x0, (int64_t)x1, y0, m);
+    if (java) {                                     /* for (int x = (int)x0; x <= (int)x1; ...) */
+        s0 = pt_raster_java_int(x0);
+        s1 = pt_raster_java_int(x1);
+    } else {
+        s0 = (int64_t)x0;
+        s1 = (int64_t)x1;
+    }
+    if (stepping) tell_setup(&d, &su, transposed, swapped, s0, s1, y0, y1, m);
+    if (transposed) walk(&d, 1, stepping, s0, s1, y0, m);
+    else            walk(&d, 0, stepping, s0, s1, y0, m);
     return PT_RASTER_DRAWN;
 }
 

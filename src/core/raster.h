@@ -53,6 +53,12 @@ typedef struct pt_raster_colors {
                                  ** or a `vcolor-float` as given) */
     int gamma;                   /* 1: gamma-encode (Rasterize.doGamma) */
     int aa;                      /* 1: anti-alias (Rasterize.doAntiAliasing) */
+    int java;                    /* 1: the course's renderer 4: a segment with an
+                                 ** end without an integer pixel has Java's
+                                 ** (double)Math.round ends (pt_raster_java_round:
+                                 ** NaN 0, an infinity +-2^63) and its loop runs
+                                 ** over (int) of them; 0: such a segment is
+                                 ** skipped */
     float bg[3];                 /* with aa: the viewport's background, 0..1 */
     int one;                     /* 1: c0 == c1, and c, rgb hold that colour
                                  ** gamma-encoded (pt_raster_colors_prepare) */
@@ -130,10 +136,38 @@ typedef struct pt_raster_out {
 ** viewport stages (called with a NULL sink). */
 typedef pt_pix (*pt_raster_vp)(pt_vec2 pp, int w, int h, const pt_sink *sink);
 
+/* Java's (double)Math.round(x), as the course's renderer 4 rounds a
+** segment's ends and a point's centre: the nearest integer (ties up), NaN 0,
+** saturated to the long range (from 2^63 on 2^63, an infinity too; below
+** -2^63, -2^63).  This function can't fail. */
+double pt_raster_java_round(double x);
+
+/* Java's (int) of a double d that is a whole number or +-2^63: saturated to
+** [INT_MIN, INT_MAX].  This function can't fail. */
+int64_t pt_raster_java_int(double d);
+
+/* 1 when the course's renderer 4 would never end segment p0-p1 (pixel
+** plane), an end of which has no integer pixel: not degenerate, and the
+** last step of its loop, (int) of the larger rounded end of the stepped
+** coordinate, is INT_MAX (see below).  This function can't fail. */
+int pt_raster_endless(pt_vec2 p0, pt_vec2 p1);
+
 /* Rasterize the segment p0-p1 (pixel-plane coordinates) into a w x h viewport,
 ** each step's pixel found by to_vp.  Returns PT_RASTER_DRAWN or
 ** PT_RASTER_DEGENERATE, or PT_RASTER_SKIPPED without reporting anything when
-** an endpoint is not finite or beyond PT_PIX_LIMIT.  Requires w, h >= 1. */
+** an endpoint is not finite or beyond PT_PIX_LIMIT.  Requires w, h >= 1.
+**
+** With the course's colours (col->java, pt_raster_walk and pt_raster_draw)
+** no segment is skipped: a segment with an end without an integer pixel
+** (not finite, or beyond PT_PIX_LIMIT) has its ends rounded as Java rounds
+** them (pt_raster_java_round: a NaN end is the pixel 0, an infinite one
+** +-2^63), and its steps run from (int)s0 to (int)s1 (pt_raster_java_int),
+** the colours interpolated over the rounded ends s1 - s0, as the course's
+** loop does (the others step in 64 bits, as pipetrace's pixel plane is:
+** docs/stability.md).  Where (int)s1 is INT_MAX the course's loop `s <= (int)s1` never
+** ends (s wraps to INT_MIN); pipetrace stops after that step (a cap,
+** docs/renderer4.md).  The setup record's x0 .. y1 are the rounded ends
+** saturated to int64_t. */
 int pt_raster_segment(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_vp to_vp,
                       const pt_raster_out *out);
 

@@ -10,18 +10,12 @@
 #include <limits.h>
 #include <math.h>
 #include "core/raster.h"
-#include "stages/pt_round.h"
 #include "stages/s3_image2pixel.h"
 
 /* Java's (int)(double)Math.round(x): ties up, NaN 0, saturated to an int. */
 static int64_t java_int_round(double x)
 {
-    double r = pt_java_round(x);                    /* Math.round, as a double */
-
-    if (r != r) return 0;
-    if (r >= (double)INT_MAX) return INT_MAX;
-    if (r <= (double)INT_MIN) return INT_MIN;
-    return (int64_t)r;
+    return pt_raster_java_int(pt_raster_java_round(x));
 }
 
 int64_t pt_raster_point(pt_vec2 pp, int r, int w, int h, int every, int64_t most,

@@ -84,8 +84,10 @@ void pt_trace_listener(pt_trace *t, pt_listener *l)
     l->sink.ud = t;
     l->pixels = w->pixels;                  /* CSV: no raster rows, no summary: */
     l->clip = w->clip;                      /*   nobody listens to the rasterizer */
+    l->point_pixels = w->point_pixels;
     l->journey = t->explain ? on_journey : NULL;   /* no cost without --explain */
     l->skip = w->skip;
+    l->note = w->note;
     l->summary = w->summary;
     l->piece = NULL;
     l->ud = t;

@@ -454,13 +454,53 @@ static void clip_cut(void *ud, const pt_rv_cut *c)
 
 /* ===== the log ===== */
 
+/* The first point too large for the pixel log (pt_kraft_point_check), from
+** a run that draws nothing (pt_course_ls.measure). */
+typedef struct cap_check {
+    const pt_scene *s;
+    char *err;
+    size_t errlen;
+    int rc;
+} cap_check;
+
+static void cap_raster(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
+                       const pt_rv_prim *p)
+{
+    cap_check *cc = ud;
+
+    (void)m;
+    if (cc->rc == 0 && p->kind == PT_RV_POINT)
+        cc->rc = pt_kraft_point_check(cc->s, pos->sm->name, p->radius, cc->err, cc->errlen);
+}
+
+/* 0 when the course's log of s can print every pixel line, else -1 with a
+** message in err. */
+static int log_check(const pt_scene *s, pt_fb *fb, char *err, size_t errlen)
+{
+    pt_course_ls ls;
+    cap_check cc;
+
+    cc.s = s; cc.err = err; cc.errlen = errlen; cc.rc = 0;
+    memset(&ls, 0, sizeof ls);
+    ls.raster = cap_raster;
+    ls.measure = 1;
+    ls.ud = &cc;
+    if (pt_course_render(s, fb, &ls) != 0) {
+        snprintf(err, errlen, "pipetrace: out of memory");
+        return -1;
+    }
+    return cc.rc;
+}
+
 int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
                   char *err, size_t errlen)
 {
     clog w;
     pt_course_ls ls;
     pt_rv_raster_ls rls;
+    int pixels = (dbg & PT_KDBG_RASTERIZE) && (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION));
 
+    if (pixels && log_check(s, fb, err, errlen) != 0) return -1;   /* nothing written */
     memset(&w, 0, sizeof w);
     w.f = f;
     w.s = s;
@@ -485,8 +525,7 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
     ls.clip.ud = &w;
     /* the rasterizer's lines: Rasterize.debug under the scene's or the
     ** positions' debug (the same for every position); Bad pixel lines always */
-    pt_rv_log_raster_ls(&rls, f, (dbg & PT_KDBG_RASTERIZE) &&
-                                 (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION)));
+    pt_rv_log_raster_ls(&rls, f, pixels);
     ls.raster_ls = &rls;
     ls.ud = &w;
     if (pt_course_render(s, fb, &ls) != 0) {

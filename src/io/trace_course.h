@@ -24,7 +24,13 @@
 
 /* Render s (renderer 7 or 9) into fb (s->fb_w x s->fb_h) and write its log
 ** to f with the course's flags dbg (PT_KDBG_*).  Returns 0; or -1 with a
-** message in err when out of memory.  Write errors show in ferror(f). */
+** message in err when out of memory, or, with the rasterizer's lines, when
+** a point the rasterizer gets has more pixels than a point's pixel log may
+** have (pt_kraft_point_check, the rule of renderer 4's log: checked before
+** anything is written).  A segment's lines need no such rule: the clip
+** stage keeps its ends in the view rectangle (or NaN, which rounds to 0), so
+** it has at most the viewport's width or height plus one.  Write errors show
+** in ferror(f). */
 int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
                   char *err, size_t errlen);
 

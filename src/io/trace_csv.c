@@ -130,5 +130,5 @@ static void on_vertex(void *ud, const pt_vrec *r)
 
 /* No raster records, no summary: nobody listens to the rasterizer. */
 const pt_trace_writer pt_trace_csv = {
-    header_csv, on_vertex, NULL, NULL, NULL, NULL
+    header_csv, on_vertex, NULL, NULL, NULL, NULL, NULL, NULL
 };

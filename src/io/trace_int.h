@@ -37,7 +37,7 @@
 
 /* A format's record writers, as pt_listener takes them (ud: the pt_trace);
 ** pt_trace_listener() (trace.c) puts the format's in the listener.  pixels,
-** clip, skip and summary are NULL for a format without those records (CSV):
+** clip, point_pixels, skip, note and summary are NULL for a format without those records (CSV):
 ** nobody listens to the rasterizer then. */
 typedef struct pt_trace_writer {
     void (*header)(pt_trace *t, const pt_scene *s, const pt_plan *p);  /* t->scene
@@ -47,7 +47,10 @@ typedef struct pt_trace_writer {
                    size_t n);
     void (*clip)(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
                  pt_pix first, pt_pix last);
+    void (*point_pixels)(void *ud, const pt_model *m, uint64_t pt, const pt_fb_pixel *px,
+                         size_t n);
     void (*skip)(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *why);
+    void (*note)(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *what);
     void (*summary)(void *ud, const pt_summary *sum);
 } pt_trace_writer;
 

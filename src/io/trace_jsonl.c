@@ -44,7 +44,7 @@ static void header_json(pt_trace *t, const pt_scene *s, const pt_plan *p)
         puts_(t, ",\"translate\":"); pt_trace_vec3_json(t, m->translate);
         puts_(t, ",\"color\":["); pt_trace_rgb(t, m->color, ",");
         puts_(t, "],\"traced\":");
-        puts_(t, mp->selected ? "true" : "false");
+        puts_(t, mp->selected && !mp->hidden ? "true" : "false");
         if (p->pipe->matrices) { puts_(t, ",\"world\":"); pt_trace_mat(t, &mp->world, 1); }
         puts_(t, ",\"stages\":[");
         for (i = 0; i < p->norder; i++) {
@@ -191,11 +191,18 @@ static void on_vertex(void *ud, const pt_vrec *r)
 /* ===== raster records ===== */
 
 /* '{"type":"KIND","model":NAME,"segment":SEG': how a raster record opens. */
-static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint64_t seg)
+/* '{"type":"KIND","model":M,"KEY":N' */
+static void put_rec_json(pt_trace *t, const char *kind, const pt_model *m, const char *key,
+                         uint64_t n)
 {
     puts_(t, "{\"type\":\""); puts_(t, kind); puts_(t, "\",\"model\":");
     put_json_str(t, m->name);
-    puts_(t, ",\"segment\":"); put_u64(t, seg);
+    puts_(t, ",\""); puts_(t, key); puts_(t, "\":"); put_u64(t, n);
+}
+
+static void put_seg_json(pt_trace *t, const char *kind, const pt_model *m, uint64_t seg)
+{
+    put_rec_json(t, kind, m, "segment", seg);
 }
 
 /* '{"type":"pixel","model":"m1","segment":7,"x":': how the pixel records of
@@ -224,15 +231,22 @@ static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
     pt_trace_pixel_prefix(t, m, seg, pixel_opening);
 }
 
-/* One pixel record, the long way: for a model whose name is too long to
-** keep its opening. */
-static void pixel_long(pt_trace *t, const pt_model *m, uint64_t seg, const pt_fb_pixel *p)
+/* One pixel record of segment or point (KEY) n, the long way. */
+static void pixel_line(pt_trace *t, const pt_model *m, const char *key, uint64_t n,
+                       const pt_fb_pixel *p)
 {
-    put_seg_json(t, "pixel", m, seg);
+    put_rec_json(t, "pixel", m, key, n);
     puts_(t, ",\"x\":"); put_i64(t, p->x_fb);
     puts_(t, ",\"y\":"); put_i64(t, p->y_fb);
     puts_(t, ",\"i\":"); put_i64(t, p->idx);
     puts_(t, "}\n");
+}
+
+/* A segment's pixel record, the long way: for a model whose name is too long
+** to keep its opening. */
+static void pixel_long(pt_trace *t, const pt_model *m, uint64_t seg, const pt_fb_pixel *p)
+{
+    pixel_line(t, m, "segment", seg, p);
 }
 
 /* x at o as int_at(t, o, x, 0) writes it: a pixel of the array (0 to
@@ -262,6 +276,16 @@ static void on_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pix
     pixels_put(ud, m, seg, px, n, pixel_prefix, pixel_long, pixel_json_at);
 }
 
+/* A point's pixels: {"type":"pixel","model":M,"point":N,"x":X,"y":Y,"i":I},
+** the plain way. */
+static void on_point_pixels(void *ud, const pt_model *m, uint64_t pt, const pt_fb_pixel *px,
+                            size_t n)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++) pixel_line(ud, m, "point", pt, &px[k]);
+}
+
 static void put_pair_json(pt_trace *t, pt_pix p)
 {
     put(t, "[", 1); put_i64(t, p.x); put(t, ",", 1); put_i64(t, p.y); put(t, "]", 1);
@@ -279,14 +303,23 @@ static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
     puts_(t, "}\n");
 }
 
-static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
-                    const char *why)
+/* A segment's remark of type TYPE, its text under KEY. */
+static void remark(pt_trace *t, const pt_model *m, uint64_t seg, const char *type,
+                   uint64_t v, const char *key, const char *text)
 {
-    pt_trace *t = ud;
-
-    put_seg_json(t, "skip", m, seg);
+    put_seg_json(t, type, m, seg);
     if (v) { puts_(t, ",\"v\":"); put_u64(t, v); }
-    puts_(t, ",\"why\":"); put_json_str(t, why); puts_(t, "}\n");
+    puts_(t, key); put_json_str(t, text); puts_(t, "}\n");
+}
+
+static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *why)
+{
+    remark(ud, m, seg, "skip", v, ",\"why\":", why);
+}
+
+static void on_note(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *what)
+{
+    remark(ud, m, seg, "note", v, ",\"what\":", what);
 }
 
 /* ===== summary ===== */
@@ -313,5 +346,5 @@ static void on_summary(void *ud, const pt_summary *sum)
 }
 
 const pt_trace_writer pt_trace_jsonl = {
-    header_json, on_vertex, on_pixels, on_clip, on_skip, on_summary
+    header_json, on_vertex, on_pixels, on_clip, on_point_pixels, on_skip, on_note, on_summary
 };

@@ -54,6 +54,14 @@ int pt_kraft_write(FILE *f, const pt_scene *s, unsigned dbg, char *err, size_t e
 ** (trace_kraft_check.c).  Returns 0, or -1 with a message in err. */
 int pt_kraft_check(const pt_scene *s, char *err, size_t errlen);
 
+/* The rule of every renderer's pixel log for a point of radius radius of
+** model `model`: at most PT_KRAFT_MAX_STEPS pixels ((2 radius + 1)^2; none
+** for radius < 0).  Returns 0, or -1 with a message in err ("FILE: error:
+** model 'NAME': a point of radius R has N pixels, more than ...").  This
+** function can't fail otherwise (trace_kraft_check.c). */
+int pt_kraft_point_check(const pt_scene *s, const char *model, int radius, char *err,
+                         size_t errlen);
+
 /* The switches of LIST (--kraft-debug: scene, position, rasterize, clip,
 ** nearclip, all, none, comma-separated) into *dbg.  Returns 0, or -1 when an
 ** item is none of them (then *dbg is unchanged).  This function can't fail

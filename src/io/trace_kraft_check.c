@@ -8,26 +8,41 @@
 #include <string.h>
 #include "io/trace_kraft.h"
 
+/* 1 when x is beyond Java's int. */
+static int out_of_int(int64_t x)
+{
+    return x < INT32_MIN || x > INT32_MAX;
+}
+
 /* The course's renderer can log segment seg of model m (setup su): its
-** endpoints round to ints and it has at most PT_KRAFT_MAX_STEPS steps.
+** its loop ends, its endpoints round to ints and it has at most
+** PT_KRAFT_MAX_STEPS steps.
 ** Returns 0, or -1 with a message. */
 static int seg_check(const pt_scene *s, const pt_model *m, uint64_t seg,
                      const pt_raster_setup *su, char *err, size_t errlen)
 {
     int64_t n = su->s1 - su->s0;                     /* steps - 1 */
 
-    if (su->kind == PT_RASTER_SKIPPED ||
-        llabs(su->x0) > INT32_MAX || llabs(su->y0) > INT32_MAX ||
-        llabs(su->x1) > INT32_MAX || llabs(su->y1) > INT32_MAX) {
+    if (su->kind == PT_RASTER_DRAWN && su->s1 == INT32_MAX) {
+        snprintf(err, errlen, "%s: error: model '%s', segment %llu: its last step is "
+                 "(int) %lld, the largest int: the course's renderer steps on forever "
+                 "(its int wraps), and so would its log (docs/renderer4.md)",
+                 s->path, m->name, (unsigned long long)seg, (long long)su->s1);
+        return -1;
+    }
+    if (su->kind != PT_RASTER_SKIPPED) {
+        if (n >= PT_KRAFT_MAX_STEPS) {
+            snprintf(err, errlen, "%s: error: model '%s', segment %llu: %lld steps, more than "
+                     "the %ld lines a segment's pixel log may have", s->path, m->name,
+                     (unsigned long long)seg, (long long)n + 1, PT_KRAFT_MAX_STEPS);
+            return -1;
+        }
+    }
+    if (su->kind == PT_RASTER_SKIPPED || out_of_int(su->x0) || out_of_int(su->y0) ||
+        out_of_int(su->x1) || out_of_int(su->y1)) {
         snprintf(err, errlen, "%s: error: model '%s', segment %llu: an endpoint is beyond "
                  "the int pixel range of the course's renderer (its log would not end)",
                  s->path, m->name, (unsigned long long)seg);
-        return -1;
-    }
-    if (n >= PT_KRAFT_MAX_STEPS) {
-        snprintf(err, errlen, "%s: error: model '%s', segment %llu: %lld steps, more than "
-                 "the %ld lines a segment's pixel log may have", s->path, m->name,
-                 (unsigned long long)seg, (long long)n + 1, PT_KRAFT_MAX_STEPS);
         return -1;
     }
     return 0;
@@ -47,6 +62,18 @@ static void check_setup(void *ud, const pt_model *m, uint64_t seg, const pt_rast
     kraft_check *kc = ud;
 
     if (kc->rc == 0) kc->rc = seg_check(kc->s, m, seg, su, kc->err, kc->errlen);
+}
+
+int pt_kraft_point_check(const pt_scene *s, const char *model, int radius, char *err,
+                         size_t errlen)
+{
+    int64_t n = (2 * (int64_t)radius + 1) * (2 * (int64_t)radius + 1);
+
+    if (radius < 0 || n <= PT_KRAFT_MAX_STEPS) return 0;
+    snprintf(err, errlen, "%s: error: model '%s': a point of radius %d has %lld pixels, more "
+             "than the %ld lines a point's pixel log may have", s->path, model, radius,
+             (long long)n, PT_KRAFT_MAX_STEPS);
+    return -1;
 }
 
 /* The course's renderer can log the points of model m: their centres are
@@ -72,12 +99,13 @@ static int points_check(const pt_scene *s, const pt_model *m, char *err, size_t 
         pp.x = js[m->pts[q].v].rec[PT_STAGE_PIXEL].x;
         pp.y = js[m->pts[q].v].rec[PT_STAGE_PIXEL].y;
         n = pt_raster_point(pp, m->pts[q].radius, s->vp_w, s->vp_h, 1, 0, &dt, NULL, NULL);
-        if (n < 0 || n > PT_KRAFT_MAX_STEPS) {
-            snprintf(err, errlen, "%s: error: model '%s', point %zu: %s", s->path, m->name,
-                     q + 1, n < 0 ? "its centre is beyond the int pixel range of the "
-                     "course's renderer (its log would not end)" : "more pixels than a "
-                     "point's pixel log may have");
+        if (n < 0) {
+            snprintf(err, errlen, "%s: error: model '%s', point %zu: its centre is beyond the "
+                     "int pixel range of the course's renderer (its log would not end)",
+                     s->path, m->name, q + 1);
             rc = -1;
+        } else {
+            rc = pt_kraft_point_check(s, m->name, m->pts[q].radius, err, errlen);
         }
     }
     free(js);

@@ -90,7 +90,9 @@ static void header_text(pt_trace *t, const pt_scene *s, const pt_plan *p)
         put_u64(t, mp->nused); puts_(t, " used), "); put_u64(t, m->nseg);
         puts_(t, " segments, translate "); put_xyz_text(t, m->translate);
         puts_(t, ", color "); pt_trace_rgb(t, m->color, " ");
-        if (!mp->selected) puts_(t, ", not traced (--model)");
+        if (mp->hidden) puts_(t, m->hidden_position ? ", hidden (hidden-position): not drawn, "
+                                  "not traced" : ", hidden (hidden-model): not drawn, not traced");
+        else if (!mp->selected) puts_(t, ", not traced (--model)");
         put(t, "\n", 1);
         if (p->pipe->matrices) {
             puts_(t, "  world      "); pt_trace_mat(t, &mp->world, 0); put(t, "\n", 1);
@@ -250,15 +252,22 @@ static void pixel_prefix(pt_trace *t, const pt_model *m, uint64_t seg)
     pt_trace_pixel_prefix(t, m, seg, pixel_opening);
 }
 
-/* One pixel record, the long way: for a model whose name is too long to
-** keep its opening. */
-static void pixel_long(pt_trace *t, const pt_model *m, uint64_t seg, const pt_fb_pixel *p)
+/* One pixel record of segment or point ('s', 'p') n, the long way. */
+static void pixel_line(pt_trace *t, const pt_model *m, char kind, uint64_t n,
+                       const pt_fb_pixel *p)
 {
-    put_who(t, m->name, 's', seg);
+    put_who(t, m->name, kind, n);
     puts_(t, "pixel        x_fb = "); put_int_col(t, p->x_fb);
     puts_(t, "  y_fb = "); put_int_col(t, p->y_fb);
     puts_(t, "  idx = "); put_i64(t, p->idx);
     put(t, "\n", 1);
+}
+
+/* A segment's pixel record, the long way: for a model whose name is too long
+** to keep its opening. */
+static void pixel_long(pt_trace *t, const pt_model *m, uint64_t seg, const pt_fb_pixel *p)
+{
+    pixel_line(t, m, 's', seg, p);
 }
 
 /* The rest of a pixel record after its kept opening, at o:
@@ -276,6 +285,16 @@ static void on_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pix
                       size_t n)
 {
     pixels_put(ud, m, seg, px, n, pixel_prefix, pixel_long, pixel_text_at);
+}
+
+/* A point's pixels: "NAME pN pixel        x_fb = X  y_fb = Y  idx = I", the
+** plain way (a point has few pixels inside the viewport). */
+static void on_point_pixels(void *ud, const pt_model *m, uint64_t pt, const pt_fb_pixel *px,
+                            size_t n)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++) pixel_line(ud, m, 'p', pt, &px[k]);
 }
 
 static void put_pair_text(pt_trace *t, pt_pix p)
@@ -296,15 +315,24 @@ static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,
     put(t, "\n", 1);
 }
 
-static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v,
-                    const char *why)
+/* A segment's remark, KIND ("skipped     ", "note        "): "NAME sN KIND vV: TEXT". */
+static void remark(pt_trace *t, const pt_model *m, uint64_t seg, const char *kind,
+                   uint64_t v, const char *text)
 {
-    pt_trace *t = ud;
-
     put_who(t, m->name, 's', seg);
-    puts_(t, "skipped      ");
+    puts_(t, kind);
     if (v) { put(t, "v", 1); put_u64(t, v); puts_(t, ": "); }
-    puts_(t, why); put(t, "\n", 1);
+    puts_(t, text); put(t, "\n", 1);
+}
+
+static void on_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *why)
+{
+    remark(ud, m, seg, "skipped      ", v, why);
+}
+
+static void on_note(void *ud, const pt_model *m, uint64_t seg, uint64_t v, const char *what)
+{
+    remark(ud, m, seg, "note         ", v, what);
 }
 
 /* ===== summary ===== */
@@ -331,5 +359,5 @@ static void on_summary(void *ud, const pt_summary *sum)
 }
 
 const pt_trace_writer pt_trace_text = {
-    header_text, on_vertex, on_pixels, on_clip, on_skip, on_summary
+    header_text, on_vertex, on_pixels, on_clip, on_point_pixels, on_skip, on_note, on_summary
 };

@@ -3,7 +3,7 @@
 ** See LICENSE for copyright and license.
 **
 ** One JSON object a line, its "type" saying what it is: "header", "vertex",
-** "clipvertex", "pixel", "clip" (kept), "skip" and "summary" (checked and
+** "clipvertex", "pixel", "clip" (kept), "skip", "note" and "summary" (checked and
 ** ignored).  A line is checked in full and its top-level fields are noted as
 ** spans of the buffer (jfield), with no allocation per line; only the fields
 ** a record needs are then converted.  Numbers are exact: strtod() of a token
@@ -374,6 +374,9 @@ static int j_pixel(pt_treader *r, const jfield *f, int nf)
     pt_tpix px;
 
     memset(&px, 0, sizeof px);
+    if (!j_get(f, nf, "segment") && j_get(f, nf, "point"))
+        return 0;                           /* a point's: passed over, as the course's
+                                            ** log's are (tread_kraft.c) */
     if (jmodel(r, f, nf, "pixel", &px.model) != 0 ||
         need_count(r, f, nf, "segment", "pixel", &px.seg) || need_int(r, f, nf, "x", "pixel", &px.x) ||
         need_int(r, f, nf, "y", "pixel", &px.y) || need_int(r, f, nf, "i", "pixel", &px.i))
@@ -521,6 +524,8 @@ int pt_tr_json_line(pt_treader *r)
     if (pt_tr_is(type->p, n, "pixel")) return j_pixel(r, f, nf);
     if (pt_tr_is(type->p, n, "clip")) return j_clip(r, f, nf);
     if (pt_tr_is(type->p, n, "header")) return j_header(r, f, nf);
-    if (pt_tr_is(type->p, n, "skip") || pt_tr_is(type->p, n, "summary")) return 0;
+    if (pt_tr_is(type->p, n, "skip") || pt_tr_is(type->p, n, "note") ||
+        pt_tr_is(type->p, n, "summary"))
+        return 0;
     return pt_tr_fail(r, type->p, "unknown record type '%.*s'", (int)(n > 40 ? 40 : n), type->p);
 }

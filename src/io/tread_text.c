@@ -191,7 +191,7 @@ static int t_clip(pt_treader *r, cur *c, uint32_t model, uint64_t seg)
     return pt_tr_add_clip(r, &cl);
 }
 
-/* A record line: "NAME vN STAGE ..." or "NAME sN pixel|clipped|skipped ...". */
+/* A record line: "NAME vN STAGE ..." or "NAME sN pixel|clipped|skipped|note ...", "NAME pN pixel ...". */
 static int text_record(pt_treader *r)
 {
     cur c = {r->line, r->eol};
@@ -201,15 +201,20 @@ static int text_record(pt_treader *r)
     uint32_t model;
 
     if (!word(&c, &name, &nn)) return 0;
-    if (!word(&c, &id, &ni) || ni < 2 || (id[0] != 'v' && id[0] != 's'))
-        return pt_tr_fail(r, id, "expected 'vN' or 'sN' after the model name");
+    if (!word(&c, &id, &ni) || ni < 2 || (id[0] != 'v' && id[0] != 's' && id[0] != 'p'))
+        return pt_tr_fail(r, id, "expected 'vN', 'sN' or 'pN' after the model name");
     if (text_count(r, id + 1, ni - 1, 1, &num) != 0) return -1;
     if (!word(&c, &kind, &nk)) return pt_tr_fail(r, kind, "expected a stage or record kind");
     if (pt_names_intern(r->nm, name, nn, &model) != 0) return pt_tr_oom(r);
     if (id[0] == 'v') return t_vertex(r, &c, model, num, 0, kind, nk);
+    if (id[0] == 'p') {                     /* a point's pixel: passed over, as the
+                                            ** course's log's are (tread_kraft.c) */
+        if (pt_tr_is(kind, nk, "pixel")) return 0;
+        return pt_tr_fail(r, kind, "expected 'pixel' after a point's 'pN'");
+    }
     if (pt_tr_is(kind, nk, "pixel")) return t_pixel(r, &c, model, num);
     if (pt_tr_is(kind, nk, "clipped")) return t_clip(r, &c, model, num);
-    if (pt_tr_is(kind, nk, "skipped")) return 0;
+    if (pt_tr_is(kind, nk, "skipped") || pt_tr_is(kind, nk, "note")) return 0;
     if (pt_tr_stage_named(kind, nk) >= 0) return t_vertex(r, &c, model, num, 1, kind, nk);
     return pt_tr_fail(r, kind, "unknown record '%.*s'", (int)(nk > 40 ? 40 : nk), kind);
 }

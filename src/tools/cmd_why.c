@@ -399,6 +399,10 @@ typedef struct why_ctx {
     size_t left_mi[10], left_si[10];    /*   the first ten of them */
     int drawn;                   /* 1: some segment, of any model, drew it; */
     size_t last_mi, last_si;     /*   the last one drawn sets its color */
+    int pt_drawn;                /* 1: some point (renderer 4) drew it after that
+                                 ** segment (or with none): the last one, */
+    size_t pt_mi, pt_k;          /*   model and point (0-based), sets its color */
+    unsigned char pt_rgb[3];     /*   to this */
     seg_eval best[NEAREST];      /* the nearest segments not counted as lit */
     int nbest;
     seg_eval best_sel;           /* --model: the nearest of its own segments */
@@ -485,6 +489,7 @@ static void seg_done(why_ctx *w)
         w->drawn = 1;
         w->last_mi = mi;
         w->last_si = si;
+        w->pt_drawn = 0;                    /* drawn over the points before it */
     }
     if (e->lit && !left_out) {
         if (w->nlit++ == 0) fprintf(term.f, "lit by:\n");
@@ -549,6 +554,33 @@ static void why_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pi
         on_pixel(&w->e, w->tx, w->ty, px[k].x_fb - w->ul.x, px[k].y_fb - w->ul.y);
 }
 
+/* The pixels of point pt (1-based) of model m, which the course's renderer 4
+** draws after its `after` segments: the segments before it are done first,
+** so that the lines come in drawing order. */
+static void why_point_pixels(void *ud, const pt_model *m, uint64_t pt, const pt_fb_pixel *px,
+                             size_t n)
+{
+    why_ctx *w = ud;
+    const pt_point *p = &m->pts[pt - 1];
+    size_t k;
+
+    seg_reach(w, model_index(w, m), p->after + 1);
+    for (k = 0; k < n; k++) {
+        if (px[k].x_fb != w->X || px[k].y_fb != w->Y) continue;
+        w->pt_drawn = 1;
+        w->pt_mi = model_index(w, m);
+        w->pt_k = pt - 1;
+        memcpy(w->pt_rgb, px[k].paint.rgb, sizeof w->pt_rgb);
+        if (w->sel && m != w->sel) continue;
+        if (w->nlit++ == 0) fprintf(term.f, "lit by:\n");
+        fprintf(term.f, "  %s p%llu (point %llu: v%llu, radius %d): a pixel of its square, "
+                "in color %d %d %d (the course's renderer 4 draws points)\n", m->name,
+                (unsigned long long)pt, (unsigned long long)pt,
+                (unsigned long long)p->v + 1, p->radius, px[k].paint.rgb[0],
+                px[k].paint.rgb[1], px[k].paint.rgb[2]);
+    }
+}
+
 static void why_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count, pt_pix first,
                      pt_pix last)
 {
@@ -587,6 +619,7 @@ static int scan(why_ctx *w)
     memset(&l, 0, sizeof l);
     l.journey = why_journey;
     l.pixels = why_pixels;
+    l.point_pixels = why_point_pixels;
     l.clip = why_clip;
     l.skip = why_skip;
     l.ud = w;
@@ -787,7 +820,12 @@ int pt_cmd_why(int argc, char **argv)
         if (!w.nbest) fprintf(term.f, "the scene has no segments\n");
         show_no_segments(&w);
     }
-    if (w.drawn) {
+    if (w.pt_drawn) {
+        const pt_model *m = &s.models[w.pt_mi];
+        fprintf(term.f, "color %d %d %d%s: %s p%zu is the last point drawn there\n",
+                w.pt_rgb[0], w.pt_rgb[1], w.pt_rgb[2], w.sel ? " in the image" : "", m->name,
+                w.pt_k + 1);
+    } else if (w.drawn) {
         const pt_model *m = &s.models[w.last_mi];
         fprintf(term.f, "color %d %d %d%s: %s s%zu is the last segment drawn there\n", m->color[0],
                m->color[1], m->color[2], w.sel ? " in the image" : "", m->name,

@@ -325,4 +325,23 @@ check "hostile-15.1 200 points of radius 4096: drawn within 10 s of CPU (exit $r
 check "hostile-15.2 ... the viewport filled with the points' colour" \
     sh -c 'test "$(tail -c 30000 "$1" | od -An -tu1 -v | tr -s " \n" "\n" | grep -c "^255$")" = 30000' _ "$tmp/points.ppm"
 
+# ---- the course's log of renderers 7 and 9 with the rasterizer's lines has
+# renderer 4's rule (docs/limits.md): a point of more than 2^24 pixels is
+# refused before anything is written (its log would be 4 GB here), one of
+# 2^24 or fewer is logged; renderer 4 says it alike
+for r in 7 9; do
+    printf 'renderer %s\nframebuffer 20 20\nmodel a\nv 0 0 -1\npoint 1 1 2048\n' "$r" > "$tmp/bigpt.scene"
+    ( ulimit -t 10; "$exe" "$tmp/bigpt.scene" --kraft-debug all ) > "$tmp/out" 2> "$tmp/err"; rc=$?
+    check "hostile-16.1 renderer $r, a point of radius 2048 with Rasterize.debug: refused (exit $rc)" test "$rc" = 2
+    check "hostile-16.2 ... saying the rule, nothing written" sh -c 'test ! -s "$1" && grep -q "^pipetrace: .*bigpt.scene: error: model .a.: a point of radius 2048 has 16785409 pixels, more than the 16777216 lines a point.s pixel log may have$" "$2"' _ "$tmp/out" "$tmp/err"
+    ( ulimit -t 10; "$exe" "$tmp/bigpt.scene" --kraft-debug scene,position,clip ) > "$tmp/out" 2> "$tmp/err"; rc=$?
+    check "hostile-16.3 ... without the rasterizer's lines: logged (exit $rc)" sh -c 'test "$1" = 0 && grep -q "Rasterize" "$2"' _ "$rc" "$tmp/out"
+    printf 'renderer %s\nframebuffer 20 20\nmodel a\nv 0 0 -1\npoint 1 1 30\n' "$r" > "$tmp/pt.scene"
+    run "$tmp/pt.scene" --kraft-debug all
+    check "hostile-16.4 ... a point of radius 30: its 3721 pixel lines logged" test "$rc" = 0 -a "$(grep -c "^ *fb_\[" "$tmp/out")" -ge 3721
+done
+printf 'framebuffer 20 20\ncamera perspective\nmodel a\nv 0 0 -1\npoint 1 1 2048\n' > "$tmp/bigpt.scene"
+run "$tmp/bigpt.scene" --kraft-debug all
+check "hostile-16.5 renderer 4: the same rule, the same words" grep -q "error: model .a.: a point of radius 2048 has 16785409 pixels, more than the 16777216 lines" "$tmp/err"
+
 report

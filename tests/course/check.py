@@ -219,13 +219,20 @@ def selftest(top):
                                                    ".stages.gz")):
             missing.append(os.path.basename(base))
         try:
-            scene2case.convert(open(scene).read())
-        except (scene2case.Bad, ValueError, IndexError, KeyError):
+            scene2case.convert(open(scene).read(), "all", os.path.dirname(scene))
+        except (scene2case.Bad, ValueError, IndexError, KeyError, OSError):
             unconverted.append(os.path.basename(base))
     check("course-0.7 every stored scene has its image, logs and stages, or its error",
           total > 0 and not missing, "%d scenes; incomplete: %s" % (total, missing[:5]))
     check("course-0.8 scene2case.py converts every stored scene", not unconverted,
           str(unconverted[:5]))
+    with tempfile.TemporaryDirectory() as d:
+        with open(os.path.join(d, "t.obj"), "w") as f:
+            f.write("o t\nv 0 0 0\nv 1 0 0\nvn 0 0 1\nv 0 1 0\nf 1/1/1 -2//1 3\nl 2 3\n")
+        _, case = scene2case.convert("model m\nv 5 5 5\nobj t.obj\n", "all", d)
+    check("course-0.9 scene2case.py reads an obj file: its vertices after the model's, "
+          "a face closed, indices shifted", case.endswith(
+              "v 5 5 5\nv 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\nl 3 1\nl 2 3\n"), case)
 
 
 # What pipetrace must show to have renderer N (else its cases are skipped):

@@ -50,6 +50,12 @@ class Scene:
     def text(self):
         return "\n".join(self.lines) + "\n"
 
+    def attach(self, name, text):
+        """A file the scene reads (an OBJ file), written beside it."""
+        if not hasattr(self, "files"):
+            self.files = {}
+        self.files[name] = text
+
 
 def camera_line(rng, r, kind, params=None):
     """The camera line: kind persp|ortho|perspfov|orthofov; params a tuple."""
@@ -678,6 +684,43 @@ def fam_err(rng, r, name, k):
     return sc
 
 
+def fam_obj(rng, r, name, k):
+    """`obj FILE`: a pyramid's OBJ file (v, f with v/vt/vn and negative
+    indices, l, lines the scene's reader passes over) read into a model,
+    with vertices and segments of the scene's own before and after it."""
+    w, h = fbsize(rng)
+    sc = Scene(r, name, w, h)
+    persp = k % 4 != 3
+    sc.add(camera_line(rng, r, "persp" if persp else "ortho"))
+    switches(sc, rng)
+    s = rng.uniform(0.4, 0.9) if persp else rng.uniform(0.2, 0.45)
+    verts = [(-s, -s, -s), (s, -s, -s), (s, -s, s), (-s, -s, s), (0.0, s, 0.0)]
+    if k % 2:                               # beyond the view rectangle, for the clip
+        verts[4] = (0.0, 3.0 * s, 0.0)
+    obj = ["# %s: a pyramid" % name, "o pyramid", "mtllib none.mtl"]
+    obj += ["v %s" % " ".join(num(t) for t in v) for v in verts]
+    obj += ["vt 0 0", "vn 0 1 0", "s off", "usemtl none"]
+    obj += ["f 1/1/1 2/1/1 3/1/1 4/1/1", "f -5//1 -4//1 -1//1", "l 3 5 4"]
+    fname = name + ".obj"
+    sc.attach(fname, "\n".join(obj) + "\n")
+    sc.add("model pyr")
+    tz = -rng.uniform(2.5, 4.0) if persp else -2.0
+    sc.add("translate %s %s %s" % (num(rng.uniform(-0.4, 0.4)), num(rng.uniform(-0.4, 0.4)),
+                                   num(tz)))
+    sc.add("v %s" % " ".join(num(t) for t in (-s, s, -s)))      # before the file's
+    for _ in range(len(verts) + 2):
+        c = rand_color(rng, 0.3)
+        sc.add("vcolor %d %d %d" % c[1:] if c[0] == "c" else
+               "vcolor-float %s" % " ".join(num(t) for t in c[1:]))
+    sc.add("obj %s" % fname)
+    sc.add("v %s" % " ".join(num(t) for t in (s, s, s)))        # after it
+    sc.add("segment 1 %d" % (len(verts) + 2))
+    sc.add("segment 6 7 1 3")
+    if k % 3 == 0:
+        sc.add("point 6 2 1")
+    return sc
+
+
 ALL, R79, R9 = (4, 7, 9), (7, 9), (9,)
 FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("basic", ALL, 12, lambda g, r, n, k: fam_basic(g, r, n)),
@@ -708,28 +751,34 @@ FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("face", ALL, 4, lambda g, r, n, k: fam_face(g, r, n)),
     ("near-edge", R79, 6, fam_near_edge),
     ("err", ALL, 3, fam_err),
+    ("obj", ALL, 4, fam_obj),
 ]
 
 
 def generate():
-    """Yield (renderer, name, text) for every scene of the corpus."""
+    """Yield (renderer, name, text, files) for every scene of the corpus:
+    files, {NAME: text}, are what it reads beside it."""
     for fam, rends, count, fn in FAMILIES:
         for r in rends:
             rng = random.Random("%d-%s-%d" % (SEED, fam, r))
             for k in range(count):
                 name = "%s-%02d" % (fam, k)
-                yield r, name, fn(rng, r, name, k).text()
+                sc = fn(rng, r, name, k)
+                yield r, name, sc.text(), getattr(sc, "files", {})
 
 
 def main():
     top = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(
         os.path.abspath(__file__)))
     n = {}
-    for r, name, text in generate():
+    for r, name, text, files in generate():
         d = os.path.join(top, "r%d" % r)
         os.makedirs(d, exist_ok=True)
         with open(os.path.join(d, name + ".scene"), "w") as f:
             f.write(text)
+        for fname, ftext in sorted(files.items()):
+            with open(os.path.join(d, fname), "w") as f:
+                f.write(ftext)
         n[r] = n.get(r, 0) + 1
     print(" ".join("r%d: %d scenes" % (r, n[r]) for r in sorted(n)))
 

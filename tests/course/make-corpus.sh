@@ -12,6 +12,8 @@
 # the default one (debug scene), and stores, gzip-compressed:
 #   NAME.ppm.gz     the image          NAME.log.gz      the log, `debug all`
 #   NAME.stages.gz  every stage        NAME.deflog.gz   the log, `debug scene`
+# A scene's OBJ file (`obj NAME.obj`, gen.py's obj-* family) is stored beside
+# it; scene2case.py reads it into the case.
 # A case on which the renderer throws (harness exit 3) is an expected error:
 #   NAME.error      the exception's first line (pipetrace must refuse the scene)
 # A case the harness refuses (exit 2), or that does not end within the time
@@ -34,8 +36,9 @@ for r in $which; do
     n=${r#r}
     mkdir -p "$here/$r"
     if [ -z "${PT_CORPUS_CASES:-}" ]; then
-        rm -f "$here/$r"/*.scene "$here/$r"/*.gz "$here/$r"/*.error
+        rm -f "$here/$r"/*.scene "$here/$r"/*.gz "$here/$r"/*.error "$here/$r"/*.obj
         cp "$tmp/gen/$r"/*.scene "$here/$r/"
+        for o in "$tmp/gen/$r"/*.obj; do [ -e "$o" ] && cp "$o" "$here/$r/"; done
     else
         for g in $PT_CORPUS_CASES; do
             for f in "$tmp/gen/$r"/$g.scene; do
@@ -43,6 +46,7 @@ for r in $which; do
                 b=$(basename "$f" .scene)
                 rm -f "$here/$r/$b".*
                 cp "$f" "$here/$r/"
+                [ -e "${f%.scene}.obj" ] && cp "${f%.scene}.obj" "$here/$r/"
             done
         done
     fi
@@ -59,7 +63,7 @@ for r in $which; do
             done
             [ "$m" = 1 ] || continue
         fi
-        python3 "$here/scene2case.py" "$scene" all > "$tmp/c.case" || { rm -f "$scene"; drop=$((drop + 1)); continue; }
+        python3 "$here/scene2case.py" "$scene" all > "$tmp/c.case" || { rm -f "$scene" "$name.obj"; drop=$((drop + 1)); continue; }
         timeout "$limit" java $jopts -cp "$jar:$tmp/k$n" "Kraft$n" "$tmp/c.case" \
             "$tmp/o.ppm" "$tmp/o.log" "$tmp/o.stages" > "$tmp/out" 2>&1
         rc=$?

@@ -9,8 +9,11 @@
 # the case's debug line (default "all").  The case's first line is a comment
 # naming the renderer (`# renderer N`), whose harness reads it.  Knows the
 # directives gen.py writes
-# and the classic ones (v, l polylines, f faces, color); `obj` and `shape`
-# are refused (exit 2), as is anything it does not know.
+# and the classic ones (v, l polylines, f faces, color); `obj PATH` is read
+# (relative to the scene's folder) as its v, l and f lines, indices counting
+# the file's own vertices; `shape` is refused (exit 2), as is anything it
+# does not know.
+import os
 import sys
 
 CAMERAS = {"perspective": "persp", "orthographic": "ortho",
@@ -53,7 +56,34 @@ class Model:
         return out
 
 
-def convert(text, debug="all"):
+OBJ_IGNORED = ("vt", "vn", "vp", "g", "o", "s", "usemtl", "mtllib")
+
+
+def obj_lines(path):
+    """An OBJ file's v, l and f lines as scene lines, indices shifted to
+    count the model's vertices (negative ones resolved within the file)."""
+    out, nv = [], 0
+    with open(path) as f:
+        for raw in f:
+            line = raw.split("#", 1)[0].strip()
+            if not line:
+                continue
+            w = line.split()
+            if w[0] == "v":
+                out.append(("v", w[1:4]))
+                nv += 1
+            elif w[0] in ("l", "f"):
+                ix = []
+                for x in w[1:]:
+                    i = int(x.split("/")[0])
+                    ix.append(i + nv + 1 if i < 0 else i)
+                out.append((w[0], ix))
+            elif w[0] not in OBJ_IGNORED:
+                raise Bad("%s: '%s' is not OBJ" % (path, w[0]))
+    return out
+
+
+def convert(text, debug="all", base="."):
     renderer = 4
     head = {}
     models = []
@@ -112,6 +142,19 @@ def convert(text, debug="all"):
             if len(a) > 2:
                 ix += [int(a[2]) - 1, int(a[3]) - 1]
             m.body.append("l " + " ".join(str(i) for i in ix))
+        elif d == "obj":
+            first = m.nv                    # the file's vertex 1
+            for kind, args in obj_lines(os.path.join(base, a[0])):
+                if kind == "v":
+                    m.body.append("v " + " ".join(args))
+                    m.nv += 1
+                    continue
+                ix = [first + i - 1 for i in args]
+                if not all(first <= i < m.nv for i in ix):
+                    raise Bad("line %d: an index of %s out of range" % (no, a[0]))
+                if kind == "f":
+                    ix.append(ix[0])
+                m.body += ["l %d %d" % (i, j) for i, j in zip(ix, ix[1:])]
         elif d in ("l", "f"):
             ix = [m.index(x, "vertex") for x in a]
             if d == "f":
@@ -160,8 +203,9 @@ def main():
     with open(sys.argv[1]) as f:
         text = f.read()
     try:
-        _, case = convert(text, sys.argv[2] if len(sys.argv) > 2 else "all")
-    except (Bad, ValueError, IndexError, KeyError) as e:
+        _, case = convert(text, sys.argv[2] if len(sys.argv) > 2 else "all",
+                          os.path.dirname(sys.argv[1]) or ".")
+    except (Bad, ValueError, IndexError, KeyError, OSError) as e:
         sys.stderr.write("%s: %s\n" % (sys.argv[1], e))
         sys.exit(2)
     sys.stdout.write(case)

@@ -20,6 +20,7 @@ for scene in "$here"/*.scene; do
     python3 "$here/scene2case.py" "$scene" > "$tmp/$name.case"
     debugs=all
     [ "$name" = switches ] && debugs="all none scene position rasterize scene,rasterize position,rasterize clip,nearclip"
+    [ "$name" = inf-segment ] && debugs=none     # 2^31 steps: a log pipetrace refuses
     for d in $debugs; do
         java -cp "$dir/renderer4.jar:$tmp" Kraft4 "$tmp/$name.case" "$tmp/$name.ppm" \
             "$tmp/$name.$d.log" debug="$d" > "$tmp/out" || { cat "$tmp/out"; exit 1; }
