@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 #include "tools/accuracy/acc_shared.h"
+#include "stages/r9_matrix.h"
 
 /* ===== the integer stages ===== */
 
@@ -140,4 +141,19 @@ void pt_acc_dda_step(const pt_acc_dda *o, const pt_acc_line *ln, int64_t s, int 
 void pt_acc_dda_dot(const pt_acc_dda *o, int64_t ix, int64_t iy)
 {
     if (pt_inside(ix - 1, o->h - iy, o->w, o->h)) o->pixel(o->ud, ix - 1, o->h - iy);
+}
+
+void pt_acc_rv_matrix(const pt_scene *s, size_t k, double m[4][4])
+{
+    const pt_model *md = &s->models[k];
+    pt_jmat a = pt_r9_position_matrix(s->renderer == 9 ? md->ops : NULL,
+                                      s->renderer == 9 ? md->nops : 0);
+    int j;
+
+    for (j = 0; j < 4; j++) {                       /* column j */
+        m[0][j] = a.col[j].x;
+        m[1][j] = a.col[j].y;
+        m[2][j] = a.col[j].z;
+        m[3][j] = a.col[j].w;
+    }
 }
