@@ -25,6 +25,15 @@
 #include "core/raster.h"
 #include "stages/m4_clip2cvv.h"
 #include "stages/s4_pixel2viewport.h"
+#include "core/course.h"
+#include "stages/r7_model2view.h"
+#include "stages/r7_view2camera.h"
+#include "stages/r9_model2world.h"
+#include "stages/r9_world2view.h"
+#include "stages/r9_view2camera.h"
+#include "stages/rv_nearclip.h"
+#include "stages/rv_project.h"
+#include "stages/rv_clip.h"
 
 /* ===== double-double ===== */
 
@@ -1028,6 +1037,209 @@ static void test_rows(void)
     PT_CHECK("acc-10.3 ... with names, panels, a viewport row and a last real row", sane);
 }
 
+/* ===== renderers 7 and 9 ===== */
+
+/* The formula copies of acc_rv_tmpl.h, instantiated in double: each must
+** give its stage's result bit for bit (float and double-double run the same
+** text). */
+#define RV_T double
+#define RV_NUM(x) (x)
+#define RV_ADD(a, b) ((a) + (b))
+#define RV_SUB(a, b) ((a) - (b))
+#define RV_MUL(a, b) ((a) * (b))
+#define RV_DIV(a, b) ((a) / (b))
+#define RV_NEG(a) (-(a))
+#define RV_GT(a, b) ((a) > (b))
+#define RV_LE(a, b) ((a) <= (b))
+#define RV_FN(name) rvt_##name
+#include "tools/accuracy/acc_rv_tmpl.h"
+
+static uint64_t rv_seed = 0x9e3779b97f4a7c15ULL;
+
+/* A random double: mostly of a few binades either side of 1, sometimes one
+** of the edges the stages test against (0, -0, +-1, +-0.1, a value a step
+** beside them). */
+static double rv_rand(void)
+{
+    static const double edge[] = {0.0, -0.0, 1.0, -1.0, -0.1, 0.1, 0x1.0000000000001p0,
+                                  -0x1.0000000000001p0, 0x1.fffffffffffffp-1, 2.0, -2.0};
+    uint64_t u;
+    double f;
+
+    rv_seed = rv_seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    u = rv_seed >> 11;
+    if (u % 8 == 0) return edge[(u >> 3) % (sizeof edge / sizeof edge[0])];
+    f = (double)(u >> 8) / 0x1p45 - 0.5;                /* -0.5 .. 0.5 */
+    return ldexp(f, (int)((u >> 3) % 9) - 2);           /* |x| < 64 */
+}
+
+static int same_d(double a, double b)
+{
+    return (isnan(a) && isnan(b)) || (a == b && signbit(a) == signbit(b));
+}
+
+static int same_v4(pt_vec4 a, const double b[], int n)
+{
+    double v[4];
+    int k, ok = 1;
+
+    v[0] = a.x; v[1] = a.y; v[2] = a.z; v[3] = a.w;
+    for (k = 0; k < n; k++) ok &= same_d(v[k], b[k]);
+    return ok;
+}
+
+static pt_vec4 v4(double x, double y, double z, double w)
+{
+    pt_vec4 v;
+
+    v.x = x; v.y = y; v.z = z; v.w = w;
+    return v;
+}
+
+/* What the clip stages' listener hears of one segment. */
+typedef struct rv_heard {
+    pt_rv_cut cut[70];
+    int ncuts, accepted;
+    pt_vec4 ends[2];
+} rv_heard;
+
+static void rv_hear_cut(void *ud, const pt_rv_cut *c)
+{
+    rv_heard *h = ud;
+
+    if (h->ncuts < 70) h->cut[h->ncuts] = *c;
+    h->ncuts++;
+}
+
+static void rv_hear_end(void *ud, const pt_rv_model *m, const pt_rv_prim *p, int accepted)
+{
+    rv_heard *h = ud;
+
+    h->accepted = accepted;
+    if (accepted) { h->ends[0] = m->v[p->v[0]]; h->ends[1] = m->v[p->v[1]]; }
+}
+
+/* The segment a-b through a clip stage (near: at z = n; else the square). */
+static int rv_stage_clip(pt_vec4 a, pt_vec4 b, int near, double n, rv_heard *h)
+{
+    pt_rv_model m;
+    pt_rv_prim p;
+    pt_rgb white = {1.0f, 1.0f, 1.0f};
+    pt_rv_clip_ls ls = {NULL, NULL, rv_hear_cut, rv_hear_end, NULL};
+    int rc;
+
+    memset(&m, 0, sizeof m);
+    memset(&p, 0, sizeof p);
+    memset(h, 0, sizeof *h);
+    ls.ud = h;
+    p.kind = PT_RV_LINE;
+    p.v[1] = p.c[1] = 1;
+    if (pt_rv_add_vertex(&m, a) || pt_rv_add_vertex(&m, b) || pt_rv_add_color(&m, white)
+        || pt_rv_add_color(&m, white) || pt_rv_add_prim(&m, &p)) rc = -1;
+    else rc = near ? pt_rv_nearclip(&m, n, &ls) : pt_rv_clip(&m, &ls);
+    pt_rv_model_free(&m);
+    return rc;
+}
+
+static void test_rv_copies(void)
+{
+    size_t i, n = 20000;
+    int bad[9] = {0}, k, j, cuts = 0, nearcuts = 0, trivial = 0;
+
+    for (i = 0; i < n; i++) {
+        double m[4], t[3], o[4], l, r, b, tt, mat[4][4], nm[4][4];
+        int persp = (int)(i % 2), off = 0;
+        pt_rv_camera cam;
+        pt_jmat jm, jn;
+        pt_vec4 sv;
+        pt_vec3 tv;
+
+        for (k = 0; k < 4; k++) m[k] = rv_rand();
+        for (k = 0; k < 3; k++) t[k] = rv_rand();
+        tv.x = t[0]; tv.y = t[1]; tv.z = t[2];
+        rvt_r7_view(m, t, o);                           /* r7 view */
+        bad[0] += !same_v4(pt_r7_model2view(v4(m[0], m[1], m[2], 1.0), tv), o, 3);
+        l = rv_rand(); r = rv_rand(); b = rv_rand(); tt = rv_rand();
+        memset(&cam, 0, sizeof cam);
+        cam.perspective = persp;
+        cam.l = l; cam.r = r; cam.b = b; cam.t = tt;
+        rvt_r7_camera(m, persp, l, r, b, tt, o);        /* r7 camera */
+        bad[1] += !same_v4(pt_r7_view2camera(v4(m[0], m[1], m[2], 1.0), &cam), o, 3);
+        rvt_r9_normalize(persp, l, r, b, tt, nm);       /* r9 normalize matrix */
+        jn = pt_r9_normalize_matrix(&cam);
+        for (j = 0; j < 4; j++) {
+            double col[4] = {nm[0][j], nm[1][j], nm[2][j], nm[3][j]};
+
+            bad[2] += !same_v4(jn.col[j], col, 4);
+        }
+        for (k = 0; k < 16; k++) mat[k / 4][k % 4] = rv_rand();   /* r9 world: M v */
+        for (j = 0; j < 4; j++) jm.col[j] = v4(mat[0][j], mat[1][j], mat[2][j], mat[3][j]);
+        rvt_times_vec(mat, m, o);
+        bad[3] += !same_v4(pt_r9_model2world(v4(m[0], m[1], m[2], m[3]), &jm), o, 4);
+        rvt_times_vec(nm, m, o);                        /* r9 camera: N v */
+        bad[3] += !same_v4(pt_r9_view2camera(v4(m[0], m[1], m[2], m[3]), &jn), o, 4);
+        rvt_r9_view(m, t, o);                           /* r9 view */
+        bad[4] += !same_v4(pt_r9_world2view(v4(m[0], m[1], m[2], m[3]), tv), o, 3);
+        rvt_project(m, persp, o);                       /* image */
+        sv = pt_rv_project(v4(m[0], m[1], m[2], 1.0), persp);
+        bad[5] += !same_v4(sv, o, 2);
+        {                                               /* the near clip */
+            double a[3] = {m[0], m[1], m[2]}, c[3] = {t[0], t[1], t[2]}, u = 0, p[3];
+            double zn = i % 3 ? -0.1 : rv_rand();
+            rv_heard h;
+            int v;
+
+            if (i % 5 == 0) a[2] = zn;                  /* on the plane */
+            v = rvt_nearclip(zn, a, c, &u, p, &off);
+            if (rv_stage_clip(v4(a[0], a[1], a[2], 1.0), v4(c[0], c[1], c[2], 1.0), 1, zn, &h))
+                bad[6]++;
+            else if (v >= 0) bad[6] += h.ncuts != 0 || h.accepted != v;
+            else {
+                nearcuts++;
+                bad[6] += h.ncuts != 1 || !h.accepted || h.cut[0].off != off
+                          || !same_d(h.cut[0].t, u) || !same_v4(h.cut[0].p[2], p, 3);
+            }
+        }
+        {                                               /* the clip to -1..1 */
+            double e[2][2], e0[2][2], te[8], pe[8][2];
+            int edge[8], offs[8], nc = 0, keep, q, ok;
+            rv_heard h;
+
+            for (k = 0; k < 4; k++) {
+                double x = rv_rand();
+
+                e[k / 2][k % 2] = fabs(x) > 2.0 ? x / 16.0 : x;     /* about -4 .. 4 */
+            }
+            memcpy(e0, e, sizeof e);
+            keep = rvt_clip(e, 8, &nc, edge, offs, te, pe);
+            if (rv_stage_clip(v4(e0[0][0], e0[0][1], 0, 1), v4(e0[1][0], e0[1][1], 0, 1), 0,
+                              0.0, &h) != 0) { bad[7]++; continue; }
+            ok = h.ncuts == nc && h.accepted == keep && nc <= 8;
+            for (q = 0; ok && q < nc; q++) {
+                double pq[2];
+
+                pq[0] = pe[q][0]; pq[1] = pe[q][1];
+                ok = (int)h.cut[q].edge == edge[q] && h.cut[q].off == offs[q]
+                     && same_d(h.cut[q].t, te[q]) && same_v4(h.cut[q].p[2], pq, 2);
+            }
+            if (ok && keep) ok = same_v4(h.ends[0], e[0], 2) && same_v4(h.ends[1], e[1], 2);
+            bad[7] += !ok;
+            cuts += nc;
+            trivial += nc == 0;
+        }
+    }
+    PT_CHECK("acc-12.1 renderer 7's view copy is pt_r7_model2view bit for bit", bad[0] == 0);
+    PT_CHECK("acc-12.2 renderer 7's camera copy is pt_r7_view2camera bit for bit", bad[1] == 0);
+    PT_CHECK("acc-12.3 renderer 9's normalize matrix is pt_r9_normalize_matrix's", bad[2] == 0);
+    PT_CHECK("acc-12.4 Java's A.times(v) copy is the world and camera stages'", bad[3] == 0);
+    PT_CHECK("acc-12.5 renderer 9's view copy is pt_r9_world2view bit for bit", bad[4] == 0);
+    PT_CHECK("acc-12.6 the image copy is pt_rv_project bit for bit", bad[5] == 0);
+    PT_CHECK("acc-12.7 the near clip copy: pt_rv_nearclip's verdict, end, t, point",
+             bad[6] == 0 && nearcuts > 1000);
+    PT_CHECK("acc-12.8 the clip copy: pt_rv_clip's cuts (edge, end, t, point), verdict, ends",
+             bad[7] == 0 && cuts > 5000 && trivial > 1000);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -1038,6 +1250,7 @@ int main(int argc, char **argv)
     dirs[1] = "tests/extreme";
     dirs[2] = "docs/examples";
     test_rows();
+    test_rv_copies();
     test_dd();
     test_dd_matrix();
     test_vp_of();

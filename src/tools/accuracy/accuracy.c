@@ -277,6 +277,13 @@ static void raster_mseg(const pt_acc_run *r, size_t k, size_t q, const pt_acc_dd
 
 /* ===== renderers 7 and 9 ===== */
 
+/* 1 when model k is not drawn (`hidden-position`, `hidden-model`): its
+** vertices are not used and its segments take part in no row. */
+static int rv_hidden(const pt_scene *s, size_t k)
+{
+    return s->renderer != 4 && (s->models[k].hidden_position || s->models[k].hidden_model);
+}
+
 /* Segment q of model k through the near clip, the projection of the point it
 ** made, the clip to -1..1 and, when kept, the stages pixel .. index on its
 ** ends (context c), into *g. */
@@ -328,6 +335,7 @@ static void raster_scene(const pt_acc_run *r, const pt_acc_dda *o, uint32_t *rgb
 
         if (rgb) *rgb = (uint32_t)m->color[0] << 16 | (uint32_t)m->color[1] << 8 | m->color[2];
         if (r->rv) pt_acc_sctx_make(&c, r->s, m, r->choices);
+        if (r->rv && rv_hidden(r->s, k)) continue;
         for (q = 0; q < m->nseg; q++)
             if (r->rv) {
                 pt_acc_rvseg *gp = keep ? &r->rseg[k][q] : &rg;
@@ -604,7 +612,8 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
 
         r->used[k] = calloc(m->nv ? m->nv : 1, 1);
         if (!r->used[k]) { pt_acc_run_free(r); return -1; }
-        for (q = 0; q < m->nseg; q++) r->used[k][m->seg[q].a] = r->used[k][m->seg[q].b] = 1;
+        for (q = 0; q < m->nseg && !rv_hidden(s, k); q++)
+            r->used[k][m->seg[q].a] = r->used[k][m->seg[q].b] = 1;
         for (q = 0; q < m->nv; q++) r->nused += r->used[k][q];
     }
     pt_acc_vertex_pass(r);
@@ -627,7 +636,7 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
             r->culled += !r->seg[k][q].visible;
         }
     for (k = 0; r->rseg && k < s->nmodels; k++)
-        for (q = 0; q < s->models[k].nseg; q++) {
+        for (q = 0; q < s->models[k].nseg && !rv_hidden(s, k); q++) {
             const pt_acc_rvseg *g = &r->rseg[k][q];
 
             r->made += (uint64_t)(g->near < 0) + (uint64_t)g->ncuts;
@@ -738,7 +747,7 @@ static void rv_work_fill(pt_acc_work *w, const pt_acc_run *r, size_t n)
             }
             continue;
         }
-        for (q = 0; q < m->nseg && i < n; q++) {
+        for (q = 0; q < m->nseg && i < n && !rv_hidden(s, k); q++) {
             const pt_acc_rvseg *g = &r->rseg[k][q];
 
             if (w->fn == PT_ACC_FN_RVCLIP && g->near == 0) continue;
@@ -1183,6 +1192,7 @@ static void rv_compare(const pt_acc_run *ref, const pt_acc_run *r, const pt_acc_
         for (k = 0; k < s->nmodels; k++) {
             const pt_model *m = &s->models[k];
 
+            if (rv_hidden(s, k)) continue;
             if (ri->fn == PT_ACC_FN_RV) {
                 for (v = 0; v < m->nv; v++) {
                     const pt_dd *a, *b;
