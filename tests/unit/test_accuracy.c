@@ -1240,6 +1240,221 @@ static void test_rv_copies(void)
              bad[7] == 0 && cuts > 5000 && trivial > 1000);
 }
 
+/* ===== renderers 7 and 9: the double run is the course driver's ===== */
+
+#define RV_MAXM 64
+
+/* What the course driver reports: each visible position's model after each
+** stage (vertices and primitives), and the pixels drawn. */
+typedef struct rv_seen {
+    pt_vec4 *v[RV_MAXM][PT_NCST];
+    size_t nv[RV_MAXM][PT_NCST];
+    pt_rv_prim *p[RV_MAXM][PT_NCST];
+    size_t np[RV_MAXM][PT_NCST];
+    int64_t *px;
+    size_t npx, cap;
+    const pt_scene *s;
+} rv_seen;
+
+static void rv_seen_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
+                          const pt_rv_model *m)
+{
+    rv_seen *sn = ud;
+    size_t k = pos->index;
+
+    if (k >= RV_MAXM) return;
+    free(sn->v[k][st]);
+    free(sn->p[k][st]);
+    sn->v[k][st] = malloc((m->nv ? m->nv : 1) * sizeof *m->v);
+    sn->p[k][st] = malloc((m->np ? m->np : 1) * sizeof *m->p);
+    if (!sn->v[k][st] || !sn->p[k][st]) return;
+    if (m->nv) memcpy(sn->v[k][st], m->v, m->nv * sizeof *m->v);
+    if (m->np) memcpy(sn->p[k][st], m->p, m->np * sizeof *m->p);
+    sn->nv[k][st] = m->nv;
+    sn->np[k][st] = m->np;
+}
+
+static void rv_seen_pixel(void *ud, const pt_rv_pixel *px)
+{
+    rv_seen *sn = ud;
+
+    if (px->kind != PT_RV_PX_STEP && px->kind != PT_RV_PX_END) return;
+    if (!pt_inside(px->x_vp, px->y_vp, sn->s->vp_w, sn->s->vp_h)) return;
+    if (sn->npx == sn->cap) {
+        size_t cap = sn->cap ? 2 * sn->cap : 256;
+        int64_t *q = realloc(sn->px, cap * sizeof *q);
+
+        if (!q) return;
+        sn->px = q;
+        sn->cap = cap;
+    }
+    sn->px[sn->npx++] = (sn->s->vp_y + (int64_t)px->y_vp) * sn->s->fb_w + sn->s->vp_x + px->x_vp;
+}
+
+static int by_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+
+    return x < y ? -1 : x > y;
+}
+
+/* n values a (pt_dd, lo = 0) against the stage's v. */
+static int rv_same(const pt_dd *a, pt_vec4 v, int n)
+{
+    double b[4];
+    int k;
+
+    for (k = 0; k < n; k++) b[k] = a[k].hi;
+    return same_v4(v, b, n);
+}
+
+typedef struct rv_tally {
+    size_t scenes, vertices, near, cuts, ends, pixels, drawn;
+    size_t bad_v, bad_near, bad_cuts, bad_ends, bad_px;
+} rv_tally;
+
+/* Model k of the double run r against what the driver reported (sn). */
+static void rv_check_model(const pt_acc_run *r, const rv_seen *sn, size_t k, rv_tally *t)
+{
+    const pt_scene *s = r->s;
+    const pt_model *m = &s->models[k];
+    size_t v, q, in = m->nv, ic, li = 0;
+    int c, e, st;
+
+    if (!sn->v[k][PT_CST_IMAGE] || !sn->v[k][PT_CST_CLIP]) { t->bad_v++; return; }
+    for (v = 0; v < m->nv; v++) {
+        const pt_acc_rvjourney *j = &r->rj[k][v];
+
+        if (!r->used[k][v]) continue;
+        t->vertices++;
+        for (st = PT_CST_MODEL; st <= PT_CST_IMAGE; st++) {
+            const pt_dd *a = st == PT_CST_MODEL ? j->m : st == PT_CST_WORLD ? j->w
+                             : st == PT_CST_VIEW ? j->v : st == PT_CST_CAMERA ? j->c : j->ip;
+            int n = st == PT_CST_WORLD ? 4 : st == PT_CST_IMAGE ? 2 : 3;
+
+            if (st == PT_CST_NEARCLIP || !sn->v[k][st]) continue;
+            if (!rv_same(a, sn->v[k][st][v], n)) t->bad_v++;
+        }
+    }
+    ic = sn->nv[k][PT_CST_IMAGE];                   /* the clip appends from here */
+    for (q = 0; q < m->nseg; q++) {
+        const pt_acc_rvseg *g = &r->rseg[k][q];
+
+        if (g->near < 0) {                          /* the near clip's new vertex */
+            t->near++;
+            if (in >= sn->nv[k][PT_CST_IMAGE] || !sn->v[k][PT_CST_NEARCLIP]
+                || !rv_same(g->nc.p, sn->v[k][PT_CST_NEARCLIP][in], 3)
+                || !rv_same(g->nip, sn->v[k][PT_CST_IMAGE][in], 2)) t->bad_near++;
+            in++;
+        }
+        for (c = 0; g->near != 0 && c < g->ncuts; c++, ic++) {  /* the clip's */
+            t->cuts++;
+            if (ic >= sn->nv[k][PT_CST_CLIP] || !rv_same(g->cut[c].p, sn->v[k][PT_CST_CLIP][ic], 2))
+                t->bad_cuts++;
+        }
+        if (!g->keep) continue;
+        while (li < sn->np[k][PT_CST_CLIP] && sn->p[k][PT_CST_CLIP][li].kind != PT_RV_LINE) li++;
+        for (e = 0; e < 2; e++) {                   /* the ends drawn */
+            t->ends++;
+            if (li >= sn->np[k][PT_CST_CLIP]
+                || !rv_same(g->end[e].ip, sn->v[k][PT_CST_CLIP][sn->p[k][PT_CST_CLIP][li].v[e]], 2))
+                t->bad_ends++;
+        }
+        li++;
+    }
+    for (; li < sn->np[k][PT_CST_CLIP]; li++)       /* a line the run did not draw */
+        if (sn->p[k][PT_CST_CLIP][li].kind == PT_RV_LINE) t->bad_ends++;
+}
+
+static void rv_check_scene(const char *path, rv_tally *t)
+{
+    pt_scene s;
+    pt_acc_run r;
+    pt_fb fb;
+    rv_seen *sn;
+    pt_course_ls ls;
+    pt_rv_raster_ls rls;
+    size_t k, i, n;
+    int points = 0, st;
+
+    if (!load(&s, path)) { t->bad_v++; return; }
+    if ((s.renderer != 7 && s.renderer != 9) || s.nmodels > RV_MAXM) { pt_scene_free(&s); return; }
+    sn = calloc(1, sizeof *sn);
+    memset(&ls, 0, sizeof ls);
+    memset(&rls, 0, sizeof rls);
+    if (!sn || pt_fb_init(&fb, s.fb_w, s.fb_h, s.background) != 0) {
+        t->bad_v++; free(sn); pt_scene_free(&s); return;
+    }
+    sn->s = &s;
+    ls.stage = rv_seen_stage;
+    ls.ud = sn;
+    rls.pixel = rv_seen_pixel;
+    rls.ud = sn;
+    ls.raster_ls = &rls;
+    if (pt_course_render(&s, &fb, &ls) != 0 || pt_acc_run_make(&r, &s, PT_ARITH_DOUBLE, 0) != 0) {
+        t->bad_v++;
+    } else {
+        t->scenes++;
+        for (k = 0; k < s.nmodels; k++) {
+            points |= s.models[k].npts > 0;
+            if (!s.models[k].hidden_position && !s.models[k].hidden_model)
+                rv_check_model(&r, sn, k, t);
+        }
+        if (!points && !s.antialias) {              /* the pixels: the same places */
+            t->drawn++;
+            if (sn->npx) qsort(sn->px, sn->npx, sizeof *sn->px, by_i64);
+            for (i = n = 0; i < sn->npx; i++)
+                if (i == 0 || sn->px[i] != sn->px[i - 1]) sn->px[n++] = sn->px[i];
+            t->pixels += n;
+            if (n != r.nimg) t->bad_px++;
+            for (i = 0; i < n && i < r.nimg; i++)
+                if (sn->px[i] != r.img[i].idx) { t->bad_px++; break; }
+        }
+        pt_acc_run_free(&r);
+    }
+    for (k = 0; k < RV_MAXM; k++)
+        for (st = 0; st < PT_NCST; st++) { free(sn->v[k][st]); free(sn->p[k][st]); }
+    free(sn->px);
+    free(sn);
+    pt_fb_free(&fb);
+    pt_scene_free(&s);
+}
+
+static void test_rv_course(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char path[4096];
+    rv_tally t;
+    char descr[240];
+
+    memset(&t, 0, sizeof t);
+    while (d && (e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+
+        if (len > 6 && strcmp(e->d_name + len - 6, ".scene") == 0) {
+            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+            rv_check_scene(path, &t);
+        }
+    }
+    if (d) closedir(d);
+    snprintf(descr, sizeof descr, "acc-13.1 renderers 7 and 9: the double run's vertices are "
+             "the course driver's, model to image, bit for bit (%zu vertices, %zu scenes)",
+             t.vertices, t.scenes);
+    PT_CHECK(descr, t.bad_v == 0 && t.scenes >= 15 && t.vertices > 100);
+    snprintf(descr, sizeof descr, "acc-13.2 ... its near clip makes the driver's %zu points "
+             "(camera and image plane)", t.near);
+    PT_CHECK(descr, t.bad_near == 0 && t.near >= 4);
+    snprintf(descr, sizeof descr, "acc-13.3 ... its clip the driver's %zu points", t.cuts);
+    PT_CHECK(descr, t.bad_cuts == 0 && t.cuts >= 4);
+    snprintf(descr, sizeof descr, "acc-13.4 ... and draws the driver's segments between "
+             "the same %zu ends", t.ends);
+    PT_CHECK(descr, t.bad_ends == 0 && t.ends > 50);
+    snprintf(descr, sizeof descr, "acc-13.5 ... its image lights the driver's %zu pixels "
+             "(%zu scenes without points or AA)", t.pixels, t.drawn);
+    PT_CHECK(descr, t.bad_px == 0 && t.drawn >= 8 && t.pixels > 500);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -1251,6 +1466,7 @@ int main(int argc, char **argv)
     dirs[2] = "docs/examples";
     test_rows();
     test_rv_copies();
+    test_rv_course("tests/course79");
     test_dd();
     test_dd_matrix();
     test_vp_of();
