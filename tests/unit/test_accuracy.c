@@ -1455,6 +1455,150 @@ static void test_rv_course(const char *dir)
     PT_CHECK(descr, t.bad_px == 0 && t.drawn >= 8 && t.pixels > 500);
 }
 
+/* ===== renderers 7 and 9: the timed work ===== */
+
+static int same_rvfront(const pt_acc_rvjourney *a, const pt_acc_rvjourney *b, int r9)
+{
+    return same_dd(a->m, b->m, 3) && (!r9 || same_dd(a->w, b->w, 4)) && same_dd(a->v, b->v, 3)
+           && same_dd(a->c, b->c, 3) && same_dd(a->ip, b->ip, 2);
+}
+
+static int same_rvcut(const pt_acc_rvcut *a, const pt_acc_rvcut *b, int n)
+{
+    return a->edge == b->edge && a->off == b->off && same_dd(&a->t, &b->t, 1)
+           && same_dd(a->p, b->p, n);
+}
+
+static int same_rvclip(const pt_acc_rvseg *a, const pt_acc_rvseg *b, int fn)
+{
+    int k, ok = 1;
+
+    if (fn == PT_ACC_FN_RVNEAR)
+        return a->near == b->near && (a->near >= 0 || same_rvcut(&a->nc, &b->nc, 3));
+    ok = a->keep == b->keep && a->ncuts == b->ncuts;
+    for (k = 0; ok && k < a->ncuts && k < PT_ACC_RV_MAXCUTS; k++)
+        ok = same_rvcut(&a->cut[k], &b->cut[k], 2);
+    return ok;
+}
+
+/* Row one of run r on w; from garbage when poison is set, and then every row
+** of its kind in order: the values are the run's, input for input. */
+static int rv_work_agrees(const pt_acc_run *r, pt_acc_work *w, int one, int poison, size_t *n)
+{
+    const pt_scene *s = r->s;
+    const pt_acc_rows *rows = pt_acc_scene_rows(s);
+    pt_acc_fn fn = rows->row[one].fn;
+    size_t k, v, q, i = 0;
+    int row, e, ok = 1;
+
+    if (poison) pt_acc_work_poison(w);
+    for (row = 0; row + 1 < rows->nrows; row++)
+        if (row == one || (poison && rows->row[row].fn == fn)) pt_acc_stage_pass(w, row);
+    for (k = 0; k < s->nmodels; k++) {
+        if (s->models[k].hidden_position || s->models[k].hidden_model) continue;
+        if (fn == PT_ACC_FN_RV) {
+            for (v = 0; v < s->models[k].nv; v++)
+                if (r->used[k][v])
+                    ok &= same_rvfront(pt_acc_work_rvjourney(w, i++), &r->rj[k][v], s->renderer == 9);
+            continue;
+        }
+        for (q = 0; q < s->models[k].nseg; q++) {
+            const pt_acc_rvseg *g = &r->rseg[k][q];
+
+            if (fn == PT_ACC_FN_RVEND) {
+                for (e = 0; g->keep && e < 2; e++) {
+                    const pt_acc_journey *a = pt_acc_work_journey(w, i++);
+
+                    ok &= same_dd(a->ip, g->end[e].ip, 2) && same_dd(a->pp, g->end[e].pp, 2)
+                          && same_px(a->vp, g->end[e].vp) && same_px(a->fb, g->end[e].fb)
+                          && a->idx == g->end[e].idx;
+                }
+                continue;
+            }
+            if (fn == PT_ACC_FN_RVCLIP && g->near == 0) continue;
+            ok &= same_rvclip(pt_acc_work_rvseg(w, i++), g, fn);
+        }
+    }
+    *n += i;
+    return ok && i == pt_acc_work_size(w);
+}
+
+static void test_rv_work(void)
+{
+    static const char *const scenes[] = {
+        "tests/course79/r9-mat-14-camera-translate.scene", "tests/course79/r7-near-01.scene",
+        "tests/course79/r7-clip-08-corner-ur.scene", "tests/course79/r9-clip-12-through-x.scene"
+    };
+    static const struct { pt_arith a; unsigned choices; } runs[] = {
+        { PT_ARITH_FLOAT, 0 }, { PT_ARITH_DOUBLE, 0 }, { PT_ARITH_DD, 0 },
+        { PT_ARITH_DOUBLE, PT_ACC_TWO }
+    };
+    size_t si, ri, n = 0, nagain = 0, bad = 0, badagain = 0, nruns = 0;
+    char descr[200];
+    pt_scene s;
+
+    for (si = 0; si < sizeof scenes / sizeof scenes[0]; si++) {
+        if (!load(&s, scenes[si])) { bad++; continue; }
+        for (ri = 0; ri < sizeof runs / sizeof runs[0]; ri++) {
+            const pt_acc_rows *rows = pt_acc_scene_rows(&s);
+            pt_acc_run r;
+            int row;
+
+            if (pt_acc_run_make(&r, &s, runs[ri].a, runs[ri].choices) != 0) { bad++; continue; }
+            for (row = 0; row + 1 < rows->nrows; row++) {
+                pt_acc_work *w;
+                int first = 0;
+
+                while (rows->row[first].fn != rows->row[row].fn) first++;
+                if (first == row) {                         /* a kind's rows, from garbage */
+                    w = pt_acc_work_make(&r, row);
+                    if (!w || !rv_work_agrees(&r, w, row, 1, &n)) bad++;
+                    pt_acc_work_free(w);
+                }
+                w = pt_acc_work_make(&r, row);              /* each alone, as timed */
+                if (!w || !rv_work_agrees(&r, w, row, 0, &nagain)) badagain++;
+                pt_acc_work_free(w);
+            }
+            nruns++;
+            pt_acc_run_free(&r);
+        }
+        pt_scene_free(&s);
+    }
+    snprintf(descr, sizeof descr, "acc-14.1 renderers 7 and 9: the stages and clips the "
+             "timing runs, from garbage, rebuild the error runs' values bit for bit (%zu runs, "
+             "%zu inputs)", nruns, n);
+    PT_CHECK(descr, bad == 0 && nruns == 16 && n > 200);
+    snprintf(descr, sizeof descr, "acc-14.2 ... and a timed pass of one stage rewrites the "
+             "same values (%zu inputs)", nagain);
+    PT_CHECK(descr, badagain == 0 && nagain > n);
+}
+
+/* The tables of renderers 7 and 9: renderer 9's stages in order, renderer
+** 7's without world, each with a viewport row, pixel the last real one, 2.001
+** in the pixel row and the rasterizer last. */
+static void test_rv_rows(void)
+{
+    static const char *const r9[] = {"model", "world", "view", "camera", "nearclip", "image",
+                                     "clip", "pixel", "viewport", "framebuffer", "index", "raster"};
+    const pt_acc_rows *t9 = &pt_acc_rows_r9, *t7 = &pt_acc_rows_r7;
+    int i, ok9 = t9->nrows == 12 && t9->rv == 9, ok7 = t7->nrows == 11 && t7->rv == 7, sane = 1;
+
+    for (i = 0; ok9 && i < 12; i++) ok9 = !strcmp(t9->row[i].name, r9[i]);
+    for (i = 0; ok7 && i < 11; i++) ok7 = !strcmp(t7->row[i].name, r9[i + (i > 0)]);
+    PT_CHECK("acc-11.1 renderer 9's rows: its stages and both clips in order, the rasterizer last", ok9);
+    PT_CHECK("acc-11.2 renderer 7's: the same without world", ok7);
+    for (i = 0; i < 2; i++) {
+        const pt_acc_rows *t = i ? t7 : t9;
+
+        sane &= t->row[t->nrows - 1].stage == -1 && t->row[t->nrows - 1].fn == PT_ACC_FN_RASTER
+                && !strcmp(t->row[pt_acc_last_real(t)].name, "pixel")
+                && pt_acc_row_varied(t, PT_ACC_TWO) == pt_acc_row_of(t, PT_STAGE_PIXEL)
+                && pt_acc_row_of(t, PT_STAGE_VIEWPORT) == pt_acc_row_of(t, PT_STAGE_PIXEL) + 1
+                && pt_acc_row_of(t, PT_STAGE_INDEX) == t->nrows - 2 && t->nrows <= PT_ACC_MAXROWS;
+    }
+    PT_CHECK("acc-11.3 ... each with pixel (2.001) the last real row, viewport .. index after it", sane);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -1465,7 +1609,9 @@ int main(int argc, char **argv)
     dirs[1] = "tests/extreme";
     dirs[2] = "docs/examples";
     test_rows();
+    test_rv_rows();
     test_rv_copies();
+    test_rv_work();
     test_rv_course("tests/course79");
     test_dd();
     test_dd_matrix();

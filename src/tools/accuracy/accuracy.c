@@ -704,7 +704,6 @@ struct pt_acc_work {
     pt_acc_mjourney *mj;         /* matrix, model .. cvv: likewise */
     pt_acc_mtail *t;             /* matrix, ndc .. index: the inside vertices' tails */
     pt_acc_fn fn;                /* the kind of row it was made for */
-    int sub;                     /* renderers 7, 9: the row's function */
     pt_acc_rvjourney *rj;        /* renderers 7, 9, model .. image: copies */
     pt_acc_rvseg *rseg;          /* ... the clips: copies of the segments */
     size_t *seg;                 /* ... seg[i]: input i's segment in its model */
@@ -779,7 +778,6 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
     w->arith = r->arith;
     w->r = r;
     w->fn = fn;
-    w->sub = pt_acc_scene_rows(s)->row[row].sub;
     if (r->rv) {                                    /* renderers 7 and 9 */
         size_t nseg = 0;
 
@@ -848,16 +846,23 @@ void pt_acc_work_poison(pt_acc_work *w)
             memcpy(w->t[i].k, keep.k, sizeof keep.k);
             memcpy(w->t[i].kerr, keep.kerr, sizeof keep.kerr);
         } else if (w->mj) memset(&w->mj[i], 0xab, sizeof w->mj[i]);
-        else memset(&w->j[i], 0xab, sizeof w->j[i]);
+        else {
+            pt_dd ip[2];                            /* renderers 7, 9: the ends' input */
+
+            memcpy(ip, w->j[i].ip, sizeof ip);
+            memset(&w->j[i], 0xab, sizeof w->j[i]);
+            if (w->r->rv) memcpy(w->j[i].ip, ip, sizeof ip);
+        }
 }
 
 /* Renderers 7 and 9: one stage on every input of w.  The clips read their
 ** inputs (camera coordinates; the image-plane ends after the near clip) from
 ** the run, and write the segment's copy. */
-static double rv_stage_pass(pt_acc_work *w)
+static double rv_stage_pass(pt_acc_work *w, int row)
 {
     const pt_acc_run *r = w->r;
     const pt_acc_ops *op = ops[w->arith];
+    int sub = pt_acc_scene_rows(r->s)->row[row].sub;
     size_t i;
 
     for (i = 0; i < w->n; i++) {
@@ -867,7 +872,7 @@ static double rv_stage_pass(pt_acc_work *w)
 
         switch (w->fn) {
         case PT_ACC_FN_RV:
-            op->rvstage[w->sub](r->rv, k, w->v[i], &w->rj[i]);
+            op->rvstage[sub](r->rv, k, w->v[i], &w->rj[i]);
             break;
         case PT_ACC_FN_RVNEAR:
             g->near = op->rvnear(r->rv, r->rj[k][sg->a].c, r->rj[k][sg->b].c, &g->nc);
@@ -884,7 +889,7 @@ static double rv_stage_pass(pt_acc_work *w)
             break;
         }
         case PT_ACC_FN_RVEND:
-            op->stage[w->sub](&w->ctx[k], w->v[i], &w->j[i]);
+            op->stage[sub](&w->ctx[k], w->v[i], &w->j[i]);
             break;
         case PT_ACC_FN_STAGE: case PT_ACC_FN_MSTAGE: case PT_ACC_FN_TAIL:
         case PT_ACC_FN_RASTER:
@@ -901,7 +906,7 @@ double pt_acc_stage_pass(pt_acc_work *w, int row)
     size_t i;
 
     if (w->n == 0) return 0.0;
-    if (w->r->rv) return rv_stage_pass(w);
+    if (w->r->rv) return rv_stage_pass(w, row);
     if (w->t) {
         pt_acc_tail_fn f = pt_acc_tail_of(w->arith, row);
 
@@ -935,6 +940,16 @@ const pt_acc_mjourney *pt_acc_work_mjourney(const pt_acc_work *w, size_t i)
 const pt_acc_mtail *pt_acc_work_mtail(const pt_acc_work *w, size_t i)
 {
     return w->t ? &w->t[i] : NULL;
+}
+
+const pt_acc_rvjourney *pt_acc_work_rvjourney(const pt_acc_work *w, size_t i)
+{
+    return w->rj ? &w->rj[i] : NULL;
+}
+
+const pt_acc_rvseg *pt_acc_work_rvseg(const pt_acc_work *w, size_t i)
+{
+    return w->rseg ? &w->rseg[i] : NULL;
 }
 
 /* The timed rasterizer's pixel sink: a count and a checksum. */

@@ -281,12 +281,15 @@ size_t pt_acc_work_size(const pt_acc_work *w);
 double pt_acc_stage_pass(pt_acc_work *w, int row);
 
 /* For tests: overwrite every value the stages of w's kind write (all but the
-** clip coordinates a tail starts from) with garbage; and input i as it is now
+** clip coordinates a tail starts from, and the image-plane point the ends of
+** renderers 7 and 9 start from) with garbage; and input i as it is now
 ** (NULL when w holds another kind). */
 void pt_acc_work_poison(pt_acc_work *w);
 const pt_acc_journey *pt_acc_work_journey(const pt_acc_work *w, size_t i);
 const pt_acc_mjourney *pt_acc_work_mjourney(const pt_acc_work *w, size_t i);
 const pt_acc_mtail *pt_acc_work_mtail(const pt_acc_work *w, size_t i);
+const pt_acc_rvjourney *pt_acc_work_rvjourney(const pt_acc_work *w, size_t i);
+const pt_acc_rvseg *pt_acc_work_rvseg(const pt_acc_work *w, size_t i);
 
 /* The context of model m's stages in scene s.  This function can't fail. */
 void pt_acc_sctx_make(pt_acc_sctx *c, const pt_scene *s, const pt_model *m, unsigned choices);
