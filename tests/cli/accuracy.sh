@@ -208,8 +208,7 @@ check "acc-sh-6.6 ... double's near clip within 16 ulps, float's far beyond" \
     test "$(field 'nearclip     double' 5)" -le 16 -a "$(field 'nearclip     double' 3)" != 0
 # z = -0.09999999999 is beyond the near plane z = -0.1 in double; rounded to
 # float it is (float)-0.1, on the plane: float keeps what the reference cuts
-printf 'renderer 7\nframebuffer 20 20\nmodel m\nv 0 0 -0.09999999999\nv 0.5 0.5 -2\nl 1 2\n' > "$tmp/nd.scene"
-acc "$tmp/nd.scene" --no-time
+acc tests/data/rv-near-float.scene --no-time
 check "acc-sh-6.7 float decides the near clip otherwise: counted (1/1), error inf" \
     test "$(grep -A3 '^clips decided' "$tmp/out" | awk '$1 == "nearclip" { print $2 "," $3 }')" = "1/1,0/1" \
          -a "$(field 'nearclip     float' 3)" = inf
