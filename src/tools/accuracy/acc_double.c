@@ -6,14 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/accuracy/acc_double.h"
-#include "stages/r7_model2view.h"
-#include "stages/r7_view2camera.h"
-#include "stages/r9_model2world.h"
-#include "stages/r9_world2view.h"
-#include "stages/r9_view2camera.h"
-#include "stages/rv_nearclip.h"
-#include "stages/rv_project.h"
-#include "stages/rv_clip.h"
 
 /* ===== the classic camera ===== */
 

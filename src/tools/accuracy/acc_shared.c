@@ -5,7 +5,6 @@
 #include <math.h>
 #include <string.h>
 #include "tools/accuracy/acc_shared.h"
-#include "stages/r9_matrix.h"
 
 /* ===== the integer stages ===== */
 

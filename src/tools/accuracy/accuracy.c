@@ -32,31 +32,31 @@ const int pt_arith_bits[PT_NARITH] = { 24, 53, PT_DD_BITS };
 #define RE   PT_ACC_RECOMPUTE
 
 static const pt_acc_rowinfo classic_rows[PT_ACC_NROWS] = {
-    [PT_ACC_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
-    [PT_ACC_CAMERA]      = { PT_STAGE_CAMERA,      "camera",      1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
-    [PT_ACC_IMAGE]       = { PT_STAGE_IMAGE,       "image",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
-    [PT_ACC_PIXEL]       = { PT_STAGE_PIXEL,       "pixel",       1, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL },
-    [PT_ACC_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL },
-    [PT_ACC_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_PIXEL },
-    [PT_ACC_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_INDEX },
-    [PT_ACC_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE,  PT_ACC_PANEL_RASTER }
+    [PT_ACC_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_CAMERA]      = { PT_STAGE_CAMERA,      "camera",      1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_IMAGE]       = { PT_STAGE_IMAGE,       "image",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_PIXEL]       = { PT_STAGE_PIXEL,       "pixel",       1, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_INDEX, 0, NULL },
+    [PT_ACC_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE,  PT_ACC_PANEL_RASTER, 0, NULL }
 };
 
 /* The cvv's row counts outcodes unlike the reference's: no error, no panel.
 ** Rows ndc .. index take the vertices inside the view volume and the points
 ** clipping makes (pt_acc_mtail). */
 static const pt_acc_rowinfo matrix_rows[PT_ACC_M_NROWS] = {
-    [PT_ACC_M_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_WORLD]       = { PT_STAGE_WORLD,       "world",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_VIEW]        = { PT_STAGE_VIEW,        "view",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_CLIP]        = { PT_STAGE_CLIP,        "clip",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_CVV]         = { PT_STAGE_CVV,         "cvv",         0, PT_ACC_FN_MSTAGE, 0,  -1 },
-    [PT_ACC_M_NDC]         = { PT_STAGE_NDC,         "ndc",         1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_SCREEN]      = { PT_STAGE_SCREEN,      "screen",      1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
-    [PT_ACC_M_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
-    [PT_ACC_M_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
-    [PT_ACC_M_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_INDEX },
-    [PT_ACC_M_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE, PT_ACC_PANEL_RASTER }
+    [PT_ACC_M_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_WORLD]       = { PT_STAGE_WORLD,       "world",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_VIEW]        = { PT_STAGE_VIEW,        "view",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_CLIP]        = { PT_STAGE_CLIP,        "clip",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_CVV]         = { PT_STAGE_CVV,         "cvv",         0, PT_ACC_FN_MSTAGE, 0,  -1, 0, NULL },
+    [PT_ACC_M_NDC]         = { PT_STAGE_NDC,         "ndc",         1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_SCREEN]      = { PT_STAGE_SCREEN,      "screen",      1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_M_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_M_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_M_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_INDEX, 0, NULL },
+    [PT_ACC_M_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE, PT_ACC_PANEL_RASTER, 0, NULL }
 };
 
 /* Renderers 7 and 9: nearclip and clip count segments (their t and new
@@ -110,14 +110,14 @@ const pt_acc_rows pt_acc_rows_of[PT_NPIPES] = {
     [PT_PIPE_CLASSIC] = {
         classic_rows, PT_ACC_NROWS, 0,
         { ": model, camera, image", ": pixel plane, viewport, framebuffer", "", "" },
-        "", NULL
+        "", NULL, 0
     },
     [PT_PIPE_MATRIX] = {
         matrix_rows, PT_ACC_M_NROWS, 1,
         { ": model .. ndc", ": screen, viewport, framebuffer", "", "" },
         "; cvv (outcodes) has no error to plot",
         "choice: 2.001 or 2.0 does not apply to the matrix camera: its screen stage,\n"
-        "x_s = (x_n + 1) * w * 0.5, has no 2.001\n"
+        "x_s = (x_n + 1) * w * 0.5, has no 2.001\n", 0
     }
 };
 
