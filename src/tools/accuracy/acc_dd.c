@@ -491,24 +491,8 @@ static int dd_le(pt_dd a, pt_dd b)
 
 static int rvcam(pt_acc_rvcam *c)
 {
-    const pt_scene *s = c->s;
-    double m[4][4];
-    size_t k;
-    int i;
-
-    c->world = calloc(s->nmodels ? s->nmodels : 1, sizeof *c->world);
-    if (!c->world) return -1;
-    for (k = 0; k < s->nmodels; k++) {
-        pt_acc_rv_matrix(s, k, m);                  /* the double matrix, as exact */
-        for (i = 0; i < 16; i++) c->world[k][i / 4][i % 4] = pt_acc_dd(m[i / 4][i % 4]);
-    }
-    c->l = pt_acc_dd(s->cam_l); c->r = pt_acc_dd(s->cam_r);
-    c->b = pt_acc_dd(s->cam_b); c->t = pt_acc_dd(s->cam_t);
-    c->n = pt_acc_dd(s->cam_n);
-    c->view[0] = pt_acc_dd(s->view.x);
-    c->view[1] = pt_acc_dd(s->view.y);
-    c->view[2] = pt_acc_dd(s->view.z);
-    rvd_r9_normalize(s->perspective, c->l, c->r, c->b, c->t, c->norm);
+    if (pt_acc_rvcam_exact(c) != 0) return -1;      /* the scene's doubles, as exact */
+    rvd_r9_normalize(c->s->perspective, c->l, c->r, c->b, c->t, c->norm);
     return 0;
 }
 

@@ -495,29 +495,26 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
 #define RV_FN(name) rvf_##name
 #include "tools/accuracy/acc_rv_tmpl.h"
 
+static pt_dd round_f(pt_dd x)                       /* a double rounded to float */
+{
+    return pt_acc_dd((double)to_float(x.hi));
+}
+
 static int rvcam(pt_acc_rvcam *c)
 {
-    const pt_scene *s = c->s;
-    float l = to_float(s->cam_l), r = to_float(s->cam_r), b = to_float(s->cam_b),
-          t = to_float(s->cam_t), n[4][4];
-    double m[4][4];
+    float n[4][4];
     size_t k;
     int i;
 
-    c->world = calloc(s->nmodels ? s->nmodels : 1, sizeof *c->world);
-    if (!c->world) return -1;
-    for (k = 0; k < s->nmodels; k++) {
-        pt_acc_rv_matrix(s, k, m);
-        for (i = 0; i < 16; i++) c->world[k][i / 4][i % 4] = pt_acc_dd((double)to_float(m[i / 4][i % 4]));
-    }
-    rvf_r9_normalize(s->perspective, l, r, b, t, n);
+    if (pt_acc_rvcam_exact(c) != 0) return -1;      /* then each number rounded */
+    for (k = 0; k < c->s->nmodels; k++)
+        for (i = 0; i < 16; i++) c->world[k][i / 4][i % 4] = round_f(c->world[k][i / 4][i % 4]);
+    c->l = round_f(c->l); c->r = round_f(c->r); c->b = round_f(c->b); c->t = round_f(c->t);
+    c->n = round_f(c->n);
+    for (i = 0; i < 3; i++) c->view[i] = round_f(c->view[i]);
+    rvf_r9_normalize(c->s->perspective, (float)c->l.hi, (float)c->r.hi, (float)c->b.hi,
+                     (float)c->t.hi, n);
     for (i = 0; i < 16; i++) c->norm[i / 4][i % 4] = pt_acc_dd((double)n[i / 4][i % 4]);
-    c->l = pt_acc_dd((double)l); c->r = pt_acc_dd((double)r);
-    c->b = pt_acc_dd((double)b); c->t = pt_acc_dd((double)t);
-    c->n = pt_acc_dd((double)to_float(s->cam_n));
-    c->view[0] = pt_acc_dd((double)to_float(s->view.x));
-    c->view[1] = pt_acc_dd((double)to_float(s->view.y));
-    c->view[2] = pt_acc_dd((double)to_float(s->view.z));
     return 0;
 }
 

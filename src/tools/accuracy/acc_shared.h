@@ -155,10 +155,11 @@ typedef struct pt_acc_rvcam {
 typedef void (*pt_acc_rvstage_fn)(const pt_acc_rvcam *c, size_t k, pt_vec3 v,
                                   pt_acc_rvjourney *j);
 
-/* Renderer 9: model k's position matrix as the stage builds it in double
-** (stages/r9_matrix.h), row i column j; renderer 7: the identity.  This
-** function can't fail. */
-void pt_acc_rv_matrix(const pt_scene *s, size_t k, double m[4][4]);
+/* Fill c (c->s set) with the scene's doubles as they are: l, r, b, t, n,
+** the view vector, and c->world[k], each model's position matrix as the
+** stage builds it in double (stages/r9_matrix.h; renderer 7: the identity);
+** not c->norm.  Returns 0, or -1 when out of memory (c->world NULL). */
+int pt_acc_rvcam_exact(pt_acc_rvcam *c);
 
 /* ===== the integer stages ===== */
 
