@@ -221,6 +221,11 @@ acc tests/course79/r9-clip-12-through-x.scene --repeat 1 --svg "$tmp/r9plot.svg"
 check "acc-sh-6.10 renderer 9 --svg: exit 0, every stage timed" test "$rc" = 0 -a "$(stage_times)" = 12
 check "acc-sh-6.11 ... its plot has the clips" grep -q '>nearclip</text>' "$tmp/r9plot.svg"
 svg_check acc-sh-6.12 "$tmp/r9plot.svg"
+# huge, tiny and zero coordinates through renderer 9's matrix, no near clip
+printf 'renderer 9\nframebuffer 30 20\nnearclip off\nmodel a\nmatrix rotate 33 0.3 0.4 0.5\nmatrix scale 1e300\nv 0 0 -1\nv 1e308 -1e308 0\nv 0 0 0\nv 1 1 1\nv 1e-320 2e-320 -1e-310\nsegment 1 2\nsegment 2 3\nsegment 3 4\nsegment 1 4\nsegment 4 5\nsegment 1 5\n' > "$tmp/rvh.scene"
+acc "$tmp/rvh.scene" --no-time
+check "acc-sh-6.13 renderer 9, overflow and subnormals: exit 0, every row, nothing on stderr" \
+    test "$rc" = 0 -a "$(grep -cE '^[a-z]+ +(float|double) +[-0-9i]' "$tmp/out")" = 24 -a ! -s "$tmp/err"
 
 # ---- the pixel cap: a scene writing more than 8M pixels is refused
 awk 'BEGIN { print "framebuffer 4000 4"; print "model m"; print "v -2 0 -2"; print "v 2 0 -2";

@@ -11,7 +11,10 @@
 ** double DDA lights exactly src/core/raster.c's pixels; that the float DDA (with
 ** its fast-forward) lights the plain float loop's; that the reference DDA
 ** lights the exact line's, ties included; and what pt_acc_compare() reports on
-** scenes whose answer is known.
+** scenes whose answer is known.  Renderers 7 and 9: their row tables; the
+** formula copies of acc_rv_tmpl.h, instantiated in double, against the stages
+** bit for bit; the double run against the course driver on tests/course79/;
+** and the timed work against the error runs.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>

@@ -49,6 +49,15 @@
 ** target at the screen's centre, say), and 2^-104 of rounding must not pick
 ** the side.
 **
+** Renderers 7 and 9 (the course's, src/core/course.h): their own stages in
+** each arithmetic (float and the reference from acc_rv_tmpl.h, the stages'
+** formulas written once for any number type; double the stages themselves),
+** each segment through the near clip and the clip to -1..1, the ends drawn
+** through renderer 4's pixel .. index stages and the DDA.  The clips' rows
+** compare t and the new points of segments cut alike; a segment cut otherwise
+** counts as decided otherwise (pt_acc_err.decided) and its values as inf.
+** The reference has no tie rule here.
+**
 ** USAGE
 **   pt_acc_run ref, r;  pt_acc_err e[PT_ACC_MAXROWS];
 **   pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
