@@ -101,8 +101,9 @@ typedef struct pt_acc_mcam {
 ** -1..1 (new points in the image plane, a cut at a time); and draw it
 ** between its ends' pixels, renderer 4's pixel stage (2.001) and Math.round. */
 
-#define PT_ACC_RV_MAXCUTS 8      /* the clip's cuts a segment keeps (a finite
-                                 ** one needs at most 4; the stage allows 64) */
+#define PT_ACC_RV_MAXCUTS 4      /* the clip's cuts a segment keeps: two an end
+                                 ** (an edge, then the other axis's); more are
+                                 ** counted, not kept (the stage allows 64) */
 
 /* One vertex of renderers 7 and 9 up to the image plane, widened to pt_dd. */
 typedef struct pt_acc_rvjourney {

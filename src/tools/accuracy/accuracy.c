@@ -782,7 +782,8 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
         size_t nseg = 0;
 
         for (k = 0; k < s->nmodels; k++) nseg += s->models[k].nseg;
-        if (fn != PT_ACC_FN_RV) n = nseg ? 2 * nseg : 1;
+        if (fn == PT_ACC_FN_RVEND) n = nseg ? 2 * nseg : 1;     /* two ends a segment */
+        else if (fn != PT_ACC_FN_RV) n = nseg ? nseg : 1;
         w->ctx = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->ctx);
         w->model = calloc(n, sizeof *w->model);
         w->v = calloc(n, sizeof *w->v);
