@@ -40,7 +40,14 @@
 #include "stages/m7_screen2viewport.h"
 #include "stages/ms_clip_segment.h"    /* the matrix camera's: clip to the CVV */
 #include "stages/rv_raster.h"          /* renderers 7 and 9: the rasterizer */
-#include "stages/r7_view2camera.h"     /* renderer 7's camera (step shows its halves) */
+#include "stages/r7_model2view.h"      /* ... their stages (accuracy's double run) */
+#include "stages/r7_view2camera.h"
+#include "stages/r9_model2world.h"
+#include "stages/r9_world2view.h"
+#include "stages/r9_view2camera.h"
+#include "stages/rv_nearclip.h"
+#include "stages/rv_project.h"
+#include "stages/rv_clip.h"
 #include "stages/wasm/pt_wasm_in.h"    /* the journey page's module: where its inputs go */
 /* the core: parse, plan, run, listen; the DDA; one point's journey */
 #include "core/scene.h"                /* the scene, parsed */

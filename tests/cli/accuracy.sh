@@ -190,4 +190,48 @@ acc "$tmp/tiny.scene" --no-time
 check "acc-sh-5.1 extreme look-at vectors: double's view within 1 ulp of the reference" \
     grep -qE '^view +double +[0-9.e+-]+ +[0-9.e+-]+ +1 ' "$tmp/out"
 
+# ---- renderers 7 and 9: their own stages and both clips
+acc tests/course79/r9-mat-14-camera-translate.scene --no-time
+cp "$tmp/out" "$tmp/r9a"
+check "acc-sh-6.1 renderer 9: exit 0, rows world, nearclip, image, clip, pixel" \
+    test "$rc" = 0 -a "$(grep -cE '^(world|nearclip|image|clip|pixel) +(float|double) ' "$tmp/out")" = 10
+check "acc-sh-6.2 ... double calls the stages: world exact (the matrix is double's)" \
+    test "$(field 'world        double' 3)" = 0
+acc tests/course79/r9-mat-14-camera-translate.scene --no-time
+check "acc-sh-6.3 ... the same bytes on a second run" cmp -s "$tmp/out" "$tmp/r9a"
+acc tests/course79/r7-near-01.scene --no-time
+check "acc-sh-6.4 renderer 7: no world row, view and camera rows" \
+    test "$rc" = 0 -a -z "$(grep '^world ' "$tmp/out")" -a -n "$(grep '^camera  *double ' "$tmp/out")"
+check "acc-sh-6.5 ... the near clip cuts 2 of 4 segments, the reference's clips make 6 points" \
+    test "$(field 'nearclip     double' 6)" = 2/4 -a -n "$(grep 'clips made 6 points' "$tmp/out")"
+check "acc-sh-6.6 ... double's near clip within 16 ulps, float's far beyond" \
+    test "$(field 'nearclip     double' 5)" -le 16 -a "$(field 'nearclip     double' 3)" != 0
+# z = -0.09999999999 is beyond the near plane z = -0.1 in double; rounded to
+# float it is (float)-0.1, on the plane: float keeps what the reference cuts
+acc tests/data/rv-near-float.scene --no-time
+check "acc-sh-6.7 float decides the near clip otherwise: counted (1/1), error inf" \
+    test "$(grep -A3 '^clips decided' "$tmp/out" | awk '$1 == "nearclip" { print $2 "," $3 }')" = "1/1,0/1" \
+         -a "$(field 'nearclip     float' 3)" = inf
+check "acc-sh-6.8 ... and its image row counts the near point on one side only as inf" \
+    test "$(field 'image        float' 3)" = inf
+acc tests/course79/r7-clip-08-corner-ur.scene --no-time
+check "acc-sh-6.9 the clip to -1..1: cuts counted per segment, double within 16 ulps" \
+    test "$rc" = 0 -a "$(field 'clip         double' 5)" -le 16 -a "$(field 'clip         double' 6)" != ""
+acc tests/course79/r9-clip-12-through-x.scene --repeat 1 --svg "$tmp/r9plot.svg"
+check "acc-sh-6.10 renderer 9 --svg: exit 0, every stage timed" test "$rc" = 0 -a "$(stage_times)" = 12
+check "acc-sh-6.11 ... its plot has the clips" grep -q '>nearclip</text>' "$tmp/r9plot.svg"
+svg_check acc-sh-6.12 "$tmp/r9plot.svg"
+# huge, tiny and zero coordinates through renderer 9's matrix, no near clip
+printf 'renderer 9\nframebuffer 30 20\nnearclip off\nmodel a\nmatrix rotate 33 0.3 0.4 0.5\nmatrix scale 1e300\nv 0 0 -1\nv 1e308 -1e308 0\nv 0 0 0\nv 1 1 1\nv 1e-320 2e-320 -1e-310\nsegment 1 2\nsegment 2 3\nsegment 3 4\nsegment 1 4\nsegment 4 5\nsegment 1 5\n' > "$tmp/rvh.scene"
+acc "$tmp/rvh.scene" --no-time
+check "acc-sh-6.13 renderer 9, overflow and subnormals: exit 0, every row, nothing on stderr" \
+    test "$rc" = 0 -a "$(grep -cE '^[a-z]+ +(float|double) +[-0-9i]' "$tmp/out")" = 24 -a ! -s "$tmp/err"
+
+# ---- the pixel cap: a scene writing more than 8M pixels is refused
+awk 'BEGIN { print "framebuffer 4000 4"; print "model m"; print "v -2 0 -2"; print "v 2 0 -2";
+             for (i = 0; i < 2001; i++) print "l 1 2" }' > "$tmp/big.scene"
+acc "$tmp/big.scene" --no-time
+check "acc-sh-7.1 over 8000000 pixels: exit 2, the cap named, nothing on stdout" \
+    test "$rc" = 2 -a -n "$(grep 'writes more than 8000000 pixels' "$tmp/err")" -a ! -s "$tmp/out"
+
 report

@@ -11,7 +11,10 @@
 ** double DDA lights exactly src/core/raster.c's pixels; that the float DDA (with
 ** its fast-forward) lights the plain float loop's; that the reference DDA
 ** lights the exact line's, ties included; and what pt_acc_compare() reports on
-** scenes whose answer is known.
+** scenes whose answer is known.  Renderers 7 and 9: their row tables; the
+** formula copies of acc_rv_tmpl.h, instantiated in double, against the stages
+** bit for bit; the double run against the course driver on tests/course79/;
+** and the timed work against the error runs.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -25,6 +28,15 @@
 #include "core/raster.h"
 #include "stages/m4_clip2cvv.h"
 #include "stages/s4_pixel2viewport.h"
+#include "core/course.h"
+#include "stages/r7_model2view.h"
+#include "stages/r7_view2camera.h"
+#include "stages/r9_model2world.h"
+#include "stages/r9_world2view.h"
+#include "stages/r9_view2camera.h"
+#include "stages/rv_nearclip.h"
+#include "stages/rv_project.h"
+#include "stages/rv_clip.h"
 
 /* ===== double-double ===== */
 
@@ -1028,6 +1040,568 @@ static void test_rows(void)
     PT_CHECK("acc-10.3 ... with names, panels, a viewport row and a last real row", sane);
 }
 
+/* ===== renderers 7 and 9 ===== */
+
+/* The formula copies of acc_rv_tmpl.h, instantiated in double: each must
+** give its stage's result bit for bit (float and double-double run the same
+** text). */
+#define RV_T double
+#define RV_NUM(x) (x)
+#define RV_ADD(a, b) ((a) + (b))
+#define RV_SUB(a, b) ((a) - (b))
+#define RV_MUL(a, b) ((a) * (b))
+#define RV_DIV(a, b) ((a) / (b))
+#define RV_NEG(a) (-(a))
+#define RV_GT(a, b) ((a) > (b))
+#define RV_LE(a, b) ((a) <= (b))
+#define RV_FN(name) rvt_##name
+#include "tools/accuracy/acc_rv_tmpl.h"
+
+static uint64_t rv_seed = 0x9e3779b97f4a7c15ULL;
+
+/* A random double: mostly of a few binades either side of 1, sometimes one
+** of the edges the stages test against (0, -0, +-1, +-0.1, a value a step
+** beside them). */
+static double rv_rand(void)
+{
+    static const double edge[] = {0.0, -0.0, 1.0, -1.0, -0.1, 0.1, 0x1.0000000000001p0,
+                                  -0x1.0000000000001p0, 0x1.fffffffffffffp-1, 2.0, -2.0};
+    uint64_t u;
+    double f;
+
+    rv_seed = rv_seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    u = rv_seed >> 11;
+    if (u % 8 == 0) return edge[(u >> 3) % (sizeof edge / sizeof edge[0])];
+    f = (double)(u >> 8) / 0x1p45 - 0.5;                /* -0.5 .. 0.5 */
+    return ldexp(f, (int)((u >> 3) % 9) - 2);           /* |x| < 64 */
+}
+
+static int same_d(double a, double b)
+{
+    return (isnan(a) && isnan(b)) || (a == b && signbit(a) == signbit(b));
+}
+
+static int same_v4(pt_vec4 a, const double b[], int n)
+{
+    double v[4];
+    int k, ok = 1;
+
+    v[0] = a.x; v[1] = a.y; v[2] = a.z; v[3] = a.w;
+    for (k = 0; k < n; k++) ok &= same_d(v[k], b[k]);
+    return ok;
+}
+
+static pt_vec4 v4(double x, double y, double z, double w)
+{
+    pt_vec4 v;
+
+    v.x = x; v.y = y; v.z = z; v.w = w;
+    return v;
+}
+
+/* What the clip stages' listener hears of one segment. */
+typedef struct rv_heard {
+    pt_rv_cut cut[70];
+    int ncuts, accepted;
+    pt_vec4 ends[2];
+} rv_heard;
+
+static void rv_hear_cut(void *ud, const pt_rv_cut *c)
+{
+    rv_heard *h = ud;
+
+    if (h->ncuts < 70) h->cut[h->ncuts] = *c;
+    h->ncuts++;
+}
+
+static void rv_hear_end(void *ud, const pt_rv_model *m, const pt_rv_prim *p, int accepted)
+{
+    rv_heard *h = ud;
+
+    h->accepted = accepted;
+    if (accepted) { h->ends[0] = m->v[p->v[0]]; h->ends[1] = m->v[p->v[1]]; }
+}
+
+/* The segment a-b through a clip stage (near: at z = n; else the square). */
+static int rv_stage_clip(pt_vec4 a, pt_vec4 b, int near, double n, rv_heard *h)
+{
+    pt_rv_model m;
+    pt_rv_prim p;
+    pt_rgb white = {1.0f, 1.0f, 1.0f};
+    pt_rv_clip_ls ls = {NULL, NULL, rv_hear_cut, rv_hear_end, NULL};
+    int rc;
+
+    memset(&m, 0, sizeof m);
+    memset(&p, 0, sizeof p);
+    memset(h, 0, sizeof *h);
+    ls.ud = h;
+    p.kind = PT_RV_LINE;
+    p.v[1] = p.c[1] = 1;
+    if (pt_rv_add_vertex(&m, a) || pt_rv_add_vertex(&m, b) || pt_rv_add_color(&m, white)
+        || pt_rv_add_color(&m, white) || pt_rv_add_prim(&m, &p)) rc = -1;
+    else rc = near ? pt_rv_nearclip(&m, n, &ls) : pt_rv_clip(&m, &ls);
+    pt_rv_model_free(&m);
+    return rc;
+}
+
+static void test_rv_copies(void)
+{
+    size_t i, n = 20000;
+    int bad[9] = {0}, k, j, cuts = 0, nearcuts = 0, trivial = 0;
+
+    for (i = 0; i < n; i++) {
+        double m[4], t[3], o[4], l, r, b, tt, mat[4][4], nm[4][4];
+        int persp = (int)(i % 2), off = 0;
+        pt_rv_camera cam;
+        pt_jmat jm, jn;
+        pt_vec4 sv;
+        pt_vec3 tv;
+
+        for (k = 0; k < 4; k++) m[k] = rv_rand();
+        for (k = 0; k < 3; k++) t[k] = rv_rand();
+        tv.x = t[0]; tv.y = t[1]; tv.z = t[2];
+        rvt_r7_view(m, t, o);                           /* r7 view */
+        bad[0] += !same_v4(pt_r7_model2view(v4(m[0], m[1], m[2], 1.0), tv), o, 3);
+        l = rv_rand(); r = rv_rand(); b = rv_rand(); tt = rv_rand();
+        memset(&cam, 0, sizeof cam);
+        cam.perspective = persp;
+        cam.l = l; cam.r = r; cam.b = b; cam.t = tt;
+        rvt_r7_camera(m, persp, l, r, b, tt, o);        /* r7 camera */
+        bad[1] += !same_v4(pt_r7_view2camera(v4(m[0], m[1], m[2], 1.0), &cam), o, 3);
+        rvt_r9_normalize(persp, l, r, b, tt, nm);       /* r9 normalize matrix */
+        jn = pt_r9_normalize_matrix(&cam);
+        for (j = 0; j < 4; j++) {
+            double col[4] = {nm[0][j], nm[1][j], nm[2][j], nm[3][j]};
+
+            bad[2] += !same_v4(jn.col[j], col, 4);
+        }
+        for (k = 0; k < 16; k++) mat[k / 4][k % 4] = rv_rand();   /* r9 world: M v */
+        for (j = 0; j < 4; j++) jm.col[j] = v4(mat[0][j], mat[1][j], mat[2][j], mat[3][j]);
+        rvt_times_vec(mat, m, o);
+        bad[3] += !same_v4(pt_r9_model2world(v4(m[0], m[1], m[2], m[3]), &jm), o, 4);
+        rvt_times_vec(nm, m, o);                        /* r9 camera: N v */
+        bad[3] += !same_v4(pt_r9_view2camera(v4(m[0], m[1], m[2], m[3]), &jn), o, 4);
+        rvt_r9_view(m, t, o);                           /* r9 view */
+        bad[4] += !same_v4(pt_r9_world2view(v4(m[0], m[1], m[2], m[3]), tv), o, 3);
+        rvt_project(m, persp, o);                       /* image */
+        sv = pt_rv_project(v4(m[0], m[1], m[2], 1.0), persp);
+        bad[5] += !same_v4(sv, o, 2);
+        {                                               /* the near clip */
+            double a[3] = {m[0], m[1], m[2]}, c[3] = {t[0], t[1], t[2]}, u = 0, p[3];
+            double zn = i % 3 ? -0.1 : rv_rand();
+            rv_heard h;
+            int v;
+
+            if (i % 5 == 0) a[2] = zn;                  /* on the plane */
+            v = rvt_nearclip(zn, a, c, &u, p, &off);
+            if (rv_stage_clip(v4(a[0], a[1], a[2], 1.0), v4(c[0], c[1], c[2], 1.0), 1, zn, &h))
+                bad[6]++;
+            else if (v >= 0) bad[6] += h.ncuts != 0 || h.accepted != v;
+            else {
+                nearcuts++;
+                bad[6] += h.ncuts != 1 || !h.accepted || h.cut[0].off != off
+                          || !same_d(h.cut[0].t, u) || !same_v4(h.cut[0].p[2], p, 3);
+            }
+        }
+        {                                               /* the clip to -1..1 */
+            double e[2][2], e0[2][2], te[8], pe[8][2];
+            int edge[8], offs[8], nc = 0, keep, q, ok;
+            rv_heard h;
+
+            for (k = 0; k < 4; k++) {
+                double x = rv_rand();
+
+                e[k / 2][k % 2] = fabs(x) > 2.0 ? x / 16.0 : x;     /* about -4 .. 4 */
+            }
+            memcpy(e0, e, sizeof e);
+            keep = rvt_clip(e, 8, &nc, edge, offs, te, pe);
+            if (rv_stage_clip(v4(e0[0][0], e0[0][1], 0, 1), v4(e0[1][0], e0[1][1], 0, 1), 0,
+                              0.0, &h) != 0) { bad[7]++; continue; }
+            ok = h.ncuts == nc && h.accepted == keep && nc <= 8;
+            for (q = 0; ok && q < nc; q++) {
+                double pq[2];
+
+                pq[0] = pe[q][0]; pq[1] = pe[q][1];
+                ok = (int)h.cut[q].edge == edge[q] && h.cut[q].off == offs[q]
+                     && same_d(h.cut[q].t, te[q]) && same_v4(h.cut[q].p[2], pq, 2);
+            }
+            if (ok && keep) ok = same_v4(h.ends[0], e[0], 2) && same_v4(h.ends[1], e[1], 2);
+            bad[7] += !ok;
+            cuts += nc;
+            trivial += nc == 0;
+        }
+    }
+    PT_CHECK("acc-12.1 renderer 7's view copy is pt_r7_model2view bit for bit", bad[0] == 0);
+    PT_CHECK("acc-12.2 renderer 7's camera copy is pt_r7_view2camera bit for bit", bad[1] == 0);
+    PT_CHECK("acc-12.3 renderer 9's normalize matrix is pt_r9_normalize_matrix's", bad[2] == 0);
+    PT_CHECK("acc-12.4 Java's A.times(v) copy is the world and camera stages'", bad[3] == 0);
+    PT_CHECK("acc-12.5 renderer 9's view copy is pt_r9_world2view bit for bit", bad[4] == 0);
+    PT_CHECK("acc-12.6 the image copy is pt_rv_project bit for bit", bad[5] == 0);
+    PT_CHECK("acc-12.7 the near clip copy: pt_rv_nearclip's verdict, end, t, point",
+             bad[6] == 0 && nearcuts > 1000);
+    PT_CHECK("acc-12.8 the clip copy: pt_rv_clip's cuts (edge, end, t, point), verdict, ends",
+             bad[7] == 0 && cuts > 5000 && trivial > 1000);
+}
+
+/* ===== renderers 7 and 9: the double run is the course driver's ===== */
+
+#define RV_MAXM 64
+
+/* What the course driver reports: each visible position's model after each
+** stage (vertices and primitives), and the pixels drawn. */
+typedef struct rv_seen {
+    pt_vec4 *v[RV_MAXM][PT_NCST];
+    size_t nv[RV_MAXM][PT_NCST];
+    pt_rv_prim *p[RV_MAXM][PT_NCST];
+    size_t np[RV_MAXM][PT_NCST];
+    int64_t *px;
+    size_t npx, cap;
+    const pt_scene *s;
+} rv_seen;
+
+static void rv_seen_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
+                          const pt_rv_model *m)
+{
+    rv_seen *sn = ud;
+    size_t k = pos->index;
+
+    if (k >= RV_MAXM) return;
+    free(sn->v[k][st]);
+    free(sn->p[k][st]);
+    sn->v[k][st] = malloc((m->nv ? m->nv : 1) * sizeof *m->v);
+    sn->p[k][st] = malloc((m->np ? m->np : 1) * sizeof *m->p);
+    if (!sn->v[k][st] || !sn->p[k][st]) return;
+    if (m->nv) memcpy(sn->v[k][st], m->v, m->nv * sizeof *m->v);
+    if (m->np) memcpy(sn->p[k][st], m->p, m->np * sizeof *m->p);
+    sn->nv[k][st] = m->nv;
+    sn->np[k][st] = m->np;
+}
+
+static void rv_seen_pixel(void *ud, const pt_rv_pixel *px)
+{
+    rv_seen *sn = ud;
+
+    if (px->kind != PT_RV_PX_STEP && px->kind != PT_RV_PX_END) return;
+    if (!pt_inside(px->x_vp, px->y_vp, sn->s->vp_w, sn->s->vp_h)) return;
+    if (sn->npx == sn->cap) {
+        size_t cap = sn->cap ? 2 * sn->cap : 256;
+        int64_t *q = realloc(sn->px, cap * sizeof *q);
+
+        if (!q) return;
+        sn->px = q;
+        sn->cap = cap;
+    }
+    sn->px[sn->npx++] = (sn->s->vp_y + (int64_t)px->y_vp) * sn->s->fb_w + sn->s->vp_x + px->x_vp;
+}
+
+static int by_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+
+    return x < y ? -1 : x > y;
+}
+
+/* n values a (pt_dd, lo = 0) against the stage's v. */
+static int rv_same(const pt_dd *a, pt_vec4 v, int n)
+{
+    double b[4];
+    int k;
+
+    for (k = 0; k < n; k++) b[k] = a[k].hi;
+    return same_v4(v, b, n);
+}
+
+typedef struct rv_tally {
+    size_t scenes, vertices, near, cuts, ends, pixels, drawn;
+    size_t bad_v, bad_near, bad_cuts, bad_ends, bad_px;
+} rv_tally;
+
+/* Model k of the double run r against what the driver reported (sn). */
+static void rv_check_model(const pt_acc_run *r, const rv_seen *sn, size_t k, rv_tally *t)
+{
+    const pt_scene *s = r->s;
+    const pt_model *m = &s->models[k];
+    size_t v, q, in = m->nv, ic, li = 0;
+    int c, e, st;
+
+    if (!sn->v[k][PT_CST_IMAGE] || !sn->v[k][PT_CST_CLIP]) { t->bad_v++; return; }
+    for (v = 0; v < m->nv; v++) {
+        const pt_acc_rvjourney *j = &r->rj[k][v];
+
+        if (!r->used[k][v]) continue;
+        t->vertices++;
+        for (st = PT_CST_MODEL; st <= PT_CST_IMAGE; st++) {
+            const pt_dd *a = st == PT_CST_MODEL ? j->m : st == PT_CST_WORLD ? j->w
+                             : st == PT_CST_VIEW ? j->v : st == PT_CST_CAMERA ? j->c : j->ip;
+            int n = st == PT_CST_WORLD ? 4 : st == PT_CST_IMAGE ? 2 : 3;
+
+            if (st == PT_CST_NEARCLIP || !sn->v[k][st]) continue;
+            if (!rv_same(a, sn->v[k][st][v], n)) t->bad_v++;
+        }
+    }
+    ic = sn->nv[k][PT_CST_IMAGE];                   /* the clip appends from here */
+    for (q = 0; q < m->nseg; q++) {
+        const pt_acc_rvseg *g = &r->rseg[k][q];
+
+        if (g->near < 0) {                          /* the near clip's new vertex */
+            t->near++;
+            if (in >= sn->nv[k][PT_CST_IMAGE] || !sn->v[k][PT_CST_NEARCLIP]
+                || !rv_same(g->nc.p, sn->v[k][PT_CST_NEARCLIP][in], 3)
+                || !rv_same(g->nip, sn->v[k][PT_CST_IMAGE][in], 2)) t->bad_near++;
+            in++;
+        }
+        for (c = 0; g->near != 0 && c < g->ncuts; c++, ic++) {  /* the clip's */
+            t->cuts++;
+            if (ic >= sn->nv[k][PT_CST_CLIP] || !rv_same(g->cut[c].p, sn->v[k][PT_CST_CLIP][ic], 2))
+                t->bad_cuts++;
+        }
+        if (!g->keep) continue;
+        while (li < sn->np[k][PT_CST_CLIP] && sn->p[k][PT_CST_CLIP][li].kind != PT_RV_LINE) li++;
+        for (e = 0; e < 2; e++) {                   /* the ends drawn */
+            t->ends++;
+            if (li >= sn->np[k][PT_CST_CLIP]
+                || !rv_same(g->end[e].ip, sn->v[k][PT_CST_CLIP][sn->p[k][PT_CST_CLIP][li].v[e]], 2))
+                t->bad_ends++;
+        }
+        li++;
+    }
+    for (; li < sn->np[k][PT_CST_CLIP]; li++)       /* a line the run did not draw */
+        if (sn->p[k][PT_CST_CLIP][li].kind == PT_RV_LINE) t->bad_ends++;
+}
+
+static void rv_check_scene(const char *path, rv_tally *t)
+{
+    pt_scene s;
+    pt_acc_run r;
+    pt_fb fb;
+    rv_seen *sn;
+    pt_course_ls ls;
+    pt_rv_raster_ls rls;
+    size_t k, i, n;
+    int points = 0, st;
+
+    if (!load(&s, path)) { t->bad_v++; return; }
+    if ((s.renderer != 7 && s.renderer != 9) || s.nmodels > RV_MAXM) { pt_scene_free(&s); return; }
+    sn = calloc(1, sizeof *sn);
+    memset(&ls, 0, sizeof ls);
+    memset(&rls, 0, sizeof rls);
+    if (!sn || pt_fb_init(&fb, s.fb_w, s.fb_h, s.background) != 0) {
+        t->bad_v++; free(sn); pt_scene_free(&s); return;
+    }
+    sn->s = &s;
+    ls.stage = rv_seen_stage;
+    ls.ud = sn;
+    rls.pixel = rv_seen_pixel;
+    rls.ud = sn;
+    ls.raster_ls = &rls;
+    if (pt_course_render(&s, &fb, &ls) != 0 || pt_acc_run_make(&r, &s, PT_ARITH_DOUBLE, 0) != 0) {
+        t->bad_v++;
+    } else {
+        t->scenes++;
+        for (k = 0; k < s.nmodels; k++) {
+            points |= s.models[k].npts > 0;
+            if (!s.models[k].hidden_position && !s.models[k].hidden_model)
+                rv_check_model(&r, sn, k, t);
+        }
+        if (!points && !s.antialias) {              /* the pixels: the same places */
+            t->drawn++;
+            if (sn->npx) qsort(sn->px, sn->npx, sizeof *sn->px, by_i64);
+            for (i = n = 0; i < sn->npx; i++)
+                if (i == 0 || sn->px[i] != sn->px[i - 1]) sn->px[n++] = sn->px[i];
+            t->pixels += n;
+            if (n != r.nimg) t->bad_px++;
+            for (i = 0; i < n && i < r.nimg; i++)
+                if (sn->px[i] != r.img[i].idx) { t->bad_px++; break; }
+        }
+        pt_acc_run_free(&r);
+    }
+    for (k = 0; k < RV_MAXM; k++)
+        for (st = 0; st < PT_NCST; st++) { free(sn->v[k][st]); free(sn->p[k][st]); }
+    free(sn->px);
+    free(sn);
+    pt_fb_free(&fb);
+    pt_scene_free(&s);
+}
+
+static void test_rv_course(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char path[4096];
+    rv_tally t;
+    char descr[240];
+
+    memset(&t, 0, sizeof t);
+    while (d && (e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+
+        if (len > 6 && strcmp(e->d_name + len - 6, ".scene") == 0) {
+            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+            rv_check_scene(path, &t);
+        }
+    }
+    if (d) closedir(d);
+    snprintf(descr, sizeof descr, "acc-13.1 renderers 7 and 9: the double run's vertices are "
+             "the course driver's, model to image, bit for bit (%zu vertices, %zu scenes)",
+             t.vertices, t.scenes);
+    PT_CHECK(descr, t.bad_v == 0 && t.scenes >= 15 && t.vertices > 100);
+    snprintf(descr, sizeof descr, "acc-13.2 ... its near clip makes the driver's %zu points "
+             "(camera and image plane)", t.near);
+    PT_CHECK(descr, t.bad_near == 0 && t.near >= 4);
+    snprintf(descr, sizeof descr, "acc-13.3 ... its clip the driver's %zu points", t.cuts);
+    PT_CHECK(descr, t.bad_cuts == 0 && t.cuts >= 4);
+    snprintf(descr, sizeof descr, "acc-13.4 ... and draws the driver's segments between "
+             "the same %zu ends", t.ends);
+    PT_CHECK(descr, t.bad_ends == 0 && t.ends > 50);
+    snprintf(descr, sizeof descr, "acc-13.5 ... its image lights the driver's %zu pixels "
+             "(%zu scenes without points or AA)", t.pixels, t.drawn);
+    PT_CHECK(descr, t.bad_px == 0 && t.drawn >= 8 && t.pixels > 500);
+}
+
+/* ===== renderers 7 and 9: the timed work ===== */
+
+static int same_rvfront(const pt_acc_rvjourney *a, const pt_acc_rvjourney *b, int r9)
+{
+    return same_dd(a->m, b->m, 3) && (!r9 || same_dd(a->w, b->w, 4)) && same_dd(a->v, b->v, 3)
+           && same_dd(a->c, b->c, 3) && same_dd(a->ip, b->ip, 2);
+}
+
+static int same_rvcut(const pt_acc_rvcut *a, const pt_acc_rvcut *b, int n)
+{
+    return a->edge == b->edge && a->off == b->off && same_dd(&a->t, &b->t, 1)
+           && same_dd(a->p, b->p, n);
+}
+
+static int same_rvclip(const pt_acc_rvseg *a, const pt_acc_rvseg *b, int fn)
+{
+    int k, ok = 1;
+
+    if (fn == PT_ACC_FN_RVNEAR)
+        return a->near == b->near && (a->near >= 0 || same_rvcut(&a->nc, &b->nc, 3));
+    ok = a->keep == b->keep && a->ncuts == b->ncuts;
+    for (k = 0; ok && k < a->ncuts && k < PT_ACC_RV_MAXCUTS; k++)
+        ok = same_rvcut(&a->cut[k], &b->cut[k], 2);
+    return ok;
+}
+
+/* Row one of run r on w; from garbage when poison is set, and then every row
+** of its kind in order: the values are the run's, input for input. */
+static int rv_work_agrees(const pt_acc_run *r, pt_acc_work *w, int one, int poison, size_t *n)
+{
+    const pt_scene *s = r->s;
+    const pt_acc_rows *rows = pt_acc_scene_rows(s);
+    pt_acc_fn fn = rows->row[one].fn;
+    size_t k, v, q, i = 0;
+    int row, e, ok = 1;
+
+    if (poison) pt_acc_work_poison(w);
+    for (row = 0; row + 1 < rows->nrows; row++)
+        if (row == one || (poison && rows->row[row].fn == fn)) pt_acc_stage_pass(w, row);
+    for (k = 0; k < s->nmodels; k++) {
+        if (s->models[k].hidden_position || s->models[k].hidden_model) continue;
+        if (fn == PT_ACC_FN_RV) {
+            for (v = 0; v < s->models[k].nv; v++)
+                if (r->used[k][v])
+                    ok &= same_rvfront(pt_acc_work_rvjourney(w, i++), &r->rj[k][v], s->renderer == 9);
+            continue;
+        }
+        for (q = 0; q < s->models[k].nseg; q++) {
+            const pt_acc_rvseg *g = &r->rseg[k][q];
+
+            if (fn == PT_ACC_FN_RVEND) {
+                for (e = 0; g->keep && e < 2; e++) {
+                    const pt_acc_journey *a = pt_acc_work_journey(w, i++);
+
+                    ok &= same_dd(a->ip, g->end[e].ip, 2) && same_dd(a->pp, g->end[e].pp, 2)
+                          && same_px(a->vp, g->end[e].vp) && same_px(a->fb, g->end[e].fb)
+                          && a->idx == g->end[e].idx;
+                }
+                continue;
+            }
+            if (fn == PT_ACC_FN_RVCLIP && g->near == 0) continue;
+            ok &= same_rvclip(pt_acc_work_rvseg(w, i++), g, fn);
+        }
+    }
+    *n += i;
+    return ok && i == pt_acc_work_size(w);
+}
+
+static void test_rv_work(void)
+{
+    static const char *const scenes[] = {
+        "tests/course79/r9-mat-14-camera-translate.scene", "tests/course79/r7-near-01.scene",
+        "tests/course79/r7-clip-08-corner-ur.scene", "tests/course79/r9-clip-12-through-x.scene"
+    };
+    static const struct { pt_arith a; unsigned choices; } runs[] = {
+        { PT_ARITH_FLOAT, 0 }, { PT_ARITH_DOUBLE, 0 }, { PT_ARITH_DD, 0 },
+        { PT_ARITH_DOUBLE, PT_ACC_TWO }
+    };
+    size_t si, ri, n = 0, nagain = 0, bad = 0, badagain = 0, nruns = 0;
+    char descr[200];
+    pt_scene s;
+
+    for (si = 0; si < sizeof scenes / sizeof scenes[0]; si++) {
+        if (!load(&s, scenes[si])) { bad++; continue; }
+        for (ri = 0; ri < sizeof runs / sizeof runs[0]; ri++) {
+            const pt_acc_rows *rows = pt_acc_scene_rows(&s);
+            pt_acc_run r;
+            int row;
+
+            if (pt_acc_run_make(&r, &s, runs[ri].a, runs[ri].choices) != 0) { bad++; continue; }
+            for (row = 0; row + 1 < rows->nrows; row++) {
+                pt_acc_work *w;
+                int first = 0;
+
+                while (rows->row[first].fn != rows->row[row].fn) first++;
+                if (first == row) {                         /* a kind's rows, from garbage */
+                    w = pt_acc_work_make(&r, row);
+                    if (!w || !rv_work_agrees(&r, w, row, 1, &n)) bad++;
+                    pt_acc_work_free(w);
+                }
+                w = pt_acc_work_make(&r, row);              /* each alone, as timed */
+                if (!w || !rv_work_agrees(&r, w, row, 0, &nagain)) badagain++;
+                pt_acc_work_free(w);
+            }
+            nruns++;
+            pt_acc_run_free(&r);
+        }
+        pt_scene_free(&s);
+    }
+    snprintf(descr, sizeof descr, "acc-14.1 renderers 7 and 9: the stages and clips the "
+             "timing runs, from garbage, rebuild the error runs' values bit for bit (%zu runs, "
+             "%zu inputs)", nruns, n);
+    PT_CHECK(descr, bad == 0 && nruns == 16 && n > 200);
+    snprintf(descr, sizeof descr, "acc-14.2 ... and a timed pass of one stage rewrites the "
+             "same values (%zu inputs)", nagain);
+    PT_CHECK(descr, badagain == 0 && nagain > n);
+}
+
+/* The tables of renderers 7 and 9: renderer 9's stages in order, renderer
+** 7's without world, each with a viewport row, pixel the last real one, 2.001
+** in the pixel row and the rasterizer last. */
+static void test_rv_rows(void)
+{
+    static const char *const r9[] = {"model", "world", "view", "camera", "nearclip", "image",
+                                     "clip", "pixel", "viewport", "framebuffer", "index", "raster"};
+    const pt_acc_rows *t9 = &pt_acc_rows_r9, *t7 = &pt_acc_rows_r7;
+    int i, ok9 = t9->nrows == 12 && t9->rv == 9, ok7 = t7->nrows == 11 && t7->rv == 7, sane = 1;
+
+    for (i = 0; ok9 && i < 12; i++) ok9 = !strcmp(t9->row[i].name, r9[i]);
+    for (i = 0; ok7 && i < 11; i++) ok7 = !strcmp(t7->row[i].name, r9[i + (i > 0)]);
+    PT_CHECK("acc-11.1 renderer 9's rows: its stages and both clips in order, the rasterizer last", ok9);
+    PT_CHECK("acc-11.2 renderer 7's: the same without world", ok7);
+    for (i = 0; i < 2; i++) {
+        const pt_acc_rows *t = i ? t7 : t9;
+
+        sane &= t->row[t->nrows - 1].stage == -1 && t->row[t->nrows - 1].fn == PT_ACC_FN_RASTER
+                && !strcmp(t->row[pt_acc_last_real(t)].name, "pixel")
+                && pt_acc_row_varied(t, PT_ACC_TWO) == pt_acc_row_of(t, PT_STAGE_PIXEL)
+                && pt_acc_row_of(t, PT_STAGE_VIEWPORT) == pt_acc_row_of(t, PT_STAGE_PIXEL) + 1
+                && pt_acc_row_of(t, PT_STAGE_INDEX) == t->nrows - 2 && t->nrows <= PT_ACC_MAXROWS;
+    }
+    PT_CHECK("acc-11.3 ... each with pixel (2.001) the last real row, viewport .. index after it", sane);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -1038,6 +1612,10 @@ int main(int argc, char **argv)
     dirs[1] = "tests/extreme";
     dirs[2] = "docs/examples";
     test_rows();
+    test_rv_rows();
+    test_rv_copies();
+    test_rv_work();
+    test_rv_course("tests/course79");
     test_dd();
     test_dd_matrix();
     test_vp_of();

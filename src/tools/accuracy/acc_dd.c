@@ -463,10 +463,117 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     return 1;
 }
 
+/* ===== renderers 7 and 9 =====
+**
+** The stages' formulas of acc_rv_tmpl.h in double-double, from the scene's
+** doubles taken as exact.  No tie rule here: the near plane and the square's
+** edges are compared with exactly (a point a cut makes is on its edge by
+** construction, the stage's test then counts it as inside). */
+
+static pt_dd dd_num(double x) { return pt_acc_dd(x); }
+static int dd_gt(pt_dd a, pt_dd b) { return pt_dd_lt(b, a); }
+static int dd_le(pt_dd a, pt_dd b)
+{
+    return pt_dd_lt(a, b) || (a.hi == b.hi && a.lo == b.lo);  /* NaN: false */
+}
+
+#define RV_T pt_dd
+#define RV_NUM(x) dd_num(x)
+#define RV_ADD(a, b) pt_dd_add(a, b)
+#define RV_SUB(a, b) pt_dd_sub(a, b)
+#define RV_MUL(a, b) pt_dd_mul(a, b)
+#define RV_DIV(a, b) pt_dd_div(a, b)
+#define RV_NEG(a) pt_dd_neg(a)
+#define RV_GT(a, b) dd_gt(a, b)
+#define RV_LE(a, b) dd_le(a, b)
+#define RV_FN(name) rvd_##name
+#include "tools/accuracy/acc_rv_tmpl.h"
+
+static int rvcam(pt_acc_rvcam *c)
+{
+    if (pt_acc_rvcam_exact(c) != 0) return -1;      /* the scene's doubles, as exact */
+    rvd_r9_normalize(c->s->perspective, c->l, c->r, c->b, c->t, c->norm);
+    return 0;
+}
+
+static void rv_model(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    (void)c; (void)k;
+    j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
+}
+
+static void rv_world(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    pt_dd in[4];
+
+    (void)v;
+    if (c->s->renderer != 9) return;                /* renderer 7 has no world */
+    in[0] = j->m[0]; in[1] = j->m[1]; in[2] = j->m[2]; in[3] = pt_acc_dd(1.0);
+    rvd_times_vec(c->world[k], in, j->w);           /* v_w = M v_m */
+}
+
+static void rv_view(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    pt_dd t[3];
+
+    (void)v;
+    if (c->s->renderer == 9) { rvd_r9_view(j->w, c->view, j->v); return; }  /* (-1*e) + w */
+    t[0] = pt_acc_dd(c->s->models[k].translate.x);
+    t[1] = pt_acc_dd(c->s->models[k].translate.y);
+    t[2] = pt_acc_dd(c->s->models[k].translate.z);
+    rvd_r7_view(j->m, t, j->v);                     /* v = t + m */
+}
+
+static void rv_camera(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    pt_dd in[4], o[4], n[4][4];
+
+    (void)k; (void)v;
+    if (c->s->renderer == 9) {
+        memcpy(n, c->norm, sizeof n);
+        in[0] = j->v[0]; in[1] = j->v[1]; in[2] = j->v[2]; in[3] = pt_acc_dd(1.0);
+        rvd_times_vec(n, in, o);                    /* v_c = N v_v */
+        j->c[0] = o[0]; j->c[1] = o[1]; j->c[2] = o[2];
+    } else
+        rvd_r7_camera(j->v, c->s->perspective, c->l, c->r, c->b, c->t, j->c);
+}
+
+static void rv_image(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    (void)k; (void)v;
+    rvd_project(j->c, c->s->perspective, j->ip);    /* x_p = x_c / -z_c */
+}
+
+static int rvnear(const pt_acc_rvcam *c, const pt_dd v0[3], const pt_dd v1[3], pt_acc_rvcut *cut)
+{
+    int v = rvd_nearclip(c->n, v0, v1, &cut->t, cut->p, &cut->off);
+
+    if (v < 0) cut->edge = 0;                       /* PT_RV_NEAR */
+    return v;
+}
+
+static int rvclip(pt_dd e[2][2], pt_acc_rvseg *g)
+{
+    pt_dd t[PT_ACC_RV_MAXCUTS], p[PT_ACC_RV_MAXCUTS][2];
+    int edge[PT_ACC_RV_MAXCUTS], off[PT_ACC_RV_MAXCUTS], keep, k;
+
+    keep = rvd_clip(e, PT_ACC_RV_MAXCUTS, &g->ncuts, edge, off, t, p);
+    for (k = 0; k < g->ncuts && k < PT_ACC_RV_MAXCUTS; k++) {
+        g->cut[k].edge = edge[k];
+        g->cut[k].off = off[k];
+        g->cut[k].t = t[k];
+        g->cut[k].p[0] = p[k][0];
+        g->cut[k].p[1] = p[k][1];
+        g->made[off[k]] = 2;
+    }
+    return keep;
+}
+
 const pt_acc_ops pt_acc_dd_ops = {
     { model, camera, image, pixel, viewport, pt_acc_fb_stage, pt_acc_index_stage },
     raster, mcam,
     { m_model, m_world, m_view, m_clip, m_cvv },
     { t_ndc, t_screen, t_viewport, pt_acc_fb_tail, pt_acc_index_tail },
-    mseg
+    mseg,
+    rvcam, { rv_model, rv_world, rv_view, rv_camera, rv_image }, rvnear, rvclip
 };

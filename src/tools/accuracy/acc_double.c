@@ -3,6 +3,7 @@
 ** See LICENSE for copyright and license.
 */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "tools/accuracy/acc_double.h"
 
@@ -287,10 +288,210 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     return 1;
 }
 
+/* ===== renderers 7 and 9 =====
+**
+** The stages of stages/r7_*, r9_* and rv_* themselves.  The two clips work on
+** a model: each segment is handed to them as a model of its two ends (and
+** two white colours), and their cuts are heard as the course's log hears
+** them.  Out of memory there (two vertices), the segment counts as kept. */
+
+static pt_jmat jmat_of(const pt_dd a[4][4])
+{
+    pt_jmat m;
+    int j;
+
+    for (j = 0; j < 4; j++) {
+        m.col[j].x = a[0][j].hi; m.col[j].y = a[1][j].hi;
+        m.col[j].z = a[2][j].hi; m.col[j].w = a[3][j].hi;
+    }
+    return m;
+}
+
+static void rv_camera_of(const pt_acc_rvcam *c, pt_rv_camera *cam)
+{
+    cam->perspective = c->s->perspective;
+    cam->l = c->l.hi; cam->r = c->r.hi; cam->b = c->b.hi; cam->t = c->t.hi;
+    cam->n = c->n.hi;
+    cam->view.x = c->view[0].hi; cam->view.y = c->view[1].hi; cam->view.z = c->view[2].hi;
+}
+
+static int rvcam(pt_acc_rvcam *c)
+{
+    pt_rv_camera cam;
+    pt_jmat n;
+    int i;
+
+    if (pt_acc_rvcam_exact(c) != 0) return -1;      /* the stage's own matrices */
+    rv_camera_of(c, &cam);
+    n = pt_r9_normalize_matrix(&cam);
+    for (i = 0; i < 4; i++) {
+        c->norm[0][i] = pt_acc_dd(n.col[i].x); c->norm[1][i] = pt_acc_dd(n.col[i].y);
+        c->norm[2][i] = pt_acc_dd(n.col[i].z); c->norm[3][i] = pt_acc_dd(n.col[i].w);
+    }
+    return 0;
+}
+
+static void rv_model(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    (void)c; (void)k;
+    j->m[0] = pt_acc_dd(v.x); j->m[1] = pt_acc_dd(v.y); j->m[2] = pt_acc_dd(v.z);
+}
+
+static void rv_world(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    pt_vec4 in, o;
+    pt_jmat m;
+
+    (void)v;
+    if (c->s->renderer != 9) return;                /* renderer 7 has no world */
+    m = jmat_of((const pt_dd (*)[4])c->world[k]);
+    in.x = j->m[0].hi; in.y = j->m[1].hi; in.z = j->m[2].hi; in.w = 1.0;
+    o = pt_r9_model2world(in, &m);
+    widen4(o, j->w);
+}
+
+static void rv_view(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    pt_vec4 in, o;
+    pt_vec3 e;
+
+    (void)v;
+    if (c->s->renderer == 9) {
+        in = narrow4(j->w);
+        e.x = c->view[0].hi; e.y = c->view[1].hi; e.z = c->view[2].hi;
+        o = pt_r9_world2view(in, e);
+    } else {
+        in.x = j->m[0].hi; in.y = j->m[1].hi; in.z = j->m[2].hi; in.w = 1.0;
+        o = pt_r7_model2view(in, c->s->models[k].translate);
+    }
+    j->v[0] = pt_acc_dd(o.x); j->v[1] = pt_acc_dd(o.y); j->v[2] = pt_acc_dd(o.z);
+}
+
+static void rv_camera(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    pt_vec4 in, o;
+
+    (void)k; (void)v;
+    in.x = j->v[0].hi; in.y = j->v[1].hi; in.z = j->v[2].hi; in.w = 1.0;
+    if (c->s->renderer == 9) {
+        pt_jmat n = jmat_of(c->norm);
+
+        o = pt_r9_view2camera(in, &n);
+    } else {
+        pt_rv_camera cam;
+
+        rv_camera_of(c, &cam);
+        o = pt_r7_view2camera(in, &cam);
+    }
+    j->c[0] = pt_acc_dd(o.x); j->c[1] = pt_acc_dd(o.y); j->c[2] = pt_acc_dd(o.z);
+}
+
+static void rv_image(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    pt_vec4 in, o;
+
+    (void)k; (void)v;
+    in.x = j->c[0].hi; in.y = j->c[1].hi; in.z = j->c[2].hi; in.w = 1.0;
+    o = pt_rv_project(in, c->s->perspective);
+    j->ip[0] = pt_acc_dd(o.x); j->ip[1] = pt_acc_dd(o.y);
+}
+
+/* A model of the segment a-b alone, for the clip stages: 0, or -1. */
+static int seg_model(pt_rv_model *m, pt_vec4 a, pt_vec4 b)
+{
+    pt_rgb white = {1.0f, 1.0f, 1.0f};
+    pt_rv_prim p;
+
+    memset(m, 0, sizeof *m);
+    memset(&p, 0, sizeof p);
+    p.kind = PT_RV_LINE;
+    p.v[1] = p.c[1] = 1;
+    if (pt_rv_add_vertex(m, a) || pt_rv_add_vertex(m, b) || pt_rv_add_color(m, white)
+        || pt_rv_add_color(m, white) || pt_rv_add_prim(m, &p)) {
+        pt_rv_model_free(m);
+        return -1;
+    }
+    return 0;
+}
+
+/* What the clip stages' listener hears of one segment. */
+typedef struct heard {
+    pt_acc_rvcut cut[PT_ACC_RV_MAXCUTS];
+    int ncuts;
+    int verdict;                 /* 1 kept (as it is, or cut), 0 dropped */
+    pt_vec4 ends[2];             /* kept: its ends */
+} heard;
+
+static void hear_cut(void *ud, const pt_rv_cut *c)
+{
+    heard *h = ud;
+
+    if (h->ncuts < PT_ACC_RV_MAXCUTS) {
+        pt_acc_rvcut *k = &h->cut[h->ncuts];
+
+        k->edge = (int)c->edge;
+        k->off = c->off;
+        k->t = pt_acc_dd(c->t);
+        k->p[0] = pt_acc_dd(c->p[2].x); k->p[1] = pt_acc_dd(c->p[2].y);
+        k->p[2] = pt_acc_dd(c->p[2].z);
+    }
+    h->ncuts++;
+}
+
+static void hear_end(void *ud, const pt_rv_model *m, const pt_rv_prim *p, int accepted)
+{
+    heard *h = ud;
+
+    h->verdict = accepted;
+    if (accepted) { h->ends[0] = m->v[p->v[0]]; h->ends[1] = m->v[p->v[1]]; }
+}
+
+static int rvnear(const pt_acc_rvcam *c, const pt_dd v0[3], const pt_dd v1[3], pt_acc_rvcut *cut)
+{
+    pt_vec4 a = {v0[0].hi, v0[1].hi, v0[2].hi, 1.0}, b = {v1[0].hi, v1[1].hi, v1[2].hi, 1.0};
+    pt_rv_clip_ls ls = {NULL, NULL, hear_cut, hear_end, NULL};
+    pt_rv_model m;
+    heard h;
+
+    memset(&h, 0, sizeof h);
+    ls.ud = &h;
+    if (seg_model(&m, a, b) != 0) return 1;
+    if (pt_rv_nearclip(&m, c->n.hi, &ls) != 0) h.verdict = 1, h.ncuts = 0;
+    pt_rv_model_free(&m);
+    if (h.ncuts == 0) return h.verdict;
+    *cut = h.cut[0];
+    return -1;
+}
+
+static int rvclip(pt_dd e[2][2], pt_acc_rvseg *g)
+{
+    pt_vec4 a = {e[0][0].hi, e[0][1].hi, 0.0, 1.0}, b = {e[1][0].hi, e[1][1].hi, 0.0, 1.0};
+    pt_rv_clip_ls ls = {NULL, NULL, hear_cut, hear_end, NULL};
+    pt_rv_model m;
+    heard h;
+    int k;
+
+    memset(&h, 0, sizeof h);
+    ls.ud = &h;
+    if (seg_model(&m, a, b) != 0) return 1;
+    if (pt_rv_clip(&m, &ls) != 0) h.verdict = 0;    /* past 64 cuts: dropped */
+    pt_rv_model_free(&m);
+    g->ncuts = h.ncuts;
+    for (k = 0; k < h.ncuts && k < PT_ACC_RV_MAXCUTS; k++) {
+        g->cut[k] = h.cut[k];
+        g->made[h.cut[k].off] = 2;
+    }
+    if (h.verdict) {
+        for (k = 0; k < 2; k++) { e[k][0] = pt_acc_dd(h.ends[k].x); e[k][1] = pt_acc_dd(h.ends[k].y); }
+    }
+    return h.verdict;
+}
+
 const pt_acc_ops pt_acc_double_ops = {
     { model, camera, image, pixel, viewport, framebuffer, index_stage },
     raster, mcam,
     { m_model, m_world, m_view, m_clip, m_cvv },
     { t_ndc, t_screen, t_viewport, t_framebuffer, t_index },
-    mseg
+    mseg,
+    rvcam, { rv_model, rv_world, rv_view, rv_camera, rv_image }, rvnear, rvclip
 };

@@ -481,10 +481,151 @@ static int mseg(const pt_acc_mcam *c, const pt_acc_mjourney *a,
     return 1;
 }
 
+/* ===== renderers 7 and 9 ===== */
+
+#define RV_T float
+#define RV_NUM(x) ((float)(x))
+#define RV_ADD(a, b) ((a) + (b))
+#define RV_SUB(a, b) ((a) - (b))
+#define RV_MUL(a, b) ((a) * (b))
+#define RV_DIV(a, b) ((a) / (b))
+#define RV_NEG(a) (-(a))
+#define RV_GT(a, b) ((a) > (b))
+#define RV_LE(a, b) ((a) <= (b))
+#define RV_FN(name) rvf_##name
+#include "tools/accuracy/acc_rv_tmpl.h"
+
+static pt_dd round_f(pt_dd x)                       /* a double rounded to float */
+{
+    return pt_acc_dd((double)to_float(x.hi));
+}
+
+static int rvcam(pt_acc_rvcam *c)
+{
+    float n[4][4];
+    size_t k;
+    int i;
+
+    if (pt_acc_rvcam_exact(c) != 0) return -1;      /* then each number rounded */
+    for (k = 0; k < c->s->nmodels; k++)
+        for (i = 0; i < 16; i++) c->world[k][i / 4][i % 4] = round_f(c->world[k][i / 4][i % 4]);
+    c->l = round_f(c->l); c->r = round_f(c->r); c->b = round_f(c->b); c->t = round_f(c->t);
+    c->n = round_f(c->n);
+    for (i = 0; i < 3; i++) c->view[i] = round_f(c->view[i]);
+    rvf_r9_normalize(c->s->perspective, (float)c->l.hi, (float)c->r.hi, (float)c->b.hi,
+                     (float)c->t.hi, n);
+    for (i = 0; i < 16; i++) c->norm[i / 4][i % 4] = pt_acc_dd((double)n[i / 4][i % 4]);
+    return 0;
+}
+
+static void rv_model(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    (void)c; (void)k;
+    j->m[0] = pt_acc_dd((double)to_float(v.x));     /* the scene's x_m rounded to float */
+    j->m[1] = pt_acc_dd((double)to_float(v.y));
+    j->m[2] = pt_acc_dd((double)to_float(v.z));
+}
+
+static void rv_world(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    float a[4][4], in[4] = {0, 0, 0, 1.0f}, o[4];
+    int i;
+
+    (void)v;
+    if (c->s->renderer != 9) return;                /* renderer 7 has no world */
+    for (i = 0; i < 16; i++) a[i / 4][i % 4] = (float)c->world[k][i / 4][i % 4].hi;
+    narrow_f(j->m, in, 3);
+    rvf_times_vec(a, in, o);                        /* v_w = M v_m */
+    widen_f(o, j->w, 4);
+}
+
+static void rv_view(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    float in[3], e[3], o[3];
+
+    (void)v;
+    if (c->s->renderer == 9) {
+        narrow_f(j->w, in, 3);
+        narrow_f(c->view, e, 3);
+        rvf_r9_view(in, e, o);                      /* v = (-1*e) + w */
+    } else {
+        narrow_f(j->m, in, 3);
+        e[0] = to_float(c->s->models[k].translate.x);
+        e[1] = to_float(c->s->models[k].translate.y);
+        e[2] = to_float(c->s->models[k].translate.z);
+        rvf_r7_view(in, e, o);                      /* v = t + m */
+    }
+    widen_f(o, j->v, 3);
+}
+
+static void rv_camera(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    float in[4] = {0, 0, 0, 1.0f}, o[4];
+
+    (void)k; (void)v;
+    narrow_f(j->v, in, 3);
+    if (c->s->renderer == 9) {
+        float n[4][4];
+        int i;
+
+        for (i = 0; i < 16; i++) n[i / 4][i % 4] = (float)c->norm[i / 4][i % 4].hi;
+        rvf_times_vec(n, in, o);                    /* v_c = N v_v */
+    } else
+        rvf_r7_camera(in, c->s->perspective, (float)c->l.hi, (float)c->r.hi, (float)c->b.hi,
+                      (float)c->t.hi, o);
+    widen_f(o, j->c, 3);
+}
+
+static void rv_image(const pt_acc_rvcam *c, size_t k, pt_vec3 v, pt_acc_rvjourney *j)
+{
+    float in[3], o[2];
+
+    (void)k; (void)v;
+    narrow_f(j->c, in, 3);
+    rvf_project(in, c->s->perspective, o);          /* x_p = x_c / -z_c */
+    widen_f(o, j->ip, 2);
+}
+
+static int rvnear(const pt_acc_rvcam *c, const pt_dd v0[3], const pt_dd v1[3], pt_acc_rvcut *cut)
+{
+    float a[3], b[3], t = 0, p[3];
+    int v;
+
+    narrow_f(v0, a, 3);
+    narrow_f(v1, b, 3);
+    v = rvf_nearclip((float)c->n.hi, a, b, &t, p, &cut->off);
+    if (v >= 0) return v;
+    cut->edge = 0;                                  /* PT_RV_NEAR */
+    cut->t = pt_acc_dd((double)t);
+    widen_f(p, cut->p, 3);
+    return v;
+}
+
+static int rvclip(pt_dd e[2][2], pt_acc_rvseg *g)
+{
+    float f[2][2], t[PT_ACC_RV_MAXCUTS], p[PT_ACC_RV_MAXCUTS][2];
+    int edge[PT_ACC_RV_MAXCUTS], off[PT_ACC_RV_MAXCUTS], keep, k;
+
+    narrow_f(e[0], f[0], 2);
+    narrow_f(e[1], f[1], 2);
+    keep = rvf_clip(f, PT_ACC_RV_MAXCUTS, &g->ncuts, edge, off, t, p);
+    for (k = 0; k < g->ncuts && k < PT_ACC_RV_MAXCUTS; k++) {
+        g->cut[k].edge = edge[k];
+        g->cut[k].off = off[k];
+        g->cut[k].t = pt_acc_dd((double)t[k]);
+        widen_f(p[k], g->cut[k].p, 2);
+        g->made[off[k]] = 2;
+    }
+    widen_f(f[0], e[0], 2);
+    widen_f(f[1], e[1], 2);
+    return keep;
+}
+
 const pt_acc_ops pt_acc_float_ops = {
     { model, camera, image, pixel, viewport, pt_acc_fb_stage, pt_acc_index_stage },
     raster, mcam,
     { m_model, m_world, m_view, m_clip, m_cvv },
     { t_ndc, t_screen, t_viewport, pt_acc_fb_tail, pt_acc_index_tail },
-    mseg
+    mseg,
+    rvcam, { rv_model, rv_world, rv_view, rv_camera, rv_image }, rvnear, rvclip
 };

@@ -3,6 +3,7 @@
 ** See LICENSE for copyright and license.
 */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "tools/accuracy/acc_shared.h"
 
@@ -140,4 +141,34 @@ void pt_acc_dda_step(const pt_acc_dda *o, const pt_acc_line *ln, int64_t s, int 
 void pt_acc_dda_dot(const pt_acc_dda *o, int64_t ix, int64_t iy)
 {
     if (pt_inside(ix - 1, o->h - iy, o->w, o->h)) o->pixel(o->ud, ix - 1, o->h - iy);
+}
+
+int pt_acc_rvcam_exact(pt_acc_rvcam *c)
+{
+    const pt_scene *s = c->s;
+    size_t k;
+    int i, j;
+
+    c->world = calloc(s->nmodels ? s->nmodels : 1, sizeof *c->world);
+    if (!c->world) return -1;
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *md = &s->models[k];
+        pt_jmat a = pt_r9_position_matrix(s->renderer == 9 ? md->ops : NULL,
+                                          s->renderer == 9 ? md->nops : 0);
+
+        for (j = 0; j < 4; j++) {                   /* column j */
+            c->world[k][0][j] = pt_acc_dd(a.col[j].x);
+            c->world[k][1][j] = pt_acc_dd(a.col[j].y);
+            c->world[k][2][j] = pt_acc_dd(a.col[j].z);
+            c->world[k][3][j] = pt_acc_dd(a.col[j].w);
+        }
+    }
+    c->l = pt_acc_dd(s->cam_l); c->r = pt_acc_dd(s->cam_r);
+    c->b = pt_acc_dd(s->cam_b); c->t = pt_acc_dd(s->cam_t);
+    c->n = pt_acc_dd(s->cam_n);
+    c->view[0] = pt_acc_dd(s->view.x);
+    c->view[1] = pt_acc_dd(s->view.y);
+    c->view[2] = pt_acc_dd(s->view.z);
+    for (i = 0; i < 16; i++) c->norm[i / 4][i % 4] = pt_acc_dd(0.0);
+    return 0;
 }

@@ -93,6 +93,75 @@ typedef struct pt_acc_mcam {
     pt_mat4 view_e, proj_e, *world_e;           /* bounds on its entries' errors; owned */
 } pt_acc_mcam;
 
+/* ===== renderers 7 and 9 =====
+**
+** The course's renderers 7 and 9 (src/core/course.h) take a segment's ends
+** through model, (r9: world,) view and camera; clip it at the near plane
+** (a new point in camera coordinates); project; clip it to the square
+** -1..1 (new points in the image plane, a cut at a time); and draw it
+** between its ends' pixels, renderer 4's pixel stage (2.001) and Math.round. */
+
+#define PT_ACC_RV_MAXCUTS 4      /* the clip's cuts a segment keeps: two an end
+                                 ** (an edge, then the other axis's); more are
+                                 ** counted, not kept (the stage allows 64) */
+
+/* One vertex of renderers 7 and 9 up to the image plane, widened to pt_dd. */
+typedef struct pt_acc_rvjourney {
+    pt_dd m[3];                  /* model (x_m, y_m, z_m) as the arithmetic holds it */
+    pt_dd w[4];                  /* r9: world (x y z w); r7: not used */
+    pt_dd v[3];                  /* view */
+    pt_dd c[3];                  /* camera (the view volume normalized) */
+    pt_dd ip[2];                 /* image (x_p, y_p) */
+} pt_acc_rvjourney;
+
+/* One cut of a clip stage. */
+typedef struct pt_acc_rvcut {
+    int edge;                    /* pt_rv_edge: near, or x = +1, x = -1, y = +1, y = -1 */
+    int off;                     /* the end it replaces: 0 or 1 */
+    pt_dd t;                     /* the stage's t */
+    pt_dd p[3];                  /* the new point (near: camera x y z; clip: x_p y_p) */
+} pt_acc_rvcut;
+
+/* One segment of renderers 7 and 9 through both clips. */
+typedef struct pt_acc_rvseg {
+    int near;                    /* 1 kept whole, 0 dropped, -1 cut (nearclip off: 1) */
+    pt_acc_rvcut nc;             /* near == -1: the cut */
+    pt_dd nip[2];                /* near == -1: the new point projected */
+    int keep;                    /* after the clip to -1..1: 1 drawn */
+    int ncuts;                   /* the clip's cuts (the first PT_ACC_RV_MAXCUTS kept) */
+    pt_acc_rvcut cut[PT_ACC_RV_MAXCUTS];
+    int made[2];                 /* drawn end e: 0 its vertex, 1 the near point,
+                                 ** 2 a point the clip made */
+    pt_acc_journey end[2];       /* keep: the drawn ends, ip .. idx (m, c unused) */
+} pt_acc_rvseg;
+
+/* The camera and matrices of renderers 7 and 9 in one arithmetic: the
+** numbers as it holds them (float: rounded; the reference: the scene's
+** doubles, exact); N and each position's matrix (r9) built in it, but the
+** position matrices' own entries, which every arithmetic takes from the
+** double stage (their sines and cosines).  world is owned. */
+typedef struct pt_acc_rvcam {
+    const pt_scene *s;           /* not owned */
+    pt_arith arith;
+    pt_dd l, r, b, t, n;         /* the view volume, the near plane's z */
+    pt_dd view[3];               /* r9: the view vector */
+    pt_dd norm[4][4];            /* r9: N, row i column j */
+    pt_dd (*world)[4][4];        /* r9: world[k], model k's position matrix */
+} pt_acc_rvcam;
+
+#define PT_ACC_RV_NFRONT 5       /* model, world, view, camera, image */
+
+/* A stage of renderers 7 and 9 up to the image plane, for vertex v of model
+** k (r7's world: nothing).  Can't fail. */
+typedef void (*pt_acc_rvstage_fn)(const pt_acc_rvcam *c, size_t k, pt_vec3 v,
+                                  pt_acc_rvjourney *j);
+
+/* Fill c (c->s set) with the scene's doubles as they are: l, r, b, t, n,
+** the view vector, and c->world[k], each model's position matrix as the
+** stage builds it in double (stages/r9_matrix.h; renderer 7: the identity);
+** not c->norm.  Returns 0, or -1 when out of memory (c->world NULL). */
+int pt_acc_rvcam_exact(pt_acc_rvcam *c);
+
 /* ===== the integer stages ===== */
 
 /* A value held exactly as the reference does: v, lo = 0.  This function can't
@@ -222,6 +291,19 @@ typedef struct pt_acc_ops {
                                  ** the caller: 1 with each made end's clip
                                  ** coordinates (g->end[e].k, .kerr) and t, 0
                                  ** culled; the caller runs the tails */
+    int (*rvcam)(pt_acc_rvcam *c);   /* renderers 7, 9: fill c (c->s set): 0,
+                                 ** or -1 when out of memory */
+    pt_acc_rvstage_fn rvstage[PT_ACC_RV_NFRONT];  /* model .. image */
+    int (*rvnear)(const pt_acc_rvcam *c, const pt_dd v0[3], const pt_dd v1[3],
+                  pt_acc_rvcut *cut);
+                                 /* the near clip of v0-v1 (camera): 1 kept,
+                                 ** 0 dropped, -1 cut (then *cut) */
+    int (*rvclip)(pt_dd e[2][2], pt_acc_rvseg *g);
+                                 /* the clip of the image-plane segment e to
+                                 ** -1..1: the cuts into g (ncuts, cut[]), e
+                                 ** left with the kept piece's ends, g->made[]
+                                 ** set to 2 where a cut replaced an end;
+                                 ** returns 1 kept, 0 dropped */
 } pt_acc_ops;
 
 /* The framebuffer and index stages float and the reference share (integers:

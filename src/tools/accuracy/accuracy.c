@@ -32,33 +32,77 @@ const int pt_arith_bits[PT_NARITH] = { 24, 53, PT_DD_BITS };
 #define RE   PT_ACC_RECOMPUTE
 
 static const pt_acc_rowinfo classic_rows[PT_ACC_NROWS] = {
-    [PT_ACC_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
-    [PT_ACC_CAMERA]      = { PT_STAGE_CAMERA,      "camera",      1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
-    [PT_ACC_IMAGE]       = { PT_STAGE_IMAGE,       "image",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD },
-    [PT_ACC_PIXEL]       = { PT_STAGE_PIXEL,       "pixel",       1, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL },
-    [PT_ACC_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL },
-    [PT_ACC_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_PIXEL },
-    [PT_ACC_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_INDEX },
-    [PT_ACC_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE,  PT_ACC_PANEL_RASTER }
+    [PT_ACC_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_CAMERA]      = { PT_STAGE_CAMERA,      "camera",      1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_IMAGE]       = { PT_STAGE_IMAGE,       "image",       1, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_PIXEL]       = { PT_STAGE_PIXEL,       "pixel",       1, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_STAGE,  TWO, PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_STAGE,  0,   PT_ACC_PANEL_INDEX, 0, NULL },
+    [PT_ACC_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE,  PT_ACC_PANEL_RASTER, 0, NULL }
 };
 
 /* The cvv's row counts outcodes unlike the reference's: no error, no panel.
 ** Rows ndc .. index take the vertices inside the view volume and the points
 ** clipping makes (pt_acc_mtail). */
 static const pt_acc_rowinfo matrix_rows[PT_ACC_M_NROWS] = {
-    [PT_ACC_M_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_WORLD]       = { PT_STAGE_WORLD,       "world",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_VIEW]        = { PT_STAGE_VIEW,        "view",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_CLIP]        = { PT_STAGE_CLIP,        "clip",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_CVV]         = { PT_STAGE_CVV,         "cvv",         0, PT_ACC_FN_MSTAGE, 0,  -1 },
-    [PT_ACC_M_NDC]         = { PT_STAGE_NDC,         "ndc",         1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_COORD },
-    [PT_ACC_M_SCREEN]      = { PT_STAGE_SCREEN,      "screen",      1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
-    [PT_ACC_M_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
-    [PT_ACC_M_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL },
-    [PT_ACC_M_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_INDEX },
-    [PT_ACC_M_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE, PT_ACC_PANEL_RASTER }
+    [PT_ACC_M_MODEL]       = { PT_STAGE_MODEL,       "model",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_WORLD]       = { PT_STAGE_WORLD,       "world",       1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_VIEW]        = { PT_STAGE_VIEW,        "view",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_CLIP]        = { PT_STAGE_CLIP,        "clip",        1, PT_ACC_FN_MSTAGE, 0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_CVV]         = { PT_STAGE_CVV,         "cvv",         0, PT_ACC_FN_MSTAGE, 0,  -1, 0, NULL },
+    [PT_ACC_M_NDC]         = { PT_STAGE_NDC,         "ndc",         1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_COORD, 0, NULL },
+    [PT_ACC_M_SCREEN]      = { PT_STAGE_SCREEN,      "screen",      1, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_M_VIEWPORT]    = { PT_STAGE_VIEWPORT,    "viewport",    0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_M_FRAMEBUFFER] = { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_PIXEL, 0, NULL },
+    [PT_ACC_M_INDEX]       = { PT_STAGE_INDEX,       "index",       0, PT_ACC_FN_TAIL,   0,  PT_ACC_PANEL_INDEX, 0, NULL },
+    [PT_ACC_M_RASTER]      = { -1,                   "raster",      1, PT_ACC_FN_RASTER, RE, PT_ACC_PANEL_RASTER, 0, NULL }
 };
 
+/* Renderers 7 and 9: nearclip and clip count segments (their t and new
+** points); image takes the vertices and the points the near clip made;
+** pixel .. index take the ends of the segments drawn, in either run. */
+#define RV   PT_ACC_FN_RV
+#define END  PT_ACC_FN_RVEND
+#define COORD PT_ACC_PANEL_COORD
+#define PIX  PT_ACC_PANEL_PIXEL
+
+#define R_MODEL   { PT_STAGE_MODEL,  "model",    1, RV, 0, COORD, 0, NULL }
+#define R_VIEW    { PT_STAGE_VIEW,   "view",     1, RV, 0, COORD, 2, NULL }
+#define R_CAMERA  { PT_STAGE_CAMERA, "camera",   1, RV, 0, COORD, 3, NULL }
+#define R_NEAR    { -2,              "nearclip", 1, PT_ACC_FN_RVNEAR, 0, COORD, 0, "segments" }
+#define R_IMAGE   { PT_STAGE_IMAGE,  "image",    1, RV, 0, COORD, 4, "points" }
+#define R_CLIP    { -2,              "clip",     1, PT_ACC_FN_RVCLIP, 0, COORD, 0, "segments" }
+#define R_PIXEL   { PT_STAGE_PIXEL,  "pixel",    1, END, TWO, PIX, PT_ACC_PIXEL, "ends" }
+#define R_VP      { PT_STAGE_VIEWPORT, "viewport", 0, END, TWO, PIX, PT_ACC_VIEWPORT, "ends" }
+#define R_FB      { PT_STAGE_FRAMEBUFFER, "framebuffer", 0, END, 0, PIX, PT_ACC_FRAMEBUFFER, "ends" }
+#define R_INDEX   { PT_STAGE_INDEX,  "index",    0, END, 0, PT_ACC_PANEL_INDEX, PT_ACC_INDEX, "ends" }
+#define R_RASTER  { -1,              "raster",   1, PT_ACC_FN_RASTER, RE, PT_ACC_PANEL_RASTER, 0, NULL }
+
+static const pt_acc_rowinfo r9_rows[PT_ACC_R_NROWS] = {
+    R_MODEL, { PT_STAGE_WORLD, "world", 1, RV, 0, COORD, 1, NULL }, R_VIEW, R_CAMERA,
+    R_NEAR, R_IMAGE, R_CLIP, R_PIXEL, R_VP, R_FB, R_INDEX, R_RASTER
+};
+
+static const pt_acc_rowinfo r7_rows[PT_ACC_R_NROWS - 1] = {     /* no world */
+    R_MODEL, R_VIEW, R_CAMERA, R_NEAR, R_IMAGE, R_CLIP, R_PIXEL, R_VP, R_FB, R_INDEX, R_RASTER
+};
+
+#undef R_MODEL
+#undef R_VIEW
+#undef R_CAMERA
+#undef R_NEAR
+#undef R_IMAGE
+#undef R_CLIP
+#undef R_PIXEL
+#undef R_VP
+#undef R_FB
+#undef R_INDEX
+#undef R_RASTER
+#undef RV
+#undef END
+#undef COORD
+#undef PIX
 #undef TWO
 #undef RE
 
@@ -66,19 +110,31 @@ const pt_acc_rows pt_acc_rows_of[PT_NPIPES] = {
     [PT_PIPE_CLASSIC] = {
         classic_rows, PT_ACC_NROWS, 0,
         { ": model, camera, image", ": pixel plane, viewport, framebuffer", "", "" },
-        "", NULL
+        "", NULL, 0
     },
     [PT_PIPE_MATRIX] = {
         matrix_rows, PT_ACC_M_NROWS, 1,
         { ": model .. ndc", ": screen, viewport, framebuffer", "", "" },
         "; cvv (outcodes) has no error to plot",
         "choice: 2.001 or 2.0 does not apply to the matrix camera: its screen stage,\n"
-        "x_s = (x_n + 1) * w * 0.5, has no 2.001\n"
+        "x_s = (x_n + 1) * w * 0.5, has no 2.001\n", 0
     }
+};
+
+const pt_acc_rows pt_acc_rows_r7 = {
+    r7_rows, PT_ACC_R_NROWS - 1, 0,
+    { ": model .. clip", ": pixel plane, viewport, framebuffer", "", "" }, "", NULL, 7
+};
+
+const pt_acc_rows pt_acc_rows_r9 = {
+    r9_rows, PT_ACC_R_NROWS, 0,
+    { ": model .. clip", ": pixel plane, viewport, framebuffer", "", "" }, "", NULL, 9
 };
 
 const pt_acc_rows *pt_acc_scene_rows(const pt_scene *s)
 {
+    if (s->renderer == 7) return &pt_acc_rows_r7;
+    if (s->renderer == 9) return &pt_acc_rows_r9;
     return &pt_acc_rows_of[pt_scene_pipeline(s)->id];
 }
 
@@ -219,6 +275,50 @@ static void raster_mseg(const pt_acc_run *r, size_t k, size_t q, const pt_acc_dd
                           g->made[1] ? g->end[1].pp : b->t.pp, r->choices, o);
 }
 
+/* ===== renderers 7 and 9 ===== */
+
+/* 1 when model k is not drawn (`hidden-position`, `hidden-model`): its
+** vertices are not used and its segments take part in no row. */
+static int rv_hidden(const pt_scene *s, size_t k)
+{
+    return s->renderer != 4 && (s->models[k].hidden_position || s->models[k].hidden_model);
+}
+
+/* Segment q of model k through the near clip, the projection of the point it
+** made, the clip to -1..1 and, when kept, the stages pixel .. index on its
+** ends (context c), into *g. */
+static void rv_segment(const pt_acc_run *r, size_t k, size_t q, const pt_acc_sctx *c,
+                       pt_acc_rvseg *g)
+{
+    const pt_acc_ops *op = ops[r->arith];
+    const pt_segment *sg = &r->s->models[k].seg[q];
+    const pt_acc_rvjourney *a = &r->rj[k][sg->a], *b = &r->rj[k][sg->b];
+    pt_dd e[2][2];
+    int i, row;
+
+    memset(g, 0, sizeof *g);
+    memcpy(e[0], a->ip, sizeof e[0]);
+    memcpy(e[1], b->ip, sizeof e[1]);
+    g->near = r->s->nearclip ? op->rvnear(r->rv, a->c, b->c, &g->nc) : 1;
+    if (g->near == 0) return;                       /* behind the near plane */
+    if (g->near < 0) {                              /* the new point, projected */
+        pt_acc_rvjourney t;
+
+        memcpy(t.c, g->nc.p, sizeof t.c);
+        op->rvstage[PT_ACC_RV_NFRONT - 1](r->rv, k, r->s->models[k].v[sg->a], &t);
+        memcpy(g->nip, t.ip, sizeof g->nip);
+        memcpy(e[g->nc.off], t.ip, sizeof e[0]);
+        g->made[g->nc.off] = 1;
+    }
+    g->keep = op->rvclip(e, g);
+    if (!g->keep) return;
+    for (i = 0; i < 2; i++) {
+        memcpy(g->end[i].ip, e[i], sizeof e[i]);
+        for (row = PT_ACC_PIXEL; row < PT_ACC_NSTAGES; row++)
+            op->stage[row](c, r->s->models[k].v[sg->a], &g->end[i]);
+    }
+}
+
 /* Every segment of every model, in file order; *rgb (when not NULL) is set to
 ** each model's color before its segments.  Matrix camera: each segment's
 ** clipping goes to r->seg when keep is set (else nowhere). */
@@ -227,12 +327,22 @@ static void raster_scene(const pt_acc_run *r, const pt_acc_dda *o, uint32_t *rgb
     size_t k, q;
     pt_acc_mseg g;
 
+    pt_acc_rvseg rg;
+    pt_acc_sctx c;
+
     for (k = 0; k < r->s->nmodels; k++) {
         const pt_model *m = &r->s->models[k];
 
         if (rgb) *rgb = (uint32_t)m->color[0] << 16 | (uint32_t)m->color[1] << 8 | m->color[2];
+        if (r->rv) pt_acc_sctx_make(&c, r->s, m, r->choices);
+        if (r->rv && rv_hidden(r->s, k)) continue;
         for (q = 0; q < m->nseg; q++)
-            if (r->cam) raster_mseg(r, k, q, o, keep ? &r->seg[k][q] : &g);
+            if (r->rv) {
+                pt_acc_rvseg *gp = keep ? &r->rseg[k][q] : &rg;
+
+                rv_segment(r, k, q, &c, gp);
+                if (gp->keep) ops[r->arith]->raster(gp->end[0].pp, gp->end[1].pp, r->choices, o);
+            } else if (r->cam) raster_mseg(r, k, q, o, keep ? &r->seg[k][q] : &g);
             else ops[r->arith]->raster(r->j[k][m->seg[q].a].pp,
                                        r->j[k][m->seg[q].b].pp, r->choices, o);
     }
@@ -422,7 +532,13 @@ void pt_acc_run_free(pt_acc_run *r)
             if (r->j) free(r->j[k]);
             if (r->mj) free(r->mj[k]);
             if (r->seg) free(r->seg[k]);
+            if (r->rj) free(r->rj[k]);
+            if (r->rseg) free(r->rseg[k]);
         }
+    if (r->rv) free(r->rv->world);
+    free(r->rv);
+    free(r->rj);
+    free(r->rseg);
     free(r->used);
     free(r->j);
     free(r->mj);
@@ -441,6 +557,23 @@ static int run_alloc(pt_acc_run *r)
 
     r->used = calloc(nm, sizeof *r->used);
     if (!r->used) return -1;
+    if (pt_acc_scene_rows(s)->rv) {
+        r->rv = calloc(1, sizeof *r->rv);
+        r->rj = calloc(nm, sizeof *r->rj);
+        r->rseg = calloc(nm, sizeof *r->rseg);
+        if (!r->rv || !r->rj || !r->rseg) return -1;
+        r->rv->s = s;
+        r->rv->arith = r->arith;
+        if (ops[r->arith]->rvcam(r->rv) != 0) return -1;
+        for (k = 0; k < s->nmodels; k++) {
+            const pt_model *m = &s->models[k];
+
+            r->rj[k] = calloc(m->nv ? m->nv : 1, sizeof **r->rj);
+            r->rseg[k] = calloc(m->nseg ? m->nseg : 1, sizeof **r->rseg);
+            if (!r->rj[k] || !r->rseg[k]) return -1;
+        }
+        return 0;
+    }
     if (!pt_acc_scene_rows(s)->mcam) {
         r->j = calloc(nm, sizeof *r->j);
         for (k = 0; r->j && k < s->nmodels; k++)
@@ -479,7 +612,8 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
 
         r->used[k] = calloc(m->nv ? m->nv : 1, 1);
         if (!r->used[k]) { pt_acc_run_free(r); return -1; }
-        for (q = 0; q < m->nseg; q++) r->used[k][m->seg[q].a] = r->used[k][m->seg[q].b] = 1;
+        for (q = 0; q < m->nseg && !rv_hidden(s, k); q++)
+            r->used[k][m->seg[q].a] = r->used[k][m->seg[q].b] = 1;
         for (q = 0; q < m->nv; q++) r->nused += r->used[k][q];
     }
     pt_acc_vertex_pass(r);
@@ -500,6 +634,13 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
         for (q = 0; q < s->models[k].nseg; q++) {
             r->made += (uint64_t)(r->seg[k][q].made[0] + r->seg[k][q].made[1]);
             r->culled += !r->seg[k][q].visible;
+        }
+    for (k = 0; r->rseg && k < s->nmodels; k++)
+        for (q = 0; q < s->models[k].nseg && !rv_hidden(s, k); q++) {
+            const pt_acc_rvseg *g = &r->rseg[k][q];
+
+            r->made += (uint64_t)(g->near < 0) + (uint64_t)g->ncuts;
+            r->culled += !g->keep;
         }
     r->pixels = c.n;
     if (c.n) qsort(c.px, c.n, sizeof *c.px, by_idx_then_seq);
@@ -528,7 +669,13 @@ double pt_acc_vertex_pass(pt_acc_run *r)
         pt_acc_sctx_make(&c, r->s, m, r->choices);
         for (v = 0; v < m->nv; v++) {
             if (!r->used[k][v]) continue;
-            if (r->cam) {
+            if (r->rv) {
+                pt_acc_rvjourney *j = &r->rj[k][v];
+                int i;
+
+                for (i = 0; i < PT_ACC_RV_NFRONT; i++) ops[r->arith]->rvstage[i](r->rv, k, m->v[v], j);
+                sum += j->ip[0].hi;
+            } else if (r->cam) {
                 pt_acc_mjourney *j = &r->mj[k][v];
 
                 pt_acc_mjourney_of(r->cam, k, m->v[v], j);
@@ -556,6 +703,10 @@ struct pt_acc_work {
     pt_acc_journey *j;           /* classic: copies of the run's journeys */
     pt_acc_mjourney *mj;         /* matrix, model .. cvv: likewise */
     pt_acc_mtail *t;             /* matrix, ndc .. index: the inside vertices' tails */
+    pt_acc_fn fn;                /* the kind of row it was made for */
+    pt_acc_rvjourney *rj;        /* renderers 7, 9, model .. image: copies */
+    pt_acc_rvseg *rseg;          /* ... the clips: copies of the segments */
+    size_t *seg;                 /* ... seg[i]: input i's segment in its model */
 };
 
 void pt_acc_work_free(pt_acc_work *w)
@@ -567,7 +718,53 @@ void pt_acc_work_free(pt_acc_work *w)
     free(w->j);
     free(w->mj);
     free(w->t);
+    free(w->rj);
+    free(w->rseg);
+    free(w->seg);
     free(w);
+}
+
+/* Renderers 7 and 9: the inputs of row (its kind fn) of run r into w, whose
+** arrays hold n.  Segments' rows take every segment that reaches the stage
+** (the clip: not dropped by the near clip; pixel .. index: both ends of
+** each drawn). */
+static void rv_work_fill(pt_acc_work *w, const pt_acc_run *r, size_t n)
+{
+    const pt_scene *s = r->s;
+    size_t k, v, q, i = 0;
+    int e;
+
+    for (k = 0; k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+
+        if (w->fn == PT_ACC_FN_RV) {
+            for (v = 0; v < m->nv && i < n; v++) {
+                if (!r->used[k][v]) continue;
+                w->model[i] = k;
+                w->v[i] = m->v[v];
+                w->rj[i++] = r->rj[k][v];
+            }
+            continue;
+        }
+        for (q = 0; q < m->nseg && i < n && !rv_hidden(s, k); q++) {
+            const pt_acc_rvseg *g = &r->rseg[k][q];
+
+            if (w->fn == PT_ACC_FN_RVCLIP && g->near == 0) continue;
+            if (w->fn == PT_ACC_FN_RVEND) {
+                for (e = 0; g->keep && e < 2 && i < n; e++) {
+                    w->model[i] = k;
+                    w->v[i] = m->v[m->seg[q].a];
+                    w->j[i++] = g->end[e];
+                }
+                continue;
+            }
+            w->model[i] = k;
+            w->seg[i] = q;
+            w->v[i] = m->v[m->seg[q].a];
+            w->rseg[i++] = *g;
+        }
+    }
+    w->n = i;
 }
 
 pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
@@ -580,6 +777,28 @@ pt_acc_work *pt_acc_work_make(const pt_acc_run *r, int row)
     if (!w) return NULL;
     w->arith = r->arith;
     w->r = r;
+    w->fn = fn;
+    if (r->rv) {                                    /* renderers 7 and 9 */
+        size_t nseg = 0;
+
+        for (k = 0; k < s->nmodels; k++) nseg += s->models[k].nseg;
+        if (fn == PT_ACC_FN_RVEND) n = nseg ? 2 * nseg : 1;     /* two ends a segment */
+        else if (fn != PT_ACC_FN_RV) n = nseg ? nseg : 1;
+        w->ctx = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->ctx);
+        w->model = calloc(n, sizeof *w->model);
+        w->v = calloc(n, sizeof *w->v);
+        w->seg = calloc(n, sizeof *w->seg);
+        if (fn == PT_ACC_FN_RV) w->rj = calloc(n, sizeof *w->rj);
+        else if (fn == PT_ACC_FN_RVEND) w->j = calloc(n, sizeof *w->j);
+        else w->rseg = calloc(n, sizeof *w->rseg);
+        if (!w->ctx || !w->model || !w->v || !w->seg || !(w->rj || w->j || w->rseg)) {
+            pt_acc_work_free(w);
+            return NULL;
+        }
+        for (k = 0; k < s->nmodels; k++) pt_acc_sctx_make(&w->ctx[k], s, &s->models[k], r->choices);
+        rv_work_fill(w, r, n);
+        return w;
+    }
     w->ctx = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->ctx);
     w->model = calloc(n, sizeof *w->model);
     w->v = calloc(n, sizeof *w->v);
@@ -619,14 +838,68 @@ void pt_acc_work_poison(pt_acc_work *w)
     size_t i;
 
     for (i = 0; i < w->n; i++)
-        if (w->t) {                                 /* all but the clip coordinates */
+        if (w->rj) memset(&w->rj[i], 0xab, sizeof w->rj[i]);
+        else if (w->rseg) memset(&w->rseg[i], 0xab, sizeof w->rseg[i]);
+        else if (w->t) {                                 /* all but the clip coordinates */
             pt_acc_mtail keep = w->t[i];
 
             memset(&w->t[i], 0xab, sizeof w->t[i]);
             memcpy(w->t[i].k, keep.k, sizeof keep.k);
             memcpy(w->t[i].kerr, keep.kerr, sizeof keep.kerr);
         } else if (w->mj) memset(&w->mj[i], 0xab, sizeof w->mj[i]);
-        else memset(&w->j[i], 0xab, sizeof w->j[i]);
+        else {
+            pt_dd ip[2];                            /* renderers 7, 9: the ends' input */
+
+            memcpy(ip, w->j[i].ip, sizeof ip);
+            memset(&w->j[i], 0xab, sizeof w->j[i]);
+            if (w->r->rv) memcpy(w->j[i].ip, ip, sizeof ip);
+        }
+}
+
+/* Renderers 7 and 9: one stage on every input of w.  The clips read their
+** inputs (camera coordinates; the image-plane ends after the near clip) from
+** the run, and write the segment's copy. */
+static double rv_stage_pass(pt_acc_work *w, int row)
+{
+    const pt_acc_run *r = w->r;
+    const pt_acc_ops *op = ops[w->arith];
+    int sub = pt_acc_scene_rows(r->s)->row[row].sub;
+    size_t i;
+
+    for (i = 0; i < w->n; i++) {
+        size_t k = w->model[i];
+        pt_acc_rvseg *g = w->rseg ? &w->rseg[i] : NULL;
+        const pt_segment *sg = g ? &r->s->models[k].seg[w->seg[i]] : NULL;
+
+        switch (w->fn) {
+        case PT_ACC_FN_RV:
+            op->rvstage[sub](r->rv, k, w->v[i], &w->rj[i]);
+            break;
+        case PT_ACC_FN_RVNEAR:
+            g->near = op->rvnear(r->rv, r->rj[k][sg->a].c, r->rj[k][sg->b].c, &g->nc);
+            break;
+        case PT_ACC_FN_RVCLIP: {
+            const pt_acc_rvseg *rg = &r->rseg[k][w->seg[i]];
+            pt_dd e[2][2];
+
+            memcpy(e[0], r->rj[k][sg->a].ip, sizeof e[0]);
+            memcpy(e[1], r->rj[k][sg->b].ip, sizeof e[1]);
+            if (rg->near < 0) memcpy(e[rg->nc.off], rg->nip, sizeof e[0]);
+            g->made[0] = g->made[1] = 0;
+            g->keep = op->rvclip(e, g);
+            break;
+        }
+        case PT_ACC_FN_RVEND:
+            op->stage[sub](&w->ctx[k], w->v[i], &w->j[i]);
+            break;
+        case PT_ACC_FN_STAGE: case PT_ACC_FN_MSTAGE: case PT_ACC_FN_TAIL:
+        case PT_ACC_FN_RASTER:
+            break;
+        }
+    }
+    if (w->rj) return w->rj[0].ip[0].hi;
+    if (w->rseg) return (double)w->rseg[0].near + w->rseg[0].nc.t.hi + (double)w->rseg[0].keep;
+    return w->j[0].pp[0].hi + (double)w->j[0].idx;
 }
 
 double pt_acc_stage_pass(pt_acc_work *w, int row)
@@ -634,6 +907,7 @@ double pt_acc_stage_pass(pt_acc_work *w, int row)
     size_t i;
 
     if (w->n == 0) return 0.0;
+    if (w->r->rv) return rv_stage_pass(w, row);
     if (w->t) {
         pt_acc_tail_fn f = pt_acc_tail_of(w->arith, row);
 
@@ -667,6 +941,16 @@ const pt_acc_mjourney *pt_acc_work_mjourney(const pt_acc_work *w, size_t i)
 const pt_acc_mtail *pt_acc_work_mtail(const pt_acc_work *w, size_t i)
 {
     return w->t ? &w->t[i] : NULL;
+}
+
+const pt_acc_rvjourney *pt_acc_work_rvjourney(const pt_acc_work *w, size_t i)
+{
+    return w->rj ? &w->rj[i] : NULL;
+}
+
+const pt_acc_rvseg *pt_acc_work_rvseg(const pt_acc_work *w, size_t i)
+{
+    return w->rseg ? &w->rseg[i] : NULL;
 }
 
 /* The timed rasterizer's pixel sink: a count and a checksum. */
@@ -806,6 +1090,157 @@ static void made_points(pt_acc_err e[PT_ACC_MAXROWS], const pt_acc_run *ref,
         }
 }
 
+/* Renderers 7 and 9: n values a against the reference's b, in row e; NULL on
+** one side counts as infinite.  Returns 1 when any differs. */
+static int rv_vals(pt_acc_err *e, const pt_dd *a, const pt_dd *b, int n)
+{
+    int k, differ = 0;
+
+    for (k = 0; k < n; k++)
+        if (err_add(e, a && b ? a[k].hi : (double)INFINITY, a && b ? b[k].hi : 0.0) != 0.0)
+            differ = 1;
+    return differ;
+}
+
+/* A vertex's value at stage sub (model, world, view, camera, image). */
+static const pt_dd *rv_value(const pt_acc_rvjourney *j, int sub, int *n)
+{
+    static const int len[PT_ACC_RV_NFRONT] = {3, 4, 3, 3, 2};
+
+    *n = len[sub];
+    switch (sub) {
+    case 0: return j->m;
+    case 1: return j->w;
+    case 2: return j->v;
+    case 3: return j->c;
+    default: return j->ip;
+    }
+}
+
+/* The near clip of one segment: the same verdict (and end cut) compares t
+** and the new point; another counts as decided otherwise, and a cut on one
+** side only as an infinite error. */
+static void rv_near_err(pt_acc_err *e, const pt_acc_rvseg *a, const pt_acc_rvseg *b)
+{
+    int same = a->near == b->near && (a->near >= 0 || a->nc.off == b->nc.off), differ = 0;
+
+    e->of++;
+    if (!same) {
+        e->decided++;
+        differ = 1;
+    }
+    if (a->near < 0 || b->near < 0) {
+        const pt_acc_rvcut *ca = same ? &a->nc : NULL, *cb = same ? &b->nc : NULL;
+
+        differ |= rv_vals(e, ca ? &ca->t : NULL, cb ? &cb->t : NULL, 1);
+        differ |= rv_vals(e, ca ? ca->p : NULL, cb ? cb->p : NULL, 2);
+    }
+    e->differ += (uint64_t)differ;
+}
+
+/* The clip to -1..1 of one segment that reaches it on either side: cut k
+** against the reference's cut k, when both cut the same end at the same edge. */
+static void rv_clip_err(pt_acc_err *e, const pt_acc_rvseg *a, const pt_acc_rvseg *b)
+{
+    int na = a->near != 0 ? a->ncuts : 0, nb = b->near != 0 ? b->ncuts : 0, k, differ = 0;
+
+    if (a->near == 0 && b->near == 0) return;
+    e->of++;
+    if (a->near == 0 || b->near == 0 || a->keep != b->keep || na != nb) differ = 1;
+    if (na > PT_ACC_RV_MAXCUTS) na = PT_ACC_RV_MAXCUTS;
+    if (nb > PT_ACC_RV_MAXCUTS) nb = PT_ACC_RV_MAXCUTS;
+    for (k = 0; k < na || k < nb; k++) {
+        int both = k < na && k < nb && a->cut[k].edge == b->cut[k].edge
+                   && a->cut[k].off == b->cut[k].off;
+
+        if (!both) differ = 1;
+        (void)rv_vals(e, both ? &a->cut[k].t : NULL, both ? &b->cut[k].t : NULL, 1);
+        if (rv_vals(e, both ? a->cut[k].p : NULL, both ? b->cut[k].p : NULL, 2)) differ = 1;
+    }
+    if (differ && (a->near == 0 || b->near == 0 || a->keep != b->keep || na != nb || k > 0)) {
+        int dec = a->near == 0 || b->near == 0 || a->keep != b->keep || na != nb;
+
+        for (k = 0; !dec && k < na; k++)
+            dec = a->cut[k].edge != b->cut[k].edge || a->cut[k].off != b->cut[k].off;
+        e->decided += (uint64_t)dec;
+    }
+    e->differ += (uint64_t)differ;
+}
+
+/* The drawn ends of one segment drawn on either side, into rows pixel ..
+** index (e[0] .. e[3]); an end drawn on one side only counts as infinite. */
+static void rv_end_err(pt_acc_err e[4], const pt_scene *s, const pt_acc_rvseg *a,
+                       const pt_acc_rvseg *b)
+{
+    int i, k;
+
+    if (!a->keep && !b->keep) return;
+    for (i = 0; i < 2; i++) {
+        const pt_acc_journey *ja = a->keep ? &a->end[i] : NULL, *jb = b->keep ? &b->end[i] : NULL;
+
+        for (k = 0; k < 4; k++) e[k].of++;
+        if (ja && jb) {
+            e[0].differ += (uint64_t)rv_vals(&e[0], ja->pp, jb->pp, 2);
+            err_pixels(&e[1], s, ja->vp, ja->fb, ja->idx, jb->vp, jb->fb, jb->idx);
+            continue;
+        }
+        (void)rv_vals(&e[0], NULL, NULL, 2);
+        for (k = 1; k < 3; k++) {
+            err_add(&e[k], (double)INFINITY, 0.0);
+            err_add(&e[k], (double)INFINITY, 0.0);
+        }
+        for (k = 0; k < 4; k++) e[k].differ++;
+    }
+}
+
+/* Renderers 7 and 9: every row of rows. */
+static void rv_compare(const pt_acc_run *ref, const pt_acc_run *r, const pt_acc_rows *rows,
+                       pt_acc_err e[PT_ACC_MAXROWS])
+{
+    const pt_scene *s = r->s;
+    int row, n, pix = pt_acc_row_of(rows, PT_STAGE_PIXEL);
+    size_t k, v, q;
+
+    for (row = 0; row + 1 < rows->nrows; row++) e[row].of = 0;     /* counted as they come */
+    for (row = 0; row + 1 < rows->nrows; row++) {
+        const pt_acc_rowinfo *ri = &rows->row[row];
+
+        for (k = 0; k < s->nmodels; k++) {
+            const pt_model *m = &s->models[k];
+
+            if (rv_hidden(s, k)) continue;
+            if (ri->fn == PT_ACC_FN_RV) {
+                for (v = 0; v < m->nv; v++) {
+                    const pt_dd *a, *b;
+
+                    if (!r->used[k][v]) continue;
+                    a = rv_value(&r->rj[k][v], ri->sub, &n);
+                    b = rv_value(&ref->rj[k][v], ri->sub, &n);
+                    e[row].of++;
+                    e[row].differ += (uint64_t)rv_vals(&e[row], a, b, n);
+                }
+                if (ri->sub != PT_ACC_RV_NFRONT - 1) continue;
+                for (q = 0; q < m->nseg; q++) {    /* image: the near clip's points */
+                    const pt_acc_rvseg *ga = &r->rseg[k][q], *gb = &ref->rseg[k][q];
+                    int same = ga->near < 0 && gb->near < 0 && ga->nc.off == gb->nc.off;
+
+                    if (ga->near >= 0 && gb->near >= 0) continue;
+                    e[row].of++;
+                    e[row].differ += (uint64_t)rv_vals(&e[row], same ? ga->nip : NULL,
+                                                       same ? gb->nip : NULL, 2);
+                }
+            } else
+                for (q = 0; q < m->nseg; q++) {
+                    const pt_acc_rvseg *ga = &r->rseg[k][q], *gb = &ref->rseg[k][q];
+
+                    if (ri->fn == PT_ACC_FN_RVNEAR) rv_near_err(&e[row], ga, gb);
+                    else if (ri->fn == PT_ACC_FN_RVCLIP) rv_clip_err(&e[row], ga, gb);
+                    else if (row == pix) rv_end_err(&e[pix], s, ga, gb);
+                }
+        }
+    }
+}
+
 void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS])
 {
     const pt_scene *s = r->s;
@@ -818,7 +1253,8 @@ void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_
         e[row].real = rows->row[row].real;
         e[row].of = rows->row[row].fn == PT_ACC_FN_TAIL ? 0 : r->nused;  /* tails: */
     }                                                               /* counted as they come */
-    for (k = 0; k < s->nmodels; k++) {
+    if (rows->rv) rv_compare(ref, r, rows, e);
+    for (k = 0; !rows->rv && k < s->nmodels; k++) {
         for (v = 0; v < s->models[k].nv; v++)
             if (r->used[k][v]) vertex_err(e, ref, r, k, v);
         if (r->seg) made_points(e, ref, r, k);

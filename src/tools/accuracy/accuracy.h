@@ -49,6 +49,15 @@
 ** target at the screen's centre, say), and 2^-104 of rounding must not pick
 ** the side.
 **
+** Renderers 7 and 9 (the course's, src/core/course.h): their own stages in
+** each arithmetic (float and the reference from acc_rv_tmpl.h, the stages'
+** formulas written once for any number type; double the stages themselves),
+** each segment through the near clip and the clip to -1..1, the ends drawn
+** through renderer 4's pixel .. index stages and the DDA.  The clips' rows
+** compare t and the new points of segments cut alike; a segment cut otherwise
+** counts as decided otherwise (pt_acc_err.decided) and its values as inf.
+** The reference has no tie rule here.
+**
 ** USAGE
 **   pt_acc_run ref, r;  pt_acc_err e[PT_ACC_MAXROWS];
 **   pt_acc_run_make(&ref, &s, PT_ARITH_DD, 0);
@@ -95,6 +104,8 @@ typedef struct pt_acc_err {
     uint64_t differ;             /* vertices (raster: pixels) unlike the reference */
     uint64_t of;                 /* used vertices (raster: pixels lit in either image) */
     uint64_t left, entered;      /* viewport: inside -> outside, outside -> inside */
+    uint64_t decided;            /* renderers 7, 9, the clips: segments cut, kept
+                                 ** or dropped otherwise than by the reference */
 } pt_acc_err;
 
 /* The rows of the error table: the seven stages, then the rasterizer. */
@@ -110,7 +121,15 @@ typedef enum pt_acc_mrow {
     PT_ACC_M_INDEX, PT_ACC_M_RASTER, PT_ACC_M_NROWS
 } pt_acc_mrow;
 
-#define PT_ACC_MAXROWS PT_ACC_M_NROWS    /* room for either camera's rows */
+/* Renderer 9's rows: its stages, the two clips among them, then the
+** rasterizer; renderer 7's are the same without world. */
+typedef enum pt_acc_rvrow {
+    PT_ACC_R_MODEL, PT_ACC_R_WORLD, PT_ACC_R_VIEW, PT_ACC_R_CAMERA, PT_ACC_R_NEARCLIP,
+    PT_ACC_R_IMAGE, PT_ACC_R_CLIP, PT_ACC_R_PIXEL, PT_ACC_R_VIEWPORT, PT_ACC_R_FRAMEBUFFER,
+    PT_ACC_R_INDEX, PT_ACC_R_RASTER, PT_ACC_R_NROWS
+} pt_acc_rvrow;
+
+#define PT_ACC_MAXROWS PT_ACC_R_NROWS    /* room for any pipeline's rows */
 
 
 /* ===== the rows as data: one table per pipeline =====
@@ -139,7 +158,12 @@ typedef enum pt_acc_fn {
     PT_ACC_FN_MSTAGE,            /* pt_acc_mstage_of: a pt_acc_mjourney's, up to the cvv */
     PT_ACC_FN_TAIL,              /* pt_acc_tail_of: a pt_acc_mtail's, from clip
                                  ** coordinates on (vertices and made points) */
-    PT_ACC_FN_RASTER             /* the rasterizer's pass */
+    PT_ACC_FN_RASTER,            /* the rasterizer's pass */
+    PT_ACC_FN_RV,                /* renderers 7, 9: pt_acc_ops.rvstage[sub], a vertex's */
+    PT_ACC_FN_RVNEAR,            /* ... the near clip, a segment's */
+    PT_ACC_FN_RVCLIP,            /* ... the clip to -1..1, a segment's */
+    PT_ACC_FN_RVEND              /* ... pt_acc_ops.stage[sub] (pixel .. index) on the
+                                 ** ends of the segments drawn */
 } pt_acc_fn;
 
 /* One row of the error table. */
@@ -152,6 +176,8 @@ typedef struct pt_acc_rowinfo {
     unsigned variants;           /* the choices (PT_ACC_TWO, PT_ACC_RECOMPUTE)
                                  ** that change it: their runs time it and plot it */
     int panel;                   /* its pt_acc_panel, or -1: no error to plot */
+    int sub;                     /* renderers 7, 9: the function's place in its table */
+    const char *of;              /* what differ counts; NULL: "vertices" (raster: pixels) */
 } pt_acc_rowinfo;
 
 /* A pipeline's rows. */
@@ -165,9 +191,15 @@ typedef struct pt_acc_rows {
     const char *panel_sub[PT_ACC_NPANELS];  /* after a panel's title: ": model .. ndc" */
     const char *no_plot;         /* the plot's note on rows with no panel, or "" */
     const char *no_two;          /* what is said when no row has PT_ACC_TWO */
+    int rv;                      /* 7 or 9: the course's renderer (pt_acc_rvjourney,
+                                 ** pt_acc_rvseg); 0: neither */
 } pt_acc_rows;
 
 extern const pt_acc_rows pt_acc_rows_of[PT_NPIPES];
+
+/* The rows of the course's renderers 7 and 9, whose scenes are classic by
+** pipeline (pt_scene_pipeline) but run their own stages. */
+extern const pt_acc_rows pt_acc_rows_r7, pt_acc_rows_r9;
 
 /* The rows of scene s's pipeline.  This function can't fail. */
 const pt_acc_rows *pt_acc_scene_rows(const pt_scene *s);
@@ -196,7 +228,11 @@ typedef struct pt_acc_run {
     pt_acc_mcam *cam;            /* matrix camera: its matrices; owned, else NULL */
     pt_acc_mjourney **mj;        /* matrix camera: mj[k][v]; owned, else NULL */
     pt_acc_mseg **seg;           /* matrix camera: seg[k][q]; owned, else NULL */
-    uint64_t made, culled;       /* matrix camera: points clipping made, segments culled */
+    pt_acc_rvcam *rv;            /* renderers 7, 9: camera and matrices; owned, else NULL */
+    pt_acc_rvjourney **rj;       /* renderers 7, 9: rj[k][v]; owned, else NULL */
+    pt_acc_rvseg **rseg;         /* renderers 7, 9: rseg[k][q]; owned, else NULL */
+    uint64_t made, culled;       /* matrix camera, renderers 7, 9: points clipping
+                                 ** made, segments culled (dropped) */
     uint64_t nused;              /* used vertices in all models */
     pt_acc_pixel *img;           /* the final image's lit pixels; owned */
     size_t nimg;
@@ -254,12 +290,15 @@ size_t pt_acc_work_size(const pt_acc_work *w);
 double pt_acc_stage_pass(pt_acc_work *w, int row);
 
 /* For tests: overwrite every value the stages of w's kind write (all but the
-** clip coordinates a tail starts from) with garbage; and input i as it is now
+** clip coordinates a tail starts from, and the image-plane point the ends of
+** renderers 7 and 9 start from) with garbage; and input i as it is now
 ** (NULL when w holds another kind). */
 void pt_acc_work_poison(pt_acc_work *w);
 const pt_acc_journey *pt_acc_work_journey(const pt_acc_work *w, size_t i);
 const pt_acc_mjourney *pt_acc_work_mjourney(const pt_acc_work *w, size_t i);
 const pt_acc_mtail *pt_acc_work_mtail(const pt_acc_work *w, size_t i);
+const pt_acc_rvjourney *pt_acc_work_rvjourney(const pt_acc_work *w, size_t i);
+const pt_acc_rvseg *pt_acc_work_rvseg(const pt_acc_work *w, size_t i);
 
 /* The context of model m's stages in scene s.  This function can't fail. */
 void pt_acc_sctx_make(pt_acc_sctx *c, const pt_scene *s, const pt_model *m, unsigned choices);

@@ -297,6 +297,27 @@ static void print_matrix_header(const study *st)
            "            points clipping made, in either run; cvv: outcodes that differ\n");
 }
 
+static void print_rv_header(const study *st)
+{
+    const pt_scene *s = st->s;
+
+    printf("            viewport %d x %d, renderer %d, %s, view rectangle %.6g..%.6g x\n"
+           "            %.6g..%.6g, near plane z = %.6g (near clip %s); the reference's\n"
+           "            clips made %llu points and dropped %llu segments\n",
+           s->vp_w, s->vp_h, s->renderer, s->perspective ? "perspective" : "orthographic",
+           s->cam_l, s->cam_r, s->cam_b, s->cam_t, s->cam_n, s->nearclip ? "on" : "off",
+           (unsigned long long)st->run[RUN_DD].made, (unsigned long long)st->run[RUN_DD].culled);
+    printf("reference   double-double, %d significant bits; measured: 1/3 within 2^-%d,\n"
+           "            2.001 within 2^-%d of 2001/1000 (relative)\n", PT_DD_BITS,
+           dd_bits_of(1.0, 3.0), dd_bits_of(2001.0, 1000.0));
+    printf("errors      against the reference rounded to double; float rounds the\n"
+           "            scene's numbers to float first (renderer 9: its position\n"
+           "            matrices too, which every arithmetic takes from the double\n"
+           "            stage); nearclip, clip: t and the new point of segments cut\n"
+           "            alike, a cut on one side only is inf; image: the vertices and\n"
+           "            the near clip's points; pixel..index: the ends drawn, either run\n");
+}
+
 static void print_header(const study *st)
 {
     const pt_scene *s = st->s;
@@ -309,6 +330,7 @@ static void print_header(const study *st)
            "reference image\n", s->nmodels, (unsigned long long)st->run[RUN_DD].nused,
            (unsigned long long)nseg, st->run[RUN_DD].nimg);
     if (st->rows.t->mcam) { print_matrix_header(st); return; }
+    if (st->rows.t->rv) { print_rv_header(st); return; }
     printf("            viewport %d x %d, %s camera\n", s->vp_w, s->vp_h,
            s->perspective ? "perspective" : "orthographic");
     printf("reference   double-double, %d significant bits; measured: 1/3 within 2^-%d,\n"
@@ -316,6 +338,25 @@ static void print_header(const study *st)
            dd_bits_of(1.0, 3.0), dd_bits_of(2001.0, 1000.0));
     printf("errors      against the reference rounded to double; float rounds the\n"
            "            scene's numbers to float first, and that is its error too\n");
+}
+
+/* Renderers 7 and 9: the segments each clip decided otherwise than the
+** reference (cut or not, which end, which edge, kept or dropped). */
+static void print_decided(const study *st)
+{
+    const pt_acc_rows *t = st->rows.t;
+    char b1[48], b2[48];
+    int row;
+
+    if (!t->rv) return;
+    printf("\nclips decided otherwise than the reference, segments\n"
+           "stage             float      double\n");
+    for (row = 0; row < st->rows.nrows; row++)
+        if (t->row[row].fn == PT_ACC_FN_RVNEAR || t->row[row].fn == PT_ACC_FN_RVCLIP)
+            printf("%-12s %10s  %10s\n", t->row[row].name,
+                   ratio(b1, sizeof b1, st->err[RUN_FLOAT][row].decided, st->err[RUN_FLOAT][row].of),
+                   ratio(b2, sizeof b2, st->err[RUN_DOUBLE][row].decided,
+                         st->err[RUN_DOUBLE][row].of));
 }
 
 static void print_errors(const study *st)
@@ -336,8 +377,10 @@ static void print_errors(const study *st)
                    num(b2, sizeof b2, mean),
                    num(b3, sizeof b3, e->n && e->real ? e->max_ulp : (double)NAN),
                    ratio(b4, sizeof b4, e->differ, e->of),
-                   row == st->rows.raster ? "pixels" : "vertices");
+                   row == st->rows.raster ? "pixels"
+                   : st->rows.t->row[row].of ? st->rows.t->row[row].of : "vertices");
         }
+    print_decided(st);
 }
 
 static void print_arithmetics(const study *st)
@@ -824,7 +867,6 @@ int pt_cmd_accuracy(int argc, char **argv)
     if (pt_cli_outputs(path, &svg, (const char *const[]){"--svg"}, 1) != 0) return PT_EXIT_INPUT;
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (pt_cli_course(&s, "accuracy")) return PT_EXIT_INPUT;
     if (pt_cli_outputs_objs(&s, &svg, (const char *const[]){"--svg"}, 1) != 0
         || pt_cli_keep_cap(&s, "accuracy") != 0) {
         pt_scene_free(&s);
