@@ -241,7 +241,8 @@ static void fd_dtoa(uint64_t bits, int compat, jdigits *r)
 
         memcpy(&d2, &d2bits, sizeof d2);
         d = (d2 - 1.5) * 0.289529654 + 0.176091259 + (double)binexp * 0.301029995663981;
-        decexp = (int)floor(d);                  /* estimateDecExp */
+        decexp = (int)d;                         /* estimateDecExp: floor(d) */
+        if (d < 0 && (double)decexp != d) decexp--;
     }
     b5 = decexp < 0 ? -decexp : 0;
     b2 = b5 + ntiny + binexp;
