@@ -99,7 +99,7 @@ $B/buildinfo.c: Makefile $(CHOSEN) | $B
 # none includes a header of a layer above it).
 # stages/: the formulas, in pipeline order: what all share, the classic
 # camera's, then the matrix camera's own (it shares s5 and s6).
-STAGES_O = $B/pt_stage.o $B/pt_round.o $B/pt_color.o $B/s1_model2camera.o $B/s2_camera2image.o \
+STAGES_O = $B/pt_stage.o $B/pt_round.o $B/pt_jmath.o $B/pt_color.o $B/s1_model2camera.o $B/s2_camera2image.o \
            $B/s3_image2pixel.o $B/pt_classic.o \
            $B/pt_mat4.o $B/m1_model2world.o $B/m2_world2view.o $B/m3_view2clip.o \
            $B/m4_clip2cvv.o $B/m5_clip2ndc.o $B/m6_ndc2screen.o \
@@ -139,7 +139,7 @@ CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/d
            $B/export_java.o $B/cmd_class.o $B/class_report.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_reference $B/test_fuzz $B/test_matrix $B/test_explain \
-           $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum \
+           $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum $B/test_jmath \
            $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm \
            $B/test_numfmt_portable $B/test_trace $B/test_lanes $B/test_pipelines \
            $B/test_journey $B/test_rv_stages $B/test_rv_raster

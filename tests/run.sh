@@ -33,6 +33,7 @@ groups=${PT_RUN_GROUPS:-"stages           1 $B/test_stages
 numfmt          10 $B/test_numfmt
 numfmt-portable 10 $B/test_numfmt_portable
 jnum             1 $B/test_jnum
+jmath            1 $B/test_jmath
 raster           1 $B/test_raster
 rv-raster        1 $B/test_rv_raster
 pipelines        1 $B/test_pipelines

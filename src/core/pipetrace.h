@@ -21,6 +21,7 @@
 /* the records, the stage table, numbers as Java rounds them, matrices */
 #include "stages/pt_stage.h"           /* vectors, stage ids, records, the table */
 #include "stages/pt_round.h"           /* Java's rounding, the inside tests */
+#include "stages/pt_jmath.h"           /* Java's Math.atan (the course log's fovy) */
 #include "stages/pt_mat4.h"            /* 4x4 matrices on row vectors */
 /* the stage functions the tools call themselves: the reference copies of
 ** s1 .. s6 ("the formula"), the run's own viewport, framebuffer and index

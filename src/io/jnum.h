@@ -2,18 +2,20 @@
 ** src/io/jnum.h -- doubles as Java prints them: Double.toString and Formatter's %f
 ** See LICENSE for copyright and license.
 **
-** The course's renderer logs its numbers through Java, so a log written to be
-** compared with it byte for byte spells them as Java does:
-**   - Double.toString (JDK 19 and later): the shortest decimal that reads back
-**     to x, the nearest of those (a tie: even last digit); when one digit is
-**     enough, the nearest of the one- and two-digit decimals that read back
-**     (so 5e-324 is "4.9E-324").  Plain "123.45" for 1e-3 <= |x| < 1e7, else
-**     "1.2345E-5"; always a digit after the point: "1.0", "1.0E10".
-**   - java.util.Formatter's "%W.Pf": Double.toString's digits rounded half up
-**     at P decimals (0.125 -> "0.13" with P = 2, where C's printf gives
-**     "0.12": it rounds the exact binary value, 0.125 exactly, to even).
-** The shortest digits come from pt_fmt_shortest() (numfmt.h); only the
-** spelling and the rounding are Java's.
+** The course's renderers log their numbers through Java 17, so a log written
+** to be compared with them byte for byte spells them as JDK 17 does:
+**   - Double.toString: the digits of the old FloatingDecimal (JDK 19 and
+**     later print the shortest decimal that reads back; JDK 17 often does
+**     too, but not always: 2^-31 is 4.6566128730773926E-10, 1e23 is
+**     9.999999999999999E22, 2^60 is 1.15292150460684698E18).  Plain "123.45"
+**     for 1e-3 <= |x| < 1e7, else "1.2345E-5"; always a digit after the
+**     point: "1.0", "1.0E10".
+**   - java.util.Formatter's "%W.Pf": FloatingDecimal's digits (at least two)
+**     rounded half up at P decimals (0.125 -> "0.13" with P = 2, where C's
+**     printf gives "0.12": it rounds the exact binary value, 0.125 exactly,
+**     to even).
+** The algorithm is in jnum.c; tests/unit/test_jnum.c holds it to what JDK 17
+** printed.
 */
 #ifndef PT_JNUM_H
 #define PT_JNUM_H

@@ -7,7 +7,6 @@
 ** (debugScene || debugPosition, the latter set per position and kept after
 ** the loop).  The labels are the course's, padded as it pads them.
 */
-#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "io/trace_course.h"
@@ -183,7 +182,7 @@ static void lists(const clog *w, const char *lab, int which, const pt_rv_model *
 static void camera(const clog *w, const pt_course_cam *c)
 {
     const pt_rv_camera *k = &c->cam;
-    double fovy = (180. / PI) * atan(k->t) + (180. / PI) * atan(-k->b);
+    double fovy = (180. / PI) * pt_jmath_atan(k->t) + (180. / PI) * pt_jmath_atan(-k->b);
 
     fputs("Camera: \n  perspective = ", w->f);
     fputs(k->perspective ? "true" : "false", w->f);

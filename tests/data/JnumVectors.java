@@ -1,6 +1,7 @@
 // tests/data/JnumVectors.java -- test vectors for src/io/jnum.c (tests/unit/test_jnum.c).
 // See LICENSE for copyright and license.
-// Made with a JDK 19 or later (its Double.toString):
+// Made with JDK 17, the course's Java (its Double.toString and Formatter's digits come from
+// FloatingDecimal, not always the shortest; JDK 19 and later print other digits for a few):
 //   java tests/data/JnumVectors.java > tests/data/jnum-vectors.txt
 // Each line: the double's bits in hex, Double.toString, then String.format with
 // "%.5f", "% 10.5f", "%9.4f", "%.4f", "%.2f", each field between '|'.
