@@ -241,6 +241,18 @@ void pt_sbuf_add_csv(pt_sbuf *sb, const char *t)
     pt_sbuf_add(sb, "\"");
 }
 
+void pt_sbuf_add_csv_untrusted(pt_sbuf *sb, const char *t)
+{
+    pt_sbuf safe;
+
+    if (pt_sbuf_term_plain(t, strlen(t))) { pt_sbuf_add_csv(sb, t); return; }
+    pt_sbuf_init(&safe);
+    pt_sbuf_add_term(&safe, t, strlen(t));
+    if (safe.failed) sb->failed = 1;
+    else pt_sbuf_add_csv(sb, safe.s ? safe.s : "");
+    pt_sbuf_free(&safe);
+}
+
 void pt_sbuf_add_json(pt_sbuf *sb, const char *t)
 {
     pt_sbuf_add(sb, "\"");

@@ -81,4 +81,9 @@ int pt_sbuf_csv_plain(const char *t);
 ** spreadsheet tools' convention: '=1+1 is text). */
 void pt_sbuf_add_csv(pt_sbuf *sb, const char *t);
 
+/* Append untrusted text t (a file's name, a message quoting one) as one CSV
+** cell: made safe for a terminal first (pt_sbuf_add_term()), since a CSV
+** goes to standard output as often as to a file, then as pt_sbuf_add_csv(). */
+void pt_sbuf_add_csv_untrusted(pt_sbuf *sb, const char *t);
+
 #endif

@@ -660,7 +660,7 @@ static int grade(quiz *q, const char *dir, const char *out)
             pt_sbuf_free(&text);
         }
         if (why && !*why) continue;     /* a folder: not a sheet */
-        pt_sbuf_add_csv(&sb, names[k]);
+        pt_sbuf_add_csv_untrusted(&sb, names[k]);
         if (trouble) rc = PT_EXIT_INPUT;
         if (why && trouble) {           /* graded, with answers it could not read */
             for (i = q->first; i <= q->last; i++)
@@ -668,14 +668,14 @@ static int grade(quiz *q, const char *dir, const char *out)
                                  : q->result[i] ? ",1" : ",0");
             right = score(q, &answered);
             pt_sbuf_addf(&sb, ",%d,%d,", right, of);
-            pt_sbuf_add_csv(&sb, why);
+            pt_sbuf_add_csv_untrusted(&sb, why);
             pt_sbuf_add(&sb, "\n");
             continue;
         }
         if (why) {
             for (i = q->first; i <= q->last; i++) pt_sbuf_add(&sb, ",");
             pt_sbuf_addf(&sb, ",0,%d,", of);
-            pt_sbuf_add_csv(&sb, why);
+            pt_sbuf_add_csv_untrusted(&sb, why);
             pt_sbuf_add(&sb, "\n");
             sheet_message(names[k], why);
             rc = PT_EXIT_INPUT;

@@ -151,8 +151,8 @@ print(len(rows), sum(r[0] == "mallory" for r in rows), sum(r[0].startswith("x\""
 else
     echo "  skipped: python3 is not installed (hostile-7.1)"
 fi
-check "hostile-7.2 ... its name one quoted cell, the quote doubled" \
-    grep -q '^"x""$' "$tmp/grades.csv"
+check "hostile-7.2 ... its name one quoted cell on one line, the quote doubled, the newlines written out" \
+    grep -qF '"x""\x0a\x0amallory,1,1,1,1,1,1,1,7,7\x0ay",' "$tmp/grades.csv"
 check "hostile-7.3 a sheet named =1+1: a text cell, not a formula" grep -q "^\"'=1+1\"," "$tmp/grades.csv"
 check "hostile-7.4 a name ending in a quote: doubled, and no NUL byte in the CSV" \
     sh -c "grep -q '^\"end\"\"\",' '$tmp/grades.csv' && test \$(tr -d '\\000' < '$tmp/grades.csv' | wc -c) = \$(wc -c < '$tmp/grades.csv')"
@@ -343,5 +343,18 @@ done
 printf 'framebuffer 20 20\ncamera perspective\nmodel a\nv 0 0 -1\npoint 1 1 2048\n' > "$tmp/bigpt.scene"
 run "$tmp/bigpt.scene" --kraft-debug all
 check "hostile-16.5 renderer 4: the same rule, the same words" grep -q "error: model .a.: a point of radius 2048 has 16785409 pixels, more than the 16777216 lines" "$tmp/err"
+
+# ---- 17: sheet and student names with terminal escapes in a CSV on standard output
+mkdir -p "$tmp/esc17"
+printf '%s\n' '-1 -1 0' > "$tmp/esc17/$(printf 'a\033[31mb')"
+"$exe" quiz docs/examples/triangle.scene --vertex 1 --grade "$tmp/esc17" > "$tmp/q17" 2>&1
+check "hostile-17.1 quiz --grade: no ESC byte from a sheet's name in its CSV" \
+    sh -c "! grep -q \"\$(printf '\\033')\" '$tmp/q17'"
+check "hostile-17.2 ... the name shown escaped" grep -qF 'a\x1b[31mb,' "$tmp/q17"
+"$exe" docs/examples/triangle.scene --trace "$tmp/esc17/$(printf 'c\033]0;t\007')d.txt"
+"$exe" class docs/examples/triangle.scene "$tmp/esc17" --csv - > "$tmp/c17" 2>&1
+check "hostile-17.3 class --csv -: no ESC or BEL byte from a file's name" \
+    sh -c "! grep -q \"\$(printf '\\033\\|\\007')\" '$tmp/c17'"
+check "hostile-17.4 ... the name shown escaped" grep -qF 'c\x1b]0;t\x07d' "$tmp/c17"
 
 report

@@ -5,7 +5,7 @@
 ** Every report is made from the rows alone (class.h), so the terminal, the
 ** CSV and the page say the same.  Names and messages come from the students'
 ** files: each goes out through the one escaping of its kind (sbuf.h:
-** pt_sbuf_add_term, pt_sbuf_add_csv, pt_sbuf_add_xml).  A histogram counts
+** pt_sbuf_add_term, pt_sbuf_add_csv_untrusted, pt_sbuf_add_xml).  A histogram counts
 ** the rows whose verdict is FAIL: by the stage that goes wrong first, and by
 ** the mistake named ("unknown" and each "ambiguous: ..." a bar of its own),
 ** the bars largest first, ties by name, so the order never depends on the
@@ -250,18 +250,18 @@ void pt_class_csv(pt_sbuf *sb, const pt_class *c)
         vertices_of(r, v, sizeof v);
         pixels_of(r, p, sizeof p);
         image_of(r, im, sizeof im);
-        pt_sbuf_add_csv(sb, r->name);
+        pt_sbuf_add_csv_untrusted(sb, r->name);
         pt_sbuf_add(sb, ",");
-        pt_sbuf_add_csv(sb, r->trace ? r->trace : "");
+        pt_sbuf_add_csv_untrusted(sb, r->trace ? r->trace : "");
         pt_sbuf_add(sb, ",");
-        pt_sbuf_add_csv(sb, r->image ? r->image : "");
+        pt_sbuf_add_csv_untrusted(sb, r->image ? r->image : "");
         pt_sbuf_addf(sb, ",%s,", pt_class_verdict(r));
         pt_sbuf_add_csv(sb, r->why ? "" : dash(stage_of(r)));
         pt_sbuf_add(sb, ",");
         pt_sbuf_add_csv(sb, r->why ? "" : dash(pt_class_mistake(r, m, sizeof m)));
         pt_sbuf_addf(sb, ",%s,%s,%s,", r->why ? "" : dash(v), r->why ? "" : dash(p),
                      r->why ? "" : dash(im));
-        pt_sbuf_add_csv(sb, r->why ? r->why : "");
+        pt_sbuf_add_csv_untrusted(sb, r->why ? r->why : "");
         pt_sbuf_add(sb, "\r\n");
     }
 }
