@@ -236,10 +236,25 @@ static int jsonl_line(lctx *c, const char *p, const char *e)
         for (n = 0; n < 3; n++) q->rgb[n] = rgb[n] / 255.0;
         q->line = c->line;
         if (jnum(p, e, "\"coverage\":", &q->cov) != 0) q->cov = -1;
+        if (jnum(p, e, "\"primitive\":", &x) == 0) q->prim = (uint32_t)x;
+        if (jstr(p, e, "\"position\":", &s, &n) == 0 && pt_names_intern(c->nm, s, n, &q->pos) != 0)
+            return -2;
         t->raster = 1;
         return 0;
     }
-    return 0;                   /* primitive, summary, warnings: not compared */
+    if (n == 9 && !memcmp(s, "primitive", 9)) {   /* after its pixels: a line's last one */
+        const char *k;
+        size_t kn;
+        uint32_t id;
+        if (t->npx && jstr(p, e, "\"kind\":", &k, &kn) == 0 && kn == 4 && !memcmp(k, "line", 4) &&
+            jnum(p, e, "\"primitive\":", &x) == 0 && jstr(p, e, "\"position\":", &s, &n) == 0) {
+            if (pt_names_intern(c->nm, s, n, &id) != 0) return -2;
+            if (t->px[t->npx - 1].prim == (uint32_t)x && t->px[t->npx - 1].pos == id)
+                t->px[t->npx - 1].seg_end = 1;
+        }
+        return 0;
+    }
+    return 0;                   /* summary, warnings: not compared */
 }
 
 /* ===== the text trace ===== */
@@ -331,10 +346,22 @@ static int text_line(lctx *c, const char *p, const char *e)
         for (n = 0; n < 3; n++) px->rgb[n] = rgb[n] / 255.0;
         px->line = c->line;
         if (tval(q, e, "coverage ", &px->cov) != 0) px->cov = -1;
+        px->prim = (uint32_t)strtod(w2 + 1, NULL);
+        if (pt_names_intern(c->nm, s, n, &px->pos) != 0) return -2;
         t->raster = 1;
         return 0;
     }
-    if (w2[0] == 'p') return 0;     /* drawn, skipped, clipped: the pixels say it */
+    if (w2[0] == 'p' && n3 == 5 && !memcmp(w3, "drawn", 5) && t->npx) {  /* a line's last pixel */
+        const char *k;
+        size_t kn;
+        uint32_t id;
+        if (pt_names_intern(c->nm, s, n, &id) != 0) return -2;
+        if (word(&q, e, &k, &kn) == 0 && kn == 4 && !memcmp(k, "line", 4) &&
+            t->px[t->npx - 1].pos == id && t->px[t->npx - 1].prim == (uint32_t)strtod(w2 + 1, NULL))
+            t->px[t->npx - 1].seg_end = 1;
+        return 0;
+    }
+    if (w2[0] == 'p') return 0;     /* skipped, clipped: the pixels say it */
     unread(t, c->line);
     return 0;
 }
@@ -387,6 +414,8 @@ typedef struct logst {
     uint32_t pos;                /* the position being rendered */
     int have_pos;
     int st;                      /* the stage of the list, or -1 */
+    int line_prim;               /* 1: the pixels since line_px are a segment's */
+    size_t line_px;              /* pixels read when its Rasterize line came */
     uint32_t count[PT_T79_NSTAGES];     /* vertices listed at each stage */
     size_t first[PT_T79_NSTAGES];       /* vx[] held this many when the stage's list began */
 } logst;
@@ -534,6 +563,13 @@ static const char *const log_known[] = {
     "[[", " [", "  [x,y,z,w]", "Clip", "Near_Clip", "\t", "    "
 };
 
+/* The segment being rasterized is done: its last pixel has no gamma. */
+static void end_segment(pt_t79 *t, logst *g)
+{
+    if (g->line_prim && t->npx > g->line_px) t->px[t->npx - 1].seg_end = 1;
+    g->line_prim = 0;
+}
+
 static int log_line(lctx *c, logst *g, const char *p, const char *e)
 {
     pt_t79 *t = c->t;
@@ -552,6 +588,7 @@ static int log_line(lctx *c, logst *g, const char *p, const char *e)
         g->have_pos = p[4] == ' ';
         return 0;
     }
+    if (starts(p, e, "====== End model:")) { end_segment(t, g); return 0; }
     if (starts(p, e, "==== End position:")) { g->have_pos = 0; memset(g->count, 0, sizeof g->count); return 0; }
     if (starts(p, e, "  perspective = ")) { t->persp = p[16] == 't'; t->have_cam = 1; return 0; }
     if (starts(p, e, "  left = ")) {
@@ -571,6 +608,12 @@ static int log_line(lctx *c, logst *g, const char *p, const char *e)
     if (p[0] >= '0' && p[0] <= '9' && (q = memchr(p, '.', (size_t)(e - p))) != NULL && q + 2 <= e &&
         q[1] == ' ') {
         int st = log_stage(q + 2, e);
+        if (starts(q + 2, e, "Rasterize: ")) {
+            end_segment(t, g);
+            g->line_prim = starts(q + 2, e, "Rasterize: LineSegment");
+            g->line_px = t->npx;
+            return 0;
+        }
         if (st < 0) return 0;                   /* the clip stages' segment blocks */
         if (jkey(q, e, "vIndex =")) return log_vertex(c, g, st, q, e);
         if (jkey(q, e, "cIndex =")) return log_color(c, g, st, q, e);
@@ -649,6 +692,7 @@ int pt_t79_parse(pt_t79 *t, const char *path, const char *buf, size_t len, pt_na
         return -1;
     }
     if (rc) return -1;
+    if (t->kind == PT_T79_LOG) end_segment(t, &g);
     if (t->kind != PT_T79_LOG) pair_trace_pixels(t);
     else if (t->npx && t->aa < 0) {
         size_t k;

@@ -57,6 +57,9 @@ typedef struct pt_t79px {
     double cov;                  /* its coverage (a trace's), or -1 */
     uint32_t line;               /* line of the file */
     uint32_t pair;               /* 1-based index of the anti-aliasing partner, 0: none */
+    uint32_t pos, prim;          /* its position's name id, its primitive (a trace's; log: 0) */
+    unsigned char seg_end;       /* 1: a segment's last pixel, which the course
+                                 ** writes after the loop, without gamma */
 } pt_t79px;
 
 /* A trace or log read back. */

@@ -146,25 +146,25 @@ const pt_mistake79 pt_mistakes79[PT_NMISTAKES79] = {
     {PT_T79_CAMERA, 0, "the skew forgotten",
      "x_c = (2*x_v)/(r-l) without x_v + (z_v*(r+l))/2 (orthographic: without "
      "x_v - (r+l)/2): the view volume's centre line is not moved onto the -z axis, "
-     "so an asymmetric rectangle (r+l != 0) is off centre", skew_forgotten, NULL},
+     "so an asymmetric rectangle (r+l != 0) is off centre", skew_forgotten, NULL, 0},
     {PT_T79_CAMERA, 0, "the skew's sign wrong",
      "x = x_v - (z_v*(r+l))/2 for x_v + (z_v*(r+l))/2: the centre line moves the "
-     "other way, twice as far off", skew_sign, NULL},
+     "other way, twice as far off", skew_sign, NULL, 0},
     {PT_T79_CAMERA, 0, "scaled by the width, not the half-width",
      "x_c = x/(r-l) for (2*x)/(r-l): dividing by r-l makes the half-width 1/2, so "
-     "the picture is half as big", half_size, NULL},
+     "the picture is half as big", half_size, NULL, 0},
     {PT_T79_CAMERA, 0, "scaled by the half-width twice",
      "x_c = (2*x)/((r-l)/2): the half-width becomes 2, the picture twice as big",
-     double_size, NULL},
+     double_size, NULL, 0},
     {PT_T79_VIEW, 9, "the camera translation added",
      "x_v = x_w + x_e for x_w - x_e: the world moves with the camera instead of "
-     "against it", view_added, NULL},
+     "against it", view_added, NULL, 0},
     {PT_T79_NSTAGES, 0, "gamma applied twice",
-     "c = pow(pow(c, 1/2.2), 1/2.2): the colours come out too light", NULL, gamma_twice},
+     "c = pow(pow(c, 1/2.2), 1/2.2): the colours come out too light", NULL, gamma_twice, 1},
     {PT_T79_NSTAGES, 0, "gamma not applied",
      "c written as interpolated, without pow(c, 1/2.2) though gamma is on: the "
-     "colours come out too dark", NULL, gamma_none},
+     "colours come out too dark", NULL, gamma_none, 1},
     {PT_T79_NSTAGES, 0, "the anti-aliasing weights swapped",
      "the pixel nearer the line gets the weight 1 - w of the one farther away "
-     "(and the other way round): each step's two colours trade places", NULL, aa_swapped},
+     "(and the other way round): each step's two colours trade places", NULL, aa_swapped, 0},
 };

@@ -43,6 +43,8 @@ typedef struct pt_mistake79 {
                                  /* a pixel mistake: the colour's interval from
                                  ** EXPECTED's colour rgb (+- tol) and that of
                                  ** its anti-aliasing partner; or NULL */
+    int gamma;                   /* 1: a mistake of the gamma, which leaves a
+                                 ** segment's last pixel (written without gamma) be */
 } pt_mistake79;
 
 #define PT_NMISTAKES79 8
