@@ -43,6 +43,8 @@
 #include "stages/r7_view2camera.h"     /* renderers 7 and 9: the camera stage */
 #include "stages/r9_view2camera.h"     /*   (diff's catalogue of their mistakes) */
 #include "stages/r9_world2view.h"
+#include "stages/rv_nearclip.h"        /*   and the clip stages */
+#include "stages/rv_clip.h"
 #include "stages/wasm/pt_wasm_in.h"    /* the journey page's module: where its inputs go */
 /* the core: parse, plan, run, listen; the DDA; one point's journey */
 #include "core/scene.h"                /* the scene, parsed */

@@ -74,8 +74,22 @@ static pt_t79px *new_pixel(pt_t79 *t)
     return &t->px[t->npx++];
 }
 
+static pt_t79prim *new_prim(pt_t79 *t)
+{
+    if (t->npr == t->cap_pr) {
+        size_t cap = t->cap_pr ? 2 * t->cap_pr : 64;
+        pt_t79prim *p = realloc(t->pr, cap * sizeof *p);
+        if (!p) return NULL;
+        t->pr = p;
+        t->cap_pr = cap;
+    }
+    memset(&t->pr[t->npr], 0, sizeof t->pr[0]);
+    return &t->pr[t->npr++];
+}
+
 void pt_t79_free(pt_t79 *t)
 {
+    free(t->pr);
     free(t->vx);
     free(t->px);
     memset(t, 0, sizeof *t);
@@ -505,6 +519,36 @@ static int log_color(lctx *c, logst *g, int st, const char *p, const char *e)
     return 0;
 }
 
+/* A primitive of the list entering a clip stage: "LineSegment: ([0, 1], [0, 1])"
+** or "Point: ([0], [0]) radius = 2". */
+static int log_prim(lctx *c, logst *g, int st, const char *p, const char *e)
+{
+    const char *q;
+    double a[4], r = 0;
+    pt_t79prim *pr;
+    int point, k, n;
+
+    if ((q = jkey(p, e, "LineSegment: ([")) != NULL) point = 0;
+    else if ((q = jkey(p, e, "Point: ([")) != NULL) point = 1;
+    else return 0;
+    n = point ? 2 : 4;
+    for (k = 0; k < n; k++) {
+        while (q < e && (*q == ',' || *q == ' ' || *q == ']' || *q == '[')) q++;
+        if (num(&q, e, &a[k]) != 0 || a[k] < 0 || a[k] > 4e9) return fail(c, "a primitive unread");
+    }
+    if (point && jnum(q, e, "radius =", &r) != 0) return fail(c, "a point without its radius");
+    if (!(pr = new_prim(c->t))) return -2;
+    pr->pos = g->pos;
+    pr->st = (unsigned char)st;
+    pr->point = (unsigned char)point;
+    pr->v[0] = (uint32_t)a[0];
+    pr->v[1] = point ? pr->v[0] : (uint32_t)a[1];
+    pr->c[0] = (uint32_t)a[point ? 1 : 2];
+    pr->c[1] = point ? pr->c[0] : (uint32_t)a[3];
+    pr->radius = (int)r;
+    return 0;
+}
+
 /* One pixel of a log's pixel line. */
 static int log_pixel(lctx *c, int64_t x, int64_t y, const char *p, const char *e, int pair)
 {
@@ -617,7 +661,8 @@ static int log_line(lctx *c, logst *g, const char *p, const char *e)
         if (st < 0) return 0;                   /* the clip stages' segment blocks */
         if (jkey(q, e, "vIndex =")) return log_vertex(c, g, st, q, e);
         if (jkey(q, e, "cIndex =")) return log_color(c, g, st, q, e);
-        return 0;                               /* primitives */
+        if (st == PT_T79_CAMERA || st == PT_T79_NEARCLIP) return log_prim(c, g, st, q, e);
+        return 0;
     }
     for (k = 0; k < sizeof log_known / sizeof log_known[0]; k++)
         if (starts(p, e, log_known[k])) return 0;

@@ -62,6 +62,16 @@ typedef struct pt_t79px {
                                  ** writes after the loop, without gamma */
 } pt_t79px;
 
+/* A primitive a log lists as a clip stage's input (0-based, as the log). */
+typedef struct pt_t79prim {
+    uint32_t pos;                /* position name id */
+    unsigned char st;            /* PT_T79_CAMERA: entering the near clip;
+                                 ** PT_T79_NEARCLIP: entering the clip */
+    unsigned char point;         /* 1: a Point (v[0], c[0], radius) */
+    uint32_t v[2], c[2];         /* vertex and colour indices */
+    int radius;
+} pt_t79prim;
+
 /* A trace or log read back. */
 typedef struct pt_t79 {
     pt_t79_kind kind;
@@ -77,6 +87,7 @@ typedef struct pt_t79 {
     int raster;                  /* 1: the rasterizer's pixels are in it */
     pt_t79v *vx; size_t nvx, cap_vx;    /* vertices, file order; owned */
     pt_t79px *px; size_t npx, cap_px;   /* pixels, file order; owned */
+    pt_t79prim *pr; size_t npr, cap_pr; /* a log's primitive lists; owned */
     uint64_t unread;             /* lines of no kind read here */
     uint64_t unread_line;        /*   the first of them (0: none) */
 } pt_t79;

@@ -13,6 +13,7 @@
 ** or undone, or the two pixels of an anti-aliased step swapped.
 */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "io/tread79.h"
 #include "tools/catalogue79.h"
@@ -100,6 +101,123 @@ static void view_added(const pt_c79cam *c, const double prev[4], const double ri
     out[0] = o.x; out[1] = o.y; out[2] = o.z; out[3] = o.w;
 }
 
+/* ===== the clip stages ===== */
+
+/* The cuts a clip stage made, heard through its listener. */
+typedef struct cutlog {
+    pt_rv_cut c[4096];           /* in order */
+    size_t prim[4096];           /* the primitive each cut belongs to */
+    size_t n, nprim;
+    int full;                    /* 1: more than fit */
+} cutlog;
+
+static void hear_prim(void *ud, const pt_rv_model *m, const pt_rv_prim *p)
+{
+    cutlog *cl = ud;
+    (void)m; (void)p;
+    cl->nprim++;
+}
+
+static void hear_cut(void *ud, const pt_rv_cut *cut)
+{
+    cutlog *cl = ud;
+    if (cl->n < sizeof cl->c / sizeof cl->c[0]) {
+        cl->prim[cl->n] = cl->nprim;
+        cl->c[cl->n++] = *cut;
+    } else {
+        cl->full = 1;
+    }
+}
+
+/* The real stage st on m (near plane n), its cuts into *cl when cl is not NULL. */
+static int run_stage(int st, double n, pt_rv_model *m, cutlog *cl)
+{
+    pt_rv_clip_ls ls;
+    int rc;
+
+    memset(&ls, 0, sizeof ls);
+    ls.begin = hear_prim;
+    ls.cut = hear_cut;
+    ls.ud = cl;
+    rc = st == PT_T79_NEARCLIP ? pt_rv_nearclip(m, n, cl ? &ls : NULL) : pt_rv_clip(m, cl ? &ls : NULL);
+    return rc < 0 || (cl && cl->full) ? -1 : 0;
+}
+
+/* z <= -n kept for z <= n: the near plane on the camera's other side. */
+static int near_sign(const pt_c79cam *c, pt_rv_model *m)
+{
+    return run_stage(PT_T79_NEARCLIP, -c->n, m, NULL);
+}
+
+/* No near clip at all: nothing cut, nothing made. */
+static int near_ignored(const pt_c79cam *c, pt_rv_model *m)
+{
+    (void)c; (void)m;
+    return 0;
+}
+
+/* The colours of cut k's two ends (pt_rv_cut's c[0], c[1]) as the mistake
+** made them: an end an earlier cut of the same primitive made has the colour
+** the mistake gave it (already in m), not the stage's. */
+static void ends_of(const cutlog *cl, size_t k, const pt_rv_model *m, pt_rgb e[2])
+{
+    size_t j;
+    int i;
+    for (i = 0; i < 2; i++) {
+        e[i] = cl->c[k].c[i];
+        for (j = k; j-- > 0 && cl->prim[j] == cl->prim[k];)
+            if (!memcmp(&e[i], &cl->c[j].c[2], sizeof e[i])) {
+                e[i] = m->c[cl->c[j].c_new];
+                break;
+            }
+    }
+}
+
+/* Each new vertex gets the kept end's colour instead of (1-t)*c_1 + t*c_0. */
+static int color_kept(int st, const pt_c79cam *c, pt_rv_model *m)
+{
+    cutlog *cl = calloc(1, sizeof *cl);
+    size_t k;
+    if (!cl || run_stage(st, c->n, m, cl) != 0) { free(cl); return -1; }
+    for (k = 0; k < cl->n; k++) {
+        pt_rgb e[2];
+        ends_of(cl, k, m, e);
+        m->c[cl->c[k].c_new] = st == PT_T79_NEARCLIP ? e[cl->c[k].off == 0 ? 1 : 0] : e[0];
+    }
+    free(cl);
+    return 0;
+}
+
+static int near_color_kept(const pt_c79cam *c, pt_rv_model *m) { return color_kept(PT_T79_NEARCLIP, c, m); }
+static int clip_color_kept(const pt_c79cam *c, pt_rv_model *m) { return color_kept(PT_T79_CLIP, c, m); }
+
+/* One component in bytes: (int)((1-t)*B_1 + t*B_0), B = the Color's byte. */
+static float byte_mix(double t, float c1, float c0)
+{
+    int b = (int)((1 - t) * pt_color_byte(c1) + t * pt_color_byte(c0));
+    return (float)b / 255.0f;                   /* new Color(int, int, int) */
+}
+
+/* Each new colour interpolated in the Color's bytes (getRed() ..), not its floats. */
+static int color_bytes(int st, const pt_c79cam *c, pt_rv_model *m)
+{
+    cutlog *cl = calloc(1, sizeof *cl);
+    size_t k;
+    if (!cl || run_stage(st, c->n, m, cl) != 0) { free(cl); return -1; }
+    for (k = 0; k < cl->n; k++) {
+        pt_rgb e[2], *o = &m->c[cl->c[k].c_new];
+        ends_of(cl, k, m, e);
+        o->r = byte_mix(cl->c[k].t, e[1].r, e[0].r);
+        o->g = byte_mix(cl->c[k].t, e[1].g, e[0].g);
+        o->b = byte_mix(cl->c[k].t, e[1].b, e[0].b);
+    }
+    free(cl);
+    return 0;
+}
+
+static int near_color_bytes(const pt_c79cam *c, pt_rv_model *m) { return color_bytes(PT_T79_NEARCLIP, c, m); }
+static int clip_color_bytes(const pt_c79cam *c, pt_rv_model *m) { return color_bytes(PT_T79_CLIP, c, m); }
+
 /* ===== the pixels ===== */
 
 /* c (+- tol) through f, increasing, into [lo, hi], clamped to 0 .. 1. */
@@ -146,25 +264,46 @@ const pt_mistake79 pt_mistakes79[PT_NMISTAKES79] = {
     {PT_T79_CAMERA, 0, "the skew forgotten",
      "x_c = (2*x_v)/(r-l) without x_v + (z_v*(r+l))/2 (orthographic: without "
      "x_v - (r+l)/2): the view volume's centre line is not moved onto the -z axis, "
-     "so an asymmetric rectangle (r+l != 0) is off centre", skew_forgotten, NULL, 0},
+     "so an asymmetric rectangle (r+l != 0) is off centre", skew_forgotten, NULL, NULL, 0},
     {PT_T79_CAMERA, 0, "the skew's sign wrong",
      "x = x_v - (z_v*(r+l))/2 for x_v + (z_v*(r+l))/2: the centre line moves the "
-     "other way, twice as far off", skew_sign, NULL, 0},
+     "other way, twice as far off", skew_sign, NULL, NULL, 0},
     {PT_T79_CAMERA, 0, "scaled by the width, not the half-width",
      "x_c = x/(r-l) for (2*x)/(r-l): dividing by r-l makes the half-width 1/2, so "
-     "the picture is half as big", half_size, NULL, 0},
+     "the picture is half as big", half_size, NULL, NULL, 0},
     {PT_T79_CAMERA, 0, "scaled by the half-width twice",
      "x_c = (2*x)/((r-l)/2): the half-width becomes 2, the picture twice as big",
-     double_size, NULL, 0},
+     double_size, NULL, NULL, 0},
     {PT_T79_VIEW, 9, "the camera translation added",
      "x_v = x_w + x_e for x_w - x_e: the world moves with the camera instead of "
-     "against it", view_added, NULL, 0},
+     "against it", view_added, NULL, NULL, 0},
+    {PT_T79_NEARCLIP, 0, "the near plane's sign wrong",
+     "a vertex kept when z <= -n (the plane z = -n, behind the camera) for "
+     "z <= n: what lies between the two planes is not cut, what lies beyond "
+     "-n is cut there", NULL, near_sign, NULL, 0},
+    {PT_T79_NEARCLIP, 0, "the near plane ignored",
+     "no segment cut at z = n: what lies behind the camera is projected "
+     "through it (x_c / -z_c with z_c > 0) and comes out mirrored", NULL, near_ignored, NULL, 0},
+    {PT_T79_NEARCLIP, 0, "the near clip's colour not interpolated",
+     "the new vertex gets the colour of the end kept, for (1-t)*c_1 + t*c_0",
+     NULL, near_color_kept, NULL, 0},
+    {PT_T79_CLIP, 0, "the clip's colour not interpolated",
+     "the new vertex gets the inside end's colour, for (1-t)*c_o + t*c_i",
+     NULL, clip_color_kept, NULL, 0},
+    {PT_T79_NEARCLIP, 0, "the near clip's colour interpolated in bytes",
+     "(int)((1-t)*getRed() + t*getRed()) of the two Colors for the float "
+     "components (1-t)*r_1 + t*r_0: a byte truncated, not the float kept",
+     NULL, near_color_bytes, NULL, 0},
+    {PT_T79_CLIP, 0, "the clip's colour interpolated in bytes",
+     "(int)((1-t)*getRed() + t*getRed()) of the two Colors for the float "
+     "components (1-t)*r_o + t*r_i: a byte truncated, not the float kept",
+     NULL, clip_color_bytes, NULL, 0},
     {PT_T79_NSTAGES, 0, "gamma applied twice",
-     "c = pow(pow(c, 1/2.2), 1/2.2): the colours come out too light", NULL, gamma_twice, 1},
+     "c = pow(pow(c, 1/2.2), 1/2.2): the colours come out too light", NULL, NULL, gamma_twice, 1},
     {PT_T79_NSTAGES, 0, "gamma not applied",
      "c written as interpolated, without pow(c, 1/2.2) though gamma is on: the "
-     "colours come out too dark", NULL, gamma_none, 1},
+     "colours come out too dark", NULL, NULL, gamma_none, 1},
     {PT_T79_NSTAGES, 0, "the anti-aliasing weights swapped",
      "the pixel nearer the line gets the weight 1 - w of the one farther away "
-     "(and the other way round): each step's two colours trade places", NULL, aa_swapped, 0},
+     "(and the other way round): each step's two colours trade places", NULL, NULL, aa_swapped, 0},
 };

@@ -9,6 +9,11 @@
 **                    formula, the wrong inputs", the real stage called with
 **                    those inputs: stages/r7_view2camera.c, r9_view2camera.c,
 **                    r9_world2view.c; no formula is written again here);
+**   clip mistakes    the near clip or the rectangle clip run on the model
+**                    entering it (EXPECTED's vertices and colours, a log's
+**                    primitive list): the real stage (stages/rv_nearclip.c,
+**                    rv_clip.c) with the near plane moved, or heard cut by
+**                    cut (pt_rv_clip_ls) and each new colour made the wrong way;
 **   pixel mistakes   one pixel's colour, from EXPECTED's pixel colours, as an
 **                    interval (EXPECTED's colours are rounded: a byte, or 4
 **                    decimals), the rasterizer's pixels otherwise the same.
@@ -38,6 +43,11 @@ typedef struct pt_mistake79 {
                                  /* a vertex mistake: the stage's (x, y, z, w)
                                  ** from the stage before (prev) and EXPECTED's
                                  ** own at this stage (right); or NULL */
+    int (*clip)(const pt_c79cam *cam, pt_rv_model *m);
+                                 /* a clip mistake: the stage on m, the new
+                                 ** vertices and colours appended as the stage
+                                 ** appends them; 0, or -1 (out of memory, a
+                                 ** colour Java refuses); or NULL */
     void (*pixel)(const double rgb[3], const double partner[3], int paired, double tol,
                   double lo[3], double hi[3]);
                                  /* a pixel mistake: the colour's interval from
@@ -47,7 +57,7 @@ typedef struct pt_mistake79 {
                                  ** segment's last pixel (written without gamma) be */
 } pt_mistake79;
 
-#define PT_NMISTAKES79 8
+#define PT_NMISTAKES79 14
 extern const pt_mistake79 pt_mistakes79[PT_NMISTAKES79];
 
 #endif

@@ -268,6 +268,117 @@ static int explains_vertices(const d79 *c, const pt_mistake79 *m, const pt_c79ca
     return any;
 }
 
+/* EXPECTED's colour of vertex v of pos at stage st, or the nearest stage
+** before it that has one; NULL when none does. */
+static const double *color_at(const d79 *c, uint32_t pos, int st, uint32_t v)
+{
+    for (; st >= 0; st--) {
+        const pt_t79v *r = find(c, 0, pos, st, v);
+        if (r && r->has_rgb) return r->rgb;
+    }
+    return NULL;
+}
+
+/* The primitives entering clip stage st for pos: side s's list (a log's),
+** [*first, *first + *n). */
+static void prims_of(const d79 *c, int s, uint32_t pos, int st, size_t *first, size_t *n)
+{
+    int want = st == PT_T79_NEARCLIP ? PT_T79_CAMERA : PT_T79_NEARCLIP, pass;
+    size_t k;
+    for (pass = 0; pass < 2; pass++, want = PT_T79_CAMERA) {
+        *n = 0;
+        for (k = 0; k < c->t[s].npr; k++) {
+            const pt_t79prim *p = &c->t[s].pr[k];
+            if (p->pos != pos || p->st != want) continue;
+            if (!*n) *first = k;
+            (*n)++;
+        }
+        if (*n || st == PT_T79_NEARCLIP) return;
+    }
+}
+
+/* 1 when clip mistake m, run on EXPECTED's model entering its stage for pos,
+** makes ACTUAL's new vertices of that stage; 0 otherwise or when it cannot be
+** run (no primitive list, a colour index not its vertex's). */
+static int explains_clip_pos(const d79 *c, const pt_mistake79 *m, const pt_c79cam *cam,
+                             uint32_t pos)
+{
+    int in = m->stage == PT_T79_NEARCLIP ? PT_T79_CAMERA : PT_T79_IMAGE, s, ok = 1;
+    size_t first = 0, n = 0, k, nold = 0, nact = 0;
+    pt_rv_model mdl;
+    const pt_t79 *src;
+
+    for (s = 0; s < 2 && !n; s++) prims_of(c, s, pos, m->stage, &first, &n);
+    if (!n) return 0;
+    src = &c->t[s - 1];
+    memset(&mdl, 0, sizeof mdl);
+    for (;; nold++) {                           /* vertices 1, 2, .. of the stage before */
+        const pt_t79v *r = find(c, 0, pos, in, (uint32_t)nold + 1);
+        const double *rgb = color_at(c, pos, in, (uint32_t)nold + 1);
+        pt_vec4 v;
+        pt_rgb col;
+        if (!r) break;
+        if (!rgb) { ok = 0; break; }
+        v.x = r->x[0]; v.y = r->x[1]; v.z = r->x[2]; v.w = r->has_w ? r->x[3] : 1.0;
+        col.r = (float)rgb[0]; col.g = (float)rgb[1]; col.b = (float)rgb[2];
+        if (pt_rv_add_vertex(&mdl, v) != 0 || pt_rv_add_color(&mdl, col) != 0) { ok = 0; break; }
+    }
+    for (k = first; ok && k < src->npr; k++) {
+        const pt_t79prim *p = &src->pr[k];
+        pt_rv_prim q;
+        if (p->pos != pos || (p->st != src->pr[first].st)) continue;
+        if (p->v[0] != p->c[0] || p->v[1] != p->c[1] || p->v[0] >= nold || p->v[1] >= nold) {
+            ok = 0;
+            break;
+        }
+        memset(&q, 0, sizeof q);
+        q.kind = p->point ? PT_RV_POINT : PT_RV_LINE;
+        q.v[0] = p->v[0]; q.v[1] = p->v[1]; q.c[0] = p->c[0]; q.c[1] = p->c[1];
+        q.radius = p->radius;
+        if (pt_rv_add_prim(&mdl, &q) != 0) ok = 0;
+    }
+    if (ok && m->clip(cam, &mdl) != 0) ok = 0;
+    for (k = nold; ok && k < mdl.nv; k++) {     /* each vertex the mistake made */
+        const pt_t79v *a = find(c, 1, pos, m->stage, (uint32_t)k + 1);
+        double p[3];
+        int i;
+        if (!a) { ok = 0; break; }
+        p[0] = mdl.v[k].x; p[1] = mdl.v[k].y; p[2] = mdl.v[k].z;
+        for (i = 0; i < 3 && ok; i++) {
+            double tol = c->t[1].vtol + 4 * c->t[0].vtol + 4 * DBL_EPSILON * fabs(p[i]);
+            if (!(fabs(p[i] - a->x[i]) <= fmax(tol, c->o->tol)) && p[i] != a->x[i]) ok = 0;
+        }
+        if (ok && a->has_rgb && k < mdl.nc) {
+            const float f[3] = {mdl.c[k].r, mdl.c[k].g, mdl.c[k].b};
+            for (i = 0; i < 3; i++) {
+                if (c->t[1].cbytes ? pt_color_byte(f[i]) != (unsigned)lround(a->rgb[i] * 255)
+                                   : fabs((double)f[i] - a->rgb[i]) > c->t[1].ctol + 1e-7)
+                    ok = 0;
+            }
+        }
+    }
+    for (k = 0; ok && k < c->t[1].nvx; k++)     /* and none more */
+        if (c->t[1].vx[k].pos == pos && c->t[1].vx[k].st == m->stage)
+            nact++;
+    if (ok && nact != mdl.nv - nold) ok = 0;
+    pt_rv_model_free(&mdl);
+    return ok;
+}
+
+/* 1 when clip mistake m explains the new vertices of every position. */
+static int explains_clip(const d79 *c, const pt_mistake79 *m, const pt_c79cam *cam)
+{
+    size_t k;
+    int in = m->stage == PT_T79_NEARCLIP ? PT_T79_CAMERA : PT_T79_IMAGE, any = 0;
+    for (k = 0; k < c->t[0].nvx; k++) {
+        const pt_t79v *r = &c->t[0].vx[k];
+        if (r->st != in || r->v != 1) continue;
+        if (!explains_clip_pos(c, m, cam, r->pos)) return 0;
+        any = 1;
+    }
+    return any;
+}
+
 typedef struct pixfit {
     const pt_mistake79 *m;
     int ok;
@@ -310,6 +421,9 @@ static int fit(const d79 *c, int st, int *which)
         if (m->vertex) {
             if (st == PT_T79_CAMERA && !c->t[0].have_cam) continue;
             ok = explains_vertices(c, m, &cam);
+        } else if (m->clip) {
+            if (st == PT_T79_NEARCLIP && !c->t[0].have_cam) continue;
+            ok = explains_clip(c, m, &cam);
         } else {
             pixfit f;
             pixcount pc;
@@ -383,9 +497,13 @@ static int run(d79 *c)
         if (k->only[0] || k->only[1]) printf("; %zu only in EXPECTED, %zu only in ACTUAL",
                                              k->only[0], k->only[1]);
         printf("\n");
-        if (first < 0 && (k->differ || (k->both && (k->only[0] || k->only[1])))) first = st;
-        if (!k->both) proven = 0;
-        differ += k->differ + (k->both ? k->only[0] + k->only[1] : 0);
+        {
+            int made = st == PT_T79_NEARCLIP || st == PT_T79_CLIP;  /* may be one-sided */
+            size_t one = k->both || made ? k->only[0] + k->only[1] : 0;
+            if (first < 0 && (k->differ || one)) first = st;
+            if (!k->both && !made) proven = 0;
+            differ += k->differ + one;
+        }
     }
     printf("\n");
     if (c->t[0].raster && c->t[1].raster) {
