@@ -319,7 +319,8 @@ static int text_line(lctx *c, const char *p, const char *e)
         return 0;
     }
     if ((n == 5 && !memcmp(s, "scene", 5)) || (n == 11 && !memcmp(s, "framebuffer", 11)) ||
-        (n == 8 && !memcmp(s, "viewport", 8)))
+        (n == 8 && !memcmp(s, "viewport", 8)) || (n == 7 && !memcmp(s, "summary", 7)) ||
+        (n == 6 && !memcmp(s, "models", 6)))
         return 0;
     if (word(&q, e, &w2, &n2) != 0 || word(&q, e, &w3, &n3) != 0 || n2 < 2 ||
         (w2[0] != 'v' && w2[0] != 'p')) {
@@ -350,6 +351,7 @@ static int text_line(lctx *c, const char *p, const char *e)
     if (w2[0] == 'p' && n3 == 5 && !memcmp(w3, "pixel", 5)) {
         pt_t79px *px;
         double fx, fy, rgb[3];
+        int k;
         const char *r = jkey(q, e, "rgb = ");
         if (tval(q, e, "x_fb = ", &fx) || tval(q, e, "y_fb = ", &fy) || !r ||
             num(&r, e, &rgb[0]) || num(&r, e, &rgb[1]) || num(&r, e, &rgb[2]))
@@ -357,7 +359,7 @@ static int text_line(lctx *c, const char *p, const char *e)
         if (!(px = new_pixel(t))) return -2;
         px->x = (int64_t)fx;
         px->y = (int64_t)fy;
-        for (n = 0; n < 3; n++) px->rgb[n] = rgb[n] / 255.0;
+        for (k = 0; k < 3; k++) px->rgb[k] = rgb[k] / 255.0;
         px->line = c->line;
         if (tval(q, e, "coverage ", &px->cov) != 0) px->cov = -1;
         px->prim = (uint32_t)strtod(w2 + 1, NULL);

@@ -79,15 +79,28 @@ static int num_agree(const d79 *c, double a, double b, double ta, double tb)
     return fabs(a - b) <= fmax(c->o->tol, c->o->rel * m) + ta + tb;
 }
 
+/* The bytes java.awt.Color may make of side s's colour component x: [*lo, *hi]
+** (a byte itself; a float printed to fewer digits may stand for either of two). */
+static void byte_range(const d79 *c, int s, double x, unsigned *lo, unsigned *hi)
+{
+    if (c->t[s].cbytes) {
+        *lo = *hi = (unsigned)lround(x * 255);
+    } else {
+        *lo = pt_color_byte((float)(x - c->t[s].ctol));
+        *hi = pt_color_byte((float)(x + c->t[s].ctol));
+    }
+}
+
 /* 1 when the vertex colours a (of side 0) and b (side 1) agree. */
 static int color_agree(const d79 *c, const double *a, const double *b)
 {
     int k, bytes = c->t[0].cbytes || c->t[1].cbytes;
     for (k = 0; k < 3; k++) {
         if (bytes) {
-            unsigned ba = c->t[0].cbytes ? (unsigned)lround(a[k] * 255) : pt_color_byte((float)a[k]);
-            unsigned bb = c->t[1].cbytes ? (unsigned)lround(b[k] * 255) : pt_color_byte((float)b[k]);
-            if (ba != bb) return 0;
+            unsigned alo, ahi, blo, bhi;
+            byte_range(c, 0, a[k], &alo, &ahi);
+            byte_range(c, 1, b[k], &blo, &bhi);
+            if (ahi < blo || bhi < alo) return 0;
         } else if (!num_agree(c, a[k], b[k], c->t[0].ctol, c->t[1].ctol)) {
             return 0;
         }
@@ -138,7 +151,10 @@ static void print_vertex(const d79 *c, const pt_t79v *a, const pt_t79v *b, unsig
            pt_t79_stage_name(a->st));
     for (k = 0; k < 5; k++) {
         if (!(m & (1u << k))) continue;
-        if (k < 4) printf("  %s %.17g | %.17g", nm[k], a->x[k], b->x[k]);
+        if (k < 4) {
+            char ea[PT_NUMLEN], eb[PT_NUMLEN];
+            printf("  %s %s | %s", nm[k], pt_diff_num(a->x[k], ea), pt_diff_num(b->x[k], eb));
+        }
         else printf("  rgb %.6g %.6g %.6g | %.6g %.6g %.6g", a->rgb[0], a->rgb[1], a->rgb[2],
                     b->rgb[0], b->rgb[1], b->rgb[2]);
     }
@@ -164,7 +180,7 @@ static void compare_vertices(const d79 *c, stagecount sc[PT_T79_NSTAGES])
             if (m) {
                 if (!sc[p->st].differ++) sc[p->st].first = i;
                 if (shown++ < c->o->show) {
-                    if (shown == 1) printf("Vertices that differ (EXPECTED | ACTUAL):\n");
+                    if (shown == 1) printf("Vertices that differ (position vN stage: EXPECTED | ACTUAL):\n");
                     print_vertex(c, p, q, m);
                 }
             }
@@ -238,6 +254,16 @@ static int prev_stage(const d79 *c, int st)
     return -1;
 }
 
+/* How much a stage of cam may grow an error of EXPECTED's numbers (its
+** rounding to the digits it printed): the camera stage's skew and scale, at
+** least 3 (the view mistake's 2 world - view). */
+static double gain(const pt_c79cam *cam)
+{
+    double s = fmax(2 / fabs(cam->r - cam->l), 2 / fabs(cam->t - cam->b));
+    double g = 4 * (1 + fabs(cam->r + cam->l) + fabs(cam->t + cam->b)) * fmax(1, s);
+    return isfinite(g) && g > 3 ? g : 3;
+}
+
 /* 1 when vertex mistake m gives ACTUAL's values at its stage for every vertex. */
 static int explains_vertices(const d79 *c, const pt_mistake79 *m, const pt_c79cam *cam)
 {
@@ -255,7 +281,8 @@ static int explains_vertices(const d79 *c, const pt_mistake79 *m, const pt_c79ca
         if (!e || !p) return 0;
         m->vertex(cam, p->x, e->x, out);
         for (i = 0; i < 3; i++) {
-            double tol = c->t[1].vtol + 4 * DBL_EPSILON * fmax(fabs(out[i]), fabs(a->x[i]));
+            double tol = c->t[1].vtol + gain(cam) * c->t[0].vtol +
+                         4 * DBL_EPSILON * fmax(fabs(out[i]), fabs(a->x[i]));
             if (!(fabs(out[i] - a->x[i]) <= fmax(tol, c->o->tol)) && !(out[i] == a->x[i]))
                 return 0;
         }
@@ -410,6 +437,7 @@ static int fit(const d79 *c, int st, int *which)
     pt_c79cam cam;
     int k, n = 0, first = -1;
     char names[1024] = "";
+    pbuf pb;
 
     cam.renderer = c->t[0].renderer;
     cam.persp = c->t[0].persp;
@@ -440,15 +468,20 @@ static int fit(const d79 *c, int st, int *which)
         }
     }
     if (n == 1) {
-        printf("Mistake: %s (%s): %s.\n", pt_mistakes79[first].name,
-               st < PT_T79_NSTAGES ? pt_t79_stage_name(st) : "pixels", pt_mistakes79[first].how);
+        printf("Mistake: %s (%s).\n", pt_mistakes79[first].name,
+               st < PT_T79_NSTAGES ? pt_t79_stage_name(st) : "pixels");
+        pb.n = 0;
+        pt_diff_add(&pb, "%s.", pt_mistakes79[first].how);
+        pt_diff_para("  ", pb.b);
     } else if (n > 1) {
         printf("Mistake: ambiguous: %s (each gives ACTUAL's %s exactly).\n", names,
                st < PT_T79_NSTAGES ? pt_t79_stage_name(st) : "pixels");
     } else {
-        printf("Mistake: unknown (no known mistake of %s gives ACTUAL's values for every "
-               "%s).\n", st < PT_T79_NSTAGES ? pt_t79_stage_name(st) : "the pixels",
-               st < PT_T79_NSTAGES ? "vertex" : "pixel");
+        pb.n = 0;
+        pt_diff_add(&pb, "Mistake: unknown (no known mistake of %s gives ACTUAL's values for "
+                    "every %s).", st < PT_T79_NSTAGES ? pt_t79_stage_name(st) : "the pixels",
+                    st < PT_T79_NSTAGES ? "vertex" : "pixel");
+        pt_diff_para("", pb.b);
     }
     *which = first;
     return n;
