@@ -218,6 +218,111 @@ static int color_bytes(int st, const pt_c79cam *c, pt_rv_model *m)
 static int near_color_bytes(const pt_c79cam *c, pt_rv_model *m) { return color_bytes(PT_T79_NEARCLIP, c, m); }
 static int clip_color_bytes(const pt_c79cam *c, pt_rv_model *m) { return color_bytes(PT_T79_CLIP, c, m); }
 
+/* ===== a cut made the wrong way ===== */
+
+/* Cut k again, t from p[1] (t = 0) to p[0] (t = 1) where coordinate i (0: x,
+** 1: y, 2: z) reaches e: t = (e - a_i)/(b_i - a_i); coordinate `at` set to
+** `val`, the others (1-t)*a + t*b (the rectangle clip's z 0).  The stages'
+** own interpolation (rv_nearclip.c, rv_clip.c), here to take the mistake's
+** i and e: same_cut() checks, on every cut, that the right i and e give the
+** stage's own point bit for bit. */
+static pt_rv_cut recut(int st, const pt_rv_cut *k, int i, double e, int at, double val)
+{
+    pt_rv_cut q = *k;
+    const double a[3] = {k->p[1].x, k->p[1].y, k->p[1].z};
+    const double b[3] = {k->p[0].x, k->p[0].y, k->p[0].z};
+    double t = (e - a[i]) / (b[i] - a[i]), o[3];
+    int j;
+
+    for (j = 0; j < 2; j++) o[j] = (1 - t)*a[j] + t*b[j];     /* x = (1-t) x_1 + t x_0 */
+    o[2] = st == PT_T79_NEARCLIP ? val : 0;
+    o[at] = val;
+    q.t = t;
+    q.plane = val;
+    q.p[2].x = o[0]; q.p[2].y = o[1]; q.p[2].z = o[2]; q.p[2].w = 1.0;
+    return q;
+}
+
+/* The coordinate cut k's t is computed from, and the plane's value there. */
+static void right_of(int st, const pt_rv_cut *k, int *i, double *e)
+{
+    *i = st == PT_T79_NEARCLIP ? 2 : k->edge == PT_RV_XPOS || k->edge == PT_RV_XNEG ? 0 : 1;
+    *e = k->plane;
+}
+
+/* 1 when recut() with the right coordinate and plane is the stage's cut k. */
+static int same_cut(int st, const pt_rv_cut *k)
+{
+    int i;
+    double e;
+    pt_rv_cut q;
+    right_of(st, k, &i, &e);
+    q = recut(st, k, i, e, i, e);
+    return !memcmp(&q.t, &k->t, sizeof q.t) && !memcmp(&q.p[2], &k->p[2], sizeof q.p[2]);
+}
+
+/* The stage's cuts on a copy of m, each made again by how(): the new
+** vertices appended to m.  -1 when a cut fails same_cut(), when a primitive
+** is cut more than once (after a wrong first cut the student's loop goes its
+** own way), or when how() says the student's point is not the last cut. */
+static int cuts_again(int st, const pt_c79cam *c, pt_rv_model *m,
+                      int (*how)(int st, const pt_rv_cut *k, pt_rv_cut *q))
+{
+    cutlog *cl = calloc(1, sizeof *cl);
+    pt_rv_model cp;
+    size_t k;
+    int rc = 0;
+
+    memset(&cp, 0, sizeof cp);
+    if (!cl) return -1;
+    for (k = 0; k < m->nv && rc == 0; k++) rc = pt_rv_add_vertex(&cp, m->v[k]);
+    for (k = 0; k < m->nc && rc == 0; k++) rc = pt_rv_add_color(&cp, m->c[k]);
+    for (k = 0; k < m->np && rc == 0; k++) rc = pt_rv_add_prim(&cp, &m->p[k]);
+    if (rc == 0) rc = run_stage(st, c->n, &cp, cl);
+    for (k = 0; k < cl->n && rc == 0; k++) {
+        pt_rv_cut q;
+        if (!same_cut(st, &cl->c[k]) || (k > 0 && cl->prim[k - 1] == cl->prim[k]) ||
+            (k + 1 < cl->n && cl->prim[k + 1] == cl->prim[k]) || how(st, &cl->c[k], &q) != 0)
+            rc = -1;
+        else
+            rc = pt_rv_cut_finish(m, &q, NULL) != 0 ? -1 : 0;  /* its colour, in float */
+    }
+    pt_rv_model_free(&cp);
+    free(cl);
+    return rc;
+}
+
+/* 1 when p lies in the view rectangle: the student's loop stops there. */
+static int inside(const pt_vec4 *p)
+{
+    return fabs(p->x) <= 1 && fabs(p->y) <= 1;
+}
+
+/* t from the other coordinate: the near clip's y for z, the rectangle's y
+** for x and x for y. */
+static int t_other(int st, const pt_rv_cut *k, pt_rv_cut *q)
+{
+    int i;
+    double e;
+    right_of(st, k, &i, &e);
+    *q = recut(st, k, st == PT_T79_NEARCLIP ? 1 : 1 - i, e, i, e);
+    return st == PT_T79_NEARCLIP || inside(&q->p[2]) ? 0 : -1;
+}
+
+/* The rectangle's edges swapped: the end beyond x = +1 cut at x = -1, and so on. */
+static int edge_swapped(int st, const pt_rv_cut *k, pt_rv_cut *q)
+{
+    int i;
+    double e;
+    right_of(st, k, &i, &e);
+    *q = recut(st, k, i, -e, i, -e);
+    return inside(&q->p[2]) ? 0 : -1;
+}
+
+static int near_t_other(const pt_c79cam *c, pt_rv_model *m) { return cuts_again(PT_T79_NEARCLIP, c, m, t_other); }
+static int clip_t_other(const pt_c79cam *c, pt_rv_model *m) { return cuts_again(PT_T79_CLIP, c, m, t_other); }
+static int clip_swapped(const pt_c79cam *c, pt_rv_model *m) { return cuts_again(PT_T79_CLIP, c, m, edge_swapped); }
+
 /* ===== the pixels ===== */
 
 /* c (+- tol) through f, increasing, into [lo, hi], clamped to 0 .. 1. */
@@ -298,6 +403,15 @@ const pt_mistake79 pt_mistakes79[PT_NMISTAKES79] = {
      "(int)((1-t)*getRed() + t*getRed()) of the two Colors for the float "
      "components (1-t)*r_o + t*r_i: a byte truncated, not the float kept",
      NULL, clip_color_bytes, NULL, 0},
+    {PT_T79_NEARCLIP, 0, "the near clip's t from y",
+     "t = (n - y_1)/(y_0 - y_1) for (n - z_1)/(z_0 - z_1): the new vertex is "
+     "where the segment's y, not its z, reaches n", NULL, near_t_other, NULL, 0},
+    {PT_T79_CLIP, 0, "the clip's t from the other coordinate",
+     "at x = +-1, t = (e - y_o)/(y_i - y_o) for (e - x_o)/(x_i - x_o) (y for x at "
+     "y = +-1): the new vertex slides to the square's corner", NULL, clip_t_other, NULL, 0},
+    {PT_T79_CLIP, 0, "the clip's edges swapped",
+     "the end beyond x = +1 cut at x = -1 (and x = -1 at +1, y likewise): the new "
+     "vertex lies on the segment's far side, past its inside end", NULL, clip_swapped, NULL, 0},
     {PT_T79_NSTAGES, 0, "gamma applied twice",
      "c = pow(pow(c, 1/2.2), 1/2.2): the colours come out too light", NULL, NULL, gamma_twice, 1},
     {PT_T79_NSTAGES, 0, "gamma not applied",

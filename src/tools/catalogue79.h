@@ -57,7 +57,7 @@ typedef struct pt_mistake79 {
                                  ** segment's last pixel (written without gamma) be */
 } pt_mistake79;
 
-#define PT_NMISTAKES79 14
+#define PT_NMISTAKES79 17
 extern const pt_mistake79 pt_mistakes79[PT_NMISTAKES79];
 
 #endif

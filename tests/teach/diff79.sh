@@ -43,7 +43,7 @@ mistake() {
     done
 }
 
-for scene in r7-skew-aa r7-near r7-near-amb r9-view-skew; do
+for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r9-view-skew; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -69,6 +69,9 @@ mistake r7-near nearkept "the near clip's colour not interpolated"
 mistake r7-near nearbytes "the near clip's colour interpolated in bytes"
 mistake r7-near clipkept "the clip's colour not interpolated"
 mistake r7-near clipbytes "the clip's colour interpolated in bytes"
+mistake r7-near neart "the near clip's t from y"
+mistake r7-clip1 clipt "the clip's t from the other coordinate"
+mistake r7-clip1 clipswap "the clip's edges swapped"
 mistake r9-view-skew viewadd "the camera translation added"
 mistake r9-view-skew skewneg "the skew's sign wrong"
 
