@@ -46,6 +46,14 @@ int pt_t79_renderer(const char *buf, size_t len)
     return 0;
 }
 
+/* 1 when x is a whole number in lo .. hi (not NaN). */
+static int whole(double x, double lo, double hi)
+{
+    return x >= lo && x <= hi && x == floor(x);
+}
+
+#define PT_T79_BIG 9007199254740992.0   /* 2^53: a pixel's coordinates stay below */
+
 /* ===== growing the arrays ===== */
 
 static pt_t79v *new_vertex(pt_t79 *t)
@@ -84,6 +92,7 @@ static pt_t79prim *new_prim(pt_t79 *t)
         t->cap_pr = cap;
     }
     memset(&t->pr[t->npr], 0, sizeof t->pr[0]);
+    t->pr[t->npr].seq = t->npr;
     return &t->pr[t->npr++];
 }
 
@@ -201,7 +210,7 @@ static int jsonl_line(lctx *c, const char *p, const char *e)
     if (jstr(p, e, "\"type\":", &s, &n) != 0) { unread(t, c->line); return 0; }
     if (n == 6 && !memcmp(s, "header", 6)) {
         const char *cam = jkey(p, e, "\"camera\":");
-        if (jnum(p, e, "\"renderer\":", &x) == 0) t->renderer = (int)x;
+        if (jnum(p, e, "\"renderer\":", &x) == 0 && whole(x, 0, 99)) t->renderer = (int)x;
         if (cam) {
             const char *ps;
             size_t pn;
@@ -242,7 +251,8 @@ static int jsonl_line(lctx *c, const char *p, const char *e)
     if (n == 5 && !memcmp(s, "pixel", 5)) {
         pt_t79px *q;
         double px, py, rgb[3];
-        if (jnum(p, e, "\"x\":", &px) || jnum(p, e, "\"y\":", &py) || jtriple(p, e, "\"rgb\":", rgb))
+        if (jnum(p, e, "\"x\":", &px) || jnum(p, e, "\"y\":", &py) || jtriple(p, e, "\"rgb\":", rgb) ||
+            !whole(px, -PT_T79_BIG, PT_T79_BIG) || !whole(py, -PT_T79_BIG, PT_T79_BIG))
             return fail(c, "a pixel record without x, y and rgb");
         if (!(q = new_pixel(t))) return -2;
         q->x = (int64_t)px;
@@ -250,7 +260,7 @@ static int jsonl_line(lctx *c, const char *p, const char *e)
         for (n = 0; n < 3; n++) q->rgb[n] = rgb[n] / 255.0;
         q->line = c->line;
         if (jnum(p, e, "\"coverage\":", &q->cov) != 0) q->cov = -1;
-        if (jnum(p, e, "\"primitive\":", &x) == 0) q->prim = (uint32_t)x;
+        if (jnum(p, e, "\"primitive\":", &x) == 0 && whole(x, 0, 4e9)) q->prim = (uint32_t)x;
         if (jstr(p, e, "\"position\":", &s, &n) == 0 && pt_names_intern(c->nm, s, n, &q->pos) != 0)
             return -2;
         t->raster = 1;
@@ -261,7 +271,8 @@ static int jsonl_line(lctx *c, const char *p, const char *e)
         size_t kn;
         uint32_t id;
         if (t->npx && jstr(p, e, "\"kind\":", &k, &kn) == 0 && kn == 4 && !memcmp(k, "line", 4) &&
-            jnum(p, e, "\"primitive\":", &x) == 0 && jstr(p, e, "\"position\":", &s, &n) == 0) {
+            jnum(p, e, "\"primitive\":", &x) == 0 && whole(x, 0, 4e9) &&
+            jstr(p, e, "\"position\":", &s, &n) == 0) {
             if (pt_names_intern(c->nm, s, n, &id) != 0) return -2;
             if (t->px[t->npx - 1].prim == (uint32_t)x && t->px[t->npx - 1].pos == id)
                 t->px[t->npx - 1].seg_end = 1;
@@ -291,6 +302,13 @@ static int tval(const char *p, const char *e, const char *key, double *x)
     return v ? num(&v, e, x) : -1;
 }
 
+/* The number of a text trace's "pN" (0 when it is none). */
+static uint32_t prim_number(const char *w)
+{
+    double x = strtod(w + 1, NULL);
+    return whole(x, 0, 4e9) ? (uint32_t)x : 0;
+}
+
 static int text_line(lctx *c, const char *p, const char *e)
 {
     pt_t79 *t = c->t;
@@ -302,7 +320,7 @@ static int text_line(lctx *c, const char *p, const char *e)
     if (p == e || *p == '#') return 0;
     if (word(&q, e, &s, &n) != 0) return 0;
     if (n == 8 && !memcmp(s, "renderer", 8)) {
-        if (num(&q, e, &x) == 0) t->renderer = (int)x;
+        if (num(&q, e, &x) == 0 && whole(x, 0, 99)) t->renderer = (int)x;
         return 0;
     }
     if (n == 6 && !memcmp(s, "camera", 6)) {
@@ -331,7 +349,7 @@ static int text_line(lctx *c, const char *p, const char *e)
         pt_t79v *v;
         uint32_t id;
         x = strtod(w2 + 1, NULL);
-        if (x < 1 || x > 4e9) return fail(c, "a vertex line without its number");
+        if (!whole(x, 1, 4e9)) return fail(c, "a vertex line without its number");
         if (pt_names_intern(c->nm, s, n, &id) != 0 || !(v = new_vertex(t))) return -2;
         v->pos = id;
         v->v = (uint32_t)x;
@@ -354,7 +372,8 @@ static int text_line(lctx *c, const char *p, const char *e)
         int k;
         const char *r = jkey(q, e, "rgb = ");
         if (tval(q, e, "x_fb = ", &fx) || tval(q, e, "y_fb = ", &fy) || !r ||
-            num(&r, e, &rgb[0]) || num(&r, e, &rgb[1]) || num(&r, e, &rgb[2]))
+            num(&r, e, &rgb[0]) || num(&r, e, &rgb[1]) || num(&r, e, &rgb[2]) ||
+            !whole(fx, -PT_T79_BIG, PT_T79_BIG) || !whole(fy, -PT_T79_BIG, PT_T79_BIG))
             return fail(c, "a pixel line without x_fb, y_fb and rgb");
         if (!(px = new_pixel(t))) return -2;
         px->x = (int64_t)fx;
@@ -362,7 +381,7 @@ static int text_line(lctx *c, const char *p, const char *e)
         for (k = 0; k < 3; k++) px->rgb[k] = rgb[k] / 255.0;
         px->line = c->line;
         if (tval(q, e, "coverage ", &px->cov) != 0) px->cov = -1;
-        px->prim = (uint32_t)strtod(w2 + 1, NULL);
+        px->prim = prim_number(w2);
         if (pt_names_intern(c->nm, s, n, &px->pos) != 0) return -2;
         t->raster = 1;
         return 0;
@@ -373,7 +392,7 @@ static int text_line(lctx *c, const char *p, const char *e)
         uint32_t id;
         if (pt_names_intern(c->nm, s, n, &id) != 0) return -2;
         if (word(&q, e, &k, &kn) == 0 && kn == 4 && !memcmp(k, "line", 4) &&
-            t->px[t->npx - 1].pos == id && t->px[t->npx - 1].prim == (uint32_t)strtod(w2 + 1, NULL))
+            t->px[t->npx - 1].pos == id && t->px[t->npx - 1].prim == prim_number(w2))
             t->px[t->npx - 1].seg_end = 1;
         return 0;
     }
@@ -407,7 +426,7 @@ static int csv_line(lctx *c, const char *p, const char *e)
     v->st = (unsigned char)st;
     v->line = c->line;
     x = strtod(f[2], NULL);
-    if (x < 1 || x > 4e9) return fail(c, "a CSV row without its vertex number");
+    if (!whole(x, 1, 4e9)) return fail(c, "a CSV row without its vertex number");
     v->v = (uint32_t)x;
     for (k = 0; k < 4; k++) {
         const char *q = f[4 + k];
@@ -471,7 +490,7 @@ static int log_vertex(lctx *c, logst *g, int st, const char *p, const char *e)
     int n = 0;
     pt_t79v *v;
 
-    if (!q || num(&q, e, &k) != 0 || k < 0 || k > 4e9) return fail(c, "a vIndex line unread");
+    if (!q || num(&q, e, &k) != 0 || !whole(k, 0, 4e9)) return fail(c, "a vIndex line unread");
     q = jkey(q, e, "=");
     if (!q) return fail(c, "a vIndex line without its coordinates");
     while (q < e && (*q == ' ' || *q == '(')) q++;
@@ -506,7 +525,7 @@ static int log_color(lctx *c, logst *g, int st, const char *p, const char *e)
     double k, rgb[3];
     size_t i;
 
-    if (!q || num(&q, e, &k) != 0 || k < 0) return fail(c, "a cIndex line unread");
+    if (!q || num(&q, e, &k) != 0 || !whole(k, 0, 4e9)) return fail(c, "a cIndex line unread");
     if (log_byte(q, e, "r=", &rgb[0]) || log_byte(q, e, "g=", &rgb[1]) || log_byte(q, e, "b=", &rgb[2]))
         return fail(c, "a cIndex line without its colour");
     if (!g->count[st]) return 0;
@@ -536,9 +555,10 @@ static int log_prim(lctx *c, logst *g, int st, const char *p, const char *e)
     n = point ? 2 : 4;
     for (k = 0; k < n; k++) {
         while (q < e && (*q == ',' || *q == ' ' || *q == ']' || *q == '[')) q++;
-        if (num(&q, e, &a[k]) != 0 || a[k] < 0 || a[k] > 4e9) return fail(c, "a primitive unread");
+        if (num(&q, e, &a[k]) != 0 || !whole(a[k], 0, 4e9)) return fail(c, "a primitive unread");
     }
-    if (point && jnum(q, e, "radius =", &r) != 0) return fail(c, "a point without its radius");
+    if (point && (jnum(q, e, "radius =", &r) != 0 || !whole(r, 0, 1e9)))
+        return fail(c, "a point without its radius");
     if (!(pr = new_prim(c->t))) return -2;
     pr->pos = g->pos;
     pr->st = (unsigned char)st;
@@ -571,29 +591,38 @@ static int log_pixel(lctx *c, int64_t x, int64_t y, const char *p, const char *e
     return 0;
 }
 
+/* 1 when a log's three pixel coordinates are whole and far from overflowing. */
+static int in_range(double a, double b, double b2)
+{
+    double m = PT_T79_BIG / 2;
+    return whole(a, -m, m) && whole(b, -m, m) && whole(b2, -m, m);
+}
+
 static int log_pixel_line(lctx *c, const char *p, const char *e)
 {
     double vx, vy, a, b, b2;
     const char *q, *lo, *hi;
     int rc;
 
-    if (jnum(p, e, "vp_[x=", &vx) || jnum(p, e, ", y=", &vy))
+    if (jnum(p, e, "vp_[x=", &vx) || jnum(p, e, ", y=", &vy) || !whole(vx, -1e9, 1e9) ||
+        !whole(vy, -1e9, 1e9))
         return fail(c, "a pixel line without its viewport");
     if ((q = jkey(p, e, "(x_vp=")) != NULL) {
-        if (num(&q, e, &a) || !(q = jkey(q, e, "y_vp=")) || num(&q, e, &b))
+        if (num(&q, e, &a) || !(q = jkey(q, e, "y_vp=")) || num(&q, e, &b) ||
+            !whole(a, -PT_T79_BIG / 2, PT_T79_BIG / 2) || !whole(b, -PT_T79_BIG / 2, PT_T79_BIG / 2))
             return fail(c, "a pixel line without x_vp and y_vp");
         return log_pixel(c, (int64_t)(vx + a), (int64_t)(vy + b), q, e, 0);
     }
     if ((q = jkey(p, e, "  x_vp=")) != NULL && (lo = jkey(q, e, "{y_low=")) != NULL &&
         (hi = jkey(q, e, "{y_hi =")) != NULL) {
-        if (num(&q, e, &a) || num(&lo, e, &b) || num(&hi, e, &b2))
+        if (num(&q, e, &a) || num(&lo, e, &b) || num(&hi, e, &b2) || !in_range(a, b, b2))
             return fail(c, "an anti-aliased pixel line unread");
         rc = log_pixel(c, (int64_t)(vx + a), (int64_t)(vy + b), lo, hi, 0);
         return rc ? rc : log_pixel(c, (int64_t)(vx + a), (int64_t)(vy + b2), hi, e, 1);
     }
     if ((q = jkey(p, e, "  y_vp=")) != NULL && (lo = jkey(q, e, "{x_low=")) != NULL &&
         (hi = jkey(q, e, "{x_hi =")) != NULL) {
-        if (num(&q, e, &b) || num(&lo, e, &a) || num(&hi, e, &b2))
+        if (num(&q, e, &b) || num(&lo, e, &a) || num(&hi, e, &b2) || !in_range(a, b, b2))
             return fail(c, "an anti-aliased pixel line unread");
         rc = log_pixel(c, (int64_t)(vx + a), (int64_t)(vy + b), lo, hi, 0);
         return rc ? rc : log_pixel(c, (int64_t)(vx + b2), (int64_t)(vy + b), hi, e, 1);

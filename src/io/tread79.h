@@ -70,6 +70,7 @@ typedef struct pt_t79prim {
     unsigned char point;         /* 1: a Point (v[0], c[0], radius) */
     uint32_t v[2], c[2];         /* vertex and colour indices */
     int radius;
+    size_t seq;                  /* its place among the file's primitives */
 } pt_t79prim;
 
 /* A trace or log read back. */

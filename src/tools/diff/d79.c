@@ -45,6 +45,15 @@ static int cmp_vx(const void *a, const void *b)
     return *(const size_t *)a < *(const size_t *)b ? -1 : 1;
 }
 
+/* Primitives by (position, stage), in file order within. */
+static int cmp_pr(const void *a, const void *b)
+{
+    const pt_t79prim *p = a, *q = b;
+    if (p->pos != q->pos) return p->pos < q->pos ? -1 : 1;
+    if (p->st != q->st) return p->st < q->st ? -1 : 1;
+    return p->seq < q->seq ? -1 : p->seq > q->seq;
+}
+
 static int cmp_px(const void *a, const void *b)
 {
     const pt_t79px *p = &sort_ctx->t[sort_side].px[*(const size_t *)a];
@@ -79,15 +88,23 @@ static int num_agree(const d79 *c, double a, double b, double ta, double tb)
     return fabs(a - b) <= fmax(c->o->tol, c->o->rel * m) + ta + tb;
 }
 
+/* x * 255 rounded, within -1 .. 256 (NaN: -1): a byte read back, or out of range. */
+static long byte_of(double x)
+{
+    double b = x * 255;
+    if (!(b > -1)) return -1;
+    return b > 256 ? 256 : lround(b);
+}
+
 /* The bytes java.awt.Color may make of side s's colour component x: [*lo, *hi]
 ** (a byte itself; a float printed to fewer digits may stand for either of two). */
 static void byte_range(const d79 *c, int s, double x, unsigned *lo, unsigned *hi)
 {
     if (c->t[s].cbytes) {
-        *lo = *hi = (unsigned)lround(x * 255);
+        *lo = *hi = (unsigned)(byte_of(x) + 1);     /* shifted by 1, as below */
     } else {
-        *lo = pt_color_byte((float)(x - c->t[s].ctol));
-        *hi = pt_color_byte((float)(x + c->t[s].ctol));
+        *lo = pt_color_byte((float)(x - c->t[s].ctol)) + 1u;
+        *hi = pt_color_byte((float)(x + c->t[s].ctol)) + 1u;
     }
 }
 
@@ -203,7 +220,7 @@ static int pcolor_agree(const d79 *c, const double *a, const double *b)
     int k;
     for (k = 0; k < 3; k++) {
         if (c->t[0].kind != PT_T79_LOG && c->t[1].kind != PT_T79_LOG) {
-            if (lround(a[k] * 255) != lround(b[k] * 255)) return 0;
+            if (byte_of(a[k]) != byte_of(b[k])) return 0;
         } else if (fabs(a[k] - b[k]) > c->t[0].ptol + c->t[1].ptol + 1e-9) {
             return 0;
         }
@@ -306,22 +323,50 @@ static const double *color_at(const d79 *c, uint32_t pos, int st, uint32_t v)
     return NULL;
 }
 
+/* The first of side s's primitives of (pos, st) or after: prims sorted by cmp_pr. */
+static size_t prim_lower(const d79 *c, int s, uint32_t pos, int st)
+{
+    size_t lo = 0, hi = c->t[s].npr;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        const pt_t79prim *p = &c->t[s].pr[mid];
+        if (p->pos < pos || (p->pos == pos && p->st < st)) lo = mid + 1; else hi = mid;
+    }
+    return lo;
+}
+
 /* The primitives entering clip stage st for pos: side s's list (a log's),
-** [*first, *first + *n). */
+** [*first, *first + *n); the rectangle clip takes the near clip's output, or
+** the camera's list when there is none (nearclip off). */
 static void prims_of(const d79 *c, int s, uint32_t pos, int st, size_t *first, size_t *n)
 {
     int want = st == PT_T79_NEARCLIP ? PT_T79_CAMERA : PT_T79_NEARCLIP, pass;
-    size_t k;
     for (pass = 0; pass < 2; pass++, want = PT_T79_CAMERA) {
-        *n = 0;
-        for (k = 0; k < c->t[s].npr; k++) {
-            const pt_t79prim *p = &c->t[s].pr[k];
-            if (p->pos != pos || p->st != want) continue;
-            if (!*n) *first = k;
-            (*n)++;
-        }
+        size_t k = *first = prim_lower(c, s, pos, want);
+        while (k < c->t[s].npr && c->t[s].pr[k].pos == pos && c->t[s].pr[k].st == want) k++;
+        *n = k - *first;
         if (*n || st == PT_T79_NEARCLIP) return;
     }
+}
+
+/* How many records side s has of (pos, st). */
+static size_t count_at(const d79 *c, int s, uint32_t pos, int st)
+{
+    size_t lo = 0, hi = c->t[s].nvx, a;
+    pt_t79v key;
+    key.pos = pos; key.st = (unsigned char)st; key.v = 0;
+    while (lo < hi) {                           /* the first at or after (pos, st, 0) */
+        size_t mid = lo + (hi - lo) / 2;
+        if (key_cmp(&c->t[s].vx[c->ix[s][mid]], &key) < 0) lo = mid + 1; else hi = mid;
+    }
+    a = lo;
+    key.v = UINT32_MAX;
+    hi = c->t[s].nvx;
+    while (lo < hi) {                           /* the first after (pos, st, max) */
+        size_t mid = lo + (hi - lo) / 2;
+        if (key_cmp(&c->t[s].vx[c->ix[s][mid]], &key) <= 0) lo = mid + 1; else hi = mid;
+    }
+    return lo - a;
 }
 
 /* 1 when clip mistake m, run on EXPECTED's model entering its stage for pos,
@@ -331,7 +376,7 @@ static int explains_clip_pos(const d79 *c, const pt_mistake79 *m, const pt_c79ca
                              uint32_t pos)
 {
     int in = m->stage == PT_T79_NEARCLIP ? PT_T79_CAMERA : PT_T79_IMAGE, s, ok = 1;
-    size_t first = 0, n = 0, k, nold = 0, nact = 0;
+    size_t first = 0, n = 0, k, nold = 0;
     pt_rv_model mdl;
     const pt_t79 *src;
 
@@ -350,10 +395,9 @@ static int explains_clip_pos(const d79 *c, const pt_mistake79 *m, const pt_c79ca
         col.r = (float)rgb[0]; col.g = (float)rgb[1]; col.b = (float)rgb[2];
         if (pt_rv_add_vertex(&mdl, v) != 0 || pt_rv_add_color(&mdl, col) != 0) { ok = 0; break; }
     }
-    for (k = first; ok && k < src->npr; k++) {
+    for (k = first; ok && k < first + n; k++) {
         const pt_t79prim *p = &src->pr[k];
         pt_rv_prim q;
-        if (p->pos != pos || (p->st != src->pr[first].st)) continue;
         if (p->v[0] != p->c[0] || p->v[1] != p->c[1] || p->v[0] >= nold || p->v[1] >= nold) {
             ok = 0;
             break;
@@ -378,16 +422,13 @@ static int explains_clip_pos(const d79 *c, const pt_mistake79 *m, const pt_c79ca
         if (ok && a->has_rgb && k < mdl.nc) {
             const float f[3] = {mdl.c[k].r, mdl.c[k].g, mdl.c[k].b};
             for (i = 0; i < 3; i++) {
-                if (c->t[1].cbytes ? pt_color_byte(f[i]) != (unsigned)lround(a->rgb[i] * 255)
+                if (c->t[1].cbytes ? (long)pt_color_byte(f[i]) != byte_of(a->rgb[i])
                                    : fabs((double)f[i] - a->rgb[i]) > c->t[1].ctol + 1e-7)
                     ok = 0;
             }
         }
     }
-    for (k = 0; ok && k < c->t[1].nvx; k++)     /* and none more */
-        if (c->t[1].vx[k].pos == pos && c->t[1].vx[k].st == m->stage)
-            nact++;
-    if (ok && nact != mdl.nv - nold) ok = 0;
+    if (ok && count_at(c, 1, pos, m->stage) != mdl.nv - nold) ok = 0;   /* and none more */
     pt_rv_model_free(&mdl);
     return ok;
 }
@@ -518,6 +559,7 @@ static int run(d79 *c)
         sort_side = s;
         qsort(c->ix[s], c->t[s].nvx, sizeof *c->ix[s], cmp_vx);
         qsort(c->px[s], c->t[s].npx, sizeof *c->px[s], cmp_px);
+        if (c->t[s].npr) qsort(c->t[s].pr, c->t[s].npr, sizeof *c->t[s].pr, cmp_pr);
     }
     printf("Renderer %d: EXPECTED %s (%s), ACTUAL %s (%s)\n\n", c->t[0].renderer, c->o->path[0],
            kind_name(c->t[0].kind), c->o->path[1], kind_name(c->t[1].kind));
