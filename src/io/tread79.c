@@ -39,8 +39,11 @@ int pt_t79_renderer(const char *buf, size_t len)
     if (head[0] == '{' && (p = strstr(head, "\"renderer\":")) != NULL) return atoi(p + 11);
     if (!strncmp(head, "# pipetrace trace of a course renderer's scene", 46) &&
         (p = strstr(head, "\nrenderer ")) != NULL) return atoi(p + 10);
-    if (!strncmp(head, "model,position,v,stage,", 23))
-        return strstr(buf, ",world,") ? 9 : 7;
+    if (!strncmp(head, "model,position,v,stage,", 23)) {   /* renderer 9's has a world stage */
+        for (p = buf; (size_t)(buf + len - p) >= 7; p++)
+            if (*p == ',' && !memcmp(p, ",world,", 7)) return 9;
+        return 7;
+    }
     if (strstr(head, "Rendering of Scene (Pipeline ")) return 9;
     if (strstr(head, "\n-- Current Camera:\nCamera: \n  perspective = ")) return 7;
     return 0;

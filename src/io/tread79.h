@@ -93,8 +93,9 @@ typedef struct pt_t79 {
     uint64_t unread_line;        /*   the first of them (0: none) */
 } pt_t79;
 
-/* The renderer (7 or 9) whose scene buf[0..len) is a trace or log of, or 0.
-** This function can't fail. */
+/* The renderer (7 or 9) whose scene buf[0..len) is a trace or log of, or 0
+** (its first 1 KiB tell; a CSV trace, whether it has a world stage).  This
+** function can't fail. */
 int pt_t79_renderer(const char *buf, size_t len);
 
 /* Parse buf[0..len) (buf[len] == '\0'), named path in messages, into *t;
