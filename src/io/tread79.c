@@ -28,6 +28,15 @@ const char *pt_t79_stage_name(int st)
 
 /* ===== telling them apart ===== */
 
+/* 1 when s occurs in buf[0..n). */
+static int occurs(const char *buf, size_t n, const char *s)
+{
+    size_t k = strlen(s), i;
+    for (i = 0; i + k <= n; i++)
+        if (buf[i] == s[0] && !memcmp(buf + i, s, k)) return 1;
+    return 0;
+}
+
 int pt_t79_renderer(const char *buf, size_t len)
 {
     char head[1024];
@@ -46,6 +55,12 @@ int pt_t79_renderer(const char *buf, size_t len)
     }
     if (strstr(head, "Rendering of Scene (Pipeline ")) return 9;
     if (strstr(head, "\n-- Current Camera:\nCamera: \n  perspective = ")) return 7;
+    if (!strncmp(head, "==== 1. Render position: ", 25)) return 9;     /* Pipeline2, no scene.debug */
+    if (!strncmp(head, "==== Render position: ", 22)) {   /* no scene.debug: renderer 4's too */
+        n = len < ((size_t)1 << 16) ? len : (size_t)1 << 16;
+        if (occurs(buf, n, "\n1. View ")) return 7;
+        if (occurs(buf, n, "\n1. World ")) return 9;
+    }
     return 0;
 }
 
@@ -451,11 +466,8 @@ static int csv_line(lctx *c, const char *p, const char *e)
 typedef struct logst {
     uint32_t pos;                /* the position being rendered */
     int have_pos;
-    int st;                      /* the stage of the list, or -1 */
     int line_prim;               /* 1: the pixels since line_px are a segment's */
     size_t line_px;              /* pixels read when its Rasterize line came */
-    uint32_t count[PT_T79_NSTAGES];     /* vertices listed at each stage */
-    size_t first[PT_T79_NSTAGES];       /* vx[] held this many when the stage's list began */
 } logst;
 
 static int starts(const char *p, const char *e, const char *s)
@@ -464,19 +476,39 @@ static int starts(const char *p, const char *e, const char *s)
     return (size_t)(e - p) >= n && !memcmp(p, s, n);
 }
 
-/* The stage a log's "N. Word" names, with its list's vIndex/cIndex lines, or -1. */
+/* 1 when [w, e) starts with the word s, then a blank or a colon. */
+static int word_is(const char *w, const char *e, const char *s)
+{
+    size_t n = strlen(s);
+    return (size_t)(e - w) > n && !memcmp(w, s, n) && (w[n] == ' ' || w[n] == ':');
+}
+
+/* The stage a log's "N. Word" names, with its list's vIndex/cIndex lines, or
+** -1 (the clip stages' "Near_Clipping", "Clipped (accept)" blocks). */
 static int log_stage(const char *w, const char *e)
 {
-    if (starts(w, e, "Model ")) return PT_T79_MODEL;
-    if (starts(w, e, "World ")) return PT_T79_WORLD;
-    if (starts(w, e, "View ")) return PT_T79_VIEW;
-    if (starts(w, e, "Camera ")) return PT_T79_CAMERA;
-    if (starts(w, e, "Near_Clipped:") || starts(w, e, "Near_Clipped ")) return
-        starts(w, e, "Near_Clipped (") ? -1 : PT_T79_NEARCLIP;
-    if (starts(w, e, "Projected ")) return PT_T79_IMAGE;
-    if (starts(w, e, "Clipped ") || starts(w, e, "Clipped:")) return
-        starts(w, e, "Clipped (") ? -1 : PT_T79_CLIP;
+    static const char *const word[PT_T79_NSTAGES] = {
+        "Model", "World", "View", "Camera", "Near_Clipped", "Projected", "Clipped"
+    };
+    int st;
+    for (st = 0; st < PT_T79_NSTAGES; st++)
+        if (word_is(w, e, word[st]) && !starts(w + strlen(word[st]), e, " (")) return st;
     return -1;
+}
+
+/* -1, 0, 1 as a sorts before, with, after b by (position, stage, vertex). */
+static int key_order(const pt_t79v *a, const pt_t79v *b)
+{
+    if (a->pos != b->pos) return a->pos < b->pos ? -1 : 1;
+    if (a->st != b->st) return a->st < b->st ? -1 : 1;
+    return a->v < b->v ? -1 : a->v > b->v;
+}
+
+static const pt_t79 *sort_t;     /* qsort's comparison has no context argument */
+
+static int cmp_key(const void *a, const void *b)
+{
+    return key_order(&sort_t->vx[*(const size_t *)a], &sort_t->vx[*(const size_t *)b]);
 }
 
 /* The stage whose list the clip stage st extends (its old vertices), or -1. */
@@ -499,10 +531,7 @@ static int log_vertex(lctx *c, logst *g, int st, const char *p, const char *e)
     while (q < e && (*q == ' ' || *q == '(')) q++;
     while (n < 4 && num(&q, e, &x[n]) == 0) n++;
     if (n < 3) return fail(c, "a vIndex line without x, y and z");
-    if (g->count[st]++ == 0) g->first[st] = t->nvx;
-    if (before(st) >= 0 && (uint32_t)k < g->count[before(st)])
-        return 0;               /* an old vertex, listed again */
-    if (!(v = new_vertex(t))) return -2;
+    if (!(v = new_vertex(t))) return -2;       /* an old one listed again: old_again() */
     v->pos = g->pos;
     v->v = (uint32_t)k + 1;
     v->st = (unsigned char)st;
@@ -531,10 +560,9 @@ static int log_color(lctx *c, logst *g, int st, const char *p, const char *e)
     if (!q || num(&q, e, &k) != 0 || !whole(k, 0, 4e9)) return fail(c, "a cIndex line unread");
     if (log_byte(q, e, "r=", &rgb[0]) || log_byte(q, e, "g=", &rgb[1]) || log_byte(q, e, "b=", &rgb[2]))
         return fail(c, "a cIndex line without its colour");
-    if (!g->count[st]) return 0;
-    for (i = g->first[st]; i < t->nvx; i++) {
-        pt_t79v *v = &t->vx[i];
-        if (v->st == st && v->pos == g->pos && v->v == (uint32_t)k + 1) {
+    for (i = t->nvx; i-- > 0 && t->vx[i].st == st && t->vx[i].pos == g->pos;) {
+        pt_t79v *v = &t->vx[i];                 /* the stage's list, just read */
+        if (v->v == (uint32_t)k + 1) {
             memcpy(v->rgb, rgb, sizeof rgb);
             v->has_rgb = 1;
             return 0;
@@ -641,6 +669,35 @@ static const char *const log_known[] = {
     "[[", " [", "  [x,y,z,w]", "Clip", "Near_Clip", "\t", "    "
 };
 
+/* The clip stages' lists in a log repeat the old vertices: drop a record at
+** the near clip (the rectangle clip) that the camera (image) stage has too. */
+static int old_again(pt_t79 *t)
+{
+    size_t *ix = malloc((t->nvx + 1) * sizeof *ix), i, j = 0;
+    if (!ix) return -2;
+    for (i = 0; i < t->nvx; i++) ix[i] = i;
+    sort_t = t;
+    qsort(ix, t->nvx, sizeof *ix, cmp_key);
+    for (i = 0; i < t->nvx; i++) {
+        const pt_t79v *v = &t->vx[i];
+        pt_t79v key = *v;
+        size_t lo = 0, hi = t->nvx;
+        int b = before(v->st), found = 0;
+        if (b >= 0) {
+            key.st = (unsigned char)b;
+            while (lo < hi && !found) {
+                size_t mid = lo + (hi - lo) / 2;
+                int r = key_order(&t->vx[ix[mid]], &key);
+                if (r == 0) found = 1; else if (r < 0) lo = mid + 1; else hi = mid;
+            }
+        }
+        if (!found) t->vx[j++] = *v;
+    }
+    t->nvx = j;
+    free(ix);
+    return 0;
+}
+
 /* The segment being rasterized is done: its last pixel has no gamma. */
 static void end_segment(pt_t79 *t, logst *g)
 {
@@ -655,19 +712,27 @@ static int log_line(lctx *c, logst *g, const char *p, const char *e)
     size_t k;
 
     if (p == e) return 0;
-    if (starts(p, e, "==== Render position: ") || starts(p, e, "====== Render model: ")) {
-        const char *s = p + (p[4] == ' ' ? 22 : 21), *f = e;
-        uint32_t id;
-        if (starts(p, e, "====== Render model: ") && g->have_pos) return 0;
-        while (f > s && (f[-1] == '=' || f[-1] == ' ')) f--;
-        if (pt_names_intern(c->nm, s, (size_t)(f - s), &id) != 0) return -2;
-        if (!g->have_pos || g->pos != id) memset(g->count, 0, sizeof g->count);
-        g->pos = id;
-        g->have_pos = p[4] == ' ';
-        return 0;
+    if (starts(p, e, "====")) {                 /* whose vertices follow */
+        /* "Render position: P", Pipeline 1's "Render model: M" under it, and
+        ** Pipeline 2's "Transform model: P::M" (Near_Clip, Project, Clip,
+        ** Rasterize: each stage for every position in turn) */
+        int w = (q = jkey(p, e, "Render position: ")) != NULL ? 0 :
+                (q = jkey(p, e, "Render model: ")) != NULL ? 2 :
+                (q = jkey(p, e, " model: ")) != NULL ? 1 : 3;
+        if (w < 3 && !(w == 2 && g->have_pos)) {        /* a model: its position's name */
+            const char *f = e, *m;
+            uint32_t id;
+            while (f > q && (f[-1] == '=' || f[-1] == ' ')) f--;
+            for (m = q; m + 1 < f; m++)         /* Pipeline2's "POSITION::MODEL" */
+                if (m[0] == ':' && m[1] == ':') { f = m; break; }
+            if (pt_names_intern(c->nm, q, (size_t)(f - q), &id) != 0) return -2;
+            g->pos = id;
+            g->have_pos = w < 2;
+            return 0;
+        }
+        if (w < 3) return 0;
     }
-    if (starts(p, e, "====== End model:")) { end_segment(t, g); return 0; }
-    if (starts(p, e, "==== End position:")) { g->have_pos = 0; memset(g->count, 0, sizeof g->count); return 0; }
+    if (starts(p, e, "====") && jkey(p, e, "End position:")) { g->have_pos = 0; return 0; }
     if (starts(p, e, "  perspective = ")) { t->persp = p[16] == 't'; t->have_cam = 1; return 0; }
     if (starts(p, e, "  left = ")) {
         if (jnum(p, e, "left = ", &t->l) || jnum(p, e, "right = ", &t->r)) return fail(c, "left, right unread");
@@ -771,7 +836,13 @@ int pt_t79_parse(pt_t79 *t, const char *path, const char *buf, size_t len, pt_na
         return -1;
     }
     if (rc) return -1;
-    if (t->kind == PT_T79_LOG) end_segment(t, &g);
+    if (t->kind == PT_T79_LOG) {
+        end_segment(t, &g);
+        if (old_again(t) != 0) {
+            snprintf(err, errlen, "%s: error: out of memory", path);
+            return -1;
+        }
+    }
     if (t->kind != PT_T79_LOG) pair_trace_pixels(t);
     else if (t->npx && t->aa < 0) {
         size_t k;
