@@ -635,6 +635,8 @@ static int log_pixel_line(lctx *c, const char *p, const char *e)
     const char *q, *lo, *hi;
     int rc;
 
+    if ((size_t)(e - p) > 9 && !memcmp(e - 9, ": Clipped", 9))
+        return 0;                               /* a point's pixel outside: not written */
     if (jnum(p, e, "vp_[x=", &vx) || jnum(p, e, ", y=", &vy) || !whole(vx, -1e9, 1e9) ||
         !whole(vy, -1e9, 1e9))
         return fail(c, "a pixel line without its viewport");
@@ -666,7 +668,8 @@ static int log_pixel_line(lctx *c, const char *p, const char *e)
 static const char *const log_known[] = {
     "==", "--", "Camera: ", "  perspective", "  left", "  bottom", "  near", "  (fovy",
     "   vIndex", "   cIndex", "Slope", "(x", "Normalization Matrix", "Translation Vector",
-    "[[", " [", "  [x,y,z,w]", "Clip", "Near_Clip", "\t", "    "
+    "[[", " [", "  [x,y,z,w]", "Clip", "Near_Clip", "\t", "    ", "= Begin Rendering",
+    "= End Rendering", "- Current Camera:"
 };
 
 /* The clip stages' lists in a log repeat the old vertices: drop a record at

@@ -111,6 +111,19 @@ check "... counted in a note" grep -qF "Note: 2 lines of ACTUAL not read (the fi
 # ---- a log against a log: the stage values at 5 decimals
 expect "log vs log" "$tmp/r9-view-skew.right.log" "$tmp/r9-view-skew.right.log" 0 "Verdict: PASS"
 
+# ---- the course's own logs of tests/course79 (the jar's, every debug level,
+# renderer 9's Pipeline2): each agrees with pipetrace's trace of its scene
+for sc in tests/course79/*.scene; do
+    n=$(basename "$sc" .scene)
+    "$exe" "$sc" --format jsonl --trace "$tmp/c.jsonl" 2>/dev/null
+    gzip -dc "tests/course79/$n.log.gz" >"$tmp/c.log"
+    "$exe" diff --verdict "$tmp/c.jsonl" "$tmp/c.log" >"$tmp/out" 2>&1; rc=$?
+    case $n in
+    *deflog*|*posclip|*pipe2-two-models-pos) check "course79 $n: NOT PROVEN, no pixel lines (exit $rc)" test "$rc" = 3 ;;
+    *) check "course79 $n: PASS (exit $rc)" test "$rc" = 0 ;;
+    esac
+done
+
 # ---- trouble: renderers that do not match, a renderer 4 trace, bad lines
 run diff "$tmp/r7-skew-aa.jsonl" "$tmp/r9-view-skew.jsonl"
 check "renderer 7 against 9: exit 2" test "$rc" = 2
