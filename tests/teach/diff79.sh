@@ -60,6 +60,7 @@ done
 mistake r7-skew-aa skew0 "the skew forgotten"
 mistake r7-skew-aa skewneg "the skew's sign wrong"
 mistake r7-skew-aa halfsize "scaled by the width, not the half-width"
+mistake r7-skew-aa doublesize "scaled by the half-width twice"
 mistake r7-skew-aa gamma0 "gamma not applied"
 mistake r7-skew-aa gamma2 "gamma applied twice"
 mistake r7-skew-aa aaswap "the anti-aliasing weights swapped"
