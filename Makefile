@@ -124,17 +124,17 @@ IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/explain_course.o $B/t
            $B/trace_text.o $B/trace_jsonl.o $B/trace_csv.o $B/trace.o $B/tread.o \
            $B/tread_util.o $B/tread_text.o $B/tread_jsonl.o $B/tread_kraft.o $B/tread_image.o \
            $B/png.o $B/outfile.o $B/trace_kraft.o $B/trace_kraft_check.o $B/tlanes.o \
-           $B/trace_course.o $B/trace_course_rec.o $B/rv_log_raster.o
+           $B/trace_course.o $B/trace_course_rec.o $B/rv_log_raster.o $B/tread79.o
 # src/tools/: the command line, the catalogue of formulas and mistakes (diff
 # and step), the subcommands (diff, accuracy and journey in folders of their
 # own; diff's parts listed with the commands).
-TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/dd.o $B/acc_shared.o $B/acc_float.o \
+TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/catalogue79.o $B/dd.o $B/acc_shared.o $B/acc_float.o \
            $B/acc_double.o $B/acc_dd.o $B/accuracy.o $B/jdraw.o $B/jplace.o $B/jpanel.o \
            $B/journey_classic.o $B/journey_matrix.o $B/jrows.o $B/journey.o $B/journey_html.o \
            $B/journey_wasm.o $B/stages_wasm.o
 CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/dfit.o \
-           $B/dpixels.o $B/dsummary.o $B/cmd_step.o $B/cmd_why.o $B/why_course.o $B/cmd_quiz.o \
-           $B/quiz79.o \
+           $B/dpixels.o $B/dsummary.o $B/d79.o $B/cmd_step.o $B/cmd_why.o $B/why_course.o \
+           $B/cmd_quiz.o $B/quiz79.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o $B/cmd_shapes.o $B/cmd_export.o \
            $B/export_java.o $B/cmd_class.o $B/class_report.o
 TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \

@@ -41,8 +41,8 @@
 #include "stages/m7_screen2viewport.h"
 #include "stages/ms_clip_segment.h"    /* the matrix camera's: clip to the CVV */
 #include "stages/rv_raster.h"          /* renderers 7 and 9: the rasterizer */
-#include "stages/r7_model2view.h"      /* ... their stages (accuracy's double run) */
-#include "stages/r7_view2camera.h"
+#include "stages/r7_model2view.h"      /* ... their stages (accuracy's double run, */
+#include "stages/r7_view2camera.h"     /*   diff's catalogue of their mistakes) */
 #include "stages/r9_model2world.h"
 #include "stages/r9_world2view.h"
 #include "stages/r9_view2camera.h"

@@ -309,7 +309,7 @@ static void drop_unused(pt_treader *r, kstate *k)
     struct pt_tread *t = r->t;
     size_t i, j = k->vx0;
 
-    qsort(k->used, k->nused, sizeof *k->used, cmp_u64);
+    if (k->nused) qsort(k->used, k->nused, sizeof *k->used, cmp_u64);   /* not on NULL */
     for (i = k->vx0; i < t->nvx; i++)
         if (k->nused && bsearch(&t->vx[i].v, k->used, k->nused, sizeof *k->used, cmp_u64))
             t->vx[j++] = t->vx[i];

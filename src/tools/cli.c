@@ -12,6 +12,7 @@
 #include <unistd.h>
 #include "tools/cli.h"
 #include "io/outfile.h"
+#include "io/tread79.h"
 #include "core/pipetrace.h"
 
 int pt_cli_stdout(const char *cmd, int rc)
@@ -44,18 +45,8 @@ int pt_cli_load(pt_scene *s, const char *path)
 
 int pt_cli_course_text(const char *path, const char *buf, size_t len, const char *cmd)
 {
-    char head[1024];
-    const char *p;
-    int r = 0;
+    int r = pt_t79_renderer(buf, len);          /* io/tread79.c tells them apart */
 
-    memcpy(head, buf, len < sizeof head - 1 ? len : sizeof head - 1);
-    head[len < sizeof head - 1 ? len : sizeof head - 1] = '\0';
-    if ((p = strstr(head, "\"renderer\":")) != NULL) r = atoi(p + 11);      /* jsonl */
-    else if (!strncmp(head, "# pipetrace trace of a course renderer's scene", 46) &&
-             (p = strstr(head, "\nrenderer ")) != NULL) r = atoi(p + 10);    /* text */
-    else if (!strncmp(head, "model,position,v,stage,", 23)) r = 7;         /* csv */
-    else if (strstr(head, "Rendering of Scene (Pipeline ")) r = 9;         /* the logs */
-    else if (strstr(head, "\n-- Current Camera:\nCamera: \n  perspective = ")) r = 7;
     if (r != 7 && r != 9) return 0;
     fprintf(stderr, "pipetrace %s: %s: error: %s does not read the traces and logs of "
             "scenes of the course's renderer 7 or 9\n", cmd, path, cmd);

@@ -49,6 +49,7 @@ static const char usage[] =
 "       pipetrace shapes [NAME]\n"
 "       pipetrace export java [SCENE] [-o FILE.java] [--pixels] [--debug LIST]\n"
 "       pipetrace class EXPECTED DIR [--csv FILE] [--html FILE] [--jobs N]\n"
+"                       [--tol ABS] [--rel REL]\n"
 "Render SCENE (a .scene file or a plain .obj file; -: standard input; none:\n"
 "the built-in scene) through the classic teaching pipeline and trace every\n"
 "vertex at every stage:\n"

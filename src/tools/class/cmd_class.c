@@ -38,11 +38,11 @@ static const char class_usage[] =
 "usage: pipetrace class EXPECTED DIR [--csv FILE] [--html FILE] [--jobs N]\n"
 "                      [--tol ABS] [--rel REL]\n"
 "\n"
-"Diff every student's file in DIR against EXPECTED, as `pipetrace diff --verdict`\n"
-"does, and report per student the verdict, the first wrong stage, the mistake\n"
-"named (\"unknown\" when none explains everything, \"ambiguous: A or B\" when\n"
-"several do) and the differing vertices and pixels; then how many went wrong\n"
-"first at each stage and how many made each mistake.\n"
+"Diff every student's file in DIR against EXPECTED, as `pipetrace diff` does\n"
+"with its verdict, and report per student the verdict, the first wrong stage,\n"
+"the mistake named (\"unknown\" when none explains everything, \"ambiguous: A\n"
+"or B\" when several do) and the differing vertices and pixels; then how many\n"
+"went wrong first at each stage and how many made each mistake.\n"
 "\n"
 "  EXPECTED     a scene (rendered here, with every stage and its pixels) or a\n"
 "               trace or log that diff reads\n"
@@ -56,10 +56,11 @@ static const char class_usage[] =
 "  --html FILE  a self-contained page: a bar chart per stage and per mistake,\n"
 "               a row per student linking to that student's diff\n"
 "  --jobs N     diffs run at once (default 2)\n"
-"  --tol, --rel as for diff\n"
+"  --tol ABS, --rel REL  as for diff\n"
 "\n"
 "Exit status: 0 every file was diffed or reported, 1 usage error, 2 EXPECTED\n"
-"or DIR cannot be read, or an output cannot be written.\n";
+"or DIR cannot be read, or an output cannot be written.\n"
+"Docs: docs/teaching.md\n";
 
 typedef struct copts {
     const char *csv, *html, *tol, *rel;

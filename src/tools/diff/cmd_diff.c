@@ -17,6 +17,7 @@
 #include <string.h>
 #include "io/outfile.h"
 #include "tools/commands.h"
+#include "io/tread79.h"
 #include "tools/diff/diff.h"
 
 static const char diff_usage[] =
@@ -29,6 +30,11 @@ static const char diff_usage[] =
 "they are), if one does, else the partial candidates; then the lit pixels.\n"
 "Or compare two images pixel by pixel: binary (P6) or plain (P3) PPM, or PNG\n"
 "as pipetrace writes it (uncompressed).\n"
+"A scene of the course's renderer 7 or 9: its traces (JSON Lines, text, CSV)\n"
+"and the course's logs of it (its jar's, or pipetrace's in that format) are\n"
+"compared stage by stage (the clip stages' new vertices too) and pixel by\n"
+"pixel, and the first stage that differs tested against those renderers'\n"
+"known mistakes.\n"
 "\n"
 "  --tol ABS         doubles agree when |a - b| <= max(ABS, REL * max(|a|, |b|))\n"
 "  --rel REL         (defaults 0 and 1e-9; integers must be equal); a text trace\n"
@@ -172,7 +178,7 @@ static int is_image(pt_tkind k)
 /* Read file s of o, and parse it when it is a trace (its buffer is then freed:
 ** only one file's text is held at a time).  Returns 0, or the exit status
 ** after printing the message. */
-static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
+static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind, int *r79)
 {
     char err[PT_ERRLEN];
 
@@ -180,7 +186,8 @@ static int load(dctx *c, int s, char **buf, size_t *len, pt_tkind *kind)
         fprintf(stderr, "%s\n", err);
         return PT_EXIT_INPUT;
     }
-    if (pt_cli_course_text(c->o->path[s], *buf, *len, "diff")) return PT_EXIT_INPUT;
+    if ((*r79 = pt_t79_renderer(*buf, *len)) == 7 || *r79 == 9) return 0;   /* d79.c reads it */
+    *r79 = 0;
     *kind = pt_tread_kind(*buf, *len);
     if (*kind == PT_TK_CSV) {
         fprintf(stderr, "%s:1:1: error: a CSV trace has no header and no raster records; "
@@ -215,7 +222,7 @@ int pt_diff_run(int argc, char **argv, pt_diff_outcome *out)
     pt_tkind kind[2];
     char err[PT_ERRLEN];
     dctx *c;
-    int rc, s;
+    int rc, s, r79[2] = {0, 0};
 
     memset(out, 0, sizeof *out);
     rc = parse_args(&o, argc, argv);
@@ -231,8 +238,16 @@ int pt_diff_run(int argc, char **argv, pt_diff_outcome *out)
     if (!c) { fputs("pipetrace: out of memory\n", stderr); return out->status = PT_EXIT_INPUT; }
     c->o = &o;
     for (s = 0; s < 2; s++)
-        if ((rc = load(c, s, &buf[s], &len[s], &kind[s])) != 0) goto done;
-    if (is_image(kind[0]) != is_image(kind[1])) {
+        if ((rc = load(c, s, &buf[s], &len[s], &kind[s], &r79[s])) != 0) goto done;
+    if (r79[0] || r79[1]) {
+        if (!r79[0] || !r79[1])
+            rc = usage_error("%s", "cannot compare a trace or log of renderer 7 or 9 with "
+                             "another kind of file");
+        else if (o.image_out)
+            rc = usage_error("%s", "--image-out needs two images");
+        else
+            rc = pt_diff79(&o, buf, len);
+    } else if (is_image(kind[0]) != is_image(kind[1])) {
         rc = usage_error("%s", "cannot compare an image with a trace");
     } else if (is_image(kind[0])) {
         pt_ppm img[2];

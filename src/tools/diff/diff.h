@@ -15,6 +15,8 @@
 **                explained
 **   dpixels.c    the lit pixels, and the rasterizer replayed on a segment
 **   dprint.c     numbers, paragraphs, names
+**   d79.c        the traces and logs of renderers 7 and 9 (their own reader,
+**                io/tread79.h, and catalogue, tools/catalogue79.h)
 ** The types below are diff's own (short names, never seen outside this
 ** folder); the functions between the files start pt_diff_.  Functions that
 ** print write to standard output; none can fail unless it says so.
@@ -275,5 +277,11 @@ void pt_diff_report_stage_only(const dctx *c);
 /* Print the summary paragraph; returns the exit status. */
 int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                       const size_t nlit[2], int pixels_compared, const rstat *rs);
+
+/* ===== d79.c ===== */
+
+/* Diff two traces or logs of a renderer 7 or 9 scene, buf[s][0..len[s]) the
+** text of o->path[s].  Returns the exit status, or -1 when out of memory. */
+int pt_diff79(const dopts *o, char *const buf[2], const size_t len[2]);
 
 #endif

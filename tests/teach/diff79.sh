@@ -1,0 +1,153 @@
+#!/bin/sh
+# tests/teach/diff79.sh -- pipetrace diff on renderers 7 and 9: students' logs, each mistake named
+# See LICENSE for copyright and license.
+#
+# Usage: sh tests/teach/diff79.sh PIPETRACE.  Run from the repository root.
+# tests/data/diff79/ holds, per scene (SCENE.scene, and SCENE.case for the
+# course's harness), the logs the course's renderer printed for it, right
+# (SCENE.right.log.gz) and with one mistake made in a copy of its Java source
+# (SCENE.MISTAKE.log.gz; README.md there says which).  EXPECTED is pipetrace's
+# own trace of the scene, made here in JSON Lines and text, or the right log;
+# each student's log must be named with its mistake and no other, the right
+# logs pass, a log without the rasterizer's lines is not proven, two mistakes
+# that give the same log are "ambiguous".
+exe=$1
+. tests/lib/testlib.sh
+data=tests/data/diff79
+
+unz() { gzip -dc "$data/$1.log.gz" > "$tmp/$1.log"; }
+
+# expect ID EXPECTED ACTUAL STATUS LINE: `diff --verdict` exits STATUS and
+# prints LINE (a fixed string), and names no mistake LINE does not.
+expect() {
+    id=$1 want=$2 got=$3 st=$4 line=$5
+    "$exe" diff "$want" "$got" --verdict >"$tmp/out" 2>&1; rc=$?
+    check "$id exit $st" test "$rc" = "$st"
+    check "$id says '$line'" grep -qF "$line" "$tmp/out"
+    check "$id ... and one Mistake line at most" test "$(grep -c '^Mistake:' "$tmp/out")" -le 1
+    case $line in
+    Mistake:*) check "$id ... that one" test "$(grep '^Mistake:' "$tmp/out" | grep -cvF "$line")" = 0 ;;
+    *) check "$id ... no mistake named" test "$(grep -c '^Mistake: [^u]' "$tmp/out")" = 0 ;;
+    esac
+    [ "$failed" -gt "$failed_before" ] && sed 's/^/  /' "$tmp/out" | head -30
+    failed_before=$failed
+}
+failed_before=0
+
+# mistake SCENE MISTAKE NAME: the student's log against EXPECTED three ways
+mistake() {
+    scene=$1 m=$2 name=$3
+    unz "$scene.$m"
+    for want in "$tmp/$scene.jsonl" "$tmp/$scene.txt" "$tmp/$scene.right.log"; do
+        expect "$scene.$m vs ${want##*.}" "$want" "$tmp/$scene.$m.log" 1 "Mistake: $name"
+    done
+}
+
+for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r9-view-skew; do
+    "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
+    "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
+    unz "$scene.right"
+    # ---- the right logs pass, against pipetrace's traces and its own log
+    expect "$scene right vs jsonl" "$tmp/$scene.jsonl" "$tmp/$scene.right.log" 0 "Verdict: PASS"
+    expect "$scene right vs text" "$tmp/$scene.txt" "$tmp/$scene.right.log" 0 "Verdict: PASS"
+    "$exe" "$data/$scene.scene" --format kraft --kraft-debug all --trace "$tmp/$scene.kraft.log"
+    check "$scene: --format kraft writes the course's log" cmp -s "$tmp/$scene.kraft.log" "$tmp/$scene.right.log"
+    expect "$scene kraft vs jsonl" "$tmp/$scene.jsonl" "$tmp/$scene.kraft.log" 0 "Verdict: PASS"
+    expect "$scene jsonl vs text" "$tmp/$scene.jsonl" "$tmp/$scene.txt" 0 "Verdict: PASS"
+done
+
+# ---- each mistake named on the scene that separates it
+mistake r7-skew-aa skew0 "the skew forgotten"
+mistake r7-skew-aa skewneg "the skew's sign wrong"
+mistake r7-skew-aa halfsize "scaled by the width, not the half-width"
+mistake r7-skew-aa doublesize "scaled by the half-width twice"
+mistake r7-skew-aa gamma0 "gamma not applied"
+mistake r7-skew-aa gamma2 "gamma applied twice"
+mistake r7-skew-aa aaswap "the anti-aliasing weights swapped"
+mistake r7-near nearsign "the near plane's sign wrong"
+mistake r7-near nearoff "the near plane ignored"
+mistake r7-near nearkept "the near clip's colour not interpolated"
+mistake r7-near nearbytes "the near clip's colour interpolated in bytes"
+mistake r7-near clipkept "the clip's colour not interpolated"
+mistake r7-near clipbytes "the clip's colour interpolated in bytes"
+mistake r7-near neart "the near clip's t from y"
+mistake r7-clip1 clipt "the clip's t from the other coordinate"
+mistake r7-clip1 clipswap "the clip's edges swapped"
+mistake r9-view-skew viewadd "the camera translation added"
+mistake r9-view-skew skewneg "the skew's sign wrong"
+
+# ---- where nothing separates two mistakes: ambiguous, on both logs
+for m in nearsign nearoff; do
+    mistake r7-near-amb $m "ambiguous: the near plane's sign wrong or the near plane ignored"
+done
+
+# ---- the first stage that differs, and its counts
+"$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.skew0.log" >"$tmp/out" 2>&1
+check "first stage: camera, 8 of 8" grep -qF "First stage that differs: camera (8 of 8 vertices)." "$tmp/out"
+check "the view stage agrees" grep -qE "^  view +8 compared, 0 differ$" "$tmp/out"
+"$exe" diff "$tmp/r7-near.jsonl" "$tmp/r7-near.clipkept.log" >"$tmp/out" 2>&1
+check "first stage: clip, its new vertices" grep -qF "First stage that differs: clip (4 of 4 vertices)." "$tmp/out"
+check "... numbered old count + k (v11)" grep -qE "^  near v11 clip: +rgb" "$tmp/out"
+"$exe" diff "$tmp/r7-near.jsonl" "$tmp/r7-near.nearoff.log" >"$tmp/out" 2>&1
+check "nearclip: made only in EXPECTED" grep -qE "^  nearclip +0 compared, 0 differ; 2 only in EXPECTED, 0 only in ACTUAL$" "$tmp/out"
+"$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.gamma0.log" >"$tmp/out" 2>&1
+check "the pixels: 0 vertices differ, the colours do" grep -qF "First stage that differs: the pixels (every vertex agrees)." "$tmp/out"
+
+# ---- no pixels on one side: NOT PROVEN, exit 3 (0 without --verdict)
+unz r7-skew-aa.nopixels
+expect "no pixel lines" "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.nopixels.log" 3 "Verdict: NOT PROVEN"
+check "... says the pixels were not compared" grep -qF "Not compared: the pixels (ACTUAL has no rasterizer lines)." "$tmp/out"
+"$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.nopixels.log" >/dev/null 2>&1
+check "... exit 0 without --verdict" test $? = 0
+"$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.skew0.log" >/dev/null 2>&1
+check "a difference: exit 1 without --verdict" test $? = 1
+"$exe" "$data/r7-skew-aa.scene" --format csv --trace "$tmp/r7.csv"
+expect "CSV (no pixels)" "$tmp/r7-skew-aa.jsonl" "$tmp/r7.csv" 3 "Verdict: NOT PROVEN"
+
+# ---- lines diff does not know: skipped and counted
+{ echo "student: hello"; cat "$tmp/r7-skew-aa.right.log"; echo "student: bye"; } >"$tmp/chatty.log"
+expect "a student's own lines" "$tmp/r7-skew-aa.jsonl" "$tmp/chatty.log" 0 "Verdict: PASS"
+check "... counted in a note" grep -qF "Note: 2 lines of ACTUAL not read (the first: line 1)." "$tmp/out"
+
+# ---- a log against a log: the stage values at 5 decimals
+expect "log vs log" "$tmp/r9-view-skew.right.log" "$tmp/r9-view-skew.right.log" 0 "Verdict: PASS"
+
+# ---- the course's own logs of tests/course79 (the jar's, every debug level,
+# renderer 9's Pipeline2): each agrees with pipetrace's trace of its scene
+for sc in tests/course79/*.scene; do
+    n=$(basename "$sc" .scene)
+    "$exe" "$sc" --format jsonl --trace "$tmp/c.jsonl" 2>/dev/null
+    gzip -dc "tests/course79/$n.log.gz" >"$tmp/c.log"
+    "$exe" diff --verdict "$tmp/c.jsonl" "$tmp/c.log" >"$tmp/out" 2>&1; rc=$?
+    case $n in
+    *deflog*|*posclip|*pipe2-two-models-pos) check "course79 $n: NOT PROVEN, no pixel lines (exit $rc)" test "$rc" = 3 ;;
+    *) check "course79 $n: PASS (exit $rc)" test "$rc" = 0 ;;
+    esac
+done
+
+# ---- trouble: renderers that do not match, a renderer 4 trace, bad lines
+run diff "$tmp/r7-skew-aa.jsonl" "$tmp/r9-view-skew.jsonl"
+check "renderer 7 against 9: exit 2" test "$rc" = 2
+check "... says so" grep -qF "EXPECTED is of renderer 7, ACTUAL of renderer 9" "$tmp/err"
+"$exe" tests/data/tri.obj >/dev/null 2>&1
+"$exe" --format jsonl --trace "$tmp/r4.jsonl" >/dev/null 2>&1
+run diff "$tmp/r4.jsonl" "$tmp/r7-skew-aa.jsonl"
+check "renderer 4 against 7: exit 2" test "$rc" = 2
+sed '5s/"v":[0-9]*,//' "$tmp/r7-skew-aa.jsonl" >"$tmp/bad.jsonl"
+run diff "$tmp/r7-skew-aa.jsonl" "$tmp/bad.jsonl"
+check "a vertex record without v: exit 2" test "$rc" = 2
+check "... FILE:LINE:COL: error:" grep -qF "bad.jsonl:5:1: error: a vertex record without its number v" "$tmp/err"
+sed 's/^\(1\. View *: vIndex = *3, \).*/\1(x,y,z) = (/' "$tmp/r7-skew-aa.right.log" >"$tmp/bad.log"
+run diff "$tmp/r7-skew-aa.jsonl" "$tmp/bad.log"
+check "a log's vertex without numbers: exit 2" test "$rc" = 2
+check "... FILE:LINE:COL: error:" grep -qE "bad.log:[0-9]+:1: error: a vIndex line without x, y and z" "$tmp/err"
+
+# ---- images beside: the student's PPM against pipetrace's image
+"$exe" "$data/r7-skew-aa.scene" --image "$tmp/want.ppm" >/dev/null
+gzip -dc "$data/r7-skew-aa.gamma0.ppm.gz" >"$tmp/got.ppm"
+run diff "$tmp/want.ppm" "$tmp/got.ppm"
+check "images: the gamma student's differs (exit 1)" test "$rc" = 1
+run diff "$tmp/want.ppm" "$tmp/want.ppm"
+check "images: the same (exit 0)" test "$rc" = 0
+
+report
