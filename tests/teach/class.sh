@@ -179,6 +179,8 @@ printf 'framebuffer 10 10\nv 1 2\n' > "$tmp/bad.scene"
 run class "$tmp/bad.scene" "$dir"
 check "class-6.5 a bad scene: exit 2 with its FILE:LINE:COL message" \
     sh -c "test $rc = 2 && grep -q 'bad.scene:2:' '$tmp/err'"
+check "class-6.10 ... and the scene is still there, as it was" \
+    sh -c "printf 'framebuffer 10 10\\nv 1 2\\n' | cmp - '$tmp/bad.scene'"
 run class $scene
 check "class-6.6 DIR missing: usage error, exit 1" test "$rc" = 1
 run class $scene "$dir" --jobs 0
@@ -192,4 +194,19 @@ check "class-6.9 --help: exit 0, the usage" sh -c "test $rc = 0 && grep -q 'usag
 run class $scene docs/examples/class
 check "class-7.1 docs/examples/class: bob's truncation, dave unknown, erin unreadable" \
     sh -c "grep -qE '^bob +FAIL +viewport +truncation' '$tmp/out' && grep -qE '^dave +FAIL +index +unknown' '$tmp/out' && grep -qE '^erin +UNREADABLE' '$tmp/out'"
+# ---- renderers 7 and 9: the course's logs of student copies (tests/data/diff79)
+mkdir "$tmp/c79"
+for f in tests/data/diff79/r7-near-amb.*.log.gz tests/data/diff79/r7-near.neart.log.gz; do
+    b=$(basename "$f" .log.gz)
+    gzip -dc "$f" > "$tmp/c79/${b#*.}.log"
+done
+run class tests/data/diff79/r7-near-amb.scene "$tmp/c79"
+check "class-8.1 renderer 7: exit 0" test "$rc" = 0
+check "class-8.2 the right log passes" sh -c "grep -qE '^right +PASS ' '$tmp/out'"
+check "class-8.3 two mistakes that give the same log: ambiguous, both named" \
+    sh -c "grep -E '^nearoff +FAIL +nearclip +ambiguous: ' '$tmp/out' | grep -q 'the near plane ignored' && grep -E '^nearoff ' '$tmp/out' | grep -q \"the near plane's sign wrong\""
+check "class-8.4 histogram: the ambiguous pair one bar, 2 students" \
+    sh -c "sed -n '/by mistake/,\$p' '$tmp/out' | grep -qE '^  ambiguous: .* +2  #+\$'"
+check "class-8.5 a log of another scene: not a pass" sh -c "! grep -qE '^neart +PASS' '$tmp/out'"
+
 report

@@ -98,12 +98,19 @@ static int is_image(pt_tkind k)
 }
 
 /* Render scene into tmp/expected.jsonl and tmp/expected.ppm with this very
-** program.  Returns 0, or the exit status after the scene's own message. */
+** program: every stage of renderer 4 and the matrix camera (renderers 7 and
+** 9 trace every stage anyway).  Returns 0, or the exit status after the
+** scene's own message. */
 static int render_expected(const char *scene, const char *tmp)
 {
     char trace[4096], image[4096];
-    int status;
+    int status, whole;
     pid_t pid;
+    pt_scene s;
+
+    if ((status = pt_cli_load(&s, scene)) != 0) return status;
+    whole = s.renderer == 7 || s.renderer == 9;
+    pt_scene_free(&s);
 
     snprintf(trace, sizeof trace, "%s/expected.jsonl", tmp);
     snprintf(image, sizeof image, "%s/expected.ppm", tmp);
@@ -112,8 +119,9 @@ static int render_expected(const char *scene, const char *tmp)
     pid = fork();
     if (pid < 0) { perror("pipetrace class: fork"); return PT_EXIT_INPUT; }
     if (pid == 0) {
-        char *argv[] = {"pipetrace", (char *)scene, "--all-stages", "--format", "jsonl",
-                        "--trace", trace, "--image", image, NULL};
+        char *argv[] = {"pipetrace", (char *)scene, "--format", "jsonl", "--trace", trace,
+                        "--image", image, "--all-stages", NULL};
+        if (whole) argv[8] = NULL;
         int devnull = open("/dev/null", O_WRONLY);
         if (devnull >= 0) dup2(devnull, 1);     /* the summary of --trace */
         execv("/proc/self/exe", argv);
@@ -542,9 +550,9 @@ int pt_cmd_class(int argc, char **argv)
                     td && *td ? td : "/tmp", strerror(errno));
             return PT_EXIT_INPUT;
         }
-        if ((rc = render_expected(c.expected, tmp)) != 0) goto done;
         snprintf(exp_trace, sizeof exp_trace, "%s/expected.jsonl", tmp);
         snprintf(exp_image, sizeof exp_image, "%s/expected.ppm", tmp);
+        if ((rc = render_expected(c.expected, tmp)) != 0) goto done;
         c.scene = c.have_image = 1;
         c.rendered[0] = exp_trace;
         c.rendered[1] = exp_image;
@@ -569,7 +577,7 @@ int pt_cmd_class(int argc, char **argv)
     pt_sbuf_free(&sb);
     rc = pt_cli_stdout("class", rc);
 done:
-    if (tmp[0]) {
+    if (tmp[0]) {                           /* the temporary folder's files only */
         unlink(exp_trace);
         unlink(exp_image);
         rmdir(tmp);

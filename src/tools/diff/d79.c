@@ -502,6 +502,7 @@ static int fit(const d79 *c, int st, int *which)
             ok = f.ok && !pc.missing && !pc.extra;
         }
         if (!ok) continue;
+        pt_diff_outcome_named(c->o->out, m->name);
         if (n++ == 0) first = k;
         if (strlen(names) + strlen(m->name) + 8 < sizeof names) {
             if (names[0]) strcat(names, " or ");
@@ -588,6 +589,9 @@ static int run(d79 *c)
                pc.both, pc.color, pc.missing, pc.extra);
         pix = 1;
         if (pc.color || pc.missing || pc.extra) differ++;
+        c->o->out->px_compared = 1;
+        c->o->out->px_missing = pc.missing;
+        c->o->out->px_extra = pc.extra + pc.color;  /* a pixel of another colour: extra */
     } else {
         printf("Not compared: the pixels (%s has no rasterizer lines).\n\n",
                !c->t[0].raster && !c->t[1].raster ? "neither" :
@@ -599,6 +603,14 @@ static int run(d79 *c)
             printf("Note: %lu line%s of %s not read (the first: line %lu).\n",
                    (unsigned long)c->t[s].unread, c->t[s].unread == 1 ? "" : "s",
                    s ? "ACTUAL" : "EXPECTED", (unsigned long)c->t[s].unread_line);
+    c->o->out->vertices = sc[first >= 0 ? first : 0].both;
+    if (first >= 0) {
+        c->o->out->differ = sc[first].differ;
+        c->o->out->only = sc[first].only[0] + sc[first].only[1];
+        pt_diff_outcome_stage(c->o->out, pt_t79_stage_name(first));
+    } else if (differ) {
+        pt_diff_outcome_stage(c->o->out, "pixels");
+    }
     if (first >= 0) {
         printf("First stage that differs: %s (%zu of %zu vertices).\n", pt_t79_stage_name(first),
                sc[first].differ + sc[first].only[0] + sc[first].only[1],

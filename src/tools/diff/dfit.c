@@ -305,14 +305,12 @@ void pt_diff_verdict(const dctx *c, pbuf *s)
                     c->swap_hy.name);
 }
 
-/* Note in out the stage st (a name) where the verdict says it goes wrong. */
-static void outcome_stage(pt_diff_outcome *out, const char *st)
+void pt_diff_outcome_stage(pt_diff_outcome *out, const char *st)
 {
     snprintf(out->stage, sizeof out->stage, "%s", st);
 }
 
-/* Add name to out's mistakes that explain everything, once. */
-static void outcome_named(pt_diff_outcome *out, const char *name)
+void pt_diff_outcome_named(pt_diff_outcome *out, const char *name)
 {
     int k;
 
@@ -343,7 +341,7 @@ void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, co
                             "computes, but does not report what it computed: it must call "
                             "pt_emit(sink, &r) as stages/ does.", pt_stage_infos[st].name,
                             pt_diff_side[side], pt_stage_infos[st].name);
-                outcome_stage(out, pt_stage_infos[st].name);
+                pt_diff_outcome_stage(out, pt_stage_infos[st].name);
                 out->silent = 1;
                 pt_diff_para("", s.b);
                 return;
@@ -358,10 +356,10 @@ void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, co
             pt_diff_evidence(c, e, top, &s);
         }
         pt_diff_add(&s, ".");
-        outcome_stage(out, pt_stage_infos[top].name);
+        pt_diff_outcome_stage(out, pt_stage_infos[top].name);
         if (c->verdict >= 0)
             for (k = 0; k < c->nhy; k++)
-                if (c->hy[k].full) outcome_named(out, c->hy[k].name);
+                if (c->hy[k].full) pt_diff_outcome_named(out, c->hy[k].name);
         if (c->verdict >= 0 && c->nfull == 1 && c->hy[c->verdict].stage == top) {
             const dhyp *hy = &c->hy[c->verdict];
             pt_diff_add(&s, " Likely mistake: %s: %s. It explains all the evidence: it ",
@@ -381,10 +379,10 @@ void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, co
     } else if (px_differ) {
         pt_diff_add(&s, "Verdict: FAIL in the pixels: every vertex agrees, but the lit pixels "
                     "differ");
-        outcome_stage(out, "pixels");
+        pt_diff_outcome_stage(out, "pixels");
         for (k = 0; k < PT_NRASTER_MISTAKES; k++)
             if (rs->segs_differ && rs->hits[k] == rs->segs_differ) break;
-        if (k < PT_NRASTER_MISTAKES) outcome_named(out, pt_raster_mistakes[k].name);
+        if (k < PT_NRASTER_MISTAKES) pt_diff_outcome_named(out, pt_raster_mistakes[k].name);
         if (k < PT_NRASTER_MISTAKES)
             pt_diff_add(&s, ". Likely mistake: %s: %s. It reproduces %s.", pt_raster_mistakes[k].name,
                         pt_raster_mistakes[k].how, rs->segs_differ == 1 ? "the one segment "

@@ -238,6 +238,13 @@ void pt_diff_verdict(const dctx *c, pbuf *s);
 ** explains all.  px_differ: the lit pixels differ; rs: the raster check. */
 void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, const rstat *rs);
 
+/* Note in out the stage (a name, or "pixels") where the verdict says the
+** traces go wrong first. */
+void pt_diff_outcome_stage(pt_diff_outcome *out, const char *stage);
+
+/* Add name to out's mistakes that explain everything, once. */
+void pt_diff_outcome_named(pt_diff_outcome *out, const char *name);
+
 /* ===== dpixels.c ===== */
 
 /* Compare the sets of lit pixels: the missing and extra ones into *nmiss and
