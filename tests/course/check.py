@@ -233,6 +233,24 @@ def selftest(top):
     check("course-0.9 scene2case.py reads an obj file: its vertices after the model's, "
           "a face closed, indices shifted", case.endswith(
               "v 5 5 5\nv 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\nl 3 1\nl 2 3\n"), case)
+    with tempfile.TemporaryDirectory() as d:
+        with open(os.path.join(d, "tri_2.expect"), "w") as f:
+            f.write("# shape tri 2\nv 2.0 0.0 -0.0\nv 0.0 2.0 0.0\nl 0 1\nl 1 0\n")
+        with open(os.path.join(d, "tri_0.expect"), "w") as f:
+            f.write("# shape tri 0\nerror r must be greater than 0\n")
+        _, case = scene2case.convert("model m\nv 5 5 5\nshape tri 2\nl 1 3\n", "all", d, d)
+        refused = []
+        for text in ("model m\nshape tri 3\n", "model m\nshape tri 0\n"):
+            try:
+                scene2case.convert(text, "all", d, d)
+            except scene2case.Bad:
+                refused.append(text.split()[-1])
+    check("course-0.10 scene2case.py writes a shape as the jar built it (tests/data/shapes): "
+          "its vertices after the model's, segments shifted, a later l counting them",
+          case.endswith("v 5 5 5\nv 2.0 0.0 -0.0\nv 0.0 2.0 0.0\nl 1 2\nl 2 1\nl 0 2\n"),
+          case)
+    check("course-0.11 ... a shape with no stored model, or one the jar refused, is refused",
+          refused == ["3", "0"], str(refused))
 
 
 # What pipetrace must show to have renderer N (else its cases are skipped):

@@ -721,6 +721,97 @@ def fam_obj(rng, r, name, k):
     return sc
 
 
+SHAPES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "shapes")
+
+
+def shape_size(spec):
+    """`shape SPEC`'s vertex count and largest |coordinate|, from the model
+    the course's jar built (tests/data/shapes; scene2case.py reads it too)."""
+    with open(os.path.join(SHAPES, spec.replace(" ", "_") + ".expect")) as f:
+        vs = [[float(t) for t in line.split()[1:4]] for line in f if line.startswith("v ")]
+    assert vs, spec
+    return len(vs), max(abs(t) for v in vs for t in v)
+
+
+# Per renderer: (shapes, style); each shape has a model of the jar in SHAPES.
+SHAPE_SCENES = {
+    4: [(["torus 1 0.25 3 3"], "plain"), (["sphere 3 4 7"], "vcolor"),
+        (["icosahedron", "circle 1 3"], "mixed"), (["pyramid 2 1 3 2"], "ortho"),
+        (["cone 1 2 3 5"], "clip"), (["ring 2 0.5 3 10", "disk 1.5 3 8"], "multi"),
+        (["squaregrid 1 2 5"], "clip")],
+    7: [(["cylinder 1 0.25 3 9"], "plain"), (["dodecahedron"], "vcolor"),
+        (["octahedron", "circle 0.3 7"], "mixed"), (["torus 2 0.75 5 7"], "ortho"),
+        (["cone 2 -1 4 6"], "clip"), (["sphere 3 4 7"], "near"),
+        (["box 1 2 3", "tetrahedron"], "multi"), (["pyramid 1.5 2 4 5"], "near")],
+    9: [(["icosidodecahedron"], "plain"), (["cone 0.75 1.5 2 4"], "vcolor"),
+        (["cube", "axes3d 2 3 -1"], "mixed"), (["disk 1.5 3 8"], "ortho"),
+        (["torus 2 0.75 5 7"], "clip"), (["cylinder 2 1 2 4"], "near"),
+        (["ring 1 0.5 1 3", "sphere 3 4 7"], "multi"), (["square 2.5"], "near")],
+}
+
+
+def fam_shape(rng, r, name, k):
+    """`shape NAME ARGS`: the course's models (scene2case.py writes the
+    jar's vertices and segments into the case), alone, per-vertex coloured,
+    two in one model joined by an `l`, two models; orthographic, across an
+    edge of the view rectangle, across the near plane (7, 9); renderer 9
+    turns them with `matrix rotate`."""
+    if k >= len(SHAPE_SCENES[r]):
+        return None
+    specs, style = SHAPE_SCENES[r][k]
+    w, h = fbsize(rng, big=rng.random() < 0.4)
+    sc = Scene(r, name, w, h)
+    sizes = [shape_size(sp) for sp in specs]
+    ext = max(e for _, e in sizes)
+    if style == "ortho" and r == 4:
+        sc.add(camera_line(rng, r, "ortho"))
+    elif style == "ortho":
+        e = ext * rng.uniform(1.1, 1.5)
+        sc.add(camera_line(rng, r, "ortho", (-e, e, -e * h / w, e * h / w)))
+    else:
+        sc.add(camera_line(rng, r, "persp"))
+    near = None
+    if style == "near":
+        near = rng.choice([0.5, 1.0, 1.5])
+        sc.add("near %s" % num(near))
+    switches(sc, rng, aa=k % 3 == 1 or None, nearclip=True)
+    models = [specs] if style != "multi" else [[sp] for sp in specs]
+    for m, group in enumerate(models):
+        sc.add("model s%d%s" % (m, " at%d" % m if style == "multi" else ""))
+        d = ext * 2.5 + 1.0
+        if style == "ortho":
+            t = (0.0, 0.0, -3.0)
+        elif style == "clip":
+            side = rng.choice([-1, 1])
+            t = (side * d * rng.uniform(0.85, 1.1), rng.uniform(-0.3, 0.3) * d, -d)
+            if rng.random() < 0.5:
+                t = (t[1], t[0], t[2])
+        elif style == "near":
+            t = (rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3),
+                 -near - rng.uniform(-0.5, 0.5) * ext)
+        elif style == "multi":
+            t = ((m * 2 - 1) * ext * 1.2, rng.uniform(-0.5, 0.5), -(ext * 4.0 + 1.0))
+        else:
+            t = (rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), -d)
+        sc.add("translate %s" % " ".join(num(x) for x in t))
+        if r == 9:
+            for axis in rng.sample("xyz", rng.randint(1, 2)):
+                sc.add("matrix rotate %s %s" % (axis, num(rng.choice([30.0, 45.0, -60.0,
+                                                                     rng.uniform(-90, 90)]))))
+        for sp in group:
+            sc.add("shape %s" % sp)
+        if style == "mixed":
+            sc.add("l 1 %d" % (sizes[0][0] + 1))
+        if style == "vcolor":
+            for _ in range(sum(n for n, _ in sizes)):
+                c = rand_color(rng, 0.3)
+                sc.add("vcolor %d %d %d" % c[1:] if c[0] == "c" else
+                       "vcolor-float %s" % " ".join(num(x) for x in c[1:]))
+        else:
+            sc.add("color %d %d %d" % tuple(rng.randrange(64, 256) for _ in range(3)))
+    return sc
+
+
 ALL, R79, R9 = (4, 7, 9), (7, 9), (9,)
 FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("basic", ALL, 12, lambda g, r, n, k: fam_basic(g, r, n)),
@@ -752,6 +843,7 @@ FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("near-edge", R79, 6, fam_near_edge),
     ("err", ALL, 3, fam_err),
     ("obj", ALL, 4, fam_obj),
+    ("shape", ALL, 8, fam_shape),
 ]
 
 
@@ -764,6 +856,8 @@ def generate():
             for k in range(count):
                 name = "%s-%02d" % (fam, k)
                 sc = fn(rng, r, name, k)
+                if sc is None:
+                    continue
                 yield r, name, sc.text(), getattr(sc, "files", {})
 
 

@@ -13,7 +13,11 @@
 #   NAME.ppm.gz     the image          NAME.log.gz      the log, `debug all`
 #   NAME.stages.gz  every stage        NAME.deflog.gz   the log, `debug scene`
 # A scene's OBJ file (`obj NAME.obj`, gen.py's obj-* family) is stored beside
-# it; scene2case.py reads it into the case.
+# it; scene2case.py reads it into the case.  A scene's `shape NAME ARGS`
+# (gen.py's shape-* family) is the model in tests/data/shapes/NAME_ARGS.expect
+# (renderer 4's jar made it), which scene2case.py writes into the case; each
+# is made again here with renderer N's jar (ShapeDump.java there) and must be
+# the same, else the scene is dropped.
 # A case on which the renderer throws (harness exit 3) is an expected error:
 #   NAME.error      the exception's first line (pipetrace must refuse the scene)
 # A case the harness refuses (exit 2), or that does not end within the time
@@ -52,7 +56,8 @@ for r in $which; do
     fi
     jar=$(ls "$course/renderer$n"/*.jar | head -1)
     mkdir -p "$tmp/k$n"
-    javac -nowarn -cp "$jar" -d "$tmp/k$n" "$course/renderer$n/Kraft$n.java" || exit 1
+    javac -nowarn -cp "$jar" -d "$tmp/k$n" "$course/renderer$n/Kraft$n.java" \
+        tests/data/shapes/ShapeDump.java || exit 1
     ok=0 err=0 drop=0
     for scene in "$here/$r"/*.scene; do
         name=${scene%.scene}
@@ -64,6 +69,18 @@ for r in $which; do
             [ "$m" = 1 ] || continue
         fi
         python3 "$here/scene2case.py" "$scene" all > "$tmp/c.case" || { rm -f "$scene" "$name.obj"; drop=$((drop + 1)); continue; }
+        other=
+        for args in $(sed -n 's/^shape  *//p' "$scene" | tr ' ' _); do
+            # shellcheck disable=SC2046
+            java $jopts -cp "$jar:$tmp/k$n" ShapeDump $(echo "$args" | tr _ ' ') > "$tmp/shape"
+            cmp -s "$tmp/shape" "tests/data/shapes/$args.expect" || other=$args
+        done
+        if [ -n "$other" ]; then
+            echo "dropped $scene: renderer $n's jar builds shape $other otherwise than tests/data/shapes"
+            rm -f "$scene"
+            drop=$((drop + 1))
+            continue
+        fi
         timeout "$limit" java $jopts -cp "$jar:$tmp/k$n" "Kraft$n" "$tmp/c.case" \
             "$tmp/o.ppm" "$tmp/o.log" "$tmp/o.stages" > "$tmp/out" 2>&1
         rc=$?

@@ -11,10 +11,16 @@
 # directives gen.py writes
 # and the classic ones (v, l polylines, f faces, color); `obj PATH` is read
 # (relative to the scene's folder) as its v, l and f lines, indices counting
-# the file's own vertices; `shape` is refused (exit 2), as is anything it
-# does not know.
+# the file's own vertices; `shape NAME ARGS` is read as the model the
+# course's jar builds, stored in tests/data/shapes/NAME_ARGS.expect (made by
+# that folder's make.sh and ShapeDump.java), so the case does not take
+# pipetrace's word for a shape: a shape with no such file is refused (exit
+# 2), as is anything it does not know.
 import os
 import sys
+
+SHAPES = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                      "..", "data", "shapes"))
 
 CAMERAS = {"perspective": "persp", "orthographic": "ortho",
            "perspective-fov": "perspfov", "orthographic-fov": "orthofov"}
@@ -83,7 +89,26 @@ def obj_lines(path):
     return out
 
 
-def convert(text, debug="all", base="."):
+def shape_model(args, shapes=SHAPES):
+    """`shape NAME ARGS` (its fields) as the course's jar builds it: its
+    vertices (coordinates as Java printed them) and segments (0-based)."""
+    path = os.path.join(shapes, "_".join(args) + ".expect")
+    if not os.path.exists(path):
+        raise Bad("shape %s: no model of the course's jar in %s" % (" ".join(args), path))
+    verts, segs = [], []
+    with open(path) as f:
+        for raw in f:
+            w = raw.split()
+            if w[0] == "v":
+                verts.append(w[1:4])
+            elif w[0] == "l":
+                segs.append((int(w[1]), int(w[2])))
+            elif w[0] == "error":
+                raise Bad("shape %s: the course's constructor refuses it" % " ".join(args))
+    return verts, segs
+
+
+def convert(text, debug="all", base=".", shapes=SHAPES):
     renderer = 4
     head = {}
     models = []
@@ -155,6 +180,12 @@ def convert(text, debug="all", base="."):
                 if kind == "f":
                     ix.append(ix[0])
                 m.body += ["l %d %d" % (i, j) for i, j in zip(ix, ix[1:])]
+        elif d == "shape":
+            verts, segs = shape_model(a, shapes)
+            first = m.nv
+            m.body += ["v " + " ".join(v) for v in verts]
+            m.nv += len(verts)
+            m.body += ["l %d %d" % (first + i, first + j) for i, j in segs]
         elif d in ("l", "f"):
             ix = [m.index(x, "vertex") for x in a]
             if d == "f":
