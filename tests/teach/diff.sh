@@ -488,4 +488,23 @@ check "diff-12.4 without --verdict: agreement is exit 0, as diff(1)" test "$rc" 
 "$exe" diff --verdict "$tmp/v2.jsonl" "$tmp/v2.jsonl" >"$tmp/out" 2>&1; rc=$?
 check "diff-12.5 the self-check scene exercises every stage: PASS, exit 0 ($rc)" \
     sh -c 'test "$1" = 0 && grep -q "^Verdict: PASS" "$2"' _ "$rc" "$tmp/out"
+# ---- 14: --scene gives a trace without a header (the course's log) the scene's numbers
+S=tests/reference/basic-two-models.scene
+if mistaken s3_swapwh; then
+    "$tmp/sb/pipetrace" $S --format kraft --trace "$tmp/swap.log"
+    "$exe" diff --verdict tests/reference/kraftlog/basic-two-models.log "$tmp/swap.log" >"$tmp/out" 2>&1
+    check "diff-14.1 a course log without pixel lines as EXPECTED, no --scene: no mistake named" \
+        sh -c '! grep -q "Likely mistake" "$1"' _ "$tmp/out"
+    "$exe" diff --verdict --scene $S tests/reference/kraftlog/basic-two-models.log "$tmp/swap.log" >"$tmp/out" 2>&1; rc=$?
+    check "diff-14.2 ... with --scene: w and h swapped, named (exit $rc)" \
+        sh -c 'test "$1" = 1 && tr "\n" " " < "$2" | grep -q "Likely mistake: w and h swapped:"' _ "$rc" "$tmp/out"
+else
+    check "diff-14.1 the s3_swapwh student build" false
+fi
+"$exe" diff --verdict --scene "$tmp/none.scene" tests/reference/kraftlog/basic-two-models.log "$tmp/swap.log" >"$tmp/out" 2>&1; rc=$?
+check "diff-14.3 --scene of no file: exit 2, said" sh -c 'test "$1" = 2 && grep -q "none.scene" "$2"' _ "$rc" "$tmp/out"
+"$exe" diff --verdict --scene tests/course79/r7-near-01.scene tests/reference/kraftlog/basic-two-models.log "$tmp/swap.log" >"$tmp/out" 2>&1; rc=$?
+check "diff-14.4 --scene of a renderer 7 scene on renderer 4's logs: exit 2, said" \
+    sh -c 'test "$1" = 2 && grep -q "renderer 7" "$2"' _ "$rc" "$tmp/out"
+
 report

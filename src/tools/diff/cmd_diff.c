@@ -22,6 +22,7 @@
 
 static const char diff_usage[] =
 "usage: pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N] [--verdict]\n"
+"                      [--scene SCENE]\n"
 "       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE] [--show N]\n"
 "Compare two traces (JSON Lines or text, in any mix) vertex by vertex: for\n"
 "each vertex the first stage where they differ and both values; then the\n"
@@ -46,6 +47,10 @@ static const char diff_usage[] =
 "                    (make check-stage uses it)\n"
 "  --image-out FILE  images: write FILE (PNG when it ends in .png, else P6 PPM)\n"
 "                    with the differing pixels red, the others EXPECTED's dimmed\n"
+"  --scene SCENE     the scene both were made from: a trace without a header\n"
+"                    (the course's log, its jar's or pipetrace's) gets the\n"
+"                    framebuffer, viewport, camera and translations from it,\n"
+"                    so that the known mistakes can be tested\n"
 "\n"
 "Exit status, as diff(1): 0 same, 1 different, 2 trouble (unreadable input\n"
 "or a usage error); with --verdict, 3 when nothing differs but not every\n"
@@ -86,7 +91,7 @@ static int parse_args(dopts *o, int argc, char **argv)
         const char *a = argv[k];
         const char *val = k + 1 < argc ? argv[k + 1] : NULL;
         int takes = !strcmp(a, "--tol") || !strcmp(a, "--rel") ||
-                    !strcmp(a, "--image-out") || !strcmp(a, "--show");
+                    !strcmp(a, "--image-out") || !strcmp(a, "--show") || !strcmp(a, "--scene");
 
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(diff_usage, stdout); return 0; }
         if (!strcmp(a, "--verdict")) { o->verdict = 1; continue; }
@@ -103,6 +108,8 @@ static int parse_args(dopts *o, int argc, char **argv)
             o->show = (size_t)x;
         } else if (!strcmp(a, "--image-out")) {
             o->image_out = val;
+        } else if (!strcmp(a, "--scene")) {
+            o->scene = val;
         } else if (a[0] == '-' && a[1] != '\0') {
             pt_cli_unknown("diff", diff_usage, a);
             return PT_EXIT_TROUBLE;             /* diff's usage errors: 2 */
@@ -167,6 +174,64 @@ static int trace_diff(dctx *c)
     c->o->out->differ = c->differ;
     c->o->out->only = c->only[0] + c->only[1];
     return pt_diff_summarize(c, hdr_differ, nmiss, nextra, nlit, pixels_compared, &rs);
+}
+
+/* Give side s of c, a trace without a header, the header scene sc would
+** have written: what the catalogue's formulas need besides the vertices.
+** Returns 0, or -1 out of memory. */
+static int header_of_scene(dctx *c, int s, const pt_scene *sc)
+{
+    pt_thdr *h = &c->t[s].hdr;
+    size_t k;
+
+    h->fb_w = sc->fb_w;
+    h->fb_h = sc->fb_h;
+    h->vp_x = sc->vp_x;
+    h->vp_y = sc->vp_y;
+    h->vp_w = sc->vp_w;
+    h->vp_h = sc->vp_h;
+    h->pipe = sc->pipe;
+    h->perspective = sc->pipe == PT_PIPE_MATRIX ? 1 : sc->perspective;
+    if (sc->nmodels > h->cap) {
+        pt_tmodel *m = realloc(h->models, sc->nmodels * sizeof *m);
+        if (!m) return -1;
+        h->models = m;
+        h->cap = sc->nmodels;
+    }
+    h->nmodels = 0;
+    for (k = 0; k < sc->nmodels; k++) {
+        pt_tmodel *m = &h->models[h->nmodels];
+        memset(m, 0, sizeof *m);
+        if (pt_names_intern(&c->nm, sc->models[k].name, strlen(sc->models[k].name),
+                            &m->name) != 0) return -1;
+        m->t[0] = sc->models[k].translate.x;
+        m->t[1] = sc->models[k].translate.y;
+        m->t[2] = sc->models[k].translate.z;
+        h->nmodels++;
+    }
+    h->have = 1;
+    return 0;
+}
+
+/* --scene: the header of each side that has none.  Returns 0, or the exit
+** status after the message. */
+static int headers_from_scene(dctx *c)
+{
+    pt_scene sc;
+    int s, rc;
+
+    if ((rc = pt_cli_load(&sc, c->o->scene)) != 0) return PT_EXIT_TROUBLE;
+    if (sc.renderer != 4) {
+        fprintf(stderr, "pipetrace diff: %s: error: --scene is for the classic camera's and "
+                "the matrix camera's traces; a scene of renderer %d is compared without "
+                "it\n", c->o->scene, sc.renderer);
+        pt_scene_free(&sc);
+        return PT_EXIT_TROUBLE;
+    }
+    for (s = 0, rc = 0; s < 2 && rc == 0; s++)
+        if (!c->t[s].hdr.have && header_of_scene(c, s, &sc) != 0) rc = -1;
+    pt_scene_free(&sc);
+    return rc;
 }
 
 /* 1 for the kinds of file that are images. */
@@ -263,7 +328,7 @@ int pt_diff_run(int argc, char **argv, pt_diff_outcome *out)
         pt_image_free(&img[1]);
     } else if (o.image_out) {
         rc = usage_error("%s", "--image-out needs two images");
-    } else {
+    } else if (!o.scene || (rc = headers_from_scene(c)) == 0) {
         rc = trace_diff(c);
     }
     if (rc < 0) {

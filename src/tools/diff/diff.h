@@ -42,6 +42,7 @@ typedef struct dopts {
     const char *image_out;       /* --image-out, or NULL */
     size_t show;                 /* vertices and pixels listed */
     int verdict;                 /* --verdict: end with a verdict paragraph */
+    const char *scene;           /* --scene: the headers of traces without one */
     pt_diff_outcome *out;        /* the findings as data (pt_diff_run), never NULL */
 } dopts;
 
