@@ -97,13 +97,12 @@ static int is_image(pt_tkind k)
     return k == PT_TK_PPM || k == PT_TK_P3 || k == PT_TK_PNG;
 }
 
-/* Render scene into tmp/expected.jsonl and tmp/expected.ppm with this very
+/* Render scene into the files trace (JSON Lines) and image with this very
 ** program: every stage of renderer 4 and the matrix camera (renderers 7 and
 ** 9 trace every stage anyway).  Returns 0, or the exit status after the
 ** scene's own message. */
-static int render_expected(const char *scene, const char *tmp)
+static int render_expected(const char *scene, const char *trace, const char *image)
 {
-    char trace[4096], image[4096];
     int status, whole;
     pid_t pid;
     pt_scene s;
@@ -112,15 +111,13 @@ static int render_expected(const char *scene, const char *tmp)
     whole = s.renderer == 7 || s.renderer == 9;
     pt_scene_free(&s);
 
-    snprintf(trace, sizeof trace, "%s/expected.jsonl", tmp);
-    snprintf(image, sizeof image, "%s/expected.ppm", tmp);
     fflush(stdout);
     fflush(stderr);
     pid = fork();
     if (pid < 0) { perror("pipetrace class: fork"); return PT_EXIT_INPUT; }
     if (pid == 0) {
-        char *argv[] = {"pipetrace", (char *)scene, "--format", "jsonl", "--trace", trace,
-                        "--image", image, "--all-stages", NULL};
+        char *argv[] = {"pipetrace", (char *)scene, "--format", "jsonl", "--trace",
+                        (char *)trace, "--image", (char *)image, "--all-stages", NULL};
         if (whole) argv[8] = NULL;
         int devnull = open("/dev/null", O_WRONLY);
         if (devnull >= 0) dup2(devnull, 1);     /* the summary of --trace */
@@ -552,7 +549,7 @@ int pt_cmd_class(int argc, char **argv)
         }
         snprintf(exp_trace, sizeof exp_trace, "%s/expected.jsonl", tmp);
         snprintf(exp_image, sizeof exp_image, "%s/expected.ppm", tmp);
-        if ((rc = render_expected(c.expected, tmp)) != 0) goto done;
+        if ((rc = render_expected(c.expected, exp_trace, exp_image)) != 0) goto done;
         c.scene = c.have_image = 1;
         c.rendered[0] = exp_trace;
         c.rendered[1] = exp_image;
