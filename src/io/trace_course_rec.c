@@ -49,6 +49,8 @@ typedef struct rec {
     const char *explain;         /* vertex, --explain: its formula with its numbers */
 } rec;
 
+#define KEPT_BITS 8              /* log2 of the slots of each table of kept() */
+
 typedef struct walker {
     pt_trace *t;                 /* the output block and its numbers (trace_int.h) */
     const pt_scene *s;
@@ -73,12 +75,20 @@ typedef struct walker {
     struct prev { pt_vec4 *v; size_t n; } *prev;  /* each position's vertices
                                  ** after the stage reported last */
     char xbuf[8192];             /*   and the text of one record */
+    struct kept {                /* text: fixed-point spellings (kept()) */
+        uint64_t bits;
+        unsigned char len;       /* 0: an empty slot */
+        char s[39];
+    } kept[3][1 << KEPT_BITS];
+    char spill[400];             /* a spelling too long to keep ("%.6f" of
+                                 ** any double: 317 bytes at most) */
 } walker;
 
 /* The most a record writes after its names and before --explain's text:
-** seven numbers of PT_NUMLEN + 2 (a text column: its padding too), integers
-** of 20 digits, the stage's and the edge's names, the keys. */
-#define REC_REST (7 * (PT_NUMLEN + 16) + 8 * 24 + 256)
+** eight numbers of 64 bytes (PT_NUMLEN + 2 at most; a colour's or
+** coverage's "%.6f" of a float, 47), integers of 20 digits, the stage's
+** and the edge's names, the keys. */
+#define REC_REST (8 * 64 + 8 * 24 + 256)
 
 /* ===== numbers ===== */
 
@@ -89,25 +99,60 @@ static char *num_csv_at(pt_trace *t, char *o, double x)
     return short_at(t, o, x);
 }
 
-/* Text: x with prec digits after the point, right-aligned in 13 columns
-** ("%13s" of pt_fmt_fixed). */
-static char *num_text_at(char *o, double x, int prec)
-{
-    char b[PT_NUMLEN];
-    size_t n = pt_fmt_fixed(b, x, prec);
+/* The text trace's fixed-point spellings kept, by the bits' hash as the
+** trace keeps its shortest ones (trace_int.h: num_slot): a table for the
+** coordinates (w->precision digits), one for the colours (6), one for the
+** pixels' coverage (4).  A scene's colours and many of its coordinates come
+** again and again (white, a model's z, coverage 1). */
+enum { KEPT_XYZ, KEPT_RGB, KEPT_COVERAGE };
 
-    for (; n < 13; n++) *o++ = ' ';
-    n = strlen(b);
-    memcpy(o, b, n);
+/* x with prec digits after the point, from table which when kept there: the
+** spelling, its length in *n.  The coordinates as pt_fmt_fixed spells them;
+** a colour and a coverage "%.*f" (pt_fmt_fixed where it spells as printf
+** does, a finite x below 1e15; else printf: "-nan", a float's 39 digits). */
+static const char *kept(walker *w, int which, double x, int prec, size_t *n)
+{
+    struct kept *e;
+    uint64_t bits;
+    char b[sizeof w->spill];
+    size_t len;
+
+    memcpy(&bits, &x, sizeof bits);
+    e = &w->kept[which][(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - KEPT_BITS)];
+    if (e->bits == bits && e->len) { *n = e->len; return e->s; }
+    if (which == KEPT_XYZ || (isfinite(x) && fabs(x) < 1e15)) len = pt_fmt_fixed(b, x, prec);
+    else len = (size_t)snprintf(b, sizeof b, "%.*f", prec, x);
+    if (len > sizeof e->s) {                 /* too long to keep */
+        memcpy(w->spill, b, len);
+        *n = len;
+        return w->spill;
+    }
+    e->bits = bits;
+    e->len = (unsigned char)len;
+    memcpy(e->s, b, len);
+    *n = len;
+    return e->s;
+}
+
+/* Text: a coordinate right-aligned in 13 columns ("%13s" of pt_fmt_fixed). */
+static char *num_text_at(walker *w, char *o, double x)
+{
+    size_t n;
+    const char *s = kept(w, KEPT_XYZ, x, w->precision, &n);
+
+    if (n < 13) { memset(o, ' ', 13 - n); o += 13 - n; }
+    memcpy(o, s, n);
     return o + n;
 }
 
-/* "%.*f" of x (prec 4 or 6: a colour, a coverage): pt_fmt_fixed where it
-** spells as printf does (a finite x below 1e15), else printf ("-nan"). */
-static char *fixed_at(char *o, double x, int prec)
+/* "%.*f" of x, a colour (which KEPT_RGB, prec 6) or a coverage. */
+static char *fixed_at(walker *w, char *o, double x, int which, int prec)
 {
-    if (isfinite(x) && fabs(x) < 1e15) return o + pt_fmt_fixed(o, x, prec);
-    return o + snprintf(o, PT_NUMLEN, "%.*f", prec, x);
+    size_t n;
+    const char *s = kept(w, which, x, prec, &n);
+
+    memcpy(o, s, n);
+    return o + n;
 }
 
 static const char *edge_name(pt_rv_edge e)
@@ -272,7 +317,7 @@ static void fmt_text(walker *w, const rec *r)
         o = u64_at(t, str_at(o, "  rgb = "), r->rgb[0]);
         o = u64_at(t, str_at(o, " "), r->rgb[1]);
         o = u64_at(t, str_at(o, " "), r->rgb[2]);
-        o = fixed_at(str_at(o, "  coverage "), (double)r->coverage, 4);
+        o = fixed_at(w, str_at(o, "  coverage "), (double)r->coverage, KEPT_COVERAGE, 4);
         done(w, str_at(o, "\n"));
         return;
     }
@@ -298,14 +343,14 @@ static void fmt_text(walker *w, const rec *r)
         for (; n < 12; n++) o[n] = ' ';
         o += n;
     }
-    o = num_text_at(str_at(o, " x ="), r->p.x, w->precision);
-    o = num_text_at(str_at(o, "  y ="), r->p.y, w->precision);
-    o = num_text_at(str_at(o, "  z ="), r->p.z, w->precision);
-    if (w->w4) o = num_text_at(str_at(o, "  w ="), r->p.w, w->precision);
+    o = num_text_at(w, str_at(o, " x ="), r->p.x);
+    o = num_text_at(w, str_at(o, "  y ="), r->p.y);
+    o = num_text_at(w, str_at(o, "  z ="), r->p.z);
+    if (w->w4) o = num_text_at(w, str_at(o, "  w ="), r->p.w);
     if (r->has_color) {
-        o = fixed_at(str_at(o, "  rgb = "), (double)r->color.r, 6);
-        o = fixed_at(str_at(o, " "), (double)r->color.g, 6);
-        o = fixed_at(str_at(o, " "), (double)r->color.b, 6);
+        o = fixed_at(w, str_at(o, "  rgb = "), (double)r->color.r, KEPT_RGB, 6);
+        o = fixed_at(w, str_at(o, " "), (double)r->color.g, KEPT_RGB, 6);
+        o = fixed_at(w, str_at(o, " "), (double)r->color.b, KEPT_RGB, 6);
     }
     if (r->from) {
         o = str_at(str_at(o, "  from "), r->from);
