@@ -5,7 +5,10 @@
 ** A listener of the driver (core/course.h): each callback prints the lines
 ** the course's Java prints at that point, gated as PipelineLogger gates them
 ** (debugScene || debugPosition, the latter set per position and kept after
-** the loop).  The labels are the course's, padded as it pads them.
+** the loop).  The labels are the course's, padded as it pads them.  The
+** lines go into a trace's block as renderer 4's traces do (io/trace_int.h):
+** a list's line written in place, its numbers by pt_jnum_f (a vertex's from
+** the spellings kept in vnum), printf only for the seldom lines (say()).
 */
 #include <stdarg.h>
 #include <stdio.h>
