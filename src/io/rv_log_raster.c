@@ -1,124 +1,196 @@
 /*
 ** src/io/rv_log_raster.c -- renderers 7 and 9: the rasterizer's lines of the course's debug log
 ** See LICENSE for copyright and license.
+**
+** The lines are laid at the end of the log's block as renderer 4's trace
+** writers lay theirs (io/trace_int.h): room for a whole line, its numbers
+** written in place (pt_jnum_f, pt_jnum_dtoa; integers from the block's digit
+** table), no printf.  pt_klog_* (renderer 4's log, trace_kraft.c, writes to
+** a FILE) lay the same lines into a buffer of their own.
 */
+#include <assert.h>
+#include <string.h>
 #include "io/rv_log_raster.h"
 #include "io/jnum.h"
+#include "io/trace.h"
+#include "io/trace_int.h"
+
+/* The most one call below writes: eight numbers as Java spells them, the
+** labels and integers between them. */
+#define KLOG_ROOM (8 * PT_JNUM_LEN + 512)
+
+/* ===== the lines, at o (each returns the end) ===== */
+
+/* String.format("%W.Pf", x) at o. */
+static char *jf_at(char *o, double x, int width, int prec)
+{
+    return o + pt_jnum_f(o, x, width, prec, 0);
+}
+
+/* Double.toString(x) at o. */
+static char *jd_at(char *o, double x)
+{
+    return o + pt_jnum_dtoa(o, x);
+}
+
+/* "(LABEL) = (%9.4f, %9.4f)\n"; label: a short literal (32 bytes at most). */
+static char *pair_at(char *o, const char *label, double a, double b)
+{
+    assert(strlen(label) <= 32);
+    o = str_at(str_at(o, "("), label);
+    o = jf_at(str_at(o, ") = ("), a, 9, 4);
+    o = jf_at(str_at(o, ", "), b, 9, 4);
+    return str_at(o, ")\n");
+}
+
+/* "r=%.4f g=%.4f b=%.4f", the floats widened as Java does. */
+static char *rgb_at(char *o, float r, float g, float b)
+{
+    o = jf_at(str_at(o, "r="), (double)r, 0, 4);
+    o = jf_at(str_at(o, " g="), (double)g, 0, 4);
+    return jf_at(str_at(o, " b="), (double)b, 0, 4);
+}
+
+static char *slopes_at(char *o, double m, const char *so, const double mc[3],
+                       double x0_vp, double y0_vp, double x1_vp, double y1_vp)
+{
+    static const char *const chan[3] = {"mRed", "mGrn", "mBlu"};
+    int i;
+
+    o = jd_at(str_at(o, "Slope m    = "), m);
+    if (so) {
+        assert(strlen(so) <= 32);
+        o = jd_at(str_at(str_at(str_at(o, " ("), so), " 1/m = "), 1 / m);
+        o = str_at(o, ")");
+    }
+    o = str_at(o, "\n");
+    for (i = 0; i < 3; i++)
+        o = str_at(jd_at(str_at(str_at(str_at(o, "Slope "), chan[i]), " = "), mc[i]), "\n");
+    o = pair_at(o, "x0_vp, y0_vp", x0_vp, y0_vp);
+    return pair_at(o, "x1_vp, y1_vp", x1_vp, y1_vp);
+}
+
+/* ===== renderer 4's: to a FILE ===== */
 
 void pt_klog_pair(FILE *f, const char *label, double a, double b)
 {
-    char sa[PT_JNUM_LEN], sb[PT_JNUM_LEN];
-
-    pt_jnum_f(sa, a, 9, 4, 0);
-    pt_jnum_f(sb, b, 9, 4, 0);
-    fprintf(f, "(%s) = (%s, %s)\n", label, sa, sb);
+    char buf[KLOG_ROOM];
+    fwrite(buf, 1, (size_t)(pair_at(buf, label, a, b) - buf), f);
 }
 
 void pt_klog_rgb(FILE *f, float r, float g, float b)
 {
-    char sr[PT_JNUM_LEN], sg[PT_JNUM_LEN], sb[PT_JNUM_LEN];
-
-    pt_jnum_f(sr, (double)r, 0, 4, 0);
-    pt_jnum_f(sg, (double)g, 0, 4, 0);
-    pt_jnum_f(sb, (double)b, 0, 4, 0);
-    fprintf(f, "r=%s g=%s b=%s", sr, sg, sb);
+    char buf[KLOG_ROOM];
+    fwrite(buf, 1, (size_t)(rgb_at(buf, r, g, b) - buf), f);
 }
 
 void pt_klog_slopes(FILE *f, double m, const char *so, const double mc[3],
                     double x0_vp, double y0_vp, double x1_vp, double y1_vp)
 {
-    static const char *const chan[3] = {"mRed", "mGrn", "mBlu"};
-    char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
-    int i;
+    char buf[KLOG_ROOM];
+    fwrite(buf, 1, (size_t)(slopes_at(buf, m, so, mc, x0_vp, y0_vp, x1_vp, y1_vp) - buf), f);
+}
 
-    pt_jnum_dtoa(one, m);
-    if (!so) {
-        fprintf(f, "Slope m    = %s\n", one);
-    } else {
-        pt_jnum_dtoa(two, 1 / m);
-        fprintf(f, "Slope m    = %s (%s 1/m = %s)\n", one, so, two);
-    }
-    for (i = 0; i < 3; i++) {
-        pt_jnum_dtoa(one, mc[i]);
-        fprintf(f, "Slope %s = %s\n", chan[i], one);
-    }
-    pt_klog_pair(f, "x0_vp, y0_vp", x0_vp, y0_vp);
-    pt_klog_pair(f, "x1_vp, y1_vp", x1_vp, y1_vp);
+/* ===== renderers 7 and 9's: to the log's block ===== */
+
+/* The block's room for a call's lines, and the end of what was written. */
+static char *at(pt_trace *t)
+{
+    return room(t, KLOG_ROOM);
+}
+
+static void end_at(pt_trace *t, char *o)
+{
+    t->len = (size_t)(o - t->buf);
 }
 
 static void on_ends(void *ud, double x0, double y0, double x1, double y1)
 {
-    pt_klog_pair((FILE *)ud, "x0_pp, y0_pp", x0, y0);
-    pt_klog_pair((FILE *)ud, "x1_pp, y1_pp", x1, y1);
+    pt_trace *t = ud;
+    end_at(t, pair_at(pair_at(at(t), "x0_pp, y0_pp", x0, y0), "x1_pp, y1_pp", x1, y1));
 }
 
 static void on_slopes(void *ud, const pt_rv_slopes *s)
 {
-    pt_klog_slopes((FILE *)ud, s->m, s->transposed ? "transposed, so" : NULL, s->mc,
-                   s->x0_vp, s->y0_vp, s->x1_vp, s->y1_vp);
+    pt_trace *t = ud;
+    end_at(t, slopes_at(at(t), s->m, s->transposed ? "transposed, so" : NULL, s->mc,
+                        s->x0_vp, s->y0_vp, s->x1_vp, s->y1_vp));
 }
 
 static void on_point(void *ud, double x, double y)
 {
-    pt_klog_pair((FILE *)ud, "x_pp, y_pp", x, y);
+    pt_trace *t = ud;
+    end_at(t, pair_at(at(t), "x_pp, y_pp", x, y));
 }
 
-static void put_rgb(FILE *f, pt_rgb c)
+static char *rgb_of(char *o, pt_rgb c)
 {
-    pt_klog_rgb(f, c.r, c.g, c.b);
+    return rgb_at(o, c.r, c.g, c.b);
 }
 
-/* "(x_pp=..., y_pp=...)": %4d for the stepped coordinate, else %9.4f. */
-static void put_pp(FILE *f, double x, int x_int, double y, int y_int)
+/* "(x_pp=..., y_pp=...)  ": %4d for the stepped coordinate, else %9.4f. */
+static char *pp_at(const pt_trace *t, char *o, double x, int x_int, double y, int y_int)
 {
-    char s[PT_JNUM_LEN];
-
-    if (x_int) fprintf(f, "(x_pp=%4d, ", (int)x);
-    else { pt_jnum_f(s, x, 9, 4, 0); fprintf(f, "(x_pp=%s, ", s); }
-    if (y_int) fprintf(f, "y_pp=%4d)  ", (int)y);
-    else { pt_jnum_f(s, y, 9, 4, 0); fprintf(f, "y_pp=%s)  ", s); }
+    o = str_at(o, "(x_pp=");
+    o = x_int ? int_at(t, o, (int)x, 4) : jf_at(o, x, 9, 4);
+    o = str_at(o, ", y_pp=");
+    o = y_int ? int_at(t, o, (int)y, 4) : jf_at(o, y, 9, 4);
+    return str_at(o, ")  ");
 }
 
 static void on_pixel(void *ud, const pt_rv_pixel *px)
 {
-    FILE *f = ud;
+    pt_trace *t = ud;
     const pt_rv_raster_par *par = px->par;
     int stepped = px->kind == PT_RV_PX_STEP || px->kind == PT_RV_PX_AA;
+    char *o = at(t);
 
-    fprintf(f, "fb_[w=%d,h=%d] vp_[x=%4d, y=%4d, w=%d,h=%d]  ",
-            par->W, par->H, par->x_ul, par->y_ul, par->w, par->h);
-    put_pp(f, px->x_pp, stepped && !px->transposed, px->y_pp, stepped && px->transposed);
+    o = int_at(t, str_at(o, "fb_[w="), par->W, 0);
+    o = int_at(t, str_at(o, ",h="), par->H, 0);
+    o = int_at(t, str_at(o, "] vp_[x="), par->x_ul, 4);
+    o = int_at(t, str_at(o, ", y="), par->y_ul, 4);
+    o = int_at(t, str_at(o, ", w="), par->w, 0);
+    o = int_at(t, str_at(o, ",h="), par->h, 0);
+    o = pp_at(t, str_at(o, "]  "), px->x_pp, stepped && !px->transposed, px->y_pp,
+              stepped && px->transposed);
     switch (px->kind) {
     case PT_RV_PX_STEP:
     case PT_RV_PX_END:
     case PT_RV_PX_POINT:
-        fprintf(f, "(x_vp=%4d, y_vp=%4d)  ", px->x_vp, px->y_vp);
-        put_rgb(f, px->c[0]);
+        o = int_at(t, str_at(o, "(x_vp="), px->x_vp, 4);
+        o = int_at(t, str_at(o, ", y_vp="), px->y_vp, 4);
+        o = rgb_of(str_at(o, ")  "), px->c[0]);
         break;
     case PT_RV_PX_AA:
-        if (!px->transposed) fprintf(f, "x_vp=%4d {y_low=%4d ", px->x_vp, px->lo);
-        else fprintf(f, "y_vp=%4d {x_low=%4d ", px->y_vp, px->lo);
-        put_rgb(f, px->c[0]);
-        fprintf(f, "} {%s =%4d ", px->transposed ? "x_hi" : "y_hi", px->hi);
-        put_rgb(f, px->c[1]);
-        fputc('}', f);
+        o = int_at(t, str_at(o, px->transposed ? "y_vp=" : "x_vp="),
+                   px->transposed ? px->y_vp : px->x_vp, 4);
+        o = int_at(t, str_at(o, px->transposed ? " {x_low=" : " {y_low="), px->lo, 4);
+        o = rgb_of(str_at(o, " "), px->c[0]);
+        o = int_at(t, str_at(o, px->transposed ? "} {x_hi =" : "} {y_hi ="), px->hi, 4);
+        o = str_at(rgb_of(str_at(o, " "), px->c[1]), "}");
         break;
     }
-    fputs(px->kind == PT_RV_PX_POINT && px->clipped ? " : Clipped\n" : "\n", f);
+    end_at(t, str_at(o, px->kind == PT_RV_PX_POINT && px->clipped ? " : Clipped\n" : "\n"));
 }
 
 static void on_bad(void *ud, int x, int y, int W, int H)
 {
-    fprintf((FILE *)ud, "FrameBuffer: Bad pixel coordinate (%d, %d) [w=%d, h=%d]\n", x, y, W, H);
+    pt_trace *t = ud;
+    char *o = int_at(t, str_at(at(t), "FrameBuffer: Bad pixel coordinate ("), x, 0);
+
+    o = int_at(t, str_at(o, ", "), y, 0);
+    o = int_at(t, str_at(o, ") [w="), W, 0);
+    o = int_at(t, str_at(o, ", h="), H, 0);
+    end_at(t, str_at(o, "]\n"));
 }
 
-void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, FILE *f, int debug)
+void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, struct pt_trace *t, int debug)
 {
     ls->ends = debug ? on_ends : NULL;
     ls->slopes = debug ? on_slopes : NULL;
     ls->point = debug ? on_point : NULL;
     ls->pixel = debug ? on_pixel : NULL;
     ls->bad = on_bad;
-    ls->ud = f;
+    ls->ud = t;
     ls->clipped_points = debug;
 }

@@ -17,11 +17,14 @@
 #include <stdio.h>
 #include "core/pipetrace.h"
 
-/* Fill *ls to write to f: with debug (Rasterize.debug, and the scene's or
+struct pt_trace;                 /* io/trace.h */
+
+/* Fill *ls to write to the block of t (trace_int.h; the log's FILE is
+** t's): with debug (Rasterize.debug, and the scene's or
 ** position's debug on) every line, else only the Bad pixel coordinate lines,
-** which the course prints always.  f must outlive ls's use.  This function
-** can't fail (write errors show in ferror(f)). */
-void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, FILE *f, int debug);
+** which the course prints always.  t must outlive ls's use.  This function
+** can't fail (write errors show in ferror() of t's FILE). */
+void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, struct pt_trace *t, int debug);
 
 /* The lines every renderer's rasterizer prints alike (renderer 4's log,
 ** src/io/trace_kraft.c, writes them too).  These functions can't fail.

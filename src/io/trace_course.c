@@ -5,11 +5,18 @@
 ** A listener of the driver (core/course.h): each callback prints the lines
 ** the course's Java prints at that point, gated as PipelineLogger gates them
 ** (debugScene || debugPosition, the latter set per position and kept after
-** the loop).  The labels are the course's, padded as it pads them.
+** the loop).  The labels are the course's, padded as it pads them.  The
+** lines go into a trace's block as renderer 4's traces do (io/trace_int.h):
+** a list's line written in place, its numbers by pt_jnum_f (a vertex's from
+** the spellings kept in vnum), printf only for the seldom lines (say()).
 */
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "io/trace_course.h"
+#include "io/trace.h"
+#include "io/trace_int.h"
 #include "io/trace_kraft.h"
 #include "io/jnum.h"
 #include "io/rv_log_raster.h"
@@ -42,136 +49,223 @@ static const char *const phase_verb[8] = {
     "", "", "Transform model", "Transform model", "Near_Clip model", "Project model",
     "Clip model", "Rasterize model"};
 
+/* The spellings of the doubles a vertex shows ("% 10.5f") that the log
+** keeps, by their bits' hash as the trace keeps its (trace_int.h: num_slot):
+** a model's vertices come again in every stage's list and in each
+** primitive's lines. */
+#define VNUM_BITS 8
+#define VNUM_LEN 23              /* longer spellings are not kept */
+
 typedef struct clog {
-    FILE *f;
+    pt_trace *t;                 /* the output block (trace_int.h) */
+    int failed;                  /* out of memory */
     const pt_scene *s;
     unsigned dbg;
     int drv;                     /* 0 r7, 1 r9 Pipeline, 2 r9 Pipeline2 */
     int debug_position;          /* PipelineLogger.debugPosition */
     const char *nc_lab, *clip_lab;   /* "3. Near_Clipp", "5. Clipp" (+ ing/ed) */
+    struct vnum {                /* the kept spellings: a slot holds the */
+        uint64_t bits;           /*   spelling of the bits it holds */
+        unsigned char len;
+        char s[VNUM_LEN];
+    } vnum[1 << VNUM_BITS];
 } clog;
 
-static int on(const clog *w)
+/* The room a line of the log asks for before it writes by pointer: its
+** label and integers, and four numbers as Java spells them. */
+#define LINE_ROOM (512 + 4 * PT_JNUM_LEN)
+
+static int on(clog *w)
 {
     return (w->dbg & PT_KDBG_SCENE) || w->debug_position;
 }
 
 /* ===== numbers and objects as Java prints them ===== */
 
-static void jf(const clog *w, double x, int width, int prec, unsigned flags)
+/* printf(fmt, ...) at the end of the block: the log's seldom lines (a
+** render's marks, the warnings).  A failed allocation sets w->failed. */
+static void say(clog *w, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+static void say(clog *w, const char *fmt, ...)
 {
-    char b[PT_JNUM_LEN];
-    pt_jnum_f(b, x, width, prec, flags);
-    fputs(b, w->f);
+    va_list ap;
+    char b[1024], *big;
+    int n;
+
+    va_start(ap, fmt);
+    n = vsnprintf(b, sizeof b, fmt, ap);
+    va_end(ap);
+    if (n < 0) return;
+    if ((size_t)n < sizeof b) { put(w->t, b, (size_t)n); return; }
+    if (!(big = malloc((size_t)n + 1))) { w->failed = 1; return; }   /* a long name */
+    va_start(ap, fmt);
+    vsnprintf(big, (size_t)n + 1, fmt, ap);
+    va_end(ap);
+    put(w->t, big, (size_t)n);
+    free(big);
 }
 
-static void jd(const clog *w, double x)
+static void out(clog *w, const char *s)
 {
-    char b[PT_JNUM_LEN];
-    pt_jnum_dtoa(b, x);
-    fputs(b, w->f);
+    puts_(w->t, s);
 }
 
-/* Vertex.toString(): r7 "(x,y,z) = (...)", r9 "(x,y,z,w)=(...)". */
-static void vertex(const clog *w, pt_vec4 v)
+/* String.format("%W.Pf", x) (pt_jnum_f) at o; returns the end. */
+static char *jf_at(char *o, double x, int width, int prec, unsigned flags)
 {
-    if (w->drv == 0) {
-        fputs("(x,y,z) = (", w->f);
-        jf(w, v.x, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-        jf(w, v.y, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-        jf(w, v.z, 10, 5, PT_JNUM_SPACE); fputs(")", w->f);
-        return;
+    return o + pt_jnum_f(o, x, width, prec, flags);
+}
+
+static void jf(clog *w, double x, int width, int prec, unsigned flags)
+{
+    char *o = room(w->t, PT_JNUM_LEN);
+    w->t->len = (size_t)(jf_at(o, x, width, prec, flags) - w->t->buf);
+}
+
+static void jd(clog *w, double x)
+{
+    char *o = room(w->t, PT_JNUM_LEN);
+    w->t->len += pt_jnum_dtoa(o, x);
+}
+
+/* "% 10.5f" of x, a vertex's number, at o: from its kept spelling when it
+** is x's, else by pt_jnum_f (and kept when short). */
+static char *vnum_at(clog *w, char *o, double x)
+{
+    struct vnum *e;
+    uint64_t bits;
+    size_t n;
+
+    memcpy(&bits, &x, sizeof bits);
+    e = &w->vnum[(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - VNUM_BITS)];
+    if (e->bits == bits && e->len) {
+        memcpy(o, e->s, VNUM_LEN);
+        return o + e->len;
     }
-    fputs("(x,y,z,w)=(", w->f);
-    jf(w, v.x, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-    jf(w, v.y, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-    jf(w, v.z, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-    jf(w, v.w, 10, 5, PT_JNUM_SPACE); fputs(")", w->f);
+    n = pt_jnum_f(o, x, 10, 5, PT_JNUM_SPACE);
+    if (n <= VNUM_LEN) {
+        e->bits = bits;
+        e->len = (unsigned char)n;
+        memcpy(e->s, o, n);
+    }
+    return o + n;
 }
 
-static void color(const clog *w, pt_rgb c)
+/* Vertex.toString() at o: r7 "(x,y,z) = (...)", r9 "(x,y,z,w)=(...)". */
+static char *vertex_at(clog *w, char *o, pt_vec4 v)
 {
-    fprintf(w->f, "java.awt.Color[r=%d,g=%d,b=%d]", pt_color_byte(c.r), pt_color_byte(c.g), pt_color_byte(c.b));
+    o = str_at(o, w->drv == 0 ? "(x,y,z) = (" : "(x,y,z,w)=(");
+    o = vnum_at(w, o, v.x);
+    o = vnum_at(w, str_at(o, "  "), v.y);
+    o = vnum_at(w, str_at(o, "  "), v.z);
+    if (w->drv) o = vnum_at(w, str_at(o, "  "), v.w);
+    return str_at(o, ")");
 }
 
-static void prim(const clog *w, const pt_rv_prim *p)
+/* Color.toString(): the bytes java.awt.Color keeps of the floats. */
+static char *color_at(clog *w, char *o, pt_rgb c)
 {
-    if (p->kind == PT_RV_POINT)
-        fprintf(w->f, "Point: ([%lu], [%lu]) radius = %d", (unsigned long)p->v[0],
-                (unsigned long)p->c[0], p->radius);
-    else
-        fprintf(w->f, "LineSegment: ([%lu, %lu], [%lu, %lu])", (unsigned long)p->v[0],
-                (unsigned long)p->v[1], (unsigned long)p->c[0], (unsigned long)p->c[1]);
+    o = u64_at(w->t, str_at(o, "java.awt.Color[r="), (uint64_t)pt_color_byte(c.r));
+    o = u64_at(w->t, str_at(o, ",g="), (uint64_t)pt_color_byte(c.g));
+    o = u64_at(w->t, str_at(o, ",b="), (uint64_t)pt_color_byte(c.b));
+    return str_at(o, "]");
+}
+
+/* Point.toString(), LineSegment.toString(): 0-based indices. */
+static char *prim_at(clog *w, char *o, const pt_rv_prim *p)
+{
+    const pt_trace *t = w->t;
+
+    if (p->kind == PT_RV_POINT) {
+        o = u64_at(t, str_at(o, "Point: (["), p->v[0]);
+        o = u64_at(t, str_at(o, "], ["), p->c[0]);
+        return int_at(t, str_at(o, "]) radius = "), p->radius, 0);
+    }
+    o = u64_at(t, str_at(o, "LineSegment: (["), p->v[0]);
+    o = u64_at(t, str_at(o, ", "), p->v[1]);
+    o = u64_at(t, str_at(o, "], ["), p->c[0]);
+    o = u64_at(t, str_at(o, ", "), p->c[1]);
+    return str_at(o, "])");
+}
+
+/* A line: lab (put first: it may be long), pre, idx right-aligned in idx_w
+** columns ("%3lu") and post, then what it shows, L_VERTEX, L_COLOR or
+** L_PRIM: vertex, colour or primitive k of m; then the line's end. */
+enum { L_VERTEX, L_COLOR, L_PRIM };
+static void line(clog *w, const char *lab, const char *pre, int idx_w, size_t idx,
+                 const char *post, int what, const pt_rv_model *m, size_t k)
+{
+    pt_trace *t = w->t;
+    char *o;
+
+    out(w, lab);
+    o = str_at(room(t, LINE_ROOM), pre);
+    o = str_at(int_at(t, o, (int64_t)idx, (size_t)idx_w), post);
+    switch (what) {
+    case L_VERTEX: o = vertex_at(w, o, m->v[k]); break;
+    case L_COLOR: o = color_at(w, o, m->c[k]); break;
+    case L_PRIM: o = prim_at(w, o, &m->p[k]); break;
+    }
+    t->len = (size_t)(str_at(o, "\n") - t->buf);
 }
 
 /* Matrix.toString(): four rows of "% 9.5f", no newline after the last. */
-static void matrix(const clog *w, const pt_jmat *m)
+static void matrix(clog *w, const pt_jmat *m)
 {
     static const char *const open[4] = {"[[", " [", " [", " ["};
     int i, j;
 
     for (i = 0; i < 4; i++) {
-        fputs(open[i], w->f);
+        out(w, open[i]);
         for (j = 0; j < 4; j++) {
             const pt_vec4 *c = &m->col[j];
             double x = i == 0 ? c->x : i == 1 ? c->y : i == 2 ? c->z : c->w;
-            if (j) fputs("  ", w->f);
+            if (j) out(w, "  ");
             jf(w, x, 9, 5, PT_JNUM_SPACE);
         }
-        fputs(i < 3 ? " ]\n" : " ]]", w->f);
+        out(w, i < 3 ? " ]\n" : " ]]");
     }
 }
 
 /* PipelineLogger.logPrimitive: the primitive, its vertices, its colours. */
-static void log_prim(const clog *w, const char *lab, const char *suffix,
+static void log_prim(clog *w, const char *lab, const char *suffix,
                      const pt_rv_model *m, const pt_rv_prim *p)
 {
     int k, n = p->kind == PT_RV_POINT ? 1 : 2;
+    char *o;
 
     if (!on(w)) return;
-    fprintf(w->f, "%s%s: ", lab, suffix);
-    prim(w, p);
-    fputc('\n', w->f);
-    for (k = 0; k < n; k++) {
-        fprintf(w->f, "   vIndex = %3lu, ", (unsigned long)p->v[k]);
-        vertex(w, m->v[p->v[k]]);
-        fputc('\n', w->f);
-    }
-    for (k = 0; k < n; k++) {
-        fprintf(w->f, "   cIndex = %3lu, ", (unsigned long)p->c[k]);
-        color(w, m->c[p->c[k]]);
-        fputc('\n', w->f);
-    }
+    out(w, lab);
+    o = prim_at(w, str_at(str_at(room(w->t, LINE_ROOM), suffix), ": "), p);
+    w->t->len = (size_t)(str_at(o, "\n") - w->t->buf);
+    for (k = 0; k < n; k++) line(w, "", "   vIndex = ", 3, p->v[k], ", ", L_VERTEX, m, p->v[k]);
+    for (k = 0; k < n; k++) line(w, "", "   cIndex = ", 3, p->c[k], ", ", L_COLOR, m, p->c[k]);
 }
 
 /* logVertexList, logColorList, logPrimitiveList. */
-static void lists(const clog *w, const char *lab, int which, const pt_rv_model *m)
+static void lists(clog *w, const char *lab, int which, const pt_rv_model *m)
 {
     size_t k;
 
     if (!on(w)) return;
     if (which & LV) {
-        if (m->nv == 0) fprintf(w->f, "%s: empty vertex list\n", lab);
-        for (k = 0; k < m->nv; k++) {
-            fprintf(w->f, "%s: vIndex = %3lu, ", lab, (unsigned long)k);
-            vertex(w, m->v[k]);
-            fputc('\n', w->f);
-        }
+        if (m->nv == 0) say(w, "%s: empty vertex list\n", lab);
+        for (k = 0; k < m->nv; k++) line(w, lab, ": vIndex = ", 3, k, ", ", L_VERTEX, m, k);
     }
     if (which & LC) {
-        if (m->nc == 0) fprintf(w->f, "%s: empty color list\n", lab);
-        for (k = 0; k < m->nc; k++) {
-            fprintf(w->f, "%s: cIndex = %3lu, ", lab, (unsigned long)k);
-            color(w, m->c[k]);
-            fputc('\n', w->f);
-        }
+        if (m->nc == 0) say(w, "%s: empty color list\n", lab);
+        for (k = 0; k < m->nc; k++) line(w, lab, ": cIndex = ", 3, k, ", ", L_COLOR, m, k);
     }
     if (which & LP) {
-        if (m->np == 0) fprintf(w->f, "%s: empty primitive list\n", lab);
+        if (m->np == 0) say(w, "%s: empty primitive list\n", lab);
         for (k = 0; k < m->np; k++) {
-            fprintf(w->f, "%s: ", lab);
-            prim(w, &m->p[k]);
-            fputc('\n', w->f);
+            char *o;
+            out(w, lab);
+            o = prim_at(w, str_at(room(w->t, LINE_ROOM), ": "), &m->p[k]);
+            w->t->len = (size_t)(str_at(o, "\n") - w->t->buf);
         }
     }
 }
@@ -179,44 +273,44 @@ static void lists(const clog *w, const char *lab, int which, const pt_rv_model *
 /* ===== the driver's events ===== */
 
 /* Camera.toString(). */
-static void camera(const clog *w, const pt_course_cam *c)
+static void camera(clog *w, const pt_course_cam *c)
 {
     const pt_rv_camera *k = &c->cam;
     double fovy = (180. / PI) * pt_jmath_atan(k->t) + (180. / PI) * pt_jmath_atan(-k->b);
 
-    fputs("Camera: \n  perspective = ", w->f);
-    fputs(k->perspective ? "true" : "false", w->f);
-    fputs("\n  left = ", w->f); jd(w, k->l);
-    fputs(",   right = ", w->f); jd(w, k->r);
-    fputs("\n  bottom = ", w->f); jd(w, k->b);
-    fputs(",   top = ", w->f); jd(w, k->t);
-    fputs("\n  near = ", w->f); jd(w, -k->n);
-    fputs("\n  (fovy = ", w->f); jd(w, fovy);
-    fputs(", aspect ratio = ", w->f); jf(w, (k->r - k->l) / (k->t - k->b), 0, 2, 0);
-    fputs(")\n", w->f);
+    out(w, "Camera: \n  perspective = ");
+    out(w, k->perspective ? "true" : "false");
+    out(w, "\n  left = "); jd(w, k->l);
+    out(w, ",   right = "); jd(w, k->r);
+    out(w, "\n  bottom = "); jd(w, k->b);
+    out(w, ",   top = "); jd(w, k->t);
+    out(w, "\n  near = "); jd(w, -k->n);
+    out(w, "\n  (fovy = "); jd(w, fovy);
+    out(w, ", aspect ratio = "); jf(w, (k->r - k->l) / (k->t - k->b), 0, 2, 0);
+    out(w, ")\n");
     if (w->drv == 0) return;
-    fputs("Normalization Matrix\n", w->f);
+    out(w, "Normalization Matrix\n");
     matrix(w, &c->norm);
-    fputs("\nTranslation Vector\n  [x,y,z,w] = [", w->f);
-    jf(w, k->view.x, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-    jf(w, k->view.y, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-    jf(w, k->view.z, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-    jf(w, 0.0, 10, 5, PT_JNUM_SPACE); fputs("]\n", w->f);
+    out(w, "\nTranslation Vector\n  [x,y,z,w] = [");
+    jf(w, k->view.x, 10, 5, PT_JNUM_SPACE); out(w, "  ");
+    jf(w, k->view.y, 10, 5, PT_JNUM_SPACE); out(w, "  ");
+    jf(w, k->view.z, 10, 5, PT_JNUM_SPACE); out(w, "  ");
+    jf(w, 0.0, 10, 5, PT_JNUM_SPACE); out(w, "]\n");
 }
 
 /* The position's placement line(s). */
-static void placement(const clog *w, const pt_course_pos *p)
+static void placement(clog *w, const pt_course_pos *p)
 {
     if (w->drv == 0) {
-        fputs("---- Translation vector = [x,y,z] = [", w->f);
-        jf(w, p->translate.x, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-        jf(w, p->translate.y, 10, 5, PT_JNUM_SPACE); fputs("  ", w->f);
-        jf(w, p->translate.z, 10, 5, PT_JNUM_SPACE); fputs("]\n", w->f);
+        out(w, "---- Translation vector = [x,y,z] = [");
+        jf(w, p->translate.x, 10, 5, PT_JNUM_SPACE); out(w, "  ");
+        jf(w, p->translate.y, 10, 5, PT_JNUM_SPACE); out(w, "  ");
+        jf(w, p->translate.z, 10, 5, PT_JNUM_SPACE); out(w, "]\n");
         return;
     }
-    fputs(w->drv == 2 ? "---- Transformation matrix:\n" : "---- Transformation matrix = ", w->f);
+    out(w, w->drv == 2 ? "---- Transformation matrix:\n" : "---- Transformation matrix = ");
     matrix(w, &p->matrix);
-    fputc('\n', w->f);
+    out(w, "\n");
 }
 
 static void on_mark(void *ud, pt_course_mark k, const pt_course_cam *cam,
@@ -233,81 +327,68 @@ static void on_mark(void *ud, pt_course_mark k, const pt_course_cam *cam,
     if (!on(w)) return;
     switch (k) {
     case PT_CMK_BEGIN:
-        if (w->drv == 0) fprintf(w->f, "\n== Begin Rendering of Scene: %s ==\n", sname);
-        else if (!p2) fprintf(w->f, "\n== Begin Rendering of Scene (Pipeline 1): %s ==\n", sname);
-        else fprintf(w->f, "\n= Begin Rendering of Scene (Pipeline 2): %s =\n", sname);
-        fputs(p2 ? "- Current Camera:\n" : "-- Current Camera:\n", w->f);
+        if (w->drv == 0) say(w, "\n== Begin Rendering of Scene: %s ==\n", sname);
+        else if (!p2) say(w, "\n== Begin Rendering of Scene (Pipeline 1): %s ==\n", sname);
+        else say(w, "\n= Begin Rendering of Scene (Pipeline 2): %s =\n", sname);
+        out(w, p2 ? "- Current Camera:\n" : "-- Current Camera:\n");
         camera(w, cam);
         break;
     case PT_CMK_POSITION:
-        fprintf(w->f, p2 ? "==== 1. Render position: %s ====\n" : "==== Render position: %s ====\n",
+        say(w, p2 ? "==== 1. Render position: %s ====\n" : "==== Render position: %s ====\n",
                 pos);
         placement(w, p);
         break;
     case PT_CMK_MODEL:
-        fprintf(w->f, p2 ? "==== 1. Model-to-world transform of: %s ====\n"
+        say(w, p2 ? "==== 1. Model-to-world transform of: %s ====\n"
                          : "====== Render model: %s ======\n", name);
         break;
     case PT_CMK_MODEL_END:
-        if (p2) fprintf(w->f, "==== 1. End Model: %s::%s ====\n", pos, name);
-        else fprintf(w->f, "====== End model: %s ======\n", name);
+        if (p2) say(w, "==== 1. End Model: %s::%s ====\n", pos, name);
+        else say(w, "====== End model: %s ======\n", name);
         break;
     case PT_CMK_MODEL_HIDDEN:
-        fprintf(w->f, p2 ? "==== 1. Hidden model: %s ====\n" : "====== Hidden model: %s ======\n",
+        say(w, p2 ? "==== 1. Hidden model: %s ====\n" : "====== Hidden model: %s ======\n",
                 name);
         break;
     case PT_CMK_POSITION_END:
-        fprintf(w->f, p2 ? "==== 1. End position: %s ====\n" : "==== End position: %s ====\n",
+        say(w, p2 ? "==== 1. End position: %s ====\n" : "==== End position: %s ====\n",
                 pos);
         break;
     case PT_CMK_POSITION_HIDDEN:
-        fprintf(w->f, p2 ? "==== 1. Hidden position: %s ====\n"
+        say(w, p2 ? "==== 1. Hidden position: %s ====\n"
                          : "==== Hidden position: %s ====\n", pos);
         break;
     case PT_CMK_END:
-        fputs(p2 ? "= End Rendering of Scene (Pipeline 2) =\n" : "== End Rendering of Scene ==\n",
-              w->f);
+        out(w, p2 ? "= End Rendering of Scene (Pipeline 2) =\n" : "== End Rendering of Scene ==\n");
         break;
     case PT_CMK_PHASE:
-        fprintf(w->f, "== %d. Begin %s of Scene ====\n", p->phase, phase_what[p->phase & 7]);
+        say(w, "== %d. Begin %s of Scene ====\n", p->phase, phase_what[p->phase & 7]);
         break;
     case PT_CMK_STEP:
-        fprintf(w->f, "==== %d. %s: %s::%s ====\n", p->phase, phase_verb[p->phase & 7], pos, name);
+        say(w, "==== %d. %s: %s::%s ====\n", p->phase, phase_verb[p->phase & 7], pos, name);
         break;
     case PT_CMK_STEP_END:
-        fprintf(w->f, "==== %d. End Model: %s::%s ====\n", p->phase, pos, name);
+        say(w, "==== %d. End Model: %s::%s ====\n", p->phase, pos, name);
         break;
     case PT_CMK_PHASE_END:                       /* stage 2's line says view-to-camera */
-        fprintf(w->f, "== %d. End %s of Scene ====\n", p->phase,
+        say(w, "== %d. End %s of Scene ====\n", p->phase,
                 phase_what[p->phase == 2 ? 3 : p->phase & 7]);
         break;
     }
 }
 
 /* Model.toString(), then println's newline. */
-static void dump(const clog *w, const pt_course_pos *p, const pt_rv_model *m)
+static void dump(clog *w, const pt_course_pos *p, const pt_rv_model *m)
 {
     size_t k;
 
-    fprintf(w->f, "Model: %s\nThis Model's visibility is: true\n", p->sm->name);
-    fprintf(w->f, "Model has %lu vertices.\nModel has %lu colors.\nModel has %lu primitives.\n",
-            (unsigned long)m->nv, (unsigned long)m->nc, (unsigned long)m->np);
-    for (k = 0; k < m->nv; k++) {
-        fprintf(w->f, "%lu: ", (unsigned long)k);
-        vertex(w, m->v[k]);
-        fputc('\n', w->f);
-    }
-    for (k = 0; k < m->nc; k++) {
-        fprintf(w->f, "%lu: ", (unsigned long)k);
-        color(w, m->c[k]);
-        fputc('\n', w->f);
-    }
-    for (k = 0; k < m->np; k++) {
-        fprintf(w->f, "%lu: ", (unsigned long)k);
-        prim(w, &m->p[k]);
-        fputc('\n', w->f);
-    }
-    fputc('\n', w->f);
+    say(w, "Model: %s\nThis Model's visibility is: true\n", p->sm->name);
+    say(w, "Model has %lu vertices.\nModel has %lu colors.\nModel has %lu primitives.\n",
+        (unsigned long)m->nv, (unsigned long)m->nc, (unsigned long)m->np);
+    for (k = 0; k < m->nv; k++) line(w, "", "", 0, k, ": ", L_VERTEX, m, k);
+    for (k = 0; k < m->nc; k++) line(w, "", "", 0, k, ": ", L_COLOR, m, k);
+    for (k = 0; k < m->np; k++) line(w, "", "", 0, k, ": ", L_PRIM, m, k);
+    out(w, "\n");
 }
 
 static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *p, const pt_rv_model *m)
@@ -316,19 +397,19 @@ static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *p, const pt
 
     switch (k) {
     case PT_CWN_NO_VERTICES:
-        fputs("***WARNING: This model does not have any vertices.\n", w->f);
+        out(w, "***WARNING: This model does not have any vertices.\n");
         break;
     case PT_CWN_NO_PRIMITIVES:
-        fputs("***WARNING: This model does not have any geometric primitives.\n", w->f);
+        out(w, "***WARNING: This model does not have any geometric primitives.\n");
         break;
     case PT_CWN_NO_COLORS:
-        fputs("***WARNING: This model does not have any colors.\n", w->f);
+        out(w, "***WARNING: This model does not have any colors.\n");
         break;
     case PT_CWN_DUMP:
         dump(w, p, m);
         break;
     case PT_CWN_DEFAULT_COLOR:
-        fprintf(w->f, "***WARNING: Added default color to model: %s.\n", p->sm->name);
+        say(w, "***WARNING: Added default color to model: %s.\n", p->sm->name);
         break;
     }
 }
@@ -374,7 +455,7 @@ static void clip_end(void *ud, const pt_rv_model *m, const pt_rv_prim *p, int ac
     log_prim(w, w->clip_lab, accepted ? "ed (accept)" : "ed (reject)", m, p);
 }
 
-static int clip_on(const clog *w)
+static int clip_on(clog *w)
 {
     return on(w) && (w->dbg & PT_KDBG_CLIP);
 }
@@ -383,24 +464,24 @@ static void nc_trivial(void *ud, int accept)
 {
     clog *w = ud;
     if (clip_on(w))
-        fputs(accept ? "-- Near_Clip: Trivial accept.\n" : "-- Near_Clip: Trivial delete.\n", w->f);
+        out(w, accept ? "-- Near_Clip: Trivial accept.\n" : "-- Near_Clip: Trivial delete.\n");
 }
 
 static void clip_trivial(void *ud, int accept)
 {
     clog *w = ud;
-    if (clip_on(w)) fputs(accept ? "-- Trivial accept.\n" : "-- Trivial delete.\n", w->f);
+    if (clip_on(w)) out(w, accept ? "-- Trivial accept.\n" : "-- Trivial delete.\n");
 }
 
 /* "<% .Pf, % .Pf, % .Pf" (sep between them) of a point's first n coordinates. */
-static void coords(const clog *w, const char *head, pt_vec4 v, int n, int prec,
+static void coords(clog *w, const char *head, pt_vec4 v, int n, int prec,
                    unsigned flags, const char *sep, const char *tail)
 {
-    fputs(head, w->f);
-    jf(w, v.x, 0, prec, flags); fputs(sep, w->f);
+    out(w, head);
+    jf(w, v.x, 0, prec, flags); out(w, sep);
     jf(w, v.y, 0, prec, flags);
-    if (n == 3) { fputs(sep, w->f); jf(w, v.z, 0, prec, flags); }
-    fputs(tail, w->f);
+    if (n == 3) { out(w, sep); jf(w, v.z, 0, prec, flags); }
+    out(w, tail);
 }
 
 static pt_vec4 rgb4(pt_rgb c)
@@ -414,11 +495,11 @@ static void nc_cut(void *ud, const pt_rv_cut *c)
     clog *w = ud;
 
     if (!clip_on(w)) return;
-    fprintf(w->f, "-- Clip off v%d at z=", c->off);
+    say(w, "-- Clip off v%d at z=", c->off);
     jf(w, c->plane, 0, 3, 0);
-    fputs("\n-- t = ", w->f);
+    out(w, "\n-- t = ");
     jf(w, c->t, 0, 25, 0);
-    fputc('\n', w->f);
+    out(w, "\n");
     coords(w, "-- <x0, y0, z0> = <", c->p[0], 3, 8, PT_JNUM_SPACE, ", ", "\n");
     coords(w, "-- <x1, y1, z1> = <", c->p[1], 3, 8, PT_JNUM_SPACE, ", ", "\n");
     coords(w, "-- <x,  y,  z>  = <", c->p[2], 3, 8, PT_JNUM_SPACE, ", ", "\n");
@@ -440,9 +521,9 @@ static void clip_cut(void *ud, const pt_rv_cut *c)
     case PT_RV_YPOS: eq = "y = +1"; break;
     case PT_RV_YNEG: eq = "y = -1"; break;
     }
-    fprintf(w->f, "-- Clip off v%d at %s\n-- t = ", c->off, eq);
+    say(w, "-- Clip off v%d at %s\n-- t = ", c->off, eq);
     jf(w, c->t, 0, 25, PT_JNUM_SPACE);
-    fputc('\n', w->f);
+    out(w, "\n");
     coords(w, "-- <x_i, y_i> = <", c->p[0], 2, 24, PT_JNUM_SPACE, ", ", ">\n");
     coords(w, "-- <x_o, y_o> = <", c->p[1], 2, 24, PT_JNUM_SPACE, ", ", ">\n");
     coords(w, "-- <x_c, y_c> = <", c->p[2], 2, 24, PT_JNUM_SPACE, ", ", ">\n");
@@ -497,11 +578,15 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
     clog w;
     pt_course_ls ls;
     pt_rv_raster_ls rls;
-    int pixels = (dbg & PT_KDBG_RASTERIZE) && (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION));
+    int rc, pixels = (dbg & PT_KDBG_RASTERIZE) && (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION));
 
     if (pixels && log_check(s, fb, err, errlen) != 0) return -1;   /* nothing written */
     memset(&w, 0, sizeof w);
-    w.f = f;
+    if (!(w.t = malloc(sizeof *w.t))) {
+        snprintf(err, errlen, "pipetrace: out of memory");
+        return -1;
+    }
+    pt_trace_init(w.t, f, PT_FORMAT_KRAFT, 0);
     w.s = s;
     w.dbg = dbg;
     w.drv = s->renderer == 9 ? (s->pipeline2 ? 2 : 1) : 0;
@@ -524,12 +609,12 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
     ls.clip.ud = &w;
     /* the rasterizer's lines: Rasterize.debug under the scene's or the
     ** positions' debug (the same for every position); Bad pixel lines always */
-    pt_rv_log_raster_ls(&rls, f, pixels);
+    pt_rv_log_raster_ls(&rls, w.t, pixels);
     ls.raster_ls = &rls;
     ls.ud = &w;
-    if (pt_course_render(s, fb, &ls) != 0) {
-        snprintf(err, errlen, "pipetrace: out of memory");
-        return -1;
-    }
-    return 0;
+    rc = pt_course_render(s, fb, &ls) != 0 || w.failed ? -1 : 0;
+    pt_trace_flush(w.t);                     /* write errors: in ferror(f) */
+    free(w.t);
+    if (rc) snprintf(err, errlen, "pipetrace: out of memory");
+    return rc;
 }

@@ -6,7 +6,9 @@
 ** event: a vertex at a stage (the clip stages: only the vertices they make,
 ** with the primitive and t they came from), a primitive drawn.  Three small
 ** formatters spell a record: JSON Lines, text, CSV.  docs/trace-format.md
-** lists the fields.
+** lists the fields.  They write as renderer 4's writers do (io/trace_int.h):
+** into the trace's 256 KiB block, a record's numbers in place, JSON's and
+** CSV's doubles through the block's kept spellings.
 */
 #include <math.h>
 #include <stdio.h>
@@ -14,6 +16,7 @@
 #include <string.h>
 #include "io/trace_course.h"
 #include "io/trace.h"
+#include "io/trace_int.h"
 #include "io/explain_course.h"
 #include "io/numfmt.h"
 #include "io/sbuf.h"
@@ -46,11 +49,14 @@ typedef struct rec {
     const char *explain;         /* vertex, --explain: its formula with its numbers */
 } rec;
 
+#define KEPT_BITS 8              /* log2 of the slots of each table of kept() */
+
 typedef struct walker {
-    FILE *f;
+    pt_trace *t;                 /* the output block and its numbers (trace_int.h) */
     const pt_scene *s;
     int fmt, precision, w4;
-    pt_sbuf sb;
+    int failed;                  /* out of memory: nothing more is written */
+    pt_sbuf sb;                  /* the header, --explain's JSON string */
     uint64_t prim_no;            /* the primitive a clip stage is on */
     uint64_t raster_no;          /* the primitive the rasterizer is on */
     const char *clip_stage;
@@ -59,42 +65,94 @@ typedef struct walker {
     size_t norg, cap_org;
     uint64_t nvrec, nprims, npixels;
     const pt_course_pos *pos;    /* the position the rasterizer draws */
-    pt_sbuf names;               /* JSON: ,"model":M,"position":P for the
-                                 ** names below (made once: every record of a
-                                 ** position has it) */
+    pt_sbuf names;               /* how a record names its position, made once
+                                 ** for the names below (every record of a
+                                 ** position has it): JSON ,"model":M,"position":P;
+                                 ** text M made safe for a terminal; CSV M,P, */
     const char *names_model, *names_position;
     int explain;                 /* --explain: each vertex record's formula */
     pt_course_cam cam;           /*   the camera, */
     struct prev { pt_vec4 *v; size_t n; } *prev;  /* each position's vertices
                                  ** after the stage reported last */
     char xbuf[8192];             /*   and the text of one record */
+    struct kept {                /* text: fixed-point spellings (kept()) */
+        uint64_t bits;
+        unsigned char len;       /* 0: an empty slot */
+        char s[39];
+    } kept[3][1 << KEPT_BITS];
+    char spill[400];             /* a spelling too long to keep ("%.6f" of
+                                 ** any double: 317 bytes at most) */
 } walker;
+
+/* The most a record writes after its names and before --explain's text:
+** eight numbers of 64 bytes (PT_NUMLEN + 2 at most; a colour's or
+** coverage's "%.6f" of a float, 47), integers of 20 digits, the stage's
+** and the edge's names, the keys. */
+#define REC_REST (8 * 64 + 8 * 24 + 256)
 
 /* ===== numbers ===== */
 
-static void num_json(pt_sbuf *sb, double x)
+/* A CSV cell's double: pt_fmt_shortest's spelling ("-0" for -0.0, "nan",
+** "inf"), kept for the next time in the trace's slots. */
+static char *num_csv_at(pt_trace *t, char *o, double x)
 {
-    char b[PT_NUMLEN];
-    if (isnan(x)) { pt_sbuf_add(sb, "\"nan\""); return; }
-    if (isinf(x)) { pt_sbuf_add(sb, x > 0 ? "\"inf\"" : "\"-inf\""); return; }
-    if (x == 0.0 && signbit(x)) { pt_sbuf_add(sb, "-0.0"); return; }
-    pt_fmt_shortest(b, x);
-    pt_sbuf_add(sb, b);
+    return short_at(t, o, x);
 }
 
-static void num_csv(pt_sbuf *sb, double x)
+/* The text trace's fixed-point spellings kept, by the bits' hash as the
+** trace keeps its shortest ones (trace_int.h: num_slot): a table for the
+** coordinates (w->precision digits), one for the colours (6), one for the
+** pixels' coverage (4).  A scene's colours and many of its coordinates come
+** again and again (white, a model's z, coverage 1). */
+enum { KEPT_XYZ, KEPT_RGB, KEPT_COVERAGE };
+
+/* x with prec digits after the point, from table which when kept there: the
+** spelling, its length in *n.  The coordinates as pt_fmt_fixed spells them;
+** a colour and a coverage "%.*f" (pt_fmt_fixed where it spells as printf
+** does, a finite x below 1e15; else printf: "-nan", a float's 39 digits). */
+static const char *kept(walker *w, int which, double x, int prec, size_t *n)
 {
-    char b[PT_NUMLEN];
-    if (x == 0.0 && signbit(x)) { pt_sbuf_add(sb, "-0"); return; }
-    pt_fmt_shortest(b, x);
-    pt_sbuf_add(sb, b);
+    struct kept *e;
+    uint64_t bits;
+    char b[sizeof w->spill];
+    size_t len;
+
+    memcpy(&bits, &x, sizeof bits);
+    e = &w->kept[which][(bits * UINT64_C(0x9e3779b97f4a7c15)) >> (64 - KEPT_BITS)];
+    if (e->bits == bits && e->len) { *n = e->len; return e->s; }
+    if (which == KEPT_XYZ || (isfinite(x) && fabs(x) < 1e15)) len = pt_fmt_fixed(b, x, prec);
+    else len = (size_t)snprintf(b, sizeof b, "%.*f", prec, x);
+    if (len > sizeof e->s) {                 /* too long to keep */
+        memcpy(w->spill, b, len);
+        *n = len;
+        return w->spill;
+    }
+    e->bits = bits;
+    e->len = (unsigned char)len;
+    memcpy(e->s, b, len);
+    *n = len;
+    return e->s;
 }
 
-static void num_text(pt_sbuf *sb, double x, int prec)
+/* Text: a coordinate right-aligned in 13 columns ("%13s" of pt_fmt_fixed). */
+static char *num_text_at(walker *w, char *o, double x)
 {
-    char b[PT_NUMLEN];
-    pt_fmt_fixed(b, x, prec);
-    pt_sbuf_addf(sb, "%13s", b);
+    size_t n;
+    const char *s = kept(w, KEPT_XYZ, x, w->precision, &n);
+
+    if (n < 13) { memset(o, ' ', 13 - n); o += 13 - n; }
+    memcpy(o, s, n);
+    return o + n;
+}
+
+/* "%.*f" of x, a colour (which KEPT_RGB, prec 6) or a coverage. */
+static char *fixed_at(walker *w, char *o, double x, int which, int prec)
+{
+    size_t n;
+    const char *s = kept(w, which, x, prec, &n);
+
+    memcpy(o, s, n);
+    return o + n;
 }
 
 static const char *edge_name(pt_rv_edge e)
@@ -111,201 +169,240 @@ static const char *edge_name(pt_rv_edge e)
 
 /* ===== the three formatters ===== */
 
-/* t at q (no NUL); returns the end. */
-static char *put_str(char *q, const char *t)
-{
-    size_t n = strlen(t);
-    memcpy(q, t, n);
-    return q + n;
-}
-
-/* x in decimal at q (no NUL), as %lld; returns the end. */
-static char *put_i64(char *q, int64_t x)
-{
-    if (x < 0) *q++ = '-';
-    return q + pt_fmt_u64(q, x < 0 ? 0u - (uint64_t)x : (uint64_t)x);
-}
-
-/* Make w->names say r's model and position, unless it does.  0 when out of
-** memory (then the record is not written: the trace's buffer says so). */
+/* Make w->names say r's model and position as format fmt writes them, unless
+** it does.  0 when out of memory (then the record is not written). */
 static int names(walker *w, const rec *r)
 {
-    if (!w->names.s || r->model != w->names_model || r->position != w->names_position) {
-        w->names.len = 0;
-        pt_sbuf_add(&w->names, ",\"model\":");
-        pt_sbuf_add_json(&w->names, r->model);
-        pt_sbuf_add(&w->names, ",\"position\":");
-        pt_sbuf_add_json(&w->names, r->position);
+    pt_sbuf *nb = &w->names;
+
+    if (!nb->s || r->model != w->names_model || r->position != w->names_position) {
+        nb->len = 0;
+        if (w->fmt == PT_FORMAT_JSONL) {
+            pt_sbuf_add(nb, ",\"model\":");
+            pt_sbuf_add_json(nb, r->model);
+            pt_sbuf_add(nb, ",\"position\":");
+            pt_sbuf_add_json(nb, r->position);
+        } else if (w->fmt == PT_FORMAT_CSV) {
+            pt_sbuf_add_csv(nb, r->model);
+            pt_sbuf_add(nb, ",");
+            pt_sbuf_add_csv(nb, r->position);
+            pt_sbuf_add(nb, ",");
+        } else {
+            pt_sbuf_add_term(nb, r->model, strlen(r->model));
+        }
         w->names_model = r->model;
         w->names_position = r->position;
     }
-    if (w->names.failed) w->sb.failed = 1;
-    return !w->names.failed;
+    if (nb->failed) w->failed = 1;
+    return !nb->failed;
+}
+
+/* The record's names, then room for the rest of it: where that goes. */
+static char *opening(walker *w, const char *head, size_t n)
+{
+    pt_trace *t = w->t;
+
+    put(t, head, n);
+    put(t, w->names.s, w->names.len);
+    return room(t, REC_REST);
+}
+
+/* The record ends at o. */
+static void done(walker *w, char *o)
+{
+    w->t->len = (size_t)(o - w->t->buf);
+}
+
+#define LIT(s) s, sizeof s - 1           /* a literal and its length, for put() */
+
+/* A primitive drawn, its numbers after keys[]: a point's v, c, radius
+** (keys 0 .. 3), a line's v v c c (keys 4 .. 8); 1-based indices. */
+static char *prim_at(const pt_trace *t, char *o, const pt_rv_prim *p,
+                     const char *const keys[9])
+{
+    if (p->kind == PT_RV_POINT) {
+        o = u64_at(t, str_at(o, keys[0]), (uint64_t)p->v[0] + 1);
+        o = u64_at(t, str_at(o, keys[1]), (uint64_t)p->c[0] + 1);
+        return str_at(int_at(t, str_at(o, keys[2]), p->radius, 0), keys[3]);
+    }
+    o = u64_at(t, str_at(o, keys[4]), (uint64_t)p->v[0] + 1);
+    o = u64_at(t, str_at(o, keys[5]), (uint64_t)p->v[1] + 1);
+    o = u64_at(t, str_at(o, keys[6]), (uint64_t)p->c[0] + 1);
+    o = u64_at(t, str_at(o, keys[7]), (uint64_t)p->c[1] + 1);
+    return str_at(o, keys[8]);
 }
 
 static void fmt_json(walker *w, const rec *r)
 {
-    pt_sbuf *sb = &w->sb;
+    pt_trace *t = w->t;
+    char *o;
 
-    if (!names(w, r)) return;
-    if (r->kind == R_PIXEL) {                   /* one a pixel: spelt in place */
-        char b[160], *q = b;
-        pt_sbuf_add(sb, "{\"type\":\"pixel\"");
-        pt_sbuf_addn(sb, w->names.s, w->names.len);
-        q = put_i64(put_str(q, ",\"primitive\":"), (int64_t)r->v);
-        q = put_i64(put_str(q, ",\"x\":"), r->x_fb);
-        q = put_i64(put_str(q, ",\"y\":"), r->y_fb);
-        q = put_i64(put_str(q, ",\"rgb\":["), r->rgb[0]);
-        q = put_i64(put_str(q, ","), r->rgb[1]);
-        q = put_i64(put_str(q, ","), r->rgb[2]);
-        q = put_str(q, "],\"coverage\":");
-        pt_sbuf_addn(sb, b, (size_t)(q - b));
-        num_json(sb, (double)r->coverage);
-        pt_sbuf_add(sb, "}\n");
+    if (r->kind == R_PIXEL) {
+        o = opening(w, LIT("{\"type\":\"pixel\""));
+        o = u64_at(t, str_at(o, ",\"primitive\":"), r->v);
+        o = int_at(t, str_at(o, ",\"x\":"), r->x_fb, 0);
+        o = int_at(t, str_at(o, ",\"y\":"), r->y_fb, 0);
+        o = u64_at(t, str_at(o, ",\"rgb\":["), r->rgb[0]);
+        o = u64_at(t, str_at(o, ","), r->rgb[1]);
+        o = u64_at(t, str_at(o, ","), r->rgb[2]);
+        o = json_num_at(t, str_at(o, "],\"coverage\":"), (double)r->coverage);
+        done(w, str_at(o, "}\n"));
         return;
     }
     if (r->kind == R_WARN) {
-        pt_sbuf_add(sb, "{\"type\":\"warning\"");
-        pt_sbuf_addn(sb, w->names.s, w->names.len);
-        pt_sbuf_addf(sb, ",\"warning\":\"%s\"}\n", r->warning);
+        o = opening(w, LIT("{\"type\":\"warning\""));
+        o = str_at(str_at(o, ",\"warning\":\""), r->warning);
+        done(w, str_at(o, "\"}\n"));
         return;
     }
-    pt_sbuf_add(sb, r->kind == R_VERTEX ? "{\"type\":\"vertex\"" : "{\"type\":\"primitive\"");
-    pt_sbuf_addn(sb, w->names.s, w->names.len);
     if (r->kind == R_PRIM) {
-        const pt_rv_prim *p = r->prim;
-        pt_sbuf_addf(sb, ",\"primitive\":%llu,\"kind\":\"%s\"", (unsigned long long)r->v,
-                     p->kind == PT_RV_POINT ? "point" : "line");
-        if (p->kind == PT_RV_POINT)
-            pt_sbuf_addf(sb, ",\"v\":[%lu],\"c\":[%lu],\"radius\":%d",
-                         (unsigned long)p->v[0] + 1, (unsigned long)p->c[0] + 1, p->radius);
-        else
-            pt_sbuf_addf(sb, ",\"v\":[%lu,%lu],\"c\":[%lu,%lu]", (unsigned long)p->v[0] + 1,
-                         (unsigned long)p->v[1] + 1, (unsigned long)p->c[0] + 1,
-                         (unsigned long)p->c[1] + 1);
-        pt_sbuf_addf(sb, ",\"pixels\":%llu}\n", (unsigned long long)r->pixels);
+        static const char *const keys[] = {
+            ",\"kind\":\"point\",\"v\":[", "],\"c\":[", "],\"radius\":", "",
+            ",\"kind\":\"line\",\"v\":[", ",", "],\"c\":[", ",", "]"};
+        o = opening(w, LIT("{\"type\":\"primitive\""));
+        o = prim_at(t, u64_at(t, str_at(o, ",\"primitive\":"), r->v), r->prim, keys);
+        o = u64_at(t, str_at(o, ",\"pixels\":"), r->pixels);
+        done(w, str_at(o, "}\n"));
         return;
     }
-    {
-        char b[64], *q = put_i64(b, (int64_t)r->v);
-        pt_sbuf_add(sb, ",\"v\":");
-        pt_sbuf_addn(sb, b, (size_t)(q - b));
-        pt_sbuf_add(sb, ",\"stage\":\"");
-        pt_sbuf_add(sb, r->stage);
-        pt_sbuf_add(sb, "\",\"x\":");
-    }
-    num_json(sb, r->p.x);
-    pt_sbuf_add(sb, ",\"y\":");
-    num_json(sb, r->p.y);
-    pt_sbuf_add(sb, ",\"z\":");
-    num_json(sb, r->p.z);
-    if (w->w4) { pt_sbuf_add(sb, ",\"w\":"); num_json(sb, r->p.w); }
+    o = opening(w, LIT("{\"type\":\"vertex\""));
+    o = u64_at(t, str_at(o, ",\"v\":"), r->v);
+    o = str_at(str_at(o, ",\"stage\":\""), r->stage);
+    o = json_num_at(t, str_at(o, "\",\"x\":"), r->p.x);
+    o = json_num_at(t, str_at(o, ",\"y\":"), r->p.y);
+    o = json_num_at(t, str_at(o, ",\"z\":"), r->p.z);
+    if (w->w4) o = json_num_at(t, str_at(o, ",\"w\":"), r->p.w);
     if (r->has_color) {
-        pt_sbuf_add(sb, ",\"color\":[");
-        num_json(sb, (double)r->color.r); pt_sbuf_add(sb, ",");
-        num_json(sb, (double)r->color.g); pt_sbuf_add(sb, ",");
-        num_json(sb, (double)r->color.b); pt_sbuf_add(sb, "]");
+        o = json_num_at(t, str_at(o, ",\"color\":["), (double)r->color.r);
+        o = json_num_at(t, str_at(o, ","), (double)r->color.g);
+        o = json_num_at(t, str_at(o, ","), (double)r->color.b);
+        o = str_at(o, "]");
     }
     if (r->from) {
-        pt_sbuf_addf(sb, ",\"from\":{\"stage\":\"%s\",\"segment\":%llu,\"edge\":\"%s\",\"t\":",
-                     r->from, (unsigned long long)r->from_prim, r->edge);
-        num_json(sb, r->t);
-        pt_sbuf_add(sb, "}");
+        o = str_at(str_at(o, ",\"from\":{\"stage\":\""), r->from);
+        o = u64_at(t, str_at(o, "\",\"segment\":"), r->from_prim);
+        o = str_at(str_at(o, ",\"edge\":\""), r->edge);
+        o = json_num_at(t, str_at(o, "\",\"t\":"), r->t);
+        o = str_at(o, "}");
     }
+    done(w, o);
     if (r->explain) {
-        pt_sbuf_add(sb, ",\"explain\":");
-        pt_sbuf_add_json(sb, r->explain);
+        w->sb.len = 0;
+        pt_sbuf_add(&w->sb, ",\"explain\":");
+        pt_sbuf_add_json(&w->sb, r->explain);
+        if (w->sb.failed) w->failed = 1;
+        else put(t, w->sb.s, w->sb.len);
     }
-    pt_sbuf_add(sb, "}\n");
+    put(t, LIT("}\n"));
+}
+
+/* Text: " p12    " or " v12    ": the letter, the number left-aligned in 6. */
+static char *who_at(const pt_trace *t, char *o, const char *k, uint64_t n)
+{
+    char *e = u64_at(t, str_at(o, k), n), *end = o + strlen(k) + 6;
+
+    for (; e < end; e++) *e = ' ';
+    return e;
 }
 
 static void fmt_text(walker *w, const rec *r)
 {
-    pt_sbuf *sb = &w->sb;
+    pt_trace *t = w->t;
+    char *o = opening(w, "", 0);
 
-    pt_sbuf_add_term(sb, r->model, strlen(r->model));
     if (r->kind == R_PIXEL) {
-        pt_sbuf_addf(sb, " p%-6llu pixel        x_fb = %lld  y_fb = %lld  rgb = %d %d %d  "
-                     "coverage %.4f\n", (unsigned long long)r->v, (long long)r->x_fb,
-                     (long long)r->y_fb, r->rgb[0], r->rgb[1], r->rgb[2], (double)r->coverage);
+        o = str_at(who_at(t, o, " p", r->v), " pixel        x_fb = ");
+        o = int_at(t, o, r->x_fb, 0);
+        o = int_at(t, str_at(o, "  y_fb = "), r->y_fb, 0);
+        o = u64_at(t, str_at(o, "  rgb = "), r->rgb[0]);
+        o = u64_at(t, str_at(o, " "), r->rgb[1]);
+        o = u64_at(t, str_at(o, " "), r->rgb[2]);
+        o = fixed_at(w, str_at(o, "  coverage "), (double)r->coverage, KEPT_COVERAGE, 4);
+        done(w, str_at(o, "\n"));
         return;
     }
     if (r->kind == R_WARN) {
-        pt_sbuf_addf(sb, " warning: %s\n", r->warning);
+        o = str_at(str_at(o, " warning: "), r->warning);
+        done(w, str_at(o, "\n"));
         return;
     }
     if (r->kind == R_PRIM) {
-        const pt_rv_prim *p = r->prim;
-        if (p->kind == PT_RV_POINT)
-            pt_sbuf_addf(sb, " p%-6llu drawn        point v%lu c%lu radius %d: %llu pixels\n",
-                         (unsigned long long)r->v, (unsigned long)p->v[0] + 1,
-                         (unsigned long)p->c[0] + 1, p->radius, (unsigned long long)r->pixels);
-        else
-            pt_sbuf_addf(sb, " p%-6llu drawn        line v%lu v%lu c%lu c%lu: %llu pixels\n",
-                         (unsigned long long)r->v, (unsigned long)p->v[0] + 1,
-                         (unsigned long)p->v[1] + 1, (unsigned long)p->c[0] + 1,
-                         (unsigned long)p->c[1] + 1, (unsigned long long)r->pixels);
+        static const char *const keys[] = {
+            " drawn        point v", " c", " radius ", "",
+            " drawn        line v", " v", " c", " c", ""};
+        o = prim_at(t, who_at(t, o, " p", r->v), r->prim, keys);
+        o = u64_at(t, str_at(o, ": "), r->pixels);
+        done(w, str_at(o, " pixels\n"));
         return;
     }
-    pt_sbuf_addf(sb, " v%-6llu %-12s x =", (unsigned long long)r->v, r->stage);
-    num_text(sb, r->p.x, w->precision);
-    pt_sbuf_add(sb, "  y =");
-    num_text(sb, r->p.y, w->precision);
-    pt_sbuf_add(sb, "  z =");
-    num_text(sb, r->p.z, w->precision);
-    if (w->w4) { pt_sbuf_add(sb, "  w ="); num_text(sb, r->p.w, w->precision); }
-    if (r->has_color)
-        pt_sbuf_addf(sb, "  rgb = %.6f %.6f %.6f", (double)r->color.r, (double)r->color.g,
-                     (double)r->color.b);
-    if (r->from) {
-        char b[PT_NUMLEN];
-        pt_fmt_shortest(b, r->t);
-        pt_sbuf_addf(sb, "  from %s of segment %llu at %s, t = %s", r->from,
-                     (unsigned long long)r->from_prim, r->edge, b);
+    o = who_at(t, o, " v", r->v);
+    {                                       /* the stage, left-aligned in 12 */
+        size_t n = strlen(r->stage);
+        *o++ = ' ';
+        memcpy(o, r->stage, n);
+        for (; n < 12; n++) o[n] = ' ';
+        o += n;
     }
-    pt_sbuf_add(sb, "\n");
+    o = num_text_at(w, str_at(o, " x ="), r->p.x);
+    o = num_text_at(w, str_at(o, "  y ="), r->p.y);
+    o = num_text_at(w, str_at(o, "  z ="), r->p.z);
+    if (w->w4) o = num_text_at(w, str_at(o, "  w ="), r->p.w);
+    if (r->has_color) {
+        o = fixed_at(w, str_at(o, "  rgb = "), (double)r->color.r, KEPT_RGB, 6);
+        o = fixed_at(w, str_at(o, " "), (double)r->color.g, KEPT_RGB, 6);
+        o = fixed_at(w, str_at(o, " "), (double)r->color.b, KEPT_RGB, 6);
+    }
+    if (r->from) {
+        o = str_at(str_at(o, "  from "), r->from);
+        o = u64_at(t, str_at(o, " of segment "), r->from_prim);
+        o = str_at(str_at(o, " at "), r->edge);
+        o = str_at(o, ", t = ");
+        o += pt_fmt_shortest(o, r->t);
+    }
+    done(w, str_at(o, "\n"));
     if (r->explain) {                       /* under the record, as renderer 4's */
-        pt_sbuf_add(sb, "              ");
-        pt_sbuf_add(sb, r->explain);
-        pt_sbuf_add(sb, "\n");
+        put(t, LIT("              "));
+        puts_(t, r->explain);
+        put(t, LIT("\n"));
     }
 }
 
 static void fmt_csv(walker *w, const rec *r)
 {
-    pt_sbuf *sb = &w->sb;
+    pt_trace *t = w->t;
+    char *o;
 
     if (r->kind != R_VERTEX) return;             /* CSV: vertex rows only */
-    pt_sbuf_add_csv(sb, r->model);
-    pt_sbuf_add(sb, ",");
-    pt_sbuf_add_csv(sb, r->position);
-    pt_sbuf_addf(sb, ",%llu,%s,", (unsigned long long)r->v, r->stage);
-    num_csv(sb, r->p.x); pt_sbuf_add(sb, ",");
-    num_csv(sb, r->p.y); pt_sbuf_add(sb, ",");
-    num_csv(sb, r->p.z); pt_sbuf_add(sb, ",");
-    if (w->w4) num_csv(sb, r->p.w);
-    pt_sbuf_add(sb, ",");
+    o = opening(w, "", 0);
+    o = str_at(str_at(u64_at(t, o, r->v), ","), r->stage);
+    o = num_csv_at(t, str_at(o, ","), r->p.x);
+    o = num_csv_at(t, str_at(o, ","), r->p.y);
+    o = num_csv_at(t, str_at(o, ","), r->p.z);
+    o = str_at(o, ",");
+    if (w->w4) o = num_csv_at(t, o, r->p.w);
+    o = str_at(o, ",");
     if (r->has_color) {
-        num_csv(sb, (double)r->color.r); pt_sbuf_add(sb, ",");
-        num_csv(sb, (double)r->color.g); pt_sbuf_add(sb, ",");
-        num_csv(sb, (double)r->color.b);
-    } else pt_sbuf_add(sb, ",,");
+        o = num_csv_at(t, o, (double)r->color.r);
+        o = num_csv_at(t, str_at(o, ","), (double)r->color.g);
+        o = num_csv_at(t, str_at(o, ","), (double)r->color.b);
+    } else o = str_at(o, ",,");
     if (r->from) {
-        pt_sbuf_addf(sb, ",%s,%llu,%s,", r->from, (unsigned long long)r->from_prim, r->edge);
-        num_csv(sb, r->t);
-    } else pt_sbuf_add(sb, ",,,,");
-    pt_sbuf_add(sb, "\n");
+        o = str_at(str_at(o, ","), r->from);
+        o = u64_at(t, str_at(o, ","), r->from_prim);
+        o = str_at(str_at(o, ","), r->edge);
+        o = num_csv_at(t, str_at(o, ","), r->t);
+    } else o = str_at(o, ",,,,");
+    done(w, str_at(o, "\n"));
 }
 
 static void emit(walker *w, const rec *r)
 {
+    if (w->failed || !names(w, r)) return;
     switch (w->fmt) {
     case PT_FORMAT_JSONL: fmt_json(w, r); break;
     case PT_FORMAT_CSV: fmt_csv(w, r); break;
     default: fmt_text(w, r); break;
     }
-    if (w->sb.len && !w->sb.failed) fwrite(w->sb.s, 1, w->sb.len, w->f);
-    w->sb.len = 0;
 }
 
 /* ===== the walker ===== */
@@ -353,7 +450,7 @@ static void keep_prev(walker *w, const pt_course_pos *pos, const pt_rv_model *m)
     struct prev *pv = &w->prev[pos->index];
     pt_vec4 *v = realloc(pv->v, (m->nv ? m->nv : 1) * sizeof *v);
 
-    if (!v) { w->sb.failed = 1; return; }
+    if (!v) { w->failed = 1; return; }
     if (m->nv) memcpy(v, m->v, m->nv * sizeof *v);
     pv->v = v;
     pv->n = m->nv;
@@ -414,7 +511,7 @@ static void clip_cut(void *ud, const pt_rv_cut *c)
     if (w->norg == w->cap_org) {
         size_t cap = w->cap_org ? 2 * w->cap_org : 16;
         struct origin *o = realloc(w->org, cap * sizeof *o);
-        if (!o) { w->sb.failed = 1; return; }
+        if (!o) { w->failed = 1; return; }
         w->org = o;
         w->cap_org = cap;
     }
@@ -516,6 +613,13 @@ static void on_drawn(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
     w->npixels += n;
 }
 
+/* A double as a JSON record spells it (json_num_at), at the end of w->sb. */
+static void num_json(walker *w, double x)
+{
+    char b[PT_NUMLEN + 2];
+    pt_sbuf_addn(&w->sb, b, (size_t)(json_num_at(w->t, b, x) - b));
+}
+
 /* The header: the scene, its renderer, framebuffer, viewport and camera. */
 static void header(walker *w, const pt_course_cam *c)
 {
@@ -533,11 +637,11 @@ static void header(walker *w, const pt_course_cam *c)
                      "\"w\":%d,\"h\":%d},\"camera\":{\"projection\":\"%s\",\"l\":", s->fb_w,
                      s->fb_h, s->vp_x, s->vp_y, s->vp_w, s->vp_h,
                      k->perspective ? "perspective" : "orthographic");
-        num_json(sb, k->l); pt_sbuf_add(sb, ",\"r\":");
-        num_json(sb, k->r); pt_sbuf_add(sb, ",\"b\":");
-        num_json(sb, k->b); pt_sbuf_add(sb, ",\"t\":");
-        num_json(sb, k->t); pt_sbuf_add(sb, ",\"n\":");
-        num_json(sb, k->n); pt_sbuf_addf(sb, "},\"nearclip\":%s,\"antialias\":%s,\"gamma\":%s}\n",
+        num_json(w, k->l); pt_sbuf_add(sb, ",\"r\":");
+        num_json(w, k->r); pt_sbuf_add(sb, ",\"b\":");
+        num_json(w, k->b); pt_sbuf_add(sb, ",\"t\":");
+        num_json(w, k->t); pt_sbuf_add(sb, ",\"n\":");
+        num_json(w, k->n); pt_sbuf_addf(sb, "},\"nearclip\":%s,\"antialias\":%s,\"gamma\":%s}\n",
                                           s->nearclip ? "true" : "false",
                                           s->antialias ? "true" : "false",
                                           s->gamma ? "true" : "false");
@@ -556,22 +660,28 @@ static void header(walker *w, const pt_course_cam *c)
                      b[0], b[1], b[2], b[3], b[4], s->nearclip ? "on" : "off",
                      s->antialias ? "on" : "off", s->gamma ? "on" : "off");
     }
-    if (!w->sb.failed) fwrite(sb->s, 1, sb->len, w->f);
+    if (sb->failed) w->failed = 1;
+    else put(w->t, sb->s, sb->len);
     sb->len = 0;
 }
 
 static void summary(walker *w)
 {
+    char b[256];
+    int n;
+
     if (w->fmt == PT_FORMAT_CSV) return;
     if (w->fmt == PT_FORMAT_JSONL)
-        fprintf(w->f, "{\"type\":\"summary\",\"models\":%lu,\"vertex_records\":%llu,"
-                "\"primitives_drawn\":%llu,\"pixels\":%llu}\n", (unsigned long)w->s->nmodels,
-                (unsigned long long)w->nvrec, (unsigned long long)w->nprims,
-                (unsigned long long)w->npixels);
+        n = snprintf(b, sizeof b, "{\"type\":\"summary\",\"models\":%lu,\"vertex_records\":%llu,"
+                     "\"primitives_drawn\":%llu,\"pixels\":%llu}\n", (unsigned long)w->s->nmodels,
+                     (unsigned long long)w->nvrec, (unsigned long long)w->nprims,
+                     (unsigned long long)w->npixels);
     else
-        fprintf(w->f, "\nsummary\n  models %lu  vertex_records %llu  primitives_drawn %llu  "
-                "pixels %llu\n", (unsigned long)w->s->nmodels, (unsigned long long)w->nvrec,
-                (unsigned long long)w->nprims, (unsigned long long)w->npixels);
+        n = snprintf(b, sizeof b, "\nsummary\n  models %lu  vertex_records %llu  "
+                     "primitives_drawn %llu  pixels %llu\n", (unsigned long)w->s->nmodels,
+                     (unsigned long long)w->nvrec, (unsigned long long)w->nprims,
+                     (unsigned long long)w->npixels);
+    put(w->t, b, (size_t)n);
 }
 
 int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int explain,
@@ -581,10 +691,9 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int expl
     pt_course_ls ls;
     pt_rv_raster_ls rls;
     pt_course_cam cam;
-    int rc;
+    int rc = -1;
 
     memset(&w, 0, sizeof w);
-    w.f = f;
     w.s = s;
     w.fmt = fmt;
     w.precision = precision;
@@ -608,16 +717,17 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int expl
     pt_course_camera(s, &cam);
     w.cam = cam;
     w.explain = explain;
-    if (explain && !(w.prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w.prev))) {
-        snprintf(err, errlen, "pipetrace: out of memory");
-        pt_sbuf_free(&w.sb);
-        return -1;
+    if ((w.t = malloc(sizeof *w.t)) != NULL &&
+        (!explain || (w.prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w.prev)) != NULL)) {
+        pt_trace_init(w.t, f, (pt_format)fmt, precision);
+        header(&w, &cam);
+        rc = pt_course_render(s, fb, &ls);
+        if (rc == 0 && !w.failed) summary(&w);
+        pt_trace_flush(w.t);                 /* write errors: in ferror(f) */
     }
-    header(&w, &cam);
-    rc = pt_course_render(s, fb, &ls);
-    if (rc == 0 && !w.sb.failed) summary(&w);
-    if (rc != 0 || w.sb.failed) snprintf(err, errlen, "pipetrace: out of memory");
-    rc = rc != 0 || w.sb.failed ? -1 : 0;
+    if (rc != 0 || w.failed) snprintf(err, errlen, "pipetrace: out of memory");
+    rc = rc != 0 || w.failed ? -1 : 0;
+    free(w.t);
     pt_sbuf_free(&w.sb);
     pt_sbuf_free(&w.names);
     free(w.org);

@@ -3,8 +3,10 @@
 ** See LICENSE for copyright and license.
 **
 ** For the files of the trace writer only (trace.c, trace_buf.c, trace_head.c
-** and one file a format: trace_text.c, trace_jsonl.c, trace_csv.c); the rest
-** of the program knows io/trace.h.  The small pieces every record is made of
+** and one file a format: trace_text.c, trace_jsonl.c, trace_csv.c), and the
+** writers of renderers 7 and 9's traces and log, which write into a
+** pt_trace's block the same way (trace_course_rec.c, trace_course.c,
+** rv_log_raster.c); the rest of the program knows io/trace.h.  The small pieces every record is made of
 ** (put a string, make room, a number's digits) are static inline here, so
 ** that each format's records are written as fast as when the writer was one
 ** file: the compiler sees them where a record is written.  What is called

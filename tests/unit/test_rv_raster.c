@@ -18,6 +18,7 @@
 #include "testhelp.h"
 #include "stages/rv_raster.h"
 #include "io/rv_log_raster.h"
+#include "io/trace.h"
 
 #define MAXN 4096                /* vertices, colours, primitives a position */
 
@@ -93,10 +94,13 @@ static void count_bad(void *ud, int x, int y, int W, int H)
     ((tally *)ud)->bad++;
 }
 
+/* The log's block, writing to the case's log file (set where it is opened). */
+static pt_trace *log_block;
+
 static void set_ls(pt_rv_raster_ls *ls, FILE *lg, tally *t, int debug)
 {
     memset(ls, 0, sizeof *ls);
-    if (lg) { pt_rv_log_raster_ls(ls, lg, debug); return; }
+    if (lg) { pt_rv_log_raster_ls(ls, log_block, debug); return; }
     ls->pixel = count_pixel;
     ls->bad = count_bad;
     ls->ud = t;
@@ -203,8 +207,10 @@ static void run_case(const char *dir, const char *name)
     snprintf(path, sizeof path, "%s/%s.raster", dir, name);
     f = fopen(path, "r");
     lg = tmpfile();
-    PT_CHECK(name, ppm && want && f && lg);
-    if (!ppm || !want || !f || !lg) goto done;
+    if (lg && (log_block = malloc(sizeof *log_block)) != NULL)
+        pt_trace_init(log_block, lg, PT_FORMAT_KRAFT, 0);
+    PT_CHECK(name, ppm && want && f && lg && log_block);
+    if (!ppm || !want || !f || !lg || !log_block) goto done;
     PT_CHECK("ppm header", sscanf(ppm, "P6 %d %d 255%n", &W, &H, &hl) == 2 && hl > 0);
     if (W <= 0 || H <= 0 || (size_t)hl + 1 + (size_t)W * H * 3 != nppm) {
         PT_CHECK("ppm size", 0);
@@ -233,6 +239,7 @@ static void run_case(const char *dir, const char *name)
     PT_CHECK(head, memcmp(rgb, quiet, (size_t)W * H * 3) == 0);
     snprintf(head, sizeof head, "%s: pixels written = pixels logged - bad ones", name);
     PT_CHECK(head, t2.ret == t2.said - t2.bad && t2.said > 0);
+    PT_CHECK("log written", pt_trace_finish(log_block) == 0);
     rewind(lg);
     got = slurp_stream(lg, &ngot);
     snprintf(head, sizeof head, "%s: log", name);
@@ -241,6 +248,8 @@ static void run_case(const char *dir, const char *name)
 done:
     if (f) fclose(f);
     if (lg) fclose(lg);
+    free(log_block);
+    log_block = NULL;
     free(rgb);
     free(again);
     free(quiet);
