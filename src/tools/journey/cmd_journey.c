@@ -230,17 +230,17 @@ int pt_cmd_journey(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (s.renderer == 7 || s.renderer == 9) {
-        rc = course_journey(&s, model, v, svg, html, image);
-        pt_scene_free(&s);
-        return rc;
-    }
     {
         const char *out[3] = {svg, html, image}, *opt[3] = {"--svg", "--html", "--image"};
         if (pt_cli_outputs_objs(&s, out, opt, 3) != 0 || pt_cli_keep_cap(&s, "journey") != 0) {
             pt_scene_free(&s);
             return PT_EXIT_INPUT;
         }
+    }
+    if (s.renderer == 7 || s.renderer == 9) {
+        rc = course_journey(&s, model, v, svg, html, image);
+        pt_scene_free(&s);
+        return rc;
     }
     if (!(m = pt_cli_vertex_model(&s, "journey", model, vl.max))) {
         pt_scene_free(&s);

@@ -402,6 +402,8 @@ static void note(pt_sbuf *sb, const cdoc *d, pt_course_stage st, const char *mor
     for (i = 0; i < j->noff; i++)
         if (j->off[i].stage == st) off++;
     if (off) pt_sbuf_addf(&t, "cut off %d segment%s here; ", off, off > 1 ? "s" : "");
+    if (j->have[st] && d->c->st[st].have && !used(&d->c->st[st], (size_t)(j->v - 1)))
+        pt_sbuf_add(&t, "no primitive uses it after this stage; ");
     pt_sbuf_add(&t, more);
     pt_jtext(sb, 12, NOTE_Y, 11, "start", "class=\"note\" fill=\"" PT_JC_NOTE "\"",
              t.s ? t.s : "", 376);
