@@ -40,6 +40,14 @@ run journey $c/r7-near-01.scene --vertex 6 --svg -
 check "j79-2.3 --svg - writes the same to standard output" \
     sh -c 'printf "%s\n" "$1" | cmp -s - "$2"' - "$out" "$tmp/a.svg"
 
+# ---- numbers past a double's range: the labels say inf, the drawing stays finite
+printf 'renderer 7\nframebuffer 20 20\ncamera perspective\nmodel m\nv 1e308 1e308 -1e-300\nv 0 0 -2\nv 0.5 0.5 -1\nsegment 1 2\nsegment 2 3\n' > "$tmp/huge.scene"
+run journey "$tmp/huge.scene" --vertex 1 --svg "$tmp/h.svg"
+check "j79-2.4 a vertex that overflows to inf: exit 0, the label says inf" \
+    sh -c 'test "$1" = 0 && grep -q "(x_c, y_c, z_c) = (inf, inf" "$2"' - "$rc" "$tmp/h.svg"
+check "j79-2.5 ... no attribute holds nan or inf" \
+    sh -c '! grep -E -i -q "=\"[^\"]*(nan|inf)" "$1"' - "$tmp/h.svg"
+
 if ! command -v python3 >/dev/null 2>&1; then
     echo "note: python3 not found: the parsing checks are skipped" >&2
     report; exit $?
