@@ -131,7 +131,7 @@ IO_O     = $B/numfmt.o $B/jnum.o $B/sbuf.o $B/explain.o $B/explain_course.o $B/t
 TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/catalogue79.o $B/dd.o $B/acc_shared.o $B/acc_float.o \
            $B/acc_double.o $B/acc_dd.o $B/accuracy.o $B/jdraw.o $B/jplace.o $B/jpanel.o \
            $B/journey_classic.o $B/journey_matrix.o $B/jrows.o $B/journey.o $B/journey_html.o \
-           $B/journey_wasm.o $B/stages_wasm.o
+           $B/journey_course.o $B/journey_wasm.o $B/stages_wasm.o
 CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/dfit.o \
            $B/dpixels.o $B/dsummary.o $B/d79.o $B/cmd_step.o $B/cmd_why.o $B/why_course.o \
            $B/cmd_quiz.o $B/quiz79.o \

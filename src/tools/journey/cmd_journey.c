@@ -12,7 +12,8 @@
 ** vertex's pixel marked, PNG or PPM as the render command writes it.  Files
 ** are written whole or not at all (src/io/outfile.h); "-" is standard output.
 ** Both cameras are drawn: the matrix camera's panels follow its ten stages
-** (src/tools/journey/journey_matrix.c).
+** (src/tools/journey/journey_matrix.c).  A scene of the course's renderer 7
+** or 9 gets the SVG only (src/tools/journey/journey_course.c).
 */
 #include <errno.h>
 #include <stdio.h>
@@ -23,6 +24,8 @@
 #include "io/explain.h"
 #include "core/pipetrace.h"
 #include "tools/journey/journey.h"
+#include "tools/journey/journey_course.h"
+#include "io/explain_course.h"
 #include "io/outfile.h"
 #include "io/png.h"
 
@@ -47,6 +50,9 @@ static const char usage[] =
 "seven panels, or the matrix camera's ten (camera lookat: world, view, clip, cvv,\n"
 "ndc and screen between model and viewport; a vertex outside the view volume\n"
 "stops at the cvv, and its segments go on from where clipping cut them).\n"
+"A scene of the course's renderer 7 or 9: --svg only (model, [world,] view,\n"
+"view volume, normalized, near clip, image plane, viewport); a vertex past the\n"
+"model's own is one a clip stage made.  --html and --image refuse such a scene.\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
 "Docs: docs/journey.md\n";
 
@@ -131,6 +137,43 @@ static int vlist_parse(vlist *l, const char *t)
     }
 }
 
+/* journey on a scene of the course's renderer 7 or 9: the SVG only.
+** Returns the exit status. */
+static int course_journey(const pt_scene *s, const char *model, uint64_t v, const char *svg,
+                          const char *html, const char *image)
+{
+    size_t mi = 0;
+    pt_sbuf a;
+    int rc;
+
+    if (html || image) {
+        fprintf(stderr, "pipetrace journey: %s: error: %s does not take scenes of the "
+                "course's renderer %d (no page, no image: only --svg draws their journey)\n",
+                s->path, html ? "--html" : "--image", s->renderer);
+        return PT_EXIT_INPUT;
+    }
+    if (model) {
+        const pt_model *m = pt_cli_model(s, "journey", model);
+        if (!m) return PT_EXIT_INPUT;
+        mi = (size_t)(m - s->models);
+        rc = 0;
+    } else rc = pt_cx_find(s, v, &mi);
+    pt_sbuf_init(&a);
+    if (rc == 0) rc = pt_journey_course_svg(&a, s, mi, v);
+    if (rc == 1 && model)
+        fprintf(stderr, "pipetrace journey: --vertex %llu: the position of model %s of %s has "
+                "no vertex %llu, not even after the clips\n", (unsigned long long)v, model,
+                s->path, (unsigned long long)v);
+    else if (rc == 1)
+        fprintf(stderr, "pipetrace journey: --vertex %llu: no position of %s has a vertex %llu, "
+                "not even after the clips\n", (unsigned long long)v, s->path,
+                (unsigned long long)v);
+    else if (rc) fprintf(stderr, "pipetrace journey: %s: out of memory\n", s->path);
+    if (!rc && write_file(svg, &a, NULL) != 0) rc = -1;
+    pt_sbuf_free(&a);
+    return rc ? PT_EXIT_INPUT : 0;
+}
+
 int pt_cmd_journey(int argc, char **argv)
 {
     const char *path = NULL, *model = NULL, *svg = NULL, *html = NULL, *image = NULL;
@@ -187,13 +230,17 @@ int pt_cmd_journey(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (pt_cli_course(&s, "journey")) return PT_EXIT_INPUT;
     {
         const char *out[3] = {svg, html, image}, *opt[3] = {"--svg", "--html", "--image"};
         if (pt_cli_outputs_objs(&s, out, opt, 3) != 0 || pt_cli_keep_cap(&s, "journey") != 0) {
             pt_scene_free(&s);
             return PT_EXIT_INPUT;
         }
+    }
+    if (s.renderer == 7 || s.renderer == 9) {
+        rc = course_journey(&s, model, v, svg, html, image);
+        pt_scene_free(&s);
+        return rc;
     }
     if (!(m = pt_cli_vertex_model(&s, "journey", model, vl.max))) {
         pt_scene_free(&s);
