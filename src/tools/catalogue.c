@@ -244,10 +244,11 @@ const pt_mistake pt_mistakes[PT_NMISTAKES] = {
      "idx = y_fb * w + x_fb with the viewport's w instead of the framebuffer's W", 0, mk_vpw},
 };
 
-/* ===== the rasterizer's rounding mistakes ===== */
+/* ===== the rasterizer's mistakes ===== */
 
-/* The viewport stage's formula with rounding rnd, as a pt_raster_vp. */
-static pt_pix viewport_rounding(rnd_fn rnd, pt_vec2 pp, int h)
+/* The viewport stage's formula with rounding rnd and x_vp = round(x_pp) + dx,
+** y_vp = sy * round(y_pp) + oy (viewport_with), as a pt_raster_vp. */
+static pt_pix viewport_mapping(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy, pt_vec2 pp)
 {
     pt_cat_val in, out;
     pt_pix vp;
@@ -255,7 +256,7 @@ static pt_pix viewport_rounding(rnd_fn rnd, pt_vec2 pp, int h)
     memset(&in, 0, sizeof in);
     in.d[0] = pp.x;
     in.d[1] = pp.y;
-    viewport_with(rnd, -1, -1, h, &in, &out);
+    viewport_with(rnd, dx, sy, oy, &in, &out);
     vp.x = out.n[0];
     vp.y = out.n[1];
     vp.ok = 0;
@@ -265,21 +266,60 @@ static pt_pix viewport_rounding(rnd_fn rnd, pt_vec2 pp, int h)
 pt_pix pt_cat_vp_floor(pt_vec2 pp, int w, int h, const pt_sink *sink)
 {
     (void)w; (void)sink;
-    return viewport_rounding(floor_half, pp, h);
+    return viewport_mapping(floor_half, -1, -1, h, pp);
 }
 
 pt_pix pt_cat_vp_cround(pt_vec2 pp, int w, int h, const pt_sink *sink)
 {
     (void)w; (void)sink;
-    return viewport_rounding(c_round, pp, h);
+    return viewport_mapping(c_round, -1, -1, h, pp);
 }
 
+pt_pix pt_cat_vp_trunc(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    (void)w; (void)sink;
+    return viewport_mapping(trunc_half, -1, -1, h, pp);
+}
+
+pt_pix pt_cat_vp_nominus1(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    (void)w; (void)sink;
+    return viewport_mapping(NULL, 0, -1, h, pp);
+}
+
+pt_pix pt_cat_vp_noflip(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    (void)w; (void)h; (void)sink;
+    return viewport_mapping(NULL, -1, 1, -1, pp);
+}
+
+#define IN_ROUNDING "in the rasterizer's rounding (pt_pix_round in s4)"
+#define IN_VIEWPORT "in the viewport formula the rasterizer asks each step (s4)"
+
 const pt_raster_mistake pt_raster_mistakes[PT_NRASTER_MISTAKES] = {
-    {"floor(x + 0.5) instead of Java's Math.round",
-     "in the rasterizer's rounding (pt_pix_round in s4): the DDA's running y can "
-     "be 0.49999999999999994, which floor(y + 0.5) takes to 1 and Math.round to 0",
-     pt_cat_vp_floor},
-    {"C round() instead of Java's Math.round",
-     "in the rasterizer's rounding (pt_pix_round in s4): round() takes ties away "
-     "from zero", pt_cat_vp_cround},
+    {"floor(x + 0.5) instead of Java's Math.round", IN_ROUNDING,
+     "the DDA's running y can be 0.49999999999999994, which floor(y + 0.5) takes to 1 "
+     "and Math.round to 0", pt_cat_vp_floor, 0, 0, 0},
+    {"C round() instead of Java's Math.round", IN_ROUNDING,
+     "round() takes ties away from zero", pt_cat_vp_cround, 0, 0, 0},
+    {"truncation toward zero instead of Java's Math.round", IN_ROUNDING,
+     "(int)(y + 0.5) truncates toward zero: as floor(y + 0.5) at 0.49999999999999994, "
+     "and one too high below -0.5, which only steps left of or below the viewport reach",
+     pt_cat_vp_trunc, 0, 0, 1},
+    {"missing -1 in x_vp", IN_VIEWPORT,
+     "x_vp = round(x_pp) instead of round(x_pp) - 1: every pixel one to the right, the "
+     "steps at x_pp = w clipped", pt_cat_vp_nominus1, 0, 0, 0},
+    {"missing y flip", IN_VIEWPORT,
+     "y_vp = round(y_pp) - 1 instead of h - round(y_pp): the picture upside down",
+     pt_cat_vp_noflip, 0, 0, 0},
+    {"DDA loop one step short", "in the rasterizer's loop bound",
+     "for (x = x0; x < x1; ...) instead of x <= x1: the last step of every segment that "
+     "is not a single pixel is not taken, its pixel missing", NULL, -1, 0, 0},
+    {"DDA loop one step too long", "in the rasterizer's loop bound",
+     "for (x = x0; x <= x1 + 1; ...) instead of x <= x1: one step past the end of every "
+     "segment that is not a single pixel, an extra pixel", NULL, 1, 0, 0},
+    {"viewport offset (x_ul, y_ul) forgotten", "in setPixelVP",
+     "the pixel written at (x_vp, y_vp) instead of (x_ul + x_vp, y_ul + y_vp): the "
+     "picture sits in the framebuffer's upper-left corner, not in the viewport",
+     NULL, 0, 1, 0},
 };

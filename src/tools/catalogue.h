@@ -10,8 +10,9 @@
 **              model's translation);
 **   mistakes   the known wrong versions of those formulas, each with a name,
 **              an explanation and the wrong formula itself;
-**   raster     the rasterizer's rounding mistakes, as viewport stages with
-**              that rounding (pt_raster_vp), to hand to pt_raster_segment().
+**   raster     the rasterizer's mistakes: viewport stages that round or map
+**              otherwise (pt_raster_vp, to hand to pt_raster_segment()), the
+**              DDA's loop bound off by one, setPixelVP without the offset.
 **
 ** The right formulas are not written again here: a student build replaces a
 ** stage's .c file (make STAGE_pixel=FILE.c), so they are the reference copy
@@ -75,21 +76,41 @@ typedef struct pt_mistake {
 #define PT_NMISTAKES 14
 extern const pt_mistake pt_mistakes[PT_NMISTAKES];
 
-/* A known mistake of the rasterizer's rounding. */
+/* A known mistake of the rasterizer (the course's renderer 4: its DDA and
+** setPixelVP), replayed by pipetrace diff from EXPECTED's rounded endpoints:
+**   to_vp      a viewport stage that rounds or maps otherwise, asked each step;
+**   steps      the DDA's loop bound off by one: -1 its last step not taken
+**              (x < x1), +1 one step more (x <= x1 + 1);
+**   no_offset  setPixelVP writing each pixel at its viewport coordinates,
+**              the viewport's corner (x_ul, y_ul) forgotten.
+** twin: a mistake that lights the same pixels wherever every step's
+** coordinate + 0.5 is at least 0 (truncation and floor(x + 0.5)): only the
+** clip records of steps left of or below the viewport tell them apart. */
 typedef struct pt_raster_mistake {
-    const char *name;            /* as the stage's mistake of that rounding */
+    const char *name;            /* as the stage's mistake of that name */
+    const char *where;           /* where it is made, a few words */
     const char *how;             /* what goes wrong in the DDA */
-    pt_raster_vp to_vp;          /* the viewport stage rounding that way */
+    pt_raster_vp to_vp;          /* the viewport stage with the mistake, or NULL:
+                                 ** the right one (pt_pixel2viewport) */
+    int steps;                   /* -1, +1: the loop's last step; 0: right */
+    int no_offset;               /* 1: pixels without the offset (x_ul, y_ul) */
+    int twin;                    /* 1 + the mistake it is told from only by
+                                 ** negative coordinates, or 0 */
 } pt_raster_mistake;
 
-#define PT_NRASTER_MISTAKES 2
+#define PT_NRASTER_MISTAKES 8
 extern const pt_raster_mistake pt_raster_mistakes[PT_NRASTER_MISTAKES];
 
 /* The viewport stage's formula (x_vp = r(x_pp) - 1, y_vp = h - r(y_pp)) with
-** r(x) = floor(x + 0.5), resp. C's round() (ties away from zero), instead of
-** Java's Math.round; no value beyond PT_PIX_LIMIT as pt_pixel2viewport().
-** Report nothing (sink is ignored).  These functions can't fail. */
+** r(x) = floor(x + 0.5), C's round() (ties away from zero), resp. trunc(x +
+** 0.5) ((int)(x + 0.5)), instead of Java's Math.round; pt_cat_vp_nominus1
+** with x_vp = r(x_pp), pt_cat_vp_noflip with y_vp = r(y_pp) - 1 (Math.round).
+** No value beyond PT_PIX_LIMIT as pt_pixel2viewport().  Report nothing (sink
+** is ignored).  These functions can't fail. */
 pt_pix pt_cat_vp_floor(pt_vec2 pp, int w, int h, const pt_sink *sink);
 pt_pix pt_cat_vp_cround(pt_vec2 pp, int w, int h, const pt_sink *sink);
+pt_pix pt_cat_vp_trunc(pt_vec2 pp, int w, int h, const pt_sink *sink);
+pt_pix pt_cat_vp_nominus1(pt_vec2 pp, int w, int h, const pt_sink *sink);
+pt_pix pt_cat_vp_noflip(pt_vec2 pp, int w, int h, const pt_sink *sink);
 
 #endif

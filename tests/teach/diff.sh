@@ -507,4 +507,115 @@ check "diff-14.3 --scene of no file: exit 2, said" sh -c 'test "$1" = 2 && grep 
 check "diff-14.4 --scene of a renderer 7 scene on renderer 4's logs: exit 2, said" \
     sh -c 'test "$1" = 2 && grep -q "renderer 7" "$2"' _ "$rc" "$tmp/out"
 
+# ---- 15: the rasterizer's mistakes, seen only in the pixels: every vertex
+# agrees (a course log has no viewport records; a JSON Lines trace of
+# --stage pixel --stage raster neither), so diff replays the DDA from
+# EXPECTED's rounded endpoints with each mistake and names the one that
+# lights ACTUAL's pixels in every segment that differs
+# rast ID EXPECTED ACTUAL NAME: diff names NAME there, and no other mistake
+rast() {
+    "$exe" diff --verdict "$2" "$3" >"$tmp/out" 2>&1; rc=$?
+    summary
+    check "$1 exit 1 ($rc)" test "$rc" = 1
+    check "$1 names '$4'" grep -qxF "  likely mistake: $4" "$tmp/out"
+    check "$1 ... and no other mistake" sh -c \
+        'test "$(grep -E "^ *(likely mistake|partial|ambiguous):" "$1" | grep -cvF "$2")" = 0 &&
+         ! grep -q "ambiguous" "$3"' _ "$tmp/out" "$4" "$tmp/flat"
+    check "$1 ... in the summary and the verdict" \
+        sh -c 'grep -qF "Likely mistake: $1" "$2" && grep -qF "Verdict: FAIL in the pixels" "$2"' _ "$4" "$tmp/flat"
+    [ "$failed" -gt "$failed_before" ] && sed 's/^/  /' "$tmp/out" | tail -20
+    failed_before=$failed
+}
+K=tests/reference/kraftlog/basic-two-models.pixels.log
+# (a) x_vp = round(x_pp): the course's log of the student build, every pixel
+# one to the right
+if mistaken s4_nominus1; then
+    "$tmp/sb/pipetrace" $S --format kraft-pixels --trace "$tmp/nominus1.log"
+    rast diff-15.1 $K "$tmp/nominus1.log" "missing -1 in x_vp"
+    check "diff-15.1a ... where it is made" grep -qF "missing -1 in x_vp in the viewport formula the rasterizer asks each step (s4)" "$tmp/flat"
+    # a segment from the left edge, x_pp = 0 .. 5: x_vp = round(x_pp) lights
+    # x_vp 0 .. 5, and so does the loop one step too long (0 is clipped):
+    # both reproduce it, and diff names neither
+    printf 'framebuffer 12 6\ncamera orthographic\nmodel e\nv -1.083375 0 0\nv -0.249625 0 0\nl 1 2\n' > "$tmp/edge.scene"
+    "$exe" "$tmp/edge.scene" --format kraft-pixels --trace "$tmp/edge-want.log"
+    "$tmp/sb/pipetrace" "$tmp/edge.scene" --format kraft-pixels --trace "$tmp/edge-got.log"
+    "$exe" diff --verdict "$tmp/edge-want.log" "$tmp/edge-got.log" >"$tmp/out" 2>&1; rc=$?; summary
+    check "diff-15.2 two mistakes reproduce a segment from the left edge: ambiguous (exit $rc)" \
+        sh -c 'test "$1" = 1 && grep -qF "ambiguous: missing -1 in x_vp or DDA loop one step too long" "$2"' _ "$rc" "$tmp/flat"
+    check "diff-15.2a ... and no likely mistake named alone" test "$(grep -c '^ *likely mistake' "$tmp/out")" = 0
+else
+    check "diff-15.1 the s4_nominus1 student build" false
+fi
+# (b) y_vp = round(y_pp) - 1: upside down
+if mistaken s4_noflip; then
+    "$tmp/sb/pipetrace" $S --format kraft-pixels --trace "$tmp/noflip.log"
+    rast diff-15.3 $K "$tmp/noflip.log" "missing y flip"
+else
+    check "diff-15.3 the s4_noflip student build" false
+fi
+# (c) (int)(y + 0.5) draws the pixels floor(y + 0.5) draws (they differ only
+# below -0.5, left of or below the viewport): the clip records of a segment
+# that starts left of the viewport tell them apart.  Logical pixels (-3, 0)
+# to (9, 1) in 12 x 4: y reaches 0.49999999999999994 at x = 3, and the first
+# clipped step is x_vp -4 (Math.round, floor) or -3 (truncation)
+printf 'framebuffer 12 4\ncamera orthographic\nmodel f\nv -1.583625 -1.250125 0\nv 0.417375 -0.749875 0\nl 1 2\n' > "$tmp/left.scene"
+"$exe" "$tmp/left.scene" --format jsonl --stage pixel --stage raster --trace "$tmp/left-want.jsonl"
+check "diff-15.4 (the first clipped step of the reference is x_vp -4)" grep -qF '"first":[-4,4]' "$tmp/left-want.jsonl"
+"$exe" $data/floor.scene --format jsonl --trace "$tmp/floor-want.jsonl"
+if mistaken s4_trunc; then
+    "$tmp/sb/pipetrace" "$tmp/left.scene" --format jsonl --stage pixel --stage raster --trace "$tmp/left-got.jsonl"
+    rast diff-15.5 "$tmp/left-want.jsonl" "$tmp/left-got.jsonl" "truncation toward zero instead of Java's Math.round"
+    # where no step reaches below -0.5 the two light the same pixels: the
+    # usual form is named, and the other said to fit as well
+    "$tmp/sb/pipetrace" $data/floor.scene --format jsonl --trace "$tmp/floor-got.jsonl"
+    rast diff-15.6 "$tmp/floor-want.jsonl" "$tmp/floor-got.jsonl" "floor(x + 0.5) instead of Java's Math.round"
+    check "diff-15.6a ... with truncation said to light the same pixels there" \
+        grep -qF "So does truncation toward zero instead of Java's Math.round: the two light other pixels only at steps left of or below the viewport, which this trace does not tell apart." "$tmp/flat"
+else
+    check "diff-15.5 the s4_trunc student build" false
+fi
+if mistaken s4_floor; then
+    "$tmp/sb/pipetrace" "$tmp/left.scene" --format jsonl --stage pixel --stage raster --trace "$tmp/left-got.jsonl"
+    rast diff-15.7 "$tmp/left-want.jsonl" "$tmp/left-got.jsonl" "floor(x + 0.5) instead of Java's Math.round"
+    check "diff-15.7a ... truncation not said to fit" sh -c '! grep -q "truncation" "$1"' _ "$tmp/out"
+else
+    check "diff-15.7 the s4_floor student build" false
+fi
+# (d) the loop bound off by one: no stage of a student build makes it, so the
+# course's log is edited.  One step short: the last pixel line of each
+# segment's run dropped (a run of one, a single pixel, is kept)
+short='/^ *fb_\[/ { if (held != "") print held; held = $0; n++; next }
+       { if (held != "" && n == 1) print held; held = ""; n = 0; print }
+       END { if (held != "" && n == 1) print held }'
+awk "$short" $K > "$tmp/short.log"
+check "diff-15.8 (24 pixel lines fewer)" test $(($(grep -c 'fb_\[' $K) - $(grep -c 'fb_\[' "$tmp/short.log"))) = 24
+rast diff-15.9 $K "$tmp/short.log" "DDA loop one step short"
+# one step too long, on rows (m = 0, stepped left to right): after each
+# segment's last pixel line the next step, x_pp and x_vp one more
+printf 'framebuffer 30 20\nviewport 3 2 24 16\ncamera orthographic\nmodel h\nv -0.5 0.3 0\nv 0.5 0.3 0\nv -0.7 -0.4 0\nv 0.2 -0.4 0\nl 1 2\nl 4 3\n' > "$tmp/rows.scene"
+"$exe" "$tmp/rows.scene" --format kraft-pixels --trace "$tmp/rows.log"
+awk 'function bump(s, key,    v) {
+         match(s, key "= *-?[0-9]+")
+         v = substr(s, RSTART + length(key) + 1, RLENGTH - length(key) - 1) + 1
+         return substr(s, 1, RSTART - 1) sprintf("%s=%4d", key, v) substr(s, RSTART + RLENGTH)
+     }
+     /^ *fb_\[/ { print; held = $0; next }
+     held != "" { print bump(bump(held, "x_pp"), "x_vp"); held = "" }
+     { print }
+     END { if (held != "") print bump(bump(held, "x_pp"), "x_vp") }' "$tmp/rows.log" > "$tmp/long.log"
+check "diff-15.10 (2 pixel lines more)" test $(($(grep -c 'fb_\[' "$tmp/long.log") - $(grep -c 'fb_\[' "$tmp/rows.log"))) = 2
+rast diff-15.11 "$tmp/rows.log" "$tmp/long.log" "DDA loop one step too long"
+awk "$short" "$tmp/rows.log" > "$tmp/rows-short.log"
+rast diff-15.12 "$tmp/rows.log" "$tmp/rows-short.log" "DDA loop one step short"
+# (e) setPixelVP without (x_ul, y_ul): the course's log prints x_vp before
+# setPixelVP, so only pipetrace's pixel records (framebuffer pixels) show it
+"$exe" $S --format jsonl --stage pixel --stage raster --trace "$tmp/off-want.jsonl"
+if mistaken s5_nooffset; then
+    "$tmp/sb/pipetrace" $S --format jsonl --stage pixel --stage raster --trace "$tmp/off-got.jsonl"
+    rast diff-15.13 "$tmp/off-want.jsonl" "$tmp/off-got.jsonl" "viewport offset (x_ul, y_ul) forgotten"
+    check "diff-15.13a ... the pixels moved by (-10, -5)" grep -qF "all of them moved by (-10, -5)" "$tmp/flat"
+else
+    check "diff-15.13 the s5_nooffset student build" false
+fi
+
 report

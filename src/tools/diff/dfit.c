@@ -380,15 +380,21 @@ void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, co
         pt_diff_add(&s, "Verdict: FAIL in the pixels: every vertex agrees, but the lit pixels "
                     "differ");
         pt_diff_outcome_stage(out, "pixels");
-        for (k = 0; k < PT_NRASTER_MISTAKES; k++)
-            if (rs->segs_differ && rs->hits[k] == rs->segs_differ) break;
-        if (k < PT_NRASTER_MISTAKES) pt_diff_outcome_named(out, pt_raster_mistakes[k].name);
-        if (k < PT_NRASTER_MISTAKES)
-            pt_diff_add(&s, ". Likely mistake: %s: %s. It reproduces %s.", pt_raster_mistakes[k].name,
-                        pt_raster_mistakes[k].how, rs->segs_differ == 1 ? "the one segment "
-                        "that differs" : "every segment that differs");
-        else
-            pt_diff_add(&s, "; no known mistake of the rasterizer's rounding explains them.");
+        size_t named[PT_NRASTER_MISTAKES], nn = pt_diff_raster_named(rs, named);
+        for (k = 0; k < nn; k++) pt_diff_outcome_named(out, pt_raster_mistakes[named[k]].name);
+        if (nn == 1)
+            pt_diff_add(&s, ". Likely mistake: %s: %s. It reproduces %s.",
+                        pt_raster_mistakes[named[0]].name, pt_raster_mistakes[named[0]].how,
+                        rs->segs_differ == 1 ? "the one segment that differs"
+                        : "every segment that differs");
+        else if (nn > 1) {
+            pt_diff_add(&s, "; more than one known mistake of the rasterizer reproduces every "
+                        "segment that differs: ");
+            for (k = 0; k < nn; k++)
+                pt_diff_add(&s, "%s%s", k ? " or " : "", pt_raster_mistakes[named[k]].name);
+            pt_diff_add(&s, ".");
+        } else
+            pt_diff_add(&s, "; no known mistake of the rasterizer explains them.");
     } else {
         pt_diff_add(&s, "Verdict: FAIL: the traces differ (see above).");
     }

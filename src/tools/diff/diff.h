@@ -122,7 +122,9 @@ typedef struct dctx {
 /* What the raster check found. */
 typedef struct rstat {
     size_t segs_differ;          /* segments whose pixels differ */
-    size_t hits[PT_NRASTER_MISTAKES];   /* ... that each rounding mistake reproduces */
+    size_t hits[PT_NRASTER_MISTAKES];   /* ... that each rasterizer mistake reproduces */
+    size_t apart[PT_NRASTER_MISTAKES];  /* ... where a mistake with a twin lights
+                                 ** other pixels or clip records than its twin */
     int first_set;               /* 1: first_* below are set */
     uint32_t first_model;        /* the first differing segment */
     uint64_t first_seg;
@@ -257,6 +259,13 @@ int pt_diff_compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2
 ** rasterizer reproduces ACTUAL's pixels from EXPECTED's endpoints, into *rs.
 ** Returns 0, or -1 when out of memory. */
 int pt_diff_check_raster(dctx *c, rstat *rs);
+
+/* The rasterizer's mistakes that reproduce every differing segment of rs,
+** into named[] (indexes into pt_raster_mistakes), their number returned; a
+** mistake whose twin is named too and that the trace never told apart from
+** it (rs->apart 0) is left out: it draws the same pixels there.  This
+** function can't fail. */
+size_t pt_diff_raster_named(const rstat *rs, size_t named[PT_NRASTER_MISTAKES]);
 
 /* Print the raster check's details for the first differing segment. */
 void pt_diff_report_raster(const dctx *c, const rstat *rs);

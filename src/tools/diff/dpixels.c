@@ -6,8 +6,11 @@
 ** vertex agrees and the pixels differ, the rasterizer (pt_raster_segment) is
 ** run again on each differing segment from its rounded endpoints (its first
 ** and last steps in EXPECTED), first with the right viewport stage, which
-** must give EXPECTED's pixels, then with each of the catalogue's viewport
-** stages that round wrongly, which must give ACTUAL's.
+** must give EXPECTED's pixels, then with each of the catalogue's mistakes of
+** the rasterizer (a viewport stage that rounds or maps wrongly, the loop
+** bound off by one, setPixelVP without the offset), which must give ACTUAL's:
+** its pixels, and its clip records too where the reference replay gives
+** EXPECTED's own (only they tell truncation from floor(x + 0.5)).
 */
 #include <inttypes.h>
 #include <math.h>
@@ -158,40 +161,143 @@ static int plist_add(plist *l, int64_t x, int64_t y)
     return 0;
 }
 
+/* A replayed segment: its pixels, and its clip records as three pairs each,
+** (count, 0) (x_vp, y_vp of the first step) (... of the last). */
+typedef struct replayed {
+    plist px, cl;                /* owned */
+} replayed;
+
+/* The clip record of a trace as replay_clip() keeps it. */
+static int clip_add(plist *l, const pt_tclip *q)
+{
+    return plist_add(l, (int64_t)q->count, 0) || plist_add(l, q->first[0], q->first[1]) ||
+           plist_add(l, q->last[0], q->last[1]) ? -1 : 0;
+}
+
 static void replay_pixel(void *ud, int64_t x, int64_t y)
 {
-    plist *l = ud;
-    if (plist_add(l, x, y) != 0) l->oom = 1;
+    replayed *r = ud;
+    if (plist_add(&r->px, x, y) != 0) r->px.oom = 1;
 }
 
 static void replay_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
 {
-    (void)ud; (void)count; (void)first; (void)last;
+    replayed *r = ud;
+    if (plist_add(&r->cl, (int64_t)count, 0) || plist_add(&r->cl, first.x, first.y) ||
+        plist_add(&r->cl, last.x, last.y))
+        r->px.oom = 1;
 }
 
-/* Run the rasterizer again, each step's pixel found by to_vp, for the segment
-** whose rounded endpoints are ends[] = X0 Y0 X1 Y1 (logical pixels), in a w x h
-** viewport; the pixels it writes go to *out in step order.  Returns 0, or -1
-** when out of memory. */
-static int replay(const int64_t ends[4], int w, int h, pt_raster_vp to_vp, plist *out)
+/* The DDA's setup and last step, heard by a replay of the loop bound. */
+typedef struct lasting {
+    int kind;                    /* PT_RASTER_DRAWN, ... */
+    int ymajor;                  /* the setup's */
+    double m;                    /* the setup's slope */
+    int have;                    /* 1: last is set */
+    pt_raster_step last;         /* the last step heard */
+} lasting;
+
+static void last_setup(void *ud, const pt_raster_setup *su)
+{
+    lasting *l = ud;
+    l->kind = su->kind;
+    l->ymajor = su->ymajor;
+    l->m = su->m;
+}
+
+static void last_step(void *ud, const pt_raster_step *st)
+{
+    lasting *l = ud;
+    l->last = *st;
+    l->have = 1;
+}
+
+/* The longest segment whose loop bound is replayed: its steps are heard one
+** by one (pt_raster_walk), not fast-forwarded. */
+#define LOOP_MOST 65536
+
+/* Run the rasterizer again, each step's pixel found by to_vp (NULL: the
+** viewport stage), for the segment whose rounded endpoints are ends[] = X0 Y0
+** X1 Y1 (logical pixels), in a w x h viewport, with the loop's last step
+** moved by steps (-1: not taken, +1: one more, y += m once more: the DDA's
+** own step, its pixel from the viewport stage); what it writes goes to *out
+** in step order (with steps, the pixels only).  Returns 0, 1 when steps is
+** not replayed (a segment longer than LOOP_MOST steps), or -1 when out of
+** memory. */
+static int replay(const int64_t ends[4], int w, int h, pt_raster_vp to_vp, int steps,
+                  replayed *out)
 {
     pt_vec2 p0, p1;
     pt_raster_out ro;
+    pt_raster_steps ls;
+    lasting l;
 
     p0.x = (double)ends[0]; p0.y = (double)ends[1];
     p1.x = (double)ends[2]; p1.y = (double)ends[3];
     ro.pixel = replay_pixel;
     ro.clip = replay_clip;
     ro.ud = out;
-    out->n = 0;
-    out->oom = 0;
-    pt_raster_segment(p0, p1, w, h, to_vp, &ro);
-    return out->oom ? -1 : 0;
+    out->px.n = out->cl.n = 0;
+    out->px.oom = 0;
+    if (!to_vp) to_vp = pt_pixel2viewport;
+    if (!steps) {
+        pt_raster_segment(p0, p1, w, h, to_vp, &ro);
+        return out->px.oom ? -1 : 0;
+    }
+    if (llabs(ends[2] - ends[0]) > LOOP_MOST || llabs(ends[3] - ends[1]) > LOOP_MOST) return 1;
+    memset(&ls, 0, sizeof ls);
+    memset(&l, 0, sizeof l);
+    ls.setup = last_setup;
+    ls.step = last_step;
+    ls.ud = &l;
+    pt_raster_walk(p0, p1, w, h, to_vp, &ro, &ls);
+    if (l.kind == PT_RASTER_DRAWN && l.have && steps < 0 && l.last.inside)
+        out->px.n--;                        /* its pixel is the last one */
+    if (l.kind == PT_RASTER_DRAWN && l.have && steps > 0) {
+        double a = l.last.a + l.m;          /* y += m */
+        double s1 = (double)(l.last.s + 1);
+        pt_vec2 pp;
+        pt_pix vp;
+        pp.x = l.ymajor ? a : s1;
+        pp.y = l.ymajor ? s1 : a;
+        vp = to_vp(pp, w, h, NULL);
+        if (vp.ok && pt_inside(vp.x, vp.y, w, h)) replay_pixel(out, vp.x, vp.y);
+    }
+    return out->px.oom ? -1 : 0;
+}
+
+/* 1 when the pixels b are the pixels a less the offset ul: setPixelVP
+** without the offset, where the way back (fb_to_vp) takes ul off again. */
+static int eq_less(const plist *a, const plist *b, pt_pix ul)
+{
+    size_t q;
+
+    if (a->n != b->n) return 0;
+    for (q = 0; q < a->n; q++)
+        if (b->p[q][0] != a->p[q][0] - ul.x || b->p[q][1] != a->p[q][1] - ul.y) return 0;
+    return 1;
 }
 
 static int plist_eq(const plist *a, const plist *b)
 {
     return a->n == b->n && (a->n == 0 || memcmp(a->p, b->p, a->n * sizeof *a->p) == 0);
+}
+
+/* Mistake j replayed from ends into *out: 1 when it gives ACTUAL's pixels px
+** (and with clips its clip records cl), 0 when not or not replayed; -1 when
+** out of memory.  ref: the reference's replay; ul: the framebuffer pixel of
+** viewport pixel (0, 0). */
+static int mistake_fits(size_t j, const int64_t ends[4], const pt_thdr *hd, const replayed *ref,
+                        pt_pix ul, const plist *px, const plist *cl, int clips, replayed *out)
+{
+    const pt_raster_mistake *mk = &pt_raster_mistakes[j];
+    int r;
+
+    if (mk->no_offset)
+        return eq_less(&ref->px, px, ul) && (!clips || plist_eq(&ref->cl, cl));
+    r = replay(ends, hd->vp_w, hd->vp_h, mk->to_vp, mk->steps, out);
+    if (r) return r < 0 ? -1 : 0;
+    return plist_eq(&out->px, px) && (mk->steps || !clips || plist_eq(&out->cl, cl));
 }
 
 /* 1 when the replayed viewport pixels re are ACTUAL's pixels act (taken to
@@ -276,11 +382,16 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
     const pt_thdr *hd = &c->t[0].hdr;
     size_t n[2], k[2] = {0, 0}, j;
     skey *s[2];
-    plist pl[2] = {{NULL, 0, 0, 0}, {NULL, 0, 0, 0}}, re = {NULL, 0, 0, 0};
+    plist pl[2] = {{NULL, 0, 0, 0}, {NULL, 0, 0, 0}}, cl[2] = {{NULL, 0, 0, 0}, {NULL, 0, 0, 0}};
+    replayed re, mk, tw;
+    pt_pix o = {0, 0, 1}, ul = pt_viewport2fb(o, hd->vp_x, hd->vp_y, NULL);
     int64_t d[2];
     int side, rc = 0, one_space = actual_offset(c, hd, d);
 
     memset(rs, 0, sizeof *rs);
+    memset(&re, 0, sizeof re);
+    memset(&mk, 0, sizeof mk);
+    memset(&tw, 0, sizeof tw);
     s[0] = sorted_steps(&c->t[0], &n[0]);
     s[1] = sorted_steps(&c->t[1], &n[1]);
     if (!s[0] || !s[1]) rc = -1;
@@ -289,7 +400,7 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
         uint64_t seg;
         size_t beg[2], end[2];
         int64_t ends[4];
-        int have_ends = 0, ok = 0, sane = 1;    /* sane: every coordinate pt_diff_small() */
+        int have_ends = 0, ok = 0, clips = 0, sane = 1; /* sane: every coordinate pt_diff_small() */
 
         /* the next segment of either list: the smaller (model, seg) */
         side = k[1] >= n[1] ? 0 : k[0] >= n[0] ? 1 : seg_cmp(&s[0][k[0]], &s[1][k[1]]) <= 0 ? 0 : 1;
@@ -297,7 +408,7 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
         seg = s[side][k[side]].seg;
         for (side = 0; side < 2; side++) {
             beg[side] = k[side];
-            pl[side].n = 0;
+            pl[side].n = cl[side].n = 0;
             while (k[side] < n[side] && s[side][k[side]].model == model &&
                    s[side][k[side]].seg == seg) {
                 const skey *q = &s[side][k[side]++];
@@ -313,6 +424,8 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
                            !pt_diff_small(c->t[side].cl[q->k].last[0]) ||
                            !pt_diff_small(c->t[side].cl[q->k].last[1])) {
                     sane = 0;
+                } else if (clip_add(&cl[side], &c->t[side].cl[q->k]) != 0) {
+                    rc = -1;
                 }
             }
             end[side] = k[side];
@@ -331,9 +444,12 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
             vp_to_pp(fv.x, fv.y, hd->vp_h, &ends[0]);
             vp_to_pp(lv.x, lv.y, hd->vp_h, &ends[2]);
             have_ends = 1;
-            if (replay(ends, hd->vp_w, hd->vp_h, pt_pixel2viewport, &re))
+            if (replay(ends, hd->vp_w, hd->vp_h, NULL, 0, &re))
                 rc = -1;
-            ok = rc == 0 && plist_eq(&re, &pl[0]);
+            ok = rc == 0 && plist_eq(&re.px, &pl[0]);
+            /* clip records compared where the traces have them and the
+            ** reference replay gives EXPECTED's own */
+            clips = ok && (c->t[0].ncl || c->t[1].ncl) && plist_eq(&re.cl, &cl[0]);
         }
         if (!rs->first_set) {
             rs->first_set = 1;
@@ -359,22 +475,33 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
             vp_to_pp(fv.x, fv.y, hd->vp_h, &own[0]);
             vp_to_pp(lv.x, lv.y, hd->vp_h, &own[2]);
             rs->own_tried++;
-            if (replay(own, hd->vp_w, hd->vp_h, pt_pixel2viewport, &re)) rc = -1;
-            else if (!own_eq(&re, &pl[1], hd, d) && rs->own_bad++ == 0) {
+            if (replay(own, hd->vp_w, hd->vp_h, NULL, 0, &mk)) rc = -1;
+            else if (!own_eq(&mk.px, &pl[1], hd, d) && rs->own_bad++ == 0) {
                 rs->own_model = model;
                 rs->own_seg = seg;
             }
         }
         for (j = 0; ok && rc == 0 && j < PT_NRASTER_MISTAKES; j++) {
-            if (replay(ends, hd->vp_w, hd->vp_h, pt_raster_mistakes[j].to_vp, &re)) rc = -1;
-            else if (plist_eq(&re, &pl[1])) rs->hits[j]++;
+            int tj = pt_raster_mistakes[j].twin - 1, fit;
+            fit = mistake_fits(j, ends, hd, &re, ul, &pl[1], &cl[1], clips, &mk);
+            if (fit < 0) { rc = -1; break; }
+            rs->hits[j] += (size_t)fit;
+            if (tj < 0) continue;
+            /* a twin: apart where the two replays differ */
+            if (replay(ends, hd->vp_w, hd->vp_h, pt_raster_mistakes[tj].to_vp, 0, &tw)) rc = -1;
+            else if (!plist_eq(&mk.px, &tw.px) || (clips && !plist_eq(&mk.cl, &tw.cl)))
+                rs->apart[j]++;
         }
     }
     free(s[0]);
     free(s[1]);
     free(pl[0].p);
     free(pl[1].p);
-    free(re.p);
+    free(cl[0].p);
+    free(cl[1].p);
+    free(re.px.p); free(re.cl.p);
+    free(mk.px.p); free(mk.cl.p);
+    free(tw.px.p); free(tw.cl.p);
     return rc;
 }
 
@@ -500,11 +627,24 @@ int pt_diff_compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2
     return 0;
 }
 
+size_t pt_diff_raster_named(const rstat *rs, size_t named[PT_NRASTER_MISTAKES])
+{
+    size_t k, n = 0;
+
+    for (k = 0; k < PT_NRASTER_MISTAKES; k++) {
+        int t = pt_raster_mistakes[k].twin - 1;
+        if (!rs->segs_differ || rs->hits[k] != rs->segs_differ) continue;
+        if (t >= 0 && rs->hits[t] == rs->segs_differ && !rs->apart[k]) continue;
+        named[n++] = k;
+    }
+    return n;
+}
+
 /* Print the raster check's details for the first differing segment. */
 void pt_diff_report_raster(const dctx *c, const rstat *rs)
 {
     pbuf sb;
-    size_t k;
+    size_t k, j, named[PT_NRASTER_MISTAKES], n = pt_diff_raster_named(rs, named);
 
     if (!rs->first_set) return;
     memset(&sb, 0, sizeof sb);
@@ -520,23 +660,36 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
                     "checked.");
     pt_diff_para("  ", sb.b);
     for (k = 0; rs->ends_ok && k < PT_NRASTER_MISTAKES; k++) {
-        if (!rs->hits[k]) continue;
-        if (rs->hits[k] < rs->segs_differ) {   /* never a confident name for part of it */
-            memset(&sb, 0, sizeof sb);
-            pt_diff_add(&sb, "partial: %s reproduces %zu of the %zu segments that differ: it does "
-                        "NOT explain them.", pt_raster_mistakes[k].name, rs->hits[k], rs->segs_differ);
-            pt_diff_para("  ", sb.b);
-            continue;
-        }
-        printf("  likely mistake: %s\n", pt_raster_mistakes[k].name);
-        pt_diff_para("    ", pt_raster_mistakes[k].how);
-        memset(&sb, 0, sizeof sb);
-        pt_diff_add(&sb, "check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
-                    ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels with Math.round and "
-                    "ACTUAL's with it", rs->ends[0], rs->ends[1], rs->ends[2], rs->ends[3]);
-        if (rs->segs_differ > 1)
-            pt_diff_add(&sb, "; so it does for all %zu segments that differ", rs->segs_differ);
-        pt_diff_add(&sb, ".");
-        pt_diff_para("    ", sb.b);
+        if (!rs->hits[k] || rs->hits[k] == rs->segs_differ) continue;
+        memset(&sb, 0, sizeof sb);             /* never a confident name for part of it */
+        pt_diff_add(&sb, "partial: %s reproduces %zu of the %zu segments that differ: it does "
+                    "NOT explain them.", pt_raster_mistakes[k].name, rs->hits[k], rs->segs_differ);
+        pt_diff_para("  ", sb.b);
     }
+    if (!rs->ends_ok || !n) return;
+    if (n > 1) {
+        memset(&sb, 0, sizeof sb);
+        pt_diff_add(&sb, "ambiguous: ");
+        for (k = 0; k < n; k++)
+            pt_diff_add(&sb, "%s%s", k ? " or " : "", pt_raster_mistakes[named[k]].name);
+        pt_diff_add(&sb, ": each reproduces ACTUAL's pixels in every segment that differs.");
+        pt_diff_para("  ", sb.b);
+        return;
+    }
+    k = named[0];
+    printf("  likely mistake: %s\n", pt_raster_mistakes[k].name);
+    pt_diff_para("    ", pt_raster_mistakes[k].how);
+    memset(&sb, 0, sizeof sb);
+    pt_diff_add(&sb, "check: the DDA run again from the rounded endpoints (%" PRId64 ", %" PRId64
+                ") and (%" PRId64 ", %" PRId64 ") lights EXPECTED's pixels without it and "
+                "ACTUAL's with it", rs->ends[0], rs->ends[1], rs->ends[2], rs->ends[3]);
+    if (rs->segs_differ > 1)
+        pt_diff_add(&sb, "; so it does for all %zu segments that differ", rs->segs_differ);
+    pt_diff_add(&sb, ".");
+    for (j = 0; j < PT_NRASTER_MISTAKES; j++)
+        if (pt_raster_mistakes[j].twin - 1 == (int)k && rs->hits[j] == rs->segs_differ)
+            pt_diff_add(&sb, " So does %s: the two light other pixels only at steps left of or "
+                        "below the viewport, which this trace does not tell apart.",
+                        pt_raster_mistakes[j].name);
+    pt_diff_para("    ", sb.b);
 }

@@ -388,21 +388,27 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                         "than one way"
                         : "EXPECTED has no header with the viewport");
         else if (rs->segs_differ) {
-            size_t best = PT_NRASTER_MISTAKES;
+            size_t best = PT_NRASTER_MISTAKES, named[PT_NRASTER_MISTAKES];
+            size_t nn = pt_diff_raster_named(rs, named);
             pt_diff_add(&s, ", so the rasterizer differs, in %zu segment%s.",
                         rs->segs_differ, rs->segs_differ > 1 ? "s" : "");
             for (k = 0; k < PT_NRASTER_MISTAKES; k++)
                 if (rs->hits[k] && (best == PT_NRASTER_MISTAKES || rs->hits[k] > rs->hits[best])) best = k;
-            if (best < PT_NRASTER_MISTAKES && rs->hits[best] == rs->segs_differ) {
-                pt_diff_add(&s, " Likely mistake: %s in the rasterizer's rounding (pt_pix_round in "
-                            "s4), which reproduces ACTUAL's pixels in every segment that differs.",
-                            pt_raster_mistakes[best].name);
+            if (nn == 1) {
+                pt_diff_add(&s, " Likely mistake: %s %s, which reproduces ACTUAL's pixels in every "
+                            "segment that differs.", pt_raster_mistakes[named[0]].name,
+                            pt_raster_mistakes[named[0]].where);
+            } else if (nn > 1) {
+                pt_diff_add(&s, " Likely mistake: ambiguous: ");
+                for (k = 0; k < nn; k++)
+                    pt_diff_add(&s, "%s%s", k ? " or " : "", pt_raster_mistakes[named[k]].name);
+                pt_diff_add(&s, " (each reproduces ACTUAL's pixels in every segment that differs).");
             } else if (best < PT_NRASTER_MISTAKES) {
-                pt_diff_add(&s, " No known mistake of its rounding explains every segment: %s "
+                pt_diff_add(&s, " No known mistake of the rasterizer explains every segment: %s "
                             "reproduces %zu of the %zu, so it does NOT explain them.",
                             pt_raster_mistakes[best].name, rs->hits[best], rs->segs_differ);
             } else {
-                pt_diff_add(&s, " No known mistake of its rounding reproduces them.");
+                pt_diff_add(&s, " No known mistake of the rasterizer reproduces them.");
             }
         } else {
             pt_diff_add(&s, ".");
