@@ -288,7 +288,11 @@ static void on_point_pixels(void *ud, const pt_model *m, uint64_t pt, const pt_f
 
 static void put_pair_json(pt_trace *t, pt_pix p)
 {
-    put(t, "[", 1); put_i64(t, p.x); put(t, ",", 1); put_i64(t, p.y); put(t, "]", 1);
+    put(t, "[", 1);     /* null where the step has no such value (PT_PIX_NONE) */
+    if (p.x == PT_PIX_NONE) puts_(t, "null"); else put_i64(t, p.x);
+    put(t, ",", 1);
+    if (p.y == PT_PIX_NONE) puts_(t, "null"); else put_i64(t, p.y);
+    put(t, "]", 1);
 }
 
 static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,

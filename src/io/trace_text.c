@@ -297,9 +297,17 @@ static void on_point_pixels(void *ud, const pt_model *m, uint64_t pt, const pt_f
     for (k = 0; k < n; k++) pixel_line(ud, m, 'p', pt, &px[k]);
 }
 
+/* One coordinate of a clipped step: "none" where the step has none (a
+** value beyond what the rasterizer rounds, PT_PIX_NONE). */
+static void put_clip_coord(pt_trace *t, int64_t x)
+{
+    if (x == PT_PIX_NONE) puts_(t, "none");
+    else put_i64(t, x);
+}
+
 static void put_pair_text(pt_trace *t, pt_pix p)
 {
-    put(t, "(", 1); put_i64(t, p.x); puts_(t, ", "); put_i64(t, p.y); put(t, ")", 1);
+    put(t, "(", 1); put_clip_coord(t, p.x); puts_(t, ", "); put_clip_coord(t, p.y); put(t, ")", 1);
 }
 
 static void on_clip(void *ud, const pt_model *m, uint64_t seg, uint64_t count,

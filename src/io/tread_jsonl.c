@@ -395,6 +395,7 @@ static int jpair(pt_treader *r, const jval *v, int64_t out[2])
     if (v->kind != J_ARR) return pt_tr_fail(r, v->p, "expected [x,y]");
     for (k = 0; k < 2; k++) {
         if (!j_item(r, v, &pos, &item)) return pt_tr_fail(r, v->p, "expected [x,y]");
+        if (item.kind == J_NULL) { out[k] = PT_PIX_NONE; continue; }  /* no such value */
         if (jint(r, &item, &out[k], 0, NULL) != 0) return -1;
     }
     if (j_item(r, v, &pos, &item)) return pt_tr_fail(r, item.p, "expected [x,y]");

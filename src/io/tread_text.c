@@ -178,6 +178,12 @@ static int t_clip(pt_treader *r, cur *c, uint32_t model, uint64_t seg)
     for (s++; s < c->e; ) {
         int dec;
         size_t len;
+        if ((size_t)(c->e - s) >= 4 && !memcmp(s, "none", 4)) {  /* no such value */
+            if (k == want) return pt_tr_fail(r, s, "expected %d integers in the clip record", want);
+            v[k++] = PT_PIX_NONE;
+            s += 4;
+            continue;
+        }
         if (*s != '-' && (*s < '0' || *s > '9')) { s++; continue; }
         len = pt_tr_num_len(s, c->e, &dec);
         if (len == 0 || k == want || !pt_tr_is_int_token(s, len) || pt_tr_to_i64(s, &v[k]) != 0)

@@ -618,4 +618,10 @@ else
     check "diff-15.13 the s5_nooffset student build" false
 fi
 
+# ---- 16: a clip record with a coordinate that has no integer value reads back
+"$exe" tests/extreme/zdiv-zero.scene --format jsonl --trace "$tmp/z.jsonl" 2>/dev/null
+"$exe" tests/extreme/zdiv-zero.scene --trace "$tmp/z.txt" 2>/dev/null
+"$exe" diff "$tmp/z.jsonl" "$tmp/z.txt" >"$tmp/out" 2>&1; rc=$?
+check "diff-16.1 clip records with null / none: both formats read, and agree (exit $rc)" test "$rc" = 0
+
 report
