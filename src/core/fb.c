@@ -68,13 +68,15 @@ void pt_fb_blend(pt_fb *fb, int64_t idx, const unsigned char color[3], float cov
 
 void pt_fb_fill(pt_fb *fb, int x, int y, int w, int h, const unsigned char color[3])
 {
-    int64_t x0 = x < 0 ? 0 : x, y0 = y < 0 ? 0 : y;
-    int64_t x1 = (int64_t)x + w, y1 = (int64_t)y + h, i, j;
+    int64_t npix = (int64_t)fb->w * fb->h, j, i, lo, hi;
 
-    if (x1 > fb->w) x1 = fb->w;
-    if (y1 > fb->h) y1 = fb->h;
-    for (j = y0; j < y1; j++)
-        for (i = x0; i < x1; i++) pt_fb_set(fb, j * fb->w + i, color);
+    for (j = 0; j < h; j++) {                   /* row y + j: one run of the array */
+        lo = ((int64_t)y + j) * fb->w + x;      /* pixel (x, y + j) */
+        hi = lo + w;                            /* one past (x + w - 1, y + j) */
+        if (lo < 0) lo = 0;
+        if (hi > npix) hi = npix;
+        for (i = lo; i < hi; i++) pt_fb_set(fb, i, color);
+    }
 }
 
 int pt_fb_write_ppm(const pt_fb *fb, FILE *f)

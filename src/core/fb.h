@@ -54,9 +54,12 @@ static inline void pt_fb_set(pt_fb *fb, int64_t idx, const unsigned char color[3
 ** with the background colour instead, and write).  This function can't fail. */
 void pt_fb_blend(pt_fb *fb, int64_t idx, const unsigned char color[3], float coverage);
 
-/* Fill the w x h rectangle whose upper-left corner is (x, y) with color, the
-** part of it inside fb (the course's Viewport.clearVP).  This function can't
-** fail. */
+/* Fill the w x h rectangle whose upper-left corner is (x, y) with color, as
+** the course's Viewport.clearVP does, pixel by pixel through setPixelFB:
+** pixel (x + i, y + j) is the array's pixel (y + j)*W + x + i when that lies
+** in 0 .. W*H - 1 (an x + i past the width lands in the next row, before 0
+** in the row above; the others are dropped).  A rectangle inside fb is
+** just that rectangle.  |x|, |y|, w, h <= 2^30.  This function can't fail. */
 void pt_fb_fill(pt_fb *fb, int x, int y, int w, int h, const unsigned char color[3]);
 
 /* Write fb as binary PPM (P6) to the open stream f.  Returns 0 or -1 (errno). */

@@ -514,23 +514,24 @@ typedef struct raster_ctx {
     int64_t npix;                /* W * H: the pixel array's length */
     pt_summary *sum;
     int x_ul, y_ul, W, H;        /* the scene's, at hand for every pixel */
+    int wrap;                    /* 1: the viewport sticks out of the
+                                 ** framebuffer (pt_raster_fb_pixel) */
 } raster_ctx;
 
 /* A pixel of the classic camera's segments walked step by step
 ** (pt_raster_walk), in the course's colour of its step.  A student's
-** framebuffer or index stage may name no pixel of the array (Java would
-** throw): the trace shows it, the image is left alone. */
+** framebuffer or index stage may name no pixel of the array, nor may the
+** course's index of a viewport that sticks out (pt_raster_fb_pixel): the
+** trace shows it, the image is left alone. */
 static void on_paint(void *ud, int64_t x_vp, int64_t y_vp, const pt_fb_paint *pa)
 {
     raster_ctx *rc = ud;
-    pt_pix vp = {x_vp, y_vp, 1};
-    pt_pix f = pt_viewport2fb(vp, rc->x_ul, rc->y_ul, NULL);
-    int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
+    pt_fb_pixel px;
+    int64_t idx = pt_raster_fb_pixel(x_vp, y_vp, rc->x_ul, rc->y_ul, rc->W, rc->H, rc->wrap,
+                                     &px);
 
     rc->sum->pixels++;
     if (rc->l && rc->l->pixels) {
-        pt_fb_pixel px;
-        px.x_fb = f.x; px.y_fb = f.y; px.idx = idx;
         px.paint = *pa;
         rc->l->pixels(rc->l->ud, rc->m, rc->seg, &px, 1);
     }
@@ -743,8 +744,10 @@ static void drawing_start(drawing *d, const pt_scene *s, pt_fb *fb, pt_summary *
     d->rc.s = s; d->rc.fb = fb; d->rc.sum = sum;
     d->rc.npix = (int64_t)s->fb_w * s->fb_h;
     d->rc.x_ul = s->vp_x; d->rc.y_ul = s->vp_y; d->rc.W = s->fb_w; d->rc.H = s->fb_h;
+    d->rc.wrap = !pt_scene_vp_inside(s);
     d->im.fb = fb; d->im.W = s->fb_w; d->im.H = s->fb_h;
     d->im.x_ul = s->vp_x; d->im.y_ul = s->vp_y; d->im.pixels = 0;
+    d->im.wrap = d->rc.wrap;
     d->im.pixel_ud = &d->rc;
     d->ls.setup = on_setup;
     d->ls.step = on_step;
@@ -790,12 +793,13 @@ static void on_dot(void *ud, const pt_raster_dot *dt)
 {
     dot_ctx *dc = ud;
     raster_ctx *rc = dc->rc;
-    pt_pix f = pt_viewport2fb(dt->vp, rc->x_ul, rc->y_ul, NULL);
-    int64_t idx = pt_fb2index(f, rc->W, rc->H, NULL);
+    pt_fb_pixel at;
+    int64_t idx = pt_raster_fb_pixel(dt->vp.x, dt->vp.y, rc->x_ul, rc->y_ul, rc->W, rc->H,
+                                     rc->wrap, &at);
 
     if (dc->l) {
         pt_fb_pixel *q = &dc->px[dc->n];
-        q->x_fb = f.x; q->y_fb = f.y; q->idx = idx;
+        *q = at;
         memcpy(q->paint.rgb, dc->rgb, sizeof q->paint.rgb);
         q->paint.coverage = 1.0f;
         if (++dc->n == PT_RASTER_RUN) dots_tell(dc);

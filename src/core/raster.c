@@ -579,14 +579,48 @@ static void tell_clip(void *ud, uint64_t count, pt_pix first, pt_pix last)
 typedef struct draw_ctx {
     pt_fb fb;                    /* the framebuffer (rgb NULL: only its size) */
     int x_ul, y_ul;              /* the viewport's corner */
+    int wrap;                    /* 1: it sticks out: the course's index */
     int64_t npix;                /* W * H: the pixel array's length */
     uint64_t pixels;             /* pixels drawn */
     telling *tell;               /* with a listener: its pixels, else NULL */
 } draw_ctx;
 
+/* The index of framebuffer pixel f as the course's setPixelFB has it, with
+** x_fb past the width wrapped into a neighbouring row (pt_raster_fb_pixel):
+** the pixel (x_fb mod W, y_fb + floor(x_fb / W)) through the index stage;
+** -1 for none.  Only called for a pixel the index stage left out, and only
+** with the viewport sticking out of the framebuffer. */
+static int64_t wrapped_index(pt_pix f, int W, int H)
+{
+    int64_t q;
+
+    if (!f.ok) return -1;
+    q = f.x / W;                                    /* floor(x_fb / W): rows crossed */
+    if (f.x % W < 0) q--;
+    f.x -= q * W;                                   /* 0 <= x < W */
+    f.y += q;                                       /* |x_fb|, |y_fb| < 2^62: no overflow */
+    return pt_fb2index(f, W, H, NULL);
+}
+
+int64_t pt_raster_fb_pixel(int64_t x_vp, int64_t y_vp, int x_ul, int y_ul, int W, int H,
+                           int wrap, pt_fb_pixel *px)
+{
+    pt_pix vp = {x_vp, y_vp, 1};
+    pt_pix f = pt_viewport2fb(vp, x_ul, y_ul, NULL);
+    int64_t idx = pt_fb2index(f, W, H, NULL);
+
+    if (idx < 0 && wrap) idx = wrapped_index(f, W, H);
+    px->x_fb = f.x;
+    px->y_fb = f.y;
+    px->idx = idx;
+    return idx;
+}
+
 /* A pixel inside the viewport through the framebuffer and index stages into
 ** the image, and to the listener when `listened`; one the stages put outside
-** the pixel array is not drawn (a student's stage can: Java would throw). */
+** the pixel array is not drawn (a student's stage can: Java would throw), but
+** with c->wrap goes where the course's index puts it (pt_raster_fb_pixel):
+** the fast path, a viewport inside the framebuffer, never asks. */
 static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x_vp,
                                             int64_t y_vp, const unsigned char rgb[3],
                                             float cov)
@@ -594,6 +628,8 @@ static inline ALWAYS_INLINE void draw_pixel(draw_ctx *c, int listened, int64_t x
     pt_pix vp = {x_vp, y_vp, 1};
     pt_pix f = pt_viewport2fb(vp, c->x_ul, c->y_ul, NULL);
     int64_t idx = pt_fb2index(f, c->fb.w, c->fb.h, NULL);
+
+    if (idx < 0 && c->wrap) idx = wrapped_index(f, c->fb.w, c->fb.h);
 
     c->pixels++;
     if (listened) {
@@ -634,6 +670,7 @@ FLATTEN int pt_raster_draw(pt_vec2 p0, pt_vec2 p1, int w, int h, pt_raster_image
     else { c.fb.w = im->W; c.fb.h = im->H; c.fb.rgb = NULL; }
     c.x_ul = im->x_ul;
     c.y_ul = im->y_ul;
+    c.wrap = im->wrap;
     c.npix = (int64_t)c.fb.w * c.fb.h;
     c.pixels = 0;
     c.tell = NULL;

@@ -186,12 +186,33 @@ typedef void pt_raster_drawn(void *ud, const pt_fb_pixel *px, size_t n);
 
 #define PT_RASTER_RUN 64
 
+/* ===== a viewport pixel into the pixel array ===== */
+
+/* Viewport pixel (x_vp, y_vp) into *px: the framebuffer stage
+** (pt_viewport2fb, corner (x_ul, y_ul)) gives px->x_fb, y_fb, the index
+** stage (pt_fb2index, a W x H framebuffer) px->idx, -1 for none; px->paint
+** is left alone.  With wrap (the viewport sticks out of the framebuffer:
+** pt_scene_vp_inside() 0), as the course's FrameBuffer.setPixelFB writes
+** pixel_buffer[y_fb*W + x_fb] without testing x_fb against the width: a
+** pixel the index stage leaves out is asked again as the pixel that index
+** names, (x_fb mod W, y_fb + floor(x_fb / W)) -- an x_fb past the width
+** lands in the next row, one before 0 in the row above -- and idx is -1
+** only when that lies outside the array too (the course drops it and prints
+** "FrameBuffer: Bad pixel coordinate (x_fb, y_fb) [w=W, h=H]").  x_fb and
+** y_fb stay the framebuffer stage's.  Returns px->idx.  This function
+** can't fail. */
+int64_t pt_raster_fb_pixel(int64_t x_vp, int64_t y_vp, int x_ul, int y_ul, int W, int H,
+                           int wrap, pt_fb_pixel *px);
+
 /* What the classic camera draws into (pt_raster_draw): an image, a listener
 ** of the pixels, or both. */
 typedef struct pt_raster_image {
     pt_fb *fb;                   /* the framebuffer (W x H), or NULL: no image */
     int W, H;                    /* the framebuffer's size */
     int x_ul, y_ul;              /* the viewport's upper-left corner in it */
+    int wrap;                    /* 1: the viewport sticks out of it: pixels go
+                                 ** where the course's index puts them
+                                 ** (pt_raster_fb_pixel) */
     pt_raster_colors col;        /* the segment's colours and switches */
     uint64_t pixels;             /* pixels drawn (inside the viewport), added to */
     pt_raster_drawn *pixel;      /* told of the pixels drawn, or NULL */
@@ -201,7 +222,7 @@ typedef struct pt_raster_image {
 /* pt_raster_segment() for the classic camera: each step's pixel from
 ** pt_pixel2viewport(), each pixel inside through pt_viewport2fb() and
 ** pt_fb2index() into im->fb (unless the stages put it outside the pixel
-** array) and to im->pixel, counted in im->pixels; runs of clipped steps
+** array; with im->wrap as pt_raster_fb_pixel() puts it) and to im->pixel, counted in im->pixels; runs of clipped steps
 ** still go to out->clip (out->pixel is not used).  The same pixels, with the
 ** three stages inlined into the loop, each in the course's colour of its
 ** step (im->col: a segment of one colour without anti-aliasing computes it

@@ -664,7 +664,10 @@ static int do_background(parser *ps, source *src, const token *dir, cursor *args
                      ps->s->background);
 }
 
-/* viewport X Y W H.  Whether it fits in the framebuffer is checked once the
+/* viewport X Y W H.  X and Y may put the viewport partly or wholly outside
+** the framebuffer, as the course's setViewport allows: -PT_MAX_SIZE ..
+** PT_MAX_SIZE, so that y_fb * W + x_fb of any pixel of it stays within an int.
+** Whether the matrix camera's fits in the framebuffer is checked once the
 ** whole file is read (finish_viewport), as `framebuffer` may come later. */
 static int do_viewport(parser *ps, source *src, const token *dir, cursor *args)
 {
@@ -673,8 +676,8 @@ static int do_viewport(parser *ps, source *src, const token *dir, cursor *args)
 
     if (pt_sc_once(ps, src, dir, &ps->vp_line) < 0
         || pt_sc_take_args(ps, src, dir, args, a, 4, 4, "integers", NULL) < 0
-        || pt_sc_int(ps, src, &a[0], "viewport x", 0, PT_MAX_SIZE - 1, &s->vp_x) < 0
-        || pt_sc_int(ps, src, &a[1], "viewport y", 0, PT_MAX_SIZE - 1, &s->vp_y) < 0
+        || pt_sc_int(ps, src, &a[0], "viewport x", -PT_MAX_SIZE, PT_MAX_SIZE, &s->vp_x) < 0
+        || pt_sc_int(ps, src, &a[1], "viewport y", -PT_MAX_SIZE, PT_MAX_SIZE, &s->vp_y) < 0
         || pt_sc_int(ps, src, &a[2], "viewport width", 1, PT_MAX_SIZE, &s->vp_w) < 0
         || pt_sc_int(ps, src, &a[3], "viewport height", 1, PT_MAX_SIZE, &s->vp_h) < 0)
         return -1;
@@ -1354,9 +1357,12 @@ static int parse_source(parser *ps, source *src)
 
 /* ===== checks once the whole scene is read ===== */
 
-/* Fill in the default viewport (the whole framebuffer), or check that the
-** given one fits, now that the framebuffer size is final.  The sums are at
-** most 2 * PT_MAX_SIZE, so they cannot overflow. */
+/* Fill in the default viewport (the whole framebuffer), or, for the matrix
+** camera, check that the given one fits, now that the framebuffer size and
+** the camera are final: the course's renderers (the classic camera is
+** renderer 4) draw a viewport that sticks out as the course's framebuffer
+** does (docs/scene-format.md), the matrix camera has no such rule.  The
+** sums are at most 2 * PT_MAX_SIZE in size, so they cannot overflow. */
 static int finish_viewport(parser *ps, const char *name)
 {
     pt_scene *s = ps->s;
@@ -1367,9 +1373,10 @@ static int finish_viewport(parser *ps, const char *name)
         s->vp_h = s->fb_h;
         return 0;
     }
-    if (s->vp_x + s->vp_w > s->fb_w || s->vp_y + s->vp_h > s->fb_h)
+    if (s->pipe == PT_PIPE_MATRIX && !pt_scene_vp_inside(s))
         return pt_sc_fail_at(ps->err, ps->errlen, name, ps->vp_line, ps->vp_col,
-                       "viewport %d %d %d %d does not fit in the %dx%d framebuffer",
+                       "viewport %d %d %d %d does not fit in the %dx%d framebuffer "
+                       "(the matrix camera draws only into a viewport inside it)",
                        s->vp_x, s->vp_y, s->vp_w, s->vp_h, s->fb_w, s->fb_h);
     return 0;
 }
@@ -1651,6 +1658,12 @@ int pt_scene_parse(pt_scene *s, const char *name, const char *text, size_t len,
         name = "<builtin>";
     init_source(&src, name, text, len, 0, 0);
     return parse_scene(s, name, 0, &src, err, errlen);
+}
+
+int pt_scene_vp_inside(const pt_scene *s)
+{
+    return s->vp_x >= 0 && s->vp_y >= 0 && s->vp_x + s->vp_w <= s->fb_w &&
+           s->vp_y + s->vp_h <= s->fb_h;
 }
 
 void pt_scene_free(pt_scene *s)

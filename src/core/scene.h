@@ -7,8 +7,10 @@
 ** reports the first problem as "FILE:LINE:COL: error: MESSAGE".
 **
 ** Invariants of a loaded scene:
-**   1 <= fb_w, fb_h <= PT_MAX_SIZE;  the viewport lies inside the framebuffer and
-**   has size >= 1;  every segment's a and b are < the model's nv;  model names are
+**   1 <= fb_w, fb_h <= PT_MAX_SIZE;  1 <= vp_w, vp_h <= PT_MAX_SIZE and
+**   -PT_MAX_SIZE <= vp_x, vp_y <= PT_MAX_SIZE: the viewport may stick out of
+**   the framebuffer (the course's renderers draw it so), but with the matrix
+**   camera it lies inside;  every segment's a and b are < the model's nv;  model names are
 **   unique, non-empty, valid UTF-8 with no control characters;  every coordinate
 **   is finite;  with matrix set, pt_lookat() and pt_perspective() accept the
 **   camera's parameters.
@@ -123,6 +125,10 @@ int pt_scene_read(pt_scene *s, FILE *f, const char *name, char *err, size_t errl
 ** relative to the current directory. */
 int pt_scene_parse(pt_scene *s, const char *name, const char *text, size_t len,
                    char *err, size_t errlen);
+
+/* 1 when the viewport of s lies inside its framebuffer, else 0.  This
+** function can't fail. */
+int pt_scene_vp_inside(const pt_scene *s);
 
 /* Free what *s owns and leave it empty.  This function can't fail. */
 void pt_scene_free(pt_scene *s);

@@ -812,6 +812,72 @@ def fam_shape(rng, r, name, k):
     return sc
 
 
+VPOUT = ["left", "right", "top", "bottom", "ul", "ur", "ll", "lr", "out-left", "out-right",
+         "out-above", "out-below", "wide", "tall", "huge", "far"]
+
+
+def fam_vpout(rng, r, name, k):
+    """A viewport that sticks out of the framebuffer (setViewport checks
+    nothing): off one side or corner, wholly outside, wider or taller than
+    the framebuffer (rows wrap), far off; negative origins."""
+    kind = VPOUT[k % len(VPOUT)]
+    w, h = rng.choice([(16, 12), (20, 16), (24, 18), (12, 20)])
+    sc = Scene(r, name, w, h)
+    vw, vh = rng.randint(w // 2, w), rng.randint(h // 2, h)
+    vx, vy = rng.randint(0, w - vw), rng.randint(0, h - vh)
+    if kind in ("left", "ul", "ll"):
+        vx = -rng.randint(1, vw - 1)
+    if kind in ("right", "ur", "lr"):
+        vx = w - vw + rng.randint(1, vw - 1)
+    if kind in ("top", "ul", "ur"):
+        vy = -rng.randint(1, vh - 1)
+    if kind in ("bottom", "ll", "lr"):
+        vy = h - vh + rng.randint(1, vh - 1)
+    if kind == "out-left":
+        vx = -vw - rng.randint(0, 4)
+    if kind == "out-right":
+        vx = w + rng.randint(0, 4)
+    if kind == "out-above":
+        vy = -vh - rng.randint(0, 3)
+    if kind == "out-below":
+        vy = h + rng.randint(0, 3)
+    if kind in ("wide", "huge"):
+        vw = w + rng.randint(1, w)
+        vx = rng.randint(-w // 2, 2)
+    if kind in ("tall", "huge"):
+        vh = h + rng.randint(1, h // 2)
+        vy = rng.randint(-h // 2, 1)
+    if kind == "far":
+        vx, vy = -3 * w - rng.randint(0, 9), rng.randint(-2 * h, 2 * h)
+    if rng.random() < 0.5:
+        sc.add("background %d %d %d" % tuple(rng.randrange(0, 256) for _ in range(3)))
+    sc.add("viewport %d %d %d %d" % (vx, vy, vw, vh))
+    if rng.random() < 0.7:
+        sc.add("viewport-background %d %d %d" % tuple(rng.randrange(0, 256) for _ in range(3)))
+    persp = rng.random() < 0.7
+    sc.add(camera_line(rng, r, "persp" if persp else "ortho"))
+    switches(sc, rng, aa=k % 3 == 1)
+    verts, colors, prims = cube(rng, 1.0 if persp else 0.6, floats=0.2)
+    emit_model(sc, "cube", verts, colors, prims,
+               translate=place(sc, rng, verts, -rng.uniform(2.5, 4.0) if persp else -2.0, 0.6))
+    if k % 2 == 0:              # points among segments, inside the viewport
+        verts, colors, prims = [], [], []
+        for j in range(rng.randint(3, 6)):
+            if r == 4:          # mapped twice to the pixel plane: aim at a pixel
+                px, py = rng.randint(1, vw), rng.randint(1, vh)
+                x1 = (px - 0.5) * 2.001 / vw - 1
+                y1 = (py - 0.5) * 2.001 / vh - 1
+                u, v = (x1 - 0.5) * 2.001 / vw - 1, (y1 - 0.5) * 2.001 / vh - 1
+            else:
+                u, v = rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)
+            verts.append((u, v, -1.0))
+            colors.append(rand_color(rng, 0.3))
+            prims.append(("p", j, j, rng.choice([0, 1, 2])))
+        prims.insert(rng.randrange(len(prims)), ("s", 0, len(verts) - 1))
+        emit_model(sc, "pts", verts, colors, prims)
+    return sc
+
+
 ALL, R79, R9 = (4, 7, 9), (7, 9), (9,)
 FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("basic", ALL, 12, lambda g, r, n, k: fam_basic(g, r, n)),
@@ -828,6 +894,7 @@ FAMILIES = [  # (family, renderers, count, function(rng, r, name, k))
     ("asym", R79, 14, lambda g, r, n, k: fam_asym(g, r, n)),
     ("fov", R79, 12, lambda g, r, n, k: fam_fov(g, r, n)),
     ("vp", ALL, 14, lambda g, r, n, k: fam_vp(g, r, n)),
+    ("vpout", ALL, 16, fam_vpout),
     ("color", ALL, 15, fam_color),
     ("aa", ALL, 12, lambda g, r, n, k: fam_aa(g, r, n)),
     ("gamma", ALL, 8, fam_gamma),
