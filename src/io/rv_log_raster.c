@@ -70,7 +70,37 @@ static char *slopes_at(char *o, double m, const char *so, const double mc[3],
     return pair_at(o, "x1_vp, y1_vp", x1_vp, y1_vp);
 }
 
+/* x in decimal at o, with its sign. */
+static char *dec_at(char *o, long long x)
+{
+    char d[24];
+    unsigned long long u = x < 0 ? 0ULL - (unsigned long long)x : (unsigned long long)x;
+    int n = 0;
+
+    do { d[n++] = (char)('0' + u % 10); u /= 10; } while (u);
+    if (x < 0) *o++ = '-';
+    while (n) *o++ = d[--n];
+    return o;
+}
+
+/* "FrameBuffer: Bad pixel coordinate (x, y) [w=W, h=H]\n": what the course's
+** setPixelFB prints for an index outside the pixel array. */
+static char *bad_at(char *o, long long x, long long y, int W, int H)
+{
+    o = dec_at(str_at(o, "FrameBuffer: Bad pixel coordinate ("), x);
+    o = dec_at(str_at(o, ", "), y);
+    o = dec_at(str_at(o, ") [w="), W);
+    o = dec_at(str_at(o, ", h="), H);
+    return str_at(o, "]\n");
+}
+
 /* ===== renderer 4's: to a FILE ===== */
+
+void pt_klog_bad(FILE *f, long long x_fb, long long y_fb, int W, int H)
+{
+    char buf[KLOG_ROOM];
+    fwrite(buf, 1, (size_t)(bad_at(buf, x_fb, y_fb, W, H) - buf), f);
+}
 
 void pt_klog_pair(FILE *f, const char *label, double a, double b)
 {
@@ -176,12 +206,7 @@ static void on_pixel(void *ud, const pt_rv_pixel *px)
 static void on_bad(void *ud, int x, int y, int W, int H)
 {
     pt_trace *t = ud;
-    char *o = int_at(t, str_at(at(t), "FrameBuffer: Bad pixel coordinate ("), x, 0);
-
-    o = int_at(t, str_at(o, ", "), y, 0);
-    o = int_at(t, str_at(o, ") [w="), W, 0);
-    o = int_at(t, str_at(o, ", h="), H, 0);
-    end_at(t, str_at(o, "]\n"));
+    end_at(t, bad_at(at(t), x, y, W, H));
 }
 
 void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, struct pt_trace *t, int debug)

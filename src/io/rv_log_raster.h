@@ -33,9 +33,13 @@ void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, struct pt_trace *t, int debug);
 **   pt_klog_slopes  "Slope m    = M" (with " (SO 1/m = X)" when stepped in y;
 **                   SO: renderer 4 "so", renderers 7 and 9 "transposed, so"),
 **                   "Slope mRed/mGrn/mBlu = ..." by Double.toString, and the
-**                   ends' "(x0_vp, y0_vp)", "(x1_vp, y1_vp)" */
+**                   ends' "(x0_vp, y0_vp)", "(x1_vp, y1_vp)"
+**   pt_klog_bad     "FrameBuffer: Bad pixel coordinate (x, y) [w=W, h=H]" (the
+**                   framebuffer's own line, which every renderer prints
+**                   alike; renderers 7 and 9's "bad" above writes it too) */
 void pt_klog_pair(FILE *f, const char *label, double a, double b);
 void pt_klog_rgb(FILE *f, float r, float g, float b);
 void pt_klog_slopes(FILE *f, double m, const char *so, const double mc[3],
                     double x0_vp, double y0_vp, double x1_vp, double y1_vp);
+void pt_klog_bad(FILE *f, long long x_fb, long long y_fb, int W, int H);
 #endif

@@ -15,6 +15,12 @@
 ** step's pixel from the viewport stage (pt_pixel2viewport), as src/core/raster.c
 ** takes it.  tests/formats/kraft.sh ties the two: the pixels of the log are the
 ** pixels pt_run() draws, for every reference scene.
+** A viewport that sticks out of the framebuffer adds the framebuffer's own
+** line "FrameBuffer: Bad pixel coordinate (x_fb, y_fb) [w=W, h=H]" for each
+** pixel written whose index y_fb*W + x_fb lies outside the pixel array
+** (pt_raster_fb_pixel), whatever the debug switches: first those of the
+** viewport's clearing, then each after its pixel's line (or where it would
+** be: after its primitive's "4. Rasterize" lines).
 */
 #include <math.h>
 #include <stdint.h>
@@ -189,12 +195,19 @@ static void put_setup(FILE *f, const pt_raster_setup *su)
 typedef struct kraft_run {
     FILE *f;
     const pt_scene *s;
+    int lines;                   /* 1: the log's lines (scene or position
+                                 ** debug); 0: the warnings and Bad pixel
+                                 ** lines alone */
     int pixels;                  /* 1: the rasterizer's lines too */
+    int wrap;                    /* 1: the viewport sticks out of the
+                                 ** framebuffer: Bad pixel lines can come */
     size_t k;                    /* the model being logged */
     pt_journey *js;              /* js[v - 1]: its vertex v's journey */
     size_t cap;                  /* room in js */
     int head;                    /* 1: put_model_head() wrote its lines */
     size_t next_pt;              /* its points logged so far */
+    size_t next_seg;             /* its segments whose "4. Rasterize" lines
+                                 ** are written */
     int ymajor, degenerate;      /* of the segment being stepped */
     int failed;                  /* out of memory */
 } kraft_run;
@@ -209,7 +222,7 @@ static const char *position_of(const pt_model *m)
 ** translation, the model, the course's warnings, every vertex stage by
 ** stage (journeys js), the primitives in file order and the colours.  A
 ** hidden model: its position's lines and the hidden line. */
-static void put_model_head(FILE *f, const pt_model *m, const pt_journey *js)
+static void put_model_head(FILE *f, const pt_model *m, const pt_journey *js, int lines)
 {
     static const pt_stage logged[4] = {PT_STAGE_MODEL, PT_STAGE_CAMERA, PT_STAGE_IMAGE,
                                        PT_STAGE_PIXEL};
@@ -218,6 +231,10 @@ static void put_model_head(FILE *f, const pt_model *m, const pt_journey *js)
     size_t v, k, q, nc;
     int i;
 
+    if (!lines) {                       /* the warnings alone */
+        if (!m->hidden_model) put_warnings(f, m, js);
+        return;
+    }
     fprintf(f, "==== Render position: %s ====\n", position_of(m));
     fputs("---- Translation vector = [x,y,z] = [", f);
     put_3(f, m->translate.x, m->translate.y, m->translate.z);
@@ -280,20 +297,38 @@ static void put_seg_head(FILE *f, const pt_model *m, const pt_journey *js, size_
 typedef struct dot_log {
     FILE *f;
     const pt_scene *s;
+    int pixels;                  /* 1: its pixel lines (else the Bad pixel
+                                 ** lines alone) */
+    int wrap;                    /* 1: the viewport sticks out (kraft_run) */
     float c[3];                  /* its colour, gamma-encoded when on */
 } dot_log;
+
+/* After the line of a pixel written at viewport pixel (x_vp, y_vp): the
+** framebuffer's Bad pixel line when the course's index of it lies outside
+** the pixel array. */
+static void put_bad(FILE *f, const pt_scene *s, int64_t x_vp, int64_t y_vp)
+{
+    pt_fb_pixel px;
+
+    if (pt_raster_fb_pixel(x_vp, y_vp, s->vp_x, s->vp_y, s->fb_w, s->fb_h, 1, &px) < 0)
+        pt_klog_bad(f, (long long)px.x_fb, (long long)px.y_fb, s->fb_w, s->fb_h);
+}
 
 static void on_dot(void *ud, const pt_raster_dot *dt)
 {
     dot_log *dl = ud;
     char one[PT_JNUM_LEN], two[PT_JNUM_LEN];
 
-    pt_jnum_f(one, (double)dt->cx, 9, 4, 0);
-    pt_jnum_f(two, (double)dt->cy, 9, 4, 0);
-    put_where(dl->f, dl->s, dt->inside, one, two);
-    fprintf(dl->f, "(x_vp=%4lld, y_vp=%4lld)  ", (long long)dt->vp.x, (long long)dt->vp.y);
-    put_rgb(dl->f, dl->c);
-    fputc('\n', dl->f);
+    if (dl->pixels) {
+        pt_jnum_f(one, (double)dt->cx, 9, 4, 0);
+        pt_jnum_f(two, (double)dt->cy, 9, 4, 0);
+        put_where(dl->f, dl->s, dt->inside, one, two);
+        fprintf(dl->f, "(x_vp=%4lld, y_vp=%4lld)  ", (long long)dt->vp.x,
+                (long long)dt->vp.y);
+        put_rgb(dl->f, dl->c);
+        fputc('\n', dl->f);
+    }
+    if (dl->wrap && dt->inside) put_bad(dl->f, dl->s, dt->vp.x, dt->vp.y);
 }
 
 /* "4. Rasterize" of point q of model m, and with pixels its rasterizer's
@@ -307,18 +342,26 @@ static void put_point_log(const kraft_run *kr, const pt_model *m, size_t q)
     pt_vec2 pp;
     int i;
 
-    put_point(kr->f, "4. Rasterize", pt);
-    put_end(kr->f, kr->js, pt->v);
-    put_cend(kr->f, m, pt->c);
-    if (!kr->pixels) return;
+    if (kr->lines) {
+        put_point(kr->f, "4. Rasterize", pt);
+        put_end(kr->f, kr->js, pt->v);
+        put_cend(kr->f, m, pt->c);
+    }
+    if (!kr->pixels && !kr->wrap) return;
     dl.f = kr->f;
     dl.s = s;
+    dl.pixels = kr->pixels;
+    dl.wrap = kr->wrap;
     for (i = 0; i < 3; i++) {
         float c = pt_model_color(m, pt->c, i);
         dl.c[i] = s->gamma ? pt_gamma(c) : c;
     }
     pp.x = kr->js[pt->v].rec[PT_STAGE_PIXEL].x;
     pp.y = kr->js[pt->v].rec[PT_STAGE_PIXEL].y;
+    if (!kr->pixels) {                  /* the Bad pixel lines of those inside */
+        pt_raster_point(pp, pt->radius, s->vp_w, s->vp_h, 0, 0, &dt, on_dot, &dl);
+        return;
+    }
     if (pt_raster_point(pp, -1, s->vp_w, s->vp_h, 1, 0, &dt, on_dot, &dl) < 0) return;
     pt_klog_pair(kr->f, "x_pp, y_pp", dt.x_pp, dt.y_pp);
     pt_raster_point(pp, pt->radius, s->vp_w, s->vp_h, 1, PT_KRAFT_MAX_STEPS, &dt, on_dot,
@@ -334,27 +377,35 @@ static void points_upto(kraft_run *kr, size_t upto)
         put_point_log(kr, m, kr->next_pt);
 }
 
+/* Without the rasterizer's lines: the "4. Rasterize" lines of model kr->k's
+** segments up to the first n, each after the points before it. */
+static void seg_heads_upto(kraft_run *kr, size_t n)
+{
+    const pt_model *m = &kr->s->models[kr->k];
+
+    for (; kr->next_seg < n; kr->next_seg++) {
+        points_upto(kr, kr->next_seg);
+        if (kr->lines) put_seg_head(kr->f, m, kr->js, kr->next_seg);
+    }
+}
+
 /* Close model kr->k: its head if no segment wrote it, the primitives not yet
 ** logged, its last lines; a hidden position's one line. */
 static void model_end(kraft_run *kr)
 {
     const pt_model *m = &kr->s->models[kr->k];
-    size_t q;
 
     if (m->hidden_position) {
-        fprintf(kr->f, "==== Hidden position: %s ====\n", position_of(m));
+        if (kr->lines) fprintf(kr->f, "==== Hidden position: %s ====\n", position_of(m));
         return;
     }
-    if (!kr->head) put_model_head(kr->f, m, kr->js);       /* no segment drawn */
+    if (!kr->head) put_model_head(kr->f, m, kr->js, kr->lines);   /* no segment drawn */
     if (!m->hidden_model) {
-        for (q = 0; !kr->pixels && q < m->nseg; q++) {
-            points_upto(kr, q);
-            put_seg_head(kr->f, m, kr->js, q);
-        }
+        if (!kr->pixels) seg_heads_upto(kr, m->nseg);
         points_upto(kr, m->nseg);
-        fprintf(kr->f, "====== End model: %s ======\n", m->name);
+        if (kr->lines) fprintf(kr->f, "====== End model: %s ======\n", m->name);
     }
-    fprintf(kr->f, "==== End position: %s ====\n", position_of(m));
+    if (kr->lines) fprintf(kr->f, "==== End position: %s ====\n", position_of(m));
 }
 
 /* Begin model k: close those before it, make room for its journeys. */
@@ -367,6 +418,7 @@ static void model_begin(kraft_run *kr, size_t k)
     kr->k = k;
     kr->head = 0;
     kr->next_pt = 0;
+    kr->next_seg = 0;
     if (need > kr->cap) {
         pt_journey *js = realloc(kr->js, need * sizeof *js);
         if (!js) { kr->failed = 1; kr->cap = 0; free(kr->js); kr->js = NULL; return; }
@@ -397,10 +449,11 @@ static void on_setup(void *ud, const pt_model *m, uint64_t seg, const pt_raster_
     kraft_run *kr = ud;
 
     if (!kraft_at(kr, m)) return;
-    if (!kr->head) put_model_head(kr->f, m, kr->js);   /* every journey came first */
+    if (!kr->head) put_model_head(kr->f, m, kr->js, 1);   /* every journey came first */
     kr->head = 1;
     points_upto(kr, seg - 1);
     put_seg_head(kr->f, m, kr->js, seg - 1);
+    kr->next_seg = seg;
     put_setup(kr->f, su);
     kr->ymajor = su->ymajor;
     kr->degenerate = su->kind == PT_RASTER_DEGENERATE;
@@ -426,9 +479,32 @@ static void on_step(void *ud, const pt_model *m, uint64_t seg, const pt_raster_s
     put_step(kr->f, kr->s, one, two, kr->ymajor, st);
 }
 
+/* The pixels of segment seg drawn (the viewport sticks out): a Bad pixel
+** line for each whose index lies outside the pixel array, after its step's
+** line, or without the rasterizer's lines after the segment's "4. Rasterize"
+** lines (those before it written first). */
+static void on_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
+                      size_t n)
+{
+    kraft_run *kr = ud;
+    size_t i;
+
+    if (!kraft_at(kr, m)) return;
+    if (!kr->pixels) {
+        if (!kr->head) put_model_head(kr->f, m, kr->js, kr->lines);
+        kr->head = 1;
+        seg_heads_upto(kr, (size_t)seg);
+    }
+    for (i = 0; i < n; i++)
+        if (px[i].idx < 0)
+            pt_klog_bad(kr->f, (long long)px[i].x_fb, (long long)px[i].y_fb, kr->s->fb_w,
+                        kr->s->fb_h);
+}
+
 /* Log every model of s into f, from one run.  Returns 0, or -1 with a
 ** message. */
-static int kraft_models(FILE *f, const pt_scene *s, int pixels, char *err, size_t errlen)
+static int kraft_models(FILE *f, const pt_scene *s, int lines, int pixels, char *err,
+                        size_t errlen)
 {
     kraft_run kr;
     pt_options o;
@@ -437,17 +513,19 @@ static int kraft_models(FILE *f, const pt_scene *s, int pixels, char *err, size_
 
     if (s->nmodels == 0) return 0;
     memset(&kr, 0, sizeof kr);
-    kr.f = f; kr.s = s; kr.pixels = pixels;
+    kr.f = f; kr.s = s; kr.lines = lines; kr.pixels = pixels;
+    kr.wrap = !pt_scene_vp_inside(s);
     kr.cap = s->models[0].nv ? s->models[0].nv : 1;
     kr.js = calloc(kr.cap, sizeof *kr.js);
     pt_options_default(&o);
     o.every_vertex = 1;
-    o.rasterize = pixels;
-    o.trace_raster = pixels;
+    o.rasterize = pixels || kr.wrap;
+    o.trace_raster = pixels || kr.wrap;
     o.model_by_model = 1;
     memset(&l, 0, sizeof l);
     l.journey = on_journey;
     if (pixels) { l.setup = on_setup; l.step = on_step; }
+    if (kr.wrap) l.pixels = on_pixels;
     l.ud = &kr;
     rc = kr.js ? pt_run_plain(s, &o, &l) : -1;
     if (rc == 0 && kraft_at(&kr, &s->models[s->nmodels - 1])) model_end(&kr);
@@ -481,6 +559,17 @@ static int kraft_warnings(FILE *f, const pt_scene *s, char *err, size_t errlen)
     return 0;
 }
 
+/* The Bad pixel lines of the viewport's clearing (Viewport.clearVP: every
+** pixel of the viewport, row by row, through setPixelVP), which the course's
+** program does before it renders. */
+static void clear_bad(FILE *f, const pt_scene *s)
+{
+    int x, y;
+
+    for (y = 0; y < s->vp_h; y++)
+        for (x = 0; x < s->vp_w; x++) put_bad(f, s, x, y);
+}
+
 int pt_kraft_write(FILE *f, const pt_scene *s, unsigned dbg, char *err, size_t errlen)
 {
     int shown = (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION)) != 0;   /* logMessage's test */
@@ -494,13 +583,17 @@ int pt_kraft_write(FILE *f, const pt_scene *s, unsigned dbg, char *err, size_t e
         return -1;
     }
     if (pixels && pt_kraft_check(s, err, errlen) != 0) return -1;   /* nothing written */
+    if (!pt_scene_vp_inside(s)) {       /* vp.clearVP() before the render */
+        clear_bad(f, s);
+        if (!shown) return kraft_models(f, s, 0, 0, err, errlen);
+    }
     if (!shown) return kraft_warnings(f, s, err, errlen);
     if (dbg & PT_KDBG_SCENE) {   /* debugPosition is still false: the scene's alone */
         fprintf(f, "\n== Begin Rendering of Scene: %s ==\n-- Current Camera:\nCamera: \n",
                 s->scene_name ? s->scene_name : "");
         fprintf(f, "perspective = %s\n", s->perspective ? "true" : "false");
     }
-    if (kraft_models(f, s, pixels, err, errlen) != 0) return -1;
+    if (kraft_models(f, s, 1, pixels, err, errlen) != 0) return -1;
     if ((dbg & PT_KDBG_SCENE) || s->nmodels > 0)    /* the last position's flag */
         fputs("== End Rendering of Scene ==\n", f);
     return 0;

@@ -207,6 +207,7 @@ pt_tkind pt_tread_kind(const char *buf, size_t len)
     static const char text[] = "# pipetrace trace";
     static const char csv[] = "model,v,stage,";
     static const char kraft[] = "== Begin Rendering of Scene:";
+    static const char bad[] = "FrameBuffer: Bad pixel coordinate (";
     size_t k = 0;
 
     static const char png[] = "\211PNG\r\n\032\n";
@@ -221,6 +222,12 @@ pt_tkind pt_tread_kind(const char *buf, size_t len)
     if (len >= 1 && buf[0] == '{') return PT_TK_JSONL;
     if (len >= sizeof text - 1 && memcmp(buf, text, sizeof text - 1) == 0) return PT_TK_TEXT;
     if (len >= sizeof csv - 1 && memcmp(buf, csv, sizeof csv - 1) == 0) return PT_TK_CSV;
+    for (;;) {                              /* the viewport's clearing's Bad pixel lines */
+        const char *nl;
+        if (len - k < sizeof bad - 1 || memcmp(buf + k, bad, sizeof bad - 1) != 0) break;
+        if (!(nl = memchr(buf + k, '\n', len - k))) break;
+        k = (size_t)(nl + 1 - buf);
+    }
     while (k < len && (buf[k] == '\n' || buf[k] == '\r')) k++;    /* its empty line */
     if (len - k >= sizeof kraft - 1 && memcmp(buf + k, kraft, sizeof kraft - 1) == 0)
         return PT_TK_KRAFT;

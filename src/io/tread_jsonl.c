@@ -430,6 +430,19 @@ static int jsize(pt_treader *r, const jfield *f, int nf, const char *key, int *x
     return 0;
 }
 
+/* The viewport's corner x or y: an int of either sign (it may lie outside
+** the framebuffer). */
+static int jcorner(pt_treader *r, const jfield *f, int nf, const char *key, int *x)
+{
+    const jval *v = need(r, f, nf, key, "header");
+    int64_t n;
+
+    if (!v || jint(r, v, &n, 0, NULL) != 0) return -1;
+    if (n < -1000000000 || n > 1000000000) return pt_tr_fail(r, v->p, "corner out of range");
+    *x = (int)n;
+    return 0;
+}
+
 static int j_header(pt_treader *r, const jfield *f, int nf)
 {
     pt_thdr *h = &r->t->hdr;
@@ -457,7 +470,7 @@ static int j_header(pt_treader *r, const jfield *f, int nf)
         return -1;
     if (!(v = need(r, f, nf, "viewport", "header"))) return -1;
     if (v->kind != J_OBJ) return pt_tr_fail(r, v->p, "expected {\"x\":..,\"y\":..,\"w\":..,\"h\":..}");
-    if (j_fields(r, v, g, &ng) || jsize(r, g, ng, "x", &h->vp_x) || jsize(r, g, ng, "y", &h->vp_y) ||
+    if (j_fields(r, v, g, &ng) || jcorner(r, g, ng, "x", &h->vp_x) || jcorner(r, g, ng, "y", &h->vp_y) ||
         jsize(r, g, ng, "w", &h->vp_w) || jsize(r, g, ng, "h", &h->vp_h))
         return -1;
     if (!(v = need(r, f, nf, "camera", "header"))) return -1;

@@ -185,13 +185,21 @@ static int take_pixel(pt_treader *r, kstate *k, pt_pix at, int clipped)
         return 0;
     } else {
         struct pt_tpix px;
-        pt_pix fb;
+        pt_fb_pixel fb;
+        int wrap;
         if (flush_run(r, k)) return -1;
         memset(&px, 0, sizeof px);
-        fb = pt_viewport2fb(at, k->vp_x, k->vp_y, NULL);
-        px.x = fb.x;
-        px.y = fb.y;
-        px.i = k->fb_w >= 1 && k->fb_h >= 1 ? pt_fb2index(fb, k->fb_w, k->fb_h, NULL) : -1;
+        wrap = k->vp_x < 0 || k->vp_y < 0 || (int64_t)k->vp_x + k->vp_w > k->fb_w ||
+               (int64_t)k->vp_y + k->vp_h > k->fb_h;   /* it sticks out: the course's index */
+        if (k->fb_w >= 1 && k->fb_h >= 1)
+            px.i = pt_raster_fb_pixel(at.x, at.y, k->vp_x, k->vp_y, k->fb_w, k->fb_h, wrap, &fb);
+        else {
+            pt_pix f = pt_viewport2fb(at, k->vp_x, k->vp_y, NULL);
+            fb.x_fb = f.x; fb.y_fb = f.y;
+            px.i = -1;
+        }
+        px.x = fb.x_fb;
+        px.y = fb.y_fb;
         px.seg = k->seg;
         px.model = k->model;
         px.line = pt_tr_line32(r);
@@ -250,8 +258,9 @@ static int pixel_line(pt_treader *r, kstate *k, cur *c, int clipped)
     if (!lit(c, "]") || !lit(c, "(x_pp=") || num(r, c, &d) || !lit(c, ", y_pp=") ||
         num(r, c, &d) || !lit(c, ")"))
         return pt_tr_fail(r, c->p, "expected the rest of a pixel line");
-    for (i = 0; i < 6; i++)
-        if (v[i] < 0 || v[i] > INT32_MAX) return pt_tr_fail(r, r->line, "size out of range");
+    for (i = 0; i < 6; i++)                 /* the viewport's corner: either sign */
+        if (v[i] < (i == 2 || i == 3 ? INT32_MIN : 0) || v[i] > INT32_MAX)
+            return pt_tr_fail(r, r->line, "size out of range");
     if (!k->have_fb) {
         k->have_fb = 1;
         k->fb_w = (int)v[0]; k->fb_h = (int)v[1];

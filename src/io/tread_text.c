@@ -308,7 +308,7 @@ static int text_header_line(pt_treader *r)
         if (end == s || end >= c.e || *end != ',') return pt_tr_fail(r, s, "expected (x_ul, y_ul)");
         s = end + 1;
         y = strtoll(s, &end, 10);
-        if (end == s || end >= c.e || *end != ')' || x < 0 || y < 0 ||
+        if (end == s || end >= c.e || *end != ')' || x < -1000000000 || y < -1000000000 ||
             x > 1000000000 || y > 1000000000)
             return pt_tr_fail(r, s, "expected (x_ul, y_ul)");
         h->vp_x = (int)x;
