@@ -152,4 +152,26 @@ done
 check "kraft-8.1 $cuts cuts of a pixel log: none crashes" test "$crashed" = 0
 check "kraft-8.2 ... each is an error (exit 2)" test "$accepted" = 0
 
+# ---- kraft-9: a viewport that sticks out of the framebuffer (left and below):
+# the framebuffer's "Bad pixel coordinate" lines, as the course's jar printed
+# them (tests/data/vpout/README.md), whatever the debug switches: the
+# clearing's first, then each after its pixel's line
+vd=tests/data/vpout
+for dbg in none scene all; do
+    run "$vd/r4-bad.scene" --format kraft --kraft-debug $dbg
+    check "kraft-9.1 --kraft-debug $dbg: the course's log byte for byte" cmp -s "$tmp/out" "$vd/r4-bad.$dbg.log"
+done
+check "kraft-9.2 ... which has Bad pixel lines of the clearing and of the drawing" \
+    test "$(grep -c 'Bad pixel' "$vd/r4-bad.none.log")" -gt "$(awk '/Bad/ { n++ } /WARNING/ { exit } END { print n }' "$vd/r4-bad.none.log")"
+run "$vd/r4-bad.scene" --image "$tmp/bad.ppm"
+check "kraft-9.3 the image, rows wrapped, byte for byte" cmp -s "$tmp/bad.ppm" "$vd/r4-bad.ppm"
+run "$vd/r4-bad.scene"
+check "kraft-9.4 a dropped pixel's record says idx = -1, one per Bad pixel line of the drawing" \
+    test "$(grep -c ' pixel .*idx = -1$' "$tmp/out")" = "$(awk '/== Begin/ { b = 1 } b && /Bad pixel/' "$vd/r4-bad.all.log" | wc -l)"
+check "kraft-9.5 ... and a wrapped one its index y_fb * W + x_fb" grep -q 'x_fb = *-3  y_fb = *5  idx = 47$' "$tmp/out"
+"$exe" "$vd/r4-bad.scene" --format jsonl --trace "$tmp/bad.jsonl"
+run diff "$vd/r4-bad.all.log" "$tmp/bad.jsonl"
+check "kraft-9.6 diff reads the log (Bad pixel lines first) and agrees with the trace" \
+    grep -q "every stage both hold, and the same 16" "$tmp/out"
+
 report

@@ -423,7 +423,7 @@ static void test_numbers(void)
         "t.scene:2:11: error:", "out of range");
     bad("scene-2.27 color 1.0", "model m\ncolor 1.0 0 0\n",
         "t.scene:2:7: error:", "not an integer");
-    bad("scene-2.28 viewport x -1", "viewport -1 0 10 10\n",
+    bad("scene-2.28 viewport x -16385", "viewport -16385 0 10 10\n",
         "t.scene:1:10: error:", "out of range");
     bad("scene-2.29 viewport width 0", "viewport 0 0 0 10\n",
         "t.scene:1:14: error:", "out of range");
@@ -570,16 +570,57 @@ static void test_indices(void)
 
 static void test_viewport(void)
 {
-    bad("scene-3.48 viewport does not fit the default framebuffer",
-        "viewport 10 10 800 600\n",
-        "t.scene:1:1: error:", "viewport 10 10 800 600 does not fit in the 800x600 framebuffer");
-    bad("scene-3.49 viewport checked against a later framebuffer",
-        "model m\n  viewport 0 0 100 100\nv 0 0 0\nframebuffer 50 200\n",
-        "t.scene:2:3: error:", "does not fit in the 50x200 framebuffer");
-    bad("scene-3.50 viewport one pixel too tall", "framebuffer 40 60\nviewport 10 21 30 40\n",
-        "t.scene:2:1: error:", "does not fit");
-    bad("scene-3.51 viewport x beyond any framebuffer", "viewport 16384 0 1 1\n",
+    static const char lookat[] = "camera lookat 0 0 5 0 0 -1 0 1 0\n"
+                                 "projection perspective 60 auto 0.1 100\n";
+    char text[512];
+    pt_scene s;
+    int r;
+
+    /* the course's renderers draw a viewport that sticks out (setViewport
+    ** checks nothing): on any side, wholly outside, larger than the
+    ** framebuffer, negative corners down to -PT_MAX_SIZE */
+    r = parse(&s, "viewport 10 10 800 600\n");
+    PT_CHECK("scene-3.48 viewport sticking out of the default framebuffer: taken",
+             r == 0 && s.vp_x == 10 && s.vp_y == 10 && s.vp_w == 800 && s.vp_h == 600 &&
+             !pt_scene_vp_inside(&s));
+    pt_scene_free(&s);
+    r = parse(&s, "model m\n  viewport -5 -7 100 100\nv 0 0 0\nframebuffer 50 200\n");
+    PT_CHECK("scene-3.49 negative corner, a later framebuffer",
+             r == 0 && s.vp_x == -5 && s.vp_y == -7 && s.fb_w == 50 && !pt_scene_vp_inside(&s));
+    pt_scene_free(&s);
+    r = parse(&s, "renderer 7\nframebuffer 40 60\nviewport -16384 16384 16384 16384\n");
+    PT_CHECK("scene-3.50 renderer 7: wholly outside, at the limits",
+             r == 0 && s.vp_x == -16384 && s.vp_y == 16384 && s.vp_w == 16384);
+    pt_scene_free(&s);
+    r = parse(&s, "renderer 9\nframebuffer 40 60\nviewport 30 -2 40 70\n");
+    PT_CHECK("scene-3.51 renderer 9: wider and taller than the framebuffer",
+             r == 0 && s.vp_w == 40 && s.vp_h == 70);
+    pt_scene_free(&s);
+    r = parse(&s, "framebuffer 40 60\nviewport 10 20 30 40\n");
+    PT_CHECK("scene-3.52 a viewport that fits exactly is inside",
+             r == 0 && pt_scene_vp_inside(&s));
+    pt_scene_free(&s);
+    bad("scene-3.53 viewport x beyond the limit", "viewport 16385 0 1 1\n",
         "t.scene:1:10: error:", "out of range");
+    bad("scene-3.54 viewport y below the limit", "viewport 0 -16385 1 1\n",
+        "t.scene:1:12: error:", "out of range");
+    bad("scene-3.55 viewport height 0", "viewport -3 0 1 0\n",
+        "t.scene:1:17: error:", "out of range");
+    /* the matrix camera keeps the rule */
+    snprintf(text, sizeof text, "%sviewport 10 10 800 600\n", lookat);
+    bad("scene-3.56 matrix camera: a viewport sticking out is refused", text,
+        "t.scene:3:1: error:", "viewport 10 10 800 600 does not fit in the 800x600 framebuffer "
+        "(the matrix camera");
+    snprintf(text, sizeof text, "model m\n  viewport 0 0 100 100\nv 0 0 0\n%sframebuffer 50 200\n",
+             lookat);
+    bad("scene-3.57 ... checked against a later framebuffer", text,
+        "t.scene:2:3: error:", "does not fit in the 50x200 framebuffer");
+    snprintf(text, sizeof text, "%sframebuffer 40 60\nviewport -1 0 30 40\n", lookat);
+    bad("scene-3.58 ... a negative corner too", text, "t.scene:4:1: error:", "does not fit");
+    snprintf(text, sizeof text, "%sframebuffer 40 60\nviewport 10 20 30 40\n", lookat);
+    r = parse(&s, text);
+    PT_CHECK("scene-3.59 ... one inside is taken", r == 0 && pt_scene_vp_inside(&s));
+    pt_scene_free(&s);
 }
 
 /* An obj file of text that is no OBJ: the error is at its 1:1 and quotes
