@@ -618,7 +618,16 @@ static void next_framebuffer(pt_xt *t, const pt_journey *j, const pt_vrec *fb)
 
 static void next_index(pt_xt *t, const pt_journey *j, const pt_vrec *r)
 {
-    if (r->flags & PT_REC_NULL)
+    const pt_stage_params *p = &j->par;
+    int sticks_out = p->x_ul < 0 || p->y_ul < 0 || (int64_t)p->x_ul + p->w > p->W ||
+                     (int64_t)p->y_ul + p->h > p->H;
+
+    if ((r->flags & PT_REC_NULL) && sticks_out &&
+        (j->rec[PT_STAGE_VIEWPORT].flags & PT_REC_INSIDE))
+        pt_xt_add(t, "outside the framebuffer: no index; the viewport sticks out, and a "
+               "pixel drawn here lands where the course's framebuffer puts y_fb * W + x_fb "
+               "(rows wrap), or is dropped when that lies outside the array");
+    else if (r->flags & PT_REC_NULL)
         pt_xt_add(t, "outside the framebuffer: no index, nothing is stored for this point");
     else {
         pt_xt_add(t, "the end of the journey: the pixel's color is element ");

@@ -753,6 +753,16 @@ int pt_cmd_why(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return PT_EXIT_INPUT;
+    if (!pt_scene_vp_inside(&s)) {          /* docs/scene-format.md: viewport */
+        fprintf(stderr, "pipetrace why: %s: the viewport %d %d %d %d sticks out of the "
+                "%d x %d framebuffer: a pixel drawn there lands where the course's index "
+                "y_fb * W + x_fb puts it (rows wrap), so one framebuffer pixel can come "
+                "from several viewport pixels, which why does not follow; the trace's "
+                "pixel records say where each one went\n", s.path, s.vp_x, s.vp_y, s.vp_w,
+                s.vp_h, s.fb_w, s.fb_h);
+        pt_scene_free(&s);
+        return PT_EXIT_INPUT;
+    }
     if (s.renderer == 7 || s.renderer == 9) return course_why(&s, w.X, w.Y, model);
     if (pt_cli_keep_cap(&s, "why") != 0) { pt_scene_free(&s); return PT_EXIT_INPUT; }
     w.s = &s;

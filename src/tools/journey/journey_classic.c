@@ -693,6 +693,7 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
     }
     x = fb->ix; y = fb->iy;
     if (ix->flags & PT_REC_NULL) {           /* outside: where the formula would point */
+        const char *why = "so the index stage gives none, and nothing is written";
         pt_jfmt_i64(a, sizeof a, x); pt_jfmt_i64(b, sizeof b, y);
         snprintf(t, sizeof t, "(x_fb, y_fb) = (%s, %s) lies outside the framebuffer", a, b);
         pt_jtext(sb, 200, 140, 11.5, "middle", "fill=\"" PT_JC_VTX "\"", t, 370);
@@ -702,6 +703,9 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
             if (would >= 0 && would < n) {
                 double wx = STRIP_X + STRIP_W * ((double)would + 0.5) / (double)n;
                 snprintf(t, sizeof t, "y_fb * W + x_fb would be %s: another pixel's element", a);
+                if (!pt_scene_vp_inside(jm->s))     /* the course's setPixelFB wraps */
+                    why = "the index stage gives none; a pixel drawn here lands there "
+                          "(the viewport sticks out: rows wrap)";
                 pt_jline(sb, wx, 62, wx, 92, PT_JC_VTX, 1.5, "stroke-dasharray=\"3 2\"");
                 pt_jcircle(sb, wx, 77, 5, "none", "stroke=\"" PT_JC_VTX "\" stroke-width=\"1.5\"");
             } else {
@@ -713,8 +717,7 @@ static void fg_index(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size
             }
             pt_jtext(sb, 200, 160, 11.5, "middle", "fill=\"" PT_JC_VTX "\"", t, 370);
         }
-        pt_jtext(sb, 200, 190, 11, "middle", "fill=\"" PT_JC_NOTE "\"",
-                "so the index stage gives none, and nothing is written", 370);
+        pt_jtext(sb, 200, 190, 11, "middle", "fill=\"" PT_JC_NOTE "\"", why, 370);
         return;
     }
     i = ix->i;
