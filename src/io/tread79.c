@@ -39,10 +39,17 @@ static int occurs(const char *buf, size_t n, const char *s)
 
 int pt_t79_renderer(const char *buf, size_t len)
 {
+    static const char bad[] = "FrameBuffer: Bad pixel coordinate (";
     char head[1024];
     const char *p;
-    size_t n = len < sizeof head - 1 ? len : sizeof head - 1;
+    size_t n;
 
+    while (len >= sizeof bad - 1 && !memcmp(buf, bad, sizeof bad - 1) &&
+           (p = memchr(buf, '\n', len)) != NULL) {     /* the viewport's clearing's */
+        len -= (size_t)(p + 1 - buf);
+        buf = p + 1;
+    }
+    n = len < sizeof head - 1 ? len : sizeof head - 1;
     memcpy(head, buf, n);
     head[n] = '\0';
     if (head[0] == '{' && (p = strstr(head, "\"renderer\":")) != NULL) return atoi(p + 11);
@@ -669,7 +676,7 @@ static const char *const log_known[] = {
     "==", "--", "Camera: ", "  perspective", "  left", "  bottom", "  near", "  (fovy",
     "   vIndex", "   cIndex", "Slope", "(x", "Normalization Matrix", "Translation Vector",
     "[[", " [", "  [x,y,z,w]", "Clip", "Near_Clip", "\t", "    ", "= Begin Rendering",
-    "= End Rendering", "- Current Camera:"
+    "= End Rendering", "- Current Camera:", "FrameBuffer: Bad pixel coordinate ("
 };
 
 /* The clip stages' lists in a log repeat the old vertices: drop a record at

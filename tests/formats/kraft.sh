@@ -173,5 +173,14 @@ check "kraft-9.5 ... and a wrapped one its index y_fb * W + x_fb" grep -q 'x_fb 
 run diff "$vd/r4-bad.all.log" "$tmp/bad.jsonl"
 check "kraft-9.6 diff reads the log (Bad pixel lines first) and agrees with the trace" \
     grep -q "every stage both hold, and the same 16" "$tmp/out"
+# renderers 7 and 9 print the clearing's lines first as well
+for r in r7 r9; do
+    gzip -dc tests/course/$r/vpout-04.log.gz > "$tmp/c79.log"
+    "$exe" tests/course/$r/vpout-04.scene --format jsonl --trace "$tmp/c79.jsonl"
+    run diff "$tmp/c79.log" "$tmp/c79.jsonl"
+    check "kraft-9.7 $r: diff reads a log that begins with Bad pixel lines, and agrees" \
+        test "$rc" = 0 -a "$(head -c 34 "$tmp/c79.log")" = "FrameBuffer: Bad pixel coordinate"
+    check "kraft-9.8 ... reading every line" sh -c '! grep -q "not read" "$1"' _ "$tmp/out"
+done
 
 report
