@@ -678,6 +678,97 @@ static void test_course_colors(void)
     PT_CHECK("course-2.2 ... the same number of pixels", pairs);
 }
 
+/* ===== a viewport that sticks out of the framebuffer ===== */
+
+/* The course's FrameBuffer.setPixelFB(x, y): pixel_buffer[y*W + x], kept
+** when that index lies in the array (written out here, in Java's terms, to
+** tie pt_raster_fb_pixel's wrapping and pt_fb_fill to it). */
+static int64_t java_index(int64_t x, int64_t y, int W, int H)
+{
+    int64_t i = y * W + x;
+    return i >= 0 && i < (int64_t)W * H ? i : -1;
+}
+
+static void test_sticking_out(void)
+{
+    static const unsigned char bg[3] = {0, 0, 0}, red[3] = {200, 10, 20};
+    int W, H, x_ul, y_ul, ok_wrap = 1, ok_plain = 1, ok_fill = 1, ok_draw = 1, n = 0;
+    unsigned seed = 7;
+
+    for (W = 1; W <= 6; W++)
+        for (H = 1; H <= 5; H++)
+            for (x_ul = -9; x_ul <= 9; x_ul += 3)
+                for (y_ul = -7; y_ul <= 7; y_ul += 2) {
+                    int64_t x_vp, y_vp;
+                    for (y_vp = -2; y_vp < 10; y_vp++)
+                        for (x_vp = -2; x_vp < 14; x_vp++) {
+                            pt_fb_pixel px;
+                            int64_t x = x_ul + x_vp, y = y_ul + y_vp;
+                            int64_t i = pt_raster_fb_pixel(x_vp, y_vp, x_ul, y_ul, W, H, 1, &px);
+                            ok_wrap &= i == java_index(x, y, W, H) && px.idx == i &&
+                                       px.x_fb == x && px.y_fb == y;
+                            i = pt_raster_fb_pixel(x_vp, y_vp, x_ul, y_ul, W, H, 0, &px);
+                            ok_plain &= i == (x >= 0 && x < W && y >= 0 && y < H ? y * W + x : -1);
+                            n++;
+                        }
+                    {   /* clearVP of a w x h viewport: pixel by pixel, Java's way */
+                        int w = 1 + (int)((seed = seed * 1103515245u + 12345u) >> 16) % 9;
+                        int h = 1 + (int)((seed = seed * 1103515245u + 12345u) >> 16) % 7;
+                        unsigned char want[3 * 30];
+                        pt_fb fb;
+                        int64_t i, j, k;
+                        if (pt_fb_init(&fb, W, H, bg) != 0) { ok_fill = 0; continue; }
+                        memset(want, 0, sizeof want);
+                        for (j = 0; j < h; j++)
+                            for (i = 0; i < w; i++)
+                                if ((k = java_index(x_ul + i, y_ul + j, W, H)) >= 0)
+                                    memcpy(want + 3 * k, red, 3);
+                        pt_fb_fill(&fb, x_ul, y_ul, w, h, red);
+                        ok_fill &= memcmp(fb.rgb, want, 3 * (size_t)W * H) == 0;
+                        pt_fb_free(&fb);
+                    }
+                }
+    PT_CHECK("raster-8.1 a viewport sticking out: each pixel at the course's index "
+             "y_fb*W + x_fb (rows wrap), -1 outside the array", ok_wrap && n > 10000);
+    PT_CHECK("raster-8.2 ... not wrapped for a viewport inside: -1 outside the framebuffer",
+             ok_plain);
+    PT_CHECK("raster-8.3 the viewport's clearing writes what clearVP writes", ok_fill);
+
+    /* the inlined DDA with wrap draws where the index puts each pixel */
+    for (W = 3; W <= 9; W += 3) {
+        pt_fb fb;
+        pt_raster_image im;
+        pt_raster_out out = {c_pixel, c_clip, NULL};
+        canvas cv;
+        unsigned char want[3 * 81];
+        pt_vec2 a = {0.6, 0.6}, b = {12.4, 7.2};        /* a 12 x 8 viewport, corner to corner */
+        int64_t s;
+        if (pt_fb_init(&fb, W, W, bg) != 0) { ok_draw = 0; continue; }
+        memset(&im, 0, sizeof im);
+        memset(&cv, 0, sizeof cv);
+        cv.w = 12; cv.h = 8;
+        out.ud = &cv;
+        pt_raster_segment(a, b, 12, 8, pt_pixel2viewport, &out);   /* the viewport pixels */
+        im.fb = &fb; im.W = W; im.H = W; im.x_ul = -2; im.y_ul = -1; im.wrap = 1;
+        im.col.c0[0] = im.col.c1[0] = 200.0f / 255.0f;
+        im.col.c0[1] = im.col.c1[1] = 10.0f / 255.0f;
+        im.col.c0[2] = im.col.c1[2] = 20.0f / 255.0f;
+        pt_raster_colors_prepare(&im.col);
+        pt_raster_draw(a, b, 12, 8, &im, &out);
+        memset(want, 0, sizeof want);
+        for (s = 0; s < 12 * 8; s++) {
+            int64_t k;
+            if (cv.cell[s] != '*') continue;
+            if ((k = java_index(-2 + s % 12, -1 + s / 12, W, W)) >= 0)
+                memcpy(want + 3 * k, im.col.rgb, 3);
+        }
+        ok_draw &= memcmp(fb.rgb, want, 3 * (size_t)W * W) == 0 && im.pixels > 0;
+        pt_fb_free(&fb);
+    }
+    PT_CHECK("raster-8.4 pt_raster_draw with wrap: the pixels where the course's index puts them",
+             ok_draw);
+}
+
 int main(void)
 {
     test_pictures();
@@ -690,5 +781,6 @@ int main(void)
     test_blend();
     test_steps();
     test_course_colors();
+    test_sticking_out();
     return pt_test_report();
 }
