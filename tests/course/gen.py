@@ -357,18 +357,25 @@ def fam_vp(rng, r, name):
         vw, vh = rng.randint(w // 3, w), rng.randint(h // 3, h)
     vx = rng.randint(0, w - vw)
     vy = rng.randint(0, h - vh)
-    if rng.random() < 0.6:
+    viewport_cube(sc, rng, r, (vx, vy, vw, vh), 0.6, 0.6, None, 5.0)
+    return sc
+
+
+def viewport_cube(sc, rng, r, vp, bg_p, vpbg_p, aa, far):
+    """The viewport vp (x, y, w, h), a background with chance bg_p, a viewport
+    background with chance vpbg_p, a camera, the switches (aa None: random)
+    and a cube in front of it, at most `far` away."""
+    if rng.random() < bg_p:
         sc.add("background %d %d %d" % tuple(rng.randrange(0, 256) for _ in range(3)))
-    sc.add("viewport %d %d %d %d" % (vx, vy, vw, vh))
-    if rng.random() < 0.6:
+    sc.add("viewport %d %d %d %d" % vp)
+    if rng.random() < vpbg_p:
         sc.add("viewport-background %d %d %d" % tuple(rng.randrange(0, 256) for _ in range(3)))
     persp = rng.random() < 0.7
     sc.add(camera_line(rng, r, "persp" if persp else "ortho"))
-    switches(sc, rng)
+    switches(sc, rng, aa=aa)
     verts, colors, prims = cube(rng, 1.0 if persp else 0.6, floats=0.2)
     emit_model(sc, "cube", verts, colors, prims,
-               translate=place(sc, rng, verts, -rng.uniform(2.5, 5.0) if persp else -2.0, 0.6))
-    return sc
+               translate=place(sc, rng, verts, -rng.uniform(2.5, far) if persp else -2.0, 0.6))
 
 
 def fam_color(rng, r, name, k):
@@ -443,6 +450,15 @@ def fam_gamma(rng, r, name, k):
     return sc
 
 
+def aim_r4(rng, w, h):
+    """An image-plane point that renderer 4, which maps a point to the pixel
+    plane twice, draws at a pixel of a w x h viewport chosen at random."""
+    px, py = rng.randint(1, w), rng.randint(1, h)
+    x1 = (px - 0.5) * 2.001 / w - 1
+    y1 = (py - 0.5) * 2.001 / h - 1
+    return (x1 - 0.5) * 2.001 / w - 1, (y1 - 0.5) * 2.001 / h - 1
+
+
 def fam_point(rng, r, name):
     w, h = fbsize(rng)
     sc = Scene(r, name, w, h)
@@ -451,11 +467,7 @@ def fam_point(rng, r, name):
     verts, colors, prims = [], [], []
     for j in range(rng.randint(4, 9)):
         if r == 4 and rng.random() < 0.7:
-            # renderer 4 maps a point to the pixel plane twice: aim at a pixel
-            px, py = rng.randint(1, w), rng.randint(1, h)
-            x1 = (px - 0.5) * 2.001 / w - 1
-            y1 = (py - 0.5) * 2.001 / h - 1
-            u, v = (x1 - 0.5) * 2.001 / w - 1, (y1 - 0.5) * 2.001 / h - 1
+            u, v = aim_r4(rng, w, h)
         else:
             u, v = rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2)
         verts.append((u, v, 0.0))
@@ -849,25 +861,12 @@ def fam_vpout(rng, r, name, k):
         vy = rng.randint(-h // 2, 1)
     if kind == "far":
         vx, vy = -3 * w - rng.randint(0, 9), rng.randint(-2 * h, 2 * h)
-    if rng.random() < 0.5:
-        sc.add("background %d %d %d" % tuple(rng.randrange(0, 256) for _ in range(3)))
-    sc.add("viewport %d %d %d %d" % (vx, vy, vw, vh))
-    if rng.random() < 0.7:
-        sc.add("viewport-background %d %d %d" % tuple(rng.randrange(0, 256) for _ in range(3)))
-    persp = rng.random() < 0.7
-    sc.add(camera_line(rng, r, "persp" if persp else "ortho"))
-    switches(sc, rng, aa=k % 3 == 1)
-    verts, colors, prims = cube(rng, 1.0 if persp else 0.6, floats=0.2)
-    emit_model(sc, "cube", verts, colors, prims,
-               translate=place(sc, rng, verts, -rng.uniform(2.5, 4.0) if persp else -2.0, 0.6))
+    viewport_cube(sc, rng, r, (vx, vy, vw, vh), 0.5, 0.7, k % 3 == 1, 4.0)
     if k % 2 == 0:              # points among segments, inside the viewport
         verts, colors, prims = [], [], []
         for j in range(rng.randint(3, 6)):
-            if r == 4:          # mapped twice to the pixel plane: aim at a pixel
-                px, py = rng.randint(1, vw), rng.randint(1, vh)
-                x1 = (px - 0.5) * 2.001 / vw - 1
-                y1 = (py - 0.5) * 2.001 / vh - 1
-                u, v = (x1 - 0.5) * 2.001 / vw - 1, (y1 - 0.5) * 2.001 / vh - 1
+            if r == 4:
+                u, v = aim_r4(rng, vw, vh)
             else:
                 u, v = rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)
             verts.append((u, v, -1.0))
