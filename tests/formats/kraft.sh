@@ -173,6 +173,10 @@ check "kraft-9.5 ... and a wrapped one its index y_fb * W + x_fb" grep -q 'x_fb 
 run diff "$vd/r4-bad.all.log" "$tmp/bad.jsonl"
 check "kraft-9.6 diff reads the log (Bad pixel lines first) and agrees with the trace" \
     grep -q "every stage both hold, and the same 16" "$tmp/out"
+"$exe" "$vd/r4-bad.scene" --trace "$tmp/bad.txt"
+run diff "$tmp/bad.txt" "$tmp/bad.jsonl"
+check "kraft-9.9 the text trace's negative viewport corner reads back: it agrees with the JSON Lines" \
+    test "$rc" = 0
 # renderers 7 and 9 print the clearing's lines first as well
 for r in r7 r9; do
     gzip -dc tests/course/$r/vpout-04.log.gz > "$tmp/c79.log"
