@@ -77,6 +77,10 @@ else
     # the numbers with no slider moved are the scene's, and so is #coords
     sliders "$tmp/b.html" '&stage=4' > "$tmp/dom.html"
     compare - "$tmp/dom.html"
+    # a viewport that sticks out of the framebuffer stays where the scene puts
+    # it, and its corner's sliders reach as far out
+    move tests/data/vpout/r4-bad.scene 'plain%20v3' '&stage=7'
+    move tests/data/vpout/r4-bad.scene 'plain%20v2' '&set=x_ul:-8,y_ul:7,x_t:0.1&stage=6'
     # the matrix camera: every slider (aspect auto follows w and h), a
     # lookat-target camera, a vertex behind the eye (stages past the cvv not
     # reached), world lines with rotations, an aspect given, the scene's own
