@@ -261,41 +261,68 @@ static int same_cut(int st, const pt_rv_cut *k)
     return !memcmp(&q.t, &k->t, sizeof q.t) && !memcmp(&q.p[2], &k->p[2], sizeof q.p[2]);
 }
 
-/* The stage's cuts on a copy of m, each made again by how(): the new
-** vertices appended to m.  -1 when a cut fails same_cut(), when a primitive
-** is cut more than once (after a wrong first cut the student's loop goes its
-** own way), or when how() says the student's point is not the last cut. */
-static int cuts_again(int st, const pt_c79cam *c, pt_rv_model *m,
-                      int (*how)(int st, const pt_rv_cut *k, pt_rv_cut *q))
+/* The first cut the real stage st makes on segment p of m, alone: 1 and *k
+** when it cuts, 0 when it keeps or drops the segment as it is, -1 when it
+** cannot be run (out of memory, a colour Java refuses). */
+static int first_cut(int st, const pt_c79cam *c, const pt_rv_model *m, const pt_rv_prim *p,
+                     pt_rv_cut *k)
 {
+    pt_rv_model one;
+    pt_rv_prim q;
     cutlog *cl = calloc(1, sizeof *cl);
-    pt_rv_model cp;
-    size_t k;
-    int rc = 0;
+    int rc = -1, i;
 
-    memset(&cp, 0, sizeof cp);
-    if (!cl) return -1;
-    for (k = 0; k < m->nv && rc == 0; k++) rc = pt_rv_add_vertex(&cp, m->v[k]);
-    for (k = 0; k < m->nc && rc == 0; k++) rc = pt_rv_add_color(&cp, m->c[k]);
-    for (k = 0; k < m->np && rc == 0; k++) rc = pt_rv_add_prim(&cp, &m->p[k]);
-    if (rc == 0) rc = run_stage(st, c->n, &cp, cl);
-    for (k = 0; k < cl->n && rc == 0; k++) {
-        pt_rv_cut q;
-        if (!same_cut(st, &cl->c[k]) || (k > 0 && cl->prim[k - 1] == cl->prim[k]) ||
-            (k + 1 < cl->n && cl->prim[k + 1] == cl->prim[k]) || how(st, &cl->c[k], &q) != 0)
-            rc = -1;
-        else
-            rc = pt_rv_cut_finish(m, &q, NULL) != 0 ? -1 : 0;  /* its colour, in float */
+    memset(&one, 0, sizeof one);
+    memset(&q, 0, sizeof q);
+    q.kind = PT_RV_LINE;
+    if (cl) {
+        rc = 0;
+        for (i = 0; i < 2 && rc == 0; i++) {
+            q.v[i] = q.c[i] = (uint32_t)i;
+            rc = pt_rv_add_vertex(&one, m->v[p->v[i]]) || pt_rv_add_color(&one, m->c[p->c[i]]);
+        }
+        if (rc == 0) rc = pt_rv_add_prim(&one, &q);
+        if (rc == 0) {
+            int r = run_stage(st, c->n, &one, cl);
+            rc = cl->n ? 1 : r;                 /* its first cut is all that counts */
+            if (cl->n) *k = cl->c[0];
+        }
+        rc = rc < 0 ? -1 : rc;
     }
-    pt_rv_model_free(&cp);
+    pt_rv_model_free(&one);
     free(cl);
     return rc;
 }
 
-/* 1 when p lies in the view rectangle: the student's loop stops there. */
-static int inside(const pt_vec4 *p)
+/* The student's loop on m's segments, one by one as the stage takes them:
+** the stage says which end it cuts at which edge (first_cut()), how() makes
+** that cut the student's way, its new vertex and colour are appended to m
+** and replace the end cut off, and the stage looks at the new segment again,
+** until it keeps or drops it (the near clip cuts once).  Every cut must pass
+** same_cut().  -1 when a cut cannot be made (a colour Java refuses) or the
+** loop does not end within PT_MAXCUTS79 cuts. */
+#define PT_MAXCUTS79 64
+static int cuts_again(int st, const pt_c79cam *c, pt_rv_model *m,
+                      int (*how)(int st, const pt_rv_cut *k, pt_rv_cut *q))
 {
-    return fabs(p->x) <= 1 && fabs(p->y) <= 1;
+    size_t np = m->np, k;
+    for (k = 0; k < np; k++) {
+        pt_rv_prim p = m->p[k];
+        int n, rc = 1;
+        if (p.kind != PT_RV_LINE) continue;
+        for (n = 0; rc == 1; n++) {
+            pt_rv_cut cut, q;
+            if (n == PT_MAXCUTS79 || (st == PT_T79_NEARCLIP && n == 1)) break;
+            rc = first_cut(st, c, m, &p, &cut);
+            if (rc != 1) break;
+            if (!same_cut(st, &cut) || how(st, &cut, &q) != 0 || pt_rv_cut_finish(m, &q, NULL) != 0)
+                return -1;                      /* its colour, in float */
+            p.v[q.off] = q.v_new;
+            p.c[q.off] = q.c_new;
+        }
+        if (rc < 0 || n == PT_MAXCUTS79) return -1;
+    }
+    return 0;
 }
 
 /* t from the other coordinate: the near clip's y for z, the rectangle's y
@@ -306,7 +333,7 @@ static int t_other(int st, const pt_rv_cut *k, pt_rv_cut *q)
     double e;
     right_of(st, k, &i, &e);
     *q = recut(st, k, st == PT_T79_NEARCLIP ? 1 : 1 - i, e, i, e);
-    return st == PT_T79_NEARCLIP || inside(&q->p[2]) ? 0 : -1;
+    return 0;
 }
 
 /* The rectangle's edges swapped: the end beyond x = +1 cut at x = -1, and so on. */
@@ -316,7 +343,7 @@ static int edge_swapped(int st, const pt_rv_cut *k, pt_rv_cut *q)
     double e;
     right_of(st, k, &i, &e);
     *q = recut(st, k, i, -e, i, -e);
-    return inside(&q->p[2]) ? 0 : -1;
+    return 0;
 }
 
 static int near_t_other(const pt_c79cam *c, pt_rv_model *m) { return cuts_again(PT_T79_NEARCLIP, c, m, t_other); }

@@ -43,7 +43,7 @@ mistake() {
     done
 }
 
-for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r9-view-skew; do
+for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r7-clip2 r9-view-skew; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -73,6 +73,10 @@ mistake r7-near clipbytes "the clip's colour interpolated in bytes"
 mistake r7-near neart "the near clip's t from y"
 mistake r7-clip1 clipt "the clip's t from the other coordinate"
 mistake r7-clip1 clipswap "the clip's edges swapped"
+# segments cut twice (entering and leaving, a corner, a corner missed): the
+# student's loop follows its own wrong first cut
+mistake r7-clip2 clipt "the clip's t from the other coordinate"
+mistake r7-clip2 clipswap "the clip's edges swapped"
 mistake r9-view-skew viewadd "the camera translation added"
 mistake r9-view-skew skewneg "the skew's sign wrong"
 
