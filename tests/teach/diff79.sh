@@ -43,7 +43,7 @@ mistake() {
     done
 }
 
-for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r7-clip2 r9-view-skew; do
+for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r7-clip2 r9-view-skew r9-order; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -79,6 +79,19 @@ mistake r7-clip2 clipt "the clip's t from the other coordinate"
 mistake r7-clip2 clipswap "the clip's edges swapped"
 mistake r9-view-skew viewadd "the camera translation added"
 mistake r9-view-skew skewneg "the skew's sign wrong"
+# matrices that do not commute: rotate then translate, translate then rotate
+mistake r9-order matswap "the matrices multiplied in the wrong order"
+mistake r9-order mattrans "the matrix-vector product transposed"
+
+# ---- the world stage: first to differ, every vertex of both positions
+"$exe" diff "$tmp/r9-order.jsonl" "$tmp/r9-order.matswap.log" >"$tmp/out" 2>&1
+check "r9-order matswap: world, 16 of 16" grep -qF "First stage that differs: world (16 of 16 vertices)." "$tmp/out"
+check "... the model stage agrees" grep -qE "^  model +16 compared, 0 differ$" "$tmp/out"
+# every vertex must fit: one world vertex moved, and no mistake is named
+awk '/^1\. World +: vIndex = +5,/ && !done { sub(/\(x,y,z,w\)=\( +/, "&1"); done = 1 } { print }' \
+    "$tmp/r9-order.matswap.log" >"$tmp/moved.log"
+check "... (one vertex moved)" test "$(cmp "$tmp/moved.log" "$tmp/r9-order.matswap.log" 2>&1 | wc -l)" = 1
+expect "r9-order matswap, one vertex moved" "$tmp/r9-order.jsonl" "$tmp/moved.log" 1 "Mistake: unknown"
 
 # ---- where nothing separates two mistakes: ambiguous, on both logs
 for m in nearsign nearoff; do
