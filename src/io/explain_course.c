@@ -43,6 +43,21 @@ static pt_vec2 pixel_plane(const pt_cx_journey *j)
     return ptref_image2pixel(ip, j->par.w, j->par.h, NULL);
 }
 
+/* The vertex after the clip as the rasterizer maps it: mapped, px_x, px_y. */
+static void map_clipped(pt_cx_journey *j)
+{
+    pt_vec2 pp = pixel_plane(j);
+    pt_vec4 p = j->at[PT_CST_CLIP];
+    /* the rasterizer maps only what the clip keeps: |x|, |y| <= 1 (or NaN,
+    ** which every comparison lets through), so x_pp is within the
+    ** viewport and Math.round fits an int */
+    j->mapped = !(fabs(p.x) > 1 || fabs(p.y) > 1);
+    if (j->mapped) {
+        j->px_x = (int64_t)pt_explain_java_int_round(pp.x) - 1;
+        j->px_y = (int64_t)j->par.h - pt_explain_java_int_round(pp.y);
+    }
+}
+
 static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                      const pt_rv_model *m)
 {
@@ -62,18 +77,7 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
         j->has_col[st] = 1;
         j->col[st] = m->c[k];
     }
-    if (st == PT_CST_CLIP) {
-        pt_vec2 pp = pixel_plane(j);
-        pt_vec4 p = j->at[PT_CST_CLIP];
-        /* the rasterizer maps only what the clip keeps: |x|, |y| <= 1 (or NaN,
-        ** which every comparison lets through), so x_pp is within the
-        ** viewport and Math.round fits an int */
-        j->mapped = !(fabs(p.x) > 1 || fabs(p.y) > 1);
-        if (j->mapped) {
-            j->px_x = (int64_t)pt_explain_java_int_round(pp.x) - 1;
-            j->px_y = (int64_t)j->par.h - pt_explain_java_int_round(pp.y);
-        }
-    }
+    if (st == PT_CST_CLIP) map_clipped(j);
 }
 
 static void clip_begin(void *ud, const pt_rv_model *m, const pt_rv_prim *p)
@@ -855,6 +859,12 @@ size_t pt_cx_stage(char *buf, size_t len, const pt_cx_journey *j, pt_cx_step st,
 size_t pt_cx_explain_rec(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
                          const pt_cx_rec *r, const char *sep)
 {
+    return pt_cx_explain_step(buf, len, s, cam, r, pt_cx_step_of(r->st), sep);
+}
+
+size_t pt_cx_explain_step(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
+                          const pt_cx_rec *r, pt_cx_step step, const char *sep)
+{
     static const pt_course_stage before[PT_NCST] = {PT_CST_MODEL, PT_CST_MODEL, PT_CST_WORLD,
         PT_CST_VIEW, PT_CST_CAMERA, PT_CST_NEARCLIP, PT_CST_IMAGE};
     pt_course_stage pre = r->st == PT_CST_VIEW && s->renderer != 9 ? PT_CST_MODEL : before[r->st];
@@ -872,5 +882,6 @@ size_t pt_cx_explain_rec(char *buf, size_t len, const pt_scene *s, const pt_cour
         j.cut = *r->cut;
         j.cut_prim = r->cut_prim;
     }
-    return pt_cx_stage(buf, len, &j, pt_cx_step_of(r->st), sep);
+    if (r->st == PT_CST_CLIP) map_clipped(&j);
+    return pt_cx_stage(buf, len, &j, step, sep);
 }

@@ -146,4 +146,11 @@ typedef struct pt_cx_rec {
 size_t pt_cx_explain_rec(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
                          const pt_cx_rec *r, const char *sep);
 
+/* The same for step st: r->st's own (pt_cx_step_of()), or, when r is the
+** clip's record of a vertex the clip keeps, PT_CXS_PIXEL or PT_CXS_VIEWPORT
+** (the rasterizer's map of it; PT_CXS_RASTER needs a render's pixel lines:
+** pt_cx_run()).  Returns the length (>= len: cut short).  Can't fail. */
+size_t pt_cx_explain_step(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
+                          const pt_cx_rec *r, pt_cx_step st, const char *sep);
+
 #endif
