@@ -6,10 +6,12 @@
 ** listener: the stages' results, the clip stages' cut records (t, the ends,
 ** the new point and colour as the stage computed them) and the rasterizer's
 ** pixel lines.  The pixel plane is the rasterizer's own map (the reference
-** pixel stage, ptref_image2pixel); gamma, anti-aliasing's weight and blend and
+** pixel stage, ptref_image2pixel), its formula the stage table's
+** (pt_stage_infos, in the course's names x_p, y_p for its x_ip, y_ip); gamma, anti-aliasing's weight and blend and
 ** the colour bytes are stages/pt_color.h's functions.
 */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "io/explain_course.h"
@@ -284,8 +286,7 @@ static const pt_cx_row rows[PT_NCXS] = {
       NULL },
     { "pixel", "image plane", "pixel plane", "stretch the view rectangle over the "
       "viewport's logical pixels (the rasterizer's first step)",
-      "x_pp = 0.5 + w/2.001 * (x_p + 1), y_pp = 0.5 + h/2.001 * (y_p + 1)",
-      NULL },
+      NULL, NULL },                     /* the stage table's: pixel_formula() */
     { "viewport", "pixel plane", "viewport", "round to the logical pixel with Java's "
       "Math.round, count from 0 and from the top row down, then place in the framebuffer",
       "x_vp = Math.round(x_pp) - 1, y_vp = h - Math.round(y_pp); x_fb = x_ul + x_vp, "
@@ -303,9 +304,61 @@ const pt_cx_row *pt_cx_row_of(pt_cx_step st)
     return &rows[st];
 }
 
+/* ===== the pixel plane: the stage table's formula ===== */
+
+/* The course's names of the image plane's x and y, as rows[PT_CXS_IMAGE]
+** spells them; the stage table (renderer 4's) calls them x_ip, y_ip. */
+static const char *const course_ip[2] = {"x_p", "y_p"};
+
+/* src, a formula of the stage table, into t: each of the table's names of
+** the image plane's x and y (pt_stage_infos[PT_STAGE_IMAGE].coord) as the
+** course names it; with j, that name as j's value there (ip) and w, h as
+** j's viewport's width and height. */
+static void table_text(pt_xt *t, const char *src, const pt_cx_journey *j, const double ip[2])
+{
+    while (*src) {
+        char id[32];
+        size_t n = 0;
+        int k;
+        if (!(*src == '_' || (*src >= 'a' && *src <= 'z') || (*src >= 'A' && *src <= 'Z'))) {
+            id[0] = *src++;
+            id[1] = '\0';
+            pt_xt_add(t, id);
+            continue;
+        }
+        while ((*src == '_' || (*src >= 'a' && *src <= 'z') || (*src >= 'A' && *src <= 'Z') ||
+                (*src >= '0' && *src <= '9')) && n + 1 < sizeof id)
+            id[n++] = *src++;
+        id[n] = '\0';
+        for (k = 0; k < 2 && strcmp(id, pt_stage_infos[PT_STAGE_IMAGE].coord[k]); k++) ;
+        if (k < 2 && j) pt_xt_num(t, ip[k], 0);
+        else if (k < 2) pt_xt_add(t, course_ip[k]);
+        else if (j && !strcmp(id, "w")) pt_xt_int(t, j->par.w, 0);
+        else if (j && !strcmp(id, "h")) pt_xt_int(t, j->par.h, 0);
+        else pt_xt_add(t, id);
+    }
+}
+
+/* The pixel plane's formula: the stage table's (stages/pt_stage.c, the map
+** of s3_image2pixel.h, which the course's rasterizer makes too), in the
+** course's names. */
+static const char *pixel_formula(void)
+{
+    static char f[256];
+    pt_xt t;
+
+    if (!f[0]) {
+        pt_xt_init(&t, f, sizeof f);
+        table_text(&t, pt_stage_infos[PT_STAGE_PIXEL].formula, NULL, NULL);
+    }
+    return f;
+}
+
 const char *pt_cx_formula(int renderer, pt_cx_step st)
 {
     const pt_cx_row *r = &rows[st];
+
+    if (st == PT_CXS_PIXEL) return pixel_formula();
 
     if (st == PT_CXS_WORLD) return renderer == 9 ? r->formula9 : NULL;
     return renderer == 9 && r->formula9 ? r->formula9 : r->formula7;
@@ -654,20 +707,25 @@ static void step_clip(pt_xt *t, const pt_cx_journey *j, const char *sep)
     cut_offs(t, j, PT_CST_CLIP, sep);
 }
 
+/* The stage table's pixel formula (x's, then y's, split at ", "), each with
+** j's numbers put in. */
 static void step_pixel(pt_xt *t, const pt_cx_journey *j, const char *sep)
 {
-    pt_vec4 p = j->at[PT_CST_CLIP];
+    const char *f = pt_stage_infos[PT_STAGE_PIXEL].formula, *cut = strstr(f, ", ");
+    const double ip[2] = {j->at[PT_CST_CLIP].x, j->at[PT_CST_CLIP].y};
     pt_vec2 pp = pixel_plane(j);
+    char part[2][128];
     int k;
 
+    snprintf(part[0], sizeof part[0], "%.*s", cut ? (int)(cut - f) : (int)strlen(f), f);
+    snprintf(part[1], sizeof part[1], "%s", cut ? cut + 2 : "");
     for (k = 0; k < 2; k++) {
+        const char *rhs = strstr(part[k], " = ");
         if (k) pt_xt_add(t, sep);
-        pt_xt_add(t, k ? "y_pp = 0.5 + h/" : "x_pp = 0.5 + w/");
-        pt_xt_num(t, PT_PIXEL_DIVISOR, 0);
-        pt_xt_add(t, k ? " * (y_p + 1) = 0.5 + " : " * (x_p + 1) = 0.5 + ");
-        pt_xt_int(t, k ? j->par.h : j->par.w, 0); pt_xt_add(t, "/");
-        pt_xt_num(t, PT_PIXEL_DIVISOR, 0); pt_xt_add(t, " * (");
-        pt_xt_num(t, vcomp(p, k), 0); pt_xt_add(t, " + 1) = ");
+        table_text(t, part[k], NULL, NULL);
+        pt_xt_add(t, " = ");
+        table_text(t, rhs ? rhs + 3 : "", j, ip);
+        pt_xt_add(t, " = ");
         pt_xt_num(t, k ? pp.y : pp.x, 0);
     }
 }

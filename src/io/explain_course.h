@@ -105,7 +105,9 @@ int pt_cx_find(const pt_scene *s, uint64_t v, size_t *mi);
 ** its formula.  Can't fail. */
 typedef struct pt_cx_row {
     const char *name, *from, *to, *what;
-    const char *formula7;        /* renderer 7's (and 9's, without formula9) */
+    const char *formula7;        /* renderer 7's (and 9's, without formula9);
+                                 ** NULL for the pixel plane, whose formula is
+                                 ** the stage table's: ask pt_cx_formula() */
     const char *formula9;        /* NULL: renderer 9's is renderer 7's */
 } pt_cx_row;
 const pt_cx_row *pt_cx_row_of(pt_cx_step st);

@@ -178,6 +178,9 @@ check "quiz79-8.12 the image's formula line is step's" \
     grep -qxF "  $step_formula" "$tmp/out"
 check "quiz79-8.13 the colour: its formula, no numbers (step shows its pixel lines)" \
     test "$(sed -n '/^color: /,/^  go on/p' "$tmp/out" | sed -n 3,4p | cut -c1-12)" = "$(printf '  weight f =\n  go on with')"
+r4_formula=$("$exe" step docs/examples/triangle.scene --vertex 1 --all | sed -n 's/^  formula  \(x_pp = .*\)/\1/p')
+check "quiz79-8.18 the pixel formula is the stage table's (renderer 4's step), x_ip named x_p" \
+    grep -qxF "  $(printf '%s\n' "$r4_formula" | sed 's/\([xy]\)_ip/\1_p/g')" "$tmp/out"
 feed "$(cat "$tmp/near7")\n" quiz $near --vertex 7
 check "quiz79-8.14 a right answer: no worked lines" test "$(grep -c '^    ' "$tmp/out")" = 0
 feed "$(cat "$tmp/zeros")\n" quiz $r9 --vertex 1
