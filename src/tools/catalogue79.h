@@ -13,7 +13,10 @@
 **                    entering it (EXPECTED's vertices and colours, a log's
 **                    primitive list): the real stage (stages/rv_nearclip.c,
 **                    rv_clip.c) with the near plane moved, or heard cut by
-**                    cut (pt_rv_clip_ls) and each new colour made the wrong way;
+**                    cut (pt_rv_clip_ls) and each new colour made the wrong way,
+**                    or asked segment by segment which end to cut at which
+**                    edge while the mistake makes each cut (the student's loop
+**                    then goes on from its own wrong point);
 **   position mistakes  a position's vertices at once: its matrix found
 **                    from EXPECTED's model and world vertices (least
 **                    squares), made the wrong way with r9_matrix.c's ops and

@@ -20,6 +20,8 @@
 **             pixel: gamma, anti-aliasing; none outside the framebuffer)
 ** After "dropped" the segment is gone: no more questions.  A wrong answer
 ** "follows" when the stage, run on the sheet's own answer before it, gives it.
+** A wrong answer is shown its stage's formula with the right numbers put in
+** (pt_q79_worked(): io/explain_course.c's text, as pipetrace step writes it).
 */
 #ifndef PT_QUIZ79_H
 #define PT_QUIZ79_H

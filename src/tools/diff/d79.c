@@ -531,7 +531,7 @@ static int pixel_fits(const d79 *c, size_t ie, size_t ia, void *ud)
         f->m->pixel(p->rgb, partner, p->pair != 0, c->t[0].ptol, lo, hi);
     }
     for (k = 0; k < 3; k++)
-        if (q->rgb[k] < lo[k] - tol || q->rgb[k] > hi[k] + tol) { if (f->ok && getenv("D79")) fprintf(stderr, "%s: px %lld %lld k%d %g not in %g %g (e %g)\n", f->m->name, (long long)p->x, (long long)p->y, k, q->rgb[k], lo[k], hi[k], p->rgb[k]); f->ok = 0; }
+        if (q->rgb[k] < lo[k] - tol || q->rgb[k] > hi[k] + tol) f->ok = 0;
     return 0;
 }
 
