@@ -399,37 +399,34 @@ static int same_cut(int st, const pt_rv_cut *k)
     return !memcmp(&q.t, &k->t, sizeof q.t) && !memcmp(&q.p[2], &k->p[2], sizeof q.p[2]);
 }
 
-/* The first cut the real stage st makes on segment p of m, alone: 1 and *k
-** when it cuts, 0 when it keeps or drops the segment as it is, -1 when it
-** cannot be run (out of memory, a colour Java refuses). */
+/* The first cut the real stage st makes on segment p of m, alone (its cuts
+** heard into cl): 1 and *k when it cuts, 0 when it keeps or drops the
+** segment as it is, -1 when it cannot be run (out of memory, a colour Java
+** refuses). */
 static int first_cut(int st, const pt_c79cam *c, const pt_rv_model *m, const pt_rv_prim *p,
-                     pt_rv_cut *k)
+                     cutlog *cl, pt_rv_cut *k)
 {
     pt_rv_model one;
     pt_rv_prim q;
-    cutlog *cl = calloc(1, sizeof *cl);
-    int rc = -1, i;
+    int rc = 0, i;
 
     memset(&one, 0, sizeof one);
     memset(&q, 0, sizeof q);
     q.kind = PT_RV_LINE;
-    if (cl) {
-        rc = 0;
-        for (i = 0; i < 2 && rc == 0; i++) {
-            q.v[i] = q.c[i] = (uint32_t)i;
-            rc = pt_rv_add_vertex(&one, m->v[p->v[i]]) || pt_rv_add_color(&one, m->c[p->c[i]]);
-        }
-        if (rc == 0) rc = pt_rv_add_prim(&one, &q);
-        if (rc == 0) {
-            int r = run_stage(st, c->n, &one, cl);
-            rc = cl->n ? 1 : r;                 /* its first cut is all that counts */
-            if (cl->n) *k = cl->c[0];
-        }
-        rc = rc < 0 ? -1 : rc;
+    cl->n = cl->nprim = 0;
+    cl->full = 0;
+    for (i = 0; i < 2 && rc == 0; i++) {
+        q.v[i] = q.c[i] = (uint32_t)i;
+        rc = pt_rv_add_vertex(&one, m->v[p->v[i]]) || pt_rv_add_color(&one, m->c[p->c[i]]);
+    }
+    if (rc == 0) rc = pt_rv_add_prim(&one, &q);
+    if (rc == 0) {
+        int r = run_stage(st, c->n, &one, cl);
+        rc = cl->n ? 1 : r;                     /* its first cut is all that counts */
+        if (cl->n) *k = cl->c[0];
     }
     pt_rv_model_free(&one);
-    free(cl);
-    return rc;
+    return rc < 0 ? -1 : rc;
 }
 
 /* The student's loop on m's segments, one by one as the stage takes them:
@@ -438,29 +435,35 @@ static int first_cut(int st, const pt_c79cam *c, const pt_rv_model *m, const pt_
 ** and replace the end cut off, and the stage looks at the new segment again,
 ** until it keeps or drops it (the near clip cuts once).  Every cut must pass
 ** same_cut().  -1 when a cut cannot be made (a colour Java refuses) or the
-** loop does not end within PT_MAXCUTS79 cuts. */
-#define PT_MAXCUTS79 64
+** loop does not end within MAXCUTS cuts. */
+#define MAXCUTS 64
 static int cuts_again(int st, const pt_c79cam *c, pt_rv_model *m,
                       int (*how)(int st, const pt_rv_cut *k, pt_rv_cut *q))
 {
+    cutlog *cl = calloc(1, sizeof *cl);
     size_t np = m->np, k;
-    for (k = 0; k < np; k++) {
+    int bad = !cl;
+
+    for (k = 0; k < np && !bad; k++) {
         pt_rv_prim p = m->p[k];
         int n, rc = 1;
         if (p.kind != PT_RV_LINE) continue;
-        for (n = 0; rc == 1; n++) {
+        for (n = 0; rc == 1 && !bad; n++) {
             pt_rv_cut cut, q;
-            if (n == PT_MAXCUTS79 || (st == PT_T79_NEARCLIP && n == 1)) break;
-            rc = first_cut(st, c, m, &p, &cut);
+            if (n == MAXCUTS || (st == PT_T79_NEARCLIP && n == 1)) break;
+            rc = first_cut(st, c, m, &p, cl, &cut);
             if (rc != 1) break;
-            if (!same_cut(st, &cut) || how(st, &cut, &q) != 0 || pt_rv_cut_finish(m, &q, NULL) != 0)
-                return -1;                      /* its colour, in float */
+            if (!same_cut(st, &cut) || how(st, &cut, &q) != 0 || pt_rv_cut_finish(m, &q, NULL) != 0) {
+                bad = 1;                        /* pt_rv_cut_finish: its colour, in float */
+                break;
+            }
             p.v[q.off] = q.v_new;
             p.c[q.off] = q.c_new;
         }
-        if (rc < 0 || n == PT_MAXCUTS79) return -1;
+        if (rc < 0 || n == MAXCUTS) bad = 1;
     }
-    return 0;
+    free(cl);
+    return bad ? -1 : 0;
 }
 
 /* t from the other coordinate: the near clip's y for z, the rectangle's y

@@ -83,6 +83,24 @@ mistake r9-view-skew skewneg "the skew's sign wrong"
 mistake r9-order matswap "the matrices multiplied in the wrong order"
 mistake r9-order mattrans "the matrix-vector product transposed"
 
+# ---- the new names on no other log: every student's log of every scene
+# against its scene's right log names neither world mistake nor, but on
+# r7-clip1 and r7-clip2, the clip's t or edges
+for f in "$data"/*.*.log.gz; do
+    b=$(basename "$f" .log.gz); sc=${b%%.*}; m=${b#*.}
+    [ "$m" = right ] && continue
+    gzip -dc "$f" >"$tmp/s.log"
+    "$exe" diff "$tmp/$sc.right.log" "$tmp/s.log" >"$tmp/out" 2>&1
+    case $b in
+    r9-order.*) ;;
+    *) check "$b: no world mistake named" test "$(grep -c 'multiplied in the wrong order\|product transposed' "$tmp/out")" = 0 ;;
+    esac
+    case $b in
+    r7-clip1.*|r7-clip2.*) ;;
+    *) check "$b: no clip t or edge mistake named" test "$(grep -c "clip's t from the other\|clip's edges swapped" "$tmp/out")" = 0 ;;
+    esac
+done
+
 # ---- the world stage: first to differ, every vertex of both positions
 "$exe" diff "$tmp/r9-order.jsonl" "$tmp/r9-order.matswap.log" >"$tmp/out" 2>&1
 check "r9-order matswap: world, 16 of 16" grep -qF "First stage that differs: world (16 of 16 vertices)." "$tmp/out"

@@ -356,14 +356,15 @@ static int explains_positions(const d79 *c, const pt_mistake79 *m)
         }
         for (alt = 0; !bad && !ok && m->position(n, (const double (*)[4])prev,
                                                 (const double (*)[4])right, alt, out) == 0; alt++) {
-            /* EXPECTED's rounding through the fit: up to about mag^2 units */
-            double tol = a->vtol + 8 * c->t[0].vtol * (1 + mag) * (1 + mag);
+            /* EXPECTED's rounding (or the fit's own, on exact numbers)
+            ** through the fit: up to about mag^2 units */
+            double tol = a->vtol + (8 * c->t[0].vtol + 64 * DBL_EPSILON) * (1 + mag) * (1 + mag);
             ok = 1;
             for (i = 0; i < n && ok; i++) {
                 const pt_t79v *q = &a->vx[c->ix[1][k + i]];
                 int d;
                 for (d = 0; d < (q->has_w ? 4 : 3) && ok; d++) {
-                    double t = fmax(tol + 4 * DBL_EPSILON * fabs(out[i][d]), c->o->tol);
+                    double t = fmax(tol, fmax(c->o->tol, c->o->rel * fabs(out[i][d])));
                     if (!(fabs(out[i][d] - q->x[d]) <= t) && out[i][d] != q->x[d]) ok = 0;
                 }
             }
