@@ -319,7 +319,7 @@ static int explains_vertices(const d79 *c, const pt_mistake79 *m, const pt_c79ca
     return any && all_in_actual(c, m->stage);
 }
 
-/* The values of side s's record r as (x, y, z, w), w 1 when it has none. */
+/* Record r's values as (x, y, z, w), w 1 when it has none. */
 static void xyzw(const pt_t79v *r, double o[4])
 {
     o[0] = r->x[0]; o[1] = r->x[1]; o[2] = r->x[2]; o[3] = r->has_w ? r->x[3] : 1.0;
