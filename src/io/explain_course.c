@@ -6,10 +6,12 @@
 ** listener: the stages' results, the clip stages' cut records (t, the ends,
 ** the new point and colour as the stage computed them) and the rasterizer's
 ** pixel lines.  The pixel plane is the rasterizer's own map (the reference
-** pixel stage, ptref_image2pixel); gamma, anti-aliasing's weight and blend and
+** pixel stage, ptref_image2pixel), its formula the stage table's
+** (pt_stage_infos, in the course's names x_p, y_p for its x_ip, y_ip); gamma, anti-aliasing's weight and blend and
 ** the colour bytes are stages/pt_color.h's functions.
 */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "io/explain_course.h"
@@ -43,6 +45,21 @@ static pt_vec2 pixel_plane(const pt_cx_journey *j)
     return ptref_image2pixel(ip, j->par.w, j->par.h, NULL);
 }
 
+/* The vertex after the clip as the rasterizer maps it: mapped, px_x, px_y. */
+static void map_clipped(pt_cx_journey *j)
+{
+    pt_vec2 pp = pixel_plane(j);
+    pt_vec4 p = j->at[PT_CST_CLIP];
+    /* the rasterizer maps only what the clip keeps: |x|, |y| <= 1 (or NaN,
+    ** which every comparison lets through), so x_pp is within the
+    ** viewport and Math.round fits an int */
+    j->mapped = !(fabs(p.x) > 1 || fabs(p.y) > 1);
+    if (j->mapped) {
+        j->px_x = (int64_t)pt_explain_java_int_round(pp.x) - 1;
+        j->px_y = (int64_t)j->par.h - pt_explain_java_int_round(pp.y);
+    }
+}
+
 static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                      const pt_rv_model *m)
 {
@@ -62,18 +79,7 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
         j->has_col[st] = 1;
         j->col[st] = m->c[k];
     }
-    if (st == PT_CST_CLIP) {
-        pt_vec2 pp = pixel_plane(j);
-        pt_vec4 p = j->at[PT_CST_CLIP];
-        /* the rasterizer maps only what the clip keeps: |x|, |y| <= 1 (or NaN,
-        ** which every comparison lets through), so x_pp is within the
-        ** viewport and Math.round fits an int */
-        j->mapped = !(fabs(p.x) > 1 || fabs(p.y) > 1);
-        if (j->mapped) {
-            j->px_x = (int64_t)pt_explain_java_int_round(pp.x) - 1;
-            j->px_y = (int64_t)j->par.h - pt_explain_java_int_round(pp.y);
-        }
-    }
+    if (st == PT_CST_CLIP) map_clipped(j);
 }
 
 static void clip_begin(void *ud, const pt_rv_model *m, const pt_rv_prim *p)
@@ -280,8 +286,7 @@ static const pt_cx_row rows[PT_NCXS] = {
       NULL },
     { "pixel", "image plane", "pixel plane", "stretch the view rectangle over the "
       "viewport's logical pixels (the rasterizer's first step)",
-      "x_pp = 0.5 + w/2.001 * (x_p + 1), y_pp = 0.5 + h/2.001 * (y_p + 1)",
-      NULL },
+      NULL, NULL },                     /* the stage table's: pixel_formula() */
     { "viewport", "pixel plane", "viewport", "round to the logical pixel with Java's "
       "Math.round, count from 0 and from the top row down, then place in the framebuffer",
       "x_vp = Math.round(x_pp) - 1, y_vp = h - Math.round(y_pp); x_fb = x_ul + x_vp, "
@@ -299,9 +304,61 @@ const pt_cx_row *pt_cx_row_of(pt_cx_step st)
     return &rows[st];
 }
 
+/* ===== the pixel plane: the stage table's formula ===== */
+
+/* The course's names of the image plane's x and y, as rows[PT_CXS_IMAGE]
+** spells them; the stage table (renderer 4's) calls them x_ip, y_ip. */
+static const char *const course_ip[2] = {"x_p", "y_p"};
+
+/* src, a formula of the stage table, into t: each of the table's names of
+** the image plane's x and y (pt_stage_infos[PT_STAGE_IMAGE].coord) as the
+** course names it; with j, that name as j's value there (ip) and w, h as
+** j's viewport's width and height. */
+static void table_text(pt_xt *t, const char *src, const pt_cx_journey *j, const double ip[2])
+{
+    while (*src) {
+        char id[32];
+        size_t n = 0;
+        int k;
+        if (!(*src == '_' || (*src >= 'a' && *src <= 'z') || (*src >= 'A' && *src <= 'Z'))) {
+            id[0] = *src++;
+            id[1] = '\0';
+            pt_xt_add(t, id);
+            continue;
+        }
+        while ((*src == '_' || (*src >= 'a' && *src <= 'z') || (*src >= 'A' && *src <= 'Z') ||
+                (*src >= '0' && *src <= '9')) && n + 1 < sizeof id)
+            id[n++] = *src++;
+        id[n] = '\0';
+        for (k = 0; k < 2 && strcmp(id, pt_stage_infos[PT_STAGE_IMAGE].coord[k]); k++) ;
+        if (k < 2 && j) pt_xt_num(t, ip[k], 0);
+        else if (k < 2) pt_xt_add(t, course_ip[k]);
+        else if (j && !strcmp(id, "w")) pt_xt_int(t, j->par.w, 0);
+        else if (j && !strcmp(id, "h")) pt_xt_int(t, j->par.h, 0);
+        else pt_xt_add(t, id);
+    }
+}
+
+/* The pixel plane's formula: the stage table's (stages/pt_stage.c, the map
+** of s3_image2pixel.h, which the course's rasterizer makes too), in the
+** course's names. */
+static const char *pixel_formula(void)
+{
+    static char f[256];
+    pt_xt t;
+
+    if (!f[0]) {
+        pt_xt_init(&t, f, sizeof f);
+        table_text(&t, pt_stage_infos[PT_STAGE_PIXEL].formula, NULL, NULL);
+    }
+    return f;
+}
+
 const char *pt_cx_formula(int renderer, pt_cx_step st)
 {
     const pt_cx_row *r = &rows[st];
+
+    if (st == PT_CXS_PIXEL) return pixel_formula();
 
     if (st == PT_CXS_WORLD) return renderer == 9 ? r->formula9 : NULL;
     return renderer == 9 && r->formula9 ? r->formula9 : r->formula7;
@@ -650,20 +707,25 @@ static void step_clip(pt_xt *t, const pt_cx_journey *j, const char *sep)
     cut_offs(t, j, PT_CST_CLIP, sep);
 }
 
+/* The stage table's pixel formula (x's, then y's, split at ", "), each with
+** j's numbers put in. */
 static void step_pixel(pt_xt *t, const pt_cx_journey *j, const char *sep)
 {
-    pt_vec4 p = j->at[PT_CST_CLIP];
+    const char *f = pt_stage_infos[PT_STAGE_PIXEL].formula, *cut = strstr(f, ", ");
+    const double ip[2] = {j->at[PT_CST_CLIP].x, j->at[PT_CST_CLIP].y};
     pt_vec2 pp = pixel_plane(j);
+    char part[2][128];
     int k;
 
+    snprintf(part[0], sizeof part[0], "%.*s", cut ? (int)(cut - f) : (int)strlen(f), f);
+    snprintf(part[1], sizeof part[1], "%s", cut ? cut + 2 : "");
     for (k = 0; k < 2; k++) {
+        const char *rhs = strstr(part[k], " = ");
         if (k) pt_xt_add(t, sep);
-        pt_xt_add(t, k ? "y_pp = 0.5 + h/" : "x_pp = 0.5 + w/");
-        pt_xt_num(t, PT_PIXEL_DIVISOR, 0);
-        pt_xt_add(t, k ? " * (y_p + 1) = 0.5 + " : " * (x_p + 1) = 0.5 + ");
-        pt_xt_int(t, k ? j->par.h : j->par.w, 0); pt_xt_add(t, "/");
-        pt_xt_num(t, PT_PIXEL_DIVISOR, 0); pt_xt_add(t, " * (");
-        pt_xt_num(t, vcomp(p, k), 0); pt_xt_add(t, " + 1) = ");
+        table_text(t, part[k], NULL, NULL);
+        pt_xt_add(t, " = ");
+        table_text(t, rhs ? rhs + 3 : "", j, ip);
+        pt_xt_add(t, " = ");
         pt_xt_num(t, k ? pp.y : pp.x, 0);
     }
 }
@@ -855,6 +917,12 @@ size_t pt_cx_stage(char *buf, size_t len, const pt_cx_journey *j, pt_cx_step st,
 size_t pt_cx_explain_rec(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
                          const pt_cx_rec *r, const char *sep)
 {
+    return pt_cx_explain_step(buf, len, s, cam, r, pt_cx_step_of(r->st), sep);
+}
+
+size_t pt_cx_explain_step(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
+                          const pt_cx_rec *r, pt_cx_step step, const char *sep)
+{
     static const pt_course_stage before[PT_NCST] = {PT_CST_MODEL, PT_CST_MODEL, PT_CST_WORLD,
         PT_CST_VIEW, PT_CST_CAMERA, PT_CST_NEARCLIP, PT_CST_IMAGE};
     pt_course_stage pre = r->st == PT_CST_VIEW && s->renderer != 9 ? PT_CST_MODEL : before[r->st];
@@ -872,5 +940,6 @@ size_t pt_cx_explain_rec(char *buf, size_t len, const pt_scene *s, const pt_cour
         j.cut = *r->cut;
         j.cut_prim = r->cut_prim;
     }
-    return pt_cx_stage(buf, len, &j, pt_cx_step_of(r->st), sep);
+    if (r->st == PT_CST_CLIP) map_clipped(&j);
+    return pt_cx_stage(buf, len, &j, step, sep);
 }

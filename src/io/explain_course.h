@@ -105,7 +105,9 @@ int pt_cx_find(const pt_scene *s, uint64_t v, size_t *mi);
 ** its formula.  Can't fail. */
 typedef struct pt_cx_row {
     const char *name, *from, *to, *what;
-    const char *formula7;        /* renderer 7's (and 9's, without formula9) */
+    const char *formula7;        /* renderer 7's (and 9's, without formula9);
+                                 ** NULL for the pixel plane, whose formula is
+                                 ** the stage table's: ask pt_cx_formula() */
     const char *formula9;        /* NULL: renderer 9's is renderer 7's */
 } pt_cx_row;
 const pt_cx_row *pt_cx_row_of(pt_cx_step st);
@@ -145,5 +147,12 @@ typedef struct pt_cx_rec {
 ** short).  Can't fail. */
 size_t pt_cx_explain_rec(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
                          const pt_cx_rec *r, const char *sep);
+
+/* The same for step st: r->st's own (pt_cx_step_of()), or, when r is the
+** clip's record of a vertex the clip keeps, PT_CXS_PIXEL or PT_CXS_VIEWPORT
+** (the rasterizer's map of it; PT_CXS_RASTER needs a render's pixel lines:
+** pt_cx_run()).  Returns the length (>= len: cut short).  Can't fail. */
+size_t pt_cx_explain_step(char *buf, size_t len, const pt_scene *s, const pt_course_cam *cam,
+                          const pt_cx_rec *r, pt_cx_step st, const char *sep);
 
 #endif

@@ -13,7 +13,14 @@
 **                    entering it (EXPECTED's vertices and colours, a log's
 **                    primitive list): the real stage (stages/rv_nearclip.c,
 **                    rv_clip.c) with the near plane moved, or heard cut by
-**                    cut (pt_rv_clip_ls) and each new colour made the wrong way;
+**                    cut (pt_rv_clip_ls) and each new colour made the wrong way,
+**                    or asked segment by segment which end to cut at which
+**                    edge while the mistake makes each cut (the student's loop
+**                    then goes on from its own wrong point);
+**   position mistakes  a position's vertices at once: its matrix found
+**                    from EXPECTED's model and world vertices (least
+**                    squares), made the wrong way with r9_matrix.c's ops and
+**                    applied by the real stage (stages/r9_model2world.c);
 **   pixel mistakes   one pixel's colour, from EXPECTED's pixel colours, as an
 **                    interval (EXPECTED's colours are rounded: a byte, or 4
 **                    decimals), the rasterizer's pixels otherwise the same.
@@ -55,9 +62,19 @@ typedef struct pt_mistake79 {
                                  ** its anti-aliasing partner; or NULL */
     int gamma;                   /* 1: a mistake of the gamma, which leaves a
                                  ** segment's last pixel (written without gamma) be */
+    int (*position)(size_t n, const double (*prev)[4], const double (*right)[4], int alt,
+                    double (*out)[4]);
+                                 /* a position mistake: the stage's (x, y, z, w)
+                                 ** of a position's n vertices at once, from
+                                 ** the stage before and EXPECTED's own (what
+                                 ** the position's matrix is comes from them
+                                 ** all); alt 0, 1, .. are the ways the mistake
+                                 ** may have gone; 0, or -1 when there is no
+                                 ** such alt or the vertices do not fix the
+                                 ** matrix (fewer than 4 not in one plane); or NULL */
 } pt_mistake79;
 
-#define PT_NMISTAKES79 17
+#define PT_NMISTAKES79 19
 extern const pt_mistake79 pt_mistakes79[PT_NMISTAKES79];
 
 #endif

@@ -322,6 +322,16 @@ static void ask(quiz *q)
     }
 }
 
+/* Question i's formula and the numbers put in, as say_wrong() shows renderer 4's. */
+static void say_worked79(const pt_q79 *z, int i)
+{
+    char b[PT_EXPLAINLEN];
+    const char *f = pt_q79_formula(z, i);
+
+    printf("  %s\n", f ? f : "the scene gives:");
+    if (pt_q79_worked(z, i, b, sizeof b, "\n    ")) printf("    %s\n", b);
+}
+
 /* Ask q's questions of renderers 7 and 9 in turn, filling q->result: as
 ** ask() does, the right answer given after a wrong one. */
 static void ask79(quiz *q)
@@ -358,6 +368,7 @@ static void ask79(quiz *q)
         else {
             if (r < 0) printf("  wrong: column %d: %s\n", col, why);
             else printf("  wrong\n");
+            say_worked79(q->z, i);
             printf("  go on with %s = %s\n", pt_q79_values(q->z, i), b);
         }
     }

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/quiz79.h"
+#include "io/explain_course.h"
 #include "io/numfmt.h"
 
 #define TOL     1e-6             /* absolute and relative tolerance for reals */
@@ -49,6 +50,10 @@ typedef struct qa {              /* a question and its right answer */
     int ans;                     /* A_VAL, A_NONE, A_DROP */
     double v[4];                 /* the values (clip: the edge's number, t, x, y) */
     char name[16];               /* "clip2" */
+    pt_vec4 in, at;              /* V's end before its stage and after it (pixel,
+                                 ** viewport: after the clip), for the worked formula */
+    int has_cut;                 /* 1: cut is the cut the answer is */
+    pt_rv_cut cut;
 } qa;
 
 struct pt_q79 {
@@ -152,8 +157,9 @@ static int run_from(const pt_q79 *z, int from, pt_rv_model *m, qa *out, int *n,
     const pt_scene *s = z->s;
     pt_course_ls ls;
     pt_fb fb;
+    pt_vec4 before;
     cap k;
-    int i, rc = 0;
+    int i, rc = 0, nq0;
 
     memset(&fb, 0, sizeof fb);
     for (i = from; i < z->nsteps && rc == 0; i++) {
@@ -173,12 +179,17 @@ static int run_from(const pt_q79 *z, int from, pt_rv_model *m, qa *out, int *n,
         rls.ud = &k;
         ls.raster_ls = &rls;
         if (st == PT_CST_MODEL) {
-            put3(add_q(out, n, QK_MODEL, i, A_VAL), m->v[vend(z, m)]);
+            if ((a = add_q(out, n, QK_MODEL, i, A_VAL))) {
+                put3(a, m->v[vend(z, m)]);
+                a->in = a->at = m->v[vend(z, m)];
+            }
             continue;
         }
         if (st == PT_CST_RASTER) {
             if (pt_fb_init(&fb, s->fb_w, s->fb_h, s->vp_background) != 0) { rc = -1; break; }
         }
+        before = m->v[vend(z, m)];
+        nq0 = *n;
         if (pt_course_step(s, &z->pos, st, m, &fb, &ls) != 0) { rc = -1; break; }
         switch (st) {
         case PT_CST_WORLD: put3(add_q(out, n, QK_WORLD, i, A_VAL), m->v[vend(z, m)]); break;
@@ -230,6 +241,15 @@ static int run_from(const pt_q79 *z, int from, pt_rv_model *m, qa *out, int *n,
         }
         default:
             break;
+        }
+        for (j = nq0; j < *n; j++) {        /* the numbers its worked formula puts in */
+            out[j].in = before;
+            out[j].at = m->np ? m->v[vend(z, m)] : before;
+            if (out[j].kind == QK_NEAR || out[j].kind == QK_CLIP) {
+                out[j].has_cut = out[j].ans == A_VAL;
+                if (out[j].has_cut) out[j].cut = k.cut[j - nq0];
+                if (out[j].has_cut) out[j].at = k.cut[j - nq0].p[2];
+            }
         }
     }
     pt_fb_free(&fb);
@@ -373,6 +393,54 @@ static void answer_text(const qa *a, char *b, size_t n)
 void pt_q79_answer(const pt_q79 *z, int k, char *b, size_t n)
 {
     answer_text(&z->q[k], b, n);
+}
+
+/* The step of pipetrace step (io/explain_course.h) that answers kind k. */
+static pt_cx_step step_of(qkind k)
+{
+    switch (k) {
+    case QK_MODEL:    return PT_CXS_MODEL;
+    case QK_WORLD:    return PT_CXS_WORLD;
+    case QK_VIEW:     return PT_CXS_VIEW;
+    case QK_CAMERA:   return PT_CXS_CAMERA;
+    case QK_NEAR:     return PT_CXS_NEARCLIP;
+    case QK_IMAGE:    return PT_CXS_IMAGE;
+    case QK_CLIP:     return PT_CXS_CLIP;
+    case QK_PIXEL:    return PT_CXS_PIXEL;
+    case QK_VIEWPORT: return PT_CXS_VIEWPORT;
+    case QK_COLOR:    return PT_CXS_RASTER;
+    }
+    return PT_CXS_MODEL;
+}
+
+const char *pt_q79_formula(const pt_q79 *z, int k)
+{
+    qkind kd = z->q[k].kind;
+    return kd == QK_MODEL ? NULL : pt_cx_formula(z->s->renderer, step_of(kd));
+}
+
+size_t pt_q79_worked(const pt_q79 *z, int k, char *b, size_t n, const char *sep)
+{
+    const qa *a = &z->q[k];
+    static const pt_course_stage stage[] = {
+        [QK_MODEL] = PT_CST_MODEL, [QK_WORLD] = PT_CST_WORLD, [QK_VIEW] = PT_CST_VIEW,
+        [QK_CAMERA] = PT_CST_CAMERA, [QK_NEAR] = PT_CST_NEARCLIP, [QK_IMAGE] = PT_CST_IMAGE,
+        [QK_CLIP] = PT_CST_CLIP, [QK_PIXEL] = PT_CST_CLIP, [QK_VIEWPORT] = PT_CST_CLIP,
+        [QK_COLOR] = PT_CST_CLIP};
+    pt_course_cam cam;
+    pt_cx_rec r;
+
+    if (n) b[0] = '\0';
+    if (a->kind == QK_COLOR) return 0;      /* the pixel lines: pipetrace step */
+    pt_course_camera(z->s, &cam);
+    memset(&r, 0, sizeof r);
+    r.st = stage[a->kind];
+    r.pos = &z->pos;
+    r.prev = a->in;
+    r.cur = a->kind == QK_PIXEL || a->kind == QK_VIEWPORT ? a->in : a->at;
+    r.cut = a->has_cut ? &a->cut : NULL;
+    r.cut_prim = z->pick + 1;
+    return pt_cx_explain_step(b, n, z->s, &cam, &r, step_of(a->kind), sep);
 }
 
 /* a is b, within the tolerance (non-finite: the same value). */

@@ -20,6 +20,8 @@
 **             pixel: gamma, anti-aliasing; none outside the framebuffer)
 ** After "dropped" the segment is gone: no more questions.  A wrong answer
 ** "follows" when the stage, run on the sheet's own answer before it, gives it.
+** A wrong answer is shown its stage's formula with the right numbers put in
+** (pt_q79_worked(): io/explain_course.c's text, as pipetrace step writes it).
 */
 #ifndef PT_QUIZ79_H
 #define PT_QUIZ79_H
@@ -54,6 +56,16 @@ int pt_q79_stage_name(const char *name);
 
 /* Question k's right answer as a sheet would write it, into b. */
 void pt_q79_answer(const pt_q79 *q, int k, char *b, size_t n);
+
+/* Question k's formula, as pipetrace step shows its stage (io/explain_course.h);
+** NULL for the model's, which the scene gives.  Can't fail. */
+const char *pt_q79_formula(const pt_q79 *q, int k);
+
+/* Question k's stage with the right answer's numbers put in, as pipetrace
+** step writes it (pt_cx_explain_step()), the equations separated by sep,
+** into b.  Returns its length (>= n: cut short), 0 for the colour, whose
+** numbers are the render's pixel lines (pipetrace step shows them). */
+size_t pt_q79_worked(const pt_q79 *q, int k, char *b, size_t n, const char *sep);
 
 /* Grade line as the answer to question k.  res[] holds the results of the
 ** questions before k (1 right, 0 wrong, 2 follows, -1 unanswered), lines[]

@@ -43,7 +43,7 @@ mistake() {
     done
 }
 
-for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r9-view-skew; do
+for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -73,8 +73,48 @@ mistake r7-near clipbytes "the clip's colour interpolated in bytes"
 mistake r7-near neart "the near clip's t from y"
 mistake r7-clip1 clipt "the clip's t from the other coordinate"
 mistake r7-clip1 clipswap "the clip's edges swapped"
+# segments cut twice (entering and leaving, a corner, a corner missed): the
+# student's loop follows its own wrong first cut
+mistake r7-clip2 clipt "the clip's t from the other coordinate"
+mistake r7-clip2 clipswap "the clip's edges swapped"
 mistake r9-view-skew viewadd "the camera translation added"
 mistake r9-view-skew skewneg "the skew's sign wrong"
+# matrices that do not commute: rotate then translate, translate then rotate
+mistake r9-order matswap "the matrices multiplied in the wrong order"
+mistake r9-order mattrans "the matrix-vector product transposed"
+# three lines, one a scaling that is not uniform: the transposed product is
+# named; composed backwards, the matrix is neither [A | A t] nor [A | A^-1 t]
+mistake r9-order3 mattrans "the matrix-vector product transposed"
+unz r9-order3.matswap
+expect "r9-order3 matswap: three lines backwards" "$tmp/r9-order3.jsonl" "$tmp/r9-order3.matswap.log" 1 "Mistake: unknown"
+
+# ---- the new names on no other log: every student's log of every scene
+# against its scene's right log names neither world mistake nor, but on
+# r7-clip1 and r7-clip2, the clip's t or edges
+for f in "$data"/*.*.log.gz; do
+    b=$(basename "$f" .log.gz); sc=${b%%.*}; m=${b#*.}
+    [ "$m" = right ] && continue
+    gzip -dc "$f" >"$tmp/s.log"
+    "$exe" diff "$tmp/$sc.right.log" "$tmp/s.log" >"$tmp/out" 2>&1
+    case $b in
+    r9-order.*|r9-order3.mattrans) ;;
+    *) check "$b: no world mistake named" test "$(grep -c 'multiplied in the wrong order\|product transposed' "$tmp/out")" = 0 ;;
+    esac
+    case $b in
+    r7-clip1.*|r7-clip2.*) ;;
+    *) check "$b: no clip t or edge mistake named" test "$(grep -c "clip's t from the other\|clip's edges swapped" "$tmp/out")" = 0 ;;
+    esac
+done
+
+# ---- the world stage: first to differ, every vertex of both positions
+"$exe" diff "$tmp/r9-order.jsonl" "$tmp/r9-order.matswap.log" >"$tmp/out" 2>&1
+check "r9-order matswap: world, 16 of 16" grep -qF "First stage that differs: world (16 of 16 vertices)." "$tmp/out"
+check "... the model stage agrees" grep -qE "^  model +16 compared, 0 differ$" "$tmp/out"
+# every vertex must fit: one world vertex moved, and no mistake is named
+awk '/^1\. World +: vIndex = +5,/ && !done { sub(/\(x,y,z,w\)=\( +/, "&1"); done = 1 } { print }' \
+    "$tmp/r9-order.matswap.log" >"$tmp/moved.log"
+check "... (one vertex moved)" test "$(cmp "$tmp/moved.log" "$tmp/r9-order.matswap.log" 2>&1 | wc -l)" = 1
+expect "r9-order matswap, one vertex moved" "$tmp/r9-order.jsonl" "$tmp/moved.log" 1 "Mistake: unknown"
 
 # ---- where nothing separates two mistakes: ambiguous, on both logs
 for m in nearsign nearoff; do

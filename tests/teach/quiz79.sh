@@ -147,4 +147,45 @@ feed '1.5 1.8 0\n1 1 1 1\n' quiz $corner --vertex 2
 check "quiz79-7.6 from a file: an unreadable answer is wrong for its stage, with its column" \
     grep -qx "  wrong: column 7: more values than the stage has" "$tmp/out"
 
+# ---- a wrong answer shows its stage's formula with the numbers put in, as
+# pipetrace step does; each worked line evaluates (awk, in double) to the key
+# worked QUESTION NAME KEY: in $tmp/out's answer to QUESTION, the line
+# "NAME = FORMULA = EXPR = RESULT" with EXPR numbers only, EXPR == RESULT == KEY
+worked() {
+    line=$(sed -n "/^$1: /,/^  go on with/p" "$tmp/out" | grep -m1 "^    $2 = ") || return 1
+    expr=$(printf '%s\n' "$line" | awk -F ' = ' '{ print $(NF - 1) }')
+    res=$(printf '%s\n' "$line" | awk -F ' = ' '{ print $NF }')
+    case $expr in *[!-0-9.e+*/\(\)\ ]*|'') return 1 ;; esac
+    awk "BEGIN { v = $expr; exit !(v == $res && $res == $3) }"
+}
+kv() { sed -n "$2p" "$1" | cut -d' ' -f"$3"; }     # kv KEYFILE LINE FIELD
+yes '0 0 0' | head -9 > "$tmp/zeros"
+feed "$(cat "$tmp/zeros")\n" quiz $near --vertex 7
+check "quiz79-8.1 a wrong camera: x_c worked out, = the key" worked camera x_c "$(kv "$tmp/near7" 3 1)"
+check "quiz79-8.2 ... y_c" worked camera y_c "$(kv "$tmp/near7" 3 2)"
+check "quiz79-8.3 a wrong nearclip: its t" worked nearclip t "$(kv "$tmp/near7" 4 1)"
+check "quiz79-8.4 ... the new point's x" worked nearclip x "$(kv "$tmp/near7" 4 2)"
+check "quiz79-8.5 a wrong image: x_p" worked image x_p "$(kv "$tmp/near7" 5 1)"
+check "quiz79-8.6 a wrong clip: its t" worked clip t "$(kv "$tmp/near7" 6 2)"
+check "quiz79-8.7 ... the new point's x" worked clip x "$(kv "$tmp/near7" 6 3)"
+check "quiz79-8.8 a wrong pixel: x_pp" worked pixel x_pp "$(kv "$tmp/near7" 7 1)"
+check "quiz79-8.9 ... y_pp" worked pixel y_pp "$(kv "$tmp/near7" 7 2)"
+check "quiz79-8.10 a wrong viewport: x_vp" worked viewport x_vp "$(kv "$tmp/near7" 8 1)"
+check "quiz79-8.11 the model: the scene gives it" \
+    test "$(sed -n '/^model: /,/^  go on/p' "$tmp/out" | sed -n 3p)" = "  the scene gives:"
+step_formula=$("$exe" step $near --vertex 7 --all | sed -n '/^stage 5 of 9: image/,/formula/s/^  formula  //p')
+check "quiz79-8.12 the image's formula line is step's" \
+    grep -qxF "  $step_formula" "$tmp/out"
+check "quiz79-8.13 the colour: its formula, no numbers (step shows its pixel lines)" \
+    test "$(sed -n '/^color: /,/^  go on/p' "$tmp/out" | sed -n 3,4p | cut -c1-12)" = "$(printf '  weight f =\n  go on with')"
+r4_formula=$("$exe" step docs/examples/triangle.scene --vertex 1 --all | sed -n 's/^  formula  \(x_pp = .*\)/\1/p')
+check "quiz79-8.18 the pixel formula is the stage table's (renderer 4's step), x_ip named x_p" \
+    grep -qxF "  $(printf '%s\n' "$r4_formula" | sed 's/\([xy]\)_ip/\1_p/g')" "$tmp/out"
+feed "$(cat "$tmp/near7")\n" quiz $near --vertex 7
+check "quiz79-8.14 a right answer: no worked lines" test "$(grep -c '^    ' "$tmp/out")" = 0
+feed "$(cat "$tmp/zeros")\n" quiz $r9 --vertex 1
+check "quiz79-8.15 renderer 9, a wrong world: x_w = M times v_m" worked world x_w "$(kv "$tmp/r9" 2 1)"
+check "quiz79-8.16 ... z_w" worked world z_w "$(kv "$tmp/r9" 2 3)"
+check "quiz79-8.17 ... view subtracts the view vector" worked view x_v "$(kv "$tmp/r9" 3 1)"
+
 report

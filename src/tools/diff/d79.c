@@ -266,6 +266,7 @@ static void walk_pixels(const d79 *c, pixcount *pc, int (*f)(const d79 *, size_t
 /* The stage a vertex mistake of st computes from. */
 static int prev_stage(const d79 *c, int st)
 {
+    if (st == PT_T79_WORLD) return PT_T79_MODEL;
     if (st == PT_T79_CAMERA) return PT_T79_VIEW;
     if (st == PT_T79_VIEW) return c->t[0].renderer == 9 ? PT_T79_WORLD : PT_T79_MODEL;
     return -1;
@@ -279,6 +280,16 @@ static double gain(const pt_c79cam *cam)
     double s = fmax(2 / fabs(cam->r - cam->l), 2 / fabs(cam->t - cam->b));
     double g = 4 * (1 + fabs(cam->r + cam->l) + fabs(cam->t + cam->b)) * fmax(1, s);
     return isfinite(g) && g > 3 ? g : 3;
+}
+
+/* 1 when ACTUAL has every vertex EXPECTED has at stage st. */
+static int all_in_actual(const d79 *c, int st)
+{
+    size_t k;
+    for (k = 0; k < c->t[0].nvx; k++)
+        if (c->t[0].vx[k].st == st && !find(c, 1, c->t[0].vx[k].pos, st, c->t[0].vx[k].v))
+            return 0;
+    return 1;
 }
 
 /* 1 when vertex mistake m gives ACTUAL's values at its stage for every vertex. */
@@ -305,11 +316,65 @@ static int explains_vertices(const d79 *c, const pt_mistake79 *m, const pt_c79ca
         }
         any = 1;
     }
-    for (k = 0; k < c->t[0].nvx; k++)       /* none of that stage only EXPECTED has */
-        if (c->t[0].vx[k].st == m->stage &&
-            !find(c, 1, c->t[0].vx[k].pos, m->stage, c->t[0].vx[k].v))
-            return 0;
-    return any;
+    return any && all_in_actual(c, m->stage);
+}
+
+/* Record r's values as (x, y, z, w), w 1 when it has none. */
+static void xyzw(const pt_t79v *r, double o[4])
+{
+    o[0] = r->x[0]; o[1] = r->x[1]; o[2] = r->x[2]; o[3] = r->has_w ? r->x[3] : 1.0;
+}
+
+/* 1 when position mistake m gives ACTUAL's values at its stage for every
+** vertex of each position, by one of its ways (alt) per position. */
+static int explains_positions(const d79 *c, const pt_mistake79 *m)
+{
+    const pt_t79 *a = &c->t[1];
+    size_t k = 0, any = 0;
+    int ps = prev_stage(c, m->stage);
+
+    while (ps >= 0 && k < a->nvx) {
+        const pt_t79v *r = &a->vx[c->ix[1][k]];
+        size_t j = k, n, i;
+        double (*prev)[4], (*right)[4], (*out)[4], mag = 1;
+        int ok = 0, alt, bad = 0;
+        if (r->st != m->stage) { k++; continue; }
+        while (j < a->nvx && a->vx[c->ix[1][j]].pos == r->pos && a->vx[c->ix[1][j]].st == r->st) j++;
+        n = j - k;
+        prev = malloc(3 * n * sizeof *prev);
+        if (!prev) return 0;
+        right = prev + n;
+        out = prev + 2 * n;
+        for (i = 0; i < n && !bad; i++) {
+            const pt_t79v *q = &a->vx[c->ix[1][k + i]];
+            const pt_t79v *e = find(c, 0, q->pos, q->st, q->v), *p = find(c, 0, q->pos, ps, q->v);
+            int d;
+            if (!e || !p) { bad = 1; break; }
+            xyzw(p, prev[i]);
+            xyzw(e, right[i]);
+            for (d = 0; d < 3; d++) mag = fmax(mag, fmax(fabs(prev[i][d]), fabs(right[i][d])));
+        }
+        for (alt = 0; !bad && !ok && m->position(n, (const double (*)[4])prev,
+                                                (const double (*)[4])right, alt, out) == 0; alt++) {
+            /* EXPECTED's rounding (or the fit's own, on exact numbers)
+            ** through the fit: up to about mag^2 units */
+            double tol = a->vtol + (8 * c->t[0].vtol + 64 * DBL_EPSILON) * (1 + mag) * (1 + mag);
+            ok = 1;
+            for (i = 0; i < n && ok; i++) {
+                const pt_t79v *q = &a->vx[c->ix[1][k + i]];
+                int d;
+                for (d = 0; d < (q->has_w ? 4 : 3) && ok; d++) {
+                    double t = fmax(tol, fmax(c->o->tol, c->o->rel * fabs(out[i][d])));
+                    if (!(fabs(out[i][d] - q->x[d]) <= t) && out[i][d] != q->x[d]) ok = 0;
+                }
+            }
+        }
+        free(prev);
+        if (!ok) return 0;
+        any = 1;
+        k = j;
+    }
+    return any && all_in_actual(c, m->stage);
 }
 
 /* EXPECTED's colour of vertex v of pos at stage st, or the nearest stage
@@ -467,7 +532,7 @@ static int pixel_fits(const d79 *c, size_t ie, size_t ia, void *ud)
         f->m->pixel(p->rgb, partner, p->pair != 0, c->t[0].ptol, lo, hi);
     }
     for (k = 0; k < 3; k++)
-        if (q->rgb[k] < lo[k] - tol || q->rgb[k] > hi[k] + tol) { if (f->ok && getenv("D79")) fprintf(stderr, "%s: px %lld %lld k%d %g not in %g %g (e %g)\n", f->m->name, (long long)p->x, (long long)p->y, k, q->rgb[k], lo[k], hi[k], p->rgb[k]); f->ok = 0; }
+        if (q->rgb[k] < lo[k] - tol || q->rgb[k] > hi[k] + tol) f->ok = 0;
     return 0;
 }
 
@@ -493,6 +558,8 @@ static int fit(const d79 *c, int st, int *which)
         } else if (m->clip) {
             if (st == PT_T79_NEARCLIP && !c->t[0].have_cam) continue;
             ok = explains_clip(c, m, &cam);
+        } else if (m->position) {
+            ok = explains_positions(c, m);
         } else {
             pixfit f;
             pixcount pc;
