@@ -284,11 +284,11 @@ check "hostile-13.2 diff: a row of pixels x = 0 .. 9 moved by (1, 1) in a 10-wid
 check "hostile-13.3 ... one of them out of the framebuffer" \
     sh -c 'tr "\n" " " < "$1" | grep -q "1 of them out of the *framebuffer"' _ "$tmp/out"
 
-# ---- journey, why and accuracy keep every vertex's journey: a cap on the
+# ---- journey and accuracy keep every vertex's journey: a cap on the
 # scene (PT_CLI_KEEP_VERTICES, _SEGMENTS) and on the pixels kept, each said
 # at once (one `shape sphere 1 1400 1400` line took 3 GB before)
 printf 'model s\nshape sphere 1 1400 1400\ntranslate 0 0 -3\n' > "$tmp/sphere.scene"
-for c in "journey --vertex 1 --svg $tmp/sph.svg" "why 200 150" "accuracy --no-time"; do
+for c in "journey --vertex 1 --svg $tmp/sph.svg" "accuracy --no-time"; do
     cmd=${c%% *}
     lim "${cap:-unlimited}" "'$exe' $cmd '$tmp/sphere.scene' ${c#* }"
     check "hostile-14.1 $cmd of a 1,960,002-vertex sphere: refused (exit $rc), under a 400 MB cap" test "$rc" = 2
@@ -300,8 +300,8 @@ check "hostile-14.3 ... and no picture" test ! -e "$tmp/sph.svg"
 run why "$tmp/cap.scene" 1 1
 check "hostile-14.4 why of 100,000 vertices (the cap): done (exit $rc)" test "$rc" = 0
 { echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'model n'; echo 'v 0 0 -1'; } > "$tmp/cap1.scene"
-run why "$tmp/cap1.scene" 1 1
-check "hostile-14.5 ... 100,001 in two models: refused" \
+run journey "$tmp/cap1.scene" --vertex 1 --svg "$tmp/c1.svg"
+check "hostile-14.5 journey of 100,001 vertices in two models: refused" \
     sh -c 'test "$1" = 2 && grep -q "has 100001 vertices" "$2"' _ "$rc" "$tmp/err"
 { echo 'model m'; echo 'v 0 0 -1'; yes 'l 1 1' | head -n 400001; } > "$tmp/cap2.scene"
 run journey "$tmp/cap2.scene" --vertex 1 --svg "$tmp/c2.svg"
@@ -313,6 +313,23 @@ lim "${cap:-unlimited}" "'$exe' journey '$tmp/px.scene' --vertex 1 --svg '$tmp/p
 check "hostile-14.7 journey of 600 diagonals of a 16384 x 16384 framebuffer (9.8 M pixels): refused (exit $rc)" \
     test "$rc" = 2
 check "hostile-14.8 ... saying the pixel cap" grep -q "^pipetrace journey: a model of .* draws more than 8000000 pixels; journey keeps them in memory and takes at most that many (docs/limits.md)$" "$tmp/err"
+# why keeps of every vertex only what measuring a segment needs (32 bytes)
+# and the whole journeys of the vertices it shows: a sphere of 360,002
+# vertices (616 MB of journeys, refused before) under a 300 MB cap, and a
+# pixel of it the same as the image says
+printf 'model s\nshape sphere 1 600 600\ntranslate 0 0 -3\n' > "$tmp/sph6.scene"
+if [ -n "$capped" ]; then
+lim 300000 "'$exe' why '$tmp/sph6.scene' 400 300"
+check "hostile-14.9 why of a 360,002-vertex sphere under a 300 MB cap: done (exit $rc)" test "$rc" = 0
+check "hostile-14.10 ... lit by segments, each with its two vertices' journeys" \
+    sh -c 'grep -q "^lit by:$" "$1" && n=$(grep -c "^  s s[0-9]* (v" "$1") &&
+           test "$n" -ge 1 -a "$(grep -c "^    v[0-9]*  model (" "$1")" = $((2 * n))' _ "$tmp/out"
+fi
+"$exe" why "$tmp/sph6.scene" 400 300 > "$tmp/w6" 2>&1
+"$exe" "$tmp/sph6.scene" --image "$tmp/sph6.ppm" > /dev/null 2>&1
+px=$(tail -c $((3 * (800 * 600 - (300 * 800 + 400)))) "$tmp/sph6.ppm" | head -c 3 | od -An -tu1 | tr -s ' ' ' ')
+check "hostile-14.11 ... its colour that of the image's pixel (400, 300) (${px# })" \
+    grep -q "^color${px% } *: s s[0-9]* is the last segment drawn there$" "$tmp/w6"
 
 # ---- a point's radius costs the viewport, not (2r + 1)^2: 200 points of
 # radius 4096 in renderer 7 (about 25 s of CPU when every one of their 67
