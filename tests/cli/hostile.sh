@@ -296,6 +296,11 @@ for c in "journey --vertex 1 --svg $tmp/sph.svg" "accuracy --no-time"; do
         "pipetrace $cmd: $tmp/sphere.scene has 1960002 vertices; $cmd keeps every vertex's journey in memory and takes at most 100000 vertices and 400000 segments (docs/limits.md)"
 done
 check "hostile-14.3 ... and no picture" test ! -e "$tmp/sph.svg"
+if [ -n "$capped" ]; then
+lim 400000 "'$exe' journey '$tmp/sphere.scene' --vertex 1 --image '$tmp/sph.ppm'"
+check "hostile-14.14 journey --image alone (one journey kept) of the same sphere: done under the 400 MB cap (exit $rc)" \
+    test "$rc" = 0 -a -s "$tmp/sph.ppm"
+fi
 { echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'l 1 2'; } > "$tmp/cap.scene"
 run why "$tmp/cap.scene" 1 1
 check "hostile-14.4 why of 100,000 vertices (the cap): done (exit $rc)" test "$rc" = 0
@@ -312,7 +317,19 @@ check "hostile-14.6 journey of 400,001 segments: refused" \
 lim "${cap:-unlimited}" "'$exe' journey '$tmp/px.scene' --vertex 1 --svg '$tmp/px.svg'"
 check "hostile-14.7 journey of 600 diagonals of a 16384 x 16384 framebuffer (9.8 M pixels): refused (exit $rc)" \
     test "$rc" = 2
-check "hostile-14.8 ... saying the pixel cap" grep -q "^pipetrace journey: a model of .* draws more than 8000000 pixels; journey keeps them in memory and takes at most that many (docs/limits.md)$" "$tmp/err"
+check "hostile-14.8 ... saying the pixel cap" grep -q "^pipetrace journey: the segments of the vertices shown of .* draw more than 8000000 pixels; journey keeps them in memory and takes at most that many (docs/limits.md)$" "$tmp/err"
+# the pixels kept are those of the segments of the vertex shown: the same
+# 9.8 M pixels beside a short segment whose vertex is shown (refused before)
+{ cat "$tmp/px.scene"; printf 'v 0 0 -1\nv 0.001 0 -1\nl 3 4\n'; } > "$tmp/px3.scene"
+lim "${cap:-unlimited}" "'$exe' journey '$tmp/px3.scene' --vertex 3 --svg '$tmp/px3.svg'"
+check "hostile-14.12 journey of a vertex beside 9.8 M pixels of other segments: done (exit $rc)" \
+    test "$rc" = 0
+{ head -n 4 "$tmp/px.scene"; printf 'v 0 0 -1\nv 0.001 0 -1\nl 3 4\n'; } > "$tmp/px3b.scene"
+"$exe" journey "$tmp/px3b.scene" --vertex 3 --svg "$tmp/px3b.svg"
+inset() { sed -n '/data-stage="viewport"/,/<\/g>/p' "$1" | sed -n '/<g class="inset">/,/<\/g>/p'; }
+check "hostile-14.13 ... its segment's pixels in the viewport panel's zoom as without the others" \
+    sh -c 'test -n "$1" -a "$1" = "$2" && echo "$1" | grep -q "fill=.#a8c7ee"' _ \
+    "$(inset "$tmp/px3.svg")" "$(inset "$tmp/px3b.svg")"
 # why keeps of every vertex only what measuring a segment needs (32 bytes)
 # and the whole journeys of the vertices it shows: a sphere of 360,002
 # vertices (616 MB of journeys, refused before) under a 300 MB cap, and a

@@ -24,8 +24,9 @@
                                  ** stage's rectangle in each direction */
 #define PT_JOURNEY_MAXSEG  5000  /* faint wireframe: the first this many segments */
 #define PT_JOURNEY_MAXV    2000  /* the HTML page: at most this many vertices */
-#define PT_JOURNEY_MAXPIX  8000000  /* pixels a model's run draws, kept (16 bytes
-                                     ** each): past it, journey stops, -2 */
+#define PT_JOURNEY_MAXPIX  8000000  /* pixels the segments of the vertices shown
+                                     ** draw, kept (16 bytes each): past it,
+                                     ** journey stops, -2 */
 #define PT_JOURNEY_FRAMEMAX 16777216  /* framebuffer panel: the whole frame drawn
                                       ** up to this many pixels (W x H) */
 #define PT_JOURNEY_RED_RGB {214, 39, 40}    /* the vertex's red, "#d62728" in the
@@ -45,8 +46,9 @@ typedef struct pt_jmodel {
     const struct pt_jrows *rows; /* its pipeline's panels (jrows.h) */
     pt_stage_params par;         /* the numbers of the formulas */
     pt_journey *js;              /* js[k]: vertex k + 1's journey, from pt_run(); owned */
-    pt_jpix *pix;                /* the pixels drawn of the model's segments, from
-                                 ** the same pt_run()'s pixel records, in record
+    pt_jpix *pix;                /* the pixels drawn of the segments of the
+                                 ** vertices shown (the others': none), from the
+                                 ** same pt_run()'s pixel records, in record
                                  ** order; owned */
     size_t *pixat;               /* segment s's: pix[pixat[s] .. pixat[s + 1]);
                                  ** nseg + 1 of them; owned */

@@ -28,6 +28,7 @@
 /* What run_model() keeps of the records of one pt_run(). */
 typedef struct keeper {
     pt_jmodel *jm;
+    const unsigned char *show;   /* show[k]: vertex k + 1's foreground is drawn */
     size_t npix, cap;            /* pixels in jm->pix, room for */
     size_t nstart;               /* segments whose jm->pixat is set */
     int oom;                     /* 1: out of memory; 2: past PT_JOURNEY_MAXPIX */
@@ -57,6 +58,7 @@ static void keep_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_p
 
     if (m != jm->m || kp->oom) return;
     seg_reach(kp, seg);
+    if (!kp->show[m->seg[seg - 1].a] && !kp->show[m->seg[seg - 1].b]) return;  /* not drawn */
     if (n > PT_JOURNEY_MAXPIX - kp->npix) { kp->oom = 2; return; }
     if (kp->npix + n > kp->cap) {
         size_t cap = kp->cap ? 2 * kp->cap : 1024;
@@ -76,10 +78,11 @@ static void keep_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_p
 }
 
 /* One pt_run() of model jm->m (every vertex traced, used or not): each
-** vertex's journey into jm->js, the pixels drawn of each segment into
-** jm->pix and jm->pixat.  Returns 0, or -1 when out of memory, -2 past
-** PT_JOURNEY_MAXPIX pixels. */
-static int run_model(pt_jmodel *jm)
+** vertex's journey into jm->js, the pixels drawn of each segment of a vertex
+** shown (the only ones a panel draws) into jm->pix and jm->pixat (the others
+** get none).  Returns 0, or -1 when out of memory, -2 past PT_JOURNEY_MAXPIX
+** pixels. */
+static int run_model(pt_jmodel *jm, const unsigned char *show)
 {
     const pt_model *m = jm->m;
     pt_options o;
@@ -91,6 +94,7 @@ static int run_model(pt_jmodel *jm)
     if (!jm->js || !jm->pixat) return -1;
     memset(&kp, 0, sizeof kp);
     kp.jm = jm;
+    kp.show = show;
     pt_options_default(&o);
     o.model = m->name;           /* models of the same name: the callbacks pick m */
     o.every_vertex = 1;
@@ -104,7 +108,8 @@ static int run_model(pt_jmodel *jm)
     return 0;
 }
 
-int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame)
+int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame,
+                   const unsigned char *show)
 {
     double area[4] = { PT_JBOX_X, PT_JBOX_Y, PT_JBOX_X + PT_JBOX_W, PT_JBOX_Y + PT_JBOX_H };
     int st, rc;
@@ -114,7 +119,7 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt
     jm->m = m;
     jm->rows = &pt_jpipes[pt_scene_pipeline(s)->id];
     pt_stage_params_of(&jm->par, s, m);
-    if ((rc = run_model(jm)) != 0) { pt_jmodel_free(jm); return rc; }
+    if ((rc = run_model(jm, show)) != 0) { pt_jmodel_free(jm); return rc; }
     if (!(jm->place = calloc(PT_NSTAGES_ALL, sizeof *jm->place))) { pt_jmodel_free(jm); return -1; }
     for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_init(&jm->place[st], area);
     if (jm->rows->layout(jm) != 0) { pt_jmodel_free(jm); return -1; }
@@ -345,8 +350,13 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
     pt_sbuf t;
     int i, rc, n = pt_scene_pipeline(s)->norder;
     const pt_stage *ord = pt_scene_pipeline(s)->order;
+    unsigned char *show = calloc(m->nv ? m->nv : 1, 1);
 
-    if ((rc = pt_jmodel_init(&jm, s, m, NULL)) != 0) return rc;
+    if (!show) return -1;
+    show[vn - 1] = 1;
+    rc = pt_jmodel_init(&jm, s, m, NULL, show);
+    free(show);
+    if (rc != 0) return rc;
     pt_sbuf_add(sb, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     pt_sbuf_addf(sb, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %d %d\" "
                  "width=\"100%%\" font-family=\"%s\">\n", DOC_W, DOC_H(n), PT_JFONT);

@@ -289,7 +289,11 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     }
     for (mi = 0; mi < s->nmodels; mi++) {
         if (!has[mi]) continue;
-        if ((i = pt_jmodel_init(&jms[mi], s, &s->models[mi], frame)) != 0) {
+        free(used);                         /* now: the model's vertices listed */
+        if (!(used = calloc(s->models[mi].nv ? s->models[mi].nv : 1, 1))) goto done;
+        for (k = 0; k < n; k++)
+            if (items[k].m == mi) used[items[k].v - 1] = 1;
+        if ((i = pt_jmodel_init(&jms[mi], s, &s->models[mi], frame, used)) != 0) {
             rc = i;
             goto done;
         }

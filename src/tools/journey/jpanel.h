@@ -45,8 +45,9 @@ void pt_jfg_point(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t 
 void pt_jfg_path(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stage st);
 
 /* The pixels pt_run() drew of every segment that uses vertex k + 1, from its
-** pixel records (jm->pix, kept by pt_jmodel_init's run), in segment and step
-** order into px(ud, x_vp, y_vp).  This function can't fail. */
+** pixel records (jm->pix, kept by pt_jmodel_init's run for the vertices it
+** was told are shown: k + 1 must be one), in segment and step order into
+** px(ud, x_vp, y_vp).  This function can't fail. */
 void pt_jraster_segs(const pt_jmodel *jm, size_t k, void (*px)(void *, int64_t, int64_t),
                      void *ud);
 
