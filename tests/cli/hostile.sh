@@ -330,6 +330,13 @@ inset() { sed -n '/data-stage="viewport"/,/<\/g>/p' "$1" | sed -n '/<g class="in
 check "hostile-14.13 ... its segment's pixels in the viewport panel's zoom as without the others" \
     sh -c 'test -n "$1" -a "$1" = "$2" && echo "$1" | grep -q "fill=.#a8c7ee"' _ \
     "$(inset "$tmp/px3.svg")" "$(inset "$tmp/px3b.svg")"
+# accuracy keeps its image's pixels once each: 2101 segments over one row,
+# 8.4 M writes (past the old cap of 8,000,000 writes), 4000 pixels
+awk 'BEGIN { print "framebuffer 4000 4"; print "model m"; print "v -2 0 -2"; print "v 2 0 -2";
+             for (i = 0; i < 2101; i++) print "l 1 2" }' > "$tmp/over.scene"
+run accuracy "$tmp/over.scene" --no-time
+check "hostile-14.15 accuracy of 8.4 M pixel writes on 4000 pixels: done (exit $rc)" \
+    test "$rc" = 0 -a -n "$(grep '3999 pixels in the reference image' "$tmp/out")"
 # why keeps of every vertex only what measuring a segment needs (32 bytes)
 # and the whole journeys of the vertices it shows: a sphere of 360,002
 # vertices (616 MB of journeys, refused before) under a 300 MB cap, and a
