@@ -284,17 +284,14 @@ check "hostile-13.2 diff: a row of pixels x = 0 .. 9 moved by (1, 1) in a 10-wid
 check "hostile-13.3 ... one of them out of the framebuffer" \
     sh -c 'tr "\n" " " < "$1" | grep -q "1 of them out of the *framebuffer"' _ "$tmp/out"
 
-# ---- journey and accuracy keep every vertex's journey: a cap on the
-# scene (PT_CLI_KEEP_VERTICES, _SEGMENTS) and on the pixels kept, each said
-# at once (one `shape sphere 1 1400 1400` line took 3 GB before)
+# ---- accuracy keeps every vertex's journey: a cap on the scene
+# (PT_CLI_KEEP_VERTICES, _SEGMENTS), said at once (one `shape sphere 1 1400
+# 1400` line took 3 GB before); journey and why keep only what they show
 printf 'model s\nshape sphere 1 1400 1400\ntranslate 0 0 -3\n' > "$tmp/sphere.scene"
-for c in "journey --vertex 1 --svg $tmp/sph.svg" "accuracy --no-time"; do
-    cmd=${c%% *}
-    lim "${cap:-unlimited}" "'$exe' $cmd '$tmp/sphere.scene' ${c#* }"
-    check "hostile-14.1 $cmd of a 1,960,002-vertex sphere: refused (exit $rc), under a 400 MB cap" test "$rc" = 2
-    check "hostile-14.2 ... saying the cap" test "$(cat "$tmp/err")" = \
-        "pipetrace $cmd: $tmp/sphere.scene has 1960002 vertices; $cmd keeps every vertex's journey in memory and takes at most 100000 vertices and 400000 segments (docs/limits.md)"
-done
+lim "${cap:-unlimited}" "'$exe' accuracy '$tmp/sphere.scene' --svg '$tmp/sph.svg'"
+check "hostile-14.1 accuracy of a 1,960,002-vertex sphere: refused (exit $rc), under a 400 MB cap" test "$rc" = 2
+check "hostile-14.2 ... saying the cap" test "$(cat "$tmp/err")" = \
+    "pipetrace accuracy: $tmp/sphere.scene has 1960002 vertices; accuracy keeps every vertex's journey in memory and takes at most 100000 vertices and 400000 segments (docs/limits.md)"
 check "hostile-14.3 ... and no picture" test ! -e "$tmp/sph.svg"
 if [ -n "$capped" ]; then
 lim 400000 "'$exe' journey '$tmp/sphere.scene' --vertex 1 --image '$tmp/sph.ppm'"
@@ -305,12 +302,12 @@ fi
 run why "$tmp/cap.scene" 1 1
 check "hostile-14.4 why of 100,000 vertices (the cap): done (exit $rc)" test "$rc" = 0
 { echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'model n'; echo 'v 0 0 -1'; } > "$tmp/cap1.scene"
-run journey "$tmp/cap1.scene" --vertex 1 --svg "$tmp/c1.svg"
-check "hostile-14.5 journey of 100,001 vertices in two models: refused" \
+run accuracy "$tmp/cap1.scene" --no-time
+check "hostile-14.5 accuracy of 100,001 vertices in two models: refused" \
     sh -c 'test "$1" = 2 && grep -q "has 100001 vertices" "$2"' _ "$rc" "$tmp/err"
 { echo 'model m'; echo 'v 0 0 -1'; yes 'l 1 1' | head -n 400001; } > "$tmp/cap2.scene"
-run journey "$tmp/cap2.scene" --vertex 1 --svg "$tmp/c2.svg"
-check "hostile-14.6 journey of 400,001 segments: refused" \
+run accuracy "$tmp/cap2.scene" --no-time
+check "hostile-14.6 accuracy of 400,001 segments: refused" \
     sh -c 'test "$1" = 2 && grep -q "has 400001 segments" "$2"' _ "$rc" "$tmp/err"
 { printf 'framebuffer 16384 16384\nmodel m\nv -0.99 -0.99 -1\nv 0.99 0.99 -1\n'
   yes 'l 1 2' | head -n 600; } > "$tmp/px.scene"
@@ -348,6 +345,16 @@ check "hostile-14.9 why of a 360,002-vertex sphere under a 300 MB cap: done (exi
 check "hostile-14.10 ... lit by segments, each with its two vertices' journeys" \
     sh -c 'grep -q "^lit by:$" "$1" && n=$(grep -c "^  s s[0-9]* (v" "$1") &&
            test "$n" -ge 1 -a "$(grep -c "^    v[0-9]*  model (" "$1")" = $((2 * n))' _ "$tmp/out"
+fi
+# journey keeps the whole journeys of the vertices it draws (the vertex, its
+# neighbours, the wireframe's first 5000 segments) and the extent of the
+# others: the same sphere under the same cap, its panels fitted as before
+if [ -n "$capped" ]; then
+lim 300000 "'$exe' journey '$tmp/sph6.scene' --vertex 180149 --svg '$tmp/sph6.svg'"
+check "hostile-14.16 journey of a vertex of the 360,002-vertex sphere under a 300 MB cap: done (exit $rc)" \
+    sh -c 'test "$1" = 0 && test "$(grep -c "<g class=\"panel\"" "$2")" = 7' _ "$rc" "$tmp/sph6.svg"
+check "hostile-14.17 ... its viewport panel marks pixel (401, 300), as why says" \
+    grep -q "(x_vp, y_vp) = (401, 300)" "$tmp/sph6.svg"
 fi
 "$exe" why "$tmp/sph6.scene" 400 300 > "$tmp/w6" 2>&1
 "$exe" "$tmp/sph6.scene" --image "$tmp/sph6.ppm" > /dev/null 2>&1

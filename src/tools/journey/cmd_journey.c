@@ -232,9 +232,11 @@ int pt_cmd_journey(int argc, char **argv)
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     {
         const char *out[3] = {svg, html, image}, *opt[3] = {"--svg", "--html", "--image"};
-        /* --image alone keeps one journey and the image: no cap */
+        /* the classic and matrix cameras keep only the journeys they draw
+        ** (journey.h): no cap; the course's renderers 7 and 9 keep every
+        ** primitive's (journey_course.c) */
         if (pt_cli_outputs_objs(&s, out, opt, 3) != 0 ||
-            ((svg || html) && pt_cli_keep_cap(&s, "journey") != 0)) {
+            ((s.renderer == 7 || s.renderer == 9) && pt_cli_keep_cap(&s, "journey") != 0)) {
             pt_scene_free(&s);
             return PT_EXIT_INPUT;
         }

@@ -17,6 +17,7 @@
 #include "tools/journey/journey.h"
 #include "tools/journey/jdraw.h"
 #include "tools/journey/jrows.h"
+#include "tools/journey/jpanel.h"
 #include "io/numfmt.h"
 #include "core/pipetrace.h"
 
@@ -31,14 +32,50 @@ typedef struct keeper {
     const unsigned char *show;   /* show[k]: vertex k + 1's foreground is drawn */
     size_t npix, cap;            /* pixels in jm->pix, room for */
     size_t nstart;               /* segments whose jm->pixat is set */
+    size_t nkept;                /* journeys in jm->kept so far */
     int oom;                     /* 1: out of memory; 2: past PT_JOURNEY_MAXPIX */
 } keeper;
 
+/* A vertex's journey: its part in the layout when a segment uses it, the
+** whole journey when it is one jm->keep lists (they come in vertex order). */
 static void keep_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
 {
     keeper *kp = ud;
+    pt_jmodel *jm = kp->jm;
 
-    if (m == kp->jm->m && v >= 1 && v <= m->nv) kp->jm->js[v - 1] = *j;
+    if (m != jm->m || v < 1 || v > m->nv) return;
+    if (jm->used[v - 1]) jm->rows->absorb(jm, j, (size_t)(v - 1));
+    if (kp->nkept < jm->nkeep && jm->keep[kp->nkept] == v - 1) jm->kept[kp->nkept++] = *j;
+}
+
+/* The vertices whose journeys the panels draw into jm->keep, ascending; the
+** used ones into jm->used; the shown ones into jm->show.  Returns 0, or -1
+** when out of memory. */
+static int choose_kept(pt_jmodel *jm, const unsigned char *show)
+{
+    const pt_model *m = jm->m;
+    size_t nv = m->nv ? m->nv : 1, s, k;
+    unsigned char *want = calloc(nv, 1);
+
+    jm->used = calloc(nv, 1);
+    jm->show = malloc(nv);
+    if (!want || !jm->used || !jm->show) { free(want); return -1; }
+    memcpy(jm->show, show, m->nv);
+    if (m->nv) want[0] = 1;                  /* the matrices every journey carries */
+    for (k = 0; k < m->nv; k++) want[k] |= show[k];
+    for (s = 0; s < m->nseg; s++) {
+        size_t a = m->seg[s].a, b = m->seg[s].b;
+        jm->used[a] = jm->used[b] = 1;
+        if (pt_jseg_drawn(jm, s)) want[a] = want[b] = 1;
+    }
+    for (k = 0; k < m->nv; k++) jm->nkeep += want[k];
+    jm->keep = malloc((jm->nkeep ? jm->nkeep : 1) * sizeof *jm->keep);
+    jm->kept = calloc(jm->nkeep ? jm->nkeep : 1, sizeof *jm->kept);
+    if (!jm->keep || !jm->kept) { free(want); return -1; }
+    for (k = 0, s = 0; k < m->nv; k++)
+        if (want[k]) jm->keep[s++] = k;
+    free(want);
+    return 0;
 }
 
 /* Segments before seg (1-based) have all their pixels: mark where seg's
@@ -77,11 +114,13 @@ static void keep_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_p
     }
 }
 
-/* One pt_run() of model jm->m (every vertex traced, used or not): each
-** vertex's journey into jm->js, the pixels drawn of each segment of a vertex
-** shown (the only ones a panel draws) into jm->pix and jm->pixat (the others
-** get none).  Returns 0, or -1 when out of memory, -2 past PT_JOURNEY_MAXPIX
-** pixels. */
+/* One pt_run() of model jm->m (every vertex traced, used or not): each used
+** vertex's part in the layout into jm->span (its pipeline's absorb), the
+** whole journeys of the vertices drawn into jm->kept (choose_kept()), the
+** pixels drawn of each segment of a vertex shown (the only ones a panel
+** draws) into jm->pix and jm->pixat (the others get none).  Nothing else of
+** the run is kept.  Returns 0, or -1 when out of memory, -2 past
+** PT_JOURNEY_MAXPIX pixels. */
 static int run_model(pt_jmodel *jm, const unsigned char *show)
 {
     const pt_model *m = jm->m;
@@ -89,9 +128,11 @@ static int run_model(pt_jmodel *jm, const unsigned char *show)
     pt_listener l;
     keeper kp;
 
-    jm->js = calloc(m->nv ? m->nv : 1, sizeof *jm->js);
+    pt_jspan_start(&jm->span);
+    if (choose_kept(jm, show) != 0) return -1;
+    jm->code = calloc(m->nv ? m->nv : 1, 1);      /* the matrix camera's absorb fills it */
     jm->pixat = calloc(m->nseg + 1, sizeof *jm->pixat);
-    if (!jm->js || !jm->pixat) return -1;
+    if (!jm->code || !jm->pixat) return -1;
     memset(&kp, 0, sizeof kp);
     kp.jm = jm;
     kp.show = show;
@@ -165,8 +206,15 @@ void pt_jmodel_free(pt_jmodel *jm)
         for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_free(&jm->place[st]);
     free(jm->place);
     jm->place = NULL;
-    free(jm->js);
-    jm->js = NULL;
+    free(jm->used);
+    free(jm->show);
+    free(jm->keep);
+    free(jm->kept);
+    free(jm->code);
+    jm->used = jm->show = jm->code = NULL;
+    jm->keep = NULL;
+    jm->kept = NULL;
+    jm->nkeep = 0;
     free(jm->pix);
     free(jm->pixat);
     jm->pix = NULL;
@@ -268,7 +316,7 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
     pt_jdraw_to(&jm->place[st]);
     for (s = 0; s < jm->m->nseg && !used; s++)
         used = jm->m->seg[s].a == k || jm->m->seg[s].b == k;
-    j = &jm->js[k];
+    j = pt_jmodel_journey(jm, k);
     stopped = pt_journey_stopped(j, st) && rows->stopped_fg;
     if (stopped) rows->stopped_fg(sb, jm, j, k, st);   /* a stage it did not reach */
     else if (rows->stage[st]) rows->stage[st]->fg(sb, jm, j, k, st);

@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/journey/journey.h"
+#include "tools/journey/jpanel.h"
 #include "tools/journey/journey_wasm.h"
 
 /* The page scales with the window: type in rem, the root's size following the
@@ -236,7 +237,7 @@ static void texts(pt_sbuf *sb, const pt_jmodel *jm, const item *it, int kind)
     pt_journey j;
     int i, st;
 
-    j = jm->js[it->v - 1];
+    j = *pt_jmodel_journey(jm, (size_t)(it->v - 1));
     pt_sbuf_add(sb, "[");
     for (i = 0; i < j.pipe->norder; i++) {
         st = j.pipe->order[i];
