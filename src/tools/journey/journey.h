@@ -29,6 +29,12 @@
 ** edge pointing toward it.  When pixels are too small to see, the pixel
 ** panels add a zoom inset around the vertex's pixel.
 **
+** Memory follows what is drawn, not the model: the one run keeps the whole
+** journeys of the vertices drawn (shown, their neighbours, the wireframe's
+** first PT_JOURNEY_MAXSEG segments), the pixels of the segments shown, and
+** of every other vertex only its part in the layout, gathered as it passes
+** (pt_jspan); per vertex a few bytes, per segment its pixels' place.
+**
 ** Everything is written into a pt_sbuf (no stdio); coordinates in panel units
 ** with one decimal, every text XML-escaped.
 **
