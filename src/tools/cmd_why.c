@@ -12,7 +12,11 @@
 ** pixel drawn nearest, whether a clipped step landed on the pixel), and a
 ** degenerate segment is the one whose records add up to a single step.  Each
 ** segment that lit it is shown with its two vertices' journeys, model to
-** index.  A pixel that nothing lit gets the segments that come nearest,
+** index.  Memory grows with what is shown, not with the scene's journeys:
+** of every vertex the run keeps only what measuring a segment needs (its
+** pixel-plane point and viewport pixel, 32 bytes), and the whole journeys of
+** the few vertices the report shows come from a second run that keeps those
+** alone (vertices only, nothing drawn).  A pixel that nothing lit gets the segments that come nearest,
 ** measured from the pixel's centre to the segment between its two
 ** pixel-plane endpoints (before rounding), mapped to
 ** framebuffer coordinates: the logical pixel (x_pp, y_pp) is the point
@@ -99,11 +103,23 @@ typedef struct seg_eval {
     double dist_drawn;           /* ... to the segment between rounded endpoints */
 } seg_eval;
 
-/* The pixel asked about, in viewport coordinates, and what one segment did. */
-typedef struct look {
-    int64_t tx, ty;              /* target (x_vp, y_vp) */
-    seg_eval *e;
-} look;
+/* What measuring a segment needs of one of its ends, from the vertex's
+** journey: kept for every vertex, instead of the journey's 1.5 KB. */
+typedef struct vend {
+    double x_pp, y_pp;           /* the pixel stage's point */
+    int64_t x_vp, y_vp;          /* the viewport stage's pixel (as its record
+                                 ** holds it, whatever its flags) */
+} vend;
+
+/* The whole journeys of the vertices the report shows: key[i] (model, 0-based
+** vertex), sorted and each once after shown_sort(), its journey j[i]. */
+typedef struct vkey { size_t mi, v; } vkey;
+typedef struct shown {
+    vkey *key;                   /* owned */
+    pt_journey *j;               /* owned; filled by shown_fetch() */
+    size_t n, cap;
+    int failed;                  /* 1: out of memory */
+} shown;
 
 static uint64_t cheb(int64_t dx, int64_t dy)
 {
@@ -142,10 +158,10 @@ static pt_pix fb_to_vp(const pt_scene *s, int64_t x_fb, int64_t y_fb)
 ** framebuffer's corner, a point's distance to the centre of its own
 ** framebuffer pixel (the trace's record) is its rounding's,
 ** hypot(x_pp - round(x_pp), y_pp - round(y_pp)). */
-static void pp_in_fb(const pt_scene *s, const pt_vrec *pp, double *x, double *y)
+static void pp_in_fb(const pt_scene *s, double x_pp, double y_pp, double *x, double *y)
 {
-    *x = s->vp_x + pp->x - 1;                       /* x_ul + x_pp - 1 */
-    *y = s->vp_y + s->vp_h - pp->y;                 /* y_ul + h - y_pp */
+    *x = s->vp_x + x_pp - 1;                        /* x_ul + x_pp - 1 */
+    *y = s->vp_y + s->vp_h - y_pp;                  /* y_ul + h - y_pp */
 }
 
 /* ===== what the run drew of a segment ===== */
@@ -215,15 +231,104 @@ static double seg_dist(double px, double py, double ax, double ay, double bx, do
     return isfinite(d) ? d : HUGE_VAL;
 }
 
-/* The journeys of segment si of model mi's two endpoints, from js[mi]
-** (one journey per vertex, from the run). */
-static void seg_journeys(const pt_scene *s, pt_journey *const *js, size_t mi, size_t si,
+/* ===== the journeys shown ===== */
+
+/* Ask for the journey of model mi's 0-based vertex v.  On allocation failure
+** sh->failed is set. */
+static void shown_add(shown *sh, size_t mi, size_t v)
+{
+    if (sh->n == sh->cap) {
+        size_t cap = sh->cap ? 2 * sh->cap : 16;
+        vkey *k = realloc(sh->key, cap * sizeof *k);
+        if (!k) { sh->failed = 1; return; }
+        sh->key = k;
+        sh->cap = cap;
+    }
+    sh->key[sh->n].mi = mi;
+    sh->key[sh->n].v = v;
+    sh->n++;
+}
+
+static int vkey_cmp(const void *pa, const void *pb)
+{
+    const vkey *a = pa, *b = pb;
+
+    if (a->mi != b->mi) return a->mi < b->mi ? -1 : 1;
+    return a->v < b->v ? -1 : a->v > b->v;
+}
+
+/* The journey asked for of model mi's 0-based vertex v, or NULL. */
+static pt_journey *shown_get(const shown *sh, size_t mi, size_t v)
+{
+    vkey k = {mi, v};
+    const vkey *f = sh->n ? bsearch(&k, sh->key, sh->n, sizeof k, vkey_cmp) : NULL;
+
+    return f ? &sh->j[f - sh->key] : NULL;
+}
+
+/* What shown_fetch()'s run hands over: the model's index by its address. */
+typedef struct fetcher {
+    const pt_scene *s;
+    shown *sh;
+} fetcher;
+
+static void fetch_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
+{
+    fetcher *f = ud;
+    pt_journey *to = v >= 1 ? shown_get(f->sh, (size_t)(m - f->s->models), v - 1) : NULL;
+
+    if (to) *to = *j;
+}
+
+/* Sort the keys asked for (each once), then one pt_run() of s, every vertex
+** traced and nothing drawn, keeping the journeys of those alone: the numbers
+** of the first run, which computed them the same way.  Returns 0, or -1 when
+** out of memory. */
+static int shown_fetch(shown *sh, const pt_scene *s)
+{
+    pt_options o;
+    pt_listener l;
+    fetcher f = {s, sh};
+    size_t i, n = 0;
+
+    if (sh->failed) return -1;
+    if (sh->n) qsort(sh->key, sh->n, sizeof *sh->key, vkey_cmp);
+    for (i = 0; i < sh->n; i++)
+        if (!n || vkey_cmp(&sh->key[i], &sh->key[n - 1])) sh->key[n++] = sh->key[i];
+    sh->n = n;
+    if (!(sh->j = calloc(n ? n : 1, sizeof *sh->j))) return -1;
+    pt_options_default(&o);
+    o.trace_raster = 0;
+    o.rasterize = 0;
+    o.every_vertex = 1;
+    memset(&l, 0, sizeof l);
+    l.journey = fetch_journey;
+    l.ud = &f;
+    return pt_run_plain(s, &o, &l);
+}
+
+static void shown_free(shown *sh)
+{
+    free(sh->key);
+    free(sh->j);
+}
+
+/* Ask for the journeys of the two ends of segment si of model mi. */
+static void shown_add_seg(shown *sh, const pt_scene *s, size_t mi, size_t si)
+{
+    shown_add(sh, mi, s->models[mi].seg[si].a);
+    shown_add(sh, mi, s->models[mi].seg[si].b);
+}
+
+/* The journeys of segment si of model mi's two endpoints, fetched by
+** shown_fetch(). */
+static void seg_journeys(const pt_scene *s, const shown *sh, size_t mi, size_t si,
                          pt_journey *a, pt_journey *b)
 {
     const pt_model *m = &s->models[mi];
 
-    *a = js[mi][m->seg[si].a];
-    *b = js[mi][m->seg[si].b];
+    *a = *shown_get(sh, mi, m->seg[si].a);
+    *b = *shown_get(sh, mi, m->seg[si].b);
 }
 
 /* Segment e (e->mi, e->si), whose pixel, clip and skip records the run gave
@@ -232,29 +337,22 @@ static void seg_journeys(const pt_scene *s, pt_journey *const *js, size_t mi, si
 ** of a segment drawn is a pixel or a clipped step, so one step in all is the
 ** one step of a degenerate segment (two ends rounded apart make two steps or
 ** more). */
-static void measure(const pt_scene *s, pt_journey *const *js, int64_t X, int64_t Y,
-                    seg_eval *e)
+static void measure(const pt_scene *s, vend *const *at, int64_t X, int64_t Y, seg_eval *e)
 {
-    pt_journey a, b;
-    const pt_vrec *pa, *pb;
+    const pt_model *m = &s->models[e->mi];
+    const vend *a = &at[e->mi][m->seg[e->si].a], *b = &at[e->mi][m->seg[e->si].b];
     pt_pix t = fb_to_vp(s, X, Y);
     double ax, ay, bx, by;
 
-    seg_journeys(s, js, e->mi, e->si, &a, &b);
-    pa = &a.rec[PT_STAGE_PIXEL];
-    pb = &b.rec[PT_STAGE_PIXEL];
     if (e->result != PT_RASTER_SKIPPED)
         e->result = e->npix + e->nclip == 1 ? PT_RASTER_DEGENERATE : PT_RASTER_DRAWN;
-    pp_in_fb(s, pa, &ax, &ay);
-    pp_in_fb(s, pb, &bx, &by);
+    pp_in_fb(s, a->x_pp, a->y_pp, &ax, &ay);
+    pp_in_fb(s, b->x_pp, b->y_pp, &bx, &by);
     e->dist = seg_dist((double)X, (double)Y, ax, ay, bx, by);
     e->dist_drawn = HUGE_VAL;
     if (e->result != PT_RASTER_SKIPPED)                     /* rounded: viewport pixels */
-        e->dist_drawn = seg_dist((double)t.x, (double)t.y,
-                                 (double)a.rec[PT_STAGE_VIEWPORT].ix,
-                                 (double)a.rec[PT_STAGE_VIEWPORT].iy,
-                                 (double)b.rec[PT_STAGE_VIEWPORT].ix,
-                                 (double)b.rec[PT_STAGE_VIEWPORT].iy);
+        e->dist_drawn = seg_dist((double)t.x, (double)t.y, (double)a->x_vp, (double)a->y_vp,
+                                 (double)b->x_vp, (double)b->y_vp);
 }
 
 /* One endpoint's journey, three lines:
@@ -285,13 +383,13 @@ static void show_vertex(uint64_t v, const pt_journey *j)
 }
 
 /* "  tri s2 (v2 -> v3)" plus both endpoints' journeys. */
-static void show_segment(const pt_scene *s, pt_journey *const *js, const seg_eval *e,
+static void show_segment(const pt_scene *s, const shown *sh, const seg_eval *e,
                          const char *tail, pt_journey *a, pt_journey *b)
 {
     const pt_model *m = &s->models[e->mi];
     uint64_t va = m->seg[e->si].a + 1ull, vb = m->seg[e->si].b + 1ull;
 
-    seg_journeys(s, js, e->mi, e->si, a, b);
+    seg_journeys(s, sh, e->mi, e->si, a, b);
     fprintf(term.f, "  %s s%llu (v%llu -> v%llu)%s\n", m->name, (unsigned long long)e->si + 1,
            (unsigned long long)va, (unsigned long long)vb, tail);
     show_vertex(va, a);
@@ -386,11 +484,26 @@ static void keep_nearest(seg_eval best[NEAREST], int *n, const seg_eval *e)
     }
 }
 
-/* What the loop over the segments found, beyond the segments it printed. */
+/* A write on the pixel that the report lists as lighting it, in drawing
+** order: segment (mi, k) of a counted model, or point k + 1 of model mi
+** (renderer 4) in colour rgb. */
+typedef struct lit_ev {
+    int point;                   /* 1: a point, 0: a segment */
+    size_t mi, k;
+    unsigned char rgb[3];
+} lit_ev;
+
+/* What the loop over the segments found. */
 typedef struct why_ctx {
     const pt_scene *s;
-    pt_journey **js;             /* js[mi][v]: model mi's vertex v + 1's journey,
-                                 ** from the run; owned */
+    vend **at;                   /* at[mi][v]: what measure() needs of model mi's
+                                 ** vertex v + 1, from the run; owned */
+    shown sh;                    /* the journeys of the vertices shown; owned */
+    lit_ev *lit;                 /* the writes listed as lighting the pixel, */
+    size_t nev, capev;           /*   in drawing order; owned */
+    int failed;                  /* 1: out of memory during the run */
+    seg_eval nob[NEAREST];       /* models without segments, nearest first: */
+    int nnob;                    /*   mi the model, si its nearest vertex */
     const pt_model *sel;         /* --model's model, or NULL: every model counts */
     long long X, Y;              /* the pixel (x_fb, y_fb) */
     int inside;                  /* 1: it lies inside the viewport */
@@ -430,15 +543,15 @@ static void show_left_out(const why_ctx *w, const seg_eval *e, const pt_journey 
 }
 
 /* The models without segments: the renderer transforms and draws nothing of
-** them.  For the NEAREST nearest (by their nearest vertex, measured as the
-** segments' endpoints are), where that vertex would land. */
-static void show_no_segments(const why_ctx *w)
+** them.  The NEAREST nearest (by their nearest vertex, measured as the
+** segments' endpoints are) into w->nob, after the run; their nearest
+** vertices' journeys asked for. */
+static void find_no_segments(why_ctx *w)
 {
     const pt_scene *s = w->s;
-    seg_eval best[NEAREST], e;              /* here mi: the model, si: its nearest vertex */
+    seg_eval e;                             /* here mi: the model, si: its nearest vertex */
     size_t mi, v;
-    int n = 0, k;
-    char d[PT_NUMLEN], fb[PT_EXPLAINLEN];
+    int k;
 
     for (mi = 0; mi < s->nmodels; mi++) {
         const pt_model *m = &s->models[mi];
@@ -448,7 +561,7 @@ static void show_no_segments(const why_ctx *w)
         if (m->nseg) continue;
         for (v = 0; v < m->nv; v++) {
             double dv;
-            pp_in_fb(s, &w->js[mi][v].rec[PT_STAGE_PIXEL], &x, &y);
+            pp_in_fb(s, w->at[mi][v].x_pp, w->at[mi][v].y_pp, &x, &y);
             dv = seg_dist((double)w->X, (double)w->Y, x, y, x, y);  /* a point */
             if (v == 0 || dv < dmin) { dmin = dv; vmin = v; }
         }
@@ -456,8 +569,20 @@ static void show_no_segments(const why_ctx *w)
         e.mi = mi;
         e.si = vmin;
         e.dist = dmin;
-        keep_nearest(best, &n, &e);
+        keep_nearest(w->nob, &w->nnob, &e);
     }
+    for (k = 0; k < w->nnob; k++)
+        if (s->models[w->nob[k].mi].nv) shown_add(&w->sh, w->nob[k].mi, w->nob[k].si);
+}
+
+/* ... and where each one's nearest vertex would land. */
+static void show_no_segments(const why_ctx *w)
+{
+    const pt_scene *s = w->s;
+    const seg_eval *best = w->nob;
+    int n = w->nnob, k;
+    char d[PT_NUMLEN], fb[PT_EXPLAINLEN];
+
     if (!n) return;
     fprintf(term.f, "models without segments (left out: the renderer draws nothing of a model "
            "without segments):\n");
@@ -465,7 +590,8 @@ static void show_no_segments(const why_ctx *w)
         const pt_model *m = &s->models[best[k].mi];
 
         if (!m->nv) { fprintf(term.f, "  %s: no vertices either\n", m->name); continue; }
-        pt_explain_tuple(fb, sizeof fb, &w->js[best[k].mi][best[k].si], PT_STAGE_FRAMEBUFFER);
+        pt_explain_tuple(fb, sizeof fb, shown_get(&w->sh, best[k].mi, best[k].si),
+                         PT_STAGE_FRAMEBUFFER);
         if (best[k].dist == HUGE_VAL) snprintf(d, sizeof d, "an unknown distance");
         else pt_fmt_fixed(d, best[k].dist, 2);
         fprintf(term.f, "  %s: %zu %s; the nearest, v%zu, would be %s%s away, at "
@@ -474,7 +600,30 @@ static void show_no_segments(const why_ctx *w)
     }
 }
 
-/* Segment w->e, its records all heard: print it when it lit the pixel (of
+/* Add a write on the pixel to the list the report prints as "lit by" (a
+** point's in colour rgb); its segment's ends' journeys asked for. */
+static void lit_add(why_ctx *w, int point, size_t mi, size_t k, const unsigned char *rgb)
+{
+    lit_ev *ev;
+
+    if (w->nev == w->capev) {
+        size_t cap = w->capev ? 2 * w->capev : 16;
+        lit_ev *n = realloc(w->lit, cap * sizeof *n);
+        if (!n) { w->failed = 1; return; }
+        w->lit = n;
+        w->capev = cap;
+    }
+    ev = &w->lit[w->nev++];
+    memset(ev, 0, sizeof *ev);
+    ev->point = point;
+    ev->mi = mi;
+    ev->k = k;
+    if (rgb) memcpy(ev->rgb, rgb, sizeof ev->rgb);
+    if (!point) shown_add_seg(&w->sh, w->s, mi, k);
+    w->nlit++;
+}
+
+/* Segment w->e, its records all heard: list it when it lit the pixel (of
 ** a counted model), else keep it if it is among the nearest. */
 static void seg_done(why_ctx *w)
 {
@@ -482,9 +631,8 @@ static void seg_done(why_ctx *w)
     seg_eval *e = &w->e;
     size_t mi = e->mi, si = e->si;
     int left_out = w->sel && &s->models[mi] != w->sel;
-    pt_journey ja, jb;
 
-    measure(s, w->js, w->X, w->Y, e);
+    measure(s, w->at, w->X, w->Y, e);
     if (e->lit) {                           /* drawing order: the last one sets the color */
         w->drawn = 1;
         w->last_mi = mi;
@@ -492,8 +640,7 @@ static void seg_done(why_ctx *w)
         w->pt_drawn = 0;                    /* drawn over the points before it */
     }
     if (e->lit && !left_out) {
-        if (w->nlit++ == 0) fprintf(term.f, "lit by:\n");
-        show_segment(s, w->js, e, "", &ja, &jb);
+        lit_add(w, 0, mi, si, NULL);
         return;
     }
     if (e->lit && w->nleft < 10) {
@@ -540,7 +687,13 @@ static void why_journey(void *ud, const pt_model *m, uint64_t v, const pt_journe
 {
     why_ctx *w = ud;
 
-    if (v >= 1 && v <= m->nv) w->js[model_index(w, m)][v - 1] = *j;
+    if (v >= 1 && v <= m->nv) {
+        vend *e = &w->at[model_index(w, m)][v - 1];
+        e->x_pp = j->rec[PT_STAGE_PIXEL].x;
+        e->y_pp = j->rec[PT_STAGE_PIXEL].y;
+        e->x_vp = j->rec[PT_STAGE_VIEWPORT].ix;
+        e->y_vp = j->rec[PT_STAGE_VIEWPORT].iy;
+    }
 }
 
 static void why_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px,
@@ -572,12 +725,35 @@ static void why_point_pixels(void *ud, const pt_model *m, uint64_t pt, const pt_
         w->pt_k = pt - 1;
         memcpy(w->pt_rgb, px[k].paint.rgb, sizeof w->pt_rgb);
         if (w->sel && m != w->sel) continue;
-        if (w->nlit++ == 0) fprintf(term.f, "lit by:\n");
+        lit_add(w, 1, w->pt_mi, w->pt_k, px[k].paint.rgb);
+    }
+}
+
+/* The writes on the pixel listed as lighting it, in drawing order, each
+** segment with its ends' journeys. */
+static void show_lit(const why_ctx *w)
+{
+    size_t i;
+    pt_journey ja, jb;
+
+    for (i = 0; i < w->nev; i++) {
+        const lit_ev *ev = &w->lit[i];
+        const pt_model *m = &w->s->models[ev->mi];
+
+        if (i == 0) fprintf(term.f, "lit by:\n");
+        if (!ev->point) {
+            seg_eval e;
+            memset(&e, 0, sizeof e);
+            e.mi = ev->mi;
+            e.si = ev->k;
+            show_segment(w->s, &w->sh, &e, "", &ja, &jb);
+            continue;
+        }
         fprintf(term.f, "  %s p%llu (point %llu: v%llu, radius %d): a pixel of its square, "
                 "in color %d %d %d (the course's renderer 4 draws points)\n", m->name,
-                (unsigned long long)pt, (unsigned long long)pt,
-                (unsigned long long)p->v + 1, p->radius, px[k].paint.rgb[0],
-                px[k].paint.rgb[1], px[k].paint.rgb[2]);
+                (unsigned long long)ev->k + 1, (unsigned long long)ev->k + 1,
+                (unsigned long long)m->pts[ev->k].v + 1, m->pts[ev->k].radius, ev->rgb[0],
+                ev->rgb[1], ev->rgb[2]);
     }
 }
 
@@ -600,10 +776,12 @@ static void why_skip(void *ud, const pt_model *m, uint64_t seg, uint64_t v, cons
 }
 
 /* One pt_run() of the scene, every model traced and every vertex (a model
-** without segments too: where its vertices would land): keep each vertex's
-** journey, then measure each segment against the pixel from its pixel, clip
-** and skip records, printing those that lit it (of the counted models) and
-** keeping the nearest of the others.  Returns 0, or -1 when out of memory. */
+** without segments too: where its vertices would land): keep what measuring
+** needs of each vertex's journey, then measure each segment against the pixel
+** from its pixel, clip and skip records, listing those that lit it (of the
+** counted models) and keeping the nearest of the others; then a second run
+** for the journeys of the vertices the report shows.  Returns 0, or -1 when
+** out of memory. */
 static int scan(why_ctx *w)
 {
     pt_options o;
@@ -623,9 +801,16 @@ static int scan(why_ctx *w)
     l.clip = why_clip;
     l.skip = why_skip;
     l.ud = w;
-    if (pt_run_plain(w->s, &o, &l) != 0) return -1;
+    if (pt_run_plain(w->s, &o, &l) != 0 || w->failed) return -1;
     seg_reach(w, w->s->nmodels, 0);         /* the last segment's records are in */
-    return 0;
+    if (w->failed) return -1;
+    if (!w->nlit) {                         /* the report shows the nearest */
+        int k;
+        for (k = 0; k < w->nbest; k++) shown_add_seg(&w->sh, w->s, w->best[k].mi, w->best[k].si);
+        if (w->have_sel) shown_add_seg(&w->sh, w->s, w->best_sel.mi, w->best_sel.si);
+        find_no_segments(w);
+    }
+    return shown_fetch(&w->sh, w->s);
 }
 
 /* Segments of left-out models that lit the pixel, as scan() found them:
@@ -665,7 +850,7 @@ static void show_nearest(const why_ctx *w)
             pt_fmt_fixed(d, e->dist, 2);
             snprintf(tail, sizeof tail, ": %s pixels away", d);
         }
-        show_segment(w->s, w->js, e, tail, &ja, &jb);
+        show_segment(w->s, &w->sh, e, tail, &ja, &jb);
         if (w->sel && &w->s->models[e->mi] != w->sel) show_left_out(w, e, &ja, &jb);
         else {
             fprintf(term.f, "    ");
@@ -674,28 +859,33 @@ static void show_nearest(const why_ctx *w)
     }
 }
 
-static void journeys_free(pt_journey **js, size_t n)
+/* Free what w owns (a zeroed w too). */
+static void why_free(why_ctx *w)
 {
     size_t mi;
 
-    for (mi = 0; mi < n; mi++) free(js[mi]);
-    free(js);
+    if (w->at)
+        for (mi = 0; mi < w->s->nmodels; mi++) free(w->at[mi]);
+    free(w->at);
+    shown_free(&w->sh);
+    free(w->lit);
 }
 
-/* Room for every vertex's journey, js[mi][v], which scan() fills.  NULL when
-** out of memory. */
-static pt_journey **journeys_room(const pt_scene *s)
+/* Room for what measuring needs of every vertex, at[mi][v], which scan()
+** fills.  NULL when out of memory. */
+static vend **ends_room(const pt_scene *s)
 {
-    pt_journey **js = calloc(s->nmodels ? s->nmodels : 1, sizeof *js);
+    vend **at = calloc(s->nmodels ? s->nmodels : 1, sizeof *at);
     size_t mi;
 
-    if (!js) return NULL;
+    if (!at) return NULL;
     for (mi = 0; mi < s->nmodels; mi++)
-        if (!(js[mi] = calloc(s->models[mi].nv ? s->models[mi].nv : 1, sizeof *js[mi]))) {
-            journeys_free(js, mi);
+        if (!(at[mi] = calloc(s->models[mi].nv ? s->models[mi].nv : 1, sizeof *at[mi]))) {
+            while (mi > 0) free(at[--mi]);
+            free(at);
             return NULL;
         }
-    return js;
+    return at;
 }
 
 /* why on a scene of the course's renderer 7 or 9 (tools/why_course.h); frees s. */
@@ -764,7 +954,6 @@ int pt_cmd_why(int argc, char **argv)
         return PT_EXIT_INPUT;
     }
     if (s.renderer == 7 || s.renderer == 9) return course_why(&s, w.X, w.Y, model);
-    if (pt_cli_keep_cap(&s, "why") != 0) { pt_scene_free(&s); return PT_EXIT_INPUT; }
     w.s = &s;
     if (pt_scene_pipeline(&s) != &pt_pipe_classic) {
         fprintf(stderr, "pipetrace why: %s: why follows the classic camera (model -> camera "
@@ -784,7 +973,7 @@ int pt_cmd_why(int argc, char **argv)
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
-    if (!(w.js = journeys_room(&s))) {
+    if (!(w.at = ends_room(&s))) {
         fprintf(stderr, "pipetrace why: %s: out of memory\n", s.path);
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
@@ -810,11 +999,12 @@ int pt_cmd_why(int argc, char **argv)
 
     if (scan(&w) != 0) {
         fprintf(stderr, "pipetrace why: %s: out of memory\n", s.path);
-        journeys_free(w.js, s.nmodels);
+        why_free(&w);
         pt_scene_free(&s);
         pt_cli_out_close(&term);
         return PT_EXIT_INPUT;
     }
+    show_lit(&w);
     if (w.nleft && w.nlit) show_also_lit(&w);
     if (!w.nlit) {
         if (!w.drawn)
@@ -841,7 +1031,7 @@ int pt_cmd_why(int argc, char **argv)
                m->color[1], m->color[2], w.sel ? " in the image" : "", m->name,
                w.last_si + 1);
     }
-    journeys_free(w.js, s.nmodels);
+    why_free(&w);
     pt_scene_free(&s);
     if (pt_cli_out_close(&term) != 0) {
         fputs("pipetrace why: cannot write to standard output\n", stderr);

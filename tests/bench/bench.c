@@ -507,6 +507,46 @@ static void java_rows(const figures *fig, int n)
     }
 }
 
+/* The peak resident memory of the teaching tools (why, journey, accuracy)
+** beside the render command's, on spheres of the course's `shape` (the
+** figures docs/limits.md gives). */
+static void tool_memory_rows(char *pt)
+{
+    static const struct { const char *name, *shape; } sph[2] = {
+        {"bench-sphere300.scene", "300 300"}, {"bench-sphere1400.scene", "1400 1400"}};
+    char *scene[2], *out = path("bench-tool.out");
+    int k, i;
+
+    for (k = 0; k < 2; k++) {
+        FILE *f = NULL;
+        scene[k] = strdup(path(sph[k].name));
+        if (!scene[k] || !(f = fopen(scene[k], "w"))) die("cannot write a sphere scene");
+        fprintf(f, "model s\nshape sphere 1 %s\ntranslate 0 0 -3\n", sph[k].shape);
+        if (fclose(f) != 0) die("cannot write a sphere scene");
+    }
+    printf("\npeak resident memory of the teaching tools, MiB (docs/limits.md)\n");
+    for (k = 0; k < 2; k++) {
+        char *runs[5][8] = {
+            {pt, scene[k], "--image", out, NULL},
+            {pt, "why", scene[k], "400", "300", NULL},
+            {pt, "journey", scene[k], "--vertex", "1", "--image", out, NULL},
+            {pt, "journey", scene[k], "--vertex", "1", "--svg", out, NULL},
+            {pt, "accuracy", scene[k], "--no-time", NULL}};
+        static const char *const what[5] = {
+            "render --image", "why 400 300", "journey --vertex 1 --image",
+            "journey --vertex 1 --svg", "accuracy --no-time"};
+        printf("  shape sphere 1 %s:\n", sph[k].shape);
+        for (i = 0; i < (k ? 4 : 5); i++) {    /* the big one: past accuracy's */
+            long rss;                           /* cap of vertices */
+            spawn(runs[i], "/dev/null", &rss, NULL);
+            printf("    %-30s %8.1f\n", what[i], (double)rss / 1024);
+        }
+        remove(scene[k]);
+        free(scene[k]);
+    }
+    remove(out);
+}
+
 int main(int argc, char **argv)
 {
     static figures fig[4] = {{"renderer 4", "4", "", NULL, 0, 0, 0, 0, {0}},
@@ -652,6 +692,7 @@ int main(int argc, char **argv)
         printf("  peak resident memory, 800,000 vertices, JSON Lines on two threads (to a\n"
                "  pipe): %.1f MiB\n", (double)trss / 1024);
     }
+    tool_memory_rows(pt);
     java_rows(fig, 4);
     remove(ppm);
     remove(bppm);

@@ -227,11 +227,19 @@ acc "$tmp/rvh.scene" --no-time
 check "acc-sh-6.13 renderer 9, overflow and subnormals: exit 0, every row, nothing on stderr" \
     test "$rc" = 0 -a "$(grep -cE '^[a-z]+ +(float|double) +[-0-9i]' "$tmp/out")" = 24 -a ! -s "$tmp/err"
 
-# ---- the pixel cap: a scene writing more than 8M pixels is refused
+# ---- the pixel cap counts the image's pixels, each once (overdraw costs
+# nothing): 21 segments over one row, 3999 or 4000 pixels a run, 84,000
+# writes; PIPETRACE_ACC_MAXPIX lowers the cap of 8000000 to reach it cheaply
 awk 'BEGIN { print "framebuffer 4000 4"; print "model m"; print "v -2 0 -2"; print "v 2 0 -2";
-             for (i = 0; i < 2001; i++) print "l 1 2" }' > "$tmp/big.scene"
-acc "$tmp/big.scene" --no-time
-check "acc-sh-7.1 over 8000000 pixels: exit 2, the cap named, nothing on stdout" \
-    test "$rc" = 2 -a -n "$(grep 'writes more than 8000000 pixels' "$tmp/err")" -a ! -s "$tmp/out"
+             for (i = 0; i < 21; i++) print "l 1 2" }' > "$tmp/big.scene"
+PIPETRACE_ACC_MAXPIX=3999 acc "$tmp/big.scene" --no-time
+check "acc-sh-7.1 a run lighting 4000 pixels over a cap of 3999: exit 2, the cap named, nothing on stdout" \
+    test "$rc" = 2 -a -n "$(grep 'lights more than 3999 pixels' "$tmp/err")" -a ! -s "$tmp/out"
+PIPETRACE_ACC_MAXPIX=4000 acc "$tmp/big.scene" --no-time
+check "acc-sh-7.2 ... and under a cap of 4000 (its 84,000 writes not counted): done" \
+    test "$rc" = 0 -a -n "$(grep '3999 pixels in the reference image' "$tmp/out")"
+PIPETRACE_ACC_MAXPIX=0 acc "$tmp/big.scene" --no-time
+check "acc-sh-7.3 PIPETRACE_ACC_MAXPIX=0: a usage error" \
+    test "$rc" = 1 -a -n "$(grep 'PIPETRACE_ACC_MAXPIX takes 1 to 8000000, not 0' "$tmp/err")"
 
 report

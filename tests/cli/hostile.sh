@@ -284,35 +284,83 @@ check "hostile-13.2 diff: a row of pixels x = 0 .. 9 moved by (1, 1) in a 10-wid
 check "hostile-13.3 ... one of them out of the framebuffer" \
     sh -c 'tr "\n" " " < "$1" | grep -q "1 of them out of the *framebuffer"' _ "$tmp/out"
 
-# ---- journey, why and accuracy keep every vertex's journey: a cap on the
-# scene (PT_CLI_KEEP_VERTICES, _SEGMENTS) and on the pixels kept, each said
-# at once (one `shape sphere 1 1400 1400` line took 3 GB before)
+# ---- accuracy keeps every vertex's journey: a cap on the scene
+# (PT_CLI_KEEP_VERTICES, _SEGMENTS), said at once (one `shape sphere 1 1400
+# 1400` line took 3 GB before); journey and why keep only what they show
 printf 'model s\nshape sphere 1 1400 1400\ntranslate 0 0 -3\n' > "$tmp/sphere.scene"
-for c in "journey --vertex 1 --svg $tmp/sph.svg" "why 200 150" "accuracy --no-time"; do
-    cmd=${c%% *}
-    lim "${cap:-unlimited}" "'$exe' $cmd '$tmp/sphere.scene' ${c#* }"
-    check "hostile-14.1 $cmd of a 1,960,002-vertex sphere: refused (exit $rc), under a 400 MB cap" test "$rc" = 2
-    check "hostile-14.2 ... saying the cap" test "$(cat "$tmp/err")" = \
-        "pipetrace $cmd: $tmp/sphere.scene has 1960002 vertices; $cmd keeps every vertex's journey in memory and takes at most 100000 vertices and 400000 segments (docs/limits.md)"
-done
+lim "${cap:-unlimited}" "'$exe' accuracy '$tmp/sphere.scene' --svg '$tmp/sph.svg'"
+check "hostile-14.1 accuracy of a 1,960,002-vertex sphere: refused (exit $rc), under a 400 MB cap" test "$rc" = 2
+check "hostile-14.2 ... saying the cap" test "$(cat "$tmp/err")" = \
+    "pipetrace accuracy: $tmp/sphere.scene has 1960002 vertices; accuracy keeps every vertex's journey in memory and takes at most 100000 vertices and 400000 segments (docs/limits.md)"
 check "hostile-14.3 ... and no picture" test ! -e "$tmp/sph.svg"
+if [ -n "$capped" ]; then
+lim 400000 "'$exe' journey '$tmp/sphere.scene' --vertex 1 --image '$tmp/sph.ppm'"
+check "hostile-14.14 journey --image alone (one journey kept) of the same sphere: done under the 400 MB cap (exit $rc)" \
+    test "$rc" = 0 -a -s "$tmp/sph.ppm"
+fi
 { echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'l 1 2'; } > "$tmp/cap.scene"
 run why "$tmp/cap.scene" 1 1
 check "hostile-14.4 why of 100,000 vertices (the cap): done (exit $rc)" test "$rc" = 0
 { echo 'model m'; yes 'v 0 0 -1' | head -n 100000; echo 'model n'; echo 'v 0 0 -1'; } > "$tmp/cap1.scene"
-run why "$tmp/cap1.scene" 1 1
-check "hostile-14.5 ... 100,001 in two models: refused" \
+run accuracy "$tmp/cap1.scene" --no-time
+check "hostile-14.5 accuracy of 100,001 vertices in two models: refused" \
     sh -c 'test "$1" = 2 && grep -q "has 100001 vertices" "$2"' _ "$rc" "$tmp/err"
 { echo 'model m'; echo 'v 0 0 -1'; yes 'l 1 1' | head -n 400001; } > "$tmp/cap2.scene"
-run journey "$tmp/cap2.scene" --vertex 1 --svg "$tmp/c2.svg"
-check "hostile-14.6 journey of 400,001 segments: refused" \
+run accuracy "$tmp/cap2.scene" --no-time
+check "hostile-14.6 accuracy of 400,001 segments: refused" \
     sh -c 'test "$1" = 2 && grep -q "has 400001 segments" "$2"' _ "$rc" "$tmp/err"
 { printf 'framebuffer 16384 16384\nmodel m\nv -0.99 -0.99 -1\nv 0.99 0.99 -1\n'
   yes 'l 1 2' | head -n 600; } > "$tmp/px.scene"
 lim "${cap:-unlimited}" "'$exe' journey '$tmp/px.scene' --vertex 1 --svg '$tmp/px.svg'"
 check "hostile-14.7 journey of 600 diagonals of a 16384 x 16384 framebuffer (9.8 M pixels): refused (exit $rc)" \
     test "$rc" = 2
-check "hostile-14.8 ... saying the pixel cap" grep -q "^pipetrace journey: a model of .* draws more than 8000000 pixels; journey keeps them in memory and takes at most that many (docs/limits.md)$" "$tmp/err"
+check "hostile-14.8 ... saying the pixel cap" grep -q "^pipetrace journey: the segments of the vertices shown of .* draw more than 8000000 pixels; journey keeps them in memory and takes at most that many (docs/limits.md)$" "$tmp/err"
+# the pixels kept are those of the segments of the vertex shown: the same
+# 9.8 M pixels beside a short segment whose vertex is shown (refused before)
+{ cat "$tmp/px.scene"; printf 'v 0 0 -1\nv 0.001 0 -1\nl 3 4\n'; } > "$tmp/px3.scene"
+lim "${cap:-unlimited}" "'$exe' journey '$tmp/px3.scene' --vertex 3 --svg '$tmp/px3.svg'"
+check "hostile-14.12 journey of a vertex beside 9.8 M pixels of other segments: done (exit $rc)" \
+    test "$rc" = 0
+{ head -n 4 "$tmp/px.scene"; printf 'v 0 0 -1\nv 0.001 0 -1\nl 3 4\n'; } > "$tmp/px3b.scene"
+"$exe" journey "$tmp/px3b.scene" --vertex 3 --svg "$tmp/px3b.svg"
+inset() { sed -n '/data-stage="viewport"/,/<\/g>/p' "$1" | sed -n '/<g class="inset">/,/<\/g>/p'; }
+check "hostile-14.13 ... its segment's pixels in the viewport panel's zoom as without the others" \
+    sh -c 'test -n "$1" -a "$1" = "$2" && echo "$1" | grep -q "fill=.#a8c7ee"' _ \
+    "$(inset "$tmp/px3.svg")" "$(inset "$tmp/px3b.svg")"
+# accuracy keeps its image's pixels once each: 2101 segments over one row,
+# 8.4 M writes (past the old cap of 8,000,000 writes), 4000 pixels
+awk 'BEGIN { print "framebuffer 4000 4"; print "model m"; print "v -2 0 -2"; print "v 2 0 -2";
+             for (i = 0; i < 2101; i++) print "l 1 2" }' > "$tmp/over.scene"
+run accuracy "$tmp/over.scene" --no-time
+check "hostile-14.15 accuracy of 8.4 M pixel writes on 4000 pixels: done (exit $rc)" \
+    test "$rc" = 0 -a -n "$(grep '3999 pixels in the reference image' "$tmp/out")"
+# why keeps of every vertex only what measuring a segment needs (32 bytes)
+# and the whole journeys of the vertices it shows: a sphere of 360,002
+# vertices (616 MB of journeys, refused before) under a 300 MB cap, and a
+# pixel of it the same as the image says
+printf 'model s\nshape sphere 1 600 600\ntranslate 0 0 -3\n' > "$tmp/sph6.scene"
+if [ -n "$capped" ]; then
+lim 300000 "'$exe' why '$tmp/sph6.scene' 400 300"
+check "hostile-14.9 why of a 360,002-vertex sphere under a 300 MB cap: done (exit $rc)" test "$rc" = 0
+check "hostile-14.10 ... lit by segments, each with its two vertices' journeys" \
+    sh -c 'grep -q "^lit by:$" "$1" && n=$(grep -c "^  s s[0-9]* (v" "$1") &&
+           test "$n" -ge 1 -a "$(grep -c "^    v[0-9]*  model (" "$1")" = $((2 * n))' _ "$tmp/out"
+fi
+# journey keeps the whole journeys of the vertices it draws (the vertex, its
+# neighbours, the wireframe's first 5000 segments) and the extent of the
+# others: the same sphere under the same cap, its panels fitted as before
+if [ -n "$capped" ]; then
+lim 300000 "'$exe' journey '$tmp/sph6.scene' --vertex 180149 --svg '$tmp/sph6.svg'"
+check "hostile-14.16 journey of a vertex of the 360,002-vertex sphere under a 300 MB cap: done (exit $rc)" \
+    sh -c 'test "$1" = 0 && test "$(grep -c "<g class=\"panel\"" "$2")" = 7' _ "$rc" "$tmp/sph6.svg"
+check "hostile-14.17 ... its viewport panel marks pixel (401, 300), as why says" \
+    grep -q "(x_vp, y_vp) = (401, 300)" "$tmp/sph6.svg"
+fi
+"$exe" why "$tmp/sph6.scene" 400 300 > "$tmp/w6" 2>&1
+"$exe" "$tmp/sph6.scene" --image "$tmp/sph6.ppm" > /dev/null 2>&1
+px=$(tail -c $((3 * (800 * 600 - (300 * 800 + 400)))) "$tmp/sph6.ppm" | head -c 3 | od -An -tu1 | tr -s ' ' ' ')
+check "hostile-14.11 ... its colour that of the image's pixel (400, 300) (${px# })" \
+    grep -q "^color${px% } *: s s[0-9]* is the last segment drawn there$" "$tmp/w6"
 
 # ---- a point's radius costs the viewport, not (2r + 1)^2: 200 points of
 # radius 4096 in renderer 7 (about 25 s of CPU when every one of their 67

@@ -476,34 +476,66 @@ static int err_pix(pt_acc_err *e, pt_pix v, pt_pix ref)
 
 /* ===== runs ===== */
 
-/* What the rasterizer leaves while a run is made: every pixel written, and
-** the DDA's error against the exact line. */
+/* What the rasterizer leaves while a run is made: the image so far, each
+** pixel written once with the last colour written there (a hash table by
+** index, open addressing, at most half full), the writes counted, and the
+** DDA's error against the exact line. */
 typedef struct collect {
     uint32_t rgb;                /* the current model's color */
     const pt_scene *s;
-    struct written { int64_t idx; uint64_t seq; uint32_t rgb; } *px;
-    size_t n, cap;
-    int oom;                     /* 1: out of memory; 2: past PT_ACC_MAXPIX pixels */
+    pt_acc_pixel *tab;           /* cap slots; idx -1: empty (a pixel inside the
+                                 ** viewport has idx >= 0) */
+    size_t n, cap;               /* pixels in tab; slots, a power of two */
+    size_t max;                  /* the most pixels the image may have */
+    uint64_t writes;             /* pixels written, overdraw included */
+    int oom;                     /* 1: out of memory; 2: past max pixels */
     pt_acc_err *line;
 } collect;
+
+/* The slot of idx in a table of cap slots: where it is, or the empty slot
+** where it goes. */
+static size_t slot_of(const pt_acc_pixel *tab, size_t cap, int64_t idx)
+{
+    size_t i = (size_t)(((uint64_t)idx * UINT64_C(0x9e3779b97f4a7c15)) >> 32) & (cap - 1);
+
+    while (tab[i].idx != idx && tab[i].idx != -1) i = (i + 1) & (cap - 1);
+    return i;
+}
+
+/* Room for one more pixel in c->tab: twice the slots, every pixel moved.
+** Returns 0, or -1 when out of memory. */
+static int collect_grow(collect *c)
+{
+    size_t cap = c->cap ? 2 * c->cap : 1024, k;
+    pt_acc_pixel *tab = malloc(cap * sizeof *tab);
+
+    if (!tab) return -1;
+    for (k = 0; k < cap; k++) tab[k].idx = -1;
+    for (k = 0; k < c->cap; k++)
+        if (c->tab[k].idx != -1) tab[slot_of(tab, cap, c->tab[k].idx)] = c->tab[k];
+    free(c->tab);
+    c->tab = tab;
+    c->cap = cap;
+    return 0;
+}
 
 static void collect_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
     collect *c = ud;
+    int64_t idx = (c->s->vp_y + y_vp) * (int64_t)c->s->fb_w + (c->s->vp_x + x_vp);
+    size_t i;
 
     if (c->oom) return;
-    if (c->n == PT_ACC_MAXPIX) { c->oom = 2; return; }
-    if (c->n == c->cap) {
-        size_t cap = c->cap ? 2 * c->cap : 1024;
-        struct written *px = c->oom ? NULL : realloc(c->px, cap * sizeof *px);
-
-        if (!px) { c->oom = 1; return; }
-        c->px = px;
-        c->cap = cap;
+    c->writes++;
+    if (c->cap) {
+        i = slot_of(c->tab, c->cap, idx);
+        if (c->tab[i].idx == idx) { c->tab[i].rgb = c->rgb; return; }   /* the last wins */
     }
-    c->px[c->n].idx = (c->s->vp_y + y_vp) * (int64_t)c->s->fb_w + (c->s->vp_x + x_vp);
-    c->px[c->n].seq = c->n;
-    c->px[c->n].rgb = c->rgb;
+    if (c->n == c->max) { c->oom = 2; return; }
+    if (2 * (c->n + 1) > c->cap && collect_grow(c) != 0) { c->oom = 1; return; }
+    i = slot_of(c->tab, c->cap, idx);
+    c->tab[i].idx = idx;
+    c->tab[i].rgb = c->rgb;
     c->n++;
 }
 
@@ -514,12 +546,11 @@ static void collect_step(void *ud, const pt_acc_line *ln, int64_t s, double y)
     (void)err_add(c->line, y, pt_acc_line_y(ln, s).hi);
 }
 
-static int by_idx_then_seq(const void *pa, const void *pb)
+static int by_idx(const void *pa, const void *pb)
 {
-    const struct written *a = pa, *b = pb;
+    const pt_acc_pixel *a = pa, *b = pb;
 
-    if (a->idx != b->idx) return a->idx < b->idx ? -1 : 1;
-    return a->seq < b->seq ? -1 : a->seq > b->seq;
+    return a->idx < b->idx ? -1 : a->idx > b->idx;
 }
 
 void pt_acc_run_free(pt_acc_run *r)
@@ -597,6 +628,12 @@ static int run_alloc(pt_acc_run *r)
 
 int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices)
 {
+    return pt_acc_run_make_max(r, s, a, choices, PT_ACC_MAXPIX);
+}
+
+int pt_acc_run_make_max(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices,
+                        size_t maxpix)
+{
     size_t k, q, n;
     collect c;
     pt_acc_dda o;
@@ -620,6 +657,7 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
 
     memset(&c, 0, sizeof c);
     c.s = s;
+    c.max = maxpix;
     c.line = &r->line;
     o.pixel = collect_pixel;
     o.step = a == PT_ARITH_DD ? NULL : collect_step;  /* the reference is the line */
@@ -629,7 +667,7 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     o.to_vp = pt_pipeline_ref(pt_scene_pipeline(s), PT_STAGE_VIEWPORT) ? ptref_pixel2viewport
                                                                   : pt_scene_pipeline(s)->to_viewport;
     raster_scene(r, &o, &c.rgb, 1);
-    if (c.oom) { free(c.px); pt_acc_run_free(r); return c.oom == 2 ? -2 : -1; }
+    if (c.oom) { free(c.tab); pt_acc_run_free(r); return c.oom == 2 ? -2 : -1; }
     for (k = 0; r->seg && k < s->nmodels; k++)
         for (q = 0; q < s->models[k].nseg; q++) {
             r->made += (uint64_t)(r->seg[k][q].made[0] + r->seg[k][q].made[1]);
@@ -642,18 +680,14 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
             r->made += (uint64_t)(g->near < 0) + (uint64_t)g->ncuts;
             r->culled += !g->keep;
         }
-    r->pixels = c.n;
-    if (c.n) qsort(c.px, c.n, sizeof *c.px, by_idx_then_seq);
+    r->pixels = c.writes;
     r->img = malloc((c.n ? c.n : 1) * sizeof *r->img);
-    if (!r->img) { free(c.px); pt_acc_run_free(r); return -1; }
-    for (q = n = 0; q < c.n; q++) {                 /* the last write wins */
-        if (q + 1 < c.n && c.px[q + 1].idx == c.px[q].idx) continue;
-        r->img[n].idx = c.px[q].idx;
-        r->img[n].rgb = c.px[q].rgb;
-        n++;
-    }
+    if (!r->img) { free(c.tab); pt_acc_run_free(r); return -1; }
+    for (q = n = 0; q < c.cap; q++)
+        if (c.tab[q].idx != -1) r->img[n++] = c.tab[q];
+    if (n) qsort(r->img, n, sizeof *r->img, by_idx);
     r->nimg = n;
-    free(c.px);
+    free(c.tab);
     return 0;
 }
 

@@ -241,12 +241,16 @@ typedef struct pt_acc_run {
 } pt_acc_run;
 
 /* Run scene s in arithmetic a with choices: every used vertex's journey, then
-** (matrix camera: each segment clipped) the rasterizer into the image.  The
-** matrix camera ignores PT_ACC_TWO.  Returns 0, or -1 when out of memory, -2
-** when the rasterizer writes more than PT_ACC_MAXPIX pixels (then *r is
-** empty). */
+** (matrix camera: each segment clipped) the rasterizer into the image, which
+** keeps each pixel written once, with the last colour written there (32
+** bytes a pixel at most; overdraw costs nothing).  The matrix camera ignores
+** PT_ACC_TWO.  Returns 0, or -1 when out of memory, -2 when the image has
+** more than maxpix pixels (then *r is empty).  pt_acc_run_make() takes
+** PT_ACC_MAXPIX; a smaller maxpix lets a test reach the cap cheaply. */
 #define PT_ACC_MAXPIX 8000000
 int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices);
+int pt_acc_run_make_max(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices,
+                        size_t maxpix);
 
 /* Free what *r owns.  This function can't fail. */
 void pt_acc_run_free(pt_acc_run *r);

@@ -24,6 +24,12 @@
 ** they took MIN_SECONDS; that is one measurement, and the median of --repeat
 ** of them is shown.  Without --no-time the time columns and the time table
 ** vary from run to run, everything else never.
+**
+** Memory: the reference run is kept to the end, each other run only while it
+** is compared and timed; a run keeps its image's pixels once each (overdraw
+** costs nothing), at most PT_ACC_MAXPIX of them.  The environment variable
+** PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that a test
+** reaches it with a small scene (docs/limits.md).
 */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -105,7 +111,9 @@ static int run_applies(const layout *L, int k)
 typedef struct study {
     const pt_scene *s;
     layout rows;                 /* the scene's pipeline's */
-    pt_acc_run run[NRUNS];       /* no RUN_TWO (all zero) where no row has 2.001 */
+    pt_acc_run run[NRUNS];       /* the reference's kept; each other run only
+                                 ** while it is compared and timed (then all
+                                 ** zero); no RUN_TWO where no row has 2.001 */
     pt_acc_err err[NRUNS][PT_ACC_MAXROWS];
     timing t[NRUNS];             /* RUN_TWO: pixel and viewport; _RE runs: raster */
     int timed;
@@ -202,20 +210,17 @@ static void time_run(const study *st, const pt_acc_run *r, unsigned rows, int re
     }
 }
 
-static void time_all(study *st, int repeat)
+/* Time run k (st->run[k], made) on the rows its choices change. */
+static void time_one(study *st, int k, int repeat)
 {
     const layout *L = &st->rows;
-    int k;
+    unsigned rows = 0;
+    int row;
 
-    for (k = 0; k < NRUNS; k++) {
-        unsigned rows = 0;
-        int row;
-
-        for (row = 0; row < L->nrows; row++)        /* the rows its choices change */
-            if (!run_of[k].choices || L->t->row[row].variants & run_of[k].choices)
-                rows |= 1u << row;
-        if (rows) time_run(st, &st->run[k], rows, repeat, &st->t[k]);
-    }
+    for (row = 0; row < L->nrows; row++)            /* the rows its choices change */
+        if (!run_of[k].choices || L->t->row[row].variants & run_of[k].choices)
+            rows |= 1u << row;
+    if (rows) time_run(st, &st->run[k], rows, repeat, &st->t[k]);
     st->timed = 1;
 }
 
@@ -835,8 +840,9 @@ static void write_svg(FILE *f, const study *st)
 
 int pt_cmd_accuracy(int argc, char **argv)
 {
-    const char *path = NULL, *svg = NULL;
+    const char *path = NULL, *svg = NULL, *env;
     int k, repeat = 3, no_time = 0, rc = 0;
+    size_t maxpix = PT_ACC_MAXPIX;
     study *st;
     pt_scene s;
     char err[PT_ERRLEN];
@@ -866,6 +872,14 @@ int pt_cmd_accuracy(int argc, char **argv)
     if (svg && no_time) return pt_cli_usage("accuracy", "--svg plots run time: drop --no-time");
     if (pt_cli_outputs(path, &svg, (const char *const[]){"--svg"}, 1) != 0) return PT_EXIT_INPUT;
 
+    if ((env = getenv("PIPETRACE_ACC_MAXPIX")) != NULL) {   /* the tests' lower cap */
+        uint64_t v;
+        if (pt_cli_count(env, 1, PT_ACC_MAXPIX, &v) != 0)
+            return pt_cli_usage("accuracy", "PIPETRACE_ACC_MAXPIX takes 1 to %d, not %s",
+                                PT_ACC_MAXPIX, env);
+        maxpix = (size_t)v;
+    }
+
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     if (pt_cli_outputs_objs(&s, &svg, (const char *const[]){"--svg"}, 1) != 0
         || pt_cli_keep_cap(&s, "accuracy") != 0) {
@@ -876,26 +890,28 @@ int pt_cmd_accuracy(int argc, char **argv)
     if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return PT_EXIT_INPUT; }
     st->s = &s;
     layout_of(&st->rows, &s);
+    /* one run at a time beside the reference: made, compared, timed, freed */
     for (k = 0; k < NRUNS && rc == 0; k++) {
         int row;
 
         for (row = 0; row < PT_ACC_MAXROWS; row++) st->t[k].row[row] = (double)NAN;
         if (!run_applies(&st->rows, k)) continue;   /* no 2.001 to replace */
-        rc = pt_acc_run_make(&st->run[k], &s, run_of[k].arith, run_of[k].choices);
+        rc = pt_acc_run_make_max(&st->run[k], &s, run_of[k].arith, run_of[k].choices, maxpix);
+        if (rc != 0) break;
+        pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
+        if (!no_time) time_one(st, k, repeat);
+        if (k != RUN_DD) pt_acc_run_free(&st->run[k]);
     }
     if (rc == -2)
-        fprintf(stderr, "pipetrace accuracy: %s writes more than %d pixels; accuracy keeps "
-                "them in memory and takes at most that many (docs/limits.md)\n", s.path,
-                PT_ACC_MAXPIX);
+        fprintf(stderr, "pipetrace accuracy: %s lights more than %zu pixels; accuracy keeps "
+                "its image in memory and takes at most that many (docs/limits.md)\n", s.path,
+                maxpix);
     else if (rc != 0)
         fputs("pipetrace accuracy: out of memory\n", stderr);
     if (rc != 0) {
         rc = PT_EXIT_INPUT;
         goto done;
     }
-    for (k = 0; k < NRUNS; k++)
-        if (run_applies(&st->rows, k)) pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
-    if (!no_time) time_all(st, repeat);
 
     print_header(st);
     print_errors(st);

@@ -232,7 +232,11 @@ int pt_cmd_journey(int argc, char **argv)
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     {
         const char *out[3] = {svg, html, image}, *opt[3] = {"--svg", "--html", "--image"};
-        if (pt_cli_outputs_objs(&s, out, opt, 3) != 0 || pt_cli_keep_cap(&s, "journey") != 0) {
+        /* the classic and matrix cameras keep only the journeys they draw
+        ** (journey.h): no cap; the course's renderers 7 and 9 keep every
+        ** primitive's (journey_course.c) */
+        if (pt_cli_outputs_objs(&s, out, opt, 3) != 0 ||
+            ((s.renderer == 7 || s.renderer == 9) && pt_cli_keep_cap(&s, "journey") != 0)) {
             pt_scene_free(&s);
             return PT_EXIT_INPUT;
         }
@@ -267,9 +271,9 @@ int pt_cmd_journey(int argc, char **argv)
     if (!rc && image && render_marked(&fb, &s, m, v) != 0) rc = -1;
     have_fb = !rc && image;
     if (rc == -2)
-        fprintf(stderr, "pipetrace journey: a model of %s draws more than %d pixels; journey "
-                "keeps them in memory and takes at most that many (docs/limits.md)\n", s.path,
-                PT_JOURNEY_MAXPIX);
+        fprintf(stderr, "pipetrace journey: the segments of the vertices shown of %s draw "
+                "more than %d pixels; journey keeps them in memory and takes at most that "
+                "many (docs/limits.md)\n", s.path, PT_JOURNEY_MAXPIX);
     else if (rc) fputs("pipetrace journey: out of memory\n", stderr);
     /* every output is complete before any file is touched */
     if (!rc && svg && write_file(svg, &a, NULL) != 0) rc = -1;

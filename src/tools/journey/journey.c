@@ -17,6 +17,7 @@
 #include "tools/journey/journey.h"
 #include "tools/journey/jdraw.h"
 #include "tools/journey/jrows.h"
+#include "tools/journey/jpanel.h"
 #include "io/numfmt.h"
 #include "core/pipetrace.h"
 
@@ -28,16 +29,53 @@
 /* What run_model() keeps of the records of one pt_run(). */
 typedef struct keeper {
     pt_jmodel *jm;
+    const unsigned char *show;   /* show[k]: vertex k + 1's foreground is drawn */
     size_t npix, cap;            /* pixels in jm->pix, room for */
     size_t nstart;               /* segments whose jm->pixat is set */
+    size_t nkept;                /* journeys in jm->kept so far */
     int oom;                     /* 1: out of memory; 2: past PT_JOURNEY_MAXPIX */
 } keeper;
 
+/* A vertex's journey: its part in the layout when a segment uses it, the
+** whole journey when it is one jm->keep lists (they come in vertex order). */
 static void keep_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
 {
     keeper *kp = ud;
+    pt_jmodel *jm = kp->jm;
 
-    if (m == kp->jm->m && v >= 1 && v <= m->nv) kp->jm->js[v - 1] = *j;
+    if (m != jm->m || v < 1 || v > m->nv) return;
+    if (jm->used[v - 1]) jm->rows->absorb(jm, j, (size_t)(v - 1));
+    if (kp->nkept < jm->nkeep && jm->keep[kp->nkept] == v - 1) jm->kept[kp->nkept++] = *j;
+}
+
+/* The vertices whose journeys the panels draw into jm->keep, ascending; the
+** used ones into jm->used; the shown ones into jm->show.  Returns 0, or -1
+** when out of memory. */
+static int choose_kept(pt_jmodel *jm, const unsigned char *show)
+{
+    const pt_model *m = jm->m;
+    size_t nv = m->nv ? m->nv : 1, s, k;
+    unsigned char *want = calloc(nv, 1);
+
+    jm->used = calloc(nv, 1);
+    jm->show = malloc(nv);
+    if (!want || !jm->used || !jm->show) { free(want); return -1; }
+    memcpy(jm->show, show, m->nv);
+    if (m->nv) want[0] = 1;                  /* the matrices every journey carries */
+    for (k = 0; k < m->nv; k++) want[k] |= show[k];
+    for (s = 0; s < m->nseg; s++) {
+        size_t a = m->seg[s].a, b = m->seg[s].b;
+        jm->used[a] = jm->used[b] = 1;
+        if (pt_jseg_drawn(jm, s)) want[a] = want[b] = 1;
+    }
+    for (k = 0; k < m->nv; k++) jm->nkeep += want[k];
+    jm->keep = malloc((jm->nkeep ? jm->nkeep : 1) * sizeof *jm->keep);
+    jm->kept = calloc(jm->nkeep ? jm->nkeep : 1, sizeof *jm->kept);
+    if (!jm->keep || !jm->kept) { free(want); return -1; }
+    for (k = 0, s = 0; k < m->nv; k++)
+        if (want[k]) jm->keep[s++] = k;
+    free(want);
+    return 0;
 }
 
 /* Segments before seg (1-based) have all their pixels: mark where seg's
@@ -57,6 +95,7 @@ static void keep_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_p
 
     if (m != jm->m || kp->oom) return;
     seg_reach(kp, seg);
+    if (!kp->show[m->seg[seg - 1].a] && !kp->show[m->seg[seg - 1].b]) return;  /* not drawn */
     if (n > PT_JOURNEY_MAXPIX - kp->npix) { kp->oom = 2; return; }
     if (kp->npix + n > kp->cap) {
         size_t cap = kp->cap ? 2 * kp->cap : 1024;
@@ -75,22 +114,28 @@ static void keep_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_p
     }
 }
 
-/* One pt_run() of model jm->m (every vertex traced, used or not): each
-** vertex's journey into jm->js, the pixels drawn of each segment into
-** jm->pix and jm->pixat.  Returns 0, or -1 when out of memory, -2 past
+/* One pt_run() of model jm->m (every vertex traced, used or not): each used
+** vertex's part in the layout into jm->span (its pipeline's absorb), the
+** whole journeys of the vertices drawn into jm->kept (choose_kept()), the
+** pixels drawn of each segment of a vertex shown (the only ones a panel
+** draws) into jm->pix and jm->pixat (the others get none).  Nothing else of
+** the run is kept.  Returns 0, or -1 when out of memory, -2 past
 ** PT_JOURNEY_MAXPIX pixels. */
-static int run_model(pt_jmodel *jm)
+static int run_model(pt_jmodel *jm, const unsigned char *show)
 {
     const pt_model *m = jm->m;
     pt_options o;
     pt_listener l;
     keeper kp;
 
-    jm->js = calloc(m->nv ? m->nv : 1, sizeof *jm->js);
+    pt_jspan_start(&jm->span);
+    if (choose_kept(jm, show) != 0) return -1;
+    jm->code = calloc(m->nv ? m->nv : 1, 1);      /* the matrix camera's absorb fills it */
     jm->pixat = calloc(m->nseg + 1, sizeof *jm->pixat);
-    if (!jm->js || !jm->pixat) return -1;
+    if (!jm->code || !jm->pixat) return -1;
     memset(&kp, 0, sizeof kp);
     kp.jm = jm;
+    kp.show = show;
     pt_options_default(&o);
     o.model = m->name;           /* models of the same name: the callbacks pick m */
     o.every_vertex = 1;
@@ -104,7 +149,8 @@ static int run_model(pt_jmodel *jm)
     return 0;
 }
 
-int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame)
+int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame,
+                   const unsigned char *show)
 {
     double area[4] = { PT_JBOX_X, PT_JBOX_Y, PT_JBOX_X + PT_JBOX_W, PT_JBOX_Y + PT_JBOX_H };
     int st, rc;
@@ -114,7 +160,7 @@ int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt
     jm->m = m;
     jm->rows = &pt_jpipes[pt_scene_pipeline(s)->id];
     pt_stage_params_of(&jm->par, s, m);
-    if ((rc = run_model(jm)) != 0) { pt_jmodel_free(jm); return rc; }
+    if ((rc = run_model(jm, show)) != 0) { pt_jmodel_free(jm); return rc; }
     if (!(jm->place = calloc(PT_NSTAGES_ALL, sizeof *jm->place))) { pt_jmodel_free(jm); return -1; }
     for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_init(&jm->place[st], area);
     if (jm->rows->layout(jm) != 0) { pt_jmodel_free(jm); return -1; }
@@ -160,8 +206,15 @@ void pt_jmodel_free(pt_jmodel *jm)
         for (st = 0; st < PT_NSTAGES_ALL; st++) pt_jplace_free(&jm->place[st]);
     free(jm->place);
     jm->place = NULL;
-    free(jm->js);
-    jm->js = NULL;
+    free(jm->used);
+    free(jm->show);
+    free(jm->keep);
+    free(jm->kept);
+    free(jm->code);
+    jm->used = jm->show = jm->code = NULL;
+    jm->keep = NULL;
+    jm->kept = NULL;
+    jm->nkeep = 0;
     free(jm->pix);
     free(jm->pixat);
     jm->pix = NULL;
@@ -263,7 +316,7 @@ void pt_journey_panel_fg(pt_sbuf *sb, const pt_jmodel *jm, uint64_t vn, pt_stage
     pt_jdraw_to(&jm->place[st]);
     for (s = 0; s < jm->m->nseg && !used; s++)
         used = jm->m->seg[s].a == k || jm->m->seg[s].b == k;
-    j = &jm->js[k];
+    j = pt_jmodel_journey(jm, k);
     stopped = pt_journey_stopped(j, st) && rows->stopped_fg;
     if (stopped) rows->stopped_fg(sb, jm, j, k, st);   /* a stage it did not reach */
     else if (rows->stage[st]) rows->stage[st]->fg(sb, jm, j, k, st);
@@ -345,8 +398,13 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
     pt_sbuf t;
     int i, rc, n = pt_scene_pipeline(s)->norder;
     const pt_stage *ord = pt_scene_pipeline(s)->order;
+    unsigned char *show = calloc(m->nv ? m->nv : 1, 1);
 
-    if ((rc = pt_jmodel_init(&jm, s, m, NULL)) != 0) return rc;
+    if (!show) return -1;
+    show[vn - 1] = 1;
+    rc = pt_jmodel_init(&jm, s, m, NULL, show);
+    free(show);
+    if (rc != 0) return rc;
     pt_sbuf_add(sb, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     pt_sbuf_addf(sb, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %d %d\" "
                  "width=\"100%%\" font-family=\"%s\">\n", DOC_W, DOC_H(n), PT_JFONT);

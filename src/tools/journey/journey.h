@@ -29,6 +29,12 @@
 ** edge pointing toward it.  When pixels are too small to see, the pixel
 ** panels add a zoom inset around the vertex's pixel.
 **
+** Memory follows what is drawn, not the model: the one run keeps the whole
+** journeys of the vertices drawn (shown, their neighbours, the wireframe's
+** first PT_JOURNEY_MAXSEG segments), the pixels of the segments shown, and
+** of every other vertex only its part in the layout, gathered as it passes
+** (pt_jspan); per vertex a few bytes, per segment its pixels' place.
+**
 ** Everything is written into a pt_sbuf (no stdio); coordinates in panel units
 ** with one decimal, every text XML-escaped.
 **
@@ -52,10 +58,13 @@
 /* Lay out the panels of model m of scene s (its pipeline's, jrows.c),
 ** running the scene for the journeys of its vertices.  frame: the scene
 ** rendered by another model's pt_jmodel (its ->frame, kept until this one is
-** freed), or NULL to render it here.  Returns 0, or -1 when out of memory,
-** -2 when the model draws more than PT_JOURNEY_MAXPIX pixels (then nothing is
+** freed), or NULL to render it here.  show[k] (m->nv of them, read here
+** only): 1 when vertex k + 1's foreground will be drawn; the pixels of its
+** segments are kept, no others.  Returns 0, or -1 when out of memory, -2 when
+** those segments draw more than PT_JOURNEY_MAXPIX pixels (then nothing is
 ** left to free). */
-int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame);
+int pt_jmodel_init(pt_jmodel *jm, const pt_scene *s, const pt_model *m, const pt_fb *frame,
+                   const unsigned char *show);
 
 /* Free what *jm owns (a zeroed or freed jm too).  This function can't fail. */
 void pt_jmodel_free(pt_jmodel *jm);

@@ -61,32 +61,49 @@ static void pad(double b[4], double frac, double least)
     b[0] -= p; b[1] -= p; b[2] += p; b[3] += p;
 }
 
+void pt_jclassic_absorb(pt_jmodel *jm, const pt_journey *j, size_t k)
+{
+    pt_jspan *sp = &jm->span;
+    double x, y, reach, lim[4];
+    int st;
+
+    (void)k;
+    /* the 3-D panels' axes and the pyramid's depth */
+    for (st = 0; st < 3; st++) {
+        double c = fabs(st == 0 ? j->rec[0].x : st == 1 ? j->rec[0].y : j->rec[0].z);
+        if (c <= BIG && c > sp->big) sp->big = c;
+    }
+    if (-j->rec[PT_STAGE_CAMERA].z <= BIG && -j->rec[PT_STAGE_CAMERA].z > sp->deep)
+        sp->deep = -j->rec[PT_STAGE_CAMERA].z;
+    /* what it adds to the panels' boxes */
+    for (st = 0; st < 2; st++)
+        if (pt_jstage_xy(j, (pt_stage)st, &x, &y) && fabs(x) <= BIG && fabs(y) <= BIG)
+            grow(sp->b[st], x, y);
+    for (st = PT_STAGE_IMAGE; st <= PT_STAGE_FRAMEBUFFER; st++) {
+        double br[4];
+        if (!pt_jstage_xy(j, (pt_stage)st, &x, &y)) continue;
+        base_rect(jm, (pt_stage)st, br);
+        reach = PT_JOURNEY_REACH * fmax(br[2] - br[0], br[3] - br[1]) / 2;
+        lim[0] = br[0] / 2 + br[2] / 2 - reach; lim[2] = br[0] / 2 + br[2] / 2 + reach;
+        lim[1] = br[1] / 2 + br[3] / 2 - reach; lim[3] = br[1] / 2 + br[3] / 2 + reach;
+        if (x < lim[0] || x > lim[2] || y < lim[1] || y > lim[3]) continue;
+        if (st >= PT_STAGE_VIEWPORT) {
+            grow(sp->b[st], x - 0.5, y - 0.5);
+            grow(sp->b[st], x + 0.5, y + 0.5);
+        } else grow(sp->b[st], x, y);
+    }
+}
+
 int pt_jclassic_layout(pt_jmodel *jm)
 {
     const pt_scene *s = jm->s;
-    const pt_model *m = jm->m;
-    unsigned char *used = calloc(m->nv ? m->nv : 1, 1);
-    double b[PT_NSTAGES_ALL][4], lim[4], reach, big = 0, deep = 0;
-    pt_journey j;
-    size_t k;
+    const pt_jspan *sp = &jm->span;
+    double b[PT_NSTAGES_ALL][4];
     int st;
 
-    if (!used) return -1;
-    for (k = 0; k < m->nseg; k++) used[m->seg[k].a] = used[m->seg[k].b] = 1;
-
     /* 3-D panels: axis lengths and the pyramid's depth from the used vertices */
-    for (k = 0; k < m->nv; k++) {
-        if (!used[k]) continue;
-        j = jm->js[k];
-        for (st = 0; st < 3; st++) {
-            double c = fabs(st == 0 ? j.rec[0].x : st == 1 ? j.rec[0].y : j.rec[0].z);
-            if (c <= BIG && c > big) big = c;
-        }
-        if (-j.rec[PT_STAGE_CAMERA].z <= BIG && -j.rec[PT_STAGE_CAMERA].z > deep)
-            deep = -j.rec[PT_STAGE_CAMERA].z;
-    }
-    jm->axis_m = big > 0 ? 1.25 * big : 1;
-    jm->depth = 1.1 * fmax(1, deep);
+    jm->axis_m = sp->big > 0 ? 1.25 * sp->big : 1;
+    jm->depth = 1.1 * fmax(1, sp->deep);
     jm->axis_c = fmax(1, 0.2 * jm->depth);
 
     /* the bounding boxes, starting from what every panel shows */
@@ -115,26 +132,8 @@ int pt_jclassic_layout(pt_jmodel *jm)
         base_rect(jm, (pt_stage)st, b[st]);
         pad(b[st], 0.06, st == PT_STAGE_IMAGE ? 0.1 : 1);
     }
-    for (k = 0; k < m->nv; k++) {
-        double x, y;
-        if (!used[k]) continue;
-        j = jm->js[k];
-        for (st = 0; st < 2; st++)
-            if (pt_jstage_xy(&j, (pt_stage)st, &x, &y) && fabs(x) <= BIG && fabs(y) <= BIG)
-                grow(b[st], x, y);
-        for (st = PT_STAGE_IMAGE; st <= PT_STAGE_FRAMEBUFFER; st++) {
-            double br[4];
-            if (!pt_jstage_xy(&j, (pt_stage)st, &x, &y)) continue;
-            base_rect(jm, (pt_stage)st, br);
-            reach = PT_JOURNEY_REACH * fmax(br[2] - br[0], br[3] - br[1]) / 2;
-            lim[0] = br[0] / 2 + br[2] / 2 - reach; lim[2] = br[0] / 2 + br[2] / 2 + reach;
-            lim[1] = br[1] / 2 + br[3] / 2 - reach; lim[3] = br[1] / 2 + br[3] / 2 + reach;
-            if (x < lim[0] || x > lim[2] || y < lim[1] || y > lim[3]) continue;
-            if (st >= PT_STAGE_VIEWPORT) { grow(b[st], x - 0.5, y - 0.5); grow(b[st], x + 0.5, y + 0.5); }
-            else grow(b[st], x, y);
-        }
-    }
-    free(used);
+    for (st = 0; st <= PT_STAGE_FRAMEBUFFER; st++)   /* the used vertices */
+        pt_jspan_merge(b[st], sp->b[st]);
     pad(b[0], 0.08, 0);
     pad(b[1], 0.06, 0);
     for (st = PT_STAGE_IMAGE; st <= PT_STAGE_FRAMEBUFFER; st++)
@@ -892,8 +891,8 @@ const pt_jstage_row pt_jclassic_rows[PT_NSTAGES_ALL] = {
 int pt_jclassic_ends(const pt_jmodel *jm, size_t s, pt_stage st, pt_journey *ja, pt_journey *jb)
 {
     (void)st;
-    *ja = jm->js[jm->m->seg[s].a];
-    *jb = jm->js[jm->m->seg[s].b];
+    *ja = *pt_jmodel_journey(jm, jm->m->seg[s].a);
+    *jb = *pt_jmodel_journey(jm, jm->m->seg[s].b);
     return 1;
 }
 

@@ -14,9 +14,13 @@
 ** camera's rows for model, viewport, framebuffer and index point here. */
 extern const pt_jstage_row pt_jclassic_rows[PT_NSTAGES_ALL];
 
+/* Take used vertex k + 1's journey j into jm->span: its part in the model,
+** camera, image, pixel, viewport and framebuffer panels.  Can't fail. */
+void pt_jclassic_absorb(pt_jmodel *jm, const pt_journey *j, size_t k);
+
 /* Fit the views of the model, camera, image, pixel, viewport and framebuffer
-** panels to jm's used vertices (axes, the view pyramid's depth).  Returns 0,
-** or -1 when out of memory. */
+** panels to jm's used vertices (axes, the view pyramid's depth), from
+** jm->span.  Returns 0, or -1 when out of memory. */
 int pt_jclassic_layout(pt_jmodel *jm);
 
 /* Segment s's ends as every stage sees them: its two vertices' journeys.

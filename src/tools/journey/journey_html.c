@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/journey/journey.h"
+#include "tools/journey/jpanel.h"
 #include "tools/journey/journey_wasm.h"
 
 /* The page scales with the window: type in rem, the root's size following the
@@ -236,7 +237,7 @@ static void texts(pt_sbuf *sb, const pt_jmodel *jm, const item *it, int kind)
     pt_journey j;
     int i, st;
 
-    j = jm->js[it->v - 1];
+    j = *pt_jmodel_journey(jm, (size_t)(it->v - 1));
     pt_sbuf_add(sb, "[");
     for (i = 0; i < j.pipe->norder; i++) {
         st = j.pipe->order[i];
@@ -289,7 +290,11 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     }
     for (mi = 0; mi < s->nmodels; mi++) {
         if (!has[mi]) continue;
-        if ((i = pt_jmodel_init(&jms[mi], s, &s->models[mi], frame)) != 0) {
+        free(used);                         /* now: the model's vertices listed */
+        if (!(used = calloc(s->models[mi].nv ? s->models[mi].nv : 1, 1))) goto done;
+        for (k = 0; k < n; k++)
+            if (items[k].m == mi) used[items[k].v - 1] = 1;
+        if ((i = pt_jmodel_init(&jms[mi], s, &s->models[mi], frame, used)) != 0) {
             rc = i;
             goto done;
         }

@@ -54,7 +54,8 @@ static void on_clipvertex(void *ud, const pt_model *m, uint64_t seg, uint64_t fr
     c->seg = m == c->jm->m ? seg : 0;
 }
 
-/* A journey: a vertex's (ignored: jm->js has them) or a clipping point's. */
+/* A journey: a vertex's (ignored: pt_jmodel_init's run had them) or a
+** clipping point's, kept when its segment is drawn. */
 static void on_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey *j)
 {
     cutter *c = ud;
@@ -64,8 +65,9 @@ static void on_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey
     if (m != jm->m || v != 0 || c->seg == 0 || c->failed) return;
     s = (size_t)(c->seg - 1);
     /* pt_run() cuts the first end first, and only an end outside the volume */
-    e = jm->cutix[2 * s] == 0 && jm->js[m->seg[s].a].rec[PT_STAGE_CVV].code != 0
-        ? 2 * s : 2 * s + 1;
+    e = jm->cutix[2 * s] == 0 && jm->code[m->seg[s].a] != 0 ? 2 * s : 2 * s + 1;
+    c->seg = 0;
+    if (!pt_jseg_drawn(jm, s)) { jm->cutix[e] = PT_JOURNEY_UNKEPT; return; }
     if (jm->ncut == c->cap) {
         size_t cap = c->cap ? 2 * c->cap : 16;
         pt_journey *n = realloc(jm->cut, cap * sizeof *n);
@@ -75,7 +77,6 @@ static void on_journey(void *ud, const pt_model *m, uint64_t v, const pt_journey
     }
     jm->cut[jm->ncut++] = *j;
     jm->cutix[e] = jm->ncut;
-    c->seg = 0;
 }
 
 /* Grow bbox b to take in (x, y) when both are finite and not huge. */
@@ -117,18 +118,29 @@ static double comp(const pt_vrec *r, int c)
     return c == 0 ? r->x : c == 1 ? r->y : r->z;
 }
 
+void pt_jmatrix_absorb(pt_jmodel *jm, const pt_journey *j, size_t k)
+{
+    pt_jspan *sp = &jm->span;
+    const pt_vrec *r = &j->rec[PT_STAGE_WORLD], *q = &j->rec[PT_STAGE_CLIP];
+    double c = fmax(fabs(r->x), fmax(fabs(r->y), fabs(r->z))), z = j->rec[PT_STAGE_VIEW].z;
+    double x, y;
+    int i;
+
+    pt_jclassic_absorb(jm, j, k);            /* the panels it shares */
+    jm->code[k] = (unsigned char)j->rec[PT_STAGE_CVV].code;
+    if (c <= BIGV && c > sp->wbig) sp->wbig = c;
+    if (z <= BIGV && 1.1 * z > sp->depth) sp->depth = 1.1 * z;
+    if (pt_jstage_xy(j, PT_STAGE_WORLD, &x, &y)) grow(sp->world, x, y);
+    for (i = 0; i < 3; i++) grow(sp->clip[i], q->w, comp(q, i));
+}
+
 /* The length of the world panel's axes: the used vertices and the eye. */
 static double world_axis(const pt_jmodel *jm)
 {
     const pt_scene *s = jm->s;
     double big = fmax(fabs(s->eye.x), fmax(fabs(s->eye.y), fabs(s->eye.z)));
-    size_t k;
 
-    for (k = 0; k < jm->m->nv; k++) {
-        const pt_vrec *r = &jm->js[k].rec[PT_STAGE_WORLD];
-        double c = fmax(fabs(r->x), fmax(fabs(r->y), fabs(r->z)));
-        if (pt_vertex_used(jm->m, k + 1) && c <= BIGV && c > big) big = c;
-    }
+    if (jm->span.wbig > big) big = jm->span.wbig;
     return big > 0 ? 1.25 * big : 1;
 }
 
@@ -137,12 +149,8 @@ static double world_axis(const pt_jmodel *jm)
 static double view_depth(const pt_jmodel *jm)
 {
     double d = 2 * jm->s->znear;
-    size_t k;
 
-    for (k = 0; k < jm->m->nv; k++) {
-        double z = jm->js[k].rec[PT_STAGE_VIEW].z;
-        if (pt_vertex_used(jm->m, k + 1) && z <= BIGV && 1.1 * z > d) d = 1.1 * z;
-    }
+    if (jm->span.depth > d) d = jm->span.depth;
     return fmin(d, jm->s->zfar);
 }
 
@@ -150,7 +158,7 @@ static double view_depth(const pt_jmodel *jm)
 ** and y_k = +-w_k, with w_k = z_v (Projection's diagonal, m3_view2clip.h). */
 static void frustum_corner(const pt_jmodel *jm, int c, double z, double p[3])
 {
-    const pt_mat4 *P = &jm->js[0].proj;
+    const pt_mat4 *P = &pt_jmodel_journey(jm, 0)->proj;
 
     p[0] = (c == 0 || c == 3 ? -z : z) / P->m[0][0];
     p[1] = (c < 2 ? -z : z) / P->m[1][1];
@@ -187,8 +195,7 @@ int pt_jmatrix_layout(pt_jmodel *jm)
     pt_plan_free(&p);
     if (rc != 0 || c.failed) return -1;
     for (k = 0; k < m->nseg; k++) {          /* an end outside and not cut: culled */
-        unsigned ca = jm->js[m->seg[k].a].rec[PT_STAGE_CVV].code;
-        unsigned cb = jm->js[m->seg[k].b].rec[PT_STAGE_CVV].code;
+        unsigned ca = jm->code[m->seg[k].a], cb = jm->code[m->seg[k].b];
         if ((ca && !jm->cutix[2 * k]) || (cb && !jm->cutix[2 * k + 1]))
             jm->cutix[2 * k] = jm->cutix[2 * k + 1] = PT_JOURNEY_CULLED;
     }
@@ -200,11 +207,7 @@ int pt_jmatrix_layout(pt_jmodel *jm)
     grow3(b, PT_STAGE_WORLD, 0, A, 0);
     grow3(b, PT_STAGE_WORLD, 0, 0, A);
     grow3(b, PT_STAGE_WORLD, jm->s->eye.x, jm->s->eye.y, jm->s->eye.z);
-    for (k = 0; k < m->nv; k++) {
-        double x, y;
-        if (pt_vertex_used(m, k + 1) && pt_jstage_xy(&jm->js[k], PT_STAGE_WORLD, &x, &y))
-            grow(b, x, y);
-    }
+    pt_jspan_merge(b, jm->span.world);       /* the used vertices */
     pad_fit(&jm->view[PT_STAGE_WORLD], b, 0, PT_JBOX_X, PT_JBOX_Y, PT_JBOX_W, PT_JBOX_H);
     /* view: the eye, the frustum, the used vertices; ndc: the cube */
     D = view_depth(jm);
@@ -225,10 +228,7 @@ int pt_jmatrix_layout(pt_jmodel *jm)
     for (i = 0; i < 3; i++) {
         pt_jview *v = i == 0 ? &jm->view[PT_STAGE_CLIP] : i == 1 ? &jm->clip_y : &jm->clip_z;
         b[0] = 0; b[1] = i == 2 ? 0 : -1; b[2] = 1; b[3] = 1;
-        for (k = 0; k < m->nv; k++) {
-            const pt_vrec *r = &jm->js[k].rec[PT_STAGE_CLIP];
-            if (pt_vertex_used(m, k + 1)) grow(b, r->w, comp(r, i));
-        }
+        pt_jspan_merge(b, jm->span.clip[i]);     /* the used vertices */
         if (i < 2) { b[1] = fmin(b[1], -b[2]); b[3] = fmax(b[3], b[2]); }  /* the wedge */
         pad_fit(v, b, 0, i == 1 ? PT_JBOX_X + PT_JBOX_W / 2 + 4 : PT_JBOX_X, PT_JBOX_Y + 16, PT_JBOX_W / 2 - 4, PT_JBOX_H - 16);
     }
@@ -241,8 +241,8 @@ int pt_jmatrix_ends(const pt_jmodel *jm, size_t s, pt_stage st, pt_journey *ja, 
     int after = st == PT_STAGE_NDC || st == PT_STAGE_SCREEN || st == PT_STAGE_VIEWPORT ||
                 st == PT_STAGE_FRAMEBUFFER || st == PT_STAGE_INDEX;
 
-    *ja = jm->js[jm->m->seg[s].a];
-    *jb = jm->js[jm->m->seg[s].b];
+    *ja = *pt_jmodel_journey(jm, jm->m->seg[s].a);
+    *jb = *pt_jmodel_journey(jm, jm->m->seg[s].b);
     if (!after) return 1;
     if (cx[0] == PT_JOURNEY_CULLED) return 0;
     if (cx[0]) *ja = jm->cut[cx[0] - 1];
@@ -360,8 +360,8 @@ static void bg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c)
     snprintf(a, sizeof a, "%s against w_k", names[c]);
     pt_jtext(sb, v->bx + 2, v->by - 4, 10.5, "start", "fill=\"#222\"", a, 0);
     for (k = 0; k < m->nseg && k < PT_JOURNEY_MAXSEG; k++) {
-        const pt_vrec *ra = &jm->js[m->seg[k].a].rec[PT_STAGE_CLIP];
-        const pt_vrec *rb = &jm->js[m->seg[k].b].rec[PT_STAGE_CLIP];
+        const pt_vrec *ra = &pt_jmodel_journey(jm, m->seg[k].a)->rec[PT_STAGE_CLIP];
+        const pt_vrec *rb = &pt_jmodel_journey(jm, m->seg[k].b)->rec[PT_STAGE_CLIP];
         pt_jview_line(sb, v, ra->w, comp(ra, c), rb->w, comp(rb, c), "#b9bfc9", 1, "");
     }
 }
@@ -430,14 +430,15 @@ static void bg_clip(pt_sbuf *sb, const pt_jmodel *jm, pt_stage st)
 static void fg_wedge(pt_sbuf *sb, const pt_jmodel *jm, const pt_jview *v, int c, size_t k)
 {
     const pt_model *m = jm->m;
-    const pt_vrec *r = &jm->js[k].rec[PT_STAGE_CLIP];
+    const pt_vrec *r = &pt_jmodel_journey(jm, k)->rec[PT_STAGE_CLIP];
     size_t s;
     int e;
 
     for (s = 0; s < m->nseg; s++) {
-        const pt_vrec *ra = &jm->js[m->seg[s].a].rec[PT_STAGE_CLIP];
-        const pt_vrec *rb = &jm->js[m->seg[s].b].rec[PT_STAGE_CLIP];
+        const pt_vrec *ra, *rb;
         if (m->seg[s].a != k && m->seg[s].b != k) continue;
+        ra = &pt_jmodel_journey(jm, m->seg[s].a)->rec[PT_STAGE_CLIP];
+        rb = &pt_jmodel_journey(jm, m->seg[s].b)->rec[PT_STAGE_CLIP];
         pt_jview_line(sb, v, ra->w, comp(ra, c), rb->w, comp(rb, c), PT_JC_SEG, 2,
                       "stroke-linecap=\"round\"");
         for (e = 0; e < 2; e++) {            /* where clipping cut it */

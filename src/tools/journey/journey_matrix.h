@@ -13,6 +13,10 @@
 ** viewport, framebuffer and index are the classic panels). */
 extern const pt_jstage_row pt_jmatrix_rows[PT_NSTAGES_ALL];
 
+/* Take used vertex k + 1's journey j into jm->span (the classic panels'
+** part too) and its outcode into jm->code.  Can't fail. */
+void pt_jmatrix_absorb(pt_jmodel *jm, const pt_journey *j, size_t k);
+
 /* Lay out the classic panels it shares, run the scene once more for the
 ** points clipping made on jm's model, and lay out its own panels.  Returns 0,
 ** or -1 when out of memory. */

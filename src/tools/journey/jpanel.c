@@ -7,8 +7,54 @@
 ** makes (journey.c keeps them, per segment, in jm->pix): what the renderer
 ** drew, never a segment walked again here.
 */
+#include <assert.h>
 #include <math.h>
+#include <stdlib.h>
 #include "tools/journey/jpanel.h"
+
+static int by_index(const void *a, const void *b)
+{
+    size_t x = *(const size_t *)a, y = *(const size_t *)b;
+
+    return x < y ? -1 : x > y;
+}
+
+const pt_journey *pt_jmodel_journey(const pt_jmodel *jm, size_t k)
+{
+    const size_t *f = jm->nkeep ? bsearch(&k, jm->keep, jm->nkeep, sizeof k, by_index) : NULL;
+
+    assert(f);                               /* a vertex drawn is kept */
+    return f ? &jm->kept[f - jm->keep] : &jm->kept[0];
+}
+
+int pt_jseg_drawn(const pt_jmodel *jm, size_t s)
+{
+    return s < PT_JOURNEY_MAXSEG || jm->show[jm->m->seg[s].a] || jm->show[jm->m->seg[s].b];
+}
+
+void pt_jspan_start(pt_jspan *sp)
+{
+    int st, i;
+
+    for (st = 0; st < PT_NSTAGES_ALL; st++) {
+        sp->b[st][0] = sp->b[st][1] = (double)INFINITY;
+        sp->b[st][2] = sp->b[st][3] = -(double)INFINITY;
+    }
+    for (i = 0; i < 4; i++) {
+        sp->world[i] = i < 2 ? (double)INFINITY : -(double)INFINITY;
+        sp->clip[0][i] = sp->clip[1][i] = sp->clip[2][i] = sp->world[i];
+    }
+    sp->big = sp->deep = sp->wbig = 0;
+    sp->depth = -(double)INFINITY;
+}
+
+void pt_jspan_merge(double b[4], const double a[4])
+{
+    if (a[0] < b[0]) b[0] = a[0];
+    if (a[1] < b[1]) b[1] = a[1];
+    if (a[2] > b[2]) b[2] = a[2];
+    if (a[3] > b[3]) b[3] = a[3];
+}
 
 int pt_jseg_ends(const pt_jmodel *jm, size_t s, pt_stage st, pt_journey *ja, pt_journey *jb)
 {

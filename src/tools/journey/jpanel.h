@@ -44,9 +44,26 @@ void pt_jfg_point(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, size_t 
 ** point of stage st.  This function can't fail. */
 void pt_jfg_path(pt_sbuf *sb, const pt_jmodel *jm, const pt_journey *j, pt_stage st);
 
+/* The journey of vertex k + 1, one of those jm keeps (jm->keep: the vertices
+** shown, the other ends of their segments, the ends of the segments the
+** wireframe draws, vertex 1).  This function can't fail. */
+const pt_journey *pt_jmodel_journey(const pt_jmodel *jm, size_t k);
+
+/* 1 when the panels draw segment s (0-based): the wireframe's (the first
+** PT_JOURNEY_MAXSEG), or one of a vertex shown.  This function can't fail. */
+int pt_jseg_drawn(const pt_jmodel *jm, size_t s);
+
+/* Start an empty span (every box empty, every largest value none).  Can't fail. */
+void pt_jspan_start(pt_jspan *sp);
+
+/* Grow box b to take in box a, coordinate by coordinate (an empty a leaves
+** b as it is).  This function can't fail. */
+void pt_jspan_merge(double b[4], const double a[4]);
+
 /* The pixels pt_run() drew of every segment that uses vertex k + 1, from its
-** pixel records (jm->pix, kept by pt_jmodel_init's run), in segment and step
-** order into px(ud, x_vp, y_vp).  This function can't fail. */
+** pixel records (jm->pix, kept by pt_jmodel_init's run for the vertices it
+** was told are shown: k + 1 must be one), in segment and step order into
+** px(ud, x_vp, y_vp).  This function can't fail. */
 void pt_jraster_segs(const pt_jmodel *jm, size_t k, void (*px)(void *, int64_t, int64_t),
                      void *ud);
 

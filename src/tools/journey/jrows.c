@@ -18,7 +18,7 @@
 
 const pt_jrows pt_jpipes[PT_NPIPES] = {
     [PT_PIPE_CLASSIC] = {
-        pt_jclassic_layout, pt_jclassic_ends, pt_jclassic_pixelplane,
+        pt_jclassic_absorb, pt_jclassic_layout, pt_jclassic_ends, pt_jclassic_pixelplane,
         NULL, NULL, NULL,                    /* every point reaches the index */
         {
             CLASSIC(PT_STAGE_MODEL), CLASSIC(PT_STAGE_CAMERA), CLASSIC(PT_STAGE_IMAGE),
@@ -27,7 +27,7 @@ const pt_jrows pt_jpipes[PT_NPIPES] = {
         },
     },
     [PT_PIPE_MATRIX] = {
-        pt_jmatrix_layout, pt_jmatrix_ends, pt_jmatrix_pixelplane,
+        pt_jmatrix_absorb, pt_jmatrix_layout, pt_jmatrix_ends, pt_jmatrix_pixelplane,
         pt_jmatrix_stopped_fg, pt_jmatrix_unreached, pt_jmatrix_stopped_note,
         {
             CLASSIC(PT_STAGE_MODEL), MATRIX(PT_STAGE_WORLD), MATRIX(PT_STAGE_VIEW),
