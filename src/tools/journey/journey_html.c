@@ -221,6 +221,27 @@ static const char *const script[] = {
     NULL
 };
 
+void pt_journey_page_head(pt_sbuf *sb, const char *model, uint64_t v)
+{
+    pt_sbuf_add(sb, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+                "<title>pipetrace journey: ");
+    pt_sbuf_add_xml(sb, model);
+    pt_sbuf_addf(sb, " v%llu</title>\n<style>\n", (unsigned long long)v);
+    pt_sbuf_add(sb, style);
+    pt_sbuf_add(sb, "</style>\n</head>\n<body>\n");
+    pt_sbuf_add(sb, body);
+}
+
+void pt_journey_page_script(pt_sbuf *sb)
+{
+    int k;
+
+    pt_sbuf_add(sb, "<script>\n");
+    for (k = 0; script[k]; k++) pt_sbuf_add(sb, script[k]);
+    pt_sbuf_add(sb, "</script>\n");
+}
+
 /* One vertex listed on the page. */
 typedef struct item {
     size_t m;                    /* model index */
@@ -296,14 +317,7 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
         if (!frame) frame = jms[mi].frame;  /* the scene rendered once for every model */
     }
 
-    pt_sbuf_add(sb, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-                "<title>pipetrace journey: ");
-    pt_sbuf_add_xml(sb, m->name);
-    pt_sbuf_addf(sb, " v%llu</title>\n<style>\n", (unsigned long long)v);
-    pt_sbuf_add(sb, style);
-    pt_sbuf_add(sb, "</style>\n</head>\n<body>\n");
-    pt_sbuf_add(sb, body);
+    pt_journey_page_head(sb, m->name, v);
 
     /* the data */
     pt_sbuf_add(sb, "<script type=\"application/json\" id=\"data\">\n{\"where\":");
@@ -375,9 +389,8 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
         }
         pt_sbuf_add(sb, "]}");
     }
-    pt_sbuf_add(sb, "]}\n</script>\n<script>\n");
-    for (st = 0; script[st]; st++) pt_sbuf_add(sb, script[st]);
-    pt_sbuf_add(sb, "</script>\n");
+    pt_sbuf_add(sb, "]}\n</script>\n");
+    pt_journey_page_script(sb);
     pt_journey_wasm(sb, s);                 /* the sliders (journey_wasm.c) */
     pt_sbuf_add(sb, "</body>\n</html>\n");
     rc = sb->failed ? -1 : 0;

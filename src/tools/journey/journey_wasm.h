@@ -46,4 +46,17 @@ extern const char *const pt_journey_wasm_b64[];
 ** #coords (journey_html.c).  On allocation failure sb->failed is set. */
 void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s);
 
+/* The recompute section of a course scene's page (renderers 7 and 9,
+** journey_course.c): sliders l, r, b, t, n (#s_l ... #s_n), the
+** translation #s_x_t ... #s_z_t (renderer 7) or the view vector #s_view_x
+** ... #s_view_z (renderer 9), the viewport #s_w, #s_h, #s_x_ul, #s_y_ul;
+** #livetable's rows model, [world,] view, camera, nearclip, image, clip
+** (reals as IEEE bits, "none" before the vertex is made), viewport and
+** framebuffer (integers, "none" outside the view square).  The module
+** runs the position's whole model through the course's stages, so a
+** vertex a clip makes is followed as well.  On allocation failure
+** sb->failed is set. */
+struct pt_jcourse;
+void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const struct pt_jcourse *jc);
+
 #endif
