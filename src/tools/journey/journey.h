@@ -100,4 +100,11 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
 void pt_journey_page_head(pt_sbuf *sb, const char *model, uint64_t v);
 void pt_journey_page_script(pt_sbuf *sb);
 
+/* Append stage k's entry (k > 0: after a comma) of the data's "stages"
+** list: its trace name, title, spaces, formula (NULL: none) and what it
+** does.  On allocation failure sb->failed is set. */
+void pt_journey_page_stage(pt_sbuf *sb, int k, const char *name, const char *title,
+                           const char *from, const char *to, const char *formula,
+                           const char *what);
+
 #endif

@@ -935,19 +935,7 @@ int pt_journey_course_html(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v
     for (k = 0; k < np; k++) {
         pt_jcourse_stage in;
         pt_jcourse_stage_of(jc, k, &in);
-        pt_sbuf_add(sb, k ? ",\n{\"name\":" : "{\"name\":");
-        pt_sbuf_add_json(sb, in.key);
-        pt_sbuf_add(sb, ",\"title\":");
-        pt_sbuf_add_json(sb, in.title);
-        pt_sbuf_add(sb, ",\"from\":");
-        pt_sbuf_add_json(sb, in.from);
-        pt_sbuf_add(sb, ",\"to\":");
-        pt_sbuf_add_json(sb, in.to);
-        pt_sbuf_add(sb, ",\"formula\":");
-        pt_sbuf_add_json(sb, in.formula ? in.formula : "");
-        pt_sbuf_add(sb, ",\"what\":");
-        pt_sbuf_add_json(sb, in.what);
-        pt_sbuf_add(sb, "}");
+        pt_journey_page_stage(sb, k, in.key, in.title, in.from, in.to, in.formula, in.what);
     }
     pt_sbuf_add(sb, "],\n\"models\":[{\"name\":");
     pt_sbuf_add_json(sb, s->models[mi].name);

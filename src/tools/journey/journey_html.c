@@ -233,6 +233,25 @@ void pt_journey_page_head(pt_sbuf *sb, const char *model, uint64_t v)
     pt_sbuf_add(sb, body);
 }
 
+void pt_journey_page_stage(pt_sbuf *sb, int k, const char *name, const char *title,
+                           const char *from, const char *to, const char *formula,
+                           const char *what)
+{
+    pt_sbuf_add(sb, k ? ",\n{\"name\":" : "{\"name\":");
+    pt_sbuf_add_json(sb, name);
+    pt_sbuf_add(sb, ",\"title\":");
+    pt_sbuf_add_json(sb, title);
+    pt_sbuf_add(sb, ",\"from\":");
+    pt_sbuf_add_json(sb, from);
+    pt_sbuf_add(sb, ",\"to\":");
+    pt_sbuf_add_json(sb, to);
+    pt_sbuf_add(sb, ",\"formula\":");
+    pt_sbuf_add_json(sb, formula ? formula : "");
+    pt_sbuf_add(sb, ",\"what\":");
+    pt_sbuf_add_json(sb, what);
+    pt_sbuf_add(sb, "}");
+}
+
 void pt_journey_page_script(pt_sbuf *sb)
 {
     int k;
@@ -283,7 +302,7 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     unsigned char *has = calloc(s->nmodels ? s->nmodels : 1, 1), *used = NULL;
     pt_sbuf t;
     const pt_fb *frame = NULL;
-    int st, i, rc = -1, found = 0;
+    int i, rc = -1, found = 0;
     int n_st = pt_scene_pipeline(s)->norder;
     const pt_stage *ord = pt_scene_pipeline(s)->order;
 
@@ -337,20 +356,8 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
                  (unsigned long long)start);
     for (i = 0; i < n_st; i++) {
         const pt_stage_info *in = pt_pipeline_info(pt_scene_pipeline(s), ord[i]);
-        st = ord[i];
-        pt_sbuf_add(sb, i ? ",\n{\"name\":" : "{\"name\":");
-        pt_sbuf_add_json(sb, in->name);
-        pt_sbuf_add(sb, ",\"title\":");
-        pt_sbuf_add_json(sb, pt_journey_title((pt_stage)st));
-        pt_sbuf_add(sb, ",\"from\":");
-        pt_sbuf_add_json(sb, in->from);
-        pt_sbuf_add(sb, ",\"to\":");
-        pt_sbuf_add_json(sb, in->to);
-        pt_sbuf_add(sb, ",\"formula\":");
-        pt_sbuf_add_json(sb, in->formula);
-        pt_sbuf_add(sb, ",\"what\":");
-        pt_sbuf_add_json(sb, in->what);
-        pt_sbuf_add(sb, "}");
+        pt_journey_page_stage(sb, i, in->name, pt_journey_title(ord[i]), in->from, in->to,
+                              in->formula, in->what);
     }
     pt_sbuf_add(sb, "],\n\"models\":[\n");
     for (mi = 0; mi < s->nmodels; mi++) {
