@@ -13,7 +13,7 @@
 ** are written whole or not at all (src/io/outfile.h); "-" is standard output.
 ** Both cameras are drawn: the matrix camera's panels follow its ten stages
 ** (src/tools/journey/journey_matrix.c).  A scene of the course's renderer 7
-** or 9 gets the SVG only (src/tools/journey/journey_course.c).
+** or 9 gets its own panels, page and image (src/tools/journey/journey_course.c).
 */
 #include <errno.h>
 #include <stdio.h>
@@ -50,9 +50,12 @@ static const char usage[] =
 "seven panels, or the matrix camera's ten (camera lookat: world, view, clip, cvv,\n"
 "ndc and screen between model and viewport; a vertex outside the view volume\n"
 "stops at the cvv, and its segments go on from where clipping cut them).\n"
-"A scene of the course's renderer 7 or 9: --svg only (model, [world,] view,\n"
-"view volume, normalized, near clip, image plane, viewport); a vertex past the\n"
-"model's own is one a clip stage made.  --html and --image refuse such a scene.\n"
+"A scene of the course's renderer 7 or 9: the panels model, [world,] view,\n"
+"view volume, normalized, near clip, image plane, viewport; a vertex past the\n"
+"model's own is one a clip stage made.  The page lists every vertex of the\n"
+"position (at most 64) or the --vertex list, its sliders move l, r, b, t, n,\n"
+"the translation (7) or view vector (9) and the viewport; --image rings the\n"
+"vertex's pixel in the course's render.\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
 "Docs: docs/journey.md\n";
 

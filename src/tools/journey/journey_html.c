@@ -66,6 +66,7 @@ static const char style[] =
 "html.present main{grid-template-columns:minmax(0,1fr);justify-items:center;gap:.4rem;"
 "padding:.5rem 1rem}\n"
 "html.present #panel svg{height:66vh;width:auto;max-width:100%}\n"
+"html.present aside{max-width:100%}\n"
 "html.present aside>:not(#coords):not(#formula){display:none}\n"
 "html.present #formula{font-size:1rem}\n";
 
