@@ -61,7 +61,6 @@
 #include "stages/s3_image2pixel.h"
 #include "stages/pt_round.h"
 #include "wasm/pt_wasm_alloc.h"
-#include "wasm/pt_wasm_course.h"
 
 #define EXPORT(name) __attribute__((export_name(name)))
 
@@ -230,7 +229,7 @@ unsigned pt_wasm_warn(int st)
 
 /* ===== the course's renderers 7 and 9 ===== */
 
-/* The course inputs (pt_wasm_course.h) and the last run's vertex. */
+/* The course inputs (stages/wasm/pt_wasm_in.h) and the last run's vertex. */
 static double *cin;
 static int cnv, cnc, cnp;
 static int chave[PT_NCOURSE];

@@ -962,7 +962,15 @@ int pt_journey_course_html(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v
     }
     pt_sbuf_add(sb, "]}\n</script>\n");
     pt_journey_page_script(sb);
-    if (rc >= 0) pt_journey_wasm_course(sb, s, jc);
+    if (rc >= 0) {                          /* the sliders (journey_wasm.c) */
+        pt_jwasm_course cw;
+        pt_rv_model view;
+        cw.j = &jc->j;
+        cw.m = pt_jcourse_model(jc, &view);
+        for (k = 0; k < PT_NCST; k++) cw.label[k] = pt_jcourse_label(k);
+        for (k = 0; k < 3; k++) cw.text[k] = pt_jcourse_text(k);
+        pt_journey_wasm_course(sb, s, &cw);
+    }
     pt_sbuf_add(sb, "</body>\n</html>\n");
     pt_jcourse_close(jc);
     return rc < 0 || sb->failed ? -1 : 0;

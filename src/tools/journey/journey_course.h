@@ -32,7 +32,6 @@
 #include "core/pipetrace.h"
 #include "io/sbuf.h"
 #include "io/explain_course.h"
-#include "core/fb.h"
 
 /* One render of the scene heard for one position, and one vertex's journey
 ** through it: what the SVG, the page and the image are drawn from. */

@@ -12,8 +12,6 @@
 #include "tools/journey/journey.h"
 #include "tools/journey/journey_wasm.h"
 #include "tools/journey/jrows.h"
-#include "tools/journey/journey_course.h"
-#include "wasm/pt_wasm_course.h"
 
 #define PT_JOURNEY_WASM_MAXV 100000  /* a model's first this many vertices get sliders */
 
@@ -528,11 +526,10 @@ static const char course_show[] =
 "\"volume\":[\"view\"],\"camera\":[\"camera\"],\"nearclip\":[\"nearclip\"],"
 "\"image\":[\"image\",\"clip\"],\"viewport\":[\"viewport\"]}";
 
-void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jcourse *jc)
+void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jwasm_course *cw)
 {
-    const pt_cx_journey *j = pt_jcourse_journey(jc);
-    pt_rv_model view;
-    const pt_rv_model *m = pt_jcourse_model(jc, &view);
+    const pt_cx_journey *j = cw->j;
+    const pt_rv_model *m = cw->m;
     size_t k, i;
     int c;
 
@@ -572,7 +569,7 @@ void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jcourse *jc
                  (unsigned long long)(PT_WASM_CIN_MODEL + 4 * m->nv + 3 * m->nc + 6 * m->np));
     for (c = 0; c < 3; c++) {
         if (c) pt_sbuf_add(sb, ",");
-        pt_sbuf_add_json(sb, pt_jcourse_text(c));
+        pt_sbuf_add_json(sb, cw->text[c]);
     }
     pt_sbuf_add(sb, "],\n");
     pt_sbuf_add(sb, course_show);
@@ -581,7 +578,7 @@ void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jcourse *jc
         if (course_rows[i].id == PT_CST_WORLD && s->renderer != 9) continue;
         pt_sbuf_addf(sb, "%s{\"name\":\"%s\",\"id\":%d,\"coord\":", c++ ? "," : "",
                      course_rows[i].name, course_rows[i].id);
-        pt_sbuf_add_json(sb, pt_jcourse_label(course_rows[i].id));
+        pt_sbuf_add_json(sb, cw->label[course_rows[i].id]);
         pt_sbuf_add(sb, "}");
     }
     pt_sbuf_add(sb, "],\"ids\":{");

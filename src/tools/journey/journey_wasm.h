@@ -33,6 +33,7 @@
 
 #include "io/sbuf.h"
 #include "core/pipetrace.h"
+#include "io/explain_course.h"
 
 /* $B/stages.wasm as base64, one line an element, ended by NULL; only the
 ** NULL when pipetrace was built without clang and wasm-ld (or WASM=no).
@@ -56,7 +57,13 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s);
 ** runs the position's whole model through the course's stages, so a
 ** vertex a clip makes is followed as well.  On allocation failure
 ** sb->failed is set. */
-struct pt_jcourse;
-void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const struct pt_jcourse *jc);
+typedef struct pt_jwasm_course {
+    const pt_cx_journey *j;      /* the camera, translation, matrix (any vertex's) */
+    const pt_rv_model *m;        /* the position's model as the driver built it */
+    const char *label[PT_NCST];  /* each stage's coordinates, "(x_c, y_c, z_c)" */
+    const char *text[3];         /* the labels' "not yet" (near clip, clip) and
+                                 ** the viewport's "none" texts */
+} pt_jwasm_course;
+void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jwasm_course *c);
 
 #endif
