@@ -38,7 +38,12 @@
 **   pt_wasm_course_in(nv, nc, np)   the address of the inputs (PT_WASM_CIN_*,
 **                                   then the model), the arena emptied
 **   pt_wasm_course_in_at()          the same address, the arena kept
-**   pt_wasm_course_run(renderer, perspective, nearclip, v, w, h, x_ul, y_ul)
+**   pt_wasm_course_ops(n)           the address of n operations of renderer 9's
+**                                   position matrix (PT_WASM_COP doubles each)
+**   pt_wasm_course_run(renderer, perspective, nearclip, v, w, h, x_ul, y_ul, nops)
+**                                   nops >= 0: the matrix built from the
+**                                   operations (r9_matrix.c), sin and cos
+**                                   from the table
 **   pt_wasm_course_have(st)         1 when vertex v exists after course stage st
 **   pt_wasm_course_at(st, k)        its x, y, z, w (k = 0..3) after st
 **   pt_wasm_course_px(k)            x_vp, y_vp, x_fb, y_fb (k = 0..3); k = 4:
@@ -291,13 +296,42 @@ double *pt_wasm_course_in_at(void)
     return cin;
 }
 
-/* Run vertex v (1-based) of the inputs' model through the course's stages.
+/* Run vertex v (1-based) of the inputs' model through the course's stages,
+** renderer 9's matrix from the inputs or (nops >= 0) from the operations.
 ** Returns 0; -1 when out of arena or a size is below 1; -2 when a clip
-** stage refused a colour (the course's render throws). */
+** stage refused a colour (the course's render throws); -3 when an angle's
+** sin or cos is not in the table (nothing is run). */
+static double cops[PT_WASM_NCOPS * PT_WASM_COP];
+
+EXPORT("pt_wasm_course_ops") double *pt_wasm_course_ops(int n);
+double *pt_wasm_course_ops(int n)
+{
+    return n >= 0 && n <= PT_WASM_NCOPS ? cops : 0;
+}
+
+/* The position's matrix from the first n operations at cops.  Returns 0,
+** or -3 when sin or cos was asked for an argument not in the table. */
+static int course_matrix(pt_jmat *mat, int n)
+{
+    pt_matop ops[PT_WASM_NCOPS];
+    int k, i;
+
+    for (k = 0; k < n; k++) {
+        const double *o = cops + k * PT_WASM_COP;
+        ops[k].mul = o[0] == 0 ? PT_MATMUL_POST : o[0] == 1 ? PT_MATMUL_PRE : PT_MATMUL_SET;
+        ops[k].kind = (pt_matop_kind)(int)o[1];
+        for (i = 0; i < 16; i++) ops[k].a[i] = o[2 + i];
+    }
+    pt_wasm_libm_missed = 0;
+    *mat = pt_r9_position_matrix(ops, (size_t)n);
+    return pt_wasm_libm_missed ? -3 : 0;
+}
+
 EXPORT("pt_wasm_course_run") int pt_wasm_course_run(int renderer, int perspective, int nearclip,
-                                                    int v, int w, int h, int x_ul, int y_ul);
+                                                    int v, int w, int h, int x_ul, int y_ul,
+                                                    int nops);
 int pt_wasm_course_run(int renderer, int perspective, int nearclip, int v, int w, int h,
-                       int x_ul, int y_ul)
+                       int x_ul, int y_ul, int nops)
 {
     pt_rv_model m = {0};
     pt_rv_camera cam;
@@ -319,6 +353,8 @@ int pt_wasm_course_run(int renderer, int perspective, int nearclip, int v, int w
         mat.col[k].x = cin[PT_WASM_CIN_MATRIX + 4 * k]; mat.col[k].y = cin[PT_WASM_CIN_MATRIX + 4 * k + 1];
         mat.col[k].z = cin[PT_WASM_CIN_MATRIX + 4 * k + 2]; mat.col[k].w = cin[PT_WASM_CIN_MATRIX + 4 * k + 3];
     }
+    if (nops > PT_WASM_NCOPS) return -1;
+    if (nops >= 0 && (rc = course_matrix(&mat, nops)) != 0) return rc;
     norm = pt_r9_normalize_matrix(&cam);    /* as pt_course_camera() builds it */
     if (course_model(&m) != 0) return -1;
     ckeep(PT_WASM_CST_MODEL, &m, at);

@@ -42,5 +42,11 @@ enum {
     PT_WASM_CST_NEARCLIP, PT_WASM_CST_IMAGE, PT_WASM_CST_CLIP, PT_NCOURSE
 };
 
+/* Renderer 9's position matrix from its operations instead (the angle and
+** translation sliders): at pt_wasm_course_ops(n), per operation its
+** pt_matmul, its pt_matop_kind and its 16 arguments. */
+#define PT_WASM_COP 18
+#define PT_WASM_NCOPS 64
+
 
 #endif

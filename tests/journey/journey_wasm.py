@@ -56,7 +56,8 @@ def rewrite(text, p, model):
 
 def rewrite79(text, p, model):
     """A renderer 7 or 9 scene with the page's camera, near plane, viewport and
-    the position's translation (7) or the camera's view vector (9)."""
+    the position's translation (7) or the camera's view vector and its
+    matrix's angles and translations (9)."""
     n = p["n"]
     near = n[1:] if n.startswith("-") else "-" + n
     out, here, proj = [], False, "perspective"
@@ -69,7 +70,14 @@ def rewrite79(text, p, model):
         if d in ("near", "viewport", "view") or (d == "translate" and here and "x_t" in p):
             continue
         if d == "model":
-            here = len(words) > 1 and words[1] == model
+            here, op = len(words) > 1 and words[1] == model, 0
+        if here and "view_x" in p and d in ("matrix", "matrix-pre", "matrix-set", "translate"):
+            op += 1                              # renderer 9: the matrix's K-th operation
+            if "angle_%d" % op in p:             # rotate x|y|z DEG, or rotate DEG X Y Z
+                words[3 if words[2] in ("x", "y", "z") else 2] = p["angle_%d" % op]
+            if "tx_%d" % op in p:
+                words[len(words) - 3:] = [p["%s_%d" % (c, op)] for c in ("tx", "ty", "tz")]
+            line = " ".join(words)
         out.append(line)
         if d == "model" and here and "x_t" in p:
             out.append("translate %s %s %s" % (p["x_t"], p["y_t"], p["z_t"]))

@@ -111,6 +111,14 @@ else
     move79 $c/r9-near-05.scene 13 '&set=view_x:0.5,view_z:-1.5,t:2,n:-1&stage=6'
     move79 $c/r9-near-05.scene 2 '&set=n:-3.5,l:-0.4&stage=8'
     move79 $c/r9-mat-14-camera-translate.scene 1 '&set=view_y:0.35,l:-0.8&stage=3'
+    # renderer 9's matrix: a translate's x, y, z and a rotate's angle (sin and
+    # cos from the page's table), the scene's own angle between the steps
+    move79 $c/r9-mat-07-order-TRS.scene 1 '&set=angle_2:-45,tx_1:0.35,ty_1:-0.2&stage=2'
+    move79 $c/r9-mat-14-camera-translate.scene 2 '&set=angle_2:359,view_y:0.35&stage=2'
+    sed 's/^matrix rotate y 30.0/matrix-pre rotate 37.5 1 1 0/' \
+        $c/r9-mat-07-order-TRS.scene > "$tmp/rot.scene"
+    move79 "$tmp/rot.scene" 3 '&set=view_z:0.5,tz_1:-5.5&stage=2'
+    move79 "$tmp/rot.scene" 3 '&set=angle_2:-360&stage=3'
     move79 $c/r9-aa-04.scene 1 '&set=b:-2.5,n:0.5,w:30,x_ul:20&stage=8'
     move79 $c/r9-clip-12-through-x.scene 3 '&set=r:0.6,w:33&stage=7'
     move79 $c/r9-vp-02.scene 3 '&set=y_ul:10,h:60,view_z:0.5&stage=5'

@@ -54,8 +54,9 @@ static const char usage[] =
 "view volume, normalized, near clip, image plane, viewport; a vertex past the\n"
 "model's own is one a clip stage made.  The page lists every vertex of the\n"
 "position (at most 64) or the --vertex list, its sliders move l, r, b, t, n,\n"
-"the translation (7) or view vector (9) and the viewport; --image rings the\n"
-"vertex's pixel in the course's render.\n"
+"the translation (7) or view vector and matrix angles (9) and the viewport;\n"
+"--image rings the"
+" vertex's pixel in the course's render.\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
 "Docs: docs/journey.md\n";
 

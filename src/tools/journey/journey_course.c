@@ -967,6 +967,8 @@ int pt_journey_course_html(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v
         pt_rv_model view;
         cw.j = &jc->j;
         cw.m = pt_jcourse_model(jc, &view);
+        cw.ops = s->models[mi].ops;
+        cw.nops = s->models[mi].nops;
         for (k = 0; k < PT_NCST; k++) cw.label[k] = pt_jcourse_label(k);
         for (k = 0; k < 3; k++) cw.text[k] = pt_jcourse_text(k);
         pt_journey_wasm_course(sb, s, &cw);

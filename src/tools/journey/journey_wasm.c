@@ -255,11 +255,15 @@ static const char *const script[] = {
 static const char *const course_script[] = {
 "  var R = W.renderer, C = W.cam.map(dbl), MV = W.move.map(dbl), P = {};\n"
 "  var mv = R === 9 ? ['view_x', 'view_y', 'view_z'] : ['x_t', 'y_t', 'z_t'];\n"
-"  var names = ['l', 'r', 'b', 't', 'n'].concat(mv, ['w', 'h', 'x_ul', 'y_ul']);\n"
+"  var O = W.ops || [], os = [];            /* r9: the matrix's operations and their sliders */\n"
+"  O.forEach(function (o, k) { o.sliders.forEach(function (n, a) { os.push([n, k, a]); }); });\n"
+"  var names = ['l', 'r', 'b', 't', 'n'].concat(mv, os.map(function (o) { return o[0]; }),\n"
+"                                               ['w', 'h', 'x_ul', 'y_ul']);\n"
 "  function scene() {\n"
 "    P = {l: C[0], r: C[1], b: C[2], t: C[3], n: C[4], w: W.vp[0], h: W.vp[1],\n"
 "         x_ul: W.vp[2], y_ul: W.vp[3]};\n"
 "    mv.forEach(function (n, k) { P[n] = MV[k]; });\n"
+"    os.forEach(function (o) { P[o[0]] = dbl(O[o[1]].a[o[2]]); });\n"
 "  }\n"
 "  scene();\n"
 "  sliders(names, function (n, k, x) { P[n] = x; moved = true; run(); });\n"
@@ -269,6 +273,7 @@ static const char *const course_script[] = {
 "    P.y_ul = Math.min(Math.max(P.y_ul, 0), W.fb[1] - P.h);\n"
 "    var lim = {w: [1, W.fb[0], 1], h: [1, W.fb[1], 1], x_ul: [0, W.fb[0] - P.w, 1],\n"
 "               y_ul: [0, W.fb[1] - P.h, 1]};\n"
+"    os.forEach(function (o) { if (O[o[1]].angle) lim[o[0]] = W.angles; });\n"
 "    names.forEach(function (n) {\n"
 "      var v = P[n], r = lim[n] || around(v), i = slider(n);\n"
 "      i.min = String(r[0]); i.max = String(r[1]); i.step = String(r[2]);\n"
@@ -294,11 +299,18 @@ static const char *const course_script[] = {
 "    F = new Float64Array(E.memory.buffer, E.pt_wasm_course_in_at(), W.nin);\n"
 "    F.set([P.l, P.r, P.b, P.t, P.n], W.in.cam);\n"
 "    F.set(mv.map(function (n) { return P[n]; }), W.in.move);\n"
+"    if (O.length) {                       /* the operations, the sliders' arguments in */\n"
+"      F = new Float64Array(E.memory.buffer, E.pt_wasm_course_ops(O.length), W.cop * O.length);\n"
+"      O.forEach(function (o, k) { F.set([o.mul, o.kind].concat(o.a.map(dbl)), W.cop * k); });\n"
+"      os.forEach(function (o) { F[W.cop * o[1] + 2 + o[2]] = P[o[0]]; });\n"
+"    }\n"
 "    rc = E.pt_wasm_course_run(R, W.perspective ? 1 : 0, W.nearclip ? 1 : 0, x.v, P.w, P.h,\n"
-"                              P.x_ul, P.y_ul);\n"
+"                              P.x_ul, P.y_ul, O.length ? O.length : -1);\n"
 "    if (rc !== 0) {\n"
 "      note.textContent = rc === -2 ? 'A clip stage made a colour java.awt.Color refuses ' +\n"
-"        '(pipetrace would say so for this scene).' : 'The stages ran out of memory.';\n"
+"        '(pipetrace would say so for this scene).' : rc === -3 ? 'No sin and cos for these ' +\n"
+"        'angles in this page (it has them for the sliders\\' steps).' :\n"
+"        'The stages ran out of memory.';\n"
 "      document.body.classList.toggle('live', moved);\n"
 "      return;\n"
 "    }\n"
@@ -330,7 +342,9 @@ static const char *const course_script[] = {
 "      'pipetrace\\'s own stage files compiled to WebAssembly, for ' + D.models[x.m].name +\n"
 "      ' v' + x.v + ' with (l, r, b, t) = (' + [P.l, P.r, P.b, P.t].map(num).join(', ') +\n"
 "      '), n = ' + num(P.n) + ', (' + mv.join(', ') + ') = (' +\n"
-"      mv.map(function (n) { return num(P[n]); }).join(', ') + '), viewport ' + P.w + ' x ' +\n"
+"      mv.map(function (n) { return num(P[n]); }).join(', ') + ')' +\n"
+"      os.map(function (o) { return ', ' + o[0] + ' ' + num(P[o[0]]); }).join('') +\n"
+"      ', viewport ' + P.w + ' x ' +\n"
 "      P.h + ' at (x_ul, y_ul) = (' + P.x_ul + ', ' + P.y_ul + ')' + (moved ?\n"
 "      '.  The panel, \"with the numbers\" and \"next\" (dimmed) still show the scene\\'s ' +\n"
 "      'own numbers.' : '.');\n"
@@ -353,6 +367,11 @@ static const char *const course_script[] = {
 "  load(names, function () {               /* the model, once: each run copies it */\n"
 "    var at = E.pt_wasm_course_in(W.v.length, W.c.length, W.p.length), F, k;\n"
 "    if (!at) { note.textContent = 'The model is too large for the sliders.'; return false; }\n"
+"    if (W.sincos) {                       /* the host's sin and cos, exact (journey_wasm.c) */\n"
+"      F = new Float64Array(E.memory.buffer, E.pt_wasm_table(W.sincos.length),\n"
+"                           3 * W.sincos.length);\n"
+"      W.sincos.forEach(function (row, j) { F.set(row.map(dbl), 3 * j); });\n"
+"    }\n"
 "    F = new Float64Array(E.memory.buffer, at, W.nin);\n"
 "    F.set(W.m.map(dbl), W.in.matrix);\n"
 "    k = W.in.model;\n"
@@ -505,6 +524,65 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
     for (k = 0; script[k]; k++) pt_sbuf_add(sb, script[k]);
 }
 
+/* Renderer 9's rotate sliders: whole degrees from -PT_JOURNEY_ANGLE to
+** PT_JOURNEY_ANGLE; the page holds sin and cos for each (and for the
+** scene's own angles). */
+#define PT_JOURNEY_ANGLE 360
+_Static_assert(2 * PT_JOURNEY_ANGLE + 1 + PT_WASM_NCOPS <= PT_WASM_NSINCOS,
+               "the module's table holds them");
+
+/* Append the row [argument, sin, cos] for a rotate of theta degrees: the
+** argument as stages/r9_matrix.c's rotate computes it, (PI/180.0)*theta
+** (a copy: journey_wasm.sh's angle sliders miss the table if it differs),
+** sin and cos the host's libm's, the very values pipetrace gets. */
+static void add_angle(pt_sbuf *sb, double theta, int first)
+{
+    double a = (3.141592653589793 / 180.0) * theta;      /* Math.PI/180.0 * theta */
+
+    pt_sbuf_add(sb, first ? "[" : ",[");
+    add_bits(sb, a);
+    pt_sbuf_add(sb, ",");
+    add_bits(sb, sin(a));
+    pt_sbuf_add(sb, ",");
+    add_bits(sb, cos(a));
+    pt_sbuf_add(sb, "]");
+}
+
+/* Renderer 9's matrix operations, their sliders (a rotate's angle, a
+** translate's x, y, z) and the sin and cos table for the angles. */
+static void add_ops(pt_sbuf *sb, const pt_jwasm_course *cw)
+{
+    size_t k;
+    int i, n = 0;
+
+    pt_sbuf_addf(sb, ",\n\"cop\":%d,\"angles\":[%d,%d,1],\"ops\":[", PT_WASM_COP,
+                 -PT_JOURNEY_ANGLE, PT_JOURNEY_ANGLE);
+    for (k = 0; k < cw->nops; k++) {
+        const pt_matop *o = &cw->ops[k];
+        pt_sbuf_addf(sb, "%s{\"mul\":%d,\"kind\":%d,\"a\":[", k ? ",\n" : "", (int)o->mul,
+                     (int)o->kind);
+        for (i = 0; i < 16; i++) {
+            if (i) pt_sbuf_add(sb, ",");
+            add_bits(sb, o->a[i]);
+        }
+        pt_sbuf_add(sb, "],\"sliders\":[");
+        if (o->kind == PT_MATOP_ROTATE)
+            pt_sbuf_addf(sb, "\"angle_%lu\"],\"angle\":true}", (unsigned long)k + 1);
+        else if (o->kind == PT_MATOP_TRANSLATE)
+            pt_sbuf_addf(sb, "\"tx_%lu\",\"ty_%lu\",\"tz_%lu\"]}", (unsigned long)k + 1,
+                         (unsigned long)k + 1, (unsigned long)k + 1);
+        else pt_sbuf_add(sb, "]}");
+    }
+    pt_sbuf_add(sb, "],\n\"sincos\":[");
+    for (i = -PT_JOURNEY_ANGLE; i <= PT_JOURNEY_ANGLE; i++) {
+        add_angle(sb, i, n == 0);
+        if (++n % 4 == 0) pt_sbuf_add(sb, "\n");
+    }
+    for (k = 0; k < cw->nops; k++)          /* the scene's own, perhaps between the steps */
+        if (cw->ops[k].kind == PT_MATOP_ROTATE) add_angle(sb, cw->ops[k].a[0], 0);
+    pt_sbuf_add(sb, "]");
+}
+
 /* The course's stages the page's table shows, in order, and which of them
 ** each panel's #coords shows (the first that has the vertex). */
 static const struct { const char *name; int id; } course_rows[] = {
@@ -563,7 +641,9 @@ void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jwasm_cours
         if (c) pt_sbuf_add(sb, ",");
         add_bits(sb, x);
     }
-    pt_sbuf_addf(sb, "],\n\"in\":{\"cam\":%d,\"move\":%d,\"matrix\":%d,\"model\":%d},"
+    pt_sbuf_add(sb, "]");
+    if (s->renderer == 9 && cw->nops <= PT_WASM_NCOPS) add_ops(sb, cw);
+    pt_sbuf_addf(sb, ",\n\"in\":{\"cam\":%d,\"move\":%d,\"matrix\":%d,\"model\":%d},"
                  "\"nin\":%llu,\n\"notyet\":[", PT_WASM_CIN_L, PT_WASM_CIN_MOVE,
                  PT_WASM_CIN_MATRIX, PT_WASM_CIN_MODEL,
                  (unsigned long long)(PT_WASM_CIN_MODEL + 4 * m->nv + 3 * m->nc + 6 * m->np));
