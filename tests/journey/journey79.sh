@@ -141,6 +141,10 @@ for line in open(tmp + "/cases").read().split("\n"):
         if rec is None:
             check("%s: panel %s says the vertex is not made yet" % (tag, p),
                   "not yet" in lab, lab)
+            texts = ["".join(t.itertext()) for g in root.iter(NS + "g")
+                     if g.get("data-stage") == p for t in g.iter(NS + "text")]
+            check("%s: panel %s marks no vertex that is not made yet" % (tag, p),
+                  "v%d" % v not in texts and "off the panel" not in texts, str(texts))
             continue
         m = re.search(r"= \(([^)]*)\)$", lab)
         nums = [float(x) for x in m.group(1).split(", ")] if m else []

@@ -15,7 +15,8 @@
 #   - tests/journey/journey_layout.html checks the layout at 1024x768, 1280x900 and
 #     1920x1080 and presenter mode, for both cameras and renderers 7 and 9;
 #   - tests/journey/journey_labels.html checks that no label of a panel overlaps
-#     another, lies under the zoom inset or is crossed by a line (web-7);
+#     another, lies under the zoom inset or is crossed by a line (web-7), the
+#     course's renderers 7 and 9 too;
 #   - screenshots of the SVG and of each stage of the page go to SHOTDIR
 #     (default: journey-shots beside PIPETRACE); `make screenshots` copies two
 #     of them into docs/.
@@ -164,6 +165,7 @@ labels() {  # labels NAME MAXV SCENE...: the check over those scenes' pictures
 }
 labels "the example scenes" 8 docs/examples/*.scene
 labels "the extreme scenes" 3 tests/extreme/*.scene
+labels "renderers 7 and 9" 3 tests/course79/*.scene
 
 # ---- screenshots: the SVG, and the page at each stage of vertex 1
 rm -f "$shots"/journey-*.png

@@ -441,14 +441,16 @@ static void note(pt_sbuf *sb, const cdoc *d, pt_course_stage st, const char *mor
     pt_sbuf_free(&t);
 }
 
-/* The vertex's marker at its value after stage st, in view v. */
+/* The vertex's marker at its value after stage st, in view v (an arrow at
+** the edge when it lies off the panel); none before a clip stage made it. */
 static void marker(pt_sbuf *sb, const pt_jview *v, const cdoc *d, pt_course_stage st,
                    view_kind kind)
 {
-    double x = 0, y = 0;
+    double x, y;
 
-    if (d->j->have[st]) xy_of(kind, d->j->at[st], &x, &y);
-    pt_jmarker(sb, v, d->j->have[st], x, y, d->j->v, 0, NULL, NULL);
+    if (!d->j->have[st]) return;            /* not made yet: nothing to mark */
+    xy_of(kind, d->j->at[st], &x, &y);
+    pt_jmarker(sb, v, 1, x, y, d->j->v, 0, NULL, NULL);
 }
 
 /* A 3-D panel (model, world, view): the model's wireframe and its axes. */
@@ -587,7 +589,7 @@ static const cpanel panels[] = {
 };
 #define NPANELS (sizeof panels / sizeof panels[0])
 
-static void panel(pt_sbuf *sb, const cdoc *d, const cpanel *p, int no)
+static void panel_drawn(pt_sbuf *sb, const cdoc *d, const cpanel *p, int no)
 {
     cpanel q = *p;
     char more[160];
@@ -622,6 +624,23 @@ static void panel(pt_sbuf *sb, const cdoc *d, const cpanel *p, int no)
     if (!strcmp(p->key, "volume"))
         snprintf(more, sizeof more, "side view: z_v across, y_v up; x from l to r likewise");
     note(sb, d, p->st, more);
+}
+
+/* Panel p (number no) drawn, its movable labels placed clear of each other
+** and of its lines and texts (jplace.h), as the other cameras' panels are. */
+static void panel(pt_sbuf *sb, const cdoc *d, const cpanel *p, int no)
+{
+    static const double area[4] = {PT_JBOX_X, PT_JBOX_Y, PT_JBOX_X + PT_JBOX_W,
+                                   PT_JBOX_Y + PT_JBOX_H};
+    pt_jplace pl;
+
+    pt_jplace_init(&pl, area);
+    pt_jdraw_to(&pl);
+    panel_drawn(sb, d, p, no);
+    pt_jdraw_to(NULL);
+    pt_jdraw_labels(sb, &pl);
+    if (pl.failed) sb->failed = 1;
+    pt_jplace_free(&pl);
 }
 
 /* ===== one render, one vertex: the documents ===== */
