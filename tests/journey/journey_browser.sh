@@ -114,6 +114,21 @@ check "web-9 r7 page, #v=11&stage=image: that vertex and stage, the clip's point
     sh -c 'grep -q "<span id=\"stage\">image</span>" "$1" &&
            grep -q "id=\"coords\"[^>]*><span class=\"expr\">(x_p, y_p, z_p)</span> = <span class=\"expr\">(1, 0.7796206032502786, 0)" "$1"' \
     - "$tmp/dom.html"
+quiet() {   # quiet PAGE FRAGMENT: the page loads, its module runs, the console stays empty
+    prof=$(mktemp -d "$tmp/profile.XXXXXX")
+    timeout 60 "$browser" --headless --no-sandbox --disable-gpu --disable-quic \
+        --no-first-run --disable-background-networking --disable-component-update \
+        --disable-sync --disable-extensions --user-data-dir="$prof" \
+        --virtual-time-budget=3000 --enable-logging=stderr --v=0 \
+        --dump-dom "$(url "$1" "$2")" > "$tmp/dom.html" 2> "$tmp/console.log"
+    ! grep -q ':CONSOLE' "$tmp/console.log" &&
+        { grep -q 'data-ready="1"' "$tmp/dom.html" || grep -q 'data-wasm="no"' "$tmp/dom.html"; }
+}
+"$exe" journey $c/r9-mat-07-order-TRS.scene --vertex 1 --html "$tmp/trs.html"
+check "web-10 r7 page: loads, runs its module, nothing on the console" quiet "$tmp/r7.html" ''
+check "web-10 r9 page: the same" quiet "$tmp/trs.html" '#stage=world'
+check "web-10 r7 page in presenter mode: the same" quiet "$tmp/r7.html" '#present&stage=8'
+grep ':CONSOLE' "$tmp/console.log" | head -3
 chrome --dump-dom "$(url "$tmp/r7.html" '#stage=3&present')" > "$tmp/dom.html"
 check "web-9.2 r7 page, #present: presenter mode" grep -q '<html lang="en" class="present">' \
     "$tmp/dom.html"
