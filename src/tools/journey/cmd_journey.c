@@ -180,7 +180,11 @@ static int course_journey(const pt_scene *s, const char *model, uint64_t v, cons
         have_fb = 1;
         if (has) ring(&fb, s, px, py);
     }
-    if (rc == 1 && model)
+    if (rc == 2)
+        fprintf(stderr, "pipetrace journey: --vertex: the position of model %s of %s has no "
+                "vertex %llu, not even after the clips\n", s->models[mi].name, s->path,
+                (unsigned long long)npick);
+    else if (rc == 1 && model)
         fprintf(stderr, "pipetrace journey: --vertex %llu: the position of model %s of %s has "
                 "no vertex %llu, not even after the clips\n", (unsigned long long)v, model,
                 s->path, (unsigned long long)v);

@@ -926,6 +926,7 @@ int pt_journey_course_html(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v
     if (pt_jcourse_open(&jc, s, mi) != 0) return -1;
     if ((rc = pt_jcourse_vertex(jc, v)) != 0) { pt_jcourse_close(jc); return rc; }
     count = pt_jcourse_count(jc);
+    if (pick && npick > count) { pt_jcourse_close(jc); return 2; }
     np = pt_jcourse_npanels(jc);
     pt_journey_page_head(sb, s->models[mi].name, v);
     pt_sbuf_add(sb, "<script type=\"application/json\" id=\"data\">\n{\"where\":");

@@ -95,7 +95,8 @@ int pt_journey_course_svg(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v)
 ** shown; listed, the vertices k + 1 with pick[k] set (k < npick), or, pick
 ** NULL, every vertex of the position, at most PT_JCOURSE_MAXV of them (v
 ** always).  Sliders: pt_journey_wasm_course().  Returns as
-** pt_journey_course_svg(). */
+** pt_journey_course_svg(), or 2 when npick is more than the position's
+** vertices (the clips' counted). */
 #define PT_JCOURSE_MAXV 64
 int pt_journey_course_html(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v,
                            const unsigned char *pick, uint64_t npick);
