@@ -58,10 +58,10 @@ run journey $c/r7-near-01.scene --vertex 9 --svg "$tmp/l.svg" --image "$tmp/l.sv
 check "j79-4.6 two outputs naming one file: exit 1" test "$rc" = 1
 run journey $c/r7-near-01.scene --vertex 1,2 --image "$tmp/x.png"
 check "j79-4.7 --image of a list: exit 1, no file" test "$rc" = 1 -a ! -e "$tmp/x.png"
-run journey $c/r9-near-05.scene --vertex 2,99 --html "$tmp/x.html"
+run journey $c/r9-near-05.scene --vertex 2,99 --html "$tmp/x10.html"
 check "j79-4.10 --vertex 2,99: the position has no vertex 99: exit 2, says so, no file" \
     sh -c 'test "$1" = 2 && grep -q "has no vertex 99" "$2" && test ! -e "$3"' \
-    - "$rc" "$tmp/err" "$tmp/x.html"
+    - "$rc" "$tmp/err" "$tmp/x10.html"
 run journey $c/r9-near-05.scene --vertex 99 --html "$tmp/x.html"
 check "j79-4.8 --html of a vertex no position has: exit 2, no file" \
     test "$rc" = 2 -a ! -e "$tmp/x.html"
