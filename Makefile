@@ -218,7 +218,11 @@ WASM_SRC = src/wasm/pt_wasm.c src/wasm/pt_wasm_libm.c stages/pt_stage.c stages/p
            $(or $(STAGE_index),stages/s6_fb2index.c) stages/pt_classic.c \
            stages/pt_mat4.c stages/pt_matrix.c stages/m1_model2world.c \
            stages/m2_world2view.c stages/m3_view2clip.c stages/m4_clip2cvv.c stages/m5_clip2ndc.c \
-           stages/m6_ndc2screen.c stages/m7_screen2viewport.c
+           stages/m6_ndc2screen.c stages/m7_screen2viewport.c \
+           src/wasm/pt_wasm_alloc.c stages/rv_model.c stages/r7_model2view.c \
+           stages/r7_view2camera.c stages/r9_matrix.c stages/r9_model2world.c \
+           stages/r9_world2view.c stages/r9_view2camera.c stages/rv_nearclip.c \
+           stages/rv_project.c stages/rv_clip.c
 $(shell mkdir -p $B && { echo '$(WASM)' | cmp -s - $B/wasm-choice || echo '$(WASM)' > $B/wasm-choice; })
 $B/stages.wasm: $(WASM_SRC) stages/*.h stages/wasm/*.h src/wasm/*.h $B/wasm-choice $(CHOSEN)
 	rm -rf $B/wasm-obj && mkdir -p $B/wasm-obj

@@ -80,9 +80,9 @@ quiz79           2 sh tests/teach/quiz79.sh $B/pipetrace
 term             1 sh tests/cli/term.sh $B/pipetrace
 accuracy         8 sh tests/cli/accuracy.sh $B/pipetrace
 journey          6 sh tests/journey/journey.sh $B/pipetrace
-journey79        2 sh tests/journey/journey79.sh $B/pipetrace
-browser         34 sh tests/journey/journey_browser.sh $B/pipetrace
-wasm            25 sh tests/journey/journey_wasm.sh $B/pipetrace
+journey79        4 sh tests/journey/journey79.sh $B/pipetrace
+browser         42 sh tests/journey/journey_browser.sh $B/pipetrace
+wasm            36 sh tests/journey/journey_wasm.sh $B/pipetrace
 wasm-libm        1 $B/test_wasm_libm
 docs             2 sh tests/repo/docs.sh $B/pipetrace
 valgrind        16 sh tests/cli/valgrind.sh $B/pipetrace"}

@@ -155,16 +155,21 @@ check("c79-5.2 hidden position and hidden model: no records", models == {"vis", 
 # c79-4: the teaching tools that do not follow renderers 7 and 9 refuse such a
 # scene with a clear message (step and why follow them: tests/teach/teach79.sh;
 # quiz: tests/teach/quiz79.sh; accuracy: c79-4.2 and tests/cli/accuracy.sh)
-# journey draws such a scene's SVG (tests/journey/journey79.sh), not its page
+# journey draws such a scene: SVG, page and image (tests/journey/journey79.sh)
 sc = os.path.join(here, "r7-near-01.scene")
-for tool in (["journey", sc, "--vertex", "1", "--html", os.path.join(tmp, "j.html")],
-             [sc, "--vertex", "1"]):
+for tool in ([sc, "--vertex", "1"],):
     rc, out, err = run(*tool)
     check("c79-4.1 %s refuses a renderer 7 scene: exit 2, says why" % " ".join(tool[:1] + tool[4:5]),
           rc == 2 and b"renderer 7" in err and b"error" in err, err.decode(errors="replace")[:200])
 rc, out, err = run("journey", sc, "--vertex", "1", "--svg", os.path.join(tmp, "j.svg"))
 check("c79-4.3 journey --svg takes a renderer 7 scene: exit 0, an SVG",
       rc == 0 and open(os.path.join(tmp, "j.svg"), "rb").read().startswith(b"<?xml"),
+      err.decode(errors="replace")[:200])
+rc, out, err = run("journey", sc, "--vertex", "1", "--html", os.path.join(tmp, "j.html"),
+                   "--image", os.path.join(tmp, "j.png"))
+check("c79-4.4 journey --html and --image take a renderer 7 scene: exit 0, a page, a PNG",
+      rc == 0 and open(os.path.join(tmp, "j.html"), "rb").read().startswith(b"<!DOCTYPE html>")
+      and open(os.path.join(tmp, "j.png"), "rb").read().startswith(b"\x89PNG"),
       err.decode(errors="replace")[:200])
 rc, out, err = run("accuracy", sc, "--no-time")    # accuracy takes it (docs/accuracy.md)
 check("c79-4.2 accuracy takes a renderer 7 scene: exit 0, its nearclip and clip rows",

@@ -7,23 +7,16 @@
 # coordinates in each panel's label must be the JSON Lines trace's values for
 # that vertex at that stage: renderers 7 and 9, perspective and orthographic,
 # a vertex the near clip cuts off, vertices the near clip and the rectangle
-# clip make.  Same bytes on two runs; --html and --image refuse such a scene.
+# clip make.  Same bytes on two runs.  The page (--html): self-contained,
+# each listed vertex's coordinates and panels the SVG's, the list as asked;
+# the image (--image): the render with the vertex's pixel ringed.
 # The parsing checks need python3 (standard library only); without it they
 # are skipped and say so.
 exe=$1
 . tests/lib/testlib.sh
 c=tests/course79
 
-# ---- refusals and errors (exit 2, a clear message, no file)
-run journey $c/r7-near-01.scene --vertex 1 --html "$tmp/x.html"
-check "j79-1.1 --html on a renderer 7 scene: exit 2" test "$rc" = 2 -a ! -e "$tmp/x.html"
-check "j79-1.2 ... says --html and renderer 7, that --svg draws it" \
-    sh -c 'grep -q -- "error: --html does not take scenes of the course.s renderer 7" "$1" &&
-           grep -q -- "--svg" "$1"' - "$tmp/err"
-run journey $c/r9-near-05.scene --vertex 1 --image "$tmp/x.png"
-check "j79-1.3 --image on a renderer 9 scene: exit 2, says so" \
-    sh -c 'test "$1" = 2 && grep -q -- "--image does not take scenes of the course.s renderer 9" "$2" &&
-           test ! -e "$3"' - "$rc" "$tmp/err" "$tmp/x.png"
+# ---- errors (exit 2, a clear message, no file)
 run journey $c/r7-near-01.scene --vertex 99 --svg "$tmp/x.svg"
 check "j79-1.4 a vertex no position has, not even after the clips: exit 2, no file" \
     sh -c 'test "$1" = 2 && grep -q "no position of .* has a vertex 99" "$2" && test ! -e "$3"' \
@@ -47,6 +40,34 @@ check "j79-2.4 a vertex that overflows to inf: exit 0, the label says inf" \
     sh -c 'test "$1" = 0 && grep -q "(x_c, y_c, z_c) = (inf, inf" "$2"' - "$rc" "$tmp/h.svg"
 check "j79-2.5 ... no attribute holds nan or inf" \
     sh -c '! grep -E -i -q "=\"[^\"]*(nan|inf)" "$1"' - "$tmp/h.svg"
+
+# ---- the page and the image
+run journey $c/r7-near-01.scene --vertex 9 --html "$tmp/p.html" --image "$tmp/p.png"
+check "j79-4.1 --html and --image of a renderer 7 scene: exit 0, both written" \
+    test "$rc" = 0 -a -s "$tmp/p.html" -a -s "$tmp/p.png"
+run journey $c/r7-near-01.scene --vertex 9 --html "$tmp/q.html"
+check "j79-4.2 the page: same bytes on two runs" cmp -s "$tmp/p.html" "$tmp/q.html"
+check "j79-4.3 the page lists every vertex of the position (8 and the clips' 6)" \
+    test "$(grep -c '^{"m":0,"v":[0-9]*,' "$tmp/p.html")" = 14
+check "j79-4.4 ... and shows vertex 9 first (the 9th listed)" grep -q '"start":8,' "$tmp/p.html"
+run journey $c/r9-near-05.scene --vertex 13,2-3 --html "$tmp/l.html"
+check "j79-4.5 --vertex 13,2-3 on a renderer 9 scene: vertices 2, 3 and 13, 13 first" \
+    sh -c 'test "$(grep -o "^{\"m\":0,\"v\":[0-9]*" "$1" | tr -d "{\"mv:" | tr "\n" " ")" = "0,2 0,3 0,13 " &&
+           grep -q "\"start\":2," "$1"' - "$tmp/l.html"
+run journey $c/r7-near-01.scene --vertex 9 --svg "$tmp/l.svg" --image "$tmp/l.svg"
+check "j79-4.6 two outputs naming one file: exit 1" test "$rc" = 1
+run journey $c/r7-near-01.scene --vertex 1,2 --image "$tmp/x.png"
+check "j79-4.7 --image of a list: exit 1, no file" test "$rc" = 1 -a ! -e "$tmp/x.png"
+run journey $c/r9-near-05.scene --vertex 2,99 --html "$tmp/x10.html"
+check "j79-4.10 --vertex 2,99: the position has no vertex 99: exit 2, says so, no file" \
+    sh -c 'test "$1" = 2 && grep -q "has no vertex 99" "$2" && test ! -e "$3"' \
+    - "$rc" "$tmp/err" "$tmp/x10.html"
+run journey $c/r9-near-05.scene --vertex 99 --html "$tmp/x.html"
+check "j79-4.8 --html of a vertex no position has: exit 2, no file" \
+    test "$rc" = 2 -a ! -e "$tmp/x.html"
+run journey $c/r9-aa-04.scene --vertex 1 --image "$tmp/aa.ppm"
+check "j79-4.9 --image FILE.ppm: a binary PPM" sh -c 'test "$1" = 0 && head -c 2 "$2" | grep -q P6' \
+    - "$rc" "$tmp/aa.ppm"
 
 if ! command -v python3 >/dev/null 2>&1; then
     echo "note: python3 not found: the parsing checks are skipped" >&2
@@ -124,6 +145,10 @@ for line in open(tmp + "/cases").read().split("\n"):
         if rec is None:
             check("%s: panel %s says the vertex is not made yet" % (tag, p),
                   "not yet" in lab, lab)
+            texts = ["".join(t.itertext()) for g in root.iter(NS + "g")
+                     if g.get("data-stage") == p for t in g.iter(NS + "text")]
+            check("%s: panel %s marks no vertex that is not made yet" % (tag, p),
+                  "v%d" % v not in texts and "off the panel" not in texts, str(texts))
             continue
         m = re.search(r"= \(([^)]*)\)$", lab)
         nums = [float(x) for x in m.group(1).split(", ")] if m else []
@@ -169,4 +194,27 @@ else
     p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
     passed=$((passed + p)); failed=$((failed + f))
 fi
+
+py() {      # py MODE ARGS...: tests/journey/journey_check.py, its counts added to ours
+    python3 tests/journey/journey_check.py "$@" > "$tmp/py" 2>&1
+    grep -E '^(FAIL|  )' "$tmp/py" | head -20
+    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
+    if [ -z "$last" ]; then
+        tail -5 "$tmp/py"; echo "FAIL journey_check.py $1 crashed"; failed=$((failed + 1)); return
+    fi
+    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
+    passed=$((passed + p)); failed=$((failed + f))
+}
+# ---- the page's data against the SVG (no browser); the image against the render
+py html79 "$exe" "$tmp/p.html" $c/r7-near-01.scene near
+py html79 "$exe" "$tmp/l.html" $c/r9-near-05.scene near
+"$exe" journey $c/r9-aa-04.scene --vertex 1 --html "$tmp/o.html"
+py html79 "$exe" "$tmp/o.html" $c/r9-aa-04.scene aa
+for cs in "r7-near-01 near 9" "r7-near-01 near 1" "r9-near-05 near 2" "r9-aa-04 aa 1" \
+          "r9-vp-02 cube 3" "r7-clip-08-corner-ur seg 3"; do
+    set -- $cs
+    "$exe" $c/$1.scene --image "$tmp/r.ppm"
+    "$exe" journey $c/$1.scene --model $2 --vertex $3 --image "$tmp/m.png"
+    py marked79 "$exe" "$tmp/m.png" "$tmp/r.ppm" $c/$1.scene $2 $3
+done
 report

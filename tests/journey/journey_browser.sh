@@ -9,10 +9,14 @@
 #   - it clicks Prev and Next through every stage of every vertex of the
 #     scene; each stage's #coords must equal the JSONL trace;
 #   - #v=N&m=MODEL&stage=K opens a chosen vertex and stage;
+#   - pages of the course's renderers 7 and 9: every stage of every vertex
+#     clicked, each #coords equal to that panel's label in the vertex's SVG;
+#     a vertex and stage by URL, #present;
 #   - tests/journey/journey_layout.html checks the layout at 1024x768, 1280x900 and
-#     1920x1080 and presenter mode, for both cameras;
+#     1920x1080 and presenter mode, for both cameras and renderers 7 and 9;
 #   - tests/journey/journey_labels.html checks that no label of a panel overlaps
-#     another, lies under the zoom inset or is crossed by a line (web-7);
+#     another, lies under the zoom inset or is crossed by a line (web-7), the
+#     course's renderers 7 and 9 too;
 #   - screenshots of the SVG and of each stage of the page go to SHOTDIR
 #     (default: journey-shots beside PIPETRACE); `make screenshots` copies two
 #     of them into docs/.
@@ -91,6 +95,44 @@ printf 'framebuffer 20 10\nmodel m\nv 1 0.5 0\nv 0 0 -2\nl 1 2\n' > "$tmp/z0.sce
 clicks "$tmp/z.html" > "$tmp/dom.html"
 py clicks "$exe" "$tmp/dom.html" "$tmp/z0.scene"
 
+# ---- the course's renderers 7 and 9: every stage of every vertex listed,
+# each #coords the panel's label of that vertex's SVG (journey_check.py
+# clicks79): perspective with a near clip that cuts and makes vertices,
+# orthographic with anti-aliasing, a clip that makes a vertex, renderer 9
+c=tests/course79
+for cs in "r7-near-01 9 14" "r7-clip-08-corner-ur 1 3" "r9-near-05 2 16" "r9-aa-04 1 14" \
+          "r9-clip-12-through-x 3 4"; do
+    set -- $cs
+    "$exe" journey $c/$1.scene --vertex $2 --html "$tmp/p79.html"
+    clicks "$tmp/p79.html" > "$tmp/dom.html"
+    check "web-8 $1: the page loads" test -s "$tmp/dom.html"
+    py clicks79 "$exe" "$tmp/dom.html" $c/$1.scene $3
+done
+"$exe" journey $c/r7-near-01.scene --vertex 9 --html "$tmp/r7.html"
+chrome --dump-dom "$(url "$tmp/r7.html" '#v=11&stage=image')" > "$tmp/dom.html"
+check "web-9 r7 page, #v=11&stage=image: that vertex and stage, the clip's point" \
+    sh -c 'grep -q "<span id=\"stage\">image</span>" "$1" &&
+           grep -q "id=\"coords\"[^>]*><span class=\"expr\">(x_p, y_p, z_p)</span> = <span class=\"expr\">(1, 0.7796206032502786, 0)" "$1"' \
+    - "$tmp/dom.html"
+quiet() {   # quiet PAGE FRAGMENT: the page loads, its module runs, the console stays empty
+    prof=$(mktemp -d "$tmp/profile.XXXXXX")
+    timeout 60 "$browser" --headless --no-sandbox --disable-gpu --disable-quic \
+        --no-first-run --disable-background-networking --disable-component-update \
+        --disable-sync --disable-extensions --user-data-dir="$prof" \
+        --virtual-time-budget=3000 --enable-logging=stderr --v=0 \
+        --dump-dom "$(url "$1" "$2")" > "$tmp/dom.html" 2> "$tmp/console.log"
+    ! grep -q ':CONSOLE' "$tmp/console.log" &&
+        { grep -q 'data-ready="1"' "$tmp/dom.html" || grep -q 'data-wasm="no"' "$tmp/dom.html"; }
+}
+"$exe" journey $c/r9-mat-07-order-TRS.scene --vertex 1 --html "$tmp/trs.html"
+check "web-10 r7 page: loads, runs its module, nothing on the console" quiet "$tmp/r7.html" ''
+check "web-10 r9 page: the same" quiet "$tmp/trs.html" '#stage=world'
+check "web-10 r7 page in presenter mode: the same" quiet "$tmp/r7.html" '#present&stage=8'
+grep ':CONSOLE' "$tmp/console.log" | head -3
+chrome --dump-dom "$(url "$tmp/r7.html" '#stage=3&present')" > "$tmp/dom.html"
+check "web-9.2 r7 page, #present: presenter mode" grep -q '<html lang="en" class="present">' \
+    "$tmp/dom.html"
+
 # ---- a vertex and stage chosen by the URL
 "$exe" journey --vertex 1 --html "$tmp/b.html" --svg "$tmp/b.svg"
 chrome --dump-dom "$(url "$tmp/b.html" '#v=5&m=pyramid&stage=4')" > "$tmp/dom.html"
@@ -100,7 +142,8 @@ py dom "$exe" "$tmp/dom.html" cube 2 index
 
 # ---- the layout at three window sizes, presenter mode (tests/journey/journey_layout.html)
 "$exe" journey docs/examples/lookat-near.scene --vertex 2 --html "$tmp/m.html"
-for pg in b m; do
+"$exe" journey tests/course79/r9-near-05.scene --vertex 13 --html "$tmp/r9.html"
+for pg in b m r7 r9; do
     for size in 1024x768 1280x900 1920x1080; do
         chrome --window-size=2000,1200 --allow-file-access-from-files --dump-dom \
             "$(url tests/journey/journey_layout.html "?page=$(url "$tmp/$pg.html")&w=${size%x*}&h=${size#*x}")" \
@@ -137,6 +180,7 @@ labels() {  # labels NAME MAXV SCENE...: the check over those scenes' pictures
 }
 labels "the example scenes" 8 docs/examples/*.scene
 labels "the extreme scenes" 3 tests/extreme/*.scene
+labels "renderers 7 and 9" 3 tests/course79/*.scene
 
 # ---- screenshots: the SVG, and the page at each stage of vertex 1
 rm -f "$shots"/journey-*.png
@@ -155,6 +199,11 @@ check "web-3 screenshot of presenter mode" test -s "$shots/journey-present.png"
 chrome --window-size=1200,860 --screenshot="$shots/journey-matrix.png" \
     "$(url "$tmp/m.html" "#stage=clip")" >/dev/null
 check "web-3 screenshot of the matrix camera's page" test -s "$shots/journey-matrix.png"
+chrome --window-size=1280,720 --screenshot="$shots/journey-present-r7.png" \
+    "$(url "$tmp/r7.html" "#stage=nearclip&present")" >/dev/null
+check "web-3 screenshot of a renderer 7 page in presenter mode" \
+    test -s "$shots/journey-present-r7.png"
+py color "$shots/journey-present-r7.png" d62728
 py color "$shots/journey-matrix.png" d62728
 echo "screenshots in $shots" >&2
 echo "$passed passed, $failed failed"

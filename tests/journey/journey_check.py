@@ -24,6 +24,18 @@
 #   dom EXE DOM MODEL V STAGE [SCENE]  #stage and #coords of a dumped page
 #   marked EXE FILE.png FILE.ppm MODEL V [SCENE]  journey --image: the render
 #                                    FILE.ppm with vertex V's pixel ringed in red
+#   clicks79 EXE DOM SCENE N        the same for a page of the course's renderer 7
+#                                    or 9: N vertices listed, each stage's #coords
+#                                    the label of that panel of the vertex's SVG
+#                                    (which tests/journey/journey79.sh ties to
+#                                    the trace)
+#   html79 EXE FILE SCENE MODEL      a course page without a browser: self-
+#                                    contained, its panels those of the SVG, each
+#                                    listed vertex's coords its SVG's labels
+#   marked79 EXE FILE.png FILE.ppm SCENE MODEL V  journey --image of a course
+#                                    scene: the render, vertex V's pixel (the
+#                                    SVG's viewport label plus the viewport's
+#                                    corner) ringed in red, or the plain render
 #   png FILE.png FILE.ppm            the PNG decodes (CRC of every chunk, zlib's
 #                                    Adler-32) to the PPM's pixels
 #   color FILE.png RRGGBB            the PNG holds a pixel of that color
@@ -253,6 +265,84 @@ def dom_mode(exe, dom, model, v, stage, scene):
     check("dom-3 #formula is not empty", bool(by_id("formula")))
 
 
+def svg_labels(exe, scene, model, v):
+    """{panel key: its coordinates label} of the course SVG of vertex v."""
+    r = subprocess.run([exe, "journey", scene, "--model", model, "--vertex", str(v), "--svg",
+                        "-"], capture_output=True, text=True)
+    out = {}
+    for g in re.finditer(r'<g class="panel" data-stage="(\w+)"(.*?)</g>', r.stdout, re.S):
+        t = re.search(r'<text[^>]*class="coords"[^>]*>([^<]*)', g.group(2))
+        out[g.group(1)] = html.unescape(t.group(1)) if t else None
+    return out
+
+
+def clicks79_mode(exe, dom, scene, n):
+    text = open(dom, encoding="utf-8", errors="replace").read()
+    m = re.search(r'<pre id="clicks">(.*?)</pre>', text, re.S)
+    check("page79-1 the clicks ran (<pre id=clicks>)", m is not None)
+    if not m:
+        return
+    lines = html.unescape(m.group(1)).strip("\n").split("\n")
+    check("page79-2 the clicks say ok, %s vertices" % n,
+          lines[0].startswith("ok %s vertices, " % n), lines[0][:300])
+    shown, labels = {}, {}
+    for ln in lines[1:]:
+        model, v, st, coords = ln.split("\t")
+        shown.setdefault((model, v), {})[st] = coords
+    for (model, v), got in sorted(shown.items()):
+        want = svg_labels(exe, scene, model, v)
+        check("page79-3 %s %s v%s: every panel's #coords is the SVG's label" % (
+            os.path.basename(scene), model, v), got == want, "page %r, svg %r" % (got, want))
+
+
+def html79_mode(exe, path, scene, model):
+    text = open(path, encoding="utf-8").read()
+    check("page79-4 self-contained: no http(s) reference, no src= or href=",
+          not re.search(r'(https?:|src=|href=|@import)', text.replace(
+              'xmlns="http://www.w3.org/2000/svg"', '')))
+    for i in ("prev", "next", "vertex", "stage", "coords", "formula", "panel", "present",
+              "live"):
+        check("page79-5 the page has #%s" % i, ('id="%s"' % i) in text)
+    data = page_data(text)
+    names = [s["name"] for s in data["stages"]]
+    for x in data["vertices"]:
+        want = svg_labels(exe, scene, model, x["v"])
+        got = dict(zip(names, x["coords"]))
+        check("page79-6 %s v%s: the listed coords are the SVG's labels" % (model, x["v"]),
+              got == want, "page %r, svg %r" % (got, want))
+        for st, frag in zip(names, x["fg"]):
+            try:
+                ET.fromstring('<svg xmlns="http://www.w3.org/2000/svg">%s</svg>' % frag)
+                ok = True
+            except ET.ParseError:
+                ok = False
+            check("page79-7 %s v%s %s: the panel is well-formed" % (model, x["v"], st), ok)
+
+
+def marked79_mode(exe, png, ppm, scene, model, v):
+    w, h, ctype, rows = png_read(png)
+    pw, ph, plain = ppm_read(ppm)
+    got = b"".join(rows)
+    check("png79-1 the marked image has the render's (the framebuffer's) size",
+          (w, h) == (pw, ph))
+    head = json.loads(subprocess.run([exe, scene, "--format", "jsonl"], capture_output=True,
+                                     text=True).stdout.splitlines()[0])
+    lab = svg_labels(exe, scene, model, v)["viewport"]
+    m = re.match(r"\(x_vp, y_vp\) = \((-?\d+), (-?\d+)\)$", lab)
+    at = None if not m else (head["viewport"]["x"] + int(m.group(1)),
+                             head["viewport"]["y"] + int(m.group(2)))
+    red, bad = bytes.fromhex("d62728"), []
+    for yy in range(h):
+        for xx in range(w):
+            i = 3 * (yy * w + xx)
+            ring = at is not None and (max(abs(xx - at[0]), abs(yy - at[1])) == 3 or
+                                       (xx, yy) == at)
+            if got[i:i + 3] != (red if ring else plain[i:i + 3]):
+                bad.append((xx, yy))
+    check("png79-2 %s v%s: red at %s and on the ring around it, else the render" % (
+        model, v, at), not bad, "first differing pixels: %r" % bad[:5])
+
+
 def png_read(path):
     """(w, h, color type, rows of bytes) after checking every chunk's CRC."""
     data = open(path, "rb").read()
@@ -386,6 +476,12 @@ def main():
         html_mode(a[0], a[1], a[2] if len(a) > 2 else None)
     elif mode == "clicks":
         clicks_mode(a[0], a[1], a[2] if len(a) > 2 else None)
+    elif mode == "clicks79":
+        clicks79_mode(a[0], a[1], a[2], a[3])
+    elif mode == "html79":
+        html79_mode(a[0], a[1], a[2], a[3])
+    elif mode == "marked79":
+        marked79_mode(a[0], a[1], a[2], a[3], a[4], a[5])
     elif mode == "dom":
         dom_mode(a[0], a[1], a[2], a[3], a[4], a[5] if len(a) > 5 else scene)
     elif mode == "png":

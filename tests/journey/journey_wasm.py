@@ -10,7 +10,13 @@
 # checks every stage's values against the page's (#livetable: reals as IEEE
 # bits, so equal means bit for bit), and #coords against the #coords the
 # command line's own page gives for NEW.  When the page says it has no camera,
-# pipetrace must refuse NEW with the same reason.  Prints "N passed, N failed".
+# pipetrace must refuse NEW with the same reason.  A page of the course's
+# renderer 7 or 9 (sliders l, r, b, t, n, the translation or view vector, the
+# viewport): the camera, near, translate or view and viewport lines are
+# written again, and each stage's values compared with the trace's record of
+# the vertex at that stage (a clip stage leaves a vertex it did not make as
+# the stage before gave it), the viewport and framebuffer pixel with the
+# command line's page.  Prints "N passed, N failed".
 import html
 import json
 import os
@@ -48,6 +54,93 @@ def rewrite(text, p, model):
     return "\n".join(out) + "\n"
 
 
+def rewrite79(text, p, model):
+    """A renderer 7 or 9 scene with the page's camera, near plane, viewport and
+    the position's translation (7) or the camera's view vector and its
+    matrix's angles and translations (9)."""
+    n = p["n"]
+    near = n[1:] if n.startswith("-") else "-" + n
+    out, here, proj = [], False, "perspective"
+    for line in text.splitlines():
+        words = line.split("#")[0].split()
+        d = words[0] if words else ""
+        if d == "camera":
+            proj = "orthographic" if words[1].startswith("orthographic") else "perspective"
+            continue
+        if d in ("near", "viewport", "view") or (d == "translate" and here and "x_t" in p):
+            continue
+        if d == "model":
+            here, op = len(words) > 1 and words[1] == model, 0
+        if here and "view_x" in p and d in ("matrix", "matrix-pre", "matrix-set", "translate"):
+            op += 1                              # renderer 9: the matrix's K-th operation
+            if "angle_%d" % op in p:             # rotate x|y|z DEG, or rotate DEG X Y Z
+                words[3 if words[2] in ("x", "y", "z") else 2] = p["angle_%d" % op]
+            if "tx_%d" % op in p:
+                words[len(words) - 3:] = [p["%s_%d" % (c, op)] for c in ("tx", "ty", "tz")]
+            line = " ".join(words)
+        out.append(line)
+        if d == "model" and here and "x_t" in p:
+            out.append("translate %s %s %s" % (p["x_t"], p["y_t"], p["z_t"]))
+        if d == "renderer":
+            out.append("viewport %s %s %s %s" % (p["x_ul"], p["y_ul"], p["w"], p["h"]))
+            out.append("near %s" % near)
+            if "view_x" in p:
+                out.append("view %s %s %s" % (p["view_x"], p["view_y"], p["view_z"]))
+    cam = "camera %s %s %s %s %s" % (proj, p["l"], p["r"], p["b"], p["t"])
+    k = [i for i, ln in enumerate(out) if ln.split()[:1] == ["renderer"]][0]
+    return "\n".join(out[:k + 1] + [cam] + out[k + 1:]) + "\n"
+
+
+def course(exe, src, p, page, info, tmp):
+    """The course page's table against the moved scene's trace and page."""
+    model, v = info["vertex"][0], info["vertex"][1]
+    new = os.path.join(tmp, "moved.scene")
+    with open(new, "w", encoding="utf-8") as f:
+        f.write(rewrite79(open(src, encoding="utf-8").read(), p, model))
+    r = subprocess.run([exe, new, "--format", "jsonl", "--trace", "-"], capture_output=True,
+                       text=True)
+    check("slider79-1 the command line reads the moved scene", r.returncode == 0, r.stderr)
+    rec = {}
+    for ln in r.stdout.splitlines():
+        x = json.loads(ln)
+        if x.get("type") == "vertex" and x["model"] == model and str(x["v"]) == v:
+            rec[x["stage"]] = x
+    order = [st for st in ("model", "world", "view", "camera", "nearclip", "image", "clip")
+             if st in page]
+    check("slider79-2 the table's stages", order == [st for st in (
+        "model", "world", "view", "camera", "nearclip", "image", "clip")
+        if st != "world" or "view_x" in p], "%s" % sorted(page))
+    before = None
+    for st in order:
+        got = rec.get(st) or (before if st in ("nearclip", "clip") else None)
+        want = ["none"] * 3 if got is None else [bits(got[k]) for k in ("x", "y", "z")]
+        check("slider79-3 %s %s v%s %s: the page's values are the trace's" % (
+            os.path.basename(src), model, v, st), page.get(st) == want,
+            "page %s, pipetrace %s" % (page.get(st), want))
+        before = got
+    h = os.path.join(tmp, "moved.html")
+    r = subprocess.run([exe, "journey", new, "--model", model, "--vertex", v, "--html", h],
+                       capture_output=True, text=True)
+    check("slider79-4 the command line draws the moved scene's page", r.returncode == 0,
+          r.stderr)
+    d = re.search(r'<script type="application/json" id="data">\n(.*?)\n</script>',
+                  open(h, encoding="utf-8").read(), re.S)
+    data = json.loads(d.group(1))
+    names = [s["name"] for s in data["stages"]]
+    x = [x for x in data["vertices"] if str(x["v"]) == v][0]
+    vp = re.match(r"\(x_vp, y_vp\) = \((-?\d+), (-?\d+)\)$", x["coords"][names.index("viewport")])
+    fb = re.search(r"\(x_fb, y_fb\) = .* = \((-?\d+), (-?\d+)\)\n", x["here"][names.index("viewport")])
+    check("slider79-5 %s v%s: the viewport and framebuffer pixel are the command line's" % (
+        model, v), page.get("viewport") == (list(vp.groups()) if vp else ["none", "none"]) and
+        page.get("framebuffer") == (list(fb.groups()) if fb else ["none", "none"]),
+        "page %s %s, pipetrace %s" % (page.get("viewport"), page.get("framebuffer"),
+                                      x["here"][names.index("viewport")]))
+    shown = info["shown"][0]
+    check("slider79-6 %s v%s %s: #coords is the command line's page's" % (model, v, shown),
+          info["coords"][0] == x["coords"][names.index(shown)],
+          "page %r, pipetrace %r" % (info["coords"][0], x["coords"][names.index(shown)]))
+
+
 def bits(x):
     return struct.pack(">d", float(x)).hex()
 
@@ -71,6 +164,8 @@ def main():
             info[f[0]] = f[1:]
     model, v = info["vertex"][0], info["vertex"][1]
     src = "docs/examples/builtin.scene" if scene == "-" else scene
+    if "n" in p and "l" in p:                    # the course's renderer 7 or 9
+        return course(exe, src, p, page, info, tmp)
     new = os.path.join(tmp, "moved.scene")
     with open(new, "w", encoding="utf-8") as f:
         f.write(rewrite(open(src, encoding="utf-8").read(), p, model))

@@ -95,6 +95,41 @@ else
     move "$tmp/fov.scene" 'cube%20v8' '&set=x_t:-0.5&stage=2'
     move "$tmp/fov.scene" 'cube%20v8' ''
     move docs/examples/lookat-cube.scene 'cube%20v2' '&set=near:4.5,far:3'
+    # the course's renderers 7 and 9: the view volume (l, r, b, t), the near
+    # plane n, the translation (7) or the view vector (9), the viewport; a
+    # vertex the near clip makes, one it cuts off, one the clip makes, an
+    # orthographic camera, anti-aliasing, a viewport off the corner
+    c=tests/course79
+    move79() {  # move79 SCENE VERTEX QUERY: the page of that vertex, its sliders moved
+        "$exe" journey "$1" --vertex "$2" --html "$tmp/p.html"
+        sliders "$tmp/p.html" "&vertex=$(grep '^model' "$1" | head -1 | cut -d' ' -f2)%20v$2$3" \
+            > "$tmp/dom.html"
+        compare "$1" "$tmp/dom.html"
+    }
+    move79 $c/r7-near-01.scene 9 '&set=l:-1.5,t:1.2,n:-0.35,x_t:0.3,w:40,x_ul:5&stage=6'
+    move79 $c/r7-near-01.scene 6 '&set=r:2.5,b:-0.5,z_t:-0.5&stage=5'
+    move79 $c/r7-near-01.scene 11 '&set=n:-0.2,y_t:0.15&stage=6'
+    move79 $c/r7-near-01.scene 1 ''
+    move79 $c/r7-clip-08-corner-ur.scene 3 '&set=l:-2,r:1.5,y_t:0.4,h:20,y_ul:7&stage=6'
+    move79 $c/r7-aa-00.scene 1 '&set=t:0.75,w:17&stage=7'
+    move79 $c/r9-near-05.scene 13 '&set=view_x:0.5,view_z:-1.5,t:2,n:-1&stage=6'
+    move79 $c/r9-near-05.scene 2 '&set=n:-3.5,l:-0.4&stage=8'
+    move79 $c/r9-mat-14-camera-translate.scene 1 '&set=view_y:0.35,l:-0.8&stage=3'
+    # renderer 9's matrix: a translate's x, y, z and a rotate's angle (sin and
+    # cos from the page's table), the scene's own angle between the steps
+    move79 $c/r9-mat-07-order-TRS.scene 1 '&set=angle_2:-45,tx_1:0.35,ty_1:-0.2&stage=2'
+    move79 $c/r9-mat-14-camera-translate.scene 2 '&set=angle_2:359,view_y:0.35&stage=2'
+    sed 's/^matrix rotate y 30.0/matrix-pre rotate 37.5 1 1 0/' \
+        $c/r9-mat-07-order-TRS.scene > "$tmp/rot.scene"
+    move79 "$tmp/rot.scene" 3 '&set=view_z:0.5,tz_1:-5.5&stage=2'
+    move79 "$tmp/rot.scene" 3 '&set=angle_2:-360&stage=3'
+    move79 $c/r9-aa-04.scene 1 '&set=b:-2.5,n:0.5,w:30,x_ul:20&stage=8'
+    move79 $c/r9-clip-12-through-x.scene 3 '&set=r:0.6,w:33&stage=7'
+    move79 $c/r9-vp-02.scene 3 '&set=y_ul:10,h:60,view_z:0.5&stage=5'
+    # a page without sliders moved: the scene's numbers
+    "$exe" journey $c/r9-near-05.scene --vertex 2 --html "$tmp/p.html"
+    sliders "$tmp/p.html" '&stage=2' > "$tmp/dom.html"
+    compare $c/r9-near-05.scene "$tmp/dom.html"
 fi
 
 # ---- built without WebAssembly: no clang found (WASM_CC names none), then
@@ -115,6 +150,16 @@ nowasm() {  # nowasm HOW: the page of $tmp/nowasm/pipetrace has no sliders
     check "wasm-2m $1: the matrix camera's page says it has no sliders, and why" \
         sh -c "grep -q 'No sliders on this page: pipetrace was built without' '$tmp/nm.html' &&
                ! grep -q 'wasmdata\|s_fov' '$tmp/nm.html'"
+    "$tmp/nowasm/pipetrace" journey tests/course79/r7-near-01.scene --vertex 1 \
+        --html "$tmp/n79.html"
+    "$exe" journey tests/course79/r7-near-01.scene --vertex 1 --html "$tmp/b79.html"
+    check "wasm-2c $1: a renderer 7 page says it has no sliders, and why" \
+        sh -c "grep -q 'No sliders on this page: pipetrace was built without' '$tmp/n79.html' &&
+               ! grep -q 'wasmdata\|s_x_t' '$tmp/n79.html'"
+    check "wasm-4c $1: ... and is otherwise the same" \
+        sh -c "sed '/<section id=\"live\"/,\$d' '$tmp/n79.html' > '$tmp/n79.top' &&
+               sed '/<section id=\"live\"/,\$d' '$tmp/b79.html' > '$tmp/b79.top' &&
+               cmp '$tmp/n79.top' '$tmp/b79.top'"
     check "wasm-4 $1: the page is otherwise the same" \
         sh -c "sed '/<section id=\"live\"/,\$d' '$tmp/n.html' > '$tmp/n.top' &&
                sed '/<section id=\"live\"/,\$d' '$tmp/b.html' > '$tmp/b.top' &&

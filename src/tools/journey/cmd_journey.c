@@ -13,7 +13,7 @@
 ** are written whole or not at all (src/io/outfile.h); "-" is standard output.
 ** Both cameras are drawn: the matrix camera's panels follow its ten stages
 ** (src/tools/journey/journey_matrix.c).  A scene of the course's renderer 7
-** or 9 gets the SVG only (src/tools/journey/journey_course.c).
+** or 9 gets its own panels, page and image (src/tools/journey/journey_course.c).
 */
 #include <errno.h>
 #include <stdio.h>
@@ -50,9 +50,13 @@ static const char usage[] =
 "seven panels, or the matrix camera's ten (camera lookat: world, view, clip, cvv,\n"
 "ndc and screen between model and viewport; a vertex outside the view volume\n"
 "stops at the cvv, and its segments go on from where clipping cut them).\n"
-"A scene of the course's renderer 7 or 9: --svg only (model, [world,] view,\n"
-"view volume, normalized, near clip, image plane, viewport); a vertex past the\n"
-"model's own is one a clip stage made.  --html and --image refuse such a scene.\n"
+"A scene of the course's renderer 7 or 9: the panels model, [world,] view,\n"
+"view volume, normalized, near clip, image plane, viewport; a vertex past the\n"
+"model's own is one a clip stage made.  The page lists every vertex of the\n"
+"position (at most 64) or the --vertex list, its sliders move l, r, b, t, n,\n"
+"the translation (7) or view vector and matrix angles (9) and the viewport;\n"
+"--image rings the"
+" vertex's pixel in the course's render.\n"
 "Exit status: 0 success, 1 usage error, 2 bad input or output error.\n"
 "Docs: docs/journey.md\n";
 
@@ -73,23 +77,14 @@ static int write_file(const char *path, const pt_sbuf *sb, const pt_fb *fb)
     return pt_outfile_finish(&o, bad, "pipetrace journey");
 }
 
-/* The scene rendered into fb (initialised here), with the framebuffer pixel of
-** vertex v of model m, when it has one, ringed in the panels' red: the pixel
-** itself and the square 3 pixels around it, inside the framebuffer.  Returns 0,
-** or -1 when out of memory (fb is then freed). */
-static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64_t v)
+/* Ring framebuffer pixel (x, y) of fb (scene s's) in the panels' red: the
+** pixel itself and the square 3 pixels around it, inside the framebuffer. */
+static void ring(pt_fb *fb, const pt_scene *s, int64_t x, int64_t y)
 {
     static const unsigned char red[3] = PT_JOURNEY_RED_RGB;
-    pt_journey j;
     pt_pix px = {0, 0, 1};
-    int64_t x, y, dx, dy;
+    int64_t dx, dy;
 
-    if (pt_journey_render(fb, s) != 0) return -1;
-    if (pt_run_journey(&j, s, m, v, 0) != 0) { pt_fb_free(fb); return -1; }
-    if ((j.rec[PT_STAGE_FRAMEBUFFER].flags & PT_REC_NULL) ||          /* no pixel, or */
-        !(j.reported & 1u << PT_STAGE_FRAMEBUFFER)) return 0;        /* stopped at the cvv */
-    x = j.rec[PT_STAGE_FRAMEBUFFER].ix;
-    y = j.rec[PT_STAGE_FRAMEBUFFER].iy;
     for (dy = -3; dy <= 3; dy++)
         for (dx = -3; dx <= 3; dx++) {
             int ring = dx == -3 || dx == 3 || dy == -3 || dy == 3;
@@ -99,6 +94,20 @@ static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64
             px.y = y + dy;
             pt_fb_set(fb, pt_fb2index(px, s->fb_w, s->fb_h, NULL), red);   /* the index stage */
         }
+}
+
+/* The scene rendered into fb (initialised here), with the framebuffer pixel of
+** vertex v of model m ringed (ring()) when it has one.  Returns 0, or -1 when
+** out of memory (fb is then freed). */
+static int render_marked(pt_fb *fb, const pt_scene *s, const pt_model *m, uint64_t v)
+{
+    pt_journey j;
+
+    if (pt_journey_render(fb, s) != 0) return -1;
+    if (pt_run_journey(&j, s, m, v, 0) != 0) { pt_fb_free(fb); return -1; }
+    if ((j.rec[PT_STAGE_FRAMEBUFFER].flags & PT_REC_NULL) ||          /* no pixel, or */
+        !(j.reported & 1u << PT_STAGE_FRAMEBUFFER)) return 0;        /* stopped at the cvv */
+    ring(fb, s, j.rec[PT_STAGE_FRAMEBUFFER].ix, j.rec[PT_STAGE_FRAMEBUFFER].iy);
     return 0;
 }
 
@@ -137,30 +146,45 @@ static int vlist_parse(vlist *l, const char *t)
     }
 }
 
-/* journey on a scene of the course's renderer 7 or 9: the SVG only.
+/* journey on a scene of the course's renderer 7 or 9: the SVG, the page
+** (vertices from l, a list, or every vertex of the position) and the image.
 ** Returns the exit status. */
 static int course_journey(const pt_scene *s, const char *model, uint64_t v, const char *svg,
-                          const char *html, const char *image)
+                          const char *html, const char *image, const vlist *l)
 {
     size_t mi = 0;
-    pt_sbuf a;
-    int rc;
+    pt_sbuf a, b;
+    pt_fb fb;
+    unsigned char *pick = NULL;
+    uint64_t npick = 0, x;
+    int rc, have_fb = 0, has = 0, i;
+    int64_t px = 0, py = 0;
 
-    if (html || image) {
-        fprintf(stderr, "pipetrace journey: %s: error: %s does not take scenes of the "
-                "course's renderer %d (no page, no image: only --svg draws their journey)\n",
-                s->path, html ? "--html" : "--image", s->renderer);
-        return PT_EXIT_INPUT;
-    }
     if (model) {
         const pt_model *m = pt_cli_model(s, "journey", model);
         if (!m) return PT_EXIT_INPUT;
         mi = (size_t)(m - s->models);
         rc = 0;
     } else rc = pt_cx_find(s, v, &mi);
+    if (!l->all && (l->n > 1 || l->a[0] != l->b[0])) {   /* the vertices the page lists */
+        npick = l->max;
+        if (!(pick = calloc(npick, 1))) rc = -1;
+        for (i = 0; pick && i < l->n; i++)
+            for (x = l->a[i]; x <= l->b[i]; x++) pick[x - 1] = 1;
+    }
     pt_sbuf_init(&a);
-    if (rc == 0) rc = pt_journey_course_svg(&a, s, mi, v);
-    if (rc == 1 && model)
+    pt_sbuf_init(&b);
+    if (rc == 0 && svg) rc = pt_journey_course_svg(&a, s, mi, v);
+    if (rc == 0 && html) rc = pt_journey_course_html(&b, s, mi, v, pick, npick);
+    if (rc == 0 && image && (rc = pt_journey_course_image(&fb, s, mi, v, &has, &px, &py)) == 0) {
+        have_fb = 1;
+        if (has) ring(&fb, s, px, py);
+    }
+    if (rc == 2)
+        fprintf(stderr, "pipetrace journey: --vertex: the position of model %s of %s has no "
+                "vertex %llu, not even after the clips\n", s->models[mi].name, s->path,
+                (unsigned long long)npick);
+    else if (rc == 1 && model)
         fprintf(stderr, "pipetrace journey: --vertex %llu: the position of model %s of %s has "
                 "no vertex %llu, not even after the clips\n", (unsigned long long)v, model,
                 s->path, (unsigned long long)v);
@@ -169,8 +193,14 @@ static int course_journey(const pt_scene *s, const char *model, uint64_t v, cons
                 "not even after the clips\n", (unsigned long long)v, s->path,
                 (unsigned long long)v);
     else if (rc) fprintf(stderr, "pipetrace journey: %s: out of memory\n", s->path);
-    if (!rc && write_file(svg, &a, NULL) != 0) rc = -1;
+    /* every output is complete before any file is touched */
+    if (!rc && svg && write_file(svg, &a, NULL) != 0) rc = -1;
+    if (!rc && html && write_file(html, &b, NULL) != 0) rc = -1;
+    if (!rc && image && write_file(image, NULL, &fb) != 0) rc = -1;
+    if (have_fb) pt_fb_free(&fb);
     pt_sbuf_free(&a);
+    pt_sbuf_free(&b);
+    free(pick);
     return rc ? PT_EXIT_INPUT : 0;
 }
 
@@ -242,7 +272,7 @@ int pt_cmd_journey(int argc, char **argv)
         }
     }
     if (s.renderer == 7 || s.renderer == 9) {
-        rc = course_journey(&s, model, v, svg, html, image);
+        rc = course_journey(&s, model, v, svg, html, image, &vl);
         pt_scene_free(&s);
         return rc;
     }

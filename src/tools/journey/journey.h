@@ -101,4 +101,19 @@ int pt_journey_svg(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v
 int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t v,
                     const unsigned char *pick);
 
+/* The page's parts, for a page of other panels (journey_course.c): the
+** head (title "pipetrace journey: MODEL vV"), style and body up to the
+** data, which the caller appends as <script type="application/json"
+** id="data"> in the form above; then the script that shows it.  On
+** allocation failure sb->failed is set. */
+void pt_journey_page_head(pt_sbuf *sb, const char *model, uint64_t v);
+void pt_journey_page_script(pt_sbuf *sb);
+
+/* Append stage k's entry (k > 0: after a comma) of the data's "stages"
+** list: its trace name, title, spaces, formula (NULL: none) and what it
+** does.  On allocation failure sb->failed is set. */
+void pt_journey_page_stage(pt_sbuf *sb, int k, const char *name, const char *title,
+                           const char *from, const char *to, const char *formula,
+                           const char *what);
+
 #endif

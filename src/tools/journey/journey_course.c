@@ -16,6 +16,8 @@
 #include "tools/journey/journey_course.h"
 #include "tools/journey/jdraw.h"
 #include "tools/journey/jmodel.h"
+#include "tools/journey/journey.h"
+#include "tools/journey/journey_wasm.h"
 #include "io/explain_course.h"
 #include "io/numfmt.h"
 #include "core/pipetrace.h"
@@ -35,6 +37,7 @@
 typedef struct snap {            /* the position's model after one stage */
     int have;
     pt_vec4 *v;  size_t nv;
+    pt_rgb *c;  size_t nc;       /* its colours (the page's sliders run the model again) */
     pt_rv_prim *p;  size_t np;
 } snap;
 
@@ -71,13 +74,17 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
 
     if (pos->index != c->mi || c->failed) return;
     free(s->v);
+    free(s->c);
     free(s->p);
     s->v = malloc((m->nv ? m->nv : 1) * sizeof *s->v);
+    s->c = malloc((m->nc ? m->nc : 1) * sizeof *s->c);
     s->p = malloc((m->np ? m->np : 1) * sizeof *s->p);
-    if (!s->v || !s->p) { c->failed = 1; return; }
+    if (!s->v || !s->c || !s->p) { c->failed = 1; return; }
     if (m->nv) memcpy(s->v, m->v, m->nv * sizeof *s->v);
+    if (m->nc) memcpy(s->c, m->c, m->nc * sizeof *s->c);
     if (m->np) memcpy(s->p, m->p, m->np * sizeof *s->p);
     s->nv = m->nv;
+    s->nc = m->nc;
     s->np = m->np;
     s->have = 1;
 }
@@ -159,6 +166,7 @@ static void crun_free(crun *c)
 
     for (i = 0; i < PT_NCST; i++) {
         free(c->st[i].v);
+        free(c->st[i].c);
         free(c->st[i].p);
     }
     free(c->cut);
@@ -360,24 +368,46 @@ static void frame(pt_sbuf *sb, int no, const cpanel *p)
     pt_jrect(sb, PT_JBOX_X, PT_JBOX_Y, PT_JBOX_W, PT_JBOX_H, "#fbfcfe", "#e3e6eb", "");
 }
 
-/* The vertex's coordinates label and the note under it. */
+const char *pt_jcourse_text(int k)
+{
+    static const char *const texts[3] = {
+        ": not yet, the vertex is made by the near clip",
+        ": not yet, the vertex is made by the clip",
+        "(x_vp, y_vp): none, outside the view square after the clip"
+    };
+    return texts[k >= 0 && k < 3 ? k : 2];
+}
+
+/* The text of the vertex's coordinates label at stage st: the panel's
+** coordinates and their values, or why there are none yet. */
+static void caption_text(pt_sbuf *t, const pt_cx_journey *j, const cpanel *p,
+                         pt_course_stage st)
+{
+    pt_sbuf_add(t, p->coords);
+    if (j->have[st]) {
+        pt_vec4 a = j->at[st];
+        pt_sbuf_add(t, " = (");
+        num(t, a.x); pt_sbuf_add(t, ", ");
+        num(t, a.y); pt_sbuf_add(t, ", ");
+        num(t, a.z); pt_sbuf_add(t, ")");
+    } else pt_sbuf_add(t, pt_jcourse_text(j->born == PT_CST_NEARCLIP ? 0 : 1));
+}
+
+/* The viewport panel's label: the vertex's pixel, or why it has none. */
+static void viewport_text(char *t, size_t len, const pt_cx_journey *j)
+{
+    if (j->mapped)
+        snprintf(t, len, "(x_vp, y_vp) = (%lld, %lld)", (long long)j->px_x, (long long)j->px_y);
+    else snprintf(t, len, "%s", pt_jcourse_text(2));
+}
+
+/* The vertex's coordinates label. */
 static void caption(pt_sbuf *sb, const cdoc *d, const cpanel *p, pt_course_stage st)
 {
-    const pt_cx_journey *j = d->j;
     pt_sbuf t;
 
     pt_sbuf_init(&t);
-    pt_sbuf_add(&t, p->coords);
-    if (j->have[st]) {
-        pt_vec4 a = j->at[st];
-        pt_sbuf_add(&t, " = (");
-        num(&t, a.x); pt_sbuf_add(&t, ", ");
-        num(&t, a.y); pt_sbuf_add(&t, ", ");
-        num(&t, a.z); pt_sbuf_add(&t, ")");
-    } else {
-        pt_sbuf_add(&t, ": not yet, the vertex is made by ");
-        pt_sbuf_add(&t, j->born == PT_CST_NEARCLIP ? "the near clip" : "the clip");
-    }
+    caption_text(&t, d->j, p, st);
     pt_jtext(sb, 12, LABEL_Y, 12, "start", "class=\"coords\" font-family=\"" PT_JMONO
              "\" fill=\"" PT_JC_TEXT "\"", t.s ? t.s : "", 376);
     if (t.failed) sb->failed = 1;
@@ -411,14 +441,16 @@ static void note(pt_sbuf *sb, const cdoc *d, pt_course_stage st, const char *mor
     pt_sbuf_free(&t);
 }
 
-/* The vertex's marker at its value after stage st, in view v. */
+/* The vertex's marker at its value after stage st, in view v (an arrow at
+** the edge when it lies off the panel); none before a clip stage made it. */
 static void marker(pt_sbuf *sb, const pt_jview *v, const cdoc *d, pt_course_stage st,
                    view_kind kind)
 {
-    double x = 0, y = 0;
+    double x, y;
 
-    if (d->j->have[st]) xy_of(kind, d->j->at[st], &x, &y);
-    pt_jmarker(sb, v, d->j->have[st], x, y, d->j->v, 0, NULL, NULL);
+    if (!d->j->have[st]) return;            /* not made yet: nothing to mark */
+    xy_of(kind, d->j->at[st], &x, &y);
+    pt_jmarker(sb, v, 1, x, y, d->j->v, 0, NULL, NULL);
 }
 
 /* A 3-D panel (model, world, view): the model's wireframe and its axes. */
@@ -531,11 +563,7 @@ static void panel_viewport(pt_sbuf *sb, const cdoc *d)
     pt_joutline(sb, &v, r, PT_JC_EDGE, 1.2);
     if (j->mapped)
         pt_jmarker(sb, &v, 1, (double)j->px_x + 0.5, (double)j->px_y + 0.5, j->v, 1, NULL, NULL);
-    if (j->mapped)
-        snprintf(t, sizeof t, "(x_vp, y_vp) = (%lld, %lld)", (long long)j->px_x,
-                 (long long)j->px_y);
-    else
-        snprintf(t, sizeof t, "(x_vp, y_vp): none, outside the view square after the clip");
+    viewport_text(t, sizeof t, j);
     pt_jtext(sb, 12, LABEL_Y, 12, "start", "class=\"coords\" font-family=\"" PT_JMONO
              "\" fill=\"" PT_JC_TEXT "\"", t, 376);
     snprintf(t, sizeof t, "%dx%d viewport at (%d, %d); %s%s", j->par.w, j->par.h, j->par.x_ul,
@@ -561,7 +589,7 @@ static const cpanel panels[] = {
 };
 #define NPANELS (sizeof panels / sizeof panels[0])
 
-static void panel(pt_sbuf *sb, const cdoc *d, const cpanel *p, int no)
+static void panel_drawn(pt_sbuf *sb, const cdoc *d, const cpanel *p, int no)
 {
     cpanel q = *p;
     char more[160];
@@ -598,22 +626,211 @@ static void panel(pt_sbuf *sb, const cdoc *d, const cpanel *p, int no)
     note(sb, d, p->st, more);
 }
 
-int pt_journey_course_svg(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v)
+/* Panel p (number no) drawn, its movable labels placed clear of each other
+** and of its lines and texts (jplace.h), as the other cameras' panels are. */
+static void panel(pt_sbuf *sb, const cdoc *d, const cpanel *p, int no)
 {
-    static pt_cx_journey j;      /* large: not on the stack */
-    pt_course_cam cc;
+    static const double area[4] = {PT_JBOX_X, PT_JBOX_Y, PT_JBOX_X + PT_JBOX_W,
+                                   PT_JBOX_Y + PT_JBOX_H};
+    pt_jplace pl;
+
+    pt_jplace_init(&pl, area);
+    pt_jdraw_to(&pl);
+    panel_drawn(sb, d, p, no);
+    pt_jdraw_to(NULL);
+    pt_jdraw_labels(sb, &pl);
+    if (pl.failed) sb->failed = 1;
+    pt_jplace_free(&pl);
+}
+
+/* ===== one render, one vertex: the documents ===== */
+
+struct pt_jcourse {
+    const pt_scene *s;
+    size_t mi;
     crun c;
     cdoc d;
+    pt_cx_journey j;             /* the chosen vertex's */
+};
+
+int pt_jcourse_open(pt_jcourse **out, const pt_scene *s, size_t mi)
+{
+    pt_jcourse *jc = calloc(1, sizeof *jc);
+    pt_course_cam cc;
+
+    *out = NULL;
+    if (!jc) return -1;
+    if (crun_run(&jc->c, s, mi) != 0) {
+        crun_free(&jc->c);
+        free(jc);
+        return -1;
+    }
+    pt_course_camera(s, &cc);
+    jc->s = s;
+    jc->mi = mi;
+    jc->d.s = s; jc->d.j = &jc->j; jc->d.c = &jc->c; jc->d.cam = cc.cam;
+    *out = jc;
+    return 0;
+}
+
+int pt_jcourse_vertex(pt_jcourse *jc, uint64_t v)
+{
+    return pt_cx_run(&jc->j, jc->s, jc->mi, v);
+}
+
+uint64_t pt_jcourse_count(const pt_jcourse *jc)
+{
+    const snap *sn = &jc->c.st[PT_CST_CLIP];
+    return sn->have ? sn->nv : 0;
+}
+
+const pt_cx_journey *pt_jcourse_journey(const pt_jcourse *jc)
+{
+    return &jc->j;
+}
+
+const pt_rv_model *pt_jcourse_model(const pt_jcourse *jc, pt_rv_model *view)
+{
+    const snap *sn = &jc->c.st[PT_CST_MODEL];
+
+    if (!sn->have) return NULL;
+    memset(view, 0, sizeof *view);
+    view->v = sn->v; view->nv = sn->nv;
+    view->c = sn->c; view->nc = sn->nc;
+    view->p = sn->p; view->np = sn->np;
+    return view;
+}
+
+/* Panel k of this renderer's (renderer 7 has no world). */
+static const cpanel *nth(const pt_jcourse *jc, int k)
+{
     size_t i;
-    int rc, n = 0, no = 0, docw = COLS * PT_JOURNEY_PW + (COLS + 1) * GAP, doch;
+
+    for (i = 0; i < NPANELS; i++) {
+        if (panels[i].st == PT_CST_WORLD && jc->s->renderer != 9) continue;
+        if (k-- == 0) return &panels[i];
+    }
+    return &panels[0];
+}
+
+const char *pt_jcourse_label(int st)
+{
+    size_t i;
+
+    if (st == PT_CST_CLIP) st = PT_CST_IMAGE;   /* the clip works on the image plane */
+    for (i = 0; i < NPANELS; i++)
+        if ((int)panels[i].st == st) return panels[i].coords;
+    return panels[0].coords;
+}
+
+int pt_jcourse_npanels(const pt_jcourse *jc)
+{
+    return jc->s->renderer == 9 ? (int)NPANELS : (int)NPANELS - 1;
+}
+
+/* The step of `step` that a panel's page texts come from (the volume's:
+** the view's; the image plane's: the projection and the clip). */
+static pt_cx_step step_of(const cpanel *p)
+{
+    if (!strcmp(p->key, "viewport")) return PT_CXS_VIEWPORT;
+    return pt_cx_step_of(p->st);
+}
+
+void pt_jcourse_stage_of(const pt_jcourse *jc, int k, pt_jcourse_stage *out)
+{
+    const cpanel *p = nth(jc, k);
+    const pt_cx_row *row = pt_cx_row_of(step_of(p));
+
+    out->key = p->key;
+    out->title = p->title;
+    out->from = row->from;
+    out->to = row->to;
+    out->what = row->what;
+    out->formula = pt_cx_formula(jc->s->renderer, step_of(p));
+    if (!strcmp(p->key, "volume")) {
+        out->from = out->to = "view";
+        out->what = "the view volume, seen from the side: the camera at the origin looking "
+                    "down -z, the rectangle l..r, b..t at z = -1 (orthographic: a box), the "
+                    "near plane z = n";
+        out->formula = "l, r, b, t: the camera's rectangle; n = -near";
+    }
+}
+
+void pt_jcourse_panel(pt_sbuf *sb, const pt_jcourse *jc, int k)
+{
+    panel(sb, &jc->d, nth(jc, k), k + 1);
+}
+
+void pt_jcourse_coords(pt_sbuf *sb, const pt_jcourse *jc, int k)
+{
+    const cpanel *p = nth(jc, k);
+    char t[160];
+
+    if (!strcmp(p->key, "viewport")) {
+        viewport_text(t, sizeof t, &jc->j);
+        pt_sbuf_add(sb, t);
+    } else if (p->st == PT_CST_IMAGE)
+        caption_text(sb, &jc->j, p, jc->j.have[PT_CST_IMAGE] ? PT_CST_IMAGE : PT_CST_CLIP);
+    else caption_text(sb, &jc->j, p, p->st);
+}
+
+/* Append step st's text when the vertex has that step. */
+static void add_step(pt_sbuf *sb, const pt_cx_journey *j, pt_cx_step st, const char *before)
+{
+    static char b[16384];
+    int i;
+
+    for (i = 0; i < j->nsteps; i++)
+        if (j->steps[i] == st) {
+            pt_cx_stage(b, sizeof b, j, st, "\n");
+            pt_sbuf_add(sb, before);
+            pt_sbuf_add(sb, b);
+            return;
+        }
+}
+
+void pt_jcourse_here(pt_sbuf *sb, const pt_jcourse *jc, int k)
+{
+    const cpanel *p = nth(jc, k);
+    const pt_cx_journey *j = &jc->j;
+    const pt_rv_camera *c = &jc->d.cam;
+    size_t len = sb->len;
+
+    if (!strcmp(p->key, "volume")) {
+        pt_sbuf_add(sb, "l = "); num(sb, c->l);
+        pt_sbuf_add(sb, ", r = "); num(sb, c->r);
+        pt_sbuf_add(sb, ", b = "); num(sb, c->b);
+        pt_sbuf_add(sb, ", t = "); num(sb, c->t);
+        pt_sbuf_add(sb, ", n = "); num(sb, c->n);
+        pt_sbuf_add(sb, c->perspective ? " (perspective)" : " (orthographic)");
+        return;
+    }
+    if (!strcmp(p->key, "viewport")) {
+        add_step(sb, j, PT_CXS_PIXEL, "");
+        add_step(sb, j, PT_CXS_VIEWPORT, "\n");
+    } else if (p->st == PT_CST_IMAGE) {
+        add_step(sb, j, PT_CXS_IMAGE, "");
+        add_step(sb, j, PT_CXS_CLIP, sb->len > len ? "\n" : "");
+    } else add_step(sb, j, pt_cx_step_of(p->st), "");
+    if (sb->len == len) pt_jcourse_coords(sb, jc, k);      /* not yet */
+}
+
+void pt_jcourse_close(pt_jcourse *jc)
+{
+    if (!jc) return;
+    crun_free(&jc->c);
+    free(jc);
+}
+
+int pt_journey_course_svg(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v)
+{
+    pt_jcourse *jc;
+    int rc, n, k, docw = COLS * PT_JOURNEY_PW + (COLS + 1) * GAP, doch;
     pt_sbuf t;
 
-    if ((rc = pt_cx_run(&j, s, mi, v)) != 0) return rc;
-    if (crun_run(&c, s, mi) != 0) { crun_free(&c); return -1; }
-    pt_course_camera(s, &cc);
-    d.s = s; d.j = &j; d.c = &c; d.cam = cc.cam;
-    for (i = 0; i < NPANELS; i++)
-        if (panels[i].st != PT_CST_WORLD || s->renderer == 9) n++;
+    if (pt_jcourse_open(&jc, s, mi) != 0) return -1;
+    if ((rc = pt_jcourse_vertex(jc, v)) != 0) { pt_jcourse_close(jc); return rc; }
+    n = pt_jcourse_npanels(jc);
     doch = HEAD + ((n + COLS - 1) / COLS) * (PT_JOURNEY_PH + GAP);
     pt_sbuf_add(sb, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     pt_sbuf_addf(sb, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %d %d\" "
@@ -635,22 +852,148 @@ int pt_journey_course_svg(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v)
     pt_jtext(sb, GAP, 50, 13, "start", "fill=\"" PT_JC_NOTE "\"", t.s ? t.s : "", docw - 2 * GAP);
     if (t.failed) sb->failed = 1;
     pt_sbuf_free(&t);
-    for (i = 0; i < NPANELS; i++) {
-        int col, row, px, py;
-        if (panels[i].st == PT_CST_WORLD && s->renderer != 9) continue;
-        col = no % COLS; row = no / COLS;
-        px = GAP + col * (PT_JOURNEY_PW + GAP);
-        py = HEAD + row * (PT_JOURNEY_PH + GAP);
-        no++;
+    for (k = 0; k < n; k++) {
+        int col = k % COLS, row = k / COLS;
+        int px = GAP + col * (PT_JOURNEY_PW + GAP), py = HEAD + row * (PT_JOURNEY_PH + GAP);
         pt_sbuf_addf(sb, "<g class=\"panel\" data-stage=\"%s\" transform=\"translate(%d %d)\">\n",
-                     panels[i].key, px, py);
-        panel(sb, &d, &panels[i], no);
+                     nth(jc, k)->key, px, py);
+        pt_jcourse_panel(sb, jc, k);
         pt_sbuf_add(sb, "</g>\n");
-        if (col < COLS - 1 && no < n)
+        if (col < COLS - 1 && k + 1 < n)
             pt_jarrow(sb, px + PT_JOURNEY_PW + 1, py + PT_JOURNEY_PH / 2.0,
                       px + PT_JOURNEY_PW + GAP - 2, py + PT_JOURNEY_PH / 2.0, 12, "#8a919b");
     }
     pt_sbuf_add(sb, "</svg>\n");
-    crun_free(&c);
+    pt_jcourse_close(jc);
     return sb->failed ? -1 : 0;
+}
+
+int pt_journey_course_image(pt_fb *fb, const pt_scene *s, size_t mi, uint64_t v, int *has,
+                            int64_t *x, int64_t *y)
+{
+    static pt_cx_journey j;      /* large: not on the stack */
+    int rc;
+
+    if ((rc = pt_cx_run(&j, s, mi, v)) != 0) return rc;
+    if (pt_fb_init(fb, s->fb_w, s->fb_h, s->background) != 0) return -1;
+    if (pt_course_render(s, fb, NULL) != 0) { pt_fb_free(fb); return -1; }
+    *has = j.mapped;
+    *x = (int64_t)j.par.x_ul + j.px_x;      /* x_fb = x_ul + x_vp */
+    *y = (int64_t)j.par.y_ul + j.px_y;
+    return 0;
+}
+
+/* ===== the page ===== */
+
+/* Append ["..", ..] of one text per panel of the chosen vertex: kind 0 its
+** coordinates, 1 the formula with its numbers, 2 the panel drawn, 3 what
+** the next panel does. */
+static void page_texts(pt_sbuf *sb, const pt_jcourse *jc, int kind)
+{
+    int k, n = pt_jcourse_npanels(jc);
+    pt_sbuf t;
+
+    pt_sbuf_init(&t);
+    pt_sbuf_add(sb, "[");
+    for (k = 0; k < n; k++) {
+        pt_jcourse_stage in;
+        t.len = 0;
+        pt_sbuf_add(&t, "");
+        if (kind == 0) pt_jcourse_coords(&t, jc, k);
+        else if (kind == 1) pt_jcourse_here(&t, jc, k);
+        else if (kind == 2) pt_jcourse_panel(&t, jc, k);
+        else if (k + 1 < n) {
+            pt_jcourse_stage_of(jc, k + 1, &in);
+            pt_sbuf_addf(&t, "%s: ", in.title);
+            pt_sbuf_add(&t, in.what);
+        } else pt_sbuf_add(&t, "the rasterizer draws the primitives through this pixel");
+        pt_sbuf_add(sb, k ? (kind == 2 ? ",\n" : ",") : "");
+        pt_sbuf_add_json(sb, t.s ? t.s : "");
+    }
+    pt_sbuf_add(sb, "]");
+    if (t.failed) sb->failed = 1;
+    pt_sbuf_free(&t);
+}
+
+int pt_journey_course_html(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v,
+                           const unsigned char *pick, uint64_t npick)
+{
+    pt_jcourse *jc;
+    uint64_t x, count, total = 0, start = 0, n = 0;
+    int k, rc, np;
+    pt_sbuf t;
+
+    if (pt_jcourse_open(&jc, s, mi) != 0) return -1;
+    if ((rc = pt_jcourse_vertex(jc, v)) != 0) { pt_jcourse_close(jc); return rc; }
+    count = pt_jcourse_count(jc);
+    if (pick && npick > count) { pt_jcourse_close(jc); return 2; }
+    np = pt_jcourse_npanels(jc);
+    pt_journey_page_head(sb, s->models[mi].name, v);
+    pt_sbuf_add(sb, "<script type=\"application/json\" id=\"data\">\n{\"where\":");
+    pt_sbuf_init(&t);
+    pt_sbuf_add(&t, "scene ");
+    pt_sbuf_add(&t, s->path);
+    pt_sbuf_addf(&t, "; the course's renderer %d, camera %s; viewport %d x %d at (x_ul, y_ul) "
+                 "= (%d, %d); framebuffer %d x %d", s->renderer,
+                 s->perspective ? "perspective" : "orthographic", s->vp_w, s->vp_h, s->vp_x,
+                 s->vp_y, s->fb_w, s->fb_h);
+    pt_sbuf_add_json(sb, t.s ? t.s : "");
+    if (t.failed) sb->failed = 1;
+    pt_sbuf_free(&t);
+    for (x = 1; x <= count; x++) {
+        int want = pick ? x <= npick && pick[x - 1] : 1;
+        if (!want && x != v) continue;
+        if (want) total++;
+        if (x == v) start = n;
+        if (n < PT_JCOURSE_MAXV || x == v) n++;
+    }
+    pt_sbuf_addf(sb, ",\n\"panel\":[%d,%d],\"font\":", PT_JOURNEY_PW, PT_JOURNEY_PH);
+    pt_sbuf_add_json(sb, PT_JFONT);
+    pt_sbuf_addf(sb, ",\"capped\":%s,\"total\":%llu,\"start\":%llu,\n\"stages\":[\n",
+                 total > n ? "true" : "false", (unsigned long long)total,
+                 (unsigned long long)start);
+    for (k = 0; k < np; k++) {
+        pt_jcourse_stage in;
+        pt_jcourse_stage_of(jc, k, &in);
+        pt_journey_page_stage(sb, k, in.key, in.title, in.from, in.to, in.formula, in.what);
+    }
+    pt_sbuf_add(sb, "],\n\"models\":[{\"name\":");
+    pt_sbuf_add_json(sb, s->models[mi].name);
+    pt_sbuf_add(sb, ",\"bg\":[");
+    for (k = 0; k < np; k++) pt_sbuf_add(sb, k ? ",\"\"" : "\"\"");
+    pt_sbuf_add(sb, "]}],\n\"vertices\":[\n");
+    for (x = 1, n = 0; x <= count && !sb->failed; x++) {
+        int want = pick ? x <= npick && pick[x - 1] : 1;
+        if (!want && x != v) continue;
+        if (n >= PT_JCOURSE_MAXV && x != v) continue;
+        if ((rc = pt_jcourse_vertex(jc, x)) < 0) break;
+        if (rc) continue;                   /* never there: a hidden position */
+        pt_sbuf_addf(sb, "%s{\"m\":0,\"v\":%llu,\"used\":true,\"coords\":", n ? ",\n" : "",
+                     (unsigned long long)x);
+        page_texts(sb, jc, 0);
+        pt_sbuf_add(sb, ",\n\"here\":");
+        page_texts(sb, jc, 1);
+        pt_sbuf_add(sb, ",\n\"next\":");
+        page_texts(sb, jc, 3);
+        pt_sbuf_add(sb, ",\n\"fg\":");
+        page_texts(sb, jc, 2);
+        pt_sbuf_add(sb, "}");
+        n++;
+    }
+    pt_sbuf_add(sb, "]}\n</script>\n");
+    pt_journey_page_script(sb);
+    if (rc >= 0) {                          /* the sliders (journey_wasm.c) */
+        pt_jwasm_course cw;
+        pt_rv_model view;
+        cw.j = &jc->j;
+        cw.m = pt_jcourse_model(jc, &view);
+        cw.ops = s->models[mi].ops;
+        cw.nops = s->models[mi].nops;
+        for (k = 0; k < PT_NCST; k++) cw.label[k] = pt_jcourse_label(k);
+        for (k = 0; k < 3; k++) cw.text[k] = pt_jcourse_text(k);
+        pt_journey_wasm_course(sb, s, &cw);
+    }
+    pt_sbuf_add(sb, "</body>\n</html>\n");
+    pt_jcourse_close(jc);
+    return rc < 0 || sb->failed ? -1 : 0;
 }

@@ -21,7 +21,8 @@
 **                  (anti-aliased ones shaded by their weight), the vertex's
 **
 ** Every number written is the run's; labels as <text class="coords">.
-** Only the SVG: the page (--html) and --image are renderer 4's.
+** The page (--html) shows the same panels one at a time (journey_html.c's
+** page, data from here); --image the render with the vertex's pixel ringed.
 */
 #ifndef PT_JOURNEY_COURSE_H
 #define PT_JOURNEY_COURSE_H
@@ -30,11 +31,81 @@
 #include <stdint.h>
 #include "core/pipetrace.h"
 #include "io/sbuf.h"
+#include "io/explain_course.h"
+
+/* One render of the scene heard for one position, and one vertex's journey
+** through it: what the SVG, the page and the image are drawn from. */
+typedef struct pt_jcourse pt_jcourse;
+
+/* Render s (renderer 7 or 9) once, hearing the position of model mi, into
+** *out (freed by pt_jcourse_close).  Returns 0, or -1 when out of memory. */
+int pt_jcourse_open(pt_jcourse **out, const pt_scene *s, size_t mi);
+
+/* Choose vertex v (1-based; past the model's own: one a clip stage made).
+** Returns 0; 1 when the position has no vertex v in any stage; -1 when out
+** of memory. */
+int pt_jcourse_vertex(pt_jcourse *jc, uint64_t v);
+
+/* The number of vertices the position has after its last stage (the
+** clips' counted).  This function can't fail. */
+uint64_t pt_jcourse_count(const pt_jcourse *jc);
+
+/* The chosen vertex's journey (pt_cx_run's).  This function can't fail. */
+const pt_cx_journey *pt_jcourse_journey(const pt_jcourse *jc);
+
+/* The position's model as the driver built it (vertices, colours,
+** primitives), or NULL when the position is hidden.  Can't fail. */
+const pt_rv_model *pt_jcourse_model(const pt_jcourse *jc, pt_rv_model *view);
+
+/* The panels: how many (8 for renderer 9, 7 for renderer 7), and panel k's
+** key (data-stage, "volume"), title, its spaces and what it shows, the
+** formula written on it.  Can't fail. */
+typedef struct pt_jcourse_stage {
+    const char *key, *title, *from, *to, *what, *formula;
+} pt_jcourse_stage;
+int pt_jcourse_npanels(const pt_jcourse *jc);
+void pt_jcourse_stage_of(const pt_jcourse *jc, int k, pt_jcourse_stage *out);
+
+/* Append panel k of the chosen vertex in panel units (0..PW x 0..PH), its
+** label's text (the coordinates), and its formula with the numbers put in
+** (pt_cx_stage's text).  On allocation failure sb->failed is set. */
+void pt_jcourse_panel(pt_sbuf *sb, const pt_jcourse *jc, int k);
+void pt_jcourse_coords(pt_sbuf *sb, const pt_jcourse *jc, int k);
+void pt_jcourse_here(pt_sbuf *sb, const pt_jcourse *jc, int k);
+
+/* The coordinates' names at course stage st (PT_CST_*), "(x_c, y_c, z_c)",
+** as the panels write them.  Can't fail. */
+const char *pt_jcourse_label(int st);
+
+/* The labels' texts for what a vertex lacks: k = 0 ": not yet, the vertex
+** is made by the near clip", 1 the same for the clip, 2 the viewport's
+** "(x_vp, y_vp): none, ...".  Can't fail. */
+const char *pt_jcourse_text(int k);
+
+/* Free jc (NULL too).  This function can't fail. */
+void pt_jcourse_close(pt_jcourse *jc);
 
 /* Append the SVG document for vertex v (1-based; past the model's own: one a
 ** clip stage made) of the position of model mi of s (renderer 7 or 9).
 ** Returns 0; 1 when that position has no vertex v in any stage; -1 when out
 ** of memory. */
 int pt_journey_course_svg(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v);
+
+/* Append the page (journey_html.c's, with these panels): vertex v first
+** shown; listed, the vertices k + 1 with pick[k] set (k < npick), or, pick
+** NULL, every vertex of the position, at most PT_JCOURSE_MAXV of them (v
+** always).  Sliders: pt_journey_wasm_course().  Returns as
+** pt_journey_course_svg(), or 2 when npick is more than the position's
+** vertices (the clips' counted). */
+#define PT_JCOURSE_MAXV 64
+int pt_journey_course_html(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v,
+                           const unsigned char *pick, uint64_t npick);
+
+/* Render s into fb (initialised here) and give the framebuffer pixel of
+** vertex v of the position of model mi in *x, *y: *has 0 when it has none
+** (outside the view square after the clip).  Returns as
+** pt_journey_course_svg() (fb is freed unless 0). */
+int pt_journey_course_image(pt_fb *fb, const pt_scene *s, size_t mi, uint64_t v, int *has,
+                            int64_t *x, int64_t *y);
 
 #endif

@@ -67,6 +67,7 @@ static const char style[] =
 "html.present main{grid-template-columns:minmax(0,1fr);justify-items:center;gap:.4rem;"
 "padding:.5rem 1rem}\n"
 "html.present #panel svg{height:66vh;width:auto;max-width:100%}\n"
+"html.present aside{max-width:100%}\n"
 "html.present aside>:not(#coords):not(#formula){display:none}\n"
 "html.present #formula{font-size:1rem}\n";
 
@@ -222,6 +223,46 @@ static const char *const script[] = {
     NULL
 };
 
+void pt_journey_page_head(pt_sbuf *sb, const char *model, uint64_t v)
+{
+    pt_sbuf_add(sb, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+                "<title>pipetrace journey: ");
+    pt_sbuf_add_xml(sb, model);
+    pt_sbuf_addf(sb, " v%llu</title>\n<style>\n", (unsigned long long)v);
+    pt_sbuf_add(sb, style);
+    pt_sbuf_add(sb, "</style>\n</head>\n<body>\n");
+    pt_sbuf_add(sb, body);
+}
+
+void pt_journey_page_stage(pt_sbuf *sb, int k, const char *name, const char *title,
+                           const char *from, const char *to, const char *formula,
+                           const char *what)
+{
+    pt_sbuf_add(sb, k ? ",\n{\"name\":" : "{\"name\":");
+    pt_sbuf_add_json(sb, name);
+    pt_sbuf_add(sb, ",\"title\":");
+    pt_sbuf_add_json(sb, title);
+    pt_sbuf_add(sb, ",\"from\":");
+    pt_sbuf_add_json(sb, from);
+    pt_sbuf_add(sb, ",\"to\":");
+    pt_sbuf_add_json(sb, to);
+    pt_sbuf_add(sb, ",\"formula\":");
+    pt_sbuf_add_json(sb, formula ? formula : "");
+    pt_sbuf_add(sb, ",\"what\":");
+    pt_sbuf_add_json(sb, what);
+    pt_sbuf_add(sb, "}");
+}
+
+void pt_journey_page_script(pt_sbuf *sb)
+{
+    int k;
+
+    pt_sbuf_add(sb, "<script>\n");
+    for (k = 0; script[k]; k++) pt_sbuf_add(sb, script[k]);
+    pt_sbuf_add(sb, "</script>\n");
+}
+
 /* One vertex listed on the page. */
 typedef struct item {
     size_t m;                    /* model index */
@@ -263,7 +304,7 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
     unsigned char *has = calloc(s->nmodels ? s->nmodels : 1, 1), *used = NULL;
     pt_sbuf t;
     const pt_fb *frame = NULL;
-    int st, i, rc = -1, found = 0;
+    int i, rc = -1, found = 0;
     int n_st = pt_scene_pipeline(s)->norder;
     const pt_stage *ord = pt_scene_pipeline(s)->order;
 
@@ -301,14 +342,7 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
         if (!frame) frame = jms[mi].frame;  /* the scene rendered once for every model */
     }
 
-    pt_sbuf_add(sb, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-                "<title>pipetrace journey: ");
-    pt_sbuf_add_xml(sb, m->name);
-    pt_sbuf_addf(sb, " v%llu</title>\n<style>\n", (unsigned long long)v);
-    pt_sbuf_add(sb, style);
-    pt_sbuf_add(sb, "</style>\n</head>\n<body>\n");
-    pt_sbuf_add(sb, body);
+    pt_journey_page_head(sb, m->name, v);
 
     /* the data */
     pt_sbuf_add(sb, "<script type=\"application/json\" id=\"data\">\n{\"where\":");
@@ -328,20 +362,8 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
                  (unsigned long long)start);
     for (i = 0; i < n_st; i++) {
         const pt_stage_info *in = pt_pipeline_info(pt_scene_pipeline(s), ord[i]);
-        st = ord[i];
-        pt_sbuf_add(sb, i ? ",\n{\"name\":" : "{\"name\":");
-        pt_sbuf_add_json(sb, in->name);
-        pt_sbuf_add(sb, ",\"title\":");
-        pt_sbuf_add_json(sb, pt_journey_title((pt_stage)st));
-        pt_sbuf_add(sb, ",\"from\":");
-        pt_sbuf_add_json(sb, in->from);
-        pt_sbuf_add(sb, ",\"to\":");
-        pt_sbuf_add_json(sb, in->to);
-        pt_sbuf_add(sb, ",\"formula\":");
-        pt_sbuf_add_json(sb, in->formula);
-        pt_sbuf_add(sb, ",\"what\":");
-        pt_sbuf_add_json(sb, in->what);
-        pt_sbuf_add(sb, "}");
+        pt_journey_page_stage(sb, i, in->name, pt_journey_title(ord[i]), in->from, in->to,
+                              in->formula, in->what);
     }
     pt_sbuf_add(sb, "],\n\"models\":[\n");
     for (mi = 0; mi < s->nmodels; mi++) {
@@ -380,9 +402,8 @@ int pt_journey_html(pt_sbuf *sb, const pt_scene *s, const pt_model *m, uint64_t 
         }
         pt_sbuf_add(sb, "]}");
     }
-    pt_sbuf_add(sb, "]}\n</script>\n<script>\n");
-    for (st = 0; script[st]; st++) pt_sbuf_add(sb, script[st]);
-    pt_sbuf_add(sb, "</script>\n");
+    pt_sbuf_add(sb, "]}\n</script>\n");
+    pt_journey_page_script(sb);
     pt_journey_wasm(sb, s);                 /* the sliders (journey_wasm.c) */
     pt_sbuf_add(sb, "</body>\n</html>\n");
     rc = sb->failed ? -1 : 0;

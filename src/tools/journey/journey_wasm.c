@@ -52,15 +52,14 @@ static const char section[] =
 "<table id=\"livetable\"></table>\n"
 "</section>\n";
 
-/* The script, in pieces (C11 promises string literals of 4095 bytes). */
-static const char *const script[] = {
+/* The start of both scripts: the data, and the numbers' forms. */
+static const char prelude[] =
 "<script>\n"
 "(function () {\n"
 "  'use strict';\n"
 "  function $(id) { return document.getElementById(id); }\n"
 "  var D = JSON.parse($('data').textContent), W = JSON.parse($('wasmdata').textContent);\n"
 "  var sec = $('live'), note = $('livenote'), sel = $('vertex'), E = null, moved = false;\n"
-"  var M = W.matrix, C = W.cam;\n"
 "  if ($('foot')) document.body.insertBefore(sec, $('foot'));\n"
 "  function dbl(h) {                       /* 16 hex digits -> the double */\n"
 "    var v = new DataView(new ArrayBuffer(8));\n"
@@ -77,6 +76,49 @@ static const char *const script[] = {
 "    return x !== x ? 'nan' : x === Infinity ? 'inf' : x === -Infinity ? '-inf' :\n"
 "      Object.is(x, -0) ? '-0' : String(x);\n"
 "  }\n"
+"  function vertex() { return D.vertices[Number(sel.value)] || D.vertices[D.start]; }\n"
+"  function slider(n) { return $('s_' + n); }\n"
+"  function sliders(names, moved) {        /* a range input and its output per name */\n"
+"    names.forEach(function (n, k) {\n"
+"      var l = document.createElement('label'), i = document.createElement('input'),\n"
+"          o = document.createElement('output');\n"
+"      i.type = 'range'; i.id = 's_' + n; i.disabled = true;\n"
+"      o.id = 'o_' + n;\n"
+"      l.appendChild(document.createTextNode(n)); l.appendChild(i); l.appendChild(o);\n"
+"      $('sliders').appendChild(l);\n"
+"      i.addEventListener('keydown', function (e) { e.stopPropagation(); });  /* arrows: its own */\n"
+"      i.addEventListener('input', function () { moved(n, k, Number(i.value)); });\n"
+"    });\n"
+"  }\n"
+"  function around(c) {                    /* a real's slider: +-5 in steps of 0.05 */\n"
+"    c = Math.abs(c) < 1e6 ? Math.floor(c) : 0;\n"
+"    return [c - 5, c + 5, 0.05];\n"
+"  }\n"
+"  function put(want, st) {                /* #coords: want, or (null) the scene's */\n"
+"    var c = $('coords');\n"
+"    if (want === null && st >= 0) want = vertex().coords[st];\n"
+"    if (want !== null && want !== undefined && c.textContent !== want) c.textContent = want;\n"
+"  }\n"
+"  function follow(coords) {               /* coords() on each change of #coords */\n"
+"    new MutationObserver(coords).observe($('coords'), {childList: true, characterData: true,\n"
+"                                                       subtree: true});\n"
+"    sel.addEventListener('change', run);\n"
+"  }\n"
+"  function load(names, setup) {           /* the module; then setup(), the sliders, run() */\n"
+"    var b = atob(W.wasm), bytes = new Uint8Array(b.length), k;\n"
+"    for (k = 0; k < b.length; k++) bytes[k] = b.charCodeAt(k);\n"
+"    WebAssembly.instantiate(bytes).then(function (r) {\n"
+"      E = r.instance.exports;\n"
+"      if (!setup()) return;\n"
+"      names.forEach(function (n) { slider(n).disabled = false; });\n"
+"      run();\n"
+"      sec.dataset.ready = '1';\n"
+"    }, function (e) { note.textContent = 'The stages (WebAssembly) did not load: ' + e; });\n"
+"  }\n";
+
+/* The script, in pieces (C11 promises string literals of 4095 bytes). */
+static const char *const script[] = {
+"  var M = W.matrix, C = W.cam;\n"
 "  var T = W.models.map(function (m) { return m.t.map(dbl); });   /* live translations */\n"
 "  var P = {}, names = ['x_t', 'y_t', 'z_t'].concat(M ? ['fov', 'eye_x', 'eye_y', 'eye_z',\n"
 "      'near', 'far'] : [], ['w', 'h', 'x_ul', 'y_ul', 'W', 'H']);\n"
@@ -86,26 +128,11 @@ static const char *const script[] = {
 "             P.eye_x = dbl(C.eye[0]); P.eye_y = dbl(C.eye[1]); P.eye_z = dbl(C.eye[2]); }\n"
 "  }\n"
 "  scene();\n"
-"  function vertex() { return D.vertices[Number(sel.value)] || D.vertices[D.start]; }\n"
-"  function slider(n) { return $('s_' + n); }\n"
-"  names.forEach(function (n, k) {\n"
-"    var l = document.createElement('label'), i = document.createElement('input'),\n"
-"        o = document.createElement('output');\n"
-"    i.type = 'range'; i.id = 's_' + n; i.disabled = true;\n"
-"    o.id = 'o_' + n;\n"
-"    l.appendChild(document.createTextNode(n)); l.appendChild(i); l.appendChild(o);\n"
-"    $('sliders').appendChild(l);\n"
-"    i.addEventListener('keydown', function (e) { e.stopPropagation(); });  /* arrows: its own */\n"
-"    i.addEventListener('input', function () {\n"
-"      if (k < 3) T[vertex().m][k] = Number(i.value); else P[n] = Number(i.value);\n"
-"      moved = true;\n"
-"      run();\n"
-"    });\n"
+"  sliders(names, function (n, k, x) {\n"
+"    if (k < 3) T[vertex().m][k] = x; else P[n] = x;\n"
+"    moved = true;\n"
+"    run();\n"
 "  });\n",
-"  function around(c) {                    /* a real's slider: +-5 in steps of 0.05 */\n"
-"    c = Math.abs(c) < 1e6 ? Math.floor(c) : 0;\n"
-"    return [c - 5, c + 5, 0.05];\n"
-"  }\n"
 "  function ranges() {                     /* the scene's limits: viewport inside, */\n"
 "    var t = T[vertex().m];                /* or as far out as the scene's sticks out */\n"
 "    var out = !M && (W.vp[2] < 0 || W.vp[3] < 0 || W.vp[2] + W.vp[0] > W.fb[0] ||\n"
@@ -205,33 +232,160 @@ static const char *const script[] = {
 "  }\n",
 "  function coords() {                     /* the shown stage's #coords */\n"
 "    if (moved && liveFor !== sel.value) return run();   /* chosen by the URL */\n"
-"    var c = $('coords'), st = W.stages.map(function (s) { return s.name; })\n"
-"                                 .indexOf($('stage').textContent);\n"
-"    var want = moved && live[st] !== undefined ? live[st] : null;\n"
-"    if (want === null && st >= 0) want = vertex().coords[st];\n"
-"    if (want !== null && want !== undefined && c.textContent !== want) c.textContent = want;\n"
+"    var st = W.stages.map(function (s) { return s.name; }).indexOf($('stage').textContent);\n"
+"    put(moved && live[st] !== undefined ? live[st] : null, st);\n"
 "  }\n"
-"  new MutationObserver(coords).observe($('coords'), {childList: true, characterData: true,\n"
-"                                                     subtree: true});\n"
-"  sel.addEventListener('change', run);\n"
+"  follow(coords);\n"
 "  $('reset').addEventListener('click', function () {\n"
 "    T = W.models.map(function (m) { return m.t.map(dbl); });\n"
 "    scene(); moved = false; run();\n"
 "  });\n"
 "  ranges();\n"
-"  var b = atob(W.wasm), bytes = new Uint8Array(b.length), k;\n"
-"  for (k = 0; k < b.length; k++) bytes[k] = b.charCodeAt(k);\n"
-"  WebAssembly.instantiate(bytes).then(function (r) {\n"
-"    E = r.instance.exports;\n"
+"  load(names, function () {\n"
 "    if (M) {                              /* the host's sin and cos, exact (journey_wasm.c) */\n"
 "      var S = W.sincos, F = new Float64Array(E.memory.buffer, E.pt_wasm_table(S.length),\n"
 "                                             3 * S.length);\n"
 "      S.forEach(function (row, j) { F.set(row.map(dbl), 3 * j); });\n"
 "    }\n"
-"    names.forEach(function (n) { slider(n).disabled = false; });\n"
-"    run();\n"
-"    sec.dataset.ready = '1';\n"
-"  }, function (e) { note.textContent = 'The stages (WebAssembly) did not load: ' + e; });\n"
+"    return true;\n"
+"  });\n"
+"})();\n"
+"</script>\n",
+    NULL
+};
+
+/* The course page's script (renderers 7 and 9), after the prelude: sliders
+** for the camera's l, r, b, t and n, the translation (renderer 7) or the
+** view vector (renderer 9), the viewport's size and corner; each move runs
+** the position's model through the module's course stages. */
+static const char *const course_script[] = {
+"  var R = W.renderer, C = W.cam.map(dbl), MV = W.move.map(dbl), P = {};\n"
+"  var mv = R === 9 ? ['view_x', 'view_y', 'view_z'] : ['x_t', 'y_t', 'z_t'];\n"
+"  var O = W.ops || [], os = [];            /* r9: the matrix's operations and their sliders */\n"
+"  O.forEach(function (o, k) { o.sliders.forEach(function (n, a) { os.push([n, k, a]); }); });\n"
+"  var names = ['l', 'r', 'b', 't', 'n'].concat(mv, os.map(function (o) { return o[0]; }),\n"
+"                                               ['w', 'h', 'x_ul', 'y_ul']);\n"
+"  function scene() {\n"
+"    P = {l: C[0], r: C[1], b: C[2], t: C[3], n: C[4], w: W.vp[0], h: W.vp[1],\n"
+"         x_ul: W.vp[2], y_ul: W.vp[3]};\n"
+"    mv.forEach(function (n, k) { P[n] = MV[k]; });\n"
+"    os.forEach(function (o) { P[o[0]] = dbl(O[o[1]].a[o[2]]); });\n"
+"  }\n"
+"  scene();\n"
+"  sliders(names, function (n, k, x) { P[n] = x; moved = true; run(); });\n"
+"  function ranges() {                     /* the viewport inside the framebuffer */\n"
+"    P.w = Math.min(Math.max(P.w, 1), W.fb[0]); P.h = Math.min(Math.max(P.h, 1), W.fb[1]);\n"
+"    P.x_ul = Math.min(Math.max(P.x_ul, 0), W.fb[0] - P.w);\n"
+"    P.y_ul = Math.min(Math.max(P.y_ul, 0), W.fb[1] - P.h);\n"
+"    var lim = {w: [1, W.fb[0], 1], h: [1, W.fb[1], 1], x_ul: [0, W.fb[0] - P.w, 1],\n"
+"               y_ul: [0, W.fb[1] - P.h, 1]};\n"
+"    os.forEach(function (o) { if (O[o[1]].angle) lim[o[0]] = W.angles; });\n"
+"    names.forEach(function (n) {\n"
+"      var v = P[n], r = lim[n] || around(v), i = slider(n);\n"
+"      i.min = String(r[0]); i.max = String(r[1]); i.step = String(r[2]);\n"
+"      if (Number(i.value) !== v) i.value = String(v);\n"
+"      $('o_' + n).textContent = num(v);\n"
+"    });\n"
+"  }\n"
+"  var live = {}, liveFor = null;          /* the rows' texts for vertex liveFor */\n"
+"  function row(name, text, bits) {\n"
+"    var tr = document.createElement('tr'), th = document.createElement('th'),\n"
+"        td = document.createElement('td');\n"
+"    tr.dataset.stage = name; th.textContent = name; td.textContent = text;\n"
+"    td.dataset.values = bits.join(',');\n"
+"    tr.appendChild(th); tr.appendChild(td); $('livetable').appendChild(tr);\n"
+"    live[name] = text;\n"
+"  }\n",
+"  function run() {\n"
+"    var x = vertex(), rc, born = null, F, k;\n"
+"    ranges();\n"
+"    if (!E) return;\n"
+"    $('livetable').textContent = '';\n"
+"    live = {}; liveFor = sel.value;\n"
+"    F = new Float64Array(E.memory.buffer, E.pt_wasm_course_in_at(), W.nin);\n"
+"    F.set([P.l, P.r, P.b, P.t, P.n], W.in.cam);\n"
+"    F.set(mv.map(function (n) { return P[n]; }), W.in.move);\n"
+"    if (O.length) {                       /* the operations, the sliders' arguments in */\n"
+"      F = new Float64Array(E.memory.buffer, E.pt_wasm_course_ops(O.length), W.cop * O.length);\n"
+"      O.forEach(function (o, k) { F.set([o.mul, o.kind].concat(o.a.map(dbl)), W.cop * k); });\n"
+"      os.forEach(function (o) { F[W.cop * o[1] + 2 + o[2]] = P[o[0]]; });\n"
+"    }\n"
+"    rc = E.pt_wasm_course_run(R, W.perspective ? 1 : 0, W.nearclip ? 1 : 0, x.v, P.w, P.h,\n"
+"                              P.x_ul, P.y_ul, O.length ? O.length : -1);\n"
+"    if (rc !== 0) {\n"
+"      note.textContent = rc === -2 ? 'A clip stage made a colour java.awt.Color refuses ' +\n"
+"        '(pipetrace would say so for this scene).' : rc === -3 ? 'No sin and cos for these ' +\n"
+"        'angles in this page (it has them for the sliders\\' steps).' :\n"
+"        'The stages ran out of memory.';\n"
+"      document.body.classList.toggle('live', moved);\n"
+"      return;\n"
+"    }\n"
+"    W.stages.forEach(function (s) {\n"
+"      if (!E.pt_wasm_course_have(s.id)) {\n"
+"        row(s.name, null, ['none', 'none', 'none']);\n"
+"        return;\n"
+"      }\n"
+"      if (born === null) born = s.name;\n"
+"      var v = [0, 1, 2].map(function (k) { return E.pt_wasm_course_at(s.id, k); });\n"
+"      row(s.name, s.coord + ' = (' + v.map(num).join(', ') + ')', v.map(hex));\n"
+"    });\n"
+"    W.stages.forEach(function (s) {       /* before the vertex is made: why not */\n"
+"      if (live[s.name] === null) {\n"
+"        live[s.name] = s.coord + (born === 'nearclip' ? W.notyet[0] : W.notyet[1]);\n"
+"        $('livetable').querySelector('[data-stage=\"' + s.name + '\"] td').textContent =\n"
+"          live[s.name];\n"
+"      }\n"
+"    });\n"
+"    var px = [0, 1, 2, 3].map(function (k) { return String(E.pt_wasm_course_px(k)); });\n"
+"    if (E.pt_wasm_course_px(4)) {\n"
+"      row('viewport', '(x_vp, y_vp) = (' + px[0] + ', ' + px[1] + ')', px.slice(0, 2));\n"
+"      row('framebuffer', '(x_fb, y_fb) = (' + px[2] + ', ' + px[3] + ')', px.slice(2));\n"
+"    } else {\n"
+"      row('viewport', W.notyet[2], ['none', 'none']);\n"
+"      row('framebuffer', '(x_fb, y_fb): none', ['none', 'none']);\n"
+"    }\n"
+"    note.textContent = (moved ? 'Recomputed' : 'Computed') + ' in this page by ' +\n"
+"      'pipetrace\\'s own stage files compiled to WebAssembly, for ' + D.models[x.m].name +\n"
+"      ' v' + x.v + ' with (l, r, b, t) = (' + [P.l, P.r, P.b, P.t].map(num).join(', ') +\n"
+"      '), n = ' + num(P.n) + ', (' + mv.join(', ') + ') = (' +\n"
+"      mv.map(function (n) { return num(P[n]); }).join(', ') + ')' +\n"
+"      os.map(function (o) { return ', ' + o[0] + ' ' + num(P[o[0]]); }).join('') +\n"
+"      ', viewport ' + P.w + ' x ' +\n"
+"      P.h + ' at (x_ul, y_ul) = (' + P.x_ul + ', ' + P.y_ul + ')' + (moved ?\n"
+"      '.  The panel, \"with the numbers\" and \"next\" (dimmed) still show the scene\\'s ' +\n"
+"      'own numbers.' : '.');\n"
+"    document.body.classList.toggle('live', moved);\n"
+"    coords();\n"
+"  }\n",
+"  function coords() {                     /* the shown panel's #coords */\n"
+"    if (moved && liveFor !== sel.value) return run();   /* chosen by the URL */\n"
+"    var name = $('stage').textContent, k, want = null;\n"
+"    var st = D.stages.map(function (s) { return s.name; }).indexOf(name);\n"
+"    var rows = W.show[name] || [];\n"
+"    for (k = 0; moved && k < rows.length && want === null; k++)\n"
+"      if (live[rows[k]] !== undefined && (k === rows.length - 1 ||\n"
+"          E.pt_wasm_course_have(W.ids[rows[k]]))) want = live[rows[k]];\n"
+"    put(want, st);\n"
+"  }\n"
+"  follow(coords);\n"
+"  $('reset').addEventListener('click', function () { scene(); moved = false; run(); });\n"
+"  ranges();\n"
+"  load(names, function () {               /* the model, once: each run copies it */\n"
+"    var at = E.pt_wasm_course_in(W.v.length, W.c.length, W.p.length), F, k;\n"
+"    if (!at) { note.textContent = 'The model is too large for the sliders.'; return false; }\n"
+"    if (W.sincos) {                       /* the host's sin and cos, exact (journey_wasm.c) */\n"
+"      F = new Float64Array(E.memory.buffer, E.pt_wasm_table(W.sincos.length),\n"
+"                           3 * W.sincos.length);\n"
+"      W.sincos.forEach(function (row, j) { F.set(row.map(dbl), 3 * j); });\n"
+"    }\n"
+"    F = new Float64Array(E.memory.buffer, at, W.nin);\n"
+"    F.set(W.m.map(dbl), W.in.matrix);\n"
+"    k = W.in.model;\n"
+"    W.v.forEach(function (v) { F.set(v.map(dbl), k); k += 4; });\n"
+"    W.c.forEach(function (c) { F.set(c.map(dbl), k); k += 3; });\n"
+"    W.p.forEach(function (p) { F.set(p, k); k += 6; });\n"
+"    return true;\n"
+"  });\n"
 "})();\n"
 "</script>\n",
     NULL
@@ -372,5 +526,173 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s)
         pt_sbuf_add(sb, "]}");
     }
     pt_sbuf_add(sb, "]}\n</script>\n");
+    pt_sbuf_add(sb, prelude);
     for (k = 0; script[k]; k++) pt_sbuf_add(sb, script[k]);
+}
+
+/* Renderer 9's rotate sliders: whole degrees from -PT_JOURNEY_ANGLE to
+** PT_JOURNEY_ANGLE; the page holds sin and cos for each (and for the
+** scene's own angles). */
+#define PT_JOURNEY_ANGLE 360
+_Static_assert(2 * PT_JOURNEY_ANGLE + 1 + PT_WASM_NCOPS <= PT_WASM_NSINCOS,
+               "the module's table holds them");
+
+/* Append the row [argument, sin, cos] for a rotate of theta degrees: the
+** argument as stages/r9_matrix.c's rotate computes it, (PI/180.0)*theta
+** (a copy: journey_wasm.sh's angle sliders miss the table if it differs),
+** sin and cos the host's libm's, the very values pipetrace gets. */
+static void add_angle(pt_sbuf *sb, double theta, int first)
+{
+    double a = (3.141592653589793 / 180.0) * theta;      /* Math.PI/180.0 * theta */
+
+    pt_sbuf_add(sb, first ? "[" : ",[");
+    add_bits(sb, a);
+    pt_sbuf_add(sb, ",");
+    add_bits(sb, sin(a));
+    pt_sbuf_add(sb, ",");
+    add_bits(sb, cos(a));
+    pt_sbuf_add(sb, "]");
+}
+
+/* Renderer 9's matrix operations, their sliders (a rotate's angle, a
+** translate's x, y, z) and the sin and cos table for the angles. */
+static void add_ops(pt_sbuf *sb, const pt_jwasm_course *cw)
+{
+    size_t k;
+    int i, n = 0;
+
+    pt_sbuf_addf(sb, ",\n\"cop\":%d,\"angles\":[%d,%d,1],\"ops\":[", PT_WASM_COP,
+                 -PT_JOURNEY_ANGLE, PT_JOURNEY_ANGLE);
+    for (k = 0; k < cw->nops; k++) {
+        const pt_matop *o = &cw->ops[k];
+        pt_sbuf_addf(sb, "%s{\"mul\":%d,\"kind\":%d,\"a\":[", k ? ",\n" : "", (int)o->mul,
+                     (int)o->kind);
+        for (i = 0; i < 16; i++) {
+            if (i) pt_sbuf_add(sb, ",");
+            add_bits(sb, o->a[i]);
+        }
+        pt_sbuf_add(sb, "],\"sliders\":[");
+        if (o->kind == PT_MATOP_ROTATE)
+            pt_sbuf_addf(sb, "\"angle_%lu\"],\"angle\":true}", (unsigned long)k + 1);
+        else if (o->kind == PT_MATOP_TRANSLATE)
+            pt_sbuf_addf(sb, "\"tx_%lu\",\"ty_%lu\",\"tz_%lu\"]}", (unsigned long)k + 1,
+                         (unsigned long)k + 1, (unsigned long)k + 1);
+        else pt_sbuf_add(sb, "]}");
+    }
+    pt_sbuf_add(sb, "],\n\"sincos\":[");
+    for (i = -PT_JOURNEY_ANGLE; i <= PT_JOURNEY_ANGLE; i++) {
+        add_angle(sb, i, n == 0);
+        if (++n % 4 == 0) pt_sbuf_add(sb, "\n");
+    }
+    for (k = 0; k < cw->nops; k++)          /* the scene's own, perhaps between the steps */
+        if (cw->ops[k].kind == PT_MATOP_ROTATE) add_angle(sb, cw->ops[k].a[0], 0);
+    pt_sbuf_add(sb, "]");
+}
+
+/* The course's stages the page's table shows, in order, and which of them
+** each panel's #coords shows (the first that has the vertex). */
+static const struct { const char *name; int id; } course_rows[] = {
+    {"model", PT_CST_MODEL}, {"world", PT_CST_WORLD}, {"view", PT_CST_VIEW},
+    {"camera", PT_CST_CAMERA}, {"nearclip", PT_CST_NEARCLIP}, {"image", PT_CST_IMAGE},
+    {"clip", PT_CST_CLIP}
+};
+_Static_assert((int)PT_WASM_CST_MODEL == (int)PT_CST_MODEL &&
+               (int)PT_WASM_CST_WORLD == (int)PT_CST_WORLD &&
+               (int)PT_WASM_CST_VIEW == (int)PT_CST_VIEW &&
+               (int)PT_WASM_CST_CAMERA == (int)PT_CST_CAMERA &&
+               (int)PT_WASM_CST_NEARCLIP == (int)PT_CST_NEARCLIP &&
+               (int)PT_WASM_CST_IMAGE == (int)PT_CST_IMAGE &&
+               (int)PT_WASM_CST_CLIP == (int)PT_CST_CLIP && (int)PT_NCOURSE == PT_NCST,
+               "the module numbers the course's stages as core/course.h");
+
+static const char course_show[] =
+"\"show\":{\"model\":[\"model\"],\"world\":[\"world\"],\"view\":[\"view\"],"
+"\"volume\":[\"view\"],\"camera\":[\"camera\"],\"nearclip\":[\"nearclip\"],"
+"\"image\":[\"image\",\"clip\"],\"viewport\":[\"viewport\"]}";
+
+void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jwasm_course *cw)
+{
+    const pt_cx_journey *j = cw->j;
+    const pt_rv_model *m = cw->m;
+    size_t k, i;
+    int c;
+
+    pt_sbuf_add(sb, style);
+    if (!pt_journey_wasm_b64[0]) { pt_sbuf_add(sb, without); return; }
+    if (!m || m->nv > PT_JOURNEY_WASM_MAXV || m->np > PT_JOURNEY_WASM_MAXV ||
+        m->nc > PT_JOURNEY_WASM_MAXV) {
+        pt_sbuf_add(sb, "<section id=\"live\" data-wasm=\"yes\"><h2>recompute</h2>\n"
+                    "<p id=\"livenote\">No sliders for this position: its model is hidden or "
+                    "larger than the page runs.</p>\n</section>\n");
+        return;
+    }
+    pt_sbuf_add(sb, section);
+    pt_sbuf_add(sb, "<script type=\"application/json\" id=\"wasmdata\">\n{\"wasm\":\"");
+    for (k = 0; pt_journey_wasm_b64[k]; k++) pt_sbuf_add(sb, pt_journey_wasm_b64[k]);
+    pt_sbuf_addf(sb, "\",\n\"renderer\":%d,\"perspective\":%s,\"nearclip\":%s,"
+                 "\"vp\":[%d,%d,%d,%d],\"fb\":[%d,%d],\"cam\":[", s->renderer,
+                 j->cam.cam.perspective ? "true" : "false", s->nearclip ? "true" : "false",
+                 s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h);
+    add_bits(sb, j->cam.cam.l); pt_sbuf_add(sb, ",");
+    add_bits(sb, j->cam.cam.r); pt_sbuf_add(sb, ",");
+    add_bits(sb, j->cam.cam.b); pt_sbuf_add(sb, ",");
+    add_bits(sb, j->cam.cam.t); pt_sbuf_add(sb, ",");
+    add_bits(sb, j->cam.cam.n);
+    pt_sbuf_add(sb, "],\"move\":");
+    add_vec(sb, s->renderer == 9 ? j->cam.cam.view : j->translate);
+    pt_sbuf_add(sb, ",\"m\":[");
+    for (c = 0; c < 16; c++) {              /* r9: the position's matrix, column by column */
+        pt_vec4 col = j->matrix.col[c / 4];
+        double x = c % 4 == 0 ? col.x : c % 4 == 1 ? col.y : c % 4 == 2 ? col.z : col.w;
+        if (c) pt_sbuf_add(sb, ",");
+        add_bits(sb, x);
+    }
+    pt_sbuf_add(sb, "]");
+    if (s->renderer == 9 && cw->nops <= PT_WASM_NCOPS) add_ops(sb, cw);
+    pt_sbuf_addf(sb, ",\n\"in\":{\"cam\":%d,\"move\":%d,\"matrix\":%d,\"model\":%d},"
+                 "\"nin\":%llu,\n\"notyet\":[", PT_WASM_CIN_L, PT_WASM_CIN_MOVE,
+                 PT_WASM_CIN_MATRIX, PT_WASM_CIN_MODEL,
+                 (unsigned long long)(PT_WASM_CIN_MODEL + 4 * m->nv + 3 * m->nc + 6 * m->np));
+    for (c = 0; c < 3; c++) {
+        if (c) pt_sbuf_add(sb, ",");
+        pt_sbuf_add_json(sb, cw->text[c]);
+    }
+    pt_sbuf_add(sb, "],\n");
+    pt_sbuf_add(sb, course_show);
+    pt_sbuf_add(sb, ",\n\"stages\":[");
+    for (i = c = 0; i < sizeof course_rows / sizeof course_rows[0]; i++) {
+        if (course_rows[i].id == PT_CST_WORLD && s->renderer != 9) continue;
+        pt_sbuf_addf(sb, "%s{\"name\":\"%s\",\"id\":%d,\"coord\":", c++ ? "," : "",
+                     course_rows[i].name, course_rows[i].id);
+        pt_sbuf_add_json(sb, cw->label[course_rows[i].id]);
+        pt_sbuf_add(sb, "}");
+    }
+    pt_sbuf_add(sb, "],\"ids\":{");
+    for (i = 0; i < sizeof course_rows / sizeof course_rows[0]; i++)
+        pt_sbuf_addf(sb, "%s\"%s\":%d", i ? "," : "", course_rows[i].name, course_rows[i].id);
+    pt_sbuf_add(sb, "},\n\"v\":[");
+    for (k = 0; k < m->nv; k++) {
+        pt_sbuf_add(sb, k ? (k % 4 ? ",[" : ",\n[") : "[");
+        add_bits(sb, m->v[k].x); pt_sbuf_add(sb, ",");
+        add_bits(sb, m->v[k].y); pt_sbuf_add(sb, ",");
+        add_bits(sb, m->v[k].z); pt_sbuf_add(sb, ",");
+        add_bits(sb, m->v[k].w); pt_sbuf_add(sb, "]");
+    }
+    pt_sbuf_add(sb, "],\n\"c\":[");
+    for (k = 0; k < m->nc; k++) {           /* each float, exact as a double */
+        pt_sbuf_add(sb, k ? (k % 4 ? ",[" : ",\n[") : "[");
+        add_bits(sb, (double)m->c[k].r); pt_sbuf_add(sb, ",");
+        add_bits(sb, (double)m->c[k].g); pt_sbuf_add(sb, ",");
+        add_bits(sb, (double)m->c[k].b); pt_sbuf_add(sb, "]");
+    }
+    pt_sbuf_add(sb, "],\n\"p\":[");
+    for (k = 0; k < m->np; k++) {
+        const pt_rv_prim *p = &m->p[k];
+        pt_sbuf_addf(sb, "%s[%d,%lu,%lu,%lu,%lu,%d]", k ? (k % 8 ? "," : ",\n") : "",
+                     p->kind == PT_RV_POINT, (unsigned long)p->v[0], (unsigned long)p->v[1],
+                     (unsigned long)p->c[0], (unsigned long)p->c[1], p->radius);
+    }
+    pt_sbuf_add(sb, "]}\n</script>\n");
+    pt_sbuf_add(sb, prelude);
+    for (k = 0; course_script[k]; k++) pt_sbuf_add(sb, course_script[k]);
 }

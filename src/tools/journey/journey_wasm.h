@@ -33,6 +33,7 @@
 
 #include "io/sbuf.h"
 #include "core/pipetrace.h"
+#include "io/explain_course.h"
 
 /* $B/stages.wasm as base64, one line an element, ended by NULL; only the
 ** NULL when pipetrace was built without clang and wasm-ld (or WASM=no).
@@ -45,5 +46,28 @@ extern const char *const pt_journey_wasm_b64[];
 ** that says so.  The script finds the page's #data, #vertex, #stage and
 ** #coords (journey_html.c).  On allocation failure sb->failed is set. */
 void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s);
+
+/* The recompute section of a course scene's page (renderers 7 and 9,
+** journey_course.c): sliders l, r, b, t, n (#s_l ... #s_n), the
+** translation #s_x_t ... #s_z_t (renderer 7) or the view vector #s_view_x
+** ... #s_view_z and, for the K-th operation of the position's matrix, a
+** rotate's angle #s_angle_K or a translate's #s_tx_K, #s_ty_K, #s_tz_K
+** (renderer 9), the viewport #s_w, #s_h, #s_x_ul, #s_y_ul;
+** #livetable's rows model, [world,] view, camera, nearclip, image, clip
+** (reals as IEEE bits, "none" before the vertex is made), viewport and
+** framebuffer (integers, "none" outside the view square).  The module
+** runs the position's whole model through the course's stages, so a
+** vertex a clip makes is followed as well.  On allocation failure
+** sb->failed is set. */
+typedef struct pt_jwasm_course {
+    const pt_cx_journey *j;      /* the camera, translation, matrix (any vertex's) */
+    const pt_rv_model *m;        /* the position's model as the driver built it */
+    const char *label[PT_NCST];  /* each stage's coordinates, "(x_c, y_c, z_c)" */
+    const char *text[3];         /* the labels' "not yet" (near clip, clip) and
+                                 ** the viewport's "none" texts */
+    const pt_matop *ops;         /* renderer 9: the position's matrix operations */
+    size_t nops;
+} pt_jwasm_course;
+void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jwasm_course *c);
 
 #endif
