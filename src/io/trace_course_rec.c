@@ -542,9 +542,9 @@ static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *pos,
     emit(w, &r);
 }
 
-/* One pixel record: (x_vp, y_vp) in the viewport, colour c, coverage f. */
-static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp, pt_rgb c,
-                      float f)
+/* One pixel record: (x_vp, y_vp) in the viewport, the bytes b written, coverage f. */
+static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp,
+                      const unsigned char b[3], float f)
 {
     rec r;
 
@@ -552,15 +552,15 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
     r.v = w->raster_no + 1;
     r.x_fb = (int64_t)par->x_ul + x_vp;
     r.y_fb = (int64_t)par->y_ul + y_vp;
-    r.rgb[0] = pt_color_byte(c.r);
-    r.rgb[1] = pt_color_byte(c.g);
-    r.rgb[2] = pt_color_byte(c.b);
+    memcpy(r.rgb, b, sizeof r.rgb);
     r.coverage = f;
     emit(w, &r);
 }
 
 /* The rasterizer's pixel lines as pixel records: an anti-aliased step is
-** two pixels, weighted 1 - f and f, f the fraction of the stepped y. */
+** two pixels, weighted 1 - f and f, f the fraction of the stepped y.  The
+** records say the bytes written (b[]), so the rasterizer needs no gamma in
+** float: the listener says bytes_only. */
 static void on_pixel(void *ud, const pt_rv_pixel *px)
 {
     walker *w = ud;
@@ -569,20 +569,20 @@ static void on_pixel(void *ud, const pt_rv_pixel *px)
     switch (px->kind) {
     case PT_RV_PX_STEP:
     case PT_RV_PX_END:
-        pixel_rec(w, par, px->x_vp, px->y_vp, px->c[0], 1.0f);
+        pixel_rec(w, par, px->x_vp, px->y_vp, px->b[0], 1.0f);
         break;
     case PT_RV_PX_POINT:
-        if (!px->clipped) pixel_rec(w, par, px->x_vp, px->y_vp, px->c[0], 1.0f);
+        if (!px->clipped) pixel_rec(w, par, px->x_vp, px->y_vp, px->b[0], 1.0f);
         break;
     case PT_RV_PX_AA: {
         double y = px->transposed ? px->x_pp : px->y_pp;
         float f = (float)(y - (double)(int64_t)y);
         if (px->transposed) {
-            pixel_rec(w, par, px->lo, px->y_vp, px->c[0], 1.0f - f);
-            pixel_rec(w, par, px->hi, px->y_vp, px->c[1], f);
+            pixel_rec(w, par, px->lo, px->y_vp, px->b[0], 1.0f - f);
+            pixel_rec(w, par, px->hi, px->y_vp, px->b[1], f);
         } else {
-            pixel_rec(w, par, px->x_vp, px->lo, px->c[0], 1.0f - f);
-            pixel_rec(w, par, px->x_vp, px->hi, px->c[1], f);
+            pixel_rec(w, par, px->x_vp, px->lo, px->b[0], 1.0f - f);
+            pixel_rec(w, par, px->x_vp, px->hi, px->b[1], f);
         }
         break;
     }
@@ -703,6 +703,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int expl
     memset(&rls, 0, sizeof rls);
     rls.pixel = on_pixel;
     rls.ud = &w;
+    rls.bytes_only = 1;
     memset(&ls, 0, sizeof ls);
     ls.stage = on_stage;
     ls.drawn = on_drawn;
