@@ -148,7 +148,7 @@ static unsigned char out_byte(const draw *d, float c)
 /* Colour c of a loop step or a point as written: *g the colour the listener
 ** hears (gamma-encoded when on, unless it reads bytes alone: then c) and b
 ** its bytes, byte(gamma(c)), by table when the floats are not wanted. */
-static inline void written(const draw *d, pt_rgb c, pt_rgb *g, unsigned char b[3])
+static void written(const draw *d, pt_rgb c, pt_rgb *g, unsigned char b[3])
 {
     if (d->bytes) {
         *g = c;
