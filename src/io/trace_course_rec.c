@@ -175,32 +175,38 @@ static const char *edge_name(pt_rv_edge e)
 
 /* ===== the three formatters ===== */
 
-/* Make w->names say r's model and position as format fmt writes them, unless
-** it does.  0 when out of memory (then the record is not written). */
-static int names(walker *w, const rec *r)
+/* Make w->names say r's model and position as format fmt writes them. */
+static void names_make(walker *w, const rec *r)
 {
     pt_sbuf *nb = &w->names;
 
-    if (!nb->s || r->model != w->names_model || r->position != w->names_position) {
-        nb->len = 0;
-        if (w->fmt == PT_FORMAT_JSONL) {
-            pt_sbuf_add(nb, ",\"model\":");
-            pt_sbuf_add_json(nb, r->model);
-            pt_sbuf_add(nb, ",\"position\":");
-            pt_sbuf_add_json(nb, r->position);
-        } else if (w->fmt == PT_FORMAT_CSV) {
-            pt_sbuf_add_csv(nb, r->model);
-            pt_sbuf_add(nb, ",");
-            pt_sbuf_add_csv(nb, r->position);
-            pt_sbuf_add(nb, ",");
-        } else {
-            pt_sbuf_add_term(nb, r->model, strlen(r->model));
-        }
-        w->names_model = r->model;
-        w->names_position = r->position;
+    nb->len = 0;
+    if (w->fmt == PT_FORMAT_JSONL) {
+        pt_sbuf_add(nb, ",\"model\":");
+        pt_sbuf_add_json(nb, r->model);
+        pt_sbuf_add(nb, ",\"position\":");
+        pt_sbuf_add_json(nb, r->position);
+    } else if (w->fmt == PT_FORMAT_CSV) {
+        pt_sbuf_add_csv(nb, r->model);
+        pt_sbuf_add(nb, ",");
+        pt_sbuf_add_csv(nb, r->position);
+        pt_sbuf_add(nb, ",");
+    } else {
+        pt_sbuf_add_term(nb, r->model, strlen(r->model));
     }
-    if (nb->failed) w->failed = 1;
-    return !nb->failed;
+    w->names_model = r->model;
+    w->names_position = r->position;
+}
+
+/* Make w->names say r's model and position, unless it does (inlined where
+** a record is written: most records name the one before's).  0 when out of
+** memory (then the record is not written). */
+static inline int names(walker *w, const rec *r)
+{
+    if (!w->names.s || r->model != w->names_model || r->position != w->names_position)
+        names_make(w, r);
+    if (w->names.failed) w->failed = 1;
+    return !w->names.failed;
 }
 
 /* The record's names, then room for the rest of it: where that goes. */
