@@ -140,9 +140,20 @@ static inline unsigned char lut_byte(const pt_rv_gamma_lut *lut, float c);
 
 /* The byte of component c as written: gamma-encoded when on (through the
 ** table when there is one), as java.awt.Color(float) keeps it. */
-static unsigned char out_byte(const draw *d, float c)
+static inline unsigned char out_byte(const draw *d, float c)
 {
     return d->par->gamma ? lut_byte(d->par->lut, c) : pt_color_byte(c);
+}
+
+/* The bytes b of colour c as written (out_byte of each component), a
+** component equal to the one before taking its byte: a grey (white, the
+** blend of white with black) looks the table up once.  (-0 == +0: both
+** give byte 0; NaN equals nothing.) */
+static inline void out_bytes(const draw *d, float r, float g, float bl, unsigned char b[3])
+{
+    b[0] = out_byte(d, r);
+    b[1] = g == r ? b[0] : out_byte(d, g);
+    b[2] = bl == g ? b[1] : out_byte(d, bl);
 }
 
 /* Colour c of a loop step or a point as written: *g the colour the listener
@@ -152,9 +163,7 @@ static void written(const draw *d, pt_rgb c, pt_rgb *g, unsigned char b[3])
 {
     if (d->bytes) {
         *g = c;
-        b[0] = out_byte(d, c.r);
-        b[1] = out_byte(d, c.g);
-        b[2] = out_byte(d, c.b);
+        out_bytes(d, c.r, c.g, c.b, b);
         return;
     }
     *g = d->par->gamma ? gamma3(c) : c;
@@ -257,13 +266,10 @@ static void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c)
 {
     aa_pair a;
     unsigned char lo[3], hi[3];
-    int k;
 
     aa_blend(d, x, y, tr, c, &a);
-    for (k = 0; k < 3; k++) {
-        lo[k] = out_byte(d, a.lo[k]);
-        hi[k] = out_byte(d, a.hi[k]);
-    }
+    out_bytes(d, a.lo[0], a.lo[1], a.lo[2], lo);
+    out_bytes(d, a.hi[0], a.hi[1], a.hi[2], hi);
     put_bytes(d, a.x_vp[0], a.y_vp[0], lo);
     put_bytes(d, a.x_vp[1], a.y_vp[1], hi);
 }
@@ -311,11 +317,7 @@ static void step_plain_quiet(draw *d, int x, double y, int tr, pt_rgb c)
     int x_vp, y_vp;
 
     plain_pixel(d, x, y, tr, &x_vp, &y_vp);
-    if (!d->flat) {
-        b[0] = out_byte(d, c.r);
-        b[1] = out_byte(d, c.g);
-        b[2] = out_byte(d, c.b);
-    }
+    if (!d->flat) out_bytes(d, c.r, c.g, c.b, b);
     put_bytes(d, x_vp, y_vp, d->flat ? d->flat_b : b);
 }
 
