@@ -544,7 +544,7 @@ static int pixel_head(walker *w)
     char b[64], *e;
     rec r;
 
-    rec_init(&r, R_VERTEX, w->pos);
+    rec_init(&r, R_VERTEX, w->pos);          /* for its names (the kind plays no part) */
     if (!names(w, &r)) return 0;
     p->len = 0;
     if (w->fmt == PT_FORMAT_JSONL) {
