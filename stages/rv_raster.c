@@ -19,8 +19,11 @@ typedef struct draw {
     unsigned char *rgb;
     const pt_rv_raster_ls *ls;
     uint64_t n;                  /* pixels written */
-    int quiet;                   /* 1: nobody listens (ls NULL): the quiet
-                                 ** steps write bytes, with par->lut */
+    int quiet;                   /* 1: nobody hears the pixels (ls or its
+                                 ** pixel NULL): the quiet steps write
+                                 ** bytes, with par->lut */
+    int bytes;                   /* 1: quiet, or the listener reads bytes
+                                 ** alone (bytes_only): no float gamma */
     unsigned char *vp0;          /* the viewport's pixel (0, 0) in rgb, */
     unsigned vw, vh;             /*   and its size when it lies inside the
                                  ** framebuffer (else 0 0): a pixel inside it
@@ -68,7 +71,8 @@ static void start(draw *d, const pt_rv_raster_par *par, unsigned char *rgb,
     d->par = par;
     d->rgb = rgb;
     d->ls = ls;
-    d->quiet = ls == NULL;
+    d->quiet = ls == NULL || ls->pixel == NULL;
+    d->bytes = d->quiet || ls->bytes_only;
     if (par->x_ul >= 0 && par->y_ul >= 0 && par->w >= 0 && par->h >= 0 &&
         (int64_t)par->x_ul + par->w <= par->W && (int64_t)par->y_ul + par->h <= par->H) {
         d->vp0 = rgb + 3 * ((size_t)par->y_ul * (size_t)par->W + (size_t)par->x_ul);
@@ -109,16 +113,6 @@ static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
     d->n++;
 }
 
-static void put(draw *d, int x_vp, int y_vp, pt_rgb c)
-{
-    unsigned char b[3];
-
-    b[0] = pt_color_byte(c.r);                      /* new Color(r, g, b) */
-    b[1] = pt_color_byte(c.g);
-    b[2] = pt_color_byte(c.b);
-    put_bytes(d, x_vp, y_vp, b);
-}
-
 static void tell(const draw *d, pt_rv_pixel *px)
 {
     px->par = d->par;
@@ -132,6 +126,48 @@ static pt_rgb gamma3(pt_rgb c)
     g.g = pt_gamma(c.g);
     g.b = pt_gamma(c.b);
     return g;
+}
+
+/* c as new Color(r, g, b) keeps it: byte(c) of each component. */
+static void bytes3(pt_rgb c, unsigned char b[3])
+{
+    b[0] = pt_color_byte(c.r);
+    b[1] = pt_color_byte(c.g);
+    b[2] = pt_color_byte(c.b);
+}
+
+static inline unsigned char lut_byte(const pt_rv_gamma_lut *lut, float c);
+
+/* The byte of component c as written: gamma-encoded when on (through the
+** table when there is one), as java.awt.Color(float) keeps it. */
+static inline unsigned char out_byte(const draw *d, float c)
+{
+    return d->par->gamma ? lut_byte(d->par->lut, c) : pt_color_byte(c);
+}
+
+/* The bytes b of colour c as written (out_byte of each component), a
+** component equal to the one before taking its byte: a grey (white, the
+** blend of white with black) looks the table up once.  (-0 == +0: both
+** give byte 0; NaN equals nothing.) */
+static inline void out_bytes(const draw *d, float r, float g, float bl, unsigned char b[3])
+{
+    b[0] = out_byte(d, r);
+    b[1] = g == r ? b[0] : out_byte(d, g);
+    b[2] = bl == g ? b[1] : out_byte(d, bl);
+}
+
+/* Colour c of a loop step or a point as written: *g the colour the listener
+** hears (gamma-encoded when on, unless it reads bytes alone: then c) and b
+** its bytes, byte(gamma(c)), by table when the floats are not wanted. */
+static void written(const draw *d, pt_rgb c, pt_rgb *g, unsigned char b[3])
+{
+    if (d->bytes) {
+        *g = c;
+        out_bytes(d, c.r, c.g, c.b, b);
+        return;
+    }
+    *g = d->par->gamma ? gamma3(c) : c;
+    bytes3(*g, b);
 }
 
 /* The pixel-plane map of v: renderer 4's pixel stage, 0.5 + w/2.001 * (x + 1)
@@ -153,17 +189,9 @@ static void end_pixel(draw *d, double x_pp, double y_pp, pt_rgb c)
     px.x_vp = wrap32((int64_t)jint(x_pp) - 1);     /* (int)x - 1 */
     px.y_vp = wrap32((int64_t)d->par->h - jint(y_pp));  /* h - (int)y */
     px.c[0] = c;
+    bytes3(c, px.b[0]);
     tell(d, &px);
-    put(d, px.x_vp, px.y_vp, c);
-}
-
-static inline unsigned char lut_byte(const pt_rv_gamma_lut *lut, float c);
-
-/* The byte of component c as written: gamma-encoded when on (through the
-** table when there is one), as java.awt.Color(float) keeps it. */
-static unsigned char out_byte(const draw *d, float c)
-{
-    return d->par->gamma ? lut_byte(d->par->lut, c) : pt_color_byte(c);
+    put_bytes(d, px.x_vp, px.y_vp, px.b[0]);
 }
 
 /* One AA step's pair of pixels: y between rows (int)y and (int)y + 1 (in
@@ -206,14 +234,13 @@ static void step_aa(draw *d, int x, double y, int tr, pt_rgb c)
 {
     aa_pair a;
     pt_rv_pixel px = {0};
+    pt_rgb lo, hi;
 
     aa_blend(d, x, y, tr, c, &a);
-    px.c[0].r = a.lo[0]; px.c[0].g = a.lo[1]; px.c[0].b = a.lo[2];
-    px.c[1].r = a.hi[0]; px.c[1].g = a.hi[1]; px.c[1].b = a.hi[2];
-    if (d->par->gamma) {
-        px.c[0] = gamma3(px.c[0]);
-        px.c[1] = gamma3(px.c[1]);
-    }
+    lo.r = a.lo[0]; lo.g = a.lo[1]; lo.b = a.lo[2];
+    hi.r = a.hi[0]; hi.g = a.hi[1]; hi.b = a.hi[2];
+    written(d, lo, &px.c[0], px.b[0]);
+    written(d, hi, &px.c[1], px.b[1]);
     px.kind = PT_RV_PX_AA;
     px.transposed = tr;
     if (!tr) {
@@ -230,8 +257,8 @@ static void step_aa(draw *d, int x, double y, int tr, pt_rgb c)
         px.hi = a.x_vp[1];
     }
     tell(d, &px);
-    put(d, a.x_vp[0], a.y_vp[0], px.c[0]);
-    put(d, a.x_vp[1], a.y_vp[1], px.c[1]);
+    put_bytes(d, a.x_vp[0], a.y_vp[0], px.b[0]);
+    put_bytes(d, a.x_vp[1], a.y_vp[1], px.b[1]);
 }
 
 /* One loop step with AA when nobody listens: the same bytes, gamma by table. */
@@ -239,13 +266,10 @@ static void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c)
 {
     aa_pair a;
     unsigned char lo[3], hi[3];
-    int k;
 
     aa_blend(d, x, y, tr, c, &a);
-    for (k = 0; k < 3; k++) {
-        lo[k] = out_byte(d, a.lo[k]);
-        hi[k] = out_byte(d, a.hi[k]);
-    }
+    out_bytes(d, a.lo[0], a.lo[1], a.lo[2], lo);
+    out_bytes(d, a.hi[0], a.hi[1], a.hi[2], hi);
     put_bytes(d, a.x_vp[0], a.y_vp[0], lo);
     put_bytes(d, a.x_vp[1], a.y_vp[1], hi);
 }
@@ -273,13 +297,17 @@ static void step_plain(draw *d, int x, double y, int tr, pt_rgb c)
 
     px.kind = PT_RV_PX_STEP;
     px.transposed = tr;
-    px.c[0] = d->flat ? d->flat_g : d->par->gamma ? gamma3(c) : c;
+    if (d->flat) {
+        px.c[0] = d->flat_g;
+        memcpy(px.b[0], d->flat_b, 3);
+    } else {
+        written(d, c, &px.c[0], px.b[0]);
+    }
     px.x_pp = tr ? y : (double)x;
     px.y_pp = tr ? (double)x : y;
     plain_pixel(d, x, y, tr, &px.x_vp, &px.y_vp);
     tell(d, &px);
-    if (d->flat) put_bytes(d, px.x_vp, px.y_vp, d->flat_b);
-    else put(d, px.x_vp, px.y_vp, px.c[0]);
+    put_bytes(d, px.x_vp, px.y_vp, px.b[0]);
 }
 
 /* One loop step without AA when nobody listens: the same bytes. */
@@ -289,11 +317,7 @@ static void step_plain_quiet(draw *d, int x, double y, int tr, pt_rgb c)
     int x_vp, y_vp;
 
     plain_pixel(d, x, y, tr, &x_vp, &y_vp);
-    if (!d->flat) {
-        b[0] = out_byte(d, c.r);
-        b[1] = out_byte(d, c.g);
-        b[2] = out_byte(d, c.b);
-    }
+    if (!d->flat) out_bytes(d, c.r, c.g, c.b, b);
     put_bytes(d, x_vp, y_vp, d->flat ? d->flat_b : b);
 }
 
@@ -346,16 +370,7 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
         d->flat_c.r = pt_color_at(c0.r, 0.0, x0, x0);
         d->flat_c.g = pt_color_at(c0.g, 0.0, x0, x0);
         d->flat_c.b = pt_color_at(c0.b, 0.0, x0, x0);
-        if (d->quiet) {                             /* the bytes alone */
-            d->flat_b[0] = out_byte(d, d->flat_c.r);
-            d->flat_b[1] = out_byte(d, d->flat_c.g);
-            d->flat_b[2] = out_byte(d, d->flat_c.b);
-        } else {
-            d->flat_g = par->gamma ? gamma3(d->flat_c) : d->flat_c;
-            d->flat_b[0] = pt_color_byte(d->flat_g.r);
-            d->flat_b[1] = pt_color_byte(d->flat_g.g);
-            d->flat_b[2] = pt_color_byte(d->flat_g.b);
-        }
+        written(d, d->flat_c, &d->flat_g, d->flat_b);
     }
     for (x = jint(x0); x < xe; x++, y += s.m) {     /* y accumulated: y += m */
         if (d->flat) {
@@ -390,7 +405,6 @@ static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     int64_t xs, ys, xlo, xhi, ylo, yhi;
     pt_rv_pixel px = {0};
 
-    if (par->gamma) c = gamma3(c);
     if (d->ls && d->ls->point) d->ls->point(d->ls->ud, x, y);
     x = (double)jround(x);
     y = (double)jround(y);
@@ -403,7 +417,7 @@ static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     px.kind = PT_RV_PX_POINT;
     px.x_pp = x;
     px.y_pp = y;
-    px.c[0] = c;
+    written(d, c, &px.c[0], px.b[0]);
     if (!(d->ls && d->ls->pixel && d->ls->clipped_points)) {
         /* nobody hears the clipped pixels: only rows 1..h and columns 1..w
         ** are written, so the loops run over those alone (a radius of
@@ -419,7 +433,7 @@ static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
             px.x_vp = wrap32(xs - 1);               /* x_ - 1 */
             px.y_vp = wrap32((int64_t)par->h - ys); /* h - y_ */
             tell(d, &px);
-            if (!px.clipped) put(d, px.x_vp, px.y_vp, c);
+            if (!px.clipped) put_bytes(d, px.x_vp, px.y_vp, px.b[0]);
         }
 }
 

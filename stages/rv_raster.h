@@ -61,8 +61,9 @@ typedef struct pt_rv_raster_par {
     int W, H;                    /* the framebuffer's size */
     unsigned char bg[3];         /* the viewport's background (AA blends with it) */
     int antialias, gamma;        /* Rasterize.doAntiAliasing, doGamma */
-    const pt_rv_gamma_lut *lut;  /* NULL, or a table for the pixels nobody
-                                 ** listens to (pt_rv_gamma_lut_init) */
+    const pt_rv_gamma_lut *lut;  /* NULL, or a table for the bytes of the
+                                 ** pixels whose gamma-encoded floats nobody
+                                 ** reads (pt_rv_gamma_lut_init) */
 } pt_rv_raster_par;
 
 /* The forms of the course's pixel log lines. */
@@ -79,7 +80,9 @@ typedef enum pt_rv_px_kind {
 ** centre (not the pixel).  STEP, END, POINT: the pixel (x_vp, y_vp).  AA not
 ** transposed: column x_vp, rows lo = h - y_low, hi = h - y_hi; transposed:
 ** row y_vp, columns lo = y_low - 1, hi = y_hi - 1.  c[0] the colour written
-** (gamma-encoded where gamma applies), c[1] AA's second pixel's. */
+** (gamma-encoded where gamma applies; before gamma when the listener says
+** bytes_only), c[1] AA's second pixel's; b[0] and b[1] their bytes as
+** written: byte(gamma(c)), or byte(c) without gamma and at the last pixel. */
 typedef struct pt_rv_pixel {
     pt_rv_px_kind kind;
     int transposed;              /* STEP, AA: the segment is transposed */
@@ -87,6 +90,7 @@ typedef struct pt_rv_pixel {
     int x_vp, y_vp;
     int lo, hi;                  /* AA: the pair's varying coordinates */
     pt_rgb c[2];
+    unsigned char b[2][3];       /* the bytes written: c[0]'s, c[1]'s */
     int clipped;                 /* POINT: outside the viewport (not written) */
     const pt_rv_raster_par *par; /* the viewport and framebuffer (the log's prefix) */
 } pt_rv_pixel;
@@ -119,6 +123,10 @@ struct pt_rv_raster_ls {
                                  ** (the log prints them); 0: only the written
                                  ** ones, and a point's loops are cut to the
                                  ** viewport (the same pixels, in the same order) */
+    int bytes_only;              /* 1: pixel reads a pixel's bytes b[], not its
+                                 ** gamma-encoded floats: c[] is the colour
+                                 ** before gamma and the bytes come from
+                                 ** par->lut (no pow a component) */
 };
 typedef struct pt_rv_raster_ls pt_rv_raster_ls;
 

@@ -306,8 +306,8 @@ int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
     int rc;
 
     start(&r, s, fb, ls);
-    if (s->gamma && (!ls || !ls->raster_ls)) {  /* nobody hears the pixels: */
-        pt_rv_gamma_lut_init(&lut);              /*   gamma's bytes by table */
+    if (s->gamma) {                              /* gamma's bytes by table where */
+        pt_rv_gamma_lut_init(&lut);              /*   nobody reads its floats */
         r.par.lut = &lut;
     }
     clear_fb(s, fb, &r.par, ls);

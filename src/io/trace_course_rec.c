@@ -8,7 +8,10 @@
 ** formatters spell a record: JSON Lines, text, CSV.  docs/trace-format.md
 ** lists the fields.  They write as renderer 4's writers do (io/trace_int.h):
 ** into the trace's 256 KiB block, a record's numbers in place, JSON's and
-** CSV's doubles through the block's kept spellings.
+** CSV's doubles through the block's kept spellings.  A pixel record, the
+** most of them, is written straight from the rasterizer's pixel line: the
+** opening its primitive's records share, made once a primitive and copied,
+** then its numbers (pixel_rec).
 */
 #include <math.h>
 #include <stdio.h>
@@ -24,7 +27,7 @@
 static const char *const stage_names[PT_NCST] = {
     "model", "world", "view", "camera", "nearclip", "image", "clip"};
 
-typedef enum rkind { R_VERTEX, R_PRIM, R_WARN, R_PIXEL } rkind;
+typedef enum rkind { R_VERTEX, R_PRIM, R_WARN } rkind;
 
 /* One record. */
 typedef struct rec {
@@ -43,9 +46,6 @@ typedef struct rec {
     const pt_rv_prim *prim;      /* prim: the primitive (0-based indices) */
     uint64_t pixels;             /* prim: pixels written */
     const char *warning;         /* warn: what the course warns of */
-    int64_t x_fb, y_fb;          /* pixel: the framebuffer pixel written, */
-    unsigned char rgb[3];        /*   the colour written there, */
-    float coverage;              /*   the share of it the primitive covers */
     const char *explain;         /* vertex, --explain: its formula with its numbers */
 } rec;
 
@@ -70,6 +70,12 @@ typedef struct walker {
                                  ** position has it): JSON ,"model":M,"position":P;
                                  ** text M made safe for a terminal; CSV M,P, */
     const char *names_model, *names_position;
+    pt_sbuf pix;                 /* how the pixel records of the primitive being
+                                 ** drawn begin: JSON up to "x":, text up to
+                                 ** "x_fb = " (pixel_head), */
+    int pix_made;                /*   made for it (0: at its first pixel) */
+    char pix_fixed[96];          /*   and, when it fits, copied here for a
+                                 ** copy of a fixed size */
     int explain;                 /* --explain: each vertex record's formula */
     pt_course_cam cam;           /*   the camera, */
     struct prev { pt_vec4 *v; size_t n; } *prev;  /* each position's vertices
@@ -169,32 +175,38 @@ static const char *edge_name(pt_rv_edge e)
 
 /* ===== the three formatters ===== */
 
-/* Make w->names say r's model and position as format fmt writes them, unless
-** it does.  0 when out of memory (then the record is not written). */
-static int names(walker *w, const rec *r)
+/* Make w->names say r's model and position as format fmt writes them. */
+static void names_make(walker *w, const rec *r)
 {
     pt_sbuf *nb = &w->names;
 
-    if (!nb->s || r->model != w->names_model || r->position != w->names_position) {
-        nb->len = 0;
-        if (w->fmt == PT_FORMAT_JSONL) {
-            pt_sbuf_add(nb, ",\"model\":");
-            pt_sbuf_add_json(nb, r->model);
-            pt_sbuf_add(nb, ",\"position\":");
-            pt_sbuf_add_json(nb, r->position);
-        } else if (w->fmt == PT_FORMAT_CSV) {
-            pt_sbuf_add_csv(nb, r->model);
-            pt_sbuf_add(nb, ",");
-            pt_sbuf_add_csv(nb, r->position);
-            pt_sbuf_add(nb, ",");
-        } else {
-            pt_sbuf_add_term(nb, r->model, strlen(r->model));
-        }
-        w->names_model = r->model;
-        w->names_position = r->position;
+    nb->len = 0;
+    if (w->fmt == PT_FORMAT_JSONL) {
+        pt_sbuf_add(nb, ",\"model\":");
+        pt_sbuf_add_json(nb, r->model);
+        pt_sbuf_add(nb, ",\"position\":");
+        pt_sbuf_add_json(nb, r->position);
+    } else if (w->fmt == PT_FORMAT_CSV) {
+        pt_sbuf_add_csv(nb, r->model);
+        pt_sbuf_add(nb, ",");
+        pt_sbuf_add_csv(nb, r->position);
+        pt_sbuf_add(nb, ",");
+    } else {
+        pt_sbuf_add_term(nb, r->model, strlen(r->model));
     }
-    if (nb->failed) w->failed = 1;
-    return !nb->failed;
+    w->names_model = r->model;
+    w->names_position = r->position;
+}
+
+/* Make w->names say r's model and position, unless it does (inlined where
+** a record is written: most records name the one before's).  0 when out of
+** memory (then the record is not written). */
+static inline int names(walker *w, const rec *r)
+{
+    if (!w->names.s || r->model != w->names_model || r->position != w->names_position)
+        names_make(w, r);
+    if (w->names.failed) w->failed = 1;
+    return !w->names.failed;
 }
 
 /* The record's names, then room for the rest of it: where that goes. */
@@ -237,18 +249,6 @@ static void fmt_json(walker *w, const rec *r)
     pt_trace *t = w->t;
     char *o;
 
-    if (r->kind == R_PIXEL) {
-        o = opening(w, LIT("{\"type\":\"pixel\""));
-        o = u64_at(t, str_at(o, ",\"primitive\":"), r->v);
-        o = int_at(t, str_at(o, ",\"x\":"), r->x_fb, 0);
-        o = int_at(t, str_at(o, ",\"y\":"), r->y_fb, 0);
-        o = u64_at(t, str_at(o, ",\"rgb\":["), r->rgb[0]);
-        o = u64_at(t, str_at(o, ","), r->rgb[1]);
-        o = u64_at(t, str_at(o, ","), r->rgb[2]);
-        o = json_num_at(t, str_at(o, "],\"coverage\":"), (double)r->coverage);
-        done(w, str_at(o, "}\n"));
-        return;
-    }
     if (r->kind == R_WARN) {
         o = opening(w, LIT("{\"type\":\"warning\""));
         o = str_at(str_at(o, ",\"warning\":\""), r->warning);
@@ -310,17 +310,6 @@ static void fmt_text(walker *w, const rec *r)
     pt_trace *t = w->t;
     char *o = opening(w, "", 0);
 
-    if (r->kind == R_PIXEL) {
-        o = str_at(who_at(t, o, " p", r->v), " pixel        x_fb = ");
-        o = int_at(t, o, r->x_fb, 0);
-        o = int_at(t, str_at(o, "  y_fb = "), r->y_fb, 0);
-        o = u64_at(t, str_at(o, "  rgb = "), r->rgb[0]);
-        o = u64_at(t, str_at(o, " "), r->rgb[1]);
-        o = u64_at(t, str_at(o, " "), r->rgb[2]);
-        o = fixed_at(w, str_at(o, "  coverage "), (double)r->coverage, KEPT_COVERAGE, 4);
-        done(w, str_at(o, "\n"));
-        return;
-    }
     if (r->kind == R_WARN) {
         o = str_at(str_at(o, " warning: "), r->warning);
         done(w, str_at(o, "\n"));
@@ -542,25 +531,80 @@ static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *pos,
     emit(w, &r);
 }
 
-/* One pixel record: (x_vp, y_vp) in the viewport, colour c, coverage f. */
-static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp, pt_rgb c,
-                      float f)
+/* The most a pixel record writes after its opening: two integers of 20
+** bytes, three of 3, a coverage of PT_NUMLEN + 2 (JSON) or "%.4f" of a float
+** (text: 45), the keys. */
+#define PIXEL_REST 160
+
+/* Make w->pix the opening of the pixel records of the primitive being drawn
+** (w->pos, number w->raster_no + 1).  0 when out of memory. */
+static int pixel_head(walker *w)
 {
+    pt_sbuf *p = &w->pix;
+    char b[64], *e;
     rec r;
 
-    rec_init(&r, R_PIXEL, w->pos);
-    r.v = w->raster_no + 1;
-    r.x_fb = (int64_t)par->x_ul + x_vp;
-    r.y_fb = (int64_t)par->y_ul + y_vp;
-    r.rgb[0] = pt_color_byte(c.r);
-    r.rgb[1] = pt_color_byte(c.g);
-    r.rgb[2] = pt_color_byte(c.b);
-    r.coverage = f;
-    emit(w, &r);
+    rec_init(&r, R_VERTEX, w->pos);          /* for its names (the kind plays no part) */
+    if (!names(w, &r)) return 0;
+    p->len = 0;
+    if (w->fmt == PT_FORMAT_JSONL) {
+        pt_sbuf_add(p, "{\"type\":\"pixel\"");
+        pt_sbuf_addn(p, w->names.s, w->names.len);
+        e = u64_at(w->t, str_at(b, ",\"primitive\":"), w->raster_no + 1);
+        e = str_at(e, ",\"x\":");
+    } else {
+        pt_sbuf_addn(p, w->names.s, w->names.len);
+        e = str_at(who_at(w->t, b, " p", w->raster_no + 1), " pixel        x_fb = ");
+    }
+    pt_sbuf_addn(p, b, (size_t)(e - b));
+    if (p->failed) { w->failed = 1; return 0; }
+    if (p->len <= sizeof w->pix_fixed) memcpy(w->pix_fixed, p->s, p->len);
+    w->pix_made = 1;
+    return 1;
+}
+
+/* One pixel record: (x_vp, y_vp) in the viewport, the bytes b written,
+** coverage f: its opening (one copy of a fixed size, or the long one), then
+** its numbers. */
+static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp,
+                      const unsigned char b[3], float f)
+{
+    pt_trace *t = w->t;
+    int64_t x_fb = (int64_t)par->x_ul + x_vp, y_fb = (int64_t)par->y_ul + y_vp;
+    char *o;
+
+    if (w->failed || (!w->pix_made && !pixel_head(w))) return;
+    if (w->pix.len <= sizeof w->pix_fixed) {
+        o = room(t, sizeof w->pix_fixed + PIXEL_REST);
+        memcpy(o, w->pix_fixed, sizeof w->pix_fixed);
+        o += w->pix.len;
+    } else {
+        put(t, w->pix.s, w->pix.len);
+        o = room(t, PIXEL_REST);
+    }
+    if (w->fmt == PT_FORMAT_JSONL) {
+        o = int_at(t, o, x_fb, 0);
+        o = int_at(t, str_at(o, ",\"y\":"), y_fb, 0);
+        o = u64_at(t, str_at(o, ",\"rgb\":["), b[0]);
+        o = u64_at(t, str_at(o, ","), b[1]);
+        o = u64_at(t, str_at(o, ","), b[2]);
+        o = json_num_at(t, str_at(o, "],\"coverage\":"), (double)f);
+        done(w, str_at(o, "}\n"));
+        return;
+    }
+    o = int_at(t, o, x_fb, 0);
+    o = int_at(t, str_at(o, "  y_fb = "), y_fb, 0);
+    o = u64_at(t, str_at(o, "  rgb = "), b[0]);
+    o = u64_at(t, str_at(o, " "), b[1]);
+    o = u64_at(t, str_at(o, " "), b[2]);
+    o = fixed_at(w, str_at(o, "  coverage "), (double)f, KEPT_COVERAGE, 4);
+    done(w, str_at(o, "\n"));
 }
 
 /* The rasterizer's pixel lines as pixel records: an anti-aliased step is
-** two pixels, weighted 1 - f and f, f the fraction of the stepped y. */
+** two pixels, weighted 1 - f and f, f the fraction of the stepped y.  The
+** records say the bytes written (b[]), so the rasterizer needs no gamma in
+** float: the listener says bytes_only. */
 static void on_pixel(void *ud, const pt_rv_pixel *px)
 {
     walker *w = ud;
@@ -569,20 +613,20 @@ static void on_pixel(void *ud, const pt_rv_pixel *px)
     switch (px->kind) {
     case PT_RV_PX_STEP:
     case PT_RV_PX_END:
-        pixel_rec(w, par, px->x_vp, px->y_vp, px->c[0], 1.0f);
+        pixel_rec(w, par, px->x_vp, px->y_vp, px->b[0], 1.0f);
         break;
     case PT_RV_PX_POINT:
-        if (!px->clipped) pixel_rec(w, par, px->x_vp, px->y_vp, px->c[0], 1.0f);
+        if (!px->clipped) pixel_rec(w, par, px->x_vp, px->y_vp, px->b[0], 1.0f);
         break;
     case PT_RV_PX_AA: {
         double y = px->transposed ? px->x_pp : px->y_pp;
         float f = (float)(y - (double)(int64_t)y);
         if (px->transposed) {
-            pixel_rec(w, par, px->lo, px->y_vp, px->c[0], 1.0f - f);
-            pixel_rec(w, par, px->hi, px->y_vp, px->c[1], f);
+            pixel_rec(w, par, px->lo, px->y_vp, px->b[0], 1.0f - f);
+            pixel_rec(w, par, px->hi, px->y_vp, px->b[1], f);
         } else {
-            pixel_rec(w, par, px->x_vp, px->lo, px->c[0], 1.0f - f);
-            pixel_rec(w, par, px->x_vp, px->hi, px->c[1], f);
+            pixel_rec(w, par, px->x_vp, px->lo, px->b[0], 1.0f - f);
+            pixel_rec(w, par, px->x_vp, px->hi, px->b[1], f);
         }
         break;
     }
@@ -595,6 +639,7 @@ static void on_raster(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
     walker *w = ud;
     (void)m; (void)p;
     w->pos = pos;
+    w->pix_made = 0;                          /* its pixels: a new opening */
 }
 
 static void on_drawn(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
@@ -700,9 +745,11 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int expl
     w.w4 = s->renderer == 9;
     pt_sbuf_init(&w.sb);
     pt_sbuf_init(&w.names);
+    pt_sbuf_init(&w.pix);
     memset(&rls, 0, sizeof rls);
     rls.pixel = on_pixel;
     rls.ud = &w;
+    rls.bytes_only = 1;
     memset(&ls, 0, sizeof ls);
     ls.stage = on_stage;
     ls.drawn = on_drawn;
@@ -730,6 +777,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int expl
     free(w.t);
     pt_sbuf_free(&w.sb);
     pt_sbuf_free(&w.names);
+    pt_sbuf_free(&w.pix);
     free(w.org);
     if (w.prev) {
         size_t k;

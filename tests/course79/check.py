@@ -223,4 +223,34 @@ check("c79-7.1 600 vertices and colours: text spells the numbers of each JSON Li
 check("c79-7.2 600 vertices and colours: CSV spells them as JSON Lines does",
       rc3 == 0 and len(cl) == len(jl) and not bad_c, "; ".join(bad_c[:3]))
 
+# c79-8: a model whose name makes the opening of its pixel records longer
+# than the writer keeps for one copy of a fixed size (trace_course_rec.c,
+# pixel_rec): its records are those of the same scene with a short name
+src = open(os.path.join(here, "r9-basic-two-models.scene")).read()
+longname = "L" * 150
+sc8 = os.path.join(tmp, "long.scene")
+with open(sc8, "w") as f:
+    f.write(re.sub(r"(?m)^model a$", "model " + longname, src))
+for fmt in ("jsonl", "text"):
+    rc, short, _ = run(os.path.join(here, "r9-basic-two-models.scene"), "--format", fmt)
+    rc2, long_, _ = run(sc8, "--format", fmt)
+    if fmt == "jsonl":
+        try:
+            a8 = [json.loads(x) for x in short.decode().splitlines()[1:]]
+            b8 = [json.loads(x) for x in long_.decode().splitlines()[1:]]
+        except ValueError as e:
+            a8, b8 = [], [str(e)]
+        for r in [x for x in b8 if isinstance(x, dict)]:
+            for k in ("model", "position"):
+                if r.get(k) == longname:
+                    r[k] = "a"
+    else:
+        a8 = [x for x in short.decode().splitlines() if not x.startswith("scene ")]
+        b8 = ["a" + x[len(longname):] if x.startswith(longname) else x
+              for x in long_.decode().splitlines() if not x.startswith("scene ")]
+    npix = sum(1 for x in a8 if "pixel" in str(x))
+    check("c79-8.1 %s: a model's name of 150 bytes: the same %d records, %d of them pixels"
+          % (fmt, len(a8), npix), rc == rc2 == 0 and npix > 100 and a8 == b8,
+          str([(x, y) for x, y in zip(a8, b8) if x != y][:1]))
+
 finish()

@@ -8,7 +8,10 @@
 ** it; the image must equal the course's byte for byte and the lines
 ** rv_log_raster writes must equal the log's rasterizer lines; drawn again
 ** with nobody listening (the quiet steps, gamma's bytes by table) the image
-** must be the same.  Usage:
+** must be the same, and drawn for a listener that reads bytes alone
+** (bytes_only: the traces' pixel records) the image, the pixel lines and
+** their bytes must be those a listener of floats hears, the bytes the
+** formula's.  Usage:
 ** test_rv_raster [DIR] (default tests/data/course-raster).
 */
 #include <stdio.h>
@@ -72,14 +75,26 @@ static int same_text(const char *name, const char *a, size_t na, const char *b, 
     return 0;
 }
 
-/* A listener that counts: the writes its pixel lines announce, the bad ones. */
+/* A listener that counts: the writes its pixel lines announce, the bad ones;
+** with keep, it keeps the pixel lines too (px, n of them). */
 typedef struct tally {
     uint64_t said, bad, ret;     /* ret: what pt_rv_raster_prim() returned, summed */
+    int keep, bytes_only;        /* keep the lines; the listener reads bytes alone */
+    pt_rv_pixel *px;
+    size_t n, cap;
+    int failed;                  /* out of memory keeping them */
 } tally;
 
 static void count_pixel(void *ud, const pt_rv_pixel *px)
 {
     tally *t = ud;
+    if (t->keep && t->n == t->cap) {
+        size_t cap = t->cap ? 2 * t->cap : 256;
+        pt_rv_pixel *n = realloc(t->px, cap * sizeof *n);
+        if (!n) t->failed = 1;
+        else { t->px = n; t->cap = cap; }
+    }
+    if (t->keep && t->n < t->cap) t->px[t->n++] = *px;
     switch (px->kind) {
     case PT_RV_PX_STEP:
     case PT_RV_PX_END:   t->said += 1; break;
@@ -105,6 +120,53 @@ static void set_ls(pt_rv_raster_ls *ls, FILE *lg, tally *t, int debug)
     ls->bad = count_bad;
     ls->ud = t;
     ls->clipped_points = 1;
+    ls->bytes_only = t && t->bytes_only;
+}
+
+/* Whether the bytes of a pixel line's colour k are the formula's: byte(c)
+** of its colour c, or byte(gamma(c)) when enc (c is before gamma). */
+static int formula_bytes(const pt_rv_pixel *px, int k, int enc)
+{
+    const pt_rgb *c = &px->c[k];
+    float r = enc ? pt_gamma(c->r) : c->r, g = enc ? pt_gamma(c->g) : c->g,
+          b = enc ? pt_gamma(c->b) : c->b;
+
+    return px->b[k][0] == pt_color_byte(r) && px->b[k][1] == pt_color_byte(g) &&
+           px->b[k][2] == pt_color_byte(b);
+}
+
+/* The same float's bits (NaN included). */
+static int same_float(float a, float b)
+{
+    return memcmp(&a, &b, sizeof a) == 0;
+}
+
+/* The pixel lines of a listener that reads floats (f) and of one that reads
+** bytes alone (b), of the same draw: the same pixels; f's bytes are its
+** floats' (byte(c)), b's colours are f's before gamma (gamma(b's) = f's,
+** to the bit) and its bytes the formula's, byte(gamma(c)).  The number of
+** lines that differ. */
+static size_t bytes_only_diff(const tally *f, const tally *b, int gamma)
+{
+    size_t i, bad = 0;
+    int k;
+
+    if (f->n != b->n) return f->n + b->n + 1;
+    for (i = 0; i < f->n; i++) {
+        const pt_rv_pixel *p = &f->px[i], *q = &b->px[i];
+        int two = p->kind == PT_RV_PX_AA ? 2 : 1, ok = p->kind == q->kind &&
+                 p->x_vp == q->x_vp && p->y_vp == q->y_vp && p->lo == q->lo && p->hi == q->hi;
+        for (k = 0; k < two && ok; k++) {
+            int enc = gamma && p->kind != PT_RV_PX_END;
+            ok = formula_bytes(p, k, 0) && formula_bytes(q, k, enc) &&
+                 memcmp(p->b[k], q->b[k], 3) == 0 &&
+                 same_float(p->c[k].r, enc ? pt_gamma(q->c[k].r) : q->c[k].r) &&
+                 same_float(p->c[k].g, enc ? pt_gamma(q->c[k].g) : q->c[k].g) &&
+                 same_float(p->c[k].b, enc ? pt_gamma(q->c[k].b) : q->c[k].b);
+        }
+        bad += !ok;
+    }
+    return bad;
 }
 
 static pt_rv_gamma_lut lut;      /* for the draws nobody listens to */
@@ -124,7 +186,7 @@ static int draw_case(FILE *f, tcase *tc, unsigned char *rgb, FILE *lg, tally *t,
     int pending = 0;
 
     set_ls(&ls, lg, t, tc->debug);
-    tc->par.lut = lg || t ? NULL : &lut;
+    tc->par.lut = lg || (t && !t->bytes_only) ? NULL : &lut;
     memset(&m, 0, sizeof m);
     m.v = v; m.c = c; m.p = p;
     for (;;) {
@@ -193,8 +255,8 @@ static void run_case(const char *dir, const char *name)
     char path[1024], head[320];
     size_t nppm = 0, nlog = 0, ngot = 0;
     char *ppm, *want, *got;
-    unsigned char *rgb = NULL, *again = NULL, *quiet = NULL;
-    tally t1, t2;
+    unsigned char *rgb = NULL, *again = NULL, *quiet = NULL, *fl = NULL, *by = NULL;
+    tally t1, t2, tf, tb;
     tcase tc;
     FILE *f, *lg;
     int W = 0, H = 0, hl = 0, nbad = 0, ok;
@@ -218,14 +280,23 @@ static void run_case(const char *dir, const char *name)
     }
     memset(&t1, 0, sizeof t1);
     memset(&t2, 0, sizeof t2);
+    memset(&tf, 0, sizeof tf);
+    memset(&tb, 0, sizeof tb);
+    tf.keep = tb.keep = tb.bytes_only = 1;
     rgb = calloc((size_t)W * H, 3);
     again = calloc((size_t)W * H, 3);
     quiet = calloc((size_t)W * H, 3);
-    ok = rgb && again && quiet && draw_case(f, &tc, rgb, lg, &t1, &nbad) == 0;
+    fl = calloc((size_t)W * H, 3);
+    by = calloc((size_t)W * H, 3);
+    ok = rgb && again && quiet && fl && by && draw_case(f, &tc, rgb, lg, &t1, &nbad) == 0;
     rewind(f);
     ok = ok && draw_case(f, &tc, again, NULL, &t2, &nbad) == 0;
     rewind(f);
     ok = ok && draw_case(f, &tc, quiet, NULL, NULL, &nbad) == 0;
+    rewind(f);
+    ok = ok && draw_case(f, &tc, fl, NULL, &tf, &nbad) == 0;
+    rewind(f);
+    ok = ok && draw_case(f, &tc, by, NULL, &tb, &nbad) == 0 && !tf.failed && !tb.failed;
     snprintf(head, sizeof head, "%s: parsed", name);
     PT_CHECK(head, ok && tc.par.W == W && tc.par.H == H);
     if (!ok) goto done;
@@ -237,6 +308,11 @@ static void run_case(const char *dir, const char *name)
     PT_CHECK(head, memcmp(rgb, again, (size_t)W * H * 3) == 0 && t1.ret == t2.ret);
     snprintf(head, sizeof head, "%s: the same image with nobody listening", name);
     PT_CHECK(head, memcmp(rgb, quiet, (size_t)W * H * 3) == 0);
+    snprintf(head, sizeof head, "%s: the same image heard in bytes alone", name);
+    PT_CHECK(head, memcmp(rgb, fl, (size_t)W * H * 3) == 0 &&
+                   memcmp(rgb, by, (size_t)W * H * 3) == 0 && tf.ret == tb.ret);
+    snprintf(head, sizeof head, "%s: bytes alone: the formula's bytes", name);
+    PT_CHECK(head, tb.n > 0 && bytes_only_diff(&tf, &tb, tc.par.gamma) == 0);
     snprintf(head, sizeof head, "%s: pixels written = pixels logged - bad ones", name);
     PT_CHECK(head, t2.ret == t2.said - t2.bad && t2.said > 0);
     PT_CHECK("log written", pt_trace_finish(log_block) == 0);
@@ -253,6 +329,10 @@ done:
     free(rgb);
     free(again);
     free(quiet);
+    free(fl);
+    free(by);
+    free(tf.px);
+    free(tb.px);
     free(ppm);
     free(want);
 }
