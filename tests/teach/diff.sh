@@ -565,12 +565,16 @@ check "diff-15.4 (the first clipped step of the reference is x_vp -4)" grep -qF 
 if mistaken s4_trunc; then
     "$tmp/sb/pipetrace" "$tmp/left.scene" --format jsonl --stage pixel --stage raster --trace "$tmp/left-got.jsonl"
     rast diff-15.5 "$tmp/left-want.jsonl" "$tmp/left-got.jsonl" "truncation toward zero instead of Java's Math.round"
-    # where no step reaches below -0.5 the two light the same pixels: the
-    # usual form is named, and the other said to fit as well
+    # where no step reaches below -0.5 the two light the same pixels: both
+    # are said, neither named (naming floor(x + 0.5) would blame this
+    # student for a mistake not made)
     "$tmp/sb/pipetrace" $data/floor.scene --format jsonl --trace "$tmp/floor-got.jsonl"
-    rast diff-15.6 "$tmp/floor-want.jsonl" "$tmp/floor-got.jsonl" "floor(x + 0.5) instead of Java's Math.round"
-    check "diff-15.6a ... with truncation said to light the same pixels there" \
-        grep -qF "So does truncation toward zero instead of Java's Math.round: the two light other pixels only at steps left of or below the viewport, which this trace does not tell apart." "$tmp/flat"
+    "$exe" diff --verdict "$tmp/floor-want.jsonl" "$tmp/floor-got.jsonl" >"$tmp/out" 2>&1; rc=$?; summary
+    check "diff-15.6 where no step tells truncation from floor(x + 0.5): ambiguous (exit $rc)" \
+        sh -c 'test "$1" = 1 && grep -qF "ambiguous: floor(x + 0.5) instead of Java'"'"'s Math.round or truncation toward zero instead of Java'"'"'s Math.round" "$2"' _ "$rc" "$tmp/flat"
+    check "diff-15.6a ... the two said to differ only left of or below the viewport" \
+        grep -qF "floor(x + 0.5) instead of Java's Math.round and truncation toward zero instead of Java's Math.round light other pixels only at steps left of or below the viewport, which this trace does not tell apart." "$tmp/flat"
+    check "diff-15.6b ... and no likely mistake named alone" test "$(grep -c '^ *likely mistake' "$tmp/out")" = 0
 else
     check "diff-15.5 the s4_trunc student build" false
 fi

@@ -631,12 +631,8 @@ size_t pt_diff_raster_named(const rstat *rs, size_t named[PT_NRASTER_MISTAKES])
 {
     size_t k, n = 0;
 
-    for (k = 0; k < PT_NRASTER_MISTAKES; k++) {
-        int t = pt_raster_mistakes[k].twin - 1;
-        if (!rs->segs_differ || rs->hits[k] != rs->segs_differ) continue;
-        if (t >= 0 && rs->hits[t] == rs->segs_differ && !rs->apart[k]) continue;
-        named[n++] = k;
-    }
+    for (k = 0; k < PT_NRASTER_MISTAKES; k++)
+        if (rs->segs_differ && rs->hits[k] == rs->segs_differ) named[n++] = k;
     return n;
 }
 
@@ -673,6 +669,12 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
         for (k = 0; k < n; k++)
             pt_diff_add(&sb, "%s%s", k ? " or " : "", pt_raster_mistakes[named[k]].name);
         pt_diff_add(&sb, ": each reproduces ACTUAL's pixels in every segment that differs.");
+        for (k = 0; k < n; k++)
+            for (j = 0; j < n; j++)
+                if (pt_raster_mistakes[named[k]].twin - 1 == (int)named[j] && !rs->apart[named[k]])
+                    pt_diff_add(&sb, " %s and %s light other pixels only at steps left of or "
+                                "below the viewport, which this trace does not tell apart.",
+                                pt_raster_mistakes[named[j]].name, pt_raster_mistakes[named[k]].name);
         pt_diff_para("  ", sb.b);
         return;
     }
@@ -686,10 +688,5 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
     if (rs->segs_differ > 1)
         pt_diff_add(&sb, "; so it does for all %zu segments that differ", rs->segs_differ);
     pt_diff_add(&sb, ".");
-    for (j = 0; j < PT_NRASTER_MISTAKES; j++)
-        if (pt_raster_mistakes[j].twin - 1 == (int)k && rs->hits[j] == rs->segs_differ)
-            pt_diff_add(&sb, " So does %s: the two light other pixels only at steps left of or "
-                        "below the viewport, which this trace does not tell apart.",
-                        pt_raster_mistakes[j].name);
     pt_diff_para("    ", sb.b);
 }
