@@ -53,13 +53,16 @@ mistake diff-1.5 $data/ties.scene jsonl "C round() instead of Java's Math.round"
 # a text EXPECTED prints -2.500000: still a tie, so floor(x + 0.5) is not named
 mistake diff-1.6 $data/ties.scene text "C round() instead of Java's Math.round"
 mistaken s4_floor
-mistake diff-1.7 $data/floor.scene jsonl "floor(x + 0.5) instead of Java's Math.round" ""
+# (on a segment that starts left of the viewport: its first clipped step,
+# x_pp = -3, tells floor(x + 0.5) from truncation, which lights the same
+# pixels; tests/data/diff/floor.scene cannot, diff-15.6)
+mistake diff-1.7 tests/data/students/left.scene jsonl "floor(x + 0.5) instead of Java's Math.round" ""
 # ... and in a viewport off the framebuffer's corner, h != H: diff takes
 # EXPECTED's pixels back to logical pixels to replay the DDA (dpixels.c,
 # vp_to_pp: the viewport and framebuffer stages backwards), and names the
 # mistake only when the replay gives EXPECTED's own pixels
-sed 's/^framebuffer 16 4$/framebuffer 23 9\nviewport 4 3 16 4/' $data/floor.scene > "$tmp/floor-vp.scene"
-check "diff-1.7a (the scene has its viewport at 4,3)" grep -q '^viewport 4 3 16 4$' "$tmp/floor-vp.scene"
+sed 's/^framebuffer 12 4$/framebuffer 19 9\nviewport 4 3 12 4/' tests/data/students/left.scene > "$tmp/floor-vp.scene"
+check "diff-1.7a (the scene has its viewport at 4,3)" grep -q '^viewport 4 3 12 4$' "$tmp/floor-vp.scene"
 mistake diff-1.7b "$tmp/floor-vp.scene" jsonl "floor(x + 0.5) instead of Java's Math.round" ""
 mistaken s4_noflip
 mistake diff-1.8 $data/offset.scene jsonl "missing y flip"

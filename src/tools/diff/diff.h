@@ -125,6 +125,10 @@ typedef struct rstat {
     size_t hits[PT_NRASTER_MISTAKES];   /* ... that each rasterizer mistake reproduces */
     size_t apart[PT_NRASTER_MISTAKES];  /* ... where a mistake with a twin lights
                                  ** other pixels or clip records than its twin */
+    size_t breaks[PT_NRASTER_MISTAKES]; /* segments both traces light alike (and
+                                 ** clip alike) that each mistake, replayed,
+                                 ** would light or clip otherwise; counted
+                                 ** when every vertex agrees */
     int first_set;               /* 1: first_* below are set */
     uint32_t first_model;        /* the first differing segment */
     uint64_t first_seg;
@@ -261,7 +265,8 @@ int pt_diff_compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2
 int pt_diff_check_raster(dctx *c, rstat *rs);
 
 /* The rasterizer's mistakes that reproduce every differing segment of rs,
-** into named[] (indexes into pt_raster_mistakes), their number returned.  A
+** into named[] (indexes into pt_raster_mistakes), their number returned,
+** but those that would change a segment the traces agree on.  A
 ** mistake and its twin that the trace never told apart (rs->apart 0) are
 ** both named: more than one is "ambiguous", never the usual one alone for a
 ** student who made the other.  This function can't fail. */
