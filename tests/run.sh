@@ -76,6 +76,7 @@ teach            1 sh tests/teach/teach.sh $B/pipetrace
 teach79          2 sh tests/teach/teach79.sh $B/pipetrace
 classroom        6 sh tests/teach/classroom.sh $B/pipetrace
 class           14 sh tests/teach/class.sh $B/pipetrace
+students         8 sh tests/class/students.sh $B/pipetrace
 quiz79           2 sh tests/teach/quiz79.sh $B/pipetrace
 term             1 sh tests/cli/term.sh $B/pipetrace
 accuracy         8 sh tests/cli/accuracy.sh $B/pipetrace

@@ -28,15 +28,15 @@ static double c_round(double x) { return round(x); }            /* ties away fro
 static double floor_half(double x) { return floor(x + 0.5); }   /* the sum rounds */
 static double trunc_half(double x) { return trunc(x + 0.5); }   /* (int64_t)(x + 0.5) */
 
-/* The viewport stage with rounding rnd (NULL: Java's Math.round), x_vp =
-** round(x_pp) + dx and y_vp = sy * round(y_pp) + oy (the right formula: dx =
-** -1, sy = -1, oy = h).  No value where pt_pix_round() finds none, per value
-** (pt_pix_mark(), as the stage). */
-static void viewport_with(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy,
-                          const pt_cat_val *in, pt_cat_val *out)
+/* The viewport stage with rounding rndx of x_pp and rndy of y_pp (NULL:
+** Java's Math.round), x_vp = round(x_pp) + dx and y_vp = sy * round(y_pp) +
+** oy (the right formula: dx = -1, sy = -1, oy = h).  No value where
+** pt_pix_round() finds none, per value (pt_pix_mark(), as the stage). */
+static void viewport_xy(rnd_fn rndx, rnd_fn rndy, int64_t dx, int64_t sy, int64_t oy,
+                        const pt_cat_val *in, pt_cat_val *out)
 {
     int64_t rx, ry;
-    double x = rnd ? rnd(in->d[0]) : in->d[0], y = rnd ? rnd(in->d[1]) : in->d[1];
+    double x = rndx ? rndx(in->d[0]) : in->d[0], y = rndy ? rndy(in->d[1]) : in->d[1];
     int has = pt_pix_round(x, &rx) | pt_pix_round(y, &ry) << 1;
     pt_pix p = {rx + dx, sy * ry + oy, 0};
 
@@ -44,6 +44,13 @@ static void viewport_with(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy,
     out->flags = pt_pix_flags(p);
     out->n[0] = pt_pix_has(p, 0) ? p.x : 0;
     out->n[1] = pt_pix_has(p, 1) ? p.y : 0;
+}
+
+/* The viewport stage with one rounding rnd for both values (viewport_xy). */
+static void viewport_with(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy,
+                          const pt_cat_val *in, pt_cat_val *out)
+{
+    viewport_xy(rnd, rnd, dx, sy, oy, in, out);
 }
 
 /* The framebuffer stage with corner (x_ul, y_ul): each value that has one is
@@ -246,9 +253,11 @@ const pt_mistake pt_mistakes[PT_NMISTAKES] = {
 
 /* ===== the rasterizer's mistakes ===== */
 
-/* The viewport stage's formula with rounding rnd and x_vp = round(x_pp) + dx,
-** y_vp = sy * round(y_pp) + oy (viewport_with), as a pt_raster_vp. */
-static pt_pix viewport_mapping(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy, pt_vec2 pp)
+/* The viewport stage's formula with roundings rndx, rndy and x_vp =
+** round(x_pp) + dx, y_vp = sy * round(y_pp) + oy (viewport_xy), as a
+** pt_raster_vp. */
+static pt_pix viewport_mapping(rnd_fn rndx, rnd_fn rndy, int64_t dx, int64_t sy, int64_t oy,
+                               pt_vec2 pp)
 {
     pt_cat_val in, out;
     pt_pix vp;
@@ -256,7 +265,7 @@ static pt_pix viewport_mapping(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy, p
     memset(&in, 0, sizeof in);
     in.d[0] = pp.x;
     in.d[1] = pp.y;
-    viewport_with(rnd, dx, sy, oy, &in, &out);
+    viewport_xy(rndx, rndy, dx, sy, oy, &in, &out);
     vp.x = out.n[0];
     vp.y = out.n[1];
     vp.ok = 0;
@@ -266,31 +275,46 @@ static pt_pix viewport_mapping(rnd_fn rnd, int64_t dx, int64_t sy, int64_t oy, p
 pt_pix pt_cat_vp_floor(pt_vec2 pp, int w, int h, const pt_sink *sink)
 {
     (void)w; (void)sink;
-    return viewport_mapping(floor_half, -1, -1, h, pp);
+    return viewport_mapping(floor_half, floor_half, -1, -1, h, pp);
 }
 
 pt_pix pt_cat_vp_cround(pt_vec2 pp, int w, int h, const pt_sink *sink)
 {
     (void)w; (void)sink;
-    return viewport_mapping(c_round, -1, -1, h, pp);
+    return viewport_mapping(c_round, c_round, -1, -1, h, pp);
 }
 
 pt_pix pt_cat_vp_trunc(pt_vec2 pp, int w, int h, const pt_sink *sink)
 {
     (void)w; (void)sink;
-    return viewport_mapping(trunc_half, -1, -1, h, pp);
+    return viewport_mapping(trunc_half, trunc_half, -1, -1, h, pp);
+}
+
+/* Truncation of the coordinate the DDA accumulates only: y of an x-major
+** segment, x of a y-major one.  The course's Java rasterizer rounds that
+** one alone, its step being an int: (int)(y + 0.5) there. */
+pt_pix pt_cat_vp_trunc_y(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    (void)w; (void)sink;
+    return viewport_mapping(NULL, trunc_half, -1, -1, h, pp);
+}
+
+pt_pix pt_cat_vp_trunc_x(pt_vec2 pp, int w, int h, const pt_sink *sink)
+{
+    (void)w; (void)sink;
+    return viewport_mapping(trunc_half, NULL, -1, -1, h, pp);
 }
 
 pt_pix pt_cat_vp_nominus1(pt_vec2 pp, int w, int h, const pt_sink *sink)
 {
     (void)w; (void)sink;
-    return viewport_mapping(NULL, 0, -1, h, pp);
+    return viewport_mapping(NULL, NULL, 0, -1, h, pp);
 }
 
 pt_pix pt_cat_vp_noflip(pt_vec2 pp, int w, int h, const pt_sink *sink)
 {
     (void)w; (void)h; (void)sink;
-    return viewport_mapping(NULL, -1, 1, -1, pp);
+    return viewport_mapping(NULL, NULL, -1, 1, -1, pp);
 }
 
 #define IN_ROUNDING "in the rasterizer's rounding (pt_pix_round in s4)"
@@ -299,27 +323,27 @@ pt_pix pt_cat_vp_noflip(pt_vec2 pp, int w, int h, const pt_sink *sink)
 const pt_raster_mistake pt_raster_mistakes[PT_NRASTER_MISTAKES] = {
     {"floor(x + 0.5) instead of Java's Math.round", IN_ROUNDING,
      "the DDA's running y can be 0.49999999999999994, which floor(y + 0.5) takes to 1 "
-     "and Math.round to 0", pt_cat_vp_floor, 0, 0, 0},
+     "and Math.round to 0", pt_cat_vp_floor, 0, 0, 0, {NULL, NULL}},
     {"C round() instead of Java's Math.round", IN_ROUNDING,
-     "round() takes ties away from zero", pt_cat_vp_cround, 0, 0, 0},
+     "round() takes ties away from zero", pt_cat_vp_cround, 0, 0, 0, {NULL, NULL}},
     {"truncation toward zero instead of Java's Math.round", IN_ROUNDING,
      "(int)(y + 0.5) truncates toward zero: as floor(y + 0.5) at 0.49999999999999994, "
      "and one too high below -0.5, which only steps left of or below the viewport reach",
-     pt_cat_vp_trunc, 0, 0, 1},
+     pt_cat_vp_trunc, 0, 0, 1, {pt_cat_vp_trunc_y, pt_cat_vp_trunc_x}},
     {"missing -1 in x_vp", IN_VIEWPORT,
      "x_vp = round(x_pp) instead of round(x_pp) - 1: every pixel one to the right, the "
-     "steps at x_pp = w clipped", pt_cat_vp_nominus1, 0, 0, 0},
+     "steps at x_pp = w clipped", pt_cat_vp_nominus1, 0, 0, 0, {NULL, NULL}},
     {"missing y flip", IN_VIEWPORT,
      "y_vp = round(y_pp) - 1 instead of h - round(y_pp): the picture upside down",
-     pt_cat_vp_noflip, 0, 0, 0},
+     pt_cat_vp_noflip, 0, 0, 0, {NULL, NULL}},
     {"DDA loop one step short", "in the rasterizer's loop bound",
      "for (x = x0; x < x1; ...) instead of x <= x1: the last step of every segment that "
-     "is not a single pixel is not taken, its pixel missing", NULL, -1, 0, 0},
+     "is not a single pixel is not taken, its pixel missing", NULL, -1, 0, 0, {NULL, NULL}},
     {"DDA loop one step too long", "in the rasterizer's loop bound",
      "for (x = x0; x <= x1 + 1; ...) instead of x <= x1: one step past the end of every "
-     "segment that is not a single pixel, an extra pixel", NULL, 1, 0, 0},
+     "segment that is not a single pixel, an extra pixel", NULL, 1, 0, 0, {NULL, NULL}},
     {"viewport offset (x_ul, y_ul) forgotten", "in setPixelVP",
      "the pixel written at (x_vp, y_vp) instead of (x_ul + x_vp, y_ul + y_vp): the "
      "picture sits in the framebuffer's upper-left corner, not in the viewport",
-     NULL, 0, 1, 0},
+     NULL, 0, 1, 0, {NULL, NULL}},
 };

@@ -96,6 +96,11 @@ typedef struct pt_raster_mistake {
     int no_offset;               /* 1: pixels without the offset (x_ul, y_ul) */
     int twin;                    /* 1 + the mistake it is told from only by
                                  ** negative coordinates, or 0 */
+    pt_raster_vp running[2];     /* the mistake in the coordinate the DDA
+                                 ** accumulates only, of an x-major [0] and a
+                                 ** y-major [1] segment, as the course's Java
+                                 ** rasterizer makes it (its step an int):
+                                 ** tried on a course log; or NULL */
 } pt_raster_mistake;
 
 #define PT_NRASTER_MISTAKES 8
@@ -110,6 +115,8 @@ extern const pt_raster_mistake pt_raster_mistakes[PT_NRASTER_MISTAKES];
 pt_pix pt_cat_vp_floor(pt_vec2 pp, int w, int h, const pt_sink *sink);
 pt_pix pt_cat_vp_cround(pt_vec2 pp, int w, int h, const pt_sink *sink);
 pt_pix pt_cat_vp_trunc(pt_vec2 pp, int w, int h, const pt_sink *sink);
+pt_pix pt_cat_vp_trunc_y(pt_vec2 pp, int w, int h, const pt_sink *sink);
+pt_pix pt_cat_vp_trunc_x(pt_vec2 pp, int w, int h, const pt_sink *sink);
 pt_pix pt_cat_vp_nominus1(pt_vec2 pp, int w, int h, const pt_sink *sink);
 pt_pix pt_cat_vp_noflip(pt_vec2 pp, int w, int h, const pt_sink *sink);
 

@@ -53,13 +53,16 @@ mistake diff-1.5 $data/ties.scene jsonl "C round() instead of Java's Math.round"
 # a text EXPECTED prints -2.500000: still a tie, so floor(x + 0.5) is not named
 mistake diff-1.6 $data/ties.scene text "C round() instead of Java's Math.round"
 mistaken s4_floor
-mistake diff-1.7 $data/floor.scene jsonl "floor(x + 0.5) instead of Java's Math.round" ""
+# (on a segment that starts left of the viewport: its first clipped step,
+# x_pp = -3, tells floor(x + 0.5) from truncation, which lights the same
+# pixels; tests/data/diff/floor.scene cannot, diff-15.6)
+mistake diff-1.7 tests/data/students/left.scene jsonl "floor(x + 0.5) instead of Java's Math.round" ""
 # ... and in a viewport off the framebuffer's corner, h != H: diff takes
 # EXPECTED's pixels back to logical pixels to replay the DDA (dpixels.c,
 # vp_to_pp: the viewport and framebuffer stages backwards), and names the
 # mistake only when the replay gives EXPECTED's own pixels
-sed 's/^framebuffer 16 4$/framebuffer 23 9\nviewport 4 3 16 4/' $data/floor.scene > "$tmp/floor-vp.scene"
-check "diff-1.7a (the scene has its viewport at 4,3)" grep -q '^viewport 4 3 16 4$' "$tmp/floor-vp.scene"
+sed 's/^framebuffer 12 4$/framebuffer 19 9\nviewport 4 3 12 4/' tests/data/students/left.scene > "$tmp/floor-vp.scene"
+check "diff-1.7a (the scene has its viewport at 4,3)" grep -q '^viewport 4 3 12 4$' "$tmp/floor-vp.scene"
 mistake diff-1.7b "$tmp/floor-vp.scene" jsonl "floor(x + 0.5) instead of Java's Math.round" ""
 mistaken s4_noflip
 mistake diff-1.8 $data/offset.scene jsonl "missing y flip"
@@ -565,12 +568,16 @@ check "diff-15.4 (the first clipped step of the reference is x_vp -4)" grep -qF 
 if mistaken s4_trunc; then
     "$tmp/sb/pipetrace" "$tmp/left.scene" --format jsonl --stage pixel --stage raster --trace "$tmp/left-got.jsonl"
     rast diff-15.5 "$tmp/left-want.jsonl" "$tmp/left-got.jsonl" "truncation toward zero instead of Java's Math.round"
-    # where no step reaches below -0.5 the two light the same pixels: the
-    # usual form is named, and the other said to fit as well
+    # where no step reaches below -0.5 the two light the same pixels: both
+    # are said, neither named (naming floor(x + 0.5) would blame this
+    # student for a mistake not made)
     "$tmp/sb/pipetrace" $data/floor.scene --format jsonl --trace "$tmp/floor-got.jsonl"
-    rast diff-15.6 "$tmp/floor-want.jsonl" "$tmp/floor-got.jsonl" "floor(x + 0.5) instead of Java's Math.round"
-    check "diff-15.6a ... with truncation said to light the same pixels there" \
-        grep -qF "So does truncation toward zero instead of Java's Math.round: the two light other pixels only at steps left of or below the viewport, which this trace does not tell apart." "$tmp/flat"
+    "$exe" diff --verdict "$tmp/floor-want.jsonl" "$tmp/floor-got.jsonl" >"$tmp/out" 2>&1; rc=$?; summary
+    check "diff-15.6 where no step tells truncation from floor(x + 0.5): ambiguous (exit $rc)" \
+        sh -c 'test "$1" = 1 && grep -qF "ambiguous: floor(x + 0.5) instead of Java'"'"'s Math.round or truncation toward zero instead of Java'"'"'s Math.round" "$2"' _ "$rc" "$tmp/flat"
+    check "diff-15.6a ... the two said to differ only left of or below the viewport" \
+        grep -qF "floor(x + 0.5) instead of Java's Math.round and truncation toward zero instead of Java's Math.round light other pixels only at steps left of or below the viewport, which this trace does not tell apart." "$tmp/flat"
+    check "diff-15.6b ... and no likely mistake named alone" test "$(grep -c '^ *likely mistake' "$tmp/out")" = 0
 else
     check "diff-15.5 the s4_trunc student build" false
 fi

@@ -125,6 +125,10 @@ typedef struct rstat {
     size_t hits[PT_NRASTER_MISTAKES];   /* ... that each rasterizer mistake reproduces */
     size_t apart[PT_NRASTER_MISTAKES];  /* ... where a mistake with a twin lights
                                  ** other pixels or clip records than its twin */
+    size_t breaks[PT_NRASTER_MISTAKES]; /* segments both traces light alike (and
+                                 ** clip alike) that each mistake, replayed,
+                                 ** would light or clip otherwise; counted
+                                 ** when every vertex agrees */
     int first_set;               /* 1: first_* below are set */
     uint32_t first_model;        /* the first differing segment */
     uint64_t first_seg;
@@ -261,10 +265,11 @@ int pt_diff_compare_pixels(dctx *c, size_t *nmiss, size_t *nextra, size_t nlit[2
 int pt_diff_check_raster(dctx *c, rstat *rs);
 
 /* The rasterizer's mistakes that reproduce every differing segment of rs,
-** into named[] (indexes into pt_raster_mistakes), their number returned; a
-** mistake whose twin is named too and that the trace never told apart from
-** it (rs->apart 0) is left out: it draws the same pixels there.  This
-** function can't fail. */
+** into named[] (indexes into pt_raster_mistakes), their number returned,
+** but those that would change a segment the traces agree on.  A
+** mistake and its twin that the trace never told apart (rs->apart 0) are
+** both named: more than one is "ambiguous", never the usual one alone for a
+** student who made the other.  This function can't fail. */
 size_t pt_diff_raster_named(const rstat *rs, size_t named[PT_NRASTER_MISTAKES]);
 
 /* Print the raster check's details for the first differing segment. */

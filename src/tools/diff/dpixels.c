@@ -286,16 +286,24 @@ static int plist_eq(const plist *a, const plist *b)
 /* Mistake j replayed from ends into *out: 1 when it gives ACTUAL's pixels px
 ** (and with clips its clip records cl), 0 when not or not replayed; -1 when
 ** out of memory.  ref: the reference's replay; ul: the framebuffer pixel of
-** viewport pixel (0, 0). */
+** viewport pixel (0, 0); log: 1 when ACTUAL is a course log, which the
+** course's Java rasterizer may have written. */
 static int mistake_fits(size_t j, const int64_t ends[4], const pt_thdr *hd, const replayed *ref,
-                        pt_pix ul, const plist *px, const plist *cl, int clips, replayed *out)
+                        pt_pix ul, const plist *px, const plist *cl, int clips, int log,
+                        replayed *out)
 {
     const pt_raster_mistake *mk = &pt_raster_mistakes[j];
-    int r;
+    int r, ymajor;
 
     if (mk->no_offset)
         return eq_less(&ref->px, px, ul) && (!clips || plist_eq(&ref->cl, cl));
     r = replay(ends, hd->vp_w, hd->vp_h, mk->to_vp, mk->steps, out);
+    if (r) return r < 0 ? -1 : 0;
+    if (plist_eq(&out->px, px) && (mk->steps || !clips || plist_eq(&out->cl, cl))) return 1;
+    /* the course's Java rasterizer makes it in the running coordinate only */
+    ymajor = llabs(ends[3] - ends[1]) > llabs(ends[2] - ends[0]);
+    if (!log || !mk->running[ymajor]) return 0;
+    r = replay(ends, hd->vp_w, hd->vp_h, mk->running[ymajor], mk->steps, out);
     if (r) return r < 0 ? -1 : 0;
     return plist_eq(&out->px, px) && (mk->steps || !clips || plist_eq(&out->cl, cl));
 }
@@ -386,7 +394,9 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
     replayed re, mk, tw;
     pt_pix o = {0, 0, 1}, ul = pt_viewport2fb(o, hd->vp_x, hd->vp_y, NULL);
     int64_t d[2];
-    int side, rc = 0, one_space = actual_offset(c, hd, d);
+    int side, rc = 0, one_space = actual_offset(c, hd, d), same;
+    int clips_both = c->t[0].ncl && c->t[1].ncl;
+    int vertices_agree = !c->differ && !c->only[0] && !c->only[1];
 
     memset(rs, 0, sizeof *rs);
     memset(&re, 0, sizeof re);
@@ -430,7 +440,9 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
             }
             end[side] = k[side];
         }
-        if (rc != 0 || plist_eq(&pl[0], &pl[1])) continue;
+        if (rc != 0) continue;
+        same = plist_eq(&pl[0], &pl[1]) && (!clips_both || plist_eq(&cl[0], &cl[1]));
+        if (same && !vertices_agree) continue;
         /* rounded endpoints: EXPECTED's first and last steps, as logical pixels;
         ** a viewport beyond PT_MAX_SIZE is no trace of pipetrace's: not replayed */
         if (end[0] > beg[0] && sane && hd->vp_w >= 1 && hd->vp_h >= 1 &&
@@ -450,6 +462,18 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
             /* clip records compared where the traces have them and the
             ** reference replay gives EXPECTED's own */
             clips = ok && (c->t[0].ncl || c->t[1].ncl) && plist_eq(&re.cl, &cl[0]);
+        }
+        if (same) {
+            /* a segment both traces light alike: a mistake that would light
+            ** it otherwise does not explain ACTUAL (as a vertex mistake must
+            ** leave the agreeing vertices as they are) */
+            for (j = 0; ok && rc == 0 && j < PT_NRASTER_MISTAKES; j++) {
+                int fit = mistake_fits(j, ends, hd, &re, ul, &pl[1], &cl[1], clips,
+                                       c->t[1].kind == PT_TK_KRAFT, &mk);
+                if (fit < 0) rc = -1;
+                else if (!fit) rs->breaks[j]++;
+            }
+            continue;
         }
         if (!rs->first_set) {
             rs->first_set = 1;
@@ -483,7 +507,8 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
         }
         for (j = 0; ok && rc == 0 && j < PT_NRASTER_MISTAKES; j++) {
             int tj = pt_raster_mistakes[j].twin - 1, fit;
-            fit = mistake_fits(j, ends, hd, &re, ul, &pl[1], &cl[1], clips, &mk);
+            fit = mistake_fits(j, ends, hd, &re, ul, &pl[1], &cl[1], clips,
+                               c->t[1].kind == PT_TK_KRAFT, &mk);
             if (fit < 0) { rc = -1; break; }
             rs->hits[j] += (size_t)fit;
             if (tj < 0) continue;
@@ -631,12 +656,8 @@ size_t pt_diff_raster_named(const rstat *rs, size_t named[PT_NRASTER_MISTAKES])
 {
     size_t k, n = 0;
 
-    for (k = 0; k < PT_NRASTER_MISTAKES; k++) {
-        int t = pt_raster_mistakes[k].twin - 1;
-        if (!rs->segs_differ || rs->hits[k] != rs->segs_differ) continue;
-        if (t >= 0 && rs->hits[t] == rs->segs_differ && !rs->apart[k]) continue;
-        named[n++] = k;
-    }
+    for (k = 0; k < PT_NRASTER_MISTAKES; k++)
+        if (rs->segs_differ && rs->hits[k] == rs->segs_differ && !rs->breaks[k]) named[n++] = k;
     return n;
 }
 
@@ -660,10 +681,16 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
                     "checked.");
     pt_diff_para("  ", sb.b);
     for (k = 0; rs->ends_ok && k < PT_NRASTER_MISTAKES; k++) {
-        if (!rs->hits[k] || rs->hits[k] == rs->segs_differ) continue;
+        if (!rs->hits[k] || (rs->hits[k] == rs->segs_differ && !rs->breaks[k])) continue;
         memset(&sb, 0, sizeof sb);             /* never a confident name for part of it */
-        pt_diff_add(&sb, "partial: %s reproduces %zu of the %zu segments that differ: it does "
-                    "NOT explain them.", pt_raster_mistakes[k].name, rs->hits[k], rs->segs_differ);
+        if (rs->hits[k] < rs->segs_differ)
+            pt_diff_add(&sb, "partial: %s reproduces %zu of the %zu segments that differ: it "
+                        "does NOT explain them.", pt_raster_mistakes[k].name, rs->hits[k],
+                        rs->segs_differ);
+        else
+            pt_diff_add(&sb, "partial: %s reproduces every segment that differs, but would "
+                        "light %zu of those that agree otherwise: it does NOT explain them.",
+                        pt_raster_mistakes[k].name, rs->breaks[k]);
         pt_diff_para("  ", sb.b);
     }
     if (!rs->ends_ok || !n) return;
@@ -673,6 +700,12 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
         for (k = 0; k < n; k++)
             pt_diff_add(&sb, "%s%s", k ? " or " : "", pt_raster_mistakes[named[k]].name);
         pt_diff_add(&sb, ": each reproduces ACTUAL's pixels in every segment that differs.");
+        for (k = 0; k < n; k++)
+            for (j = 0; j < n; j++)
+                if (pt_raster_mistakes[named[k]].twin - 1 == (int)named[j] && !rs->apart[named[k]])
+                    pt_diff_add(&sb, " %s and %s light other pixels only at steps left of or "
+                                "below the viewport, which this trace does not tell apart.",
+                                pt_raster_mistakes[named[j]].name, pt_raster_mistakes[named[k]].name);
         pt_diff_para("  ", sb.b);
         return;
     }
@@ -686,10 +719,5 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
     if (rs->segs_differ > 1)
         pt_diff_add(&sb, "; so it does for all %zu segments that differ", rs->segs_differ);
     pt_diff_add(&sb, ".");
-    for (j = 0; j < PT_NRASTER_MISTAKES; j++)
-        if (pt_raster_mistakes[j].twin - 1 == (int)k && rs->hits[j] == rs->segs_differ)
-            pt_diff_add(&sb, " So does %s: the two light other pixels only at steps left of or "
-                        "below the viewport, which this trace does not tell apart.",
-                        pt_raster_mistakes[j].name);
     pt_diff_para("    ", sb.b);
 }
