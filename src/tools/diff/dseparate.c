@@ -290,7 +290,7 @@ static void sig4(const par4 *pr, const piece4 *pc, const hyp4 *hy, sig *s)
 static double aim(const par4 *pr, int axis, double target)
 {
     int size = axis ? pr->p.h : pr->p.w, k;
-    double x = (target - 0.5) * 2.001 / size - 1, best = x, bd = INFINITY;
+    double x = (target - 0.5) * 2.001 / size - 1, best = x, bd = HUGE_VAL;
     pt_cat_val in, out;
 
     for (k = 0; k < 256; k++) {
@@ -302,7 +302,7 @@ static double aim(const par4 *pr, int axis, double target)
         d = fabs(out.d[axis] - target);
         if (d < bd) { bd = d; best = x; }
         if (d == 0 || !isfinite(d)) break;
-        x = nextafter(x, out.d[axis] < target ? INFINITY : -INFINITY);
+        x = nextafter(x, out.d[axis] < target ? HUGE_VAL : -HUGE_VAL);
     }
     return best;
 }
