@@ -19,12 +19,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "core/raster.h"
 #include "io/outfile.h"
 #include "io/tread79.h"
-#include "stages/r7_view2camera.h"
-#include "stages/r9_view2camera.h"
-#include "stages/rv_nearclip.h"
 #include "tools/diff/diff.h"
 #include "tools/diff/dseparate.h"
 
