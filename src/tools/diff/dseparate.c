@@ -656,8 +656,10 @@ void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_
     comment(out, "A scene that tells these mistakes apart: %s. Made by pipetrace diff for the "
             "purpose: on it each gives a log of its own, and none gives the right one's. The "
             "camera's rectangle and near plane are EXPECTED's; it sits at the origin (no view "
-            "vector, no matrix), so the segments are given where the near clip sees them. "
-            "Render it with both renderers, debug on, and diff the logs.",
+            "vector, no matrix), so the segments are given where the near clip sees them. The "
+            "framebuffer's size, antialias off and gamma on are the course's usual ones: the "
+            "near clip does not depend on them. Render it with both renderers, debug on, and "
+            "diff the logs.",
             list_names(nb, sizeof nb, names, n));
     put(out, "renderer %d\nscene separate\nframebuffer 60 50\n", cam->renderer);
     put(out, "camera %s %s %s %s", cam->persp ? "perspective" : "orthographic",
