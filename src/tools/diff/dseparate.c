@@ -134,13 +134,14 @@ static void put(pt_sep *o, const char *fmt, ...)
     va_list ap;
     int n;
 
-    if (o->n >= sizeof o->text) return;
+    if (o->full) return;
     va_start(ap, fmt);
     n = vsnprintf(o->text + o->n, sizeof o->text - o->n, fmt, ap);
     va_end(ap);
     if (n > 0) o->n += (size_t)n;
     if (o->n >= sizeof o->text) {               /* cut: never half a scene */
         o->ok = 0;
+        o->full = 1;
         o->n = (size_t)snprintf(o->text, sizeof o->text, "the scene would be too long.");
     }
 }

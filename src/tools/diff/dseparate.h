@@ -30,6 +30,7 @@
 typedef struct pt_sep {
     int ok;                      /* 1: text is the scene; 0: text is one sentence
                                  ** saying why there is none */
+    int full;                    /* 1: the scene did not fit (text says so) */
     size_t n;                    /* bytes of text */
     char text[PT_SEP_TEXT];      /* the scene's lines, each ending in '\n' */
 } pt_sep;
