@@ -15,6 +15,8 @@
 **                explained
 **   dpixels.c    the lit pixels, and the rasterizer replayed on a segment
 **   dprint.c     numbers, paragraphs, names
+**   dseparate.c  where known mistakes are ambiguous: a scene that tells them
+**                apart (dseparate.h), printed and written
 **   d79.c        the traces and logs of renderers 7 and 9 (their own reader,
 **                io/tread79.h, and catalogue, tools/catalogue79.h)
 ** The types below are diff's own (short names, never seen outside this
