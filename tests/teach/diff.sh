@@ -674,6 +674,8 @@ if mistaken s4_nominus1; then
     "$exe" diff --verdict "$tmp/edge-want.log" "$tmp/edge-got.log" >"$tmp/out" 2>&1
     sepscene diff-17.7 "$tmp/out"
     check "diff-17.7a ... for the course's logs with pixels" grep -qF "kraft-pixels" "$tmp/sep.scene"
+    check "diff-17.7b ... the summary points to it" \
+        sh -c 'tr "\n" " " < "$1" | tr -s " " | grep -qF "The separating scene printed above tells them apart."' _ "$tmp/out"
     "$exe" "$tmp/sep.scene" --format kraft-pixels --trace "$tmp/sep-want.log"
     "$tmp/sb/pipetrace" "$tmp/sep.scene" --format kraft-pixels --trace "$tmp/sep-got.log"
     rast diff-17.8 "$tmp/sep-want.log" "$tmp/sep-got.log" "missing -1 in x_vp"

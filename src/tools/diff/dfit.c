@@ -318,7 +318,8 @@ void pt_diff_verdict(const dctx *c, pbuf *s)
                     "cannot tell them apart:");
         for (k = 0; k < c->nhy; k++)
             if (c->hy[k].full) pt_diff_add(s, "%s %s", shown++ ? ";" : "", c->hy[k].name);
-        pt_diff_add(s, ". The separating scene printed above tells them apart.");
+        pt_diff_add(s, ".%s", c->o->out->sep ? " The separating scene printed above tells them "
+                    "apart." : "");
     } else if (c->nhy) {
         pt_diff_add(s, " No single known mistake explains every vertex.");
         for (k = 0; k < c->nhy && shown < 3; k++) {
