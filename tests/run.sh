@@ -64,7 +64,7 @@ export           4 sh tests/cli/export.sh $B/pipetrace
 cli              1 sh tests/cli/cli.sh $B/pipetrace
 hostile         12 sh tests/cli/hostile.sh $B/pipetrace
 outputs          1 sh tests/cli/outputs.sh $B/pipetrace
-diff            40 sh tests/teach/diff.sh $B/pipetrace
+diff            45 sh tests/teach/diff.sh $B/pipetrace
 diff79           3 sh tests/teach/diff79.sh $B/pipetrace
 kraft            3 sh tests/formats/kraft.sh $B/pipetrace $ref
 course79         2 sh tests/course79/course79.sh $B/pipetrace

@@ -36,7 +36,7 @@
 static const char usage[] =
 "usage: pipetrace [SCENE] [options]\n"
 "       pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N] [--verdict]\n"
-"                      [--scene SCENE]\n"
+"                      [--scene SCENE] [--separating-scene FILE]\n"
 "       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE]\n"
 "       pipetrace step [SCENE] [--vertex N] [--model NAME] [--all | --interactive]\n"
 "                      [--compare-cameras] [--raw-lookat]\n"

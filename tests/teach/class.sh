@@ -208,5 +208,13 @@ check "class-8.3 two mistakes that give the same log: ambiguous, both named" \
 check "class-8.4 histogram: the ambiguous pair one bar, 2 students" \
     sh -c "sed -n '/by mistake/,\$p' '$tmp/out' | grep -qE '^  ambiguous: .* +2  #+\$'"
 check "class-8.5 a log of another scene: not a pass" sh -c "! grep -qE '^neart +PASS' '$tmp/out'"
+# an ambiguous row carries the scene diff prints to tell its mistakes apart
+run class tests/data/diff79/r7-near-amb.scene "$tmp/c79" --csv "$tmp/c79.csv" --html "$tmp/c79.html"
+check "class-8.6 --csv: a separating_scene column, the scene in the ambiguous rows' cells" \
+    sh -c "head -1 '$tmp/c79.csv' | grep -q ',note,separating_scene' && grep -qF 'nearoff,nearoff.log,,FAIL,nearclip,ambiguous' '$tmp/c79.csv' && grep -qF 'segment 1 2' '$tmp/c79.csv'"
+check "class-8.7 ... and none in a row that is not ambiguous" \
+    sh -c "grep -E '^right,' '$tmp/c79.csv' | tr -d '\\r' | grep -qE ',\$'"
+check "class-8.8 --html: the ambiguous rows link to the scene, shown below their diff" \
+    sh -c "test \$(grep -c 'href=\"#scene-[0-9]*\">a scene that tells them apart' '$tmp/c79.html') = 2 && test \$(grep -c 'id=\"scene-[0-9]*\">The separating scene' '$tmp/c79.html') = 2"
 
 report

@@ -601,7 +601,7 @@ rast diff-15.9 $K "$tmp/short.log" "DDA loop one step short"
 # segment's last pixel line the next step, x_pp and x_vp one more
 printf 'framebuffer 30 20\nviewport 3 2 24 16\ncamera orthographic\nmodel h\nv -0.5 0.3 0\nv 0.5 0.3 0\nv -0.7 -0.4 0\nv 0.2 -0.4 0\nl 1 2\nl 4 3\n' > "$tmp/rows.scene"
 "$exe" "$tmp/rows.scene" --format kraft-pixels --trace "$tmp/rows.log"
-awk 'function bump(s, key,    v) {
+long='function bump(s, key,    v) {
          match(s, key "= *-?[0-9]+")
          v = substr(s, RSTART + length(key) + 1, RLENGTH - length(key) - 1) + 1
          return substr(s, 1, RSTART - 1) sprintf("%s=%4d", key, v) substr(s, RSTART + RLENGTH)
@@ -609,7 +609,8 @@ awk 'function bump(s, key,    v) {
      /^ *fb_\[/ { print; held = $0; next }
      held != "" { print bump(bump(held, "x_pp"), "x_vp"); held = "" }
      { print }
-     END { if (held != "") print bump(bump(held, "x_pp"), "x_vp") }' "$tmp/rows.log" > "$tmp/long.log"
+     END { if (held != "") print bump(bump(held, "x_pp"), "x_vp") }'
+awk "$long" "$tmp/rows.log" > "$tmp/long.log"
 check "diff-15.10 (2 pixel lines more)" test $(($(grep -c 'fb_\[' "$tmp/long.log") - $(grep -c 'fb_\[' "$tmp/rows.log"))) = 2
 rast diff-15.11 "$tmp/rows.log" "$tmp/long.log" "DDA loop one step too long"
 awk "$short" "$tmp/rows.log" > "$tmp/rows-short.log"
@@ -630,5 +631,65 @@ fi
 "$exe" tests/extreme/zdiv-zero.scene --trace "$tmp/z.txt" 2>/dev/null
 "$exe" diff "$tmp/z.jsonl" "$tmp/z.txt" >"$tmp/out" 2>&1; rc=$?
 check "diff-16.1 clip records with null / none: both formats read, and agree (exit $rc)" test "$rc" = 0
+
+# ---- 17: where several known mistakes explain everything, diff prints a
+# scene made to tell them apart (src/tools/diff/dseparate.c), between two
+# marker lines; it must render, and on it each student's trace must name
+# that student's mistake and no other
+# sepscene ID OUT: the scene between the markers of OUT into $tmp/sep.scene
+sepscene() {
+    sed -n '/^#---- begin separating scene ----$/,/^#---- end separating scene ----$/p' "$2" |
+        sed '1d;$d' >"$tmp/sep.scene"
+    check "$1 the separating scene is printed between its markers" test -s "$tmp/sep.scene"
+    "$exe" "$tmp/sep.scene" --format jsonl --trace "$tmp/sep-want.jsonl" >"$tmp/sep.err" 2>&1; rc=$?
+    check "$1 ... and it parses and renders (exit $rc)" test "$rc" = 0
+}
+# (a) floor(x + 0.5) or truncation in a vertex record (diff-1.15): on the
+# scene, floor shows in the DDA's running y, truncation in a negative x_pp
+"$exe" diff $data/floor-vertex-expected.jsonl $data/floor-vertex-actual.jsonl >"$tmp/out" 2>&1
+sepscene diff-17.1 "$tmp/out"
+check "diff-17.1a ... the summary points to it" sh -c 'tr "\n" " " < "$1" | grep -qF "The separating scene printed above tells them apart."' _ "$tmp/out"
+check "diff-17.1b ... no longer to the self-check scene" sh -c '! grep -q "self-check scene tells" "$1"' _ "$tmp/out"
+cp "$tmp/sep.scene" "$tmp/sep-a.scene"
+if mistaken s4_floor; then
+    mistake diff-17.2 "$tmp/sep-a.scene" jsonl "floor(x + 0.5) instead of Java's Math.round" ""
+else
+    check "diff-17.2 the s4_floor student build" false
+fi
+if mistaken s4_trunc; then
+    mistake diff-17.3 "$tmp/sep-a.scene" jsonl "truncation toward zero instead of Java's Math.round"
+else
+    check "diff-17.3 the s4_trunc student build" false
+fi
+# --separating-scene FILE writes the same lines; never over an input
+"$exe" diff $data/floor-vertex-expected.jsonl $data/floor-vertex-actual.jsonl --separating-scene "$tmp/sep-file.scene" >/dev/null 2>&1; rc=$?
+check "diff-17.4 --separating-scene FILE: exit 1 as before ($rc), FILE the printed scene" \
+    sh -c 'test "$1" = 1 && cmp -s "$2" "$3"' _ "$rc" "$tmp/sep-file.scene" "$tmp/sep-a.scene"
+cp $data/floor-vertex-actual.jsonl "$tmp/act.jsonl"
+"$exe" diff $data/floor-vertex-expected.jsonl "$tmp/act.jsonl" --separating-scene "$tmp/act.jsonl" >"$tmp/out" 2>&1; rc=$?
+check "diff-17.5 --separating-scene over ACTUAL: refused, exit 2 ($rc), ACTUAL kept" \
+    sh -c 'test "$1" = 2 && grep -qF "names ACTUAL" "$2" && cmp -s "$3" "$4"' _ "$rc" "$tmp/out" "$tmp/act.jsonl" $data/floor-vertex-actual.jsonl
+rm -f "$tmp/none.scene"
+"$exe" diff $data/ties.jsonl $data/ties-cround.jsonl --separating-scene "$tmp/none.scene" >"$tmp/out" 2>&1; rc=$?
+check "diff-17.6 nothing ambiguous: no scene printed or written, said on stderr (exit $rc)" \
+    sh -c 'test "$1" = 1 && ! test -e "$2" && ! grep -q "begin separating scene" "$3" && grep -qF "no separating scene" "$3"' _ "$rc" "$tmp/none.scene" "$tmp/out"
+# (b) the rasterizer: missing -1 in x_vp or the loop one step too long on a
+# segment from the viewport's left edge (diff-15.2), in the course's logs
+if mistaken s4_nominus1; then
+    "$exe" "$tmp/edge.scene" --format kraft-pixels --trace "$tmp/edge-want.log"
+    "$tmp/sb/pipetrace" "$tmp/edge.scene" --format kraft-pixels --trace "$tmp/edge-got.log"
+    "$exe" diff --verdict "$tmp/edge-want.log" "$tmp/edge-got.log" >"$tmp/out" 2>&1
+    sepscene diff-17.7 "$tmp/out"
+    check "diff-17.7a ... for the course's logs with pixels" grep -qF "kraft-pixels" "$tmp/sep.scene"
+    check "diff-17.7b ... the summary points to it" \
+        sh -c 'tr "\n" " " < "$1" | tr -s " " | grep -qF "The separating scene printed above tells them apart."' _ "$tmp/out"
+    "$exe" "$tmp/sep.scene" --format kraft-pixels --trace "$tmp/sep-want.log"
+    "$tmp/sb/pipetrace" "$tmp/sep.scene" --format kraft-pixels --trace "$tmp/sep-got.log"
+    rast diff-17.8 "$tmp/sep-want.log" "$tmp/sep-got.log" "missing -1 in x_vp"
+    awk "$long" "$tmp/sep-want.log" > "$tmp/sep-long.log"
+    rast diff-17.9 "$tmp/sep-want.log" "$tmp/sep-long.log" "DDA loop one step too long"
+else
+    check "diff-17.7 the s4_nominus1 student build" false
+fi
 
 report

@@ -10,7 +10,8 @@
 # own trace of the scene, made here in JSON Lines and text, or the right log;
 # each student's log must be named with its mistake and no other, the right
 # logs pass, a log without the rasterizer's lines is not proven, two mistakes
-# that give the same log are "ambiguous".
+# that give the same log are "ambiguous", with a scene printed that tells
+# them apart (r7-near-amb-sep, whose students' logs are stored too).
 exe=$1
 . tests/lib/testlib.sh
 data=tests/data/diff79
@@ -43,7 +44,7 @@ mistake() {
     done
 }
 
-for scene in r7-skew-aa r7-near r7-near-amb r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3; do
+for scene in r7-skew-aa r7-near r7-near-amb r7-near-amb-sep r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -120,6 +121,25 @@ expect "r9-order matswap, one vertex moved" "$tmp/r9-order.jsonl" "$tmp/moved.lo
 for m in nearsign nearoff; do
     mistake r7-near-amb $m "ambiguous: the near plane's sign wrong or the near plane ignored"
 done
+
+# ---- ... and the scene diff prints to tell them apart (dseparate.c): it is
+# r7-near-amb-sep.scene, made once, whose logs the course's renderer printed
+# with each student's Java (README.md); on it each student is named alone
+for m in nearsign nearoff; do
+    "$exe" diff "$tmp/r7-near-amb.jsonl" "$tmp/r7-near-amb.$m.log" >"$tmp/out" 2>&1
+    sed -n '/^#---- begin separating scene ----$/,/^#---- end separating scene ----$/p' "$tmp/out" |
+        sed '1d;$d' >"$tmp/sep.scene"
+    check "sep-1 r7-near-amb $m: a separating scene printed between its markers" test -s "$tmp/sep.scene"
+    check "sep-2 ... $data/r7-near-amb-sep.scene is that scene (else store it again and remake its logs: README.md)" \
+        cmp -s "$tmp/sep.scene" "$data/r7-near-amb-sep.scene"
+    "$exe" diff "$tmp/r7-near-amb.jsonl" "$tmp/r7-near-amb.$m.log" --separating-scene "$tmp/sep-file.scene" >/dev/null 2>&1
+    check "sep-3 ... --separating-scene FILE writes it" cmp -s "$tmp/sep-file.scene" "$data/r7-near-amb-sep.scene"
+done
+mistake r7-near-amb-sep nearsign "the near plane's sign wrong"
+mistake r7-near-amb-sep nearoff "the near plane ignored"
+"$exe" diff "$tmp/r7-near-amb.jsonl" "$tmp/r7-near-amb.nearoff.log" --separating-scene "$tmp/r7-near-amb.jsonl" >"$tmp/out" 2>&1; rc=$?
+check "sep-4 --separating-scene over EXPECTED: refused, exit 2 ($rc)" \
+    sh -c 'test "$1" = 2 && grep -qF "names EXPECTED" "$2" && head -c 1 "$3" | grep -q "{"' _ "$rc" "$tmp/out" "$tmp/r7-near-amb.jsonl"
 
 # ---- the first stage that differs, and its counts
 "$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.skew0.log" >"$tmp/out" 2>&1

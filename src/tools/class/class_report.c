@@ -229,6 +229,22 @@ void pt_class_text(pt_sbuf *sb, const pt_class *c)
     }
 }
 
+/* The separating scene the row's trace diff printed (between its marker
+** lines, when its mistakes are ambiguous): its first byte, its length into
+** *n; NULL when there is none. */
+static const char *sep_scene(const pt_class_row *r, size_t *n)
+{
+    static const char begin[] = "#---- begin separating scene ----\n",
+                      end[] = "#---- end separating scene ----\n";
+    const char *a, *b;
+
+    if (!r->text[0].len || !(a = strstr(r->text[0].s, begin))) return NULL;
+    a += sizeof begin - 1;
+    if (!(b = strstr(a, end))) return NULL;
+    *n = (size_t)(b - a);
+    return a;
+}
+
 /* ===== CSV ===== */
 
 /* A CSV cell has no value where a table shows "-" (a cell that starts with
@@ -244,7 +260,7 @@ void pt_class_csv(pt_sbuf *sb, const pt_class *c)
     char m[400], v[48], p[32], im[32];
 
     pt_sbuf_add(sb, "student,trace,image,verdict,first_wrong_stage,mistake,vertices_differing,"
-                "pixels_differing,image_pixels_differing,note\r\n");
+                "pixels_differing,image_pixels_differing,note,separating_scene\r\n");
     for (k = 0; k < c->nrow; k++) {
         const pt_class_row *r = &c->row[k];
         vertices_of(r, v, sizeof v);
@@ -262,6 +278,20 @@ void pt_class_csv(pt_sbuf *sb, const pt_class *c)
         pt_sbuf_addf(sb, ",%s,%s,%s,", r->why ? "" : dash(v), r->why ? "" : dash(p),
                      r->why ? "" : dash(im));
         pt_sbuf_add_csv_untrusted(sb, r->why ? r->why : "");
+        pt_sbuf_add(sb, ",");
+        {
+            size_t n;
+            const char *sc = sep_scene(r, &n);
+            char *cell = sc ? malloc(n + 1) : NULL;
+            if (cell) {
+                memcpy(cell, sc, n);
+                cell[n] = '\0';
+                pt_sbuf_add_csv(sb, cell);      /* pipetrace's own text: its lines kept */
+            } else if (sc) {
+                sb->failed = 1;
+            }
+            free(cell);
+        }
         pt_sbuf_add(sb, "\r\n");
     }
 }
@@ -291,7 +321,8 @@ static void svg_chart(pt_sbuf *sb, const hist *h, const char *title, const char 
 
 void pt_class_html(pt_sbuf *sb, const pt_class *c)
 {
-    size_t k;
+    size_t k, n;
+    const char *sc;
     int t;
     char m[400], v[48], p[32], im[32];
     hist h[2];
@@ -336,6 +367,8 @@ void pt_class_html(pt_sbuf *sb, const pt_class *c)
         pt_sbuf_add_xml(sb, stage_of(r));
         pt_sbuf_add(sb, "</td><td>");
         pt_sbuf_add_xml(sb, pt_class_mistake(r, m, sizeof m));
+        if (sep_scene(r, &n))
+            pt_sbuf_addf(sb, " (<a href=\"#scene-%zu\">a scene that tells them apart</a>)", k + 1);
         pt_sbuf_addf(sb, "</td><td>%s</td><td>%s</td><td>%s</td></tr>\n", v, p, im);
     }
     pt_sbuf_add(sb, "</table>\n");
@@ -347,7 +380,18 @@ void pt_class_html(pt_sbuf *sb, const pt_class *c)
         for (t = 0; t < 2; t++)
             if (r->text[t].len) pt_sbuf_add_xml(sb, r->text[t].s);
         if (!r->text[0].len && !r->text[1].len && r->why) pt_sbuf_add_xml(sb, r->why);
-        pt_sbuf_add(sb, "</pre></section>\n");
+        pt_sbuf_add(sb, "</pre>\n");
+        if ((sc = sep_scene(r, &n)) != NULL) {
+            char *text = malloc(n + 1);
+            if (!text) { sb->failed = 1; continue; }
+            memcpy(text, sc, n);
+            text[n] = '\0';
+            pt_sbuf_addf(sb, "<h3 id=\"scene-%zu\">The separating scene</h3>\n<pre>", k + 1);
+            pt_sbuf_add_xml(sb, text);
+            pt_sbuf_add(sb, "</pre>\n");
+            free(text);
+        }
+        pt_sbuf_add(sb, "</section>\n");
     }
     pt_sbuf_add(sb, "</body></html>\n");
 }

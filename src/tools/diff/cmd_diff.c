@@ -22,7 +22,7 @@
 
 static const char diff_usage[] =
 "usage: pipetrace diff EXPECTED ACTUAL [--tol ABS] [--rel REL] [--show N] [--verdict]\n"
-"                      [--scene SCENE]\n"
+"                      [--scene SCENE] [--separating-scene FILE]\n"
 "       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE] [--show N]\n"
 "Compare two traces (JSON Lines or text, in any mix) vertex by vertex: for\n"
 "each vertex the first stage where they differ and both values; then the\n"
@@ -51,6 +51,9 @@ static const char diff_usage[] =
 "                    (the course's log, its jar's or pipetrace's) gets the\n"
 "                    framebuffer, viewport, camera and translations from it,\n"
 "                    so that the known mistakes can be tested\n"
+"  --separating-scene FILE  when several known mistakes explain everything\n"
+"                    (ambiguous), the scene printed that tells them apart is\n"
+"                    written to FILE too (never over an input of the run)\n"
 "\n"
 "Exit status, as diff(1): 0 same, 1 different, 2 trouble (unreadable input\n"
 "or a usage error); with --verdict, 3 when nothing differs but not every\n"
@@ -91,7 +94,8 @@ static int parse_args(dopts *o, int argc, char **argv)
         const char *a = argv[k];
         const char *val = k + 1 < argc ? argv[k + 1] : NULL;
         int takes = !strcmp(a, "--tol") || !strcmp(a, "--rel") ||
-                    !strcmp(a, "--image-out") || !strcmp(a, "--show") || !strcmp(a, "--scene");
+                    !strcmp(a, "--image-out") || !strcmp(a, "--show") || !strcmp(a, "--scene") ||
+                    !strcmp(a, "--separating-scene");
 
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(diff_usage, stdout); return 0; }
         if (!strcmp(a, "--verdict")) { o->verdict = 1; continue; }
@@ -110,6 +114,8 @@ static int parse_args(dopts *o, int argc, char **argv)
             o->image_out = val;
         } else if (!strcmp(a, "--scene")) {
             o->scene = val;
+        } else if (!strcmp(a, "--separating-scene")) {
+            o->sep_out = val;
         } else if (a[0] == '-' && a[1] != '\0') {
             pt_cli_unknown("diff", diff_usage, a);
             return PT_EXIT_TROUBLE;             /* diff's usage errors: 2 */
@@ -299,6 +305,18 @@ int pt_diff_run(int argc, char **argv, pt_diff_outcome *out)
                     o.image_out, s ? "ACTUAL" : "EXPECTED", o.path[s]);
             return out->status = PT_EXIT_TROUBLE;
         }
+    if (o.sep_out) {                            /* the scene over an input: no */
+        const char *in[3];
+        size_t nin = 0, hit;
+        for (s = 0; s < 2; s++) in[nin++] = !strcmp(o.path[s], "-") ? "/dev/stdin" : o.path[s];
+        if (o.scene) in[nin++] = o.scene;
+        if (!strcmp(o.sep_out, "-") || (hit = pt_outfile_among(o.sep_out, in, nin)) < nin) {
+            fprintf(stderr, "%s: error: --separating-scene names %s; writing it would destroy "
+                    "it\n", o.sep_out, !strcmp(o.sep_out, "-") ? "standard output, where the "
+                    "report goes" : hit == 2 ? "--scene's file" : hit ? "ACTUAL" : "EXPECTED");
+            return out->status = PT_EXIT_TROUBLE;
+        }
+    }
     c = calloc(1, sizeof *c);
     if (!c) { fputs("pipetrace: out of memory\n", stderr); return out->status = PT_EXIT_INPUT; }
     c->o = &o;
@@ -335,6 +353,10 @@ int pt_diff_run(int argc, char **argv, pt_diff_outcome *out)
         fputs("pipetrace: out of memory\n", stderr);
         rc = PT_EXIT_INPUT;
     }
+    if (o.sep_out && out->sep < 0 && rc != PT_EXIT_INPUT) rc = PT_EXIT_TROUBLE;
+    else if (o.sep_out && out->sep == 0 && rc != PT_EXIT_INPUT && rc != PT_EXIT_TROUBLE)
+        fprintf(stderr, "pipetrace diff: note: nothing ambiguous, so no separating scene: %s "
+                "not written\n", o.sep_out);
 done:
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("pipetrace: cannot write to standard output\n", stderr);

@@ -22,6 +22,7 @@
 #include "io/tread79.h"
 #include "tools/catalogue79.h"
 #include "tools/diff/diff.h"
+#include "tools/diff/dseparate.h"
 
 /* The two sides and the command line. */
 typedef struct d79 {
@@ -543,6 +544,7 @@ static int fit(const d79 *c, int st, int *which)
     pt_c79cam cam;
     int k, n = 0, first = -1;
     char names[1024] = "";
+    const char *listed[PT_NMISTAKES79];
     pbuf pb;
 
     cam.renderer = c->t[0].renderer;
@@ -570,6 +572,7 @@ static int fit(const d79 *c, int st, int *which)
         }
         if (!ok) continue;
         pt_diff_outcome_named(c->o->out, m->name);
+        listed[n] = m->name;
         if (n++ == 0) first = k;
         if (strlen(names) + strlen(m->name) + 8 < sizeof names) {
             if (names[0]) strcat(names, " or ");
@@ -583,8 +586,15 @@ static int fit(const d79 *c, int st, int *which)
         pt_diff_add(&pb, "%s.", pt_mistakes79[first].how);
         pt_diff_para("  ", pb.b);
     } else if (n > 1) {
+        pt_sep *sep = malloc(sizeof *sep);
         printf("Mistake: ambiguous: %s (each gives ACTUAL's %s exactly).\n", names,
                st < PT_T79_NSTAGES ? pt_t79_stage_name(st) : "pixels");
+        if (sep) {
+            pt_sep_course(&cam, listed, (size_t)n, sep);
+            if (pt_sep_emit(sep, sep->ok ? c->o->sep_out : NULL) != 0) c->o->out->sep = -1;
+            else if (sep->ok) c->o->out->sep = 1;
+            free(sep);
+        }
     } else {
         pb.n = 0;
         pt_diff_add(&pb, "Mistake: unknown (no known mistake of %s gives ACTUAL's values for "

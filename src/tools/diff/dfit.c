@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "tools/diff/diff.h"
+#include "tools/diff/dseparate.h"
 
 /* The vertices' first differing stages (pt_diff_first_stage), once. */
 typedef struct fitset {
@@ -270,6 +271,37 @@ void pt_diff_report_fit(const dctx *c)
         pt_diff_para("  ", s.b);
     }
     if (any) printf("\n");
+    if (c->verdict >= 0 && c->nfull > 1) {
+        const char *names[PT_DIFF_MAXHYP];
+        size_t n = 0, j;
+        for (k = 0; k < c->nhy; k++) {
+            int seen = 0;
+            if (!c->hy[k].full) continue;
+            for (j = 0; j < n; j++) seen |= !strcmp(names[j], c->hy[k].name);
+            if (!seen) names[n++] = c->hy[k].name;
+        }
+        pt_diff_separate(c, names, n, 0);
+        printf("\n");
+    }
+}
+
+void pt_diff_separate(const dctx *c, const char *const *names, size_t n, int pixels_only)
+{
+    const pt_thdr *hd = &c->t[0].hdr;
+    pt_sep_r4 sp;
+    pt_sep *sep = malloc(sizeof *sep);
+
+    if (!sep) return;
+    memset(&sp, 0, sizeof sp);
+    sp.have = hd->have;
+    sp.w = hd->vp_w; sp.h = hd->vp_h; sp.x_ul = hd->vp_x; sp.y_ul = hd->vp_y;
+    sp.W = hd->fb_w; sp.H = hd->fb_h;
+    sp.perspective = hd->perspective;
+    sp.pixels_only = pixels_only;
+    pt_sep_classic(&sp, names, n, sep);
+    if (pt_sep_emit(sep, sep->ok ? c->o->sep_out : NULL) != 0) c->o->out->sep = -1;
+    else if (sep->ok) c->o->out->sep = 1;
+    free(sep);
 }
 
 void pt_diff_verdict(const dctx *c, pbuf *s)
@@ -286,8 +318,8 @@ void pt_diff_verdict(const dctx *c, pbuf *s)
                     "cannot tell them apart:");
         for (k = 0; k < c->nhy; k++)
             if (c->hy[k].full) pt_diff_add(s, "%s %s", shown++ ? ";" : "", c->hy[k].name);
-        pt_diff_add(s, ". The self-check scene tells them apart (make check-stage, "
-                    "docs/teaching.md).");
+        pt_diff_add(s, ".%s", c->o->out->sep ? " The separating scene printed above tells them "
+                    "apart." : "");
     } else if (c->nhy) {
         pt_diff_add(s, " No single known mistake explains every vertex.");
         for (k = 0; k < c->nhy && shown < 3; k++) {

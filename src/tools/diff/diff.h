@@ -15,6 +15,8 @@
 **                explained
 **   dpixels.c    the lit pixels, and the rasterizer replayed on a segment
 **   dprint.c     numbers, paragraphs, names
+**   dseparate.c  where known mistakes are ambiguous: a scene that tells them
+**                apart (dseparate.h), printed and written
 **   d79.c        the traces and logs of renderers 7 and 9 (their own reader,
 **                io/tread79.h, and catalogue, tools/catalogue79.h)
 ** The types below are diff's own (short names, never seen outside this
@@ -43,6 +45,7 @@ typedef struct dopts {
     size_t show;                 /* vertices and pixels listed */
     int verdict;                 /* --verdict: end with a verdict paragraph */
     const char *scene;           /* --scene: the headers of traces without one */
+    const char *sep_out;         /* --separating-scene: where the scene goes, or NULL */
     pt_diff_outcome *out;        /* the findings as data (pt_diff_run), never NULL */
 } dopts;
 
@@ -245,6 +248,11 @@ void pt_diff_verdict(const dctx *c, pbuf *s);
 ** explains all.  px_differ: the lit pixels differ; rs: the raster check. */
 void pt_diff_print_verdict(const dctx *c, int differ, int top, int px_differ, const rstat *rs);
 
+/* Print (and write to --separating-scene's file) the scene that tells the n
+** mistakes names[] apart, all of them of the vertex stages' catalogue, or
+** with pixels_only the rasterizer's (dseparate.c); noted in the outcome. */
+void pt_diff_separate(const dctx *c, const char *const *names, size_t n, int pixels_only);
+
 /* Note in out the stage (a name, or "pixels") where the verdict says the
 ** traces go wrong first. */
 void pt_diff_outcome_stage(pt_diff_outcome *out, const char *stage);
@@ -271,6 +279,16 @@ int pt_diff_check_raster(dctx *c, rstat *rs);
 ** both named: more than one is "ambiguous", never the usual one alone for a
 ** student who made the other.  This function can't fail. */
 size_t pt_diff_raster_named(const rstat *rs, size_t named[PT_NRASTER_MISTAKES]);
+
+/* The rasterizer run again (as the raster check runs it) on the segment
+** whose rounded ends are ends[] = X0 Y0 X1 Y1 in a w x h viewport, each
+** step's pixel from to_vp (NULL: the viewport stage), the loop's last step
+** moved by steps (-1, 0, +1): sig[0] a hash of its pixels (viewport
+** coordinates, step order), sig[1] of its clip records (none with steps).
+** Returns 0, 1 when steps is not replayed (a segment that long), -1 when out
+** of memory. */
+int pt_diff_replay_sig(const int64_t ends[4], int w, int h, pt_raster_vp to_vp, int steps,
+                       uint64_t sig[2]);
 
 /* Print the raster check's details for the first differing segment. */
 void pt_diff_report_raster(const dctx *c, const rstat *rs);

@@ -32,6 +32,9 @@ typedef struct pt_diff_outcome {
     size_t px_missing, px_extra; /* lit pixels EXPECTED has and ACTUAL lacks, and
                                  ** the other way */
     size_t img_differ, img_total;       /* images: differing pixels, of these */
+    int sep;                     /* 1: a separating scene was printed (the
+                                 ** verdict is ambiguous), -1: --separating-scene's
+                                 ** file could not be written, 0: neither */
 } pt_diff_outcome;
 
 /* pipetrace diff with argv (argv[0] "diff"), its findings into *out (zeroed

@@ -266,6 +266,36 @@ static int replay(const int64_t ends[4], int w, int h, pt_raster_vp to_vp, int s
     return out->px.oom ? -1 : 0;
 }
 
+/* FNV-1a over the n pairs of l, from h. */
+static uint64_t plist_hash(const plist *l, uint64_t h)
+{
+    size_t q;
+    int k, b;
+
+    for (q = 0; q < l->n; q++)
+        for (k = 0; k < 2; k++)
+            for (b = 0; b < 64; b += 8) {
+                h ^= (uint64_t)l->p[q][k] >> b & 0xff;
+                h *= UINT64_C(0x100000001b3);
+            }
+    return h;
+}
+
+int pt_diff_replay_sig(const int64_t ends[4], int w, int h, pt_raster_vp to_vp, int steps,
+                       uint64_t sig[2])
+{
+    replayed r;
+    int rc;
+
+    memset(&r, 0, sizeof r);
+    rc = replay(ends, w, h, to_vp, steps, &r);
+    sig[0] = plist_hash(&r.px, UINT64_C(0xcbf29ce484222325));
+    sig[1] = plist_hash(&r.cl, UINT64_C(0xcbf29ce484222325));
+    free(r.px.p);
+    free(r.cl.p);
+    return rc;
+}
+
 /* 1 when the pixels b are the pixels a less the offset ul: setPixelVP
 ** without the offset, where the way back (fb_to_vp) takes ul off again. */
 static int eq_less(const plist *a, const plist *b, pt_pix ul)
@@ -707,6 +737,11 @@ void pt_diff_report_raster(const dctx *c, const rstat *rs)
                                 "below the viewport, which this trace does not tell apart.",
                                 pt_raster_mistakes[named[j]].name, pt_raster_mistakes[named[k]].name);
         pt_diff_para("  ", sb.b);
+        {
+            const char *names[PT_NRASTER_MISTAKES];
+            for (k = 0; k < n; k++) names[k] = pt_raster_mistakes[named[k]].name;
+            pt_diff_separate(c, names, n, 1);
+        }
         return;
     }
     k = named[0];

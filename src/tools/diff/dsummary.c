@@ -403,6 +403,8 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
                 for (k = 0; k < nn; k++)
                     pt_diff_add(&s, "%s%s", k ? " or " : "", pt_raster_mistakes[named[k]].name);
                 pt_diff_add(&s, " (each reproduces ACTUAL's pixels in every segment that differs).");
+                if (c->o->out->sep) pt_diff_add(&s, " The separating scene printed above tells "
+                                                "them apart.");
             } else if (best < PT_NRASTER_MISTAKES) {
                 pt_diff_add(&s, " No known mistake of the rasterizer explains every segment: %s "
                             "reproduces %zu of the %zu, so it does NOT explain them.",
