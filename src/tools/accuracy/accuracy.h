@@ -67,6 +67,7 @@
 **   w = pt_acc_work_make(&r, row);  pt_acc_stage_pass(w, row);   one stage, timed
 **   pt_acc_work_free(w);  pt_acc_raster_pass(&r, &n);       the rasterizer, timed
 **   pt_acc_run_free(&r);  pt_acc_run_free(&ref);
+** or, memory bounded by a block, not by the scene: pt_acc_block below.
 ** Nothing here prints; only allocation can fail.
 */
 #ifndef PT_ACCURACY_H

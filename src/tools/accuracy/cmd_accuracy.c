@@ -15,21 +15,30 @@
 ** below); the matrix camera has no 2.001, so that choice is only said not to
 ** apply.
 **
-** Timing, per stage: a pass runs one stage's function (the one the error
-** runs' journeys call) on every used vertex's inputs, prepared beforehand
-** from the run's journeys (pt_acc_work; matrix camera, ndc .. index: the
-** vertices inside the view volume); the rasterizer's pass draws every
-** segment (matrix camera: clipping included).  Passes are batched so that
-** one clock reading spans at least BATCH_SECONDS, and batches repeat until
-** they took MIN_SECONDS; that is one measurement, and the median of --repeat
-** of them is shown.  Without --no-time the time columns and the time table
-** vary from run to run, everything else never.
+** A block at a time: each run goes through the scene in blocks
+** (pt_acc_block: PT_ACC_BLOCK used vertices, then segments, model by model),
+** beside the reference's same block; each block is compared, timed and
+** freed before the next.  The errors add up in the order a whole-scene run
+** adds them, so the output is byte for byte what pt_acc_compare() of whole
+** runs gives.
 **
-** Memory: the reference run is kept to the end, each other run only while it
-** is compared and timed; a run keeps its image's pixels once each (overdraw
-** costs nothing), at most PT_ACC_MAXPIX of them.  The environment variable
-** PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that a test
-** reaches it with a small scene (docs/limits.md).
+** Timing, per stage: a pass runs one stage's function (the one the error
+** runs' journeys call) on the block's used vertices' inputs, prepared from
+** the block run's journeys (pt_acc_work; matrix camera, ndc .. index: the
+** vertices inside the view volume); the rasterizer's pass draws the block's
+** segments (matrix camera: clipping included).  Passes are batched so that
+** one clock reading spans at least the block's share of BATCH_SECONDS, and
+** batches repeat until they took its share of MIN_SECONDS; the seconds and
+** the items are summed over the blocks, which is one measurement, and the
+** median of --repeat of them is shown.  Without --no-time the time columns
+** and the time table vary from run to run, everything else never.
+**
+** Memory: a block of each run at a time, beside the reference's; the used
+** flags (a byte a vertex); each run's image, the reference's to the end,
+** each other run's only while it is made and compared: each pixel once
+** (overdraw costs nothing), at most PT_ACC_MAXPIX of them.  The environment
+** variable PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that
+** a test reaches it with a small scene (docs/limits.md).
 */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -111,9 +120,10 @@ static int run_applies(const layout *L, int k)
 typedef struct study {
     const pt_scene *s;
     layout rows;                 /* the scene's pipeline's */
-    pt_acc_run run[NRUNS];       /* the reference's kept; each other run only
-                                 ** while it is compared and timed (then all
-                                 ** zero); no RUN_TWO where no row has 2.001 */
+    pt_acc_run run[NRUNS];       /* each run's summary (counts, image): the
+                                 ** reference's kept, each other run's only
+                                 ** while it is compared (then all zero); no
+                                 ** RUN_TWO where no row has 2.001 */
     pt_acc_err err[NRUNS][PT_ACC_MAXROWS];
     timing t[NRUNS];             /* RUN_TWO: pixel and viewport; _RE runs: raster */
     int timed;
