@@ -62,7 +62,7 @@ shapes-cli       1 sh tests/cli/shapes.sh $B/pipetrace
 install          1 sh tests/cli/install.sh $B/pipetrace
 export           4 sh tests/cli/export.sh $B/pipetrace
 cli              1 sh tests/cli/cli.sh $B/pipetrace
-hostile         12 sh tests/cli/hostile.sh $B/pipetrace
+hostile         35 sh tests/cli/hostile.sh $B/pipetrace
 outputs          1 sh tests/cli/outputs.sh $B/pipetrace
 diff            45 sh tests/teach/diff.sh $B/pipetrace
 diff79           3 sh tests/teach/diff79.sh $B/pipetrace

@@ -69,13 +69,13 @@ int pt_cli_outputs_objs(const pt_scene *s, const char *const *out, const char *c
                         int n);
 
 /* The most vertices and segments, each summed over a scene's models, that
-** the commands keeping every vertex's journey in memory take (accuracy, and
-** journey on the course's renderers 7 and 9: some 2 KB a vertex, so about
-** 200 MB at the cap); beyond, they refuse the scene at once
-** (docs/limits.md).  The render command, why and journey (classic and matrix
-** cameras) have no such cap: they keep no journey but those they show.
-** (journey and accuracy also cap the pixels they keep: PT_JOURNEY_MAXPIX,
-** PT_ACC_MAXPIX.) */
+** a command keeping every vertex's journey in memory takes (journey on the
+** course's renderers 7 and 9: some 2 KB a vertex, so about 200 MB at the
+** cap); beyond, it refuses the scene at once (docs/limits.md).  The render
+** command, why, journey (classic and matrix cameras) and accuracy (a block
+** of PT_ACC_BLOCK vertices or segments at a time) have no such cap: they keep
+** no journey but those they show.  (journey and accuracy also cap the pixels
+** they keep: PT_JOURNEY_MAXPIX, PT_ACC_MAXPIX.) */
 #define PT_CLI_KEEP_VERTICES 100000
 #define PT_CLI_KEEP_SEGMENTS 400000
 

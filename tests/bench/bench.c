@@ -536,8 +536,9 @@ static void tool_memory_rows(char *pt)
             "render --image", "why 400 300", "journey --vertex 1 --image",
             "journey --vertex 1 --svg", "accuracy --no-time"};
         printf("  shape sphere 1 %s:\n", sph[k].shape);
-        for (i = 0; i < (k ? 4 : 5); i++) {    /* the big one: past accuracy's */
-            long rss;                           /* cap of vertices */
+        for (i = 0; i < 5; i++) {
+            long rss;
+
             spawn(runs[i], "/dev/null", &rss, NULL);
             printf("    %-30s %8.1f\n", what[i], (double)rss / 1024);
         }

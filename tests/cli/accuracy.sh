@@ -242,4 +242,26 @@ PIPETRACE_ACC_MAXPIX=0 acc "$tmp/big.scene" --no-time
 check "acc-sh-7.3 PIPETRACE_ACC_MAXPIX=0: a usage error" \
     test "$rc" = 1 -a -n "$(grep 'PIPETRACE_ACC_MAXPIX takes 1 to 8000000, not 0' "$tmp/err")"
 
+# ---- a block at a time (PT_ACC_BLOCK vertices or segments): the same bytes
+# as when every journey was kept, on scenes of several blocks per model, each
+# pipeline (tests/data/accblock/*.out: that output, stored)
+for d in classic matrix r7 r9; do
+    acc tests/data/accblock/$d.scene --no-time
+    check "acc-sh-8.1 accblock/$d.scene (4 blocks of vertices, 7 of segments): the output of the whole-scene runs, byte for byte" \
+        sh -c 'test "$1" = 0 && cmp -s "$2" "$3"' _ "$rc" "$tmp/out" tests/data/accblock/$d.out
+done
+acc tests/data/accblock/classic.scene --repeat 1
+check "acc-sh-8.2 ... timed: every stage and the rasterizer a time, summed over the blocks" \
+    test "$rc" = 0 -a "$(awk '/^stage +float +double/ { t = 1; next } t && NF == 4 && $2 + 0 > 0 && $3 + 0 > 0 && $4 + 0 > 0 { n++ } t && NF == 0 { t = 0 } END { print n + 0 }' "$tmp/out")" = 8
+# the image is kept across the blocks of segments: 4096 segments lighting
+# half a row, then one lighting the other half, 3999 pixels in all
+awk 'BEGIN { print "framebuffer 4000 4"; print "model m"; print "v -2 0 -2"; print "v 0 0 -2";
+             print "v 2 0 -2"; for (i = 0; i < 4096; i++) print "l 1 2"; print "l 2 3" }' > "$tmp/half.scene"
+PIPETRACE_ACC_MAXPIX=3998 acc "$tmp/half.scene" --no-time
+check "acc-sh-8.3 two blocks of segments lighting 3999 pixels together over a cap of 3998: exit 2" \
+    test "$rc" = 2 -a -n "$(grep 'lights more than 3998 pixels' "$tmp/err")"
+PIPETRACE_ACC_MAXPIX=4000 acc "$tmp/half.scene" --no-time
+check "acc-sh-8.4 ... under a cap of 4000: the 3999 pixels of both blocks in one image" \
+    test "$rc" = 0 -a -n "$(grep '4097 segments, 3999 pixels in the reference image' "$tmp/out")"
+
 report

@@ -270,7 +270,7 @@ static void raster_mseg(const pt_acc_run *r, size_t k, size_t q, const pt_acc_dd
     const pt_acc_mjourney *a = &r->mj[k][sg->a], *b = &r->mj[k][sg->b];
 
     pt_acc_mseg_of(r->cam, a, b, g);
-    if (!g->visible) return;                        /* culled */
+    if (!g->visible || !o) return;                  /* culled, or not drawn */
     ops[r->arith]->raster(g->made[0] ? g->end[0].pp : a->t.pp,
                           g->made[1] ? g->end[1].pp : b->t.pp, r->choices, o);
 }
@@ -320,8 +320,9 @@ static void rv_segment(const pt_acc_run *r, size_t k, size_t q, const pt_acc_sct
 }
 
 /* Every segment of every model, in file order; *rgb (when not NULL) is set to
-** each model's color before its segments.  Matrix camera: each segment's
-** clipping goes to r->seg when keep is set (else nowhere). */
+** each model's color before its segments.  Matrix camera, renderers 7 and 9:
+** each segment's clipping goes to r->seg (r->rseg) when keep is set (else
+** nowhere); o NULL: clipped only, nothing drawn. */
 static void raster_scene(const pt_acc_run *r, const pt_acc_dda *o, uint32_t *rgb, int keep)
 {
     size_t k, q;
@@ -341,9 +342,9 @@ static void raster_scene(const pt_acc_run *r, const pt_acc_dda *o, uint32_t *rgb
                 pt_acc_rvseg *gp = keep ? &r->rseg[k][q] : &rg;
 
                 rv_segment(r, k, q, &c, gp);
-                if (gp->keep) ops[r->arith]->raster(gp->end[0].pp, gp->end[1].pp, r->choices, o);
+                if (gp->keep && o) ops[r->arith]->raster(gp->end[0].pp, gp->end[1].pp, r->choices, o);
             } else if (r->cam) raster_mseg(r, k, q, o, keep ? &r->seg[k][q] : &g);
-            else ops[r->arith]->raster(r->j[k][m->seg[q].a].pp,
+            else if (o) ops[r->arith]->raster(r->j[k][m->seg[q].a].pp,
                                        r->j[k][m->seg[q].b].pp, r->choices, o);
     }
 }
@@ -480,7 +481,7 @@ static int err_pix(pt_acc_err *e, pt_pix v, pt_pix ref)
 ** pixel written once with the last colour written there (a hash table by
 ** index, open addressing, at most half full), the writes counted, and the
 ** DDA's error against the exact line. */
-typedef struct collect {
+struct pt_acc_image {
     uint32_t rgb;                /* the current model's color */
     const pt_scene *s;
     pt_acc_pixel *tab;           /* cap slots; idx -1: empty (a pixel inside the
@@ -489,8 +490,9 @@ typedef struct collect {
     size_t max;                  /* the most pixels the image may have */
     uint64_t writes;             /* pixels written, overdraw included */
     int oom;                     /* 1: out of memory; 2: past max pixels */
-    pt_acc_err *line;
-} collect;
+    pt_acc_err line;             /* the DDA's y against the exact line */
+};
+typedef struct pt_acc_image collect;
 
 /* The slot of idx in a table of cap slots: where it is, or the empty slot
 ** where it goes. */
@@ -543,7 +545,7 @@ static void collect_step(void *ud, const pt_acc_line *ln, int64_t s, double y)
 {
     collect *c = ud;
 
-    (void)err_add(c->line, y, pt_acc_line_y(ln, s).hi);
+    (void)err_add(&c->line, y, pt_acc_line_y(ln, s).hi);
 }
 
 static int by_idx(const void *pa, const void *pb)
@@ -626,16 +628,62 @@ static int run_alloc(pt_acc_run *r)
     return 0;
 }
 
-int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices)
+/* The used flags of s: used[k][v] is 1 when a segment of model k uses vertex
+** v (renderers 7, 9: none of a hidden model); all_used: every vertex of a
+** model drawn.  Returns NULL when out of memory. */
+static unsigned char **used_make(const pt_scene *s, int all_used)
 {
-    return pt_acc_run_make_max(r, s, a, choices, PT_ACC_MAXPIX);
+    unsigned char **used = calloc(s->nmodels ? s->nmodels : 1, sizeof *used);
+    size_t k, q;
+
+    for (k = 0; used && k < s->nmodels; k++) {
+        const pt_model *m = &s->models[k];
+
+        if ((used[k] = calloc(m->nv ? m->nv : 1, 1)) == NULL) {
+            pt_acc_used_free(s, used);
+            return NULL;
+        }
+        if (rv_hidden(s, k)) continue;
+        if (all_used) memset(used[k], 1, m->nv);
+        else
+            for (q = 0; q < m->nseg; q++) used[k][m->seg[q].a] = used[k][m->seg[q].b] = 1;
+    }
+    return used;
 }
 
-int pt_acc_run_make_max(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices,
-                        size_t maxpix)
+unsigned char **pt_acc_used_make(const pt_scene *s)
 {
-    size_t k, q, n;
-    collect c;
+    return used_make(s, 0);
+}
+
+void pt_acc_used_free(const pt_scene *s, unsigned char **used)
+{
+    size_t k;
+
+    for (k = 0; used && k < s->nmodels; k++) free(used[k]);
+    free(used);
+}
+
+/* The DDA's callbacks into c, for arithmetic a. */
+static void dda_of(pt_acc_dda *o, const pt_scene *s, pt_arith a, collect *c)
+{
+    o->pixel = collect_pixel;
+    o->step = a == PT_ARITH_DD ? NULL : collect_step;  /* the reference is the line */
+    o->ud = c;
+    o->w = s->vp_w;
+    o->h = s->vp_h;
+    o->to_vp = pt_pipeline_ref(pt_scene_pipeline(s), PT_STAGE_VIEWPORT) ? ptref_pixel2viewport
+                                                                  : pt_scene_pipeline(s)->to_viewport;
+}
+
+/* Run scene s in arithmetic a into *r: every used vertex's journey (all_used:
+** every vertex's), then the segments clipped and, when c is not NULL, drawn
+** into c (c->rgb: the colour).  Returns 0, or -1 when out of memory, -2 when
+** c holds more than its pixels (then *r is empty). */
+static int run_fill(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices,
+                    int all_used, collect *c)
+{
+    size_t k, q;
     pt_acc_dda o;
 
     memset(r, 0, sizeof *r);
@@ -644,30 +692,15 @@ int pt_acc_run_make_max(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned c
     r->choices = a == PT_ARITH_DD ? 0 : choices;
     r->line.real = 1;
     if (run_alloc(r) != 0) { pt_acc_run_free(r); return -1; }
-    for (k = 0; k < s->nmodels; k++) {
-        const pt_model *m = &s->models[k];
-
-        r->used[k] = calloc(m->nv ? m->nv : 1, 1);
-        if (!r->used[k]) { pt_acc_run_free(r); return -1; }
-        for (q = 0; q < m->nseg && !rv_hidden(s, k); q++)
-            r->used[k][m->seg[q].a] = r->used[k][m->seg[q].b] = 1;
-        for (q = 0; q < m->nv; q++) r->nused += r->used[k][q];
-    }
+    free(r->used);
+    if ((r->used = used_make(s, all_used)) == NULL) { pt_acc_run_free(r); return -1; }
+    for (k = 0; k < s->nmodels; k++)
+        for (q = 0; q < s->models[k].nv; q++) r->nused += r->used[k][q];
     pt_acc_vertex_pass(r);
 
-    memset(&c, 0, sizeof c);
-    c.s = s;
-    c.max = maxpix;
-    c.line = &r->line;
-    o.pixel = collect_pixel;
-    o.step = a == PT_ARITH_DD ? NULL : collect_step;  /* the reference is the line */
-    o.ud = &c;
-    o.w = s->vp_w;
-    o.h = s->vp_h;
-    o.to_vp = pt_pipeline_ref(pt_scene_pipeline(s), PT_STAGE_VIEWPORT) ? ptref_pixel2viewport
-                                                                  : pt_scene_pipeline(s)->to_viewport;
-    raster_scene(r, &o, &c.rgb, 1);
-    if (c.oom) { free(c.tab); pt_acc_run_free(r); return c.oom == 2 ? -2 : -1; }
+    if (c) dda_of(&o, s, a, c);
+    raster_scene(r, c ? &o : NULL, c ? &c->rgb : NULL, 1);
+    if (c && c->oom) { int oom = c->oom; pt_acc_run_free(r); return oom == 2 ? -2 : -1; }
     for (k = 0; r->seg && k < s->nmodels; k++)
         for (q = 0; q < s->models[k].nseg; q++) {
             r->made += (uint64_t)(r->seg[k][q].made[0] + r->seg[k][q].made[1]);
@@ -680,14 +713,139 @@ int pt_acc_run_make_max(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned c
             r->made += (uint64_t)(g->near < 0) + (uint64_t)g->ncuts;
             r->culled += !g->keep;
         }
-    r->pixels = c.writes;
-    r->img = malloc((c.n ? c.n : 1) * sizeof *r->img);
-    if (!r->img) { free(c.tab); pt_acc_run_free(r); return -1; }
-    for (q = n = 0; q < c.cap; q++)
-        if (c.tab[q].idx != -1) r->img[n++] = c.tab[q];
+    return 0;
+}
+
+pt_acc_image *pt_acc_image_make(const pt_scene *s, size_t maxpix)
+{
+    collect *c = calloc(1, sizeof *c);
+
+    if (!c) return NULL;
+    c->s = s;
+    c->max = maxpix;
+    c->line.real = 1;
+    return c;
+}
+
+void pt_acc_image_free(pt_acc_image *c)
+{
+    if (!c) return;
+    free(c->tab);
+    free(c);
+}
+
+int pt_acc_image_take(pt_acc_image *c, pt_acc_run *r)
+{
+    size_t q, n;
+
+    free(r->img);
+    r->pixels = c->writes;
+    r->line = c->line;
+    r->img = malloc((c->n ? c->n : 1) * sizeof *r->img);
+    if (!r->img) return -1;
+    for (q = n = 0; q < c->cap; q++)
+        if (c->tab[q].idx != -1) r->img[n++] = c->tab[q];
     if (n) qsort(r->img, n, sizeof *r->img, by_idx);
     r->nimg = n;
-    free(c.tab);
+    return 0;
+}
+
+int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices)
+{
+    return pt_acc_run_make_max(r, s, a, choices, PT_ACC_MAXPIX);
+}
+
+int pt_acc_run_make_max(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices,
+                        size_t maxpix)
+{
+    collect *c = pt_acc_image_make(s, maxpix);
+    int rc = c ? run_fill(r, s, a, choices, 0, c) : -1;
+
+    if (rc == 0 && pt_acc_image_take(c, r) != 0) {
+        pt_acc_run_free(r);
+        rc = -1;
+    }
+    pt_acc_image_free(c);
+    return rc;
+}
+
+int pt_acc_run_block(pt_acc_run *r, const pt_acc_block *b, pt_arith a, unsigned choices,
+                     pt_acc_image *img)
+{
+    return run_fill(r, &b->s, a, choices, 1, b->segs ? img : NULL);
+}
+
+/* ===== a scene in blocks ===== */
+
+int pt_acc_block_init(pt_acc_block *b, const pt_scene *s, unsigned char *const *used)
+{
+    size_t k, v;
+
+    memset(b, 0, sizeof *b);
+    b->whole = s;
+    b->used = used;
+    b->v = malloc(2 * PT_ACC_BLOCK * sizeof *b->v);
+    b->seg = malloc(PT_ACC_BLOCK * sizeof *b->seg);
+    if (!b->v || !b->seg) { pt_acc_block_free(b); return -1; }
+    for (k = 0; k < s->nmodels; k++) {
+        size_t n = 0;
+
+        for (v = 0; v < s->models[k].nv; v++) n += used[k][v];
+        b->nused += n;
+        if (n) b->nseg += s->models[k].nseg;
+    }
+    return 0;
+}
+
+void pt_acc_block_free(pt_acc_block *b)
+{
+    free(b->v);
+    free(b->seg);
+    b->v = NULL;
+    b->seg = NULL;
+}
+
+int pt_acc_block_next(pt_acc_block *b)
+{
+    const pt_scene *s = b->whole;
+
+    for (; b->k < s->nmodels; b->k++, b->pos = 0, b->segs = 0) {
+        const pt_model *m = &s->models[b->k];
+        size_t n = 0, q;
+
+        b->m = *m;
+        b->s = *s;
+        b->s.models = &b->m;
+        b->s.nmodels = 1;
+        b->m.v = b->v;
+        if (!b->segs) {                             /* used vertices, in order */
+            for (; b->pos < m->nv && n < PT_ACC_BLOCK; b->pos++)
+                if (b->used[b->k][b->pos]) b->v[n++] = m->v[b->pos];
+            if (n) {
+                b->m.nv = n;
+                b->m.seg = NULL;
+                b->m.nseg = 0;
+                return 1;
+            }
+            b->segs = 1;
+            b->pos = 0;
+            for (q = 0; q < m->nv && !b->used[b->k][q]; q++) {}
+            if (q == m->nv) continue;               /* nothing drawn */
+        }
+        for (; b->pos < m->nseg && n < PT_ACC_BLOCK; b->pos++, n++) {   /* each end its own */
+            b->seg[n] = m->seg[b->pos];
+            b->seg[n].a = (uint32_t)(2 * n);
+            b->seg[n].b = (uint32_t)(2 * n + 1);
+            b->v[2 * n] = m->v[m->seg[b->pos].a];
+            b->v[2 * n + 1] = m->v[m->seg[b->pos].b];
+        }
+        if (n) {
+            b->m.nv = 2 * n;
+            b->m.seg = b->seg;
+            b->m.nseg = n;
+            return 1;
+        }
+    }
     return 0;
 }
 
@@ -1227,73 +1385,90 @@ static void rv_end_err(pt_acc_err e[4], const pt_scene *s, const pt_acc_rvseg *a
     }
 }
 
-/* Renderers 7 and 9: every row of rows. */
+/* Renderers 7 and 9: every row of rows, model k's parts (PT_ACC_VERTICES:
+** its vertices' values; PT_ACC_SEGMENTS: its segments'). */
 static void rv_compare(const pt_acc_run *ref, const pt_acc_run *r, const pt_acc_rows *rows,
-                       pt_acc_err e[PT_ACC_MAXROWS])
+                       size_t k, unsigned parts, pt_acc_err e[PT_ACC_MAXROWS])
 {
     const pt_scene *s = r->s;
+    const pt_model *m = &s->models[k];
     int row, n, pix = pt_acc_row_of(rows, PT_STAGE_PIXEL);
-    size_t k, v, q;
+    size_t v, q;
 
-    for (row = 0; row + 1 < rows->nrows; row++) e[row].of = 0;     /* counted as they come */
+    if (rv_hidden(s, k)) return;
     for (row = 0; row + 1 < rows->nrows; row++) {
         const pt_acc_rowinfo *ri = &rows->row[row];
 
-        for (k = 0; k < s->nmodels; k++) {
-            const pt_model *m = &s->models[k];
+        if (ri->fn == PT_ACC_FN_RV) {
+            for (v = 0; parts & PT_ACC_VERTICES && v < m->nv; v++) {
+                const pt_dd *a, *b;
 
-            if (rv_hidden(s, k)) continue;
-            if (ri->fn == PT_ACC_FN_RV) {
-                for (v = 0; v < m->nv; v++) {
-                    const pt_dd *a, *b;
+                if (!r->used[k][v]) continue;
+                a = rv_value(&r->rj[k][v], ri->sub, &n);
+                b = rv_value(&ref->rj[k][v], ri->sub, &n);
+                e[row].of++;
+                e[row].differ += (uint64_t)rv_vals(&e[row], a, b, n);
+            }
+            if (ri->sub != PT_ACC_RV_NFRONT - 1 || !(parts & PT_ACC_SEGMENTS)) continue;
+            for (q = 0; q < m->nseg; q++) {        /* image: the near clip's points */
+                const pt_acc_rvseg *ga = &r->rseg[k][q], *gb = &ref->rseg[k][q];
+                int same = ga->near < 0 && gb->near < 0 && ga->nc.off == gb->nc.off;
 
-                    if (!r->used[k][v]) continue;
-                    a = rv_value(&r->rj[k][v], ri->sub, &n);
-                    b = rv_value(&ref->rj[k][v], ri->sub, &n);
-                    e[row].of++;
-                    e[row].differ += (uint64_t)rv_vals(&e[row], a, b, n);
-                }
-                if (ri->sub != PT_ACC_RV_NFRONT - 1) continue;
-                for (q = 0; q < m->nseg; q++) {    /* image: the near clip's points */
-                    const pt_acc_rvseg *ga = &r->rseg[k][q], *gb = &ref->rseg[k][q];
-                    int same = ga->near < 0 && gb->near < 0 && ga->nc.off == gb->nc.off;
+                if (ga->near >= 0 && gb->near >= 0) continue;
+                e[row].of++;
+                e[row].differ += (uint64_t)rv_vals(&e[row], same ? ga->nip : NULL,
+                                                   same ? gb->nip : NULL, 2);
+            }
+        } else
+            for (q = 0; parts & PT_ACC_SEGMENTS && q < m->nseg; q++) {
+                const pt_acc_rvseg *ga = &r->rseg[k][q], *gb = &ref->rseg[k][q];
 
-                    if (ga->near >= 0 && gb->near >= 0) continue;
-                    e[row].of++;
-                    e[row].differ += (uint64_t)rv_vals(&e[row], same ? ga->nip : NULL,
-                                                       same ? gb->nip : NULL, 2);
-                }
-            } else
-                for (q = 0; q < m->nseg; q++) {
-                    const pt_acc_rvseg *ga = &r->rseg[k][q], *gb = &ref->rseg[k][q];
-
-                    if (ri->fn == PT_ACC_FN_RVNEAR) rv_near_err(&e[row], ga, gb);
-                    else if (ri->fn == PT_ACC_FN_RVCLIP) rv_clip_err(&e[row], ga, gb);
-                    else if (row == pix) rv_end_err(&e[pix], s, ga, gb);
-                }
-        }
+                if (ri->fn == PT_ACC_FN_RVNEAR) rv_near_err(&e[row], ga, gb);
+                else if (ri->fn == PT_ACC_FN_RVCLIP) rv_clip_err(&e[row], ga, gb);
+                else if (row == pix) rv_end_err(&e[pix], s, ga, gb);
+            }
     }
+}
+
+void pt_acc_compare_start(const pt_scene *s, pt_acc_err e[PT_ACC_MAXROWS])
+{
+    const pt_acc_rows *rows = pt_acc_scene_rows(s);
+    int row;
+
+    memset(e, 0, (size_t)rows->nrows * sizeof *e);
+    for (row = 0; row + 1 < rows->nrows; row++) e[row].real = rows->row[row].real;
+}
+
+void pt_acc_compare_part(const pt_acc_run *ref, const pt_acc_run *r, unsigned parts,
+                         pt_acc_err e[PT_ACC_MAXROWS])
+{
+    const pt_scene *s = r->s;
+    const pt_acc_rows *rows = pt_acc_scene_rows(s);
+    int row;
+    size_t k, v;
+
+    for (row = 0; !rows->rv && parts & PT_ACC_VERTICES && row + 1 < rows->nrows; row++)
+        if (rows->row[row].fn != PT_ACC_FN_TAIL) e[row].of += r->nused;  /* tails, rv: */
+    for (k = 0; k < s->nmodels; k++) {                             /* counted as they come */
+        if (rows->rv) { rv_compare(ref, r, rows, k, parts, e); continue; }
+        for (v = 0; parts & PT_ACC_VERTICES && v < s->models[k].nv; v++)
+            if (r->used[k][v]) vertex_err(e, ref, r, k, v);
+        if (r->seg && parts & PT_ACC_SEGMENTS) made_points(e, ref, r, k);
+    }
+}
+
+void pt_acc_compare_end(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS])
+{
+    int raster = pt_acc_scene_rows(r->s)->nrows - 1;
+
+    e[raster] = r->line;
+    e[raster].real = 1;
+    e[raster].differ = image_diff(ref, r, &e[raster].of);
 }
 
 void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS])
 {
-    const pt_scene *s = r->s;
-    const pt_acc_rows *rows = pt_acc_scene_rows(s);
-    int raster = rows->nrows - 1, row;
-    size_t k, v;
-
-    memset(e, 0, (size_t)(raster + 1) * sizeof *e);
-    for (row = 0; row < raster; row++) {
-        e[row].real = rows->row[row].real;
-        e[row].of = rows->row[row].fn == PT_ACC_FN_TAIL ? 0 : r->nused;  /* tails: */
-    }                                                               /* counted as they come */
-    if (rows->rv) rv_compare(ref, r, rows, e);
-    for (k = 0; !rows->rv && k < s->nmodels; k++) {
-        for (v = 0; v < s->models[k].nv; v++)
-            if (r->used[k][v]) vertex_err(e, ref, r, k, v);
-        if (r->seg) made_points(e, ref, r, k);
-    }
-    e[raster] = r->line;
-    e[raster].real = 1;
-    e[raster].differ = image_diff(ref, r, &e[raster].of);
+    pt_acc_compare_start(r->s, e);
+    pt_acc_compare_part(ref, r, PT_ACC_VERTICES | PT_ACC_SEGMENTS, e);
+    pt_acc_compare_end(ref, r, e);
 }

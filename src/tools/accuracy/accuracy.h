@@ -67,6 +67,7 @@
 **   w = pt_acc_work_make(&r, row);  pt_acc_stage_pass(w, row);   one stage, timed
 **   pt_acc_work_free(w);  pt_acc_raster_pass(&r, &n);       the rasterizer, timed
 **   pt_acc_run_free(&r);  pt_acc_run_free(&ref);
+** or, memory bounded by a block, not by the scene: pt_acc_block below.
 ** Nothing here prints; only allocation can fail.
 */
 #ifndef PT_ACCURACY_H
@@ -259,6 +260,83 @@ void pt_acc_run_free(pt_acc_run *r);
 ** the scene's camera (PT_ACC_NROWS, or PT_ACC_M_NROWS when the pipeline has matrices).  This
 ** function can't fail. */
 void pt_acc_compare(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS]);
+
+/* The same in three steps, for a run made a part at a time (pt_acc_block):
+** pt_acc_compare_start() empties e, pt_acc_compare_part() adds the parts
+** (PT_ACC_VERTICES, PT_ACC_SEGMENTS) of runs ref and r of one scene (a
+** block), model by model in order, each model's vertices before its
+** segments, pt_acc_compare_end() sets the rasterizer's row from the whole
+** runs' images.  Sums add in the order pt_acc_compare() adds them when the
+** blocks come in pt_acc_block_next()'s order.  These functions can't fail. */
+#define PT_ACC_VERTICES 1u
+#define PT_ACC_SEGMENTS 2u
+void pt_acc_compare_start(const pt_scene *s, pt_acc_err e[PT_ACC_MAXROWS]);
+void pt_acc_compare_part(const pt_acc_run *ref, const pt_acc_run *r, unsigned parts,
+                         pt_acc_err e[PT_ACC_MAXROWS]);
+void pt_acc_compare_end(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e[PT_ACC_MAXROWS]);
+
+/* ===== a scene in blocks: memory bounded by a block, not by the scene =====
+**
+** pt_acc_block_next() hands over a scene a block at a time, as a scene of
+** its own with one model (a copy of the model's, sharing all but its
+** vertices and segments): for each model in order, its used vertices
+** PT_ACC_BLOCK at a time, in order, with no segments; then its segments
+** PT_ACC_BLOCK at a time, in order, each with its own copy of both ends.
+** pt_acc_run_block() runs a block like pt_acc_run_make(), every vertex used,
+** and draws a block of segments into img, the image kept across blocks (its
+** pixels, at most maxpix, and the DDA's error: 16 to 32 bytes a pixel), which
+** pt_acc_image_take() hands to the whole run's summary.  What stays the size
+** of the scene: the used flags, a byte a vertex (pt_acc_used_make()).
+**   used = pt_acc_used_make(&s);  pt_acc_block_init(&b, &s, used);
+**   img = pt_acc_image_make(&s, maxpix);
+**   while (pt_acc_block_next(&b)) { pt_acc_run_block(&r, &b, a, 0, img); ...
+**       pt_acc_compare_part(...); pt_acc_run_free(&r); }
+**   pt_acc_image_take(img, &whole);  pt_acc_image_free(img);
+**   pt_acc_block_free(&b);  pt_acc_used_free(&s, used); */
+#define PT_ACC_BLOCK 4096
+
+typedef struct pt_acc_block {
+    pt_scene s;                  /* the block as a scene: models = &m, nmodels 1 */
+    pt_model m;                  /* model k's, with the block's v[] and seg[] */
+    unsigned segs;               /* 0: a block of vertices; 1: of segments */
+    size_t k, pos;               /* the model, and where the next block starts
+                                 ** in it (a vertex, or a segment) */
+    pt_vec3 *v;                  /* room for 2 * PT_ACC_BLOCK vertices; owned */
+    pt_segment *seg;             /* room for PT_ACC_BLOCK segments; owned */
+    const pt_scene *whole;       /* the scene; not owned */
+    unsigned char *const *used;  /* its used flags; not owned */
+    uint64_t nused, nseg;        /* the scene's used vertices, and segments of
+                                 ** models with any */
+} pt_acc_block;
+
+/* used[k][v] of scene s: 1 when a drawn segment uses vertex v of model k.
+** Returns NULL when out of memory; pt_acc_used_free() frees (NULL is fine). */
+unsigned char **pt_acc_used_make(const pt_scene *s);
+void pt_acc_used_free(const pt_scene *s, unsigned char **used);
+
+/* Start *b on scene s with its used flags (both must outlive b).  Returns 0,
+** or -1 when out of memory.  pt_acc_block_free() frees what b owns. */
+int pt_acc_block_init(pt_acc_block *b, const pt_scene *s, unsigned char *const *used);
+void pt_acc_block_free(pt_acc_block *b);
+
+/* The next block into b->s: returns 1, or 0 when there is none.  This
+** function can't fail. */
+int pt_acc_block_next(pt_acc_block *b);
+
+/* The image of a run made a block at a time.  make returns NULL when out of memory. */
+typedef struct pt_acc_image pt_acc_image;
+pt_acc_image *pt_acc_image_make(const pt_scene *s, size_t maxpix);
+void pt_acc_image_free(pt_acc_image *img);              /* NULL is fine */
+
+/* Move img's pixels (sorted), writes and the DDA's error into r's img,
+** nimg, pixels and line.  Returns 0, or -1 when out of memory. */
+int pt_acc_image_take(pt_acc_image *img, pt_acc_run *r);
+
+/* Run block b (every vertex of it used) in arithmetic a with choices; a
+** block of segments is drawn into img (NULL: clipped only).  Returns as
+** pt_acc_run_make_max() does; -2: img holds more than its pixels. */
+int pt_acc_run_block(pt_acc_run *r, const pt_acc_block *b, pt_arith a, unsigned choices,
+                     pt_acc_image *img);
 
 /* pt_acc_vertex_pass() computes every used vertex's journey again (into r->j
 ** or r->mj, the same values); pt_acc_raster_pass() rasterizes every segment

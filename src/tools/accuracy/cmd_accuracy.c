@@ -15,21 +15,30 @@
 ** below); the matrix camera has no 2.001, so that choice is only said not to
 ** apply.
 **
-** Timing, per stage: a pass runs one stage's function (the one the error
-** runs' journeys call) on every used vertex's inputs, prepared beforehand
-** from the run's journeys (pt_acc_work; matrix camera, ndc .. index: the
-** vertices inside the view volume); the rasterizer's pass draws every
-** segment (matrix camera: clipping included).  Passes are batched so that
-** one clock reading spans at least BATCH_SECONDS, and batches repeat until
-** they took MIN_SECONDS; that is one measurement, and the median of --repeat
-** of them is shown.  Without --no-time the time columns and the time table
-** vary from run to run, everything else never.
+** A block at a time: each run goes through the scene in blocks
+** (pt_acc_block: PT_ACC_BLOCK used vertices, then segments, model by model),
+** beside the reference's same block; each block is compared, timed and
+** freed before the next.  The errors add up in the order a whole-scene run
+** adds them, so the output is byte for byte what pt_acc_compare() of whole
+** runs gives.
 **
-** Memory: the reference run is kept to the end, each other run only while it
-** is compared and timed; a run keeps its image's pixels once each (overdraw
-** costs nothing), at most PT_ACC_MAXPIX of them.  The environment variable
-** PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that a test
-** reaches it with a small scene (docs/limits.md).
+** Timing, per stage: a pass runs one stage's function (the one the error
+** runs' journeys call) on the block's used vertices' inputs, prepared from
+** the block run's journeys (pt_acc_work; matrix camera, ndc .. index: the
+** vertices inside the view volume); the rasterizer's pass draws the block's
+** segments (matrix camera: clipping included).  Passes are batched so that
+** one clock reading spans at least the block's share of BATCH_SECONDS, and
+** batches repeat until they took its share of MIN_SECONDS; the seconds and
+** the items are summed over the blocks, which is one measurement, and the
+** median of --repeat of them is shown.  Without --no-time the time columns
+** and the time table vary from run to run, everything else never.
+**
+** Memory: a block of each run at a time, beside the reference's; the used
+** flags (a byte a vertex); each run's image, the reference's to the end,
+** each other run's only while it is made and compared: each pixel once
+** (overdraw costs nothing), at most PT_ACC_MAXPIX of them.  The environment
+** variable PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that
+** a test reaches it with a small scene (docs/limits.md).
 */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -111,9 +120,10 @@ static int run_applies(const layout *L, int k)
 typedef struct study {
     const pt_scene *s;
     layout rows;                 /* the scene's pipeline's */
-    pt_acc_run run[NRUNS];       /* the reference's kept; each other run only
-                                 ** while it is compared and timed (then all
-                                 ** zero); no RUN_TWO where no row has 2.001 */
+    pt_acc_run run[NRUNS];       /* each run's summary (counts, image): the
+                                 ** reference's kept, each other run's only
+                                 ** while it is compared (then all zero); no
+                                 ** RUN_TWO where no row has 2.001 */
     pt_acc_err err[NRUNS][PT_ACC_MAXROWS];
     timing t[NRUNS];             /* RUN_TWO: pixel and viewport; _RE runs: raster */
     int timed;
@@ -162,17 +172,22 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
-/* Nanoseconds per item (items per pass): the median over `repeat`
-** measurements of at least MIN_SECONDS each, each clock reading spanning at
-** least BATCH_SECONDS; NAN when a pass has no items. */
-static double measure(const job *jb, double items, int repeat)
+/* Measurements summed over the blocks: per repeat, seconds and items. */
+typedef struct clocked {
+    double sec[MAX_REPEAT], items[MAX_REPEAT];
+} clocked;
+
+/* Add frac (the block's share of the scene) of `repeat` measurements of the
+** job (items per pass) to *c: each of at least frac * MIN_SECONDS, each
+** clock reading spanning at least frac * BATCH_SECONDS.  Nothing when a pass
+** has no items. */
+static void measure(const job *jb, double items, int repeat, double frac, clocked *c)
 {
-    double v[MAX_REPEAT];
     uint64_t n = 1;
     int k;
 
-    if (!(items > 0)) return (double)NAN;
-    while (batch(jb, n) < BATCH_SECONDS && n < ((uint64_t)1 << 40)) n *= 2;
+    if (!(items > 0)) return;
+    while (batch(jb, n) < BATCH_SECONDS * frac && n < ((uint64_t)1 << 40)) n *= 2;
     for (k = 0; k < repeat; k++) {
         double sec = 0.0;
         uint64_t passes = 0;
@@ -180,48 +195,129 @@ static double measure(const job *jb, double items, int repeat)
         do {
             sec += batch(jb, n);
             passes += n;
-        } while (sec < MIN_SECONDS);
-        v[k] = sec * 1e9 / ((double)passes * items);
+        } while (sec < MIN_SECONDS * frac);
+        c->sec[k] += sec;
+        c->items[k] += (double)passes * items;
     }
+}
+
+/* Nanoseconds per item of c: the median over the repeats; NAN when none was
+** measured. */
+static double clocked_ns(const clocked *c, int repeat)
+{
+    double v[MAX_REPEAT];
+    int k;
+
+    if (!(c->items[0] > 0)) return (double)NAN;
+    for (k = 0; k < repeat; k++) v[k] = c->sec[k] * 1e9 / c->items[k];
     return median(v, repeat);
 }
 
-/* Time the rows of run r whose bit is set in rows: each stage alone over its
-** inputs (pt_acc_work), the rasterizer by its pass. */
-static void time_run(const study *st, const pt_acc_run *r, unsigned rows, int repeat,
-                     timing *t)
+/* 1 when row of L is computed on a block of segments (the rasterizer, the
+** clips of renderers 7 and 9 and their ends), 0: of vertices. */
+static int row_on_segments(const layout *L, int row)
+{
+    pt_acc_fn fn = L->t->row[row].fn;
+
+    return row == L->raster || fn == PT_ACC_FN_RVNEAR || fn == PT_ACC_FN_RVCLIP
+           || fn == PT_ACC_FN_RVEND;
+}
+
+/* Time the rows of block run r whose bit is set in rows and which a block of
+** its kind computes, adding to c[row]: each stage alone over its inputs
+** (pt_acc_work), the rasterizer by its pass. */
+static void time_block(const study *st, const pt_acc_run *r, int segs, unsigned rows,
+                       int repeat, double frac, clocked *c)
 {
     int row;
 
-    for (row = 0; row < PT_ACC_MAXROWS; row++) t->row[row] = (double)NAN;
     for (row = 0; row <= st->rows.raster; row++) {
         job jb = { NULL, row, r };
         uint64_t px = 0;
 
-        if (!(rows & 1u << row)) continue;
+        if (!(rows & 1u << row) || row_on_segments(&st->rows, row) != segs) continue;
         if (row == st->rows.raster) {
             pt_acc_raster_pass(r, &px);
-            t->row[row] = measure(&jb, (double)px, repeat);
+            measure(&jb, (double)px, repeat, frac, &c[row]);
             continue;
         }
         jb.w = pt_acc_work_make(r, row);
-        if (jb.w) t->row[row] = measure(&jb, (double)pt_acc_work_size(jb.w), repeat);
+        if (jb.w) measure(&jb, (double)pt_acc_work_size(jb.w), repeat, frac, &c[row]);
         pt_acc_work_free(jb.w);
     }
 }
 
-/* Time run k (st->run[k], made) on the rows its choices change. */
-static void time_one(study *st, int k, int repeat)
+/* The rows run k is timed on: those its choices change. */
+static unsigned timed_rows(const study *st, int k)
 {
     const layout *L = &st->rows;
     unsigned rows = 0;
     int row;
 
-    for (row = 0; row < L->nrows; row++)            /* the rows its choices change */
+    for (row = 0; row < L->nrows; row++)
         if (!run_of[k].choices || L->t->row[row].variants & run_of[k].choices)
             rows |= 1u << row;
-    if (rows) time_run(st, &st->run[k], rows, repeat, &st->t[k]);
-    st->timed = 1;
+    return rows;
+}
+
+/* Run k a block at a time (pt_acc_block), beside the reference's blocks:
+** each compared into st->err[k] and timed (unless no_time) as it comes,
+** then freed; the image kept whole into st->run[k] (the reference's to the
+** end, to compare the others' with).  Returns 0, or what
+** pt_acc_run_block() returns. */
+static int stream_run(study *st, int k, unsigned char *const *used, size_t maxpix,
+                      int repeat, int no_time)
+{
+    const pt_scene *s = st->s;
+    pt_acc_run *whole = &st->run[k], blk, ref;
+    pt_acc_block b;
+    pt_acc_image *img = pt_acc_image_make(s, maxpix);
+    clocked *c = calloc(PT_ACC_MAXROWS, sizeof *c);
+    unsigned rows = no_time ? 0 : timed_rows(st, k);
+    int rc = 0, row, cut = st->rows.t->mcam || st->rows.t->rv;  /* segments compared */
+
+    memset(whole, 0, sizeof *whole);
+    whole->s = s;
+    whole->arith = run_of[k].arith;
+    whole->choices = run_of[k].choices;
+    if (!img || !c || pt_acc_block_init(&b, s, used) != 0) {
+        pt_acc_image_free(img);
+        free(c);
+        return -1;
+    }
+    pt_acc_compare_start(s, st->err[k]);
+    while (rc == 0 && pt_acc_block_next(&b)) {
+        double frac = b.segs ? (double)b.m.nseg / (double)b.nseg
+                             : (double)b.m.nv / (double)b.nused;
+
+        int own = k == RUN_DD || (b.segs && !cut);   /* no reference block to compare */
+
+        rc = pt_acc_run_block(&blk, &b, run_of[k].arith, run_of[k].choices, img);
+        if (rc == 0 && !own && (rc = pt_acc_run_block(&ref, &b, PT_ARITH_DD, 0, NULL)) != 0)
+            pt_acc_run_free(&blk);
+        if (rc != 0) break;
+        if (k == RUN_DD || !own)
+            pt_acc_compare_part(own ? &blk : &ref, &blk,
+                                b.segs ? PT_ACC_SEGMENTS : PT_ACC_VERTICES, st->err[k]);
+        if (b.segs) {
+            whole->made += blk.made;
+            whole->culled += blk.culled;
+        } else whole->nused += blk.nused;
+        if (rows) time_block(st, &blk, (int)b.segs, rows, repeat, frac, c);
+        pt_acc_run_free(&blk);
+        if (!own) pt_acc_run_free(&ref);
+    }
+    if (rc == 0) rc = pt_acc_image_take(img, whole);
+    if (rc == 0) pt_acc_compare_end(&st->run[RUN_DD], whole, st->err[k]);
+    if (rows) {
+        for (row = 0; row < st->rows.nrows; row++)
+            if (rows & 1u << row) st->t[k].row[row] = clocked_ns(&c[row], repeat);
+        st->timed = 1;
+    }
+    pt_acc_block_free(&b);
+    pt_acc_image_free(img);
+    free(c);
+    return rc;
 }
 
 /* A run's time per vertex through every stage: the sum of its stages' (NAN
@@ -844,6 +940,7 @@ int pt_cmd_accuracy(int argc, char **argv)
     int k, repeat = 3, no_time = 0, rc = 0;
     size_t maxpix = PT_ACC_MAXPIX;
     study *st;
+    unsigned char **used;
     pt_scene s;
     char err[PT_ERRLEN];
     pt_cli_args ca = {"accuracy", usage, 0, NULL, NULL, 0};
@@ -881,8 +978,7 @@ int pt_cmd_accuracy(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
-    if (pt_cli_outputs_objs(&s, &svg, (const char *const[]){"--svg"}, 1) != 0
-        || pt_cli_keep_cap(&s, "accuracy") != 0) {
+    if (pt_cli_outputs_objs(&s, &svg, (const char *const[]){"--svg"}, 1) != 0) {
         pt_scene_free(&s);
         return PT_EXIT_INPUT;
     }
@@ -890,18 +986,17 @@ int pt_cmd_accuracy(int argc, char **argv)
     if (!st) { fputs("pipetrace accuracy: out of memory\n", stderr); pt_scene_free(&s); return PT_EXIT_INPUT; }
     st->s = &s;
     layout_of(&st->rows, &s);
-    /* one run at a time beside the reference: made, compared, timed, freed */
+    /* one run at a time beside the reference, a block at a time */
+    if ((used = pt_acc_used_make(&s)) == NULL) rc = -1;
     for (k = 0; k < NRUNS && rc == 0; k++) {
         int row;
 
         for (row = 0; row < PT_ACC_MAXROWS; row++) st->t[k].row[row] = (double)NAN;
         if (!run_applies(&st->rows, k)) continue;   /* no 2.001 to replace */
-        rc = pt_acc_run_make_max(&st->run[k], &s, run_of[k].arith, run_of[k].choices, maxpix);
-        if (rc != 0) break;
-        pt_acc_compare(&st->run[RUN_DD], &st->run[k], st->err[k]);
-        if (!no_time) time_one(st, k, repeat);
+        rc = stream_run(st, k, used, maxpix, repeat, no_time);
         if (k != RUN_DD) pt_acc_run_free(&st->run[k]);
     }
+    pt_acc_used_free(&s, used);
     if (rc == -2)
         fprintf(stderr, "pipetrace accuracy: %s lights more than %zu pixels; accuracy keeps "
                 "its image in memory and takes at most that many (docs/limits.md)\n", s.path,
