@@ -19,7 +19,9 @@
 #   - its image against the scene's, pipetrace diff --scene SCENE (the
 #     viewport's corner: a picture moved by (-x_ul, -y_ul) is the corner
 #     forgotten in setPixelVP, which the course's log cannot show), never
-#     name a mistake the student did not make;
+#     name a mistake the student did not make, nor the second mistake named
+#     behind a vertex stage's (the rasterizer replayed from ACTUAL's own end
+#     pixels);
 # every mistake of the catalogue a student made must be named alone, by the
 # diff of its trace or of its image, on at least one scene (known.txt: those no scene of the corpus can name, with the
 # reason); and pipetrace class on each scene's folder must give every student
@@ -31,7 +33,7 @@ data=tests/data/students
 known=$data/known.txt
 
 # ---- every diff, its verdict and names as one line per student and scene:
-# SCENE<TAB>STUDENT<TAB>VERDICT<TAB>NAME; NAME; ...<TAB>THE IMAGE'S NAME; ...
+# SCENE<TAB>STUDENT<TAB>VERDICT<TAB>NAME; NAME; ...<TAB>THE IMAGE'S NAME; ...<TAB>SECOND
 mkdir "$tmp/diff" "$tmp/img"
 for s in $(awk -F '\t' '$1 == "scene" { print $2 }' "$list"); do
     scene=$(awk -F '\t' -v n="$s" '$1 == "scene" && $2 == n { print $3 }' "$list")
@@ -69,10 +71,11 @@ for s in sorted(os.listdir(top)):
                 names = many.group(1).split(" or ")
             elif "More than one known mistake explains it" in last:
                 names = re.findall(r"explains all: (.+?) \(\w+ stage\), which", flat)
+        second = re.findall(r"Likely second mistake: (.+?) in the ", flat[:m.start()] if m else flat)
         path = os.path.join(img, s, who)
-        flat = " ".join(open(path, encoding="utf-8").read().split()) if os.path.exists(path) else ""
-        shown = re.findall(r"Likely mistake: (.+?): ", flat)
-        print("\t".join([s, who, verdict, "; ".join(names), "; ".join(shown)]))
+        image = " ".join(open(path, encoding="utf-8").read().split()) if os.path.exists(path) else ""
+        shown = re.findall(r"Likely mistake: (.+?): ", image)
+        print("\t".join([s, who, verdict, "; ".join(names), "; ".join(shown), "; ".join(second)]))
 EOF
 
 # ---- against the students' mistakes
@@ -104,7 +107,7 @@ for line in open(known, encoding="utf-8"):
         expected_fail[(f[0], f[1])] = f[2]
 named_alone = set()
 for line in open(diffs, encoding="utf-8"):
-    s, who, verdict, names, shown = line.rstrip("\n").split("\t")
+    s, who, verdict, names, shown, second = line.rstrip("\n").split("\t")
     names = names.split("; ") if names else []
     mine = truth[who]
     right = {a for m in mine for a in aliases(m) if m != "unknown"}
@@ -126,12 +129,14 @@ for line in open(diffs, encoding="utf-8"):
     elif names:
         print("check\tstudents-4 %s: ambiguous, and one of its mistakes among them (%s)\t%d"
               % (tag, " or ".join(names), any(n in right for n in names)))
-    for n in shown.split("; ") if shown else []:
-        print("check\tstudents-8 %s: its image names one of its mistakes (%s)\t%d"
-              % (tag, n, n in right))
-        for m in mine:
-            if n in aliases(m):
-                named_alone.add((who, m))
+    # the image's diff (--scene), and the second mistake behind a vertex stage's
+    for sid, what, got in (("students-8", "its image names", shown),
+                           ("students-9", "the second mistake named is", second)):
+        for n in got.split("; ") if got else []:
+            print("check\t%s %s: %s one of its mistakes (%s)\t%d" % (sid, tag, what, n, n in right))
+            for m in mine:
+                if n in aliases(m):
+                    named_alone.add((who, m))
 for who, mine in sorted(truth.items()):
     for m in mine:
         if m == "unknown":
@@ -170,7 +175,7 @@ for line in open(lst, encoding="utf-8"):
         if r is None or not r["image_pixels_differing"] or r["image_pixels_differing"] == "0":
             bad.append(f[1] + ": the corner forgotten, but its image agrees")
 for line in open(diffs, encoding="utf-8"):
-    s, who, verdict, names, shown = line.rstrip("\n").split("\t")
+    s, who, verdict, names, shown, second = line.rstrip("\n").split("\t")
     if s != scene:
         continue
     n += 1

@@ -665,4 +665,24 @@ check "diff-17.5 --scene of a viewport at (0, 0): nothing named" \
 "$exe" diff "$tmp/ul-want.ppm" "$tmp/ul-00.ppm" --scene "$tmp/none.scene" >"$tmp/out" 2>&1
 check "diff-17.6 --scene unreadable: exit 2" test $? = 2
 
+
+# ---- 18: a rasterizer's mistake behind a vertex stage's: the course's
+# renderer 4 with 2 for 2.001 and without the y flip (tests/data/students/),
+# its pixels replayed from its own end pixels with each viewport stage the
+# DDA asks
+"$exe" $data/offset.scene --all-stages --format jsonl --trace "$tmp/two-want.jsonl"
+for who in j-two-noflip j-twoint-nominus1 j-two; do
+    gzip -dc tests/data/students/offset/$who.log.gz > "$tmp/$who.log"
+done
+"$exe" diff --verdict "$tmp/two-want.jsonl" "$tmp/j-two-noflip.log" >"$tmp/out" 2>&1; rc=$?
+tr '\n' ' ' < "$tmp/out" | tr -s ' ' > "$tmp/flat"
+check "diff-18.1 2 for 2.001 and no y flip: exit 1 ($rc), the flip named as the second mistake" \
+    sh -c 'test "$2" = 1 && grep -qF "a second mistake. Likely second mistake: missing y flip in the viewport formula the rasterizer asks each step (s4), which from ACTUAL'"'"'s own end pixels draws ACTUAL'"'"'s pixels in every segment." "$1"' _ "$tmp/flat" "$rc"
+check "diff-18.1a ... the first mistake named in the verdict" grep -qF "Likely mistake: 2 instead of 2.001:" "$tmp/flat"
+for who in j-twoint-nominus1 j-two; do
+    "$exe" diff --verdict "$tmp/two-want.jsonl" "$tmp/$who.log" >"$tmp/out" 2>&1
+    check "diff-18.2 $who: its pixels a consequence of its vertices, no second mistake named" \
+        sh -c '! grep -q "second mistake" "$1"' _ "$tmp/out"
+done
+
 report
