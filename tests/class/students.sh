@@ -16,8 +16,14 @@
 #     trace can show it, which diff cannot know),
 #   - when it says "ambiguous", list one of the student's mistakes among
 #     the others;
-# every mistake of the catalogue a student made must be named alone on at
-# least one scene (known.txt: those no scene of the corpus can name, with the
+#   - its image against the scene's, pipetrace diff --scene SCENE (the
+#     viewport's corner: a picture moved by (-x_ul, -y_ul) is the corner
+#     forgotten in setPixelVP, which the course's log cannot show), never
+#     name a mistake the student did not make, nor the second mistake named
+#     behind a vertex stage's (the rasterizer replayed from ACTUAL's own end
+#     pixels);
+# every mistake of the catalogue a student made must be named alone, by the
+# diff of its trace or of its image, on at least one scene (known.txt: those no scene of the corpus can name, with the
 # reason); and pipetrace class on each scene's folder must give every student
 # the verdict and the mistake its diff gives (the CSV).
 exe=$1
@@ -27,25 +33,28 @@ data=tests/data/students
 known=$data/known.txt
 
 # ---- every diff, its verdict and names as one line per student and scene:
-# SCENE<TAB>STUDENT<TAB>VERDICT<TAB>NAME; NAME; ...
-mkdir "$tmp/diff"
+# SCENE<TAB>STUDENT<TAB>VERDICT<TAB>NAME; NAME; ...<TAB>THE IMAGE'S NAME; ...<TAB>SECOND
+mkdir "$tmp/diff" "$tmp/img"
 for s in $(awk -F '\t' '$1 == "scene" { print $2 }' "$list"); do
     scene=$(awk -F '\t' -v n="$s" '$1 == "scene" && $2 == n { print $3 }' "$list")
-    mkdir -p "$tmp/$s" "$tmp/diff/$s"
-    "$exe" "$scene" --all-stages --format jsonl --trace "$tmp/$s.jsonl"
+    mkdir -p "$tmp/$s" "$tmp/diff/$s" "$tmp/img/$s"
+    "$exe" "$scene" --all-stages --format jsonl --trace "$tmp/$s.jsonl" --image "$tmp/$s.ppm"
     for f in "$data/$s"/*.gz; do
         b=$(basename "$f" .gz)
         gzip -dc "$f" > "$tmp/$s/$b"
     done
     for f in "$tmp/$s"/*; do
-        case $f in *.ppm) continue ;; esac
         who=$(basename "$f"); who=${who%.*}
+        case $f in *.ppm)
+            "$exe" diff --scene "$scene" "$tmp/$s.ppm" "$f" > "$tmp/img/$s/$who" 2>&1
+            continue ;;
+        esac
         "$exe" diff --verdict "$tmp/$s.jsonl" "$f" > "$tmp/diff/$s/$who" 2>&1
     done
 done
-python3 - "$tmp/diff" > "$tmp/diffs" <<'EOF'
+python3 - "$tmp/diff" "$tmp/img" > "$tmp/diffs" <<'EOF'
 import os, re, sys
-top = sys.argv[1]
+top, img = sys.argv[1:]
 for s in sorted(os.listdir(top)):
     for who in sorted(os.listdir(os.path.join(top, s))):
         flat = " ".join(open(os.path.join(top, s, who), encoding="utf-8").read().split())
@@ -62,7 +71,11 @@ for s in sorted(os.listdir(top)):
                 names = many.group(1).split(" or ")
             elif "More than one known mistake explains it" in last:
                 names = re.findall(r"explains all: (.+?) \(\w+ stage\), which", flat)
-        print("\t".join([s, who, verdict, "; ".join(names)]))
+        second = re.findall(r"Likely second mistake: (.+?) in the ", flat[:m.start()] if m else flat)
+        path = os.path.join(img, s, who)
+        image = " ".join(open(path, encoding="utf-8").read().split()) if os.path.exists(path) else ""
+        shown = re.findall(r"Likely mistake: (.+?): ", image)
+        print("\t".join([s, who, verdict, "; ".join(names), "; ".join(shown), "; ".join(second)]))
 EOF
 
 # ---- against the students' mistakes
@@ -94,7 +107,7 @@ for line in open(known, encoding="utf-8"):
         expected_fail[(f[0], f[1])] = f[2]
 named_alone = set()
 for line in open(diffs, encoding="utf-8"):
-    s, who, verdict, names = line.rstrip("\n").split("\t")
+    s, who, verdict, names, shown, second = line.rstrip("\n").split("\t")
     names = names.split("; ") if names else []
     mine = truth[who]
     right = {a for m in mine for a in aliases(m) if m != "unknown"}
@@ -116,6 +129,14 @@ for line in open(diffs, encoding="utf-8"):
     elif names:
         print("check\tstudents-4 %s: ambiguous, and one of its mistakes among them (%s)\t%d"
               % (tag, " or ".join(names), any(n in right for n in names)))
+    # the image's diff (--scene), and the second mistake behind a vertex stage's
+    for sid, what, got in (("students-8", "its image names", shown),
+                           ("students-9", "the second mistake named is", second)):
+        for n in got.split("; ") if got else []:
+            print("check\t%s %s: %s one of its mistakes (%s)\t%d" % (sid, tag, what, n, n in right))
+            for m in mine:
+                if n in aliases(m):
+                    named_alone.add((who, m))
 for who, mine in sorted(truth.items()):
     for m in mine:
         if m == "unknown":
@@ -154,7 +175,7 @@ for line in open(lst, encoding="utf-8"):
         if r is None or not r["image_pixels_differing"] or r["image_pixels_differing"] == "0":
             bad.append(f[1] + ": the corner forgotten, but its image agrees")
 for line in open(diffs, encoding="utf-8"):
-    s, who, verdict, names = line.rstrip("\n").split("\t")
+    s, who, verdict, names, shown, second = line.rstrip("\n").split("\t")
     if s != scene:
         continue
     n += 1

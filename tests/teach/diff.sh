@@ -692,4 +692,57 @@ else
     check "diff-17.7 the s4_nominus1 student build" false
 fi
 
+# ---- 19: two images, the viewport's corner forgotten in setPixelVP (the
+# course's log prints x_vp before it: only the image shows it).  The scene with
+# its viewport at (0, 0) draws the picture of offset.scene moved by (-5, -3),
+# as setPixelVP without (x_ul, y_ul) does; at (1, 0) it moves by (-4, -3).
+"$exe" $data/offset.scene --image "$tmp/ul-want.ppm" >/dev/null
+for c in "0 0" "1 0"; do
+    sed "s/^viewport 5 3 /viewport $c /" $data/offset.scene > "$tmp/ul.scene"
+    "$exe" "$tmp/ul.scene" --image "$tmp/ul-$(echo $c | tr -d ' ').ppm" >/dev/null
+done
+"$exe" diff "$tmp/ul-want.ppm" "$tmp/ul-00.ppm" --scene $data/offset.scene >"$tmp/out" 2>&1; rc=$?
+summary
+check "diff-19.1 images moved by the scene's (-x_ul, -y_ul): exit 1 ($rc)" test "$rc" = 1
+check "diff-19.1a ... the forgotten corner named" grep -qF "The shift is the viewport's corner (x_ul, y_ul) = (5, 3) of $data/offset.scene taken off every pixel. Likely mistake: viewport offset (x_ul, y_ul) forgotten: in setPixelVP," "$tmp/flat"
+"$exe" diff "$tmp/ul-want.ppm" "$tmp/ul-00.ppm" >"$tmp/out" 2>&1; summary
+check "diff-19.2 ... without --scene: the shift said, nothing named" \
+    sh -c 'grep -qF "moved by (-5, -3): the same picture, shifted. With --scene SCENE, diff tells whether" "$1" && ! grep -qi "likely mistake" "$1"' _ "$tmp/flat"
+"$exe" diff "$tmp/ul-want.ppm" "$tmp/ul-10.ppm" --scene $data/offset.scene >"$tmp/out" 2>&1; summary
+check "diff-19.3 a shift by something else, (-4, -3): said, nothing named" \
+    sh -c 'grep -qF "moved by (-4, -3): the same picture, shifted. ACTUAL is not EXPECTED moved by (-5, -3), the viewport'"'"'s corner (x_ul, y_ul) = (5, 3) of" "$1" && ! grep -qi "likely mistake" "$1"' _ "$tmp/flat"
+# one lit pixel of EXPECTED left where it was: not every pixel moved
+xy=$("$exe" diff "$tmp/ul-want.ppm" "$tmp/ul-00.ppm" --show 1000 | awk '/actual   0   0   0$/ { gsub(/[(),]/, ""); print $1, $2; exit }')
+cp "$tmp/ul-00.ppm" "$tmp/ul-part.ppm"
+printf '\377\377\377' | dd of="$tmp/ul-part.ppm" bs=1 seek=$((13 + 3 * (${xy% *} + 40 * ${xy#* }))) conv=notrunc 2>/dev/null
+"$exe" diff "$tmp/ul-want.ppm" "$tmp/ul-part.ppm" --scene $data/offset.scene >"$tmp/out" 2>&1; rc=$?
+summary
+check "diff-19.4 all but one pixel moved by (-5, -3) (pixel $xy stayed): exit 1, not moved, nothing named" \
+    sh -c 'test "$2" = 1 && grep -qF "ACTUAL is not EXPECTED moved by (-5, -3), the viewport'"'"'s corner" "$1" && ! grep -q "shifted" "$1" && ! grep -qi "likely mistake" "$1"' _ "$tmp/flat" "$rc"
+"$exe" diff "$tmp/ul-want.ppm" "$tmp/ul-00.ppm" --scene docs/examples/triangle.scene >"$tmp/out" 2>&1; summary
+check "diff-19.5 --scene of a viewport at (0, 0): nothing named" \
+    sh -c 'grep -qF "corner (x_ul, y_ul) of docs/examples/triangle.scene is (0, 0): forgetting it moves nothing" "$1" && ! grep -qi "likely mistake" "$1"' _ "$tmp/flat"
+"$exe" diff "$tmp/ul-want.ppm" "$tmp/ul-00.ppm" --scene "$tmp/none.scene" >"$tmp/out" 2>&1
+check "diff-19.6 --scene unreadable: exit 2" test $? = 2
+
+
+# ---- 20: a rasterizer's mistake behind a vertex stage's: the course's
+# renderer 4 with 2 for 2.001 and without the y flip (tests/data/students/),
+# its pixels replayed from its own end pixels with each viewport stage the
+# DDA asks
+"$exe" $data/offset.scene --all-stages --format jsonl --trace "$tmp/two-want.jsonl"
+for who in j-two-noflip j-twoint-nominus1 j-two; do
+    gzip -dc tests/data/students/offset/$who.log.gz > "$tmp/$who.log"
+done
+"$exe" diff --verdict "$tmp/two-want.jsonl" "$tmp/j-two-noflip.log" >"$tmp/out" 2>&1; rc=$?
+tr '\n' ' ' < "$tmp/out" | tr -s ' ' > "$tmp/flat"
+check "diff-20.1 2 for 2.001 and no y flip: exit 1 ($rc), the flip named as the second mistake" \
+    sh -c 'test "$2" = 1 && grep -qF "a second mistake. Likely second mistake: missing y flip in the viewport formula the rasterizer asks each step (s4), which from ACTUAL'"'"'s own end pixels draws ACTUAL'"'"'s pixels in every segment." "$1"' _ "$tmp/flat" "$rc"
+check "diff-20.1a ... the first mistake named in the verdict" grep -qF "Likely mistake: 2 instead of 2.001:" "$tmp/flat"
+for who in j-twoint-nominus1 j-two; do
+    "$exe" diff --verdict "$tmp/two-want.jsonl" "$tmp/$who.log" >"$tmp/out" 2>&1
+    check "diff-20.2 $who: its pixels a consequence of its vertices, no second mistake named" \
+        sh -c '! grep -q "second mistake" "$1"' _ "$tmp/out"
+done
+
 report

@@ -142,6 +142,11 @@ typedef struct rstat {
     size_t own_bad;              /* ... whose pixels it does not give */
     uint32_t own_model;          /* the first of those */
     uint64_t own_seg;
+    size_t own_misfit[PT_NRASTER_MISTAKES];  /* segments replayed from ACTUAL's
+                                 ** own end pixels (those that differ, and those
+                                 ** both light alike) whose pixels each mistake
+                                 ** of the viewport stage the DDA asks does not
+                                 ** draw, its own way back giving the ends */
 } rstat;
 
 /* 1 when stage st holds doubles, 0 when integers. */
@@ -289,6 +294,13 @@ size_t pt_diff_raster_named(const rstat *rs, size_t named[PT_NRASTER_MISTAKES]);
 ** of memory. */
 int pt_diff_replay_sig(const int64_t ends[4], int w, int h, pt_raster_vp to_vp, int steps,
                        uint64_t sig[2]);
+
+/* Append to s the rasterizer's mistake behind a vertex stage's: when the
+** reference rasterizer does not draw ACTUAL's pixels from its own end pixels
+** (a second mistake) and exactly one mistake of the viewport stage it asks
+** each step does, in every segment (own_misfit 0), its name.  This function
+** can't fail. */
+void pt_diff_raster_second(const rstat *rs, pbuf *s);
 
 /* Print the raster check's details for the first differing segment. */
 void pt_diff_report_raster(const dctx *c, const rstat *rs);

@@ -4,8 +4,14 @@
 **
 ** Two images (PPM P6 or P3, or PNG as pipetrace writes it) are compared
 ** pixel by pixel: the differing ones listed, their bounding box, and with
-** --image-out a picture of them in red over EXPECTED dimmed to gray.
+** --image-out a picture of them in red over EXPECTED dimmed to gray.  When
+** ACTUAL is EXPECTED moved, the shift is said; with --scene, a shift by
+** exactly (-x_fb, -y_fb) of viewport pixel (0, 0) (the corner (x_ul, y_ul)
+** taken off every pixel) names the rasterizer's mistake that writes its
+** pixels without the offset (pt_raster_mistakes, no_offset): the course's log
+** prints x_vp before setPixelVP, so only the image shows it.
 */
+#include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -65,10 +71,28 @@ static int write_highlight(const char *path, const pt_ppm *a, const pt_ppm *b, i
     return pt_outfile_finish(&out, bad || ferror(out.f), "pipetrace");
 }
 
-/* 1 when b is a moved by (dx, dy) != (0, 0): every pixel of b is a's from
+/* 1 when b is a moved by exactly (dx, dy): every pixel of b is a's from
 ** (x - dx, y - dy), or a's background (its pixel (0, 0)) where that lies
-** outside a.  The shift is read off the boxes of the pixels that are not
-** the background.  Same sizes only. */
+** outside a; a's pixels moved off b are gone.  Same sizes only. */
+static int moved_by(const pt_ppm *a, const pt_ppm *b, int dx, int dy)
+{
+    const unsigned char *bg = a->rgb;
+    int x, y;
+
+    if (a->w != b->w || a->h != b->h) return 0;
+    for (y = 0; y < b->h; y++)
+        for (x = 0; x < b->w; x++) {
+            int sx = x - dx, sy = y - dy;
+            const unsigned char *want = sx >= 0 && sy >= 0 && sx < a->w && sy < a->h ?
+                                        rgb_at(a, sx, sy) : bg;
+            if (memcmp(rgb_at(b, x, y), want, 3)) return 0;
+        }
+    return 1;
+}
+
+/* 1 when b is a moved by (dx, dy) != (0, 0) (moved_by).  The shift is read
+** off the boxes of the pixels that are not the background.  Same sizes
+** only. */
 static int image_shift(const pt_ppm *a, const pt_ppm *b, int *dx, int *dy)
 {
     const unsigned char *bg = a->rgb;
@@ -94,14 +118,75 @@ static int image_shift(const pt_ppm *a, const pt_ppm *b, int *dx, int *dy)
     if (box[1][0] == 0) *dx = box[1][2] - box[0][2];
     if (box[1][1] == 0) *dy = box[1][3] - box[0][3];
     if (*dx == 0 && *dy == 0) return 0;
-    for (y = 0; y < b->h; y++)
-        for (x = 0; x < b->w; x++) {
-            int sx = x - *dx, sy = y - *dy;
-            const unsigned char *want = sx >= 0 && sy >= 0 && sx < a->w && sy < a->h ?
-                                        rgb_at(a, sx, sy) : bg;
-            if (memcmp(rgb_at(b, x, y), want, 3)) return 0;
-        }
+    return moved_by(a, b, *dx, *dy);
+}
+
+/* --scene's viewport corner: the framebuffer pixel of viewport pixel (0, 0),
+** where the framebuffer stage puts it, into *ul.  Returns 1, 0 without
+** --scene, or the exit status (2) after the message. */
+static int scene_corner(const dopts *o, pt_pix *ul)
+{
+    pt_scene sc;
+    pt_pix o0 = {0, 0, 1};
+    int renderer;
+
+    if (!o->scene) return 0;
+    if (pt_cli_load(&sc, o->scene) != 0) return PT_EXIT_TROUBLE;
+    renderer = sc.renderer;
+    *ul = pt_viewport2fb(o0, sc.vp_x, sc.vp_y, NULL);
+    pt_scene_free(&sc);
+    if (renderer != 4) {
+        fprintf(stderr, "pipetrace diff: %s: error: --scene with two images is for the "
+                "classic camera's and the matrix camera's scenes, not renderer %d's\n",
+                o->scene, renderer);
+        return PT_EXIT_TROUBLE;
+    }
     return 1;
+}
+
+/* The rasterizer's mistake that writes each pixel without the viewport's
+** offset (setPixelVP). */
+static const pt_raster_mistake *no_offset_mistake(void)
+{
+    size_t j;
+
+    for (j = 0; j < PT_NRASTER_MISTAKES; j++)
+        if (pt_raster_mistakes[j].no_offset) return &pt_raster_mistakes[j];
+    return NULL;
+}
+
+/* What b, a (EXPECTED) moved by (dx, dy) when shifted is 1, says, the
+** scene's corner ul known (known 1) or not: the mistake named when b is a
+** moved by exactly (-x_ul, -y_ul), not (0, 0); a shift by anything else, or
+** pixels that do not all move, name nothing (and say so when the corner is
+** known). */
+static void explain_shift(const dopts *o, const pt_ppm *a, const pt_ppm *b, int shifted, int dx,
+                          int dy, int known, pt_pix ul)
+{
+    const pt_raster_mistake *mk = no_offset_mistake();
+    pbuf s;
+
+    s.n = 0;
+    s.b[0] = '\0';
+    if (known && mk && (ul.x || ul.y) && moved_by(a, b, (int)-ul.x, (int)-ul.y)) {
+        pt_diff_add(&s, "The shift is the viewport's corner (x_ul, y_ul) = (%" PRId64 ", %" PRId64
+                    ") of %s taken off every pixel. Likely mistake: %s: %s, %s.", ul.x, ul.y,
+                    o->scene, mk->name, mk->where, mk->how);
+        pt_diff_outcome_named(o->out, mk->name);
+    } else if (known && (ul.x || ul.y)) {
+        pt_diff_add(&s, "ACTUAL is not EXPECTED moved by (%" PRId64 ", %" PRId64 "), the "
+                    "viewport's corner (x_ul, y_ul) = (%" PRId64 ", %" PRId64 ") of %s taken "
+                    "off every pixel: no known mistake is named.", -ul.x, -ul.y, ul.x, ul.y,
+                    o->scene);
+    } else if (shifted && known) {
+        pt_diff_add(&s, "The viewport's corner (x_ul, y_ul) of %s is (0, 0): forgetting it "
+                    "moves nothing, so no known mistake is named.", o->scene);
+    } else if (shifted) {
+        pt_diff_add(&s, "With --scene SCENE, diff tells whether the shift is the viewport's "
+                    "corner forgotten in setPixelVP: a corner (x_ul, y_ul) = (%d, %d) taken "
+                    "off every pixel.", -dx, -dy);
+    }
+    if (s.n) pt_diff_para("", s.b);
 }
 
 int pt_diff_images(const dopts *o, const pt_ppm img[2])
@@ -110,7 +195,11 @@ int pt_diff_images(const dopts *o, const pt_ppm img[2])
     int w = a->w > b->w ? a->w : b->w, h = a->h > b->h ? a->h : b->h;
     int x, y, x0 = w, y0 = h, x1 = -1, y1 = -1, k;
     size_t ndiff = 0, shown = 0;
-    int differ = a->w != b->w || a->h != b->h || a->maxval != b->maxval;
+    int differ = a->w != b->w || a->h != b->h || a->maxval != b->maxval, shifted;
+    pt_pix ul = {0, 0, 0};
+    int known = scene_corner(o, &ul);
+
+    if (known == PT_EXIT_TROUBLE) return known;
 
     for (k = 0; k < 2; k++)
         printf("%-9s %s  (%s, %d x %d, maxval %d)\n", pt_diff_side[k], o->path[k],
@@ -146,8 +235,11 @@ int pt_diff_images(const dopts *o, const pt_ppm img[2])
     if (ndiff)
         printf("%zu of %zu pixels differ, all within the box (x, y) = (%d, %d) .. (%d, %d).\n",
                ndiff, (size_t)w * (size_t)h, x0, y0, x1, y1);
-    if (ndiff && image_shift(a, b, &x, &y))
+    shifted = ndiff && image_shift(a, b, &x, &y);
+    if (shifted)
         printf("ACTUAL is EXPECTED moved by (%d, %d): the same picture, shifted.\n", x, y);
+    if (ndiff)
+        explain_shift(o, a, b, shifted, x, y, known, ul);
     else if (!ndiff && a->maxval != b->maxval)
         printf("The color bytes are the same: %d x %d pixels; the maxvals differ.\n", w, h);
     else if (!ndiff)

@@ -378,6 +378,63 @@ static void vp_to_pp(int64_t x_vp, int64_t y_vp, int h, int64_t ends[2])
     ends[1] = h - y_vp;                     /* y_pp = h - y_vp */
 }
 
+/* The logical pixel (x_pp, y_pp), ends[0] and ends[1], that viewport stage
+** to_vp takes to (x_vp, y_vp) in a w x h viewport, read off the stage itself:
+** on whole numbers, which no rounding changes, each viewport stage of the
+** catalogue is x_vp = a_x + s_x x_pp, y_vp = a_y + s_y y_pp with s = +-1, a
+** and a + s its pixels of (0, 0) and (1, 1).  Returns 1, or 0 when to_vp is
+** no such map. */
+static int vp_back(pt_raster_vp to_vp, int w, int h, int64_t x_vp, int64_t y_vp, int64_t ends[2])
+{
+    pt_vec2 p0 = {0.0, 0.0}, p1 = {1.0, 1.0};
+    pt_pix a = to_vp(p0, w, h, NULL), b = to_vp(p1, w, h, NULL);
+    int64_t sx = b.x - a.x, sy = b.y - a.y;
+
+    if (!a.ok || !b.ok || (sx != 1 && sx != -1) || (sy != 1 && sy != -1)) return 0;
+    ends[0] = (x_vp - a.x) * sx;            /* x_pp = (x_vp - a_x) / s_x */
+    ends[1] = (y_vp - a.y) * sy;            /* y_pp = (y_vp - a_y) / s_y */
+    return 1;
+}
+
+/* ACTUAL's first and last step f, l of a segment as viewport pixels *fv,
+** *lv: its clip records are, its pixel records less its own offset d. */
+static void own_steps(const dctx *c, const skey *f, const skey *l, const int64_t d[2],
+                      pt_pix *fv, pt_pix *lv)
+{
+    fv->ok = lv->ok = 1;
+    if (f->clip) { fv->x = c->t[1].cl[f->k].first[0]; fv->y = c->t[1].cl[f->k].first[1]; }
+    else { fv->x = c->t[1].px[f->k].x - d[0]; fv->y = c->t[1].px[f->k].y - d[1]; }
+    if (l->clip) { lv->x = c->t[1].cl[l->k].last[0]; lv->y = c->t[1].cl[l->k].last[1]; }
+    else { lv->x = c->t[1].px[l->k].x - d[0]; lv->y = c->t[1].px[l->k].y - d[1]; }
+}
+
+/* Each mistake of the viewport stage the DDA asks, replayed from ACTUAL's own
+** first and last steps fv, lv taken back its own way (vp_back): counted in
+** rs->own_misfit unless it draws ACTUAL's pixels act (with its offset d).
+** The loop bound's mistakes and setPixelVP's are not replayed so: counted.
+** Returns 0, or -1 when out of memory. */
+static int own_mistakes(rstat *rs, const pt_thdr *hd, pt_pix fv, pt_pix lv, const plist *act,
+                        const int64_t d[2], replayed *out)
+{
+    size_t j;
+
+    for (j = 0; j < PT_NRASTER_MISTAKES; j++) {
+        const pt_raster_mistake *mk = &pt_raster_mistakes[j];
+        int64_t own[4];
+        int r;
+
+        if (mk->steps || mk->no_offset || !mk->to_vp ||
+            !vp_back(mk->to_vp, hd->vp_w, hd->vp_h, fv.x, fv.y, &own[0]) ||
+            !vp_back(mk->to_vp, hd->vp_w, hd->vp_h, lv.x, lv.y, &own[2])) {
+            rs->own_misfit[j]++;
+            continue;
+        }
+        if ((r = replay(own, hd->vp_w, hd->vp_h, mk->to_vp, 0, out)) < 0) return -1;
+        if (r || !own_eq(&out->px, act, hd, d)) rs->own_misfit[j]++;
+    }
+    return 0;
+}
+
 /* The offset ACTUAL's framebuffer stage gives its viewport pixels, read off
 ** its vertices: 1 and *d when every vertex with both records has
 ** (x_fb, y_fb) = (x_vp, y_vp) + d (without such a vertex, the reference's
@@ -424,7 +481,8 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
     replayed re, mk, tw;
     pt_pix o = {0, 0, 1}, ul = pt_viewport2fb(o, hd->vp_x, hd->vp_y, NULL);
     int64_t d[2];
-    int side, rc = 0, one_space = actual_offset(c, hd, d), same;
+    int side, rc = 0, one_space = actual_offset(c, hd, d), same, own_ok;
+    pt_pix af = {0, 0, 0}, al = {0, 0, 0};    /* ACTUAL's first and last step */
     int clips_both = c->t[0].ncl && c->t[1].ncl;
     int vertices_agree = !c->differ && !c->only[0] && !c->only[1];
 
@@ -472,7 +530,14 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
         }
         if (rc != 0) continue;
         same = plist_eq(&pl[0], &pl[1]) && (!clips_both || plist_eq(&cl[0], &cl[1]));
-        if (same && !vertices_agree) continue;
+        own_ok = end[1] > beg[1] && sane && one_space && hd->vp_w >= 1 && hd->vp_h >= 1 &&
+                 hd->vp_w <= PT_MAX_SIZE && hd->vp_h <= PT_MAX_SIZE;
+        if (own_ok) own_steps(c, &s[1][beg[1]], &s[1][end[1] - 1], d, &af, &al);
+        if (same && !vertices_agree) {
+            /* a mistake behind a vertex stage's leaves these as they are too */
+            if (own_ok && own_mistakes(rs, hd, af, al, &pl[1], d, &mk) != 0) rc = -1;
+            continue;
+        }
         /* rounded endpoints: EXPECTED's first and last steps, as logical pixels;
         ** a viewport beyond PT_MAX_SIZE is no trace of pipetrace's: not replayed */
         if (end[0] > beg[0] && sane && hd->vp_w >= 1 && hd->vp_h >= 1 &&
@@ -513,23 +578,16 @@ int pt_diff_check_raster(dctx *c, rstat *rs)
             rs->ends_ok = ok;
         }
         rs->segs_differ++;
-        if (end[1] > beg[1] && sane && rc == 0 && one_space &&
-            hd->vp_w >= 1 && hd->vp_h >= 1 && hd->vp_w <= PT_MAX_SIZE && hd->vp_h <= PT_MAX_SIZE) {
+        if (own_ok && rc == 0) {
             /* ACTUAL's pixels a consequence of its vertices?  The reference
             ** rasterizer from ACTUAL's own first and last step must give
-            ** them.  Its clip records are viewport pixels, its pixel records
-            ** framebuffer ones, which its own offset d takes back */
-            const skey *f = &s[1][beg[1]], *l = &s[1][end[1] - 1];
+            ** them; else, behind it, a mistake of the stage the DDA asks may */
             int64_t own[4];
-            pt_pix fv, lv;
-            if (f->clip) { fv.x = c->t[1].cl[f->k].first[0]; fv.y = c->t[1].cl[f->k].first[1]; }
-            else { fv.x = c->t[1].px[f->k].x - d[0]; fv.y = c->t[1].px[f->k].y - d[1]; }
-            if (l->clip) { lv.x = c->t[1].cl[l->k].last[0]; lv.y = c->t[1].cl[l->k].last[1]; }
-            else { lv.x = c->t[1].px[l->k].x - d[0]; lv.y = c->t[1].px[l->k].y - d[1]; }
-            vp_to_pp(fv.x, fv.y, hd->vp_h, &own[0]);
-            vp_to_pp(lv.x, lv.y, hd->vp_h, &own[2]);
+            if (own_mistakes(rs, hd, af, al, &pl[1], d, &mk) != 0) rc = -1;
+            vp_to_pp(af.x, af.y, hd->vp_h, &own[0]);
+            vp_to_pp(al.x, al.y, hd->vp_h, &own[2]);
             rs->own_tried++;
-            if (replay(own, hd->vp_w, hd->vp_h, NULL, 0, &mk)) rc = -1;
+            if (rc || replay(own, hd->vp_w, hd->vp_h, NULL, 0, &mk)) rc = -1;
             else if (!own_eq(&mk.px, &pl[1], hd, d) && rs->own_bad++ == 0) {
                 rs->own_model = model;
                 rs->own_seg = seg;
@@ -689,6 +747,19 @@ size_t pt_diff_raster_named(const rstat *rs, size_t named[PT_NRASTER_MISTAKES])
     for (k = 0; k < PT_NRASTER_MISTAKES; k++)
         if (rs->segs_differ && rs->hits[k] == rs->segs_differ && !rs->breaks[k]) named[n++] = k;
     return n;
+}
+
+void pt_diff_raster_second(const rstat *rs, pbuf *s)
+{
+    size_t j, one = 0, n = 0;
+
+    if (!rs->own_bad || rs->own_tried != rs->segs_differ) return;
+    for (j = 0; j < PT_NRASTER_MISTAKES; j++)
+        if (!rs->own_misfit[j]) { one = j; n++; }
+    if (n == 1)
+        pt_diff_add(s, " Likely second mistake: %s %s, which from ACTUAL's own end pixels draws "
+                    "ACTUAL's pixels in every segment.", pt_raster_mistakes[one].name,
+                    pt_raster_mistakes[one].where);
 }
 
 /* Print the raster check's details for the first differing segment. */

@@ -415,6 +415,7 @@ int pt_diff_summarize(dctx *c, int hdr_differ, size_t nmiss, size_t nextra,
         } else {
             pt_diff_add(&s, ".");
         }
+        if (vertices_differ) pt_diff_raster_second(rs, &s);
     } else if (pixels_compared) {
         pt_diff_add(&s, " Both light the same %zu pixel%s.", nlit[0], nlit[0] == 1 ? "" : "s");
     }
