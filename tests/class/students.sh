@@ -186,6 +186,13 @@ for line in open(diffs, encoding="utf-8"):
     names = names.split("; ") if names else []
     want = ("" if verdict != "FAIL" else "unknown" if not names else names[0]
             if len(names) == 1 else "ambiguous: " + " or ".join(names))
+    # a differing image proves a FAIL the trace alone could not (NOT PROVEN, or a
+    # log that agrees): class names what the image's diff names, given the scene
+    if verdict != "FAIL" and r["image_pixels_differing"] not in ("", "-", "0"):
+        verdict = "FAIL"
+        shown = shown.split("; ") if shown else []
+        want = ("-" if not shown else shown[0] if len(shown) == 1
+                else "ambiguous: " + " or ".join(shown))
     if r["verdict"] != verdict or r["mistake"] != want:
         bad.append("%s: class %s / %s, diff %s / %s" % (who, r["verdict"], r["mistake"], verdict, want))
 print("%d students, %d rows; %s" % (n, len(rows), "; ".join(bad) if bad else "ok"))

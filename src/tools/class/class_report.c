@@ -21,8 +21,9 @@
 const char *pt_class_verdict(const pt_class_row *r)
 {
     if (r->why || (!r->has_t && !r->has_im)) return "UNREADABLE";
+    if (r->has_im && r->im.status != 0) return "FAIL";  /* a differing image proves it */
     if (r->has_t && r->t.status == 3) return "NOT PROVEN";
-    if ((r->has_t && r->t.status != 0) || (r->has_im && r->im.status != 0)) return "FAIL";
+    if (r->has_t && r->t.status != 0) return "FAIL";
     return "PASS";
 }
 
@@ -31,17 +32,23 @@ const char *pt_class_mistake(const pt_class_row *r, char *buf, size_t n)
     size_t len = 0;
     int k;
 
-    if (strcmp(pt_class_verdict(r), "FAIL") || !r->has_t || r->t.status == 0) {
+    const pt_diff_outcome *o = &r->t;
+
+    if (!strcmp(pt_class_verdict(r), "FAIL") && (!r->has_t || r->t.status == 0 || r->t.status == 3) &&
+        r->has_im && r->im.nnamed > 0)
+        o = &r->im;                 /* only the image differs, and its diff names it */
+    else if (strcmp(pt_class_verdict(r), "FAIL") || !r->has_t || r->t.status == 0 ||
+             r->t.status == 3) {
         snprintf(buf, n, "-");
         return buf;
     }
-    if (r->t.nnamed == 0) { snprintf(buf, n, "unknown"); return buf; }
-    if (r->t.nnamed == 1) { snprintf(buf, n, "%s", r->t.named[0]); return buf; }
+    if (o->nnamed == 0) { snprintf(buf, n, "unknown"); return buf; }
+    if (o->nnamed == 1) { snprintf(buf, n, "%s", o->named[0]); return buf; }
     len = (size_t)snprintf(buf, n, "ambiguous: ");
-    for (k = 0; k < r->t.nnamed && k < PT_DIFF_MAXNAMED && len < n; k++)
-        len += (size_t)snprintf(buf + len, n - len, "%s%s", k ? " or " : "", r->t.named[k]);
-    if (r->t.nnamed > PT_DIFF_MAXNAMED && len < n)
-        snprintf(buf + len, n - len, " or %d more", r->t.nnamed - PT_DIFF_MAXNAMED);
+    for (k = 0; k < o->nnamed && k < PT_DIFF_MAXNAMED && len < n; k++)
+        len += (size_t)snprintf(buf + len, n - len, "%s%s", k ? " or " : "", o->named[k]);
+    if (o->nnamed > PT_DIFF_MAXNAMED && len < n)
+        snprintf(buf + len, n - len, " or %d more", o->nnamed - PT_DIFF_MAXNAMED);
     return buf;
 }
 
@@ -121,7 +128,7 @@ static void histograms(const pt_class *c, hist h[2])
         const pt_class_row *r = &c->row[k];
         if (strcmp(pt_class_verdict(r), "FAIL")) continue;
         count(&h[0], stage_of(r));
-        if (r->has_t && r->t.status != 0) count(&h[1], pt_class_mistake(r, m, sizeof m));
+        if (strcmp(pt_class_mistake(r, m, sizeof m), "-")) count(&h[1], m);
     }
     for (k = 0; k < 2; k++) {
         size_t j, nb = h[k].nb + (h[k].b[CLASS_MAXBARS].n > 0);

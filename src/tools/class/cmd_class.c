@@ -261,10 +261,12 @@ typedef struct job {
     int image;                   /* 1: the image diff */
 } job;
 
-/* Start the diff of r's trace (image 0) or image against exp.  Returns 0,
-** or -1 (fork or pipe failed: the row says so). */
+/* Start the diff of r's trace (image 0) or image against exp; an image's
+** diff gets the scene (NULL: none) so that it can name a picture moved by
+** the viewport's corner.  Returns 0, or -1 (fork or pipe failed: the row
+** says so). */
 static int start(job *j, const copts *o, const char *dir, const char *exp, pt_class_row *r,
-                 int image)
+                 int image, const char *scene)
 {
     int tp[2], rp[2];
     char path[4096];
@@ -280,7 +282,7 @@ static int start(job *j, const copts *o, const char *dir, const char *exp, pt_cl
         return -1;
     }
     if (j->pid == 0) {
-        char *argv[12];
+        char *argv[14];
         int argc = 0, rc;
         pt_diff_outcome out;
         close(tp[0]);
@@ -294,6 +296,7 @@ static int start(job *j, const copts *o, const char *dir, const char *exp, pt_cl
         argv[argc++] = "3";
         if (o->tol) { argv[argc++] = "--tol"; argv[argc++] = (char *)o->tol; }
         if (o->rel) { argv[argc++] = "--rel"; argv[argc++] = (char *)o->rel; }
+        if (image && scene) { argv[argc++] = "--scene"; argv[argc++] = (char *)scene; }
         argv[argc++] = (char *)exp;
         argv[argc++] = path;
         argv[argc] = NULL;
@@ -395,7 +398,8 @@ static int run_all(pt_class *c, const copts *o, const char *exp_trace, const cha
             if (r->why) continue;
             if (!image && !r->trace) continue;
             if (image && (!r->image || !exp_image)) continue;
-            if (start(&run[nrun], o, c->dir, image ? exp_image : exp_trace, r, image) != 0) {
+            if (start(&run[nrun], o, c->dir, image ? exp_image : exp_trace, r, image,
+                      c->scene ? c->expected : NULL) != 0) {
                 if (!r->why) r->why = dup_str("cannot start a diff (no processes or pipes left)");
                 continue;
             }

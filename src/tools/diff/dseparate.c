@@ -441,6 +441,7 @@ static void write4(const par4 *pr, const search *q, const piece4 *pc, pt_sep *o)
             for (k = 0; k < (size_t)pc[d].nv; k++) {
                 pt_cat_val pp;
                 char x[PT_NUMLEN], y[PT_NUMLEN];
+                memset(&pp, 0, sizeof pp);   /* run4 sets it: the pixel stage always runs */
                 run4(pr, pc[d].t, NULL, pc[d].v[k], NULL, &pp);
                 put(o, "v %s %s %s    # x_pp = %s, y_pp = %s\n", pt_diff_num(pc[d].v[k][0], b[0]),
                     pt_diff_num(pc[d].v[k][1], b[1]), pt_diff_num(pc[d].v[k][2], b[2]),
