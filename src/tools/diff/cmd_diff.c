@@ -310,7 +310,7 @@ int pt_diff_run(int argc, char **argv, pt_diff_outcome *out)
         }
     if (o.sep_out) {                            /* the scene over an input: no */
         const char *in[3];
-        size_t nin = 0, hit;
+        size_t nin = 0, hit = 0;
         for (s = 0; s < 2; s++) in[nin++] = !strcmp(o.path[s], "-") ? "/dev/stdin" : o.path[s];
         if (o.scene) in[nin++] = o.scene;
         if (!strcmp(o.sep_out, "-") || (hit = pt_outfile_among(o.sep_out, in, nin)) < nin) {
