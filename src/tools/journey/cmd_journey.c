@@ -262,11 +262,9 @@ int pt_cmd_journey(int argc, char **argv)
     if (pt_cli_load(&s, path) != 0) return PT_EXIT_INPUT;
     {
         const char *out[3] = {svg, html, image}, *opt[3] = {"--svg", "--html", "--image"};
-        /* the classic and matrix cameras keep only the journeys they draw
-        ** (journey.h): no cap; the course's renderers 7 and 9 keep every
-        ** primitive's (journey_course.c) */
-        if (pt_cli_outputs_objs(&s, out, opt, 3) != 0 ||
-            ((s.renderer == 7 || s.renderer == 9) && pt_cli_keep_cap(&s, "journey") != 0)) {
+        /* every camera and renderer keeps only what it draws (journey.h,
+        ** journey_course.c): no cap on the scene */
+        if (pt_cli_outputs_objs(&s, out, opt, 3) != 0) {
             pt_scene_free(&s);
             return PT_EXIT_INPUT;
         }

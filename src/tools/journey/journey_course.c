@@ -3,9 +3,11 @@
 ** See LICENSE for copyright and license.
 **
 ** One render of the scene (pt_course_render) is heard for the position of
-** the model drawn: its model after each stage (kept whole: the wireframe of
-** every panel), the cuts both clip stages make, the pixels the rasterizer
-** writes with their anti-aliasing weight (stages/pt_color.h's pt_aa_weight).
+** the model drawn: of its model after each stage what the panels draw (the
+** first PT_JOURNEY_MAXSEG primitives, the reach of the used vertices, a bit
+** a vertex), the first cuts both clip stages make, the first pixels the
+** rasterizer writes with their anti-aliasing weight (stages/pt_color.h's
+** pt_aa_weight); the rest streams past without being kept.
 ** The vertex's numbers are pt_cx_run()'s (io/explain_course.h).  Nothing
 ** here computes a stage: each panel only places what the run reported.
 */
@@ -28,17 +30,30 @@
 #define BIG     1e6              /* coordinates beyond this never widen a panel */
 #define REACH   4.0              /* a plane panel shows at most REACH times its square */
 #define MAXPX   200000           /* pixels kept for the viewport panel */
-#define MAXSEG  4000             /* segments drawn per panel */
 #define LABEL_Y 306.0
 #define NOTE_Y  326.0
 
 /* ===== listening to the render ===== */
 
-typedef struct snap {            /* the position's model after one stage */
+/* What a panel needs of the position's model after one stage, gathered as
+** the render passes it: its counts, which vertices a primitive uses (a bit
+** each), the reach of those vertices in each view, and the first
+** PT_JOURNEY_MAXSEG primitives with their ends (the wireframe drawn).  The
+** model stage keeps its whole model only for the page (its sliders run the
+** model again). */
+typedef struct snap {
     int have;
-    pt_vec4 *v;  size_t nv;
-    pt_rgb *c;  size_t nc;       /* its colours (the page's sliders run the model again) */
-    pt_rv_prim *p;  size_t np;
+    size_t nv, np;
+    unsigned char *used;         /* bit k: vertex k is an end of a primitive */
+    double box[3][4];            /* per view_kind: min x, min y, max x, max y of
+                                 ** the used vertices grow() takes */
+    double big;                  /* largest |coordinate| <= BIG of a used vertex */
+    double zf;                   /* least 1.1 z_v of a used vertex, z_v <= BIG */
+    pt_rv_prim *p;  size_t nkeep;/* the first primitives, at most PT_JOURNEY_MAXSEG */
+    pt_vec4 *e;                  /* their ends: 2 a primitive */
+    unsigned char *ok;           /* 1: both ends are vertices of the model */
+    pt_rv_model whole;           /* the model stage's model (kept: have_whole) */
+    int have_whole;
 } snap;
 
 typedef struct jpx {             /* a pixel written, viewport coordinates */
@@ -50,8 +65,10 @@ typedef struct crun {
     size_t mi;                   /* the position heard */
     size_t cur;                  /* the position the clip stages work on */
     int drawing;                 /* 1: the rasterizer draws position mi */
+    int whole;                   /* 1: keep the model stage's whole model */
     snap st[PT_NCST];
     pt_rv_cut *cut;  size_t ncut, capcut;
+    int morecut;                 /* cuts past PT_JOURNEY_MAXSEG not kept */
     jpx *px;  size_t npx, cappx;
     int morepx;                  /* pixels past MAXPX not kept */
     int failed;
@@ -66,26 +83,110 @@ static void on_mark(void *ud, pt_course_mark k, const pt_course_cam *cam,
     if (k == PT_CMK_POSITION || k == PT_CMK_STEP) c->cur = pos->index;
 }
 
+typedef enum view_kind { VK_SPACE, VK_SIDE, VK_PLANE } view_kind;
+
+static void xy_of(view_kind k, pt_vec4 p, double *x, double *y)
+{
+    if (k == VK_SPACE) pt_jproj(PT_STAGE_MODEL, p.x, p.y, p.z, x, y);
+    else if (k == VK_SIDE) { *x = p.z; *y = p.y; }
+    else { *x = p.x; *y = p.y; }
+}
+
+static void grow(double b[4], double x, double y)
+{
+    if (!(fabs(x) <= BIG && fabs(y) <= BIG)) return;
+    if (x < b[0]) b[0] = x;
+    if (y < b[1]) b[1] = y;
+    if (x > b[2]) b[2] = x;
+    if (y > b[3]) b[3] = y;
+}
+
+static int bit(const unsigned char *b, size_t k)
+{
+    return (b[k / 8] >> (k % 8)) & 1;
+}
+
+static void snap_free(snap *s)
+{
+    free(s->used);
+    free(s->p);
+    free(s->e);
+    free(s->ok);
+    free(s->whole.v);
+    free(s->whole.c);
+    free(s->whole.p);
+    memset(s, 0, sizeof *s);
+}
+
+/* Keep a copy of m whole in s (the model stage, for the page).  Returns 0,
+** or -1 when out of memory. */
+static int keep_whole(snap *s, const pt_rv_model *m)
+{
+    pt_rv_model *w = &s->whole;
+
+    w->v = malloc((m->nv ? m->nv : 1) * sizeof *w->v);
+    w->c = malloc((m->nc ? m->nc : 1) * sizeof *w->c);
+    w->p = malloc((m->np ? m->np : 1) * sizeof *w->p);
+    if (!w->v || !w->c || !w->p) return -1;
+    if (m->nv) memcpy(w->v, m->v, m->nv * sizeof *w->v);
+    if (m->nc) memcpy(w->c, m->c, m->nc * sizeof *w->c);
+    if (m->np) memcpy(w->p, m->p, m->np * sizeof *w->p);
+    w->nv = m->nv;
+    w->nc = m->nc;
+    w->np = m->np;
+    s->have_whole = 1;
+    return 0;
+}
+
 static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                      const pt_rv_model *m)
 {
     crun *c = ud;
     snap *s = &c->st[st];
+    size_t i, k, n = m->np < PT_JOURNEY_MAXSEG ? m->np : PT_JOURNEY_MAXSEG;
+    int kind;
 
     if (pos->index != c->mi || c->failed) return;
-    free(s->v);
-    free(s->c);
-    free(s->p);
-    s->v = malloc((m->nv ? m->nv : 1) * sizeof *s->v);
-    s->c = malloc((m->nc ? m->nc : 1) * sizeof *s->c);
-    s->p = malloc((m->np ? m->np : 1) * sizeof *s->p);
-    if (!s->v || !s->c || !s->p) { c->failed = 1; return; }
-    if (m->nv) memcpy(s->v, m->v, m->nv * sizeof *s->v);
-    if (m->nc) memcpy(s->c, m->c, m->nc * sizeof *s->c);
-    if (m->np) memcpy(s->p, m->p, m->np * sizeof *s->p);
+    snap_free(s);
+    s->used = calloc(m->nv / 8 + 1, 1);
+    s->p = malloc((n ? n : 1) * sizeof *s->p);
+    s->e = malloc((n ? 2 * n : 1) * sizeof *s->e);
+    s->ok = malloc(n ? n : 1);
+    if (!s->used || !s->p || !s->e || !s->ok ||
+        (st == PT_CST_MODEL && c->whole && keep_whole(s, m) != 0)) { c->failed = 1; return; }
+    for (i = 0; i < m->np; i++) {
+        const pt_rv_prim *p = &m->p[i];
+        if (p->v[0] < m->nv) s->used[p->v[0] / 8] |= (unsigned char)(1u << (p->v[0] % 8));
+        if (p->kind == PT_RV_LINE && p->v[1] < m->nv)
+            s->used[p->v[1] / 8] |= (unsigned char)(1u << (p->v[1] % 8));
+        if (i >= n) continue;
+        s->p[i] = *p;
+        s->ok[i] = p->v[0] < m->nv && (p->kind != PT_RV_LINE || p->v[1] < m->nv);
+        if (!s->ok[i]) continue;
+        s->e[2 * i] = m->v[p->v[0]];
+        if (p->kind == PT_RV_LINE) s->e[2 * i + 1] = m->v[p->v[1]];
+    }
+    for (kind = 0; kind < 3; kind++) {
+        s->box[kind][0] = s->box[kind][1] = HUGE_VAL;
+        s->box[kind][2] = s->box[kind][3] = -HUGE_VAL;
+    }
+    s->big = 0;
+    s->zf = HUGE_VAL;
+    for (k = 0; k < m->nv; k++) {
+        pt_vec4 q = m->v[k];
+        double x, y, a;
+        if (!bit(s->used, k)) continue;
+        for (kind = 0; kind < 3; kind++) {
+            xy_of((view_kind)kind, q, &x, &y);
+            grow(s->box[kind], x, y);
+        }
+        a = fmax(fabs(q.x), fmax(fabs(q.y), fabs(q.z)));
+        if (a <= BIG && a > s->big) s->big = a;
+        if (q.z <= BIG && 1.1 * q.z < s->zf) s->zf = 1.1 * q.z;
+    }
     s->nv = m->nv;
-    s->nc = m->nc;
     s->np = m->np;
+    s->nkeep = n;
     s->have = 1;
 }
 
@@ -94,6 +195,7 @@ static void on_cut(void *ud, const pt_rv_cut *cut)
     crun *c = ud;
 
     if (c->cur != c->mi || c->failed) return;
+    if (c->ncut == PT_JOURNEY_MAXSEG) { c->morecut = 1; return; }
     if (c->ncut == c->capcut) {
         size_t cap = c->capcut ? 2 * c->capcut : 16;
         pt_rv_cut *n = realloc(c->cut, cap * sizeof *n);
@@ -164,17 +266,14 @@ static void crun_free(crun *c)
 {
     int i;
 
-    for (i = 0; i < PT_NCST; i++) {
-        free(c->st[i].v);
-        free(c->st[i].c);
-        free(c->st[i].p);
-    }
+    for (i = 0; i < PT_NCST; i++) snap_free(&c->st[i]);
     free(c->cut);
     free(c->px);
 }
 
-/* Render s once, hearing position mi.  Returns 0, or -1 when out of memory. */
-static int crun_run(crun *c, const pt_scene *s, size_t mi)
+/* Render s once, hearing position mi (whole: keeping its model stage's
+** model whole).  Returns 0, or -1 when out of memory. */
+static int crun_run(crun *c, const pt_scene *s, size_t mi, int whole)
 {
     pt_rv_raster_ls rls;
     pt_course_ls ls;
@@ -183,6 +282,7 @@ static int crun_run(crun *c, const pt_scene *s, size_t mi)
 
     memset(c, 0, sizeof *c);
     c->mi = mi;
+    c->whole = whole;
     c->cur = (size_t)-1;
     memset(&rls, 0, sizeof rls);
     rls.pixel = on_pixel;
@@ -203,10 +303,6 @@ static int crun_run(crun *c, const pt_scene *s, size_t mi)
 
 /* ===== the panels ===== */
 
-/* What a panel shows of a stage's model: its points in panel data
-** coordinates. */
-typedef enum view_kind { VK_SPACE, VK_SIDE, VK_PLANE } view_kind;
-
 typedef struct cpanel {
     const char *key;             /* data-stage */
     const char *title, *coords;  /* "view volume", "(x_v, y_v, z_v)" */
@@ -222,30 +318,10 @@ typedef struct cdoc {
     pt_rv_camera cam;
 } cdoc;
 
-static void xy_of(view_kind k, pt_vec4 p, double *x, double *y)
-{
-    if (k == VK_SPACE) pt_jproj(PT_STAGE_MODEL, p.x, p.y, p.z, x, y);
-    else if (k == VK_SIDE) { *x = p.z; *y = p.y; }
-    else { *x = p.x; *y = p.y; }
-}
-
-static void grow(double b[4], double x, double y)
-{
-    if (!(fabs(x) <= BIG && fabs(y) <= BIG)) return;
-    if (x < b[0]) b[0] = x;
-    if (y < b[1]) b[1] = y;
-    if (x > b[2]) b[2] = x;
-    if (y > b[3]) b[3] = y;
-}
-
 /* 1 when vertex k of the stage's model is an end of one of its primitives. */
 static int used(const snap *sn, size_t k)
 {
-    size_t i;
-
-    for (i = 0; i < sn->np; i++)
-        if (sn->p[i].v[0] == k || (sn->p[i].kind == PT_RV_LINE && sn->p[i].v[1] == k)) return 1;
-    return 0;
+    return k < sn->nv && bit(sn->used, k);
 }
 
 /* The shortest decimal of x that reads back to it. */
@@ -262,22 +338,22 @@ static void num(pt_sbuf *sb, double x)
 static void wire(pt_sbuf *sb, const pt_jview *v, const snap *sn, view_kind kind, size_t k,
                  int faint)
 {
-    size_t i, n = sn->np < MAXSEG ? sn->np : MAXSEG;
+    size_t i;
 
-    for (i = 0; i < n; i++) {
+    for (i = 0; i < sn->nkeep; i++) {
         const pt_rv_prim *p = &sn->p[i];
         double ax, ay, bx, by;
         int at;
-        if (p->v[0] >= sn->nv || (p->kind == PT_RV_LINE && p->v[1] >= sn->nv)) continue;
+        if (!sn->ok[i]) continue;
         at = p->v[0] == k || (p->kind == PT_RV_LINE && p->v[1] == k);
-        xy_of(kind, sn->v[p->v[0]], &ax, &ay);
+        xy_of(kind, sn->e[2 * i], &ax, &ay);
         if (p->kind == PT_RV_POINT) {
             if (pt_jview_in(v, ax, ay))
                 pt_jcircle(sb, pt_jview_x(v, ax), pt_jview_y(v, ay), 2.5,
                            faint ? PT_JC_FAINT : PT_JC_SEG, "");
             continue;
         }
-        xy_of(kind, sn->v[p->v[1]], &bx, &by);
+        xy_of(kind, sn->e[2 * i + 1], &bx, &by);
         pt_jview_line(sb, v, ax, ay, bx, by, faint ? PT_JC_FAINT : PT_JC_SEG,
                       faint ? 1 : at ? 2.5 : 1.4, "");
     }
@@ -292,16 +368,13 @@ static void fit(pt_jview *v, double b[4], int ydown)
     pt_jview_fit(v, b, ydown, PT_JBOX_X, PT_JBOX_Y, PT_JBOX_W, PT_JBOX_H);
 }
 
+/* Grow b by the used vertices of the stage's model in view kind (their
+** box, gathered by on_stage: the same as growing by each in turn). */
 static void grow_snap(double b[4], const snap *sn, view_kind kind)
 {
-    size_t k;
-    double x, y;
-
-    for (k = 0; k < sn->nv; k++)
-        if (used(sn, k)) {
-            xy_of(kind, sn->v[k], &x, &y);
-            grow(b, x, y);
-        }
+    if (!sn->have) return;
+    grow(b, sn->box[kind][0], sn->box[kind][1]);
+    grow(b, sn->box[kind][2], sn->box[kind][3]);
 }
 
 /* The side view's frame: the camera at the origin, the volume's edges (y =
@@ -434,6 +507,12 @@ static void note(pt_sbuf *sb, const cdoc *d, pt_course_stage st, const char *mor
     if (off) pt_sbuf_addf(&t, "cut off %d segment%s here; ", off, off > 1 ? "s" : "");
     if (j->have[st] && d->c->st[st].have && !used(&d->c->st[st], (size_t)(j->v - 1)))
         pt_sbuf_add(&t, "no primitive uses it after this stage; ");
+    if (d->c->st[st].np > d->c->st[st].nkeep)      /* PT_JOURNEY_MAXSEG */
+        pt_sbuf_addf(&t, "the first %llu of %llu primitives drawn; ",
+                     (unsigned long long)d->c->st[st].nkeep,
+                     (unsigned long long)d->c->st[st].np);
+    if (d->c->morecut && (st == PT_CST_NEARCLIP || st == PT_CST_CLIP))
+        pt_sbuf_addf(&t, "the first %d cuts shown; ", PT_JOURNEY_MAXSEG);
     pt_sbuf_add(&t, more);
     pt_jtext(sb, 12, NOTE_Y, 11, "start", "class=\"note\" fill=\"" PT_JC_NOTE "\"",
              t.s ? t.s : "", 376);
@@ -459,14 +538,8 @@ static void panel_space(pt_sbuf *sb, const cdoc *d, const cpanel *p)
     const snap *sn = &d->c->st[p->st];
     double b[4] = {0, 0, 0, 0};
     pt_jview v;
-    size_t k;
-    double big = 0;
+    double big = sn->have ? sn->big : 0;
 
-    for (k = 0; k < sn->nv; k++)
-        if (used(sn, k)) {
-            double m = fmax(fabs(sn->v[k].x), fmax(fabs(sn->v[k].y), fabs(sn->v[k].z)));
-            if (m <= BIG && m > big) big = m;
-        }
     big = big > 0 ? 1.2 * big : 1;
     {
         double ax[3][3] = {{big, 0, 0}, {0, big, 0}, {0, 0, big}}, x, y;
@@ -494,10 +567,8 @@ static void panel_side(pt_sbuf *sb, const cdoc *d, const cpanel *p)
     double bb = norm ? -1 : cam->b, tt = norm ? 1 : cam->t, n = cam->n;
     double b[4], zf = -1.2;
     pt_jview v;
-    size_t k;
 
-    for (k = 0; k < sn->nv; k++)
-        if (used(sn, k) && sn->v[k].z <= BIG && 1.1 * sn->v[k].z < zf) zf = 1.1 * sn->v[k].z;
+    if (sn->have && sn->zf < zf) zf = sn->zf;
     if (n < 0 && 1.2 * n < zf) zf = 1.2 * n;
     b[0] = zf; b[2] = 0.1;
     b[1] = persp ? fmin(0, fmin(-zf * bb, -zf * tt)) : fmin(bb, 0);
@@ -653,14 +724,14 @@ struct pt_jcourse {
     pt_cx_journey j;             /* the chosen vertex's */
 };
 
-int pt_jcourse_open(pt_jcourse **out, const pt_scene *s, size_t mi)
+int pt_jcourse_open(pt_jcourse **out, const pt_scene *s, size_t mi, int whole)
 {
     pt_jcourse *jc = calloc(1, sizeof *jc);
     pt_course_cam cc;
 
     *out = NULL;
     if (!jc) return -1;
-    if (crun_run(&jc->c, s, mi) != 0) {
+    if (crun_run(&jc->c, s, mi, whole) != 0) {
         crun_free(&jc->c);
         free(jc);
         return -1;
@@ -693,11 +764,8 @@ const pt_rv_model *pt_jcourse_model(const pt_jcourse *jc, pt_rv_model *view)
 {
     const snap *sn = &jc->c.st[PT_CST_MODEL];
 
-    if (!sn->have) return NULL;
-    memset(view, 0, sizeof *view);
-    view->v = sn->v; view->nv = sn->nv;
-    view->c = sn->c; view->nc = sn->nc;
-    view->p = sn->p; view->np = sn->np;
+    if (!sn->have || !sn->have_whole) return NULL;
+    *view = sn->whole;
     return view;
 }
 
@@ -828,7 +896,7 @@ int pt_journey_course_svg(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v)
     int rc, n, k, docw = COLS * PT_JOURNEY_PW + (COLS + 1) * GAP, doch;
     pt_sbuf t;
 
-    if (pt_jcourse_open(&jc, s, mi) != 0) return -1;
+    if (pt_jcourse_open(&jc, s, mi, 0) != 0) return -1;
     if ((rc = pt_jcourse_vertex(jc, v)) != 0) { pt_jcourse_close(jc); return rc; }
     n = pt_jcourse_npanels(jc);
     doch = HEAD + ((n + COLS - 1) / COLS) * (PT_JOURNEY_PH + GAP);
@@ -923,7 +991,7 @@ int pt_journey_course_html(pt_sbuf *sb, const pt_scene *s, size_t mi, uint64_t v
     int k, rc, np;
     pt_sbuf t;
 
-    if (pt_jcourse_open(&jc, s, mi) != 0) return -1;
+    if (pt_jcourse_open(&jc, s, mi, 1) != 0) return -1;
     if ((rc = pt_jcourse_vertex(jc, v)) != 0) { pt_jcourse_close(jc); return rc; }
     count = pt_jcourse_count(jc);
     if (pick && npick > count) { pt_jcourse_close(jc); return 2; }

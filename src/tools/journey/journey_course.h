@@ -38,8 +38,14 @@
 typedef struct pt_jcourse pt_jcourse;
 
 /* Render s (renderer 7 or 9) once, hearing the position of model mi, into
-** *out (freed by pt_jcourse_close).  Returns 0, or -1 when out of memory. */
-int pt_jcourse_open(pt_jcourse **out, const pt_scene *s, size_t mi);
+** *out (freed by pt_jcourse_close).  What is kept follows what the panels
+** draw, not the model: per stage a bit a vertex (used or not), the reach of
+** the used ones, the first PT_JOURNEY_MAXSEG primitives with their ends, the
+** first PT_JOURNEY_MAXSEG cuts and the position's first pixels; the chosen
+** vertex's journey comes from pt_cx_run().  whole 1 keeps the model stage's
+** whole model too (pt_jcourse_model(), the page's sliders).  Returns 0, or
+** -1 when out of memory. */
+int pt_jcourse_open(pt_jcourse **out, const pt_scene *s, size_t mi, int whole);
 
 /* Choose vertex v (1-based; past the model's own: one a clip stage made).
 ** Returns 0; 1 when the position has no vertex v in any stage; -1 when out
@@ -54,7 +60,8 @@ uint64_t pt_jcourse_count(const pt_jcourse *jc);
 const pt_cx_journey *pt_jcourse_journey(const pt_jcourse *jc);
 
 /* The position's model as the driver built it (vertices, colours,
-** primitives), or NULL when the position is hidden.  Can't fail. */
+** primitives), or NULL when the position is hidden or jc was opened without
+** whole.  Can't fail. */
 const pt_rv_model *pt_jcourse_model(const pt_jcourse *jc, pt_rv_model *view);
 
 /* The panels: how many (8 for renderer 9, 7 for renderer 7), and panel k's
