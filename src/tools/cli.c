@@ -101,23 +101,6 @@ int pt_cli_outputs_objs(const pt_scene *s, const char *const *out, const char *c
     return 0;
 }
 
-int pt_cli_keep_cap(const pt_scene *s, const char *cmd)
-{
-    size_t k, nv = 0, nseg = 0;
-
-    for (k = 0; k < s->nmodels; k++) {
-        nv += s->models[k].nv;
-        nseg += s->models[k].nseg;
-    }
-    if (nv <= PT_CLI_KEEP_VERTICES && nseg <= PT_CLI_KEEP_SEGMENTS) return 0;
-    fprintf(stderr, "pipetrace %s: %s has %zu %s; %s keeps every vertex's journey in memory "
-            "and takes at most %d vertices and %d segments (docs/limits.md)\n", cmd, s->path,
-            nv > PT_CLI_KEEP_VERTICES ? nv : nseg,
-            nv > PT_CLI_KEEP_VERTICES ? "vertices" : "segments", cmd,
-            PT_CLI_KEEP_VERTICES, PT_CLI_KEEP_SEGMENTS);
-    return PT_EXIT_INPUT;
-}
-
 const pt_model *pt_cli_model(const pt_scene *s, const char *cmd, const char *name)
 {
     size_t k;

@@ -68,21 +68,6 @@ int pt_cli_outputs(const char *scene, const char *const *out, const char *const 
 int pt_cli_outputs_objs(const pt_scene *s, const char *const *out, const char *const *opt,
                         int n);
 
-/* The most vertices and segments, each summed over a scene's models, that
-** a command keeping every vertex's journey in memory takes (journey on the
-** course's renderers 7 and 9: some 2 KB a vertex, so about 200 MB at the
-** cap); beyond, it refuses the scene at once (docs/limits.md).  The render
-** command, why, journey (classic and matrix cameras) and accuracy (a block
-** of PT_ACC_BLOCK vertices or segments at a time) have no such cap: they keep
-** no journey but those they show.  (journey and accuracy also cap the pixels
-** they keep: PT_JOURNEY_MAXPIX, PT_ACC_MAXPIX.) */
-#define PT_CLI_KEEP_VERTICES 100000
-#define PT_CLI_KEEP_SEGMENTS 400000
-
-/* Refuse s when it holds more than the caps above: prints "pipetrace CMD:
-** SCENE has N vertices; ..." and returns PT_EXIT_INPUT, else returns 0. */
-int pt_cli_keep_cap(const pt_scene *s, const char *cmd);
-
 /* The model called name.  Prints "pipetrace CMD: --model NAME: ..." (cmd
 ** NULL: "pipetrace: --model ...") with the scene's model names and returns NULL
 ** when there is none. */
