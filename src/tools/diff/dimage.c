@@ -284,6 +284,7 @@ int pt_diff_own_image(const dopts *o, const pt_tread *t, const pt_ppm *img)
     unsigned char bg[3], *mark;
     pt_scene sc;
     int renderer, drawn, moved;
+    pbuf ps;
 
     if (pt_cli_load(&sc, o->scene) != 0) return PT_EXIT_TROUBLE;
     renderer = sc.renderer;
@@ -305,26 +306,29 @@ int pt_diff_own_image(const dopts *o, const pt_tread *t, const pt_ppm *img)
     drawn = lit_exactly(img, bg, t->px, t->npx, 0, 0, mark);
     moved = !drawn && (ul.x || ul.y) && lit_exactly(img, bg, t->px, t->npx, ul.x, ul.y, mark);
     free(mark);
-    printf("%-9s %s  (%zu pixel records, the viewport's corner (x_ul, y_ul) = (%" PRId64
-           ", %" PRId64 "))\n", pt_diff_side[0], o->path[0], t->npx, ul.x, ul.y);
+    printf("%-9s %s  (%zu pixel records, corner (%" PRId64 ", %" PRId64 "))\n",
+           pt_diff_side[0], o->path[0], t->npx, ul.x, ul.y);
     printf("%-9s %s  (%s, %d x %d, maxval %d)\n\n", pt_diff_side[1], o->path[1], img->format,
            img->w, img->h, img->maxval);
     o->out->images = 1;
+    ps.n = 0;
+    ps.b[0] = '\0';
     if (drawn) {
-        printf("The image is what the log drew: its lit pixels are the logged framebuffer "
-               "pixels, %s's background elsewhere.\n", o->scene);
-        return PT_EXIT_OK;
-    }
-    if (moved && mk) {
-        printf("The image's lit pixels are the logged ones at their viewport coordinates "
-               "(x_vp, y_vp), not at (x_ul + x_vp, y_ul + y_vp): the viewport's corner "
-               "(x_ul, y_ul) = (%" PRId64 ", %" PRId64 ") taken off every pixel. Likely "
-               "mistake: %s: %s, %s.\n", ul.x, ul.y, mk->name, mk->where, mk->how);
+        pt_diff_add(&ps, "The image is what the log drew: its lit pixels are the logged "
+                    "framebuffer pixels, %s's background elsewhere.", o->scene);
+    } else if (moved && mk) {
+        pt_diff_add(&ps, "The image's lit pixels are the logged ones at their viewport "
+                    "coordinates (x_vp, y_vp), not at (x_ul + x_vp, y_ul + y_vp): the "
+                    "viewport's corner (x_ul, y_ul) = (%" PRId64 ", %" PRId64 ") taken off "
+                    "every pixel. Likely mistake: %s: %s, %s.", ul.x, ul.y, mk->name,
+                    mk->where, mk->how);
         pt_diff_outcome_named(o->out, mk->name);
     } else {
-        printf("The image's lit pixels are neither the logged framebuffer pixels nor the "
-               "logged viewport pixels (x_vp, y_vp) on %s's background: no known mistake "
-               "is named.\n", o->scene);
+        pt_diff_add(&ps, "The image's lit pixels are neither the logged framebuffer pixels "
+                    "nor the logged viewport pixels (x_vp, y_vp) on %s's background: no "
+                    "known mistake is named.", o->scene);
     }
+    pt_diff_para("", ps.b);
+    if (drawn) return PT_EXIT_OK;
     return PT_EXIT_DIFFER;
 }
