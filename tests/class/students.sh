@@ -22,6 +22,10 @@
 #     name a mistake the student did not make, nor the second mistake named
 #     behind a vertex stage's (the rasterizer replayed from ACTUAL's own end
 #     pixels);
+#   - its image against its own log or trace, pipetrace diff --scene SCENE
+#     LOG IMAGE (the logged pixels lit at their viewport coordinates: the
+#     corner forgotten behind another mistake), never name a mistake the
+#     student did not make;
 # every mistake of the catalogue a student made must be named alone, by the
 # diff of its trace or of its image, on at least one scene (known.txt: those no scene of the corpus can name, with the
 # reason); and pipetrace class on each scene's folder must give every student
@@ -34,10 +38,11 @@ known=$data/known.txt
 
 # ---- every diff, its verdict and names as one line per student and scene:
 # SCENE<TAB>STUDENT<TAB>VERDICT<TAB>NAME; NAME; ...<TAB>THE IMAGE'S NAME; ...<TAB>SECOND
-mkdir "$tmp/diff" "$tmp/img"
+# <TAB>THE NAME OF THE IMAGE AGAINST ITS OWN LOG
+mkdir "$tmp/diff" "$tmp/img" "$tmp/own"
 for s in $(awk -F '\t' '$1 == "scene" { print $2 }' "$list"); do
     scene=$(awk -F '\t' -v n="$s" '$1 == "scene" && $2 == n { print $3 }' "$list")
-    mkdir -p "$tmp/$s" "$tmp/diff/$s" "$tmp/img/$s"
+    mkdir -p "$tmp/$s" "$tmp/diff/$s" "$tmp/img/$s" "$tmp/own/$s"
     "$exe" "$scene" --all-stages --format jsonl --trace "$tmp/$s.jsonl" --image "$tmp/$s.ppm"
     for f in "$data/$s"/*.gz; do
         b=$(basename "$f" .gz)
@@ -47,14 +52,17 @@ for s in $(awk -F '\t' '$1 == "scene" { print $2 }' "$list"); do
         who=$(basename "$f"); who=${who%.*}
         case $f in *.ppm)
             "$exe" diff --scene "$scene" "$tmp/$s.ppm" "$f" > "$tmp/img/$s/$who" 2>&1
+            for log in "$tmp/$s/$who.log" "$tmp/$s/$who.jsonl"; do
+                [ -f "$log" ] && "$exe" diff --scene "$scene" "$log" "$f" > "$tmp/own/$s/$who" 2>&1
+            done
             continue ;;
         esac
         "$exe" diff --verdict "$tmp/$s.jsonl" "$f" > "$tmp/diff/$s/$who" 2>&1
     done
 done
-python3 - "$tmp/diff" "$tmp/img" > "$tmp/diffs" <<'EOF'
+python3 - "$tmp/diff" "$tmp/img" "$tmp/own" > "$tmp/diffs" <<'EOF'
 import os, re, sys
-top, img = sys.argv[1:]
+top, img, own = sys.argv[1:]
 for s in sorted(os.listdir(top)):
     for who in sorted(os.listdir(os.path.join(top, s))):
         flat = " ".join(open(os.path.join(top, s, who), encoding="utf-8").read().split())
@@ -75,7 +83,11 @@ for s in sorted(os.listdir(top)):
         path = os.path.join(img, s, who)
         image = " ".join(open(path, encoding="utf-8").read().split()) if os.path.exists(path) else ""
         shown = re.findall(r"Likely mistake: (.+?): ", image)
-        print("\t".join([s, who, verdict, "; ".join(names), "; ".join(shown), "; ".join(second)]))
+        path = os.path.join(own, s, who)
+        mine = " ".join(open(path, encoding="utf-8").read().split()) if os.path.exists(path) else ""
+        drew = re.findall(r"Likely mistake: (.+?): ", mine)
+        print("\t".join([s, who, verdict, "; ".join(names), "; ".join(shown), "; ".join(second),
+                         "; ".join(drew)]))
 EOF
 
 # ---- against the students' mistakes
@@ -107,7 +119,7 @@ for line in open(known, encoding="utf-8"):
         expected_fail[(f[0], f[1])] = f[2]
 named_alone = set()
 for line in open(diffs, encoding="utf-8"):
-    s, who, verdict, names, shown, second = line.rstrip("\n").split("\t")
+    s, who, verdict, names, shown, second, drew = line.rstrip("\n").split("\t")
     names = names.split("; ") if names else []
     mine = truth[who]
     right = {a for m in mine for a in aliases(m) if m != "unknown"}
@@ -131,7 +143,8 @@ for line in open(diffs, encoding="utf-8"):
               % (tag, " or ".join(names), any(n in right for n in names)))
     # the image's diff (--scene), and the second mistake behind a vertex stage's
     for sid, what, got in (("students-8", "its image names", shown),
-                           ("students-9", "the second mistake named is", second)):
+                           ("students-9", "the second mistake named is", second),
+                           ("students-10", "its image against its own log names", drew)):
         for n in got.split("; ") if got else []:
             print("check\t%s %s: %s one of its mistakes (%s)\t%d" % (sid, tag, what, n, n in right))
             for m in mine:
@@ -175,7 +188,7 @@ for line in open(lst, encoding="utf-8"):
         if r is None or not r["image_pixels_differing"] or r["image_pixels_differing"] == "0":
             bad.append(f[1] + ": the corner forgotten, but its image agrees")
 for line in open(diffs, encoding="utf-8"):
-    s, who, verdict, names, shown, second = line.rstrip("\n").split("\t")
+    s, who, verdict, names, shown, second, drew = line.rstrip("\n").split("\t")
     if s != scene:
         continue
     n += 1
@@ -193,6 +206,9 @@ for line in open(diffs, encoding="utf-8"):
         shown = shown.split("; ") if shown else []
         want = ("-" if not shown else shown[0] if len(shown) == 1
                 else "ambiguous: " + " or ".join(shown))
+    # the image against the student's own log: its name added, "; " before it
+    if drew and drew not in want:
+        want = drew if want == "-" else want + "; " + drew
     if r["verdict"] != verdict or r["mistake"] != want:
         bad.append("%s: class %s / %s, diff %s / %s" % (who, r["verdict"], r["mistake"], verdict, want))
 print("%d students, %d rows; %s" % (n, len(rows), "; ".join(bad) if bad else "ok"))

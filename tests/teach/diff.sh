@@ -745,4 +745,40 @@ for who in j-twoint-nominus1 j-two; do
         sh -c '! grep -q "second mistake" "$1"' _ "$tmp/out"
 done
 
+
+# ---- 21: a student's own log against the image the same program wrote: the
+# corner forgotten behind another mistake (the longer DDA loop, w and h
+# swapped): the image is not the reference's moved, but the student's own
+# logged pixels at their viewport coordinates (x_vp, y_vp)
+for who in j-long-setpixel j-swapwh-setpixel j-right; do
+    for e in log ppm; do
+        gzip -dc tests/data/students/offset/$who.$e.gz > "$tmp/own-$who.$e"
+    done
+done
+for who in j-long-setpixel j-swapwh-setpixel; do
+    "$exe" diff "$tmp/own-$who.log" "$tmp/own-$who.ppm" --scene $data/offset.scene >"$tmp/out" 2>&1; rc=$?
+    summary
+    check "diff-21.1 $who's log and image: exit 1 ($rc), the corner (5, 3) forgotten named" \
+        sh -c 'test "$2" = 1 && grep -qF "the viewport'"'"'s corner (x_ul, y_ul) = (5, 3) taken off every pixel. Likely mistake: viewport offset (x_ul, y_ul) forgotten:" "$1"' _ "$tmp/flat" "$rc"
+    "$exe" diff "$tmp/ul-want.ppm" "$tmp/own-$who.ppm" --scene $data/offset.scene >"$tmp/out" 2>&1
+    check "diff-21.2 ... which its image against the reference's cannot name" \
+        sh -c '! grep -qi "likely mistake" "$1"' _ "$tmp/out"
+done
+"$exe" diff "$tmp/own-j-right.log" "$tmp/own-j-right.ppm" --scene $data/offset.scene >"$tmp/out" 2>&1; rc=$?
+summary
+check "diff-21.3 a right student's log and image: exit 0 ($rc), the image is what the log drew, nothing named" \
+    sh -c 'test "$2" = 0 && grep -qF "The image is what the log drew" "$1" && ! grep -qi "likely mistake" "$1"' _ "$tmp/flat" "$rc"
+"$exe" diff "$tmp/own-j-right.log" "$tmp/ul-10.ppm" --scene $data/offset.scene >"$tmp/out" 2>&1; rc=$?
+summary
+check "diff-21.4 its log with its picture moved by (-4, -3), not the corner: exit 1 ($rc), nothing named" \
+    sh -c 'test "$2" = 1 && grep -qF "neither the logged framebuffer pixels nor the logged viewport pixels" "$1" && ! grep -qi "likely mistake" "$1"' _ "$tmp/flat" "$rc"
+"$exe" diff "$tmp/own-j-right.log" "$tmp/ul-00.ppm" --scene $data/offset.scene >"$tmp/out" 2>&1; rc=$?
+summary
+check "diff-21.5 ... moved by (-5, -3), the corner: exit 1 ($rc), named" \
+    sh -c 'test "$2" = 1 && grep -qF "Likely mistake: viewport offset (x_ul, y_ul) forgotten:" "$1"' _ "$tmp/flat" "$rc"
+"$exe" diff "$tmp/own-j-right.log" "$tmp/ul-00.ppm" >"$tmp/out" 2>&1; rc=$?
+check "diff-21.6 a log and an image without --scene: a usage error, exit 2 ($rc)" test "$rc" = 2
+"$exe" diff "$tmp/own-j-right.log" "$tmp/own-j-right.ppm" --scene "$tmp/none.scene" >"$tmp/out" 2>&1; rc=$?
+check "diff-21.7 --scene unreadable: exit 2 ($rc)" test "$rc" = 2
+
 report

@@ -12,7 +12,9 @@
 **
 ** A student is a file name without its last extension: alice.log and
 ** alice.ppm are one row, the log diffed against the expected trace and the
-** image against the expected image.  Nothing in the folder is written, and
+** image against the expected image; EXPECTED a scene, the image against
+** the student's own log too (is it what the log drew?), which names the
+** viewport's corner forgotten in setPixelVP behind another mistake.  Nothing in the folder is written, and
 ** nothing in it but regular files (or links to them) is opened: anything
 ** else gets a row that says what it is.
 */
@@ -31,10 +33,10 @@ typedef struct pt_class_row {
                                  ** NULL; owned */
     char *why;                   /* why the row has no verdict (a file that could
                                  ** not be read, diff's own message), or NULL; owned */
-    pt_diff_outcome t, im;       /* what the diffs of trace and image found */
-    int has_t, has_im;           /* 1: that diff ran */
-    pt_sbuf text[2];             /* what the diffs of trace and image printed,
-                                 ** for --html */
+    pt_diff_outcome t, im, own;  /* what the diffs of trace and image found, and
+                                 ** of the image against the student's own trace */
+    int has_t, has_im, has_own;  /* 1: that diff ran */
+    pt_sbuf text[3];             /* what the three diffs printed, for --html */
 } pt_class_row;
 
 /* A whole class. */
@@ -54,7 +56,9 @@ typedef struct pt_class {
 const char *pt_class_verdict(const pt_class_row *r);
 
 /* The row's mistake, as a table says it, into buf (n bytes): "-" (none
-** looked for), "unknown", a name, or "ambiguous: A or B".  Returns buf. */
+** looked for), "unknown", a name, or "ambiguous: A or B"; then, when the
+** image against the student's own trace names a mistake not yet said,
+** "; " and its name (alone in place of "-").  Returns buf. */
 const char *pt_class_mistake(const pt_class_row *r, char *buf, size_t n);
 
 /* Append the terminal report (the table, then the histograms by stage and by

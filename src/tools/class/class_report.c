@@ -27,6 +27,20 @@ const char *pt_class_verdict(const pt_class_row *r)
     return "PASS";
 }
 
+/* buf (n bytes, a mistake as pt_class_mistake says it) with the mistake the
+** image's diff against the student's own trace names, when it names one
+** and buf does not say it yet: "-" becomes it, anything else gets "; " and
+** it.  Returns buf. */
+static const char *own_mistake(const pt_class_row *r, char *buf, size_t n)
+{
+    size_t len = strlen(buf);
+
+    if (!r->has_own || r->own.nnamed != 1 || strstr(buf, r->own.named[0])) return buf;
+    if (!strcmp(buf, "-")) snprintf(buf, n, "%s", r->own.named[0]);
+    else if (len < n) snprintf(buf + len, n - len, "; %s", r->own.named[0]);
+    return buf;
+}
+
 const char *pt_class_mistake(const pt_class_row *r, char *buf, size_t n)
 {
     size_t len = 0;
@@ -40,16 +54,16 @@ const char *pt_class_mistake(const pt_class_row *r, char *buf, size_t n)
     else if (strcmp(pt_class_verdict(r), "FAIL") || !r->has_t || r->t.status == 0 ||
              r->t.status == 3) {
         snprintf(buf, n, "-");
-        return buf;
+        return own_mistake(r, buf, n);
     }
-    if (o->nnamed == 0) { snprintf(buf, n, "unknown"); return buf; }
-    if (o->nnamed == 1) { snprintf(buf, n, "%s", o->named[0]); return buf; }
+    if (o->nnamed == 0) { snprintf(buf, n, "unknown"); return own_mistake(r, buf, n); }
+    if (o->nnamed == 1) { snprintf(buf, n, "%s", o->named[0]); return own_mistake(r, buf, n); }
     len = (size_t)snprintf(buf, n, "ambiguous: ");
     for (k = 0; k < o->nnamed && k < PT_DIFF_MAXNAMED && len < n; k++)
         len += (size_t)snprintf(buf + len, n - len, "%s%s", k ? " or " : "", o->named[k]);
     if (o->nnamed > PT_DIFF_MAXNAMED && len < n)
         snprintf(buf + len, n - len, " or %d more", o->nnamed - PT_DIFF_MAXNAMED);
-    return buf;
+    return own_mistake(r, buf, n);
 }
 
 /* The first wrong stage, "image" when only the image differs, else "-". */
@@ -128,7 +142,15 @@ static void histograms(const pt_class *c, hist h[2])
         const pt_class_row *r = &c->row[k];
         if (strcmp(pt_class_verdict(r), "FAIL")) continue;
         count(&h[0], stage_of(r));
-        if (strcmp(pt_class_mistake(r, m, sizeof m), "-")) count(&h[1], m);
+        if (strcmp(pt_class_mistake(r, m, sizeof m), "-")) {
+            char *one = m, *sep;            /* "A; B": a bar each */
+            while ((sep = strstr(one, "; ")) != NULL) {
+                *sep = '\0';
+                count(&h[1], one);
+                one = sep + 2;
+            }
+            count(&h[1], one);
+        }
     }
     for (k = 0; k < 2; k++) {
         size_t j, nb = h[k].nb + (h[k].b[CLASS_MAXBARS].n > 0);
@@ -384,7 +406,7 @@ void pt_class_html(pt_sbuf *sb, const pt_class *c)
         pt_sbuf_addf(sb, "<section id=\"diff-%zu\"><h2>", k + 1);
         pt_sbuf_add_xml(sb, r->name);
         pt_sbuf_add(sb, "</h2>\n<pre>");
-        for (t = 0; t < 2; t++)
+        for (t = 0; t < 3; t++)
             if (r->text[t].len) pt_sbuf_add_xml(sb, r->text[t].s);
         if (!r->text[0].len && !r->text[1].len && r->why) pt_sbuf_add_xml(sb, r->why);
         pt_sbuf_add(sb, "</pre>\n");

@@ -9,7 +9,9 @@
 ** and its first bytes (never opened unless it is a regular file or a link to
 ** one, opened without blocking); the diffs, each a forked child running
 ** pt_diff_run() with its standard output and error into a pipe and its
-** pt_diff_outcome into a second one, at most --jobs at a time; then the
+** pt_diff_outcome into a second one, at most --jobs at a time (per row its
+** trace, its image, and, EXPECTED a scene, its image against its own trace:
+** is it what the student's log drew?); then the
 ** report (class_report.c).
 */
 #define _POSIX_C_SOURCE 200809L
@@ -49,9 +51,11 @@ static const char class_usage[] =
 "  DIR          the students' files: traces (JSON Lines, text), the course's\n"
 "               logs, images (PPM, PNG).  A student is a file name without its\n"
 "               extension: alice.log and alice.ppm are one row, the image\n"
-"               compared with EXPECTED's image (EXPECTED a scene).  Names that\n"
-"               start with '.' are skipped; anything that cannot be read gets a\n"
-"               row that says why.  Nothing in DIR is written.\n"
+"               compared with EXPECTED's image and with the student's own\n"
+"               log (EXPECTED a scene; a mistake only the latter names is\n"
+"               added after \"; \").  Names that start with '.' are skipped;\n"
+"               anything that cannot be read gets a row that says why.\n"
+"               Nothing in DIR is written.\n"
 "  --csv FILE   the table as CSV (RFC 4180); an ambiguous row's last cell is\n"
 "               the scene diff printed to tell its mistakes apart\n"
 "  --html FILE  a self-contained page: a bar chart per stage and per mistake,\n"
@@ -180,6 +184,7 @@ static pt_class_row *row_for(pt_class *c, size_t *cap, const char *name, size_t 
     memset(r, 0, sizeof *r);
     pt_sbuf_init(&r->text[0]);
     pt_sbuf_init(&r->text[1]);
+    pt_sbuf_init(&r->text[2]);
     if (!(r->name = malloc(len + 1))) return NULL;
     memcpy(r->name, name, len);
     r->name[len] = '\0';
@@ -258,20 +263,22 @@ typedef struct job {
     pid_t pid;
     int text, res;               /* the pipes' read ends */
     pt_class_row *r;
-    int image;                   /* 1: the image diff */
+    int image;                   /* 0: the trace's diff, 1: the image's, 2: the
+                                 ** image's against the row's own trace */
 } job;
 
-/* Start the diff of r's trace (image 0) or image against exp; an image's
-** diff gets the scene (NULL: none) so that it can name a picture moved by
-** the viewport's corner.  Returns 0, or -1 (fork or pipe failed: the row
-** says so). */
+/* Start the diff of r's trace (image 0) or image (1) against exp, or of
+** r's image against r's own trace (2, exp unused); an image's diff gets the
+** scene (NULL: none) so that it can name a picture moved by the viewport's
+** corner.  Returns 0, or -1 (fork or pipe failed: the row says so). */
 static int start(job *j, const copts *o, const char *dir, const char *exp, pt_class_row *r,
                  int image, const char *scene)
 {
     int tp[2], rp[2];
-    char path[4096];
+    char path[4096], own[4096];
 
     snprintf(path, sizeof path, "%s/%s", dir, image ? r->image : r->trace);
+    snprintf(own, sizeof own, "%s/%s", dir, r->trace ? r->trace : "");
     if (pipe(tp) != 0) return -1;
     if (pipe(rp) != 0) { close(tp[0]); close(tp[1]); return -1; }
     fflush(stdout);
@@ -297,7 +304,7 @@ static int start(job *j, const copts *o, const char *dir, const char *exp, pt_cl
         if (o->tol) { argv[argc++] = "--tol"; argv[argc++] = (char *)o->tol; }
         if (o->rel) { argv[argc++] = "--rel"; argv[argc++] = (char *)o->rel; }
         if (image && scene) { argv[argc++] = "--scene"; argv[argc++] = (char *)scene; }
-        argv[argc++] = (char *)exp;
+        argv[argc++] = image == 2 ? own : (char *)exp;
         argv[argc++] = path;
         argv[argc] = NULL;
         rc = pt_diff_run(argc, argv, &out);
@@ -376,6 +383,7 @@ static void finish(const pt_class *c, job *j)
             if (!r->why) r->why = dup_str("out of memory");
             return;
         }
+    if (j->image == 2) { r->own = out; r->has_own = 1; return; }  /* only its name counts */
     if (j->image) { r->im = out; r->has_im = 1; }
     else { r->t = out; r->has_t = 1; }
     if (out.status == PT_EXIT_INPUT && !r->why) r->why = first_line(&r->text[j->image]);
@@ -387,17 +395,19 @@ static int run_all(pt_class *c, const copts *o, const char *exp_trace, const cha
     job run[16];
     struct pollfd pf[16];
     size_t next = 0, k;
-    int nrun = 0, phase = 0;        /* next: the row; phase 0 its trace, 1 its image */
+    int nrun = 0, phase = 0;        /* next: the row; phase 0 its trace, 1 its image,
+                                    ** 2 its image against its trace */
     char buf[65536];
 
     for (;;) {
         while (nrun < o->jobs && next < c->nrow) {
             pt_class_row *r = &c->row[next];
             int image = phase;
-            if (phase == 0) phase = 1; else { phase = 0; next++; }
+            if (phase < 2) phase++; else { phase = 0; next++; }
             if (r->why) continue;
             if (!image && !r->trace) continue;
             if (image && (!r->image || !exp_image)) continue;
+            if (image == 2 && (!r->trace || !c->scene)) continue;
             if (start(&run[nrun], o, c->dir, image ? exp_image : exp_trace, r, image,
                       c->scene ? c->expected : NULL) != 0) {
                 if (!r->why) r->why = dup_str("cannot start a diff (no processes or pipes left)");
@@ -505,6 +515,7 @@ static void free_class(pt_class *c)
         free(c->row[k].why);
         pt_sbuf_free(&c->row[k].text[0]);
         pt_sbuf_free(&c->row[k].text[1]);
+        pt_sbuf_free(&c->row[k].text[2]);
     }
     free(c->row);
 }

@@ -25,6 +25,7 @@ static const char diff_usage[] =
 "                      [--scene SCENE] [--separating-scene FILE]\n"
 "       pipetrace diff EXPECTED.ppm ACTUAL.ppm [--image-out FILE] [--show N]\n"
 "                      [--scene SCENE]\n"
+"       pipetrace diff LOG IMAGE --scene SCENE\n"
 "Compare two traces (JSON Lines or text, in any mix) vertex by vertex: for\n"
 "each vertex the first stage where they differ and both values; then the\n"
 "known mistake that explains every vertex (recomputed from EXPECTED's previous\n"
@@ -32,6 +33,10 @@ static const char diff_usage[] =
 "they are), if one does, else the partial candidates; then the lit pixels.\n"
 "Or compare two images pixel by pixel: binary (P6) or plain (P3) PPM, or PNG\n"
 "as pipetrace writes it (uncompressed).\n"
+"Or a student's own log (or trace) with pixel lines and the image the same\n"
+"program wrote: is the image what the log drew?  Its pixels lit at their\n"
+"viewport coordinates (x_vp, y_vp) instead names the corner forgotten in\n"
+"setPixelVP, behind whatever else the log shows.\n"
 "A scene of the course's renderer 7 or 9: its traces (JSON Lines, text, CSV)\n"
 "and the course's logs of it (its jar's, or pipetrace's in that format) are\n"
 "compared stage by stage (the clip stages' new vertices too) and pixel by\n"
@@ -333,8 +338,19 @@ int pt_diff_run(int argc, char **argv, pt_diff_outcome *out)
             rc = usage_error("%s", "--image-out needs two images");
         else
             rc = pt_diff79(&o, buf, len);
+    } else if (!is_image(kind[0]) && is_image(kind[1]) && o.scene && !o.image_out) {
+        pt_ppm img;                             /* a student's own log and image */
+        memset(&img, 0, sizeof img);
+        if (pt_image_parse(&img, o.path[1], buf[1], len[1], err, sizeof err) != 0) {
+            fprintf(stderr, "%s\n", err);
+            rc = PT_EXIT_INPUT;
+        } else {
+            rc = pt_diff_own_image(&o, &c->t[0], &img);
+        }
+        pt_image_free(&img);
     } else if (is_image(kind[0]) != is_image(kind[1])) {
-        rc = usage_error("%s", "cannot compare an image with a trace");
+        rc = usage_error("%s", "cannot compare an image with a trace (but a trace or log "
+                         "with the image the same program wrote, --scene given)");
     } else if (is_image(kind[0])) {
         pt_ppm img[2];
         memset(img, 0, sizeof img);

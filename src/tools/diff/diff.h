@@ -190,6 +190,12 @@ const char *pt_diff_who(const dctx *c, uint32_t model, uint64_t v, char *buf, si
 ** --image-out).  Returns the exit status. */
 int pt_diff_images(const dopts *o, const pt_ppm img[2]);
 
+/* --scene SCENE, EXPECTED a student's own trace or log with pixel records,
+** ACTUAL the image the same program wrote: is the image what the log drew,
+** or its pixels without the viewport's corner (named)?  Returns the exit
+** status (0 drawn, 1 not), or -1 out of memory. */
+int pt_diff_own_image(const dopts *o, const pt_tread *t, const pt_ppm *img);
+
 /* ===== dvertex.c ===== */
 
 /* Fill c's vertex table from both sides.  Returns 0, PT_EXIT_INPUT on a

@@ -10,6 +10,12 @@
 ** taken off every pixel) names the rasterizer's mistake that writes its
 ** pixels without the offset (pt_raster_mistakes, no_offset): the course's log
 ** prints x_vp before setPixelVP, so only the image shows it.
+** A student's own log (or trace) with pixel records and the image the same
+** program wrote (pt_diff_own_image): the image is what the log drew when its
+** lit pixels are exactly the logged framebuffer pixels, the scene's
+** background elsewhere; when they are exactly the logged viewport pixels
+** (x_vp, y_vp) instead, the corner not (0, 0), the corner was forgotten in
+** setPixelVP, whatever other mistake the log shows.
 */
 #include <inttypes.h>
 #include <stdio.h>
@@ -119,6 +125,25 @@ static int image_shift(const pt_ppm *a, const pt_ppm *b, int *dx, int *dy)
     if (box[1][1] == 0) *dy = box[1][3] - box[0][3];
     if (*dx == 0 && *dy == 0) return 0;
     return moved_by(a, b, *dx, *dy);
+}
+
+/* 1 when the lit pixels of img (those that are not bg) are exactly the n
+** pixel records of px moved by (-dx, -dy), each inside img.  mark: w * h
+** bytes to work in. */
+static int lit_exactly(const pt_ppm *img, const unsigned char bg[3], const pt_tpix *px,
+                       size_t n, int64_t dx, int64_t dy, unsigned char *mark)
+{
+    size_t k, npix = (size_t)img->w * (size_t)img->h;
+
+    memset(mark, 0, npix);
+    for (k = 0; k < n; k++) {
+        int64_t x = px[k].x - dx, y = px[k].y - dy;
+        if (x < 0 || y < 0 || x >= img->w || y >= img->h) return 0;
+        mark[(size_t)y * (size_t)img->w + (size_t)x] = 1;
+    }
+    for (k = 0; k < npix; k++)
+        if ((memcmp(img->rgb + 3 * k, bg, 3) != 0) != mark[k]) return 0;
+    return 1;
 }
 
 /* --scene's viewport corner: the framebuffer pixel of viewport pixel (0, 0),
@@ -250,4 +275,60 @@ int pt_diff_images(const dopts *o, const pt_ppm img[2])
                "dimmed gray.\n", o->image_out);
     }
     return ndiff || differ ? PT_EXIT_DIFFER : PT_EXIT_OK;
+}
+
+int pt_diff_own_image(const dopts *o, const pt_tread *t, const pt_ppm *img)
+{
+    const pt_raster_mistake *mk = no_offset_mistake();
+    pt_pix o0 = {0, 0, 1}, ul;
+    unsigned char bg[3], *mark;
+    pt_scene sc;
+    int renderer, drawn, moved;
+    pbuf ps;
+
+    if (pt_cli_load(&sc, o->scene) != 0) return PT_EXIT_TROUBLE;
+    renderer = sc.renderer;
+    memcpy(bg, sc.background, 3);
+    pt_scene_free(&sc);
+    if (renderer != 4) {
+        fprintf(stderr, "pipetrace diff: %s: error: --scene with a log and an image is for the "
+                "classic camera's and the matrix camera's scenes, not renderer %d's\n",
+                o->scene, renderer);
+        return PT_EXIT_TROUBLE;
+    }
+    if (!t->hdr.have || !t->npx) {
+        fprintf(stderr, "%s:1:1: error: no pixel records: nothing to compare the image %s "
+                "with\n", o->path[0], o->path[1]);
+        return PT_EXIT_TROUBLE;
+    }
+    ul = pt_viewport2fb(o0, t->hdr.vp_x, t->hdr.vp_y, NULL);   /* viewport pixel (0, 0) */
+    if (!(mark = malloc((size_t)img->w * (size_t)img->h + 1))) return -1;
+    drawn = lit_exactly(img, bg, t->px, t->npx, 0, 0, mark);
+    moved = !drawn && (ul.x || ul.y) && lit_exactly(img, bg, t->px, t->npx, ul.x, ul.y, mark);
+    free(mark);
+    printf("%-9s %s  (%zu pixel records, corner (%" PRId64 ", %" PRId64 "))\n",
+           pt_diff_side[0], o->path[0], t->npx, ul.x, ul.y);
+    printf("%-9s %s  (%s, %d x %d, maxval %d)\n\n", pt_diff_side[1], o->path[1], img->format,
+           img->w, img->h, img->maxval);
+    o->out->images = 1;
+    ps.n = 0;
+    ps.b[0] = '\0';
+    if (drawn) {
+        pt_diff_add(&ps, "The image is what the log drew: its lit pixels are the logged "
+                    "framebuffer pixels, %s's background elsewhere.", o->scene);
+    } else if (moved && mk) {
+        pt_diff_add(&ps, "The image's lit pixels are the logged ones at their viewport "
+                    "coordinates (x_vp, y_vp), not at (x_ul + x_vp, y_ul + y_vp): the "
+                    "viewport's corner (x_ul, y_ul) = (%" PRId64 ", %" PRId64 ") taken off "
+                    "every pixel. Likely mistake: %s: %s, %s.", ul.x, ul.y, mk->name,
+                    mk->where, mk->how);
+        pt_diff_outcome_named(o->out, mk->name);
+    } else {
+        pt_diff_add(&ps, "The image's lit pixels are neither the logged framebuffer pixels "
+                    "nor the logged viewport pixels (x_vp, y_vp) on %s's background: no "
+                    "known mistake is named.", o->scene);
+    }
+    pt_diff_para("", ps.b);
+    if (drawn) return PT_EXIT_OK;
+    return PT_EXIT_DIFFER;
 }
