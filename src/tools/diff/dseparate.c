@@ -283,11 +283,12 @@ static void sig4(const par4 *pr, const piece4 *pc, const hyp4 *hy, sig *s)
 
 /* Model coordinate whose pixel-plane value (axis 0: x_pp, 1: y_pp) is
 ** target, or the nearest found, for a vertex at z_c = -1 (perspective) or
-** z_c = 0: there x_ip = x_c = x_m exactly. */
+** z_c = 0: there x_ip = x_c = x_m exactly.  The pixel stage's formula turned
+** around gives only the first guess; each step asks the stage itself. */
 static double aim(const par4 *pr, int axis, double target)
 {
     int size = axis ? pr->p.h : pr->p.w, k;
-    double x = (target - 0.5) * 2.001 / size - 1, best = x, bd = HUGE_VAL;
+    double x = (target - 0.5) * PT_PIXEL_DIVISOR / size - 1, best = x, bd = HUGE_VAL;
     pt_cat_val in, out;
 
     for (k = 0; k < 256; k++) {
