@@ -294,8 +294,10 @@ static const pt_cx_row rows[PT_NCXS] = {
       NULL },
     { "raster", "viewport", "framebuffer", "the colour bytes the rasterizer writes at the "
       "vertex's pixel: anti-aliasing's weight and gamma where they apply",
-      "weight f = (float)(y - floor(y)); low = (1 - f)*c + f*bg; g = (float)Math.pow(c, 1/2.2); "
-      "byte = (int)((double)(g*255f) + 0.5)",
+      "c = (float)|c0 + slope*(x - x0)|, slope = (c1 - c0)/(x1 - x0) (x the stepped "
+      "coordinate); anti-aliasing: f = (float)(y - floor(y)), low = (1 - f)*c + f*bg, "
+      "high = f*c + (1 - f)*bg; gamma: c' = (float)Math.pow(c, 1/2.2); "
+      "byte = (int)((double)(c'*255f) + 0.5); the last pixel: byte of c1, no gamma",
       NULL },
 };
 
@@ -799,53 +801,45 @@ static void bytes_text(pt_xt *t, const char *cn, pt_rgb c, pt_rgb written, const
     }
 }
 
-static void pixel_line(pt_xt *t, const pt_cx_journey *j, const pt_cx_px *p, const char *sep)
+/* The numbers of a write from c, the colour of its step (a segment's last
+** pixel: its end's; a point's: its own): anti-aliasing's weight and blend
+** for the pair's lower or upper pixel, gamma and the bytes, checked against
+** the colour px says the rasterizer wrote there. */
+static void colour_text(pt_xt *t, const pt_rv_raster_par *par, const pt_rv_pixel *px,
+                        int upper, pt_rgb c, const char *sep)
 {
-    const pt_rv_pixel *px = &p->px;
-    pt_rgb c = p->end_c, g;
+    pt_rgb g;
 
-    pt_xt_add(t, px->kind == PT_RV_PX_POINT ? "point " : "segment ");
-    pt_xt_int(t, (int64_t)p->prim, 0);
     switch (px->kind) {
     case PT_RV_PX_END:
-        pt_xt_add(t, " (rasterized): its last pixel, coverage 1, in the end's colour as it is "
-                     "(no gamma, no anti-aliasing): c = ");
-        rgb(t, c);
         bytes_text(t, "c", c, px->c[0], sep);
         return;
     case PT_RV_PX_POINT:
     case PT_RV_PX_STEP:
-        pt_xt_add(t, px->kind == PT_RV_PX_POINT ? ": a pixel of its disc, coverage 1, c = "
-                  : " (rasterized): its first step, coverage 1 (anti-aliasing off), its colour "
-                    "the end's, c = (float)|c0 + slope*0| = ");
-        rgb(t, c);
-        g = gamma_text(t, c, j->par.gamma, sep);
-        bytes_text(t, j->par.gamma ? "c'" : "c", g, px->c[0], sep);
+        g = gamma_text(t, c, par->gamma, sep);
+        bytes_text(t, par->gamma ? "c'" : "c", g, px->c[0], sep);
         return;
     case PT_RV_PX_AA: {
         double a = px->transposed ? px->x_pp : px->y_pp;
         double a_low = floor(a);
         float f = pt_aa_weight(a, a_low), lo[3], hi[3];
-        int lower = (px->transposed ? j->px_x : j->px_y) == px->lo, k;
+        int k;
         pt_rgb mix;
 
-        pt_xt_add(t, " (rasterized): its first step, anti-aliased, its colour the end's, "
-                     "c = (float)|c0 + slope*0| = ");
-        rgb(t, c);
         pt_xt_add(t, sep);
         pt_xt_add(t, px->transposed ? "weight f = (float)(x - floor(x)) = (float)("
                                     : "weight f = (float)(y - floor(y)) = (float)(");
         pt_xt_num(t, a, 0); pt_xt_add(t, " - "); pt_xt_num(t, a_low, 1); pt_xt_add(t, ") = ");
         pt_xt_num(t, (double)f, 0);
-        pt_xt_add(t, lower ? "; this pixel is the lower of the pair, coverage 1 - f = "
-                           : "; this pixel is the upper of the pair, coverage f = ");
-        pt_xt_num(t, lower ? (double)(1.0f - f) : (double)f, 0);
+        pt_xt_add(t, !upper ? "; this pixel is the lower of the pair, coverage 1 - f = "
+                            : "; this pixel is the upper of the pair, coverage f = ");
+        pt_xt_num(t, !upper ? (double)(1.0f - f) : (double)f, 0);
         pt_xt_add(t, " (the blend in float arithmetic, bg the viewport's background)");
         for (k = 0; k < 3; k++) {
-            float bg = pt_color_float(j->par.bg[k]);
+            float bg = pt_color_float(par->bg[k]);
             pt_aa_blend((float)ccomp(c, k), bg, f, &lo[k], &hi[k]);
             pt_xt_add(t, sep); pt_xt_add(t, rgb_names[k]);
-            if (lower) {
+            if (!upper) {
                 pt_xt_add(t, " = (1 - f)*c + f*bg = (1 - "); pt_xt_num(t, (double)f, 0);
                 pt_xt_add(t, ")*"); pt_xt_num(t, ccomp(c, k), 0); pt_xt_add(t, " + ");
                 pt_xt_num(t, (double)f, 0); pt_xt_add(t, "*"); pt_xt_num(t, (double)bg, 0);
@@ -854,14 +848,43 @@ static void pixel_line(pt_xt *t, const pt_cx_journey *j, const pt_cx_px *p, cons
                 pt_xt_add(t, "*"); pt_xt_num(t, ccomp(c, k), 0); pt_xt_add(t, " + (1 - ");
                 pt_xt_num(t, (double)f, 0); pt_xt_add(t, ")*"); pt_xt_num(t, (double)bg, 0);
             }
-            pt_xt_add(t, " = "); pt_xt_num(t, (double)(lower ? lo[k] : hi[k]), 0);
+            pt_xt_add(t, " = "); pt_xt_num(t, (double)(!upper ? lo[k] : hi[k]), 0);
         }
-        mix.r = lower ? lo[0] : hi[0]; mix.g = lower ? lo[1] : hi[1]; mix.b = lower ? lo[2] : hi[2];
-        g = gamma_text(t, mix, j->par.gamma, sep);
-        bytes_text(t, j->par.gamma ? "c'" : "c", g, px->c[lower ? 0 : 1], sep);
+        mix.r = !upper ? lo[0] : hi[0]; mix.g = !upper ? lo[1] : hi[1];
+        mix.b = !upper ? lo[2] : hi[2];
+        g = gamma_text(t, mix, par->gamma, sep);
+        bytes_text(t, par->gamma ? "c'" : "c", g, px->c[upper], sep);
         return;
     }
     }
+}
+
+static void pixel_line(pt_xt *t, const pt_cx_journey *j, const pt_cx_px *p, const char *sep)
+{
+    const pt_rv_pixel *px = &p->px;
+    pt_rgb c = p->end_c;
+
+    pt_xt_add(t, px->kind == PT_RV_PX_POINT ? "point " : "segment ");
+    pt_xt_int(t, (int64_t)p->prim, 0);
+    switch (px->kind) {
+    case PT_RV_PX_END:
+        pt_xt_add(t, " (rasterized): its last pixel, coverage 1, in the end's colour as it is "
+                     "(no gamma, no anti-aliasing): c = ");
+        break;
+    case PT_RV_PX_POINT:
+    case PT_RV_PX_STEP:
+        pt_xt_add(t, px->kind == PT_RV_PX_POINT ? ": a pixel of its disc, coverage 1, c = "
+                  : " (rasterized): its first step, coverage 1 (anti-aliasing off), its colour "
+                    "the end's, c = (float)|c0 + slope*0| = ");
+        break;
+    case PT_RV_PX_AA:
+        pt_xt_add(t, " (rasterized): its first step, anti-aliased, its colour the end's, "
+                     "c = (float)|c0 + slope*0| = ");
+        break;
+    }
+    rgb(t, c);
+    colour_text(t, &j->par, px, px->kind == PT_RV_PX_AA &&
+                (px->transposed ? j->px_x : j->px_y) != px->lo, c, sep);
 }
 
 static void step_raster(pt_xt *t, const pt_cx_journey *j, const char *sep)
@@ -886,6 +909,121 @@ static void step_raster(pt_xt *t, const pt_cx_journey *j, const char *sep)
         if (k) pt_xt_add(t, sep);
         pixel_line(t, j, &j->px[k], sep);
     }
+}
+
+/* "vertex 3" or, for a point, the one it has. */
+static void ends_text(pt_xt *t, const pt_cx_write *w)
+{
+    if (w->p.kind == PT_RV_POINT) {
+        pt_xt_add(t, "a point at vertex "); pt_xt_int(t, (int64_t)w->v[0], 0);
+        pt_xt_add(t, " (radius "); pt_xt_int(t, w->p.radius, 0); pt_xt_add(t, ")");
+        return;
+    }
+    pt_xt_add(t, "a segment from vertex "); pt_xt_int(t, (int64_t)w->v[0], 0);
+    pt_xt_add(t, " to vertex "); pt_xt_int(t, (int64_t)w->v[1], 0);
+}
+
+/* A loop step of w's segment: which step, and the colour it interpolates
+** between the ends in stepping order (the rasterizer's slopes), into *c. */
+static void step_colour(pt_xt *t, const pt_cx_write *w, pt_rgb *c, const char *sep)
+{
+    const pt_rv_slopes *sl = &w->sl;
+    int tr = sl->transposed, k;
+    double x = tr ? w->px.y_pp : w->px.x_pp;   /* the stepped coordinate */
+    double x0 = sl->x0_vp + 1.0, x1 = sl->x1_vp + 1.0;
+    int e0 = pt_java_round(tr ? w->ends[1] : w->ends[0]) == x0 ? 0 : 1;
+    pt_rgb c0 = w->c[e0], c1 = w->c[1 - e0];
+    const char *xn = tr ? "y" : "x";
+
+    pt_xt_add(t, ", its step k = "); pt_xt_add(t, xn); pt_xt_add(t, " - ");
+    pt_xt_add(t, xn); pt_xt_add(t, "0 = "); pt_xt_num(t, x, 0); pt_xt_add(t, " - ");
+    pt_xt_num(t, x0, 1); pt_xt_add(t, " = "); pt_xt_num(t, x - x0, 0);
+    pt_xt_add(t, tr ? " (transposed: steep, the DDA steps y_pp" : " (the DDA steps x_pp");
+    pt_xt_add(t, " from vertex "); pt_xt_int(t, (int64_t)w->v[e0], 0); pt_xt_add(t, "'s end ");
+    pt_xt_num(t, x0, 0); pt_xt_add(t, " to vertex "); pt_xt_int(t, (int64_t)w->v[1 - e0], 0);
+    pt_xt_add(t, "'s "); pt_xt_num(t, x1, 0); pt_xt_add(t, ", c0 and c1 their colours)");
+    for (k = 0; k < 3; k++) {
+        pt_xt_add(t, sep); pt_xt_add(t, "slope_"); pt_xt_add(t, rgb_names[k]);
+        pt_xt_add(t, " = ("); pt_xt_add(t, rgb_names[k]); pt_xt_add(t, "1 - ");
+        pt_xt_add(t, rgb_names[k]); pt_xt_add(t, "0)/("); pt_xt_add(t, xn); pt_xt_add(t, "1 - ");
+        pt_xt_add(t, xn); pt_xt_add(t, "0) = (");
+        pt_xt_num(t, ccomp(c1, k), 0); pt_xt_add(t, " - "); pt_xt_num(t, ccomp(c0, k), 1);
+        pt_xt_add(t, ")/("); pt_xt_num(t, x1, 0); pt_xt_add(t, " - "); pt_xt_num(t, x0, 1);
+        pt_xt_add(t, ") = "); pt_xt_num(t, sl->mc[k], 0);
+    }
+    c->r = pt_color_at(c0.r, sl->mc[0], x, x0);
+    c->g = pt_color_at(c0.g, sl->mc[1], x, x0);
+    c->b = pt_color_at(c0.b, sl->mc[2], x, x0);
+    for (k = 0; k < 3; k++) {
+        pt_xt_add(t, sep); pt_xt_add(t, rgb_names[k]); pt_xt_add(t, " = (float)|");
+        pt_xt_add(t, rgb_names[k]); pt_xt_add(t, "0 + slope_"); pt_xt_add(t, rgb_names[k]);
+        pt_xt_add(t, "*("); pt_xt_add(t, xn); pt_xt_add(t, " - "); pt_xt_add(t, xn);
+        pt_xt_add(t, "0)| = (float)|"); pt_xt_num(t, ccomp(c0, k), 0); pt_xt_add(t, " + ");
+        pt_xt_num(t, sl->mc[k], 1); pt_xt_add(t, "*("); pt_xt_num(t, x, 0);
+        pt_xt_add(t, " - "); pt_xt_num(t, x0, 1); pt_xt_add(t, ")| = ");
+        pt_xt_num(t, ccomp(*c, k), 0);
+    }
+}
+
+size_t pt_cx_explain_write(char *buf, size_t len, const pt_scene *s, const pt_cx_write *w,
+                           uint64_t nwrites, const char *sep)
+{
+    const pt_rv_pixel *px = &w->px;
+    pt_cx_journey j;
+    pt_xt t;
+    pt_rgb c = px->c[0];
+
+    begin(&j, s);
+    pt_xt_init(&t, buf, len);
+    pt_xt_add(&t, nwrites > 1 ? "the last of " : "the only write");
+    if (nwrites > 1) { pt_xt_int(&t, (int64_t)nwrites, 0); pt_xt_add(&t, " writes"); }
+    pt_xt_add(&t, " at (x_fb, y_fb) = ("); pt_xt_int(&t, w->at.x_fb, 0); pt_xt_add(&t, ", ");
+    pt_xt_int(&t, w->at.y_fb, 0); pt_xt_add(&t, "), index = y_fb*W + x_fb = ");
+    pt_xt_int(&t, w->at.y_fb, 0); pt_xt_add(&t, "*"); pt_xt_int(&t, s->fb_w, 0);
+    pt_xt_add(&t, " + "); pt_xt_int(&t, w->at.x_fb, 1); pt_xt_add(&t, " = ");
+    pt_xt_int(&t, w->at.idx, 0);
+    if (w->at.x_fb < 0 || w->at.x_fb >= s->fb_w || w->at.y_fb < 0 || w->at.y_fb >= s->fb_h) {
+        pt_xt_add(&t, " (outside the framebuffer, the course's index wraps past its edge: "
+                      "the pixel written is (");
+        pt_xt_int(&t, w->at.idx % s->fb_w, 0); pt_xt_add(&t, ", ");
+        pt_xt_int(&t, w->at.idx / s->fb_w, 0); pt_xt_add(&t, ") of the array)");
+    }
+    pt_xt_add(&t, ": model "); pt_xt_add(&t, w->model);
+    if (strcmp(w->position, w->model)) {
+        pt_xt_add(&t, " (position "); pt_xt_add(&t, w->position); pt_xt_add(&t, ")");
+    }
+    pt_xt_add(&t, ", primitive "); pt_xt_int(&t, (int64_t)w->prim, 0);
+    pt_xt_add(&t, " of the rasterizer, ");
+    ends_text(&t, w);
+    switch (px->kind) {
+    case PT_RV_PX_END:
+        pt_xt_add(&t, w->has_slopes ? ": its last pixel, coverage 1, in that end's colour as "
+                                      "it is (no gamma, no anti-aliasing): c = "
+                                    : ", one pixel long: coverage 1, in its first end's colour "
+                                      "as it is (no gamma, no anti-aliasing): c = ");
+        rgb(&t, c);
+        break;
+    case PT_RV_PX_POINT:
+        c = w->c[0];
+        pt_xt_add(&t, ": a pixel of its disc, coverage 1, in its colour c = ");
+        rgb(&t, c);
+        break;
+    case PT_RV_PX_STEP:
+    case PT_RV_PX_AA:
+        step_colour(&t, w, &c, sep);
+        if (px->kind == PT_RV_PX_STEP) {
+            pt_xt_add(&t, sep);
+            pt_xt_add(&t, "anti-aliasing off: the pixel Math.round of the other coordinate, "
+                          "coverage 1");
+        }
+        break;
+    }
+    colour_text(&t, &j.par, px, w->upper, c, sep);
+    if (px->kind == PT_RV_PX_AA && w->coverage == 0.0f) {
+        pt_xt_add(&t, sep);
+        pt_xt_add(&t, "coverage 0: the write leaves the viewport's background there");
+    }
+    return t.len;
 }
 
 size_t pt_cx_stage(char *buf, size_t len, const pt_cx_journey *j, pt_cx_step st,

@@ -129,6 +129,37 @@ pt_cx_step pt_cx_step_of(pt_course_stage cs);
 size_t pt_cx_stage(char *buf, size_t len, const pt_cx_journey *j, pt_cx_step st,
                    const char *sep);
 
+/* One write of the rasterizer at a framebuffer pixel, as its listener told
+** it (stages/rv_raster.h): the quiz's colour question names the last one. */
+typedef struct pt_cx_write {
+    const char *model;           /* the scene model's name */
+    const char *position;        /* its position's name */
+    uint64_t prim;               /* 1-based in the rasterizer's list (the trace's
+                                 ** "primitive" of the pixel record) */
+    pt_rv_prim p;                /* it (indices in the model the clips left) */
+    uint64_t v[2];               /* its ends' vertices, 1-based as the trace numbers them */
+    pt_rgb c[2];                 /* its ends' colours */
+    double ends[4];              /* its ends in the pixel plane, before rounding:
+                                 ** x0, y0, x1, y1 (the rasterizer's "ends") */
+    int has_slopes;              /* 1: a segment longer than one pixel, */
+    pt_rv_slopes sl;             /*   its setup as the rasterizer told it */
+    pt_rv_pixel px;              /* the pixel line (px.par not kept) */
+    int upper;                   /* 1: the second pixel of an anti-aliased pair */
+    float coverage;              /* 1; an anti-aliased pair's 1 - f and f */
+    pt_fb_pixel at;              /* where: x_fb, y_fb and the index
+                                 ** (pt_raster_fb_pixel), at.paint the bytes */
+} pt_cx_write;
+
+/* The worked numbers of write w into scene s's framebuffer: which primitive,
+** which step of its DDA, the colour the step interpolates (its slopes as the
+** rasterizer computed them), anti-aliasing's weight and blend, gamma and the
+** bytes, each function of stages/pt_color.h asked again and checked against
+** what the rasterizer wrote; nwrites is how many writes the pixel had.  The
+** equations separated by sep.  Returns the length (>= len: cut short).
+** Can't fail. */
+size_t pt_cx_explain_write(char *buf, size_t len, const pt_scene *s, const pt_cx_write *w,
+                           uint64_t nwrites, const char *sep);
+
 /* One vertex record of a trace of a renderer 7 or 9 scene (--explain). */
 typedef struct pt_cx_rec {
     pt_course_stage st;          /* the stage whose record it is */

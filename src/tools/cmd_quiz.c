@@ -325,11 +325,17 @@ static void ask(quiz *q)
 /* Question i's formula and the numbers put in, as say_wrong() shows renderer 4's. */
 static void say_worked79(const pt_q79 *z, int i)
 {
-    char b[PT_EXPLAINLEN];
+    char b[PT_EXPLAINLEN], *big;
     const char *f = pt_q79_formula(z, i);
+    size_t n;
 
     printf("  %s\n", f ? f : "the scene gives:");
-    if (pt_q79_worked(z, i, b, sizeof b, "\n    ")) printf("    %s\n", b);
+    n = pt_q79_worked(z, i, b, sizeof b, "\n    ");
+    if (n >= sizeof b && (big = malloc(n + 1)) != NULL) {    /* the colour's can be longer */
+        pt_q79_worked(z, i, big, n + 1, "\n    ");
+        printf("    %s\n", big);
+        free(big);
+    } else if (n) printf("    %s\n", b);
 }
 
 /* Ask q's questions of renderers 7 and 9 in turn, filling q->result: as

@@ -69,6 +69,9 @@ struct pt_q79 {
     unsigned long long v;        /* the vertex, 1-based */
     qa q[PT_Q79_MAX];
     int nq;
+    pt_fb_pixel col_at;          /* the colour's pixel (idx -1: the course drops it) */
+    uint64_t nwrites;            /* the render's writes there, */
+    pt_cx_write last;            /*   the last of them */
 };
 
 /* ===== running the segment through the stages ===== */
@@ -229,14 +232,7 @@ static int run_from(const pt_q79 *z, int from, pt_rv_model *m, qa *out, int *n,
                 a->v[0] = (double)vp.x;
                 a->v[1] = (double)vp.y;
             }
-            if ((a = add_q(out, n, QK_COLOR, i, A_NONE)) && vp.ok) {
-                int64_t x = s->vp_x + vp.x, y = s->vp_y + vp.y;
-                if (x >= 0 && y >= 0 && x < fb.w && y < fb.h) {
-                    const unsigned char *b = fb.rgb + 3 * (y * fb.w + x);
-                    a->ans = A_VAL;
-                    a->v[0] = b[0]; a->v[1] = b[1]; a->v[2] = b[2];
-                }
-            }
+            add_q(out, n, QK_COLOR, i, A_NONE);     /* the whole render's: pt_q79_make */
             break;
         }
         default:
@@ -254,6 +250,148 @@ static int run_from(const pt_q79 *z, int from, pt_rv_model *m, qa *out, int *n,
     }
     pt_fb_free(&fb);
     pt_rv_model_free(m);
+    return rc;
+}
+
+/* ===== the colour: the last write at the vertex's pixel ===== */
+
+typedef struct lastw {           /* the render's writes at one pixel */
+    int64_t idx;                 /* its index (pt_raster_fb_pixel) */
+    int wrap;                    /* 1: the viewport sticks out of the framebuffer */
+    const pt_scene *s;
+    uint64_t raster_no;          /* the primitive being drawn, 1-based */
+    pt_cx_write cur;             /* it */
+    pt_cx_write last;            /* the last write at idx */
+    uint64_t nwrites;
+} lastw;
+
+/* The rasterizer numbers the primitives the clip left, from 1 a position. */
+static void lw_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
+                     const pt_rv_model *m)
+{
+    (void)st; (void)pos; (void)m;
+    ((lastw *)ud)->raster_no = 0;
+}
+
+static void lw_raster(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
+                      const pt_rv_prim *p)
+{
+    lastw *l = ud;
+    pt_cx_write *w = &l->cur;
+    int e1 = p->kind == PT_RV_LINE;
+
+    memset(w, 0, sizeof *w);
+    w->model = pos->sm->name;
+    w->position = pos->pos_name;
+    w->prim = ++l->raster_no;
+    w->p = *p;
+    w->v[0] = (uint64_t)p->v[0] + 1;
+    w->v[1] = (uint64_t)p->v[e1] + 1;
+    w->c[0] = m->c[p->c[0]];
+    w->c[1] = m->c[p->c[e1]];
+}
+
+static void lw_ends(void *ud, double x0, double y0, double x1, double y1)
+{
+    lastw *l = ud;
+    l->cur.ends[0] = x0; l->cur.ends[1] = y0;
+    l->cur.ends[2] = x1; l->cur.ends[3] = y1;
+}
+
+static void lw_slopes(void *ud, const pt_rv_slopes *sl)
+{
+    lastw *l = ud;
+    l->cur.sl = *sl;
+    l->cur.has_slopes = 1;
+}
+
+/* One write of px (its pixel upper: 0 or 1) at viewport pixel (x_vp, y_vp). */
+static void lw_write(lastw *l, const pt_rv_pixel *px, int x_vp, int y_vp, int upper, float f)
+{
+    const pt_scene *s = l->s;
+    pt_fb_pixel at;
+
+    if (pt_raster_fb_pixel(x_vp, y_vp, s->vp_x, s->vp_y, s->fb_w, s->fb_h, l->wrap, &at) != l->idx)
+        return;
+    l->nwrites++;
+    l->last = l->cur;
+    l->last.px = *px;
+    l->last.px.par = NULL;
+    l->last.upper = upper;
+    l->last.coverage = f;
+    l->last.at = at;
+    memcpy(l->last.at.paint.rgb, px->b[upper], 3);
+    l->last.at.paint.coverage = f;
+}
+
+/* The pixels a pixel line writes, as the trace's pixel records have them. */
+static void lw_pixel(void *ud, const pt_rv_pixel *px)
+{
+    lastw *l = ud;
+
+    switch (px->kind) {
+    case PT_RV_PX_STEP:
+    case PT_RV_PX_END:
+        lw_write(l, px, px->x_vp, px->y_vp, 0, 1.0f);
+        break;
+    case PT_RV_PX_POINT:
+        if (!px->clipped) lw_write(l, px, px->x_vp, px->y_vp, 0, 1.0f);
+        break;
+    case PT_RV_PX_AA: {
+        double a = px->transposed ? px->x_pp : px->y_pp;
+        float f = pt_aa_weight(a, floor(a));
+        if (px->transposed) {
+            lw_write(l, px, px->lo, px->y_vp, 0, 1.0f - f);
+            lw_write(l, px, px->hi, px->y_vp, 1, f);
+        } else {
+            lw_write(l, px, px->x_vp, px->lo, 0, 1.0f - f);
+            lw_write(l, px, px->x_vp, px->hi, 1, f);
+        }
+        break;
+    }
+    }
+}
+
+/* The colour question c, for the vertex's viewport pixel vp: the pixel the
+** course writes it to (pt_raster_fb_pixel, wrapped where the viewport sticks
+** out), the bytes the whole render leaves there and the last write.
+** 0, or -1 when out of memory. */
+static int colour_key(pt_q79 *z, qa *c, const qa *vp)
+{
+    const pt_scene *s = z->s;
+    pt_rv_raster_ls rls;
+    pt_course_ls ls;
+    lastw l;
+    pt_fb fb;
+    int rc;
+
+    if (vp->ans != A_VAL) return 0;
+    memset(&l, 0, sizeof l);
+    l.s = s;
+    l.wrap = !pt_scene_vp_inside(s);
+    l.idx = pt_raster_fb_pixel((int64_t)vp->v[0], (int64_t)vp->v[1], s->vp_x, s->vp_y,
+                               s->fb_w, s->fb_h, l.wrap, &z->col_at);
+    if (l.idx < 0) return 0;                /* "Bad pixel coordinate": none */
+    memset(&rls, 0, sizeof rls);
+    rls.ends = lw_ends;
+    rls.slopes = lw_slopes;
+    rls.pixel = lw_pixel;
+    rls.ud = &l;
+    memset(&ls, 0, sizeof ls);
+    ls.stage = lw_stage;
+    ls.raster = lw_raster;
+    ls.raster_ls = &rls;
+    ls.ud = &l;
+    if (pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) != 0) return -1;
+    rc = pt_course_render(s, &fb, &ls);
+    if (rc == 0) {
+        const unsigned char *b = fb.rgb + 3 * l.idx;
+        c->ans = A_VAL;
+        c->v[0] = b[0]; c->v[1] = b[1]; c->v[2] = b[2];
+        z->nwrites = l.nwrites;
+        z->last = l.last;
+    }
+    pt_fb_free(&fb);
     return rc;
 }
 
@@ -349,7 +487,14 @@ pt_q79 *pt_q79_make(const pt_scene *s, const pt_model *m, unsigned long long v)
         z->steps[z->nsteps++] = PT_CST_CLIP;
         z->steps[z->nsteps++] = PT_CST_RASTER;
     }
-    if (rc != 0 || g.failed || run_from(z, 0, &own, z->q, &z->nq, z->snap) != 0) {
+    z->col_at.idx = -1;
+    if (rc == 0 && !g.failed) {
+        if (run_from(z, 0, &own, z->q, &z->nq, z->snap) != 0) rc = -1;
+        memset(&own, 0, sizeof own);        /* run_from freed it */
+    }
+    if (rc == 0 && !g.failed && z->nq >= 2 && z->q[z->nq - 1].kind == QK_COLOR &&
+        colour_key(z, &z->q[z->nq - 1], &z->q[z->nq - 2]) != 0) rc = -1;
+    if (rc != 0 || g.failed) {
         pt_rv_model_free(&g.m);
         pt_rv_model_free(&own);
         pt_q79_free(z);
@@ -419,6 +564,36 @@ const char *pt_q79_formula(const pt_q79 *z, int k)
     return kd == QK_MODEL ? NULL : pt_cx_formula(z->s->renderer, step_of(kd));
 }
 
+/* The colour question's numbers: the last write at the pixel (io/explain_course.h),
+** the viewport's background where nothing wrote it, or where the course drops it. */
+static size_t colour_worked(const pt_q79 *z, const qa *a, char *b, size_t n, const char *sep)
+{
+    const pt_scene *s = z->s;
+    const pt_fb_pixel *at = &z->col_at;
+    int len;
+
+    if (a->ans == A_VAL && z->nwrites)
+        return pt_cx_explain_write(b, n, s, &z->last, z->nwrites, sep);
+    if (a->ans == A_VAL)
+        len = snprintf(b, n, "no primitive writes (x_fb, y_fb) = (%lld, %lld), index %lld: it "
+                       "keeps the viewport's background, which clearing the viewport put "
+                       "there: (%d, %d, %d)", (long long)at->x_fb, (long long)at->y_fb,
+                       (long long)at->idx, s->vp_background[0], s->vp_background[1],
+                       s->vp_background[2]);
+    else if (z->q[z->nq - 2].ans == A_VAL)  /* the viewport pixel, dropped */
+        len = snprintf(b, n, "none: dropped (Bad pixel coordinate): (x_fb, y_fb) = (%lld, "
+                       "%lld) lies outside the %d x %d framebuffer, and the course's index "
+                       "y_fb*W + x_fb, wrapped past an edge, lies outside its %lld pixels too: "
+                       "the course prints \"FrameBuffer: Bad pixel coordinate (%lld, %lld) "
+                       "[w=%d, h=%d]\" and writes nothing", (long long)at->x_fb,
+                       (long long)at->y_fb, s->fb_w, s->fb_h, (long long)s->fb_w * s->fb_h,
+                       (long long)at->x_fb, (long long)at->y_fb, s->fb_w, s->fb_h);
+    else
+        len = snprintf(b, n, "none: the vertex has no viewport pixel");
+    (void)sep;
+    return len < 0 ? 0 : (size_t)len;
+}
+
 size_t pt_q79_worked(const pt_q79 *z, int k, char *b, size_t n, const char *sep)
 {
     const qa *a = &z->q[k];
@@ -431,7 +606,7 @@ size_t pt_q79_worked(const pt_q79 *z, int k, char *b, size_t n, const char *sep)
     pt_cx_rec r;
 
     if (n) b[0] = '\0';
-    if (a->kind == QK_COLOR) return 0;      /* the pixel lines: pipetrace step */
+    if (a->kind == QK_COLOR) return colour_worked(z, a, b, n, sep);
     pt_course_camera(z->s, &cam);
     memset(&r, 0, sizeof r);
     r.st = stage[a->kind];

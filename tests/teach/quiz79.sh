@@ -176,8 +176,8 @@ check "quiz79-8.11 the model: the scene gives it" \
 step_formula=$("$exe" step $near --vertex 7 --all | sed -n '/^stage 5 of 9: image/,/formula/s/^  formula  //p')
 check "quiz79-8.12 the image's formula line is step's" \
     grep -qxF "  $step_formula" "$tmp/out"
-check "quiz79-8.13 the colour: its formula, no numbers (step shows its pixel lines)" \
-    test "$(sed -n '/^color: /,/^  go on/p' "$tmp/out" | sed -n 3,4p | cut -c1-12)" = "$(printf '  weight f =\n  go on with')"
+check "quiz79-8.13 the colour: its formula, then the write that left it" \
+    test "$(sed -n '/^color: /,/^  go on/p' "$tmp/out" | sed -n 3,4p | cut -c1-21)" = "$(printf '  c = (float)|c0 + sl\n    the only write at')"
 r4_formula=$("$exe" step docs/examples/triangle.scene --vertex 1 --all | sed -n 's/^  formula  \(x_pp = .*\)/\1/p')
 check "quiz79-8.18 the pixel formula is the stage table's (renderer 4's step), x_ip named x_p" \
     grep -qxF "  $(printf '%s\n' "$r4_formula" | sed 's/\([xy]\)_ip/\1_p/g')" "$tmp/out"
@@ -187,5 +187,76 @@ feed "$(cat "$tmp/zeros")\n" quiz $r9 --vertex 1
 check "quiz79-8.15 renderer 9, a wrong world: x_w = M times v_m" worked world x_w "$(kv "$tmp/r9" 2 1)"
 check "quiz79-8.16 ... z_w" worked world z_w "$(kv "$tmp/r9" 2 3)"
 check "quiz79-8.17 ... view subtracts the view vector" worked view x_v "$(kv "$tmp/r9" 3 1)"
+
+# ---- the colour's numbers: the last write at the vertex's pixel in the
+# whole render, each equation evaluated again (quiz79_color.py) to the key,
+# the write it names the trace's last pixel record there
+# colour SCENE VERTEX: a sheet of zeros; the quiz's output in $tmp/out, the
+# key in $tmp/ckey, the scene's trace in $tmp/c.jsonl
+colour() {
+    yes '0 0 0' | head -12 | "$exe" quiz "$1" --vertex "$2" > "$tmp/out" 2>/dev/null
+    sed -n '/^color: /,$s/^  go on with r g b = //p' "$tmp/out" > "$tmp/ckey"
+    "$exe" "$1" --format jsonl > "$tmp/c.jsonl"
+}
+cworked() { python3 tests/teach/quiz79_color.py "$tmp/out" "$(cat "$tmp/ckey")" "$tmp/c.jsonl"; }
+cline() { sed -n '/^color: /,/^  go on/p' "$tmp/out" | grep -q -e "$1"; }
+ppmkey() {  # ppmkey FILE.ppm.gz INDEX: the bytes of pixel INDEX of the course's image
+    python3 -c '
+import gzip, re, sys
+d = gzip.open(sys.argv[1]).read()
+m = re.match(rb"P6\s+(\d+)\s+(\d+)\s+(\d+)\s", d)
+i = m.end() + 3 * int(sys.argv[2])
+print(*d[i:i + 3])' "$1" "$2"
+}
+fbat() {    # the (x_fb, y_fb) the colour's first worked line names, as "x y"
+    sed -n '/^color: /,/^  go on/p' "$tmp/out" | sed -n 's/^    the .* at (x_fb, y_fb) = (\(-*[0-9]*\), \(-*[0-9]*\)).*/\1 \2/p'
+}
+cube=tests/course79/r7-basic-cube-viewport.scene
+colour $cube 1
+check "quiz79-9.1 renderer 7, anti-aliasing off, gamma on: the worked colour evaluates to the key, the trace's last write" cworked
+check "quiz79-9.2 ... overwritten: the last of 3 writes, by a later segment (v1 to v5), not the vertex's own first (v1 to v2)" \
+    sh -c "grep -q 'first segment, from vertex 1 to vertex 2' '$tmp/out' && sed -n '/^color: /,/^  go on/p' '$tmp/out' | grep -q 'the last of 3 writes.*primitive 9 of the rasterizer, a segment from vertex 1 to vertex 5, its step k'"
+check "quiz79-9.3 ... a step without anti-aliasing" cline "anti-aliasing off: the pixel Math.round"
+set -- $(fbat)
+check "quiz79-9.4 ... the key is the course's image there" \
+    test "$(ppmkey tests/course79/r7-basic-cube-viewport.ppm.gz $(($2 * 300 + $1)))" = "$(cat "$tmp/ckey")"
+colour tests/course79/r7-aa-00.scene 2
+check "quiz79-9.5 renderer 7, anti-aliasing on: evaluates, the trace's last write" cworked
+check "quiz79-9.6 ... a step's weight and blend, gamma" \
+    sh -c "sed -n '/^color: /,/^  go on/p' '$tmp/out' | grep -q 'its step k = x - x0 = 61 - 3 = 58' && sed -n '/^color: /,/^  go on/p' '$tmp/out' | grep -q \"^    gamma: r' = \""
+colour tests/course79/r9-aa-04.scene 3
+check "quiz79-9.7 renderer 9, anti-aliasing on, a steep segment: evaluates, the trace's last write" cworked
+check "quiz79-9.8 ... its DDA steps y" cline "its step k = y - y0 = .*(transposed"
+colour tests/course/r9/aa-00.scene 5
+check "quiz79-9.9 renderer 9, anti-aliasing on, gamma off: evaluates, the trace's last write" cworked
+check "quiz79-9.10 ... gamma off said" cline "gamma off: the colour is written as it is"
+colour tests/course79/r9-basic-two-models.scene 1
+check "quiz79-9.11 renderer 9, anti-aliasing off: evaluates, the trace's last write" cworked
+colour $near 7
+check "quiz79-9.12 a segment's last pixel: evaluates, the trace's last write" cworked
+check "quiz79-9.13 ... its raw colour" cline "its last pixel, coverage 1, in that end's colour as it is"
+colour tests/course/r7/aa-04.scene 1
+check "quiz79-9.14 a pixel left the viewport's background (an anti-aliased pair on the top row, coverage 0): evaluates, the trace's last write" cworked
+check "quiz79-9.15 ... the key is the viewport's background" \
+    test "$(cat "$tmp/ckey")" = "$(sed -n 's/^viewport-background //p' tests/course/r7/aa-04.scene)" -a -n "$(grep -e 'coverage 0: the write leaves the viewport' "$tmp/out")"
+colour tests/course/r7/vpout-01.scene 5
+set -- $(fbat)
+check "quiz79-9.16 a viewport sticking out: the pixel lies right of the framebuffer (x_fb >= W)" test "$1" -ge 20
+check "quiz79-9.17 ... the key is the course's image at the wrapped index y_fb*W + x_fb" \
+    test "$(ppmkey tests/course/r7/vpout-01.ppm.gz $(($2 * 20 + $1)))" = "$(cat "$tmp/ckey")"
+check "quiz79-9.18 ... the worked numbers evaluate to it" \
+    python3 tests/teach/quiz79_color.py "$tmp/out" "$(cat "$tmp/ckey")"
+check "quiz79-9.19 ... the pixel written named" cline "the pixel written is ($(($1 - 20)), $(($2 + 1))) of the array"
+colour tests/course/r7/vpout-02.scene 1
+check "quiz79-9.20 a pixel the course drops: none" test "$(cat "$tmp/ckey")" = none
+check "quiz79-9.21 ... said as the course's log says it" \
+    sh -c "line=\$(sed -n '/^color: /,/^  go on/p' '$tmp/out' | grep -o 'FrameBuffer: Bad pixel coordinate ([-0-9]*, [-0-9]*) \[w=20, h=16\]') && gzip -dc tests/course/r7/vpout-02.log.gz | grep -qF \"\$line\""
+check "quiz79-9.22 ... and evaluates" python3 tests/teach/quiz79_color.py "$tmp/out" none
+colour $near 7
+raster_formula=$("$exe" step $near --vertex 7 --all | sed -n '/^stage 9 of 9: raster/,/formula/s/^  formula  //p')
+check "quiz79-9.23 the colour's formula line is step's raster formula" \
+    test -n "$raster_formula" -a "$(sed -n '/^color: /,/^  go on/p' "$tmp/out" | sed -n 3p)" = "  $raster_formula"
+check "quiz79-9.24 ... which states the step's colour, anti-aliasing, gamma and the bytes" \
+    sh -c "printf '%s\n' \"\$1\" | grep -q 'c = (float)|c0 + slope\*(x - x0)|.*f\*c + (1 - f)\*bg.*Math.pow(c, 1/2.2).*255f' " - "$raster_formula"
 
 report
