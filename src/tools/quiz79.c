@@ -10,7 +10,8 @@
 ** here: the numbers are the stages' (and the pixel-to-viewport rounding is
 ** the reference pixel stage's, ptref_pixel2viewport, the same rounding the
 ** rasterizer does to a segment's ends: tests/teach/quiz79.sh checks the
-** two give the same pixel).
+** two give the same pixel).  The colour is the whole scene's: one more
+** render, whose rasterizer's listener keeps the last write at the pixel.
 */
 #include <math.h>
 #include <stdlib.h>

@@ -16,12 +16,14 @@
 **             end; EDGE x=+1, x=-1, y=+1 or y=-1; clip2, clip3, ... after)
 **   pixel     x_pp y_pp           (the rasterizer's pixel plane, unrounded)
 **   viewport  x_vp y_vp           (Math.round(x_pp) - 1, h - Math.round(y_pp))
-**   color     r g b | none        (the bytes the segment leaves in that
-**             pixel: gamma, anti-aliasing; none outside the framebuffer)
+**   color     r g b | none        (the bytes the whole render leaves in the
+**             pixel the course writes: pt_raster_fb_pixel's index, wrapped
+**             where the viewport sticks out; none where the course drops it)
 ** After "dropped" the segment is gone: no more questions.  A wrong answer
 ** "follows" when the stage, run on the sheet's own answer before it, gives it.
 ** A wrong answer is shown its stage's formula with the right numbers put in
-** (pt_q79_worked(): io/explain_course.c's text, as pipetrace step writes it).
+** (pt_q79_worked(): io/explain_course.c's text, as pipetrace step writes it);
+** the colour's are the last write at the pixel, as the rasterizer told it.
 */
 #ifndef PT_QUIZ79_H
 #define PT_QUIZ79_H
@@ -63,8 +65,9 @@ const char *pt_q79_formula(const pt_q79 *q, int k);
 
 /* Question k's stage with the right answer's numbers put in, as pipetrace
 ** step writes it (pt_cx_explain_step()), the equations separated by sep,
-** into b.  Returns its length (>= n: cut short), 0 for the colour, whose
-** numbers are the render's pixel lines (pipetrace step shows them). */
+** into b; the colour's: the render's last write at the pixel
+** (pt_cx_explain_write()), or why the pixel has none.  Returns its length
+** (>= n: cut short; the colour's can pass PT_EXPLAINLEN), 0 for none. */
 size_t pt_q79_worked(const pt_q79 *q, int k, char *b, size_t n, const char *sep);
 
 /* Grade line as the answer to question k.  res[] holds the results of the
