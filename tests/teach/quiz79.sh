@@ -252,6 +252,8 @@ check "quiz79-9.20 a pixel the course drops: none" test "$(cat "$tmp/ckey")" = n
 check "quiz79-9.21 ... said as the course's log says it" \
     sh -c "line=\$(sed -n '/^color: /,/^  go on/p' '$tmp/out' | grep -o 'FrameBuffer: Bad pixel coordinate ([-0-9]*, [-0-9]*) \[w=20, h=16\]') && gzip -dc tests/course/r7/vpout-02.log.gz | grep -qF \"\$line\""
 check "quiz79-9.22 ... and evaluates" python3 tests/teach/quiz79_color.py "$tmp/out" none
+colour tests/course79/r9-pipe2-two-models.scene 3
+check "quiz79-9.25 renderer 9's Pipeline2 (each stage over every position): evaluates, the trace's last write" cworked
 colour $near 7
 raster_formula=$("$exe" step $near --vertex 7 --all | sed -n '/^stage 9 of 9: raster/,/formula/s/^  formula  //p')
 check "quiz79-9.23 the colour's formula line is step's raster formula" \
