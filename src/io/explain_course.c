@@ -911,7 +911,7 @@ static void step_raster(pt_xt *t, const pt_cx_journey *j, const char *sep)
     }
 }
 
-/* "vertex 3" or, for a point, the one it has. */
+/* The primitive of w: "a segment from vertex 1 to vertex 2", "a point at vertex 3 (radius 0)". */
 static void ends_text(pt_xt *t, const pt_cx_write *w)
 {
     if (w->p.kind == PT_RV_POINT) {
