@@ -18,6 +18,7 @@
 #include "io/explain_text.h"
 #include "io/explain.h"
 #include "core/pipetrace.h"
+#include "core/raster.h"
 
 /* ===== listening to the render ===== */
 
@@ -760,7 +761,21 @@ static void step_viewport(pt_xt *t, const pt_cx_journey *j, const char *sep)
     pt_xt_int(t, x_fb, 0); pt_xt_add(t, ", "); pt_xt_int(t, y_fb, 0); pt_xt_add(t, ")");
     pt_xt_add(t, sep);
     if (x_fb < 0 || x_fb >= j->par.W || y_fb < 0 || y_fb >= j->par.H) {
-        pt_xt_add(t, "outside the framebuffer: no index");
+        pt_fb_pixel px;                     /* the viewport sticks out: the course's index */
+        int64_t idx = pt_raster_fb_pixel(j->px_x, j->px_y, j->par.x_ul, j->par.y_ul,
+                                         j->par.W, j->par.H, 1, &px);
+        pt_xt_add(t, "outside the framebuffer; the course's index y_fb*W + x_fb = ");
+        pt_xt_int(t, y_fb, 0); pt_xt_add(t, "*"); pt_xt_int(t, j->par.W, 0);
+        pt_xt_add(t, " + "); pt_xt_int(t, x_fb, 1); pt_xt_add(t, " = ");
+        pt_xt_int(t, y_fb * j->par.W + x_fb, 0);
+        if (idx < 0) {
+            pt_xt_add(t, " lies outside the pixel array: the write is dropped "
+                         "(FrameBuffer: Bad pixel coordinate)");
+        } else {
+            pt_xt_add(t, " wraps past the edge: the pixel written is (");
+            pt_xt_int(t, idx % j->par.W, 0); pt_xt_add(t, ", ");
+            pt_xt_int(t, idx / j->par.W, 0); pt_xt_add(t, ") of the array");
+        }
         return;
     }
     pt_xt_add(t, "index = y_fb*W + x_fb = "); pt_xt_int(t, y_fb, 0); pt_xt_add(t, "*");

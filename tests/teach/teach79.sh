@@ -267,5 +267,26 @@ run step $c/r9-hidden-warn-p2.scene --vertex 1 --model hp
 check "teach79-8.7 a hidden position: exit 2, says it is hidden" test "$rc" = 2 -a -n "$(grep 'no vertex 1 (it has 0 after the clips; it is hidden)' "$tmp/err")"
 run why $c/r9-hidden-warn-p2.scene 5 5
 check "teach79-8.8 why: hidden models are named, nothing of them drawn" grep -q "^  model hm: hidden, nothing of it is drawn" "$tmp/out"
+# A viewport that sticks out: the vertex's pixel goes where the course's index
+# puts it.  vpout-01 v5 lands at (26, 12) of a 20-wide framebuffer: the array
+# pixel named must show the last pixel record the trace writes at (26, 12);
+# vpout-02 v1's write is dropped, as the course's log says.
+run step tests/course/r7/vpout-01.scene --vertex 5 --all
+at=$(sed -n 's/.* the pixel written is (\([0-9]*\), \([0-9]*\)) of the array.*/\1 \2/p' "$tmp/out" | head -n 1)
+"$exe" tests/course/r7/vpout-01.scene --format jsonl --trace "$tmp/vp.jsonl" 2>/dev/null
+check "teach79-8.9 step, viewport sticking out: the wrapped pixel shows the trace's last write at (x_fb, y_fb)" \
+    python3 -c '
+import gzip, json, re, sys
+x, y = map(int, sys.argv[3].split())
+last = [r["rgb"] for r in map(json.loads, open(sys.argv[2]))
+        if r.get("type") == "pixel" and (r["x"], r["y"]) == (26, 12)][-1]
+d = gzip.open(sys.argv[1]).read()
+m = re.match(rb"P6\s+(\d+)\s+(\d+)\s+(\d+)\s", d)
+i = m.end() + 3 * (y * int(m.group(1)) + x)
+sys.exit(0 if (x, y) != (26, 12) and list(d[i:i + 3]) == last else 1)' tests/course/r7/vpout-01.ppm.gz "$tmp/vp.jsonl" "${at:-none}"
+run step tests/course/r7/vpout-02.scene --vertex 1 --all
+check "teach79-8.10 step, viewport sticking out: a write past the array is dropped, as the course logs it" \
+    sh -c 'grep -q "= -5\*20 + 11 = -89 lies outside the pixel array: the write is dropped" "$1" &&
+           gzip -dc tests/course/r7/vpout-02.log.gz | grep -q "^FrameBuffer: Bad pixel coordinate (11, -5) "' _ "$tmp/out"
 
 report
