@@ -442,8 +442,8 @@ static int report_wrapped(FILE *f, const whyc *w, const pt_model *sel, const uns
         fprintf(f, "color %d %d %d%s: the last write, by ", o[0], o[1], o[2],
                 sel ? " in the image" : "");
         prim_name(f, s, last_mi, last_k, p);
-        fprintf(f, ", from viewport pixel (x_vp, y_vp) = (%d, %d)\n", p->last_x_vp,
-                p->last_y_vp);
+        fprintf(f, ", drawn as primitive %llu, from viewport pixel (x_vp, y_vp) = (%d, %d)\n",
+                (unsigned long long)p->raster_no, p->last_x_vp, p->last_y_vp);
     } else if (n) {
         fprintf(f, "color %d %d %d: no primitive writes it; the last write is the viewport's "
                 "clearing, of viewport pixel (x_vp, y_vp) = (%lld, %lld), to the viewport "
