@@ -52,6 +52,15 @@
 **
 ** A model without segments has no segment to be near: it is listed apart, as
 ** left out of the drawing, with the vertex of it that lands nearest.
+**
+** A viewport that sticks out of the framebuffer: the course's framebuffer
+** writes a viewport pixel where the core's index rule (pt_raster_fb_pixel)
+** puts it, rows wrapping, so several viewport pixels can land on the pixel
+** asked about (pt_whyc_sources finds them).  Each is explained as a pixel of
+** its own, at its framebuffer stage's pixel (before the row wraps: the
+** coordinates the run's records use); then one more run, every model drawn,
+** finds the last write on the pixel's index, from the pixel records' index,
+** which sets the colour (none: the viewport's clearing, which comes first).
 */
 #include <errno.h>
 #include <math.h>
@@ -81,7 +90,9 @@ static const char usage[] =
 "camera, degenerate, or endpoints rounded elsewhere; and the models without\n"
 "segments, which are never drawn.  On a scene of the course's renderer 7 or\n"
 "9: the primitives that wrote the pixel, each write's coverage and colour\n"
-"bytes, and what the near clip and the clip did to the others.\n"
+"bytes, and what the near clip and the clip did to the others.  When the\n"
+"viewport sticks out of the framebuffer: every viewport pixel whose write\n"
+"lands on the pixel's index (rows wrap), each explained, then the last write.\n"
 "\n"
 "  --model NAME   ask about the trace of 'pipetrace SCENE --model NAME': only\n"
 "                 NAME's segments count; the others are drawn into the image\n"

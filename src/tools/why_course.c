@@ -437,6 +437,7 @@ static int report_wrapped(FILE *f, const whyc *w, const pt_model *sel, const uns
                            sel ? " of the chosen model" : "");
         nlit += here;
     }
+    fputc('\n', f);
     if (last_write(w, NULL, &last_mi, &last_k)) {
         const cprim *p = &w->pos[last_mi].p[last_k];
         fprintf(f, "color %d %d %d%s: the last write, by ", o[0], o[1], o[2],
