@@ -950,8 +950,6 @@ static void show_color(const why_ctx *w)
 
 /* ===== a viewport that sticks out of the framebuffer ===== */
 
-#define EXPLAINED 64             /* viewport pixels explained on one pixel, at most */
-
 /* The last write on one index of the pixel array, in drawing order, of any
 ** model: what the image shows there (the viewport's clearing comes first). */
 typedef struct last_write {
@@ -1037,7 +1035,7 @@ static int why_wrapped(const why_ctx *w0, size_t nsrc)
         int rc;
 
         pt_whyc_source(term.f, s, w0->X, w0->Y, src[i]);
-        if (i >= EXPLAINED) continue;
+        if (i >= PT_WHYC_EXPLAINED) continue;
         memset(&w, 0, sizeof w);
         w.s = s;
         w.sel = w0->sel;
@@ -1050,9 +1048,9 @@ static int why_wrapped(const why_ctx *w0, size_t nsrc)
         why_free(&w);
         if (rc != 0) { free(src); return -1; }
     }
-    if (nsrc > EXPLAINED)
+    if (nsrc > PT_WHYC_EXPLAINED)
         fprintf(term.f, "(the %zu viewport pixels after the first %d are listed, not "
-                "explained)\n", nsrc - EXPLAINED, EXPLAINED);
+                "explained)\n", nsrc - PT_WHYC_EXPLAINED, PT_WHYC_EXPLAINED);
     fputc('\n', term.f);
     if (lw.any)
         fprintf(term.f, "color %d %d %d%s: the last write, by %s %c%llu, from viewport pixel "

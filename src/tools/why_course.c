@@ -432,11 +432,15 @@ static int report_wrapped(FILE *f, const whyc *w, const pt_model *sel, const uns
     for (i = 0; i < n; i++) {
         size_t here;
         pt_whyc_source(f, s, w->X, w->Y, src[i]);
+        if (i >= PT_WHYC_EXPLAINED) continue;
         here = show_lit(f, w, sel, &src[i]);
         if (!here) fprintf(f, "not lit from there: no primitive%s writes it\n",
                            sel ? " of the chosen model" : "");
         nlit += here;
     }
+    if (n > PT_WHYC_EXPLAINED)
+        fprintf(f, "(the %zu viewport pixels after the first %d are listed, not explained)\n",
+                n - PT_WHYC_EXPLAINED, PT_WHYC_EXPLAINED);
     fputc('\n', f);
     if (last_write(w, NULL, &last_mi, &last_k)) {
         const cprim *p = &w->pos[last_mi].p[last_k];

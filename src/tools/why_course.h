@@ -41,6 +41,10 @@ int pt_whyc_report(FILE *f, const pt_scene *s, int X, int Y, const pt_model *sel
 ** fail. */
 size_t pt_whyc_sources(const pt_scene *s, int64_t X, int64_t Y, pt_pix *out, size_t n);
 
+/* The viewport pixels explained on one pixel, at most: those after them are
+** listed only (a viewport far wider than the framebuffer has up to vp_h). */
+#define PT_WHYC_EXPLAINED 64
+
 /* Write to f what pipetrace why says first of a scene whose viewport sticks
 ** out: how the course's framebuffer writes its pixels, and how many (nsrc)
 ** land on framebuffer pixel (X, Y).  This function can't fail. */

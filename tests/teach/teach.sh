@@ -306,5 +306,15 @@ check "teach-10.7 --model cube on such a scene: the cube's segments lit it, no p
     test "$rc" = 0 -a "$(grep -c '^  cube s[56] (v' "$tmp/out")" = 2 -a "$(grep -c '^  pts p' "$tmp/out")" = 0
 check "teach-10.8 ... the last write, a point of the model left out, in the image" \
     grep -q '^color [0-9 ]* in the image: the last write, by pts p4, from viewport pixel (x_vp, y_vp) = (7, 7)$' "$tmp/out"
+# a viewport 100 wide in a framebuffer 1 wide: 100 viewport pixels land on
+# index 99, (99 - k, k) for k = 0 .. 99; the line y = 0 lights (49, 50)
+printf 'renderer 4\nframebuffer 1 100\nviewport 0 0 100 100\ncamera orthographic\nmodel m\nv -1 0 0\nv 1 0 0\nl 1 2\n' > "$tmp/thin.scene"
+run why "$tmp/thin.scene" 0 99
+check "teach-10.9 100 viewport pixels on one index: all listed, the first 64 explained" \
+    test "$rc" = 0 -a "$(grep -c '^viewport pixel (x_vp, y_vp) = ' "$tmp/out")" = 100 -a "$(grep -c '^not lit from there\|^lit by:' "$tmp/out")" = 64 \
+    -a -n "$(grep -Fx '(the 36 viewport pixels after the first 64 are listed, not explained)' "$tmp/out")"
+check "teach-10.10 ... the one lit, and the last write" \
+    test -n "$(grep -A1 '^viewport pixel (x_vp, y_vp) = (49, 50) ' "$tmp/out" | grep '^lit by:')" \
+    -a -n "$(grep -Fx 'color 255 255 255: the last write, by m s1, from viewport pixel (x_vp, y_vp) = (49, 50)' "$tmp/out")"
 
 report

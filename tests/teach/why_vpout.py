@@ -32,11 +32,11 @@ lit2 = "lit2" in sys.argv[4:]         # ... and light some reached 2+ times
 name = os.path.basename(scene)
 
 
-def ppm(path):
+def ppm(path):      # binary PPM: "P6", width, height, 255, one whitespace, the bytes
     data = open(path, "rb").read()
-    parts = data.split(maxsplit=4)
-    w, h = int(parts[1]), int(parts[2])
-    return w, h, parts[4][-3 * w * h:]
+    m = re.match(rb"P6\s+(\d+)\s+(\d+)\s+255\s", data)
+    w, h = int(m.group(1)), int(m.group(2))
+    return w, h, data[m.end():m.end() + 3 * w * h]
 
 
 with tempfile.TemporaryDirectory() as tmp:
