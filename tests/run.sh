@@ -72,8 +72,8 @@ course4          2 sh tests/course4/course4.sh $B/pipetrace
 course          20 python3 tests/course/check.py $B/pipetrace
 selfcheck       31 sh tests/teach/selfcheck.sh $B/pipetrace
 extreme          1 sh tests/cli/extreme.sh $B/pipetrace
-teach            1 sh tests/teach/teach.sh $B/pipetrace
-teach79          2 sh tests/teach/teach79.sh $B/pipetrace
+teach            2 sh tests/teach/teach.sh $B/pipetrace
+teach79          3 sh tests/teach/teach79.sh $B/pipetrace
 classroom        6 sh tests/teach/classroom.sh $B/pipetrace
 class           14 sh tests/teach/class.sh $B/pipetrace
 students         8 sh tests/class/students.sh $B/pipetrace

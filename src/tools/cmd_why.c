@@ -52,6 +52,15 @@
 **
 ** A model without segments has no segment to be near: it is listed apart, as
 ** left out of the drawing, with the vertex of it that lands nearest.
+**
+** A viewport that sticks out of the framebuffer: the course's framebuffer
+** writes a viewport pixel where the core's index rule (pt_raster_fb_pixel)
+** puts it, rows wrapping, so several viewport pixels can land on the pixel
+** asked about (pt_whyc_sources finds them).  Each is explained as a pixel of
+** its own, at its framebuffer stage's pixel (before the row wraps: the
+** coordinates the run's records use); then one more run, every model drawn,
+** finds the last write on the pixel's index, from the pixel records' index,
+** which sets the colour (none: the viewport's clearing, which comes first).
 */
 #include <errno.h>
 #include <math.h>
@@ -81,7 +90,9 @@ static const char usage[] =
 "camera, degenerate, or endpoints rounded elsewhere; and the models without\n"
 "segments, which are never drawn.  On a scene of the course's renderer 7 or\n"
 "9: the primitives that wrote the pixel, each write's coverage and colour\n"
-"bytes, and what the near clip and the clip did to the others.\n"
+"bytes, and what the near clip and the clip did to the others.  When the\n"
+"viewport sticks out of the framebuffer: every viewport pixel whose write\n"
+"lands on the pixel's index (rows wrap), each explained, then the last write.\n"
 "\n"
 "  --model NAME   ask about the trace of 'pipetrace SCENE --model NAME': only\n"
 "                 NAME's segments count; the others are drawn into the image\n"
@@ -507,6 +518,8 @@ typedef struct why_ctx {
     const pt_model *sel;         /* --model's model, or NULL: every model counts */
     long long X, Y;              /* the pixel (x_fb, y_fb) */
     int inside;                  /* 1: it lies inside the viewport */
+    int wrapped;                 /* 1: one of the viewport pixels that land on a
+                                 ** pixel of a viewport sticking out */
     uint64_t nlit;               /* segments of counted models that lit it */
     uint64_t nleft;              /* segments of left-out models that lit it, */
     size_t left_mi[10], left_si[10];    /*   the first ten of them */
@@ -888,6 +901,173 @@ static vend **ends_room(const pt_scene *s)
     return at;
 }
 
+/* What the report says of pixel (w->X, w->Y) after its first lines: the
+** segments and points that lit it, or the nearest segments and where each
+** lost it.  Returns 0, or -1 when out of memory. */
+static int explain(why_ctx *w)
+{
+    const pt_scene *s = w->s;
+
+    if (scan(w) != 0) return -1;
+    show_lit(w);
+    if (w->nleft && w->nlit) show_also_lit(w);
+    if (!w->nlit) {
+        if (w->wrapped && !w->drawn)
+            fprintf(term.f, "not lit from there: no segment writes this viewport pixel\n");
+        else if (!w->drawn)
+            fprintf(term.f, "not lit: no segment writes it, so it keeps the background color "
+                   "%d %d %d\n", s->background[0], s->background[1], s->background[2]);
+        else
+            fprintf(term.f, "not lit in the trace of --model %s: none of its segments writes this "
+                   "pixel; segments of models it leaves out do (below)\n", w->sel->name);
+        if (w->sel && !w->sel->nseg)
+            fprintf(term.f, "model %s has no segments: the renderer draws nothing of it (below)\n",
+                   w->sel->name);
+        show_nearest(w);
+        if (!w->nbest) fprintf(term.f, "the scene has no segments\n");
+        show_no_segments(w);
+    }
+    return 0;
+}
+
+/* The pixel's colour and the segment or point that set it, when one did. */
+static void show_color(const why_ctx *w)
+{
+    const pt_scene *s = w->s;
+
+    if (w->pt_drawn) {
+        const pt_model *m = &s->models[w->pt_mi];
+        fprintf(term.f, "color %d %d %d%s: %s p%zu is the last point drawn there\n",
+                w->pt_rgb[0], w->pt_rgb[1], w->pt_rgb[2], w->sel ? " in the image" : "", m->name,
+                w->pt_k + 1);
+    } else if (w->drawn) {
+        const pt_model *m = &s->models[w->last_mi];
+        fprintf(term.f, "color %d %d %d%s: %s s%zu is the last segment drawn there\n", m->color[0],
+               m->color[1], m->color[2], w->sel ? " in the image" : "", m->name,
+               w->last_si + 1);
+    }
+}
+
+/* ===== a viewport that sticks out of the framebuffer ===== */
+
+/* The last write on one index of the pixel array, in drawing order, of any
+** model: what the image shows there (the viewport's clearing comes first). */
+typedef struct last_write {
+    const pt_scene *s;
+    int64_t idx;                 /* the index asked about */
+    int any;                     /* 1: a segment or point wrote it: */
+    int point;                   /*   1 a point, 0 a segment, */
+    const pt_model *m;           /*   of this model, */
+    uint64_t k;                  /*   1-based, */
+    int64_t x_fb, y_fb;          /*   at this pixel of the framebuffer stage, */
+    unsigned char rgb[3];        /*   in this colour */
+} last_write;
+
+static void lw_note(last_write *lw, const pt_model *m, int point, uint64_t k,
+                    const pt_fb_pixel *px, size_t n)
+{
+    size_t i;
+
+    for (i = 0; i < n; i++) {
+        if (px[i].idx != lw->idx) continue;
+        lw->any = 1;
+        lw->point = point;
+        lw->m = m;
+        lw->k = k;
+        lw->x_fb = px[i].x_fb;
+        lw->y_fb = px[i].y_fb;
+        memcpy(lw->rgb, px[i].paint.rgb, sizeof lw->rgb);
+    }
+}
+
+static void lw_pixels(void *ud, const pt_model *m, uint64_t seg, const pt_fb_pixel *px, size_t n)
+{
+    lw_note(ud, m, 0, seg, px, n);
+}
+
+static void lw_point_pixels(void *ud, const pt_model *m, uint64_t pt, const pt_fb_pixel *px,
+                            size_t n)
+{
+    lw_note(ud, m, 1, pt, px, n);
+}
+
+/* One pt_run() of s, every model drawn, keeping the last write on lw->idx:
+** the pixel records give each write's index (pt_raster_fb_pixel's). */
+static int find_last_write(last_write *lw)
+{
+    pt_options o;
+    pt_listener l;
+
+    pt_options_default(&o);
+    memset(&l, 0, sizeof l);
+    l.pixels = lw_pixels;
+    l.point_pixels = lw_point_pixels;
+    l.ud = lw;
+    return pt_run_plain(lw->s, &o, &l);
+}
+
+/* The report on pixel (w->X, w->Y) of a scene whose viewport sticks out,
+** which nsrc >= 1 viewport pixels land on: each of them explained as a pixel
+** of its own (at its framebuffer stage's pixel, before the row wraps), then
+** the last write.  Returns 0, or -1 when out of memory. */
+static int why_wrapped(const why_ctx *w0, size_t nsrc)
+{
+    const pt_scene *s = w0->s;
+    pt_pix *src = calloc(nsrc, sizeof *src), fb = {w0->X, w0->Y, 1}, ul = vp_to_fb(s, 0, 0);
+    last_write lw;
+    size_t i;
+
+    if (!src) return -1;
+    pt_whyc_sources(s, w0->X, w0->Y, src, nsrc);
+    memset(&lw, 0, sizeof lw);
+    lw.s = s;
+    lw.idx = pt_fb2index(fb, s->fb_w, s->fb_h, NULL);
+    if (find_last_write(&lw) != 0) { free(src); return -1; }
+    fprintf(term.f, "pixel (x_fb, y_fb) = (%lld, %lld) of %s: idx = %lld\n", w0->X, w0->Y,
+            s->path, (long long)lw.idx);
+    pt_whyc_wrap_head(term.f, s, w0->X, w0->Y, nsrc);
+    if (w0->sel)
+        fprintf(term.f, "--model %s: the trace of this model alone; the image still shows every "
+               "model\n", w0->sel->name);
+    for (i = 0; i < nsrc; i++) {
+        pt_pix f = vp_to_fb(s, src[i].x, src[i].y);
+        why_ctx w;
+        int rc;
+
+        pt_whyc_source(term.f, s, w0->X, w0->Y, src[i]);
+        if (i >= PT_WHYC_EXPLAINED) continue;
+        memset(&w, 0, sizeof w);
+        w.s = s;
+        w.sel = w0->sel;
+        w.X = f.x;
+        w.Y = f.y;
+        w.inside = 1;
+        w.wrapped = 1;
+        if (!(w.at = ends_room(s))) { free(src); return -1; }
+        rc = explain(&w);
+        why_free(&w);
+        if (rc != 0) { free(src); return -1; }
+    }
+    if (nsrc > PT_WHYC_EXPLAINED)
+        fprintf(term.f, "(the %zu viewport pixels after the first %d are listed, not "
+                "explained)\n", nsrc - PT_WHYC_EXPLAINED, PT_WHYC_EXPLAINED);
+    fputc('\n', term.f);
+    if (lw.any)
+        fprintf(term.f, "color %d %d %d%s: the last write, by %s %c%llu, from viewport pixel "
+                "(x_vp, y_vp) = (%lld, %lld)\n", lw.rgb[0], lw.rgb[1], lw.rgb[2],
+                w0->sel ? " in the image" : "", lw.m->name, lw.point ? 'p' : 's',
+                (unsigned long long)lw.k, (long long)(lw.x_fb - ul.x),
+                (long long)(lw.y_fb - ul.y));
+    else
+        fprintf(term.f, "color %d %d %d%s: no segment or point writes it; the last write is the "
+                "viewport's clearing, of viewport pixel (x_vp, y_vp) = (%lld, %lld), to the "
+                "viewport background\n", s->vp_background[0], s->vp_background[1],
+                s->vp_background[2], w0->sel ? " in the image" : "",
+                (long long)src[nsrc - 1].x, (long long)src[nsrc - 1].y);
+    free(src);
+    return 0;
+}
+
 /* why on a scene of the course's renderer 7 or 9 (tools/why_course.h); frees s. */
 static int course_why(pt_scene *s, long long X, long long Y, const char *model)
 {
@@ -922,6 +1102,8 @@ int pt_cmd_why(int argc, char **argv)
     pt_scene s;
     pt_pix fb, vp;
     why_ctx w;
+    size_t nsrc;
+    int rc;
 
     for (k = 1; k < argc; k++) {
         const char *a = argv[k];
@@ -943,16 +1125,6 @@ int pt_cmd_why(int argc, char **argv)
     }
 
     if (pt_cli_load(&s, npos == 3 ? pos[0] : NULL) != 0) return PT_EXIT_INPUT;
-    if (!pt_scene_vp_inside(&s)) {          /* docs/scene-format.md: viewport */
-        fprintf(stderr, "pipetrace why: %s: the viewport %d %d %d %d sticks out of the "
-                "%d x %d framebuffer: a pixel drawn there lands where the course's index "
-                "y_fb * W + x_fb puts it (rows wrap), so one framebuffer pixel can come "
-                "from several viewport pixels, which why does not follow; the trace's "
-                "pixel records say where each one went\n", s.path, s.vp_x, s.vp_y, s.vp_w,
-                s.vp_h, s.fb_w, s.fb_h);
-        pt_scene_free(&s);
-        return PT_EXIT_INPUT;
-    }
     if (s.renderer == 7 || s.renderer == 9) return course_why(&s, w.X, w.Y, model);
     w.s = &s;
     if (pt_scene_pipeline(&s) != &pt_pipe_classic) {
@@ -980,56 +1152,36 @@ int pt_cmd_why(int argc, char **argv)
     }
 
     pt_cli_out_open(&term);
-    fb.x = w.X; fb.y = w.Y; fb.ok = 1;
-    vp = fb_to_vp(&s, w.X, w.Y);
-    w.inside = pt_inside(vp.x, vp.y, s.vp_w, s.vp_h);
-    fprintf(term.f, "pixel (x_fb, y_fb) = (%lld, %lld) of %s: idx = %lld, ", w.X, w.Y, s.path,
-           (long long)pt_fb2index(fb, s.fb_w, s.fb_h, NULL));
-    if (w.inside)
-        fprintf(term.f, "inside the viewport at (x_vp, y_vp) = (%lld, %lld)\n", (long long)vp.x,
-                (long long)vp.y);
+    nsrc = pt_scene_vp_inside(&s) ? 0 : pt_whyc_sources(&s, w.X, w.Y, NULL, 0);
+    if (nsrc) rc = why_wrapped(&w, nsrc);
     else {
-        pt_pix ul = vp_to_fb(&s, 0, 0), lr = vp_to_fb(&s, s.vp_w - 1, s.vp_h - 1);
-        fprintf(term.f, "outside the viewport (x_fb %lld..%lld, y_fb %lld..%lld): nothing is ever "
-                "drawn there\n", (long long)ul.x, (long long)lr.x, (long long)ul.y, (long long)lr.y);
+        fb.x = w.X; fb.y = w.Y; fb.ok = 1;
+        vp = fb_to_vp(&s, w.X, w.Y);
+        w.inside = pt_inside(vp.x, vp.y, s.vp_w, s.vp_h);
+        fprintf(term.f, "pixel (x_fb, y_fb) = (%lld, %lld) of %s: idx = %lld, ", w.X, w.Y,
+                s.path, (long long)pt_fb2index(fb, s.fb_w, s.fb_h, NULL));
+        if (w.inside)
+            fprintf(term.f, "inside the viewport at (x_vp, y_vp) = (%lld, %lld)\n",
+                    (long long)vp.x, (long long)vp.y);
+        else {
+            pt_pix ul = vp_to_fb(&s, 0, 0), lr = vp_to_fb(&s, s.vp_w - 1, s.vp_h - 1);
+            fprintf(term.f, "outside the viewport (x_fb %lld..%lld, y_fb %lld..%lld): nothing "
+                    "is ever drawn there\n", (long long)ul.x, (long long)lr.x,
+                    (long long)ul.y, (long long)lr.y);
+        }
+        if (!pt_scene_vp_inside(&s)) pt_whyc_wrap_head(term.f, &s, w.X, w.Y, 0);
+        if (w.sel)
+            fprintf(term.f, "--model %s: the trace of this model alone; the image still shows "
+                    "every model\n", w.sel->name);
+        rc = explain(&w);
+        if (rc == 0) show_color(&w);
     }
-    if (w.sel)
-        fprintf(term.f, "--model %s: the trace of this model alone; the image still shows every "
-               "model\n", w.sel->name);
-
-    if (scan(&w) != 0) {
+    if (rc != 0) {
         fprintf(stderr, "pipetrace why: %s: out of memory\n", s.path);
         why_free(&w);
         pt_scene_free(&s);
         pt_cli_out_close(&term);
         return PT_EXIT_INPUT;
-    }
-    show_lit(&w);
-    if (w.nleft && w.nlit) show_also_lit(&w);
-    if (!w.nlit) {
-        if (!w.drawn)
-            fprintf(term.f, "not lit: no segment writes it, so it keeps the background color "
-                   "%d %d %d\n", s.background[0], s.background[1], s.background[2]);
-        else
-            fprintf(term.f, "not lit in the trace of --model %s: none of its segments writes this "
-                   "pixel; segments of models it leaves out do (below)\n", w.sel->name);
-        if (w.sel && !w.sel->nseg)
-            fprintf(term.f, "model %s has no segments: the renderer draws nothing of it (below)\n",
-                   w.sel->name);
-        show_nearest(&w);
-        if (!w.nbest) fprintf(term.f, "the scene has no segments\n");
-        show_no_segments(&w);
-    }
-    if (w.pt_drawn) {
-        const pt_model *m = &s.models[w.pt_mi];
-        fprintf(term.f, "color %d %d %d%s: %s p%zu is the last point drawn there\n",
-                w.pt_rgb[0], w.pt_rgb[1], w.pt_rgb[2], w.sel ? " in the image" : "", m->name,
-                w.pt_k + 1);
-    } else if (w.drawn) {
-        const pt_model *m = &s.models[w.last_mi];
-        fprintf(term.f, "color %d %d %d%s: %s s%zu is the last segment drawn there\n", m->color[0],
-               m->color[1], m->color[2], w.sel ? " in the image" : "", m->name,
-               w.last_si + 1);
     }
     why_free(&w);
     pt_scene_free(&s);

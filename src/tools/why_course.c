@@ -8,6 +8,11 @@
 ** the model's, with `nearclip off`), the rasterizer's what the clip kept.
 ** Which stage's callbacks are heard follows from the stage reported last:
 ** after the camera the near clip runs, after the image plane the clip.
+**
+** A viewport that sticks out of the framebuffer: a write lands on the pixel
+** asked about when the core's index rule (pt_raster_fb_pixel, rows wrapping)
+** puts it at the pixel's index, so each write keeps its viewport pixel, and
+** the report goes viewport pixel by viewport pixel (pt_whyc_sources).
 */
 #include <math.h>
 #include <stdlib.h>
@@ -31,9 +36,11 @@ typedef struct cprim {
     uint64_t raster_no;          /* 1-based in the rasterizer's list; 0 not drawn */
     uint64_t npix;               /* pixels it wrote */
     int nlit;                    /* pixel writes on the pixel asked about */
-    uint64_t lit_order;          /* the last of them, in the render's order */
+    uint64_t lit_order;          /* the last of them, in the render's order, */
+    int last_x_vp, last_y_vp;    /*   from this viewport pixel */
     struct write {               /* the first MAXWRITE of them: */
         pt_rv_px_kind kind;      /*   the pixel line's kind, */
+        int x_vp, y_vp;          /*   the viewport pixel written, */
         float coverage;          /*   the coverage, */
         unsigned char b[3];      /*   the bytes written */
     } w[MAXWRITE];
@@ -54,6 +61,8 @@ typedef struct cpos {
 typedef struct whyc {
     const pt_scene *s;
     int X, Y;
+    int64_t idx;                 /* the pixel's index */
+    int wrap;                    /* 1: the viewport sticks out of the framebuffer */
     cpos *pos;
     size_t cur;                  /* the position being worked on */
     size_t r_prim;               /* the primitive being drawn (model index) */
@@ -168,14 +177,21 @@ static void on_drawn(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
 /* One write of colour col at viewport pixel (x_vp, y_vp) with coverage f. */
 static void hit(whyc *w, const pt_rv_pixel *px, int x_vp, int y_vp, pt_rgb col, float f)
 {
+    const pt_rv_raster_par *par = px->par;
+    pt_fb_pixel at;
     cprim *p;
 
-    if ((int64_t)px->par->x_ul + x_vp != w->X || (int64_t)px->par->y_ul + y_vp != w->Y) return;
+    if (pt_raster_fb_pixel(x_vp, y_vp, par->x_ul, par->y_ul, par->W, par->H, w->wrap, &at)
+        != w->idx) return;
     p = &w->pos[w->cur].p[w->r_prim];
     p->lit_order = ++w->order;
+    p->last_x_vp = x_vp;
+    p->last_y_vp = y_vp;
     if (p->nlit < MAXWRITE) {
         struct write *o = &p->w[p->nlit];
         o->kind = px->kind;
+        o->x_vp = x_vp;
+        o->y_vp = y_vp;
         o->coverage = f;
         o->b[0] = pt_color_byte(col.r);
         o->b[1] = pt_color_byte(col.g);
@@ -267,14 +283,16 @@ static void show_clips(FILE *f, const whyc *w, const cprim *p)
                 p->p.kind == PT_RV_POINT ? "it lies" : "both ends lie beyond one edge");
 }
 
-/* The writes of p on the pixel, in order: kind, coverage, bytes. */
-static void show_writes(FILE *f, const pt_scene *s, const cprim *p)
+/* The writes of p on the pixel, in order: kind, coverage, bytes; with vp,
+** only those from viewport pixel vp. */
+static void show_writes(FILE *f, const pt_scene *s, const cprim *p, const pt_pix *vp)
 {
-    int k;
+    int k, shown = 0;
 
     for (k = 0; k < p->nlit && k < MAXWRITE; k++) {
         const struct write *o = &p->w[k];
-        if (k) fputs("; then ", f);
+        if (vp && (o->x_vp != vp->x || o->y_vp != vp->y)) continue;
+        if (shown++) fputs("; then ", f);
         fputs(o->kind == PT_RV_PX_END ? "its last pixel (the end's colour as it is, no gamma)"
               : o->kind == PT_RV_PX_AA ? "an anti-aliased step"
               : o->kind == PT_RV_PX_POINT ? "a pixel of the point" : "a step", f);
@@ -286,19 +304,179 @@ static void show_writes(FILE *f, const pt_scene *s, const cprim *p)
     if (p->nlit > MAXWRITE) fprintf(f, "; %d writes here in all", p->nlit);
 }
 
+
+/* 1 when p wrote the pixel from viewport pixel vp (a write it kept), or at
+** all (vp NULL). */
+static int wrote_from(const cprim *p, const pt_pix *vp)
+{
+    int k;
+
+    if (!vp) return p->nlit > 0;
+    for (k = 0; k < p->nlit && k < MAXWRITE; k++)
+        if (p->w[k].x_vp == vp->x && p->w[k].y_vp == vp->y) return 1;
+    return 0;
+}
+
+/* The primitives of the models counted (sel, or all) that wrote the pixel
+** (from viewport pixel vp, or from any: NULL), in drawing order, each with
+** its writes and clips; returns how many. */
+static size_t show_lit(FILE *f, const whyc *w, const pt_model *sel, const pt_pix *vp)
+{
+    const pt_scene *s = w->s;
+    size_t mi, k, n = 0;
+
+    for (mi = 0; mi < s->nmodels; mi++)
+        for (k = 0; k < w->pos[mi].np; k++) {
+            const cprim *p = &w->pos[mi].p[k];
+            if ((sel && &s->models[mi] != sel) || !wrote_from(p, vp)) continue;
+            if (!n++) fputs("lit by, in drawing order (the last write wins):\n", f);
+            fputs("  ", f);
+            prim_name(f, s, mi, k, p);
+            fprintf(f, ", drawn as primitive %llu: ", (unsigned long long)p->raster_no);
+            show_writes(f, s, p, vp);
+            show_clips(f, w, p);
+            fputc('\n', f);
+        }
+    return n;
+}
+
+/* The primitives of the models counted that did not write the pixel: where
+** they were drawn, or what the clips did to them; then the hidden models. */
+static void show_not_lit(FILE *f, const whyc *w, const pt_model *sel, size_t nlit)
+{
+    const pt_scene *s = w->s;
+    size_t mi, k, nother = 0;
+
+    for (mi = 0; mi < s->nmodels; mi++)
+        for (k = 0; k < w->pos[mi].np; k++)
+            nother += (!sel || &s->models[mi] == sel) && !w->pos[mi].p[k].nlit;
+    if (nother) fprintf(f, "not lit by%s:\n", nlit ? " the others" : "");
+    for (mi = 0; mi < s->nmodels; mi++)
+        for (k = 0; k < w->pos[mi].np; k++) {
+            const cprim *p = &w->pos[mi].p[k];
+            if ((sel && &s->models[mi] != sel) || p->nlit) continue;
+            fputs("  ", f);
+            prim_name(f, s, mi, k, p);
+            if (p->raster_no)
+                fprintf(f, ": drawn as primitive %llu, %llu pixels elsewhere",
+                        (unsigned long long)p->raster_no, (unsigned long long)p->npix);
+            else
+                fputs(": not drawn", f);
+            show_clips(f, w, p);
+            fputc('\n', f);
+        }
+    for (mi = 0; mi < s->nmodels; mi++)
+        if ((!sel || &s->models[mi] == sel) && (s->models[mi].hidden_model ||
+                                               s->models[mi].hidden_position))
+            fprintf(f, "  model %s: hidden, nothing of it is drawn\n", s->models[mi].name);
+}
+
+/* The last write on the pixel of the models counted (sel, or all): 1 and
+** its model and primitive, or 0 for none. */
+static int last_write(const whyc *w, const pt_model *sel, size_t *last_mi, size_t *last_k)
+{
+    const pt_scene *s = w->s;
+    size_t mi, k;
+    uint64_t last = 0;
+
+    for (mi = 0; mi < s->nmodels; mi++)
+        for (k = 0; k < w->pos[mi].np; k++) {
+            const cprim *p = &w->pos[mi].p[k];
+            if ((sel && &s->models[mi] != sel) || p->lit_order <= last) continue;
+            last = p->lit_order;
+            *last_mi = mi;
+            *last_k = k;
+        }
+    return last > 0;
+}
+
+/* The report on a scene whose viewport lies inside the framebuffer. */
+static void report_inside(FILE *f, const whyc *w, const pt_model *sel, const unsigned char *o)
+{
+    const pt_scene *s = w->s;
+    int x_vp = w->X - s->vp_x, y_vp = w->Y - s->vp_y;
+    int inside = x_vp >= 0 && x_vp < s->vp_w && y_vp >= 0 && y_vp < s->vp_h;
+    size_t nlit, last_mi = 0, last_k = 0;
+
+    if (inside) fprintf(f, "inside the viewport at (x_vp, y_vp) = (%d, %d)\n", x_vp, y_vp);
+    else fprintf(f, "outside the viewport: the rasterizer draws only into the viewport\n");
+    fprintf(f, "antialias %s, gamma %s, nearclip %s\n", s->antialias ? "on" : "off",
+            s->gamma ? "on" : "off", s->nearclip ? "on" : "off");
+    nlit = show_lit(f, w, sel, NULL);
+    if (!last_write(w, sel, &last_mi, &last_k)) {
+        fprintf(f, "not lit: no primitive%s writes it; it keeps the %s %d %d %d\n",
+                sel ? " of the chosen model" : "",
+                inside ? "viewport's background" : "background", o[0], o[1], o[2]);
+    } else {
+        fprintf(f, "color %d %d %d: the last write, by ", o[0], o[1], o[2]);
+        prim_name(f, s, last_mi, last_k, &w->pos[last_mi].p[last_k]);
+        fputc('\n', f);
+    }
+    show_not_lit(f, w, sel, nlit);
+}
+
+/* The report on a scene whose viewport sticks out: viewport pixel by
+** viewport pixel, those that land on the pixel's index. */
+static int report_wrapped(FILE *f, const whyc *w, const pt_model *sel, const unsigned char *o)
+{
+    const pt_scene *s = w->s;
+    size_t n = pt_whyc_sources(s, w->X, w->Y, NULL, 0), i, nlit = 0, last_mi = 0, last_k = 0;
+    pt_pix *src = calloc(n ? n : 1, sizeof *src);
+
+    if (!src) return -1;
+    pt_whyc_sources(s, w->X, w->Y, src, n);
+    fputc('\n', f);
+    fprintf(f, "antialias %s, gamma %s, nearclip %s\n", s->antialias ? "on" : "off",
+            s->gamma ? "on" : "off", s->nearclip ? "on" : "off");
+    pt_whyc_wrap_head(f, s, w->X, w->Y, n);
+    for (i = 0; i < n; i++) {
+        size_t here;
+        pt_whyc_source(f, s, w->X, w->Y, src[i]);
+        if (i >= PT_WHYC_EXPLAINED) continue;
+        here = show_lit(f, w, sel, &src[i]);
+        if (!here) fprintf(f, "not lit from there: no primitive%s writes it\n",
+                           sel ? " of the chosen model" : "");
+        nlit += here;
+    }
+    if (n > PT_WHYC_EXPLAINED)
+        fprintf(f, "(the %zu viewport pixels after the first %d are listed, not explained)\n",
+                n - PT_WHYC_EXPLAINED, PT_WHYC_EXPLAINED);
+    fputc('\n', f);
+    if (last_write(w, NULL, &last_mi, &last_k)) {
+        const cprim *p = &w->pos[last_mi].p[last_k];
+        fprintf(f, "color %d %d %d%s: the last write, by ", o[0], o[1], o[2],
+                sel ? " in the image" : "");
+        prim_name(f, s, last_mi, last_k, p);
+        fprintf(f, ", drawn as primitive %llu, from viewport pixel (x_vp, y_vp) = (%d, %d)\n",
+                (unsigned long long)p->raster_no, p->last_x_vp, p->last_y_vp);
+    } else if (n) {
+        fprintf(f, "color %d %d %d: no primitive writes it; the last write is the viewport's "
+                "clearing, of viewport pixel (x_vp, y_vp) = (%lld, %lld), to the viewport "
+                "background\n", o[0], o[1], o[2], (long long)src[n - 1].x,
+                (long long)src[n - 1].y);
+    } else {
+        fprintf(f, "not lit: no viewport pixel writes it; it keeps the background %d %d %d\n",
+                o[0], o[1], o[2]);
+    }
+    show_not_lit(f, w, sel, nlit);
+    free(src);
+    return 0;
+}
+
 int pt_whyc_report(FILE *f, const pt_scene *s, int X, int Y, const pt_model *sel)
 {
     pt_rv_raster_ls rls;
     pt_course_ls ls;
     pt_fb fb;
     whyc w;
-    size_t mi, k, nlit = 0, nother = 0, last_mi = 0, last_k = 0;
-    uint64_t last = 0;
-    int rc, x_vp = X - s->vp_x, y_vp = Y - s->vp_y;
-    const unsigned char *o;
+    pt_pix at = {X, Y, 1};
+    size_t mi;
+    int rc;
 
     memset(&w, 0, sizeof w);
     w.s = s; w.X = X; w.Y = Y;
+    w.idx = pt_fb2index(at, s->fb_w, s->fb_h, NULL);
+    w.wrap = !pt_scene_vp_inside(s);
     w.pos = calloc(s->nmodels ? s->nmodels : 1, sizeof *w.pos);
     if (!w.pos || pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) != 0) {
         free(w.pos);
@@ -325,59 +503,15 @@ int pt_whyc_report(FILE *f, const pt_scene *s, int X, int Y, const pt_model *sel
         goto out;
     }
 
-    fprintf(f, "pixel (x_fb, y_fb) = (%d, %d) of %s, renderer %d: idx = %lld, ", X, Y, s->path,
-            s->renderer, (long long)Y * s->fb_w + X);
-    if (x_vp >= 0 && x_vp < s->vp_w && y_vp >= 0 && y_vp < s->vp_h)
-        fprintf(f, "inside the viewport at (x_vp, y_vp) = (%d, %d)\n", x_vp, y_vp);
-    else
-        fprintf(f, "outside the viewport: the rasterizer draws only into the viewport\n");
-    fprintf(f, "antialias %s, gamma %s, nearclip %s\n", s->antialias ? "on" : "off",
-            s->gamma ? "on" : "off", s->nearclip ? "on" : "off");
-
-    for (mi = 0; mi < s->nmodels; mi++)
-        for (k = 0; k < w.pos[mi].np; k++) {
-            const cprim *p = &w.pos[mi].p[k];
-            if (sel && &s->models[mi] != sel) continue;
-            if (!p->nlit) { nother++; continue; }
-            if (!nlit++) fputs("lit by, in drawing order (the last write wins):\n", f);
-            fputs("  ", f);
-            prim_name(f, s, mi, k, p);
-            fprintf(f, ", drawn as primitive %llu: ", (unsigned long long)p->raster_no);
-            show_writes(f, s, p);
-            show_clips(f, &w, p);
-            fputc('\n', f);
-            if (p->lit_order > last) { last = p->lit_order; last_mi = mi; last_k = k; }
-        }
-    o = fb.rgb + 3 * ((size_t)Y * (size_t)s->fb_w + (size_t)X);
-    if (!nlit) {
-        fprintf(f, "not lit: no primitive%s writes it; it keeps the %s %d %d %d\n",
-                sel ? " of the chosen model" : "",
-                x_vp >= 0 && x_vp < s->vp_w && y_vp >= 0 && y_vp < s->vp_h
-                ? "viewport's background" : "background", o[0], o[1], o[2]);
-    } else {
-        fprintf(f, "color %d %d %d: the last write, by ", o[0], o[1], o[2]);
-        prim_name(f, s, last_mi, last_k, &w.pos[last_mi].p[last_k]);
-        fputc('\n', f);
+    fprintf(f, "pixel (x_fb, y_fb) = (%d, %d) of %s, renderer %d: idx = %lld", X, Y, s->path,
+            s->renderer, (long long)w.idx);
+    if (!w.wrap) {
+        fputs(", ", f);
+        report_inside(f, &w, sel, fb.rgb + 3 * (size_t)w.idx);
+    } else if (report_wrapped(f, &w, sel, fb.rgb + 3 * (size_t)w.idx) != 0) {
+        fprintf(stderr, "pipetrace why: %s: out of memory\n", s->path);
+        w.failed = 1;
     }
-    if (nother) fprintf(f, "not lit by%s:\n", nlit ? " the others" : "");
-    for (mi = 0; mi < s->nmodels; mi++)
-        for (k = 0; k < w.pos[mi].np; k++) {
-            const cprim *p = &w.pos[mi].p[k];
-            if ((sel && &s->models[mi] != sel) || p->nlit) continue;
-            fputs("  ", f);
-            prim_name(f, s, mi, k, p);
-            if (p->raster_no)
-                fprintf(f, ": drawn as primitive %llu, %llu pixels elsewhere",
-                        (unsigned long long)p->raster_no, (unsigned long long)p->npix);
-            else
-                fputs(": not drawn", f);
-            show_clips(f, &w, p);
-            fputc('\n', f);
-        }
-    for (mi = 0; mi < s->nmodels; mi++)
-        if ((!sel || &s->models[mi] == sel) && (s->models[mi].hidden_model ||
-                                               s->models[mi].hidden_position))
-            fprintf(f, "  model %s: hidden, nothing of it is drawn\n", s->models[mi].name);
 out:
     for (mi = 0; mi < s->nmodels; mi++) {
         free(w.pos[mi].p);
@@ -387,4 +521,75 @@ out:
     free(w.pos);
     pt_fb_free(&fb);
     return rc != 0 || w.failed ? -1 : 0;
+}
+
+/* ===== a viewport that sticks out of the framebuffer (why_course.h) ===== */
+
+/* The search below: the course's index is linear along a viewport row, so a
+** viewport pixel lands on (X, Y) only at x_fb = X + k W, y_fb = Y - k, its row
+** wrapped k rows (k < 0: the other way); one candidate a viewport row, each
+** asked of the core's rule, pt_raster_fb_pixel, which alone says where a
+** pixel lands (tests/teach/why_vpout.py ties the answer to the trace's
+** pixel records). */
+size_t pt_whyc_sources(const pt_scene *s, int64_t X, int64_t Y, pt_pix *out, size_t n)
+{
+    pt_pix fb = {X, Y, 1};
+    int64_t idx = pt_fb2index(fb, s->fb_w, s->fb_h, NULL), y_vp;
+    int wrap = !pt_scene_vp_inside(s);
+    size_t m = 0;
+
+    if (idx < 0) return 0;
+    for (y_vp = 0; y_vp < s->vp_h; y_vp++) {             /* the clearing's order */
+        int64_t k = Y - s->vp_y - y_vp;                    /* rows wrapped */
+        int64_t x_vp = X + k * s->fb_w - s->vp_x;
+        pt_fb_pixel q;
+        if (x_vp < 0 || x_vp >= s->vp_w) continue;
+        if (pt_raster_fb_pixel(x_vp, y_vp, s->vp_x, s->vp_y, s->fb_w, s->fb_h, wrap, &q) != idx)
+            continue;
+        if (m < n) { out[m].x = x_vp; out[m].y = y_vp; out[m].ok = 1; }
+        m++;
+    }
+    return m;
+}
+
+void pt_whyc_wrap_head(FILE *f, const pt_scene *s, int64_t X, int64_t Y, size_t nsrc)
+{
+    pt_pix fb = {X, Y, 1};
+    long long idx = (long long)pt_fb2index(fb, s->fb_w, s->fb_h, NULL);
+
+    fprintf(f, "the viewport %d x %d at (x_ul, y_ul) = (%d, %d) sticks out of the %d x %d "
+            "framebuffer: the course's framebuffer writes viewport pixel (x_vp, y_vp) at the "
+            "index y_fb * W + x_fb of its pixel array (x_fb = x_ul + x_vp, y_fb = y_ul + y_vp) "
+            "without testing x_fb against the width, so a pixel past the left or right edge "
+            "lands in a neighbouring row, and one whose index lies outside the array is "
+            "dropped; clearing the viewport writes each of its pixels first, row by row, in "
+            "the viewport background %d %d %d\n", s->vp_w, s->vp_h, s->vp_x, s->vp_y,
+            s->fb_w, s->fb_h, s->vp_background[0], s->vp_background[1], s->vp_background[2]);
+    if (nsrc)
+        fprintf(f, "%zu viewport pixel%s land%s on index %lld, in the clearing's order:\n", nsrc,
+                nsrc == 1 ? "" : "s", nsrc == 1 ? "s" : "", idx);
+    else
+        fprintf(f, "no viewport pixel lands on index %lld: nothing is ever drawn there\n", idx);
+}
+
+void pt_whyc_source(FILE *f, const pt_scene *s, int64_t X, int64_t Y, pt_pix vp)
+{
+    pt_fb_pixel q;
+    long long idx = (long long)pt_raster_fb_pixel(vp.x, vp.y, s->vp_x, s->vp_y, s->fb_w,
+                                                  s->fb_h, 1, &q);
+    long long rows = (long long)(q.y_fb - Y);
+
+    fprintf(f, "\nviewport pixel (x_vp, y_vp) = (%lld, %lld) -> framebuffer (x_fb, y_fb) = "
+            "(%lld, %lld) -> index y_fb * W + x_fb = %lld * %d + %s%lld%s = %lld",
+            (long long)vp.x, (long long)vp.y, (long long)q.x_fb, (long long)q.y_fb,
+            (long long)q.y_fb, s->fb_w, q.x_fb < 0 ? "(" : "", (long long)q.x_fb,
+            q.x_fb < 0 ? ")" : "", idx);
+    if (q.x_fb == X && q.y_fb == Y)
+        fputs(", where it lies\n", f);
+    else
+        fprintf(f, " -> shown at (x_fb, y_fb) = (%lld, %lld): x_fb = %lld lies %s, so the "
+                "index falls %lld row%s %s\n", (long long)X, (long long)Y, (long long)q.x_fb,
+                q.x_fb < 0 ? "left of the framebuffer" : "past its width",
+                rows < 0 ? -rows : rows, rows == 1 || rows == -1 ? "" : "s",
+                rows > 0 ? "up" : "down");
 }

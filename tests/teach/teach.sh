@@ -278,4 +278,43 @@ printf 'framebuffer 20 10\ncamera orthographic\nmodel m\nv 0 0 0\nv 300000000 0 
 run step "$tmp/j3.scene" --vertex 2 --all
 check "teach-9.2 a pixel past 2^31: pipetrace's 64-bit value, and Java's wrapped one" grep -qF -- "= 2998500760 - 1 = 2998500759 (the Java renderer's (int)Math.round(x_pp) gives -1296466536 here)" "$tmp/out"
 
+# ---- why on a viewport that sticks out of the framebuffer (renderer 4: the
+# course's vpout-* scenes): the viewport pixels that land on a pixel, each
+# explained, and the last write, against the trace's pixel records (their
+# index) and the image (tests/teach/why_vpout.py says what it checks)
+why_vpout() {   # why_vpout ID SCENE [every] [lit2]
+    id=$1; s=$2; shift 2
+    python3 tests/teach/why_vpout.py "$exe" "$s" "$id" "$@" > "$tmp/py" 2>&1
+    check "$id why on $(basename "$s") (viewport sticking out): every viewport pixel, against the trace ($(tail -1 "$tmp/py"))" test $? = 0
+    grep '^FAIL\|^  \|Error' "$tmp/py" | head -10
+}
+if command -v python3 >/dev/null 2>&1; then
+    why_vpout teach-10.1 tests/course/r4/vpout-12.scene every lit2
+    why_vpout teach-10.2 tests/course/r4/vpout-13.scene
+    why_vpout teach-10.3 tests/course/r4/vpout-01.scene
+fi
+run why tests/course/r4/vpout-12.scene 23 0
+check "teach-10.4 two viewport pixels, one wrapped from the row below: said" \
+    has "viewport pixel (x_vp, y_vp) = (0, 1) -> framebuffer (x_fb, y_fb) = (-1, 1) -> index y_fb * W + x_fb = 1 * 24 + (-1) = 23 -> shown at (x_fb, y_fb) = (23, 0): x_fb = -1 lies left of the framebuffer, so the index falls 1 row up"
+check "teach-10.5 ... exit 0, two listed" test "$rc" = 0 -a "$(grep -c '^viewport pixel (x_vp, y_vp) = ' "$tmp/out")" = 2
+run why tests/course/r4/vpout-12.scene 23 17
+check "teach-10.6 reached by none: said, and today's report on a pixel outside the viewport" \
+    test "$rc" = 0 -a -n "$(grep '^no viewport pixel lands on index 431: nothing is ever drawn there$' "$tmp/out")" -a -n "$(grep 'idx = 431, outside the viewport (x_fb -1..33, y_fb 0..15): nothing is ever drawn there$' "$tmp/out")"
+# (6, 7): the cube's s5 and s6 from (7, 7), pts p1 from (31, 6), then pts p4 from (7, 7)
+run why tests/course/r4/vpout-12.scene 6 7 --model cube
+check "teach-10.7 --model cube on such a scene: the cube's segments lit it, no point listed" \
+    test "$rc" = 0 -a "$(grep -c '^  cube s[56] (v' "$tmp/out")" = 2 -a "$(grep -c '^  pts p' "$tmp/out")" = 0
+check "teach-10.8 ... the last write, a point of the model left out, in the image" \
+    grep -q '^color [0-9 ]* in the image: the last write, by pts p4, from viewport pixel (x_vp, y_vp) = (7, 7)$' "$tmp/out"
+# a viewport 100 wide in a framebuffer 1 wide: 100 viewport pixels land on
+# index 99, (99 - k, k) for k = 0 .. 99; the line y = 0 lights (49, 50)
+printf 'renderer 4\nframebuffer 1 100\nviewport 0 0 100 100\ncamera orthographic\nmodel m\nv -1 0 0\nv 1 0 0\nl 1 2\n' > "$tmp/thin.scene"
+run why "$tmp/thin.scene" 0 99
+check "teach-10.9 100 viewport pixels on one index: all listed, the first 64 explained" \
+    test "$rc" = 0 -a "$(grep -c '^viewport pixel (x_vp, y_vp) = ' "$tmp/out")" = 100 -a "$(grep -c '^not lit from there\|^lit by:' "$tmp/out")" = 64 \
+    -a -n "$(grep -Fx '(the 36 viewport pixels after the first 64 are listed, not explained)' "$tmp/out")"
+check "teach-10.10 ... the one lit, and the last write" \
+    test -n "$(grep -A1 '^viewport pixel (x_vp, y_vp) = (49, 50) ' "$tmp/out" | grep '^lit by:')" \
+    -a -n "$(grep -Fx 'color 255 255 255: the last write, by m s1, from viewport pixel (x_vp, y_vp) = (49, 50)' "$tmp/out")"
+
 report

@@ -289,4 +289,39 @@ check "teach79-8.10 step, viewport sticking out: a write past the array is dropp
     sh -c 'grep -q "= -5\*20 + 11 = -89 lies outside the pixel array: the write is dropped" "$1" &&
            gzip -dc tests/course/r7/vpout-02.log.gz | grep -q "^FrameBuffer: Bad pixel coordinate (11, -5) "' _ "$tmp/out"
 
+# ---- teach79-10: why on a viewport that sticks out of the framebuffer (the
+# course's vpout-* scenes): the viewport pixels that land on a pixel, what
+# each wrote, and the last write, against the trace's pixel records (their
+# index) and the image (tests/teach/why_vpout.py says what it checks)
+why_vpout() {   # why_vpout ID SCENE [every] [lit2]
+    id=$1; s=$2; shift 2
+    python3 tests/teach/why_vpout.py "$exe" "$s" "$id" "$@" > "$tmp/py" 2>&1
+    check "$id why on $s (viewport sticking out): every viewport pixel, against the trace ($(tail -1 "$tmp/py"))" test $? = 0
+    grep '^FAIL\|^  \|Error' "$tmp/py" | head -10
+}
+# renderer 9's corpus lights no pixel reached twice: vpout-14 moved right
+sed 's/^viewport .*/viewport 2 0 20 20/' tests/course/r9/vpout-14.scene > "$tmp/r9-wide.scene"
+if command -v python3 >/dev/null 2>&1; then
+    why_vpout teach79-10.1 tests/course/r7/vpout-12.scene every lit2
+    why_vpout teach79-10.2 tests/course/r7/vpout-13.scene
+    why_vpout teach79-10.3 tests/course/r7/vpout-04.scene
+    why_vpout teach79-10.4 tests/course/r9/vpout-12.scene every
+    why_vpout teach79-10.5 "$tmp/r9-wide.scene" every lit2
+    why_vpout teach79-10.6 tests/course/r9/vpout-13.scene
+    why_vpout teach79-10.7 tests/course/r9/vpout-04.scene
+fi
+run why tests/course/r7/vpout-12.scene 0 3
+check "teach79-10.8 two viewport pixels, wrapped by two rows and by one: said" \
+    test "$rc" = 0 -a -n "$(grep -Fx "viewport pixel (x_vp, y_vp) = (38, 0) -> framebuffer (x_fb, y_fb) = (40, 1) -> index y_fb * W + x_fb = 1 * 20 + 40 = 60 -> shown at (x_fb, y_fb) = (0, 3): x_fb = 40 lies past its width, so the index falls 2 rows down" "$tmp/out")" \
+    -a -n "$(grep -F "viewport pixel (x_vp, y_vp) = (18, 1) -> framebuffer (x_fb, y_fb) = (20, 2) -> index y_fb * W + x_fb = 2 * 20 + 20 = 60 -> shown at (x_fb, y_fb) = (0, 3): " "$tmp/out")"
+printf 'renderer 9\nframebuffer 1 100\nviewport 0 0 100 100\ncamera orthographic\nmodel m\nv -1 0 0\nv 1 0 0\nsegment 1 2\n' > "$tmp/thin.scene"
+run why "$tmp/thin.scene" 0 99
+check "teach79-10.10 100 viewport pixels on one index: all listed, the first 64 explained, the last write" \
+    test "$rc" = 0 -a "$(grep -c '^viewport pixel (x_vp, y_vp) = ' "$tmp/out")" = 100 -a "$(grep -c '^not lit from there\|^lit by' "$tmp/out")" = 64 \
+    -a -n "$(grep -Fx '(the 36 viewport pixels after the first 64 are listed, not explained)' "$tmp/out")" \
+    -a -n "$(grep '^color [0-9 ]*: the last write, by m segment 1 (v1 v2), drawn as primitive 1, from viewport pixel (x_vp, y_vp) = (49, 50)$' "$tmp/out")"
+run why tests/course/r7/vpout-00.scene 6 0
+check "teach79-10.9 reached by none: said, the background" \
+    test "$rc" = 0 -a -n "$(grep '^no viewport pixel lands on index 6: nothing is ever drawn there$' "$tmp/out")" -a -n "$(grep '^not lit: no viewport pixel writes it; it keeps the background ' "$tmp/out")"
+
 report
