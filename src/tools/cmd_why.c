@@ -930,24 +930,6 @@ static int explain(why_ctx *w)
     return 0;
 }
 
-/* The pixel's colour and the segment or point that set it, when one did. */
-static void show_color(const why_ctx *w)
-{
-    const pt_scene *s = w->s;
-
-    if (w->pt_drawn) {
-        const pt_model *m = &s->models[w->pt_mi];
-        fprintf(term.f, "color %d %d %d%s: %s p%zu is the last point drawn there\n",
-                w->pt_rgb[0], w->pt_rgb[1], w->pt_rgb[2], w->sel ? " in the image" : "", m->name,
-                w->pt_k + 1);
-    } else if (w->drawn) {
-        const pt_model *m = &s->models[w->last_mi];
-        fprintf(term.f, "color %d %d %d%s: %s s%zu is the last segment drawn there\n", m->color[0],
-               m->color[1], m->color[2], w->sel ? " in the image" : "", m->name,
-               w->last_si + 1);
-    }
-}
-
 /* ===== a viewport that sticks out of the framebuffer ===== */
 
 /* The last write on one index of the pixel array, in drawing order, of any
@@ -1004,6 +986,27 @@ static int find_last_write(last_write *lw)
     l.point_pixels = lw_point_pixels;
     l.ud = lw;
     return pt_run_plain(lw->s, &o, &l);
+}
+
+/* The pixel's colour and the segment or point that set it, when one did: a
+** segment's colour is the one its write left (lw, the rasterizer's pixel
+** record: per-vertex colours, anti-aliasing and gamma change it), its model's
+** colour when lw heard no write of a segment. */
+static void show_color(const why_ctx *w, const last_write *lw)
+{
+    const pt_scene *s = w->s;
+
+    if (w->pt_drawn) {
+        const pt_model *m = &s->models[w->pt_mi];
+        fprintf(term.f, "color %d %d %d%s: %s p%zu is the last point drawn there\n",
+                w->pt_rgb[0], w->pt_rgb[1], w->pt_rgb[2], w->sel ? " in the image" : "", m->name,
+                w->pt_k + 1);
+    } else if (w->drawn) {
+        const pt_model *m = &s->models[w->last_mi];
+        const unsigned char *rgb = lw->any && !lw->point ? lw->rgb : m->color;
+        fprintf(term.f, "color %d %d %d%s: %s s%zu is the last segment drawn there\n", rgb[0],
+               rgb[1], rgb[2], w->sel ? " in the image" : "", m->name, w->last_si + 1);
+    }
 }
 
 /* The report on pixel (w->X, w->Y) of a scene whose viewport sticks out,
@@ -1102,6 +1105,7 @@ int pt_cmd_why(int argc, char **argv)
     pt_scene s;
     pt_pix fb, vp;
     why_ctx w;
+    last_write lw;
     size_t nsrc;
     int rc;
 
@@ -1174,7 +1178,11 @@ int pt_cmd_why(int argc, char **argv)
             fprintf(term.f, "--model %s: the trace of this model alone; the image still shows "
                     "every model\n", w.sel->name);
         rc = explain(&w);
-        if (rc == 0) show_color(&w);
+        memset(&lw, 0, sizeof lw);
+        lw.s = &s;
+        lw.idx = pt_fb2index(fb, s.fb_w, s.fb_h, NULL);
+        if (rc == 0 && w.drawn && !w.pt_drawn) rc = find_last_write(&lw);
+        if (rc == 0) show_color(&w, &lw);
     }
     if (rc != 0) {
         fprintf(stderr, "pipetrace why: %s: out of memory\n", s.path);

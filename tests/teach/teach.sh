@@ -165,7 +165,15 @@ check "teach-5.19 ... the pyramid's segment: its model left out" \
     grep -q "^    lost at model: its model left out: --model cube traces the records of model cube only; model pyramid is drawn into the image but not traced" "$tmp/out"
 check "teach-5.20 ... and in the image it lights the pixel" has "    in the image, it lights this pixel"
 check "teach-5.21 ... the cube's own nearest segment is listed too" grep -q "^  cube s[0-9]* (v" "$tmp/out"
-check "teach-5.22 ... the image's color, from the pyramid" grep -q "^color 80 200 255 in the image: pyramid s[0-9]* is the last segment drawn there" "$tmp/out"
+"$exe" --image "$tmp/builtin.ppm" >/dev/null 2>&1
+px=$(python3 -c '
+import re, sys
+d = open(sys.argv[1], "rb").read()
+m = re.match(rb"P6\s+(\d+)\s+(\d+)\s+(\d+)\s", d)
+i = m.end() + 3 * (168 * int(m.group(1)) + 226)
+print(*d[i:i + 3])' "$tmp/builtin.ppm")
+check "teach-5.22 ... the image's color (gamma-encoded, not the model's 80 200 255), from the pyramid" \
+    grep -q "^color ${px:-none} in the image: pyramid s[0-9]* is the last segment drawn there" "$tmp/out"
 run why --model nope 226 168
 check "teach-5.23 --model with no such model: exit 2, naming the argument" \
     test "$rc" = 2 -a -n "$(grep "^pipetrace why: --model nope: <builtin> has no model 'nope' (its models: cube, pyramid, floor)" "$tmp/err")"
@@ -316,5 +324,36 @@ check "teach-10.9 100 viewport pixels on one index: all listed, the first 64 exp
 check "teach-10.10 ... the one lit, and the last write" \
     test -n "$(grep -A1 '^viewport pixel (x_vp, y_vp) = (49, 50) ' "$tmp/out" | grep '^lit by:')" \
     -a -n "$(grep -Fx 'color 255 255 255: the last write, by m s1, from viewport pixel (x_vp, y_vp) = (49, 50)' "$tmp/out")"
+
+# The colour why names is the one written: per-vertex colours, anti-aliasing
+# and gamma make it differ from the model's colour.  Every 7th pixel of the
+# course's image that a segment lit (neither background), asked of why, must
+# say the image's bytes.
+why_colours() {  # why_colours SCENE: "ok", or the first pixel whose colour differs
+    python3 - "$exe" "$1" "${1%.scene}.ppm.gz" <<'PY'
+import gzip, re, subprocess, sys
+exe, scene, ppm = sys.argv[1:4]
+d = gzip.open(ppm).read()
+m = re.match(rb"P6\s+(\d+)\s+(\d+)\s+(\d+)\s", d)
+w, h, o = int(m.group(1)), int(m.group(2)), m.end()
+bg = {(0, 0, 0)}                  # the course's default background
+for line in open(scene):
+    f = line.split()
+    if f and f[0] in ("background", "viewport-background"): bg.add(tuple(map(int, f[1:4])))
+lit = [(x, y) for y in range(h) for x in range(w)
+       if tuple(d[o + 3 * (y * w + x):o + 3 * (y * w + x) + 3]) not in bg][::7]
+for x, y in lit[:40]:
+    out = subprocess.run([exe, "why", scene, str(x), str(y)], capture_output=True, text=True).stdout
+    got = re.search(r"^color (\d+) (\d+) (\d+)", out, re.M)
+    want = list(d[o + 3 * (y * w + x):o + 3 * (y * w + x) + 3])
+    if not got or list(map(int, got.groups())) != want:
+        print("pixel", x, y, "why:", got and got.groups(), "image:", want); sys.exit()
+print("ok" if lit else "no lit pixel")
+PY
+}
+check "teach-11.1 why's colour is the one written: per-vertex colours, gamma (the course's image)" \
+    test "$(why_colours tests/course/r4/vp-00.scene)" = ok
+check "teach-11.2 ... with anti-aliasing" test "$(why_colours tests/course/r4/aa-00.scene)" = ok
+check "teach-11.3 ... another anti-aliased scene" test "$(why_colours tests/course/r4/aa-03.scene)" = ok
 
 report
