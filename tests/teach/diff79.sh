@@ -44,7 +44,9 @@ mistake() {
     done
 }
 
-for scene in r7-skew-aa r7-near r7-near-amb r7-near-amb-sep r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3; do
+for scene in r7-skew-aa r7-near r7-near-amb r7-near-amb-sep r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3 \
+             r7-cam-amb1 r7-cam-amb1-sep r7-cam-amb2 r7-cam-amb2-sep r7-clip-amb r7-clip-amb-sep \
+             r7-near-amb-col r7-near-amb-col-sep; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -140,6 +142,43 @@ mistake r7-near-amb-sep nearoff "the near plane ignored"
 "$exe" diff "$tmp/r7-near-amb.jsonl" "$tmp/r7-near-amb.nearoff.log" --separating-scene "$tmp/r7-near-amb.jsonl" >"$tmp/out" 2>&1; rc=$?
 check "sep-4 --separating-scene over EXPECTED: refused, exit 2 ($rc)" \
     sh -c 'test "$1" = 2 && grep -qF "names EXPECTED" "$2" && head -c 1 "$3" | grep -q "{"' _ "$rc" "$tmp/out" "$tmp/r7-near-amb.jsonl"
+
+# ---- every other ambiguity of the catalogue the course's students can
+# make: two mistakes of one stage that give the same log on a scene made for
+# it (README.md says how), and the separating scene diff prints for them,
+# stored with the logs each student's Java printed for it.  On it each
+# student is named alone; the right log passes (the loop above).
+#   sepcase ID AMB M1 M2 NAME1 NAME2: AMB's logs of M1 and M2 both give
+#   "ambiguous: NAME1 or NAME2" and print AMB-sep.scene; on AMB-sep each is
+#   named with its own mistake.
+sepcase() {
+    id=$1 amb=$2 m1=$3 m2=$4 n1=$5 n2=$6
+    for m in $m1 $m2; do
+        mistake "$amb" "$m" "ambiguous: $n1 or $n2"
+        "$exe" diff "$tmp/$amb.jsonl" "$tmp/$amb.$m.log" >"$tmp/out" 2>&1
+        check "$id-1 $amb $m: no 'No separating scene'" test "$(grep -c '^No separating scene' "$tmp/out")" = 0
+        sed -n '/^#---- begin separating scene ----$/,/^#---- end separating scene ----$/p' "$tmp/out" |
+            sed '1d;$d' >"$tmp/sep.scene"
+        check "$id-2 ... $data/$amb-sep.scene is the scene printed (else store it again and remake its logs: README.md)" \
+            cmp -s "$tmp/sep.scene" "$data/$amb-sep.scene"
+        "$exe" "$tmp/sep.scene" --format kraft --kraft-debug all --trace "$tmp/sep.log" >/dev/null 2>&1
+        check "$id-3 ... it parses and renders as the course's renderer does" \
+            cmp -s "$tmp/sep.log" "$tmp/$amb-sep.right.log"
+    done
+    mistake "$amb-sep" "$m1" "$n1"
+    mistake "$amb-sep" "$m2" "$n2"
+    "$exe" diff "$tmp/$amb-sep.right.log" "$tmp/$amb-sep.$m1.log" >"$tmp/out" 2>&1
+    check "$id-4 $amb-sep $m1 against $m2's log: they differ (exit 1)" \
+        sh -c '"$1" diff "$2" "$3" >/dev/null 2>&1; test $? = 1' _ "$exe" "$tmp/$amb-sep.$m1.log" "$tmp/$amb-sep.$m2.log"
+}
+# the camera: every vertex on one line through the eye where a skew mistake
+# and a size mistake agree; the scene keeps the asymmetric rectangle
+sepcase sep-5 r7-cam-amb1 skew0 halfsize "the skew forgotten" "scaled by the width, not the half-width"
+sepcase sep-6 r7-cam-amb2 skewneg doublesize "the skew's sign wrong" "scaled by the half-width twice"
+# the clip's and the near clip's colours: one byte apart, cut where the
+# inside (kept) end's colour and the bytes truncated agree
+sepcase sep-7 r7-clip-amb clipkept clipbytes "the clip's colour not interpolated" "the clip's colour interpolated in bytes"
+sepcase sep-8 r7-near-amb-col nearkept nearbytes "the near clip's colour not interpolated" "the near clip's colour interpolated in bytes"
 
 # ---- the first stage that differs, and its counts
 "$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.skew0.log" >"$tmp/out" 2>&1

@@ -35,6 +35,8 @@ typedef struct sig {
     size_t n;
     uint64_t px, cl;             /* renderer 4's replayed pixels and clip records */
     int has_px, has_cl;
+    int fragile;                 /* 1: a colour a trace's printed digits leave
+                                 ** between two bytes (renderers 7 and 9) */
 } sig;
 
 static void sig_real(sig *s, double x, int isint)
@@ -530,7 +532,7 @@ void pt_sep_classic(const pt_sep_r4 *sp, const char *const *names, size_t n, pt_
     free(q);
 }
 
-/* ===== renderers 7 and 9: the near clip ===== */
+/* ===== renderers 7 and 9: the camera, the near clip, the clip ===== */
 
 /* A segment of the candidates, in view coordinates, with its two colours. */
 typedef struct piece79 {
@@ -538,15 +540,23 @@ typedef struct piece79 {
     int rgb[2][3];
 } piece79;
 
-/* v (view coordinates) in camera coordinates, by cam's renderer's stage. */
-static pt_vec4 camera79(const pt_c79cam *cam, const double v[3])
+/* cam's numbers as the stages take them. */
+static pt_rv_camera rv_camera(const pt_c79cam *cam)
 {
     pt_rv_camera k;
-    pt_vec4 p = {v[0], v[1], v[2], 1.0};
 
     memset(&k, 0, sizeof k);
     k.perspective = cam->persp;
     k.l = cam->l; k.r = cam->r; k.b = cam->b; k.t = cam->t; k.n = cam->n;
+    return k;
+}
+
+/* v (view coordinates) in camera coordinates, by cam's renderer's stage. */
+static pt_vec4 camera79(const pt_c79cam *cam, const double v[3])
+{
+    pt_rv_camera k = rv_camera(cam);
+    pt_vec4 p = {v[0], v[1], v[2], 1.0};
+
     if (cam->renderer == 9) {
         pt_jmat m = pt_r9_normalize_matrix(&k);
         return pt_r9_view2camera(p, &m);
@@ -554,8 +564,26 @@ static pt_vec4 camera79(const pt_c79cam *cam, const double v[3])
     return pt_r7_view2camera(p, &k);
 }
 
-/* What the near clip (mk, or the right one when NULL) leaves of pc. */
-static void sig79(const pt_c79cam *cam, const piece79 *pc, const pt_mistake79 *mk, sig *s)
+/* The camera stage's (x, y, z, w) of pc's vertices, mk's (or the right
+** stage's when NULL): the catalogue's own function, given the view values
+** and the right ones, as diff tests the hypothesis. */
+static void sig_camera(const pt_c79cam *cam, const piece79 *pc, const pt_mistake79 *mk, sig *s)
+{
+    int e, k;
+
+    for (e = 0; e < 2; e++) {
+        pt_vec4 r = camera79(cam, pc->v[e]);
+        double prev[4] = {pc->v[e][0], pc->v[e][1], pc->v[e][2], 1.0};
+        double right[4] = {r.x, r.y, r.z, r.w}, o[4];
+        if (mk) mk->vertex(cam, prev, right, o);
+        else memcpy(o, right, sizeof o);
+        for (k = 0; k < 4; k++) sig_real(s, o[k], 0);
+    }
+}
+
+/* What clip stage st (mk's, or the right one when NULL) leaves of pc: the
+** near clip takes the camera's vertices, the clip the image plane's. */
+static void sig79(const pt_c79cam *cam, int st, const piece79 *pc, const pt_mistake79 *mk, sig *s)
 {
     pt_rv_model m;
     pt_rv_prim p;
@@ -563,20 +591,28 @@ static void sig79(const pt_c79cam *cam, const piece79 *pc, const pt_mistake79 *m
     int rc, e;
 
     memset(s, 0, sizeof *s);
+    if (st == PT_T79_CAMERA) {
+        sig_camera(cam, pc, mk, s);
+        return;
+    }
     memset(&m, 0, sizeof m);
     memset(&p, 0, sizeof p);
     rc = 0;
     for (e = 0; e < 2; e++) {
+        pt_vec4 v = camera79(cam, pc->v[e]);
         pt_rgb c;
         c.r = (float)pc->rgb[e][0] / 255.0f;
         c.g = (float)pc->rgb[e][1] / 255.0f;
         c.b = (float)pc->rgb[e][2] / 255.0f;
-        rc |= pt_rv_add_vertex(&m, camera79(cam, pc->v[e])) | pt_rv_add_color(&m, c);
+        if (st == PT_T79_CLIP) v = pt_rv_project(v, cam->persp);
+        rc |= pt_rv_add_vertex(&m, v) | pt_rv_add_color(&m, c);
     }
     p.kind = PT_RV_LINE;
     p.v[1] = p.c[1] = 1;
     rc |= pt_rv_add_prim(&m, &p);
-    if (rc == 0) rc = mk ? mk->clip(cam, &m) : pt_rv_nearclip(&m, cam->n, NULL);
+    if (rc == 0)
+        rc = mk ? mk->clip(cam, &m) : st == PT_T79_CLIP ? pt_rv_clip(&m, NULL) < 0 ? -1 : 0
+                                                        : pt_rv_nearclip(&m, cam->n, NULL);
     sig_real(s, rc, 1);
     sig_real(s, (double)m.nv, 1);
     sig_real(s, (double)m.np, 1);
@@ -584,9 +620,12 @@ static void sig79(const pt_c79cam *cam, const piece79 *pc, const pt_mistake79 *m
         sig_real(s, m.v[k].x, 0); sig_real(s, m.v[k].y, 0); sig_real(s, m.v[k].z, 0);
     }
     for (k = 0; rc == 0 && k < m.nc; k++) {     /* the log prints Color bytes */
-        sig_real(s, pt_color_byte(m.c[k].r), 1);
-        sig_real(s, pt_color_byte(m.c[k].g), 1);
-        sig_real(s, pt_color_byte(m.c[k].b), 1);
+        const float f[3] = {m.c[k].r, m.c[k].g, m.c[k].b};
+        for (e = 0; e < 3; e++) {
+            double x = (double)f[e] * 255;      /* a text trace's 6 decimals: +-0.0002 */
+            s->fragile |= fabs(x - floor(x) - 0.5) < 0.01;
+            sig_real(s, pt_color_byte(f[e]), 1);
+        }
     }
     for (k = 0; rc == 0 && k < m.np; k++) {
         sig_real(s, m.p[k].v[0], 1); sig_real(s, m.p[k].v[1], 1);
@@ -595,75 +634,225 @@ static void sig79(const pt_c79cam *cam, const piece79 *pc, const pt_mistake79 *m
     pt_rv_model_free(&m);
 }
 
-void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_sep *out)
+/* The near clip's candidates: segments across the near plane and its mirror
+** image, between them, beyond them. */
+static size_t pieces_near(const pt_c79cam *cam, piece79 *pc)
 {
     static const int col[6][3] = {{255, 0, 0}, {0, 0, 255}, {0, 255, 0}, {255, 255, 0},
                                   {200, 100, 50}, {90, 30, 220}};
-    search *q = malloc(sizeof *q);
-    const pt_mistake79 *hy[MAXH];
-    piece79 pc[MAXC];
+    static const double xy[5][4] = {{-0.3, -0.2, 0.4, 0.3}, {0.2, -0.3, -0.1, 0.25},
+                                    {0.1, 0.1, -0.2, 0.15}, {-0.25, 0.3, 0.3, -0.2},
+                                    {0.35, -0.1, -0.3, 0.2}};
     double lo = fmin(cam->n, -cam->n), hi = fmax(cam->n, -cam->n), a = hi - lo;
     double far, mid, beyond;
-    size_t k, j, c, i;
-    char b[3][PT_NUMLEN], nb[1024];
+    size_t c;
+    int i;
 
-    memset(out, 0, sizeof *out);
-    if (!q) { none(out, "%s%s", "out of memory", "."); return; }
     if (!(a > 0) || !isfinite(a)) a = 0.2;
     far = lo - 10 * a; mid = (lo + hi) / 2; beyond = hi + 2 * a;
-    memset(q, 0, sizeof *q);
-    hy[0] = NULL;
-    q->nh = 1;
-    for (k = 0; k < PT_NMISTAKES79 && q->nh < MAXH; k++) {
-        const pt_mistake79 *m = &pt_mistakes79[k];
-        if (m->stage != PT_T79_NEARCLIP || !m->clip) continue;
-        if (m->renderer && m->renderer != cam->renderer) continue;
-        hy[q->nh++] = m;
-    }
-    for (k = 0; k < n; k++) {
-        int found = 0;
-        for (j = 1; j < q->nh; j++)
-            if (!strcmp(hy[j]->name, names[k])) q->listed[j] = 1, found = 1;
-        if (!found) {
-            none(out, "a separating scene is made for the near clip's mistakes only, not for "
-                 "%s%s.", names[k], "");
-            free(q);
-            return;
-        }
-    }
     {
         const double z[5][2] = {{far, beyond}, {far, mid}, {beyond, beyond + 2 * a},
                                 {mid, far}, {far, beyond + a}};
-        const double xy[5][4] = {{-0.3, -0.2, 0.4, 0.3}, {0.2, -0.3, -0.1, 0.25},
-                                 {0.1, 0.1, -0.2, 0.15}, {-0.25, 0.3, 0.3, -0.2},
-                                 {0.35, -0.1, -0.3, 0.2}};
-        for (c = 0; c < 5; c++) {
+        for (c = 0; c < 5; c++)
             for (i = 0; i < 2; i++) {
                 pc[c].v[i][0] = xy[c][2 * i];
                 pc[c].v[i][1] = xy[c][2 * i + 1];
                 pc[c].v[i][2] = z[c][i];
                 memcpy(pc[c].rgb[i], col[(2 * c + i) % 6], sizeof pc[c].rgb[i]);
             }
-        }
-        q->nc = 5;
     }
-    for (c = 0; c < q->nc; c++)
-        for (i = 0; i < q->nh; i++) sig79(cam, &pc[c], hy[i], &q->s[c][i]);
+    return 5;
+}
+
+/* The camera's candidates: segments in front of the camera whose ends lie
+** off the lines through the eye where a skew mistake and a size mistake
+** agree (x_v = k z_v (r+l)/2, y_v = k z_v (t+b)/2: k = 1, -1, 3, -3). */
+static size_t pieces_camera(piece79 *pc)
+{
+    static const double v[3][6] = {{-0.3, -0.2, -2.1, 0.4, 0.3, -2.6},
+                                   {0.35, -0.15, -3.2, -0.25, 0.45, -1.7},
+                                   {0.6, 0.1, -2.4, 0.05, -0.55, -3.5}};
+    static const int col[2][3] = {{255, 0, 0}, {0, 0, 255}};
+    size_t c;
+    int i;
+
+    for (c = 0; c < 3; c++)
+        for (i = 0; i < 2; i++) {
+            memcpy(pc[c].v[i], v[c] + 3 * i, sizeof pc[c].v[i]);
+            memcpy(pc[c].rgb[i], col[i], sizeof pc[c].rgb[i]);
+        }
+    return 3;
+}
+
+/* The clip's candidates, each from an inside end to an outside one beyond
+** one edge, given on the image plane at z_v = -2 and taken back to view
+** coordinates by the camera's formula turned around: a first guess only,
+** the signatures run the stages themselves.  Two colours five bytes apart,
+** cut a quarter of the way in from the outside end: the new colour
+** interpolated (1.25 bytes in: a byte), in bytes (truncated: the next one)
+** and not at all (the inside end's) are three bytes, and a t outside 0 .. 1
+** (a mistake's) still makes a colour java.awt.Color takes; or one colour,
+** which shows where each cut lands. */
+static size_t pieces_clip(const pt_c79cam *cam, piece79 *pc)
+{
+    static const double img[6][4] = {
+        {0.4, 0.15, 1.2, -0.1}, {-0.1, -0.4, 0.15, -1.2}, {0.3, 0.4, 1.6, 0.7},
+        {-0.5, -0.2, -1.3, -0.6}, {0.1, 0.6, 0.4, 1.5}, {0.6, 0.7, 1.3, 1.4}};
+    static const int col[6][2][3] = {
+        {{125, 115, 105}, {130, 120, 110}}, {{60, 200, 90}, {65, 205, 95}},
+        {{255, 0, 0}, {255, 0, 0}}, {{0, 255, 0}, {0, 255, 0}}, {{0, 0, 255}, {0, 0, 255}},
+        {{255, 255, 0}, {255, 255, 0}}};
+    double z = -2;
+    size_t c;
+    int i;
+
+    for (c = 0; c < 6; c++)
+        for (i = 0; i < 2; i++) {
+            double xc = img[c][2 * i] * (cam->persp ? -z : 1), yc = img[c][2 * i + 1] * (cam->persp ? -z : 1);
+            double sx = cam->persp ? -z * (cam->r + cam->l) / 2 : (cam->r + cam->l) / 2;
+            double sy = cam->persp ? -z * (cam->t + cam->b) / 2 : (cam->t + cam->b) / 2;
+            pc[c].v[i][0] = xc * (cam->r - cam->l) / 2 + sx;
+            pc[c].v[i][1] = yc * (cam->t - cam->b) / 2 + sy;
+            pc[c].v[i][2] = z;
+            memcpy(pc[c].rgb[i], col[c][i], sizeof pc[c].rgb[i]);
+        }
+    return 6;
+}
+
+/* The stage of the catalogue's mistake name for cam's renderer, or -1. */
+static int stage_of(const pt_c79cam *cam, const char *name)
+{
+    size_t k;
+
+    for (k = 0; k < PT_NMISTAKES79; k++)
+        if (!strcmp(pt_mistakes79[k].name, name) &&
+            (!pt_mistakes79[k].renderer || pt_mistakes79[k].renderer == cam->renderer))
+            return pt_mistakes79[k].stage;
+    return -1;
+}
+
+/* Why there is no scene for stage st's mistakes (a sentence's end), or NULL
+** when the search makes one. */
+static const char *no_search(int st)
+{
+    switch ((pt_t79_stage)st) {
+    case PT_T79_CAMERA:
+    case PT_T79_NEARCLIP:
+    case PT_T79_CLIP:
+        return NULL;
+    case PT_T79_WORLD:
+        return "the world stage's mistakes, whose matrix diff finds from EXPECTED's vertices, "
+               "are told apart by a position of two matrix lines that do not commute, one a "
+               "rotation and one a translation (tests/data/diff79's r9-order is one)";
+    case PT_T79_MODEL:
+    case PT_T79_VIEW:
+    case PT_T79_IMAGE:
+        return "the stage has at most one known mistake";
+    }
+    return "the pixels' mistakes (the gamma's and the anti-aliasing's) act on each pixel's "
+           "colour alone, not on a scene's geometry: a segment with colours between 0 and 255, "
+           "anti-aliasing and gamma on, tells them apart";
+}
+
+/* The comment of stage st's scene, after its first sentence. */
+static void course_comment(const pt_c79cam *cam, int st, pt_sep *out, const char *names)
+{
+    char b[2][PT_NUMLEN];
+    double sx = cam->r + cam->l, sy = cam->t + cam->b;
+
+    if (st == PT_T79_NEARCLIP) {
+        comment(out, "A scene that tells these mistakes apart: %s. Made by pipetrace diff for "
+                "the purpose: on it each gives a log of its own, and none gives the right "
+                "one's. The camera's rectangle and near plane are EXPECTED's; it sits at the "
+                "origin (no view vector, no matrix), so the segments are given where the near "
+                "clip sees them. The framebuffer's size, antialias off and gamma on are the "
+                "course's usual ones: the near clip does not depend on them. Render it with "
+                "both renderers, debug on, and diff the logs.", names);
+        return;
+    }
+    comment(out, "A scene that tells these mistakes apart: %s. Made by pipetrace diff for the "
+            "purpose: on it each gives a log of its own, and none gives the right one's. It "
+            "keeps EXPECTED's camera and sits at the origin (no view vector, no matrix), so the "
+            "segments are given in view coordinates.", names);
+    if (st == PT_T79_CAMERA && (sx != 0 || sy != 0))
+        comment(out, "The rectangle is asymmetric (r + l = %s, t + b = %s), so the skew moves "
+                "each vertex; the ends lie off the lines through the eye on which a skew "
+                "mistake and a size mistake give the same camera coordinates (x_v = k z_v "
+                "(r+l)/2, y_v = k z_v (t+b)/2 for k = 1, -1, 3, -3).",
+                pt_diff_num(sx, b[0]), pt_diff_num(sy, b[1]));
+    else if (st == PT_T79_CAMERA)
+        comment(out, "The rectangle is symmetric (r + l = t + b = 0), so no skew mistake "
+                "changes anything; the ends lie off the camera's axis, where the size mistakes "
+                "move them.");
+    else
+        comment(out, "Each segment runs from inside the rectangle to beyond one edge. Where it "
+                "has two colours, they are five bytes apart and the edge cuts it a quarter of "
+                "the way in from the outside end, so that the new colour interpolated, in "
+                "bytes (truncated) and not at all (the inside end's) are three different "
+                "bytes, and a t outside 0 .. 1 still makes a colour java.awt.Color takes; "
+                "where it has one, it shows where the cut lands.");
+    comment(out, "The framebuffer's size, antialias off and gamma on are the course's usual "
+            "ones: the %s does not depend on them. Render it with both renderers, debug on, "
+            "and diff the logs.", st == PT_T79_CAMERA ? "camera stage" : "clip");
+}
+
+void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_sep *out)
+{
+    search *q = malloc(sizeof *q);
+    const pt_mistake79 *hy[MAXH];
+    piece79 pc[MAXC];
+    size_t k, j, c, i;
+    int st = n ? stage_of(cam, names[0]) : -1;
+    char b[3][PT_NUMLEN], nb[1024];
+    const char *why;
+
+    memset(out, 0, sizeof *out);
+    if (!q) { none(out, "%s%s", "out of memory", "."); return; }
+    for (k = 0; k < n; k++)
+        if (stage_of(cam, names[k]) != st) {
+            none(out, "%s is no mistake of renderer %s's catalogue, or not of the stage the "
+                 "others are.", names[k], cam->renderer == 9 ? "9" : "7");
+            free(q);
+            return;
+        }
+    why = no_search(st);
+    if (why) {
+        none(out, "no separating scene is made for %s: %s.", names[0], why);
+        free(q);
+        return;
+    }
+    memset(q, 0, sizeof *q);
+    hy[0] = NULL;
+    q->nh = 1;
+    for (k = 0; k < PT_NMISTAKES79 && q->nh < MAXH; k++) {
+        const pt_mistake79 *m = &pt_mistakes79[k];
+        if (m->stage != st || !(st == PT_T79_CAMERA ? m->vertex != NULL : m->clip != NULL)) continue;
+        if (m->renderer && m->renderer != cam->renderer) continue;
+        hy[q->nh++] = m;
+    }
+    for (k = 0; k < n; k++)
+        for (j = 1; j < q->nh; j++)
+            if (!strcmp(hy[j]->name, names[k])) q->listed[j] = 1;
+    q->nc = st == PT_T79_NEARCLIP ? pieces_near(cam, pc)
+          : st == PT_T79_CAMERA ? pieces_camera(pc) : pieces_clip(cam, pc);
+    for (c = 0; c < q->nc; c++) {
+        int usable = 1;
+        for (i = 0; i < q->nh; i++) {
+            sig79(cam, st, &pc[c], hy[i], &q->s[c][i]);
+            usable &= q->s[c][i].val[0] == 0;   /* the stage ran (a colour Java takes) */
+            usable &= !q->s[c][i].fragile;      /* its bytes read back */
+        }
+        if (st == PT_T79_CLIP && !usable)       /* a student's renderer would throw */
+            for (i = 0; i < q->nh; i++) memset(&q->s[c][i], 0, sizeof q->s[c][i]);
+    }
     if (cover(q) != 0) {
         none(out, "no scene of the candidates pipetrace diff tries tells %s from %s.",
-             q->bad[0] ? hy[q->bad[0]]->name : "the right near clip", hy[q->bad[1]]->name);
+             q->bad[0] ? hy[q->bad[0]]->name : "the right stage", hy[q->bad[1]]->name);
         free(q);
         return;
     }
     out->ok = 1;
-    comment(out, "A scene that tells these mistakes apart: %s. Made by pipetrace diff for the "
-            "purpose: on it each gives a log of its own, and none gives the right one's. The "
-            "camera's rectangle and near plane are EXPECTED's; it sits at the origin (no view "
-            "vector, no matrix), so the segments are given where the near clip sees them. The "
-            "framebuffer's size, antialias off and gamma on are the course's usual ones: the "
-            "near clip does not depend on them. Render it with both renderers, debug on, and "
-            "diff the logs.",
-            list_names(nb, sizeof nb, names, n));
+    course_comment(cam, st, out, list_names(nb, sizeof nb, names, n));
     put(out, "renderer %d\nscene separate\nframebuffer 60 50\n", cam->renderer);
     put(out, "camera %s %s %s %s", cam->persp ? "perspective" : "orthographic",
         pt_diff_num(cam->l, b[0]), pt_diff_num(cam->r, b[1]), pt_diff_num(cam->b, b[2]));
