@@ -684,10 +684,20 @@ static size_t pieces_camera(piece79 *pc)
     return 3;
 }
 
+/* The view coordinates at z_v = -2 that the image plane's (x, y) comes
+** from, by the camera's formula turned around: a first guess only, the
+** signatures run the stages themselves. */
+static void view_at(const pt_c79cam *cam, double x, double y, double v[3])
+{
+    double d = cam->persp ? 2 : 1;              /* x_c = x_p * -z_v (orthographic: x_p) */
+
+    v[0] = x * d * (cam->r - cam->l) / 2 + d * (cam->r + cam->l) / 2;
+    v[1] = y * d * (cam->t - cam->b) / 2 + d * (cam->t + cam->b) / 2;
+    v[2] = -2;
+}
+
 /* The clip's candidates, each from an inside end to an outside one beyond
-** one edge, given on the image plane at z_v = -2 and taken back to view
-** coordinates by the camera's formula turned around: a first guess only,
-** the signatures run the stages themselves.  Two colours five bytes apart,
+** one edge, given on the image plane (view_at()).  Two colours five bytes apart,
 ** cut a quarter of the way in from the outside end: the new colour
 ** interpolated (1.25 bytes in: a byte), in bytes (truncated: the next one)
 ** and not at all (the inside end's) are three bytes, and a t outside 0 .. 1
@@ -702,18 +712,12 @@ static size_t pieces_clip(const pt_c79cam *cam, piece79 *pc)
         {{125, 115, 105}, {130, 120, 110}}, {{60, 200, 90}, {65, 205, 95}},
         {{255, 0, 0}, {255, 0, 0}}, {{0, 255, 0}, {0, 255, 0}}, {{0, 0, 255}, {0, 0, 255}},
         {{255, 255, 0}, {255, 255, 0}}};
-    double z = -2;
     size_t c;
     int i;
 
     for (c = 0; c < 6; c++)
         for (i = 0; i < 2; i++) {
-            double xc = img[c][2 * i] * (cam->persp ? -z : 1), yc = img[c][2 * i + 1] * (cam->persp ? -z : 1);
-            double sx = cam->persp ? -z * (cam->r + cam->l) / 2 : (cam->r + cam->l) / 2;
-            double sy = cam->persp ? -z * (cam->t + cam->b) / 2 : (cam->t + cam->b) / 2;
-            pc[c].v[i][0] = xc * (cam->r - cam->l) / 2 + sx;
-            pc[c].v[i][1] = yc * (cam->t - cam->b) / 2 + sy;
-            pc[c].v[i][2] = z;
+            view_at(cam, img[c][2 * i], img[c][2 * i + 1], pc[c].v[i]);
             memcpy(pc[c].rgb[i], col[c][i], sizeof pc[c].rgb[i]);
         }
     return 6;
