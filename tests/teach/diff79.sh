@@ -47,7 +47,7 @@ mistake() {
 for scene in r7-skew-aa r7-near r7-near-amb r7-near-amb-sep r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3 \
              r7-cam-amb1 r7-cam-amb1-sep r7-cam-amb2 r7-cam-amb2-sep r7-clip-amb r7-clip-amb-sep \
              r7-cam-amb3 r7-cam-amb3-sep r7-cam-amb4 r7-cam-amb4-sep r7-near-amb-col r7-near-amb-col-sep \
-             r9-cam-amb r9-cam-amb-sep; do
+             r9-cam-amb r9-cam-amb-sep r9-world-amb r9-world-amb-sep; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -101,7 +101,7 @@ for f in "$data"/*.*.log.gz; do
     gzip -dc "$f" >"$tmp/s.log"
     "$exe" diff "$tmp/$sc.right.log" "$tmp/s.log" >"$tmp/out" 2>&1
     case $b in
-    r9-order.*|r9-order3.mattrans) ;;
+    r9-order.*|r9-order3.mattrans|r9-world-amb*) ;;
     *) check "$b: no world mistake named" test "$(grep -c 'multiplied in the wrong order\|product transposed' "$tmp/out")" = 0 ;;
     esac
     case $b in
@@ -153,23 +153,23 @@ check "sep-4 --separating-scene over EXPECTED: refused, exit 2 ($rc)" \
 #   "ambiguous: NAME1 or NAME2" and print AMB-sep.scene; on AMB-sep each is
 #   named with its own mistake.
 sepcase() {
-    id=$1 amb=$2 m1=$3 m2=$4 n1=$5 n2=$6
+    sid=$1 amb=$2 m1=$3 m2=$4 n1=$5 n2=$6
     for m in $m1 $m2; do
         mistake "$amb" "$m" "ambiguous: $n1 or $n2"
         "$exe" diff "$tmp/$amb.jsonl" "$tmp/$amb.$m.log" >"$tmp/out" 2>&1
-        check "$id-1 $amb $m: no 'No separating scene'" test "$(grep -c '^No separating scene' "$tmp/out")" = 0
+        check "$sid-1 $amb $m: no 'No separating scene'" test "$(grep -c '^No separating scene' "$tmp/out")" = 0
         sed -n '/^#---- begin separating scene ----$/,/^#---- end separating scene ----$/p' "$tmp/out" |
             sed '1d;$d' >"$tmp/sep.scene"
-        check "$id-2 ... $data/$amb-sep.scene is the scene printed (else store it again and remake its logs: README.md)" \
+        check "$sid-2 ... $data/$amb-sep.scene is the scene printed (else store it again and remake its logs: README.md)" \
             cmp -s "$tmp/sep.scene" "$data/$amb-sep.scene"
         "$exe" "$tmp/sep.scene" --format kraft --kraft-debug all --trace "$tmp/sep.log" >/dev/null 2>&1
-        check "$id-3 ... it parses and renders as the course's renderer does" \
+        check "$sid-3 ... it parses and renders as the course's renderer does" \
             cmp -s "$tmp/sep.log" "$tmp/$amb-sep.right.log"
     done
     mistake "$amb-sep" "$m1" "$n1"
     mistake "$amb-sep" "$m2" "$n2"
     "$exe" diff "$tmp/$amb-sep.right.log" "$tmp/$amb-sep.$m1.log" >"$tmp/out" 2>&1
-    check "$id-4 $amb-sep $m1 against $m2's log: they differ (exit 1)" \
+    check "$sid-4 $amb-sep $m1 against $m2's log: they differ (exit 1)" \
         sh -c '"$1" diff "$2" "$3" >/dev/null 2>&1; test $? = 1' _ "$exe" "$tmp/$amb-sep.$m1.log" "$tmp/$amb-sep.$m2.log"
 }
 # the camera: every vertex on one line through the eye where a skew mistake
@@ -184,6 +184,26 @@ sepcase sep-11 r9-cam-amb skew0 halfsize "the skew forgotten" "scaled by the wid
 # inside (kept) end's colour and the bytes truncated agree
 sepcase sep-9 r7-clip-amb clipkept clipbytes "the clip's colour not interpolated" "the clip's colour interpolated in bytes"
 sepcase sep-10 r7-near-amb-col nearkept nearbytes "the near clip's colour not interpolated" "the near clip's colour interpolated in bytes"
+
+# the world stage: a half turn (its own transpose) and a translation of
+# 0.00004, which a log's 5 decimals nearly hide: against the right log both
+# world mistakes fit (against pipetrace's exact traces each is named alone);
+# the scene printed has a rotation and a translation of a few units
+wa="the matrices multiplied in the wrong order" wb="the matrix-vector product transposed"
+for m in matswap mattrans; do
+    unz r9-world-amb.$m
+    expect "sep-12 r9-world-amb $m vs the right log" "$tmp/r9-world-amb.right.log" "$tmp/r9-world-amb.$m.log" 1 "Mistake: ambiguous: $wa or $wb"
+    "$exe" diff "$tmp/r9-world-amb.right.log" "$tmp/r9-world-amb.$m.log" >"$tmp/out" 2>&1
+    sed -n '/^#---- begin separating scene ----$/,/^#---- end separating scene ----$/p' "$tmp/out" |
+        sed '1d;$d' >"$tmp/sep.scene"
+    check "sep-12.2 ... $data/r9-world-amb-sep.scene is the scene printed" cmp -s "$tmp/sep.scene" "$data/r9-world-amb-sep.scene"
+    "$exe" "$tmp/sep.scene" --format kraft --kraft-debug all --trace "$tmp/sep.log" >/dev/null 2>&1
+    check "sep-12.3 ... it parses and renders as the course's renderer does" cmp -s "$tmp/sep.log" "$tmp/r9-world-amb-sep.right.log"
+done
+expect "sep-12.4 r9-world-amb matswap vs jsonl: named alone" "$tmp/r9-world-amb.jsonl" "$tmp/r9-world-amb.matswap.log" 1 "Mistake: $wa"
+expect "sep-12.5 r9-world-amb mattrans vs jsonl: named alone" "$tmp/r9-world-amb.jsonl" "$tmp/r9-world-amb.mattrans.log" 1 "Mistake: $wb"
+mistake r9-world-amb-sep matswap "$wa"
+mistake r9-world-amb-sep mattrans "$wb"
 
 # ---- the first stage that differs, and its counts
 "$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.skew0.log" >"$tmp/out" 2>&1

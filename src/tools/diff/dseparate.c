@@ -7,7 +7,8 @@
 ** tests a hypothesis); what a trace of the piece would hold is its signature:
 ** renderer 4, each vertex's values at every stage and, for a segment, the
 ** rasterizer's pixels and clip records replayed as the raster check replays
-** them; renderers 7 and 9, the model the near clip leaves.  Two mistakes are
+** them; renderers 7 and 9, a position's world vertices, a segment's camera
+** vertices, or the model a clip stage leaves.  Two mistakes are
 ** told apart by a piece whose signatures differ by more than a trace's
 ** printed digits hide.  Greedily, the piece that tells the most pairs apart
 ** is kept, until every pair with a listed mistake in it is; then each kept
@@ -26,7 +27,7 @@
 
 #define MAXH 24                  /* hypotheses, the right stages (0) included */
 #define MAXC 24                  /* candidate pieces */
-#define MAXV 48                  /* values in a signature */
+#define MAXV 48                  /* values in a signature (a position's: 32) */
 
 /* What a trace of one piece holds under one hypothesis. */
 typedef struct sig {
@@ -723,6 +724,95 @@ static size_t pieces_clip(const pt_c79cam *cam, piece79 *pc)
     return 6;
 }
 
+/* A position of the world stage's candidates: two matrix lines, a rotation
+** and a translation, that do not commute, on a cube of side 1.  Composed
+** backwards, rotate-then-translate is the order mistake's way 1 and
+** translate-then-rotate its way 0 (catalogue79.c: [A | A^-1 t], [A | A t]). */
+typedef struct pos79 {
+    int rot_first;               /* 1: rotate, then translate */
+    char axis;                   /* x, y or z */
+    double deg, t[3];
+} pos79;
+
+static const pos79 world_pieces[3] = {
+    {1, 'y', 30.0, {1.5, 0.0, -6.0}}, {0, 'z', 25.0, {-1.0, 0.5, -5.0}},
+    {1, 'x', 40.0, {0.5, -1.0, -5.0}}};
+
+/* The cube's corner k (0..7) in model coordinates. */
+static void corner(int k, double v[4])
+{
+    v[0] = k & 4 ? 0.5 : -0.5;
+    v[1] = k & 2 ? 0.5 : -0.5;
+    v[2] = k & 1 ? 0.5 : -0.5;
+    v[3] = 1.0;
+}
+
+/* The world stage's (x, y, z, w) of the cube at position pp: the right
+** stage (mk NULL) with the matrix its lines build, or position mistake mk
+** from the model's and the right world vertices, as diff tests it (the way
+** the lines go, where the mistake has more than one). */
+static void sig_world(const pos79 *pp, const pt_mistake79 *mk, sig *s)
+{
+    pt_matop op[2];
+    pt_jmat m;
+    double prev[8][4], right[8][4], out[8][4];
+    int k, i, r = pp->rot_first ? 0 : 1;
+
+    memset(op, 0, sizeof op);
+    op[r].mul = op[1 - r].mul = PT_MATMUL_POST;
+    op[r].kind = PT_MATOP_ROTATE;
+    op[r].a[0] = pp->deg;
+    op[r].a[1 + (pp->axis - 'x')] = 1.0;        /* rotate x|y|z DEG, as a scene gives it */
+    op[1 - r].kind = PT_MATOP_TRANSLATE;
+    memcpy(op[1 - r].a, pp->t, sizeof pp->t);
+    m = pt_r9_position_matrix(op, 2);
+    for (k = 0; k < 8; k++) {
+        pt_vec4 v, o;
+        corner(k, prev[k]);
+        v.x = prev[k][0]; v.y = prev[k][1]; v.z = prev[k][2]; v.w = prev[k][3];
+        o = pt_r9_model2world(v, &m);
+        right[k][0] = o.x; right[k][1] = o.y; right[k][2] = o.z; right[k][3] = o.w;
+    }
+    if (!mk) memcpy(out, right, sizeof out);
+    else if (mk->position(8, (const double (*)[4])prev, (const double (*)[4])right,
+                          pp->rot_first, out) != 0 &&
+             mk->position(8, (const double (*)[4])prev, (const double (*)[4])right, 0, out) != 0) {
+        sig_real(s, -1, 1);                     /* the mistake finds no matrix */
+        return;
+    }
+    sig_real(s, 0, 1);
+    for (k = 0; k < 8; k++)
+        for (i = 0; i < 4; i++) sig_real(s, out[k][i], 0);
+}
+
+/* Position pp as a model of the scene: its matrix lines and the cube. */
+static void write_position(const pos79 *pp, size_t k, pt_sep *out)
+{
+    static const int col[8][3] = {{255, 0, 0}, {255, 128, 0}, {255, 255, 0}, {0, 255, 0},
+                                  {0, 255, 255}, {0, 0, 255}, {128, 0, 255}, {255, 255, 255}};
+    char b[3][PT_NUMLEN];
+    double v[4];
+    int i, bit;
+
+    put(out, "model p%zu\n", k);
+    for (i = 0; i < 2; i++) {
+        if ((i == 0) == (pp->rot_first != 0))
+            put(out, "matrix rotate %c %s\n", pp->axis, pt_diff_num(pp->deg, b[0]));
+        else
+            put(out, "matrix translate %s %s %s\n", pt_diff_num(pp->t[0], b[0]),
+                pt_diff_num(pp->t[1], b[1]), pt_diff_num(pp->t[2], b[2]));
+    }
+    for (i = 0; i < 8; i++) {
+        corner(i, v);
+        put(out, "v %s %s %s\n", pt_diff_num(v[0], b[0]), pt_diff_num(v[1], b[1]),
+            pt_diff_num(v[2], b[2]));
+    }
+    for (i = 0; i < 8; i++) put(out, "vcolor %d %d %d\n", col[i][0], col[i][1], col[i][2]);
+    for (bit = 1; bit < 8; bit <<= 1)           /* the 12 edges: corners one bit apart */
+        for (i = 0; i < 8; i++)
+            if (!(i & bit)) put(out, "segment %d %d\n", i + 1, (i | bit) + 1);
+}
+
 /* The stage of the catalogue's mistake name for cam's renderer, or -1. */
 static int stage_of(const pt_c79cam *cam, const char *name)
 {
@@ -740,22 +830,22 @@ static int stage_of(const pt_c79cam *cam, const char *name)
 static const char *no_search(int st)
 {
     switch ((pt_t79_stage)st) {
+    case PT_T79_WORLD:
     case PT_T79_CAMERA:
     case PT_T79_NEARCLIP:
     case PT_T79_CLIP:
         return NULL;
-    case PT_T79_WORLD:
-        return "the world stage's mistakes, whose matrix diff finds from EXPECTED's vertices, "
-               "are told apart by a position of two matrix lines that do not commute, one a "
-               "rotation and one a translation (tests/data/diff79's r9-order is one)";
     case PT_T79_MODEL:
     case PT_T79_VIEW:
     case PT_T79_IMAGE:
         return "the stage has at most one known mistake";
     }
-    return "the pixels' mistakes (the gamma's and the anti-aliasing's) act on each pixel's "
-           "colour alone, not on a scene's geometry: a segment with colours between 0 and 255, "
-           "anti-aliasing and gamma on, tells them apart";
+    return "no two of the pixels' mistakes give the same colour to a pixel strictly "
+           "between 0 and 1 (gamma twice makes it lighter, no gamma darker, and the swapped "
+           "weights give a pair each other's colours, which gamma would have to map to one "
+           "another and back), so they both fit only where ACTUAL's pixels differ from "
+           "EXPECTED's by little more than the digits printed; any segment of two colours "
+           "between 0 and 255, with anti-aliasing and gamma on, tells them apart";
 }
 
 /* The comment of stage st's scene, after its first sentence. */
@@ -776,9 +866,15 @@ static void course_comment(const pt_c79cam *cam, int st, pt_sep *out, const char
     }
     comment(out, "A scene that tells these mistakes apart: %s. Made by pipetrace diff for the "
             "purpose: on it each gives a log of its own, and none gives the right one's. It "
-            "keeps EXPECTED's camera and sits at the origin (no view vector, no matrix), so the "
-            "segments are given in view coordinates.", names);
-    if (st == PT_T79_CAMERA && (sx != 0 || sy != 0))
+            "keeps EXPECTED's camera, at the origin (no view vector)%s.", names,
+            st == PT_T79_WORLD ? "" : "; no matrix either, so the segments are given in view "
+            "coordinates");
+    if (st == PT_T79_WORLD)
+        comment(out, "Its position's two matrix lines, a rotation and a translation of a few "
+                "units, do not commute: composed backwards they put the cube elsewhere, and "
+                "the transposed product turns it the other way and puts t.v_m + 1, far from "
+                "1, into w.");
+    else if (st == PT_T79_CAMERA && (sx != 0 || sy != 0))
         comment(out, "The rectangle is asymmetric (r + l = %s, t + b = %s), so the skew moves "
                 "each vertex; the ends lie off the lines through the eye on which a skew "
                 "mistake and a size mistake give the same camera coordinates (x_v = k z_v "
@@ -797,7 +893,8 @@ static void course_comment(const pt_c79cam *cam, int st, pt_sep *out, const char
                 "where it has one, it shows where the cut lands.");
     comment(out, "The framebuffer's size, antialias off and gamma on are the course's usual "
             "ones: the %s does not depend on them. Render it with both renderers, debug on, "
-            "and diff the logs.", st == PT_T79_CAMERA ? "camera stage" : "clip");
+            "and diff the logs.", st == PT_T79_WORLD ? "world stage"
+                                  : st == PT_T79_CAMERA ? "camera stage" : "clip");
 }
 
 void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_sep *out)
@@ -830,7 +927,8 @@ void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_
     q->nh = 1;
     for (k = 0; k < PT_NMISTAKES79 && q->nh < MAXH; k++) {
         const pt_mistake79 *m = &pt_mistakes79[k];
-        if (m->stage != st || !(st == PT_T79_CAMERA ? m->vertex != NULL : m->clip != NULL)) continue;
+        if (m->stage != st || !(st == PT_T79_WORLD ? m->position != NULL
+                                : st == PT_T79_CAMERA ? m->vertex != NULL : m->clip != NULL)) continue;
         if (m->renderer && m->renderer != cam->renderer) continue;
         hy[q->nh++] = m;
     }
@@ -838,11 +936,13 @@ void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_
         for (j = 1; j < q->nh; j++)
             if (!strcmp(hy[j]->name, names[k])) q->listed[j] = 1;
     q->nc = st == PT_T79_NEARCLIP ? pieces_near(cam, pc)
-          : st == PT_T79_CAMERA ? pieces_camera(pc) : pieces_clip(cam, pc);
+          : st == PT_T79_CAMERA ? pieces_camera(pc)
+          : st == PT_T79_WORLD ? sizeof world_pieces / sizeof world_pieces[0] : pieces_clip(cam, pc);
     for (c = 0; c < q->nc; c++) {
         int usable = 1;
         for (i = 0; i < q->nh; i++) {
-            sig79(cam, st, &pc[c], hy[i], &q->s[c][i]);
+            if (st == PT_T79_WORLD) sig_world(&world_pieces[c], hy[i], &q->s[c][i]);
+            else sig79(cam, st, &pc[c], hy[i], &q->s[c][i]);
             usable &= q->s[c][i].val[0] == 0;   /* the stage ran (a colour Java takes) */
             usable &= !q->s[c][i].fragile;      /* its bytes read back */
         }
@@ -862,7 +962,14 @@ void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_
         pt_diff_num(cam->l, b[0]), pt_diff_num(cam->r, b[1]), pt_diff_num(cam->b, b[2]));
     put(out, " %s\n", pt_diff_num(cam->t, b[0]));
     if (cam->persp && cam->n != -0.1) put(out, "near %s\n", pt_diff_num(-cam->n, b[0]));
-    put(out, "nearclip on\nantialias off\ngamma on\nmodel separate\n");
+    put(out, "nearclip on\nantialias off\ngamma on\n");
+    if (st == PT_T79_WORLD) {
+        for (c = 0; c < q->nc; c++)
+            if (q->keep[c]) write_position(&world_pieces[c], c + 1, out);
+        free(q);
+        return;
+    }
+    put(out, "model separate\n");
     for (c = 0; c < q->nc; c++)
         for (i = 0; q->keep[c] && i < 2; i++)
             put(out, "v %s %s %s\n", pt_diff_num(pc[c].v[i][0], b[0]), pt_diff_num(pc[c].v[i][1], b[1]),
