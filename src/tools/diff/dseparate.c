@@ -666,8 +666,11 @@ static size_t pieces_near(const pt_c79cam *cam, piece79 *pc)
 }
 
 /* The camera's candidates: segments in front of the camera whose ends lie
-** off the lines through the eye where a skew mistake and a size mistake
-** agree (x_v = k z_v (r+l)/2, y_v = k z_v (t+b)/2: k = 1, -1, 3, -3). */
+** off the lines where a skew mistake and a size mistake agree: through the
+** eye, x_v = k z_v (r+l)/2 and y_v = k z_v (t+b)/2 with k = 1 (the skew
+** forgotten, the width), -3 (its sign, the half-width twice), -2 (forgotten,
+** twice), 3 (its sign, the width); orthographic, parallel to the z axis,
+** x_v = k (r+l)/2 with k = -1, 3, 2, -3. */
 static size_t pieces_camera(piece79 *pc)
 {
     static const double v[3][6] = {{-0.3, -0.2, -2.1, 0.4, 0.3, -2.6},
@@ -876,10 +879,12 @@ static void course_comment(const pt_c79cam *cam, int st, pt_sep *out, const char
                 "1, into w.");
     else if (st == PT_T79_CAMERA && (sx != 0 || sy != 0))
         comment(out, "The rectangle is asymmetric (r + l = %s, t + b = %s), so the skew moves "
-                "each vertex; the ends lie off the lines through the eye on which a skew "
-                "mistake and a size mistake give the same camera coordinates (x_v = k z_v "
-                "(r+l)/2, y_v = k z_v (t+b)/2 for k = 1, -1, 3, -3).",
-                pt_diff_num(sx, b[0]), pt_diff_num(sy, b[1]));
+                "each vertex; the ends lie off the lines %s on which a skew mistake and a size "
+                "mistake give the same camera coordinates (x_v = k %s(r+l)/2, y_v = k %s(t+b)/2 "
+                "for k = %s).", pt_diff_num(sx, b[0]), pt_diff_num(sy, b[1]),
+                cam->persp ? "through the eye" : "parallel to the z axis",
+                cam->persp ? "z_v " : "", cam->persp ? "z_v " : "",
+                cam->persp ? "1, -3, -2, 3" : "-1, 3, 2, -3");
     else if (st == PT_T79_CAMERA)
         comment(out, "The rectangle is symmetric (r + l = t + b = 0), so no skew mistake "
                 "changes anything; the ends lie off the camera's axis, where the size mistakes "
