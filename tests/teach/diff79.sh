@@ -47,7 +47,7 @@ mistake() {
 for scene in r7-skew-aa r7-near r7-near-amb r7-near-amb-sep r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3 \
              r7-cam-amb1 r7-cam-amb1-sep r7-cam-amb2 r7-cam-amb2-sep r7-clip-amb r7-clip-amb-sep \
              r7-cam-amb3 r7-cam-amb3-sep r7-cam-amb4 r7-cam-amb4-sep r7-near-amb-col r7-near-amb-col-sep \
-             r9-cam-amb r9-cam-amb-sep r9-world-amb r9-world-amb-sep; do
+             r9-cam-amb r9-cam-amb-sep r9-world-amb r9-world-amb-sep r7-cam-amb-ortho r7-cam-amb-ortho-sep; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -178,6 +178,8 @@ sepcase sep-5 r7-cam-amb1 skew0 halfsize "the skew forgotten" "scaled by the wid
 sepcase sep-6 r7-cam-amb2 skewneg doublesize "the skew's sign wrong" "scaled by the half-width twice"
 sepcase sep-7 r7-cam-amb3 skew0 doublesize "the skew forgotten" "scaled by the half-width twice"
 sepcase sep-8 r7-cam-amb4 skewneg halfsize "the skew's sign wrong" "scaled by the width, not the half-width"
+# orthographic: the line is parallel to the z axis
+sepcase sep-13 r7-cam-amb-ortho skew0 halfsize "the skew forgotten" "scaled by the width, not the half-width"
 # renderer 9: the same, with its normalization matrix
 sepcase sep-11 r9-cam-amb skew0 halfsize "the skew forgotten" "scaled by the width, not the half-width"
 # the clip's and the near clip's colours: one byte apart, cut where the
