@@ -27,7 +27,7 @@
 
 #define MAXH 24                  /* hypotheses, the right stages (0) included */
 #define MAXC 24                  /* candidate pieces */
-#define MAXV 48                  /* values in a signature (a position's: 32) */
+#define MAXV 48                  /* values in a signature (a position's: 33) */
 
 /* What a trace of one piece holds under one hypothesis. */
 typedef struct sig {
@@ -533,7 +533,7 @@ void pt_sep_classic(const pt_sep_r4 *sp, const char *const *names, size_t n, pt_
     free(q);
 }
 
-/* ===== renderers 7 and 9: the camera, the near clip, the clip ===== */
+/* ===== renderers 7 and 9: the world, the camera, the near clip, the clip ===== */
 
 /* A segment of the candidates, in view coordinates, with its two colours. */
 typedef struct piece79 {
@@ -623,7 +623,7 @@ static void sig79(const pt_c79cam *cam, int st, const piece79 *pc, const pt_mist
     for (k = 0; rc == 0 && k < m.nc; k++) {     /* the log prints Color bytes */
         const float f[3] = {m.c[k].r, m.c[k].g, m.c[k].b};
         for (e = 0; e < 3; e++) {
-            double x = (double)f[e] * 255;      /* a text trace's 6 decimals: +-0.0002 */
+            double x = (double)f[e] * 255;      /* 6 decimals: +-0.00013 of a byte */
             s->fragile |= fabs(x - floor(x) - 0.5) < 0.01;
             sig_real(s, pt_color_byte(f[e]), 1);
         }
@@ -841,7 +841,7 @@ static const char *no_search(int st)
     case PT_T79_MODEL:
     case PT_T79_VIEW:
     case PT_T79_IMAGE:
-        return "the stage has at most one known mistake";
+        return "the stage has at most one known mistake, which no other can be taken for";
     }
     return "no two of the pixels' mistakes give the same colour to a pixel strictly "
            "between 0 and 1 (gamma twice makes it lighter, no gamma darker, and the swapped "
@@ -915,15 +915,14 @@ void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_
     memset(out, 0, sizeof *out);
     if (!q) { none(out, "%s%s", "out of memory", "."); return; }
     for (k = 0; k < n; k++)
-        if (stage_of(cam, names[k]) != st) {
-            none(out, "%s is no mistake of renderer %s's catalogue, or not of the stage the "
-                 "others are.", names[k], cam->renderer == 9 ? "9" : "7");
+        if (stage_of(cam, names[k]) != st) {   /* never: diff lists one stage's */
+            none(out, "%s is not of the stage %s is.", names[k], names[0]);
             free(q);
             return;
         }
-    why = no_search(st);
+    why = st < 0 ? "no mistake of the catalogue is listed" : no_search(st);
     if (why) {
-        none(out, "no separating scene is made for %s: %s.", names[0], why);
+        none(out, "%s%s", why, ".");
         free(q);
         return;
     }
@@ -951,7 +950,8 @@ void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_
             usable &= q->s[c][i].val[0] == 0;   /* the stage ran (a colour Java takes) */
             usable &= !q->s[c][i].fragile;      /* its bytes read back */
         }
-        if (st == PT_T79_CLIP && !usable)       /* a student's renderer would throw */
+        if (st == PT_T79_CLIP && !usable)       /* a student's renderer would throw, or
+                                                ** a trace leave a byte in doubt: unused */
             for (i = 0; i < q->nh; i++) memset(&q->s[c][i], 0, sizeof q->s[c][i]);
     }
     if (cover(q) != 0) {
