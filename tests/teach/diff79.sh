@@ -11,7 +11,8 @@
 # each student's log must be named with its mistake and no other, the right
 # logs pass, a log without the rasterizer's lines is not proven, two mistakes
 # that give the same log are "ambiguous", with a scene printed that tells
-# them apart (r7-near-amb-sep, whose students' logs are stored too).
+# them apart (SCENE-sep of each ambiguous SCENE: the near clip's, the
+# camera's, the clip's, the world's; their students' logs are stored too).
 exe=$1
 . tests/lib/testlib.sh
 data=tests/data/diff79
@@ -44,7 +45,10 @@ mistake() {
     done
 }
 
-for scene in r7-skew-aa r7-near r7-near-amb r7-near-amb-sep r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3; do
+for scene in r7-skew-aa r7-near r7-near-amb r7-near-amb-sep r7-clip1 r7-clip2 r9-view-skew r9-order r9-order3 \
+             r7-cam-amb1 r7-cam-amb1-sep r7-cam-amb2 r7-cam-amb2-sep r7-clip-amb r7-clip-amb-sep \
+             r7-cam-amb3 r7-cam-amb3-sep r7-cam-amb4 r7-cam-amb4-sep r7-near-amb-col r7-near-amb-col-sep \
+             r9-cam-amb r9-cam-amb-sep r9-world-amb r9-world-amb-sep r7-cam-amb-ortho r7-cam-amb-ortho-sep; do
     "$exe" "$data/$scene.scene" --format jsonl --trace "$tmp/$scene.jsonl"
     "$exe" "$data/$scene.scene" --trace "$tmp/$scene.txt"
     unz "$scene.right"
@@ -98,11 +102,11 @@ for f in "$data"/*.*.log.gz; do
     gzip -dc "$f" >"$tmp/s.log"
     "$exe" diff "$tmp/$sc.right.log" "$tmp/s.log" >"$tmp/out" 2>&1
     case $b in
-    r9-order.*|r9-order3.mattrans) ;;
+    r9-order.*|r9-order3.mattrans|r9-world-amb*) ;;
     *) check "$b: no world mistake named" test "$(grep -c 'multiplied in the wrong order\|product transposed' "$tmp/out")" = 0 ;;
     esac
     case $b in
-    r7-clip1.*|r7-clip2.*) ;;
+    r7-clip1.*|r7-clip2.*|r7-clip-amb-sep.clipt|r7-clip-amb-sep.clipswap) ;;
     *) check "$b: no clip t or edge mistake named" test "$(grep -c "clip's t from the other\|clip's edges swapped" "$tmp/out")" = 0 ;;
     esac
 done
@@ -140,6 +144,79 @@ mistake r7-near-amb-sep nearoff "the near plane ignored"
 "$exe" diff "$tmp/r7-near-amb.jsonl" "$tmp/r7-near-amb.nearoff.log" --separating-scene "$tmp/r7-near-amb.jsonl" >"$tmp/out" 2>&1; rc=$?
 check "sep-4 --separating-scene over EXPECTED: refused, exit 2 ($rc)" \
     sh -c 'test "$1" = 2 && grep -qF "names EXPECTED" "$2" && head -c 1 "$3" | grep -q "{"' _ "$rc" "$tmp/out" "$tmp/r7-near-amb.jsonl"
+
+# ---- every other ambiguity of the catalogue the course's students can
+# make: two mistakes of one stage that give the same log on a scene made for
+# it (README.md says how), and the separating scene diff prints for them,
+# stored with the logs each student's Java printed for it.  On it each
+# student is named alone; the right log passes (the loop above).
+#   sepcase ID AMB M1 M2 NAME1 NAME2: AMB's logs of M1 and M2 both give
+#   "ambiguous: NAME1 or NAME2" and print AMB-sep.scene; on AMB-sep each is
+#   named with its own mistake.
+sepcase() {
+    sid=$1 amb=$2 m1=$3 m2=$4 n1=$5 n2=$6
+    for m in $m1 $m2; do
+        mistake "$amb" "$m" "ambiguous: $n1 or $n2"
+        "$exe" diff "$tmp/$amb.jsonl" "$tmp/$amb.$m.log" >"$tmp/out" 2>&1
+        check "$sid-1 $amb $m: no 'No separating scene'" test "$(grep -c '^No separating scene' "$tmp/out")" = 0
+        sed -n '/^#---- begin separating scene ----$/,/^#---- end separating scene ----$/p' "$tmp/out" |
+            sed '1d;$d' >"$tmp/sep.scene"
+        check "$sid-2 ... $data/$amb-sep.scene is the scene printed (else store it again and remake its logs: README.md)" \
+            cmp -s "$tmp/sep.scene" "$data/$amb-sep.scene"
+        "$exe" "$tmp/sep.scene" --format kraft --kraft-debug all --trace "$tmp/sep.log" >/dev/null 2>&1
+        check "$sid-3 ... it parses and renders as the course's renderer does" \
+            cmp -s "$tmp/sep.log" "$tmp/$amb-sep.right.log"
+    done
+    mistake "$amb-sep" "$m1" "$n1"
+    mistake "$amb-sep" "$m2" "$n2"
+    check "$sid-4 $amb-sep $m1 against $m2's log: they differ (exit 1)" \
+        sh -c '"$1" diff "$2" "$3" >/dev/null 2>&1; test $? = 1' _ "$exe" "$tmp/$amb-sep.$m1.log" "$tmp/$amb-sep.$m2.log"
+}
+# the camera: every vertex on one line through the eye where a skew mistake
+# and a size mistake agree; the scene keeps the asymmetric rectangle
+sepcase sep-5 r7-cam-amb1 skew0 halfsize "the skew forgotten" "scaled by the width, not the half-width"
+sepcase sep-6 r7-cam-amb2 skewneg doublesize "the skew's sign wrong" "scaled by the half-width twice"
+sepcase sep-7 r7-cam-amb3 skew0 doublesize "the skew forgotten" "scaled by the half-width twice"
+sepcase sep-8 r7-cam-amb4 skewneg halfsize "the skew's sign wrong" "scaled by the width, not the half-width"
+# orthographic: the line is parallel to the z axis
+sepcase sep-9 r7-cam-amb-ortho skew0 halfsize "the skew forgotten" "scaled by the width, not the half-width"
+# renderer 9: the same, with its normalization matrix
+sepcase sep-10 r9-cam-amb skew0 halfsize "the skew forgotten" "scaled by the width, not the half-width"
+# the clip's and the near clip's colours: one byte apart, cut where the
+# inside (kept) end's colour and the bytes truncated agree
+sepcase sep-11 r7-clip-amb clipkept clipbytes "the clip's colour not interpolated" "the clip's colour interpolated in bytes"
+# ... and the separating scenes tell the listed mistakes from the stage's
+# others too: the other camera and clip students, each named alone on them
+mistake r7-cam-amb1-sep skewneg "the skew's sign wrong"
+mistake r7-cam-amb1-sep doublesize "scaled by the half-width twice"
+mistake r7-clip-amb-sep clipt "the clip's t from the other coordinate"
+mistake r7-clip-amb-sep clipswap "the clip's edges swapped"
+sepcase sep-12 r7-near-amb-col nearkept nearbytes "the near clip's colour not interpolated" "the near clip's colour interpolated in bytes"
+# its scene is r7-near-amb-sep's (one segment from z = -2.1 to 0.5): the near
+# clip's other students on it, each named alone
+mistake r7-near-amb-col-sep nearsign "the near plane's sign wrong"
+mistake r7-near-amb-col-sep nearoff "the near plane ignored"
+mistake r7-near-amb-col-sep neart "the near clip's t from y"
+
+# the world stage: a half turn (its own transpose) and a translation of
+# 0.00004, which a log's 5 decimals nearly hide: against the right log both
+# world mistakes fit (against pipetrace's exact traces each is named alone);
+# the scene printed has a rotation and a translation of a few units
+wa="the matrices multiplied in the wrong order" wb="the matrix-vector product transposed"
+for m in matswap mattrans; do
+    unz r9-world-amb.$m
+    expect "sep-13 r9-world-amb $m vs the right log" "$tmp/r9-world-amb.right.log" "$tmp/r9-world-amb.$m.log" 1 "Mistake: ambiguous: $wa or $wb"
+    "$exe" diff "$tmp/r9-world-amb.right.log" "$tmp/r9-world-amb.$m.log" >"$tmp/out" 2>&1
+    sed -n '/^#---- begin separating scene ----$/,/^#---- end separating scene ----$/p' "$tmp/out" |
+        sed '1d;$d' >"$tmp/sep.scene"
+    check "sep-13.2 ... $data/r9-world-amb-sep.scene is the scene printed" cmp -s "$tmp/sep.scene" "$data/r9-world-amb-sep.scene"
+    "$exe" "$tmp/sep.scene" --format kraft --kraft-debug all --trace "$tmp/sep.log" >/dev/null 2>&1
+    check "sep-13.3 ... it parses and renders as the course's renderer does" cmp -s "$tmp/sep.log" "$tmp/r9-world-amb-sep.right.log"
+done
+expect "sep-13.4 r9-world-amb matswap vs jsonl: named alone" "$tmp/r9-world-amb.jsonl" "$tmp/r9-world-amb.matswap.log" 1 "Mistake: $wa"
+expect "sep-13.5 r9-world-amb mattrans vs jsonl: named alone" "$tmp/r9-world-amb.jsonl" "$tmp/r9-world-amb.mattrans.log" 1 "Mistake: $wb"
+mistake r9-world-amb-sep matswap "$wa"
+mistake r9-world-amb-sep mattrans "$wb"
 
 # ---- the first stage that differs, and its counts
 "$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.skew0.log" >"$tmp/out" 2>&1

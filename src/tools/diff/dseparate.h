@@ -12,8 +12,12 @@
 ** sides of zero, one pixel off each edge of the framebuffer, translated,
 ** behind the camera; segments along which the DDA's running y reaches
 ** 0.49999999999999994, that start left of the viewport, that run along a row;
-** renderers 7 and 9: segments across the near plane and its mirror image --
-** is run through the right stages and through each known mistake, with the
+** renderers 7 and 9, for the stage whose mistakes are listed: the world's
+** positions of a rotation and a translation, the camera's segments off the
+** lines through the eye where a skew and a size mistake agree, the near
+** clip's segments across the near plane and its mirror image, the clip's
+** segments across one edge -- is run through the right stages and through
+** each known mistake, with the
 ** catalogue's own functions (those diff tests a hypothesis with), and the
 ** fewest pieces are kept, greedily, that tell every listed mistake from every
 ** other mistake of the catalogue and from the right stages.
@@ -50,8 +54,11 @@ typedef struct pt_sep_r4 {
 ** apart, into *out.  This function can't fail. */
 void pt_sep_classic(const pt_sep_r4 *sp, const char *const *names, size_t n, pt_sep *out);
 
-/* The same for renderers 7 and 9 (pt_mistakes79), with EXPECTED's camera.
-** This function can't fail. */
+/* The same for renderers 7 and 9 (pt_mistakes79, all of one stage), with
+** EXPECTED's camera: a scene for the world's, the camera's, the near clip's
+** and the clip's mistakes; for the pixels' (which never both fit a pixel
+** strictly between 0 and 1) a sentence saying why there is none.  This
+** function can't fail. */
 void pt_sep_course(const pt_c79cam *cam, const char *const *names, size_t n, pt_sep *out);
 
 /* Print s to standard output between two marker lines (or its sentence), and
