@@ -65,7 +65,7 @@ cli              1 sh tests/cli/cli.sh $B/pipetrace
 hostile         35 sh tests/cli/hostile.sh $B/pipetrace
 outputs          1 sh tests/cli/outputs.sh $B/pipetrace
 diff            45 sh tests/teach/diff.sh $B/pipetrace
-diff79           3 sh tests/teach/diff79.sh $B/pipetrace
+diff79          11 sh tests/teach/diff79.sh $B/pipetrace
 kraft            3 sh tests/formats/kraft.sh $B/pipetrace $ref
 course79         2 sh tests/course79/course79.sh $B/pipetrace
 course4          2 sh tests/course4/course4.sh $B/pipetrace

@@ -234,6 +234,8 @@ check "the pixels: 0 vertices differ, the colours do" grep -qF "First stage that
 unz r7-skew-aa.nopixels
 expect "no pixel lines" "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.nopixels.log" 3 "Verdict: NOT PROVEN"
 check "... says the pixels were not compared" grep -qF "Not compared: the pixels (ACTUAL has no rasterizer lines)." "$tmp/out"
+"$exe" diff "$tmp/r7-skew-aa.nopixels.log" "$tmp/r7-skew-aa.nopixels.log" >"$tmp/out" 2>&1
+check "... neither side with pixel lines: said so" grep -qF "Not compared: the pixels (neither has rasterizer lines)." "$tmp/out"
 "$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.nopixels.log" >/dev/null 2>&1
 check "... exit 0 without --verdict" test $? = 0
 "$exe" diff "$tmp/r7-skew-aa.jsonl" "$tmp/r7-skew-aa.skew0.log" >/dev/null 2>&1

@@ -670,9 +670,10 @@ static int run(d79 *c)
         c->o->out->px_missing = pc.missing;
         c->o->out->px_extra = pc.extra + pc.color;  /* a pixel of another colour: extra */
     } else {
-        printf("Not compared: the pixels (%s has no rasterizer lines).\n\n",
-               !c->t[0].raster && !c->t[1].raster ? "neither" :
-               !c->t[0].raster ? "EXPECTED" : "ACTUAL");
+        printf("Not compared: the pixels (%s).\n\n",
+               !c->t[0].raster && !c->t[1].raster ? "neither has rasterizer lines" :
+               !c->t[0].raster ? "EXPECTED has no rasterizer lines" :
+                                 "ACTUAL has no rasterizer lines");
         proven = 0;
     }
     for (s = 0; s < 2; s++)
