@@ -58,15 +58,13 @@ static const char *const phase_verb[8] = {
 #define VNUM_LEN 23              /* longer spellings are not kept */
 
 typedef struct clog {
+    pt_course_lane ln;           /* its lane (first: pt_course_lane_ls) */
     pt_trace *t;                 /* the output block (trace_int.h) */
     int failed;                  /* out of memory */
     const pt_scene *s;
     unsigned dbg;
     int drv;                     /* 0 r7, 1 r9 Pipeline, 2 r9 Pipeline2 */
     int debug_position;          /* PipelineLogger.debugPosition */
-    int taken;                   /* 1: the piece going on is this log's (tlanes.h) */
-    uint64_t pieces;             /*   the pieces it wrote */
-    pt_course_cuts *cuts;        /*   its pieces (NULL: one, all of it) */
     pt_rv_raster_ls rls;         /* the rasterizer's lines (rv_log_raster.h) */
     const char *nc_lab, *clip_lab;   /* "3. Near_Clipp", "5. Clipp" (+ ing/ed) */
     struct vnum {                /* the kept spellings: a slot holds the */
@@ -83,7 +81,7 @@ typedef struct clog {
 /* Are the debug lines on (and the piece going on this log's)? */
 static int on(clog *w)
 {
-    return w->taken && ((w->dbg & PT_KDBG_SCENE) || w->debug_position);
+    return w->ln.taken && ((w->dbg & PT_KDBG_SCENE) || w->debug_position);
 }
 
 /* ===== numbers and objects as Java prints them ===== */
@@ -401,7 +399,7 @@ static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *p, const pt
 {
     clog *w = ud;
 
-    if (!w->taken) return;                   /* the warnings: whatever the switches */
+    if (!w->ln.taken) return;                /* the warnings: whatever the switches */
     switch (k) {
     case PT_CWN_NO_VERTICES:
         out(w, "***WARNING: This model does not have any vertices.\n");
@@ -579,13 +577,23 @@ static int log_check(const pt_scene *s, pt_fb *fb, char *err, size_t errlen)
     return cc.rc;
 }
 
-/* pt_course_ls.piece: is the piece w's (tlanes.h)? */
+/* pt_course_ls.piece: is the piece the lane's (tlanes.h)?  ud: a writer's
+** state, which begins with its lane. */
 static int on_piece(void *ud, uint64_t n, int last)
 {
-    clog *w = ud;
-    w->taken = pt_tlanes_piece(w->t, n, last);
-    w->pieces += (uint64_t)w->taken;
-    return w->taken;
+    pt_course_lane *ln = ud;
+    ln->taken = pt_tlanes_piece(ln->t, n, last);
+    ln->pieces += (uint64_t)ln->taken;
+    return ln->taken;
+}
+
+void pt_course_lane_ls(pt_course_ls *ls, const pt_course_lane *ln)
+{
+    if (!ln->cuts) return;
+    ls->piece = on_piece;
+    ls->piece_vertices = ln->cuts->vertices;
+    ls->piece_prims = ln->cuts->prims;
+    ls->piece_pixels = ln->cuts->pixels;
 }
 
 /* Set w up to write s's log with the course's flags dbg to f.  0, or -1
@@ -595,9 +603,10 @@ static int clog_init(clog *w, FILE *f, const pt_scene *s, unsigned dbg)
     memset(w, 0, sizeof *w);
     if (!(w->t = malloc(sizeof *w->t))) return -1;
     pt_trace_init(w->t, f, PT_FORMAT_KRAFT, 0);
+    w->ln.t = w->t;
     w->s = s;
     w->dbg = dbg;
-    w->taken = 1;
+    w->ln.taken = 1;
     w->drv = s->renderer == 9 ? (s->pipeline2 ? 2 : 1) : 0;
     w->nc_lab = w->drv ? "4. Near_Clipp" : "3. Near_Clipp";
     w->clip_lab = w->drv ? "6. Clipp" : "5. Clipp";
@@ -608,8 +617,8 @@ static int clog_init(clog *w, FILE *f, const pt_scene *s, unsigned dbg)
     return 0;
 }
 
-/* Render w's scene into fb with w listening (w->cuts: cut into pieces for
-** tlanes.h).  0, or -1 when out of memory. */
+/* Render w's scene into fb with w listening (cut into pieces for tlanes.h
+** when its lane says).  0, or -1 when out of memory. */
 static int clog_walk(void *ud, pt_fb *fb)
 {
     clog *w = ud;
@@ -632,12 +641,7 @@ static int clog_walk(void *ud, pt_fb *fb)
     ls.clip.end = clip_end;
     ls.clip.ud = w;
     ls.raster_ls = &w->rls;
-    if (w->cuts) {
-        ls.piece = on_piece;
-        ls.piece_vertices = w->cuts->vertices;
-        ls.piece_prims = w->cuts->prims;
-        ls.piece_pixels = w->cuts->pixels;
-    }
+    pt_course_lane_ls(&ls, &w->ln);
     ls.ud = w;
     rc = pt_course_render(w->s, fb, &ls) != 0 || w->failed ? -1 : 0;
     pt_trace_flush(w->t);                    /* write errors: in ferror(f) */
@@ -646,30 +650,40 @@ static int clog_walk(void *ud, pt_fb *fb)
 
 /* Two lanes' walks, each into its framebuffer. */
 typedef struct lanes {
-    int (*walk)(void *ud, pt_fb *fb);
-    void *ud[2];
+    int (*walk)(void *w, pt_fb *fb);
+    void *w[2];
     pt_fb fb[2];
 } lanes;
 
 static int lane_walk(void *ud, int k)
 {
     lanes *ln = ud;
-    return ln->walk(ln->ud[k], &ln->fb[k]);
+    return ln->walk(ln->w[k], &ln->fb[k]);
 }
 
-int pt_course_lanes(const pt_scene *s, pt_fb *fb, int (*walk)(void *ud, pt_fb *fb),
-                    void *const ud[2], pt_trace *const t[2])
+int pt_course_lanes(const pt_scene *s, pt_fb *fb, pt_course_cuts *cuts,
+                    int (*walk)(void *w, pt_fb *fb), void *const w[2])
 {
+    pt_course_lane *l0 = w[0], *l1 = w[1];
+    pt_trace *t[2];
     lanes ln;
     int rc;
 
     memset(&ln, 0, sizeof ln);
     ln.walk = walk;
-    ln.ud[0] = ud[0];
-    ln.ud[1] = ud[1];
+    ln.w[0] = w[0];
+    ln.w[1] = w[1];
     ln.fb[0] = *fb;
     if (pt_fb_init(&ln.fb[1], s->fb_w, s->fb_h, s->background) != 0) return 1;
+    l0->cuts = l1->cuts = cuts;
+    l1->taken = 0;                           /* piece 0 is lane 0's */
+    t[0] = l0->t;
+    t[1] = l1->t;
     rc = pt_tlanes(t, lane_walk, &ln);
+    cuts->taken[0] = l0->pieces;
+    cuts->taken[1] = l1->pieces;
+    l0->cuts = l1->cuts = NULL;
+    l0->taken = l1->taken = 1;
     pt_fb_free(&ln.fb[1]);
     return rc;
 }
@@ -684,15 +698,10 @@ static int clog_lanes(FILE *f, const pt_scene *s, unsigned dbg, pt_course_cuts *
 
     if (!w) return 1;
     if (clog_init(&w[0], f, s, dbg) == 0 && clog_init(&w[1], f, s, dbg) == 0) {
-        void *ud[2];
-        pt_trace *t[2];
-        ud[0] = &w[0]; ud[1] = &w[1];
-        t[0] = w[0].t; t[1] = w[1].t;
-        w[0].cuts = w[1].cuts = cuts;
-        w[1].taken = 0;                      /* piece 0 is lane 0's */
-        rc = pt_course_lanes(s, fb, clog_walk, ud, t);
-        cuts->taken[0] = w[0].pieces;
-        cuts->taken[1] = w[1].pieces;
+        void *ws[2];
+        ws[0] = &w[0];
+        ws[1] = &w[1];
+        rc = pt_course_lanes(s, fb, cuts, clog_walk, ws);
     }
     free(w[0].t);
     free(w[1].t);

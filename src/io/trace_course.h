@@ -22,6 +22,7 @@
 #include <stdio.h>
 #include "core/pipetrace.h"
 #include "io/trace.h"
+#include "core/course.h"
 
 /* How the log or the trace is written: on one thread, or on two (io/tlanes.h:
 ** a second render into a framebuffer of its own, the driver's pieces shared,
@@ -56,12 +57,28 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_course_cuts *cuts
 int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int explain,
                     pt_course_cuts *cuts, pt_fb *fb, char *err, size_t errlen);
 
-/* For the two writers above: render s on two threads (io/tlanes.h), lane k
-** calling walk(ud[k], fb_k) (its header, its render with a listener whose
-** piece says pt_tlanes_piece(t[k], ...), its summary), fb_0 = fb and fb_1 a
-** framebuffer of its own.  Returns 0, -1 when a walk did, or 1 when no
-** second thread or framebuffer is to be had: nothing has run. */
-int pt_course_lanes(const pt_scene *s, pt_fb *fb, int (*walk)(void *ud, pt_fb *fb),
-                    void *const ud[2], pt_trace *const t[2]);
+/* ===== for the two writers above ===== */
+
+/* A writer's lane: the first member of each writer's state. */
+typedef struct pt_course_lane {
+    pt_trace *t;                 /* the writer's block */
+    int taken;                   /* 1: the piece going on is its (io/tlanes.h) */
+    uint64_t pieces;             /* the pieces it wrote */
+    const pt_course_cuts *cuts;  /* NULL: one thread, every piece its */
+} pt_course_lane;
+
+/* With ln->cuts, set ls to cut the render where they say and to ask ln's
+** lane whether each piece is its (ls->ud: the writer's state, which begins
+** with ln).  This function can't fail. */
+void pt_course_lane_ls(pt_course_ls *ls, const pt_course_lane *ln);
+
+/* Render s on two threads (io/tlanes.h) as cuts says, lane k calling
+** walk(w[k], fb_k) (its header, its render with pt_course_lane_ls, its
+** summary), w[k] a writer's state that begins with its pt_course_lane (t
+** set, nothing written), fb_0 = fb and fb_1 a framebuffer of its own; the
+** pieces each wrote into cuts->taken.  Returns 0, -1 when a walk did, or 1
+** when no second thread or framebuffer is to be had: nothing has run. */
+int pt_course_lanes(const pt_scene *s, pt_fb *fb, pt_course_cuts *cuts,
+                    int (*walk)(void *w, pt_fb *fb), void *const w[2]);
 
 #endif

@@ -53,13 +53,11 @@ typedef struct rec {
 #define KEPT_BITS 8              /* log2 of the slots of each table of kept() */
 
 typedef struct walker {
+    pt_course_lane ln;           /* its lane (first: pt_course_lane_ls) */
     pt_trace *t;                 /* the output block and its numbers (trace_int.h) */
     const pt_scene *s;
     int fmt, precision, w4;
     int failed;                  /* out of memory: nothing more is written */
-    int taken;                   /* 1: the piece going on is this writer's (tlanes.h) */
-    pt_course_cuts *cuts;        /*   its pieces (NULL: one, all of it) */
-    uint64_t pieces;             /*   the pieces it wrote */
     pt_sbuf sb;                  /* the header, --explain's JSON string */
     uint64_t prim_no;            /* the primitive a clip stage is on */
     uint64_t raster_no;          /* the primitive the rasterizer is on */
@@ -390,7 +388,7 @@ static void fmt_csv(walker *w, const rec *r)
 
 static void emit(walker *w, const rec *r)
 {
-    if (!w->taken || w->failed || !names(w, r)) return;
+    if (!w->ln.taken || w->failed || !names(w, r)) return;
     switch (w->fmt) {
     case PT_FORMAT_JSONL: fmt_json(w, r); break;
     case PT_FORMAT_CSV: fmt_csv(w, r); break;
@@ -480,7 +478,7 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                 if (r.has_color) r.color = m->c[o->c];
             }
         }
-        if (w->explain && w->taken) explain(w, &r, st, pos, k, o);
+        if (w->explain && w->ln.taken) explain(w, &r, st, pos, k, o);
         emit(w, &r);
         w->nvrec++;
     }
@@ -733,15 +731,6 @@ static void summary(walker *w)
     put(w->t, b, (size_t)n);
 }
 
-/* pt_course_ls.piece: is the piece w's (tlanes.h)? */
-static int on_piece(void *ud, uint64_t n, int last)
-{
-    walker *w = ud;
-    w->taken = pt_tlanes_piece(w->t, n, last);
-    w->pieces += (uint64_t)w->taken;
-    return w->taken;
-}
-
 /* Set w up to write s's trace in format fmt to f.  0, or -1 when out of
 ** memory (then walker_free(w) still). */
 static int walker_init(walker *w, FILE *f, const pt_scene *s, int fmt, int precision,
@@ -752,7 +741,7 @@ static int walker_init(walker *w, FILE *f, const pt_scene *s, int fmt, int preci
     w->fmt = fmt;
     w->precision = precision;
     w->w4 = s->renderer == 9;
-    w->taken = 1;
+    w->ln.taken = 1;
     pt_sbuf_init(&w->sb);
     pt_sbuf_init(&w->names);
     pt_sbuf_init(&w->pix);
@@ -760,6 +749,7 @@ static int walker_init(walker *w, FILE *f, const pt_scene *s, int fmt, int preci
     w->explain = explain;
     if (!(w->t = malloc(sizeof *w->t))) return -1;
     pt_trace_init(w->t, f, (pt_format)fmt, precision);
+    w->ln.t = w->t;
     if (explain && !(w->prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->prev))) return -1;
     return 0;
 }
@@ -779,8 +769,8 @@ static void walker_free(walker *w)
 }
 
 /* Render w's scene into fb with w listening: the header, the records, the
-** summary, each when its piece is w's (w->cuts: cut into pieces for
-** tlanes.h, else all of them).  0, or -1 when out of memory. */
+** summary, each when its piece is w's (cut into pieces for tlanes.h when
+** its lane says, else all of them).  0, or -1 when out of memory. */
 static int walk(void *ud, pt_fb *fb)
 {
     walker *w = ud;
@@ -802,16 +792,11 @@ static int walk(void *ud, pt_fb *fb)
     ls.nearclip.cut = clip_cut;
     ls.nearclip.ud = w;
     ls.clip = ls.nearclip;
-    if (w->cuts) {
-        ls.piece = on_piece;
-        ls.piece_vertices = w->cuts->vertices;
-        ls.piece_prims = w->cuts->prims;
-        ls.piece_pixels = w->cuts->pixels;
-    }
+    pt_course_lane_ls(&ls, &w->ln);
     ls.ud = w;
-    if (w->taken) header(w, &w->cam);        /* piece 0: lane 0's */
+    if (w->ln.taken) header(w, &w->cam);     /* piece 0: lane 0's */
     rc = pt_course_render(w->s, fb, &ls);
-    if (rc == 0 && !w->failed && w->taken) summary(w);   /* the last piece: lane 0's */
+    if (rc == 0 && !w->failed && w->ln.taken) summary(w);   /* the last piece: lane 0's */
     pt_trace_flush(w->t);                    /* write errors: in ferror(f) */
     return rc != 0 || w->failed ? -1 : 0;
 }
@@ -827,15 +812,10 @@ static int walk_lanes(FILE *f, const pt_scene *s, int fmt, int precision, int ex
     if (!w) return 1;
     if (walker_init(&w[0], f, s, fmt, precision, explain) == 0 &&
         walker_init(&w[1], f, s, fmt, precision, explain) == 0) {
-        void *ud[2];
-        pt_trace *t[2];
-        ud[0] = &w[0]; ud[1] = &w[1];
-        t[0] = w[0].t; t[1] = w[1].t;
-        w[0].cuts = w[1].cuts = cuts;
-        w[1].taken = 0;                      /* piece 0 is lane 0's */
-        rc = pt_course_lanes(s, fb, walk, ud, t);
-        cuts->taken[0] = w[0].pieces;
-        cuts->taken[1] = w[1].pieces;
+        void *ws[2];
+        ws[0] = &w[0];
+        ws[1] = &w[1];
+        rc = pt_course_lanes(s, fb, cuts, walk, ws);
     }
     walker_free(&w[0]);
     walker_free(&w[1]);
