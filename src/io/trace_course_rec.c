@@ -460,6 +460,10 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
         for (k = 0; k < w->norg; k++)
             if (w->org[k].v < from) from = w->org[k].v;
     }
+    if (!w->ln.taken) {                     /* another writer's piece: counted only */
+        w->nvrec += m->nv - from;
+        from = m->nv;
+    }
     for (k = from; k < m->nv; k++) {
         rec_init(&r, R_VERTEX, pos);
         r.stage = stage_names[st];
