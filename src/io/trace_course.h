@@ -22,7 +22,6 @@
 #include <stdio.h>
 #include "core/pipetrace.h"
 #include "io/trace.h"
-#include "core/course.h"
 
 /* How the log or the trace is written: on one thread, or on two (io/tlanes.h:
 ** a second render into a framebuffer of its own, the driver's pieces shared,

@@ -29,7 +29,6 @@
 #include "io/tlanes.h"
 #include "io/trace_kraft.h"
 #include "io/trace_course.h"
-#include "core/course.h"
 
 #define PT_VERSION "0.1.0"
 
