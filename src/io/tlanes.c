@@ -2,6 +2,10 @@
 ** src/io/tlanes.c -- one trace written by two threads, piece by piece, in order
 ** See LICENSE for copyright and license.
 **
+** Lanes.  A lane is a run of the caller's and a trace writer: renderer 4's
+** pt_run (pt_tlanes_run, below), renderers 7 and 9's driver
+** (io/trace_course.c).  Nothing here knows which.
+**
 ** Taking.  `taken` counts the pieces given out: 1 at the start (piece 0, the
 ** header's, is lane 0's).  A lane reaches the pieces in order, so when it
 ** reaches piece n, taken >= n; it takes n when it moves taken from n to n + 1,
