@@ -142,7 +142,7 @@ TESTS    = $B/test_stages $B/test_raster $B/test_numfmt $B/test_scene \
            $B/test_accuracy $B/test_png $B/test_catalogue $B/test_jnum $B/test_jmath \
            $B/test_tread $B/test_nameset $B/test_numparse $B/test_shapes $B/test_wasm_libm \
            $B/test_numfmt_portable $B/test_trace $B/test_lanes $B/test_pipelines \
-           $B/test_journey $B/test_rv_stages $B/test_rv_raster
+           $B/test_journey $B/test_rv_stages $B/test_rv_raster $B/test_lanes79
 
 all: $B/pipetrace
 

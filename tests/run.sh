@@ -52,6 +52,7 @@ fuzz             1 $B/test_fuzz
 tread            1 $B/test_tread
 trace            1 $B/test_trace
 lanes           31 sh tests/formats/lanes.sh $B
+lanes79         11 sh tests/formats/lanes79.sh $B
 explain          1 $B/test_explain
 png              1 $B/test_png
 layers           1 sh tests/repo/layers.sh

@@ -34,6 +34,14 @@ typedef struct cpos {
     int live;                    /* 1: visible, its model drawn */
 } cpos;
 
+/* The pieces of the render (pt_course_ls.piece): the one going on, and how
+** much is in it so far. */
+typedef struct pieces {
+    uint64_t n;
+    uint64_t vertices, prims, pixels;
+    int taken;                   /* 1: its records are wanted */
+} pieces;
+
 /* What every step needs. */
 typedef struct run {
     const pt_scene *s;
@@ -41,6 +49,7 @@ typedef struct run {
     pt_course_cam cam;
     pt_rv_raster_par par;
     pt_fb *fb;
+    pieces *pc;                  /* NULL: one piece, wanted */
 } run;
 
 static const pt_rv_clip_ls no_clip_ls = {NULL, NULL, NULL, NULL, NULL};
@@ -72,13 +81,40 @@ void pt_course_camera(const pt_scene *s, pt_course_cam *out)
 ** any, to the rasterizer's listener).  The background goes into the first
 ** pixel and is copied on, a doubling block at a time. */
 static void clear_fb(const pt_scene *s, pt_fb *fb, const pt_rv_raster_par *par,
-                     const pt_course_ls *ls)
+                     const pt_rv_raster_ls *rls)
 {
     size_t n = 3 * (size_t)fb->w * (size_t)fb->h, k;
 
     if (n > 0) memcpy(fb->rgb, s->background, 3);
     for (k = 3; k < n; k *= 2) memcpy(fb->rgb + k, fb->rgb, k < n - k ? k : n - k);
-    pt_rv_clear_vp(par, fb->rgb, ls ? ls->raster_ls : NULL);
+    pt_rv_clear_vp(par, fb->rgb, rls);
+}
+
+/* ===== the pieces ===== */
+
+/* A cut may fall here, before the work on nv vertices or on prims primitives
+** drawn. */
+static void cut(const run *r, uint64_t nv, uint64_t prims)
+{
+    const pt_course_ls *ls = r->ls;
+    pieces *pc = r->pc;
+
+    if (!pc) return;
+    if (pc->vertices >= (ls->piece_vertices ? ls->piece_vertices : PT_COURSE_PIECE_VERTICES) ||
+        pc->prims >= (ls->piece_prims ? ls->piece_prims : PT_COURSE_PIECE_PRIMS) ||
+        pc->pixels >= (ls->piece_pixels ? ls->piece_pixels : PT_COURSE_PIECE_PIXELS)) {
+        pc->n++;
+        pc->vertices = pc->prims = pc->pixels = 0;
+        pc->taken = ls->piece(ls->ud, pc->n, 0);
+    }
+    pc->vertices += nv;
+    pc->prims += prims;
+}
+
+/* The rasterizer's listener for what the piece going on wants. */
+static const pt_rv_raster_ls *raster_ls(const run *r)
+{
+    return r->ls && (!r->pc || r->pc->taken) ? r->ls->raster_ls : NULL;
 }
 
 /* ===== the setup: the model as the course's client builds it ===== */
@@ -148,6 +184,7 @@ static int setup(const run *r, cpos *c)
     const pt_model *sm = c->pos.sm;
     size_t k;
 
+    cut(r, sm->nv, 0);
     if (sm->hidden_position) { mark(r, PT_CMK_POSITION_HIDDEN, &c->pos); return 0; }
     mark(r, PT_CMK_POSITION, &c->pos);
     if (sm->hidden_model) {
@@ -184,6 +221,7 @@ static int do_step(const run *r, step st, cpos *c)
     const pt_course_ls *ls = r->ls;
     size_t k;
 
+    if (st != ST_RASTER) cut(r, m->nv, 0);
     switch (st) {
     case ST_WORLD:
         for (k = 0; k < m->nv; k++) m->v[k] = pt_r9_model2world(m->v[k], &c->pos.matrix);
@@ -218,9 +256,11 @@ static int do_step(const run *r, step st, cpos *c)
     case ST_RASTER:
         for (k = 0; k < m->np; k++) {
             uint64_t n;
+            cut(r, 0, 1);
             if (ls && ls->raster) ls->raster(ls->ud, &c->pos, m, &m->p[k]);
             if (ls && ls->measure) continue;
-            n = pt_rv_raster_prim(m, &m->p[k], &r->par, r->fb->rgb, ls ? ls->raster_ls : NULL);
+            n = pt_rv_raster_prim(m, &m->p[k], &r->par, r->fb->rgb, raster_ls(r));
+            if (r->pc) r->pc->pixels += n;
             if (ls && ls->drawn) ls->drawn(ls->ud, &c->pos, m, &m->p[k], n);
         }
         break;
@@ -300,17 +340,23 @@ int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
 {
     pt_rv_gamma_lut lut;
     run r;
+    pieces pc;
     cpos *c;
     size_t k, nst;
     const step *sts;
     int rc;
 
     start(&r, s, fb, ls);
+    memset(&pc, 0, sizeof pc);
+    if (ls && ls->piece) {
+        pc.taken = ls->piece(ls->ud, 0, 0);
+        r.pc = &pc;
+    }
     if (s->gamma) {                              /* gamma's bytes by table where */
         pt_rv_gamma_lut_init(&lut);              /*   nobody reads its floats */
         r.par.lut = &lut;
     }
-    clear_fb(s, fb, &r.par, ls);
+    clear_fb(s, fb, &r.par, raster_ls(&r));
 
     c = calloc(s->nmodels ? s->nmodels : 1, sizeof *c);
     if (!c) return -1;
@@ -328,6 +374,7 @@ int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls)
     rc = s->renderer == 9 && s->pipeline2 ? pipeline2(&r, c, s->nmodels, sts, nst)
                                           : pipeline1(&r, c, s->nmodels, sts, nst);
     if (rc == 0) mark(&r, PT_CMK_END, NULL);
+    if (rc == 0 && r.pc) ls->piece(ls->ud, pc.n + 1, 1);
     for (k = 0; k < s->nmodels; k++) pt_rv_model_free(&c[k].m);
     free(c);
     return rc;

@@ -107,8 +107,31 @@ typedef struct pt_course_ls {
     int measure;                 /* 1: the rasterizer is not run: raster hears each
                                  ** primitive it would draw, drawn nothing (a
                                  ** look at what would be drawn, before drawing) */
+    int (*piece)(void *ud, uint64_t n, int last);
+                                 /* NULL: one piece.  Else the render is cut into
+                                 ** pieces where the scene alone says (below) and
+                                 ** asks at the start of each (n = 0, 1, ...; last
+                                 ** = 1 after the end mark) whether its records
+                                 ** are wanted: 1 when they are.  Every event of a
+                                 ** piece not wanted still comes (a listener keeps
+                                 ** its counts), but the rasterizer's pixel lines,
+                                 ** which go to nobody */
+    uint64_t piece_vertices;     /* where the cuts fall: 0 for PT_COURSE_PIECE_* */
+    uint64_t piece_prims;
+    uint64_t piece_pixels;
     void *ud;
 } pt_course_ls;
+
+/* Where the render is cut into pieces (pt_course_ls.piece), by default: a
+** cut may fall before each position's setup, before each step of a model,
+** and before each primitive the rasterizer draws, and falls there once the
+** piece holds PT_COURSE_PIECE_VERTICES vertices (a model's, once for its
+** setup and once for each step before the rasterizer), PT_COURSE_PIECE_PRIMS
+** primitives drawn or PT_COURSE_PIECE_PIXELS pixels, or more.  Runs of the
+** same scene cut alike, whatever the answers. */
+#define PT_COURSE_PIECE_VERTICES 1024
+#define PT_COURSE_PIECE_PRIMS    1024
+#define PT_COURSE_PIECE_PIXELS   4096
 
 /* The scene's camera (l r b t n, view vector, normalize matrix).  Can't fail. */
 void pt_course_camera(const pt_scene *s, pt_course_cam *out);

@@ -2,6 +2,10 @@
 ** src/io/tlanes.c -- one trace written by two threads, piece by piece, in order
 ** See LICENSE for copyright and license.
 **
+** Lanes.  A lane is a run of the caller's and a trace writer: renderer 4's
+** pt_run (pt_tlanes_run, below), renderers 7 and 9's driver
+** (io/trace_course.c).  Nothing here knows which.
+**
 ** Taking.  `taken` counts the pieces given out: 1 at the start (piece 0, the
 ** header's, is lane 0's).  A lane reaches the pieces in order, so when it
 ** reaches piece n, taken >= n; it takes n when it moves taken from n to n + 1,
@@ -35,9 +39,8 @@ typedef struct lane {
     struct tlanes *q;
     int id;                      /* 0: the caller's thread, with image and summary */
     pt_trace *t;                 /* its writer */
-    pt_listener l;               /* t's callbacks, and on_piece */
     uint64_t piece;              /* the piece its writer's text belongs to */
-    int rc;                      /* its pt_run's result */
+    int rc;                      /* its run's result */
     /* under mu */
     uint64_t at;                 /* the piece its run is in, taken or not */
     int done;                    /* its run has ended, its text is handed over */
@@ -55,10 +58,8 @@ typedef struct tlanes {
     int writing;                 /* a thread is writing: the other leaves it be */
     int failed;                  /* the errno value of the first write that failed */
     FILE *f;
-    const pt_scene *s;           /* lane 1's run */
-    const pt_plan *p;
-    const pt_options *o;
-    pt_summary sum1;             /* lane 1's counts: not the scene's */
+    int (*run)(void *ud, int lane);  /* each lane's run */
+    void *ud;
 } tlanes;
 
 /* The lane whose first chunk is next in the trace, or NULL. */
@@ -126,10 +127,9 @@ static void on_full(void *ud, pt_trace *t)
     pthread_mutex_unlock(&ln->q->mu);
 }
 
-/* pt_listener.piece: lane ud->out_ud's run is at piece n.  Does it take it? */
-static int on_piece(void *ud, uint64_t n, int last)
+int pt_tlanes_piece(pt_trace *t, uint64_t n, int last)
 {
-    lane *ln = ((pt_trace *)ud)->out_ud;
+    lane *ln = t->out_ud;
     tlanes *q = ln->q;
     int take;
 
@@ -163,7 +163,7 @@ static void *lane1_run(void *arg)
     lane *ln = arg;
     tlanes *q = ln->q;
 
-    ln->rc = pt_run(q->s, q->p, q->o, &ln->l, NULL, &q->sum1);
+    ln->rc = q->run(q->ud, 1);
     lane_end(q, ln);
     return NULL;
 }
@@ -178,23 +178,28 @@ static void lane_init(tlanes *q, int k, pt_trace *t, char *b)
     ln->q = q;
     ln->id = k;
     ln->t = t;
-    pt_trace_listener(t, &ln->l);
-    ln->l.piece = on_piece;
     t->out = on_full;
     t->out_ud = ln;
     for (j = 0; j < PT_TLANES_BLOCKS - 1; j++) ln->spare[ln->nspare++] = b + (size_t)j * PT_TRACE_BLOCK;
 }
 
-int pt_tlanes_run(pt_trace *t, const pt_scene *s, const pt_plan *p, const pt_options *o,
-                  pt_fb *fb, pt_summary *sum)
+/* Writer t as it was before its lane: its own block, empty. */
+static void lane_off(pt_trace *t)
+{
+    t->out = NULL;
+    t->out_ud = NULL;
+    t->buf = t->block;
+    t->len = 0;
+}
+
+int pt_tlanes(pt_trace *const t[2], int (*run)(void *ud, int lane), void *ud)
 {
     tlanes *q = calloc(1, sizeof *q);
-    pt_trace *t1 = malloc(sizeof *t1);
     char *blocks = malloc(2 * (PT_TLANES_BLOCKS - 1) * (size_t)PT_TRACE_BLOCK);
     pthread_t th;
     int locks = 0, rc;
 
-    if (q && t1 && blocks) {
+    if (q && blocks) {
         locks = pthread_mutex_init(&q->mu, NULL) == 0;
         if (locks && pthread_cond_init(&q->written, NULL) != 0) {
             pthread_mutex_destroy(&q->mu);
@@ -203,42 +208,95 @@ int pt_tlanes_run(pt_trace *t, const pt_scene *s, const pt_plan *p, const pt_opt
     }
     if (locks) {
         atomic_init(&q->taken, 1);
-        q->f = t->f;
-        q->s = s; q->p = p; q->o = o;
-        pt_trace_init(t1, t->f, t->fmt, t->precision);
-        t1->explain = t->explain;
-        t1->student = t->student;
-        t1->scene = s;                      /* on_header tells lane 0's only */
-        t1->plan = p;
-        lane_init(q, 0, t, blocks);
-        lane_init(q, 1, t1, blocks + (PT_TLANES_BLOCKS - 1) * (size_t)PT_TRACE_BLOCK);
-        q->lanes[1].l.summary = NULL;       /* lane 0 counts and writes it */
+        q->f = t[0]->f;
+        q->run = run;
+        q->ud = ud;
+        lane_init(q, 0, t[0], blocks);
+        lane_init(q, 1, t[1], blocks + (PT_TLANES_BLOCKS - 1) * (size_t)PT_TRACE_BLOCK);
     }
     if (!locks || pthread_create(&th, NULL, lane1_run, &q->lanes[1]) != 0) {
-        pt_listener l;                      /* one thread: the run as it is */
-        if (locks) { pthread_cond_destroy(&q->written); pthread_mutex_destroy(&q->mu); }
-        free(blocks); free(t1); free(q);
-        t->out = NULL;
-        pt_trace_listener(t, &l);
-        return pt_run(s, p, o, &l, fb, sum);
+        if (locks) {
+            pthread_cond_destroy(&q->written);
+            pthread_mutex_destroy(&q->mu);
+            lane_off(t[0]);
+            lane_off(t[1]);
+        }
+        free(blocks);
+        free(q);
+        return 1;
     }
-    q->lanes[0].rc = pt_run(s, p, o, &q->lanes[0].l, fb, sum);
+    q->lanes[0].rc = run(ud, 0);
     lane_end(q, &q->lanes[0]);
     pthread_join(th, NULL);
 
     pthread_mutex_lock(&q->mu);             /* both ended: all is written */
     drain(q);
     pthread_mutex_unlock(&q->mu);
-    if (q->failed && !t->failed) t->failed = q->failed;
+    if (q->failed && !t[0]->failed) t[0]->failed = q->failed;
     rc = q->lanes[0].rc != 0 || q->lanes[1].rc != 0 ? -1 : 0;
-    t->out = NULL;
-    t->out_ud = NULL;
-    t->buf = t->block;
-    t->len = 0;
+    lane_off(t[0]);
+    lane_off(t[1]);
     pthread_cond_destroy(&q->written);
     pthread_mutex_destroy(&q->mu);
     free(blocks);
-    free(t1);
     free(q);
+    return rc;
+}
+
+/* ===== renderer 4: pt_run on both lanes ===== */
+
+typedef struct run4 {
+    pt_trace *t[2];              /* each lane's writer */
+    const pt_scene *s;
+    const pt_plan *p;
+    const pt_options *o;
+    pt_fb *fb;                   /* lane 0's image, */
+    pt_summary *sum;             /*   and its counts: the scene's */
+    pt_summary sum1;             /* lane 1's counts: not the scene's */
+} run4;
+
+/* pt_listener.piece: the lanes' */
+static int on_piece(void *ud, uint64_t n, int last)
+{
+    return pt_tlanes_piece(ud, n, last);
+}
+
+static int run4_lane(void *ud, int k)
+{
+    run4 *r = ud;
+    pt_listener l;
+
+    pt_trace_listener(r->t[k], &l);
+    l.piece = on_piece;
+    if (k) l.summary = NULL;                /* lane 0 counts and writes it */
+    return pt_run(r->s, r->p, r->o, &l, k ? NULL : r->fb, k ? &r->sum1 : r->sum);
+}
+
+int pt_tlanes_run(pt_trace *t, const pt_scene *s, const pt_plan *p, const pt_options *o,
+                  pt_fb *fb, pt_summary *sum)
+{
+    pt_trace *t1 = malloc(sizeof *t1);
+    run4 r;
+    int rc = 1;
+
+    memset(&r, 0, sizeof r);
+    if (t1) {
+        pt_trace_init(t1, t->f, t->fmt, t->precision);
+        t1->explain = t->explain;
+        t1->student = t->student;
+        t1->scene = s;                      /* on_header tells lane 0's only */
+        t1->plan = p;
+        r.t[0] = t; r.t[1] = t1;
+        r.s = s; r.p = p; r.o = o;
+        r.fb = fb;
+        r.sum = sum;
+        rc = pt_tlanes(r.t, run4_lane, &r);
+    }
+    free(t1);
+    if (rc == 1) {                          /* one thread: the run as it is */
+        pt_listener l;
+        pt_trace_listener(t, &l);
+        return pt_run(s, p, o, &l, fb, sum);
+    }
     return rc;
 }

@@ -20,6 +20,7 @@
 #include "io/trace_kraft.h"
 #include "io/jnum.h"
 #include "io/rv_log_raster.h"
+#include "io/tlanes.h"
 
 /* A stage's labels per driver: r7, r9 Pipeline, r9 Pipeline2; and which
 ** lists it prints (V vertices, C colours, P primitives). */
@@ -57,12 +58,14 @@ static const char *const phase_verb[8] = {
 #define VNUM_LEN 23              /* longer spellings are not kept */
 
 typedef struct clog {
+    pt_course_lane ln;           /* its lane (first: pt_course_lane_ls) */
     pt_trace *t;                 /* the output block (trace_int.h) */
     int failed;                  /* out of memory */
     const pt_scene *s;
     unsigned dbg;
     int drv;                     /* 0 r7, 1 r9 Pipeline, 2 r9 Pipeline2 */
     int debug_position;          /* PipelineLogger.debugPosition */
+    pt_rv_raster_ls rls;         /* the rasterizer's lines (rv_log_raster.h) */
     const char *nc_lab, *clip_lab;   /* "3. Near_Clipp", "5. Clipp" (+ ing/ed) */
     struct vnum {                /* the kept spellings: a slot holds the */
         uint64_t bits;           /*   spelling of the bits it holds */
@@ -75,9 +78,10 @@ typedef struct clog {
 ** label and integers, and four numbers as Java spells them. */
 #define LINE_ROOM (512 + 4 * PT_JNUM_LEN)
 
+/* Are the debug lines on (and the piece going on this log's)? */
 static int on(clog *w)
 {
-    return (w->dbg & PT_KDBG_SCENE) || w->debug_position;
+    return w->ln.taken && ((w->dbg & PT_KDBG_SCENE) || w->debug_position);
 }
 
 /* ===== numbers and objects as Java prints them ===== */
@@ -395,6 +399,7 @@ static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *p, const pt
 {
     clog *w = ud;
 
+    if (!w->ln.taken) return;                /* the warnings: whatever the switches */
     switch (k) {
     case PT_CWN_NO_VERTICES:
         out(w, "***WARNING: This model does not have any vertices.\n");
@@ -572,26 +577,54 @@ static int log_check(const pt_scene *s, pt_fb *fb, char *err, size_t errlen)
     return cc.rc;
 }
 
-int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
-                  char *err, size_t errlen)
+/* pt_course_ls.piece: is the piece the lane's (tlanes.h)?  ud: a writer's
+** state, which begins with its lane. */
+static int on_piece(void *ud, uint64_t n, int last)
 {
-    clog w;
-    pt_course_ls ls;
-    pt_rv_raster_ls rls;
-    int rc, pixels = (dbg & PT_KDBG_RASTERIZE) && (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION));
+    pt_course_lane *ln = ud;
+    ln->taken = pt_tlanes_piece(ln->t, n, last);
+    ln->pieces += (uint64_t)ln->taken;
+    return ln->taken;
+}
 
-    if (pixels && log_check(s, fb, err, errlen) != 0) return -1;   /* nothing written */
-    memset(&w, 0, sizeof w);
-    if (!(w.t = malloc(sizeof *w.t))) {
-        snprintf(err, errlen, "pipetrace: out of memory");
-        return -1;
-    }
-    pt_trace_init(w.t, f, PT_FORMAT_KRAFT, 0);
-    w.s = s;
-    w.dbg = dbg;
-    w.drv = s->renderer == 9 ? (s->pipeline2 ? 2 : 1) : 0;
-    w.nc_lab = w.drv ? "4. Near_Clipp" : "3. Near_Clipp";
-    w.clip_lab = w.drv ? "6. Clipp" : "5. Clipp";
+void pt_course_lane_ls(pt_course_ls *ls, const pt_course_lane *ln)
+{
+    if (!ln->cuts) return;
+    ls->piece = on_piece;
+    ls->piece_vertices = ln->cuts->vertices;
+    ls->piece_prims = ln->cuts->prims;
+    ls->piece_pixels = ln->cuts->pixels;
+}
+
+/* Set w up to write s's log with the course's flags dbg to f.  0, or -1
+** when out of memory (then free(w->t) still). */
+static int clog_init(clog *w, FILE *f, const pt_scene *s, unsigned dbg)
+{
+    memset(w, 0, sizeof *w);
+    if (!(w->t = malloc(sizeof *w->t))) return -1;
+    pt_trace_init(w->t, f, PT_FORMAT_KRAFT, 0);
+    w->ln.t = w->t;
+    w->s = s;
+    w->dbg = dbg;
+    w->ln.taken = 1;
+    w->drv = s->renderer == 9 ? (s->pipeline2 ? 2 : 1) : 0;
+    w->nc_lab = w->drv ? "4. Near_Clipp" : "3. Near_Clipp";
+    w->clip_lab = w->drv ? "6. Clipp" : "5. Clipp";
+    /* the rasterizer's lines: Rasterize.debug under the scene's or the
+    ** positions' debug (the same for every position); Bad pixel lines always */
+    pt_rv_log_raster_ls(&w->rls, w->t,
+                        (dbg & PT_KDBG_RASTERIZE) && (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION)));
+    return 0;
+}
+
+/* Render w's scene into fb with w listening (cut into pieces for tlanes.h
+** when its lane says).  0, or -1 when out of memory. */
+static int clog_walk(void *ud, pt_fb *fb)
+{
+    clog *w = ud;
+    pt_course_ls ls;
+    int rc;
+
     memset(&ls, 0, sizeof ls);
     ls.mark = on_mark;
     ls.warn = on_warn;
@@ -601,20 +634,93 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_fb *fb,
     ls.nearclip.trivial = nc_trivial;
     ls.nearclip.cut = nc_cut;
     ls.nearclip.end = nc_end;
-    ls.nearclip.ud = &w;
+    ls.nearclip.ud = w;
     ls.clip.begin = clip_begin;
     ls.clip.trivial = clip_trivial;
     ls.clip.cut = clip_cut;
     ls.clip.end = clip_end;
-    ls.clip.ud = &w;
-    /* the rasterizer's lines: Rasterize.debug under the scene's or the
-    ** positions' debug (the same for every position); Bad pixel lines always */
-    pt_rv_log_raster_ls(&rls, w.t, pixels);
-    ls.raster_ls = &rls;
-    ls.ud = &w;
-    rc = pt_course_render(s, fb, &ls) != 0 || w.failed ? -1 : 0;
-    pt_trace_flush(w.t);                     /* write errors: in ferror(f) */
-    free(w.t);
+    ls.clip.ud = w;
+    ls.raster_ls = &w->rls;
+    pt_course_lane_ls(&ls, &w->ln);
+    ls.ud = w;
+    rc = pt_course_render(w->s, fb, &ls) != 0 || w->failed ? -1 : 0;
+    pt_trace_flush(w->t);                    /* write errors: in ferror(f) */
+    return rc;
+}
+
+/* Two lanes' walks, each into its framebuffer. */
+typedef struct lanes {
+    int (*walk)(void *w, pt_fb *fb);
+    void *w[2];
+    pt_fb fb[2];
+} lanes;
+
+static int lane_walk(void *ud, int k)
+{
+    lanes *ln = ud;
+    return ln->walk(ln->w[k], &ln->fb[k]);
+}
+
+int pt_course_lanes(const pt_scene *s, pt_fb *fb, pt_course_cuts *cuts,
+                    int (*walk)(void *w, pt_fb *fb), void *const w[2])
+{
+    pt_course_lane *l0 = w[0], *l1 = w[1];
+    pt_trace *t[2];
+    lanes ln;
+    int rc;
+
+    memset(&ln, 0, sizeof ln);
+    ln.walk = walk;
+    ln.w[0] = w[0];
+    ln.w[1] = w[1];
+    ln.fb[0] = *fb;
+    if (pt_fb_init(&ln.fb[1], s->fb_w, s->fb_h, s->background) != 0) return 1;
+    l0->cuts = l1->cuts = cuts;
+    l1->taken = 0;                           /* piece 0 is lane 0's */
+    t[0] = l0->t;
+    t[1] = l1->t;
+    rc = pt_tlanes(t, lane_walk, &ln);
+    cuts->taken[0] = l0->pieces;
+    cuts->taken[1] = l1->pieces;
+    l0->cuts = l1->cuts = NULL;
+    l0->taken = l1->taken = 1;
+    pt_fb_free(&ln.fb[1]);
+    return rc;
+}
+
+/* The log on two threads: 0, -1 (out of memory), or 1 when no second
+** thread is to be had (nothing has run). */
+static int clog_lanes(FILE *f, const pt_scene *s, unsigned dbg, pt_course_cuts *cuts,
+                      pt_fb *fb)
+{
+    clog *w = calloc(2, sizeof *w);
+    int rc = 1;
+
+    if (!w) return 1;
+    if (clog_init(&w[0], f, s, dbg) == 0 && clog_init(&w[1], f, s, dbg) == 0) {
+        void *ws[2];
+        ws[0] = &w[0];
+        ws[1] = &w[1];
+        rc = pt_course_lanes(s, fb, cuts, clog_walk, ws);
+    }
+    free(w[0].t);
+    free(w[1].t);
+    free(w);
+    return rc;
+}
+
+int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_course_cuts *cuts,
+                  pt_fb *fb, char *err, size_t errlen)
+{
+    clog w;
+    int rc, pixels = (dbg & PT_KDBG_RASTERIZE) && (dbg & (PT_KDBG_SCENE | PT_KDBG_POSITION));
+
+    if (pixels && log_check(s, fb, err, errlen) != 0) return -1;   /* nothing written */
+    rc = cuts && cuts->threads == 2 ? clog_lanes(f, s, dbg, cuts, fb) : 1;
+    if (rc == 1) {                           /* one thread */
+        rc = clog_init(&w, f, s, dbg) == 0 ? clog_walk(&w, fb) : -1;
+        free(w.t);
+    }
     if (rc) snprintf(err, errlen, "pipetrace: out of memory");
     return rc;
 }

@@ -20,6 +20,7 @@
 #include "io/trace_course.h"
 #include "io/trace.h"
 #include "io/trace_int.h"
+#include "io/tlanes.h"
 #include "io/explain_course.h"
 #include "io/numfmt.h"
 #include "io/sbuf.h"
@@ -52,6 +53,7 @@ typedef struct rec {
 #define KEPT_BITS 8              /* log2 of the slots of each table of kept() */
 
 typedef struct walker {
+    pt_course_lane ln;           /* its lane (first: pt_course_lane_ls) */
     pt_trace *t;                 /* the output block and its numbers (trace_int.h) */
     const pt_scene *s;
     int fmt, precision, w4;
@@ -386,7 +388,7 @@ static void fmt_csv(walker *w, const rec *r)
 
 static void emit(walker *w, const rec *r)
 {
-    if (w->failed || !names(w, r)) return;
+    if (!w->ln.taken || w->failed || !names(w, r)) return;
     switch (w->fmt) {
     case PT_FORMAT_JSONL: fmt_json(w, r); break;
     case PT_FORMAT_CSV: fmt_csv(w, r); break;
@@ -458,6 +460,10 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
         for (k = 0; k < w->norg; k++)
             if (w->org[k].v < from) from = w->org[k].v;
     }
+    if (!w->ln.taken) {                     /* another writer's piece: counted only */
+        w->nvrec += m->nv - from;
+        from = m->nv;
+    }
     for (k = from; k < m->nv; k++) {
         rec_init(&r, R_VERTEX, pos);
         r.stage = stage_names[st];
@@ -476,7 +482,7 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                 if (r.has_color) r.color = m->c[o->c];
             }
         }
-        if (w->explain) explain(w, &r, st, pos, k, o);
+        if (w->explain && w->ln.taken) explain(w, &r, st, pos, k, o);
         emit(w, &r);
         w->nvrec++;
     }
@@ -729,60 +735,109 @@ static void summary(walker *w)
     put(w->t, b, (size_t)n);
 }
 
-int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int explain,
-                    pt_fb *fb, char *err, size_t errlen)
+/* Set w up to write s's trace in format fmt to f.  0, or -1 when out of
+** memory (then walker_free(w) still). */
+static int walker_init(walker *w, FILE *f, const pt_scene *s, int fmt, int precision,
+                       int explain)
 {
-    walker w;
+    memset(w, 0, sizeof *w);
+    w->s = s;
+    w->fmt = fmt;
+    w->precision = precision;
+    w->w4 = s->renderer == 9;
+    w->ln.taken = 1;
+    pt_sbuf_init(&w->sb);
+    pt_sbuf_init(&w->names);
+    pt_sbuf_init(&w->pix);
+    pt_course_camera(s, &w->cam);
+    w->explain = explain;
+    if (!(w->t = malloc(sizeof *w->t))) return -1;
+    pt_trace_init(w->t, f, (pt_format)fmt, precision);
+    w->ln.t = w->t;
+    if (explain && !(w->prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->prev))) return -1;
+    return 0;
+}
+
+static void walker_free(walker *w)
+{
+    free(w->t);
+    pt_sbuf_free(&w->sb);
+    pt_sbuf_free(&w->names);
+    pt_sbuf_free(&w->pix);
+    free(w->org);
+    if (w->prev) {
+        size_t k;
+        for (k = 0; k < w->s->nmodels; k++) free(w->prev[k].v);
+        free(w->prev);
+    }
+}
+
+/* Render w's scene into fb with w listening: the header, the records, the
+** summary, each when its piece is w's (cut into pieces for tlanes.h when
+** its lane says, else all of them).  0, or -1 when out of memory. */
+static int walk(void *ud, pt_fb *fb)
+{
+    walker *w = ud;
     pt_course_ls ls;
     pt_rv_raster_ls rls;
-    pt_course_cam cam;
-    int rc = -1;
+    int rc;
 
-    memset(&w, 0, sizeof w);
-    w.s = s;
-    w.fmt = fmt;
-    w.precision = precision;
-    w.w4 = s->renderer == 9;
-    pt_sbuf_init(&w.sb);
-    pt_sbuf_init(&w.names);
-    pt_sbuf_init(&w.pix);
     memset(&rls, 0, sizeof rls);
     rls.pixel = on_pixel;
-    rls.ud = &w;
+    rls.ud = w;
     rls.bytes_only = 1;
     memset(&ls, 0, sizeof ls);
     ls.stage = on_stage;
     ls.drawn = on_drawn;
     ls.raster = on_raster;
-    ls.raster_ls = fmt == PT_FORMAT_CSV ? NULL : &rls;   /* CSV: no pixel rows */
+    ls.raster_ls = w->fmt == PT_FORMAT_CSV ? NULL : &rls;   /* CSV: no pixel rows */
     ls.warn = on_warn;
     ls.nearclip.begin = clip_begin;
     ls.nearclip.cut = clip_cut;
-    ls.nearclip.ud = &w;
+    ls.nearclip.ud = w;
     ls.clip = ls.nearclip;
-    ls.ud = &w;
-    pt_course_camera(s, &cam);
-    w.cam = cam;
-    w.explain = explain;
-    if ((w.t = malloc(sizeof *w.t)) != NULL &&
-        (!explain || (w.prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w.prev)) != NULL)) {
-        pt_trace_init(w.t, f, (pt_format)fmt, precision);
-        header(&w, &cam);
-        rc = pt_course_render(s, fb, &ls);
-        if (rc == 0 && !w.failed) summary(&w);
-        pt_trace_flush(w.t);                 /* write errors: in ferror(f) */
+    pt_course_lane_ls(&ls, &w->ln);
+    ls.ud = w;
+    if (w->ln.taken) header(w, &w->cam);     /* piece 0: lane 0's */
+    rc = pt_course_render(w->s, fb, &ls);
+    if (rc == 0 && !w->failed && w->ln.taken) summary(w);   /* the last piece: lane 0's */
+    pt_trace_flush(w->t);                    /* write errors: in ferror(f) */
+    return rc != 0 || w->failed ? -1 : 0;
+}
+
+/* The trace on two threads: 0, -1 (out of memory), or 1 when no second
+** thread is to be had (nothing has run). */
+static int walk_lanes(FILE *f, const pt_scene *s, int fmt, int precision, int explain,
+                      pt_course_cuts *cuts, pt_fb *fb)
+{
+    walker *w = calloc(2, sizeof *w);
+    int rc = 1;
+
+    if (!w) return 1;
+    if (walker_init(&w[0], f, s, fmt, precision, explain) == 0 &&
+        walker_init(&w[1], f, s, fmt, precision, explain) == 0) {
+        void *ws[2];
+        ws[0] = &w[0];
+        ws[1] = &w[1];
+        rc = pt_course_lanes(s, fb, cuts, walk, ws);
     }
-    if (rc != 0 || w.failed) snprintf(err, errlen, "pipetrace: out of memory");
-    rc = rc != 0 || w.failed ? -1 : 0;
-    free(w.t);
-    pt_sbuf_free(&w.sb);
-    pt_sbuf_free(&w.names);
-    pt_sbuf_free(&w.pix);
-    free(w.org);
-    if (w.prev) {
-        size_t k;
-        for (k = 0; k < s->nmodels; k++) free(w.prev[k].v);
-        free(w.prev);
+    walker_free(&w[0]);
+    walker_free(&w[1]);
+    free(w);
+    return rc;
+}
+
+int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int explain,
+                    pt_course_cuts *cuts, pt_fb *fb, char *err, size_t errlen)
+{
+    walker w;
+    int rc = cuts && cuts->threads == 2 ? walk_lanes(f, s, fmt, precision, explain, cuts, fb)
+                                        : 1;
+
+    if (rc == 1) {                           /* one thread */
+        rc = walker_init(&w, f, s, fmt, precision, explain) == 0 ? walk(&w, fb) : -1;
+        walker_free(&w);
     }
+    if (rc != 0) snprintf(err, errlen, "pipetrace: out of memory");
     return rc;
 }

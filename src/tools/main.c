@@ -283,8 +283,9 @@ static void heap_in_huge_pages(void)
 
 /* The threads the trace is formatted on (tlanes.h): --threads, else 2 when
 ** this process may run on two CPUs or more (not under `taskset -c 1`) and
-** scene s has more vertices than one piece of the trace holds (a smaller
-** one's trace is a piece or two: a second thread would only wait). */
+** scene s has more vertices than one piece of the trace holds (renderer 4's
+** or renderers 7 and 9's; a smaller one's trace is a piece or two: a second
+** thread would only wait). */
 static int threads_wanted(const cli *c, const pt_scene *s)
 {
     long cpus = sysconf(_SC_NPROCESSORS_ONLN);
@@ -293,7 +294,8 @@ static int threads_wanted(const cli *c, const pt_scene *s)
 
     if (c->threads) return c->threads;
     for (k = 0; k < s->nmodels; k++) nv += s->models[k].nv;
-    if (nv <= PT_PIECE_VERTICES) return 1;
+    if (nv <= (s->renderer == 7 || s->renderer == 9 ? PT_COURSE_PIECE_VERTICES
+                                                     : PT_PIECE_VERTICES)) return 1;
 #if defined(__linux__) && defined(CPU_COUNT)
     {
         cpu_set_t set;
@@ -312,6 +314,10 @@ static int run_course(const cli *c, const pt_scene *s)
     pt_outfile tout = {NULL, NULL, NULL, NULL}, iout = {NULL, NULL, NULL, NULL};
     char err[PT_ERRLEN];
     int rc = 0, kraft = c->fmt == PT_FORMAT_KRAFT || c->fmt == PT_FORMAT_KRAFT_PIXELS;
+    pt_course_cuts cuts;
+
+    memset(&cuts, 0, sizeof cuts);
+    cuts.threads = threads_wanted(c, s);
 
     if (c->staged || c->opt.vertex || c->opt.model || c->opt.all_stages ||
         c->opt.raw_lookat) {
@@ -326,9 +332,9 @@ static int run_course(const cli *c, const pt_scene *s)
     }
     if (!rc && c->trace) {
         if (pt_outfile_open(&tout, c->trace, err, sizeof err) != 0) rc = 1;
-        else if ((kraft ? pt_course_log(tout.f, s, c->kdbg, &fb, err, sizeof err)
+        else if ((kraft ? pt_course_log(tout.f, s, c->kdbg, &cuts, &fb, err, sizeof err)
                         : pt_course_trace(tout.f, s, (int)c->fmt, c->precision, c->explain,
-                                          &fb, err, sizeof err)) != 0)
+                                          &cuts, &fb, err, sizeof err)) != 0)
             rc = 1;
         else {
             errno = 0;                      /* what the last write said, if one failed */

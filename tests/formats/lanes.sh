@@ -22,13 +22,7 @@ scenes=$(for s in docs/examples/*.scene docs/examples/shapes/*.scene docs/exerci
          done)
 # shellcheck disable=SC2086 # one argument a scene
 "$B/test_lanes" $scenes "$tmp/bench.scene" > "$tmp/lanes" 2>&1
-grep -v '^[0-9]* passed, [0-9]* failed$' "$tmp/lanes" | head -20
-counts=$(tail -1 "$tmp/lanes")
-case $counts in
-    *" passed, "*" failed") passed=$((passed + ${counts%% passed*}))
-                            f=${counts#*passed, }; failed=$((failed + ${f%% failed}));;
-    *) failed=$((failed + 1)); echo "FAIL test_lanes printed no count";;
-esac
+add_counts "$tmp/lanes" test_lanes
 check "lanes-1.1 some 100 scenes load" test "$(echo "$scenes" | wc -l)" -ge 100
 
 # ---- the command line: the same bytes on one thread and on two

@@ -6,6 +6,8 @@
 #                               (also in $tmp/out and $tmp/err)
 # feed INPUT ARGS...            the same with INPUT (backslash escapes: printf %b)
 #                               on standard input
+# add_counts FILE PROGRAM        adds the counts of FILE, a test program's output,
+#                               to this script's (its other lines printed, 20 at most)
 # report                        prints "N passed, N failed"; fails if any failed
 unset COLUMNS                   # step and why wrap to it: tests set it themselves
 tmp=$(mktemp -d)
@@ -28,6 +30,16 @@ feed() {
     input=$1; shift
     printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
     out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
+}
+
+add_counts() {
+    grep -v '^[0-9]* passed, [0-9]* failed$' "$1" | head -20
+    counts=$(tail -1 "$1")
+    case $counts in
+        *" passed, "*" failed") passed=$((passed + ${counts%% passed*}))
+                                f=${counts#*passed, }; failed=$((failed + ${f%% failed}));;
+        *) failed=$((failed + 1)); echo "FAIL $2 printed no count";;
+    esac
 }
 
 report() {

@@ -1,0 +1,159 @@
+/*
+** tests/unit/test_lanes79.c -- renderers 7 and 9: a trace on two threads is the trace on one
+** See LICENSE for copyright and license.
+**
+** Usage: test_lanes79 [--both N] SCENE...  Each scene of renderer 7 or 9 is
+** traced by pt_course_trace() and logged by pt_course_log() on one thread and
+** on two (io/tlanes.h), in every format (JSON Lines and text with and
+** without the formulas, CSV, the course's log at its default switches and
+** with every one), with the driver's pieces of its default size and with
+** tiny ones (a cut before every model's step and every primitive, or every
+** few), so that the lanes take turns often and, each piece's text in a
+** block of its own, run out of free blocks and wait for each other.  Trace,
+** image and result must be the same.  With --both N, the first N scenes'
+** pieces must go to both threads (the JSON Lines trace at the default size;
+** tried a few times, since which thread gets there first is the
+** scheduler's to say).
+*/
+#define _POSIX_C_SOURCE 200809L       /* open_memstream */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testhelp.h"
+#include "core/scene.h"
+#include "core/fb.h"
+#include "io/trace.h"
+#include "io/trace_course.h"
+#include "io/trace_kraft.h"
+
+typedef struct result {
+    char *text;                  /* the trace */
+    size_t len;
+    pt_fb fb;                    /* the image */
+    int rc;
+    uint64_t taken[2];           /* the pieces each thread wrote (two threads) */
+} result;
+
+/* The ways of writing: a format of pt_course_trace, or the log (kraft). */
+typedef struct way {
+    const char *name;
+    int fmt;                     /* PT_FORMAT_*; PT_FORMAT_KRAFT: pt_course_log */
+    int explain;
+    unsigned dbg;                /* the log's switches */
+} way;
+
+static const way ways[] = {
+    {"jsonl", PT_FORMAT_JSONL, 0, 0}, {"jsonl --explain", PT_FORMAT_JSONL, 1, 0},
+    {"text", PT_FORMAT_TEXT, 0, 0}, {"text --explain", PT_FORMAT_TEXT, 1, 0},
+    {"csv", PT_FORMAT_CSV, 0, 0}, {"kraft", PT_FORMAT_KRAFT, 0, PT_KDBG_SCENE},
+    {"kraft all", PT_FORMAT_KRAFT, 0, PT_KDBG_ALL},
+};
+
+/* The sizes of the pieces tried (vertices, primitives, pixels): the
+** driver's own, a cut everywhere, a few. */
+static const uint64_t sizes[][3] = {{0, 0, 0}, {1, 1, 1}, {3, 2, 40}};
+
+/* Write s the way wy into *r, on one thread (cut NULL) or two. */
+static void trace(result *r, const pt_scene *s, const way *wy, const uint64_t *cut)
+{
+    pt_course_cuts cuts;
+    char err[512];
+    FILE *f;
+
+    memset(r, 0, sizeof *r);
+    r->rc = -1;
+    memset(&cuts, 0, sizeof cuts);
+    if (cut) {
+        cuts.threads = 2;
+        cuts.vertices = cut[0];
+        cuts.prims = cut[1];
+        cuts.pixels = cut[2];
+    }
+    if (pt_fb_init(&r->fb, s->fb_w, s->fb_h, s->background) != 0) return;
+    if (!(f = open_memstream(&r->text, &r->len))) return;
+    r->rc = wy->fmt == PT_FORMAT_KRAFT
+          ? pt_course_log(f, s, wy->dbg, cut ? &cuts : NULL, &r->fb, err, sizeof err)
+          : pt_course_trace(f, s, wy->fmt, 6, wy->explain, cut ? &cuts : NULL, &r->fb, err,
+                            sizeof err);
+    if (ferror(f)) r->rc = -2;
+    fclose(f);                              /* r->text, r->len: the trace */
+    r->taken[0] = cuts.taken[0];
+    r->taken[1] = cuts.taken[1];
+}
+
+static void result_free(result *r)
+{
+    free(r->text);
+    pt_fb_free(&r->fb);
+}
+
+static int same(const result *a, const result *b)
+{
+    return a->rc == 0 && b->rc == 0 && a->text && b->text && a->len == b->len &&
+           memcmp(a->text, b->text, a->len) == 0 && a->fb.w == b->fb.w && a->fb.h == b->fb.h &&
+           memcmp(a->fb.rgb, b->fb.rgb, 3 * (size_t)a->fb.w * (size_t)a->fb.h) == 0;
+}
+
+/* Every way and size of scene path; with both, its pieces on both threads. */
+static void check_scene(const char *path, int both)
+{
+    pt_scene s;
+    char err[512], what[600];
+    size_t k, z;
+
+    if (pt_scene_load(&s, path, err, sizeof err) != 0) {
+        printf("FAIL %s: %s\n", path, err);
+        pt_test_failed++;
+        return;
+    }
+    if (s.renderer != 7 && s.renderer != 9) {
+        printf("FAIL %s: not renderer 7 or 9\n", path);
+        pt_test_failed++;
+        pt_scene_free(&s);
+        return;
+    }
+    for (k = 0; k < sizeof ways / sizeof ways[0]; k++) {
+        result one;
+        trace(&one, &s, &ways[k], NULL);
+        for (z = 0; z < sizeof sizes / sizeof sizes[0]; z++) {
+            result two;
+            trace(&two, &s, &ways[k], sizes[z]);
+            snprintf(what, sizeof what, "lanes79-1 %s, %s, pieces %d: the trace and image of "
+                     "one thread", path, ways[k].name, (int)z);
+            PT_CHECK(what, same(&one, &two));
+            snprintf(what, sizeof what, "lanes79-2 %s, %s, pieces %d: the first thread wrote "
+                     "the first piece and the last", path, ways[k].name, (int)z);
+            PT_CHECK(what, two.taken[0] >= 2);
+            result_free(&two);
+        }
+        result_free(&one);
+    }
+    if (both) {
+        result two;
+        int tries;
+        for (tries = 0; tries < 5; tries++) {
+            trace(&two, &s, &ways[0], sizes[0]);
+            if (two.taken[0] > 1 && two.taken[1] > 0) break;
+            result_free(&two);
+            two.text = NULL;
+            two.fb.rgb = NULL;
+        }
+        snprintf(what, sizeof what, "lanes79-3 %s: pieces on both threads (%llu and %llu)",
+                 path, (unsigned long long)two.taken[0], (unsigned long long)two.taken[1]);
+        PT_CHECK(what, two.taken[0] > 1 && two.taken[1] > 0);
+        result_free(&two);
+    }
+    pt_scene_free(&s);
+}
+
+int main(int argc, char **argv)
+{
+    int k = 1, both = 0;
+
+    if (argc > 2 && strcmp(argv[1], "--both") == 0) {
+        both = atoi(argv[2]);
+        k = 3;
+    }
+    for (; k < argc; k++, both--) check_scene(argv[k], both > 0);
+    return pt_test_report();
+}
