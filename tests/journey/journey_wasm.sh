@@ -14,21 +14,12 @@
 #     in the same build directory brings them back.
 # Without chromium the browser part is skipped (the builds without are not).
 exe=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
+. tests/lib/testlib.sh
 browser=
 for b in chromium chromium-browser google-chrome; do
     if command -v "$b" >/dev/null 2>&1; then browser=$b; break; fi
 done
 command -v python3 >/dev/null 2>&1 || browser=
-
-check() {   # check DESCRIPTION COMMAND...: the command must succeed
-    d=$1; shift
-    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
-    else failed=$((failed + 1)); echo "FAIL $d"; fi
-}
 
 url() { printf 'file://%s%s' "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" "$2"; }
 
@@ -42,14 +33,7 @@ sliders() { # sliders PAGE QUERY: tests/journey/journey_sliders.html's DOM after
 }
 
 compare() { # compare SCENE|- DOM: tests/journey/journey_wasm.py, its counts added to ours
-    python3 tests/journey/journey_wasm.py "$exe" "$2" "$1" "$tmp" > "$tmp/py" 2>&1
-    grep -E '^(FAIL|  )' "$tmp/py" | head -20
-    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
-    if [ -z "$last" ]; then
-        tail -5 "$tmp/py"; echo "FAIL journey_wasm.py crashed on $1"; failed=$((failed + 1)); return
-    fi
-    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
-    passed=$((passed + p)); failed=$((failed + f))
+    pyrun tests/journey/journey_wasm.py "$exe" "$2" "$1" "$tmp"
 }
 
 move() {    # move SCENE|- VERTEX QUERY: make the page, move its sliders, compare
@@ -201,5 +185,4 @@ if mk WASM_CC=pt-no-such-clang; then
 else
     failed=$((failed + 1)); echo "FAIL wasm-1 make WASM_CC=pt-no-such-clang"; tail -5 "$tmp/make.log"
 fi
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+report

@@ -6,6 +6,10 @@
 #                               (also in $tmp/out and $tmp/err)
 # feed INPUT ARGS...            the same with INPUT (backslash escapes: printf %b)
 #                               on standard input
+# pyrun SCRIPT ARGS...          runs python3 SCRIPT ARGS (SCRIPT "-": the script on
+#                               standard input) and adds the "N passed, N failed"
+#                               it ends with to ours, its FAIL lines shown; no last
+#                               line counts as a failure; without python3, nothing
 # report                        prints "N passed, N failed"; fails if any failed
 unset COLUMNS                   # step and why wrap to it: tests set it themselves
 tmp=$(mktemp -d)
@@ -28,6 +32,18 @@ feed() {
     input=$1; shift
     printf '%b' "$input" | "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
     out=$(cat "$tmp/out"); err=$(cat "$tmp/err")
+}
+
+pyrun() {
+    command -v python3 >/dev/null 2>&1 || return 0
+    python3 "$@" > "$tmp/py" 2>&1
+    grep -E '^(FAIL|  )' "$tmp/py" | head -20
+    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
+    if [ -z "$last" ]; then
+        tail -5 "$tmp/py"; echo "FAIL python3 $* crashed"; failed=$((failed + 1)); return 0
+    fi
+    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
+    passed=$((passed + p)); failed=$((failed + f))
 }
 
 report() {
