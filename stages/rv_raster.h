@@ -147,8 +147,10 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
 ** sets *x_fb, *y_fb (Java ints) and returns the pixel's index y_fb*W + x_fb
 ** in the pixel array, in Java's int arithmetic (an x_fb past W lands in the
 ** next row), or -1 when that index lies outside the W*H array (the
-** course's "Bad pixel coordinate": nothing is written).  Every pixel the
-** rasterizer writes goes through it.  This function can't fail. */
+** course's "Bad pixel coordinate": nothing is written).  The rasterizer
+** writes each pixel there (inside a viewport that lies inside the
+** framebuffer by a shortcut to the same element).  This function can't
+** fail. */
 int pt_rv_fb_index(const pt_rv_raster_par *par, int x_vp, int y_vp, int *x_fb, int *y_fb);
 
 /* Fill the viewport with its background as Viewport.clearVP() does: pixel
