@@ -202,6 +202,8 @@ $B/builtin.c: docs/examples/builtin.scene Makefile | $B
 # (Debian: clang, lld); `make WASM=no` builds the page without its sliders,
 # as a build without them does.  A student build (STAGE_x=FILE.c) has none
 # unless WASM=yes: the file may call what the build without libc lacks.
+# rv_raster.c is there for pt_rv_fb_index() alone: wasm-ld keeps only what
+# the glue calls, so its drawing (pt_color.c's pow) is left out.
 # $B/wasm-choice remembers the choice.
 WASM_CC  = clang
 WASM_LD  = wasm-ld
@@ -222,7 +224,7 @@ WASM_SRC = src/wasm/pt_wasm.c src/wasm/pt_wasm_libm.c stages/pt_stage.c stages/p
            src/wasm/pt_wasm_alloc.c stages/rv_model.c stages/r7_model2view.c \
            stages/r7_view2camera.c stages/r9_matrix.c stages/r9_model2world.c \
            stages/r9_world2view.c stages/r9_view2camera.c stages/rv_nearclip.c \
-           stages/rv_project.c stages/rv_clip.c
+           stages/rv_project.c stages/rv_clip.c stages/rv_raster.c
 $(shell mkdir -p $B && { echo '$(WASM)' | cmp -s - $B/wasm-choice || echo '$(WASM)' > $B/wasm-choice; })
 $B/stages.wasm: $(WASM_SRC) stages/*.h stages/wasm/*.h src/wasm/*.h $B/wasm-choice $(CHOSEN)
 	rm -rf $B/wasm-obj && mkdir -p $B/wasm-obj

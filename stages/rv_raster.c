@@ -82,6 +82,17 @@ static void start(draw *d, const pt_rv_raster_par *par, unsigned char *rgb,
     for (k = 0; k < 3; k++) d->bg[k] = pt_color_float(par->bg[k]);   /* bg / 255f */
 }
 
+int pt_rv_fb_index(const pt_rv_raster_par *par, int x_vp, int y_vp, int *x_fb, int *y_fb)
+{
+    int x = wrap32((int64_t)par->x_ul + x_vp);                     /* x_ul + x */
+    int y = wrap32((int64_t)par->y_ul + y_vp);                     /* y_ul + y */
+    int idx = wrap32((int64_t)wrap32((int64_t)y * par->W) + x);    /* y*width + x */
+
+    *x_fb = x;
+    *y_fb = y;
+    return idx < 0 || (int64_t)idx >= (int64_t)par->W * par->H ? -1 : idx;
+}
+
 /* FrameBuffer.setPixelVP(x, y, c) -> setPixelFB(x_ul + x, y_ul + y, c):
 ** the pixel's bytes b, or a "bad" report when the index is outside. */
 static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
@@ -98,11 +109,8 @@ static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
         d->n++;
         return;
     }
-    x = wrap32((int64_t)par->x_ul + x_vp);
-    y = wrap32((int64_t)par->y_ul + y_vp);
-    idx = wrap32((int64_t)wrap32((int64_t)y * par->W) + x);        /* y*width + x */
-
-    if (idx < 0 || (int64_t)idx >= (int64_t)par->W * par->H) {
+    idx = pt_rv_fb_index(par, x_vp, y_vp, &x, &y);
+    if (idx < 0) {
         if (d->ls && d->ls->bad) d->ls->bad(d->ls->ud, x, y, par->W, par->H);
         return;
     }

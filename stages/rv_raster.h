@@ -143,6 +143,16 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,
                            const pt_rv_raster_ls *ls);
 
+/* FrameBuffer.setPixelVP(x_vp, y_vp) -> setPixelFB(x_ul + x_vp, y_ul + y_vp):
+** sets *x_fb, *y_fb (Java ints) and returns the pixel's index y_fb*W + x_fb
+** in the pixel array, in Java's int arithmetic (an x_fb past W lands in the
+** next row), or -1 when that index lies outside the W*H array (the
+** course's "Bad pixel coordinate": nothing is written).  The rasterizer
+** writes each pixel there (inside a viewport that lies inside the
+** framebuffer by a shortcut to the same element).  This function can't
+** fail. */
+int pt_rv_fb_index(const pt_rv_raster_par *par, int x_vp, int y_vp, int *x_fb, int *y_fb);
+
 /* Fill the viewport with its background as Viewport.clearVP() does: pixel
 ** by pixel through setPixelVP, so a viewport reaching past the framebuffer
 ** wraps and reports its "bad" pixels to ls (NULL: nobody).  Returns the

@@ -84,7 +84,7 @@ accuracy         8 sh tests/cli/accuracy.sh $B/pipetrace
 journey          6 sh tests/journey/journey.sh $B/pipetrace
 journey79        4 sh tests/journey/journey79.sh $B/pipetrace
 browser         42 sh tests/journey/journey_browser.sh $B/pipetrace
-wasm            36 sh tests/journey/journey_wasm.sh $B/pipetrace
+wasm            48 sh tests/journey/journey_wasm.sh $B/pipetrace
 wasm-libm        1 $B/test_wasm_libm
 docs             2 sh tests/repo/docs.sh $B/pipetrace
 valgrind        16 sh tests/cli/valgrind.sh $B/pipetrace"}

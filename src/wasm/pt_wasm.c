@@ -32,22 +32,27 @@
 ** r9_world2view, r7_view2camera or r9_view2camera, rv_nearclip (when on),
 ** rv_project, rv_clip; then the rasterizer's first two steps for the
 ** vertex's pixel, as io/explain_course.c takes them (s3_image2pixel's
-** x_pp = 0.5 + w/2.001 * (x_p + 1), Java's Math.round).  That order is a copy of course.c's;
-** tests/journey/journey_wasm.sh ties it to the command line, bit for bit.
+** x_pp = 0.5 + w/2.001 * (x_p + 1), Java's Math.round), and its place in
+** the W x H framebuffer and pixel array as the rasterizer writes it
+** (pt_rv_fb_index(): y_fb*W + x_fb in Java ints, rows wrap).  That order is
+** a copy of course.c's; tests/journey/journey_wasm.sh ties it to the
+** command line, bit for bit.
 **
 **   pt_wasm_course_in(nv, nc, np)   the address of the inputs (PT_WASM_CIN_*,
 **                                   then the model), the arena emptied
 **   pt_wasm_course_in_at()          the same address, the arena kept
 **   pt_wasm_course_ops(n)           the address of n operations of renderer 9's
 **                                   position matrix (PT_WASM_COP doubles each)
-**   pt_wasm_course_run(renderer, perspective, nearclip, v, w, h, x_ul, y_ul, nops)
+**   pt_wasm_course_run(renderer, perspective, nearclip, v, w, h, x_ul, y_ul, W, H, nops)
 **                                   nops >= 0: the matrix built from the
 **                                   operations (r9_matrix.c), sin and cos
 **                                   from the table
 **   pt_wasm_course_have(st)         1 when vertex v exists after course stage st
 **   pt_wasm_course_at(st, k)        its x, y, z, w (k = 0..3) after st
 **   pt_wasm_course_px(k)            x_vp, y_vp, x_fb, y_fb (k = 0..3); k = 4:
-**                                   1 when it has a pixel (inside after the clip)
+**                                   1 when it has a pixel (inside after the clip);
+**                                   k = 5: its index in the pixel array, -1
+**                                   when the rasterizer drops it (outside W*H)
 */
 #include <stdlib.h>                         /* src/wasm/stdlib.h: the arena */
 #include <string.h>                         /* src/wasm/string.h: strcmp */
@@ -63,6 +68,7 @@
 #include "stages/rv_nearclip.h"
 #include "stages/rv_project.h"
 #include "stages/rv_clip.h"
+#include "stages/rv_raster.h"
 #include "stages/s3_image2pixel.h"
 #include "stages/pt_round.h"
 #include "wasm/pt_wasm_alloc.h"
@@ -239,7 +245,7 @@ static double *cin;
 static int cnv, cnc, cnp;
 static int chave[PT_NCOURSE];
 static pt_vec4 cat[PT_NCOURSE];
-static int64_t cpx[5];
+static int64_t cpx[6];
 
 EXPORT("pt_wasm_course_in") double *pt_wasm_course_in(int nv, int nc, int np);
 double *pt_wasm_course_in(int nv, int nc, int np)
@@ -297,7 +303,8 @@ double *pt_wasm_course_in_at(void)
 }
 
 /* Run vertex v (1-based) of the inputs' model through the course's stages,
-** renderer 9's matrix from the inputs or (nops >= 0) from the operations.
+** renderer 9's matrix from the inputs or (nops >= 0) from the operations,
+** into a w x h viewport at (x_ul, y_ul) of a W x H framebuffer.
 ** Returns 0; -1 when out of arena or a size is below 1; -2 when a clip
 ** stage refused a colour (the course's render throws); -3 when an angle's
 ** sin or cos is not in the table (nothing is run). */
@@ -329,9 +336,9 @@ static int course_matrix(pt_jmat *mat, int n)
 
 EXPORT("pt_wasm_course_run") int pt_wasm_course_run(int renderer, int perspective, int nearclip,
                                                     int v, int w, int h, int x_ul, int y_ul,
-                                                    int nops);
+                                                    int W, int H, int nops);
 int pt_wasm_course_run(int renderer, int perspective, int nearclip, int v, int w, int h,
-                       int x_ul, int y_ul, int nops)
+                       int x_ul, int y_ul, int W, int H, int nops)
 {
     pt_rv_model m = {0};
     pt_rv_camera cam;
@@ -340,10 +347,10 @@ int pt_wasm_course_run(int renderer, int perspective, int nearclip, int v, int w
     size_t k, at = (size_t)v - 1;
     int st, rc;
 
-    if (!cin || w < 1 || h < 1 || v < 1) return -1;
+    if (!cin || w < 1 || h < 1 || W < 1 || H < 1 || v < 1) return -1;
     pt_wasm_alloc_reset(0);
     for (st = 0; st < PT_NCOURSE; st++) chave[st] = 0;
-    for (k = 0; k < 5; k++) cpx[k] = 0;
+    for (k = 0; k < 6; k++) cpx[k] = 0;
     cam.perspective = perspective != 0;
     cam.l = cin[PT_WASM_CIN_L]; cam.r = cin[PT_WASM_CIN_R]; cam.b = cin[PT_WASM_CIN_B]; cam.t = cin[PT_WASM_CIN_T];
     cam.n = cin[PT_WASM_CIN_N];
@@ -383,10 +390,14 @@ int pt_wasm_course_run(int renderer, int perspective, int nearclip, int v, int w
         pp = pt_image2pixel(ip, w, h, 0);
         cpx[4] = !(__builtin_fabs(p.x) > 1 || __builtin_fabs(p.y) > 1);   /* the clip kept it */
         if (cpx[4]) {
+            pt_rv_raster_par par = {0};
+            int x_fb, y_fb;
             cpx[0] = (int64_t)pt_java_round(pp.x) - 1;          /* x_vp = Math.round(x_pp) - 1 */
             cpx[1] = (int64_t)h - (int64_t)pt_java_round(pp.y); /* y_vp = h - Math.round(y_pp) */
-            cpx[2] = (int64_t)x_ul + cpx[0];                     /* x_fb = x_ul + x_vp */
-            cpx[3] = (int64_t)y_ul + cpx[1];                     /* y_fb = y_ul + y_vp */
+            par.w = w; par.h = h; par.x_ul = x_ul; par.y_ul = y_ul; par.W = W; par.H = H;
+            cpx[5] = pt_rv_fb_index(&par, (int)cpx[0], (int)cpx[1], &x_fb, &y_fb);
+            cpx[2] = x_fb;                                       /* x_fb = x_ul + x_vp */
+            cpx[3] = y_fb;                                       /* y_fb = y_ul + y_vp */
         }
     }
     return 0;
@@ -411,7 +422,7 @@ double pt_wasm_course_at(int st, int k)
 EXPORT("pt_wasm_course_px") int64_t pt_wasm_course_px(int k);
 int64_t pt_wasm_course_px(int k)
 {
-    return k >= 0 && k < 5 ? cpx[k] : 0;
+    return k >= 0 && k < 6 ? cpx[k] : 0;
 }
 
 /* strcmp for stages/pt_stage.c's pt_stage_by_name() (src/wasm/string.h). */

@@ -12,7 +12,10 @@
 
 int strcmp(const char *a, const char *b);
 
-/* stages/pt_mat4.c clears a matrix: memory.fill (-mbulk-memory). */
+/* stages/pt_mat4.c clears a matrix: memory.fill (-mbulk-memory); stages/
+** rv_raster.c copies pixels: memory.copy (its drawing is not in the module,
+** but the file is compiled whole). */
 #define memset(d, c, n)  __builtin_memset((d), (c), (n))
+#define memcpy(d, s, n)  __builtin_memcpy((d), (s), (n))
 
 #endif

@@ -91,7 +91,7 @@ echo "$cases" | while read -r id sc v kind; do
     echo "$?" > "$tmp/$id.rc"
 done
 echo "$cases" > "$tmp/cases"
-python3 - "$tmp" > "$tmp/py" 2>&1 <<'EOF'
+pyrun - "$tmp" <<'EOF'
 import json, re, sys, xml.etree.ElementTree as ET
 tmp = sys.argv[1]
 passed = failed = 0
@@ -186,24 +186,9 @@ for line in open(tmp + "/cases").read().split("\n"):
         t_in_note("the image plane's note gives the clip's t from the trace", "image", "clip")
 print("%d passed, %d failed" % (passed, failed))
 EOF
-grep -E '^FAIL' "$tmp/py" | head -20
-last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
-if [ -z "$last" ]; then
-    tail -5 "$tmp/py"; echo "FAIL j79-3 the python check crashed"; failed=$((failed + 1))
-else
-    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
-    passed=$((passed + p)); failed=$((failed + f))
-fi
 
 py() {      # py MODE ARGS...: tests/journey/journey_check.py, its counts added to ours
-    python3 tests/journey/journey_check.py "$@" > "$tmp/py" 2>&1
-    grep -E '^(FAIL|  )' "$tmp/py" | head -20
-    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
-    if [ -z "$last" ]; then
-        tail -5 "$tmp/py"; echo "FAIL journey_check.py $1 crashed"; failed=$((failed + 1)); return
-    fi
-    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
-    passed=$((passed + p)); failed=$((failed + f))
+    pyrun tests/journey/journey_check.py "$@"
 }
 # ---- the page's data against the SVG (no browser); the image against the render
 py html79 "$exe" "$tmp/p.html" $c/r7-near-01.scene near

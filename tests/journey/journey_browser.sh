@@ -32,27 +32,11 @@ if [ -z "$browser" ] || ! command -v python3 >/dev/null 2>&1; then
     echo "0 passed, 0 failed"
     exit 0
 fi
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. tests/lib/testlib.sh
 mkdir -p "$shots"
-passed=0
-failed=0
-
-check() {   # check DESCRIPTION COMMAND...: the command must succeed
-    d=$1; shift
-    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
-    else failed=$((failed + 1)); echo "FAIL $d"; fi
-}
 
 py() {      # py MODE ARGS...: tests/journey/journey_check.py, its counts added to ours
-    python3 tests/journey/journey_check.py "$@" > "$tmp/py" 2>&1
-    grep -E '^(FAIL|  )' "$tmp/py" | head -20
-    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
-    if [ -z "$last" ]; then
-        tail -5 "$tmp/py"; echo "FAIL journey_check.py $1 crashed"; failed=$((failed + 1)); return
-    fi
-    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
-    passed=$((passed + p)); failed=$((failed + f))
+    pyrun tests/journey/journey_check.py "$@"
 }
 
 chrome() {  # chrome ARGS... URL: one headless run, its own profile, no network
@@ -206,5 +190,4 @@ check "web-3 screenshot of a renderer 7 page in presenter mode" \
 py color "$shots/journey-present-r7.png" d62728
 py color "$shots/journey-matrix.png" d62728
 echo "screenshots in $shots" >&2
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+report

@@ -11,12 +11,14 @@
 # bits, so equal means bit for bit), and #coords against the #coords the
 # command line's own page gives for NEW.  When the page says it has no camera,
 # pipetrace must refuse NEW with the same reason.  A page of the course's
-# renderer 7 or 9 (sliders l, r, b, t, n, the translation or view vector, the
-# viewport): the camera, near, translate or view and viewport lines are
-# written again, and each stage's values compared with the trace's record of
-# the vertex at that stage (a clip stage leaves a vertex it did not make as
-# the stage before gave it), the viewport and framebuffer pixel with the
-# command line's page.  Prints "N passed, N failed".
+# renderer 7 or 9 (sliders l, r, b, t, n, the translation or view vector,
+# renderer 9's matrix operations' arguments, the viewport, the framebuffer):
+# the camera, near, translate or view, matrix, viewport and framebuffer lines
+# are written again, and each stage's values (renderer 9: w too) compared
+# with the trace's record of the vertex at that stage (a clip stage leaves a
+# vertex it did not make as the stage before gave it), the viewport and
+# framebuffer pixel with the command line's page, the index with the
+# course's y_fb*W + x_fb in Java ints.  Prints "N passed, N failed".
 import html
 import json
 import os
@@ -55,9 +57,9 @@ def rewrite(text, p, model):
 
 
 def rewrite79(text, p, model):
-    """A renderer 7 or 9 scene with the page's camera, near plane, viewport and
-    the position's translation (7) or the camera's view vector and its
-    matrix's angles and translations (9)."""
+    """A renderer 7 or 9 scene with the page's camera, near plane, viewport,
+    framebuffer size and the position's translation (7) or the camera's view
+    vector and its matrix's angles, translations, scale factors and rows (9)."""
     n = p["n"]
     near = n[1:] if n.startswith("-") else "-" + n
     out, here, proj = [], False, "perspective"
@@ -69,6 +71,9 @@ def rewrite79(text, p, model):
             continue
         if d in ("near", "viewport", "view") or (d == "translate" and here and "x_t" in p):
             continue
+        if d == "framebuffer":                   # framebuffer W H
+            words[1:3] = [p["W"], p["H"]]
+            line = " ".join(words)
         if d == "model":
             here, op = len(words) > 1 and words[1] == model, 0
         if here and "view_x" in p and d in ("matrix", "matrix-pre", "matrix-set", "translate"):
@@ -77,6 +82,12 @@ def rewrite79(text, p, model):
                 words[3 if words[2] in ("x", "y", "z") else 2] = p["angle_%d" % op]
             if "tx_%d" % op in p:
                 words[len(words) - 3:] = [p["%s_%d" % (c, op)] for c in ("tx", "ty", "tz")]
+            if "scale_%d" % op in p:             # scale S
+                words[2:] = [p["scale_%d" % op]]
+            if "sx_%d" % op in p:                # scale X Y Z
+                words[2:] = [p["%s_%d" % (c, op)] for c in ("sx", "sy", "sz")]
+            if "a00_%d" % op in p:               # rows A00 A01 ... A33
+                words[2:] = [p["a%d%d_%d" % (i // 4, i % 4, op)] for i in range(16)]
             line = " ".join(words)
         out.append(line)
         if d == "model" and here and "x_t" in p:
@@ -113,9 +124,11 @@ def course(exe, src, p, page, info, tmp):
     before = None
     for st in order:
         got = rec.get(st) or (before if st in ("nearclip", "clip") else None)
-        want = ["none"] * 3 if got is None else [bits(got[k]) for k in ("x", "y", "z")]
+        keys = [k for k in ("x", "y", "z", "w") if got is not None and k in got]  # r9: w too
+        want = ["none"] * 4 if got is None else [bits(got[k]) for k in keys]
+        have = page.get(st) if got is None else (page.get(st) or [])[:len(keys)]
         check("slider79-3 %s %s v%s %s: the page's values are the trace's" % (
-            os.path.basename(src), model, v, st), page.get(st) == want,
+            os.path.basename(src), model, v, st), have == want,
             "page %s, pipetrace %s" % (page.get(st), want))
         before = got
     h = os.path.join(tmp, "moved.html")
@@ -135,10 +148,30 @@ def course(exe, src, p, page, info, tmp):
         page.get("framebuffer") == (list(fb.groups()) if fb else ["none", "none"]),
         "page %s %s, pipetrace %s" % (page.get("viewport"), page.get("framebuffer"),
                                       x["here"][names.index("viewport")]))
+    # the index: the course's setPixelFB, y_fb*W + x_fb in Java ints (a row
+    # past W wraps into the next), none outside the W*H array; where the
+    # framebuffer holds the pixel, the command line's page says the same
+    W, H = int(p["W"]), int(p["H"])
+    want = ["none"]
+    if fb:
+        xf, yf = int(fb.group(1)), int(fb.group(2))
+        i = jint(jint(yf * W) + xf)
+        want = [str(i)] if 0 <= i < W * H else ["none"]
+        cli = re.search(r"index = y_fb\*W \+ x_fb = .* = (-?\d+)$", x["here"][names.index("viewport")])
+        check("slider79-7 %s v%s: the command line's index, where it gives one, is y_fb*W + x_fb" % (
+            model, v), cli is None or [cli.group(1)] == want, "%s / %s" % (cli and cli.group(1), want))
+    check("slider79-8 %s v%s: the index is the course's y_fb*W + x_fb (rows wrap), none outside"
+          " the array" % (model, v), page.get("index") == want,
+          "page %s, want %s" % (page.get("index"), want))
     shown = info["shown"][0]
     check("slider79-6 %s v%s %s: #coords is the command line's page's" % (model, v, shown),
           info["coords"][0] == x["coords"][names.index(shown)],
           "page %r, pipetrace %r" % (info["coords"][0], x["coords"][names.index(shown)]))
+
+
+def jint(v):
+    """v as a Java int: its low 32 bits, two's complement."""
+    return (v + 2 ** 31) % 2 ** 32 - 2 ** 31
 
 
 def bits(x):

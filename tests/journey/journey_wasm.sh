@@ -6,7 +6,9 @@
 #   - a page by PIPETRACE is loaded in headless Chromium through
 #     tests/journey/journey_sliders.html, which moves its sliders (translation,
 #     viewport, framebuffer; the matrix camera's fov, eye, near and far
-#     too); tests/journey/journey_wasm.py writes the scene again
+#     too; renderers 7 and 9's camera, view, matrix operations (angle,
+#     translation, scale, rows), viewport and framebuffer, the viewport
+#     sticking out); tests/journey/journey_wasm.py writes the scene again
 #     with the values the page shows, runs PIPETRACE on it and compares every
 #     stage's values bit for bit, and #coords with the command line's page;
 #   - a pipetrace built where clang is not found, or with `make WASM=no`,
@@ -14,21 +16,12 @@
 #     in the same build directory brings them back.
 # Without chromium the browser part is skipped (the builds without are not).
 exe=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
+. tests/lib/testlib.sh
 browser=
 for b in chromium chromium-browser google-chrome; do
     if command -v "$b" >/dev/null 2>&1; then browser=$b; break; fi
 done
 command -v python3 >/dev/null 2>&1 || browser=
-
-check() {   # check DESCRIPTION COMMAND...: the command must succeed
-    d=$1; shift
-    if "$@" >/dev/null 2>&1; then passed=$((passed + 1))
-    else failed=$((failed + 1)); echo "FAIL $d"; fi
-}
 
 url() { printf 'file://%s%s' "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" "$2"; }
 
@@ -42,14 +35,7 @@ sliders() { # sliders PAGE QUERY: tests/journey/journey_sliders.html's DOM after
 }
 
 compare() { # compare SCENE|- DOM: tests/journey/journey_wasm.py, its counts added to ours
-    python3 tests/journey/journey_wasm.py "$exe" "$2" "$1" "$tmp" > "$tmp/py" 2>&1
-    grep -E '^(FAIL|  )' "$tmp/py" | head -20
-    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
-    if [ -z "$last" ]; then
-        tail -5 "$tmp/py"; echo "FAIL journey_wasm.py crashed on $1"; failed=$((failed + 1)); return
-    fi
-    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
-    passed=$((passed + p)); failed=$((failed + f))
+    pyrun tests/journey/journey_wasm.py "$exe" "$2" "$1" "$tmp"
 }
 
 move() {    # move SCENE|- VERTEX QUERY: make the page, move its sliders, compare
@@ -123,6 +109,28 @@ else
         $c/r9-mat-07-order-TRS.scene > "$tmp/rot.scene"
     move79 "$tmp/rot.scene" 3 '&set=view_z:0.5,tz_1:-5.5&stage=2'
     move79 "$tmp/rot.scene" 3 '&set=angle_2:-360&stage=3'
+    # renderer 9's matrix: a scale's factors (one slider for `scale S`, one a
+    # factor for `scale X Y Z`), the 16 entries of `rows`, the last row too
+    # (it moves only w_w), of `matrix` and of `matrix-pre`
+    move79 $c/r9-mat-07-order-TRS.scene 1 '&set=sx_3:1.35,sy_3:-0.4,sz_3:2.05&stage=2'
+    sed 's/^matrix scale 1.0 2.0 0.5/matrix scale 0.75/' $c/r9-mat-07-order-TRS.scene \
+        > "$tmp/scale.scene"
+    move79 "$tmp/scale.scene" 2 '&set=scale_3:1.25,angle_2:15&stage=3'
+    move79 "$tmp/scale.scene" 5 '&set=scale_3:-0.5&stage=8'
+    sed 's/^matrix translate 0.0 0.5 -6.0/matrix rows 1 0 0 0 0 1 0 0.5 0 0 1 -6 0 0 0 1/' \
+        $c/r9-mat-07-order-TRS.scene > "$tmp/rows.scene"
+    move79 "$tmp/rows.scene" 3 '&set=a00_1:0.5,a03_1:0.35,a12_1:-0.25,a23_1:-5.5,a30_1:0.1,a31_1:-0.15,a32_1:0.05,a33_1:1.2&stage=2'
+    move79 "$tmp/rows.scene" 7 '&set=a01_1:0.3,a02_1:-0.2,a10_1:0.15,a11_1:1.5,a13_1:0.4,a20_1:-0.1,a21_1:0.25,a22_1:0.8&stage=6'
+    move79 tests/course/r9/mat-29.scene 4 '&set=a11_3:0.9,a20_3:0.35,angle_2:40&stage=8'
+    move79 tests/course/r9/mat-16.scene 2 '&set=sy_2:0.6,a03_3:0.2,angle_4:85&stage=2'
+    # the framebuffer's size W, H, the viewport sticking out of it: an x_fb
+    # past W lands in the next row and one left of 0 in the row above (the
+    # course's y_fb*W + x_fb), an index past the array is none
+    move79 $c/r9-vp-02.scene 3 '&set=W:50&stage=8'
+    move79 $c/r9-vp-02.scene 3 '&set=x_ul:-70&stage=8'
+    move79 $c/r9-vp-02.scene 3 '&set=H:60,x_ul:-70&stage=8'
+    move79 $c/r7-near-01.scene 1 '&set=W:30,H:25,w:40,x_ul:-3,y_ul:4&stage=7'
+    move79 $c/r9-aa-04.scene 1 '&set=W:250,H:7,y_ul:-2&stage=8'
     move79 $c/r9-aa-04.scene 1 '&set=b:-2.5,n:0.5,w:30,x_ul:20&stage=8'
     move79 $c/r9-clip-12-through-x.scene 3 '&set=r:0.6,w:33&stage=7'
     move79 $c/r9-vp-02.scene 3 '&set=y_ul:10,h:60,view_z:0.5&stage=5'
@@ -201,5 +209,4 @@ if mk WASM_CC=pt-no-such-clang; then
 else
     failed=$((failed + 1)); echo "FAIL wasm-1 make WASM_CC=pt-no-such-clang"; tail -5 "$tmp/make.log"
 fi
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+report

@@ -8,6 +8,10 @@
 #                               on standard input
 # add_counts FILE PROGRAM        adds the counts of FILE, a test program's output,
 #                               to this script's (its other lines printed, 20 at most)
+# pyrun SCRIPT ARGS...          runs python3 SCRIPT ARGS (SCRIPT "-": the script on
+#                               standard input) and adds the "N passed, N failed"
+#                               it ends with to ours, its FAIL lines shown; no last
+#                               line counts as a failure; without python3, nothing
 # report                        prints "N passed, N failed"; fails if any failed
 unset COLUMNS                   # step and why wrap to it: tests set it themselves
 tmp=$(mktemp -d)
@@ -40,6 +44,18 @@ add_counts() {
                                 f=${counts#*passed, }; failed=$((failed + ${f%% failed}));;
         *) failed=$((failed + 1)); echo "FAIL $2 printed no count";;
     esac
+}
+
+pyrun() {
+    command -v python3 >/dev/null 2>&1 || return 0
+    python3 "$@" > "$tmp/py" 2>&1
+    grep -E '^(FAIL|  )' "$tmp/py" | head -20
+    last=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$tmp/py" | tail -1)
+    if [ -z "$last" ]; then
+        tail -5 "$tmp/py"; echo "FAIL python3 $* crashed"; failed=$((failed + 1)); return 0
+    fi
+    p=${last%% passed*}; f=${last#*, }; f=${f%% failed*}
+    passed=$((passed + p)); failed=$((failed + f))
 }
 
 report() {

@@ -29,9 +29,10 @@ static const char style[] =
 "#live h2{font-size:12px;text-transform:uppercase;letter-spacing:.06em;color:#5f6670;"
 "margin:6px 0}\n"
 "#sliders{display:grid;grid-template-columns:repeat(auto-fill,minmax(230px,1fr));gap:4px 16px}\n"
-"#sliders label{display:flex;align-items:center;gap:6px;font-size:14px}\n"
-"#sliders input{flex:1}\n"
-"#sliders output{font-family:'DejaVu Sans Mono',Menlo,Consolas,monospace;min-width:4.5em}\n"
+"#sliders label{display:flex;align-items:center;gap:6px;font-size:14px;min-width:0}\n"
+"#sliders input{flex:1;min-width:60px}\n"
+"#sliders output{font-family:'DejaVu Sans Mono',Menlo,Consolas,monospace;min-width:4.5em;"
+"max-width:9em;overflow:hidden;text-overflow:ellipsis;white-space:nowrap}\n"
 "#livetable{border-collapse:collapse;margin-top:8px;font-size:14px}\n"
 "#livetable th{text-align:left;padding:2px 12px 2px 0;font-weight:normal;color:#5f6670}\n"
 "#livetable td{font-family:'DejaVu Sans Mono',Menlo,Consolas,monospace;padding:2px 0}\n"
@@ -158,7 +159,7 @@ static const char *const script[] = {
 "      var v = k < 3 ? t[k] : P[n], r = lim[n] || around(v), i = slider(n);\n"
 "      i.min = String(r[0]); i.max = String(r[1]); i.step = String(r[2]);\n"
 "      if (Number(i.value) !== v) i.value = String(v);\n"
-"      $('o_' + n).textContent = num(v);\n"
+"      $('o_' + n).textContent = $('o_' + n).title = num(v);   /* title: all of it */\n"
 "    });\n"
 "  }\n"
 "  function text(s, vals) {                /* as pipetrace explain writes #coords */\n"
@@ -262,36 +263,43 @@ static const char *const course_script[] = {
 "  var R = W.renderer, C = W.cam.map(dbl), MV = W.move.map(dbl), P = {};\n"
 "  var mv = R === 9 ? ['view_x', 'view_y', 'view_z'] : ['x_t', 'y_t', 'z_t'];\n"
 "  var O = W.ops || [], os = [];            /* r9: the matrix's operations and their sliders */\n"
-"  O.forEach(function (o, k) { o.sliders.forEach(function (n, a) { os.push([n, k, a]); }); });\n"
+"  O.forEach(function (o, k) {             /* [name, operation, the arguments it gives] */\n"
+"    o.sliders.forEach(function (n) { os.push([n[0], k, n[1]]); });\n"
+"  });\n"
 "  var names = ['l', 'r', 'b', 't', 'n'].concat(mv, os.map(function (o) { return o[0]; }),\n"
-"                                               ['w', 'h', 'x_ul', 'y_ul']);\n"
+"                                               ['w', 'h', 'x_ul', 'y_ul', 'W', 'H']);\n"
 "  function scene() {\n"
 "    P = {l: C[0], r: C[1], b: C[2], t: C[3], n: C[4], w: W.vp[0], h: W.vp[1],\n"
-"         x_ul: W.vp[2], y_ul: W.vp[3]};\n"
+"         x_ul: W.vp[2], y_ul: W.vp[3], W: W.fb[0], H: W.fb[1]};\n"
 "    mv.forEach(function (n, k) { P[n] = MV[k]; });\n"
-"    os.forEach(function (o) { P[o[0]] = dbl(O[o[1]].a[o[2]]); });\n"
+"    os.forEach(function (o) { P[o[0]] = dbl(O[o[1]].a[o[2][0]]); });\n"
 "  }\n"
 "  scene();\n"
 "  sliders(names, function (n, k, x) { P[n] = x; moved = true; run(); });\n"
-"  function ranges() {                     /* the viewport inside the framebuffer */\n"
-"    P.w = Math.min(Math.max(P.w, 1), W.fb[0]); P.h = Math.min(Math.max(P.h, 1), W.fb[1]);\n"
-"    P.x_ul = Math.min(Math.max(P.x_ul, 0), W.fb[0] - P.w);\n"
-"    P.y_ul = Math.min(Math.max(P.y_ul, 0), W.fb[1] - P.h);\n"
-"    var lim = {w: [1, W.fb[0], 1], h: [1, W.fb[1], 1], x_ul: [0, W.fb[0] - P.w, 1],\n"
-"               y_ul: [0, W.fb[1] - P.h, 1]};\n"
+"  function ranges() {                     /* the course lets the viewport stick out: */\n"
+"    var fw = Math.min(W.max, Math.max(4 * W.fb[0], 256)),   /* a viewport's size past */\n"
+"        fh = Math.min(W.max, Math.max(4 * W.fb[1], 256));   /* each edge, or the scene's */\n"
+"    P.W = Math.min(Math.max(P.W, 1), fw); P.H = Math.min(Math.max(P.H, 1), fh);\n"
+"    var lim = {w: [1, Math.max(W.vp[0], P.W), 1], h: [1, Math.max(W.vp[1], P.H), 1],\n"
+"               W: [1, fw, 1], H: [1, fh, 1]};\n"
+"    P.w = Math.min(Math.max(P.w, 1), lim.w[1]); P.h = Math.min(Math.max(P.h, 1), lim.h[1]);\n"
+"    lim.x_ul = [Math.min(W.vp[2], -P.w), Math.max(W.vp[2], P.W), 1];\n"
+"    lim.y_ul = [Math.min(W.vp[3], -P.h), Math.max(W.vp[3], P.H), 1];\n"
+"    P.x_ul = Math.min(Math.max(P.x_ul, lim.x_ul[0]), lim.x_ul[1]);\n"
+"    P.y_ul = Math.min(Math.max(P.y_ul, lim.y_ul[0]), lim.y_ul[1]);\n"
 "    os.forEach(function (o) { if (O[o[1]].angle) lim[o[0]] = W.angles; });\n"
 "    names.forEach(function (n) {\n"
 "      var v = P[n], r = lim[n] || around(v), i = slider(n);\n"
 "      i.min = String(r[0]); i.max = String(r[1]); i.step = String(r[2]);\n"
 "      if (Number(i.value) !== v) i.value = String(v);\n"
-"      $('o_' + n).textContent = num(v);\n"
+"      $('o_' + n).textContent = $('o_' + n).title = num(v);   /* title: all of it */\n"
 "    });\n"
 "  }\n"
 "  var live = {}, liveFor = null;          /* the rows' texts for vertex liveFor */\n"
-"  function row(name, text, bits) {\n"
+"  function row(name, text, bits, more) {  /* more: shown in the table, not in #coords */\n"
 "    var tr = document.createElement('tr'), th = document.createElement('th'),\n"
 "        td = document.createElement('td');\n"
-"    tr.dataset.stage = name; th.textContent = name; td.textContent = text;\n"
+"    tr.dataset.stage = name; th.textContent = name; td.textContent = text + (more || '');\n"
 "    td.dataset.values = bits.join(',');\n"
 "    tr.appendChild(th); tr.appendChild(td); $('livetable').appendChild(tr);\n"
 "    live[name] = text;\n"
@@ -308,10 +316,12 @@ static const char *const course_script[] = {
 "    if (O.length) {                       /* the operations, the sliders' arguments in */\n"
 "      F = new Float64Array(E.memory.buffer, E.pt_wasm_course_ops(O.length), W.cop * O.length);\n"
 "      O.forEach(function (o, k) { F.set([o.mul, o.kind].concat(o.a.map(dbl)), W.cop * k); });\n"
-"      os.forEach(function (o) { F[W.cop * o[1] + 2 + o[2]] = P[o[0]]; });\n"
+"      os.forEach(function (o) {           /* scale S: one slider gives all three */\n"
+"        o[2].forEach(function (a) { F[W.cop * o[1] + 2 + a] = P[o[0]]; });\n"
+"      });\n"
 "    }\n"
 "    rc = E.pt_wasm_course_run(R, W.perspective ? 1 : 0, W.nearclip ? 1 : 0, x.v, P.w, P.h,\n"
-"                              P.x_ul, P.y_ul, O.length ? O.length : -1);\n"
+"                              P.x_ul, P.y_ul, P.W, P.H, O.length ? O.length : -1);\n"
 "    if (rc !== 0) {\n"
 "      note.textContent = rc === -2 ? 'A clip stage made a colour java.awt.Color refuses ' +\n"
 "        '(pipetrace would say so for this scene).' : rc === -3 ? 'No sin and cos for these ' +\n"
@@ -322,12 +332,13 @@ static const char *const course_script[] = {
 "    }\n"
 "    W.stages.forEach(function (s) {\n"
 "      if (!E.pt_wasm_course_have(s.id)) {\n"
-"        row(s.name, null, ['none', 'none', 'none']);\n"
+"        row(s.name, null, ['none', 'none', 'none', 'none']);\n"
 "        return;\n"
 "      }\n"
 "      if (born === null) born = s.name;\n"
-"      var v = [0, 1, 2].map(function (k) { return E.pt_wasm_course_at(s.id, k); });\n"
-"      row(s.name, s.coord + ' = (' + v.map(num).join(', ') + ')', v.map(hex));\n"
+"      var v = [0, 1, 2, 3].map(function (k) { return E.pt_wasm_course_at(s.id, k); });\n"
+"      row(s.name, s.coord + ' = (' + v.slice(0, 3).map(num).join(', ') + ')', v.map(hex),\n"
+"          s.name === 'world' ? ', w_w = ' + num(v[3]) : '');   /* rows' last row */\n"
 "    });\n"
 "    W.stages.forEach(function (s) {       /* before the vertex is made: why not */\n"
 "      if (live[s.name] === null) {\n"
@@ -340,9 +351,16 @@ static const char *const course_script[] = {
 "    if (E.pt_wasm_course_px(4)) {\n"
 "      row('viewport', '(x_vp, y_vp) = (' + px[0] + ', ' + px[1] + ')', px.slice(0, 2));\n"
 "      row('framebuffer', '(x_fb, y_fb) = (' + px[2] + ', ' + px[3] + ')', px.slice(2));\n"
+"      var i = E.pt_wasm_course_px(5), x_fb = Number(px[2]), y_fb = Number(px[3]);\n"
+"      var out = x_fb < 0 || x_fb >= P.W || y_fb < 0 || y_fb >= P.H;\n"
+"      row('index', i < 0 ? 'idx: none, y_fb*W + x_fb lies outside the pixel array (the ' +\n"
+"          'course drops the pixel: Bad pixel coordinate)' : 'idx = ' + i + (out ? ' (' +\n"
+"          '(x_fb, y_fb) lies outside the framebuffer: y_fb*W + x_fb wraps)' : ''),\n"
+"          [i < 0 ? 'none' : String(i)]);\n"
 "    } else {\n"
 "      row('viewport', W.notyet[2], ['none', 'none']);\n"
 "      row('framebuffer', '(x_fb, y_fb): none', ['none', 'none']);\n"
+"      row('index', 'idx: none', ['none']);\n"
 "    }\n"
 "    note.textContent = (moved ? 'Recomputed' : 'Computed') + ' in this page by ' +\n"
 "      'pipetrace\\'s own stage files compiled to WebAssembly, for ' + D.models[x.m].name +\n"
@@ -350,8 +368,8 @@ static const char *const course_script[] = {
 "      '), n = ' + num(P.n) + ', (' + mv.join(', ') + ') = (' +\n"
 "      mv.map(function (n) { return num(P[n]); }).join(', ') + ')' +\n"
 "      os.map(function (o) { return ', ' + o[0] + ' ' + num(P[o[0]]); }).join('') +\n"
-"      ', viewport ' + P.w + ' x ' +\n"
-"      P.h + ' at (x_ul, y_ul) = (' + P.x_ul + ', ' + P.y_ul + ')' + (moved ?\n"
+"      ', viewport ' + P.w + ' x ' + P.h + ' at (x_ul, y_ul) = (' + P.x_ul + ', ' + P.y_ul +\n"
+"      '), framebuffer ' + P.W + ' x ' + P.H + (moved ?\n"
 "      '.  The panel, \"with the numbers\" and \"next\" (dimmed) still show the scene\\'s ' +\n"
 "      'own numbers.' : '.');\n"
 "    document.body.classList.toggle('live', moved);\n"
@@ -554,8 +572,42 @@ static void add_angle(pt_sbuf *sb, double theta, int first)
     pt_sbuf_add(sb, "]");
 }
 
-/* Renderer 9's matrix operations, their sliders (a rotate's angle, a
-** translate's x, y, z) and the sin and cos table for the angles. */
+/* Append ["NAME",[I,...]] per slider of the K-th operation o, each with the
+** arguments o->a[I] it gives: a rotate's angle (angle_K), a translate's x,
+** y, z (tx_K, ty_K, tz_K), a scale's factor: one (scale_K, all three) when
+** the three are equal, as `scale S` gives them, else one each (sx_K, sy_K,
+** sz_K), and the 16 entries of rows (a00_K ... a33_K, row by row). */
+static void add_op_sliders(pt_sbuf *sb, const pt_matop *o, size_t k)
+{
+    static const char *const xyz[2][3] = {{"tx", "ty", "tz"}, {"sx", "sy", "sz"}};
+    unsigned long K = (unsigned long)k;
+    int i;
+
+    switch (o->kind) {
+    case PT_MATOP_IDENTITY:
+        break;
+    case PT_MATOP_ROTATE:
+        pt_sbuf_addf(sb, "[\"angle_%lu\",[0]]", K);
+        break;
+    case PT_MATOP_SCALE:
+    case PT_MATOP_TRANSLATE:
+        if (o->kind == PT_MATOP_SCALE && o->a[0] == o->a[1] && o->a[1] == o->a[2]) {
+            pt_sbuf_addf(sb, "[\"scale_%lu\",[0,1,2]]", K);
+            break;
+        }
+        for (i = 0; i < 3; i++)
+            pt_sbuf_addf(sb, "%s[\"%s_%lu\",[%d]]", i ? "," : "",
+                         xyz[o->kind == PT_MATOP_SCALE][i], K, i);
+        break;
+    case PT_MATOP_ROWS:
+        for (i = 0; i < 16; i++)
+            pt_sbuf_addf(sb, "%s[\"a%d%d_%lu\",[%d]]", i ? "," : "", i / 4, i % 4, K, i);
+        break;
+    }
+}
+
+/* Renderer 9's matrix operations, their sliders (add_op_sliders) and the
+** sin and cos table for the angles. */
 static void add_ops(pt_sbuf *sb, const pt_jwasm_course *cw)
 {
     size_t k;
@@ -572,12 +624,8 @@ static void add_ops(pt_sbuf *sb, const pt_jwasm_course *cw)
             add_bits(sb, o->a[i]);
         }
         pt_sbuf_add(sb, "],\"sliders\":[");
-        if (o->kind == PT_MATOP_ROTATE)
-            pt_sbuf_addf(sb, "\"angle_%lu\"],\"angle\":true}", (unsigned long)k + 1);
-        else if (o->kind == PT_MATOP_TRANSLATE)
-            pt_sbuf_addf(sb, "\"tx_%lu\",\"ty_%lu\",\"tz_%lu\"]}", (unsigned long)k + 1,
-                         (unsigned long)k + 1, (unsigned long)k + 1);
-        else pt_sbuf_add(sb, "]}");
+        add_op_sliders(sb, o, k + 1);
+        pt_sbuf_add(sb, o->kind == PT_MATOP_ROTATE ? "],\"angle\":true}" : "]}");
     }
     pt_sbuf_add(sb, "],\n\"sincos\":[");
     for (i = -PT_JOURNEY_ANGLE; i <= PT_JOURNEY_ANGLE; i++) {
@@ -630,9 +678,9 @@ void pt_journey_wasm_course(pt_sbuf *sb, const pt_scene *s, const pt_jwasm_cours
     pt_sbuf_add(sb, "<script type=\"application/json\" id=\"wasmdata\">\n{\"wasm\":\"");
     for (k = 0; pt_journey_wasm_b64[k]; k++) pt_sbuf_add(sb, pt_journey_wasm_b64[k]);
     pt_sbuf_addf(sb, "\",\n\"renderer\":%d,\"perspective\":%s,\"nearclip\":%s,"
-                 "\"vp\":[%d,%d,%d,%d],\"fb\":[%d,%d],\"cam\":[", s->renderer,
+                 "\"vp\":[%d,%d,%d,%d],\"fb\":[%d,%d],\"max\":%d,\"cam\":[", s->renderer,
                  j->cam.cam.perspective ? "true" : "false", s->nearclip ? "true" : "false",
-                 s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h);
+                 s->vp_w, s->vp_h, s->vp_x, s->vp_y, s->fb_w, s->fb_h, PT_MAX_SIZE);
     add_bits(sb, j->cam.cam.l); pt_sbuf_add(sb, ",");
     add_bits(sb, j->cam.cam.r); pt_sbuf_add(sb, ",");
     add_bits(sb, j->cam.cam.b); pt_sbuf_add(sb, ",");

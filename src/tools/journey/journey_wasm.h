@@ -51,14 +51,18 @@ void pt_journey_wasm(pt_sbuf *sb, const pt_scene *s);
 ** journey_course.c): sliders l, r, b, t, n (#s_l ... #s_n), the
 ** translation #s_x_t ... #s_z_t (renderer 7) or the view vector #s_view_x
 ** ... #s_view_z and, for the K-th operation of the position's matrix, a
-** rotate's angle #s_angle_K or a translate's #s_tx_K, #s_ty_K, #s_tz_K
-** (renderer 9), the viewport #s_w, #s_h, #s_x_ul, #s_y_ul;
-** #livetable's rows model, [world,] view, camera, nearclip, image, clip
-** (reals as IEEE bits, "none" before the vertex is made), viewport and
-** framebuffer (integers, "none" outside the view square).  The module
-** runs the position's whole model through the course's stages, so a
-** vertex a clip makes is followed as well.  On allocation failure
-** sb->failed is set. */
+** rotate's angle #s_angle_K, a translate's #s_tx_K, #s_ty_K, #s_tz_K, a
+** scale's factor #s_scale_K (its three factors equal, as `scale S` gives
+** them) or #s_sx_K, #s_sy_K, #s_sz_K, or rows' 16 entries #s_a00_K ...
+** #s_a33_K (renderer 9), the viewport #s_w, #s_h, #s_x_ul, #s_y_ul and the
+** framebuffer #s_W, #s_H (the viewport may stick out of it, as the course
+** allows); #livetable's rows model, [world,] view, camera, nearclip,
+** image, clip (x, y, z, w as IEEE bits, "none" before the vertex is made),
+** viewport and framebuffer (integers, "none" outside the view square) and
+** index (the pixel array's element the rasterizer writes, rows wrapping;
+** "none" outside the array).  The module runs the position's whole model
+** through the course's stages, so a vertex a clip makes is followed as
+** well.  On allocation failure sb->failed is set. */
 typedef struct pt_jwasm_course {
     const pt_cx_journey *j;      /* the camera, translation, matrix (any vertex's) */
     const pt_rv_model *m;        /* the position's model as the driver built it */
