@@ -18,7 +18,6 @@
 #include "io/explain_text.h"
 #include "io/explain.h"
 #include "core/pipetrace.h"
-#include "core/raster.h"
 
 /* ===== listening to the render ===== */
 
@@ -761,9 +760,8 @@ static void step_viewport(pt_xt *t, const pt_cx_journey *j, const char *sep)
     pt_xt_int(t, x_fb, 0); pt_xt_add(t, ", "); pt_xt_int(t, y_fb, 0); pt_xt_add(t, ")");
     pt_xt_add(t, sep);
     if (x_fb < 0 || x_fb >= j->par.W || y_fb < 0 || y_fb >= j->par.H) {
-        pt_fb_pixel px;                     /* the viewport sticks out: the course's index */
-        int64_t idx = pt_raster_fb_pixel(j->px_x, j->px_y, j->par.x_ul, j->par.y_ul,
-                                         j->par.W, j->par.H, 1, &px);
+        int xf, yf;                         /* the viewport sticks out: the course's index */
+        int64_t idx = pt_rv_fb_index(&j->par, (int)j->px_x, (int)j->px_y, &xf, &yf);
         pt_xt_add(t, "outside the framebuffer; the course's index y_fb*W + x_fb = ");
         pt_xt_int(t, y_fb, 0); pt_xt_add(t, "*"); pt_xt_int(t, j->par.W, 0);
         pt_xt_add(t, " + "); pt_xt_int(t, x_fb, 1); pt_xt_add(t, " = ");

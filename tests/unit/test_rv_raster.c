@@ -20,6 +20,7 @@
 #include <math.h>
 #include "testhelp.h"
 #include "stages/rv_raster.h"
+#include "core/raster.h"
 #include "io/rv_log_raster.h"
 #include "io/trace.h"
 
@@ -415,6 +416,48 @@ static void gamma_table(void)
              pt_rv_gamma_byte(NULL, 0.5f) == pt_color_byte(pt_gamma(0.5f)));
 }
 
+/* Renderers 7 and 9's index rule (pt_rv_fb_index, Java ints) and the core's
+** (pt_raster_fb_pixel with wrap, which renderer 4's rasterizer and the tools
+** ask) are two spellings of FrameBuffer.setPixelFB: within the scene's limits
+** (corner -16384..16384, sizes 1..16384) they name the same element, or both
+** none, for every viewport pixel; here the corners and edges of 2000
+** viewports of random size and place, and random pixels inside them. */
+static void index_rules(void)
+{
+    uint64_t r = 88172645463325252ULL;
+    int k, bad = 0, tried = 0;
+
+    for (k = 0; k < 2000; k++) {
+        pt_rv_raster_par par;
+        int j;
+        memset(&par, 0, sizeof par);
+#define RND(lo, hi) (r ^= r << 13, r ^= r >> 7, r ^= r << 17, (int)((lo) + (int64_t)(r % (uint64_t)((hi) - (lo) + 1))))
+        par.W = k % 3 ? RND(1, 64) : RND(1, 16384);
+        par.H = k % 3 ? RND(1, 64) : RND(1, 16384);
+        par.w = k % 2 ? RND(1, 2 * par.W) : RND(1, 16384);
+        par.h = k % 2 ? RND(1, 2 * par.H) : RND(1, 16384);
+        par.x_ul = k % 5 ? RND(-par.w, par.W) : RND(-16384, 16384);
+        par.y_ul = k % 5 ? RND(-par.h, par.H) : RND(-16384, 16384);
+        for (j = 0; j < 24; j++) {
+            int x = j < 4 ? (j & 1) * (par.w - 1) : RND(0, par.w - 1);
+            int y = j < 4 ? (j >> 1) * (par.h - 1) : RND(0, par.h - 1);
+            int xf, yf, i7 = pt_rv_fb_index(&par, x, y, &xf, &yf);
+            pt_fb_pixel px;
+            int64_t i4 = pt_raster_fb_pixel(x, y, par.x_ul, par.y_ul, par.W, par.H, 1, &px);
+            tried++;
+            if (i4 != i7 || px.x_fb != xf || px.y_fb != yf) {
+                if (!bad++)
+                    fprintf(stderr, "  viewport %d %d %d %d in %d x %d, pixel (%d, %d): "
+                            "rv %d, core %lld\n", par.x_ul, par.y_ul, par.w, par.h, par.W,
+                            par.H, x, y, i7, (long long)i4);
+            }
+        }
+#undef RND
+    }
+    PT_CHECK("rv-4.1 pt_rv_fb_index and pt_raster_fb_pixel name the same element (48,000 pixels)",
+             bad == 0 && tried == 48000);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : "tests/data/course-raster";
@@ -433,6 +476,7 @@ int main(int argc, char **argv)
     }
     if (list) fclose(list);
     extremes();
+    index_rules();
     /* java.awt.Color(float): the float product, then + 0.5 in double (NOTES 9.4) */
     PT_CHECK("rv-1.1 Color byte of 0.50392157f is 129 (widened first: 128)",
              pt_color_byte(0.50392157f) == 129 &&
