@@ -606,9 +606,20 @@ void pt_acc_run_free(pt_acc_run *r)
     memset(r, 0, sizeof *r);
 }
 
+/* Room for n things of size bytes (at least one), zeroed when zero is set:
+** a block's run computes every journey and clips every segment, so it
+** leaves them as malloc() gives them (zeroing them took a sixth of a large
+** scene's instructions). */
+static void *arr_alloc(size_t n, size_t size, int zero)
+{
+    return zero ? calloc(n ? n : 1, size) : malloc((n ? n : 1) * size);
+}
+
 /* The arrays of the journeys: j[k] (classic camera), or the matrix camera's
-** mj[k], seg[k] and its matrices.  Returns 0, or -1 when out of memory. */
-static int run_alloc(pt_acc_run *r)
+** mj[k], seg[k] and its matrices; zero: zeroed (a whole run's; a block's
+** run, every vertex used, leaves them unset).  Returns 0, or -1 when out of
+** memory. */
+static int run_alloc(pt_acc_run *r, int zero)
 {
     const pt_scene *s = r->s;
     size_t k, nm = s->nmodels ? s->nmodels : 1;
@@ -626,8 +637,8 @@ static int run_alloc(pt_acc_run *r)
         for (k = 0; k < s->nmodels; k++) {
             const pt_model *m = &s->models[k];
 
-            r->rj[k] = calloc(m->nv ? m->nv : 1, sizeof **r->rj);
-            r->rseg[k] = calloc(m->nseg ? m->nseg : 1, sizeof **r->rseg);
+            r->rj[k] = arr_alloc(m->nv, sizeof **r->rj, zero);
+            r->rseg[k] = arr_alloc(m->nseg, sizeof **r->rseg, zero);
             if (!r->rj[k] || !r->rseg[k]) return -1;
         }
         return 0;
@@ -635,7 +646,7 @@ static int run_alloc(pt_acc_run *r)
     if (!pt_acc_scene_rows(s)->mcam) {
         r->j = calloc(nm, sizeof *r->j);
         for (k = 0; r->j && k < s->nmodels; k++)
-            if ((r->j[k] = calloc(s->models[k].nv ? s->models[k].nv : 1, sizeof **r->j)) == NULL)
+            if ((r->j[k] = arr_alloc(s->models[k].nv, sizeof **r->j, zero)) == NULL)
                 return -1;
         return r->j ? 0 : -1;
     }
@@ -646,8 +657,8 @@ static int run_alloc(pt_acc_run *r)
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
 
-        r->mj[k] = calloc(m->nv ? m->nv : 1, sizeof **r->mj);
-        r->seg[k] = calloc(m->nseg ? m->nseg : 1, sizeof **r->seg);
+        r->mj[k] = arr_alloc(m->nv, sizeof **r->mj, zero);
+        r->seg[k] = arr_alloc(m->nseg, sizeof **r->seg, zero);
         if (!r->mj[k] || !r->seg[k]) return -1;
     }
     return 0;
@@ -716,7 +727,7 @@ static int run_fill(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     r->arith = a;
     r->choices = a == PT_ARITH_DD ? 0 : choices;
     r->line.real = 1;
-    if (run_alloc(r) != 0) { pt_acc_run_free(r); return -1; }
+    if (run_alloc(r, !all_used) != 0) { pt_acc_run_free(r); return -1; }
     free(r->used);
     if ((r->used = used_make(s, all_used)) == NULL) { pt_acc_run_free(r); return -1; }
     for (k = 0; k < s->nmodels; k++)

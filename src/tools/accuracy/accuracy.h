@@ -243,7 +243,7 @@ typedef struct pt_acc_run {
 
 /* Run scene s in arithmetic a with choices: every used vertex's journey, then
 ** (matrix camera: each segment clipped) the rasterizer into the image, which
-** keeps each pixel written once, with the last colour written there (32
+** keeps each pixel written once, with the last colour written there (64
 ** bytes a pixel at most; overdraw costs nothing).  The matrix camera ignores
 ** PT_ACC_TWO.  Returns 0, or -1 when out of memory, -2 when the image has
 ** more than maxpix pixels (then *r is empty).  pt_acc_run_make() takes

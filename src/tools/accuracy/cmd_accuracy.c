@@ -15,12 +15,13 @@
 ** below); the matrix camera has no 2.001, so that choice is only said not to
 ** apply.
 **
-** A block at a time: each run goes through the scene in blocks
-** (pt_acc_block: PT_ACC_BLOCK used vertices, then segments, model by model),
-** beside the reference's same block; each block is compared, timed and
-** freed before the next.  The errors add up in the order a whole-scene run
-** adds them, so the output is byte for byte what pt_acc_compare() of whole
-** runs gives.
+** A block at a time: the scene goes by in blocks (pt_acc_block:
+** PT_ACC_BLOCK used vertices, then segments, model by model); the
+** reference makes each block once, and every run makes the same block beside
+** it, is compared with it, timed and freed before the next run's; a run that
+** differs from another only in the DDA (y recomputed) draws that run's block
+** again.  The errors add up in the order a whole-scene run adds them, so the
+** output is byte for byte what pt_acc_compare() of whole runs gives.
 **
 ** Timing, per stage: a pass runs one stage's function (the one the error
 ** runs' journeys call) on the block's used vertices' inputs, prepared from
@@ -33,12 +34,12 @@
 ** median of --repeat of them is shown.  Without --no-time the time columns
 ** and the time table vary from run to run, everything else never.
 **
-** Memory: a block of each run at a time, beside the reference's; the used
-** flags (a byte a vertex); each run's image, the reference's to the end,
-** each other run's only while it is made and compared: each pixel once
-** (overdraw costs nothing), at most PT_ACC_MAXPIX of them.  The environment
-** variable PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that
-** a test reaches it with a small scene (docs/limits.md).
+** Memory: the reference's block and one run's at a time; the used flags (a
+** byte a vertex); the runs' images in one table (pt_acc_image): each pixel
+** lit by any run once (overdraw costs nothing), with each run's colour; at
+** most PT_ACC_MAXPIX pixels a run.  The environment variable
+** PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that a test
+** reaches it with a small scene (docs/limits.md).
 */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
