@@ -82,6 +82,9 @@ static const char usage[] =
 /* The runs compared, the reference first. */
 enum { RUN_DD, RUN_FLOAT, RUN_DOUBLE, RUN_TWO, RUN_FLOAT_RE, RUN_DOUBLE_RE, NRUNS };
 
+/* Every run draws into its own place of one image (pt_acc_image). */
+typedef char runs_fit_image[NRUNS <= PT_ACC_MAXIMG ? 1 : -1];
+
 static const struct { pt_arith arith; unsigned choices; } run_of[NRUNS] = {
     { PT_ARITH_DD, 0 }, { PT_ARITH_FLOAT, 0 }, { PT_ARITH_DOUBLE, 0 },
     { PT_ARITH_DOUBLE, PT_ACC_TWO }, { PT_ARITH_FLOAT, PT_ACC_RECOMPUTE },
