@@ -124,10 +124,10 @@ static int run_applies(const layout *L, int k)
 typedef struct study {
     const pt_scene *s;
     layout rows;                 /* the scene's pipeline's */
-    pt_acc_run run[NRUNS];       /* each run's summary (counts, image): the
-                                 ** reference's kept, each other run's only
-                                 ** while it is compared (then all zero); no
-                                 ** RUN_TWO where no row has 2.001 */
+    pt_acc_run run[NRUNS];       /* each run's summary: its counts (used
+                                 ** vertices, points made, segments culled,
+                                 ** pixels lit and written), no journeys and no
+                                 ** image; no RUN_TWO where no row has 2.001 */
     pt_acc_err err[NRUNS][PT_ACC_MAXROWS];
     timing t[NRUNS];             /* RUN_TWO: pixel and viewport; _RE runs: raster */
     int timed;
