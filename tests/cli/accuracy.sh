@@ -264,4 +264,43 @@ PIPETRACE_ACC_MAXPIX=4000 acc "$tmp/half.scene" --no-time
 check "acc-sh-8.4 ... under a cap of 4000: the 3999 pixels of both blocks in one image" \
     test "$rc" = 0 -a -n "$(grep '4097 segments, 3999 pixels in the reference image' "$tmp/out")"
 
+# segments whose ends are far apart in their model, neighbours or the same
+# vertex: a block of segments holds each end once, however they fall
+# (tests/data/accblock/scatter-*.out: the output from before accuracy ran in
+# blocks, without its first line, which names the scene)
+scatter() {     # scatter HEAD: 3000 vertices, 9000 segments: neighbours, far pairs, degenerate
+    awk -v head="$1" 'BEGIN {
+        s = 20261129; n = 3000
+        printf "%s\nmodel a\n", head
+        for (i = 0; i < 3 * n; i++) { s = (s * 16807) % 2147483647; r[i] = s / 2147483647 }
+        for (i = 0; i < n; i++)
+            printf "v %.6f %.6f %.6f\n", 4 * r[3 * i] - 2, 3 * r[3 * i + 1] - 1.5, 3 * r[3 * i + 2] - 1.5
+        for (q = 0; q < 3 * n; q++) {
+            s = (s * 16807) % 2147483647; a = 1 + s % n
+            s = (s * 16807) % 2147483647
+            if (q % 97 == 0) b = a
+            else if (s % 10 < 7) b = 1 + (a + s % 5) % n
+            else b = 1 + s % n
+            printf "l %d %d\n", a, b
+        }
+        print "translate 0 0 -3.5"
+    }'
+}
+fb='framebuffer 320 240'
+for d in classic matrix r7 r9; do
+    case $d in
+    classic) scatter "$fb" ;;
+    matrix) scatter "$fb
+camera lookat-target 0 0 0  0 0 -3.5  0 1 0
+projection perspective 60 auto 0.5 50" ;;
+    *) scatter "renderer ${d#r}
+$fb
+camera perspective" ;;
+    esac > "$tmp/scatter.scene"
+    acc "$tmp/scatter.scene" --no-time
+    tail -n +2 "$tmp/out" > "$tmp/out2"
+    check "acc-sh-8.5 $d: 9000 segments, far apart, neighbours and degenerate, in three blocks: the output of the whole-scene runs, byte for byte" \
+        sh -c 'test "$1" = 0 && cmp -s "$2" "$3"' _ "$rc" "$tmp/out2" tests/data/accblock/scatter-$d.out
+done
+
 report

@@ -1602,6 +1602,116 @@ static void test_rv_rows(void)
     PT_CHECK("acc-11.3 ... each with pixel (2.001) the last real row, viewport .. index after it", sane);
 }
 
+/* ===== a scene in blocks ===== */
+
+/* Segment blocks of tests/data/accblock/classic.scene: each block's vertices
+** are its segments' ends, each once, at the model's coordinates. */
+static void test_block_ends(void)
+{
+    pt_scene s;
+    pt_acc_block b;
+    unsigned char **used;
+    size_t q, i, nseg = 0, nends = 0, bad = 0;
+    unsigned char *seen = calloc(2 * PT_ACC_BLOCK, 1);
+
+    memset(&b, 0, sizeof b);
+    if (!load(&s, "tests/data/accblock/classic.scene") || !seen) { free(seen); return; }
+    used = pt_acc_used_make(&s);
+    if (!used || pt_acc_block_init(&b, &s, used) != 0) bad++;
+    while (!bad && pt_acc_block_next(&b)) {
+        const pt_model *m = &s.models[b.k];
+
+        if (!b.segs) continue;
+        memset(seen, 0, 2 * PT_ACC_BLOCK);
+        for (q = 0; q < b.m.nseg; q++) {
+            const pt_segment *g = &b.m.seg[q], *o = &m->seg[b.pos - b.m.nseg + q];
+
+            if (g->a >= b.m.nv || g->b >= b.m.nv) { bad++; break; }
+            bad += memcmp(&b.m.v[g->a], &m->v[o->a], sizeof *b.m.v) != 0;
+            bad += memcmp(&b.m.v[g->b], &m->v[o->b], sizeof *b.m.v) != 0;
+            bad += (g->a == g->b) != (o->a == o->b);
+            seen[g->a] = seen[g->b] = 1;
+        }
+        for (i = 0; i < b.m.nv; i++) bad += !seen[i];           /* each one an end */
+        for (i = 0; i < b.m.nv; i++)                            /* and once */
+            for (q = i + 1; q < b.m.nv && q < i + 8; q++)
+                bad += memcmp(&b.m.v[i], &b.m.v[q], sizeof *b.m.v) == 0;
+        nseg += b.m.nseg;
+        nends += b.m.nv;
+    }
+    PT_CHECK("acc-15.1 segment blocks: each segment's ends are the model's, its block's "
+             "vertices its segments' ends", bad == 0 && nseg == 21765);
+    PT_CHECK("acc-15.2 ... each end once a block: a sphere's 21,765 segments, neighbours "
+             "in their file, take about one vertex a segment, not two", nends > 0
+             && nends * 10 < 11 * nseg);
+    pt_acc_block_free(&b);
+    pt_acc_used_free(&s, used);
+    pt_scene_free(&s);
+    free(seen);
+}
+
+/* 1 when errors a and b are the same, field for field. */
+static int same_err(const pt_acc_err *a, const pt_acc_err *b)
+{
+    return a->max_abs == b->max_abs && a->sum_abs == b->sum_abs && a->max_ulp == b->max_ulp
+           && a->n == b->n && a->real == b->real && a->differ == b->differ && a->of == b->of
+           && a->left == b->left && a->entered == b->entered && a->decided == b->decided;
+}
+
+/* The rasterizer's rows of three runs made together a block at a time in one
+** image -- the reference, float, and float drawn again with y recomputed --
+** against those of whole runs (pt_acc_compare). */
+static void test_block_image(const char *path, const char *id)
+{
+    pt_scene s;
+    pt_acc_block b;
+    pt_acc_run ref, f, wr, wf, wre;
+    pt_acc_err e[PT_ACC_MAXROWS], er, ef, ere;
+    pt_acc_image *img;
+    unsigned char **used;
+    int rc = 0, raster, same;
+    char descr[200];
+
+    memset(&b, 0, sizeof b);
+    if (!load(&s, path)) return;
+    raster = pt_acc_scene_rows(&s)->nrows - 1;
+    used = pt_acc_used_make(&s);
+    img = pt_acc_image_make(&s, PT_ACC_MAXPIX, 3);
+    if (!used || !img || pt_acc_block_init(&b, &s, used) != 0) rc = -1;
+    while (rc == 0 && pt_acc_block_next(&b)) {
+        if ((rc = pt_acc_run_block(&ref, &b, PT_ARITH_DD, 0, img, 0)) != 0) break;
+        if ((rc = pt_acc_run_block(&f, &b, PT_ARITH_FLOAT, 0, img, 1)) == 0) {
+            if (b.segs) rc = pt_acc_draw_again(&f, PT_ACC_RECOMPUTE, img, 2);
+            pt_acc_run_free(&f);
+        }
+        pt_acc_run_free(&ref);
+    }
+    pt_acc_image_end(img, 0, 0, &er);
+    pt_acc_image_end(img, 0, 1, &ef);
+    pt_acc_image_end(img, 0, 2, &ere);
+    memset(&f, 0, sizeof f);
+    pt_acc_image_count(img, 0, &f);
+    pt_acc_run_make(&wr, &s, PT_ARITH_DD, 0);
+    pt_acc_run_make(&wf, &s, PT_ARITH_FLOAT, 0);
+    pt_acc_run_make(&wre, &s, PT_ARITH_FLOAT, PT_ACC_RECOMPUTE);
+    pt_acc_compare(&wr, &wr, e);
+    same = rc == 0 && same_err(&er, &e[raster]) && f.nimg == wr.nimg
+           && f.pixels == wr.pixels && wr.nimg > 1000;
+    pt_acc_compare(&wr, &wf, e);
+    same = same && same_err(&ef, &e[raster]) && ef.n > 1000;
+    pt_acc_compare(&wr, &wre, e);
+    same = same && same_err(&ere, &e[raster]) && ere.sum_abs != ef.sum_abs;
+    snprintf(descr, sizeof descr, "acc-15.%s %s: the reference, float and float with y "
+             "recomputed drawn a block at a time into one image: the whole runs' raster rows",
+             id, path);
+    PT_CHECK(descr, same);
+    pt_acc_run_free(&wr); pt_acc_run_free(&wf); pt_acc_run_free(&wre);
+    pt_acc_block_free(&b);
+    pt_acc_image_free(img);
+    pt_acc_used_free(&s, used);
+    pt_scene_free(&s);
+}
+
 int main(int argc, char **argv)
 {
     const char *dirs[3];
@@ -1645,5 +1755,9 @@ int main(int argc, char **argv)
     test_compare();
     test_mcompare();
     test_work();
+    test_block_ends();
+    test_block_image("tests/data/accblock/classic.scene", "3");
+    test_block_image("tests/data/accblock/matrix.scene", "4");
+    test_block_image("tests/data/accblock/r9.scene", "5");
     return pt_test_report();
 }

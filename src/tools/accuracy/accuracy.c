@@ -416,13 +416,22 @@ void pt_acc_mcam_matrices(const pt_acc_mcam *c, size_t k, pt_dd_mat4 *world,
 
 /* ===== errors ===== */
 
-/* The spacing of doubles at r: 2^(e - 52) for a normal r = 1.f * 2^e, the
-** subnormal spacing 2^-1074 below. */
+/* The spacing of doubles at a finite r: 2^(e - 52) for a normal r = 1.f *
+** 2^e, the subnormal spacing 2^-1074 below.  2^e is r with its sign and
+** fraction bits cleared, and 2^e * 2^-52 is exact (e >= -1022); ldexp(1.0,
+** ilogb(r) - 52), the same value, took a tenth of a large scene's
+** instructions (every value compared asks). */
 static double ulp_of(double r)
 {
+    uint64_t bits;
+    double e;
+
     r = fabs(r);
     if (r < DBL_MIN) return 0x1p-1074;
-    return ldexp(1.0, ilogb(r) - 52);
+    memcpy(&bits, &r, sizeof bits);
+    bits &= UINT64_C(0x7ff0000000000000);           /* 2^e */
+    memcpy(&e, &bits, sizeof e);
+    return e * 0x1p-52;
 }
 
 /* Count and return |v - ref|: 0 for the same non-finite value, infinite for
@@ -477,26 +486,42 @@ static int err_pix(pt_acc_err *e, pt_pix v, pt_pix ref)
 
 /* ===== runs ===== */
 
-/* What the rasterizer leaves while a run is made: the image so far, each
-** pixel written once with the last colour written there (a hash table by
-** index, open addressing, at most half full), the writes counted, and the
-** DDA's error against the exact line. */
-struct pt_acc_image {
+/* What the rasterizer leaves while runs are made: the images of up to
+** PT_ACC_MAXIMG runs in one hash table by index (open addressing, at most
+** half full), each pixel lit by any of them once, with each run's last colour
+** written there (PT_ACC_UNLIT: that run lit it not); per run its pixels, the
+** writes counted and the DDA's error against the exact line.  A run draws
+** through its own pt_acc_imgrun, the DDA's callbacks' user data. */
+#define PT_ACC_UNLIT 0xffffffffu         /* no colour: rgb has 24 bits */
+
+typedef struct upixel {
+    int64_t idx;                 /* y_fb * W + x_fb; -1: an empty slot (a pixel
+                                 ** inside the viewport has idx >= 0) */
+    uint32_t rgb[PT_ACC_MAXIMG]; /* each run's last colour, or PT_ACC_UNLIT */
+} upixel;
+
+typedef struct imgrun {
+    struct pt_acc_image *img;    /* the image it draws into */
+    int i;                       /* its place in upixel.rgb */
     uint32_t rgb;                /* the current model's color */
-    const pt_scene *s;
-    pt_acc_pixel *tab;           /* cap slots; idx -1: empty (a pixel inside the
-                                 ** viewport has idx >= 0) */
-    size_t n, cap;               /* pixels in tab; slots, a power of two */
-    size_t max;                  /* the most pixels the image may have */
+    size_t n;                    /* pixels it lit */
     uint64_t writes;             /* pixels written, overdraw included */
-    int oom;                     /* 1: out of memory; 2: past max pixels */
     pt_acc_err line;             /* the DDA's y against the exact line */
+} imgrun;
+
+struct pt_acc_image {
+    const pt_scene *s;
+    upixel *tab;                 /* cap slots */
+    size_t n, cap;               /* pixels in tab (lit by any run); slots, a power of two */
+    size_t max;                  /* the most pixels one run may light */
+    int nrun;                    /* runs: run[0 .. nrun-1] */
+    int oom;                     /* 1: out of memory; 2: past max pixels */
+    imgrun run[PT_ACC_MAXIMG];
 };
-typedef struct pt_acc_image collect;
 
 /* The slot of idx in a table of cap slots: where it is, or the empty slot
 ** where it goes. */
-static size_t slot_of(const pt_acc_pixel *tab, size_t cap, int64_t idx)
+static size_t slot_of(const upixel *tab, size_t cap, int64_t idx)
 {
     size_t i = (size_t)(((uint64_t)idx * UINT64_C(0x9e3779b97f4a7c15)) >> 32) & (cap - 1);
 
@@ -506,10 +531,10 @@ static size_t slot_of(const pt_acc_pixel *tab, size_t cap, int64_t idx)
 
 /* Room for one more pixel in c->tab: twice the slots, every pixel moved.
 ** Returns 0, or -1 when out of memory. */
-static int collect_grow(collect *c)
+static int image_grow(pt_acc_image *c)
 {
     size_t cap = c->cap ? 2 * c->cap : 1024, k;
-    pt_acc_pixel *tab = malloc(cap * sizeof *tab);
+    upixel *tab = malloc(cap * sizeof *tab);
 
     if (!tab) return -1;
     for (k = 0; k < cap; k++) tab[k].idx = -1;
@@ -523,29 +548,38 @@ static int collect_grow(collect *c)
 
 static void collect_pixel(void *ud, int64_t x_vp, int64_t y_vp)
 {
-    collect *c = ud;
+    imgrun *ir = ud;
+    pt_acc_image *c = ir->img;
     int64_t idx = (c->s->vp_y + y_vp) * (int64_t)c->s->fb_w + (c->s->vp_x + x_vp);
-    size_t i;
+    size_t i = 0;
+    int k;
 
     if (c->oom) return;
-    c->writes++;
+    ir->writes++;
     if (c->cap) {
         i = slot_of(c->tab, c->cap, idx);
-        if (c->tab[i].idx == idx) { c->tab[i].rgb = c->rgb; return; }   /* the last wins */
+        if (c->tab[i].idx == idx && c->tab[i].rgb[ir->i] != PT_ACC_UNLIT) {
+            c->tab[i].rgb[ir->i] = ir->rgb;                 /* the last wins */
+            return;
+        }
     }
-    if (c->n == c->max) { c->oom = 2; return; }
-    if (2 * (c->n + 1) > c->cap && collect_grow(c) != 0) { c->oom = 1; return; }
+    if (ir->n == c->max) { c->oom = 2; return; }
+    ir->n++;
+    if (c->cap && c->tab[i].idx == idx) { c->tab[i].rgb[ir->i] = ir->rgb; return; }
+    if (c->n == 2 * c->max) { c->oom = 2; return; }         /* all runs together */
+    if (2 * (c->n + 1) > c->cap && image_grow(c) != 0) { c->oom = 1; return; }
     i = slot_of(c->tab, c->cap, idx);
     c->tab[i].idx = idx;
-    c->tab[i].rgb = c->rgb;
+    for (k = 0; k < PT_ACC_MAXIMG; k++) c->tab[i].rgb[k] = PT_ACC_UNLIT;
+    c->tab[i].rgb[ir->i] = ir->rgb;
     c->n++;
 }
 
 static void collect_step(void *ud, const pt_acc_line *ln, int64_t s, double y)
 {
-    collect *c = ud;
+    imgrun *ir = ud;
 
-    (void)err_add(&c->line, y, pt_acc_line_y(ln, s).hi);
+    (void)err_add(&ir->line, y, pt_acc_line_y(ln, s).hi);
 }
 
 static int by_idx(const void *pa, const void *pb)
@@ -581,9 +615,20 @@ void pt_acc_run_free(pt_acc_run *r)
     memset(r, 0, sizeof *r);
 }
 
+/* Room for n things of size bytes (at least one), zeroed when zero is set:
+** a block's run computes every journey and clips every segment, so it
+** leaves them as malloc() gives them (zeroing them took a sixth of a large
+** scene's instructions). */
+static void *arr_alloc(size_t n, size_t size, int zero)
+{
+    return zero ? calloc(n ? n : 1, size) : malloc((n ? n : 1) * size);
+}
+
 /* The arrays of the journeys: j[k] (classic camera), or the matrix camera's
-** mj[k], seg[k] and its matrices.  Returns 0, or -1 when out of memory. */
-static int run_alloc(pt_acc_run *r)
+** mj[k], seg[k] and its matrices; zero: zeroed (a whole run's; a block's
+** run, every vertex used, leaves them unset).  Returns 0, or -1 when out of
+** memory. */
+static int run_alloc(pt_acc_run *r, int zero)
 {
     const pt_scene *s = r->s;
     size_t k, nm = s->nmodels ? s->nmodels : 1;
@@ -601,8 +646,8 @@ static int run_alloc(pt_acc_run *r)
         for (k = 0; k < s->nmodels; k++) {
             const pt_model *m = &s->models[k];
 
-            r->rj[k] = calloc(m->nv ? m->nv : 1, sizeof **r->rj);
-            r->rseg[k] = calloc(m->nseg ? m->nseg : 1, sizeof **r->rseg);
+            r->rj[k] = arr_alloc(m->nv, sizeof **r->rj, zero);
+            r->rseg[k] = arr_alloc(m->nseg, sizeof **r->rseg, zero);
             if (!r->rj[k] || !r->rseg[k]) return -1;
         }
         return 0;
@@ -610,7 +655,7 @@ static int run_alloc(pt_acc_run *r)
     if (!pt_acc_scene_rows(s)->mcam) {
         r->j = calloc(nm, sizeof *r->j);
         for (k = 0; r->j && k < s->nmodels; k++)
-            if ((r->j[k] = calloc(s->models[k].nv ? s->models[k].nv : 1, sizeof **r->j)) == NULL)
+            if ((r->j[k] = arr_alloc(s->models[k].nv, sizeof **r->j, zero)) == NULL)
                 return -1;
         return r->j ? 0 : -1;
     }
@@ -621,8 +666,8 @@ static int run_alloc(pt_acc_run *r)
     for (k = 0; k < s->nmodels; k++) {
         const pt_model *m = &s->models[k];
 
-        r->mj[k] = calloc(m->nv ? m->nv : 1, sizeof **r->mj);
-        r->seg[k] = calloc(m->nseg ? m->nseg : 1, sizeof **r->seg);
+        r->mj[k] = arr_alloc(m->nv, sizeof **r->mj, zero);
+        r->seg[k] = arr_alloc(m->nseg, sizeof **r->seg, zero);
         if (!r->mj[k] || !r->seg[k]) return -1;
     }
     return 0;
@@ -664,12 +709,12 @@ void pt_acc_used_free(const pt_scene *s, unsigned char **used)
     free(used);
 }
 
-/* The DDA's callbacks into c, for arithmetic a. */
-static void dda_of(pt_acc_dda *o, const pt_scene *s, pt_arith a, collect *c)
+/* The DDA's callbacks into run ir of an image, for arithmetic a. */
+static void dda_of(pt_acc_dda *o, const pt_scene *s, pt_arith a, imgrun *ir)
 {
     o->pixel = collect_pixel;
     o->step = a == PT_ARITH_DD ? NULL : collect_step;  /* the reference is the line */
-    o->ud = c;
+    o->ud = ir;
     o->w = s->vp_w;
     o->h = s->vp_h;
     o->to_vp = pt_pipeline_ref(pt_scene_pipeline(s), PT_STAGE_VIEWPORT) ? ptref_pixel2viewport
@@ -677,11 +722,11 @@ static void dda_of(pt_acc_dda *o, const pt_scene *s, pt_arith a, collect *c)
 }
 
 /* Run scene s in arithmetic a into *r: every used vertex's journey (all_used:
-** every vertex's), then the segments clipped and, when c is not NULL, drawn
-** into c (c->rgb: the colour).  Returns 0, or -1 when out of memory, -2 when
-** c holds more than its pixels (then *r is empty). */
+** every vertex's), then the segments clipped and, when ir is not NULL, drawn
+** into its image (ir->rgb: the colour).  Returns 0, or -1 when out of memory,
+** -2 when the image holds more than its pixels (then *r is empty). */
 static int run_fill(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices,
-                    int all_used, collect *c)
+                    int all_used, imgrun *ir)
 {
     size_t k, q;
     pt_acc_dda o;
@@ -691,16 +736,16 @@ static int run_fill(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     r->arith = a;
     r->choices = a == PT_ARITH_DD ? 0 : choices;
     r->line.real = 1;
-    if (run_alloc(r) != 0) { pt_acc_run_free(r); return -1; }
+    if (run_alloc(r, !all_used) != 0) { pt_acc_run_free(r); return -1; }
     free(r->used);
     if ((r->used = used_make(s, all_used)) == NULL) { pt_acc_run_free(r); return -1; }
     for (k = 0; k < s->nmodels; k++)
         for (q = 0; q < s->models[k].nv; q++) r->nused += r->used[k][q];
     pt_acc_vertex_pass(r);
 
-    if (c) dda_of(&o, s, a, c);
-    raster_scene(r, c ? &o : NULL, c ? &c->rgb : NULL, 1);
-    if (c && c->oom) { int oom = c->oom; pt_acc_run_free(r); return oom == 2 ? -2 : -1; }
+    if (ir) dda_of(&o, s, a, ir);
+    raster_scene(r, ir ? &o : NULL, ir ? &ir->rgb : NULL, 1);
+    if (ir && ir->img->oom) { int oom = ir->img->oom; pt_acc_run_free(r); return oom == 2 ? -2 : -1; }
     for (k = 0; r->seg && k < s->nmodels; k++)
         for (q = 0; q < s->models[k].nseg; q++) {
             r->made += (uint64_t)(r->seg[k][q].made[0] + r->seg[k][q].made[1]);
@@ -716,14 +761,20 @@ static int run_fill(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
     return 0;
 }
 
-pt_acc_image *pt_acc_image_make(const pt_scene *s, size_t maxpix)
+pt_acc_image *pt_acc_image_make(const pt_scene *s, size_t maxpix, int nrun)
 {
-    collect *c = calloc(1, sizeof *c);
+    pt_acc_image *c = calloc(1, sizeof *c);
+    int k;
 
     if (!c) return NULL;
     c->s = s;
     c->max = maxpix;
-    c->line.real = 1;
+    c->nrun = nrun < 1 ? 1 : nrun > PT_ACC_MAXIMG ? PT_ACC_MAXIMG : nrun;
+    for (k = 0; k < PT_ACC_MAXIMG; k++) {
+        c->run[k].img = c;
+        c->run[k].i = k;
+        c->run[k].line.real = 1;
+    }
     return c;
 }
 
@@ -734,20 +785,49 @@ void pt_acc_image_free(pt_acc_image *c)
     free(c);
 }
 
-int pt_acc_image_take(pt_acc_image *c, pt_acc_run *r)
+int pt_acc_image_take(pt_acc_image *c, int i, pt_acc_run *r)
 {
     size_t q, n;
 
     free(r->img);
-    r->pixels = c->writes;
-    r->line = c->line;
-    r->img = malloc((c->n ? c->n : 1) * sizeof *r->img);
+    r->pixels = c->run[i].writes;
+    r->line = c->run[i].line;
+    r->img = malloc((c->run[i].n ? c->run[i].n : 1) * sizeof *r->img);
     if (!r->img) return -1;
     for (q = n = 0; q < c->cap; q++)
-        if (c->tab[q].idx != -1) r->img[n++] = c->tab[q];
+        if (c->tab[q].idx != -1 && c->tab[q].rgb[i] != PT_ACC_UNLIT) {
+            r->img[n].idx = c->tab[q].idx;
+            r->img[n++].rgb = c->tab[q].rgb[i];
+        }
     if (n) qsort(r->img, n, sizeof *r->img, by_idx);
     r->nimg = n;
     return 0;
+}
+
+void pt_acc_image_count(const pt_acc_image *c, int i, pt_acc_run *r)
+{
+    r->nimg = c->run[i].n;
+    r->pixels = c->run[i].writes;
+    r->line = c->run[i].line;
+}
+
+void pt_acc_image_end(const pt_acc_image *c, int iref, int i, pt_acc_err *e)
+{
+    size_t q;
+
+    *e = c->run[i].line;
+    e->real = 1;
+    e->differ = e->of = 0;
+    for (q = 0; q < c->cap; q++) {
+        uint32_t a, b;
+
+        if (c->tab[q].idx == -1) continue;
+        a = c->tab[q].rgb[i];
+        b = c->tab[q].rgb[iref];
+        if (a == PT_ACC_UNLIT && b == PT_ACC_UNLIT) continue;
+        e->of++;
+        e->differ += a != b;                /* lit on one side only, or another colour */
+    }
 }
 
 int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices)
@@ -758,10 +838,10 @@ int pt_acc_run_make(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choic
 int pt_acc_run_make_max(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned choices,
                         size_t maxpix)
 {
-    collect *c = pt_acc_image_make(s, maxpix);
-    int rc = c ? run_fill(r, s, a, choices, 0, c) : -1;
+    pt_acc_image *c = pt_acc_image_make(s, maxpix, 1);
+    int rc = c ? run_fill(r, s, a, choices, 0, &c->run[0]) : -1;
 
-    if (rc == 0 && pt_acc_image_take(c, r) != 0) {
+    if (rc == 0 && pt_acc_image_take(c, 0, r) != 0) {
         pt_acc_run_free(r);
         rc = -1;
     }
@@ -770,9 +850,20 @@ int pt_acc_run_make_max(pt_acc_run *r, const pt_scene *s, pt_arith a, unsigned c
 }
 
 int pt_acc_run_block(pt_acc_run *r, const pt_acc_block *b, pt_arith a, unsigned choices,
-                     pt_acc_image *img)
+                     pt_acc_image *img, int i)
 {
-    return run_fill(r, &b->s, a, choices, 1, b->segs ? img : NULL);
+    return run_fill(r, &b->s, a, choices, 1, b->segs && img ? &img->run[i] : NULL);
+}
+
+int pt_acc_draw_again(const pt_acc_run *r, unsigned choices, pt_acc_image *img, int i)
+{
+    pt_acc_run again = *r;                  /* the same journeys, other choices */
+    pt_acc_dda o;
+
+    again.choices = r->arith == PT_ARITH_DD ? 0 : choices;
+    dda_of(&o, r->s, r->arith, &img->run[i]);
+    raster_scene(&again, &o, &img->run[i].rgb, 0);
+    return img->oom == 2 ? -2 : img->oom ? -1 : 0;
 }
 
 /* ===== a scene in blocks ===== */
@@ -786,7 +877,9 @@ int pt_acc_block_init(pt_acc_block *b, const pt_scene *s, unsigned char *const *
     b->used = used;
     b->v = malloc(2 * PT_ACC_BLOCK * sizeof *b->v);
     b->seg = malloc(PT_ACC_BLOCK * sizeof *b->seg);
-    if (!b->v || !b->seg) { pt_acc_block_free(b); return -1; }
+    b->key = malloc(PT_ACC_ENDSLOTS * sizeof *b->key);
+    b->at = malloc(PT_ACC_ENDSLOTS * sizeof *b->at);
+    if (!b->v || !b->seg || !b->key || !b->at) { pt_acc_block_free(b); return -1; }
     for (k = 0; k < s->nmodels; k++) {
         size_t n = 0;
 
@@ -801,8 +894,27 @@ void pt_acc_block_free(pt_acc_block *b)
 {
     free(b->v);
     free(b->seg);
+    free(b->key);
+    free(b->at);
     b->v = NULL;
     b->seg = NULL;
+    b->key = b->at = NULL;
+}
+
+/* Vertex v of model m as an end of the segment block being made: its place
+** in b->v, taken the first time (*nv: the places taken so far). */
+static uint32_t block_end(pt_acc_block *b, const pt_model *m, uint32_t v, size_t *nv)
+{
+    size_t i = (size_t)(((uint64_t)v * UINT64_C(0x9e3779b97f4a7c15)) >> 32)
+               & (PT_ACC_ENDSLOTS - 1);
+
+    while (b->key[i] != 0 && b->key[i] != v + 1u) i = (i + 1) & (PT_ACC_ENDSLOTS - 1);
+    if (b->key[i] == 0) {
+        b->key[i] = v + 1u;
+        b->at[i] = (uint32_t)*nv;
+        b->v[(*nv)++] = m->v[v];
+    }
+    return b->at[i];
 }
 
 int pt_acc_block_next(pt_acc_block *b)
@@ -811,7 +923,7 @@ int pt_acc_block_next(pt_acc_block *b)
 
     for (; b->k < s->nmodels; b->k++, b->pos = 0, b->segs = 0) {
         const pt_model *m = &s->models[b->k];
-        size_t n = 0, q;
+        size_t n = 0, nv = 0, q;
 
         b->m = *m;
         b->s = *s;
@@ -832,15 +944,14 @@ int pt_acc_block_next(pt_acc_block *b)
             for (q = 0; q < m->nv && !b->used[b->k][q]; q++) {}
             if (q == m->nv) continue;               /* nothing drawn */
         }
-        for (; b->pos < m->nseg && n < PT_ACC_BLOCK; b->pos++, n++) {   /* each end its own */
+        memset(b->key, 0, PT_ACC_ENDSLOTS * sizeof *b->key);
+        for (; b->pos < m->nseg && n < PT_ACC_BLOCK; b->pos++, n++) {   /* each end once */
             b->seg[n] = m->seg[b->pos];
-            b->seg[n].a = (uint32_t)(2 * n);
-            b->seg[n].b = (uint32_t)(2 * n + 1);
-            b->v[2 * n] = m->v[m->seg[b->pos].a];
-            b->v[2 * n + 1] = m->v[m->seg[b->pos].b];
+            b->seg[n].a = block_end(b, m, m->seg[b->pos].a, &nv);
+            b->seg[n].b = block_end(b, m, m->seg[b->pos].b, &nv);
         }
         if (n) {
-            b->m.nv = 2 * n;
+            b->m.nv = nv;
             b->m.seg = b->seg;
             b->m.nseg = n;
             return 1;

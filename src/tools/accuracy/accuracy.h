@@ -243,7 +243,7 @@ typedef struct pt_acc_run {
 
 /* Run scene s in arithmetic a with choices: every used vertex's journey, then
 ** (matrix camera: each segment clipped) the rasterizer into the image, which
-** keeps each pixel written once, with the last colour written there (32
+** keeps each pixel written once, with the last colour written there (64
 ** bytes a pixel at most; overdraw costs nothing).  The matrix camera ignores
 ** PT_ACC_TWO.  Returns 0, or -1 when out of memory, -2 when the image has
 ** more than maxpix pixels (then *r is empty).  pt_acc_run_make() takes
@@ -281,19 +281,31 @@ void pt_acc_compare_end(const pt_acc_run *ref, const pt_acc_run *r, pt_acc_err e
 ** its own with one model (a copy of the model's, sharing all but its
 ** vertices and segments): for each model in order, its used vertices
 ** PT_ACC_BLOCK at a time, in order, with no segments; then its segments
-** PT_ACC_BLOCK at a time, in order, each with its own copy of both ends.
-** pt_acc_run_block() runs a block like pt_acc_run_make(), every vertex used,
-** and draws a block of segments into img, the image kept across blocks (its
-** pixels, at most maxpix, and the DDA's error: 16 to 32 bytes a pixel), which
-** pt_acc_image_take() hands to the whole run's summary.  What stays the size
-** of the scene: the used flags, a byte a vertex (pt_acc_used_make()).
+** PT_ACC_BLOCK at a time, in order, with the vertices they use, each once
+** (a block's segments being mostly near each other in a model, their ends
+** are mostly shared: a vertex is computed again about once for its
+** segments, not once for each).  pt_acc_run_block() runs a block like
+** pt_acc_run_make(), every vertex used, and draws a block of segments into
+** its run's place i of an image (pt_acc_image): the images of up to
+** PT_ACC_MAXIMG runs, kept across blocks in one table, each pixel lit by any
+** run once, with each run's last colour there (32 bytes a pixel, at most 64
+** with the hash table's room), and each run's DDA error.  So every run of a
+** scene goes through a block beside the others, the reference's journeys
+** computed once for them all.  pt_acc_draw_again() draws a block run again
+** with other choices (PT_ACC_RECOMPUTE: the journeys are the same) into
+** another place.  What stays the size of the scene: the used flags, a byte
+** a vertex (pt_acc_used_make()).
 **   used = pt_acc_used_make(&s);  pt_acc_block_init(&b, &s, used);
-**   img = pt_acc_image_make(&s, maxpix);
-**   while (pt_acc_block_next(&b)) { pt_acc_run_block(&r, &b, a, 0, img); ...
-**       pt_acc_compare_part(...); pt_acc_run_free(&r); }
-**   pt_acc_image_take(img, &whole);  pt_acc_image_free(img);
+**   img = pt_acc_image_make(&s, maxpix, 2);
+**   while (pt_acc_block_next(&b)) {
+**       pt_acc_run_block(&ref, &b, PT_ARITH_DD, 0, img, 0);
+**       pt_acc_run_block(&r, &b, PT_ARITH_FLOAT, 0, img, 1);
+**       pt_acc_compare_part(&ref, &r, ...); pt_acc_run_free(&r); pt_acc_run_free(&ref); }
+**   pt_acc_image_end(img, 0, 1, &e[raster]);  pt_acc_image_free(img);
 **   pt_acc_block_free(&b);  pt_acc_used_free(&s, used); */
 #define PT_ACC_BLOCK 4096
+#define PT_ACC_MAXIMG 6
+#define PT_ACC_ENDSLOTS (4 * PT_ACC_BLOCK)     /* twice a block's ends at most */
 
 typedef struct pt_acc_block {
     pt_scene s;                  /* the block as a scene: models = &m, nmodels 1 */
@@ -303,6 +315,9 @@ typedef struct pt_acc_block {
                                  ** in it (a vertex, or a segment) */
     pt_vec3 *v;                  /* room for 2 * PT_ACC_BLOCK vertices; owned */
     pt_segment *seg;             /* room for PT_ACC_BLOCK segments; owned */
+    uint32_t *key, *at;          /* a segment block's ends: slot s holds model
+                                 ** vertex key[s] - 1 (0: empty) at v[at[s]];
+                                 ** PT_ACC_ENDSLOTS slots; owned */
     const pt_scene *whole;       /* the scene; not owned */
     unsigned char *const *used;  /* its used flags; not owned */
     uint64_t nused, nseg;        /* the scene's used vertices, and segments of
@@ -323,20 +338,37 @@ void pt_acc_block_free(pt_acc_block *b);
 ** function can't fail. */
 int pt_acc_block_next(pt_acc_block *b);
 
-/* The image of a run made a block at a time.  make returns NULL when out of memory. */
+/* The images of nrun (1 .. PT_ACC_MAXIMG) runs made together, each with at
+** most maxpix pixels (all together at most 2 * maxpix).  make returns NULL
+** when out of memory. */
 typedef struct pt_acc_image pt_acc_image;
-pt_acc_image *pt_acc_image_make(const pt_scene *s, size_t maxpix);
+pt_acc_image *pt_acc_image_make(const pt_scene *s, size_t maxpix, int nrun);
 void pt_acc_image_free(pt_acc_image *img);              /* NULL is fine */
 
-/* Move img's pixels (sorted), writes and the DDA's error into r's img,
-** nimg, pixels and line.  Returns 0, or -1 when out of memory. */
-int pt_acc_image_take(pt_acc_image *img, pt_acc_run *r);
+/* Move run i's pixels of img (sorted), writes and the DDA's error into r's
+** img, nimg, pixels and line.  Returns 0, or -1 when out of memory. */
+int pt_acc_image_take(pt_acc_image *img, int i, pt_acc_run *r);
+
+/* Run i's pixel count, writes and DDA error into r's nimg, pixels and line
+** (r->img untouched).  This function can't fail. */
+void pt_acc_image_count(const pt_acc_image *img, int i, pt_acc_run *r);
+
+/* The rasterizer's row of run i against the reference's, run iref of the
+** same image: what pt_acc_compare_end() sets from two whole runs' images.
+** This function can't fail. */
+void pt_acc_image_end(const pt_acc_image *img, int iref, int i, pt_acc_err *e);
 
 /* Run block b (every vertex of it used) in arithmetic a with choices; a
-** block of segments is drawn into img (NULL: clipped only).  Returns as
-** pt_acc_run_make_max() does; -2: img holds more than its pixels. */
+** block of segments is drawn into place i of img (NULL: clipped only).
+** Returns as pt_acc_run_make_max() does; -2: run i lit more than img's
+** pixels. */
 int pt_acc_run_block(pt_acc_run *r, const pt_acc_block *b, pt_arith a, unsigned choices,
-                     pt_acc_image *img);
+                     pt_acc_image *img, int i);
+
+/* Draw block run r's segments again, with choices in place of r's (only the
+** rasterizer's may differ: PT_ACC_RECOMPUTE), into place i of img; r is not
+** changed.  Returns 0, -1 when out of memory, -2 past img's pixels. */
+int pt_acc_draw_again(const pt_acc_run *r, unsigned choices, pt_acc_image *img, int i);
 
 /* pt_acc_vertex_pass() computes every used vertex's journey again (into r->j
 ** or r->mj, the same values); pt_acc_raster_pass() rasterizes every segment

@@ -15,12 +15,13 @@
 ** below); the matrix camera has no 2.001, so that choice is only said not to
 ** apply.
 **
-** A block at a time: each run goes through the scene in blocks
-** (pt_acc_block: PT_ACC_BLOCK used vertices, then segments, model by model),
-** beside the reference's same block; each block is compared, timed and
-** freed before the next.  The errors add up in the order a whole-scene run
-** adds them, so the output is byte for byte what pt_acc_compare() of whole
-** runs gives.
+** A block at a time: the scene goes by in blocks (pt_acc_block:
+** PT_ACC_BLOCK used vertices, then segments, model by model); the
+** reference makes each block once, and every run makes the same block beside
+** it, is compared with it, timed and freed before the next run's; a run that
+** differs from another only in the DDA (y recomputed) draws that run's block
+** again.  The errors add up in the order a whole-scene run adds them, so the
+** output is byte for byte what pt_acc_compare() of whole runs gives.
 **
 ** Timing, per stage: a pass runs one stage's function (the one the error
 ** runs' journeys call) on the block's used vertices' inputs, prepared from
@@ -33,12 +34,12 @@
 ** median of --repeat of them is shown.  Without --no-time the time columns
 ** and the time table vary from run to run, everything else never.
 **
-** Memory: a block of each run at a time, beside the reference's; the used
-** flags (a byte a vertex); each run's image, the reference's to the end,
-** each other run's only while it is made and compared: each pixel once
-** (overdraw costs nothing), at most PT_ACC_MAXPIX of them.  The environment
-** variable PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that
-** a test reaches it with a small scene (docs/limits.md).
+** Memory: the reference's block and one run's at a time; the used flags (a
+** byte a vertex); the runs' images in one table (pt_acc_image): each pixel
+** lit by any run once (overdraw costs nothing), with each run's colour; at
+** most PT_ACC_MAXPIX pixels a run.  The environment variable
+** PIPETRACE_ACC_MAXPIX (1 .. PT_ACC_MAXPIX) lowers that cap, so that a test
+** reaches it with a small scene (docs/limits.md).
 */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -81,6 +82,9 @@ static const char usage[] =
 /* The runs compared, the reference first. */
 enum { RUN_DD, RUN_FLOAT, RUN_DOUBLE, RUN_TWO, RUN_FLOAT_RE, RUN_DOUBLE_RE, NRUNS };
 
+/* Every run draws into its own place of one image (pt_acc_image). */
+typedef char runs_fit_image[NRUNS <= PT_ACC_MAXIMG ? 1 : -1];
+
 static const struct { pt_arith arith; unsigned choices; } run_of[NRUNS] = {
     { PT_ARITH_DD, 0 }, { PT_ARITH_FLOAT, 0 }, { PT_ARITH_DOUBLE, 0 },
     { PT_ARITH_DOUBLE, PT_ACC_TWO }, { PT_ARITH_FLOAT, PT_ACC_RECOMPUTE },
@@ -120,10 +124,10 @@ static int run_applies(const layout *L, int k)
 typedef struct study {
     const pt_scene *s;
     layout rows;                 /* the scene's pipeline's */
-    pt_acc_run run[NRUNS];       /* each run's summary (counts, image): the
-                                 ** reference's kept, each other run's only
-                                 ** while it is compared (then all zero); no
-                                 ** RUN_TWO where no row has 2.001 */
+    pt_acc_run run[NRUNS];       /* each run's summary: its counts (used
+                                 ** vertices, points made, segments culled,
+                                 ** pixels lit and written), no journeys and no
+                                 ** image; no RUN_TWO where no row has 2.001 */
     pt_acc_err err[NRUNS][PT_ACC_MAXROWS];
     timing t[NRUNS];             /* RUN_TWO: pixel and viewport; _RE runs: raster */
     int timed;
@@ -260,58 +264,103 @@ static unsigned timed_rows(const study *st, int k)
     return rows;
 }
 
-/* Run k a block at a time (pt_acc_block), beside the reference's blocks:
-** each compared into st->err[k] and timed (unless no_time) as it comes,
-** then freed; the image kept whole into st->run[k] (the reference's to the
-** end, to compare the others' with).  Returns 0, or what
+/* The run whose journeys run k shares: one of the same arithmetic whose
+** choices differ only in the DDA's (PT_ACC_RECOMPUTE), drawn again with
+** k's; or k itself. */
+static int base_of(int k)
+{
+    int j;
+
+    for (j = 0; j < k; j++)
+        if (run_of[j].arith == run_of[k].arith && !(run_of[j].choices & PT_ACC_RECOMPUTE)
+            && (run_of[j].choices | PT_ACC_RECOMPUTE) == (run_of[k].choices | PT_ACC_RECOMPUTE))
+            return j;
+    return k;
+}
+
+/* Add block run r's counts to run w's summary. */
+static void account(pt_acc_run *w, const pt_acc_run *r, unsigned segs)
+{
+    if (segs) {
+        w->made += r->made;
+        w->culled += r->culled;
+    } else w->nused += r->nused;
+}
+
+/* Every run a block at a time (pt_acc_block), all beside the reference's
+** block, computed once for them: each compared into st->err[k] and timed
+** (unless no_time) as it comes, then freed; a run that differs from another
+** only in the DDA draws that one's block again (pt_acc_draw_again), its
+** other rows the same.  The images are kept across blocks in one table
+** (pt_acc_image), and st->run[k] gets each run's counts.  Returns 0, or what
 ** pt_acc_run_block() returns. */
-static int stream_run(study *st, int k, unsigned char *const *used, size_t maxpix,
-                      int repeat, int no_time)
+static int sweep(study *st, unsigned char *const *used, size_t maxpix, int repeat,
+                 int no_time)
 {
     const pt_scene *s = st->s;
-    pt_acc_run *whole = &st->run[k], blk, ref;
     pt_acc_block b;
-    pt_acc_image *img = pt_acc_image_make(s, maxpix);
-    clocked *c = calloc(PT_ACC_MAXROWS, sizeof *c);
-    unsigned rows = no_time ? 0 : timed_rows(st, k);
-    int rc = 0, row, cut = st->rows.t->mcam || st->rows.t->rv;  /* segments compared */
+    pt_acc_image *img = pt_acc_image_make(s, maxpix, NRUNS);
+    clocked *c = calloc((size_t)NRUNS * PT_ACC_MAXROWS, sizeof *c);
+    unsigned rows[NRUNS];
+    int on[NRUNS], rc = 0, k, j, row, cut = st->rows.t->mcam || st->rows.t->rv;
 
-    memset(whole, 0, sizeof *whole);
-    whole->s = s;
-    whole->arith = run_of[k].arith;
-    whole->choices = run_of[k].choices;
+    for (k = 0; k < NRUNS; k++) {
+        on[k] = run_applies(&st->rows, k);       /* no 2.001 to replace */
+        rows[k] = no_time || !on[k] ? 0 : timed_rows(st, k);
+        memset(&st->run[k], 0, sizeof st->run[k]);
+        st->run[k].s = s;
+        st->run[k].arith = run_of[k].arith;
+        st->run[k].choices = run_of[k].choices;
+        pt_acc_compare_start(s, st->err[k]);
+    }
     if (!img || !c || pt_acc_block_init(&b, s, used) != 0) {
         pt_acc_image_free(img);
         free(c);
         return -1;
     }
-    pt_acc_compare_start(s, st->err[k]);
     while (rc == 0 && pt_acc_block_next(&b)) {
         double frac = b.segs ? (double)b.m.nseg / (double)b.nseg
                              : (double)b.m.nv / (double)b.nused;
+        unsigned parts = b.segs ? PT_ACC_SEGMENTS : PT_ACC_VERTICES;
+        pt_acc_run ref, blk;
 
-        int own = k == RUN_DD || (b.segs && !cut);   /* no reference block to compare */
+        if ((rc = pt_acc_run_block(&ref, &b, PT_ARITH_DD, 0, img, RUN_DD)) != 0) break;
+        for (k = 0; k < NRUNS && rc == 0; k++) {
+            const pt_acc_run *r = &ref;
 
-        rc = pt_acc_run_block(&blk, &b, run_of[k].arith, run_of[k].choices, img);
-        if (rc == 0 && !own && (rc = pt_acc_run_block(&ref, &b, PT_ARITH_DD, 0, NULL)) != 0)
-            pt_acc_run_free(&blk);
-        if (rc != 0) break;
-        if (k == RUN_DD || !own)
-            pt_acc_compare_part(own ? &blk : &ref, &blk,
-                                b.segs ? PT_ACC_SEGMENTS : PT_ACC_VERTICES, st->err[k]);
-        if (b.segs) {
-            whole->made += blk.made;
-            whole->culled += blk.culled;
-        } else whole->nused += blk.nused;
-        if (rows) time_block(st, &blk, (int)b.segs, rows, repeat, frac, c);
-        pt_acc_run_free(&blk);
-        if (!own) pt_acc_run_free(&ref);
+            if (!on[k] || base_of(k) != k) continue;
+            if (k != RUN_DD) {
+                rc = pt_acc_run_block(&blk, &b, run_of[k].arith, run_of[k].choices, img, k);
+                if (rc != 0) break;
+                r = &blk;
+            }
+            if (k == RUN_DD || !b.segs || cut)   /* classic segments: nothing to compare */
+                pt_acc_compare_part(&ref, r, parts, st->err[k]);
+            account(&st->run[k], r, b.segs);
+            if (rows[k]) time_block(st, r, (int)b.segs, rows[k], repeat, frac, &c[k * PT_ACC_MAXROWS]);
+            for (j = k + 1; j < NRUNS && rc == 0; j++) {    /* the runs drawing it again */
+                pt_acc_run again = *r;
+
+                if (!on[j] || base_of(j) != k) continue;
+                if (b.segs) rc = pt_acc_draw_again(r, run_of[j].choices, img, j);
+                account(&st->run[j], r, b.segs);
+                again.choices = run_of[j].choices;
+                if (rc == 0 && rows[j])
+                    time_block(st, &again, (int)b.segs, rows[j], repeat, frac, &c[j * PT_ACC_MAXROWS]);
+            }
+            if (k != RUN_DD) pt_acc_run_free(&blk);
+        }
+        pt_acc_run_free(&ref);
     }
-    if (rc == 0) rc = pt_acc_image_take(img, whole);
-    if (rc == 0) pt_acc_compare_end(&st->run[RUN_DD], whole, st->err[k]);
-    if (rows) {
+    for (k = 0; rc == 0 && k < NRUNS; k++) {
+        if (!on[k]) continue;
+        if (base_of(k) != k)                     /* the same journeys, the same errors */
+            memcpy(st->err[k], st->err[base_of(k)], sizeof st->err[k]);
+        pt_acc_image_count(img, k, &st->run[k]);
+        pt_acc_image_end(img, RUN_DD, k, &st->err[k][st->rows.raster]);
+        if (!rows[k]) continue;
         for (row = 0; row < st->rows.nrows; row++)
-            if (rows & 1u << row) st->t[k].row[row] = clocked_ns(&c[row], repeat);
+            if (rows[k] & 1u << row) st->t[k].row[row] = clocked_ns(&c[k * PT_ACC_MAXROWS + row], repeat);
         st->timed = 1;
     }
     pt_acc_block_free(&b);
@@ -988,14 +1037,12 @@ int pt_cmd_accuracy(int argc, char **argv)
     layout_of(&st->rows, &s);
     /* one run at a time beside the reference, a block at a time */
     if ((used = pt_acc_used_make(&s)) == NULL) rc = -1;
-    for (k = 0; k < NRUNS && rc == 0; k++) {
+    for (k = 0; k < NRUNS; k++) {
         int row;
 
         for (row = 0; row < PT_ACC_MAXROWS; row++) st->t[k].row[row] = (double)NAN;
-        if (!run_applies(&st->rows, k)) continue;   /* no 2.001 to replace */
-        rc = stream_run(st, k, used, maxpix, repeat, no_time);
-        if (k != RUN_DD) pt_acc_run_free(&st->run[k]);
     }
+    if (rc == 0) rc = sweep(st, used, maxpix, repeat, no_time);
     pt_acc_used_free(&s, used);
     if (rc == -2)
         fprintf(stderr, "pipetrace accuracy: %s lights more than %zu pixels; accuracy keeps "
