@@ -341,15 +341,22 @@ typedef struct dda_ends {
     int swapped;                 /* 1: the ends swapped (their colours too) */
 } dda_ends;
 
-static void dda_order(dda_ends *e, pt_vec2 p0, pt_vec2 p1)
+/* Math.round(x), kept in a double: inline below 2^62. */
+static inline double round_end(double x)
+{
+    int64_t r;
+    return (double)(pt_pix_round(x, &r) ? r : jround(x));
+}
+
+static inline void dda_order(dda_ends *e, pt_vec2 p0, pt_vec2 p1)
 {
     double t;
 
-    memset(e, 0, sizeof *e);
-    e->x0 = (double)jround(p0.x);                   /* Math.round, kept in a double */
-    e->y0 = (double)jround(p0.y);
-    e->x1 = (double)jround(p1.x);
-    e->y1 = (double)jround(p1.y);
+    e->x0 = round_end(p0.x);                        /* Math.round, kept in a double */
+    e->y0 = round_end(p0.y);
+    e->x1 = round_end(p1.x);
+    e->y1 = round_end(p1.y);
+    e->one = e->tr = e->swapped = 0;
     if (e->x0 == e->x1 && e->y0 == e->y1) { e->one = 1; return; }
     if (fabs(e->y1 - e->y0) > fabs(e->x1 - e->x0)) {    /* |slope| > 1: transpose */
         t = e->x0; e->x0 = e->y0; e->y0 = t;
