@@ -19,6 +19,7 @@ typedef struct draw {
     unsigned char *rgb;
     const pt_rv_raster_ls *ls;
     uint64_t n;                  /* pixels written */
+    uint64_t steps;              /* pixel lines (pt_rv_raster_steps) */
     int quiet;                   /* 1: nobody hears the pixels (ls or its
                                  ** pixel NULL): the quiet steps write
                                  ** bytes, with par->lut */
@@ -393,6 +394,22 @@ static void point_rows(point_box *b, const pt_rv_raster_par *par, double x, doub
     if (b->xhi > par->w) b->xhi = par->w;
 }
 
+/* The pixel lines of a segment whose ends are e: the loop's steps
+** (int)x0 .. (int)x1 - 1 and the last pixel, or the one pixel. */
+static uint64_t line_steps(const dda_ends *e)
+{
+    int64_t n = (int64_t)jint(e->x1) - jint(e->x0);
+
+    return e->one ? 1 : (uint64_t)(n > 0 ? n : 0) + 1;
+}
+
+/* The pixel lines of a point whose clipped rows and columns are b. */
+static uint64_t point_steps(const point_box *b)
+{
+    return b->ylo <= b->yhi && b->xlo <= b->xhi    /* rows x columns inside */
+           ? (uint64_t)(b->yhi - b->ylo + 1) * (uint64_t)(b->xhi - b->xlo + 1) : 0;
+}
+
 static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
 {
     const pt_rv_raster_par *par = d->par;
@@ -406,6 +423,7 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
 
     if (d->ls && d->ls->ends) d->ls->ends(d->ls->ud, p0.x, p0.y, p1.x, p1.y);
     dda_order(&e, p0, p1);
+    d->steps = line_steps(&e);
     x0 = e.x0; y0 = e.y0; x1 = e.x1; y1 = e.y1;
     if (e.one) {                                    /* one pixel: v0's colour */
         end_pixel(d, x0, y0, c0);
@@ -473,7 +491,10 @@ static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     /* nobody hears the clipped pixels: only rows 1..h and columns 1..w are
     ** written, so the loops run over those alone (a radius of thousands
     ** costs the viewport, not (2r + 1)^2) */
-    point_rows(&b, par, x, y, p->radius, !(d->ls && d->ls->pixel && d->ls->clipped_points));
+    point_rows(&b, par, x, y, p->radius, 1);
+    d->steps = point_steps(&b);
+    if (d->ls && d->ls->pixel && d->ls->clipped_points)
+        point_rows(&b, par, x, y, p->radius, 0);
     px.kind = PT_RV_PX_POINT;
     px.x_pp = x;
     px.y_pp = y;
@@ -492,6 +513,15 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,
                            const pt_rv_raster_ls *ls)
 {
+    uint64_t steps;
+
+    return pt_rv_raster_prim_steps(m, p, par, rgb, ls, &steps);
+}
+
+uint64_t pt_rv_raster_prim_steps(const pt_rv_model *m, const pt_rv_prim *p,
+                                 const pt_rv_raster_par *par, unsigned char *rgb,
+                                 const pt_rv_raster_ls *ls, uint64_t *steps)
+{
     draw d;
 
     start(&d, par, rgb, ls);
@@ -499,6 +529,7 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
     case PT_RV_LINE:  line(&d, m, p); break;
     case PT_RV_POINT: point(&d, m, p); break;
     }
+    *steps = d.steps;
     return d.n;
 }
 
@@ -507,20 +538,16 @@ uint64_t pt_rv_raster_steps(const pt_rv_model *m, const pt_rv_prim *p,
 {
     dda_ends e;
     point_box b;
-    int64_t n;
+    pt_vec2 q;
 
     switch (p->kind) {
     case PT_RV_LINE:
         dda_order(&e, to_pp(par, m->v[p->v[0]]), to_pp(par, m->v[p->v[1]]));
-        if (e.one) return 1;                        /* the one pixel */
-        n = (int64_t)jint(e.x1) - jint(e.x0);       /* x = (int)x0 .. (int)x1 - 1 */
-        return (uint64_t)(n > 0 ? n : 0) + 1;       /*   and the last pixel */
-    case PT_RV_POINT: {
-        pt_vec2 q = to_pp(par, m->v[p->v[0]]);
+        return line_steps(&e);
+    case PT_RV_POINT:
+        q = to_pp(par, m->v[p->v[0]]);
         point_rows(&b, par, (double)jround(q.x), (double)jround(q.y), p->radius, 1);
-        return b.ylo <= b.yhi && b.xlo <= b.xhi    /* rows x columns inside */
-               ? (uint64_t)(b.yhi - b.ylo + 1) * (uint64_t)(b.xhi - b.xlo + 1) : 0;
-    }
+        return point_steps(&b);
     }
     return 0;
 }

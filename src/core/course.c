@@ -255,19 +255,24 @@ static int do_step(const run *r, step st, cpos *c)
         break;
     case ST_RASTER:
         for (k = 0; k < m->np; k++) {
-            uint64_t n = 0;
+            uint64_t n = 0, steps;
             int wanted;
             cut(r, 0, 1);
             wanted = !r->pc || r->pc->taken;
-            if (r->pc)                           /* the cut's count, drawn or not */
-                r->pc->pixels += pt_rv_raster_steps(m, &m->p[k], &r->par);
             if (ls && ls->tally) ls->tally->prims_wanted += (uint64_t)wanted;
             if (ls && ls->raster) ls->raster(ls->ud, &c->pos, m, &m->p[k]);
-            if (ls && ls->measure) continue;
-            if (wanted || !(ls && ls->skip_unwanted)) {
-                n = pt_rv_raster_prim(m, &m->p[k], &r->par, r->fb->rgb, raster_ls(r));
-                if (ls && ls->tally) ls->tally->prims_drawn++;
+            if (ls && ls->measure) {
+                if (r->pc) r->pc->pixels += pt_rv_raster_steps(m, &m->p[k], &r->par);
+                continue;
             }
+            if (wanted || !(ls && ls->skip_unwanted)) {
+                n = pt_rv_raster_prim_steps(m, &m->p[k], &r->par, r->fb->rgb, raster_ls(r),
+                                            &steps);
+                if (ls && ls->tally) ls->tally->prims_drawn++;
+            } else {                             /* not drawn: its lines all the same */
+                steps = pt_rv_raster_steps(m, &m->p[k], &r->par);
+            }
+            if (r->pc) r->pc->pixels += steps;   /* the cut's count, drawn or not */
             if (ls && ls->drawn) ls->drawn(ls->ud, &c->pos, m, &m->p[k], n);
         }
         break;

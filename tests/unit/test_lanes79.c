@@ -16,8 +16,9 @@
 ** scheduler's to say).  The second thread runs the rasterizer on the
 ** primitives of its own pieces only (the first on all of them, for the
 ** image), as the driver's tally says.  And on every scene each primitive's
-** pixel lines, which the cuts count without drawing (pt_rv_raster_steps),
-** are the lines the rasterizer tells as it draws it.
+** pixel lines, which the cuts count without drawing (pt_rv_raster_steps)
+** or as they draw (pt_rv_raster_prim_steps), are the lines the rasterizer
+** tells as it draws it.
 */
 #define _POSIX_C_SOURCE 200809L       /* open_memstream */
 #include <stdio.h>
@@ -105,6 +106,7 @@ static int drew_alike(const result *r)
 
 typedef struct steps_check {
     pt_rv_raster_par par;        /* the viewport, as the driver's */
+    unsigned char *rgb;          /* a framebuffer to draw each primitive again */
     uint64_t lines;              /* the pixel lines of the primitive being drawn */
     uint64_t prims, wrong, total;
 } steps_check;
@@ -126,10 +128,13 @@ static void sc_drawn(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
                      const pt_rv_prim *p, uint64_t n)
 {
     steps_check *sc = ud;
+    uint64_t again;
     (void)pos; (void)n;
     sc->prims++;
     sc->total += sc->lines;
     if (pt_rv_raster_steps(m, p, &sc->par) != sc->lines) sc->wrong++;
+    pt_rv_raster_prim_steps(m, p, &sc->par, sc->rgb, NULL, &again);   /* found drawing */
+    if (again != sc->lines) sc->wrong++;
 }
 
 /* Every primitive of s: pt_rv_raster_steps() = the pixel lines drawn. */
@@ -158,10 +163,13 @@ static void check_steps(const pt_scene *s, const char *path)
     ls.raster_ls = &rls;
     ls.ud = &sc;
     if (pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) == 0) {
-        rc = pt_course_render(s, &fb, &ls);
+        sc.rgb = malloc(3 * (size_t)s->fb_w * (size_t)s->fb_h + 1);
+        rc = sc.rgb ? pt_course_render(s, &fb, &ls) : -1;
+        free(sc.rgb);
         pt_fb_free(&fb);
     }
-    snprintf(what, sizeof what, "lanes79-7 %s: pixel lines by pt_rv_raster_steps = drawn "
+    snprintf(what, sizeof what, "lanes79-7 %s: pixel lines by pt_rv_raster_steps and "
+             "pt_rv_raster_prim_steps = drawn "
              "(%llu primitives, %llu lines, %llu differ)", path, (unsigned long long)sc.prims,
              (unsigned long long)sc.total, (unsigned long long)sc.wrong);
     PT_CHECK(what, rc == 0 && sc.wrong == 0);
