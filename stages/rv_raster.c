@@ -19,7 +19,8 @@ typedef struct draw {
     unsigned char *rgb;
     const pt_rv_raster_ls *ls;
     uint64_t n;                  /* pixels written */
-    uint64_t steps;              /* pixel lines (pt_rv_raster_steps) */
+    uint64_t steps;              /* with count_steps, the pixel lines */
+    int count_steps;             /*   (pt_rv_raster_steps) */
     int quiet;                   /* 1: nobody hears the pixels (ls or its
                                  ** pixel NULL): the quiet steps write
                                  ** bytes, with par->lut */
@@ -423,7 +424,7 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
 
     if (d->ls && d->ls->ends) d->ls->ends(d->ls->ud, p0.x, p0.y, p1.x, p1.y);
     dda_order(&e, p0, p1);
-    d->steps = line_steps(&e);
+    if (d->count_steps) d->steps = line_steps(&e);
     x0 = e.x0; y0 = e.y0; x1 = e.x1; y1 = e.y1;
     if (e.one) {                                    /* one pixel: v0's colour */
         end_pixel(d, x0, y0, c0);
@@ -492,7 +493,7 @@ static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     ** written, so the loops run over those alone (a radius of thousands
     ** costs the viewport, not (2r + 1)^2) */
     point_rows(&b, par, x, y, p->radius, 1);
-    d->steps = point_steps(&b);
+    if (d->count_steps) d->steps = point_steps(&b);
     if (d->ls && d->ls->pixel && d->ls->clipped_points)
         point_rows(&b, par, x, y, p->radius, 0);
     px.kind = PT_RV_PX_POINT;
@@ -513,9 +514,7 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,
                            const pt_rv_raster_ls *ls)
 {
-    uint64_t steps;
-
-    return pt_rv_raster_prim_steps(m, p, par, rgb, ls, &steps);
+    return pt_rv_raster_prim_steps(m, p, par, rgb, ls, NULL);
 }
 
 uint64_t pt_rv_raster_prim_steps(const pt_rv_model *m, const pt_rv_prim *p,
@@ -525,11 +524,12 @@ uint64_t pt_rv_raster_prim_steps(const pt_rv_model *m, const pt_rv_prim *p,
     draw d;
 
     start(&d, par, rgb, ls);
+    d.count_steps = steps != NULL;
     switch (p->kind) {
     case PT_RV_LINE:  line(&d, m, p); break;
     case PT_RV_POINT: point(&d, m, p); break;
     }
-    *steps = d.steps;
+    if (steps) *steps = d.steps;
     return d.n;
 }
 

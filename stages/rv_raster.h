@@ -154,9 +154,9 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
 uint64_t pt_rv_raster_steps(const pt_rv_model *m, const pt_rv_prim *p,
                             const pt_rv_raster_par *par);
 
-/* pt_rv_raster_prim(m, p, par, rgb, ls), which also sets *steps to
-** pt_rv_raster_steps(m, p, par), found on the way.  This function can't
-** fail. */
+/* pt_rv_raster_prim(m, p, par, rgb, ls), which also sets *steps (unless
+** NULL) to pt_rv_raster_steps(m, p, par), found on the way.  This function
+** can't fail. */
 uint64_t pt_rv_raster_prim_steps(const pt_rv_model *m, const pt_rv_prim *p,
                                  const pt_rv_raster_par *par, unsigned char *rgb,
                                  const pt_rv_raster_ls *ls, uint64_t *steps);

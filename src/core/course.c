@@ -265,14 +265,17 @@ static int do_step(const run *r, step st, cpos *c)
                 if (r->pc) r->pc->pixels += pt_rv_raster_steps(m, &m->p[k], &r->par);
                 continue;
             }
-            if (wanted || !(ls && ls->skip_unwanted)) {
+            if (!r->pc) {                        /* one piece: no cuts to count for */
+                n = pt_rv_raster_prim(m, &m->p[k], &r->par, r->fb->rgb, raster_ls(r));
+                if (ls && ls->tally) ls->tally->prims_drawn++;
+            } else if (wanted || !ls->skip_unwanted) {
                 n = pt_rv_raster_prim_steps(m, &m->p[k], &r->par, r->fb->rgb, raster_ls(r),
                                             &steps);
-                if (ls && ls->tally) ls->tally->prims_drawn++;
-            } else {                             /* not drawn: its lines all the same */
-                steps = pt_rv_raster_steps(m, &m->p[k], &r->par);
+                if (ls->tally) ls->tally->prims_drawn++;
+                r->pc->pixels += steps;          /* the cut's count, drawn or not */
+            } else {
+                r->pc->pixels += pt_rv_raster_steps(m, &m->p[k], &r->par);
             }
-            if (r->pc) r->pc->pixels += steps;   /* the cut's count, drawn or not */
             if (ls && ls->drawn) ls->drawn(ls->ud, &c->pos, m, &m->p[k], n);
         }
         break;
