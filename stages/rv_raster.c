@@ -19,6 +19,8 @@ typedef struct draw {
     unsigned char *rgb;
     const pt_rv_raster_ls *ls;
     uint64_t n;                  /* pixels written */
+    uint64_t steps;              /* with count_steps, the pixel lines */
+    int count_steps;             /*   (pt_rv_raster_steps) */
     int quiet;                   /* 1: nobody hears the pixels (ls or its
                                  ** pixel NULL): the quiet steps write
                                  ** bytes, with par->lut */
@@ -329,36 +331,107 @@ static void step_plain_quiet(draw *d, int x, double y, int tr, pt_rgb c)
     put_bytes(d, x_vp, y_vp, d->flat ? d->flat_b : b);
 }
 
+/* A segment's ends as the DDA takes them, from its ends p0, p1 in the pixel
+** plane: rounded to logical pixels (Math.round, kept in doubles); unless
+** both round to one pixel, transposed when |slope| > 1 and ordered so that
+** x0 <= x1.  The loop then steps x = (int)x0 .. (int)x1 - 1, and the last
+** pixel ends it. */
+typedef struct dda_ends {
+    double x0, y0, x1, y1;
+    int one;                     /* 1: one pixel, (x0, y0) (not transposed) */
+    int tr;                      /* 1: transposed */
+    int swapped;                 /* 1: the ends swapped (their colours too) */
+} dda_ends;
+
+/* Math.round(x), kept in a double: inline below 2^62. */
+static inline double round_end(double x)
+{
+    int64_t r;
+    return (double)(pt_pix_round(x, &r) ? r : jround(x));
+}
+
+static inline void dda_order(dda_ends *e, pt_vec2 p0, pt_vec2 p1)
+{
+    double t;
+
+    e->x0 = round_end(p0.x);                        /* Math.round, kept in a double */
+    e->y0 = round_end(p0.y);
+    e->x1 = round_end(p1.x);
+    e->y1 = round_end(p1.y);
+    e->one = e->tr = e->swapped = 0;
+    if (e->x0 == e->x1 && e->y0 == e->y1) { e->one = 1; return; }
+    if (fabs(e->y1 - e->y0) > fabs(e->x1 - e->x0)) {    /* |slope| > 1: transpose */
+        t = e->x0; e->x0 = e->y0; e->y0 = t;
+        t = e->x1; e->x1 = e->y1; e->y1 = t;
+        e->tr = 1;
+    }
+    if (e->x1 < e->x0) {                            /* step in increasing x */
+        t = e->x0; e->x0 = e->x1; e->x1 = t;
+        t = e->y0; e->y0 = e->y1; e->y1 = t;
+        e->swapped = 1;
+    }
+}
+
+/* A point's rows ylo .. yhi and columns xlo .. xhi (pixel plane) around
+** its rounded centre (x, y); with clip, only those inside the viewport
+** (1 .. h, 1 .. w), which are all that is written. */
+typedef struct point_box {
+    int64_t xlo, xhi, ylo, yhi;
+} point_box;
+
+static void point_rows(point_box *b, const pt_rv_raster_par *par, double x, double y,
+                       int radius, int clip)
+{
+    int ix = jint(x), iy = jint(y);
+
+    b->ylo = wrap32((int64_t)iy - radius);          /* (int)y - radius .. + radius */
+    b->yhi = wrap32((int64_t)iy + radius);
+    b->xlo = wrap32((int64_t)ix - radius);
+    b->xhi = wrap32((int64_t)ix + radius);
+    if (!clip) return;
+    if (b->ylo < 1) b->ylo = 1;
+    if (b->yhi > par->h) b->yhi = par->h;
+    if (b->xlo < 1) b->xlo = 1;
+    if (b->xhi > par->w) b->xhi = par->w;
+}
+
+/* The pixel lines of a segment whose ends are e: the loop's steps
+** (int)x0 .. (int)x1 - 1 and the last pixel, or the one pixel. */
+static uint64_t line_steps(const dda_ends *e)
+{
+    int64_t n = (int64_t)jint(e->x1) - jint(e->x0);
+
+    return e->one ? 1 : (uint64_t)(n > 0 ? n : 0) + 1;
+}
+
+/* The pixel lines of a point whose clipped rows and columns are b. */
+static uint64_t point_steps(const point_box *b)
+{
+    return b->ylo <= b->yhi && b->xlo <= b->xhi    /* rows x columns inside */
+           ? (uint64_t)(b->yhi - b->ylo + 1) * (uint64_t)(b->xhi - b->xlo + 1) : 0;
+}
+
 static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
 {
     const pt_rv_raster_par *par = d->par;
     pt_vec4 v0 = m->v[p->v[0]], v1 = m->v[p->v[1]];
     pt_rgb c0 = m->c[p->c[0]], c1 = m->c[p->c[1]], c;
     pt_vec2 p0 = to_pp(par, v0), p1 = to_pp(par, v1);
-    double x0 = p0.x, y0 = p0.y, x1 = p1.x, y1 = p1.y;
-    double t, y;
+    dda_ends e;
+    double x0, y0, x1, y1, y;
     pt_rv_slopes s = {0};
-    int x, xe, tr = 0;
+    int x, xe, tr;
 
-    if (d->ls && d->ls->ends) d->ls->ends(d->ls->ud, x0, y0, x1, y1);
-    x0 = (double)jround(x0);                        /* Math.round, kept in a double */
-    y0 = (double)jround(y0);
-    x1 = (double)jround(x1);
-    y1 = (double)jround(y1);
-    if (x0 == x1 && y0 == y1) {                     /* one pixel: v0's colour */
+    if (d->ls && d->ls->ends) d->ls->ends(d->ls->ud, p0.x, p0.y, p1.x, p1.y);
+    dda_order(&e, p0, p1);
+    if (d->count_steps) d->steps = line_steps(&e);
+    x0 = e.x0; y0 = e.y0; x1 = e.x1; y1 = e.y1;
+    if (e.one) {                                    /* one pixel: v0's colour */
         end_pixel(d, x0, y0, c0);
         return;
     }
-    if (fabs(y1 - y0) > fabs(x1 - x0)) {            /* |slope| > 1: transpose */
-        t = x0; x0 = y0; y0 = t;
-        t = x1; x1 = y1; y1 = t;
-        tr = 1;
-    }
-    if (x1 < x0) {                                  /* step in increasing x */
-        t = x0; x0 = x1; x1 = t;
-        t = y0; y0 = y1; y1 = t;
-        c = c0; c0 = c1; c1 = c;
-    }
+    tr = e.tr;
+    if (e.swapped) { c = c0; c0 = c1; c1 = c; }
     s.m = (y1 - y0) / (x1 - x0);                    /* m = dy/dx */
     s.transposed = tr;
     s.mc[0] = pt_color_slope(c0.r, c1.r, x1 - x0);  /* (float)(c1 - c0) / dx */
@@ -409,34 +482,26 @@ static void point(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     pt_rgb c = m->c[p->c[0]];
     pt_vec2 q = to_pp(par, v);
     double x = q.x, y = q.y;
-    int ix, iy;
-    int64_t xs, ys, xlo, xhi, ylo, yhi;
+    int64_t xs, ys;
+    point_box b;
     pt_rv_pixel px = {0};
 
     if (d->ls && d->ls->point) d->ls->point(d->ls->ud, x, y);
     x = (double)jround(x);
     y = (double)jround(y);
-    ix = jint(x);
-    iy = jint(y);
-    ylo = wrap32((int64_t)iy - p->radius);          /* (int)y - radius .. + radius */
-    yhi = wrap32((int64_t)iy + p->radius);
-    xlo = wrap32((int64_t)ix - p->radius);
-    xhi = wrap32((int64_t)ix + p->radius);
+    /* nobody hears the clipped pixels: only rows 1..h and columns 1..w are
+    ** written, so the loops run over those alone (a radius of thousands
+    ** costs the viewport, not (2r + 1)^2) */
+    point_rows(&b, par, x, y, p->radius, 1);
+    if (d->count_steps) d->steps = point_steps(&b);
+    if (d->ls && d->ls->pixel && d->ls->clipped_points)
+        point_rows(&b, par, x, y, p->radius, 0);
     px.kind = PT_RV_PX_POINT;
     px.x_pp = x;
     px.y_pp = y;
     written(d, c, &px.c[0], px.b[0]);
-    if (!(d->ls && d->ls->pixel && d->ls->clipped_points)) {
-        /* nobody hears the clipped pixels: only rows 1..h and columns 1..w
-        ** are written, so the loops run over those alone (a radius of
-        ** thousands costs the viewport, not (2r + 1)^2) */
-        if (ylo < 1) ylo = 1;
-        if (yhi > par->h) yhi = par->h;
-        if (xlo < 1) xlo = 1;
-        if (xhi > par->w) xhi = par->w;
-    }
-    for (ys = ylo; ys <= yhi; ys++)                 /* rows outer, bottom first */
-        for (xs = xlo; xs <= xhi; xs++) {
+    for (ys = b.ylo; ys <= b.yhi; ys++)             /* rows outer, bottom first */
+        for (xs = b.xlo; xs <= b.xhi; xs++) {
             px.clipped = !(xs > 0 && xs <= par->w && ys > 0 && ys <= par->h);
             px.x_vp = wrap32(xs - 1);               /* x_ - 1 */
             px.y_vp = wrap32((int64_t)par->h - ys); /* h - y_ */
@@ -449,14 +514,42 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,
                            const pt_rv_raster_ls *ls)
 {
+    return pt_rv_raster_prim_steps(m, p, par, rgb, ls, NULL);
+}
+
+uint64_t pt_rv_raster_prim_steps(const pt_rv_model *m, const pt_rv_prim *p,
+                                 const pt_rv_raster_par *par, unsigned char *rgb,
+                                 const pt_rv_raster_ls *ls, uint64_t *steps)
+{
     draw d;
 
     start(&d, par, rgb, ls);
+    d.count_steps = steps != NULL;
     switch (p->kind) {
     case PT_RV_LINE:  line(&d, m, p); break;
     case PT_RV_POINT: point(&d, m, p); break;
     }
+    if (steps) *steps = d.steps;
     return d.n;
+}
+
+uint64_t pt_rv_raster_steps(const pt_rv_model *m, const pt_rv_prim *p,
+                            const pt_rv_raster_par *par)
+{
+    dda_ends e;
+    point_box b;
+    pt_vec2 q;
+
+    switch (p->kind) {
+    case PT_RV_LINE:
+        dda_order(&e, to_pp(par, m->v[p->v[0]]), to_pp(par, m->v[p->v[1]]));
+        return line_steps(&e);
+    case PT_RV_POINT:
+        q = to_pp(par, m->v[p->v[0]]);
+        point_rows(&b, par, (double)jround(q.x), (double)jround(q.y), p->radius, 1);
+        return point_steps(&b);
+    }
+    return 0;
 }
 
 uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,

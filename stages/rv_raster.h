@@ -143,6 +143,24 @@ uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,
                            const pt_rv_raster_ls *ls);
 
+/* The number of pixel lines pt_rv_raster_prim(m, p, par, ...) tells a
+** listener without clipped_points, found from p's ends alone, without
+** drawing: a line's loop steps (int)x0 .. (int)x1 - 1 (its ends rounded,
+** transposed and ordered as the DDA takes them) and its last pixel, 1 for
+** a one-pixel segment; a point's rows times columns inside the viewport.
+** An AA step is one line (two pixels); a pixel whose index is "bad" is
+** one line too.  p's indices must be valid for m.  This function can't
+** fail. */
+uint64_t pt_rv_raster_steps(const pt_rv_model *m, const pt_rv_prim *p,
+                            const pt_rv_raster_par *par);
+
+/* pt_rv_raster_prim(m, p, par, rgb, ls), which also sets *steps (unless
+** NULL) to pt_rv_raster_steps(m, p, par), found on the way.  This function
+** can't fail. */
+uint64_t pt_rv_raster_prim_steps(const pt_rv_model *m, const pt_rv_prim *p,
+                                 const pt_rv_raster_par *par, unsigned char *rgb,
+                                 const pt_rv_raster_ls *ls, uint64_t *steps);
+
 /* FrameBuffer.setPixelVP(x_vp, y_vp) -> setPixelFB(x_ul + x_vp, y_ul + y_vp):
 ** sets *x_fb, *y_fb (Java ints) and returns the pixel's index y_fb*W + x_fb
 ** in the pixel array, in Java's int arithmetic (an x_fb past W lands in the

@@ -38,7 +38,7 @@ typedef struct cpos {
 ** much is in it so far. */
 typedef struct pieces {
     uint64_t n;
-    uint64_t vertices, prims, pixels;
+    uint64_t vertices, prims, pixels;   /* pixels: pixel lines (pt_rv_raster_steps) */
     int taken;                   /* 1: its records are wanted */
 } pieces;
 
@@ -255,12 +255,27 @@ static int do_step(const run *r, step st, cpos *c)
         break;
     case ST_RASTER:
         for (k = 0; k < m->np; k++) {
-            uint64_t n;
+            uint64_t n = 0, steps;
+            int wanted;
             cut(r, 0, 1);
+            wanted = !r->pc || r->pc->taken;
+            if (ls && ls->tally) ls->tally->prims_wanted += (uint64_t)wanted;
             if (ls && ls->raster) ls->raster(ls->ud, &c->pos, m, &m->p[k]);
-            if (ls && ls->measure) continue;
-            n = pt_rv_raster_prim(m, &m->p[k], &r->par, r->fb->rgb, raster_ls(r));
-            if (r->pc) r->pc->pixels += n;
+            if (ls && ls->measure) {
+                if (r->pc) r->pc->pixels += pt_rv_raster_steps(m, &m->p[k], &r->par);
+                continue;
+            }
+            if (!r->pc) {                        /* one piece: no cuts to count for */
+                n = pt_rv_raster_prim(m, &m->p[k], &r->par, r->fb->rgb, raster_ls(r));
+                if (ls && ls->tally) ls->tally->prims_drawn++;
+            } else if (wanted || !ls->skip_unwanted) {
+                n = pt_rv_raster_prim_steps(m, &m->p[k], &r->par, r->fb->rgb, raster_ls(r),
+                                            &steps);
+                if (ls->tally) ls->tally->prims_drawn++;
+                r->pc->pixels += steps;          /* the cut's count, drawn or not */
+            } else {
+                r->pc->pixels += pt_rv_raster_steps(m, &m->p[k], &r->par);
+            }
             if (ls && ls->drawn) ls->drawn(ls->ud, &c->pos, m, &m->p[k], n);
         }
         break;

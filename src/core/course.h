@@ -88,6 +88,13 @@ typedef struct pt_course_pos {
     int phase;                   /* Pipeline2: the stage number 1 .. 7 running */
 } pt_course_pos;
 
+/* What the rasterizer did, counted (pt_course_ls.tally): it lets a test see
+** that a run skips what it should. */
+typedef struct pt_course_tally {
+    uint64_t prims_wanted;       /* primitives of the pieces wanted */
+    uint64_t prims_drawn;        /* primitives the rasterizer ran on */
+} pt_course_tally;
+
 /* Who hears the driver.  Any callback may be NULL.  The clip listeners and
 ** the rasterizer's are handed to those stages as they are. */
 typedef struct pt_course_ls {
@@ -119,6 +126,12 @@ typedef struct pt_course_ls {
     uint64_t piece_vertices;     /* where the cuts fall: 0 for PT_COURSE_PIECE_* */
     uint64_t piece_prims;
     uint64_t piece_pixels;
+    int skip_unwanted;           /* with piece, 1: a primitive of a piece not
+                                 ** wanted is not drawn (drawn hears it with
+                                 ** npixels 0, fb lacks its pixels): for a run
+                                 ** whose image and pixel counts nobody reads,
+                                 ** the second lane of io/tlanes.h */
+    pt_course_tally *tally;      /* NULL, or where the primitives are counted */
     void *ud;
 } pt_course_ls;
 
@@ -127,8 +140,10 @@ typedef struct pt_course_ls {
 ** and before each primitive the rasterizer draws, and falls there once the
 ** piece holds PT_COURSE_PIECE_VERTICES vertices (a model's, once for its
 ** setup and once for each step before the rasterizer), PT_COURSE_PIECE_PRIMS
-** primitives drawn or PT_COURSE_PIECE_PIXELS pixels, or more.  Runs of the
-** same scene cut alike, whatever the answers. */
+** primitives or PT_COURSE_PIECE_PIXELS pixel lines, or more.  A primitive's
+** pixel lines are pt_rv_raster_steps(), found from its ends without
+** drawing, so runs of the same scene cut alike, whatever the answers and
+** whether they draw. */
 #define PT_COURSE_PIECE_VERTICES 1024
 #define PT_COURSE_PIECE_PRIMS    1024
 #define PT_COURSE_PIECE_PIXELS   4096

@@ -587,13 +587,15 @@ static int on_piece(void *ud, uint64_t n, int last)
     return ln->taken;
 }
 
-void pt_course_lane_ls(pt_course_ls *ls, const pt_course_lane *ln)
+void pt_course_lane_ls(pt_course_ls *ls, pt_course_lane *ln)
 {
     if (!ln->cuts) return;
     ls->piece = on_piece;
     ls->piece_vertices = ln->cuts->vertices;
     ls->piece_prims = ln->cuts->prims;
     ls->piece_pixels = ln->cuts->pixels;
+    ls->skip_unwanted = ln->skips;
+    ls->tally = &ln->tally;
 }
 
 /* Set w up to write s's log with the course's flags dbg to f.  0, or -1
@@ -677,13 +679,19 @@ int pt_course_lanes(const pt_scene *s, pt_fb *fb, pt_course_cuts *cuts,
     if (pt_fb_init(&ln.fb[1], s->fb_w, s->fb_h, s->background) != 0) return 1;
     l0->cuts = l1->cuts = cuts;
     l1->taken = 0;                           /* piece 0 is lane 0's */
+    l1->skips = 1;                           /* lane 0 draws the image */
+    memset(&l0->tally, 0, sizeof l0->tally);
+    memset(&l1->tally, 0, sizeof l1->tally);
     t[0] = l0->t;
     t[1] = l1->t;
     rc = pt_tlanes(t, lane_walk, &ln);
     cuts->taken[0] = l0->pieces;
     cuts->taken[1] = l1->pieces;
+    cuts->tally[0] = l0->tally;
+    cuts->tally[1] = l1->tally;
     l0->cuts = l1->cuts = NULL;
     l0->taken = l1->taken = 1;
+    l1->skips = 0;
     pt_fb_free(&ln.fb[1]);
     return rc;
 }

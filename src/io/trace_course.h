@@ -25,12 +25,16 @@
 
 /* How the log or the trace is written: on one thread, or on two (io/tlanes.h:
 ** a second render into a framebuffer of its own, the driver's pieces shared,
-** the same bytes as on one). */
+** the same bytes as on one; the second render runs the rasterizer on the
+** primitives of its own pieces only). */
 typedef struct pt_course_cuts {
     int threads;                 /* 2: two threads, when a second is to be had */
     uint64_t vertices, prims, pixels;   /* the pieces' sizes (pt_course_ls.piece_*):
                                  ** 0 for the driver's default */
     uint64_t taken[2];           /* out: the pieces each thread wrote */
+    pt_course_tally tally[2];    /* out: each thread's primitives, those of its
+                                 ** pieces and those it drew (the second draws
+                                 ** only its pieces') */
 } pt_course_cuts;
 
 /* Render s (renderer 7 or 9) into fb (s->fb_w x s->fb_h) and write its log
@@ -64,18 +68,23 @@ typedef struct pt_course_lane {
     int taken;                   /* 1: the piece going on is its (io/tlanes.h) */
     uint64_t pieces;             /* the pieces it wrote */
     const pt_course_cuts *cuts;  /* NULL: one thread, every piece its */
+    int skips;                   /* 1: draws only its pieces' primitives */
+    pt_course_tally tally;       /* its primitives, counted */
 } pt_course_lane;
 
-/* With ln->cuts, set ls to cut the render where they say and to ask ln's
-** lane whether each piece is its (ls->ud: the writer's state, which begins
-** with ln).  This function can't fail. */
-void pt_course_lane_ls(pt_course_ls *ls, const pt_course_lane *ln);
+/* With ln->cuts, set ls to cut the render where they say, to ask ln's lane
+** whether each piece is its (ls->ud: the writer's state, which begins with
+** ln), to skip the rasterizer for the others' pieces when ln->skips, and
+** to count into ln->tally.  This function can't fail. */
+void pt_course_lane_ls(pt_course_ls *ls, pt_course_lane *ln);
 
 /* Render s on two threads (io/tlanes.h) as cuts says, lane k calling
 ** walk(w[k], fb_k) (its header, its render with pt_course_lane_ls, its
 ** summary), w[k] a writer's state that begins with its pt_course_lane (t
-** set, nothing written), fb_0 = fb and fb_1 a framebuffer of its own; the
-** pieces each wrote into cuts->taken.  Returns 0, -1 when a walk did, or 1
+** set, nothing written), fb_0 = fb and fb_1 a framebuffer of its own, into
+** which lane 1 draws only the primitives of its own pieces (so fb_1 is no
+** image; lane 0 draws them all); the pieces each wrote into cuts->taken,
+** the primitives each counted into cuts->tally.  Returns 0, -1 when a walk did, or 1
 ** when no second thread or framebuffer is to be had: nothing has run. */
 int pt_course_lanes(const pt_scene *s, pt_fb *fb, pt_course_cuts *cuts,
                     int (*walk)(void *w, pt_fb *fb), void *const w[2]);

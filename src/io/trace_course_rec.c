@@ -65,7 +65,9 @@ typedef struct walker {
     /* the clip stages' new vertices: where each came from, by number */
     struct origin { uint32_t v, c; uint64_t prim; double t; pt_rv_edge edge; pt_rv_cut cut; } *org;
     size_t norg, cap_org;
-    uint64_t nvrec, nprims, npixels;
+    uint64_t nvrec, nprims, npixels;   /* the summary's (lane 0's: on lane 1,
+                                 ** which skips the others' primitives,
+                                 ** npixels counts its own pieces' only) */
     const pt_course_pos *pos;    /* the position the rasterizer draws */
     pt_sbuf names;               /* how a record names its position, made once
                                  ** for the names below (every record of a

@@ -8,7 +8,10 @@
 # driver's pieces of every size, for the course's scenes of tests/course79/ and
 # tests/course/ that load, and for two benchmark scenes of 4,000 vertices
 # (tests/bench/benchgen.c: renderer 9 with anti-aliasing, renderer 7), whose
-# pieces must go to both threads; its count is added to this script's.  Then
+# pieces must go to both threads; it also checks that the second thread runs
+# the rasterizer on its own pieces' primitives only, and that the pixel lines
+# the cuts count (pt_rv_raster_steps) are those drawn; its count is added to
+# this script's.  Then
 # the command line: --threads 1 and 2 give the same bytes and images, the
 # default takes two threads on two CPUs and gives the same bytes, and a write
 # error is reported alike.

@@ -13,7 +13,12 @@
 ** image and result must be the same.  With --both N, the first N scenes'
 ** pieces must go to both threads (the JSON Lines trace at the default size;
 ** tried a few times, since which thread gets there first is the
-** scheduler's to say).
+** scheduler's to say).  The second thread runs the rasterizer on the
+** primitives of its own pieces only (the first on all of them, for the
+** image), as the driver's tally says.  And on every scene each primitive's
+** pixel lines, which the cuts count without drawing (pt_rv_raster_steps)
+** or as they draw (pt_rv_raster_prim_steps), are the lines the rasterizer
+** tells as it draws it.
 */
 #define _POSIX_C_SOURCE 200809L       /* open_memstream */
 #include <stdio.h>
@@ -25,6 +30,8 @@
 #include "io/trace.h"
 #include "io/trace_course.h"
 #include "io/trace_kraft.h"
+#include "core/course.h"
+#include "stages/rv_raster.h"
 
 typedef struct result {
     char *text;                  /* the trace */
@@ -32,7 +39,10 @@ typedef struct result {
     pt_fb fb;                    /* the image */
     int rc;
     uint64_t taken[2];           /* the pieces each thread wrote (two threads) */
+    pt_course_tally tally[2];    /* the primitives each thread took and drew */
 } result;
+
+static uint64_t steps_prims;     /* the primitives check_steps saw, all scenes */
 
 /* The ways of writing: a format of pt_course_trace, or the log (kraft). */
 typedef struct way {
@@ -79,6 +89,91 @@ static void trace(result *r, const pt_scene *s, const way *wy, const uint64_t *c
     fclose(f);                              /* r->text, r->len: the trace */
     r->taken[0] = cuts.taken[0];
     r->taken[1] = cuts.taken[1];
+    r->tally[0] = cuts.tally[0];
+    r->tally[1] = cuts.tally[1];
+}
+
+/* Two threads' r: the first drew every primitive, the second only those of
+** its pieces (each primitive is in one piece). */
+static int drew_alike(const result *r)
+{
+    const pt_course_tally *t = r->tally;
+    return t[0].prims_drawn == t[0].prims_wanted + t[1].prims_wanted &&
+           t[1].prims_drawn == t[1].prims_wanted;
+}
+
+/* ===== the cuts' pixel lines against the rasterizer's ===== */
+
+typedef struct steps_check {
+    pt_rv_raster_par par;        /* the viewport, as the driver's */
+    unsigned char *rgb;          /* a framebuffer to draw each primitive again */
+    uint64_t lines;              /* the pixel lines of the primitive being drawn */
+    uint64_t prims, wrong, total;
+} steps_check;
+
+static void sc_pixel(void *ud, const pt_rv_pixel *px)
+{
+    (void)px;
+    ((steps_check *)ud)->lines++;
+}
+
+static void sc_raster(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
+                      const pt_rv_prim *p)
+{
+    (void)pos; (void)m; (void)p;
+    ((steps_check *)ud)->lines = 0;
+}
+
+static void sc_drawn(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
+                     const pt_rv_prim *p, uint64_t n)
+{
+    steps_check *sc = ud;
+    uint64_t again;
+    (void)pos; (void)n;
+    sc->prims++;
+    sc->total += sc->lines;
+    if (pt_rv_raster_steps(m, p, &sc->par) != sc->lines) sc->wrong++;
+    pt_rv_raster_prim_steps(m, p, &sc->par, sc->rgb, NULL, &again);   /* found drawing */
+    if (again != sc->lines) sc->wrong++;
+}
+
+/* Every primitive of s: pt_rv_raster_steps() = the pixel lines drawn. */
+static void check_steps(const pt_scene *s, const char *path)
+{
+    steps_check sc;
+    pt_rv_raster_ls rls;
+    pt_course_ls ls;
+    pt_fb fb;
+    char what[600];
+    int rc = -1;
+
+    memset(&sc, 0, sizeof sc);
+    sc.par.w = s->vp_w;
+    sc.par.h = s->vp_h;
+    sc.par.x_ul = s->vp_x;
+    sc.par.y_ul = s->vp_y;
+    sc.par.W = s->fb_w;
+    sc.par.H = s->fb_h;
+    memset(&rls, 0, sizeof rls);
+    rls.pixel = sc_pixel;
+    rls.ud = &sc;
+    memset(&ls, 0, sizeof ls);
+    ls.raster = sc_raster;
+    ls.drawn = sc_drawn;
+    ls.raster_ls = &rls;
+    ls.ud = &sc;
+    if (pt_fb_init(&fb, s->fb_w, s->fb_h, s->background) == 0) {
+        sc.rgb = malloc(3 * (size_t)s->fb_w * (size_t)s->fb_h + 1);
+        rc = sc.rgb ? pt_course_render(s, &fb, &ls) : -1;
+        free(sc.rgb);
+        pt_fb_free(&fb);
+    }
+    snprintf(what, sizeof what, "lanes79-7 %s: pixel lines by pt_rv_raster_steps and "
+             "pt_rv_raster_prim_steps = drawn "
+             "(%llu primitives, %llu lines, %llu differ)", path, (unsigned long long)sc.prims,
+             (unsigned long long)sc.total, (unsigned long long)sc.wrong);
+    PT_CHECK(what, rc == 0 && sc.wrong == 0);
+    steps_prims += sc.prims;
 }
 
 static void result_free(result *r)
@@ -112,6 +207,7 @@ static void check_scene(const char *path, int both)
         pt_scene_free(&s);
         return;
     }
+    check_steps(&s, path);
     for (k = 0; k < sizeof ways / sizeof ways[0]; k++) {
         result one;
         trace(&one, &s, &ways[k], NULL);
@@ -124,6 +220,11 @@ static void check_scene(const char *path, int both)
             snprintf(what, sizeof what, "lanes79-2 %s, %s, pieces %d: the first thread wrote "
                      "the first piece and the last", path, ways[k].name, (int)z);
             PT_CHECK(what, two.taken[0] >= 2);
+            snprintf(what, sizeof what, "lanes79-8 %s, %s, pieces %d: the first thread drew "
+                     "every primitive, the second only its pieces' (%llu of %llu)", path,
+                     ways[k].name, (int)z, (unsigned long long)two.tally[1].prims_drawn,
+                     (unsigned long long)two.tally[0].prims_drawn);
+            PT_CHECK(what, drew_alike(&two));
             result_free(&two);
         }
         result_free(&one);
@@ -133,7 +234,8 @@ static void check_scene(const char *path, int both)
         int tries;
         for (tries = 0; tries < 5; tries++) {
             trace(&two, &s, &ways[0], sizes[0]);
-            if (two.taken[0] > 1 && two.taken[1] > 0) break;
+            if (two.taken[0] > 1 && two.taken[1] > 0 && two.tally[0].prims_wanted > 0 &&
+                two.tally[1].prims_wanted > 0) break;
             result_free(&two);
             two.text = NULL;
             two.fb.rgb = NULL;
@@ -141,6 +243,13 @@ static void check_scene(const char *path, int both)
         snprintf(what, sizeof what, "lanes79-3 %s: pieces on both threads (%llu and %llu)",
                  path, (unsigned long long)two.taken[0], (unsigned long long)two.taken[1]);
         PT_CHECK(what, two.taken[0] > 1 && two.taken[1] > 0);
+        snprintf(what, sizeof what, "lanes79-9 %s: the second thread drew fewer primitives "
+                 "than the first (%llu of %llu), its own pieces' (%llu)", path,
+                 (unsigned long long)two.tally[1].prims_drawn,
+                 (unsigned long long)two.tally[0].prims_drawn,
+                 (unsigned long long)two.tally[1].prims_wanted);
+        PT_CHECK(what, two.tally[1].prims_drawn < two.tally[0].prims_drawn &&
+                       two.tally[1].prims_wanted > 0 && drew_alike(&two));
         result_free(&two);
     }
     pt_scene_free(&s);
@@ -155,5 +264,6 @@ int main(int argc, char **argv)
         k = 3;
     }
     for (; k < argc; k++, both--) check_scene(argv[k], both > 0);
+    PT_CHECK("lanes79-7.1 the scenes have primitives to draw", steps_prims > 0);
     return pt_test_report();
 }
