@@ -89,6 +89,16 @@ if [ -x "$b" ]; then
     rc=$?
     check "vg-26 helgrind: the two threads race for nothing (exit $rc)" test "$rc" = 0
     grep -q '^==' "$tmp/err" && sed -n '1,12p' "$tmp/err"
+    # the course's renderer 9 with anti-aliasing: its lanes (src/io/trace_course.c)
+    "$b" 300 1000 9 aa > "$tmp/b9.scene"
+    vg "vg-27 renderer 9's trace on two threads, JSONL, image" 0 "$tmp/b9.scene" --format jsonl \
+        --threads 2 --image "$tmp/b9.ppm"
+    valgrind -q --tool=helgrind --error-exitcode=99 "$exe" "$tmp/b9.scene" --format kraft \
+        --threads 2 --trace /dev/null </dev/null >/dev/null 2>"$tmp/err"
+    rc=$?
+    check "vg-28 helgrind: renderer 9's two lanes, the course's log, race for nothing (exit $rc)" \
+        test "$rc" = 0
+    grep -q '^==' "$tmp/err" && sed -n '1,12p' "$tmp/err"
 else
     echo "  skipped: no $b to make a scene of several pieces"
 fi
