@@ -711,6 +711,7 @@ static int clog_lanes(FILE *f, const pt_scene *s, unsigned dbg, pt_course_cuts *
         ws[1] = &w[1];
         rc = pt_course_lanes(s, fb, cuts, clog_walk, ws);
     }
+    if (rc != 1 && w[0].t) cuts->failed = w[0].t->failed;
     free(w[0].t);
     free(w[1].t);
     free(w);
@@ -727,6 +728,7 @@ int pt_course_log(FILE *f, const pt_scene *s, unsigned dbg, pt_course_cuts *cuts
     rc = cuts && cuts->threads == 2 ? clog_lanes(f, s, dbg, cuts, fb) : 1;
     if (rc == 1) {                           /* one thread */
         rc = clog_init(&w, f, s, dbg) == 0 ? clog_walk(&w, fb) : -1;
+        if (cuts && w.t) cuts->failed = w.t->failed;
         free(w.t);
     }
     if (rc) snprintf(err, errlen, "pipetrace: out of memory");

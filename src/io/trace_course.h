@@ -35,6 +35,8 @@ typedef struct pt_course_cuts {
     pt_course_tally tally[2];    /* out: each thread's primitives, those of its
                                  ** pieces and those it drew (the second draws
                                  ** only its pieces') */
+    int failed;                  /* out: the errno value of the first write to f
+                                 ** that failed, or 0 (then ferror(f) tells) */
 } pt_course_cuts;
 
 /* Render s (renderer 7 or 9) into fb (s->fb_w x s->fb_h) and write its log

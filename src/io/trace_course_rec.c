@@ -823,6 +823,7 @@ static int walk_lanes(FILE *f, const pt_scene *s, int fmt, int precision, int ex
         ws[1] = &w[1];
         rc = pt_course_lanes(s, fb, cuts, walk, ws);
     }
+    if (rc != 1 && w[0].t) cuts->failed = w[0].t->failed;
     walker_free(&w[0]);
     walker_free(&w[1]);
     free(w);
@@ -838,6 +839,7 @@ int pt_course_trace(FILE *f, const pt_scene *s, int fmt, int precision, int expl
 
     if (rc == 1) {                           /* one thread */
         rc = walker_init(&w, f, s, fmt, precision, explain) == 0 ? walk(&w, fb) : -1;
+        if (cuts && w.t) cuts->failed = w.t->failed;
         walker_free(&w);
     }
     if (rc != 0) snprintf(err, errlen, "pipetrace: out of memory");

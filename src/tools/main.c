@@ -337,8 +337,8 @@ static int run_course(const cli *c, const pt_scene *s)
                                           &cuts, &fb, err, sizeof err)) != 0)
             rc = 1;
         else {
-            errno = 0;                      /* what the last write said, if one failed */
-            if (fflush(tout.f) != 0 || ferror(tout.f)) {
+            errno = cuts.failed;            /* what the first write that failed said */
+            if (fflush(tout.f) != 0 || ferror(tout.f) || cuts.failed) {
                 snprintf(err, sizeof err, "cannot write the trace to '%s': %s", c->trace,
                          errno ? strerror(errno) : "a write failed");
                 rc = 1;

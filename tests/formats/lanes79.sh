@@ -62,7 +62,12 @@ if [ -w /dev/full ]; then
         check "lanes79-6.2 $fmt to /dev/full: the message of one thread" test "$err2" = "$err"
         check "lanes79-6.3 ... which says the trace was not written" \
             sh -c 'echo "$1" | grep -q "cannot write the trace"' sh "$err2"
+        check "lanes79-6.4 ... and why, as the system said it (ENOSPC), not 'a write failed'" \
+            sh -c 'echo "$1" | grep -q "No space left on device"' sh "$err2"
     done
+    run tests/course/r7/vpout-01.scene --format csv --trace /dev/full
+    check "lanes79-6.5 a small trace on one thread (csv) to /dev/full: exit 2, why said" \
+        test "$rc" = 2 -a -n "$(echo "$err" | grep 'No space left on device')"
 else
     echo "  skipped: no /dev/full to fail a write"
 fi
