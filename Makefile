@@ -133,7 +133,7 @@ TOOLS_O  = $B/cli.o $B/buildinfo.o $B/catalogue.o $B/catalogue79.o $B/dd.o $B/ac
            $B/journey_classic.o $B/journey_matrix.o $B/jrows.o $B/journey.o $B/journey_html.o \
            $B/journey_course.o $B/journey_wasm.o $B/stages_wasm.o
 CMDS_O   = $B/cmd_diff.o $B/dprint.o $B/dimage.o $B/dvertex.o $B/dexplain.o $B/dfit.o \
-           $B/dpixels.o $B/dsummary.o $B/dseparate.o $B/d79.o $B/cmd_step.o $B/cmd_why.o $B/why_course.o \
+           $B/dpixels.o $B/dsummary.o $B/dsearch.o $B/dseparate.o $B/dseparate79.o $B/d79.o $B/cmd_step.o $B/cmd_why.o $B/why_course.o \
            $B/cmd_quiz.o $B/quiz79.o \
            $B/cmd_accuracy.o $B/cmd_journey.o $B/cmd_stages.o $B/cmd_shapes.o $B/cmd_export.o \
            $B/export_java.o $B/cmd_class.o $B/class_report.o

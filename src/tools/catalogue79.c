@@ -18,8 +18,7 @@
 #include "io/tread79.h"
 #include "tools/catalogue79.h"
 
-/* EXPECTED's camera as the stages take it. */
-static pt_rv_camera rv_cam(const pt_c79cam *c)
+pt_rv_camera pt_c79cam_stages(const pt_c79cam *c)
 {
     pt_rv_camera k;
     memset(&k, 0, sizeof k);
@@ -47,7 +46,7 @@ static void camera_stage(const pt_c79cam *c, const pt_rv_camera *k, const double
 static void skew_forgotten(const pt_c79cam *c, const double prev[4], const double right[4],
                            double out[4])
 {
-    pt_rv_camera k = rv_cam(c);
+    pt_rv_camera k = pt_c79cam_stages(c);
     (void)right;
     k.l = -(c->r - c->l) / 2; k.r = (c->r - c->l) / 2;
     k.b = -(c->t - c->b) / 2; k.t = (c->t - c->b) / 2;
@@ -58,7 +57,7 @@ static void skew_forgotten(const pt_c79cam *c, const double prev[4], const doubl
 static void skew_sign(const pt_c79cam *c, const double prev[4], const double right[4],
                       double out[4])
 {
-    pt_rv_camera k = rv_cam(c);
+    pt_rv_camera k = pt_c79cam_stages(c);
     (void)right;
     k.l = -c->r; k.r = -c->l;
     k.b = -c->t; k.t = -c->b;
@@ -69,7 +68,7 @@ static void skew_sign(const pt_c79cam *c, const double prev[4], const double rig
 static void half_size(const pt_c79cam *c, const double prev[4], const double right[4],
                       double out[4])
 {
-    pt_rv_camera k = rv_cam(c);
+    pt_rv_camera k = pt_c79cam_stages(c);
     (void)right;
     camera_stage(c, &k, prev, out);
     out[0] /= 2;                        /* (2x)/(r-l) / 2 == x/(r-l) exactly */
@@ -80,7 +79,7 @@ static void half_size(const pt_c79cam *c, const double prev[4], const double rig
 static void double_size(const pt_c79cam *c, const double prev[4], const double right[4],
                         double out[4])
 {
-    pt_rv_camera k = rv_cam(c);
+    pt_rv_camera k = pt_c79cam_stages(c);
     (void)right;
     camera_stage(c, &k, prev, out);
     out[0] *= 2;

@@ -40,6 +40,9 @@ typedef struct pt_c79cam {
     double l, r, b, t, n;        /* view rectangle, near plane's z */
 } pt_c79cam;
 
+/* cam as the stages take it (pt_rv_camera, stages/rv_model.h).  Can't fail. */
+pt_rv_camera pt_c79cam_stages(const pt_c79cam *cam);
+
 /* A known mistake of renderer 7 or 9. */
 typedef struct pt_mistake79 {
     int stage;                   /* pt_t79_stage it is made in (io/tread79.h) */

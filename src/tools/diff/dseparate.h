@@ -27,17 +27,7 @@
 
 #include <stddef.h>
 #include "tools/catalogue79.h"
-
-#define PT_SEP_TEXT 12288
-
-/* A separating scene, or why there is none. */
-typedef struct pt_sep {
-    int ok;                      /* 1: text is the scene; 0: text is one sentence
-                                 ** saying why there is none */
-    int full;                    /* 1: the scene did not fit (text says so) */
-    size_t n;                    /* bytes of text */
-    char text[PT_SEP_TEXT];      /* the scene's lines, each ending in '\n' */
-} pt_sep;
+#include "tools/diff/dsearch.h"
 
 /* What renderer 4's search starts from: EXPECTED's header. */
 typedef struct pt_sep_r4 {
