@@ -16,7 +16,8 @@
 **   dpixels.c    the lit pixels, and the rasterizer replayed on a segment
 **   dprint.c     numbers, paragraphs, names
 **   dseparate.c  where known mistakes are ambiguous: a scene that tells them
-**                apart (dseparate.h), printed and written
+**                apart (dseparate.h), renderer 4's, printed and written;
+**                dseparate79.c renderers 7 and 9's; dsearch.c the search
 **   d79.c        the traces and logs of renderers 7 and 9 (their own reader,
 **                io/tread79.h, and catalogue, tools/catalogue79.h)
 ** The types below are diff's own (short names, never seen outside this
