@@ -59,6 +59,19 @@ static inline int pt_pix_round(double x, int64_t *out)
     return 1;
 }
 
+/* pt_pix_round() of an x known to be finite with |x| < PT_PIX_LIMIT: the
+** same integer, without the range test and without the multiplier by
+** (trunc(x) != x), for a loop that checked its range once (renderers 7 and
+** 9's DDA, whose y stays between its ends).  tests/unit/test_stages.c
+** compares it with pt_java_round().  This function can't fail. */
+static inline int64_t pt_pix_round_in(double x)
+{
+    int64_t i = (int64_t)x;                 /* toward zero */
+    double f = x - (double)i;               /* the fraction, exact */
+
+    return i + (f >= 0.5) - (f < -0.5);     /* ties go up: to +infinity */
+}
+
 /* p as a stage returns it, when bit 0 of has says x has a value and bit 1
 ** that y has: ok when both; with one, the other becomes PT_PIX_NONE (null
 ** per value); with neither, {0, 0, 0}.  This function can't fail. */

@@ -14,6 +14,12 @@
 #include "pt_round.h"
 #include "pt_ref.h"
 
+#if defined(__GNUC__)
+#define ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE
+#endif
+
 typedef struct draw {
     const pt_rv_raster_par *par;
     unsigned char *rgb;
@@ -30,6 +36,7 @@ typedef struct draw {
     unsigned vw, vh;             /*   and its size when it lies inside the
                                  ** framebuffer (else 0 0): a pixel inside it
                                  ** needs none of Java's int arithmetic */
+    size_t W;                    /* the framebuffer's width (par->W) */
     float bg[3];                 /* the viewport's background, byte / 255f */
     int flat;                    /* 1: the segment's colour is the same at every
                                  ** step (its slopes are 0): computed once */
@@ -80,8 +87,10 @@ static void start(draw *d, const pt_rv_raster_par *par, unsigned char *rgb,
         d->vp0 = rgb + 3 * ((size_t)par->y_ul * (size_t)par->W + (size_t)par->x_ul);
         d->vw = (unsigned)par->w;
         d->vh = (unsigned)par->h;
+        d->W = (size_t)par->W;
     }
-    for (k = 0; k < 3; k++) d->bg[k] = pt_color_float(par->bg[k]);   /* bg / 255f */
+    if (par->antialias)                         /* only AA blends with it */
+        for (k = 0; k < 3; k++) d->bg[k] = pt_color_float(par->bg[k]);   /* bg / 255f */
 }
 
 int pt_rv_fb_index(const pt_rv_raster_par *par, int x_vp, int y_vp, int *x_fb, int *y_fb)
@@ -95,22 +104,15 @@ int pt_rv_fb_index(const pt_rv_raster_par *par, int x_vp, int y_vp, int *x_fb, i
     return idx < 0 || (int64_t)idx >= (int64_t)par->W * par->H ? -1 : idx;
 }
 
-/* FrameBuffer.setPixelVP(x, y, c) -> setPixelFB(x_ul + x, y_ul + y, c):
-** the pixel's bytes b, or a "bad" report when the index is outside. */
-static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
+/* FrameBuffer.setPixelVP(x, y, c) -> setPixelFB(x_ul + x, y_ul + y, c) for
+** a pixel outside the viewport's shortcut (put_bytes): the pixel's bytes b
+** at its wrapped index, or a "bad" report when the index is outside. */
+static void put_wrapped(draw *d, int x_vp, int y_vp, const unsigned char *b)
 {
     const pt_rv_raster_par *par = d->par;
     unsigned char *o;
     int x, y, idx;
 
-    if ((unsigned)x_vp < d->vw && (unsigned)y_vp < d->vh) {    /* no wrapping, inside */
-        o = d->vp0 + 3 * ((size_t)y_vp * (size_t)par->W + (size_t)x_vp);
-        o[0] = b[0];
-        o[1] = b[1];
-        o[2] = b[2];
-        d->n++;
-        return;
-    }
     idx = pt_rv_fb_index(par, x_vp, y_vp, &x, &y);
     if (idx < 0) {
         if (d->ls && d->ls->bad) d->ls->bad(d->ls->ud, x, y, par->W, par->H);
@@ -121,6 +123,24 @@ static void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
     o[1] = b[1];
     o[2] = b[2];
     d->n++;
+}
+
+/* FrameBuffer.setPixelVP(x, y, c): a pixel inside a viewport that lies in
+** the framebuffer needs none of Java's int arithmetic (inline: every step
+** writes one); any other goes through put_wrapped. */
+static inline ALWAYS_INLINE void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
+{
+    unsigned char *o;
+
+    if ((unsigned)x_vp < d->vw && (unsigned)y_vp < d->vh) {
+        o = d->vp0 + 3 * ((size_t)y_vp * (size_t)d->W + (size_t)x_vp);
+        o[0] = b[0];
+        o[1] = b[1];
+        o[2] = b[2];
+        d->n++;
+        return;
+    }
+    put_wrapped(d, x_vp, y_vp, b);
 }
 
 static void tell(const draw *d, pt_rv_pixel *px)
@@ -192,7 +212,15 @@ static pt_vec2 to_pp(const pt_rv_raster_par *par, pt_vec4 v)
 /* The end pixel (x_pp, y_pp rounded, in the viewport's orientation): raw colour. */
 static void end_pixel(draw *d, double x_pp, double y_pp, pt_rgb c)
 {
-    pt_rv_pixel px = {0};
+    pt_rv_pixel px;
+    unsigned char b[3];
+
+    if (d->quiet) {                                 /* the same write, untold */
+        bytes3(c, b);
+        put_bytes(d, wrap32((int64_t)jint(x_pp) - 1), wrap32((int64_t)d->par->h - jint(y_pp)), b);
+        return;
+    }
+    memset(&px, 0, sizeof px);
     px.kind = PT_RV_PX_END;
     px.x_pp = x_pp;
     px.y_pp = y_pp;
@@ -272,7 +300,7 @@ static void step_aa(draw *d, int x, double y, int tr, pt_rgb c)
 }
 
 /* One loop step with AA when nobody listens: the same bytes, gamma by table. */
-static void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c)
+static inline ALWAYS_INLINE void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c)
 {
     aa_pair a;
     unsigned char lo[3], hi[3];
@@ -286,7 +314,8 @@ static void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c)
 
 /* A loop step's pixel without AA: the row Math.round(y) (in transposed
 ** coordinates). */
-static void plain_pixel(const draw *d, int x, double y, int tr, int *x_vp, int *y_vp)
+static inline ALWAYS_INLINE void plain_pixel(const draw *d, int x, double y, int tr,
+                                             int *x_vp, int *y_vp)
 {
     int64_t r;                                      /* (int)Math.round(y): low 32 bits */
     int ry = wrap32(pt_pix_round(y, &r) ? r : jround(y));   /* inline below 2^62 */
@@ -320,15 +349,70 @@ static void step_plain(draw *d, int x, double y, int tr, pt_rgb c)
     put_bytes(d, px.x_vp, px.y_vp, px.b[0]);
 }
 
-/* One loop step without AA when nobody listens: the same bytes. */
-static void step_plain_quiet(draw *d, int x, double y, int tr, pt_rgb c)
+/* plain_pixel() where |y| < PT_PIX_LIMIT at every step (quiet_loop checks). */
+static inline ALWAYS_INLINE void plain_pixel_in(const draw *d, int x, double y, int tr,
+                                                int *x_vp, int *y_vp)
+{
+    int ry = wrap32(pt_pix_round_in(y));            /* (int)Math.round(y) */
+
+    if (!tr) {
+        *x_vp = wrap32((int64_t)x - 1);             /* x - 1 */
+        *y_vp = wrap32((int64_t)d->par->h - ry);    /* h - round(y) */
+    } else {
+        *x_vp = wrap32((int64_t)ry - 1);            /* round(y) - 1 */
+        *y_vp = wrap32((int64_t)d->par->h - x);     /* h - x */
+    }
+}
+
+/* One loop step without AA when nobody listens: the same bytes (flat: the
+** segment's, d->flat_b); in: y within the limit (plain_pixel_in). */
+static inline ALWAYS_INLINE void step_plain_quiet(draw *d, int x, double y, int tr, pt_rgb c,
+                                                  int flat, int in)
 {
     unsigned char b[3];
     int x_vp, y_vp;
 
-    plain_pixel(d, x, y, tr, &x_vp, &y_vp);
-    if (!d->flat) out_bytes(d, c.r, c.g, c.b, b);
-    put_bytes(d, x_vp, y_vp, d->flat ? d->flat_b : b);
+    if (in) plain_pixel_in(d, x, y, tr, &x_vp, &y_vp);
+    else plain_pixel(d, x, y, tr, &x_vp, &y_vp);
+    if (!flat) out_bytes(d, c.r, c.g, c.b, b);
+    put_bytes(d, x_vp, y_vp, flat ? d->flat_b : b);
+}
+
+/* The loop x = x .. xe - 1, y += m, when nobody listens: the steps of
+** line() below, in a copy of its own for each constant tr, aa and flat,
+** so that no step asks them again.  c0 and mc: the colour at x0 and its
+** slopes (unused when flat: d->flat_c). */
+static inline ALWAYS_INLINE void quiet_run(draw *d, int x, int xe, double y, double m, int tr,
+                                           int aa, int flat, pt_rgb c0, const double mc[3],
+                                           double x0)
+{
+    pt_rgb c = d->flat_c;
+
+    for (; x < xe; x++, y += m) {                   /* y accumulated: y += m */
+        if (!flat) {
+            c.r = pt_color_at(c0.r, mc[0], (double)x, x0);  /* |c0 + mc*(x - x0)| */
+            c.g = pt_color_at(c0.g, mc[1], (double)x, x0);
+            c.b = pt_color_at(c0.b, mc[2], (double)x, x0);
+        }
+        if (aa) step_aa_quiet(d, x, y, tr, c);
+        else step_plain_quiet(d, x, y, tr, c, flat, 1);
+    }
+}
+
+static void quiet_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rgb c0,
+                       const double mc[3], double x0)
+{
+    int aa = d->par->antialias, flat = d->flat;
+
+#define QUIET_RUN(TR, AA, FLAT) quiet_run(d, x, xe, y, m, TR, AA, FLAT, c0, mc, x0)
+    if (!tr) {
+        if (!aa) { if (flat) QUIET_RUN(0, 0, 1); else QUIET_RUN(0, 0, 0); }
+        else     { if (flat) QUIET_RUN(0, 1, 1); else QUIET_RUN(0, 1, 0); }
+    } else {
+        if (!aa) { if (flat) QUIET_RUN(1, 0, 1); else QUIET_RUN(1, 0, 0); }
+        else     { if (flat) QUIET_RUN(1, 1, 1); else QUIET_RUN(1, 1, 0); }
+    }
+#undef QUIET_RUN
 }
 
 /* A segment's ends as the DDA takes them, from its ends p0, p1 in the pixel
@@ -453,21 +537,27 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
         d->flat_c.b = pt_color_at(c0.b, 0.0, x0, x0);
         written(d, d->flat_c, &d->flat_g, d->flat_b);
     }
-    for (x = jint(x0); x < xe; x++, y += s.m) {     /* y accumulated: y += m */
-        if (d->flat) {
-            c = d->flat_c;
-        } else {
-            c.r = pt_color_at(c0.r, s.mc[0], (double)x, x0);  /* |c0 + mc*(x - x0)| */
-            c.g = pt_color_at(c0.g, s.mc[1], (double)x, x0);
-            c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
-        }
-        if (d->quiet) {
-            if (par->antialias) step_aa_quiet(d, x, y, tr, c);
-            else step_plain_quiet(d, x, y, tr, c);
-        } else if (par->antialias) {
-            step_aa(d, x, y, tr, c);
-        } else {
-            step_plain(d, x, y, tr, c);
+    /* |m| <= 1 (the DDA transposes a steep segment) over at most 2^32 steps:
+    ** from |y0| <= 2^61 on, y stays within PT_PIX_LIMIT */
+    if (d->quiet && fabs(y0) <= PT_PIX_LIMIT / 2) {
+        quiet_loop(d, jint(x0), xe, y, s.m, tr, c0, s.mc, x0);
+    } else {
+        for (x = jint(x0); x < xe; x++, y += s.m) { /* y accumulated: y += m */
+            if (d->flat) {
+                c = d->flat_c;
+            } else {
+                c.r = pt_color_at(c0.r, s.mc[0], (double)x, x0);  /* |c0 + mc*(x - x0)| */
+                c.g = pt_color_at(c0.g, s.mc[1], (double)x, x0);
+                c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
+            }
+            if (d->quiet) {
+                if (par->antialias) step_aa_quiet(d, x, y, tr, c);
+                else step_plain_quiet(d, x, y, tr, c, d->flat, 0);
+            } else if (par->antialias) {
+                step_aa(d, x, y, tr, c);
+            } else {
+                step_plain(d, x, y, tr, c);
+            }
         }
     }
     d->flat = 0;

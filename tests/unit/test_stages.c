@@ -258,7 +258,7 @@ static void test_pix_round(void)
         (double)INFINITY, -(double)INFINITY, (double)NAN,
     };
     uint64_t st = 88172645463325252u;
-    int k, agree = 1;
+    int k, agree = 1, agree_in = 1;
 
     for (k = 0; k < 200000 + (int)(sizeof edge / sizeof edge[0]); k++) {
         double x, r;
@@ -274,9 +274,13 @@ static void test_pix_round(void)
         ok = pt_pix_round(x, &got);
         if (ok != (isfinite(x) && fabs(r) < PT_PIX_LIMIT) || (ok && (double)got != r))
             agree = 0;
+        if (isfinite(x) && fabs(x) < PT_PIX_LIMIT && (double)pt_pix_round_in(x) != r)
+            agree_in = 0;
     }
     PT_CHECK("s4-2.1 pt_pix_round() is Java's rounding on 200000 values, ties and limits included",
              agree);
+    PT_CHECK("s4-2.7 pt_pix_round_in() is Java's rounding on the same values within the limit",
+             agree_in);
 }
 
 int main(void)
