@@ -3,7 +3,6 @@
 ** See LICENSE for copyright and license.
 */
 #include <math.h>
-#include <stdlib.h>
 #include "rv_clip.h"
 
 /* Java's recursion ends: each cut puts one end exactly on an edge.  A guard
@@ -68,7 +67,7 @@ int pt_rv_clip(pt_rv_model *m, const pt_rv_clip_ls *ls)
     size_t nold = m->np, i;
     int rc = 0, keep, k;
 
-    m->p = NULL; m->np = m->cap_p = 0;
+    m->np = 0;                                  /* the kept, in place: never past i */
     for (i = 0; i < nold && rc == 0; i++) {
         const pt_rv_prim *p = &old[i];
 
@@ -86,9 +85,8 @@ int pt_rv_clip(pt_rv_model *m, const pt_rv_clip_ls *ls)
             if (rc) break;
             if (ls && ls->trivial) ls->trivial(ls->ud, keep);
         }
-        if (keep && pt_rv_add_prim(m, &q)) { rc = -1; break; }
+        if (keep) m->p[m->np++] = q;
         if (ls && ls->end) ls->end(ls->ud, m, keep ? &q : p, keep);
     }
-    free(old);
     return rc;
 }

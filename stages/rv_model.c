@@ -52,6 +52,11 @@ int pt_rv_add_prim(pt_rv_model *m, const pt_rv_prim *p)
     return 0;
 }
 
+void pt_rv_model_empty(pt_rv_model *m)
+{
+    m->nv = m->nc = m->np = 0;
+}
+
 void pt_rv_model_free(pt_rv_model *m)
 {
     free(m->v);

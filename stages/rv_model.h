@@ -99,6 +99,10 @@ int pt_rv_cut_finish(pt_rv_model *m, pt_rv_cut *cut, const pt_rv_clip_ls *ls);
 ** 0 .. 1 or NaN (it throws otherwise).  This function can't fail. */
 int pt_rv_color_ok(pt_rgb c);
 
+/* Empty m's lists, keeping their room for the next model.  This function
+** can't fail. */
+void pt_rv_model_empty(pt_rv_model *m);
+
 /* Free what m owns and leave it empty.  This function can't fail. */
 void pt_rv_model_free(pt_rv_model *m);
 

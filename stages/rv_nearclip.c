@@ -2,7 +2,6 @@
 ** stages/rv_nearclip.c -- renderers 7 and 9: clip at the near plane z = n (NearClip)
 ** See LICENSE for copyright and license.
 */
-#include <stdlib.h>
 #include "rv_nearclip.h"
 
 /* interpolateNewVertex: cut segment *p at z = n (its ends on either side, or
@@ -41,7 +40,7 @@ int pt_rv_nearclip(pt_rv_model *m, double n, const pt_rv_clip_ls *ls)
     size_t nold = m->np, i;
     int rc = 0, keep;
 
-    m->p = NULL; m->np = m->cap_p = 0;
+    m->np = 0;                                  /* the kept, in place: never past i */
     for (i = 0; i < nold; i++) {
         const pt_rv_prim *p = &old[i];
 
@@ -61,9 +60,8 @@ int pt_rv_nearclip(pt_rv_model *m, double n, const pt_rv_clip_ls *ls)
                 keep = 1;
             }
         }
-        if (keep && pt_rv_add_prim(m, &q)) { rc = -1; break; }
+        if (keep) m->p[m->np++] = q;
         if (ls && ls->end) ls->end(ls->ud, m, keep ? &q : p, keep);
     }
-    free(old);
     return rc;
 }

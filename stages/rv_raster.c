@@ -267,36 +267,35 @@ static void aa_blend(const draw *d, int x, double y, int tr, pt_rgb c, aa_pair *
     }
 }
 
-/* One loop step with AA, told to the listener. */
-static void step_aa(draw *d, int x, double y, int tr, pt_rgb c)
+/* One loop step with AA, told to the listener in *px (its kind and
+** transposed set by the loop, the rest here). */
+static inline ALWAYS_INLINE void step_aa(draw *d, int x, double y, int tr, pt_rgb c,
+                                         pt_rv_pixel *px)
 {
     aa_pair a;
-    pt_rv_pixel px = {0};
     pt_rgb lo, hi;
 
     aa_blend(d, x, y, tr, c, &a);
     lo.r = a.lo[0]; lo.g = a.lo[1]; lo.b = a.lo[2];
     hi.r = a.hi[0]; hi.g = a.hi[1]; hi.b = a.hi[2];
-    written(d, lo, &px.c[0], px.b[0]);
-    written(d, hi, &px.c[1], px.b[1]);
-    px.kind = PT_RV_PX_AA;
-    px.transposed = tr;
+    written(d, lo, &px->c[0], px->b[0]);
+    written(d, hi, &px->c[1], px->b[1]);
     if (!tr) {
-        px.x_pp = (double)x;
-        px.y_pp = y;
-        px.x_vp = a.x_vp[0];
-        px.lo = a.y_vp[0];
-        px.hi = a.y_vp[1];
+        px->x_pp = (double)x;
+        px->y_pp = y;
+        px->x_vp = a.x_vp[0];
+        px->lo = a.y_vp[0];
+        px->hi = a.y_vp[1];
     } else {
-        px.x_pp = y;
-        px.y_pp = (double)x;
-        px.y_vp = a.y_vp[0];
-        px.lo = a.x_vp[0];
-        px.hi = a.x_vp[1];
+        px->x_pp = y;
+        px->y_pp = (double)x;
+        px->y_vp = a.y_vp[0];
+        px->lo = a.x_vp[0];
+        px->hi = a.x_vp[1];
     }
-    tell(d, &px);
-    put_bytes(d, a.x_vp[0], a.y_vp[0], px.b[0]);
-    put_bytes(d, a.x_vp[1], a.y_vp[1], px.b[1]);
+    tell(d, px);
+    put_bytes(d, a.x_vp[0], a.y_vp[0], px->b[0]);
+    put_bytes(d, a.x_vp[1], a.y_vp[1], px->b[1]);
 }
 
 /* One loop step with AA when nobody listens: the same bytes, gamma by table. */
@@ -329,26 +328,6 @@ static inline ALWAYS_INLINE void plain_pixel(const draw *d, int x, double y, int
     }
 }
 
-/* One loop step without AA, told to the listener. */
-static void step_plain(draw *d, int x, double y, int tr, pt_rgb c)
-{
-    pt_rv_pixel px = {0};
-
-    px.kind = PT_RV_PX_STEP;
-    px.transposed = tr;
-    if (d->flat) {
-        px.c[0] = d->flat_g;
-        memcpy(px.b[0], d->flat_b, 3);
-    } else {
-        written(d, c, &px.c[0], px.b[0]);
-    }
-    px.x_pp = tr ? y : (double)x;
-    px.y_pp = tr ? (double)x : y;
-    plain_pixel(d, x, y, tr, &px.x_vp, &px.y_vp);
-    tell(d, &px);
-    put_bytes(d, px.x_vp, px.y_vp, px.b[0]);
-}
-
 /* plain_pixel() where |y| < PT_PIX_LIMIT at every step (quiet_loop checks). */
 static inline ALWAYS_INLINE void plain_pixel_in(const draw *d, int x, double y, int tr,
                                                 int *x_vp, int *y_vp)
@@ -362,6 +341,21 @@ static inline ALWAYS_INLINE void plain_pixel_in(const draw *d, int x, double y, 
         *x_vp = wrap32((int64_t)ry - 1);            /* round(y) - 1 */
         *y_vp = wrap32((int64_t)d->par->h - x);     /* h - x */
     }
+}
+
+/* One loop step without AA, told to the listener in *px (its kind and
+** transposed set by the loop, and for a flat segment its colour and bytes:
+** d->flat_g, d->flat_b); in: y within the limit (plain_pixel_in). */
+static inline ALWAYS_INLINE void step_plain(draw *d, int x, double y, int tr, pt_rgb c,
+                                            pt_rv_pixel *px, int in)
+{
+    if (!d->flat) written(d, c, &px->c[0], px->b[0]);
+    px->x_pp = tr ? y : (double)x;
+    px->y_pp = tr ? (double)x : y;
+    if (in) plain_pixel_in(d, x, y, tr, &px->x_vp, &px->y_vp);
+    else plain_pixel(d, x, y, tr, &px->x_vp, &px->y_vp);
+    tell(d, px);
+    put_bytes(d, px->x_vp, px->y_vp, px->b[0]);
 }
 
 /* One loop step without AA when nobody listens: the same bytes (flat: the
@@ -504,7 +498,8 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     dda_ends e;
     double x0, y0, x1, y1, y;
     pt_rv_slopes s = {0};
-    int x, xe, tr;
+    pt_rv_pixel px;
+    int x, xe, tr, in;
 
     if (d->ls && d->ls->ends) d->ls->ends(d->ls->ud, p0.x, p0.y, p1.x, p1.y);
     dda_order(&e, p0, p1);
@@ -539,9 +534,15 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     }
     /* |m| <= 1 (the DDA transposes a steep segment) over at most 2^32 steps:
     ** from |y0| <= 2^61 on, y stays within PT_PIX_LIMIT */
-    if (d->quiet && fabs(y0) <= PT_PIX_LIMIT / 2) {
+    in = fabs(y0) <= PT_PIX_LIMIT / 2;
+    if (d->quiet && in) {
         quiet_loop(d, jint(x0), xe, y, s.m, tr, c0, s.mc, x0);
     } else {
+        memset(&px, 0, sizeof px);                  /* what no step changes */
+        px.kind = par->antialias ? PT_RV_PX_AA : PT_RV_PX_STEP;
+        px.transposed = tr;
+        px.c[0] = d->flat_g;
+        memcpy(px.b[0], d->flat_b, 3);
         for (x = jint(x0); x < xe; x++, y += s.m) { /* y accumulated: y += m */
             if (d->flat) {
                 c = d->flat_c;
@@ -554,9 +555,11 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
                 if (par->antialias) step_aa_quiet(d, x, y, tr, c);
                 else step_plain_quiet(d, x, y, tr, c, d->flat, 0);
             } else if (par->antialias) {
-                step_aa(d, x, y, tr, c);
+                step_aa(d, x, y, tr, c, &px);
+            } else if (in) {
+                step_plain(d, x, y, tr, c, &px, 1);
             } else {
-                step_plain(d, x, y, tr, c);
+                step_plain(d, x, y, tr, c, &px, 0);
             }
         }
     }

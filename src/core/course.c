@@ -310,6 +310,11 @@ static int pipeline1(const run *r, cpos *c, size_t nc, const step *sts, size_t n
     size_t k, j;
 
     for (k = 0; k < nc; k++) {
+        if (k > 0) {                             /* done with: its room serves the next */
+            c[k].m = c[k - 1].m;
+            memset(&c[k - 1].m, 0, sizeof c[k - 1].m);
+            pt_rv_model_empty(&c[k].m);
+        }
         if (setup(r, &c[k]) != 0) return -1;
         if (!c[k].live) continue;
         for (j = 0; j < nst; j++)

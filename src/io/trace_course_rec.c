@@ -52,6 +52,10 @@ typedef struct rec {
 
 #define KEPT_BITS 8              /* log2 of the slots of each table of kept() */
 
+/* A pixel record's end after its y: JSON's rgb and coverage (at most 60
+** bytes), text's (at most 80) */
+#define PIXEL_TAIL 96
+
 typedef struct walker {
     pt_course_lane ln;           /* its lane (first: pt_course_lane_ls) */
     pt_trace *t;                 /* the output block and its numbers (trace_int.h) */
@@ -80,6 +84,12 @@ typedef struct walker {
     int pix_made;                /*   made for it (0: at its first pixel) */
     char pix_fixed[96];          /*   and, when it fits, copied here for a
                                  ** copy of a fixed size */
+    struct tail {                /* a pixel record's end after its y, for */
+        unsigned char b[3];      /*   these bytes */
+        uint32_t f;              /*   and the bits of this coverage */
+        size_t len;              /*   (0: none made yet) */
+        char s[PIXEL_TAIL];
+    } tail;
     int explain;                 /* --explain: each vertex record's formula */
     pt_course_cam cam;           /*   the camera, */
     struct prev { pt_vec4 *v; size_t n; } *prev;  /* each position's vertices
@@ -540,9 +550,9 @@ static void on_warn(void *ud, pt_course_warn k, const pt_course_pos *pos,
 }
 
 /* The most a pixel record writes after its opening: two integers of 20
-** bytes, three of 3, a coverage of PT_NUMLEN + 2 (JSON) or "%.4f" of a float
-** (text: 45), the keys. */
+** bytes and the key between them, then its tail, copied whole (PIXEL_TAIL). */
 #define PIXEL_REST 160
+_Static_assert(2 * 20 + 16 + PIXEL_TAIL <= PIXEL_REST, "a pixel record fits its room");
 
 /* Make w->pix the opening of the pixel records of the primitive being drawn
 ** (w->pos, number w->raster_no + 1).  0 when out of memory. */
@@ -571,6 +581,39 @@ static int pixel_head(walker *w)
     return 1;
 }
 
+/* The end of a pixel record after its y, for bytes b and coverage f (JSON:
+** ,"rgb":[R,G,B],"coverage":F}; text: rgb = R G B  coverage F), in
+** w->tail: made when b or f differ from the last record's, else as it is
+** (a segment's steps mostly write one colour, at coverage 1 without AA).
+** Returns its PIXEL_TAIL bytes, w->tail.len of them the tail. */
+static const char *pixel_tail(walker *w, const unsigned char b[3], float f)
+{
+    struct tail *e = &w->tail;
+    pt_trace *t = w->t;
+    uint32_t fb;
+    char *o = e->s;
+
+    memcpy(&fb, &f, sizeof fb);
+    if (e->len && fb == e->f && memcmp(b, e->b, 3) == 0) return e->s;
+    if (w->fmt == PT_FORMAT_JSONL) {
+        o = u64_at(t, str_at(o, ",\"rgb\":["), b[0]);
+        o = u64_at(t, str_at(o, ","), b[1]);
+        o = u64_at(t, str_at(o, ","), b[2]);
+        o = json_num_at(t, str_at(o, "],\"coverage\":"), (double)f);
+        o = str_at(o, "}\n");
+    } else {
+        o = u64_at(t, str_at(o, "  rgb = "), b[0]);
+        o = u64_at(t, str_at(o, " "), b[1]);
+        o = u64_at(t, str_at(o, " "), b[2]);
+        o = fixed_at(w, str_at(o, "  coverage "), (double)f, KEPT_COVERAGE, 4);
+        o = str_at(o, "\n");
+    }
+    e->len = (size_t)(o - e->s);
+    memcpy(e->b, b, 3);
+    e->f = fb;
+    return e->s;
+}
+
 /* One pixel record: (x_vp, y_vp) in the viewport, the bytes b written,
 ** coverage f: its opening (one copy of a fixed size, or the long one), then
 ** its numbers. */
@@ -593,20 +636,12 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
     if (w->fmt == PT_FORMAT_JSONL) {
         o = int_at(t, o, x_fb, 0);
         o = int_at(t, str_at(o, ",\"y\":"), y_fb, 0);
-        o = u64_at(t, str_at(o, ",\"rgb\":["), b[0]);
-        o = u64_at(t, str_at(o, ","), b[1]);
-        o = u64_at(t, str_at(o, ","), b[2]);
-        o = json_num_at(t, str_at(o, "],\"coverage\":"), (double)f);
-        done(w, str_at(o, "}\n"));
-        return;
+    } else {
+        o = int_at(t, o, x_fb, 0);
+        o = int_at(t, str_at(o, "  y_fb = "), y_fb, 0);
     }
-    o = int_at(t, o, x_fb, 0);
-    o = int_at(t, str_at(o, "  y_fb = "), y_fb, 0);
-    o = u64_at(t, str_at(o, "  rgb = "), b[0]);
-    o = u64_at(t, str_at(o, " "), b[1]);
-    o = u64_at(t, str_at(o, " "), b[2]);
-    o = fixed_at(w, str_at(o, "  coverage "), (double)f, KEPT_COVERAGE, 4);
-    done(w, str_at(o, "\n"));
+    memcpy(o, pixel_tail(w, b, f), PIXEL_TAIL);
+    done(w, o + w->tail.len);
 }
 
 /* The rasterizer's pixel lines as pixel records: an anti-aliased step is
