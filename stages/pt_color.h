@@ -23,22 +23,36 @@
 #ifndef PT_COLOR_H
 #define PT_COLOR_H
 
+#include <math.h>
+
+/* The formulas a rasterizer runs at every step are inline here; pow and the
+** blend are in pt_color.c. */
+
 /* The course's 1 / 2.2 (Rasterize.GAMMA = 2.2; 1.0 / 2.2 in double). */
 #define PT_GAMMA_INV 0.45454545454545453
 
 /* Colour byte c (0..255) as the course's float component, c / 255f.  This
 ** function can't fail. */
-float pt_color_float(unsigned char c);
+static inline float pt_color_float(unsigned char c)
+{
+    return (float)c / 255.0f;                       /* c / 255f */
+}
 
 /* The change of a colour component per step, from c0 at the first end to
 ** c1 at the last, over ds = s1 - s0 steps (ds != 0).  This function can't
 ** fail. */
-double pt_color_slope(float c0, float c1, double ds);
+static inline double pt_color_slope(float c0, float c1, double ds)
+{
+    return (double)(c1 - c0) / ds;                  /* (c1 - c0) / (s1 - s0) */
+}
 
 /* The component at step s of a segment whose first end s0 has c0, changing
 ** by slope a step: (float)|c0 + slope * (s - s0)|.  This function can't
 ** fail. */
-float pt_color_at(float c0, double slope, double s, double s0);
+static inline float pt_color_at(float c0, double slope, double s, double s0)
+{
+    return (float)fabs((double)c0 + slope * (s - s0));   /* |c0 + slope*(s - s0)| */
+}
 
 /* The course's gamma encoding of component c (0..1): (float)pow(c, 1/2.2).
 ** This function can't fail. */
@@ -48,7 +62,14 @@ float pt_gamma(float c);
 ** (int)((double)(c*255f) + 0.5), the product in float; NaN gives 0 (Java's
 ** (int)NaN), and beyond 1 gives 255 (Java would refuse it).  This function
 ** can't fail. */
-unsigned char pt_color_byte(float c);
+static inline unsigned char pt_color_byte(float c)
+{
+    double v = (double)(c * 255.0f) + 0.5;          /* (double)(c*255f) + 0.5 */
+
+    if (!(v >= 1.0)) return 0;                      /* (int) truncates; NaN: 0 */
+    if (v >= 255.0) return 255;
+    return (unsigned char)v;
+}
 
 /* The anti-aliasing weight of a step whose other coordinate is a, its lower
 ** pixel a_low = floor(a): (float)(a - a_low).  This function can't fail. */

@@ -240,21 +240,29 @@ typedef struct aa_pair {
     float lo[3], hi[3];          /* their colours, before gamma */
 } aa_pair;
 
-static void aa_blend(const draw *d, int x, double y, int tr, pt_rgb c, aa_pair *a)
+/* small: |y| < 2^31 (quiet_loop checks), so (int)y needs no saturation;
+** grey: c and the background each have three equal components, so one is
+** blended for all (the same float operations give the same float). */
+static inline ALWAYS_INLINE void aa_blend(const draw *d, int x, double y, int tr, pt_rgb c,
+                                          aa_pair *a, int small, int grey)
 {
     const pt_rv_raster_par *par = d->par;
     float f, in[3];
     int k;
 
-    a->y_low = jint(y);
+    a->y_low = small ? (int)y : jint(y);
     a->y_hi = wrap32((int64_t)a->y_low + 1);
     if (!tr && y == (double)par->h) a->y_hi = par->h;   /* the top edge */
     if (tr && y == (double)par->w) a->y_hi = par->w;    /* the right edge */
     f = (float)(y - (double)a->y_low);                  /* weight = fraction of y */
     in[0] = c.r; in[1] = c.g; in[2] = c.b;
-    for (k = 0; k < 3; k++) {
+    for (k = 0; k < (grey ? 1 : 3); k++) {
         a->lo[k] = (1.0f - f) * in[k] + f * d->bg[k];   /* (1-f)*c + f*bg */
         a->hi[k] = f * in[k] + (1.0f - f) * d->bg[k];   /* f*c + (1-f)*bg */
+    }
+    if (grey) {
+        a->lo[1] = a->lo[2] = a->lo[0];
+        a->hi[1] = a->hi[2] = a->hi[0];
     }
     if (!tr) {
         a->x_vp[0] = a->x_vp[1] = wrap32((int64_t)x - 1);       /* x - 1 */
@@ -275,7 +283,7 @@ static inline ALWAYS_INLINE void step_aa(draw *d, int x, double y, int tr, pt_rg
     aa_pair a;
     pt_rgb lo, hi;
 
-    aa_blend(d, x, y, tr, c, &a);
+    aa_blend(d, x, y, tr, c, &a, 0, 0);
     lo.r = a.lo[0]; lo.g = a.lo[1]; lo.b = a.lo[2];
     hi.r = a.hi[0]; hi.g = a.hi[1]; hi.b = a.hi[2];
     written(d, lo, &px->c[0], px->b[0]);
@@ -298,15 +306,22 @@ static inline ALWAYS_INLINE void step_aa(draw *d, int x, double y, int tr, pt_rg
     put_bytes(d, a.x_vp[1], a.y_vp[1], px->b[1]);
 }
 
-/* One loop step with AA when nobody listens: the same bytes, gamma by table. */
-static inline ALWAYS_INLINE void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c)
+/* One loop step with AA when nobody listens: the same bytes, gamma by
+** table; small and grey as for aa_blend (grey: one byte for three). */
+static inline ALWAYS_INLINE void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c,
+                                               int small, int grey)
 {
     aa_pair a;
     unsigned char lo[3], hi[3];
 
-    aa_blend(d, x, y, tr, c, &a);
-    out_bytes(d, a.lo[0], a.lo[1], a.lo[2], lo);
-    out_bytes(d, a.hi[0], a.hi[1], a.hi[2], hi);
+    aa_blend(d, x, y, tr, c, &a, small, grey);
+    if (grey) {
+        lo[0] = lo[1] = lo[2] = out_byte(d, a.lo[0]);
+        hi[0] = hi[1] = hi[2] = out_byte(d, a.hi[0]);
+    } else {
+        out_bytes(d, a.lo[0], a.lo[1], a.lo[2], lo);
+        out_bytes(d, a.hi[0], a.hi[1], a.hi[2], hi);
+    }
     put_bytes(d, a.x_vp[0], a.y_vp[0], lo);
     put_bytes(d, a.x_vp[1], a.y_vp[1], hi);
 }
@@ -372,13 +387,14 @@ static inline ALWAYS_INLINE void step_plain_quiet(draw *d, int x, double y, int 
     put_bytes(d, x_vp, y_vp, flat ? d->flat_b : b);
 }
 
-/* The loop x = x .. xe - 1, y += m, when nobody listens: the steps of
-** line() below, in a copy of its own for each constant tr, aa and flat,
-** so that no step asks them again.  c0 and mc: the colour at x0 and its
-** slopes (unused when flat: d->flat_c). */
+/* The loop x = x .. xe - 1, y += m, when nobody listens and |y| < 2^31 at
+** every step: the steps of line() below, in a copy of its own for each
+** constant tr, aa, flat and grey (aa_blend), so that no step asks them
+** again.  c0 and mc: the colour at x0 and its slopes (unused when flat:
+** d->flat_c). */
 static inline ALWAYS_INLINE void quiet_run(draw *d, int x, int xe, double y, double m, int tr,
-                                           int aa, int flat, pt_rgb c0, const double mc[3],
-                                           double x0)
+                                           int aa, int flat, int grey, pt_rgb c0,
+                                           const double mc[3], double x0)
 {
     pt_rgb c = d->flat_c;
 
@@ -388,7 +404,7 @@ static inline ALWAYS_INLINE void quiet_run(draw *d, int x, int xe, double y, dou
             c.g = pt_color_at(c0.g, mc[1], (double)x, x0);
             c.b = pt_color_at(c0.b, mc[2], (double)x, x0);
         }
-        if (aa) step_aa_quiet(d, x, y, tr, c);
+        if (aa) step_aa_quiet(d, x, y, tr, c, 1, grey);
         else step_plain_quiet(d, x, y, tr, c, flat, 1);
     }
 }
@@ -396,16 +412,20 @@ static inline ALWAYS_INLINE void quiet_run(draw *d, int x, int xe, double y, dou
 static void quiet_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rgb c0,
                        const double mc[3], double x0)
 {
+    const float *bg = d->bg;
+    pt_rgb f = d->flat_c;
     int aa = d->par->antialias, flat = d->flat;
+    int grey = aa && flat && f.r == f.g && f.g == f.b && bg[0] == bg[1] && bg[1] == bg[2];
 
-#define QUIET_RUN(TR, AA, FLAT) quiet_run(d, x, xe, y, m, TR, AA, FLAT, c0, mc, x0)
-    if (!tr) {
-        if (!aa) { if (flat) QUIET_RUN(0, 0, 1); else QUIET_RUN(0, 0, 0); }
-        else     { if (flat) QUIET_RUN(0, 1, 1); else QUIET_RUN(0, 1, 0); }
-    } else {
-        if (!aa) { if (flat) QUIET_RUN(1, 0, 1); else QUIET_RUN(1, 0, 0); }
-        else     { if (flat) QUIET_RUN(1, 1, 1); else QUIET_RUN(1, 1, 0); }
-    }
+#define QUIET_RUN(TR) do {                                                          \
+        if (!aa && flat) quiet_run(d, x, xe, y, m, TR, 0, 1, 0, c0, mc, x0);        \
+        else if (!aa)    quiet_run(d, x, xe, y, m, TR, 0, 0, 0, c0, mc, x0);        \
+        else if (grey)   quiet_run(d, x, xe, y, m, TR, 1, 1, 1, c0, mc, x0);        \
+        else if (flat)   quiet_run(d, x, xe, y, m, TR, 1, 1, 0, c0, mc, x0);        \
+        else             quiet_run(d, x, xe, y, m, TR, 1, 0, 0, c0, mc, x0);        \
+    } while (0)
+    if (!tr) QUIET_RUN(0);
+    else QUIET_RUN(1);
 #undef QUIET_RUN
 }
 
@@ -513,9 +533,11 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     if (e.swapped) { c = c0; c0 = c1; c1 = c; }
     s.m = (y1 - y0) / (x1 - x0);                    /* m = dy/dx */
     s.transposed = tr;
-    s.mc[0] = pt_color_slope(c0.r, c1.r, x1 - x0);  /* (float)(c1 - c0) / dx */
-    s.mc[1] = pt_color_slope(c0.g, c1.g, x1 - x0);
-    s.mc[2] = pt_color_slope(c0.b, c1.b, x1 - x0);
+    /* (float)(c1 - c0) / dx; dx > 0 here, so equal components give +0
+    ** without the division */
+    s.mc[0] = c0.r == c1.r ? 0.0 : pt_color_slope(c0.r, c1.r, x1 - x0);
+    s.mc[1] = c0.g == c1.g ? 0.0 : pt_color_slope(c0.g, c1.g, x1 - x0);
+    s.mc[2] = c0.b == c1.b ? 0.0 : pt_color_slope(c0.b, c1.b, x1 - x0);
     s.x0_vp = x0 - 1.0;
     s.y0_vp = (double)par->h - y0;
     s.x1_vp = x1 - 1.0;
@@ -532,9 +554,10 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
         d->flat_c.b = pt_color_at(c0.b, 0.0, x0, x0);
         written(d, d->flat_c, &d->flat_g, d->flat_b);
     }
-    /* |m| <= 1 (the DDA transposes a steep segment) over at most 2^32 steps:
-    ** from |y0| <= 2^61 on, y stays within PT_PIX_LIMIT */
-    in = fabs(y0) <= PT_PIX_LIMIT / 2;
+    /* with its ends within 2^30, the loop takes x1 - x0 steps and y runs
+    ** from y0 toward y1: it stays within 2^31 (and PT_PIX_LIMIT) */
+    in = fabs(x0) <= 1073741824.0 && fabs(x1) <= 1073741824.0 &&
+         fabs(y0) <= 1073741824.0 && fabs(y1) <= 1073741824.0;
     if (d->quiet && in) {
         quiet_loop(d, jint(x0), xe, y, s.m, tr, c0, s.mc, x0);
     } else {
@@ -552,7 +575,7 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
                 c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
             }
             if (d->quiet) {
-                if (par->antialias) step_aa_quiet(d, x, y, tr, c);
+                if (par->antialias) step_aa_quiet(d, x, y, tr, c, 0, 0);
                 else step_plain_quiet(d, x, y, tr, c, d->flat, 0);
             } else if (par->antialias) {
                 step_aa(d, x, y, tr, c, &px);

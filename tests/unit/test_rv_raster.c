@@ -11,7 +11,8 @@
 ** must be the same, and drawn for a listener that reads bytes alone
 ** (bytes_only: the traces' pixel records) the image, the pixel lines and
 ** their bytes must be those a listener of floats hears, the bytes the
-** formula's.  Usage:
+** formula's.  Random primitives beyond the cases (far ends, NaN, viewports
+** sticking out) are drawn the three ways too (rv-5).  Usage:
 ** test_rv_raster [DIR] (default tests/data/course-raster).
 */
 #include <stdio.h>
@@ -458,6 +459,129 @@ static void index_rules(void)
              bad == 0 && tried == 48000);
 }
 
+/* ===== the quiet steps against the told ones ===== */
+
+static void no_pixel(void *ud, const pt_rv_pixel *px)
+{
+    (void)ud; (void)px;
+}
+
+static void bad_count(void *ud, int x, int y, int W, int H)    /* where, in order */
+{
+    uint64_t *h = ud;
+
+    (void)W; (void)H;
+    *h = *h * 1000003u + (uint64_t)(uint32_t)x * 65599u + (uint32_t)y + 1u;
+}
+
+static uint64_t rnd(uint64_t *st)                /* xorshift64 */
+{
+    *st ^= *st << 13; *st ^= *st >> 7; *st ^= *st << 17;
+    return *st;
+}
+
+/* The image-plane x whose pixel-plane x (0.5 + w/2.001 (x + 1)) is near p. */
+static double from_pp(double p, int w)
+{
+    return (p - 0.5) * 2.001 / w - 1.0;
+}
+
+/* An end's pixel coordinate: mostly in the viewport, else (with far) near
+** 2^30 or 2^31 or beyond (where the quiet loop hands over to the general
+** one), or NaN; the other end of a far one stays within 40 pixels of it
+** (near), and the other end of any other is not far: a segment takes as
+** many steps as it is long. */
+static double pick(uint64_t *st, int size, double near, int far_ok)
+{
+    static const double far[] = {1073741800.0, 1073741830.0, 2147483600.0, 2147483660.0,
+                                 -1073741830.0, -2147483660.0, 4611686018427387904.0};
+    if (near == near && fabs(near) > 4.0 * size) return near + (double)(rnd(st) % 81) - 40.0;
+    switch (rnd(st) % 16) {
+    case 0: if (far_ok) return far[rnd(st) % (sizeof far / sizeof far[0])];
+            return 0.0;
+    case 1: return (double)NAN;
+    case 2: return -3.0 - (double)(rnd(st) % 20);
+    default: return (double)(rnd(st) % (uint64_t)(size * 4 + 1)) / 4.0 - 2.0;
+    }
+}
+
+/* rv-5: random segments and points (flat, grey and changing colours, AA and
+** gamma on and off, viewports inside the framebuffer and sticking out of
+** it, ends far outside and NaN) drawn three ways: for nobody (the quiet
+** loops, gamma by table), for a listener of bytes and for a listener of
+** floats.  The three framebuffers, counts of pixels written and "bad"
+** reports must agree. */
+static void quiet_vs_told(void)
+{
+    enum { W = 40, H = 30, N = 6000 };
+    static unsigned char fb[3][W * H * 3];
+    uint64_t st = 0x9e3779b97f4a7c15u, bad[3], n[3];
+    pt_vec4 v[2];
+    pt_rgb c[2];
+    pt_rv_model m;
+    pt_rv_prim p;
+    pt_rv_raster_par par;
+    pt_rv_raster_ls ls[3];
+    int k, j, i, same = 1, counts = 1, far = 0;
+
+    memset(&m, 0, sizeof m);
+    m.v = v; m.nv = 2; m.c = c; m.nc = 2;
+    for (k = 0; k < N; k++) {
+        memset(&par, 0, sizeof par);
+        par.W = W; par.H = H;
+        par.w = 10 + (int)(rnd(&st) % 31);
+        par.h = 10 + (int)(rnd(&st) % 21);
+        par.x_ul = rnd(&st) % 3 ? 0 : (int)(rnd(&st) % 21) - 10;
+        par.y_ul = rnd(&st) % 3 ? 0 : (int)(rnd(&st) % 21) - 10;
+        par.bg[0] = par.bg[1] = par.bg[2] = (unsigned char)(rnd(&st) % 2 ? 0 : 200);
+        if (rnd(&st) % 4 == 0) par.bg[1] = 17;
+        par.antialias = (int)(rnd(&st) % 2);
+        par.gamma = (int)(rnd(&st) % 2);
+        par.lut = &lut;
+        for (j = 0; j < 2; j++) {
+            double x = pick(&st, par.w, (double)NAN, 1);
+            double y = pick(&st, par.h, (double)NAN, 1);
+            if (j == 1) {                            /* near the first end when it is far */
+                double x0 = (v[0].x + 1.0) * par.w / 2.001 + 0.5;
+                double y0 = (v[0].y + 1.0) * par.h / 2.001 + 0.5;
+                int far0 = !(fabs(x0) <= 4.0 * par.w && fabs(y0) <= 4.0 * par.h);
+                x = pick(&st, par.w, x0, 0);
+                y = pick(&st, par.h, y0, 0);
+                if (far0 && !(fabs(x0) > 4.0 * par.w)) x = x0;   /* NaN x or y: */
+                if (far0 && !(fabs(y0) > 4.0 * par.h)) y = y0;   /*   keep it short */
+            }
+            far |= fabs(x) > 1e9 || fabs(y) > 1e9;
+            v[j].x = from_pp(x, par.w);
+            v[j].y = from_pp(y, par.h);
+            v[j].z = 0.0; v[j].w = 1.0;
+        }
+        c[0].r = (float)(rnd(&st) % 256) / 255.0f;
+        c[0].g = c[0].b = rnd(&st) % 2 ? c[0].r : (float)(rnd(&st) % 256) / 255.0f;
+        c[1] = c[0];
+        if (rnd(&st) % 3 == 0) c[1].g = (float)(rnd(&st) % 256) / 255.0f;
+        memset(&p, 0, sizeof p);
+        p.kind = rnd(&st) % 8 ? PT_RV_LINE : PT_RV_POINT;
+        p.v[1] = p.c[1] = 1;
+        p.radius = (int)(rnd(&st) % 3);
+        for (i = 0; i < 3; i++) {
+            memset(&ls[i], 0, sizeof ls[i]);
+            ls[i].bad = bad_count;
+            ls[i].ud = &bad[i];
+            if (i > 0) ls[i].pixel = no_pixel;
+            ls[i].bytes_only = i == 1;
+            bad[i] = 0;
+            memset(fb[i], 77, sizeof fb[i]);
+            n[i] = pt_rv_raster_prim(&m, &p, &par, fb[i], &ls[i]);
+        }
+        if (memcmp(fb[0], fb[1], sizeof fb[0]) || memcmp(fb[0], fb[2], sizeof fb[0])) same = 0;
+        if (n[0] != n[1] || n[0] != n[2] || bad[0] != bad[1] || bad[0] != bad[2]) counts = 0;
+    }
+    PT_CHECK("rv-5.1 6,000 random primitives: the quiet loops write the framebuffer a listener "
+             "of bytes and one of floats see written", same);
+    PT_CHECK("rv-5.2 ... and the same pixel counts and bad reports, in order", counts);
+    PT_CHECK("rv-5.3 ... some with ends beyond 2^30", far);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : "tests/data/course-raster";
@@ -477,6 +601,7 @@ int main(int argc, char **argv)
     if (list) fclose(list);
     extremes();
     index_rules();
+    quiet_vs_told();
     /* java.awt.Color(float): the float product, then + 0.5 in double (NOTES 9.4) */
     PT_CHECK("rv-1.1 Color byte of 0.50392157f is 129 (widened first: 128)",
              pt_color_byte(0.50392157f) == 129 &&
