@@ -240,7 +240,7 @@ typedef struct aa_pair {
     float lo[3], hi[3];          /* their colours, before gamma */
 } aa_pair;
 
-/* small: |y| < 2^31 (quiet_loop checks), so (int)y needs no saturation;
+/* small: |y| < 2^31 (bytes_loop checks), so (int)y needs no saturation;
 ** grey: c and the background each have three equal components, so one is
 ** blended for all (the same float operations give the same float). */
 static inline ALWAYS_INLINE void aa_blend(const draw *d, int x, double y, int tr, pt_rgb c,
@@ -306,10 +306,12 @@ static inline ALWAYS_INLINE void step_aa(draw *d, int x, double y, int tr, pt_rg
     put_bytes(d, a.x_vp[1], a.y_vp[1], px->b[1]);
 }
 
-/* One loop step with AA when nobody listens: the same bytes, gamma by
-** table; small and grey as for aa_blend (grey: one byte for three). */
-static inline ALWAYS_INLINE void step_aa_quiet(draw *d, int x, double y, int tr, pt_rgb c,
-                                               int small, int grey)
+/* One loop step with AA whose bytes come by table (nobody listens, or the
+** listener reads bytes alone: d->bytes); small and grey as for aa_blend
+** (grey: one byte for three).  px: NULL when nobody listens, else the pixel
+** line to fill in and tell (its kind and transposed set by the loop). */
+static inline ALWAYS_INLINE void step_aa_bytes(draw *d, int x, double y, int tr, pt_rgb c,
+                                               int small, int grey, pt_rv_pixel *px)
 {
     aa_pair a;
     unsigned char lo[3], hi[3];
@@ -321,6 +323,17 @@ static inline ALWAYS_INLINE void step_aa_quiet(draw *d, int x, double y, int tr,
     } else {
         out_bytes(d, a.lo[0], a.lo[1], a.lo[2], lo);
         out_bytes(d, a.hi[0], a.hi[1], a.hi[2], hi);
+    }
+    if (px) {                                       /* as step_aa tells it */
+        px->c[0].r = a.lo[0]; px->c[0].g = a.lo[1]; px->c[0].b = a.lo[2];
+        px->c[1].r = a.hi[0]; px->c[1].g = a.hi[1]; px->c[1].b = a.hi[2];
+        memcpy(px->b[0], lo, 3);
+        memcpy(px->b[1], hi, 3);
+        px->x_pp = tr ? y : (double)x;
+        px->y_pp = tr ? (double)x : y;
+        if (!tr) { px->x_vp = a.x_vp[0]; px->lo = a.y_vp[0]; px->hi = a.y_vp[1]; }
+        else     { px->y_vp = a.y_vp[0]; px->lo = a.x_vp[0]; px->hi = a.x_vp[1]; }
+        tell(d, px);
     }
     put_bytes(d, a.x_vp[0], a.y_vp[0], lo);
     put_bytes(d, a.x_vp[1], a.y_vp[1], hi);
@@ -343,7 +356,7 @@ static inline ALWAYS_INLINE void plain_pixel(const draw *d, int x, double y, int
     }
 }
 
-/* plain_pixel() where |y| < PT_PIX_LIMIT at every step (quiet_loop checks). */
+/* plain_pixel() where |y| < PT_PIX_LIMIT at every step (bytes_loop checks). */
 static inline ALWAYS_INLINE void plain_pixel_in(const draw *d, int x, double y, int tr,
                                                 int *x_vp, int *y_vp)
 {
@@ -373,10 +386,11 @@ static inline ALWAYS_INLINE void step_plain(draw *d, int x, double y, int tr, pt
     put_bytes(d, px->x_vp, px->y_vp, px->b[0]);
 }
 
-/* One loop step without AA when nobody listens: the same bytes (flat: the
-** segment's, d->flat_b); in: y within the limit (plain_pixel_in). */
-static inline ALWAYS_INLINE void step_plain_quiet(draw *d, int x, double y, int tr, pt_rgb c,
-                                                  int flat, int in)
+/* One loop step without AA whose bytes come by table (d->bytes): flat, the
+** segment's (d->flat_b); in: y within the limit (plain_pixel_in); px as for
+** step_aa_bytes. */
+static inline ALWAYS_INLINE void step_plain_bytes(draw *d, int x, double y, int tr, pt_rgb c,
+                                                  int flat, int in, pt_rv_pixel *px)
 {
     unsigned char b[3];
     int x_vp, y_vp;
@@ -384,49 +398,64 @@ static inline ALWAYS_INLINE void step_plain_quiet(draw *d, int x, double y, int 
     if (in) plain_pixel_in(d, x, y, tr, &x_vp, &y_vp);
     else plain_pixel(d, x, y, tr, &x_vp, &y_vp);
     if (!flat) out_bytes(d, c.r, c.g, c.b, b);
+    if (px) {                                       /* as step_plain tells it */
+        px->c[0] = c;
+        memcpy(px->b[0], flat ? d->flat_b : b, 3);
+        px->x_pp = tr ? y : (double)x;
+        px->y_pp = tr ? (double)x : y;
+        px->x_vp = x_vp;
+        px->y_vp = y_vp;
+        tell(d, px);
+    }
     put_bytes(d, x_vp, y_vp, flat ? d->flat_b : b);
 }
 
-/* The loop x = x .. xe - 1, y += m, when nobody listens and |y| < 2^31 at
-** every step: the steps of line() below, in a copy of its own for each
-** constant tr, aa, flat and grey (aa_blend), so that no step asks them
-** again.  c0 and mc: the colour at x0 and its slopes (unused when flat:
-** d->flat_c). */
-static inline ALWAYS_INLINE void quiet_run(draw *d, int x, int xe, double y, double m, int tr,
-                                           int aa, int flat, int grey, pt_rgb c0,
+/* The loop x = x .. xe - 1, y += m, when the bytes come by table (d->bytes)
+** and |y| < 2^31 at every step: the steps of line() below, in a copy of its
+** own for each constant tr, aa, flat, grey (aa_blend) and told (a listener
+** of bytes hears each pixel line), so that no step asks them again.  c0 and
+** mc: the colour at x0 and its slopes (unused when flat: d->flat_c). */
+static inline ALWAYS_INLINE void bytes_run(draw *d, int x, int xe, double y, double m, int tr,
+                                           int aa, int flat, int grey, int told, pt_rgb c0,
                                            const double mc[3], double x0)
 {
     pt_rgb c = d->flat_c;
+    pt_rv_pixel px;
 
+    if (told) {
+        memset(&px, 0, sizeof px);                  /* what no step changes */
+        px.kind = aa ? PT_RV_PX_AA : PT_RV_PX_STEP;
+        px.transposed = tr;
+    }
     for (; x < xe; x++, y += m) {                   /* y accumulated: y += m */
         if (!flat) {
             c.r = pt_color_at(c0.r, mc[0], (double)x, x0);  /* |c0 + mc*(x - x0)| */
             c.g = pt_color_at(c0.g, mc[1], (double)x, x0);
             c.b = pt_color_at(c0.b, mc[2], (double)x, x0);
         }
-        if (aa) step_aa_quiet(d, x, y, tr, c, 1, grey);
-        else step_plain_quiet(d, x, y, tr, c, flat, 1);
+        if (aa) step_aa_bytes(d, x, y, tr, c, 1, grey, told ? &px : NULL);
+        else step_plain_bytes(d, x, y, tr, c, flat, 1, told ? &px : NULL);
     }
 }
 
-static void quiet_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rgb c0,
+static void bytes_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rgb c0,
                        const double mc[3], double x0)
 {
     const float *bg = d->bg;
     pt_rgb f = d->flat_c;
-    int aa = d->par->antialias, flat = d->flat;
+    int aa = d->par->antialias, flat = d->flat, told = !d->quiet;
     int grey = aa && flat && f.r == f.g && f.g == f.b && bg[0] == bg[1] && bg[1] == bg[2];
 
-#define QUIET_RUN(TR) do {                                                          \
-        if (!aa && flat) quiet_run(d, x, xe, y, m, TR, 0, 1, 0, c0, mc, x0);        \
-        else if (!aa)    quiet_run(d, x, xe, y, m, TR, 0, 0, 0, c0, mc, x0);        \
-        else if (grey)   quiet_run(d, x, xe, y, m, TR, 1, 1, 1, c0, mc, x0);        \
-        else if (flat)   quiet_run(d, x, xe, y, m, TR, 1, 1, 0, c0, mc, x0);        \
-        else             quiet_run(d, x, xe, y, m, TR, 1, 0, 0, c0, mc, x0);        \
+#define BYTES_RUN(TR, TOLD) do {                                                          \
+        if (!aa && flat) bytes_run(d, x, xe, y, m, TR, 0, 1, 0, TOLD, c0, mc, x0);        \
+        else if (!aa)    bytes_run(d, x, xe, y, m, TR, 0, 0, 0, TOLD, c0, mc, x0);        \
+        else if (grey)   bytes_run(d, x, xe, y, m, TR, 1, 1, 1, TOLD, c0, mc, x0);        \
+        else if (flat)   bytes_run(d, x, xe, y, m, TR, 1, 1, 0, TOLD, c0, mc, x0);        \
+        else             bytes_run(d, x, xe, y, m, TR, 1, 0, 0, TOLD, c0, mc, x0);        \
     } while (0)
-    if (!tr) QUIET_RUN(0);
-    else QUIET_RUN(1);
-#undef QUIET_RUN
+    if (!told) { if (!tr) BYTES_RUN(0, 0); else BYTES_RUN(1, 0); }
+    else       { if (!tr) BYTES_RUN(0, 1); else BYTES_RUN(1, 1); }
+#undef BYTES_RUN
 }
 
 /* A segment's ends as the DDA takes them, from its ends p0, p1 in the pixel
@@ -558,8 +587,8 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     ** from y0 toward y1: it stays within 2^31 (and PT_PIX_LIMIT) */
     in = fabs(x0) <= 1073741824.0 && fabs(x1) <= 1073741824.0 &&
          fabs(y0) <= 1073741824.0 && fabs(y1) <= 1073741824.0;
-    if (d->quiet && in) {
-        quiet_loop(d, jint(x0), xe, y, s.m, tr, c0, s.mc, x0);
+    if (d->bytes && in) {
+        bytes_loop(d, jint(x0), xe, y, s.m, tr, c0, s.mc, x0);
     } else {
         memset(&px, 0, sizeof px);                  /* what no step changes */
         px.kind = par->antialias ? PT_RV_PX_AA : PT_RV_PX_STEP;
@@ -575,8 +604,8 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
                 c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
             }
             if (d->quiet) {
-                if (par->antialias) step_aa_quiet(d, x, y, tr, c, 0, 0);
-                else step_plain_quiet(d, x, y, tr, c, d->flat, 0);
+                if (par->antialias) step_aa_bytes(d, x, y, tr, c, 0, 0, NULL);
+                else step_plain_bytes(d, x, y, tr, c, d->flat, 0, NULL);
             } else if (par->antialias) {
                 step_aa(d, x, y, tr, c, &px);
             } else if (in) {

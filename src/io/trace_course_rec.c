@@ -55,6 +55,7 @@ typedef struct rec {
 /* A pixel record's end after its y: JSON's rgb and coverage (at most 60
 ** bytes), text's (at most 80) */
 #define PIXEL_TAIL 96
+#define COV_BITS 10              /* log2 of the coverages whose JSON is kept */
 
 typedef struct walker {
     pt_course_lane ln;           /* its lane (first: pt_course_lane_ls) */
@@ -84,9 +85,13 @@ typedef struct walker {
     int pix_made;                /*   made for it (0: at its first pixel) */
     char pix_fixed[96];          /*   and, when it fits, copied here for a
                                  ** copy of a fixed size */
+    struct cov {                 /* JSON's spellings of coverages (cov_at), */
+        uint32_t bits;           /*   by the float's bits */
+        unsigned char len;       /*   (0: an empty slot) */
+        char s[PT_SHORTLEN];
+    } cov[1 << COV_BITS];
     struct tail {                /* a pixel record's end after its y, for */
-        unsigned char b[3];      /*   these bytes */
-        uint32_t f;              /*   and the bits of this coverage */
+        unsigned char b[3];      /*   these bytes at coverage 1 (tail_one) */
         size_t len;              /*   (0: none made yet) */
         char s[PIXEL_TAIL];
     } tail;
@@ -581,36 +586,69 @@ static int pixel_head(walker *w)
     return 1;
 }
 
-/* The end of a pixel record after its y, for bytes b and coverage f (JSON:
-** ,"rgb":[R,G,B],"coverage":F}; text: rgb = R G B  coverage F), in
-** w->tail: made when b or f differ from the last record's, else as it is
-** (a segment's steps mostly write one colour, at coverage 1 without AA).
-** Returns its PIXEL_TAIL bytes, w->tail.len of them the tail. */
-static const char *pixel_tail(walker *w, const unsigned char b[3], float f)
+/* Coverage f as JSON writes it (json_num_at of f widened), at o; returns
+** the end.  The spellings are kept by f's bits: an anti-aliased step's
+** weight is the fraction of y0 + k m, y0 an integer and m a ratio of small
+** ones, so a render has few (some hundreds in the bench's scene) and
+** meets them again and again; the trace's own slots (json_num_at) hold
+** the vertices' numbers as well, and too few for them. */
+static char *cov_at(walker *w, char *o, float f)
 {
-    struct tail *e = &w->tail;
-    pt_trace *t = w->t;
-    uint32_t fb;
-    char *o = e->s;
+    struct cov *e;
+    uint32_t bits;
+    char b[PT_NUMLEN + 2];
+    size_t n;
 
-    memcpy(&fb, &f, sizeof fb);
-    if (e->len && fb == e->f && memcmp(b, e->b, 3) == 0) return e->s;
+    memcpy(&bits, &f, sizeof bits);
+    e = &w->cov[(uint32_t)(bits * UINT32_C(0x9e3779b9)) >> (32 - COV_BITS)];
+    if (e->bits == bits && e->len) {
+        memcpy(o, e->s, PT_SHORTLEN);
+        return o + e->len;
+    }
+    n = (size_t)(json_num_at(w->t, b, (double)f) - b);
+    memcpy(o, b, n);
+    if (n <= sizeof e->s) {
+        e->bits = bits;
+        e->len = (unsigned char)n;
+        memcpy(e->s, b, n);
+    }
+    return o + n;
+}
+
+/* The end of a pixel record after its y, for bytes b and coverage f, at o
+** (JSON: ,"rgb":[R,G,B],"coverage":F}; text: rgb = R G B  coverage F);
+** returns its end.  This function can't fail. */
+static char *tail_at(walker *w, char *o, const unsigned char b[3], float f)
+{
+    pt_trace *t = w->t;
+
     if (w->fmt == PT_FORMAT_JSONL) {
         o = u64_at(t, str_at(o, ",\"rgb\":["), b[0]);
         o = u64_at(t, str_at(o, ","), b[1]);
         o = u64_at(t, str_at(o, ","), b[2]);
-        o = json_num_at(t, str_at(o, "],\"coverage\":"), (double)f);
-        o = str_at(o, "}\n");
-    } else {
-        o = u64_at(t, str_at(o, "  rgb = "), b[0]);
-        o = u64_at(t, str_at(o, " "), b[1]);
-        o = u64_at(t, str_at(o, " "), b[2]);
-        o = fixed_at(w, str_at(o, "  coverage "), (double)f, KEPT_COVERAGE, 4);
-        o = str_at(o, "\n");
+        o = cov_at(w, str_at(o, "],\"coverage\":"), f);
+        return str_at(o, "}\n");
     }
-    e->len = (size_t)(o - e->s);
+    o = u64_at(t, str_at(o, "  rgb = "), b[0]);
+    o = u64_at(t, str_at(o, " "), b[1]);
+    o = u64_at(t, str_at(o, " "), b[2]);
+    o = fixed_at(w, str_at(o, "  coverage "), (double)f, KEPT_COVERAGE, 4);
+    return str_at(o, "\n");
+}
+
+/* The end of a pixel record of coverage 1 (a step without AA, a last
+** pixel, a point's pixel) for bytes b, in w->tail: made when b differs from
+** the last such record's, else as it is (a segment's steps mostly write one
+** colour).  Returns its PIXEL_TAIL bytes, w->tail.len of them the tail.
+** (An anti-aliased step's coverage changes at every step: its records are
+** written whole.) */
+static const char *tail_one(walker *w, const unsigned char b[3])
+{
+    struct tail *e = &w->tail;
+
+    if (e->len && memcmp(b, e->b, 3) == 0) return e->s;
+    e->len = (size_t)(tail_at(w, e->s, b, 1.0f) - e->s);
     memcpy(e->b, b, 3);
-    e->f = fb;
     return e->s;
 }
 
@@ -640,7 +678,11 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
         o = int_at(t, o, x_fb, 0);
         o = int_at(t, str_at(o, "  y_fb = "), y_fb, 0);
     }
-    memcpy(o, pixel_tail(w, b, f), PIXEL_TAIL);
+    if (f != 1.0f) {
+        done(w, tail_at(w, o, b, f));
+        return;
+    }
+    memcpy(o, tail_one(w, b), PIXEL_TAIL);
     done(w, o + w->tail.len);
 }
 
