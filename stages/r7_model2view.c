@@ -14,3 +14,10 @@ pt_vec4 pt_r7_model2view(pt_vec4 v_m, pt_vec3 t)
     v.w = 1.0;                          /* renderer 7's Vertex has no w */
     return v;
 }
+
+void pt_r7_model2view_all(pt_vec4 *v, size_t n, pt_vec3 t)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++) v[k] = pt_r7_model2view(v[k], t);
+}

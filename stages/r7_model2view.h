@@ -21,4 +21,9 @@
 #include "rv_model.h"
 /* v_m + t, as above.  This function can't fail. */
 pt_vec4 pt_r7_model2view(pt_vec4 v_m, pt_vec3 t);
+/* The stage on a whole model: each of the n vertices v[k] in place, as the
+** course's stages take whole models (the loop here, where the compiler sees
+** the formula above and passes no vertex through memory).  This function
+** can't fail. */
+void pt_r7_model2view_all(pt_vec4 *v, size_t n, pt_vec3 t);
 #endif

@@ -32,3 +32,10 @@ pt_vec4 pt_r7_view2camera(pt_vec4 v, const pt_rv_camera *cam)
     c.w = 1.0;
     return c;
 }
+
+void pt_r7_view2camera_all(pt_vec4 *v, size_t n, const pt_rv_camera *cam)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++) v[k] = pt_r7_view2camera(v[k], cam);
+}

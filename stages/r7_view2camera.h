@@ -28,6 +28,11 @@
 /* v in camera coordinates for cam (its perspective, l, r, b, t); w = 1.
 ** This function can't fail (a flat rectangle gives infinities or NaN, as in Java). */
 pt_vec4 pt_r7_view2camera(pt_vec4 v, const pt_rv_camera *cam);
+/* The stage on a whole model: each of the n vertices v[k] in place, as the
+** course's stages take whole models (the loop here, where the compiler sees
+** the formula above and passes no vertex through memory).  This function
+** can't fail. */
+void pt_r7_view2camera_all(pt_vec4 *v, size_t n, const pt_rv_camera *cam);
 /* Its first half, the x and y before the scaling: the skew (perspective) or
 ** the translation (orthographic); z and w as the result's.  pipetrace step
 ** shows it.  This function can't fail. */

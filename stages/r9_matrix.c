@@ -65,7 +65,8 @@ static pt_jmat build(const pt_matop *op)
     return jscale(1.0, 1.0, 1.0);
 }
 
-pt_vec4 pt_jmat_times_vec(const pt_jmat *a, pt_vec4 v)
+/* The product, inline here for pt_jmat_times_vecs' loop. */
+static inline pt_vec4 times_vec(const pt_jmat *a, pt_vec4 v)
 {
     const pt_vec4 *c = a->col;
 
@@ -73,6 +74,11 @@ pt_vec4 pt_jmat_times_vec(const pt_jmat *a, pt_vec4 v)
                 (c[0].y * v.x) + (c[1].y * v.y) + (c[2].y * v.z) + (c[3].y * v.w),
                 (c[0].z * v.x) + (c[1].z * v.y) + (c[2].z * v.z) + (c[3].z * v.w),
                 (c[0].w * v.x) + (c[1].w * v.y) + (c[2].w * v.z) + (c[3].w * v.w));
+}
+
+pt_vec4 pt_jmat_times_vec(const pt_jmat *a, pt_vec4 v)
+{
+    return times_vec(a, v);
 }
 
 pt_jmat pt_jmat_times(const pt_jmat *a, const pt_jmat *b)
@@ -95,4 +101,11 @@ pt_jmat pt_r9_position_matrix(const pt_matop *ops, size_t n)
         }
     }
     return m;
+}
+
+void pt_jmat_times_vecs(const pt_jmat *a, pt_vec4 *v, size_t n)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++) v[k] = times_vec(a, v[k]);
 }

@@ -59,5 +59,8 @@ pt_jmat pt_r9_position_matrix(const pt_matop *ops, size_t n);
 ** functions can't fail. */
 pt_jmat pt_jmat_times(const pt_jmat *a, const pt_jmat *b);
 pt_vec4 pt_jmat_times_vec(const pt_jmat *a, pt_vec4 v);
+/* v[k] = a v[k] (pt_jmat_times_vec) for each of n vectors, in place.  This
+** function can't fail. */
+void pt_jmat_times_vecs(const pt_jmat *a, pt_vec4 *v, size_t n);
 
 #endif

@@ -22,4 +22,9 @@
 #include "r9_matrix.h"
 /* m times v_m, as above.  This function can't fail. */
 pt_vec4 pt_r9_model2world(pt_vec4 v_m, const pt_jmat *m);
+/* The stage on a whole model: each of the n vertices v[k] in place, as the
+** course's stages take whole models (the loop here, where the compiler sees
+** the formula above and passes no vertex through memory).  This function
+** can't fail. */
+void pt_r9_model2world_all(pt_vec4 *v, size_t n, const pt_jmat *m);
 #endif

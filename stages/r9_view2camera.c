@@ -37,3 +37,8 @@ pt_vec4 pt_r9_view2camera(pt_vec4 v, const pt_jmat *norm)
 {
     return pt_jmat_times_vec(norm, v);      /* v_c = N v_v */
 }
+
+void pt_r9_view2camera_all(pt_vec4 *v, size_t n, const pt_jmat *norm)
+{
+    pt_jmat_times_vecs(norm, v, n);         /* v_c = N v_v, each */
+}

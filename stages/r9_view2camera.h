@@ -24,4 +24,9 @@
 pt_jmat pt_r9_normalize_matrix(const pt_rv_camera *cam);
 /* norm times v.  This function can't fail. */
 pt_vec4 pt_r9_view2camera(pt_vec4 v, const pt_jmat *norm);
+/* The stage on a whole model: each of the n vertices v[k] in place, as the
+** course's stages take whole models (the loop here, where the compiler sees
+** the formula above and passes no vertex through memory).  This function
+** can't fail. */
+void pt_r9_view2camera_all(pt_vec4 *v, size_t n, const pt_jmat *norm);
 #endif

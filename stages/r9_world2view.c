@@ -14,3 +14,10 @@ pt_vec4 pt_r9_world2view(pt_vec4 v, pt_vec3 view)
     o.w = 1.0;                          /* new Vertex(x, y, z): w back to 1 */
     return o;
 }
+
+void pt_r9_world2view_all(pt_vec4 *v, size_t n, pt_vec3 view)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++) v[k] = pt_r9_world2view(v[k], view);
+}

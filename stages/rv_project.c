@@ -20,3 +20,10 @@ pt_vec4 pt_rv_project(pt_vec4 v, int perspective)
     p.w = 1.0;                          /* new Vertex(x, y, z) */
     return p;
 }
+
+void pt_rv_project_all(pt_vec4 *v, size_t n, int perspective)
+{
+    size_t k;
+
+    for (k = 0; k < n; k++) v[k] = pt_rv_project(v[k], perspective);
+}

@@ -20,4 +20,9 @@
 #include "rv_model.h"
 /* v projected, as above; w = 1.  This function can't fail. */
 pt_vec4 pt_rv_project(pt_vec4 v, int perspective);
+/* The stage on a whole model: each of the n vertices v[k] in place, as the
+** course's stages take whole models (the loop here, where the compiler sees
+** the formula above and passes no vertex through memory).  This function
+** can't fail. */
+void pt_rv_project_all(pt_vec4 *v, size_t n, int perspective);
 #endif

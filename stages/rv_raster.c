@@ -134,9 +134,7 @@ static inline ALWAYS_INLINE void put_bytes(draw *d, int x_vp, int y_vp, const un
 
     if ((unsigned)x_vp < d->vw && (unsigned)y_vp < d->vh) {
         o = d->vp0 + 3 * ((size_t)y_vp * (size_t)d->W + (size_t)x_vp);
-        o[0] = b[0];
-        o[1] = b[1];
-        o[2] = b[2];
+        memcpy(o, b, 3);                            /* two stores, not three */
         d->n++;
         return;
     }

@@ -224,19 +224,17 @@ static int do_step(const run *r, step st, cpos *c)
     if (st != ST_RASTER) cut(r, m->nv, 0);
     switch (st) {
     case ST_WORLD:
-        for (k = 0; k < m->nv; k++) m->v[k] = pt_r9_model2world(m->v[k], &c->pos.matrix);
+        pt_r9_model2world_all(m->v, m->nv, &c->pos.matrix);
         report(r, PT_CST_WORLD, c);
         break;
     case ST_VIEW:
-        for (k = 0; k < m->nv; k++)
-            m->v[k] = r->s->renderer == 9 ? pt_r9_world2view(m->v[k], r->cam.cam.view)
-                                          : pt_r7_model2view(m->v[k], c->pos.translate);
+        if (r->s->renderer == 9) pt_r9_world2view_all(m->v, m->nv, r->cam.cam.view);
+        else pt_r7_model2view_all(m->v, m->nv, c->pos.translate);
         report(r, PT_CST_VIEW, c);
         break;
     case ST_CAMERA:
-        for (k = 0; k < m->nv; k++)
-            m->v[k] = r->s->renderer == 9 ? pt_r9_view2camera(m->v[k], &r->cam.norm)
-                                          : pt_r7_view2camera(m->v[k], &r->cam.cam);
+        if (r->s->renderer == 9) pt_r9_view2camera_all(m->v, m->nv, &r->cam.norm);
+        else pt_r7_view2camera_all(m->v, m->nv, &r->cam.cam);
         report(r, PT_CST_CAMERA, c);
         break;
     case ST_NEARCLIP:
@@ -246,7 +244,7 @@ static int do_step(const run *r, step st, cpos *c)
         report(r, PT_CST_NEARCLIP, c);
         break;
     case ST_IMAGE:
-        for (k = 0; k < m->nv; k++) m->v[k] = pt_rv_project(m->v[k], r->cam.cam.perspective);
+        pt_rv_project_all(m->v, m->nv, r->cam.cam.perspective);
         report(r, PT_CST_IMAGE, c);
         break;
     case ST_CLIP:
