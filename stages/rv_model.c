@@ -22,6 +22,34 @@ static int grow(void **arr, size_t n, size_t *cap, size_t sz)
     return 0;
 }
 
+/* Room for n more elements of size sz in *arr (used elements, *cap
+** allocated): 0 or -1. */
+static int room_for(void **arr, size_t used, size_t n, size_t *cap, size_t sz)
+{
+    void *p;
+
+    if (n <= *cap - used) return 0;                 /* used <= *cap */
+    if (n > (size_t)-1 / sz - used) return -1;
+    p = realloc(*arr, (used + n) * sz);
+    if (!p) return -1;
+    *arr = p;
+    *cap = used + n;
+    return 0;
+}
+
+int pt_rv_reserve(pt_rv_model *m, size_t nv, size_t nc, size_t np)
+{
+    void *v = m->v, *c = m->c, *p = m->p;
+    int rc = room_for(&v, m->nv, nv, &m->cap_v, sizeof *m->v);
+
+    m->v = v;
+    if (rc == 0) rc = room_for(&c, m->nc, nc, &m->cap_c, sizeof *m->c);
+    m->c = c;
+    if (rc == 0) rc = room_for(&p, m->np, np, &m->cap_p, sizeof *m->p);
+    m->p = p;
+    return rc;
+}
+
 int pt_rv_add_vertex(pt_rv_model *m, pt_vec4 v)
 {
     void *a = m->v;

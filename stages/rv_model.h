@@ -82,6 +82,11 @@ typedef struct pt_rv_clip_ls {
     void *ud;
 } pt_rv_clip_ls;
 
+/* Make room in m's lists for nv more vertices, nc more colours and np more
+** primitives, so that as many appends (or stores past the counts) need no
+** allocation: 0, or -1 when out of memory (the counts unchanged). */
+int pt_rv_reserve(pt_rv_model *m, size_t nv, size_t nc, size_t np);
+
 /* Append to m's lists: 0, or -1 when out of memory (m unchanged). */
 int pt_rv_add_vertex(pt_rv_model *m, pt_vec4 v);
 int pt_rv_add_color(pt_rv_model *m, pt_rgb c);

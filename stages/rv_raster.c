@@ -76,12 +76,21 @@ static void start(draw *d, const pt_rv_raster_par *par, unsigned char *rgb,
 {
     int k;
 
-    memset(d, 0, sizeof *d);
     d->par = par;
     d->rgb = rgb;
     d->ls = ls;
+    d->n = d->steps = 0;
+    d->count_steps = 0;
     d->quiet = ls == NULL || ls->pixel == NULL;
     d->bytes = d->quiet || ls->bytes_only;
+    d->vp0 = NULL;
+    d->vw = d->vh = 0;
+    d->W = 0;
+    d->flat = 0;
+    memset(&d->flat_c, 0, sizeof d->flat_c);
+    memset(&d->flat_g, 0, sizeof d->flat_g);
+    memset(d->flat_b, 0, sizeof d->flat_b);
+    memset(d->bg, 0, sizeof d->bg);
     if (par->x_ul >= 0 && par->y_ul >= 0 && par->w >= 0 && par->h >= 0 &&
         (int64_t)par->x_ul + par->w <= par->W && (int64_t)par->y_ul + par->h <= par->H) {
         d->vp0 = rgb + 3 * ((size_t)par->y_ul * (size_t)par->W + (size_t)par->x_ul);

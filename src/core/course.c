@@ -124,39 +124,38 @@ static const pt_rv_raster_ls *raster_ls(const run *r)
 ** order.  0 or -1 (out of memory). */
 static int build_model(const pt_model *sm, pt_rv_model *m)
 {
-    size_t k, seg = 0, pt = 0;
+    size_t k, seg = 0, pt = 0, nc;
 
+    nc = !sm->colors_given ? 0 : sm->ncolors > 0 ? sm->ncolors : sm->nv;
+    if (pt_rv_reserve(m, sm->nv, nc, sm->nseg + sm->npts) != 0) return -1;
     for (k = 0; k < sm->nv; k++) {
         pt_vec4 v = {sm->v[k].x, sm->v[k].y, sm->v[k].z, 1.0};
-        if (pt_rv_add_vertex(m, v) != 0) return -1;
+        m->v[m->nv++] = v;
     }
     if (sm->colors_given && sm->ncolors > 0) {
-        for (k = 0; k < sm->ncolors; k++)
-            if (pt_rv_add_color(m, sm->colors[k]) != 0) return -1;
+        for (k = 0; k < sm->ncolors; k++) m->c[m->nc++] = sm->colors[k];
     } else if (sm->colors_given) {               /* `color R G B`: one a vertex */
         pt_rgb c = {(float)sm->color[0] / 255.0f, (float)sm->color[1] / 255.0f,
                     (float)sm->color[2] / 255.0f};
-        for (k = 0; k < sm->nv; k++)
-            if (pt_rv_add_color(m, c) != 0) return -1;
+        for (k = 0; k < sm->nv; k++) m->c[m->nc++] = c;
     }
     while (seg < sm->nseg || pt < sm->npts) {    /* a point after `after` segments */
-        pt_rv_prim p;
-        memset(&p, 0, sizeof p);
+        pt_rv_prim *p = &m->p[m->np++];
+        memset(p, 0, sizeof *p);
         if (pt < sm->npts && sm->pts[pt].after <= seg) {
-            p.kind = PT_RV_POINT;
-            p.v[0] = p.v[1] = sm->pts[pt].v;
-            p.c[0] = p.c[1] = sm->pts[pt].c;
-            p.radius = sm->pts[pt].radius;
+            p->kind = PT_RV_POINT;
+            p->v[0] = p->v[1] = sm->pts[pt].v;
+            p->c[0] = p->c[1] = sm->pts[pt].c;
+            p->radius = sm->pts[pt].radius;
             pt++;
         } else {
-            p.kind = PT_RV_LINE;
-            p.v[0] = sm->seg[seg].a;
-            p.v[1] = sm->seg[seg].b;
-            p.c[0] = sm->seg[seg].ca;
-            p.c[1] = sm->seg[seg].cb;
+            p->kind = PT_RV_LINE;
+            p->v[0] = sm->seg[seg].a;
+            p->v[1] = sm->seg[seg].b;
+            p->c[0] = sm->seg[seg].ca;
+            p->c[1] = sm->seg[seg].cb;
             seg++;
         }
-        if (pt_rv_add_prim(m, &p) != 0) return -1;
     }
     return 0;
 }
