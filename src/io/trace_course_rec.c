@@ -85,6 +85,11 @@ typedef struct walker {
     int pix_made;                /*   made for it (0: at its first pixel) */
     char pix_fixed[96];          /*   and, when it fits, copied here for a
                                  ** copy of a fixed size */
+    struct vcolor {              /* JSON's spelling of the last vertex colour */
+        pt_rgb c;                /*   (color_json_at) */
+        size_t len;              /*   (0: none yet) */
+        char s[3 * (PT_NUMLEN + 2) + 16];
+    } vcolor;
     struct cov {                 /* JSON's spellings of coverages (cov_at), */
         uint32_t bits;           /*   by the float's bits */
         unsigned char len;       /*   (0: an empty slot) */
@@ -263,6 +268,28 @@ static char *prim_at(const pt_trace *t, char *o, const pt_rv_prim *p,
     return str_at(o, keys[8]);
 }
 
+/* ,"color":[R,G,B] of a vertex record, at o; returns the end.  The last
+** colour's spelling is kept: a model's vertices mostly share one. */
+static char *color_json_at(walker *w, char *o, pt_rgb c)
+{
+    struct vcolor *e = &w->vcolor;
+    pt_trace *t = w->t;
+    char *s;
+
+    if (e->len && memcmp(&c, &e->c, sizeof c) == 0) {
+        memcpy(o, e->s, sizeof e->s);
+        return o + e->len;
+    }
+    s = json_num_at(t, str_at(e->s, ",\"color\":["), (double)c.r);
+    s = json_num_at(t, str_at(s, ","), (double)c.g);
+    s = json_num_at(t, str_at(s, ","), (double)c.b);
+    s = str_at(s, "]");
+    e->len = (size_t)(s - e->s);
+    e->c = c;
+    memcpy(o, e->s, e->len);
+    return o + e->len;
+}
+
 static void fmt_json(walker *w, const rec *r)
 {
     pt_trace *t = w->t;
@@ -291,12 +318,7 @@ static void fmt_json(walker *w, const rec *r)
     o = json_num_at(t, str_at(o, ",\"y\":"), r->p.y);
     o = json_num_at(t, str_at(o, ",\"z\":"), r->p.z);
     if (w->w4) o = json_num_at(t, str_at(o, ",\"w\":"), r->p.w);
-    if (r->has_color) {
-        o = json_num_at(t, str_at(o, ",\"color\":["), (double)r->color.r);
-        o = json_num_at(t, str_at(o, ","), (double)r->color.g);
-        o = json_num_at(t, str_at(o, ","), (double)r->color.b);
-        o = str_at(o, "]");
-    }
+    if (r->has_color) o = color_json_at(w, o, r->color);
     if (r->from) {
         o = str_at(str_at(o, ",\"from\":{\"stage\":\""), r->from);
         o = u64_at(t, str_at(o, "\",\"segment\":"), r->from_prim);
@@ -304,14 +326,16 @@ static void fmt_json(walker *w, const rec *r)
         o = json_num_at(t, str_at(o, "\",\"t\":"), r->t);
         o = str_at(o, "}");
     }
-    done(w, o);
-    if (r->explain) {
-        w->sb.len = 0;
-        pt_sbuf_add(&w->sb, ",\"explain\":");
-        pt_sbuf_add_json(&w->sb, r->explain);
-        if (w->sb.failed) w->failed = 1;
-        else put(t, w->sb.s, w->sb.len);
+    if (!r->explain) {
+        done(w, str_at(o, "}\n"));
+        return;
     }
+    done(w, o);
+    w->sb.len = 0;
+    pt_sbuf_add(&w->sb, ",\"explain\":");
+    pt_sbuf_add_json(&w->sb, r->explain);
+    if (w->sb.failed) w->failed = 1;
+    else put(t, w->sb.s, w->sb.len);
     put(t, LIT("}\n"));
 }
 
