@@ -188,6 +188,15 @@ static char *path(const char *name)
     return p;
 }
 
+/* path(name) in a buffer of its own, for as long as the bench runs. */
+static char *lasting_path(const char *name)
+{
+    char *p = strdup(path(name));
+
+    if (!p) die("out of memory");
+    return p;
+}
+
 /* Write the scene of n octagons for renderer 4, 7 or 9 (benchgen) to
 ** B/NAME; flags "aa" (anti-aliasing), "case" (the course harness's case
 ** file), "aa case" or "".  Returns the path (allocated: it lives to the end). */
@@ -621,9 +630,9 @@ int main(int argc, char **argv)
     fig[1].scene = make_scene("bench-r7.scene", "25000", "7", "");
     fig[2].scene = make_scene("bench-r9.scene", "25000", "9", "");
     fig[3].scene = make_scene("bench-r9aa.scene", "25000", "9", "aa");
-    pt = path("pipetrace");
-    ppm = path("bench-pt.ppm");
-    bppm = path("bench-base.ppm");
+    pt = lasting_path("pipetrace");              /* kept to the end: path()'s */
+    ppm = lasting_path("bench-pt.ppm");          /*   buffers are reused (the end */
+    bppm = lasting_path("bench-base.ppm");       /*   removes ppm and bppm) */
     if (argc > 2 && strcmp(argv[2], "two-cpus") == 0) {    /* that part alone */
         two_cpus(fig, pt, ppm, NULL);
         remove(ppm);
