@@ -25,6 +25,14 @@
 #include "io/numfmt.h"
 #include "io/sbuf.h"
 
+/* The pixel records' seldom paths stay out of line: the common one (an
+** opening made, a kept tail) is then a small function. */
+#if defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
+
 static const char *const stage_names[PT_NCST] = {
     "model", "world", "view", "camera", "nearclip", "image", "clip"};
 
@@ -585,7 +593,7 @@ _Static_assert(2 * 20 + 16 + PIXEL_TAIL <= PIXEL_REST, "a pixel record fits its 
 
 /* Make w->pix the opening of the pixel records of the primitive being drawn
 ** (w->pos, number w->raster_no + 1).  0 when out of memory. */
-static int pixel_head(walker *w)
+static NOINLINE int pixel_head(walker *w)
 {
     pt_sbuf *p = &w->pix;
     char b[64], *e;
@@ -642,7 +650,7 @@ static char *cov_at(walker *w, char *o, float f)
 /* The end of a pixel record after its y, for bytes b and coverage f, at o
 ** (JSON: ,"rgb":[R,G,B],"coverage":F}; text: rgb = R G B  coverage F);
 ** returns its end.  This function can't fail. */
-static char *tail_at(walker *w, char *o, const unsigned char b[3], float f)
+static NOINLINE char *tail_at(walker *w, char *o, const unsigned char b[3], float f)
 {
     pt_trace *t = w->t;
 
@@ -660,20 +668,17 @@ static char *tail_at(walker *w, char *o, const unsigned char b[3], float f)
     return str_at(o, "\n");
 }
 
-/* The end of a pixel record of coverage 1 (a step without AA, a last
-** pixel, a point's pixel) for bytes b, in w->tail: made when b differs from
-** the last such record's, else as it is (a segment's steps mostly write one
-** colour).  Returns its PIXEL_TAIL bytes, w->tail.len of them the tail.
-** (An anti-aliased step's coverage changes at every step: its records are
-** written whole.) */
-static const char *tail_one(walker *w, const unsigned char b[3])
+/* Make w->tail the end of a pixel record of coverage 1 (a step without AA,
+** a last pixel, a point's pixel) for bytes b.  pixel_rec copies it while b
+** stays the same (a segment's steps mostly write one colour); an
+** anti-aliased step's coverage changes at every step: its records are
+** written whole (tail_at). */
+static NOINLINE void tail_one(walker *w, const unsigned char b[3])
 {
     struct tail *e = &w->tail;
 
-    if (e->len && memcmp(b, e->b, 3) == 0) return e->s;
     e->len = (size_t)(tail_at(w, e->s, b, 1.0f) - e->s);
     memcpy(e->b, b, 3);
-    return e->s;
 }
 
 /* One pixel record: (x_vp, y_vp) in the viewport, the bytes b written,
@@ -706,7 +711,8 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
         done(w, tail_at(w, o, b, f));
         return;
     }
-    memcpy(o, tail_one(w, b), PIXEL_TAIL);
+    if (!w->tail.len || memcmp(b, w->tail.b, 3) != 0) tail_one(w, b);
+    memcpy(o, w->tail.s, PIXEL_TAIL);
     done(w, o + w->tail.len);
 }
 
