@@ -242,6 +242,7 @@ static void end_pixel(draw *d, double x_pp, double y_pp, pt_rgb c)
 /* One AA step's pair of pixels: y between rows (int)y and (int)y + 1 (in
 ** transposed coordinates), each blended with the background. */
 typedef struct aa_pair {
+    float f;                     /* the weight, fraction of y */
     int y_low, y_hi;
     int x_vp[2], y_vp[2];        /* the low pixel, the high one */
     float lo[3], hi[3];          /* their colours, before gamma */
@@ -262,6 +263,7 @@ static inline ALWAYS_INLINE void aa_blend(const draw *d, int x, double y, int tr
     if (!tr && y == (double)par->h) a->y_hi = par->h;   /* the top edge */
     if (tr && y == (double)par->w) a->y_hi = par->w;    /* the right edge */
     f = (float)(y - (double)a->y_low);                  /* weight = fraction of y */
+    a->f = f;
     in[0] = c.r; in[1] = c.g; in[2] = c.b;
     for (k = 0; k < (grey ? 1 : 3); k++) {
         a->lo[k] = (1.0f - f) * in[k] + f * d->bg[k];   /* (1-f)*c + f*bg */
@@ -313,12 +315,36 @@ static inline ALWAYS_INLINE void step_aa(draw *d, int x, double y, int tr, pt_rg
     put_bytes(d, a.x_vp[1], a.y_vp[1], px->b[1]);
 }
 
+/* The pixels of a run being gathered for ls->pixels (bytes_run). */
+typedef struct run {
+    pt_rv_px_out px[PT_RV_RUN];
+    size_t n;
+} run;
+
+static inline ALWAYS_INLINE void run_flush(const draw *d, run *r)
+{
+    if (r->n) d->ls->pixels(d->ls->ud, d->par, r->px, r->n);
+    r->n = 0;
+}
+
+static inline ALWAYS_INLINE void run_add(const draw *d, run *r, int x_vp, int y_vp,
+                                         const unsigned char b[3], float coverage)
+{
+    pt_rv_px_out *o = &r->px[r->n++];
+
+    o->x_vp = x_vp;
+    o->y_vp = y_vp;
+    o->coverage = coverage;
+    memcpy(o->b, b, 3);
+    if (r->n == PT_RV_RUN) run_flush(d, r);
+}
+
 /* One loop step with AA whose bytes come by table (nobody listens, or the
 ** listener reads bytes alone: d->bytes); small and grey as for aa_blend
 ** (grey: one byte for three).  px: NULL when nobody listens, else the pixel
 ** line to fill in and tell (its kind and transposed set by the loop). */
 static inline ALWAYS_INLINE void step_aa_bytes(draw *d, int x, double y, int tr, pt_rgb c,
-                                               int small, int grey, pt_rv_pixel *px)
+                                               int small, int grey, pt_rv_pixel *px, run *r)
 {
     aa_pair a;
     unsigned char lo[3], hi[3];
@@ -341,6 +367,10 @@ static inline ALWAYS_INLINE void step_aa_bytes(draw *d, int x, double y, int tr,
         if (!tr) { px->x_vp = a.x_vp[0]; px->lo = a.y_vp[0]; px->hi = a.y_vp[1]; }
         else     { px->y_vp = a.y_vp[0]; px->lo = a.x_vp[0]; px->hi = a.x_vp[1]; }
         tell(d, px);
+    }
+    if (r) {                                        /* low, then high */
+        run_add(d, r, a.x_vp[0], a.y_vp[0], lo, 1.0f - a.f);
+        run_add(d, r, a.x_vp[1], a.y_vp[1], hi, a.f);
     }
     put_bytes(d, a.x_vp[0], a.y_vp[0], lo);
     put_bytes(d, a.x_vp[1], a.y_vp[1], hi);
@@ -397,7 +427,7 @@ static inline ALWAYS_INLINE void step_plain(draw *d, int x, double y, int tr, pt
 ** segment's (d->flat_b); in: y within the limit (plain_pixel_in); px as for
 ** step_aa_bytes. */
 static inline ALWAYS_INLINE void step_plain_bytes(draw *d, int x, double y, int tr, pt_rgb c,
-                                                  int flat, int in, pt_rv_pixel *px)
+                                                  int flat, int in, pt_rv_pixel *px, run *r)
 {
     unsigned char b[3];
     int x_vp, y_vp;
@@ -414,6 +444,7 @@ static inline ALWAYS_INLINE void step_plain_bytes(draw *d, int x, double y, int 
         px->y_vp = y_vp;
         tell(d, px);
     }
+    if (r) run_add(d, r, x_vp, y_vp, flat ? d->flat_b : b, 1.0f);
     put_bytes(d, x_vp, y_vp, flat ? d->flat_b : b);
 }
 
@@ -440,21 +471,24 @@ static inline ALWAYS_INLINE void prefetch(const draw *d, int x, int xe, double y
 
 /* The loop x = x .. xe - 1, y += m, when the bytes come by table (d->bytes)
 ** and |y| < 2^31 at every step: the steps of line() below, in a copy of its
-** own for each constant tr, aa, flat, grey (aa_blend) and told (a listener
-** of bytes hears each pixel line), so that no step asks them again.  c0 and
-** mc: the colour at x0 and its slopes (unused when flat: d->flat_c). */
+** own for each constant tr, aa, flat, grey (aa_blend) and told (0: nobody
+** listens; 1: a listener of bytes hears each pixel line; 2: it hears runs
+** of pixels, ls->pixels), so that no step asks them again.  c0 and mc: the
+** colour at x0 and its slopes (unused when flat: d->flat_c). */
 static inline ALWAYS_INLINE void bytes_run(draw *d, int x, int xe, double y, double m, int tr,
                                            int aa, int flat, int grey, int told, pt_rgb c0,
                                            const double mc[3], double x0)
 {
     pt_rgb c = d->flat_c;
     pt_rv_pixel px;
+    run r;
 
-    if (told) {
+    if (told == 1) {
         memset(&px, 0, sizeof px);                  /* what no step changes */
         px.kind = aa ? PT_RV_PX_AA : PT_RV_PX_STEP;
         px.transposed = tr;
     }
+    r.n = 0;
     if (told) prefetch(d, x, xe, y, m, tr);       /* the records between the writes */
     for (; x < xe; x++, y += m) {                   /* y accumulated: y += m */
         if (!flat) {
@@ -462,9 +496,12 @@ static inline ALWAYS_INLINE void bytes_run(draw *d, int x, int xe, double y, dou
             c.g = pt_color_at(c0.g, mc[1], (double)x, x0);
             c.b = pt_color_at(c0.b, mc[2], (double)x, x0);
         }
-        if (aa) step_aa_bytes(d, x, y, tr, c, 1, grey, told ? &px : NULL);
-        else step_plain_bytes(d, x, y, tr, c, flat, 1, told ? &px : NULL);
+        if (aa) step_aa_bytes(d, x, y, tr, c, 1, grey, told == 1 ? &px : NULL,
+                              told == 2 ? &r : NULL);
+        else step_plain_bytes(d, x, y, tr, c, flat, 1, told == 1 ? &px : NULL,
+                              told == 2 ? &r : NULL);
     }
+    if (told == 2) run_flush(d, &r);
 }
 
 static void bytes_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rgb c0,
@@ -472,7 +509,8 @@ static void bytes_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rg
 {
     const float *bg = d->bg;
     pt_rgb f = d->flat_c;
-    int aa = d->par->antialias, flat = d->flat, told = !d->quiet;
+    int aa = d->par->antialias, flat = d->flat;
+    int told = d->quiet ? 0 : d->ls->pixels && !d->ls->bad ? 2 : 1;
     int grey = aa && flat && f.r == f.g && f.g == f.b && bg[0] == bg[1] && bg[1] == bg[2];
 
 #define BYTES_RUN(TR, TOLD) do {                                                          \
@@ -482,8 +520,9 @@ static void bytes_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rg
         else if (flat)   bytes_run(d, x, xe, y, m, TR, 1, 1, 0, TOLD, c0, mc, x0);        \
         else             bytes_run(d, x, xe, y, m, TR, 1, 0, 0, TOLD, c0, mc, x0);        \
     } while (0)
-    if (!told) { if (!tr) BYTES_RUN(0, 0); else BYTES_RUN(1, 0); }
-    else       { if (!tr) BYTES_RUN(0, 1); else BYTES_RUN(1, 1); }
+    if (told == 0)      { if (!tr) BYTES_RUN(0, 0); else BYTES_RUN(1, 0); }
+    else if (told == 1) { if (!tr) BYTES_RUN(0, 1); else BYTES_RUN(1, 1); }
+    else                { if (!tr) BYTES_RUN(0, 2); else BYTES_RUN(1, 2); }
 #undef BYTES_RUN
 }
 
@@ -633,8 +672,8 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
                 c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
             }
             if (d->quiet) {
-                if (par->antialias) step_aa_bytes(d, x, y, tr, c, 0, 0, NULL);
-                else step_plain_bytes(d, x, y, tr, c, d->flat, 0, NULL);
+                if (par->antialias) step_aa_bytes(d, x, y, tr, c, 0, 0, NULL, NULL);
+                else step_plain_bytes(d, x, y, tr, c, d->flat, 0, NULL, NULL);
             } else if (par->antialias) {
                 step_aa(d, x, y, tr, c, &px);
             } else if (in) {

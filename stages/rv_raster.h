@@ -104,6 +104,17 @@ typedef struct pt_rv_slopes {
     double x1_vp, y1_vp;
 } pt_rv_slopes;
 
+/* One pixel of a run (pt_rv_raster_ls.pixels): where a loop step writes,
+** its bytes as written and its coverage (1 without AA; an AA step's low
+** pixel 1 - f, its high one f, f = (float)(y - (int)y)). */
+typedef struct pt_rv_px_out {
+    int x_vp, y_vp;
+    float coverage;
+    unsigned char b[3];
+} pt_rv_px_out;
+
+#define PT_RV_RUN 64             /* the most pixels a run holds */
+
 /* Who hears the rasterizer: every number the course's debug log prints for
 ** a primitive, in its order (any callback may be NULL).
 **   ends   a segment's ends in the pixel plane, before rounding
@@ -127,6 +138,14 @@ struct pt_rv_raster_ls {
                                  ** gamma-encoded floats: c[] is the colour
                                  ** before gamma and the bytes come from
                                  ** par->lut (no pow a component) */
+    void (*pixels)(void *ud, const pt_rv_raster_par *par, const pt_rv_px_out *px, size_t n);
+                                 /* with bytes_only and no bad (NULL: not
+                                 ** used): the loop steps of a segment whose
+                                 ** ends lie within 2^30 come here, in runs
+                                 ** of up to PT_RV_RUN pixels in order (an AA
+                                 ** step's low pixel, then its high one), and
+                                 ** not to pixel; other segments' steps, last
+                                 ** pixels and points still go to pixel */
 };
 typedef struct pt_rv_raster_ls pt_rv_raster_ls;
 

@@ -219,4 +219,5 @@ void pt_rv_log_raster_ls(pt_rv_raster_ls *ls, struct pt_trace *t, int debug)
     ls->ud = t;
     ls->clipped_points = debug;
     ls->bytes_only = 0;                 /* the log prints the colours in float */
+    ls->pixels = NULL;
 }

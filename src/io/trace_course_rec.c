@@ -748,6 +748,16 @@ static void on_pixel(void *ud, const pt_rv_pixel *px)
     }
 }
 
+/* A run of a segment's loop steps (pt_rv_raster_ls.pixels): the same
+** records on_pixel writes for them. */
+static void on_pixels(void *ud, const pt_rv_raster_par *par, const pt_rv_px_out *px, size_t n)
+{
+    walker *w = ud;
+    size_t k;
+
+    for (k = 0; k < n; k++) pixel_rec(w, par, px[k].x_vp, px[k].y_vp, px[k].b, px[k].coverage);
+}
+
 static void on_raster(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
                       const pt_rv_prim *p)
 {
@@ -895,6 +905,7 @@ static int walk(void *ud, pt_fb *fb)
     rls.pixel = on_pixel;
     rls.ud = w;
     rls.bytes_only = 1;
+    rls.pixels = on_pixels;
     memset(&ls, 0, sizeof ls);
     ls.stage = on_stage;
     ls.drawn = on_drawn;

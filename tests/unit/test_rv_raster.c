@@ -466,6 +466,47 @@ static void no_pixel(void *ud, const pt_rv_pixel *px)
     (void)ud; (void)px;
 }
 
+/* A listener of bytes's pixels as the traces' pixel records say them:
+** where, the bytes, the coverage; folded into a hash, in order. */
+static void out_hash(uint64_t *h, int x, int y, const unsigned char b[3], float cov)
+{
+    uint32_t cb;
+
+    memcpy(&cb, &cov, sizeof cb);
+    *h = *h * 1000003u + (uint64_t)(uint32_t)x * 65599u + (uint32_t)y;
+    *h = *h * 1000003u + ((uint64_t)b[0] << 16 | (uint64_t)b[1] << 8 | b[2]) + ((uint64_t)cb << 24);
+}
+
+static void hash_pixel(void *ud, const pt_rv_pixel *px)   /* as trace_course_rec.c's on_pixel */
+{
+    uint64_t *h = ud;
+    double y = px->transposed ? px->x_pp : px->y_pp;
+    float f = (float)(y - (double)(int64_t)y);
+
+    switch (px->kind) {
+    case PT_RV_PX_STEP:
+    case PT_RV_PX_END: out_hash(h, px->x_vp, px->y_vp, px->b[0], 1.0f); break;
+    case PT_RV_PX_POINT: if (!px->clipped) out_hash(h, px->x_vp, px->y_vp, px->b[0], 1.0f); break;
+    case PT_RV_PX_AA:
+        if (px->transposed) {
+            out_hash(h, px->lo, px->y_vp, px->b[0], 1.0f - f);
+            out_hash(h, px->hi, px->y_vp, px->b[1], f);
+        } else {
+            out_hash(h, px->x_vp, px->lo, px->b[0], 1.0f - f);
+            out_hash(h, px->x_vp, px->hi, px->b[1], f);
+        }
+        break;
+    }
+}
+
+static void hash_run(void *ud, const pt_rv_raster_par *par, const pt_rv_px_out *px, size_t n)
+{
+    size_t k;
+
+    (void)par;
+    for (k = 0; k < n; k++) out_hash(ud, px[k].x_vp, px[k].y_vp, px[k].b, px[k].coverage);
+}
+
 static void bad_count(void *ud, int x, int y, int W, int H)    /* where, in order */
 {
     uint64_t *h = ud;
@@ -521,8 +562,9 @@ static void quiet_vs_told(void)
     pt_rv_model m;
     pt_rv_prim p;
     pt_rv_raster_par par;
-    pt_rv_raster_ls ls[3];
-    int k, j, i, same = 1, counts = 1, far = 0;
+    pt_rv_raster_ls ls[3], lh[2];
+    uint64_t h[2];
+    int k, j, i, same = 1, counts = 1, far = 0, runs = 1;
 
     memset(&m, 0, sizeof m);
     m.v = v; m.nv = 2; m.c = c; m.nc = 2;
@@ -575,11 +617,24 @@ static void quiet_vs_told(void)
         }
         if (memcmp(fb[0], fb[1], sizeof fb[0]) || memcmp(fb[0], fb[2], sizeof fb[0])) same = 0;
         if (n[0] != n[1] || n[0] != n[2] || bad[0] != bad[1] || bad[0] != bad[2]) counts = 0;
+        for (i = 0; i < 2; i++) {                  /* pixel lines, and runs (no bad) */
+            memset(&lh[i], 0, sizeof lh[i]);
+            lh[i].pixel = hash_pixel;
+            lh[i].pixels = i ? hash_run : NULL;
+            lh[i].bytes_only = 1;
+            lh[i].ud = &h[i];
+            h[i] = 0;
+            memset(fb[i], 77, sizeof fb[i]);
+            n[i] = pt_rv_raster_prim(&m, &p, &par, fb[i], &lh[i]);
+        }
+        if (h[0] != h[1] || n[0] != n[1] || memcmp(fb[0], fb[1], sizeof fb[0])) runs = 0;
     }
     PT_CHECK("rv-5.1 6,000 random primitives: the quiet loops write the framebuffer a listener "
              "of bytes and one of floats see written", same);
     PT_CHECK("rv-5.2 ... and the same pixel counts and bad reports, in order", counts);
     PT_CHECK("rv-5.3 ... some with ends beyond 2^30", far);
+    PT_CHECK("rv-5.4 ... and a listener of runs (pixels) hears the pixels, bytes and coverages "
+             "a listener of pixel lines hears, in order", runs);
 }
 
 int main(int argc, char **argv)
