@@ -87,12 +87,20 @@ typedef struct walker {
                                  ** position has it): JSON ,"model":M,"position":P;
                                  ** text M made safe for a terminal; CSV M,P, */
     const char *names_model, *names_position;
-    pt_sbuf pix;                 /* how the pixel records of the primitive being
-                                 ** drawn begin: JSON up to "x":, text up to
-                                 ** "x_fb = " (pixel_head), */
-    int pix_made;                /*   made for it (0: at its first pixel) */
-    char pix_fixed[96];          /*   and, when it fits, copied here for a
-                                 ** copy of a fixed size */
+    int pix_made;                /* how the pixel records of the primitive being
+                                 ** drawn begin (JSON up to "x":, text up to
+                                 ** "x_fb = "; pixel_head) is made (0: at its
+                                 ** first pixel); */
+    size_t pix_len;              /*   its length, */
+    char pix_fixed[96];          /*   the opening when it fits, for a copy of
+                                 ** a fixed size, */
+    pt_sbuf pix;                 /*   else the opening */
+    uint64_t names_gen;          /* counts the names made (names_make) */
+    struct opened {              /* a record's head and names (opening), */
+        uint64_t gen;            /*   for these names (0: none yet) */
+        size_t len;
+        char s[96];
+    } opened[4];                 /*   one for each OPEN_ */
     struct vcolor {              /* JSON's spelling of the last vertex colour */
         pt_rgb c;                /*   (color_json_at) */
         size_t len;              /*   (0: none yet) */
@@ -143,6 +151,7 @@ static char *num_csv_at(pt_trace *t, char *o, double x)
 ** pixels' coverage (4).  A scene's colours and many of its coordinates come
 ** again and again (white, a model's z, coverage 1). */
 enum { KEPT_XYZ, KEPT_RGB, KEPT_COVERAGE };
+enum { OPEN_WARN, OPEN_PRIM, OPEN_VERTEX, OPEN_NAMES };   /* opening()'s slots */
 
 /* x with prec digits after the point, from table which when kept there: the
 ** spelling, its length in *n.  The coordinates as pt_fmt_fixed spells them;
@@ -228,6 +237,7 @@ static void names_make(walker *w, const rec *r)
     }
     w->names_model = r->model;
     w->names_position = r->position;
+    w->names_gen++;
 }
 
 /* Make w->names say r's model and position, unless it does (inlined where
@@ -241,11 +251,28 @@ static inline int names(walker *w, const rec *r)
     return !w->names.failed;
 }
 
-/* The record's names, then room for the rest of it: where that goes. */
-static char *opening(walker *w, const char *head, size_t n)
+/* The record's head (the slot k of w->opened keeps it: one a call site)
+** and names, then room for the rest of it: where that goes.  The two are
+** kept together while the names stay the same, and copied as one block of a
+** fixed size. */
+static char *opening(walker *w, int k, const char *head, size_t n)
 {
+    struct opened *e = &w->opened[k];
     pt_trace *t = w->t;
+    char *o;
 
+    if (e->gen != w->names_gen && n + w->names.len <= sizeof e->s) {
+        memcpy(e->s, head, n);
+        memcpy(e->s + n, w->names.s, w->names.len);
+        e->len = n + w->names.len;
+        e->gen = w->names_gen;
+    }
+    if (e->gen == w->names_gen) {
+        o = room(t, sizeof e->s + REC_REST);
+        memcpy(o, e->s, sizeof e->s);
+        t->len += e->len;
+        return o + e->len;
+    }
     put(t, head, n);
     put(t, w->names.s, w->names.len);
     return room(t, REC_REST);
@@ -304,7 +331,7 @@ static void fmt_json(walker *w, const rec *r)
     char *o;
 
     if (r->kind == R_WARN) {
-        o = opening(w, LIT("{\"type\":\"warning\""));
+        o = opening(w, OPEN_WARN, LIT("{\"type\":\"warning\""));
         o = str_at(str_at(o, ",\"warning\":\""), r->warning);
         done(w, str_at(o, "\"}\n"));
         return;
@@ -313,13 +340,13 @@ static void fmt_json(walker *w, const rec *r)
         static const char *const keys[] = {
             ",\"kind\":\"point\",\"v\":[", "],\"c\":[", "],\"radius\":", "",
             ",\"kind\":\"line\",\"v\":[", ",", "],\"c\":[", ",", "]"};
-        o = opening(w, LIT("{\"type\":\"primitive\""));
+        o = opening(w, OPEN_PRIM, LIT("{\"type\":\"primitive\""));
         o = prim_at(t, u64_at(t, str_at(o, ",\"primitive\":"), r->v), r->prim, keys);
         o = u64_at(t, str_at(o, ",\"pixels\":"), r->pixels);
         done(w, str_at(o, "}\n"));
         return;
     }
-    o = opening(w, LIT("{\"type\":\"vertex\""));
+    o = opening(w, OPEN_VERTEX, LIT("{\"type\":\"vertex\""));
     o = u64_at(t, str_at(o, ",\"v\":"), r->v);
     o = str_at(str_at(o, ",\"stage\":\""), r->stage);
     o = json_num_at(t, str_at(o, "\",\"x\":"), r->p.x);
@@ -359,7 +386,7 @@ static char *who_at(const pt_trace *t, char *o, const char *k, uint64_t n)
 static void fmt_text(walker *w, const rec *r)
 {
     pt_trace *t = w->t;
-    char *o = opening(w, "", 0);
+    char *o = opening(w, OPEN_NAMES, "", 0);
 
     if (r->kind == R_WARN) {
         o = str_at(str_at(o, " warning: "), r->warning);
@@ -413,7 +440,7 @@ static void fmt_csv(walker *w, const rec *r)
     char *o;
 
     if (r->kind != R_VERTEX) return;             /* CSV: vertex rows only */
-    o = opening(w, "", 0);
+    o = opening(w, OPEN_NAMES, "", 0);
     o = str_at(str_at(u64_at(t, o, r->v), ","), r->stage);
     o = num_csv_at(t, str_at(o, ","), r->p.x);
     o = num_csv_at(t, str_at(o, ","), r->p.y);
@@ -595,25 +622,35 @@ _Static_assert(2 * 20 + 16 + PIXEL_TAIL <= PIXEL_REST, "a pixel record fits its 
 ** (w->pos, number w->raster_no + 1).  0 when out of memory. */
 static NOINLINE int pixel_head(walker *w)
 {
+    static const char head[] = "{\"type\":\"pixel\"";
     pt_sbuf *p = &w->pix;
     char b[64], *e;
+    size_t nh, nb;
     rec r;
 
     rec_init(&r, R_VERTEX, w->pos);          /* for its names (the kind plays no part) */
     if (!names(w, &r)) return 0;
-    p->len = 0;
     if (w->fmt == PT_FORMAT_JSONL) {
-        pt_sbuf_add(p, "{\"type\":\"pixel\"");
-        pt_sbuf_addn(p, w->names.s, w->names.len);
+        nh = sizeof head - 1;
         e = u64_at(w->t, str_at(b, ",\"primitive\":"), w->raster_no + 1);
         e = str_at(e, ",\"x\":");
     } else {
-        pt_sbuf_addn(p, w->names.s, w->names.len);
+        nh = 0;
         e = str_at(who_at(w->t, b, " p", w->raster_no + 1), " pixel        x_fb = ");
     }
-    pt_sbuf_addn(p, b, (size_t)(e - b));
-    if (p->failed) { w->failed = 1; return 0; }
-    if (p->len <= sizeof w->pix_fixed) memcpy(w->pix_fixed, p->s, p->len);
+    nb = (size_t)(e - b);
+    w->pix_len = nh + w->names.len + nb;
+    if (w->pix_len <= sizeof w->pix_fixed) {     /* the head, the names, the number */
+        memcpy(w->pix_fixed, head, nh);
+        memcpy(w->pix_fixed + nh, w->names.s, w->names.len);
+        memcpy(w->pix_fixed + nh + w->names.len, b, nb);
+    } else {                                     /* too long to copy by a fixed size */
+        p->len = 0;
+        pt_sbuf_addn(p, head, nh);
+        pt_sbuf_addn(p, w->names.s, w->names.len);
+        pt_sbuf_addn(p, b, nb);
+        if (p->failed) { w->failed = 1; return 0; }
+    }
     w->pix_made = 1;
     return 1;
 }
@@ -692,12 +729,12 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
     char *o;
 
     if (w->failed || (!w->pix_made && !pixel_head(w))) return;
-    if (w->pix.len <= sizeof w->pix_fixed) {
+    if (w->pix_len <= sizeof w->pix_fixed) {
         o = room(t, sizeof w->pix_fixed + PIXEL_REST);
         memcpy(o, w->pix_fixed, sizeof w->pix_fixed);
-        o += w->pix.len;
+        o += w->pix_len;
     } else {
-        put(t, w->pix.s, w->pix.len);
+        put(t, w->pix.s, w->pix_len);
         o = room(t, PIXEL_REST);
     }
     if (w->fmt == PT_FORMAT_JSONL) {
