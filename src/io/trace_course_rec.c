@@ -64,6 +64,7 @@ typedef struct rec {
 ** bytes), text's (at most 80) */
 #define PIXEL_TAIL 96
 #define COV_BITS 10              /* log2 of the coverages whose JSON is kept */
+#define VSPELL_N 8192            /* the vertex numbers whose spellings are kept */
 
 typedef struct walker {
     pt_course_lane ln;           /* its lane (first: pt_course_lane_ls) */
@@ -95,6 +96,11 @@ typedef struct walker {
     char pix_fixed[96];          /*   the opening when it fits, for a copy of
                                  ** a fixed size, */
     pt_sbuf pix;                 /*   else the opening */
+    struct vspell {              /* JSON: each vertex number's last spellings */
+        uint64_t bits[4];        /*   of x, y, z, w (vnum_at), by the number */
+        unsigned char len[4];    /*   (0: none yet) */
+        char s[4][PT_SHORTLEN];
+    } *vspell;                   /*   mod VSPELL_N (NULL: none) */
     uint64_t names_gen;          /* counts the names made (names_make) */
     struct opened {              /* a record's head and names (opening), */
         uint64_t gen;            /*   for these names (0: none yet) */
@@ -303,6 +309,38 @@ static char *prim_at(const pt_trace *t, char *o, const pt_rv_prim *p,
     return str_at(o, keys[8]);
 }
 
+/* Coordinate c (0 .. 3: x y z w) of vertex number v as JSON spells it
+** (json_num_at), at o; returns the end.  The course's stages go over a
+** whole model one stage after another, and a vertex keeps many of its
+** numbers from one stage to the next (the view's x and y are the model's
+** after a translation; renderer 9's camera and view often the world's):
+** the last spelling of each vertex number's coordinates is kept, by the
+** number's bits, and copied when they come again; the trace's own slots
+** (json_num_at) see 8,000 other numbers in between. */
+static inline char *vnum_at(walker *w, char *o, uint64_t v, int c, double x)
+{
+    struct vspell *e;
+    uint64_t bits;
+    char *end;
+    size_t n;
+
+    if (!w->vspell) return json_num_at(w->t, o, x);
+    e = &w->vspell[v % VSPELL_N];
+    memcpy(&bits, &x, sizeof bits);
+    if (e->len[c] && e->bits[c] == bits) {
+        memcpy(o, e->s[c], PT_SHORTLEN);
+        return o + e->len[c];
+    }
+    end = json_num_at(w->t, o, x);
+    n = (size_t)(end - o);
+    if (n <= PT_SHORTLEN) {                      /* a fixed size: what follows n is */
+        e->bits[c] = bits;                       /*   never copied beyond the record */
+        e->len[c] = (unsigned char)n;
+        memcpy(e->s[c], o, PT_SHORTLEN);
+    }
+    return end;
+}
+
 /* ,"color":[R,G,B] of a vertex record, at o; returns the end.  The last
 ** colour's spelling is kept: a model's vertices mostly share one. */
 static char *color_json_at(walker *w, char *o, pt_rgb c)
@@ -349,10 +387,10 @@ static void fmt_json(walker *w, const rec *r)
     o = opening(w, OPEN_VERTEX, LIT("{\"type\":\"vertex\""));
     o = u64_at(t, str_at(o, ",\"v\":"), r->v);
     o = str_at(str_at(o, ",\"stage\":\""), r->stage);
-    o = json_num_at(t, str_at(o, "\",\"x\":"), r->p.x);
-    o = json_num_at(t, str_at(o, ",\"y\":"), r->p.y);
-    o = json_num_at(t, str_at(o, ",\"z\":"), r->p.z);
-    if (w->w4) o = json_num_at(t, str_at(o, ",\"w\":"), r->p.w);
+    o = vnum_at(w, str_at(o, "\",\"x\":"), r->v, 0, r->p.x);
+    o = vnum_at(w, str_at(o, ",\"y\":"), r->v, 1, r->p.y);
+    o = vnum_at(w, str_at(o, ",\"z\":"), r->v, 2, r->p.z);
+    if (w->w4) o = vnum_at(w, str_at(o, ",\"w\":"), r->v, 3, r->p.w);
     if (r->has_color) o = color_json_at(w, o, r->color);
     if (r->from) {
         o = str_at(str_at(o, ",\"from\":{\"stage\":\""), r->from);
@@ -911,12 +949,14 @@ static int walker_init(walker *w, FILE *f, const pt_scene *s, int fmt, int preci
     pt_trace_init(w->t, f, (pt_format)fmt, precision);
     w->ln.t = w->t;
     if (explain && !(w->prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->prev))) return -1;
+    if (fmt == PT_FORMAT_JSONL) w->vspell = calloc(VSPELL_N, sizeof *w->vspell);  /* or none */
     return 0;
 }
 
 static void walker_free(walker *w)
 {
     free(w->t);
+    free(w->vspell);
     pt_sbuf_free(&w->sb);
     pt_sbuf_free(&w->names);
     pt_sbuf_free(&w->pix);
