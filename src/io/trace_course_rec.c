@@ -65,6 +65,7 @@ typedef struct rec {
 #define PIXEL_TAIL 96
 #define COV_BITS 10              /* log2 of the coverages whose JSON is kept */
 #define VSPELL_N 8192            /* the vertex numbers whose spellings are kept */
+#define TAIL_BITS 9              /* log2 of the pixel records' ends kept */
 
 typedef struct walker {
     pt_course_lane ln;           /* its lane (first: pt_course_lane_ls) */
@@ -117,11 +118,12 @@ typedef struct walker {
         unsigned char len;       /*   (0: an empty slot) */
         char s[PT_SHORTLEN];
     } cov[1 << COV_BITS];
-    struct tail {                /* a pixel record's end after its y, for */
-        unsigned char b[3];      /*   these bytes at coverage 1 (tail_one) */
-        size_t len;              /*   (0: none made yet) */
+    struct tail {                /* pixel records' ends after their y (tail_of), */
+        uint32_t f;              /*   by the bits of the coverage */
+        unsigned char b[3];      /*   and the bytes */
+        unsigned char len;       /*   (0: an empty slot) */
         char s[PIXEL_TAIL];
-    } tail;
+    } tails[1 << TAIL_BITS], *tail_last;
     int explain;                 /* --explain: each vertex record's formula */
     pt_course_cam cam;           /*   the camera, */
     struct prev { pt_vec4 *v; size_t n; } *prev;  /* each position's vertices
@@ -725,7 +727,7 @@ static char *cov_at(walker *w, char *o, float f)
 /* The end of a pixel record after its y, for bytes b and coverage f, at o
 ** (JSON: ,"rgb":[R,G,B],"coverage":F}; text: rgb = R G B  coverage F);
 ** returns its end.  This function can't fail. */
-static NOINLINE char *tail_at(walker *w, char *o, const unsigned char b[3], float f)
+static char *tail_at(walker *w, char *o, const unsigned char b[3], float f)
 {
     pt_trace *t = w->t;
 
@@ -743,17 +745,31 @@ static NOINLINE char *tail_at(walker *w, char *o, const unsigned char b[3], floa
     return str_at(o, "\n");
 }
 
-/* Make w->tail the end of a pixel record of coverage 1 (a step without AA,
-** a last pixel, a point's pixel) for bytes b.  pixel_rec copies it while b
-** stays the same (a segment's steps mostly write one colour); an
-** anti-aliased step's coverage changes at every step: its records are
-** written whole (tail_at). */
-static NOINLINE void tail_one(walker *w, const unsigned char b[3])
+/* The end of a pixel record for bytes b and coverage f (its bits fb), as
+** tail_at writes it, made in its slot of w->tails unless the slot holds it:
+** a segment's steps mostly write one colour at coverage 1, and an
+** anti-aliased render's weights and the bytes they give are few (some
+** hundreds in the bench's scene). */
+static NOINLINE void tail_make(walker *w, struct tail *e, const unsigned char b[3], float f,
+                               uint32_t fb)
 {
-    struct tail *e = &w->tail;
-
-    e->len = (size_t)(tail_at(w, e->s, b, 1.0f) - e->s);
+    e->len = (unsigned char)(tail_at(w, e->s, b, f) - e->s);
+    e->f = fb;
     memcpy(e->b, b, 3);
+}
+
+static inline const struct tail *tail_of(walker *w, const unsigned char b[3], float f)
+{
+    uint32_t fb, k;
+    struct tail *e = w->tail_last;              /* the record before's, most often */
+
+    memcpy(&fb, &f, sizeof fb);
+    if (e && e->f == fb && memcmp(e->b, b, 3) == 0) return e;
+    k = ((uint32_t)b[0] << 16 | (uint32_t)b[1] << 8 | b[2]) ^ fb;
+    e = &w->tails[(uint32_t)(k * UINT32_C(0x9e3779b9)) >> (32 - TAIL_BITS)];
+    if (!e->len || e->f != fb || memcmp(e->b, b, 3) != 0) tail_make(w, e, b, f, fb);
+    w->tail_last = e;
+    return e;
 }
 
 /* One pixel record: (x_vp, y_vp) in the viewport, the bytes b written,
@@ -764,6 +780,7 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
 {
     pt_trace *t = w->t;
     int64_t x_fb = (int64_t)par->x_ul + x_vp, y_fb = (int64_t)par->y_ul + y_vp;
+    const struct tail *e;
     char *o;
 
     if (w->failed || (!w->pix_made && !pixel_head(w))) return;
@@ -782,13 +799,9 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
         o = int_at(t, o, x_fb, 0);
         o = int_at(t, str_at(o, "  y_fb = "), y_fb, 0);
     }
-    if (f != 1.0f) {
-        done(w, tail_at(w, o, b, f));
-        return;
-    }
-    if (!w->tail.len || memcmp(b, w->tail.b, 3) != 0) tail_one(w, b);
-    memcpy(o, w->tail.s, PIXEL_TAIL);
-    done(w, o + w->tail.len);
+    e = tail_of(w, b, f);
+    memcpy(o, e->s, PIXEL_TAIL);
+    done(w, o + e->len);
 }
 
 /* The rasterizer's pixel lines as pixel records: an anti-aliased step is
