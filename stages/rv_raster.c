@@ -224,7 +224,8 @@ static void end_pixel(draw *d, double x_pp, double y_pp, pt_rgb c)
 
     if (d->quiet) {                                 /* the same write, untold */
         bytes3(c, b);
-        put_bytes(d, wrap32((int64_t)jint(x_pp) - 1), wrap32((int64_t)d->par->h - jint(y_pp)), b);
+        put_bytes(d, wrap32((int64_t)jint(x_pp) - 1),           /* (int)x - 1 */
+                  wrap32((int64_t)d->par->h - jint(y_pp)), b);  /* h - (int)y */
         return;
     }
     memset(&px, 0, sizeof px);
