@@ -25,8 +25,8 @@
 
 #include <math.h>
 
-/* The formulas a rasterizer runs at every step are inline here; pow and the
-** blend are in pt_color.c. */
+/* The formulas a rasterizer runs at every step are inline here; pow is in
+** pt_color.c. */
 
 /* The course's 1 / 2.2 (Rasterize.GAMMA = 2.2; 1.0 / 2.2 in double). */
 #define PT_GAMMA_INV 0.45454545454545453
@@ -73,11 +73,18 @@ static inline unsigned char pt_color_byte(float c)
 
 /* The anti-aliasing weight of a step whose other coordinate is a, its lower
 ** pixel a_low = floor(a): (float)(a - a_low).  This function can't fail. */
-float pt_aa_weight(double a, double a_low);
+static inline float pt_aa_weight(double a, double a_low)
+{
+    return (float)(a - a_low);                      /* weight = (float)(a - a_low) */
+}
 
 /* The two shares of component c at weight w with background component bg:
 ** *low = (1 - w)*c + w*bg, *hi = w*c + (1 - w)*bg, in float.  This function
 ** can't fail. */
-void pt_aa_blend(float c, float bg, float w, float *low, float *hi);
+static inline void pt_aa_blend(float c, float bg, float w, float *low, float *hi)
+{
+    *low = (1.0f - w) * c + w * bg;                 /* (1 - w)*c + w*bg */
+    *hi = w * c + (1.0f - w) * bg;                  /* w*c + (1 - w)*bg */
+}
 
 #endif

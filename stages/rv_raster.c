@@ -30,6 +30,8 @@ typedef struct draw {
     int quiet;                   /* 1: nobody hears the pixels (ls or its
                                  ** pixel NULL): the quiet steps write
                                  ** bytes, with par->lut */
+    int runs;                    /* 1: the listener hears loop steps in runs
+                                 ** (ls->pixels: bytes_only, no bad) */
     int bytes;                   /* 1: quiet, or the listener reads bytes
                                  ** alone (bytes_only): no float gamma */
     unsigned char *vp0;          /* the viewport's pixel (0, 0) in rgb, */
@@ -83,6 +85,7 @@ static void start(draw *d, const pt_rv_raster_par *par, unsigned char *rgb,
     d->count_steps = 0;
     d->quiet = ls == NULL || ls->pixel == NULL;
     d->bytes = d->quiet || ls->bytes_only;
+    d->runs = !d->quiet && ls->bytes_only && ls->pixels && !ls->bad;
     d->vp0 = NULL;
     d->vw = d->vh = 0;
     d->W = 0;
@@ -249,7 +252,7 @@ typedef struct aa_pair {
     float lo[3], hi[3];          /* their colours, before gamma */
 } aa_pair;
 
-/* small: |y| < 2^31 (bytes_loop checks), so (int)y needs no saturation;
+/* small: |y| < 2^31 (line() checks), so (int)y needs no saturation;
 ** grey: c and the background each have three equal components, so one is
 ** blended for all (the same float operations give the same float). */
 static inline ALWAYS_INLINE void aa_blend(const draw *d, int x, double y, int tr, pt_rgb c,
@@ -263,13 +266,11 @@ static inline ALWAYS_INLINE void aa_blend(const draw *d, int x, double y, int tr
     a->y_hi = wrap32((int64_t)a->y_low + 1);
     if (!tr && y == (double)par->h) a->y_hi = par->h;   /* the top edge */
     if (tr && y == (double)par->w) a->y_hi = par->w;    /* the right edge */
-    f = (float)(y - (double)a->y_low);                  /* weight = fraction of y */
+    f = pt_aa_weight(y, (double)a->y_low);              /* weight = fraction of y */
     a->f = f;
     in[0] = c.r; in[1] = c.g; in[2] = c.b;
-    for (k = 0; k < (grey ? 1 : 3); k++) {
-        a->lo[k] = (1.0f - f) * in[k] + f * d->bg[k];   /* (1-f)*c + f*bg */
-        a->hi[k] = f * in[k] + (1.0f - f) * d->bg[k];   /* f*c + (1-f)*bg */
-    }
+    for (k = 0; k < (grey ? 1 : 3); k++)                /* (1-f)*c + f*bg, f*c + (1-f)*bg */
+        pt_aa_blend(in[k], d->bg[k], f, &a->lo[k], &a->hi[k]);
     if (grey) {
         a->lo[1] = a->lo[2] = a->lo[0];
         a->hi[1] = a->hi[2] = a->hi[0];
@@ -340,12 +341,12 @@ static inline ALWAYS_INLINE void run_add(const draw *d, run *r, int x_vp, int y_
     if (r->n == PT_RV_RUN) run_flush(d, r);
 }
 
-/* One loop step with AA whose bytes come by table (nobody listens, or the
-** listener reads bytes alone: d->bytes); small and grey as for aa_blend
-** (grey: one byte for three).  px: NULL when nobody listens, else the pixel
-** line to fill in and tell (its kind and transposed set by the loop). */
+/* One loop step with AA whose bytes come by table (nobody listens, or a
+** listener of runs: d->runs); small and grey as for aa_blend (grey: one
+** byte for three).  r: NULL when nobody listens, else the run the step's
+** two pixels join. */
 static inline ALWAYS_INLINE void step_aa_bytes(draw *d, int x, double y, int tr, pt_rgb c,
-                                               int small, int grey, pt_rv_pixel *px, run *r)
+                                               int small, int grey, run *r)
 {
     aa_pair a;
     unsigned char lo[3], hi[3];
@@ -358,17 +359,6 @@ static inline ALWAYS_INLINE void step_aa_bytes(draw *d, int x, double y, int tr,
         out_bytes(d, a.lo[0], a.lo[1], a.lo[2], lo);
         out_bytes(d, a.hi[0], a.hi[1], a.hi[2], hi);
     }
-    if (px) {                                       /* as step_aa tells it */
-        px->c[0].r = a.lo[0]; px->c[0].g = a.lo[1]; px->c[0].b = a.lo[2];
-        px->c[1].r = a.hi[0]; px->c[1].g = a.hi[1]; px->c[1].b = a.hi[2];
-        memcpy(px->b[0], lo, 3);
-        memcpy(px->b[1], hi, 3);
-        px->x_pp = tr ? y : (double)x;
-        px->y_pp = tr ? (double)x : y;
-        if (!tr) { px->x_vp = a.x_vp[0]; px->lo = a.y_vp[0]; px->hi = a.y_vp[1]; }
-        else     { px->y_vp = a.y_vp[0]; px->lo = a.x_vp[0]; px->hi = a.x_vp[1]; }
-        tell(d, px);
-    }
     if (r) {                                        /* low, then high */
         run_add(d, r, a.x_vp[0], a.y_vp[0], lo, 1.0f - a.f);
         run_add(d, r, a.x_vp[1], a.y_vp[1], hi, a.f);
@@ -378,27 +368,14 @@ static inline ALWAYS_INLINE void step_aa_bytes(draw *d, int x, double y, int tr,
 }
 
 /* A loop step's pixel without AA: the row Math.round(y) (in transposed
-** coordinates). */
-static inline ALWAYS_INLINE void plain_pixel(const draw *d, int x, double y, int tr,
+** coordinates); in: |y| < PT_PIX_LIMIT is known (the loops of a segment
+** whose ends lie within 2^30), so the rounding needs no range test. */
+static inline ALWAYS_INLINE void plain_pixel(const draw *d, int x, double y, int tr, int in,
                                              int *x_vp, int *y_vp)
 {
     int64_t r;                                      /* (int)Math.round(y): low 32 bits */
-    int ry = wrap32(pt_pix_round(y, &r) ? r : jround(y));   /* inline below 2^62 */
-
-    if (!tr) {
-        *x_vp = wrap32((int64_t)x - 1);             /* x - 1 */
-        *y_vp = wrap32((int64_t)d->par->h - ry);    /* h - round(y) */
-    } else {
-        *x_vp = wrap32((int64_t)ry - 1);            /* round(y) - 1 */
-        *y_vp = wrap32((int64_t)d->par->h - x);     /* h - x */
-    }
-}
-
-/* plain_pixel() where |y| < PT_PIX_LIMIT at every step (bytes_loop checks). */
-static inline ALWAYS_INLINE void plain_pixel_in(const draw *d, int x, double y, int tr,
-                                                int *x_vp, int *y_vp)
-{
-    int ry = wrap32(pt_pix_round_in(y));            /* (int)Math.round(y) */
+    int ry = wrap32(in ? pt_pix_round_in(y)
+                       : pt_pix_round(y, &r) ? r : jround(y));  /* inline below 2^62 */
 
     if (!tr) {
         *x_vp = wrap32((int64_t)x - 1);             /* x - 1 */
@@ -411,40 +388,28 @@ static inline ALWAYS_INLINE void plain_pixel_in(const draw *d, int x, double y, 
 
 /* One loop step without AA, told to the listener in *px (its kind and
 ** transposed set by the loop, and for a flat segment its colour and bytes:
-** d->flat_g, d->flat_b); in: y within the limit (plain_pixel_in). */
+** d->flat_g, d->flat_b); in as for plain_pixel. */
 static inline ALWAYS_INLINE void step_plain(draw *d, int x, double y, int tr, pt_rgb c,
                                             pt_rv_pixel *px, int in)
 {
     if (!d->flat) written(d, c, &px->c[0], px->b[0]);
     px->x_pp = tr ? y : (double)x;
     px->y_pp = tr ? (double)x : y;
-    if (in) plain_pixel_in(d, x, y, tr, &px->x_vp, &px->y_vp);
-    else plain_pixel(d, x, y, tr, &px->x_vp, &px->y_vp);
+    plain_pixel(d, x, y, tr, in, &px->x_vp, &px->y_vp);
     tell(d, px);
     put_bytes(d, px->x_vp, px->y_vp, px->b[0]);
 }
 
 /* One loop step without AA whose bytes come by table (d->bytes): flat, the
-** segment's (d->flat_b); in: y within the limit (plain_pixel_in); px as for
-** step_aa_bytes. */
+** segment's (d->flat_b); in as for plain_pixel; r as for step_aa_bytes. */
 static inline ALWAYS_INLINE void step_plain_bytes(draw *d, int x, double y, int tr, pt_rgb c,
-                                                  int flat, int in, pt_rv_pixel *px, run *r)
+                                                  int flat, int in, run *r)
 {
     unsigned char b[3];
     int x_vp, y_vp;
 
-    if (in) plain_pixel_in(d, x, y, tr, &x_vp, &y_vp);
-    else plain_pixel(d, x, y, tr, &x_vp, &y_vp);
+    plain_pixel(d, x, y, tr, in, &x_vp, &y_vp);
     if (!flat) out_bytes(d, c.r, c.g, c.b, b);
-    if (px) {                                       /* as step_plain tells it */
-        px->c[0] = c;
-        memcpy(px->b[0], flat ? d->flat_b : b, 3);
-        px->x_pp = tr ? y : (double)x;
-        px->y_pp = tr ? (double)x : y;
-        px->x_vp = x_vp;
-        px->y_vp = y_vp;
-        tell(d, px);
-    }
     if (r) run_add(d, r, x_vp, y_vp, flat ? d->flat_b : b, 1.0f);
     put_bytes(d, x_vp, y_vp, flat ? d->flat_b : b);
 }
@@ -461,7 +426,7 @@ static inline ALWAYS_INLINE void prefetch(const draw *d, int x, int xe, double y
     int x_vp, y_vp;
 
     for (; x < xe; x++, y += m) {
-        plain_pixel_in(d, x, y, tr, &x_vp, &y_vp);
+        plain_pixel(d, x, y, tr, 1, &x_vp, &y_vp);
         if ((unsigned)x_vp < d->vw && (unsigned)y_vp < d->vh)
             __builtin_prefetch(d->vp0 + 3 * ((size_t)y_vp * d->W + (size_t)x_vp), 1);
     }
@@ -470,25 +435,18 @@ static inline ALWAYS_INLINE void prefetch(const draw *d, int x, int xe, double y
 #endif
 }
 
-/* The loop x = x .. xe - 1, y += m, when the bytes come by table (d->bytes)
-** and |y| < 2^31 at every step: the steps of line() below, in a copy of its
-** own for each constant tr, aa, flat, grey (aa_blend) and told (0: nobody
-** listens; 1: a listener of bytes hears each pixel line; 2: it hears runs
-** of pixels, ls->pixels), so that no step asks them again.  c0 and mc: the
+/* The loop x = x .. xe - 1, y += m, when nobody listens or a listener of
+** runs does (told: ls->pixels), and |y| < 2^31 at every step: the steps of
+** line() below, in a copy of its own for each constant tr, aa, flat, grey
+** (aa_blend) and told, so that no step asks them again.  c0 and mc: the
 ** colour at x0 and its slopes (unused when flat: d->flat_c). */
 static inline ALWAYS_INLINE void bytes_run(draw *d, int x, int xe, double y, double m, int tr,
                                            int aa, int flat, int grey, int told, pt_rgb c0,
                                            const double mc[3], double x0)
 {
     pt_rgb c = d->flat_c;
-    pt_rv_pixel px;
     run r;
 
-    if (told == 1) {
-        memset(&px, 0, sizeof px);                  /* what no step changes */
-        px.kind = aa ? PT_RV_PX_AA : PT_RV_PX_STEP;
-        px.transposed = tr;
-    }
     r.n = 0;
     if (told) prefetch(d, x, xe, y, m, tr);       /* the records between the writes */
     for (; x < xe; x++, y += m) {                   /* y accumulated: y += m */
@@ -497,12 +455,10 @@ static inline ALWAYS_INLINE void bytes_run(draw *d, int x, int xe, double y, dou
             c.g = pt_color_at(c0.g, mc[1], (double)x, x0);
             c.b = pt_color_at(c0.b, mc[2], (double)x, x0);
         }
-        if (aa) step_aa_bytes(d, x, y, tr, c, 1, grey, told == 1 ? &px : NULL,
-                              told == 2 ? &r : NULL);
-        else step_plain_bytes(d, x, y, tr, c, flat, 1, told == 1 ? &px : NULL,
-                              told == 2 ? &r : NULL);
+        if (aa) step_aa_bytes(d, x, y, tr, c, 1, grey, told ? &r : NULL);
+        else step_plain_bytes(d, x, y, tr, c, flat, 1, told ? &r : NULL);
     }
-    if (told == 2) run_flush(d, &r);
+    if (told) run_flush(d, &r);
 }
 
 static void bytes_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rgb c0,
@@ -510,8 +466,7 @@ static void bytes_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rg
 {
     const float *bg = d->bg;
     pt_rgb f = d->flat_c;
-    int aa = d->par->antialias, flat = d->flat;
-    int told = d->quiet ? 0 : d->ls->pixels && !d->ls->bad ? 2 : 1;
+    int aa = d->par->antialias, flat = d->flat, told = d->runs;
     int grey = aa && flat && f.r == f.g && f.g == f.b && bg[0] == bg[1] && bg[1] == bg[2];
 
 #define BYTES_RUN(TR, TOLD) do {                                                          \
@@ -521,9 +476,8 @@ static void bytes_loop(draw *d, int x, int xe, double y, double m, int tr, pt_rg
         else if (flat)   bytes_run(d, x, xe, y, m, TR, 1, 1, 0, TOLD, c0, mc, x0);        \
         else             bytes_run(d, x, xe, y, m, TR, 1, 0, 0, TOLD, c0, mc, x0);        \
     } while (0)
-    if (told == 0)      { if (!tr) BYTES_RUN(0, 0); else BYTES_RUN(1, 0); }
-    else if (told == 1) { if (!tr) BYTES_RUN(0, 1); else BYTES_RUN(1, 1); }
-    else                { if (!tr) BYTES_RUN(0, 2); else BYTES_RUN(1, 2); }
+    if (!told) { if (!tr) BYTES_RUN(0, 0); else BYTES_RUN(1, 0); }
+    else       { if (!tr) BYTES_RUN(0, 1); else BYTES_RUN(1, 1); }
 #undef BYTES_RUN
 }
 
@@ -656,7 +610,7 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
     ** from y0 toward y1: it stays within 2^31 (and PT_PIX_LIMIT) */
     in = fabs(x0) <= 1073741824.0 && fabs(x1) <= 1073741824.0 &&
          fabs(y0) <= 1073741824.0 && fabs(y1) <= 1073741824.0;
-    if (d->bytes && in) {
+    if ((d->quiet || d->runs) && in) {
         bytes_loop(d, jint(x0), xe, y, s.m, tr, c0, s.mc, x0);
     } else {
         memset(&px, 0, sizeof px);                  /* what no step changes */
@@ -673,8 +627,8 @@ static void line(draw *d, const pt_rv_model *m, const pt_rv_prim *p)
                 c.b = pt_color_at(c0.b, s.mc[2], (double)x, x0);
             }
             if (d->quiet) {
-                if (par->antialias) step_aa_bytes(d, x, y, tr, c, 0, 0, NULL, NULL);
-                else step_plain_bytes(d, x, y, tr, c, d->flat, 0, NULL, NULL);
+                if (par->antialias) step_aa_bytes(d, x, y, tr, c, 0, 0, NULL);
+                else step_plain_bytes(d, x, y, tr, c, d->flat, 0, NULL);
             } else if (par->antialias) {
                 step_aa(d, x, y, tr, c, &px);
             } else if (in) {

@@ -63,7 +63,6 @@ typedef struct rec {
 /* A pixel record's end after its y: JSON's rgb and coverage (at most 60
 ** bytes), text's (at most 80) */
 #define PIXEL_TAIL 96
-#define COV_BITS 10              /* log2 of the coverages whose JSON is kept */
 #define VSPELL_N 8192            /* the vertex numbers whose spellings are kept */
 #define TAIL_BITS 9              /* log2 of the pixel records' ends kept */
 
@@ -113,11 +112,6 @@ typedef struct walker {
         size_t len;              /*   (0: none yet) */
         char s[3 * (PT_NUMLEN + 2) + 16];
     } vcolor;
-    struct cov {                 /* JSON's spellings of coverages (cov_at), */
-        uint32_t bits;           /*   by the float's bits */
-        unsigned char len;       /*   (0: an empty slot) */
-        char s[PT_SHORTLEN];
-    } cov[1 << COV_BITS];
     struct tail {                /* pixel records' ends after their y (tail_of), */
         uint32_t f;              /*   by the bits of the coverage */
         unsigned char b[3];      /*   and the bytes */
@@ -695,35 +689,6 @@ static NOINLINE int pixel_head(walker *w)
     return 1;
 }
 
-/* Coverage f as JSON writes it (json_num_at of f widened), at o; returns
-** the end.  The spellings are kept by f's bits: an anti-aliased step's
-** weight is the fraction of y0 + k m, y0 an integer and m a ratio of small
-** ones, so a render has few (some hundreds in the bench's scene) and
-** meets them again and again; the trace's own slots (json_num_at) hold
-** the vertices' numbers as well, and too few for them. */
-static char *cov_at(walker *w, char *o, float f)
-{
-    struct cov *e;
-    uint32_t bits;
-    char b[PT_NUMLEN + 2];
-    size_t n;
-
-    memcpy(&bits, &f, sizeof bits);
-    e = &w->cov[(uint32_t)(bits * UINT32_C(0x9e3779b9)) >> (32 - COV_BITS)];
-    if (e->bits == bits && e->len) {
-        memcpy(o, e->s, PT_SHORTLEN);
-        return o + e->len;
-    }
-    n = (size_t)(json_num_at(w->t, b, (double)f) - b);
-    memcpy(o, b, n);
-    if (n <= sizeof e->s) {
-        e->bits = bits;
-        e->len = (unsigned char)n;
-        memcpy(e->s, b, n);
-    }
-    return o + n;
-}
-
 /* The end of a pixel record after its y, for bytes b and coverage f, at o
 ** (JSON: ,"rgb":[R,G,B],"coverage":F}; text: rgb = R G B  coverage F);
 ** returns its end.  This function can't fail. */
@@ -735,7 +700,7 @@ static char *tail_at(walker *w, char *o, const unsigned char b[3], float f)
         o = u64_at(t, str_at(o, ",\"rgb\":["), b[0]);
         o = u64_at(t, str_at(o, ","), b[1]);
         o = u64_at(t, str_at(o, ","), b[2]);
-        o = cov_at(w, str_at(o, "],\"coverage\":"), f);
+        o = json_num_at(t, str_at(o, "],\"coverage\":"), (double)f);
         return str_at(o, "}\n");
     }
     o = u64_at(t, str_at(o, "  rgb = "), b[0]);
