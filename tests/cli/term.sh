@@ -110,19 +110,21 @@ check "term-4.11 (and COLUMNS=60 does wrap it)" test "$(cmp -s "$tmp/c60" "$tmp/
 # the terminal's own width, through a pseudo-terminal of 45 columns
 if command -v python3 >/dev/null 2>&1; then
     python3 - "$exe" > "$tmp/pty" 2>&1 <<'PY'
-import fcntl, os, pty, struct, subprocess, sys, termios
+import fcntl, os, pty, select, struct, subprocess, sys, termios, time
 m, s = pty.openpty()
 fcntl.ioctl(s, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 45, 0, 0))
 env = dict(os.environ); env.pop("COLUMNS", None)
 p = subprocess.Popen([sys.argv[1], "step", "--vertex", "1", "--all"], stdout=s, stderr=s,
                      stdin=subprocess.DEVNULL, env=env)
-os.close(s)
-out = b""
-while True:
-    try: chunk = os.read(m, 4096)
-    except OSError: break
-    if not chunk: break
-    out += chunk
+# The slave stays open here: Linux may flush a pty whose last slave closed
+# before the master has read it all. Read until the child has ended and the
+# master has been quiet for a while (60 s at most in all).
+out, end = b"", time.monotonic() + 60
+while time.monotonic() < end:
+    if select.select([m], [], [], 0.3)[0]:
+        out += os.read(m, 65536)
+    elif p.poll() is not None:
+        break
 p.wait()
 sys.stdout.write(out.decode().replace("\r\n", "\n"))
 PY
