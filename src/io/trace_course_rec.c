@@ -11,7 +11,7 @@
 ** CSV's doubles through the block's kept spellings.  A pixel record, the
 ** most of them, is written straight from the rasterizer's pixel line: the
 ** opening its primitive's records share, made once a primitive and copied,
-** then its numbers (pixel_rec).
+** then its numbers (on_pixels).
 */
 #include <math.h>
 #include <stdio.h>
@@ -42,7 +42,7 @@ typedef enum rkind { R_VERTEX, R_PRIM, R_WARN } rkind;
 typedef struct rec {
     rkind kind;
     const char *model, *position;
-    const char *stage;
+    pt_course_stage st;          /* vertex: its stage */
     uint64_t v;                  /* vertex: 1-based; prim: its number in the list */
     pt_vec4 p;                   /* vertex: x y z (w with renderer 9) */
     int has_color;
@@ -100,7 +100,12 @@ typedef struct walker {
         uint64_t bits[4];        /*   of x, y, z, w (vnum_at), by the number */
         unsigned char len[4];    /*   (0: none yet) */
         char s[4][PT_SHORTLEN];
-    } *vspell;                   /*   mod VSPELL_N (NULL: none) */
+    } *vspell;                   /*   mod VSPELL_N (JSON only) */
+    struct pt_trace_frag skey[PT_NCST];  /* each stage's name in a vertex record
+                                 ** with what comes around it, made once
+                                 ** (skeys_make): JSON ',"stage":"NAME","x":',
+                                 ** text ' NAME (left-aligned in 12) x =', CSV
+                                 ** ',NAME,'; copied as one 32-byte slot */
     uint64_t names_gen;          /* counts the names made (names_make) */
     struct opened {              /* a record's head and names (opening), */
         uint64_t gen;            /*   for these names (0: none yet) */
@@ -218,6 +223,37 @@ static const char *edge_name(pt_rv_edge e)
 
 /* ===== the three formatters ===== */
 
+/* Make w->skey for format w->fmt, from stage_names. */
+static void skeys_make(walker *w)
+{
+    int st, n;
+
+    for (st = 0; st < PT_NCST; st++) {
+        struct pt_trace_frag *k = &w->skey[st];
+        if (w->fmt == PT_FORMAT_JSONL)
+            n = snprintf(k->s, sizeof k->s, ",\"stage\":\"%s\",\"x\":", stage_names[st]);
+        else if (w->fmt == PT_FORMAT_CSV)
+            n = snprintf(k->s, sizeof k->s, ",%s,", stage_names[st]);
+        else
+            n = snprintf(k->s, sizeof k->s, " %-12s x =", stage_names[st]);
+        k->len = (unsigned char)n;              /* stage_names are short: it fits */
+    }
+}
+
+/* Slot k's text at o: one copy of the whole slot (two 16-byte moves; the
+** bytes past its length are written over next); returns the end. */
+static inline char *slot_at(char *o, const struct pt_trace_frag *k)
+{
+    memcpy(o, k, sizeof *k);
+    return o + k->len;
+}
+
+/* Stage st's key at o (w->skey); returns the end. */
+static inline char *skey_at(const walker *w, char *o, pt_course_stage st)
+{
+    return slot_at(o, &w->skey[st]);
+}
+
 /* Make w->names say r's model and position as format fmt writes them. */
 static void names_make(walker *w, const rec *r)
 {
@@ -253,31 +289,39 @@ static inline int names(walker *w, const rec *r)
     return !w->names.failed;
 }
 
+/* opening() when slot e is not made for the names: made when the head
+** and the names fit it, else written the long way. */
+static NOINLINE char *opening_make(walker *w, struct opened *e, const char *head, size_t n)
+{
+    pt_trace *t = w->t;
+
+    if (n + w->names.len > sizeof e->s) {
+        put(t, head, n);
+        put(t, w->names.s, w->names.len);
+        return room(t, REC_REST);
+    }
+    memcpy(e->s, head, n);
+    memcpy(e->s + n, w->names.s, w->names.len);
+    e->len = n + w->names.len;
+    e->gen = w->names_gen;
+    return NULL;
+}
+
 /* The record's head (the slot k of w->opened keeps it: one a call site)
 ** and names, then room for the rest of it: where that goes.  The two are
 ** kept together while the names stay the same, and copied as one block of a
 ** fixed size. */
-static char *opening(walker *w, int k, const char *head, size_t n)
+static inline char *opening(walker *w, int k, const char *head, size_t n)
 {
     struct opened *e = &w->opened[k];
     pt_trace *t = w->t;
     char *o;
 
-    if (e->gen != w->names_gen && n + w->names.len <= sizeof e->s) {
-        memcpy(e->s, head, n);
-        memcpy(e->s + n, w->names.s, w->names.len);
-        e->len = n + w->names.len;
-        e->gen = w->names_gen;
-    }
-    if (e->gen == w->names_gen) {
-        o = room(t, sizeof e->s + REC_REST);
-        memcpy(o, e->s, sizeof e->s);
-        t->len += e->len;
-        return o + e->len;
-    }
-    put(t, head, n);
-    put(t, w->names.s, w->names.len);
-    return room(t, REC_REST);
+    if (e->gen != w->names_gen && (o = opening_make(w, e, head, n)) != NULL) return o;
+    o = room(t, sizeof e->s + REC_REST);
+    memcpy(o, e->s, sizeof e->s);
+    t->len += e->len;
+    return o + e->len;
 }
 
 /* The record ends at o. */
@@ -288,40 +332,41 @@ static void done(walker *w, char *o)
 
 #define LIT(s) s, sizeof s - 1           /* a literal and its length, for put() */
 
+/* A literal in a 32-byte slot with its length, copied whole (slot_at) */
+#define KEY(s) {s, sizeof s - 1}
+
 /* A primitive drawn, its numbers after keys[]: a point's v, c, radius
 ** (keys 0 .. 3), a line's v v c c (keys 4 .. 8); 1-based indices. */
 static char *prim_at(const pt_trace *t, char *o, const pt_rv_prim *p,
-                     const char *const keys[9])
+                     const struct pt_trace_frag keys[9])
 {
     if (p->kind == PT_RV_POINT) {
-        o = u64_at(t, str_at(o, keys[0]), (uint64_t)p->v[0] + 1);
-        o = u64_at(t, str_at(o, keys[1]), (uint64_t)p->c[0] + 1);
-        return str_at(int_at(t, str_at(o, keys[2]), p->radius, 0), keys[3]);
+        o = u64_at(t, slot_at(o, &keys[0]), (uint64_t)p->v[0] + 1);
+        o = u64_at(t, slot_at(o, &keys[1]), (uint64_t)p->c[0] + 1);
+        return slot_at(int_at(t, slot_at(o, &keys[2]), p->radius, 0), &keys[3]);
     }
-    o = u64_at(t, str_at(o, keys[4]), (uint64_t)p->v[0] + 1);
-    o = u64_at(t, str_at(o, keys[5]), (uint64_t)p->v[1] + 1);
-    o = u64_at(t, str_at(o, keys[6]), (uint64_t)p->c[0] + 1);
-    o = u64_at(t, str_at(o, keys[7]), (uint64_t)p->c[1] + 1);
-    return str_at(o, keys[8]);
+    o = u64_at(t, slot_at(o, &keys[4]), (uint64_t)p->v[0] + 1);
+    o = u64_at(t, slot_at(o, &keys[5]), (uint64_t)p->v[1] + 1);
+    o = u64_at(t, slot_at(o, &keys[6]), (uint64_t)p->c[0] + 1);
+    o = u64_at(t, slot_at(o, &keys[7]), (uint64_t)p->c[1] + 1);
+    return slot_at(o, &keys[8]);
 }
 
-/* Coordinate c (0 .. 3: x y z w) of vertex number v as JSON spells it
-** (json_num_at), at o; returns the end.  The course's stages go over a
-** whole model one stage after another, and a vertex keeps many of its
-** numbers from one stage to the next (the view's x and y are the model's
-** after a translation; renderer 9's camera and view often the world's):
-** the last spelling of each vertex number's coordinates is kept, by the
-** number's bits, and copied when they come again; the trace's own slots
-** (json_num_at) see 8,000 other numbers in between. */
-static inline char *vnum_at(walker *w, char *o, uint64_t v, int c, double x)
+/* Coordinate c (0 .. 3: x y z w) of a vertex as JSON spells it
+** (json_num_at), at o, e its number's slot in w->vspell; returns the end.
+** The course's stages go over a whole model one stage after another, and a
+** vertex keeps many of its numbers from one stage to the next (the view's x
+** and y are the model's after a translation; renderer 9's camera and view
+** often the world's): the last spelling of each vertex number's
+** coordinates is kept, by the number's bits, and copied when they come
+** again; the trace's own slots (json_num_at) see 8,000 other numbers in
+** between. */
+static inline char *vnum_at(walker *w, char *o, struct vspell *e, int c, double x)
 {
-    struct vspell *e;
     uint64_t bits;
     char *end;
     size_t n;
 
-    if (!w->vspell) return json_num_at(w->t, o, x);
-    e = &w->vspell[v % VSPELL_N];
     memcpy(&bits, &x, sizeof bits);
     if (e->len[c] && e->bits[c] == bits) {
         memcpy(o, e->s[c], PT_SHORTLEN);
@@ -362,6 +407,7 @@ static char *color_json_at(walker *w, char *o, pt_rgb c)
 static void fmt_json(walker *w, const rec *r)
 {
     pt_trace *t = w->t;
+    struct vspell *ve;
     char *o;
 
     if (r->kind == R_WARN) {
@@ -371,9 +417,9 @@ static void fmt_json(walker *w, const rec *r)
         return;
     }
     if (r->kind == R_PRIM) {
-        static const char *const keys[] = {
-            ",\"kind\":\"point\",\"v\":[", "],\"c\":[", "],\"radius\":", "",
-            ",\"kind\":\"line\",\"v\":[", ",", "],\"c\":[", ",", "]"};
+        static const struct pt_trace_frag keys[] = {
+            KEY(",\"kind\":\"point\",\"v\":["), KEY("],\"c\":["), KEY("],\"radius\":"), KEY(""),
+            KEY(",\"kind\":\"line\",\"v\":["), KEY(","), KEY("],\"c\":["), KEY(","), KEY("]")};
         o = opening(w, OPEN_PRIM, LIT("{\"type\":\"primitive\""));
         o = prim_at(t, u64_at(t, str_at(o, ",\"primitive\":"), r->v), r->prim, keys);
         o = u64_at(t, str_at(o, ",\"pixels\":"), r->pixels);
@@ -381,12 +427,12 @@ static void fmt_json(walker *w, const rec *r)
         return;
     }
     o = opening(w, OPEN_VERTEX, LIT("{\"type\":\"vertex\""));
+    ve = &w->vspell[r->v % VSPELL_N];
     o = u64_at(t, str_at(o, ",\"v\":"), r->v);
-    o = str_at(str_at(o, ",\"stage\":\""), r->stage);
-    o = vnum_at(w, str_at(o, "\",\"x\":"), r->v, 0, r->p.x);
-    o = vnum_at(w, str_at(o, ",\"y\":"), r->v, 1, r->p.y);
-    o = vnum_at(w, str_at(o, ",\"z\":"), r->v, 2, r->p.z);
-    if (w->w4) o = vnum_at(w, str_at(o, ",\"w\":"), r->v, 3, r->p.w);
+    o = vnum_at(w, skey_at(w, o, r->st), ve, 0, r->p.x);
+    o = vnum_at(w, str_at(o, ",\"y\":"), ve, 1, r->p.y);
+    o = vnum_at(w, str_at(o, ",\"z\":"), ve, 2, r->p.z);
+    if (w->w4) o = vnum_at(w, str_at(o, ",\"w\":"), ve, 3, r->p.w);
     if (r->has_color) o = color_json_at(w, o, r->color);
     if (r->from) {
         o = str_at(str_at(o, ",\"from\":{\"stage\":\""), r->from);
@@ -428,23 +474,16 @@ static void fmt_text(walker *w, const rec *r)
         return;
     }
     if (r->kind == R_PRIM) {
-        static const char *const keys[] = {
-            " drawn        point v", " c", " radius ", "",
-            " drawn        line v", " v", " c", " c", ""};
+        static const struct pt_trace_frag keys[] = {
+            KEY(" drawn        point v"), KEY(" c"), KEY(" radius "), KEY(""),
+            KEY(" drawn        line v"), KEY(" v"), KEY(" c"), KEY(" c"), KEY("")};
         o = prim_at(t, who_at(t, o, " p", r->v), r->prim, keys);
         o = u64_at(t, str_at(o, ": "), r->pixels);
         done(w, str_at(o, " pixels\n"));
         return;
     }
     o = who_at(t, o, " v", r->v);
-    {                                       /* the stage, left-aligned in 12 */
-        size_t n = strlen(r->stage);
-        *o++ = ' ';
-        memcpy(o, r->stage, n);
-        for (; n < 12; n++) o[n] = ' ';
-        o += n;
-    }
-    o = num_text_at(w, str_at(o, " x ="), r->p.x);
+    o = num_text_at(w, skey_at(w, o, r->st), r->p.x);
     o = num_text_at(w, str_at(o, "  y ="), r->p.y);
     o = num_text_at(w, str_at(o, "  z ="), r->p.z);
     if (w->w4) o = num_text_at(w, str_at(o, "  w ="), r->p.w);
@@ -475,8 +514,7 @@ static void fmt_csv(walker *w, const rec *r)
 
     if (r->kind != R_VERTEX) return;             /* CSV: vertex rows only */
     o = opening(w, OPEN_NAMES, "", 0);
-    o = str_at(str_at(u64_at(t, o, r->v), ","), r->stage);
-    o = num_csv_at(t, str_at(o, ","), r->p.x);
+    o = num_csv_at(t, skey_at(w, u64_at(t, o, r->v), r->st), r->p.x);
     o = num_csv_at(t, str_at(o, ","), r->p.y);
     o = num_csv_at(t, str_at(o, ","), r->p.z);
     o = str_at(o, ",");
@@ -574,14 +612,16 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
         w->nvrec += m->nv - from;
         from = m->nv;
     }
+    rec_init(&r, R_VERTEX, pos);            /* what the loop below sets again */
+    r.st = st;                              /* for each record, the rest stays */
     for (k = from; k < m->nv; k++) {
-        rec_init(&r, R_VERTEX, pos);
-        r.stage = stage_names[st];
         r.v = (uint64_t)k + 1;
         r.p = m->v[k];
-        if (k < m->nc) { r.has_color = 1; r.color = m->c[k]; }
+        r.has_color = k < m->nc;
+        if (r.has_color) r.color = m->c[k];
         o = NULL;
         if (st == PT_CST_NEARCLIP || st == PT_CST_CLIP) {
+            r.from = NULL;
             o = origin_of(w, (uint32_t)k);
             if (o) {
                 r.from = stage_names[st];
@@ -737,36 +777,39 @@ static inline const struct tail *tail_of(walker *w, const unsigned char b[3], fl
     return e;
 }
 
-/* One pixel record: (x_vp, y_vp) in the viewport, the bytes b written,
-** coverage f: its opening (one copy of a fixed size, or the long one), then
-** its numbers. */
-static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp,
-                      const unsigned char b[3], float f)
+/* The pixel records of n pixels px[] of the viewport, in order: each one's
+** opening (one copy of a fixed size, or the long one), the pixel as x_fb and
+** y_fb, the bytes written and the coverage (its tail, kept: tail_of).  All
+** pixel records are written here, the rasterizer's runs (pt_rv_raster_ls.
+** pixels) and its single pixel lines (on_pixel). */
+static void on_pixels(void *ud, const pt_rv_raster_par *par, const pt_rv_px_out *px, size_t n)
 {
+    static const struct pt_trace_frag y_key[2] = {KEY("  y_fb = "), KEY(",\"y\":")};
+    walker *w = ud;
     pt_trace *t = w->t;
-    int64_t x_fb = (int64_t)par->x_ul + x_vp, y_fb = (int64_t)par->y_ul + y_vp;
+    const struct pt_trace_frag *yk = &y_key[w->fmt == PT_FORMAT_JSONL];
     const struct tail *e;
+    size_t k;
+    int fixed;
     char *o;
 
     if (w->failed || (!w->pix_made && !pixel_head(w))) return;
-    if (w->pix_len <= sizeof w->pix_fixed) {
-        o = room(t, sizeof w->pix_fixed + PIXEL_REST);
-        memcpy(o, w->pix_fixed, sizeof w->pix_fixed);
-        o += w->pix_len;
-    } else {
-        put(t, w->pix.s, w->pix_len);
-        o = room(t, PIXEL_REST);
+    fixed = w->pix_len <= sizeof w->pix_fixed;
+    for (k = 0; k < n; k++) {
+        if (fixed) {
+            o = room(t, sizeof w->pix_fixed + PIXEL_REST);
+            memcpy(o, w->pix_fixed, sizeof w->pix_fixed);
+            o += w->pix_len;
+        } else {
+            put(t, w->pix.s, w->pix_len);
+            o = room(t, PIXEL_REST);
+        }
+        o = int_at(t, o, (int64_t)par->x_ul + px[k].x_vp, 0);
+        o = int_at(t, slot_at(o, yk), (int64_t)par->y_ul + px[k].y_vp, 0);
+        e = tail_of(w, px[k].b, px[k].coverage);
+        memcpy(o, e->s, PIXEL_TAIL);
+        done(w, o + e->len);
     }
-    if (w->fmt == PT_FORMAT_JSONL) {
-        o = int_at(t, o, x_fb, 0);
-        o = int_at(t, str_at(o, ",\"y\":"), y_fb, 0);
-    } else {
-        o = int_at(t, o, x_fb, 0);
-        o = int_at(t, str_at(o, "  y_fb = "), y_fb, 0);
-    }
-    e = tail_of(w, b, f);
-    memcpy(o, e->s, PIXEL_TAIL);
-    done(w, o + e->len);
 }
 
 /* The rasterizer's pixel lines as pixel records: an anti-aliased step is
@@ -775,40 +818,37 @@ static void pixel_rec(walker *w, const pt_rv_raster_par *par, int x_vp, int y_vp
 ** float: the listener says bytes_only. */
 static void on_pixel(void *ud, const pt_rv_pixel *px)
 {
-    walker *w = ud;
-    const pt_rv_raster_par *par = px->par;
+    pt_rv_px_out out[2];
+    size_t n = 0;
 
     switch (px->kind) {
+    case PT_RV_PX_POINT:
+        if (px->clipped) break;
+        /* fall through */
     case PT_RV_PX_STEP:
     case PT_RV_PX_END:
-        pixel_rec(w, par, px->x_vp, px->y_vp, px->b[0], 1.0f);
-        break;
-    case PT_RV_PX_POINT:
-        if (!px->clipped) pixel_rec(w, par, px->x_vp, px->y_vp, px->b[0], 1.0f);
+        out[n].x_vp = px->x_vp, out[n].y_vp = px->y_vp, out[n].coverage = 1.0f;
+        memcpy(out[n++].b, px->b[0], 3);
         break;
     case PT_RV_PX_AA: {
         double y = px->transposed ? px->x_pp : px->y_pp;
         float f = (float)(y - (double)(int64_t)y);
         if (px->transposed) {
-            pixel_rec(w, par, px->lo, px->y_vp, px->b[0], 1.0f - f);
-            pixel_rec(w, par, px->hi, px->y_vp, px->b[1], f);
+            out[n].x_vp = px->lo, out[n].y_vp = px->y_vp;
+            out[n + 1].x_vp = px->hi, out[n + 1].y_vp = px->y_vp;
         } else {
-            pixel_rec(w, par, px->x_vp, px->lo, px->b[0], 1.0f - f);
-            pixel_rec(w, par, px->x_vp, px->hi, px->b[1], f);
+            out[n].x_vp = px->x_vp, out[n].y_vp = px->lo;
+            out[n + 1].x_vp = px->x_vp, out[n + 1].y_vp = px->hi;
         }
+        out[n].coverage = 1.0f - f;
+        out[n + 1].coverage = f;
+        memcpy(out[n].b, px->b[0], 3);
+        memcpy(out[n + 1].b, px->b[1], 3);
+        n += 2;
         break;
     }
     }
-}
-
-/* A run of a segment's loop steps (pt_rv_raster_ls.pixels): the same
-** records on_pixel writes for them. */
-static void on_pixels(void *ud, const pt_rv_raster_par *par, const pt_rv_px_out *px, size_t n)
-{
-    walker *w = ud;
-    size_t k;
-
-    for (k = 0; k < n; k++) pixel_rec(w, par, px[k].x_vp, px[k].y_vp, px[k].b, px[k].coverage);
+    if (n) on_pixels(ud, px->par, out, n);
 }
 
 static void on_raster(void *ud, const pt_course_pos *pos, const pt_rv_model *m,
@@ -927,7 +967,8 @@ static int walker_init(walker *w, FILE *f, const pt_scene *s, int fmt, int preci
     pt_trace_init(w->t, f, (pt_format)fmt, precision);
     w->ln.t = w->t;
     if (explain && !(w->prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->prev))) return -1;
-    if (fmt == PT_FORMAT_JSONL) w->vspell = calloc(VSPELL_N, sizeof *w->vspell);  /* or none */
+    skeys_make(w);
+    if (fmt == PT_FORMAT_JSONL && !(w->vspell = calloc(VSPELL_N, sizeof *w->vspell))) return -1;
     return 0;
 }
 
