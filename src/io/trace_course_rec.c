@@ -13,6 +13,7 @@
 ** opening its primitive's records share, made once a primitive and copied,
 ** then its numbers (on_pixels).
 */
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,12 +26,15 @@
 #include "io/numfmt.h"
 #include "io/sbuf.h"
 
-/* The pixel records' seldom paths stay out of line: the common one (an
-** opening made, a kept tail) is then a small function. */
+/* The records' seldom paths stay out of line (NOINLINE); what every pixel
+** and vertex record does is written inline in the loops that make them
+** (ALWAYS_INLINE). */
 #if defined(__GNUC__)
 #define NOINLINE __attribute__((noinline))
+#define ALWAYS_INLINE __attribute__((always_inline))
 #else
 #define NOINLINE
+#define ALWAYS_INLINE
 #endif
 
 static const char *const stage_names[PT_NCST] = {
@@ -63,6 +67,7 @@ typedef struct rec {
 /* A pixel record's end after its y: JSON's rgb and coverage (at most 60
 ** bytes), text's (at most 80) */
 #define PIXEL_TAIL 96
+#define PIXEL_TAIL_JSON 64       /* JSON's, copied (at most 56 bytes) */
 #define VSPELL_N 8192            /* the vertex numbers whose spellings are kept */
 #define TAIL_BITS 9              /* log2 of the pixel records' ends kept */
 
@@ -118,11 +123,11 @@ typedef struct walker {
         char s[3 * (PT_NUMLEN + 2) + 16];
     } vcolor;
     struct tail {                /* pixel records' ends after their y (tail_of), */
-        uint32_t f;              /*   by the bits of the coverage */
-        unsigned char b[3];      /*   and the bytes */
-        unsigned char len;       /*   (0: an empty slot) */
+        uint64_t key;            /*   by the bits of the coverage and the bytes
+                                 **   (tail_key; 0: an empty slot) */
+        size_t len;
         char s[PIXEL_TAIL];
-    } tails[1 << TAIL_BITS], *tail_last;
+    } tails[1 << TAIL_BITS], *tail_last;   /* (tail_last: never NULL) */
     int explain;                 /* --explain: each vertex record's formula */
     pt_course_cam cam;           /*   the camera, */
     struct prev { pt_vec4 *v; size_t n; } *prev;  /* each position's vertices
@@ -404,30 +409,13 @@ static char *color_json_at(walker *w, char *o, pt_rgb c)
     return o + e->len;
 }
 
-static void fmt_json(walker *w, const rec *r)
+/* A vertex record in JSON (inlined in on_stage's loop: the most records). */
+static inline ALWAYS_INLINE void json_vertex(walker *w, const rec *r)
 {
     pt_trace *t = w->t;
-    struct vspell *ve;
-    char *o;
+    struct vspell *ve = &w->vspell[r->v % VSPELL_N];
+    char *o = opening(w, OPEN_VERTEX, LIT("{\"type\":\"vertex\""));
 
-    if (r->kind == R_WARN) {
-        o = opening(w, OPEN_WARN, LIT("{\"type\":\"warning\""));
-        o = str_at(str_at(o, ",\"warning\":\""), r->warning);
-        done(w, str_at(o, "\"}\n"));
-        return;
-    }
-    if (r->kind == R_PRIM) {
-        static const struct pt_trace_frag keys[] = {
-            KEY(",\"kind\":\"point\",\"v\":["), KEY("],\"c\":["), KEY("],\"radius\":"), KEY(""),
-            KEY(",\"kind\":\"line\",\"v\":["), KEY(","), KEY("],\"c\":["), KEY(","), KEY("]")};
-        o = opening(w, OPEN_PRIM, LIT("{\"type\":\"primitive\""));
-        o = prim_at(t, u64_at(t, str_at(o, ",\"primitive\":"), r->v), r->prim, keys);
-        o = u64_at(t, str_at(o, ",\"pixels\":"), r->pixels);
-        done(w, str_at(o, "}\n"));
-        return;
-    }
-    o = opening(w, OPEN_VERTEX, LIT("{\"type\":\"vertex\""));
-    ve = &w->vspell[r->v % VSPELL_N];
     o = u64_at(t, str_at(o, ",\"v\":"), r->v);
     o = vnum_at(w, skey_at(w, o, r->st), ve, 0, r->p.x);
     o = vnum_at(w, str_at(o, ",\"y\":"), ve, 1, r->p.y);
@@ -452,6 +440,30 @@ static void fmt_json(walker *w, const rec *r)
     if (w->sb.failed) w->failed = 1;
     else put(t, w->sb.s, w->sb.len);
     put(t, LIT("}\n"));
+}
+
+static void fmt_json(walker *w, const rec *r)
+{
+    pt_trace *t = w->t;
+    char *o;
+
+    if (r->kind == R_WARN) {
+        o = opening(w, OPEN_WARN, LIT("{\"type\":\"warning\""));
+        o = str_at(str_at(o, ",\"warning\":\""), r->warning);
+        done(w, str_at(o, "\"}\n"));
+        return;
+    }
+    if (r->kind == R_PRIM) {
+        static const struct pt_trace_frag keys[] = {
+            KEY(",\"kind\":\"point\",\"v\":["), KEY("],\"c\":["), KEY("],\"radius\":"), KEY(""),
+            KEY(",\"kind\":\"line\",\"v\":["), KEY(","), KEY("],\"c\":["), KEY(","), KEY("]")};
+        o = opening(w, OPEN_PRIM, LIT("{\"type\":\"primitive\""));
+        o = prim_at(t, u64_at(t, str_at(o, ",\"primitive\":"), r->v), r->prim, keys);
+        o = u64_at(t, str_at(o, ",\"pixels\":"), r->pixels);
+        done(w, str_at(o, "}\n"));
+        return;
+    }
+    json_vertex(w, r);
 }
 
 /* Text: " p12    " or " v12    ": the letter, the number left-aligned in 6. */
@@ -614,6 +626,7 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
     }
     rec_init(&r, R_VERTEX, pos);            /* what the loop below sets again */
     r.st = st;                              /* for each record, the rest stays */
+    if (from < m->nv && !names(w, &r)) from = m->nv;   /* their names: once */
     for (k = from; k < m->nv; k++) {
         r.v = (uint64_t)k + 1;
         r.p = m->v[k];
@@ -632,8 +645,10 @@ static void on_stage(void *ud, pt_course_stage st, const pt_course_pos *pos,
                 if (r.has_color) r.color = m->c[o->c];
             }
         }
-        if (w->explain && w->ln.taken) explain(w, &r, st, pos, k, o);
-        emit(w, &r);
+        if (w->explain) explain(w, &r, st, pos, k, o);
+        if (w->failed) break;
+        if (w->fmt == PT_FORMAT_JSONL) json_vertex(w, &r);
+        else emit(w, &r);
         w->nvrec++;
     }
     if (w->explain) keep_prev(w, pos, m);
@@ -756,23 +771,29 @@ static char *tail_at(walker *w, char *o, const unsigned char b[3], float f)
 ** anti-aliased render's weights and the bytes they give are few (some
 ** hundreds in the bench's scene). */
 static NOINLINE void tail_make(walker *w, struct tail *e, const unsigned char b[3], float f,
-                               uint32_t fb)
+                               uint64_t key)
 {
-    e->len = (unsigned char)(tail_at(w, e->s, b, f) - e->s);
-    e->f = fb;
-    memcpy(e->b, b, 3);
+    e->len = (size_t)(tail_at(w, e->s, b, f) - e->s);
+    e->key = key;
+}
+
+/* A tail's key: the coverage's bits, a bit that no empty slot has, the bytes. */
+static inline uint64_t tail_key(const unsigned char b[3], float f)
+{
+    uint32_t fb;
+
+    memcpy(&fb, &f, sizeof fb);
+    return (uint64_t)fb << 32 | UINT64_C(1) << 24 | (uint64_t)b[0] << 16 | (uint64_t)b[1] << 8 | b[2];
 }
 
 static inline const struct tail *tail_of(walker *w, const unsigned char b[3], float f)
 {
-    uint32_t fb, k;
+    uint64_t key = tail_key(b, f);
     struct tail *e = w->tail_last;              /* the record before's, most often */
 
-    memcpy(&fb, &f, sizeof fb);
-    if (e && e->f == fb && memcmp(e->b, b, 3) == 0) return e;
-    k = ((uint32_t)b[0] << 16 | (uint32_t)b[1] << 8 | b[2]) ^ fb;
-    e = &w->tails[(uint32_t)(k * UINT32_C(0x9e3779b9)) >> (32 - TAIL_BITS)];
-    if (!e->len || e->f != fb || memcmp(e->b, b, 3) != 0) tail_make(w, e, b, f, fb);
+    if (e->key == key) return e;
+    e = &w->tails[(uint32_t)(key ^ key >> 32) * UINT32_C(0x9e3779b9) >> (32 - TAIL_BITS)];
+    if (e->key != key) tail_make(w, e, b, f, key);
     w->tail_last = e;
     return e;
 }
@@ -782,34 +803,45 @@ static inline const struct tail *tail_of(walker *w, const unsigned char b[3], fl
 ** y_fb, the bytes written and the coverage (its tail, kept: tail_of).  All
 ** pixel records are written here, the rasterizer's runs (pt_rv_raster_ls.
 ** pixels) and its single pixel lines (on_pixel). */
-static void on_pixels(void *ud, const pt_rv_raster_par *par, const pt_rv_px_out *px, size_t n)
+/* Pixel px's record after its opening, at o: x_fb, y_fb, its tail (of
+** PIXEL_TAIL bytes, JSON's of PIXEL_TAIL_JSON); returns the end. */
+static inline ALWAYS_INLINE char *pixel_rest_at(walker *w, char *o, const pt_rv_raster_par *par,
+                                               const pt_rv_px_out *px, int jsonl)
 {
     static const struct pt_trace_frag y_key[2] = {KEY("  y_fb = "), KEY(",\"y\":")};
+    const struct tail *e;
+
+    o = int_at(w->t, o, (int64_t)par->x_ul + px->x_vp, 0);
+    o = int_at(w->t, slot_at(o, &y_key[jsonl]), (int64_t)par->y_ul + px->y_vp, 0);
+    e = tail_of(w, px->b, px->coverage);
+    if (jsonl) memcpy(o, e->s, PIXEL_TAIL_JSON);
+    else memcpy(o, e->s, PIXEL_TAIL);
+    return o + e->len;
+}
+
+static void on_pixels(void *ud, const pt_rv_raster_par *par, const pt_rv_px_out *px, size_t n)
+{
     walker *w = ud;
     pt_trace *t = w->t;
-    const struct pt_trace_frag *yk = &y_key[w->fmt == PT_FORMAT_JSONL];
-    const struct tail *e;
+    int jsonl = w->fmt == PT_FORMAT_JSONL;
     size_t k;
-    int fixed;
     char *o;
 
+    assert(n <= PT_RV_RUN);
     if (w->failed || (!w->pix_made && !pixel_head(w))) return;
-    fixed = w->pix_len <= sizeof w->pix_fixed;
-    for (k = 0; k < n; k++) {
-        if (fixed) {
-            o = room(t, sizeof w->pix_fixed + PIXEL_REST);
-            memcpy(o, w->pix_fixed, sizeof w->pix_fixed);
-            o += w->pix_len;
-        } else {
+    if (w->pix_len > sizeof w->pix_fixed) {          /* a long opening */
+        for (k = 0; k < n; k++) {
             put(t, w->pix.s, w->pix_len);
-            o = room(t, PIXEL_REST);
+            done(w, pixel_rest_at(w, room(t, PIXEL_REST), par, &px[k], jsonl));
         }
-        o = int_at(t, o, (int64_t)par->x_ul + px[k].x_vp, 0);
-        o = int_at(t, slot_at(o, yk), (int64_t)par->y_ul + px[k].y_vp, 0);
-        e = tail_of(w, px[k].b, px[k].coverage);
-        memcpy(o, e->s, PIXEL_TAIL);
-        done(w, o + e->len);
+        return;
     }
+    o = room(t, n * (sizeof w->pix_fixed + PIXEL_REST));   /* 16 KiB at most */
+    for (k = 0; k < n; k++) {
+        memcpy(o, w->pix_fixed, sizeof w->pix_fixed);
+        o = pixel_rest_at(w, o + w->pix_len, par, &px[k], jsonl);
+    }
+    done(w, o);
 }
 
 /* The rasterizer's pixel lines as pixel records: an anti-aliased step is
@@ -968,6 +1000,7 @@ static int walker_init(walker *w, FILE *f, const pt_scene *s, int fmt, int preci
     w->ln.t = w->t;
     if (explain && !(w->prev = calloc(s->nmodels ? s->nmodels : 1, sizeof *w->prev))) return -1;
     skeys_make(w);
+    w->tail_last = &w->tails[0];             /* empty: its key matches none */
     if (fmt == PT_FORMAT_JSONL && !(w->vspell = calloc(VSPELL_N, sizeof *w->vspell))) return -1;
     return 0;
 }
