@@ -34,7 +34,8 @@ typedef struct draw {
                                  ** (ls->pixels: bytes_only, no bad) */
     int bytes;                   /* 1: quiet, or the listener reads bytes
                                  ** alone (bytes_only): no float gamma */
-    unsigned char *vp0;          /* the viewport's pixel (0, 0) in rgb, */
+    unsigned char *vp0;          /* the viewport's pixel (0, 0) in rgb (NULL
+                                 ** without rgb), */
     unsigned vw, vh;             /*   and its size when it lies inside the
                                  ** framebuffer (else 0 0): a pixel inside it
                                  ** needs none of Java's int arithmetic */
@@ -95,8 +96,9 @@ static void start(draw *d, const pt_rv_raster_par *par, unsigned char *rgb,
     memset(d->flat_b, 0, sizeof d->flat_b);
     memset(d->bg, 0, sizeof d->bg);
     if (par->x_ul >= 0 && par->y_ul >= 0 && par->w >= 0 && par->h >= 0 &&
-        (int64_t)par->x_ul + par->w <= par->W && (int64_t)par->y_ul + par->h <= par->H) {
-        d->vp0 = rgb + 3 * ((size_t)par->y_ul * (size_t)par->W + (size_t)par->x_ul);
+        (int64_t)par->x_ul + par->w <= par->W && (int64_t)par->y_ul + par->h <= par->H &&
+        (rgb || !d->quiet)) {                   /* no pixels, nobody told: no shortcut */
+        if (rgb) d->vp0 = rgb + 3 * ((size_t)par->y_ul * (size_t)par->W + (size_t)par->x_ul);
         d->vw = (unsigned)par->w;
         d->vh = (unsigned)par->h;
         d->W = (size_t)par->W;
@@ -130,27 +132,38 @@ static void put_wrapped(draw *d, int x_vp, int y_vp, const unsigned char *b)
         if (d->ls && d->ls->bad) d->ls->bad(d->ls->ud, x, y, par->W, par->H);
         return;
     }
-    o = d->rgb + (size_t)idx * 3;
-    o[0] = b[0];
-    o[1] = b[1];
-    o[2] = b[2];
+    if (d->rgb) {
+        o = d->rgb + (size_t)idx * 3;
+        o[0] = b[0];
+        o[1] = b[1];
+        o[2] = b[2];
+    }
     d->n++;
 }
 
 /* FrameBuffer.setPixelVP(x, y, c): a pixel inside a viewport that lies in
 ** the framebuffer needs none of Java's int arithmetic (inline: every step
-** writes one); any other goes through put_wrapped. */
-static inline ALWAYS_INLINE void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
+** writes one); any other goes through put_wrapped.  quiet: nobody listens,
+** so there are pixels to write (start): the quiet loops ask no more. */
+static inline ALWAYS_INLINE void put_bytes_q(draw *d, int x_vp, int y_vp, const unsigned char *b,
+                                             int quiet)
 {
     unsigned char *o;
 
     if ((unsigned)x_vp < d->vw && (unsigned)y_vp < d->vh) {
-        o = d->vp0 + 3 * ((size_t)y_vp * (size_t)d->W + (size_t)x_vp);
-        memcpy(o, b, 3);                            /* two stores, not three */
+        if (quiet || d->vp0) {                      /* (none: nothing written) */
+            o = d->vp0 + 3 * ((size_t)y_vp * (size_t)d->W + (size_t)x_vp);
+            memcpy(o, b, 3);                        /* two stores, not three */
+        }
         d->n++;
         return;
     }
     put_wrapped(d, x_vp, y_vp, b);
+}
+
+static inline ALWAYS_INLINE void put_bytes(draw *d, int x_vp, int y_vp, const unsigned char *b)
+{
+    put_bytes_q(d, x_vp, y_vp, b, 0);
 }
 
 static void tell(const draw *d, pt_rv_pixel *px)
@@ -363,8 +376,8 @@ static inline ALWAYS_INLINE void step_aa_bytes(draw *d, int x, double y, int tr,
         run_add(d, r, a.x_vp[0], a.y_vp[0], lo, 1.0f - a.f);
         run_add(d, r, a.x_vp[1], a.y_vp[1], hi, a.f);
     }
-    put_bytes(d, a.x_vp[0], a.y_vp[0], lo);
-    put_bytes(d, a.x_vp[1], a.y_vp[1], hi);
+    put_bytes_q(d, a.x_vp[0], a.y_vp[0], lo, r == NULL);
+    put_bytes_q(d, a.x_vp[1], a.y_vp[1], hi, r == NULL);
 }
 
 /* A loop step's pixel without AA: the row Math.round(y) (in transposed
@@ -411,7 +424,7 @@ static inline ALWAYS_INLINE void step_plain_bytes(draw *d, int x, double y, int 
     plain_pixel(d, x, y, tr, in, &x_vp, &y_vp);
     if (!flat) out_bytes(d, c.r, c.g, c.b, b);
     if (r) run_add(d, r, x_vp, y_vp, flat ? d->flat_b : b, 1.0f);
-    put_bytes(d, x_vp, y_vp, flat ? d->flat_b : b);
+    put_bytes_q(d, x_vp, y_vp, flat ? d->flat_b : b, r == NULL);
 }
 
 /* Ask for the framebuffer lines the steps x .. xe - 1 will write (near
@@ -427,7 +440,7 @@ static inline ALWAYS_INLINE void prefetch(const draw *d, int x, int xe, double y
 
     for (; x < xe; x++, y += m) {
         plain_pixel(d, x, y, tr, 1, &x_vp, &y_vp);
-        if ((unsigned)x_vp < d->vw && (unsigned)y_vp < d->vh)
+        if ((unsigned)x_vp < d->vw && (unsigned)y_vp < d->vh && d->vp0)
             __builtin_prefetch(d->vp0 + 3 * ((size_t)y_vp * d->W + (size_t)x_vp), 1);
     }
 #else
@@ -728,6 +741,7 @@ uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
 
     start(&d, par, rgb, ls);
     if (d.vw > 0 && d.vh > 0) {                     /* inside: row 0, copied */
+        if (!rgb) return (uint64_t)par->w * (uint64_t)par->h;
         for (x = 0; x < par->w; x++) put_bytes(&d, x, 0, par->bg);
         for (y = 1; y < par->h; y++)
             memcpy(d.vp0 + 3 * (size_t)y * (size_t)par->W, d.vp0, 3 * (size_t)par->w);

@@ -79,11 +79,11 @@ void pt_course_camera(const pt_scene *s, pt_course_cam *out)
 
 /* new FrameBuffer(W, H, bg), then vp.clearVP() (its Bad pixel lines, if
 ** any, to the rasterizer's listener).  The background goes into the first
-** pixel and is copied on, a doubling block at a time. */
+** pixel and is copied on, a doubling block at a time (no pixels: none). */
 static void clear_fb(const pt_scene *s, pt_fb *fb, const pt_rv_raster_par *par,
                      const pt_rv_raster_ls *rls)
 {
-    size_t n = 3 * (size_t)fb->w * (size_t)fb->h, k;
+    size_t n = fb->rgb ? 3 * (size_t)fb->w * (size_t)fb->h : 0, k;
 
     if (n > 0) memcpy(fb->rgb, s->background, 3);
     for (k = 3; k < n; k *= 2) memcpy(fb->rgb + k, fb->rgb, k < n - k ? k : n - k);

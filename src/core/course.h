@@ -152,7 +152,9 @@ typedef struct pt_course_ls {
 void pt_course_camera(const pt_scene *s, pt_course_cam *out);
 
 /* Render s (s->renderer 7 or 9) into fb, s->fb_w x s->fb_h, which it clears
-** first, telling ls (NULL: nobody).
+** first, telling ls (NULL: nobody).  With fb->rgb NULL nothing is written,
+** and ls hears all it would hear with pixels (a run that only tells: the
+** second lane of io/tlanes.h).
 ** Returns 0, or -1 when out of memory (fb then holds part of the image). */
 int pt_course_render(const pt_scene *s, pt_fb *fb, const pt_course_ls *ls);
 

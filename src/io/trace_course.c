@@ -676,7 +676,9 @@ int pt_course_lanes(const pt_scene *s, pt_fb *fb, pt_course_cuts *cuts,
     ln.w[0] = w[0];
     ln.w[1] = w[1];
     ln.fb[0] = *fb;
-    if (pt_fb_init(&ln.fb[1], s->fb_w, s->fb_h, s->background) != 0) return 1;
+    ln.fb[1].w = s->fb_w;                    /* lane 1's: no pixels (lane 0 */
+    ln.fb[1].h = s->fb_h;                    /*   draws the image) */
+    ln.fb[1].rgb = NULL;
     l0->cuts = l1->cuts = cuts;
     l1->taken = 0;                           /* piece 0 is lane 0's */
     l1->skips = 1;                           /* lane 0 draws the image */
@@ -692,7 +694,6 @@ int pt_course_lanes(const pt_scene *s, pt_fb *fb, pt_course_cuts *cuts,
     l0->cuts = l1->cuts = NULL;
     l0->taken = l1->taken = 1;
     l1->skips = 0;
-    pt_fb_free(&ln.fb[1]);
     return rc;
 }
 

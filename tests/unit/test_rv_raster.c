@@ -563,8 +563,8 @@ static void quiet_vs_told(void)
     pt_rv_prim p;
     pt_rv_raster_par par;
     pt_rv_raster_ls ls[3], lh[2];
-    uint64_t h[2];
-    int k, j, i, same = 1, counts = 1, far = 0, runs = 1;
+    uint64_t h[2], h0, n0, bad0;
+    int k, j, i, same = 1, counts = 1, far = 0, runs = 1, none = 1;
 
     memset(&m, 0, sizeof m);
     m.v = v; m.nv = 2; m.c = c; m.nc = 2;
@@ -628,6 +628,21 @@ static void quiet_vs_told(void)
             n[i] = pt_rv_raster_prim(&m, &p, &par, fb[i], &lh[i]);
         }
         if (h[0] != h[1] || n[0] != n[1] || memcmp(fb[0], fb[1], sizeof fb[0])) runs = 0;
+        for (i = 0; i < 3; i++) {                  /* no pixels: all else the same */
+            bad0 = bad[i];
+            bad[i] = 0;
+            if (pt_rv_raster_prim(&m, &p, &par, NULL, &ls[i]) != n[0] || bad[i] != bad0) none = 0;
+        }
+        for (i = 0; i < 2; i++) {
+            h0 = h[i];
+            h[i] = 0;
+            if (pt_rv_raster_prim(&m, &p, &par, NULL, &lh[i]) != n[i] || h[i] != h0) none = 0;
+        }
+        bad0 = bad[1] = 0;
+        n0 = pt_rv_clear_vp(&par, fb[0], &ls[1]);
+        bad0 = bad[1];
+        bad[1] = 0;
+        if (pt_rv_clear_vp(&par, NULL, &ls[1]) != n0 || bad[1] != bad0) none = 0;
     }
     PT_CHECK("rv-5.1 6,000 random primitives: the quiet loops write the framebuffer a listener "
              "of bytes and one of floats see written", same);
@@ -635,6 +650,8 @@ static void quiet_vs_told(void)
     PT_CHECK("rv-5.3 ... some with ends beyond 2^30", far);
     PT_CHECK("rv-5.4 ... and a listener of runs (pixels) hears the pixels, bytes and coverages "
              "a listener of pixel lines hears, in order", runs);
+    PT_CHECK("rv-5.5 ... and with no pixels to write (rgb NULL) each of those listeners hears "
+             "the same, and the counts are the same (the viewport's clearing too)", none);
 }
 
 int main(int argc, char **argv)
