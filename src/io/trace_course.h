@@ -24,8 +24,8 @@
 #include "io/trace.h"
 
 /* How the log or the trace is written: on one thread, or on two (io/tlanes.h:
-** a second render into a framebuffer of its own, the driver's pieces shared,
-** the same bytes as on one; the second render runs the rasterizer on the
+** a second render with no pixels to write, the driver's pieces shared, the
+** same bytes as on one; the second render runs the rasterizer on the
 ** primitives of its own pieces only). */
 typedef struct pt_course_cuts {
     int threads;                 /* 2: two threads, when a second is to be had */
@@ -83,11 +83,12 @@ void pt_course_lane_ls(pt_course_ls *ls, pt_course_lane *ln);
 /* Render s on two threads (io/tlanes.h) as cuts says, lane k calling
 ** walk(w[k], fb_k) (its header, its render with pt_course_lane_ls, its
 ** summary), w[k] a writer's state that begins with its pt_course_lane (t
-** set, nothing written), fb_0 = fb and fb_1 a framebuffer of its own, into
-** which lane 1 draws only the primitives of its own pieces (so fb_1 is no
-** image; lane 0 draws them all); the pieces each wrote into cuts->taken,
-** the primitives each counted into cuts->tally.  Returns 0, -1 when a walk did, or 1
-** when no second thread or framebuffer is to be had: nothing has run. */
+** set, nothing written), fb_0 = fb and fb_1 of fb's size with no pixels
+** (rgb NULL: lane 1 runs the rasterizer on the primitives of its own
+** pieces only and writes nothing; lane 0 draws them all); the pieces each
+** wrote into cuts->taken, the primitives each counted into cuts->tally.
+** Returns 0, -1 when a walk did, or 1 when no second thread is to be had:
+** nothing has run. */
 int pt_course_lanes(const pt_scene *s, pt_fb *fb, pt_course_cuts *cuts,
                     int (*walk)(void *w, pt_fb *fb), void *const w[2]);
 
