@@ -67,7 +67,7 @@ typedef struct rec {
 /* A pixel record's end after its y: JSON's rgb and coverage (at most 60
 ** bytes), text's (at most 80) */
 #define PIXEL_TAIL 96
-#define PIXEL_TAIL_JSON 64       /* JSON's, copied (at most 56 bytes) */
+#define PIXEL_TAIL_JSON 64       /* JSON's, copied (at most 60 bytes) */
 #define VSPELL_N 8192            /* the vertex numbers whose spellings are kept */
 #define TAIL_BITS 9              /* log2 of the pixel records' ends kept */
 
@@ -774,6 +774,7 @@ static NOINLINE void tail_make(walker *w, struct tail *e, const unsigned char b[
                                uint64_t key)
 {
     e->len = (size_t)(tail_at(w, e->s, b, f) - e->s);
+    assert(e->len <= (w->fmt == PT_FORMAT_JSONL ? PIXEL_TAIL_JSON : PIXEL_TAIL));
     e->key = key;
 }
 
@@ -798,11 +799,6 @@ static inline const struct tail *tail_of(walker *w, const unsigned char b[3], fl
     return e;
 }
 
-/* The pixel records of n pixels px[] of the viewport, in order: each one's
-** opening (one copy of a fixed size, or the long one), the pixel as x_fb and
-** y_fb, the bytes written and the coverage (its tail, kept: tail_of).  All
-** pixel records are written here, the rasterizer's runs (pt_rv_raster_ls.
-** pixels) and its single pixel lines (on_pixel). */
 /* Pixel px's record after its opening, at o: x_fb, y_fb, its tail (of
 ** PIXEL_TAIL bytes, JSON's of PIXEL_TAIL_JSON); returns the end. */
 static inline ALWAYS_INLINE char *pixel_rest_at(walker *w, char *o, const pt_rv_raster_par *par,
@@ -819,6 +815,11 @@ static inline ALWAYS_INLINE char *pixel_rest_at(walker *w, char *o, const pt_rv_
     return o + e->len;
 }
 
+/* The pixel records of n pixels px[] of the viewport, in order: each one's
+** opening (one copy of a fixed size, or the long one), the pixel as x_fb and
+** y_fb, the bytes written and the coverage (its tail, kept: tail_of).  All
+** pixel records are written here, the rasterizer's runs (pt_rv_raster_ls.
+** pixels) and its single pixel lines (on_pixel). */
 static void on_pixels(void *ud, const pt_rv_raster_par *par, const pt_rv_px_out *px, size_t n)
 {
     walker *w = ud;
