@@ -152,12 +152,13 @@ typedef struct pt_rv_raster_ls pt_rv_raster_ls;
 /* Draw primitive p of m into rgb (the framebuffer, W x H, 3 bytes a pixel,
 ** row-major, top row first), written as FrameBuffer.setPixelVP writes,
 ** telling ls (NULL: nobody).  rgb NULL: nothing is written, and all else is
-** as with a framebuffer (the count, what ls hears).  p's indices must be valid for m.  The loops
-** run as Java's do, over Java ints: a NaN coordinate rounds to 0; a point's
-** rows and columns stop at INT_MAX where Java's would wrap around forever.
-** The work is the segment's length in pixels, or (2 radius + 1)^2: bounded
-** by the viewport for the clipped model the course gives it (|x|, |y| <= 1
-** or NaN), up to 2^32 steps for coordinates far outside it, as in Java.
+** as with a framebuffer (the count, what ls hears).  p's indices must be
+** valid for m.  The loops run as Java's do, over Java ints: a NaN
+** coordinate rounds to 0; a point's rows and columns stop at INT_MAX where
+** Java's would wrap around forever.  The work is the segment's length in
+** pixels, or (2 radius + 1)^2: bounded by the viewport for the clipped
+** model the course gives it (|x|, |y| <= 1 or NaN), up to 2^32 steps for
+** coordinates far outside it, as in Java.
 ** Returns the number of pixels written.  This function can't fail. */
 uint64_t pt_rv_raster_prim(const pt_rv_model *m, const pt_rv_prim *p,
                            const pt_rv_raster_par *par, unsigned char *rgb,
@@ -194,8 +195,8 @@ int pt_rv_fb_index(const pt_rv_raster_par *par, int x_vp, int y_vp, int *x_fb, i
 /* Fill the viewport with its background as Viewport.clearVP() does: pixel
 ** by pixel through setPixelVP, so a viewport reaching past the framebuffer
 ** wraps and reports its "bad" pixels to ls (NULL: nobody); rgb NULL as for
-** pt_rv_raster_prim.  Returns the
-** number of pixels written.  This function can't fail. */
+** pt_rv_raster_prim.  Returns the number of pixels written.  This function
+** can't fail. */
 uint64_t pt_rv_clear_vp(const pt_rv_raster_par *par, unsigned char *rgb,
                         const pt_rv_raster_ls *ls);
 

@@ -638,7 +638,7 @@ static void quiet_vs_told(void)
             h[i] = 0;
             if (pt_rv_raster_prim(&m, &p, &par, NULL, &lh[i]) != n[i] || h[i] != h0) none = 0;
         }
-        bad0 = bad[1] = 0;
+        bad[1] = 0;
         n0 = pt_rv_clear_vp(&par, fb[0], &ls[1]);
         bad0 = bad[1];
         bad[1] = 0;
