@@ -225,7 +225,7 @@ check("c79-7.2 600 vertices and colours: CSV spells them as JSON Lines does",
 
 # c79-8: a model whose name makes the opening of its pixel records longer
 # than the writer keeps for one copy of a fixed size (trace_course_rec.c,
-# pixel_rec): its records are those of the same scene with a short name
+# on_pixels): its records are those of the same scene with a short name
 src = open(os.path.join(here, "r9-basic-two-models.scene")).read()
 longname = "L" * 150
 sc8 = os.path.join(tmp, "long.scene")
