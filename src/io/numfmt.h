@@ -41,6 +41,16 @@ typedef struct pt_digits4 {
 /* Fill *t.  This function can't fail. */
 void pt_digits4_init(pt_digits4 *t);
 
+/* pt_fmt_u64() for x < 10^4, from table t: one four-byte copy (buf has 4
+** bytes of room), its n digits, then bytes to spare.  Can't fail. */
+static inline size_t pt_fmt_u4_tab(const pt_digits4 *t, char *buf, uint32_t x)
+{
+    size_t n = t->n[x];
+
+    memcpy(buf, t->d + 4 * x + 4 - n, 4);
+    return n;
+}
+
 /* pt_fmt_u64() for x < 10^8, from table t: the same digits, written as two
 ** four-byte copies at most (buf has 8 bytes of room).  Can't fail. */
 static inline size_t pt_fmt_u32_tab(const pt_digits4 *t, char *buf, uint32_t x)
@@ -49,8 +59,7 @@ static inline size_t pt_fmt_u32_tab(const pt_digits4 *t, char *buf, uint32_t x)
     size_t n;
 
     if (x >= 10000) { hi = x / 10000; lo = x % 10000; }
-    n = t->n[hi];
-    memcpy(buf, t->d + 4 * hi + 4 - n, 4);  /* hi's n digits, then bytes to spare */
+    n = pt_fmt_u4_tab(t, buf, hi);          /* hi's digits */
     if (x < 10000) return n;
     memcpy(buf + n, t->d + 4 * lo, 4);      /* lo's four, zeros too */
     return n + 4;

@@ -31,9 +31,11 @@
 ** until the pieces before are written, and waits when its blocks are full.
 ** A piece of the course's pixel records is up to 1 MB (4,096 anti-aliased
 ** steps), so with 4 the second lane waited: with 8 renderer 9's JSON Lines
-** on two threads takes some 4% less time (renderer 4's the same), for 2 MB
-** more (docs/bench.md). */
+** on two threads takes a few percent less time (renderer 4's the same), for
+** at most 2 MiB more.  -DPT_TLANES_BLOCKS=N builds with N (docs/bench.md). */
+#ifndef PT_TLANES_BLOCKS
 #define PT_TLANES_BLOCKS 8
+#endif
 
 /* The lanes themselves, for any run that cuts its trace into pieces: run
 ** run(ud, 0) on this thread and run(ud, 1) on a second one at once, lane k

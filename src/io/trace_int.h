@@ -225,11 +225,7 @@ static inline void put_col(pt_trace *t, const char *s, size_t n, size_t width)
 ** trace's digit table, else by pt_fmt_u64(). */
 static inline char *digits_at(const pt_trace *t, char *o, uint64_t u)
 {
-    if (u < 10000) {                        /* most of them: one copy from the table */
-        size_t n = t->digits.n[u];
-        memcpy(o, t->digits.d + 4 * u + 4 - n, 4);
-        return o + n;
-    }
+    if (u < 10000) return o + pt_fmt_u4_tab(&t->digits, o, (uint32_t)u);   /* most of them */
     if (u < 100000000) return o + pt_fmt_u32_tab(&t->digits, o, (uint32_t)u);
     return o + pt_fmt_u64(o, u);
 }
